@@ -1,0 +1,11 @@
+# Per-target compile settings (no directory-wide flags).
+function(rpt_set_compile_options target)
+  target_compile_features(${target} PUBLIC cxx_std_20)
+  target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic)
+  if(RPT_WERROR)
+    target_compile_options(${target} PRIVATE -Werror)
+  endif()
+  if(RPT_MARCH_NATIVE)
+    target_compile_options(${target} PRIVATE -march=native)
+  endif()
+endfunction()

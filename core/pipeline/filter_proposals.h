@@ -1,0 +1,13 @@
+// SPDX-License-Identifier: MIT
+// Step 8: drop pairs/proposals whose pair score is below min_match_score.
+#pragma once
+
+#include "core/pipeline/options.h"
+#include "core/pipeline/pipeline_types.h"
+
+namespace rpt {
+
+// Compacts `proposals` to those with pair_score >= min_match_score. Returns the number kept.
+int FilterProposals(const FilterOptions& options, Proposals* proposals);
+
+}  // namespace rpt

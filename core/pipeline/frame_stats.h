@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: MIT
+// Per-frame statistics: what each step produced and how long it took.
+#pragma once
+
+#include <array>
+#include <string_view>
+
+namespace rpt {
+
+// The pipeline steps in execution order. Names match code, config sections and docs.
+enum class Step : int {
+  kUndistort = 0,    // undistort 2D poses, add derived joints
+  kPairs,            // (1) all cross-view pose pairs
+  kPrefilter,        // (2) filter pairs with last frame's poses
+  kTriangulateCore,  // (3-4) triangulate core joints of each pair
+  kRoomCheck,        // (5) drop proposals outside the room
+  kScore,            // (6-7) reproject, score joints, prune limbs
+  kFilter,           // (8) drop pairs under min_match_score
+  kGroup,            // (9) group proposals in 3D
+  kTriangulateFull,  // (10) re-triangulate grouped pairs with all joints
+  kMerge,            // (11) robust per-joint merge per group
+  kPostprocess,      // (12) drop invalid persons, fill joints
+  kTrack,            // (13) track ids over time
+  kClipSpeed,        // (14) clip joint speed
+  kCount
+};
+inline constexpr int kNumSteps = static_cast<int>(Step::kCount);
+
+inline constexpr std::array<std::string_view, kNumSteps> kStepNames = {
+    "undistort", "pairs", "prefilter", "triangulate_core", "room_check", "score", "filter",
+    "group", "triangulate_full", "merge", "postprocess", "track", "clip_speed"};
+
+struct FrameStats {
+  // Steady-clock time of each step (microseconds) and of the whole frame.
+  std::array<double, kNumSteps> time_us{};
+  double total_us = 0;
+  // Items after each step: poses, pairs, pairs, proposals, proposals, proposals, proposals,
+  // groups, proposals, persons, persons, persons, joints clipped.
+  std::array<int, kNumSteps> count{};
+  // Extra counters.
+  int pruned_limbs = 0;       // joints invalidated by limb pruning (steps 7 and 10)
+  int small_groups = 0;       // groups dropped by min_group_size
+  int replaced_joints = 0;    // post-processing: implausible joints replaced by a neighbour
+  int filled_joints = 0;      // post-processing: missing joints filled from a neighbour
+  int new_tracks = 0;         // tracking: tracks started this frame
+  int coasting_tracks = 0;    // tracking: lost persons returned with their last pose
+
+  void Reset() { *this = FrameStats{}; }
+};
+
+}  // namespace rpt

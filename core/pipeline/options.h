@@ -1,0 +1,116 @@
+// SPDX-License-Identifier: MIT
+// Options of every pipeline step, one section per step, named like the step (and like the
+// config-file section and the timing output). Defaults are documented in docs/algorithm.md.
+//
+// Units: metres (m), metres per second (m/s), pixels (px). Image-space distances that depend on
+// how large a person appears are given relative to the 2D pose's bounding-box diagonal (rel).
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+namespace rpt {
+
+// Undistortion and preparation of the 2D poses.
+struct UndistortOptions {
+  double min_joint_score = 0.1;    // 2D joints with a lower score are treated as missing
+  bool add_derived_joints = true;  // append hip_middle, shoulder_middle, head (computed in 2D)
+};
+
+// Step 2: keep pairs whose two poses both match the same last-frame person, or neither does.
+struct PrefilterOptions {
+  bool enabled = true;
+  double max_distance_rel = 0.25;  // mean core-joint distance / bbox diagonal to count as a match
+};
+
+enum class TriangulationMethod { kMidpoint, kDlt };
+
+// Steps 3, 4 and 10.
+struct TriangulateOptions {
+  TriangulationMethod method = TriangulationMethod::kMidpoint;
+  // Step 3: the joints used for association. Default: shoulders, hips, elbows, wrists, knees, ankles.
+  std::vector<std::string> core_joints;  // empty = DefaultCoreJoints()
+  int min_core_joints = 3;               // a pair needs this many core joints seen in both views
+};
+
+// Step 5: the room is an axis-aligned box. A size component <= 0 leaves that axis unbounded.
+struct RoomCheckOptions {
+  Eigen::Vector3d center_m = Eigen::Vector3d::Zero();
+  Eigen::Vector3d size_m = Eigen::Vector3d::Zero();
+  double margin_m = 0.5;  // tolerance around the box
+};
+
+enum class ScoreMode { kCombined, kReprojectionOnly, kTriangulationOnly };
+
+// Steps 6-7: per-joint score from reprojection error, ray gap and 2D confidence; limb pruning.
+struct ScoreOptions {
+  ScoreMode mode = ScoreMode::kCombined;
+  bool use_confidence = true;       // weight joints by their 2D confidence
+  double reprojection_scale_rel = 0.08;  // reprojection error (rel) at which the score is exp(-1)
+  double ray_gap_scale_m = 0.12;    // distance between the two rays at which the score is exp(-1)
+  bool prune_limbs = true;          // invalidate joints of implausibly short or long limbs
+};
+
+// Step 8.
+struct FilterOptions {
+  double min_match_score = 0.9;  // pairs with a lower pair score are dropped
+};
+
+// Step 9.
+struct GroupOptions {
+  double max_distance_m = 0.3;  // mean core-joint distance for a proposal to join a group
+  int min_group_size = 1;       // groups with fewer proposals are dropped
+};
+
+// Step 11.
+struct MergeOptions {
+  double max_distance_m = 0.2;  // drop joint proposals this far from the mean (<= 0: keep all)
+  int top_k = 3;                // then keep the k closest (<= 0: keep all)
+  bool score_weighted = true;   // weighted average by joint score instead of plain mean
+  double min_joint_score = 0.1; // joint proposals below are ignored
+};
+
+// Step 12.
+struct PostprocessOptions {
+  bool enabled = true;
+  int min_valid_joints = 6;         // persons with fewer valid joints are dropped
+  double min_extent_m = 0.2;        // drop persons whose bounding box diagonal is smaller
+  double max_extent_m = 3.0;        // ... or larger
+  bool drop_outside_room = true;    // drop persons whose centre is outside the room (+ margin)
+  bool replace_wrong_joints = true; // joints of implausible limbs take their neighbour's place
+  bool fill_missing_joints = true;  // missing joints take their neighbour's position
+  double filled_joint_score = 0.05; // score given to filled joints (> 0 so they count as present)
+};
+
+// Step 13.
+struct TrackOptions {
+  bool enabled = true;
+  double max_distance_m = 0.5;  // mean core-joint distance to continue a track
+  int max_missing_frames = 3;   // a lost person is still returned (last pose) this many frames
+};
+
+// Step 14.
+struct ClipSpeedOptions {
+  bool enabled = true;
+  double max_speed_m_s = 10.0;  // per joint, between consecutive outputs of one track
+};
+
+struct TriangulatorOptions {
+  UndistortOptions undistort;
+  PrefilterOptions prefilter;
+  TriangulateOptions triangulate;
+  RoomCheckOptions room_check;
+  ScoreOptions score;
+  FilterOptions filter;
+  GroupOptions group;
+  MergeOptions merge;
+  PostprocessOptions postprocess;
+  TrackOptions track;
+  ClipSpeedOptions clip_speed;
+
+  // Empty when valid; otherwise "section.key: problem" for the first invalid value.
+  std::string Check() const;
+};
+
+}  // namespace rpt

@@ -1,0 +1,102 @@
+// SPDX-License-Identifier: MIT
+// Internal data passed between the pipeline steps (not part of the public API).
+//
+// All buffers are std::vectors that are cleared and refilled every frame; clear() keeps their
+// capacity, so once a Triangulator has seen its largest frame it no longer allocates.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <cstdint>
+#include <vector>
+
+namespace rpt {
+
+// Per camera, precomputed once: the undistorted pinhole model and the pose.
+struct ViewGeometry {
+  Eigen::Matrix<double, 3, 4> P;  // K [R | t]: world -> undistorted pixels (homogeneous)
+  Eigen::Matrix<double, 3, 4> Rt;  // [R | t]: world -> normalised camera coordinates
+  Eigen::Matrix3d R_t;             // R transposed: camera -> world directions
+  Eigen::Vector3d center;          // camera centre in world (m)
+  double fx = 1, fy = 1, cx = 0, cy = 0, skew = 0;
+};
+
+// One undistorted 2D joint and its viewing ray.
+struct Keypoint {
+  double u = 0, v = 0;  // undistorted pixels
+  double score = 0;     // 0 = missing
+  Eigen::Vector3d ray = Eigen::Vector3d::Zero();  // world direction through the joint (unnormalised)
+  double x = 0, y = 0;  // normalised undistorted camera coordinates
+};
+
+// Output of the undistort step: every usable 2D pose of the frame, all views concatenated.
+struct PreparedViews {
+  int num_joints = 0;              // output joints (input + derived)
+  std::vector<int> view_of;        // per pose
+  std::vector<int> person_of;      // per pose: index in its view's input
+  std::vector<double> bbox_diag;   // per pose: bounding-box diagonal of its valid joints (px)
+  std::vector<Keypoint> keypoints; // per pose and joint
+  std::vector<int> view_begin;     // num_views + 1 offsets into the pose list
+
+  int num_poses() const { return static_cast<int>(view_of.size()); }
+  const Keypoint* Pose(int g) const { return keypoints.data() + static_cast<size_t>(g) * num_joints; }
+};
+
+// Step 1 output: two poses from different views (indices into PreparedViews), view(a) < view(b).
+struct PosePair {
+  int a = 0;
+  int b = 0;
+};
+
+// 3D proposals, one per pose pair, over a subset of the joints (core joints or all joints).
+struct Proposals {
+  int num_joints = 0;               // joints per proposal (size of the subset)
+  std::vector<PosePair> pairs;      // per proposal
+  std::vector<Eigen::Vector3d> xyz; // per proposal and joint (m, world)
+  std::vector<double> gap;          // per proposal and joint: ray gap (m); < 0 = not triangulated
+  std::vector<double> score;        // per proposal and joint: joint score, 0 = invalid
+  std::vector<double> pair_score;   // per proposal
+  std::vector<int> group;           // per proposal: group index (after grouping)
+
+  int size() const { return static_cast<int>(pairs.size()); }
+  void Clear(int joints) {
+    num_joints = joints;
+    pairs.clear();
+    xyz.clear();
+    gap.clear();
+    score.clear();
+    pair_score.clear();
+    group.clear();
+  }
+  // Appends a proposal for `pair` with all joints invalid.
+  void Add(const PosePair& pair) {
+    pairs.push_back(pair);
+    xyz.resize(xyz.size() + num_joints, Eigen::Vector3d::Zero());
+    gap.resize(gap.size() + num_joints, -1.0);
+    score.resize(score.size() + num_joints, 0.0);
+    pair_score.push_back(0.0);
+    group.push_back(-1);
+  }
+  // Moves proposal `from` to slot `to` (to <= from), used when compacting.
+  void Move(int from, int to);
+  // Keeps the first n proposals.
+  void Truncate(int n);
+};
+
+// Step 9 output: groups of proposals, members listed contiguously.
+struct Groups {
+  std::vector<int> begin;    // num_groups + 1 offsets into members
+  std::vector<int> members;  // proposal indices
+
+  int size() const { return begin.empty() ? 0 : static_cast<int>(begin.size()) - 1; }
+};
+
+// A limb resolved to joint indices within a joint subset.
+struct ResolvedLimb {
+  int a = 0;  // proximal
+  int b = 0;  // distal (invalidated when the limb is implausible)
+  double min_length_m = 0;
+  double max_length_m = 0;
+};
+
+}  // namespace rpt

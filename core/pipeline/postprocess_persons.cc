@@ -1,0 +1,68 @@
+// SPDX-License-Identifier: MIT
+#include "core/pipeline/postprocess_persons.h"
+
+#include <algorithm>
+
+#include "core/pipeline/room_check.h"
+
+namespace rpt {
+
+int PostprocessPersons(const PostprocessOptions& options, const RoomCheckOptions& room, std::span<const int> neighbour,
+                       std::span<const ResolvedLimb> limbs, Poses3D* persons, FrameStats* stats) {
+  if (!options.enabled) return persons->num_persons();
+  const int n = persons->num_joints;
+  int kept = 0;
+  for (int p = 0; p < persons->num_persons(); ++p) {
+    auto person = persons->Person(p);
+    if (options.replace_wrong_joints) {
+      for (const ResolvedLimb& limb : limbs) {
+        if (person(3, limb.a) <= 0 || person(3, limb.b) <= 0) continue;
+        const double length = (person.col(limb.a).head<3>() - person.col(limb.b).head<3>()).norm();
+        if (length < limb.min_length_m || length > limb.max_length_m) {
+          person(3, limb.b) = 0;
+          ++stats->replaced_joints;
+        }
+      }
+    }
+    int valid = 0;
+    Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = Eigen::Vector3d::Constant(-1e300);
+    Eigen::Vector3d center = Eigen::Vector3d::Zero();
+    for (int j = 0; j < n; ++j) {
+      if (person(3, j) <= 0) continue;
+      const Eigen::Vector3d x = person.col(j).head<3>();
+      lo = lo.cwiseMin(x);
+      hi = hi.cwiseMax(x);
+      center += x;
+      ++valid;
+    }
+    if (valid < options.min_valid_joints || valid == 0) continue;
+    const double extent = (hi - lo).norm();
+    if (extent < options.min_extent_m || extent > options.max_extent_m) continue;
+    if (options.drop_outside_room && !InsideRoom(center / valid, room)) continue;
+
+    if (options.fill_missing_joints) {
+      // Repeated passes let fills propagate along chains (e.g. finger tip <- ... <- wrist).
+      for (int pass = 0; pass < 6; ++pass) {
+        bool changed = false;
+        for (int j = 0; j < n; ++j) {
+          if (person(3, j) > 0 || neighbour[j] < 0 || person(3, neighbour[j]) <= 0) continue;
+          person.col(j).head<3>() = person.col(neighbour[j]).head<3>();
+          person(3, j) = options.filled_joint_score;
+          ++stats->filled_joints;
+          changed = true;
+        }
+        if (!changed) break;
+      }
+    }
+    if (kept != p) {
+      persons->Person(kept) = persons->Person(p);
+      persons->track_ids[kept] = persons->track_ids[p];
+    }
+    ++kept;
+  }
+  persons->data.resize(static_cast<size_t>(kept) * 4 * n);
+  persons->track_ids.resize(kept);
+  return kept;
+}
+
+}  // namespace rpt

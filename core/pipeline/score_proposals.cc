@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: MIT
+#include "core/pipeline/score_proposals.h"
+
+#include <cmath>
+
+namespace rpt {
+namespace {
+
+// Relative reprojection error of `point` against keypoint `kp` of a pose with diagonal `diag`.
+inline double RelativeReprojectionError(const ViewGeometry& g, const Eigen::Vector3d& point, const Keypoint& kp,
+                                        double diag) {
+  const Eigen::Vector3d h = g.P * point.homogeneous();
+  if (h.z() <= 0) return 1e3;
+  return std::hypot(h.x() / h.z() - kp.u, h.y() / h.z() - kp.v) / diag;
+}
+
+}  // namespace
+
+int ScoreProposals(const PreparedViews& views, std::span<const ViewGeometry> geometry, std::span<const int> joints,
+                   std::span<const ResolvedLimb> limbs, const ScoreOptions& options, Proposals* proposals) {
+  const int n = proposals->num_joints;
+  const bool use_rep = options.mode != ScoreMode::kTriangulationOnly;
+  const bool use_tri = options.mode != ScoreMode::kReprojectionOnly;
+  const double inv_rep = 1.0 / options.reprojection_scale_rel;
+  const double inv_gap = 1.0 / options.ray_gap_scale_m;
+  int pruned = 0;
+  for (int k = 0; k < proposals->size(); ++k) {
+    const PosePair& pair = proposals->pairs[k];
+    const ViewGeometry& ga = geometry[views.view_of[pair.a]];
+    const ViewGeometry& gb = geometry[views.view_of[pair.b]];
+    const Keypoint* ka = views.Pose(pair.a);
+    const Keypoint* kb = views.Pose(pair.b);
+    const double diag_a = views.bbox_diag[pair.a];
+    const double diag_b = views.bbox_diag[pair.b];
+    Eigen::Vector3d* xyz = proposals->xyz.data() + static_cast<size_t>(k) * n;
+    const double* gap = proposals->gap.data() + static_cast<size_t>(k) * n;
+    double* score = proposals->score.data() + static_cast<size_t>(k) * n;
+
+    for (int i = 0; i < n; ++i) {
+      if (score[i] <= 0) continue;
+      double s = 1.0;
+      if (use_rep) {
+        const double e = 0.5 * (RelativeReprojectionError(ga, xyz[i], ka[joints[i]], diag_a) +
+                                RelativeReprojectionError(gb, xyz[i], kb[joints[i]], diag_b));
+        const double r = e * inv_rep;
+        s *= std::exp(-r * r);
+      }
+      if (use_tri) {
+        const double r = gap[i] * inv_gap;
+        s *= std::exp(-r * r);
+      }
+      score[i] = s;
+    }
+    if (options.prune_limbs) {
+      for (const ResolvedLimb& limb : limbs) {
+        if (score[limb.a] <= 0 || score[limb.b] <= 0) continue;
+        const double length = (xyz[limb.a] - xyz[limb.b]).norm();
+        if (length < limb.min_length_m || length > limb.max_length_m) {
+          score[limb.b] = 0;
+          ++pruned;
+        }
+      }
+    }
+    // Pair score over the joints both views saw; joint score gets the 2D confidence.
+    double weighted = 0, weights = 0;
+    for (int i = 0; i < n; ++i) {
+      const double ca = ka[joints[i]].score, cb = kb[joints[i]].score;
+      if (ca <= 0 || cb <= 0) continue;
+      const double c = std::sqrt(ca * cb);
+      const double w = options.use_confidence ? c : 1.0;
+      weighted += w * score[i];
+      weights += w;
+      if (options.use_confidence) score[i] *= c;
+    }
+    proposals->pair_score[k] = weights > 0 ? weighted / weights : 0.0;
+  }
+  return pruned;
+}
+
+}  // namespace rpt

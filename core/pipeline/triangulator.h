@@ -1,0 +1,53 @@
+// SPDX-License-Identifier: MIT
+// RapidPoseTriangulation: multi-view multi-person 3D pose triangulation from 2D poses
+// (Bermuth, Poeppel, Reif, CVPR 2026, section 3.1, steps 1-14).
+//
+// Usage:
+//   Triangulator tri(cameras, joint_names, options);   // throws ConfigError on bad options
+//   for each frame: tri.Process(views, timestamp_s, &poses, &stats);
+//
+// Inputs per frame: one Poses2D per camera (same order as `cameras`), joints in the order of
+// `joint_names`, pixels in the original (distorted) image. Output: 3D persons in metres in the
+// world frame, joints in the order of output_joints() (input joints + derived joints).
+// Process() does not allocate once its buffers have grown to the frame sizes seen.
+#pragma once
+
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "core/camera.h"
+#include "core/joints.h"
+#include "core/pipeline/frame_stats.h"
+#include "core/pipeline/options.h"
+#include "core/poses.h"
+
+namespace rpt {
+
+struct Workspace;  // internal buffers (core/pipeline/workspace.h)
+
+class Triangulator {
+ public:
+  Triangulator(std::vector<Camera> cameras, JointNames input_joints, TriangulatorOptions options);
+  ~Triangulator();
+  Triangulator(Triangulator&&) noexcept;
+  Triangulator& operator=(Triangulator&&) noexcept;
+
+  // Triangulates one multi-view frame. `views.size()` must equal the number of cameras and each
+
+  // treated as having no detections in the offending view and stats->count[kUndistort] says so.
+  void Process(std::span<const Poses2D> views, double timestamp_s, Poses3D* persons, FrameStats* stats);
+
+  // Forgets the previous frame (pre-filter poses, tracks), e.g. between sequences.
+  void Reset();
+
+  const JointNames& input_joints() const;
+  const JointNames& output_joints() const;
+  const std::vector<Camera>& cameras() const;
+  const TriangulatorOptions& options() const;
+
+ private:
+  std::unique_ptr<Workspace> ws_;
+};
+
+}  // namespace rpt

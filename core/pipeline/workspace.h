@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: MIT
+// The Triangulator's state: configuration resolved to indices, per-frame buffers (reused, so a
+// warm Triangulator does not allocate) and the state carried between frames.
+#pragma once
+
+#include <vector>
+
+#include "core/camera.h"
+#include "core/joints.h"
+#include "core/pipeline/group_proposals.h"
+#include "core/pipeline/merge_groups.h"
+#include "core/pipeline/options.h"
+#include "core/pipeline/pipeline_types.h"
+#include "core/pipeline/prefilter_pairs.h"
+#include "core/pipeline/track_persons.h"
+#include "core/pipeline/undistort_poses.h"
+
+namespace rpt {
+
+struct Workspace {
+  // Configuration.
+  std::vector<Camera> cameras;
+  std::vector<ViewGeometry> geometry;
+  JointNames input_joints;
+  JointNames output_joints;
+  TriangulatorOptions options;
+  std::vector<DerivedJointRule> derived;
+  std::vector<int> core_joints;        // output-joint indices of the core joints
+  std::vector<int> all_joints;         // 0 .. num_output_joints-1
+  std::vector<ResolvedLimb> core_limbs;  // indexed by core slot
+  std::vector<ResolvedLimb> all_limbs;   // indexed by output joint
+  std::vector<int> neighbour;          // per output joint, -1 = none
+
+  // Per-frame buffers.
+  PreparedViews prepared;
+  std::vector<PosePair> pairs;
+  std::vector<int> match;
+  Proposals core;
+  GroupScratch group_scratch;
+  Groups groups;
+  std::vector<PosePair> member_pairs;
+  Proposals full;
+  MergeScratch merge_scratch;
+
+  // Carried between frames.
+  PreviousPersons previous;
+  Tracker tracker;
+};
+
+}  // namespace rpt

@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: MIT
+#include "datasets/sequence.h"
+
+#include <cmath>
+#include <set>
+
+#include "core/errors.h"
+
+namespace rpt {
+namespace {
+
+std::string Where(const std::string& source, const SequenceFrame& frame) {
+  return source + ": frame '" + frame.id + "'";
+}
+
+}  // namespace
+
+void ValidateSequence(const Sequence& sequence, const std::string& source) {
+  if (sequence.cameras.empty()) throw InputError(source + ": no cameras");
+  for (const Camera& camera : sequence.cameras) {
+    if (const std::string error = camera.Validate(); !error.empty()) throw InputError(source + ": " + error);
+  }
+  std::set<std::string> ids;
+  for (const SequenceFrame& frame : sequence.frames) {
+    if (!ids.insert(frame.id).second) throw InputError(Where(source, frame) + ": duplicate frame id");
+    if (frame.gt.num_persons() > 0 && frame.gt.num_joints != static_cast<int>(sequence.gt_joints.size())) {
+      throw InputError(Where(source, frame) + ": ground truth has " + std::to_string(frame.gt.num_joints) +
+                       " joints, expected " + std::to_string(sequence.gt_joints.size()));
+    }
+    for (double value : frame.gt.data) {
+      if (!std::isfinite(value)) throw InputError(Where(source, frame) + ": ground truth contains NaN or infinity");
+    }
+    if (!frame.views.empty() && frame.views.size() != sequence.cameras.size()) {
+      throw InputError(Where(source, frame) + ": " + std::to_string(frame.views.size()) + " views for " +
+                       std::to_string(sequence.cameras.size()) + " cameras");
+    }
+    for (size_t v = 0; v < frame.views.size(); ++v) {
+      const Poses2D& view = frame.views[v];
+      const std::string where = Where(source, frame) + ", camera '" + sequence.cameras[v].name + "'";
+      if (view.num_persons() > 0 && view.num_joints != static_cast<int>(sequence.detection_joints.size())) {
+        throw InputError(where + ": detections have " + std::to_string(view.num_joints) + " joints, expected " +
+                         std::to_string(sequence.detection_joints.size()));
+      }
+      for (size_t i = 0; i < view.data.size(); i += 3) {
+        const double score = view.data[i + 2];
+        if (!std::isfinite(view.data[i]) || !std::isfinite(view.data[i + 1]) || !std::isfinite(score)) {
+          throw InputError(where + ": detection " + std::to_string(i / 3 / view.num_joints) + " contains NaN or infinity");
+        }
+        if (score < 0 || score > 1) {
+          throw InputError(where + ": detection score " + std::to_string(score) + " outside [0, 1]");
+        }
+      }
+    }
+  }
+}
+
+}  // namespace rpt
