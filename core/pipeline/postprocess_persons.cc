@@ -14,13 +14,14 @@ int PostprocessPersons(const PostprocessOptions& options, const RoomCheckOptions
   int kept = 0;
   for (int p = 0; p < persons->num_persons(); ++p) {
     auto person = persons->Person(p);
+    int replaced = 0;
     if (options.replace_wrong_joints) {
       for (const ResolvedLimb& limb : limbs) {
         if (person(3, limb.a) <= 0 || person(3, limb.b) <= 0) continue;
         const double length = (person.col(limb.a).head<3>() - person.col(limb.b).head<3>()).norm();
         if (length < limb.min_length_m || length > limb.max_length_m) {
           person(3, limb.b) = 0;
-          ++stats->replaced_joints;
+          ++replaced;
         }
       }
     }
@@ -39,6 +40,7 @@ int PostprocessPersons(const PostprocessOptions& options, const RoomCheckOptions
     const double extent = (hi - lo).norm();
     if (extent < options.min_extent_m || extent > options.max_extent_m) continue;
     if (options.drop_outside_room && !InsideRoom(center / valid, room)) continue;
+    stats->replaced_joints += replaced;
 
     if (options.fill_missing_joints) {
       // Repeated passes let fills propagate along chains (e.g. finger tip <- ... <- wrist).

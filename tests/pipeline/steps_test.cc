@@ -1,0 +1,402 @@
+// SPDX-License-Identifier: MIT
+// Each pipeline step on hand-made geometry.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "core/joints.h"
+#include "core/pipeline/filter_proposals.h"
+#include "core/pipeline/group_proposals.h"
+#include "core/pipeline/make_pairs.h"
+#include "core/pipeline/merge_groups.h"
+#include "core/pipeline/postprocess_persons.h"
+#include "core/pipeline/prefilter_pairs.h"
+#include "core/pipeline/room_check.h"
+#include "core/pipeline/score_proposals.h"
+#include "core/pipeline/triangulate_pairs.h"
+#include "core/pipeline/undistort_poses.h"
+#include "core/triangulation.h"
+#include "tests/pipeline/test_scene.h"
+
+namespace rpt {
+namespace {
+
+std::vector<int> CoreIndices(const JointNames& names) {
+  std::vector<int> out;
+  for (const auto& n : DefaultCoreJoints()) out.push_back(FindJoint(names, n));
+  return out;
+}
+
+// Prepared views of `persons` seen by `num_cameras` ring cameras (17 joints + 3 derived).
+struct StepFixture {
+  explicit StepFixture(int num_cameras, std::vector<Eigen::Matrix4Xd> persons_in)
+      : cameras(test::RingCameras(num_cameras)), persons(std::move(persons_in)) {
+    for (const Camera& c : cameras) geometry.push_back(MakeViewGeometry(c));
+    output = AddDerivedJoints(CocoBodyJoints());
+    for (int j = 17; j < static_cast<int>(output.size()); ++j) {
+      DerivedJointRule rule{j, {}};
+      for (const auto& alt : DerivedJointSources(output[j])) {
+        std::vector<int> idx;
+        for (const auto& n : alt) idx.push_back(FindJoint(CocoBodyJoints(), n));
+        rule.alternatives.push_back(idx);
+      }
+      derived.push_back(rule);
+    }
+    core = CoreIndices(output);
+    for (int j = 0; j < static_cast<int>(output.size()); ++j) all.push_back(j);
+    views = test::ProjectPersons(cameras, persons);
+  }
+  void Prepare() {
+    UndistortPoses(views, cameras, geometry, derived, core, 3, static_cast<int>(output.size()), UndistortOptions{},
+                   &prepared);
+  }
+  std::vector<Camera> cameras;
+  std::vector<Eigen::Matrix4Xd> persons;
+  std::vector<ViewGeometry> geometry;
+  JointNames output;
+  std::vector<DerivedJointRule> derived;
+  std::vector<int> core, all;
+  std::vector<Poses2D> views;
+  PreparedViews prepared;
+};
+
+TEST(TriangulateMidpoint, RecoversPointFromExactRays) {
+  const Eigen::Vector3d X(0.3, -0.2, 1.1), c1(4, 0, 2), c2(0, 4, 2);
+  Eigen::Vector3d point;
+  double gap = -1;
+  ASSERT_TRUE(TriangulateMidpoint(c1, X - c1, c2, 2.0 * (X - c2), &point, &gap));
+  EXPECT_LT((point - X).norm(), 1e-12);
+  EXPECT_LT(gap, 1e-12);
+}
+
+TEST(TriangulateMidpoint, GapOfSkewRaysAndDegenerateCases) {
+  Eigen::Vector3d point;
+  double gap = 0;
+  // Rays along x at z=0 and along y at z=1 (both starting "behind" the crossing point).
+  ASSERT_TRUE(TriangulateMidpoint(Eigen::Vector3d(-5, 0, 0), Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, -5, 1),
+                                  Eigen::Vector3d(0, 1, 0), &point, &gap));
+  EXPECT_NEAR(gap, 1.0, 1e-12);
+  EXPECT_LT((point - Eigen::Vector3d(0, 0, 0.5)).norm(), 1e-12);
+  EXPECT_FALSE(TriangulateMidpoint(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0),
+                                   Eigen::Vector3d(2, 0, 0), &point, &gap))
+      << "parallel rays";
+  EXPECT_FALSE(TriangulateMidpoint(Eigen::Vector3d(-5, 0, 0), Eigen::Vector3d(-1, 0, 0), Eigen::Vector3d(0, -5, 0),
+                                   Eigen::Vector3d(0, 1, 0), &point, &gap))
+      << "crossing behind the first camera";
+}
+
+TEST(UndistortPoses, RaysPassThroughTheJointsAndDerivedJointsAreAdded) {
+  StepFixture f(3, {test::StandingPerson(0.2, -0.1, 0.4)});
+  f.Prepare();
+  ASSERT_EQ(f.prepared.num_poses(), 3);
+  ASSERT_EQ(f.prepared.num_joints, 20);
+  for (int g = 0; g < 3; ++g) {
+    const int v = f.prepared.view_of[g];
+    const Keypoint* kps = f.prepared.Pose(g);
+    for (int j = 0; j < 17; ++j) {
+      const Eigen::Vector3d X = f.persons[0].col(j).head<3>();
+      const Eigen::Vector3d to_point = (X - f.geometry[v].center).normalized();
+      EXPECT_LT((kps[j].ray.normalized() - to_point).norm(), 1e-9) << "view " << v << " joint " << j;
+    }
+    // hip_middle is the mean of the hips in normalised coordinates.
+    const int hip_middle = FindJoint(f.output, "hip_middle");
+    EXPECT_NEAR(kps[hip_middle].x, 0.5 * (kps[11].x + kps[12].x), 1e-12);
+    EXPECT_NEAR(kps[FindJoint(f.output, "head")].y, 0.5 * (kps[3].y + kps[4].y), 1e-12);
+    EXPECT_GT(f.prepared.bbox_diag[g], 100.0);
+  }
+}
+
+TEST(UndistortPoses, LowScoresNaNsAndPosesWithoutCoreJointsAreMissing) {
+  StepFixture f(2, {test::StandingPerson(0, 0)});
+  f.views[0].Person(0)(2, 5) = 0.05;        // below min_joint_score
+  f.views[0].Person(0)(0, 6) = std::nan("");  // NaN coordinate
+  f.views[1].Person(0).row(2).setZero();     // nothing visible in view 1
+  f.Prepare();
+  ASSERT_EQ(f.prepared.num_poses(), 1);
+  EXPECT_EQ(f.prepared.Pose(0)[5].score, 0.0);
+  EXPECT_EQ(f.prepared.Pose(0)[6].score, 0.0);
+  EXPECT_EQ(f.prepared.Pose(0)[FindJoint(f.output, "shoulder_middle")].score, 0.0);
+  EXPECT_EQ(f.prepared.view_begin, (std::vector<int>{0, 1, 1}));
+}
+
+TEST(MakePairs, EveryCrossViewPairOnce) {
+  StepFixture f(3, {test::StandingPerson(-1, 0), test::StandingPerson(1, 0)});
+  f.views[2].Clear(17);  // view 2 sees nobody
+  auto extra = f.views[1].AddPerson();
+  extra = test::ProjectPersons({f.cameras[1]}, {test::StandingPerson(0, 1.5)})[0].Person(0);
+  f.Prepare();
+  std::vector<PosePair> pairs;
+  EXPECT_EQ(MakePairs(f.prepared, &pairs), 2 * 3);
+  for (const PosePair& p : pairs) EXPECT_LT(f.prepared.view_of[p.a], f.prepared.view_of[p.b]);
+}
+
+TEST(PrefilterPairs, KeepsBothOrNeitherMatchedDropsOneSided) {
+  const auto a = test::StandingPerson(-1, 0), b = test::StandingPerson(1, 0), c = test::StandingPerson(0, 1.5);
+  StepFixture f(2, {a, b, c});
+  f.Prepare();
+  std::vector<PosePair> pairs;
+  MakePairs(f.prepared, &pairs);
+  ASSERT_EQ(pairs.size(), 9u);
+  // Previous frame knew a and b (slightly moved), not c.
+  PreviousPersons previous;
+  previous.Clear(static_cast<int>(f.core.size()));
+  for (const auto* person : {&a, &b}) {
+    for (int c_idx : f.core) {
+      previous.xyz.push_back(person->col(c_idx).head<3>() + Eigen::Vector3d(0.03, 0, 0));
+      previous.score.push_back(1.0);
+    }
+  }
+  std::vector<int> match;
+  const int kept = PrefilterPairs(f.prepared, f.geometry, f.core, previous, PrefilterOptions{}, &match, &pairs);
+  // Kept: a-a, b-b (same match), c-c (neither). Dropped: mixed ones and one-sided c-x / x-c.
+  EXPECT_EQ(kept, 3);
+  for (const PosePair& p : pairs) {
+    EXPECT_EQ(f.prepared.person_of[p.a], f.prepared.person_of[p.b]);
+  }
+  EXPECT_EQ(match[f.prepared.view_begin[0] + 2], -1);
+  // Disabled: everything stays.
+  MakePairs(f.prepared, &pairs);
+  PrefilterOptions off;
+  off.enabled = false;
+  EXPECT_EQ(PrefilterPairs(f.prepared, f.geometry, f.core, previous, off, &match, &pairs), 9);
+}
+
+TEST(TriangulatePairs, ExactRecoveryWithMidpointAndDlt) {
+  StepFixture f(4, {test::StandingPerson(0.5, 0.3, 1.0)});
+  f.Prepare();
+  std::vector<PosePair> pairs;
+  MakePairs(f.prepared, &pairs);
+  for (TriangulationMethod method : {TriangulationMethod::kMidpoint, TriangulationMethod::kDlt}) {
+    Proposals proposals;
+    ASSERT_EQ(TriangulatePairs(f.prepared, f.geometry, pairs, f.all, method, 3, &proposals), 6);
+    for (int k = 0; k < proposals.size(); ++k) {
+      for (int j = 0; j < 17; ++j) {
+        EXPECT_LT((proposals.xyz[k * 20 + j] - f.persons[0].col(j).head<3>()).norm(), 1e-9);
+        EXPECT_EQ(proposals.score[k * 20 + j], 1.0);
+        EXPECT_LT(proposals.gap[k * 20 + j], 1e-9);
+      }
+    }
+  }
+}
+
+TEST(TriangulatePairs, PairsWithTooFewCommonJointsYieldNoProposal) {
+  StepFixture f(2, {test::StandingPerson(0, 0)});
+  for (int j = 0; j < 17; ++j) {
+    if (j != 5 && j != 6 && j != 11 && j != 12) f.views[1].Person(0)(2, j) = 0;  // only 4 joints in view 1
+  }
+  f.Prepare();
+  std::vector<PosePair> pairs;
+  MakePairs(f.prepared, &pairs);
+  Proposals proposals;
+  EXPECT_EQ(TriangulatePairs(f.prepared, f.geometry, pairs, f.core, TriangulationMethod::kMidpoint, 4, &proposals), 1);
+  EXPECT_EQ(TriangulatePairs(f.prepared, f.geometry, pairs, f.core, TriangulationMethod::kMidpoint, 5, &proposals), 0);
+}
+
+Proposals OneJointProposals(const std::vector<Eigen::Vector3d>& points) {
+  Proposals p;
+  p.Clear(1);
+  for (const auto& x : points) {
+    p.Add(PosePair{});
+    p.xyz.back() = x;
+    p.score.back() = 1.0;
+  }
+  return p;
+}
+
+TEST(RoomCheck, DropsProposalsOutsideTheBoxPlusMargin) {
+  Proposals p = OneJointProposals({{0, 0, 1}, {2.9, 0, 1}, {3.2, 0, 1}, {0, 50, 1}});
+  RoomCheckOptions room;
+  room.center_m = Eigen::Vector3d(0, 0, 1);
+  room.size_m = Eigen::Vector3d(5, 0, 3);  // y unbounded
+  room.margin_m = 0.5;
+  EXPECT_EQ(RoomCheck(room, &p), 3);
+  EXPECT_NEAR(p.xyz[1].x(), 2.9, 1e-12);
+  EXPECT_NEAR(p.xyz[2].y(), 50, 1e-12);
+  RoomCheckOptions unbounded;
+  Proposals q = OneJointProposals({{1e6, 0, 0}});
+  EXPECT_EQ(RoomCheck(unbounded, &q), 1);
+}
+
+TEST(ScoreProposals, CorrectPairsScoreOneMismatchedPairsScoreLow) {
+  StepFixture f(2, {test::StandingPerson(-1.2, 0), test::StandingPerson(1.2, 0.3, 2.0)});
+  f.Prepare();
+  std::vector<PosePair> pairs;
+  MakePairs(f.prepared, &pairs);
+  Proposals proposals;
+  TriangulatePairs(f.prepared, f.geometry, pairs, f.core, TriangulationMethod::kMidpoint, 3, &proposals);
+  std::vector<ResolvedLimb> no_limbs;
+  ScoreProposals(f.prepared, f.geometry, f.core, no_limbs, ScoreOptions{}, &proposals);
+  int correct = 0;
+  for (int k = 0; k < proposals.size(); ++k) {
+    const bool same = f.prepared.person_of[proposals.pairs[k].a] == f.prepared.person_of[proposals.pairs[k].b];
+    if (same) {
+      EXPECT_NEAR(proposals.pair_score[k], 1.0, 1e-9);
+      ++correct;
+    } else {
+      EXPECT_LT(proposals.pair_score[k], 0.5);
+    }
+  }
+  EXPECT_EQ(correct, 2);
+}
+
+TEST(ScoreProposals, ModesConfidenceAndLimbPruning) {
+  StepFixture f(2, {test::StandingPerson(0, 0)});
+  // A 20 px error on the left wrist in view 0, and half confidence on the right wrist.
+  f.views[0].Person(0)(0, 9) += 20;
+  f.views[0].Person(0)(2, 10) = 0.5;
+  f.views[1].Person(0)(2, 10) = 0.5;
+  f.Prepare();
+  std::vector<PosePair> pairs;
+  MakePairs(f.prepared, &pairs);
+  const int wrist_left_slot = 6, wrist_right_slot = 7;  // order of DefaultCoreJoints()
+  auto run = [&](ScoreOptions options, std::vector<ResolvedLimb> limbs = {}) {
+    Proposals p;
+    TriangulatePairs(f.prepared, f.geometry, pairs, f.core, TriangulationMethod::kMidpoint, 3, &p);
+    ScoreProposals(f.prepared, f.geometry, f.core, limbs, options, &p);
+    return p;
+  };
+  ScoreOptions combined;
+  const Proposals c = run(combined);
+  EXPECT_LT(c.score[wrist_left_slot], 0.99);
+  EXPECT_NEAR(c.score[wrist_right_slot], 0.5, 1e-9) << "joint score carries the 2D confidence";
+  ScoreOptions no_conf;
+  no_conf.use_confidence = false;
+  EXPECT_NEAR(run(no_conf).score[wrist_right_slot], 1.0, 1e-9);
+  ScoreOptions rep_only;
+  rep_only.mode = ScoreMode::kReprojectionOnly;
+  ScoreOptions tri_only;
+  tri_only.mode = ScoreMode::kTriangulationOnly;
+  const double s_rep = run(rep_only).score[wrist_left_slot], s_tri = run(tri_only).score[wrist_left_slot];
+  EXPECT_LT(s_rep, 1.0);
+  EXPECT_LT(s_tri, 1.0);
+  EXPECT_NEAR(c.score[wrist_left_slot], s_rep * s_tri, 1e-12);
+  // A limb (elbow_left -> wrist_left) whose allowed range excludes the true length prunes the wrist.
+  const Proposals pruned = run(combined, {ResolvedLimb{4, wrist_left_slot, 0.0, 0.05}});
+  EXPECT_EQ(pruned.score[wrist_left_slot], 0.0);
+  EXPECT_LT(pruned.pair_score[0], c.pair_score[0]);
+}
+
+TEST(FilterProposals, KeepsPairsAtOrAboveTheThreshold) {
+  Proposals p = OneJointProposals({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}});
+  p.pair_score = {0.95, 0.5, 0.9};
+  FilterOptions options;
+  options.min_match_score = 0.9;
+  EXPECT_EQ(FilterProposals(options, &p), 2);
+  EXPECT_NEAR(p.xyz[1].x(), 2.0, 1e-12);
+}
+
+TEST(GroupProposals, ClustersByPersonAndDropsSmallGroups) {
+  Proposals p;
+  p.Clear(3);
+  auto add = [&](Eigen::Vector3d base, double score) {
+    p.Add(PosePair{});
+    for (int i = 0; i < 3; ++i) {
+      p.xyz[p.xyz.size() - 3 + i] = base + Eigen::Vector3d(0, 0, 0.5 * i);
+      p.score[p.score.size() - 3 + i] = 1.0;
+    }
+    p.pair_score.back() = score;
+  };
+  add({0, 0, 0}, 0.95);
+  add({2, 0, 0}, 0.99);
+  add({0.05, 0, 0}, 0.97);
+  add({2.04, 0.02, 0}, 0.93);
+  add({0, 0.03, 0.01}, 0.92);
+  add({5, 5, 0}, 0.91);  // a lone proposal
+  Groups groups;
+  GroupScratch scratch;
+  int small = -1;
+  GroupOptions options;
+  EXPECT_EQ(GroupProposals(options, &p, &groups, &scratch, &small), 3);
+  EXPECT_EQ(small, 0);
+  EXPECT_EQ(p.group[0], p.group[2]);
+  EXPECT_EQ(p.group[0], p.group[4]);
+  EXPECT_EQ(p.group[1], p.group[3]);
+  EXPECT_NE(p.group[0], p.group[1]);
+  options.min_group_size = 2;
+  EXPECT_EQ(GroupProposals(options, &p, &groups, &scratch, &small), 2);
+  EXPECT_EQ(small, 1);
+  EXPECT_EQ(p.group[5], -1);
+  EXPECT_EQ(groups.members.size(), 5u);
+}
+
+TEST(MergeGroups, DistanceFilterTopKAndWeighting) {
+  // One group, one joint, five proposals: four near (0,0,0), one outlier at 1 m.
+  Proposals p = OneJointProposals({{0.01, 0, 0}, {-0.01, 0, 0}, {0.03, 0, 0}, {0, 0.02, 0}, {1, 0, 0}});
+  p.score = {1.0, 1.0, 0.5, 1.0, 1.0};
+  Groups groups;
+  groups.begin = {0, 5};
+  groups.members = {0, 1, 2, 3, 4};
+  MergeScratch scratch;
+  auto merge = [&](MergeOptions options) {
+    Poses3D persons;
+    persons.Clear(1);
+    MergeGroups(options, p, groups, &scratch, &persons);
+    return Eigen::Vector4d(persons.Person(0).col(0));
+  };
+  MergeOptions plain;
+  plain.score_weighted = false;
+  plain.top_k = 0;
+  plain.max_distance_m = 0;
+  EXPECT_NEAR(merge(plain).x(), (0.01 - 0.01 + 0.03 + 0 + 1) / 5, 1e-12) << "keep all: plain mean";
+  MergeOptions distance = plain;
+  distance.max_distance_m = 0.3;  // mean x = 0.206: the outlier is 0.79 away
+  EXPECT_NEAR(merge(distance).x(), 0.03 / 4, 1e-12);
+  MergeOptions topk = distance;
+  topk.top_k = 2;  // distances to the first mean (0.206, 0.004, 0): x=0.03 and x=0.01 are closest
+  EXPECT_NEAR(merge(topk).x(), 0.02, 1e-12);
+  MergeOptions weighted = distance;
+  weighted.score_weighted = true;
+  EXPECT_NEAR(merge(weighted).x(), (0.01 - 0.01 + 0.5 * 0.03 + 0) / 3.5, 1e-12);
+  EXPECT_NEAR(merge(weighted)(3), (1 + 1 + 0.5 + 1) / 4.0, 1e-12) << "score = mean of kept scores";
+  MergeOptions strict = plain;
+  strict.min_joint_score = 1.1;
+  EXPECT_EQ(merge(strict)(3), 0.0) << "no candidate: missing";
+}
+
+TEST(PostprocessPersons, DropsInvalidPersonsAndFillsMissingJoints) {
+  const JointNames names = AddDerivedJoints(CocoBodyJoints());
+  std::vector<int> neighbour;
+  for (const auto& n : names) neighbour.push_back(FindJoint(names, NeighbourJoint(n)));
+  std::vector<ResolvedLimb> limbs;
+  for (const auto& l : LimbsFor(names)) {
+    limbs.push_back(ResolvedLimb{FindJoint(names, l.a), FindJoint(names, l.b), l.min_length_m, l.max_length_m});
+  }
+  Poses3D persons;
+  persons.Clear(static_cast<int>(names.size()));
+  auto add = [&](const Eigen::Matrix4Xd& body) {
+    auto person = persons.AddPerson();
+    person.leftCols(17) = body;
+  };
+  Eigen::Matrix4Xd good = test::StandingPerson(0, 0);
+  good(3, 9) = 0;  // wrist_left missing -> filled from elbow_left
+  add(good);
+  Eigen::Matrix4Xd wrong = test::StandingPerson(1.5, 0);
+  wrong.col(10).head<3>() += Eigen::Vector3d(0, 0, 1.5);  // wrist_right 1.5 m off -> replaced
+  add(wrong);
+  Eigen::Matrix4Xd tiny = test::StandingPerson(-1.5, 0);
+  tiny.topRows(3) = tiny.topRows(3) * 0.05;  // 9 cm tall
+  add(tiny);
+  Eigen::Matrix4Xd few = test::StandingPerson(0, 1.5);
+  few.row(3).tail(12).setZero();  // 5 joints only
+  add(few);
+  add(test::StandingPerson(40, 0));  // outside the room
+  RoomCheckOptions room;
+  room.size_m = Eigen::Vector3d(10, 10, 0);
+  FrameStats stats;
+  EXPECT_EQ(PostprocessPersons(PostprocessOptions{}, room, neighbour, limbs, &persons, &stats), 2);
+  EXPECT_EQ(persons.num_persons(), 2);
+  EXPECT_GE(stats.filled_joints, 2);
+  EXPECT_EQ(stats.replaced_joints, 1);
+  EXPECT_LT((persons.Person(0).col(9).head<3>() - good.col(7).head<3>()).norm(), 1e-12);
+  EXPECT_NEAR(persons.Person(0)(3, 9), PostprocessOptions{}.filled_joint_score, 1e-12);
+  EXPECT_LT((persons.Person(1).col(10).head<3>() - wrong.col(8).head<3>()).norm(), 1e-12);
+
+  PostprocessOptions off;
+  off.enabled = false;
+  add(tiny);
+  EXPECT_EQ(PostprocessPersons(off, room, neighbour, limbs, &persons, &stats), 3);
+}
+
+}  // namespace
+}  // namespace rpt

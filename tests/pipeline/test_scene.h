@@ -1,0 +1,27 @@
+// SPDX-License-Identifier: MIT
+// Hand-made geometry for pipeline tests: a ring of pinhole cameras and standing COCO persons.
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "core/camera.h"
+#include "core/joints.h"
+#include "core/poses.h"
+
+namespace rpt::test {
+
+// A camera at `center` looking at `target` (z up), 1000x1000 px, focal 800 px.
+Camera LookAtCamera(const Eigen::Vector3d& center, const Eigen::Vector3d& target, const std::string& name);
+
+// `n` cameras on a circle of radius 4 m at height 2.5 m, looking at (0, 0, 1).
+std::vector<Camera> RingCameras(int n);
+
+// The 17 COCO joints of a standing person (about 1.75 m) at floor position (x, y), facing +x
+// rotated by `yaw` radians. Columns: x, y, z, score (1).
+Eigen::Matrix4Xd StandingPerson(double x, double y, double yaw = 0.0);
+
+// Projects 3D persons (4 x J each) into every camera: one Poses2D per camera.
+std::vector<Poses2D> ProjectPersons(const std::vector<Camera>& cameras, const std::vector<Eigen::Matrix4Xd>& persons);
+
+}  // namespace rpt::test

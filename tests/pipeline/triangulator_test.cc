@@ -1,0 +1,97 @@
+// SPDX-License-Identifier: MIT
+// The whole pipeline on hand-made scenes, and configuration errors.
+#include <gtest/gtest.h>
+
+#include "core/errors.h"
+#include "core/pipeline/triangulator.h"
+#include "tests/pipeline/test_scene.h"
+
+namespace rpt {
+namespace {
+
+TEST(Triangulator, RecoversTwoPersonsExactly) {
+  const auto cameras = test::RingCameras(4);
+  const std::vector<Eigen::Matrix4Xd> bodies = {test::StandingPerson(-1, 0.2, 0.5), test::StandingPerson(1, -0.3, 2.5)};
+  Triangulator tri(cameras, CocoBodyJoints(), TriangulatorOptions{});
+  EXPECT_EQ(tri.output_joints().size(), 20u);
+  Poses3D persons;
+  FrameStats stats;
+  tri.Process(test::ProjectPersons(cameras, bodies), 0.0, &persons, &stats);
+  ASSERT_EQ(persons.num_persons(), 2);
+  EXPECT_EQ(stats.count[static_cast<int>(Step::kPairs)], 6 * 4);
+  EXPECT_EQ(stats.count[static_cast<int>(Step::kFilter)], 12) << "only the 6 correct pairs per person survive";
+  for (const auto& body : bodies) {
+    double best = 1e9;
+    for (int p = 0; p < 2; ++p) best = std::min(best, (persons.Person(p).leftCols(17).topRows(3) - body.topRows(3)).norm());
+    EXPECT_LT(best, 1e-6);
+  }
+  EXPECT_GT(stats.total_us, 0.0);
+  // Derived joints are the means of their sources.
+  const auto p0 = persons.Person(0);
+  EXPECT_LT((p0.col(17).head<3>() - 0.5 * (p0.col(11).head<3>() + p0.col(12).head<3>())).norm(), 1e-3);
+}
+
+TEST(Triangulator, EmptyFramesAndFramesWithOneViewGiveNobody) {
+  const auto cameras = test::RingCameras(3);
+  Triangulator tri(cameras, CocoBodyJoints(), TriangulatorOptions{});
+  Poses3D persons;
+  FrameStats stats;
+  std::vector<Poses2D> empty(3);
+  tri.Process(empty, 0.0, &persons, &stats);
+  EXPECT_EQ(persons.num_persons(), 0);
+  auto views = test::ProjectPersons(cameras, {test::StandingPerson(0, 0)});
+  views[1].Clear(17);
+  views[2].Clear(17);
+  TriangulatorOptions no_track;
+  no_track.track.enabled = false;
+  Triangulator tri2(cameras, CocoBodyJoints(), no_track);
+  tri2.Process(views, 0.0, &persons, &stats);
+  EXPECT_EQ(persons.num_persons(), 0);
+}
+
+TEST(Triangulator, RejectsBadConfigurationAndShapes) {
+  const auto cameras = test::RingCameras(3);
+  TriangulatorOptions bad;
+  bad.filter.min_match_score = 1.5;
+  EXPECT_THROW(Triangulator(cameras, CocoBodyJoints(), bad), ConfigError);
+  TriangulatorOptions unknown;
+  unknown.triangulate.core_joints = {"shoulder_left", "tail"};
+  try {
+    Triangulator(cameras, CocoBodyJoints(), unknown);
+    FAIL() << "expected ConfigError";
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("tail"), std::string::npos);
+  }
+  EXPECT_THROW(Triangulator({cameras[0]}, CocoBodyJoints(), TriangulatorOptions{}), ConfigError);
+  EXPECT_THROW(Triangulator(cameras, {"nose", "nose"}, TriangulatorOptions{}), ConfigError);
+
+  Triangulator tri(cameras, CocoBodyJoints(), TriangulatorOptions{});
+  Poses3D persons;
+  FrameStats stats;
+  std::vector<Poses2D> two_views(2);
+  EXPECT_THROW(tri.Process(two_views, 0, &persons, &stats), InputError);
+  std::vector<Poses2D> wrong_joints(3);
+  wrong_joints[0].Clear(5);
+  wrong_joints[0].AddPerson();
+  EXPECT_THROW(tri.Process(wrong_joints, 0, &persons, &stats), InputError);
+}
+
+TEST(Triangulator, PrefilterUsesLastFrameAndResetForgetsIt) {
+  const auto cameras = test::RingCameras(4);
+  const std::vector<Eigen::Matrix4Xd> bodies = {test::StandingPerson(-1, 0), test::StandingPerson(1, 0)};
+  Triangulator tri(cameras, CocoBodyJoints(), TriangulatorOptions{});
+  Poses3D persons;
+  FrameStats stats;
+  const auto views = test::ProjectPersons(cameras, bodies);
+  tri.Process(views, 0.0, &persons, &stats);
+  EXPECT_EQ(stats.count[static_cast<int>(Step::kPrefilter)], 24) << "first frame: nothing to filter with";
+  tri.Process(views, 0.04, &persons, &stats);
+  EXPECT_EQ(stats.count[static_cast<int>(Step::kPrefilter)], 12) << "mixed pairs dropped";
+  ASSERT_EQ(persons.num_persons(), 2);
+  tri.Reset();
+  tri.Process(views, 0.08, &persons, &stats);
+  EXPECT_EQ(stats.count[static_cast<int>(Step::kPrefilter)], 24);
+}
+
+}  // namespace
+}  // namespace rpt
