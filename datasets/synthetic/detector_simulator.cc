@@ -1,0 +1,253 @@
+// SPDX-License-Identifier: MIT
+#include "datasets/synthetic/detector_simulator.h"
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <string>
+#include <utility>
+
+#include "core/errors.h"
+#include "datasets/synthetic/camera_rig.h"
+#include "datasets/synthetic/person_motion.h"
+#include "datasets/synthetic/random.h"
+
+namespace rpt::synthetic {
+namespace {
+
+constexpr double kPresentScore = 0.1;  // GT joints with a score <= this are absent
+constexpr int kFalsePositiveAttempts = 10;
+
+// Per-camera quantities shared by all persons of a view.
+struct ViewContext {
+  const Camera* camera;
+  double max_radius;      // normalised radius where the lens model stops being monotonic
+  double image_diagonal;  // px
+};
+
+struct Candidate {
+  Eigen::Matrix3Xd joints;  // u, v, score per output joint
+  DetectionSource source;
+};
+
+}  // namespace
+
+std::string MirrorJointName(const std::string& name) {
+  std::string out;
+  size_t start = 0;
+  while (true) {
+    const size_t end = name.find('_', start);
+    const std::string token = name.substr(start, end == std::string::npos ? std::string::npos : end - start);
+    out += token == "left" ? "right" : token == "right" ? "left" : token;
+    if (end == std::string::npos) break;
+    out += '_';
+    start = end + 1;
+  }
+  return out;
+}
+
+DetectorOptions DetectorOptions::Perfect() {
+  DetectorOptions options;
+  options.noise_relative = 0.0;
+  options.noise_absolute_px = 0.0;
+  options.outlier_probability = 0.0;
+  options.outlier_relative = 0.0;
+  options.joint_dropout = 0.0;
+  options.person_miss = 0.0;
+  options.false_positives_per_view = 0.0;
+  options.false_positive_score_scale = 1.0;
+  options.left_right_swap = 0.0;
+  options.min_visible_joints = 1;
+  options.score_base = 1.0;
+  options.score_error_slope = 0.0;
+  options.score_jitter = 0.0;
+  options.score_min = 1.0;
+  options.shuffle_persons = false;
+  return options;
+}
+
+DetectorOptions DetectorOptions::Realistic() { return DetectorOptions(); }
+
+DetectorSimulator::DetectorSimulator(DetectorOptions options, JointNames output_joints, uint64_t seed)
+    : options_(std::move(options)), output_joints_(std::move(output_joints)), seed_(seed) {
+  const int num_joints = static_cast<int>(output_joints_.size());
+  mirror_.resize(num_joints);
+  from_whole_body_.resize(num_joints);
+  for (int k = 0; k < num_joints; ++k) {
+    const int partner = FindJoint(output_joints_, MirrorJointName(output_joints_[k]));
+    mirror_[k] = partner >= 0 ? partner : k;
+    from_whole_body_[k] = FindJoint(CocoWholeBodyJoints(), output_joints_[k]);
+  }
+}
+
+namespace {
+
+// Projects one person (world points per output joint; `present` marks joints that exist) and
+// corrupts the detection. Returns false when fewer than min_visible_joints are in the image.
+bool DetectPerson(const DetectorOptions& options, const ViewContext& view, const Eigen::Matrix3Xd& points,
+                  const std::vector<char>& present, Rng& rng, Eigen::Matrix3Xd* out) {
+  const Camera& camera = *view.camera;
+  const int num_joints = static_cast<int>(points.cols());
+  out->setZero(3, num_joints);
+  std::vector<char> visible(num_joints, 0);
+  Eigen::Vector2d lo = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector2d hi = -lo;
+  int num_visible = 0;
+  for (int k = 0; k < num_joints; ++k) {
+    if (!present[k]) continue;
+    const Eigen::Vector3d p_cam = camera.R * points.col(k) + camera.t;
+    if (!(p_cam.z() > 0.0)) continue;  // behind the camera: never visible
+    if (std::hypot(p_cam.x(), p_cam.y()) / p_cam.z() >= view.max_radius) continue;  // folds back
+    Eigen::Vector2d uv;
+    if (!camera.Project(points.col(k), &uv) || !uv.allFinite()) continue;
+    lo = lo.cwiseMin(uv);
+    hi = hi.cwiseMax(uv);
+    out->col(k).head<2>() = uv;
+    if (uv.x() >= 0.0 && uv.x() < camera.width && uv.y() >= 0.0 && uv.y() < camera.height) {
+      visible[k] = 1;
+      ++num_visible;
+    }
+  }
+  if (num_visible < options.min_visible_joints || num_visible == 0) return false;
+
+  const double diagonal = std::min((hi - lo).norm(), view.image_diagonal);
+  const double sigma = options.noise_relative * diagonal + options.noise_absolute_px;
+  const double outlier_sigma = options.outlier_relative * diagonal;
+  for (int k = 0; k < num_joints; ++k) {
+    if (!visible[k]) {
+      out->col(k).setZero();
+      continue;
+    }
+    Eigen::Vector2d error = Eigen::Vector2d::Zero();
+    const bool outlier = options.outlier_probability > 0.0 && rng.Bernoulli(options.outlier_probability);
+    const double joint_sigma = outlier ? outlier_sigma : sigma;
+    if (joint_sigma > 0.0) error = Eigen::Vector2d(rng.Normal(), rng.Normal()) * joint_sigma;
+    const bool dropped = options.joint_dropout > 0.0 && rng.Bernoulli(options.joint_dropout);
+    const double jitter = options.score_jitter > 0.0 ? options.score_jitter * rng.Normal() : 0.0;
+    if (dropped) {
+      out->col(k).setZero();
+      continue;
+    }
+    const double relative_error = sigma > 0.0 ? error.norm() / sigma : 0.0;
+    Eigen::Vector2d uv = out->col(k).head<2>() + error;
+    if (error.x() != 0.0 || error.y() != 0.0) {
+      // A detector reports pixels inside the image.
+      uv.x() = std::clamp(uv.x(), 0.0, static_cast<double>(camera.width));
+      uv.y() = std::clamp(uv.y(), 0.0, static_cast<double>(camera.height));
+    }
+    out->col(k).head<2>() = uv;
+    (*out)(2, k) =
+        std::clamp(options.score_base - options.score_error_slope * relative_error + jitter, options.score_min, 1.0);
+  }
+  return true;
+}
+
+// A random person placed in front of the camera (built in the camera frame, so the world's up
+// direction does not matter), as world points per output joint.
+void RandomPersonInView(const Camera& camera, const std::vector<int>& from_whole_body, Rng& rng,
+                        Eigen::Matrix3Xd* points, std::vector<char>* present) {
+  const BodyShape shape = RandomBodyShape(rng);
+  GaitState gait;
+  gait.heading_rad = rng.Uniform(-std::numbers::pi, std::numbers::pi);
+  gait.speed_mps = rng.Uniform(0.0, 1.5);
+  gait.phase_rad = rng.Uniform(-std::numbers::pi, std::numbers::pi);
+  Eigen::Matrix3Xd local;
+  PoseJoints(shape, gait, /*whole_body=*/true, &local);
+  const Eigen::Vector3d hip_center = 0.5 * (local.col(11) + local.col(12));
+
+  // Hip centre at a random pixel (pinhole approximation) and depth.
+  const double u = rng.Uniform(0.1, 0.9) * camera.width;
+  const double v = rng.Uniform(0.2, 0.8) * camera.height;
+  const double y_n = (v - camera.K(1, 2)) / camera.K(1, 1);
+  const double x_n = (u - camera.K(0, 2) - camera.K(0, 1) * y_n) / camera.K(0, 0);
+  const Eigen::Vector3d hip_cam = rng.Uniform(2.5, 9.0) * Eigen::Vector3d(x_n, y_n, 1.0);
+  // Local x -> camera x, local y (horizontal) -> camera z, local z (up) -> camera -y.
+  Eigen::Matrix3d local_to_cam;
+  local_to_cam << 1, 0, 0, 0, 0, -1, 0, 1, 0;
+
+  const int num_joints = static_cast<int>(from_whole_body.size());
+  points->setZero(3, num_joints);
+  present->assign(num_joints, 0);
+  for (int k = 0; k < num_joints; ++k) {
+    if (from_whole_body[k] < 0) continue;
+    const Eigen::Vector3d p_cam = local_to_cam * (local.col(from_whole_body[k]) - hip_center) + hip_cam;
+    points->col(k) = camera.R.transpose() * (p_cam - camera.t);
+    (*present)[k] = 1;
+  }
+}
+
+}  // namespace
+
+void DetectorSimulator::Detect(std::span<const Camera> cameras, const Poses3D& gt, const JointNames& gt_joints,
+                               uint64_t frame_index, std::vector<Poses2D>* views,
+                               std::vector<std::vector<DetectionSource>>* sources) const {
+  if (gt.num_persons() > 0 && gt.num_joints != static_cast<int>(gt_joints.size())) {
+    throw InputError("detector simulator: ground truth has " + std::to_string(gt.num_joints) + " joints but " +
+                     std::to_string(gt_joints.size()) + " joint names");
+  }
+  const int num_joints = static_cast<int>(output_joints_.size());
+  std::vector<int> from_gt(num_joints);
+  for (int k = 0; k < num_joints; ++k) from_gt[k] = FindJoint(gt_joints, output_joints_[k]);
+
+  views->resize(cameras.size());
+  if (sources != nullptr) sources->assign(cameras.size(), {});
+  Eigen::Matrix3Xd points(3, num_joints);
+  std::vector<char> present(num_joints);
+  std::vector<Candidate> candidates;
+  for (size_t c = 0; c < cameras.size(); ++c) {
+    const Camera& camera = cameras[c];
+    Rng rng(DeriveSeed(seed_, frame_index, c));
+    const ViewContext view{&camera, MonotonicRadius(camera), std::hypot(camera.width, camera.height)};
+    candidates.clear();
+
+    for (int p = 0; p < gt.num_persons(); ++p) {
+      const auto person = gt.Person(p);
+      for (int k = 0; k < num_joints; ++k) {
+        const int g = from_gt[k];
+        present[k] = g >= 0 && person(3, g) > kPresentScore && person.col(g).head<3>().allFinite();
+        points.col(k) = g >= 0 ? Eigen::Vector3d(person.col(g).head<3>()) : Eigen::Vector3d::Zero();
+      }
+      Candidate candidate;
+      if (!DetectPerson(options_, view, points, present, rng, &candidate.joints)) continue;
+      if (options_.person_miss > 0.0 && rng.Bernoulli(options_.person_miss)) continue;
+      candidate.source.gt_person = p;
+      if (options_.left_right_swap > 0.0 && rng.Bernoulli(options_.left_right_swap)) {
+        const Eigen::Matrix3Xd original = candidate.joints;
+        for (int k = 0; k < num_joints; ++k) candidate.joints.col(k) = original.col(mirror_[k]);
+        candidate.source.swapped = true;
+      }
+      candidates.push_back(std::move(candidate));
+    }
+
+    const int num_false_positives = rng.Poisson(options_.false_positives_per_view);
+    for (int f = 0; f < num_false_positives; ++f) {
+      for (int attempt = 0; attempt < kFalsePositiveAttempts; ++attempt) {
+        RandomPersonInView(camera, from_whole_body_, rng, &points, &present);
+        Candidate candidate;
+        if (!DetectPerson(options_, view, points, present, rng, &candidate.joints)) continue;
+        for (int k = 0; k < num_joints; ++k) {
+          double& score = candidate.joints(2, k);
+          if (score > 0.0) score = std::max(options_.score_min, score * options_.false_positive_score_scale);
+        }
+        candidates.push_back(std::move(candidate));
+        break;
+      }
+    }
+
+    if (options_.shuffle_persons) {
+      for (int i = static_cast<int>(candidates.size()) - 1; i > 0; --i) {
+        std::swap(candidates[i], candidates[rng.UniformInt(i + 1)]);
+      }
+    }
+    Poses2D& out = (*views)[c];
+    out.Clear(num_joints);
+    for (const Candidate& candidate : candidates) {
+      out.AddPerson() = candidate.joints;
+      if (sources != nullptr) (*sources)[c].push_back(candidate.source);
+    }
+  }
+}
+
+}  // namespace rpt::synthetic

@@ -1,0 +1,344 @@
+// SPDX-License-Identifier: MIT
+#include "datasets/synthetic/scene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <string>
+
+#include "core/errors.h"
+#include "datasets/synthetic/person_motion.h"
+#include "datasets/synthetic/random.h"
+
+namespace rpt::synthetic {
+namespace {
+
+using Eigen::Vector2d;
+constexpr double kPi = std::numbers::pi;
+
+// Distance of the hip centre from the walls: keeps swinging feet and hands inside the room.
+constexpr double kWallMargin = 0.65;
+// Waypoints keep this distance from the walls.
+constexpr double kWaypointMargin = 1.0;
+// Steering keeps this much more than the minimum separation when it can.
+constexpr double kComfortExtra = 0.35;
+constexpr double kLookahead = 1.0;       // m, free path wanted ahead
+constexpr int kSteerSteps = 16;          // candidate directions per half turn
+constexpr double kWaitProbability = 0.2;  // chance of standing still at a waypoint
+constexpr double kTurnRate = 3.0;        // rad/s
+constexpr double kAcceleration = 1.5;    // m/s^2
+constexpr double kDeceleration = 3.0;    // m/s^2
+constexpr double kArrivalRadius = 0.3;   // m
+constexpr double kBlockedTimeout = 2.0;  // s, then a new waypoint
+
+struct Box2 {
+  Vector2d lo, hi;
+  bool Contains(const Vector2d& p) const { return (p.array() >= lo.array()).all() && (p.array() <= hi.array()).all(); }
+  Vector2d Sample(Rng& rng) const { return Vector2d(rng.Uniform(lo.x(), hi.x()), rng.Uniform(lo.y(), hi.y())); }
+};
+
+Box2 ShrunkRoom(const Eigen::Vector3d& center, const Eigen::Vector3d& size, double margin) {
+  const Vector2d half = 0.5 * size.head<2>() - Vector2d::Constant(margin);
+  return {center.head<2>() - half, center.head<2>() + half};
+}
+
+// Ground path of one person: position and facing per frame.
+struct Path {
+  std::vector<Vector2d> position;
+  std::vector<double> heading;
+};
+
+struct Agent {
+  Vector2d position;
+  double heading = 0.0;
+  double speed = 0.0;
+  double preferred_speed = 1.0;
+  Vector2d waypoint;
+  double wait_s = 0.0;
+  double blocked_s = 0.0;
+};
+
+double DistanceToSegment(const Vector2d& q, const Vector2d& a, const Vector2d& b) {
+  const Vector2d ab = b - a;
+  const double length2 = ab.squaredNorm();
+  const double t = length2 > 0.0 ? std::clamp((q - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
+  return (a + t * ab - q).norm();
+}
+
+// A waypoint at least 1.5 m away, preferably not behind the walker (avoids turning on the spot).
+Vector2d SampleWaypoint(Rng& rng, const Box2& area, const Vector2d& from, double heading) {
+  const Vector2d forward(std::cos(heading), std::sin(heading));
+  Vector2d fallback = area.Sample(rng);
+  for (int attempt = 0; attempt < 30; ++attempt) {
+    const Vector2d candidate = area.Sample(rng);
+    const Vector2d offset = candidate - from;
+    if (offset.norm() < 1.5) continue;
+    if (offset.normalized().dot(forward) > -0.2) return candidate;
+    fallback = candidate;
+  }
+  return fallback;
+}
+
+Vector2d Direction(double angle) { return Vector2d(std::cos(angle), std::sin(angle)); }
+
+// Multi-agent walk: waypoints, steering around others, waiting, standing still.
+std::vector<Path> SimulateWalks(const SceneOptions& options, Rng& rng) {
+  const int n = options.num_people;
+  const double dt = 1.0 / options.fps;
+  const Box2 walk = ShrunkRoom(options.room_center_m, options.room_size_m, kWallMargin);
+  const double half_min = std::min(options.room_size_m.x(), options.room_size_m.y()) * 0.5;
+  const Box2 waypoints = ShrunkRoom(options.room_center_m, options.room_size_m,
+                                    std::min(kWaypointMargin, std::max(kWallMargin, half_min - 0.5)));
+  const double min_sep = options.min_separation_m;
+  const double comfort = min_sep + kComfortExtra;
+
+  // Initial placement: rejection sampling, generous spacing first.
+  std::vector<Agent> agents(n);
+  for (double spacing : {min_sep + 0.5, min_sep + 1e-3}) {
+    bool placed_all = true;
+    for (int i = 0; i < n && placed_all; ++i) {
+      bool placed = false;
+      for (int attempt = 0; attempt < 5000 && !placed; ++attempt) {
+        agents[i].position = walk.Sample(rng);
+        placed = std::all_of(agents.begin(), agents.begin() + i,
+                             [&](const Agent& other) { return (other.position - agents[i].position).norm() >= spacing; });
+      }
+      placed_all = placed;
+    }
+    if (placed_all) break;
+    if (spacing < min_sep + 0.1) {
+      throw ConfigError("synthetic scene: cannot place " + std::to_string(n) + " people " + std::to_string(min_sep) +
+                        " m apart in the room");
+    }
+  }
+  for (Agent& agent : agents) {
+    agent.preferred_speed = rng.Uniform(0.6, 1.5);
+    agent.heading = rng.Uniform(-kPi, kPi);
+    agent.waypoint = SampleWaypoint(rng, waypoints, agent.position, agent.heading);
+    agent.heading = std::atan2(agent.waypoint.y() - agent.position.y(), agent.waypoint.x() - agent.position.x()) +
+                    rng.Normal(0.0, 0.2);
+    if (rng.Bernoulli(0.2)) {
+      agent.wait_s = rng.Uniform(0.5, 3.0);
+    } else {
+      agent.speed = agent.preferred_speed;
+    }
+  }
+
+  // Scores walking `lookahead` metres towards `direction`, treating the others as static: -1 when
+  // infeasible (leaves the walkable area or comes closer than min_sep + 5 cm to somebody it is not
+  // already moving away from), otherwise the summed intrusion into the others' comfort zones (m).
+  auto intrusion = [&](int i, const Vector2d& direction, double lookahead) {
+    const Vector2d& start = agents[i].position;
+    const Vector2d end = start + lookahead * direction;
+    if (!walk.Contains(end)) return -1.0;
+    double total = 0.0;
+    for (int j = 0; j < n; ++j) {
+      if (j == i) continue;
+      const double current = (agents[j].position - start).norm();
+      const double closest = DistanceToSegment(agents[j].position, start, end);
+      if (closest < std::min(min_sep + 0.05, current - 1e-9)) return -1.0;
+      total += std::max(0.0, comfort - closest);
+    }
+    return total;
+  };
+
+  std::vector<Path> paths(n);
+  for (Path& path : paths) {
+    path.position.reserve(options.num_frames);
+    path.heading.reserve(options.num_frames);
+  }
+  for (int frame = 0; frame < options.num_frames; ++frame) {
+    if (frame > 0) {
+      for (int i = 0; i < n; ++i) {
+        Agent& agent = agents[i];
+        double target_speed = 0.0;
+        double desired_heading = agent.heading;
+        if (agent.wait_s > 0.0) {
+          agent.wait_s -= dt;
+        } else {
+          const Vector2d to_waypoint = agent.waypoint - agent.position;
+          const double distance = to_waypoint.norm();
+          if (distance < kArrivalRadius) {
+            if (rng.Bernoulli(kWaitProbability)) agent.wait_s = rng.Uniform(0.8, 3.0);
+            agent.waypoint = SampleWaypoint(rng, waypoints, agent.position, agent.heading);
+          }
+          const Vector2d goal = agent.waypoint - agent.position;
+          const double goal_heading = std::atan2(goal.y(), goal.x());
+          const double lookahead = std::min(kLookahead, goal.norm());
+          // Steering: the smallest deviation from the goal direction, penalising intrusion into
+          // the others' comfort zones; right turns win ties (people pass on the right).
+          double best_cost = std::numeric_limits<double>::infinity();
+          double best_steer = 0.0, best_intrusion = 0.0;
+          for (int k = 0; k <= 2 * kSteerSteps; ++k) {
+            const double steer = (k % 2 == 1 ? -1.0 : 1.0) * ((k + 1) / 2) * (kPi / kSteerSteps);
+            const double crowding = intrusion(i, Direction(goal_heading + steer), lookahead);
+            if (crowding < 0.0) continue;
+            const double cost = std::abs(steer) + 4.0 * crowding + (steer > 0.0 ? 1e-3 : 0.0);
+            if (cost < best_cost) {
+              best_cost = cost;
+              best_steer = steer;
+              best_intrusion = crowding;
+            }
+          }
+          if (std::isfinite(best_cost)) {
+            agent.blocked_s = 0.0;
+            desired_heading = goal_heading + best_steer;
+            target_speed = agent.preferred_speed * (1.0 - 0.3 * std::abs(best_steer) / kPi) *
+                           (best_intrusion > 0.0 ? 0.75 : 1.0);
+          } else {
+            desired_heading = goal_heading;
+            agent.blocked_s += dt;
+            if (agent.blocked_s > kBlockedTimeout) {
+              agent.blocked_s = 0.0;
+              agent.waypoint = SampleWaypoint(rng, waypoints, agent.position, agent.heading);
+            }
+          }
+        }
+        // Turn with a limited rate; walk slower while the heading is off.
+        const double turn = std::remainder(desired_heading - agent.heading, 2.0 * kPi);
+        agent.heading = std::remainder(agent.heading + std::clamp(turn, -kTurnRate * dt, kTurnRate * dt), 2.0 * kPi);
+        const double remaining = std::remainder(desired_heading - agent.heading, 2.0 * kPi);
+        target_speed *= std::max(0.0, std::cos(remaining));
+        agent.speed = std::clamp(target_speed, agent.speed - kDeceleration * dt, agent.speed + kAcceleration * dt);
+        // Hard constraints: inside the room, minimum separation to everybody's current position.
+        const Vector2d next = agent.position + agent.speed * dt * Direction(agent.heading);
+        bool allowed = walk.Contains(next);
+        for (int j = 0; j < n && allowed; ++j) {
+          if (j != i && (agents[j].position - next).norm() < min_sep) allowed = false;
+        }
+        if (allowed) {
+          agent.position = next;
+        } else {
+          agent.speed = 0.0;
+        }
+      }
+    }
+    for (int i = 0; i < n; ++i) {
+      paths[i].position.push_back(agents[i].position);
+      paths[i].heading.push_back(agents[i].heading);
+    }
+  }
+  return paths;
+}
+
+// Poses the people along their paths into per-frame ground truth.
+std::vector<Poses3D> AnimatePaths(const std::vector<Path>& paths, const std::vector<BodyShape>& shapes,
+                                  bool whole_body, int num_frames, double fps, double floor_z, Rng& rng) {
+  const double dt = 1.0 / fps;
+  const int n = static_cast<int>(paths.size());
+  const int num_joints = NumPosedJoints(whole_body);
+  std::vector<GaitState> gaits(n);
+  for (int i = 0; i < n; ++i) {
+    gaits[i].phase_rad = rng.Uniform(-kPi, kPi);
+    if (num_frames > 1) gaits[i].speed_mps = (paths[i].position[1] - paths[i].position[0]).norm() * fps;
+  }
+  std::vector<Poses3D> frames(num_frames);
+  Eigen::Matrix3Xd joints;
+  for (int frame = 0; frame < num_frames; ++frame) {
+    Poses3D& poses = frames[frame];
+    poses.Clear(num_joints);
+    for (int i = 0; i < n; ++i) {
+      GaitState& gait = gaits[i];
+      if (frame > 0) {
+        const double speed = (paths[i].position[frame] - paths[i].position[frame - 1]).norm() * fps;
+        gait.speed_mps += (speed - gait.speed_mps) * std::min(1.0, dt / 0.25);
+        AdvanceGaitPhase(dt, &gait);
+      }
+      gait.position_m = paths[i].position[frame];
+      gait.heading_rad = paths[i].heading[frame];
+      PoseJoints(shapes[i], gait, whole_body, &joints);
+      auto person = poses.AddPerson(i);
+      person.topRows<3>() = joints;
+      person.row(2).array() += floor_z;
+      person.row(3).setOnes();
+    }
+  }
+  return frames;
+}
+
+void CheckCommon(int num_people, int num_frames, double fps, const Eigen::Vector3d& room_size_m) {
+  if (num_people < 0) throw ConfigError("synthetic scene: num_people must be >= 0");
+  if (num_frames < 0) throw ConfigError("synthetic scene: num_frames must be >= 0");
+  if (!(fps > 0.0)) throw ConfigError("synthetic scene: fps must be > 0");
+  if (!(room_size_m.x() > 2.0 * kWallMargin + 0.2 && room_size_m.y() > 2.0 * kWallMargin + 0.2)) {
+    throw ConfigError("synthetic scene: room must be larger than " + std::to_string(2.0 * kWallMargin + 0.2) + " m");
+  }
+  if (!(room_size_m.z() >= 2.2)) throw ConfigError("synthetic scene: room must be at least 2.2 m high");
+}
+
+Scene MakeSceneShell(const RigOptions& rig, uint64_t seed, bool whole_body, const Eigen::Vector3d& center,
+                     const Eigen::Vector3d& size, double fps) {
+  Scene scene;
+  scene.cameras = MakeCameraRig(rig, DeriveSeed(seed, 1));
+  scene.joint_names = whole_body ? CocoWholeBodyJoints() : CocoBodyJoints();
+  scene.room_center_m = center;
+  scene.room_size_m = size;
+  scene.fps = fps;
+  return scene;
+}
+
+}  // namespace
+
+Scene GenerateScene(const SceneOptions& options) {
+  CheckCommon(options.num_people, options.num_frames, options.fps, options.room_size_m);
+  if (!(options.min_separation_m >= 0.0)) throw ConfigError("synthetic scene: min_separation_m must be >= 0");
+  Scene scene = MakeSceneShell(options.rig, options.seed, options.whole_body, options.room_center_m,
+                               options.room_size_m, options.fps);
+  Rng body_rng(DeriveSeed(options.seed, 2));
+  std::vector<BodyShape> shapes;
+  for (int i = 0; i < options.num_people; ++i) shapes.push_back(RandomBodyShape(body_rng));
+  Rng walk_rng(DeriveSeed(options.seed, 3));
+  const std::vector<Path> paths = SimulateWalks(options, walk_rng);
+  Rng gait_rng(DeriveSeed(options.seed, 4));
+  const double floor_z = options.room_center_m.z() - 0.5 * options.room_size_m.z();
+  scene.gt = AnimatePaths(paths, shapes, options.whole_body, options.num_frames, options.fps, floor_z, gait_rng);
+  return scene;
+}
+
+Scene MakeCrossingScene(const CrossingOptions& options) {
+  CheckCommon(options.num_people, options.num_frames, options.fps, options.room_size_m);
+  if (!(options.lane_spacing_m >= 0.0)) throw ConfigError("crossing scene: lane_spacing_m must be >= 0");
+  if (!(options.speed_mps > 0.0)) throw ConfigError("crossing scene: speed_mps must be > 0");
+  Scene scene = MakeSceneShell(options.rig, options.seed, options.whole_body, options.room_center_m,
+                               options.room_size_m, options.fps);
+  Rng rng(DeriveSeed(options.seed, 5));
+  std::vector<BodyShape> shapes;
+  for (int i = 0; i < options.num_people; ++i) shapes.push_back(RandomBodyShape(rng));
+
+  const Box2 walk = ShrunkRoom(options.room_center_m, options.room_size_m, kWallMargin);
+  const double lane_angle = rng.Uniform(0.0, 2.0 * kPi);
+  const Vector2d along = Direction(lane_angle);
+  const Vector2d across = Direction(lane_angle + 0.5 * kPi);
+  const Vector2d center = options.room_center_m.head<2>();
+  const double meet_time = 0.5 * (options.num_frames - 1) / options.fps;
+  std::vector<Path> paths(options.num_people);
+  for (int i = 0; i < options.num_people; ++i) {
+    const double direction = i % 2 == 0 ? 1.0 : -1.0;
+    const double offset = (i - 0.5 * (options.num_people - 1)) * options.lane_spacing_m;
+    const double speed = options.speed_mps * rng.Uniform(0.9, 1.1);
+    const Vector2d lane_origin = center + offset * across;
+    // Along-lane interval inside the walkable area.
+    double s_lo = -1e9, s_hi = 1e9;
+    for (int axis = 0; axis < 2; ++axis) {
+      if (std::abs(along[axis]) < 1e-12) continue;
+      double a = (walk.lo[axis] - lane_origin[axis]) / along[axis];
+      double b = (walk.hi[axis] - lane_origin[axis]) / along[axis];
+      if (a > b) std::swap(a, b);
+      s_lo = std::max(s_lo, a);
+      s_hi = std::min(s_hi, b);
+    }
+    if (!(s_lo <= 0.0 && s_hi >= 0.0)) throw ConfigError("crossing scene: lanes do not fit into the room");
+    const double heading = lane_angle + (direction > 0 ? 0.0 : kPi);
+    for (int frame = 0; frame < options.num_frames; ++frame) {
+      const double s = std::clamp(direction * speed * (frame / options.fps - meet_time), s_lo, s_hi);
+      paths[i].position.push_back(lane_origin + s * along);
+      paths[i].heading.push_back(heading);
+    }
+  }
+  const double floor_z = options.room_center_m.z() - 0.5 * options.room_size_m.z();
+  scene.gt = AnimatePaths(paths, shapes, options.whole_body, options.num_frames, options.fps, floor_z, rng);
+  return scene;
+}
+
+}  // namespace rpt::synthetic

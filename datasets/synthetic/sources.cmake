@@ -1,0 +1,8 @@
+# Synthetic scenes and the simulated 2D detector (namespace rpt::synthetic).
+target_sources(rpt_datasets PRIVATE
+  ${CMAKE_CURRENT_LIST_DIR}/random.cc
+  ${CMAKE_CURRENT_LIST_DIR}/camera_rig.cc
+  ${CMAKE_CURRENT_LIST_DIR}/person_motion.cc
+  ${CMAKE_CURRENT_LIST_DIR}/scene.cc
+  ${CMAKE_CURRENT_LIST_DIR}/detector_simulator.cc
+)

@@ -1,0 +1,5 @@
+# Tests of the synthetic scenes and the simulated detector (datasets/synthetic).
+list(APPEND RPT_DATASETS_TEST_SOURCES
+  ${CMAKE_CURRENT_LIST_DIR}/synthetic_test.cc
+  ${CMAKE_CURRENT_LIST_DIR}/synthetic_detector_test.cc
+)
