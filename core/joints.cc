@@ -93,6 +93,28 @@ const JointNames& EvaluationJoints13() {
   return names;
 }
 
+std::string MirrorJointName(std::string_view name) {
+  std::string out;
+  size_t start = 0;
+  while (start <= name.size()) {
+    const size_t end = std::min(name.find('_', start), name.size());
+    const std::string_view token = name.substr(start, end - start);
+    out += token == "left" ? "right" : token == "right" ? "left" : std::string(token);
+    if (end < name.size()) out += '_';
+    start = end + 1;
+  }
+  return out;
+}
+
+std::vector<int> MirrorIndices(const JointNames& names) {
+  std::vector<int> mirror(names.size());
+  for (size_t j = 0; j < names.size(); ++j) {
+    const int m = FindJoint(names, MirrorJointName(names[j]));
+    mirror[j] = m >= 0 ? m : static_cast<int>(j);
+  }
+  return mirror;
+}
+
 int FindJoint(const JointNames& names, std::string_view name) {
   for (size_t i = 0; i < names.size(); ++i) {
     if (names[i] == name) return static_cast<int>(i);

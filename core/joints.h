@@ -31,6 +31,13 @@ const JointNames& DefaultCoreJoints();
 // The 13 joints evaluated in the paper: nose plus the 12 core joints.
 const JointNames& EvaluationJoints13();
 
+// The name with its "left" and "right" tokens ('_'-separated) exchanged, e.g. wrist_left ->
+// wrist_right, hand_thumb_1_left -> hand_thumb_1_right; unchanged when it has none.
+std::string MirrorJointName(std::string_view name);
+
+// For each joint, the index of its left/right counterpart in `names` (itself when none).
+std::vector<int> MirrorIndices(const JointNames& names);
+
 // Index of `name` in `names`, or -1.
 int FindJoint(const JointNames& names, std::string_view name);
 

@@ -40,6 +40,8 @@ struct FrameStats {
   // Extra counters.
   int pruned_limbs = 0;       // joints invalidated by limb pruning (steps 7 and 10)
   int small_groups = 0;       // groups dropped by min_group_size
+  int conflicting_proposals = 0;  // proposals removed because their 2D poses belong to another person
+  int mirrored_groups = 0;    // groups dropped as left/right-swapped duplicates of another group
   int replaced_joints = 0;    // post-processing: implausible joints replaced by a neighbour
   int filled_joints = 0;      // post-processing: missing joints filled from a neighbour
   int new_tracks = 0;         // tracking: tracks started this frame

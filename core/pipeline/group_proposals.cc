@@ -2,11 +2,33 @@
 #include "core/pipeline/group_proposals.h"
 
 #include <algorithm>
+#include <limits>
 
 namespace rpt {
 
-int GroupProposals(const GroupOptions& options, Proposals* proposals, Groups* groups, GroupScratch* scratch,
-                   int* small_groups) {
+namespace {
+
+// Mean distance between group means a and b over joints valid in both, b's joints taken from
+// the slots `map` (identity or the left/right mirror). +inf with fewer than 2 common joints.
+double GroupDistance(const GroupScratch& s, int n, int a, int b, std::span<const int> map) {
+  double sum = 0;
+  int common = 0;
+  for (int i = 0; i < n; ++i) {
+    const size_t ai = static_cast<size_t>(a) * n + i, bi = static_cast<size_t>(b) * n + map[i];
+    if (s.mean_count[ai] == 0 || s.mean_count[bi] == 0) continue;
+    sum += (s.mean[ai] - s.mean[bi]).norm();
+    ++common;
+  }
+  return common >= 2 ? sum / common : std::numeric_limits<double>::infinity();
+}
+
+}  // namespace
+
+int GroupProposals(const GroupOptions& options, int num_poses, std::span<const int> mirror, Proposals* proposals,
+                   Groups* groups, GroupScratch* scratch, GroupCounters* counters) {
+  *counters = GroupCounters{};
+  int* const conflicting = &counters->conflicting_proposals;
+  int* const small_groups = &counters->small_groups;
   const int num = proposals->size();
   const int n = proposals->num_joints;
   GroupScratch& s = *scratch;
@@ -58,15 +80,74 @@ int GroupProposals(const GroupOptions& options, Proposals* proposals, Groups* gr
     proposals->group[k] = best_group;
   }
 
-  // Drop small groups, renumber the rest in creation order, list members contiguously.
   const int num_groups = static_cast<int>(s.size.size());
+  if (options.exclusive_poses) {
+    s.strength.assign(num_groups, 0.0);
+    for (int k = 0; k < num; ++k) s.strength[proposals->group[k]] += proposals->pair_score[k];
+    // Each pose goes to the strongest group using it (ties: the older group).
+    s.owner.assign(num_poses, -1);
+    auto claim = [&](int pose, int g) {
+      int& owner = s.owner[pose];
+      if (owner < 0 || s.strength[g] > s.strength[owner] || (s.strength[g] == s.strength[owner] && g < owner)) {
+        owner = g;
+      }
+    };
+    for (int k = 0; k < num; ++k) {
+      claim(proposals->pairs[k].a, proposals->group[k]);
+      claim(proposals->pairs[k].b, proposals->group[k]);
+    }
+    for (int k = 0; k < num; ++k) {
+      int& g = proposals->group[k];
+      if (s.owner[proposals->pairs[k].a] == g && s.owner[proposals->pairs[k].b] == g) continue;
+      --s.size[g];
+      g = -1;
+      ++*conflicting;
+    }
+  }
+
+  if (options.drop_mirrored && num_groups > 1) {
+    // Group means over the surviving members, and strengths.
+    s.mean.assign(static_cast<size_t>(num_groups) * n, Eigen::Vector3d::Zero());
+    s.mean_count.assign(static_cast<size_t>(num_groups) * n, 0);
+    s.strength.assign(num_groups, 0.0);
+    for (int k = 0; k < num; ++k) {
+      const int g = proposals->group[k];
+      if (g < 0) continue;
+      s.strength[g] += proposals->pair_score[k];
+      for (int i = 0; i < n; ++i) {
+        const size_t idx = static_cast<size_t>(k) * n + i;
+        if (proposals->score[idx] <= 0) continue;
+        s.mean[static_cast<size_t>(g) * n + i] += proposals->xyz[idx];
+        ++s.mean_count[static_cast<size_t>(g) * n + i];
+      }
+    }
+    for (size_t i = 0; i < s.mean.size(); ++i) {
+      if (s.mean_count[i] > 0) s.mean[i] /= s.mean_count[i];
+    }
+    for (int a = 0; a < num_groups; ++a) {
+      for (int b = a + 1; b < num_groups; ++b) {
+        if (s.size[a] <= 0 || s.size[b] <= 0) continue;
+        if (GroupDistance(s, n, a, b, mirror) >= options.max_distance_m) continue;
+        const int weaker = s.strength[b] > s.strength[a] ? a : b;
+        s.size[weaker] = -s.size[weaker];  // mark dropped (members are cleared below)
+        ++counters->mirrored_groups;
+      }
+    }
+    for (int k = 0; k < num; ++k) {
+      int& g = proposals->group[k];
+      if (g >= 0 && s.size[g] < 0) g = -1;
+    }
+    for (int g = 0; g < num_groups; ++g) s.size[g] = std::max(s.size[g], 0);
+  }
+
+  // Drop small (or emptied) groups, renumber the rest in creation order, list members contiguously.
   s.renumber.assign(num_groups, -1);
   int kept = 0;
   *small_groups = 0;
   for (int g = 0; g < num_groups; ++g) {
     if (s.size[g] >= options.min_group_size) {
       s.renumber[g] = kept++;
-    } else {
+    } else if (s.size[g] > 0) {
       ++*small_groups;
     }
   }

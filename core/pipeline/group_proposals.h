@@ -6,9 +6,16 @@
 // if that distance is below max_distance_m; otherwise it starts a new group. Groups with fewer
 // than min_group_size proposals are dropped. Proposals of a person seen in k views form one
 // group of up to k(k-1)/2 proposals; proposals of mismatched pairs land far from any person.
+//
+// With exclusive_poses (an addition to the paper), every 2D pose belongs to at most one person:
+// a pose used by several groups stays with the strongest group (largest sum of pair scores) and
+// the other groups' proposals that use it are removed. This removes the phantom persons that
+// two-view ambiguity creates from poses of different people (they reuse poses that well-supported
+// persons already explain) and the duplicates of a person whose proposals split into two groups.
 #pragma once
 
 #include <Eigen/Core>
+#include <span>
 #include <vector>
 
 #include "core/pipeline/options.h"
@@ -23,11 +30,23 @@ struct GroupScratch {
   std::vector<int> count;            // per group and joint
   std::vector<int> size;             // per group
   std::vector<int> renumber;
+  std::vector<double> strength;  // per group: sum of pair scores
+  std::vector<int> owner;        // per 2D pose: owning group
+  std::vector<Eigen::Vector3d> mean;  // per group and joint (members only)
+  std::vector<int> mean_count;
 };
 
 // Sets proposals->group (-1 for proposals in dropped groups) and fills `groups` with the kept
-// groups' members. Returns the number of kept groups; *small_groups gets the number dropped.
-int GroupProposals(const GroupOptions& options, Proposals* proposals, Groups* groups, GroupScratch* scratch,
-                   int* small_groups);
+// groups' members. `num_poses` bounds the 2D pose indices of the pairs; `mirror[i]` is the
+// proposal joint slot of joint i's left/right counterpart (itself when none). Returns the number
+// of kept groups. Counters: groups dropped by min_group_size, proposals removed by
+// exclusive_poses, groups dropped as mirrored duplicates.
+struct GroupCounters {
+  int small_groups = 0;
+  int conflicting_proposals = 0;
+  int mirrored_groups = 0;
+};
+int GroupProposals(const GroupOptions& options, int num_poses, std::span<const int> mirror, Proposals* proposals,
+                   Groups* groups, GroupScratch* scratch, GroupCounters* counters);
 
 }  // namespace rpt

@@ -29,9 +29,20 @@ int MergeGroups(const MergeOptions& options, const Proposals& proposals, const G
         distance = (proposals.xyz[static_cast<size_t>(m) * n + j] - mean).norm();
       }
       if (options.max_distance_m > 0) {
+        // Best-scoring candidate, kept if the filter below would drop everything.
+        std::pair<double, int> best = candidates.front();
+        double best_score = -1;
+        for (const auto& c : candidates) {
+          const double score = proposals.score[static_cast<size_t>(c.second) * n + j];
+          if (score > best_score) {
+            best_score = score;
+            best = c;
+          }
+        }
         candidates.erase(std::remove_if(candidates.begin(), candidates.end(),
                                         [&](const auto& c) { return c.first > options.max_distance_m; }),
                          candidates.end());
+        if (candidates.empty() && options.keep_best_when_all_far) candidates.push_back(best);
       }
       if (options.top_k > 0 && static_cast<int>(candidates.size()) > options.top_k) {
         std::partial_sort(candidates.begin(), candidates.begin() + options.top_k, candidates.end());

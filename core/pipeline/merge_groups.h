@@ -4,7 +4,9 @@
 // For every joint: take the proposals whose joint score is >= min_joint_score, compute their
 // mean, drop those farther than max_distance_m from it, keep the top_k closest, and average them
 // (weighted by joint score when score_weighted). The merged joint's score is the mean score of
-// the kept proposals; a joint with no candidate is missing (score 0).
+// the kept proposals; a joint with no candidate is missing (score 0). When the distance filter
+// drops every candidate (e.g. two proposals that disagree), the highest-scoring candidate is kept
+// (keep_best_when_all_far; the paper leaves the joint missing).
 #pragma once
 
 #include <utility>

@@ -41,6 +41,8 @@ std::string TriangulatorOptions::Check() const {
   Checker c;
   c.Range("undistort.min_joint_score", undistort.min_joint_score, 0, 1);
   c.Range("prefilter.max_distance_rel", prefilter.max_distance_rel, 0, 100);
+  c.Range("prefilter.person_speed_m_s", prefilter.person_speed_m_s, 0, 1000);
+  c.Range("prefilter.ambiguity_ratio", prefilter.ambiguity_ratio, 1, 1000);
   c.Range("triangulate.min_core_joints", triangulate.min_core_joints, 1, 1000);
   c.Finite("room_check.center_m", room_check.center_m);
   c.Finite("room_check.size_m", room_check.size_m);

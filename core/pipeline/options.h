@@ -19,9 +19,14 @@ struct UndistortOptions {
 };
 
 // Step 2: keep pairs whose two poses both match the same last-frame person, or neither does.
+// The match radius grows with the time since the last frame, so sparsely sampled sequences
+// (e.g. every 12th frame) keep their true pairs: radius = max_distance_rel + person_speed_m_s *
+// elapsed / 1.8 m (1.8 m: the typical bbox diagonal of a person, to turn metres into rel).
 struct PrefilterOptions {
   bool enabled = true;
-  double max_distance_rel = 0.25;  // mean core-joint distance / bbox diagonal to count as a match
+  double max_distance_rel = 0.25;  // match radius at zero elapsed time (fraction of bbox diagonal)
+  double person_speed_m_s = 2.0;   // assumed top speed of a person, widens the radius over time
+  double ambiguity_ratio = 1.5;    // second-closest person must be this much farther for a match
 };
 
 enum class TriangulationMethod { kMidpoint, kDlt };
@@ -61,6 +66,8 @@ struct FilterOptions {
 struct GroupOptions {
   double max_distance_m = 0.3;  // mean core-joint distance for a proposal to join a group
   int min_group_size = 1;       // groups with fewer proposals are dropped
+  bool exclusive_poses = true;  // a 2D pose belongs to one person: the strongest group keeps it
+  bool drop_mirrored = true;    // drop a group that is another group with left/right swapped
 };
 
 // Step 11.
@@ -69,6 +76,8 @@ struct MergeOptions {
   int top_k = 3;                // then keep the k closest (<= 0: keep all)
   bool score_weighted = true;   // weighted average by joint score instead of plain mean
   double min_joint_score = 0.1; // joint proposals below are ignored
+  bool keep_best_when_all_far = true;  // if the distance filter drops every candidate, keep the
+                                       // highest-scoring one instead of leaving the joint missing
 };
 
 // Step 12.

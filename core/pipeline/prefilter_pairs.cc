@@ -1,23 +1,31 @@
 // SPDX-License-Identifier: MIT
 #include "core/pipeline/prefilter_pairs.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace rpt {
 
 int PrefilterPairs(const PreparedViews& views, std::span<const ViewGeometry> geometry,
-                   std::span<const int> core_joints, const PreviousPersons& previous,
-                   const PrefilterOptions& options, std::vector<int>* match, std::vector<PosePair>* pairs) {
+                   std::span<const int> core_joints, const PreviousPersons& previous, double timestamp_s,
+                   const PrefilterOptions& options, PrefilterScratch* scratch, std::vector<PosePair>* pairs) {
+  std::vector<int>* match = &scratch->match;
   const int num_previous = previous.size();
   if (!options.enabled || num_previous == 0) return static_cast<int>(pairs->size());
 
   const int num_core = static_cast<int>(core_joints.size());
-  match->assign(views.num_poses(), -1);
+  constexpr double kPersonSizeM = 1.8;
+  const double elapsed_s = std::max(0.0, timestamp_s - previous.timestamp_s);
+  const double radius_rel = options.max_distance_rel + options.person_speed_m_s * elapsed_s / kPersonSizeM;
+  match->assign(views.num_poses(), kPoseFree);
+  scratch->distance.assign(views.num_poses(), 0.0);
   for (int g = 0; g < views.num_poses(); ++g) {
     const ViewGeometry& geo = geometry[views.view_of[g]];
     const Keypoint* kps = views.Pose(g);
-    const double max_distance = options.max_distance_rel * views.bbox_diag[g];
-    double best = max_distance;
+    const double radius = radius_rel * views.bbox_diag[g];
+    double best = std::numeric_limits<double>::infinity(), second = best;
+    int best_q = -1;
     for (int q = 0; q < num_previous; ++q) {
       double sum = 0;
       int n = 0;
@@ -33,15 +41,39 @@ int PrefilterPairs(const PreparedViews& views, std::span<const ViewGeometry> geo
       if (n < 3) continue;
       const double mean = sum / n;
       if (mean < best) {
+        second = best;
         best = mean;
-        (*match)[g] = q;
+        best_q = q;
+      } else if (mean < second) {
+        second = mean;
+      }
+    }
+    if (best < radius && second >= options.ambiguity_ratio * best) {
+      (*match)[g] = best_q;
+      scratch->distance[g] = best;
+    } else if (best < 2 * radius) {
+      (*match)[g] = kPoseAmbiguous;
+    }
+  }
+  // One match per person and view: of several poses of a view matching q, only the closest keeps it.
+  const int num_views = static_cast<int>(views.view_begin.size()) - 1;
+  for (int v = 0; v < num_views; ++v) {
+    for (int g = views.view_begin[v]; g < views.view_begin[v + 1]; ++g) {
+      if ((*match)[g] < 0) continue;
+      for (int h = g + 1; h < views.view_begin[v + 1]; ++h) {
+        if ((*match)[h] != (*match)[g]) continue;
+        const int loser = scratch->distance[h] < scratch->distance[g] ? g : h;
+        (*match)[loser] = kPoseAmbiguous;
+        if (loser == g) break;
       }
     }
   }
 
   int kept = 0;
   for (const PosePair& pair : *pairs) {
-    if ((*match)[pair.a] == (*match)[pair.b]) (*pairs)[kept++] = pair;
+    const int a = (*match)[pair.a], b = (*match)[pair.b];
+    const bool drop = (a >= 0 && b >= 0 && a != b) || (a >= 0 && b == kPoseFree) || (a == kPoseFree && b >= 0);
+    if (!drop) (*pairs)[kept++] = pair;
   }
   pairs->resize(kept);
   return kept;

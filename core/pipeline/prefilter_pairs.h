@@ -1,11 +1,17 @@
 // SPDX-License-Identifier: MIT
 // Step 2: filter pairs with the last frame's 3D poses.
 //
-// The previous persons' core joints are projected into every view; each 2D pose is matched to
-// the closest projected person (mean core-joint distance relative to the pose's bounding-box
-// diagonal, below max_distance_rel). A pair is kept when both poses match the same person
-// (likely that person) or when neither matches (possibly a new person); it is dropped when only
-// one side matches, or the two sides match different persons.
+// The previous persons' core joints are projected into every view and compared with each 2D pose
+// (mean core-joint distance relative to the pose's bounding-box diagonal). A pose is
+//   matched to person q  when q is within the match radius, clearly the closest (the second
+//                        closest is at least `ambiguity_ratio` times farther), and this pose is
+//                        q's closest pose in its view (a person is matched once per view),
+//   free                 when nobody is within twice the radius (a new person),
+//   ambiguous            otherwise.
+// A pair is dropped when its poses match different persons, or when one is matched and the other
+// free (the paper's one-sided case: the other pose is somebody else); every other pair is kept,
+// in particular both-matched-same, both-free and anything ambiguous. Refusing to act on ambiguous
+// matches keeps true pairs in crowded views and in sparsely sampled sequences.
 #pragma once
 
 #include <span>
@@ -19,6 +25,7 @@ namespace rpt {
 // Core joints of the previous frame's persons: `num_core` entries per person; score 0 = missing.
 struct PreviousPersons {
   int num_core = 0;
+  double timestamp_s = 0;  // when these persons were output
   std::vector<Eigen::Vector3d> xyz;
   std::vector<double> score;
   int size() const { return num_core > 0 ? static_cast<int>(score.size()) / num_core : 0; }
@@ -29,10 +36,19 @@ struct PreviousPersons {
   }
 };
 
-// Matches every pose to a previous person (-1 = none) into `match`, then compacts `pairs`.
+inline constexpr int kPoseFree = -1;
+inline constexpr int kPoseAmbiguous = -2;
+
+struct PrefilterScratch {
+  std::vector<int> match;         // per pose: person index, kPoseFree or kPoseAmbiguous
+  std::vector<double> distance;   // per pose: distance to the matched person (px)
+};
+
+// Classifies every pose into scratch->match, then compacts `pairs`.
 // Returns the number of pairs kept. Does nothing (keeps all) when there are no previous persons.
+// `timestamp_s` is the current frame's time (the radius grows with the time since `previous`).
 int PrefilterPairs(const PreparedViews& views, std::span<const ViewGeometry> geometry,
-                   std::span<const int> core_joints, const PreviousPersons& previous,
-                   const PrefilterOptions& options, std::vector<int>* match, std::vector<PosePair>* pairs);
+                   std::span<const int> core_joints, const PreviousPersons& previous, double timestamp_s,
+                   const PrefilterOptions& options, PrefilterScratch* scratch, std::vector<PosePair>* pairs);
 
 }  // namespace rpt

@@ -96,6 +96,7 @@ Triangulator::Triangulator(std::vector<Camera> cameras, JointNames input_joints,
     ws.neighbour.push_back(FindJoint(ws.output_joints, NeighbourJoint(ws.output_joints[j])));
   }
   ws.core_limbs = ResolveLimbs(LimbsFor(core_list), core_list);
+  ws.core_mirror = MirrorIndices(core_list);
   ws.all_limbs = ResolveLimbs(LimbsFor(ws.output_joints), ws.output_joints);
   ws.previous.Clear(static_cast<int>(ws.core_joints.size()));
 }
@@ -143,7 +144,8 @@ void Triangulator::Process(std::span<const Poses2D> views, double timestamp_s, P
   timer.Lap(Step::kPairs);
 
   count[at(Step::kPrefilter)] =
-      PrefilterPairs(ws.prepared, ws.geometry, ws.core_joints, ws.previous, opt.prefilter, &ws.match, &ws.pairs);
+      PrefilterPairs(ws.prepared, ws.geometry, ws.core_joints, ws.previous, timestamp_s, opt.prefilter, &ws.prefilter,
+                     &ws.pairs);
   timer.Lap(Step::kPrefilter);
 
   count[at(Step::kTriangulateCore)] = TriangulatePairs(ws.prepared, ws.geometry, ws.pairs, ws.core_joints,
@@ -160,7 +162,12 @@ void Triangulator::Process(std::span<const Poses2D> views, double timestamp_s, P
   count[at(Step::kFilter)] = FilterProposals(opt.filter, &ws.core);
   timer.Lap(Step::kFilter);
 
-  count[at(Step::kGroup)] = GroupProposals(opt.group, &ws.core, &ws.groups, &ws.group_scratch, &stats->small_groups);
+  GroupCounters group_counters;
+  count[at(Step::kGroup)] = GroupProposals(opt.group, ws.prepared.num_poses(), ws.core_mirror, &ws.core, &ws.groups,
+                                           &ws.group_scratch, &group_counters);
+  stats->small_groups = group_counters.small_groups;
+  stats->conflicting_proposals = group_counters.conflicting_proposals;
+  stats->mirrored_groups = group_counters.mirrored_groups;
   timer.Lap(Step::kGroup);
 
   // Step 10: the grouped pairs again, now with all joints; proposal i = groups.members[i].
@@ -191,6 +198,7 @@ void Triangulator::Process(std::span<const Poses2D> views, double timestamp_s, P
   // Remember this frame's persons for the next frame's pre-filter.
   const int num_core = static_cast<int>(ws.core_joints.size());
   ws.previous.Clear(num_core);
+  ws.previous.timestamp_s = timestamp_s;
   for (int p = 0; p < persons->num_persons(); ++p) {
     const auto person = persons->Person(p);
     for (int c = 0; c < num_core; ++c) {

@@ -26,6 +26,7 @@ struct Workspace {
   TriangulatorOptions options;
   std::vector<DerivedJointRule> derived;
   std::vector<int> core_joints;        // output-joint indices of the core joints
+  std::vector<int> core_mirror;        // per core slot: slot of its left/right counterpart
   std::vector<int> all_joints;         // 0 .. num_output_joints-1
   std::vector<ResolvedLimb> core_limbs;  // indexed by core slot
   std::vector<ResolvedLimb> all_limbs;   // indexed by output joint
@@ -34,7 +35,7 @@ struct Workspace {
   // Per-frame buffers.
   PreparedViews prepared;
   std::vector<PosePair> pairs;
-  std::vector<int> match;
+  PrefilterScratch prefilter;
   Proposals core;
   GroupScratch group_scratch;
   Groups groups;

@@ -147,19 +147,20 @@ TEST(PrefilterPairs, KeepsBothOrNeitherMatchedDropsOneSided) {
       previous.score.push_back(1.0);
     }
   }
-  std::vector<int> match;
-  const int kept = PrefilterPairs(f.prepared, f.geometry, f.core, previous, PrefilterOptions{}, &match, &pairs);
+  PrefilterScratch scratch;
+  const std::vector<int>& match = scratch.match;
+  const int kept = PrefilterPairs(f.prepared, f.geometry, f.core, previous, 0.0, PrefilterOptions{}, &scratch, &pairs);
   // Kept: a-a, b-b (same match), c-c (neither). Dropped: mixed ones and one-sided c-x / x-c.
   EXPECT_EQ(kept, 3);
   for (const PosePair& p : pairs) {
     EXPECT_EQ(f.prepared.person_of[p.a], f.prepared.person_of[p.b]);
   }
-  EXPECT_EQ(match[f.prepared.view_begin[0] + 2], -1);
+  EXPECT_EQ(match[f.prepared.view_begin[0] + 2], kPoseFree);
   // Disabled: everything stays.
   MakePairs(f.prepared, &pairs);
   PrefilterOptions off;
   off.enabled = false;
-  EXPECT_EQ(PrefilterPairs(f.prepared, f.geometry, f.core, previous, off, &match, &pairs), 9);
+  EXPECT_EQ(PrefilterPairs(f.prepared, f.geometry, f.core, previous, 0.0, off, &scratch, &pairs), 9);
 }
 
 TEST(TriangulatePairs, ExactRecoveryWithMidpointAndDlt) {
@@ -290,7 +291,8 @@ TEST(GroupProposals, ClustersByPersonAndDropsSmallGroups) {
   Proposals p;
   p.Clear(3);
   auto add = [&](Eigen::Vector3d base, double score) {
-    p.Add(PosePair{});
+    const int k = p.size();
+    p.Add(PosePair{2 * k, 2 * k + 1});  // distinct 2D poses per proposal
     for (int i = 0; i < 3; ++i) {
       p.xyz[p.xyz.size() - 3 + i] = base + Eigen::Vector3d(0, 0, 0.5 * i);
       p.score[p.score.size() - 3 + i] = 1.0;
@@ -305,19 +307,90 @@ TEST(GroupProposals, ClustersByPersonAndDropsSmallGroups) {
   add({5, 5, 0}, 0.91);  // a lone proposal
   Groups groups;
   GroupScratch scratch;
-  int small = -1;
+  GroupCounters counters;
   GroupOptions options;
-  EXPECT_EQ(GroupProposals(options, &p, &groups, &scratch, &small), 3);
-  EXPECT_EQ(small, 0);
+  const std::vector<int> no_mirror = {0, 1, 2};
+  EXPECT_EQ(GroupProposals(options, 12, no_mirror, &p, &groups, &scratch, &counters), 3);
+  EXPECT_EQ(counters.small_groups, 0);
+  EXPECT_EQ(counters.conflicting_proposals, 0);
   EXPECT_EQ(p.group[0], p.group[2]);
   EXPECT_EQ(p.group[0], p.group[4]);
   EXPECT_EQ(p.group[1], p.group[3]);
   EXPECT_NE(p.group[0], p.group[1]);
   options.min_group_size = 2;
-  EXPECT_EQ(GroupProposals(options, &p, &groups, &scratch, &small), 2);
-  EXPECT_EQ(small, 1);
+  EXPECT_EQ(GroupProposals(options, 12, no_mirror, &p, &groups, &scratch, &counters), 2);
+  EXPECT_EQ(counters.small_groups, 1);
   EXPECT_EQ(p.group[5], -1);
   EXPECT_EQ(groups.members.size(), 5u);
+}
+
+TEST(GroupProposals, ExclusivePosesRemovePhantomsThatReuseAPersonsPoses) {
+  // Person A: poses 0,1,2 (three views) -> proposals (0,1), (0,2), (1,2) near the origin.
+  // Phantom: pair (2, 3) -- pose 2 belongs to A -- triangulated 1.5 m away.
+  Proposals p;
+  p.Clear(2);
+  auto add = [&](int a, int b, Eigen::Vector3d x, double score) {
+    p.Add(PosePair{a, b});
+    p.xyz[p.xyz.size() - 2] = x;
+    p.xyz[p.xyz.size() - 1] = x + Eigen::Vector3d(0, 0, 0.5);
+    p.score[p.score.size() - 2] = p.score[p.score.size() - 1] = 1.0;
+    p.pair_score.back() = score;
+  };
+  add(0, 1, {0, 0, 0}, 0.95);
+  add(0, 2, {0.02, 0, 0}, 0.94);
+  add(1, 2, {0, 0.02, 0}, 0.93);
+  add(2, 3, {1.5, 0, 0}, 0.99);  // stronger pair score, but a weaker group
+  Groups groups;
+  GroupScratch scratch;
+  GroupCounters counters;
+  GroupOptions options;
+  const std::vector<int> no_mirror = {0, 1};
+  EXPECT_EQ(GroupProposals(options, 4, no_mirror, &p, &groups, &scratch, &counters), 1);
+  EXPECT_EQ(counters.conflicting_proposals, 1);
+  EXPECT_EQ(p.group[3], -1);
+  options.exclusive_poses = false;
+  EXPECT_EQ(GroupProposals(options, 4, no_mirror, &p, &groups, &scratch, &counters), 2);
+  EXPECT_EQ(counters.conflicting_proposals, 0);
+}
+
+TEST(GroupProposals, MirroredDuplicateOfAPersonIsDropped) {
+  // Joints: 0 = left, 1 = right. Person: left at y=+0.2, right at y=-0.2 (three proposals).
+  // A left/right-swapped detection pair gives the same person mirrored (one proposal).
+  Proposals p;
+  p.Clear(2);
+  auto add = [&](int a, int b, double left_y, double score) {
+    p.Add(PosePair{a, b});
+    p.xyz[p.xyz.size() - 2] = Eigen::Vector3d(0, left_y, 1);
+    p.xyz[p.xyz.size() - 1] = Eigen::Vector3d(0, -left_y, 1);
+    p.score[p.score.size() - 2] = p.score[p.score.size() - 1] = 1.0;
+    p.pair_score.back() = score;
+  };
+  add(0, 1, 0.2, 0.95);
+  add(0, 2, 0.21, 0.94);
+  add(1, 2, 0.19, 0.93);
+  add(3, 4, -0.2, 0.99);  // mirrored: its "left" joint sits on the person's right
+  Groups groups;
+  GroupScratch scratch;
+  GroupCounters counters;
+  GroupOptions options;
+  const std::vector<int> mirror = {1, 0};
+  EXPECT_EQ(GroupProposals(options, 5, mirror, &p, &groups, &scratch, &counters), 1);
+  EXPECT_EQ(counters.mirrored_groups, 1);
+  EXPECT_EQ(p.group[3], -1);
+  EXPECT_EQ(p.group[0], 0);
+  options.drop_mirrored = false;
+  EXPECT_EQ(GroupProposals(options, 5, mirror, &p, &groups, &scratch, &counters), 2);
+}
+
+TEST(MirrorJointName, SwapsSideTokens) {
+  EXPECT_EQ(MirrorJointName("wrist_left"), "wrist_right");
+  EXPECT_EQ(MirrorJointName("hand_thumb_1_right"), "hand_thumb_1_left");
+  EXPECT_EQ(MirrorJointName("nose"), "nose");
+  EXPECT_EQ(MirrorJointName("face_07"), "face_07");
+  const std::vector<int> mirror = MirrorIndices(CocoBodyJoints());
+  EXPECT_EQ(mirror[0], 0);
+  EXPECT_EQ(mirror[5], 6);
+  EXPECT_EQ(mirror[16], 15);
 }
 
 TEST(MergeGroups, DistanceFilterTopKAndWeighting) {
@@ -349,6 +422,22 @@ TEST(MergeGroups, DistanceFilterTopKAndWeighting) {
   weighted.score_weighted = true;
   EXPECT_NEAR(merge(weighted).x(), (0.01 - 0.01 + 0.5 * 0.03 + 0) / 3.5, 1e-12);
   EXPECT_NEAR(merge(weighted)(3), (1 + 1 + 0.5 + 1) / 4.0, 1e-12) << "score = mean of kept scores";
+  // Two candidates 1 m apart: the distance filter drops both; the fallback keeps the better one.
+  Proposals two = OneJointProposals({{0, 0, 0}, {1, 0, 0}});
+  two.score = {0.3, 0.8};
+  Groups pair_group;
+  pair_group.begin = {0, 2};
+  pair_group.members = {0, 1};
+  Poses3D out;
+  out.Clear(1);
+  MergeGroups(distance, two, pair_group, &scratch, &out);
+  EXPECT_NEAR(out.Person(0)(0, 0), 1.0, 1e-12);
+  EXPECT_NEAR(out.Person(0)(3, 0), 0.8, 1e-12);
+  MergeOptions no_fallback = distance;
+  no_fallback.keep_best_when_all_far = false;
+  out.Clear(1);
+  MergeGroups(no_fallback, two, pair_group, &scratch, &out);
+  EXPECT_EQ(out.Person(0)(3, 0), 0.0);
   MergeOptions strict = plain;
   strict.min_joint_score = 1.1;
   EXPECT_EQ(merge(strict)(3), 0.0) << "no candidate: missing";

@@ -1,0 +1,71 @@
+// SPDX-License-Identifier: MIT
+// A warm Triangulator performs no heap allocation per frame (counting operator new).
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <new>
+#include <vector>
+
+#include "core/pipeline/triangulator.h"
+#include "datasets/synthetic/detector_simulator.h"
+#include "datasets/synthetic/scene.h"
+
+namespace {
+std::atomic<long> g_allocations{0};
+thread_local bool g_counting = false;
+}  // namespace
+
+void* operator new(std::size_t size) {
+  if (g_counting) g_allocations.fetch_add(1, std::memory_order_relaxed);
+  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
+  throw std::bad_alloc();
+}
+void* operator new[](std::size_t size) { return operator new(size); }
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+
+namespace rpt {
+namespace {
+
+long CountAllocations(Triangulator& tri, const std::vector<std::vector<Poses2D>>& frames, double fps, Poses3D* persons,
+                      FrameStats* stats) {
+  g_allocations = 0;
+  g_counting = true;
+  for (size_t f = 0; f < frames.size(); ++f) tri.Process(frames[f], f / fps, persons, stats);
+  g_counting = false;
+  return g_allocations.load();
+}
+
+void CheckNoAllocationOnceWarm(bool whole_body, int cameras, int people) {
+  synthetic::SceneOptions options;
+  options.rig.num_cameras = cameras;
+  options.num_people = people;
+  options.whole_body = whole_body;
+  options.num_frames = 80;
+  options.seed = 3;
+  const synthetic::Scene scene = synthetic::GenerateScene(options);
+  const synthetic::DetectorSimulator detector(synthetic::DetectorOptions::Realistic(), scene.joint_names, 3);
+  std::vector<std::vector<Poses2D>> frames(options.num_frames);
+  for (int f = 0; f < options.num_frames; ++f) detector.Detect(scene.cameras, scene.gt[f], scene.joint_names, f, &frames[f]);
+
+  TriangulatorOptions tri_options;
+  tri_options.room_check.center_m = scene.room_center_m;
+  tri_options.room_check.size_m = scene.room_size_m;
+  Triangulator tri(scene.cameras, scene.joint_names, tri_options);
+  Poses3D persons;
+  FrameStats stats;
+  const long warmup = CountAllocations(tri, frames, scene.fps, &persons, &stats);
+  EXPECT_GT(warmup, 0) << "the counter must see the warm-up allocations";
+  tri.Reset();
+  EXPECT_EQ(CountAllocations(tri, frames, scene.fps, &persons, &stats), 0);
+}
+
+TEST(Allocation, WarmTriangulatorDoesNotAllocateBody) { CheckNoAllocationOnceWarm(false, 5, 4); }
+TEST(Allocation, WarmTriangulatorDoesNotAllocateWholeBody) { CheckNoAllocationOnceWarm(true, 5, 2); }
+TEST(Allocation, WarmTriangulatorDoesNotAllocateManyCameras) { CheckNoAllocationOnceWarm(false, 12, 8); }
+
+}  // namespace
+}  // namespace rpt
