@@ -1,0 +1,95 @@
+// SPDX-License-Identifier: MIT
+#include "datasets/io/binary.h"
+
+#include <zlib.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <system_error>
+
+#include "core/errors.h"
+
+namespace rpt::io::detail {
+
+std::string SourceName(const std::filesystem::path& path) { return path.string(); }
+
+std::vector<std::uint8_t> ReadFileBytes(const std::filesystem::path& path) {
+  const std::string name = SourceName(path);
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw InputError(name + ": file not found");
+  if (std::filesystem::is_directory(path, ec)) throw InputError(name + ": is a directory, expected a file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(name + ": cannot open file");
+  in.seekg(0, std::ios::end);
+  const std::streamoff size = in.tellg();
+  if (size < 0) throw InputError(name + ": cannot determine file size");
+  in.seekg(0, std::ios::beg);
+  std::vector<std::uint8_t> bytes(static_cast<std::size_t>(size));
+  if (size > 0 && !in.read(reinterpret_cast<char*>(bytes.data()), size)) {
+    throw InputError(name + ": read error");
+  }
+  return bytes;
+}
+
+std::string HexByte(std::uint8_t value) {
+  char buffer[8];
+  std::snprintf(buffer, sizeof(buffer), "0x%02x", static_cast<unsigned>(value));
+  return buffer;
+}
+
+std::vector<std::uint8_t> InflateUpTo(Bytes input, bool raw_deflate, std::size_t limit,
+                                      const std::string& what) {
+  if (limit > kMaxInflatedBytes) {
+    throw InputError(what + ": declared uncompressed size " + std::to_string(limit) +
+                     " bytes exceeds the reader's limit of " + std::to_string(kMaxInflatedBytes));
+  }
+  z_stream stream{};
+  const int init = raw_deflate ? inflateInit2(&stream, -MAX_WBITS) : inflateInit(&stream);
+  if (init != Z_OK) throw InputError(what + ": zlib initialisation failed");
+
+  std::vector<std::uint8_t> out;
+  // Grow geometrically from a small start so a lying size field costs nothing up front.
+  out.resize(std::min<std::size_t>(limit, 64 * 1024));
+  std::size_t produced = 0;
+  std::size_t consumed = 0;
+  bool finished = false;
+  while (produced < limit) {
+    if (produced == out.size()) out.resize(std::min(limit, std::max<std::size_t>(out.size() * 2, 1)));
+    // zlib counts in uInt (32 bit); feed in slices.
+    const std::size_t in_slice = std::min<std::size_t>(input.size() - consumed, 1u << 30);
+    const std::size_t out_slice = std::min<std::size_t>(out.size() - produced, 1u << 30);
+    stream.next_in = const_cast<Bytef*>(input.data() + consumed);
+    stream.avail_in = static_cast<uInt>(in_slice);
+    stream.next_out = out.data() + produced;
+    stream.avail_out = static_cast<uInt>(out_slice);
+    const int rc = inflate(&stream, Z_NO_FLUSH);
+    consumed += in_slice - stream.avail_in;
+    produced += out_slice - stream.avail_out;
+    if (rc == Z_STREAM_END) {
+      finished = true;
+      break;
+    }
+    if (rc == Z_BUF_ERROR && stream.avail_in == 0 && consumed == input.size()) {
+      inflateEnd(&stream);
+      throw InputError(what + ": compressed data is truncated (stream ended after " +
+                       std::to_string(produced) + " bytes)");
+    }
+    if (rc != Z_OK && rc != Z_BUF_ERROR) {
+      const std::string msg = stream.msg ? stream.msg : "error " + std::to_string(rc);
+      inflateEnd(&stream);
+      throw InputError(what + ": corrupt compressed data (zlib: " + msg + ")");
+    }
+    if (rc == Z_BUF_ERROR && stream.avail_out != 0) {
+      // No progress possible although there is room: the input is exhausted mid-stream.
+      inflateEnd(&stream);
+      throw InputError(what + ": compressed data is truncated");
+    }
+  }
+  inflateEnd(&stream);
+  (void)finished;
+  out.resize(produced);
+  return out;
+}
+
+}  // namespace rpt::io::detail

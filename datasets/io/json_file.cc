@@ -1,0 +1,160 @@
+// SPDX-License-Identifier: MIT
+#include "datasets/io/json_file.h"
+
+#include <algorithm>
+
+#include "core/errors.h"
+#include "datasets/io/binary.h"
+
+namespace rpt::io {
+namespace {
+
+std::string ShownPointer(const std::string& pointer) { return pointer.empty() ? std::string("/") : pointer; }
+
+[[noreturn]] void Fail(const std::string& source, const std::string& pointer, const std::string& what) {
+  throw InputError(source + ": " + ShownPointer(pointer) + ": " + what);
+}
+
+std::string TypeName(const nlohmann::json& j) { return j.type_name(); }
+
+// nlohmann reports a byte offset; count lines/columns for the message (1-based; the
+// offset points just past the offending character).
+void LineColumn(std::string_view text, std::size_t byte, std::size_t* line, std::size_t* column) {
+  byte = std::min(byte, text.size());
+  *line = 1;
+  std::size_t line_start = 0;
+  for (std::size_t i = 0; i + 1 < byte; ++i) {
+    if (text[i] == '\n') {
+      ++*line;
+      line_start = i + 1;
+    }
+  }
+  *column = byte > line_start ? byte - line_start : 1;
+}
+
+}  // namespace
+
+nlohmann::json ParseJsonText(std::string_view text, const std::string& source) {
+  try {
+    return nlohmann::json::parse(text.begin(), text.end());
+  } catch (const nlohmann::json::parse_error& e) {
+    std::size_t line = 0, column = 0;
+    LineColumn(text, e.byte, &line, &column);
+    std::string msg = e.what();
+    // Drop nlohmann's own "[json.exception.parse_error.101] parse error at line 1, column 2: " prefix.
+    if (auto p = msg.find(": "); p != std::string::npos && msg.rfind("[json.exception", 0) == 0) msg = msg.substr(p + 2);
+    throw InputError(source + ":" + std::to_string(line) + ":" + std::to_string(column) + ": JSON parse error: " + msg);
+  }
+}
+
+nlohmann::json LoadJsonFile(const std::filesystem::path& path) {
+  const auto bytes = detail::ReadFileBytes(path);
+  return ParseJsonText(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), detail::SourceName(path));
+}
+
+std::string JsonPointerJoin(std::string_view base, std::string_view token) {
+  std::string out(base);
+  out += '/';
+  for (char c : token) {
+    if (c == '~') {
+      out += "~0";
+    } else if (c == '/') {
+      out += "~1";
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
+std::string JsonPointerJoin(std::string_view base, std::size_t index) { return std::string(base) + "/" + std::to_string(index); }
+
+const nlohmann::json* JsonFind(const nlohmann::json& root, const std::string& pointer) {
+  try {
+    const nlohmann::json::json_pointer ptr(pointer);
+    if (!root.contains(ptr)) return nullptr;
+    return &root.at(ptr);
+  } catch (const nlohmann::json::exception&) {
+    return nullptr;  // malformed pointer or an index into a non-array
+  }
+}
+
+const nlohmann::json& JsonAt(const nlohmann::json& root, const std::string& pointer, const std::string& source) {
+  const nlohmann::json* j = JsonFind(root, pointer);
+  if (!j) Fail(source, pointer, "missing");
+  return *j;
+}
+
+double JsonNumber(const nlohmann::json& root, const std::string& pointer, const std::string& source) {
+  const auto& j = JsonAt(root, pointer, source);
+  if (!j.is_number()) Fail(source, pointer, "expected a number, got " + TypeName(j));
+  return j.get<double>();
+}
+
+std::int64_t JsonInt(const nlohmann::json& root, const std::string& pointer, const std::string& source) {
+  const auto& j = JsonAt(root, pointer, source);
+  if (j.is_number_integer()) return j.get<std::int64_t>();
+  if (j.is_number_float()) {
+    const double d = j.get<double>();
+    if (d == static_cast<double>(static_cast<std::int64_t>(d))) return static_cast<std::int64_t>(d);
+  }
+  Fail(source, pointer, "expected an integer, got " + (j.is_number() ? j.dump() : TypeName(j)));
+}
+
+bool JsonBool(const nlohmann::json& root, const std::string& pointer, const std::string& source) {
+  const auto& j = JsonAt(root, pointer, source);
+  if (!j.is_boolean()) Fail(source, pointer, "expected true or false, got " + TypeName(j));
+  return j.get<bool>();
+}
+
+std::string JsonString(const nlohmann::json& root, const std::string& pointer, const std::string& source) {
+  const auto& j = JsonAt(root, pointer, source);
+  if (!j.is_string()) Fail(source, pointer, "expected a string, got " + TypeName(j));
+  return j.get<std::string>();
+}
+
+std::vector<double> JsonNumbers(const nlohmann::json& root, const std::string& pointer, const std::string& source,
+                                std::size_t expected_count) {
+  const auto& j = JsonAt(root, pointer, source);
+  const std::string want =
+      expected_count == kAnyCount ? std::string("an array of numbers") : "an array of " + std::to_string(expected_count) + " numbers";
+  if (!j.is_array()) Fail(source, pointer, "expected " + want + ", got " + TypeName(j));
+  if (expected_count != kAnyCount && j.size() != expected_count) {
+    Fail(source, pointer, "expected " + want + ", got " + std::to_string(j.size()) + " elements");
+  }
+  std::vector<double> out;
+  out.reserve(j.size());
+  for (const auto& v : j) {
+    if (!v.is_number()) Fail(source, pointer, "expected " + want + ", found " + TypeName(v) + " at index " + std::to_string(out.size()));
+    out.push_back(v.get<double>());
+  }
+  return out;
+}
+
+std::vector<double> JsonMatrix(const nlohmann::json& root, const std::string& pointer, const std::string& source,
+                               std::size_t rows, std::size_t cols) {
+  const auto& j = JsonAt(root, pointer, source);
+  const std::string want = "expected " + std::to_string(rows) + "x" + std::to_string(cols) + " array of numbers";
+  if (!j.is_array()) Fail(source, pointer, want + ", got " + TypeName(j));
+  std::vector<double> out;
+  out.reserve(rows * cols);
+  // Flat form.
+  if (j.size() == rows * cols && std::all_of(j.begin(), j.end(), [](const nlohmann::json& v) { return v.is_number(); })) {
+    for (const auto& v : j) out.push_back(v.get<double>());
+    return out;
+  }
+  if (j.size() != rows) Fail(source, pointer, want + ", got " + std::to_string(j.size()) + " rows");
+  for (std::size_t r = 0; r < rows; ++r) {
+    const auto& row = j[r];
+    if (!row.is_array() || row.size() != cols) {
+      Fail(source, pointer, want + ", row " + std::to_string(r) + " is " + (row.is_array() ? std::to_string(row.size()) + " long" : TypeName(row)));
+    }
+    for (const auto& v : row) {
+      if (!v.is_number()) Fail(source, pointer, want + ", found " + TypeName(v) + " in row " + std::to_string(r));
+      out.push_back(v.get<double>());
+    }
+  }
+  return out;
+}
+
+}  // namespace rpt::io

@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: MIT
+// Private helper for the dataset readers: load a JSON file with parse errors that name the
+// file, line and column, and fetch typed values at JSON pointers with errors that name
+// the file and the pointer, e.g.
+//   "calibration_shelf.json: /0/R: expected 3x3 array of numbers".
+// Internal to rpt_datasets (it exposes nlohmann::json, which is a private dependency).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <limits>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace rpt::io {
+
+inline constexpr std::size_t kAnyCount = std::numeric_limits<std::size_t>::max();
+
+// Throws InputError "<path>: file not found" or "<path>:<line>:<column>: JSON parse error: ...".
+nlohmann::json LoadJsonFile(const std::filesystem::path& path);
+// Same for text already in memory; `source` names it in messages.
+nlohmann::json ParseJsonText(std::string_view text, const std::string& source);
+
+// "/a/b" + "c" -> "/a/b/c" (escaping '~' and '/'), "/a" + 3 -> "/a/3".
+std::string JsonPointerJoin(std::string_view base, std::string_view token);
+std::string JsonPointerJoin(std::string_view base, std::size_t index);
+
+// The value at `pointer` ("" is the whole document), or nullptr when absent.
+const nlohmann::json* JsonFind(const nlohmann::json& root, const std::string& pointer);
+// The value at `pointer`; throws "<source>: <pointer>: missing" when absent.
+const nlohmann::json& JsonAt(const nlohmann::json& root, const std::string& pointer, const std::string& source);
+
+double JsonNumber(const nlohmann::json& root, const std::string& pointer, const std::string& source);
+std::int64_t JsonInt(const nlohmann::json& root, const std::string& pointer, const std::string& source);
+bool JsonBool(const nlohmann::json& root, const std::string& pointer, const std::string& source);
+std::string JsonString(const nlohmann::json& root, const std::string& pointer, const std::string& source);
+// A flat array of numbers, optionally of an exact length.
+std::vector<double> JsonNumbers(const nlohmann::json& root, const std::string& pointer, const std::string& source,
+                                std::size_t expected_count = kAnyCount);
+// A rows x cols matrix, row-major. Accepts nested [[..], ..] of rows x cols and, for the
+// files that store matrices flat, a flat array of rows*cols numbers.
+std::vector<double> JsonMatrix(const nlohmann::json& root, const std::string& pointer, const std::string& source,
+                               std::size_t rows, std::size_t cols);
+
+}  // namespace rpt::io
