@@ -5,4 +5,5 @@ target_sources(rpt_datasets PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/person_motion.cc
   ${CMAKE_CURRENT_LIST_DIR}/scene.cc
   ${CMAKE_CURRENT_LIST_DIR}/detector_simulator.cc
+  ${CMAKE_CURRENT_LIST_DIR}/synthetic_sequence.cc
 )

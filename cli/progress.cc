@@ -1,0 +1,46 @@
+// SPDX-License-Identifier: MIT
+#include "cli/progress.h"
+
+#include <unistd.h>
+
+#include <cstdio>
+
+namespace rpt::cli {
+namespace {
+constexpr double kQuietSeconds = 2.0;
+}
+
+Progress::Progress(std::string label, long total, bool enabled)
+    : label_(std::move(label)),
+      total_(total),
+      enabled_(enabled && total > 0),
+      tty_(isatty(fileno(stderr)) != 0),
+      start_(std::chrono::steady_clock::now()),
+      last_draw_(start_) {}
+
+Progress::~Progress() {
+  if (shown_ && tty_) std::fprintf(stderr, "\n");
+}
+
+void Progress::Update(long done) {
+  if (!enabled_) return;
+  const auto now = std::chrono::steady_clock::now();
+  const double elapsed = std::chrono::duration<double>(now - start_).count();
+  if (elapsed < kQuietSeconds && done < total_) return;
+  if (!shown_ && done >= total_) return;  // finished quickly: stay silent
+  const int decile = static_cast<int>(10 * done / total_);
+  if (tty_) {
+    if (std::chrono::duration<double>(now - last_draw_).count() < 0.2 && done < total_) return;
+    last_draw_ = now;
+    const int width = 30, filled = static_cast<int>(width * done / total_);
+    std::fprintf(stderr, "\r%s [%.*s%*s] %ld/%ld (%.0f s)", label_.c_str(), filled,
+                 "==============================", width - filled, "", done, total_, elapsed);
+  } else if (decile != last_decile_) {
+    std::fprintf(stderr, "%s: %ld/%ld (%.0f s)\n", label_.c_str(), done, total_, elapsed);
+  }
+  last_decile_ = decile;
+  shown_ = true;
+  std::fflush(stderr);
+}
+
+}  // namespace rpt::cli
