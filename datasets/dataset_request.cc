@@ -1,0 +1,84 @@
+// SPDX-License-Identifier: MIT
+#include "datasets/dataset_request.h"
+
+#include <algorithm>
+#include <charconv>
+
+#include "core/errors.h"
+
+namespace rpt {
+namespace {
+
+std::string ValidParams(const DatasetInfo& info) {
+  std::string out;
+  for (const DatasetParam& p : info.params) out += (out.empty() ? "" : ", ") + p.name;
+  return out.empty() ? "(none)" : out;
+}
+
+int ParseInt(std::string_view text, const std::string& what) {
+  int value = 0;
+  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec != std::errc() || ptr != text.data() + text.size()) {
+    throw ConfigError(what + ": '" + std::string(text) + "' is not an integer");
+  }
+  return value;
+}
+
+}  // namespace
+
+std::string DatasetRequest::Param(const DatasetInfo& info, const std::string& key) const {
+  const auto known = std::find_if(info.params.begin(), info.params.end(), [&](const DatasetParam& p) { return p.name == key; });
+  if (known == info.params.end()) {
+    throw ConfigError("dataset '" + info.name + "' has no parameter '" + key + "' (valid: " + ValidParams(info) + ")");
+  }
+  const auto it = params.find(key);
+  return it != params.end() ? it->second : known->default_value;
+}
+
+void DatasetRequest::CheckParams(const DatasetInfo& info) const {
+  for (const auto& [key, value] : params) {
+    const bool known = std::any_of(info.params.begin(), info.params.end(), [&](const DatasetParam& p) { return p.name == key; });
+    if (!known) {
+      throw ConfigError("dataset '" + info.name + "' has no parameter '" + key + "' (valid: " + ValidParams(info) + ")");
+    }
+  }
+}
+
+std::vector<std::string> SplitList(const std::string& text) {
+  std::vector<std::string> out;
+  size_t start = 0;
+  while (start <= text.size()) {
+    const size_t end = std::min(text.find(',', start), text.size());
+    std::string item = text.substr(start, end - start);
+    item.erase(0, item.find_first_not_of(" \t"));
+    item.erase(item.find_last_not_of(" \t") + 1);
+    if (!item.empty()) out.push_back(item);
+    start = end + 1;
+  }
+  return out;
+}
+
+std::vector<int> ParseFrameRanges(const std::string& text, const std::string& what) {
+  std::vector<int> frames;
+  for (const std::string& item : SplitList(text)) {
+    std::string range = item;
+    int step = 1;
+    if (const size_t colon = range.find(':'); colon != std::string::npos) {
+      step = ParseInt(std::string_view(range).substr(colon + 1), what);
+      range = range.substr(0, colon);
+      if (step <= 0) throw ConfigError(what + ": step in '" + item + "' must be positive");
+    }
+    const size_t dash = range.find('-', 1);
+    const int first = ParseInt(std::string_view(range).substr(0, dash), what);
+    const int last = dash == std::string::npos ? first : ParseInt(std::string_view(range).substr(dash + 1), what);
+    if (last < first) throw ConfigError(what + ": empty range '" + item + "'");
+    if (static_cast<long>(last - first) / step > 10000000) throw ConfigError(what + ": range '" + item + "' is too large");
+    for (int f = first; f <= last; f += step) frames.push_back(f);
+  }
+  std::sort(frames.begin(), frames.end());
+  frames.erase(std::unique(frames.begin(), frames.end()), frames.end());
+  if (frames.empty()) throw ConfigError(what + ": no frames selected by '" + text + "'");
+  return frames;
+}
+
+}  // namespace rpt

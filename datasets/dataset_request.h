@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: MIT
+// What a dataset reader is asked for, and how it describes itself.
+//
+// Every reader is a pair of functions (datasets/readers/<name>.h):
+//   DatasetInfo <Name>Info();
+//   std::vector<Sequence> Read<Name>(const DatasetRequest& request);
+// Readers convert everything to metres in a z-up world frame where the dataset allows it, name
+// joints like core/joints.h (nose, shoulder_left, ...; dataset-specific extras such as
+// head_top), and set frame ids "<dataset>[_<sequence>]_<frame number, 6 digits>".
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace rpt {
+
+struct DatasetParam {
+  std::string name;         // e.g. "frames"
+  std::string default_value;  // as text; empty = none
+  std::string help;         // one line
+};
+
+struct DatasetInfo {
+  std::string name;                 // registry name, e.g. "shelf"
+  std::string description;          // one line
+  std::string layout;               // what must be on disk under --root (multi-line ok)
+  std::vector<DatasetParam> params;  // accepted --param key=value options
+};
+
+struct DatasetRequest {
+  std::string dataset;
+  std::filesystem::path root;
+  std::map<std::string, std::string> params;  // key=value from the command line
+
+  // The value of `key`, or `info`'s default. Throws ConfigError when `key` is not among
+  // info.params (listing the valid ones).
+  std::string Param(const DatasetInfo& info, const std::string& key) const;
+  // Throws ConfigError naming the first given param that `info` does not accept.
+  void CheckParams(const DatasetInfo& info) const;
+};
+
+// Parses "a,b,c" into {"a","b","c"} (empty items dropped).
+std::vector<std::string> SplitList(const std::string& text);
+// Parses frame selections like "300-600", "350-470,650-750", "0-3199:12" (every 12th) into a
+// sorted list of frame numbers. Throws ConfigError naming `what` on malformed text.
+std::vector<int> ParseFrameRanges(const std::string& text, const std::string& what);
+
+}  // namespace rpt
