@@ -107,3 +107,58 @@ TEST(ClipSpeed, LimitsJointDisplacementPerSecond) {
 
 }  // namespace
 }  // namespace rpt
+
+// End to end: people walking towards each other and passing closely keep their track ids.
+#include "core/pipeline/triangulator.h"
+#include "datasets/synthetic/detector_simulator.h"
+#include "datasets/synthetic/scene.h"
+
+namespace rpt {
+namespace {
+
+TEST(TrackingEndToEnd, IdsSurvivePeopleCrossing) {
+  for (uint64_t seed : {1, 2, 3, 4}) {
+    SCOPED_TRACE(testing::Message() << "seed " << seed);
+    synthetic::CrossingOptions options;
+    options.num_people = seed == 4 ? 3 : 2;
+    options.lane_spacing_m = 0.55;
+    options.seed = seed;
+    const synthetic::Scene scene = synthetic::MakeCrossingScene(options);
+    const synthetic::DetectorSimulator detector(synthetic::DetectorOptions::Realistic(), scene.joint_names, seed);
+    Triangulator tri(scene.cameras, scene.joint_names, TriangulatorOptions{});
+    std::vector<Poses2D> views;
+    Poses3D persons;
+    FrameStats stats;
+    std::vector<int> id_of(scene.gt[0].num_persons(), -2);
+    int matched_frames = 0;
+    for (size_t f = 0; f < scene.gt.size(); ++f) {
+      detector.Detect(scene.cameras, scene.gt[f], scene.joint_names, f, &views);
+      tri.Process(views, f / scene.fps, &persons, &stats);
+      for (int g = 0; g < scene.gt[f].num_persons(); ++g) {
+        int best_p = -1;
+        double best = 0.15;  // metres, mean over body joints
+        for (int p = 0; p < persons.num_persons(); ++p) {
+          const double e = (persons.Person(p).leftCols(17).topRows(3) - scene.gt[f].Person(g).topRows(3))
+                               .colwise()
+                               .norm()
+                               .mean();
+          if (e < best) {
+            best = e;
+            best_p = p;
+          }
+        }
+        if (best_p < 0) continue;
+        ++matched_frames;
+        if (id_of[g] == -2) id_of[g] = persons.track_ids[best_p];
+        EXPECT_EQ(persons.track_ids[best_p], id_of[g]) << "person " << g << " frame " << f;
+      }
+    }
+    EXPECT_GT(matched_frames, static_cast<int>(0.95 * scene.gt.size() * scene.gt[0].num_persons()));
+    for (size_t a = 0; a < id_of.size(); ++a) {
+      for (size_t b = a + 1; b < id_of.size(); ++b) EXPECT_NE(id_of[a], id_of[b]);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace rpt
