@@ -119,8 +119,12 @@ void CheckExactRecovery(const RecoveryCase& c) {
     for (int g = 0; g < gt.num_persons(); ++g) {
       const int visibility = BestPairVisibility(views, sources, scene.joint_names, g);
       EXPECT_LE(matched[g], 1) << "duplicate of person " << g << " frame " << f;
-      if (visibility >= 6) EXPECT_EQ(matched[g], 1) << "missed person " << g << " frame " << f;
-      if (visibility < 3) EXPECT_EQ(matched[g], 0) << "person " << g << " cannot be triangulated, frame " << f;
+      if (visibility >= 6) {
+        EXPECT_EQ(matched[g], 1) << "missed person " << g << " frame " << f;
+      }
+      if (visibility < 3) {
+        EXPECT_EQ(matched[g], 0) << "person " << g << " cannot be triangulated, frame " << f;
+      }
     }
   }
 }
