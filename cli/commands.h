@@ -8,5 +8,6 @@
 namespace rpt::cli {
 
 void RegisterDemoCommand(CLI::App& app);
+void RegisterConfigCommand(CLI::App& app);
 
 }  // namespace rpt::cli

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "cli/commands.h"
+#include "cli/config_args.h"
 #include "cli/report.h"
 #include "cli/run_sequence.h"
 #include "core/errors.h"
@@ -24,6 +25,7 @@ struct DemoOptions {
   std::string distortion = "none";
   uint64_t seed = 1;
   bool json = false;
+  ConfigArgs config;
 };
 
 void RunDemo(const DemoOptions& o) {
@@ -41,7 +43,10 @@ void RunDemo(const DemoOptions& o) {
       o.noise == "none" ? synthetic::DetectorOptions::Perfect() : synthetic::DetectorOptions::Realistic();
   const Sequence sequence = synthetic::MakeSyntheticSequence(scene, detector, o.seed, "demo");
 
+  const Config config = ResolveConfig(o.config);
   RunOptions run_options;
+  run_options.triangulator = config.triangulator;
+  run_options.eval = config.metrics;
   run_options.progress = !o.json;
   const SequenceRun run = RunSequence(sequence, run_options);
   const metrics::MetricsResult& m = run.metrics;
@@ -109,6 +114,7 @@ void RegisterDemoCommand(CLI::App& app) {
       ->capture_default_str();
   demo->add_option("--seed", options->seed, "random seed")->capture_default_str();
   demo->add_flag("--json", options->json, "print one JSON object instead of text");
+  AddConfigOptions(demo, &options->config);
   demo->callback([options] { RunDemo(*options); });
 }
 

@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
   CLI::App app{"rpt: RapidPoseTriangulation, learning-free multi-view multi-person 3D pose triangulation"};
   app.require_subcommand(1);
   rpt::cli::RegisterDemoCommand(app);
+  rpt::cli::RegisterConfigCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
