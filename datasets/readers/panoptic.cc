@@ -1,0 +1,255 @@
+// SPDX-License-Identifier: MIT
+#include "datasets/readers/panoptic.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+
+#include "core/errors.h"
+#include "datasets/io/json_file.h"
+
+namespace rpt {
+namespace {
+
+constexpr int kJoints = 19;
+constexpr int kRootJoint = 2;          // body_center
+constexpr double kVisibleScore = 0.1;  // VoxelPose: a joint is visible when c > 0.1
+constexpr double kHdFps = 29.97;
+constexpr const char* kPoseFolder = "hdPose3d_stage1_coco19";
+constexpr const char* kPosePrefix = "body3DScene_";
+
+// Rows map Panoptic (x, y, z) to rpt (x, z, -y): a proper rotation (det +1).
+Eigen::Matrix3d AxisPermutation() {
+  Eigen::Matrix3d A;
+  A << 1, 0, 0,  //
+      0, 0, 1,   //
+      0, -1, 0;
+  return A;
+}
+
+std::string FrameId(const std::string& sequence, long frame) {
+  char digits[32];
+  std::snprintf(digits, sizeof(digits), "%06ld", frame);
+  return "panoptic_" + sequence + "_" + digits;
+}
+
+long ParseLong(const std::string& text, long min_value, const std::string& what) {
+  long value = 0;
+  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec != std::errc() || ptr != text.data() + text.size() || value < min_value) {
+    throw ConfigError(what + ": '" + text + "' is not an integer >= " + std::to_string(min_value));
+  }
+  return value;
+}
+
+bool ParseBool(const std::string& text, const std::string& what) {
+  if (text == "true" || text == "1" || text == "yes" || text == "on") return true;
+  if (text == "false" || text == "0" || text == "no" || text == "off") return false;
+  throw ConfigError(what + ": '" + text + "' is not true or false");
+}
+
+Eigen::Matrix3d RowMajor3x3(const std::vector<double>& v) {
+  return Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(v.data());
+}
+
+// The selected cameras of calibration_<seq>.json, in the order asked for.
+std::vector<Camera> ReadCameras(const std::filesystem::path& path, const std::string& selection) {
+  const nlohmann::json root = io::LoadJsonFile(path);
+  const std::string source = path.string();
+  const nlohmann::json& list = io::JsonAt(root, "/cameras", source);
+  if (!list.is_array()) throw InputError(source + ": /cameras: expected an array of cameras");
+
+  std::map<std::string, size_t> by_name;
+  std::vector<std::string> hd_names;
+  for (size_t i = 0; i < list.size(); ++i) {
+    const std::string base = io::JsonPointerJoin("/cameras", i);
+    const std::string name = io::JsonString(root, base + "/name", source);
+    by_name.emplace(name, i);
+    if (const nlohmann::json* type = io::JsonFind(root, base + "/type"); type && type->is_string() && *type == "hd") {
+      hd_names.push_back(name);
+    }
+  }
+
+  const std::vector<std::string> names = selection == "hd" ? hd_names : SplitList(selection);
+  if (names.empty()) throw ConfigError("panoptic: param cameras: no cameras selected by '" + selection + "'");
+  std::vector<Camera> cameras;
+  for (const std::string& name : names) {
+    const auto it = by_name.find(name);
+    if (it == by_name.end()) {
+      std::string available;
+      for (const std::string& hd : hd_names) available += (available.empty() ? "" : ", ") + hd;
+      throw InputError(source + ": camera '" + name +
+                       "' not found; HD cameras: " + (available.empty() ? "(none)" : available) + " (plus " +
+                       std::to_string(list.size() - hd_names.size()) + " VGA/Kinect cameras)");
+    }
+    const std::string base = io::JsonPointerJoin("/cameras", it->second);
+    const std::vector<double> resolution = io::JsonNumbers(root, base + "/resolution", source, 2);
+    const std::vector<double> dist = io::JsonNumbers(root, base + "/distCoef", source, 5);
+    const std::vector<double> t = io::JsonMatrix(root, base + "/t", source, 3, 1);
+    Camera camera = ConvertPanopticCamera(
+        name, static_cast<int>(resolution[0]), static_cast<int>(resolution[1]),
+        RowMajor3x3(io::JsonMatrix(root, base + "/K", source, 3, 3)), {dist[0], dist[1], dist[2], dist[3], dist[4]},
+        RowMajor3x3(io::JsonMatrix(root, base + "/R", source, 3, 3)), Eigen::Vector3d(t[0], t[1], t[2]));
+    if (const std::string error = camera.Validate(); !error.empty()) {
+      throw InputError(source + ": " + base + ": " + error);  // error names the camera
+    }
+    cameras.push_back(std::move(camera));
+  }
+  return cameras;
+}
+
+struct PoseFile {
+  std::filesystem::path path;
+  long frame = 0;
+};
+
+// body3DScene_<number>.json files sorted by name (= by number: they are zero padded), as
+// VoxelPose's sorted(glob(...)).
+std::vector<PoseFile> ListPoseFiles(const std::filesystem::path& folder) {
+  std::error_code ec;
+  if (!std::filesystem::is_directory(folder, ec)) throw InputError(folder.string() + ": annotation folder not found");
+  std::vector<PoseFile> files;
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+    const std::string name = entry.path().filename().string();
+    const std::string prefix = kPosePrefix;
+    if (name.size() <= prefix.size() + 5 || name.compare(0, prefix.size(), prefix) != 0 ||
+        name.compare(name.size() - 5, 5, ".json") != 0) {
+      continue;
+    }
+    const std::string digits = name.substr(prefix.size(), name.size() - prefix.size() - 5);
+    PoseFile file;
+    const auto [ptr, parse_error] = std::from_chars(digits.data(), digits.data() + digits.size(), file.frame);
+    if (parse_error != std::errc() || ptr != digits.data() + digits.size()) continue;
+    file.path = entry.path();
+    files.push_back(std::move(file));
+  }
+  std::sort(files.begin(), files.end(),
+            [](const PoseFile& a, const PoseFile& b) { return a.path.filename() < b.path.filename(); });
+  if (files.empty()) throw InputError(folder.string() + ": no " + std::string(kPosePrefix) + "*.json files");
+  return files;
+}
+
+// The GT persons of one body3DScene file.
+void ReadBodies(const std::filesystem::path& path, Poses3D* gt) {
+  const nlohmann::json root = io::LoadJsonFile(path);
+  const std::string source = path.string();
+  const nlohmann::json& bodies = io::JsonAt(root, "/bodies", source);
+  if (!bodies.is_array()) throw InputError(source + ": /bodies: expected an array");
+  gt->Clear(kJoints);
+  for (size_t b = 0; b < bodies.size(); ++b) {
+    const std::string base = io::JsonPointerJoin("/bodies", b);
+    const std::vector<double> joints = io::JsonNumbers(root, base + "/joints19", source, 4 * kJoints);
+    if (!std::all_of(joints.begin(), joints.end(), [](double v) { return std::isfinite(v); })) {
+      throw InputError(source + ": " + base + "/joints19: contains NaN or infinity");
+    }
+    if (!(joints[4 * kRootJoint + 3] > kVisibleScore)) continue;  // root invisible: dropped as in VoxelPose
+    const auto id = io::JsonInt(root, base + "/id", source);
+    auto person = gt->AddPerson(static_cast<int>(id));
+    for (int j = 0; j < kJoints; ++j) {
+      const double c = joints[4 * j + 3];
+      person.col(j) << PanopticPointToWorld(Eigen::Vector3d(joints[4 * j], joints[4 * j + 1], joints[4 * j + 2])),
+          std::clamp(c, 0.0, 1.0);
+    }
+  }
+}
+
+}  // namespace
+
+const JointNames& PanopticJoints() {
+  static const JointNames names = {"neck",        "nose",        "body_center", "shoulder_left", "elbow_left",
+                                   "wrist_left",  "hip_left",    "knee_left",   "ankle_left",    "shoulder_right",
+                                   "elbow_right", "wrist_right", "hip_right",   "knee_right",    "ankle_right",
+                                   "eye_left",    "ear_left",    "eye_right",   "ear_right"};
+  return names;
+}
+
+Eigen::Vector3d PanopticPointToWorld(const Eigen::Vector3d& point_cm) { return AxisPermutation() * point_cm / 100.0; }
+
+Camera ConvertPanopticCamera(const std::string& name, int width, int height, const Eigen::Matrix3d& K,
+                             const std::array<double, 5>& dist_coef, const Eigen::Matrix3d& R_panoptic,
+                             const Eigen::Vector3d& t_cm) {
+  // X_cam[cm] = R X_pan[cm] + t with X_pan = 100 A^T X_rpt[m]  =>  X_cam[m] = (R A^T) X_rpt + t / 100.
+  Camera camera;
+  camera.name = name;
+  camera.width = width;
+  camera.height = height;
+  camera.K = K;
+  camera.dist = dist_coef;
+  const bool distorted = std::any_of(dist_coef.begin(), dist_coef.end(), [](double c) { return c != 0.0; });
+  camera.model = distorted ? DistortionModel::kOpenCV : DistortionModel::kNone;
+  camera.R = R_panoptic * AxisPermutation().transpose();
+  camera.t = t_cm / 100.0;
+  return camera;
+}
+
+DatasetInfo PanopticInfo() {
+  DatasetInfo info;
+  info.name = "panoptic";
+  info.description = "CMU Panoptic Studio (panoptic-toolbox layout), HD cameras, coco19 3D ground truth";
+  info.layout =
+      "<root>/<seq>/calibration_<seq>.json\n"
+      "<root>/<seq>/hdPose3d_stage1_coco19/body3DScene_%08d.json";
+  info.params = {
+      {"sequences", kPanopticDefaultSequences, "sequence folders under the root (default: VoxelPose validation)"},
+      {"cameras", kPanopticDefaultCameras, "camera names, or hd = all 31 HD cameras"},
+      {"every", "12", "take annotation files whose sorted-list index is a multiple of this (VoxelPose: 12)"},
+      {"max_frames", "0", "at most this many frames per sequence (0 = all)"},
+      {"skip_empty", "true", "drop frames without GT persons (as VoxelPose); false keeps them"},
+  };
+  return info;
+}
+
+std::vector<Sequence> ReadPanoptic(const DatasetRequest& request) {
+  const DatasetInfo info = PanopticInfo();
+  request.CheckParams(info);
+  const auto param = [&](const std::string& key) { return request.Param(info, key); };
+  const std::vector<std::string> names = SplitList(param("sequences"));
+  if (names.empty()) throw ConfigError("panoptic: param sequences: no sequences selected");
+  const std::string camera_selection = param("cameras");
+  const long every = ParseLong(param("every"), 1, "panoptic: param every");
+  const long max_frames = ParseLong(param("max_frames"), 0, "panoptic: param max_frames");
+  const bool skip_empty = ParseBool(param("skip_empty"), "panoptic: param skip_empty");
+
+  std::error_code ec;
+  if (!std::filesystem::is_directory(request.root, ec)) {
+    throw InputError("panoptic: root '" + request.root.string() + "' is not a directory");
+  }
+
+  // All sequence folders are checked before any is read, so a typo fails fast.
+  for (const std::string& name : names) {
+    if (!std::filesystem::is_directory(request.root / name, ec)) {
+      throw InputError("panoptic: sequence '" + name + "' not found: " + (request.root / name).string() +
+                       " is not a directory");
+    }
+  }
+  std::vector<Sequence> sequences;
+  for (const std::string& name : names) {
+    const std::filesystem::path folder = request.root / name;
+    Sequence sequence;
+    sequence.name = "panoptic/" + name;
+    sequence.cameras = ReadCameras(folder / ("calibration_" + name + ".json"), camera_selection);
+    sequence.gt_joints = PanopticJoints();
+    sequence.room.center_m = Eigen::Vector3d(0.0, -0.5, 0.8);
+    sequence.room.size_m = Eigen::Vector3d(8.0, 8.0, 2.0);
+    sequence.fps = kHdFps;
+
+    const std::vector<PoseFile> files = ListPoseFiles(folder / kPoseFolder);
+    for (size_t i = 0; i < files.size(); i += static_cast<size_t>(every)) {
+      if (max_frames > 0 && static_cast<long>(sequence.frames.size()) >= max_frames) break;
+      SequenceFrame frame;
+      frame.id = FrameId(name, files[i].frame);
+      frame.timestamp_s = static_cast<double>(files[i].frame) / kHdFps;
+      ReadBodies(files[i].path, &frame.gt);
+      if (skip_empty && frame.gt.num_persons() == 0) continue;
+      sequence.frames.push_back(std::move(frame));
+    }
+    ValidateSequence(sequence, folder.string());
+    sequences.push_back(std::move(sequence));
+  }
+  return sequences;
+}
+
+}  // namespace rpt

@@ -1,0 +1,250 @@
+// SPDX-License-Identifier: MIT
+#include "datasets/readers/shelf_campus.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include "core/errors.h"
+#include "datasets/detections.h"
+#include "datasets/io/mat.h"
+#include "datasets/readers/voxelpose_calibration.h"
+#include "datasets/readers/voxelpose_detections.h"
+
+namespace rpt {
+namespace {
+
+constexpr int kFileJoints = 14;
+constexpr int kHeadBottom = 12;
+constexpr int kHeadTop = 13;
+
+// What differs between the two datasets.
+struct ShelfCampusSpec {
+  std::string name;              // registry name and frame-id prefix
+  std::string calibration_file;  // VoxelPose camera json in the root
+  std::string detections_file;   // VoxelPose 2D cache in the root
+  int width = 0;                 // image size, px
+  int height = 0;
+  std::string default_frames;
+  Room room;
+  std::string description;
+};
+
+const ShelfCampusSpec& ShelfSpec() {
+  static const ShelfCampusSpec spec = [] {
+    ShelfCampusSpec s;
+    s.name = "shelf";
+    s.calibration_file = "calibration_shelf.json";
+    s.detections_file = "pred_shelf_maskrcnn_hrnet_coco.pkl";
+    s.width = 1032;
+    s.height = 776;
+    s.default_frames = "300-600";
+    s.room.center_m = Eigen::Vector3d(0.45, -0.32, 0.8);
+    s.room.size_m = Eigen::Vector3d(8.0, 8.0, 2.0);
+    s.description = "Shelf (TUM, Belagiannis et al. 2014): 5 cameras, up to 4 actors, VoxelPose calibration";
+    return s;
+  }();
+  return spec;
+}
+
+const ShelfCampusSpec& CampusSpec() {
+  static const ShelfCampusSpec spec = [] {
+    ShelfCampusSpec s;
+    s.name = "campus";
+    s.calibration_file = "calibration_campus.json";
+    s.detections_file = "pred_campus_maskrcnn_hrnet_coco.pkl";
+    s.width = 360;
+    s.height = 288;
+    s.default_frames = "350-470,650-750";
+    s.room.center_m = Eigen::Vector3d(3.0, 4.5, 1.0);
+    s.room.size_m = Eigen::Vector3d(12.0, 12.0, 2.0);
+    s.description = "Campus (CampusSeq1, Belagiannis et al. 2014): 3 cameras, 3 actors, VoxelPose calibration";
+    return s;
+  }();
+  return spec;
+}
+
+DatasetInfo MakeInfo(const ShelfCampusSpec& spec) {
+  DatasetInfo info;
+  info.name = spec.name;
+  info.description = spec.description;
+  info.layout = "<root>/" + spec.calibration_file + "   VoxelPose cameras (R world->camera, T = centre in mm)\n" +
+                "<root>/actorsGT.mat   ground truth (actor3D: actors x frames, 14x3 metres or empty)\n" + "<root>/" +
+                spec.detections_file + "   VoxelPose 2D detections (only with detections=voxelpose)";
+  info.params = {
+      {"frames", spec.default_frames, "frame selection, e.g. 300-600 or 350-470,650-750 or 0-3199:10"},
+      {"actors", "all", "actor indices to load, e.g. 0,1,2 (all = every actor in actorsGT.mat)"},
+      {"nose_proxy", "center", "GT point named nose: center (mean of head_bottom, head_top) | top | bottom"},
+      {"detections", "none", "none | voxelpose (load " + spec.detections_file + " from the root)"},
+      {"fps", "25", "frame rate for timestamps (frame / fps)"},
+  };
+  return info;
+}
+
+std::string FrameId(const std::string& prefix, int frame) {
+  char digits[32];
+  std::snprintf(digits, sizeof(digits), "%06d", frame);
+  return prefix + "_" + digits;
+}
+
+int ParseNonNegative(const std::string& text, const std::string& what) {
+  int value = 0;
+  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec != std::errc() || ptr != text.data() + text.size() || value < 0) {
+    throw ConfigError(what + ": '" + text + "' is not a non-negative integer");
+  }
+  return value;
+}
+
+double ParsePositive(const std::string& text, const std::string& what) {
+  double value = 0;
+  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec != std::errc() || ptr != text.data() + text.size() || !(value > 0) || !std::isfinite(value)) {
+    throw ConfigError(what + ": '" + text + "' is not a positive number");
+  }
+  return value;
+}
+
+enum class NoseProxy { kCenter, kTop, kBottom };
+
+NoseProxy ParseNoseProxy(const std::string& text, const std::string& what) {
+  if (text == "center") return NoseProxy::kCenter;
+  if (text == "top") return NoseProxy::kTop;
+  if (text == "bottom") return NoseProxy::kBottom;
+  throw ConfigError(what + ": '" + text + "' is not one of center, top, bottom");
+}
+
+// actor3D: 1xP cell of Fx1 cells. Returns F, after checking that every actor has the same F.
+size_t CountFrames(const io::MatValue& actor3d) {
+  if (!actor3d.IsCell() || actor3d.IsEmpty()) {
+    actor3d.Fail("expected a non-empty cell array of actors, got " + actor3d.Describe());
+  }
+  size_t frames = 0;
+  for (size_t p = 0; p < actor3d.NumElements(); ++p) {
+    const io::MatValue& actor = actor3d.Cell(p);
+    if (!actor.IsCell()) actor.Fail("expected a cell array of frames, got " + actor.Describe());
+    if (p == 0) frames = actor.NumElements();
+    if (actor.NumElements() != frames) {
+      actor.Fail("has " + std::to_string(actor.NumElements()) + " frames, actor 0 has " + std::to_string(frames));
+    }
+  }
+  return frames;
+}
+
+std::vector<int> SelectActors(const std::string& text, size_t num_actors, const std::string& what,
+                              const std::string& source) {
+  std::vector<int> actors;
+  if (text == "all") {
+    for (size_t p = 0; p < num_actors; ++p) actors.push_back(static_cast<int>(p));
+    return actors;
+  }
+  for (const std::string& item : SplitList(text)) {
+    const int p = ParseNonNegative(item, what);
+    if (static_cast<size_t>(p) >= num_actors) {
+      throw InputError(source + ": actor " + item + " requested but actor3D has " + std::to_string(num_actors) +
+                       " actors (0-" + std::to_string(num_actors - 1) + ")");
+    }
+    actors.push_back(p);
+  }
+  if (actors.empty()) throw ConfigError(what + ": no actors selected by '" + text + "'");
+  std::sort(actors.begin(), actors.end());
+  actors.erase(std::unique(actors.begin(), actors.end()), actors.end());
+  return actors;
+}
+
+std::vector<Sequence> ReadShelfCampus(const ShelfCampusSpec& spec, const DatasetRequest& request) {
+  const DatasetInfo info = MakeInfo(spec);
+  request.CheckParams(info);
+  const auto param = [&](const std::string& key) { return request.Param(info, key); };
+  const auto what = [&](const std::string& key) { return spec.name + ": param " + key; };
+
+  const std::vector<int> frames = ParseFrameRanges(param("frames"), what("frames"));
+  const NoseProxy nose_proxy = ParseNoseProxy(param("nose_proxy"), what("nose_proxy"));
+  const std::string detections_mode = param("detections");
+  if (detections_mode != "none" && detections_mode != "voxelpose") {
+    throw ConfigError(what("detections") + ": '" + detections_mode + "' is not one of none, voxelpose");
+  }
+  const double fps = ParsePositive(param("fps"), what("fps"));
+  if (frames.front() < 0) {
+    throw ConfigError(what("frames") + ": frame " + std::to_string(frames.front()) + " is negative");
+  }
+
+  std::error_code ec;
+  if (!std::filesystem::is_directory(request.root, ec)) {
+    throw InputError(spec.name + ": root '" + request.root.string() + "' is not a directory");
+  }
+
+  Sequence sequence;
+  sequence.name = spec.name;
+  sequence.cameras = ReadVoxelPoseCalibration(request.root / spec.calibration_file, spec.width, spec.height);
+  sequence.gt_joints = ShelfCampusJoints();
+  sequence.room = spec.room;
+  sequence.fps = fps;
+
+  const std::filesystem::path mat_path = request.root / "actorsGT.mat";
+  const io::MatFile mat = io::ReadMat(mat_path);
+  const io::MatValue& actor3d = mat.Get("actor3D");
+  const size_t num_frames = CountFrames(actor3d);
+  const std::vector<int> actors =
+      SelectActors(param("actors"), actor3d.NumElements(), what("actors"), mat_path.string());
+  if (static_cast<size_t>(frames.back()) >= num_frames) {
+    throw InputError(mat_path.string() + ": frame " + std::to_string(frames.back()) + " requested but actor3D has " +
+                     std::to_string(num_frames) + " frames (0-" + std::to_string(num_frames == 0 ? 0 : num_frames - 1) +
+                     "); select frames with --param frames=...");
+  }
+
+  const int num_joints = static_cast<int>(sequence.gt_joints.size());
+  for (const int f : frames) {
+    SequenceFrame frame;
+    frame.id = FrameId(spec.name, f);
+    frame.timestamp_s = f / fps;
+    frame.gt.Clear(num_joints);
+    for (const int p : actors) {
+      const io::MatValue& pose = actor3d.Cell(static_cast<size_t>(p)).Cell(static_cast<size_t>(f));
+      if (pose.IsEmpty()) continue;  // actor not annotated in this frame
+      const std::vector<double> rows = pose.RowMajor(kFileJoints, 3);
+      if (!std::all_of(rows.begin(), rows.end(), [](double v) { return std::isfinite(v); })) {
+        pose.Fail("contains NaN or infinity");
+      }
+      auto person = frame.gt.AddPerson(p);
+      for (int j = 0; j < kFileJoints; ++j) {
+        person.col(j) << rows[3 * j], rows[3 * j + 1], rows[3 * j + 2], 1.0;
+      }
+      const Eigen::Vector3d bottom = person.col(kHeadBottom).head<3>();
+      const Eigen::Vector3d top = person.col(kHeadTop).head<3>();
+      const Eigen::Vector3d nose = nose_proxy == NoseProxy::kTop      ? top
+                                   : nose_proxy == NoseProxy::kBottom ? bottom
+                                                                      : Eigen::Vector3d(0.5 * (bottom + top));
+      person.col(kFileJoints) << nose, 1.0;
+    }
+    sequence.frames.push_back(std::move(frame));
+  }
+
+  if (detections_mode == "voxelpose") {
+    const std::filesystem::path pkl = request.root / spec.detections_file;
+    const Detections detections = ReadVoxelPoseDetections(pkl, sequence, spec.name);
+    AttachDetections(detections, pkl.string(), &sequence);
+  }
+  ValidateSequence(sequence, request.root.string());
+  std::vector<Sequence> out;
+  out.push_back(std::move(sequence));
+  return out;
+}
+
+}  // namespace
+
+const JointNames& ShelfCampusJoints() {
+  static const JointNames names = {"ankle_right", "knee_right",  "hip_right",   "hip_left",       "knee_left",
+                                   "ankle_left",  "wrist_right", "elbow_right", "shoulder_right", "shoulder_left",
+                                   "elbow_left",  "wrist_left",  "head_bottom", "head_top",       "nose"};
+  return names;
+}
+
+DatasetInfo ShelfInfo() { return MakeInfo(ShelfSpec()); }
+std::vector<Sequence> ReadShelf(const DatasetRequest& request) { return ReadShelfCampus(ShelfSpec(), request); }
+DatasetInfo CampusInfo() { return MakeInfo(CampusSpec()); }
+std::vector<Sequence> ReadCampus(const DatasetRequest& request) { return ReadShelfCampus(CampusSpec(), request); }
+
+}  // namespace rpt

@@ -1,0 +1,102 @@
+// SPDX-License-Identifier: MIT
+#include "datasets/readers/voxelpose_calibration.h"
+
+#include <Eigen/LU>
+#include <Eigen/SVD>
+#include <algorithm>
+#include <cctype>
+#include <sstream>
+#include <string>
+
+#include "core/errors.h"
+#include "datasets/io/json_file.h"
+
+namespace rpt {
+namespace {
+
+// Rounding in the files is ~1e-6; anything beyond this is a wrong matrix, not rounding.
+constexpr double kMaxRotationError = 1e-3;
+
+bool IsSmallInteger(const std::string& text) {
+  return !text.empty() && text.size() <= 9 &&
+         std::all_of(text.begin(), text.end(), [](unsigned char c) { return std::isdigit(c) != 0; });
+}
+
+// Camera ids in file order as nlohmann stores them (lexicographic), re-sorted numerically when
+// every id is an integer.
+std::vector<std::string> CameraIds(const nlohmann::json& root) {
+  std::vector<std::string> ids;
+  for (const auto& item : root.items()) ids.push_back(item.key());
+  if (std::all_of(ids.begin(), ids.end(), IsSmallInteger)) {
+    std::sort(ids.begin(), ids.end(),
+              [](const std::string& a, const std::string& b) { return std::stol(a) < std::stol(b); });
+  }
+  return ids;
+}
+
+Eigen::Matrix3d RowMajor3x3(const std::vector<double>& v) {
+  return Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(v.data());
+}
+
+// The nearest rotation to R (polar decomposition via SVD), after checking R is one up to rounding.
+Eigen::Matrix3d NearestRotation(const Eigen::Matrix3d& R, const std::string& where) {
+  const double error = (R.transpose() * R - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
+  if (!R.allFinite() || !(error <= kMaxRotationError)) {
+    std::ostringstream s;
+    s << where << ": not a rotation matrix (max |R^T R - I| = " << error << ")";
+    throw InputError(s.str());
+  }
+  if (R.determinant() < 0) throw InputError(where + ": a reflection (det < 0), not a rotation matrix");
+  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(R, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  return svd.matrixU() * svd.matrixV().transpose();
+}
+
+// Optional n x 1 coefficient vector; absent = zeros.
+std::vector<double> OptionalCoefficients(const nlohmann::json& root, const std::string& pointer,
+                                         const std::string& source, std::size_t n) {
+  if (io::JsonFind(root, pointer) == nullptr) return std::vector<double>(n, 0.0);
+  return io::JsonMatrix(root, pointer, source, n, 1);
+}
+
+}  // namespace
+
+std::vector<Camera> ReadVoxelPoseCalibration(const std::filesystem::path& path, int image_width, int image_height) {
+  const nlohmann::json root = io::LoadJsonFile(path);
+  const std::string source = path.string();
+  if (!root.is_object()) throw InputError(source + ": expected an object keyed by camera id");
+  if (root.empty()) throw InputError(source + ": no cameras");
+
+  std::vector<Camera> cameras;
+  for (const std::string& id : CameraIds(root)) {
+    const std::string base = io::JsonPointerJoin("", id);
+    if (!root.at(id).is_object()) {
+      throw InputError(source + ": " + base + ": expected an object with R, T, fx, fy, cx, cy");
+    }
+    const Eigen::Matrix3d R_file = RowMajor3x3(io::JsonMatrix(root, base + "/R", source, 3, 3));
+    const std::vector<double> center_mm = io::JsonMatrix(root, base + "/T", source, 3, 1);
+    const Eigen::Matrix3d R = NearestRotation(R_file, source + ": " + base + "/R");
+
+    // x_cam = R (X - C): the file's T is the centre C, in millimetres.
+    Camera camera = Camera::FromCenter(R, Eigen::Vector3d(center_mm[0], center_mm[1], center_mm[2]) / 1000.0);
+    camera.name = id;
+    camera.width = image_width;
+    camera.height = image_height;
+    camera.K << io::JsonNumber(root, base + "/fx", source), 0.0, io::JsonNumber(root, base + "/cx", source),  //
+        0.0, io::JsonNumber(root, base + "/fy", source), io::JsonNumber(root, base + "/cy", source),          //
+        0.0, 0.0, 1.0;
+
+    const std::vector<double> k = OptionalCoefficients(root, base + "/k", source, 3);
+    const std::vector<double> p = OptionalCoefficients(root, base + "/p", source, 2);
+    camera.dist = {k[0], k[1], p[0], p[1], k[2]};
+    const bool distorted = std::any_of(camera.dist.begin(), camera.dist.end(), [](double c) { return c != 0.0; });
+    camera.model = distorted ? DistortionModel::kOpenCV : DistortionModel::kNone;
+
+    if (const std::string error = camera.Validate(); !error.empty()) {
+      throw InputError(source + ": " + base + ": " + error);  // error names the camera
+    }
+    cameras.push_back(std::move(camera));
+  }
+  return cameras;
+}
+
+}  // namespace rpt

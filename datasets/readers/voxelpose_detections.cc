@@ -1,0 +1,109 @@
+// SPDX-License-Identifier: MIT
+#include "datasets/readers/voxelpose_detections.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <unordered_map>
+
+#include "core/errors.h"
+#include "core/joints.h"
+#include "datasets/io/pickle.h"
+
+namespace rpt {
+namespace {
+
+constexpr int kCocoJoints = 17;
+
+std::string FrameId(const std::string& prefix, long frame) {
+  char digits[32];
+  std::snprintf(digits, sizeof(digits), "%06ld", frame);
+  return prefix + "_" + digits;
+}
+
+// Splits "<camera>_<frame>" at the last '_'; false when the frame part is not a number.
+bool SplitKey(const std::string& key, std::string* camera, long* frame) {
+  const size_t underscore = key.rfind('_');
+  if (underscore == std::string::npos || underscore == 0 || underscore + 1 == key.size()) return false;
+  const char* first = key.data() + underscore + 1;
+  const char* last = key.data() + key.size();
+  const auto [ptr, ec] = std::from_chars(first, last, *frame);
+  if (ec != std::errc() || ptr != last || *frame < 0) return false;
+  *camera = key.substr(0, underscore);
+  return true;
+}
+
+// One detection {"pred": 17x3} appended to `view`.
+void AddDetection(const io::PyView& detection, Poses2D* view) {
+  if (!detection.IsDict()) {
+    detection.Fail(std::string("expected a dict with key 'pred', got ") + PyKindName(detection.kind()));
+  }
+  const io::PyView pred = detection.Key("pred");
+  const std::vector<double> rows = pred.ToDoubles({kCocoJoints, 3});
+  if (!std::all_of(rows.begin(), rows.end(), [](double v) { return std::isfinite(v); })) {
+    pred.Fail("contains NaN or infinity");
+  }
+  auto person = view->AddPerson();
+  for (int j = 0; j < kCocoJoints; ++j) {
+    person(0, j) = rows[3 * j];
+    person(1, j) = rows[3 * j + 1];
+    // Heatmap maxima can overshoot 1 slightly; rpt scores live in [0, 1].
+    person(2, j) = std::clamp(rows[3 * j + 2], 0.0, 1.0);
+  }
+}
+
+}  // namespace
+
+Detections ReadVoxelPoseDetections(const std::filesystem::path& path, const Sequence& sequence,
+                                   const std::string& dataset_prefix) {
+  const io::PyView root = io::ReadPickle(path);
+  if (!root.IsDict()) {
+    root.Fail(std::string("expected a dict keyed by \"{camera}_{frame}\", got ") + PyKindName(root.kind()));
+  }
+
+  std::unordered_map<std::string, size_t> frame_index;
+  for (size_t f = 0; f < sequence.frames.size(); ++f) frame_index[sequence.frames[f].id] = f;
+  std::unordered_map<std::string, size_t> camera_index;
+  for (size_t c = 0; c < sequence.cameras.size(); ++c) camera_index[sequence.cameras[c].name] = c;
+
+  // Per sequence frame, per sequence camera: the view, if the file has its key.
+  std::vector<std::vector<const io::PyView*>> found(sequence.frames.size(),
+                                                    std::vector<const io::PyView*>(sequence.cameras.size(), nullptr));
+  const auto items = root.Items();
+  for (const auto& [key, value] : items) {
+    if (!key.IsStr()) root.Fail("key " + io::Repr(key.value()) + " is not a string \"{camera}_{frame}\"");
+    std::string camera;
+    long frame = 0;
+    if (!SplitKey(key.AsStr(), &camera, &frame)) {
+      root.Fail("key '" + key.AsStr() + "' is not of the form \"{camera}_{frame}\"");
+    }
+    const auto f = frame_index.find(FrameId(dataset_prefix, frame));
+    const auto c = camera_index.find(camera);
+    if (f == frame_index.end() || c == camera_index.end()) continue;
+    found[f->second][c->second] = &value;
+  }
+
+  Detections detections;
+  detections.joints = CocoBodyJoints();
+  for (size_t f = 0; f < found.size(); ++f) {
+    FrameDetections frame;
+    frame.frame_id = sequence.frames[f].id;
+    for (size_t c = 0; c < found[f].size(); ++c) {
+      const io::PyView* value = found[f][c];
+      if (value == nullptr) continue;
+      if (!value->IsList() && !value->IsTuple()) {
+        value->Fail(std::string("expected a list of detections, got ") + PyKindName(value->kind()));
+      }
+      Poses2D view;
+      view.Clear(kCocoJoints);
+      for (const io::PyView& detection : value->Elements()) AddDetection(detection, &view);
+      frame.cameras.push_back(sequence.cameras[c].name);
+      frame.views.push_back(std::move(view));
+    }
+    if (!frame.cameras.empty()) detections.frames.push_back(std::move(frame));
+  }
+  return detections;
+}
+
+}  // namespace rpt

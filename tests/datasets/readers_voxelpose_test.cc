@@ -1,0 +1,362 @@
+// SPDX-License-Identifier: MIT
+// VoxelPose camera json and 2D detection cache: files written by the tests, plus the real
+// Shelf/Campus fixtures when shared/data is present.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "core/errors.h"
+#include "core/joints.h"
+#include "datasets/readers/voxelpose_calibration.h"
+#include "datasets/readers/voxelpose_detections.h"
+#include "tests/datasets/io_test_util.h"
+#include "tests/test_data.h"
+
+namespace rpt {
+namespace {
+
+using ::testing::HasSubstr;
+
+std::string ErrorOf(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "<no InputError>";
+}
+
+std::filesystem::path WriteText(const std::filesystem::path& path, const std::string& text) {
+  std::filesystem::create_directories(path.parent_path());
+  std::ofstream(path) << text;
+  return path;
+}
+
+std::string Num(double v) {
+  char buffer[40];
+  std::snprintf(buffer, sizeof(buffer), "%.17g", v);
+  return buffer;
+}
+
+std::string Matrix3Json(const Eigen::Matrix3d& m) {
+  std::string s = "[";
+  for (int r = 0; r < 3; ++r) {
+    s += std::string(r ? "," : "") + "[" + Num(m(r, 0)) + "," + Num(m(r, 1)) + "," + Num(m(r, 2)) + "]";
+  }
+  return s + "]";
+}
+
+// One camera object of a VoxelPose calibration json. `extra` is appended verbatim.
+std::string VoxelPoseCamera(const Eigen::Matrix3d& R, const Eigen::Vector3d& center_mm, const std::string& k_p,
+                            bool with_R = true) {
+  std::string s = "{";
+  if (with_R) s += "\"R\": " + Matrix3Json(R) + ", ";
+  s += "\"T\": [[" + Num(center_mm.x()) + "], [" + Num(center_mm.y()) + "], [" + Num(center_mm.z()) + "]], ";
+  s += "\"fx\": 1000.5, \"fy\": 1001.5, \"cx\": 500.25, \"cy\": 380.75";
+  if (!k_p.empty()) s += ", " + k_p;
+  return s + "}";
+}
+
+// World -> camera rotation of a camera at `center` looking at `target` (x right, y down, z up world).
+Eigen::Matrix3d LookAt(const Eigen::Vector3d& center, const Eigen::Vector3d& target) {
+  const Eigen::Vector3d z = (target - center).normalized();
+  const Eigen::Vector3d x = z.cross(Eigen::Vector3d(0, 0, 1)).normalized();
+  Eigen::Matrix3d R;
+  R << x.transpose(), z.cross(x).transpose(), z.transpose();
+  return R;
+}
+
+Eigen::Matrix3d SomeRotation(double angle) {
+  return Eigen::AngleAxisd(angle, Eigen::Vector3d(0.3, -0.5, 0.8).normalized()).toRotationMatrix();
+}
+
+// VoxelPose's own projection (lib/utils/cameras_cpu.py project_point_radial), written out.
+Eigen::Vector2d VoxelPoseProject(const Eigen::Matrix3d& R, const Eigen::Vector3d& T_mm, double fx, double fy, double cx,
+                                 double cy, const Eigen::Vector3d& k, const Eigen::Vector2d& p,
+                                 const Eigen::Vector3d& X_mm) {
+  const Eigen::Vector3d x = R * (X_mm - T_mm);
+  const Eigen::Vector2d y = x.head<2>() / x.z();
+  const double r2 = y.squaredNorm();
+  const double radial = 1 + k[0] * r2 + k[1] * r2 * r2 + k[2] * r2 * r2 * r2;
+  const double tan = p[0] * y[1] + p[1] * y[0];
+  const Eigen::Vector2d yd = y * (radial + 2 * tan) + Eigen::Vector2d(p[1], p[0]) * r2;
+  return Eigen::Vector2d(fx * yd.x() + cx, fy * yd.y() + cy);
+}
+
+// ---------------------------------------------------------------------------------------
+// Calibration json written here
+
+TEST(VoxelPoseCalibration, DistortionCentreConventionAndNumericOrder) {
+  test::TempDir dir;
+  const Eigen::Vector3d T0(1200.0, -2100.0, 1500.0);
+  const Eigen::Matrix3d R0 = LookAt(T0 / 1000.0, Eigen::Vector3d(0, 0, 1));
+  const std::string distortion = "\"k\": [[0.11], [-0.05], [0.013]], \"p\": [[0.0012], [-0.0021]]";
+  const std::string text = "{\"10\": " + VoxelPoseCamera(SomeRotation(2.0), Eigen::Vector3d(0, 0, 3000), "") +
+                           ", \"0\": " + VoxelPoseCamera(R0, T0, distortion) + ", \"2\": " +
+                           VoxelPoseCamera(SomeRotation(1.0), Eigen::Vector3d(10, 20, 2000),
+                                           "\"k\": [[0.0], [0.0], [0.0]], \"p\": [[0.0], [0.0]]") +
+                           "}";
+  const auto path = WriteText(dir.path() / "calibration.json", text);
+  const std::vector<Camera> cameras = ReadVoxelPoseCalibration(path, 1032, 776);
+  ASSERT_EQ(cameras.size(), 3u);
+  EXPECT_EQ(cameras[0].name, "0");
+  EXPECT_EQ(cameras[1].name, "2");
+  EXPECT_EQ(cameras[2].name, "10");
+  for (const Camera& camera : cameras) {
+    EXPECT_EQ(camera.width, 1032);
+    EXPECT_EQ(camera.height, 776);
+    EXPECT_EQ(camera.Validate(), "");
+  }
+  const Camera& c0 = cameras[0];
+  EXPECT_EQ(c0.model, DistortionModel::kOpenCV);
+  EXPECT_EQ(c0.dist, (std::array<double, 5>{0.11, -0.05, 0.0012, -0.0021, 0.013}));
+  EXPECT_EQ(cameras[1].model, DistortionModel::kNone);  // all-zero k, p
+  EXPECT_EQ(cameras[2].model, DistortionModel::kNone);  // k, p absent
+  EXPECT_TRUE(c0.Center().isApprox(T0 / 1000.0, 1e-12));
+  EXPECT_TRUE(c0.R.isApprox(R0, 1e-12));
+  EXPECT_DOUBLE_EQ(c0.K(0, 0), 1000.5);
+  EXPECT_DOUBLE_EQ(c0.K(1, 2), 380.75);
+
+  // The converted camera projects like VoxelPose's own formula (mm world, centre T).
+  for (const Eigen::Vector3d& X_m :
+       {Eigen::Vector3d(0.5, 0.2, 1.0), Eigen::Vector3d(-0.3, 1.1, 0.1), Eigen::Vector3d(0, 0, 1.8)}) {
+    Eigen::Vector2d uv;
+    ASSERT_TRUE(c0.Project(X_m, &uv));
+    const Eigen::Vector2d expected =
+        VoxelPoseProject(R0, T0, 1000.5, 1001.5, 500.25, 380.75, Eigen::Vector3d(0.11, -0.05, 0.013),
+                         Eigen::Vector2d(0.0012, -0.0021), X_m * 1000.0);
+    EXPECT_NEAR((uv - expected).norm(), 0.0, 1e-8) << X_m.transpose();
+  }
+}
+
+TEST(VoxelPoseCalibration, RoundedRotationIsReorthonormalised) {
+  test::TempDir dir;
+  Eigen::Matrix3d rounded = SomeRotation(0.4);
+  for (int i = 0; i < 9; ++i) rounded.data()[i] = std::round(rounded.data()[i] * 1e5) / 1e5;  // 5 decimals
+  ASSERT_GT((rounded.transpose() * rounded - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff(), 1e-6);
+  const auto path =
+      WriteText(dir.path() / "c.json", "{\"0\": " + VoxelPoseCamera(rounded, Eigen::Vector3d(0, 0, 0), "") + "}");
+  const std::vector<Camera> cameras = ReadVoxelPoseCalibration(path, 360, 288);
+  ASSERT_EQ(cameras.size(), 1u);
+  EXPECT_EQ(cameras[0].Validate(), "");
+  EXPECT_LT((cameras[0].R - rounded).cwiseAbs().maxCoeff(), 1e-5);
+}
+
+TEST(VoxelPoseCalibration, MalformedFilesNameFileAndPlace) {
+  test::TempDir dir;
+  const auto missing = dir.path() / "calibration_shelf.json";
+  EXPECT_THAT(ErrorOf([&] { ReadVoxelPoseCalibration(missing, 1032, 776); }),
+              HasSubstr(missing.string() + ": file not found"));
+
+  const std::string good = VoxelPoseCamera(SomeRotation(0.1), Eigen::Vector3d(1, 2, 3), "");
+  const auto no_r = WriteText(
+      dir.path() / "no_r.json",
+      "{\"0\": " + good + ", \"1\": " + VoxelPoseCamera(SomeRotation(0.2), Eigen::Vector3d(1, 2, 3), "", false) + "}");
+  EXPECT_THAT(ErrorOf([&] { ReadVoxelPoseCalibration(no_r, 1032, 776); }),
+              HasSubstr(no_r.string() + ": /1/R: missing"));
+
+  const auto scaled =
+      WriteText(dir.path() / "scaled.json",
+                "{\"0\": " + VoxelPoseCamera(1.1 * SomeRotation(0.3), Eigen::Vector3d(1, 2, 3), "") + "}");
+  EXPECT_THAT(ErrorOf([&] { ReadVoxelPoseCalibration(scaled, 1032, 776); }),
+              HasSubstr(scaled.string() + ": /0/R: not a rotation matrix (max |R^T R - I| = 0.21"));
+
+  Eigen::Matrix3d mirror = SomeRotation(0.3);
+  mirror.row(2) *= -1;
+  const auto reflection =
+      WriteText(dir.path() / "mirror.json", "{\"0\": " + VoxelPoseCamera(mirror, Eigen::Vector3d(1, 2, 3), "") + "}");
+  EXPECT_THAT(ErrorOf([&] { ReadVoxelPoseCalibration(reflection, 1032, 776); }),
+              HasSubstr(reflection.string() + ": /0/R: a reflection"));
+
+  const auto short_k = WriteText(
+      dir.path() / "k.json",
+      "{\"0\": " + VoxelPoseCamera(SomeRotation(0.3), Eigen::Vector3d(1, 2, 3), "\"k\": [[0.1], [0.2]]") + "}");
+  EXPECT_THAT(ErrorOf([&] { ReadVoxelPoseCalibration(short_k, 1032, 776); }), HasSubstr(short_k.string() + ": /0/k"));
+
+  const auto no_fx = WriteText(dir.path() / "fx.json",
+                               "{\"0\": {\"R\": " + Matrix3Json(SomeRotation(0.3)) + ", \"T\": [[0],[0],[0]]}}");
+  EXPECT_THAT(ErrorOf([&] { ReadVoxelPoseCalibration(no_fx, 1032, 776); }),
+              HasSubstr(no_fx.string() + ": /0/fx: missing"));
+
+  const auto array = WriteText(dir.path() / "array.json", "[1, 2]");
+  EXPECT_THAT(ErrorOf([&] { ReadVoxelPoseCalibration(array, 1032, 776); }),
+              HasSubstr("expected an object keyed by camera id"));
+}
+
+TEST(VoxelPoseCalibration, ShelfAndCampusFixtures) {
+  RPT_REQUIRE_SHARED_DATA("shelf/calibration_shelf.json");
+  RPT_REQUIRE_SHARED_DATA("campus/calibration_campus.json");
+  const std::vector<Camera> shelf =
+      ReadVoxelPoseCalibration(test::SharedData("shelf/calibration_shelf.json"), 1032, 776);
+  ASSERT_EQ(shelf.size(), 5u);
+  for (size_t c = 0; c < shelf.size(); ++c) {
+    EXPECT_EQ(shelf[c].name, std::to_string(c));
+    EXPECT_EQ(shelf[c].model, DistortionModel::kNone);
+    EXPECT_EQ(shelf[c].Validate(), "");
+  }
+  // calibration_shelf.json camera 0: T = (-1586.45, -2109.47, 1104.21) mm.
+  EXPECT_TRUE(shelf[0].Center().isApprox(Eigen::Vector3d(-1.5864496077989998, -2.10946905869, 1.104209800652), 1e-6));
+  // The 4D-Association file stores t = -R T / 1000 for the same camera: (-0.5943, 0.9720, 2.6245) m.
+  EXPECT_NEAR(shelf[0].t.x(), -0.5943, 1e-4);
+  EXPECT_NEAR(shelf[0].t.y(), 0.9720, 1e-4);
+  EXPECT_NEAR(shelf[0].t.z(), 2.6245, 1e-4);
+
+  const std::vector<Camera> campus =
+      ReadVoxelPoseCalibration(test::SharedData("campus/calibration_campus.json"), 360, 288);
+  ASSERT_EQ(campus.size(), 3u);
+  EXPECT_EQ(campus[2].name, "2");
+}
+
+// ---------------------------------------------------------------------------------------
+// Detection cache written here
+
+// A rows x 3 float64 array (x = base + j, y = 2 * base + j, score).
+test::ByteVec PredBytes(double base, double score, std::int64_t rows) {
+  std::vector<double> values;
+  for (int j = 0; j < rows; ++j) {
+    values.push_back(base + j);
+    values.push_back(2 * base + j);
+    values.push_back(j == 0 ? score : 0.5);
+  }
+  return test::RawOf(values);
+}
+
+// defaultdict(None, {key: [{"pred": array}, ...]}) like VoxelPose's cache (protocol 3).
+struct CacheEntry {
+  std::string key;
+  std::vector<double> bases;  // one detection per base
+  double score = 0.9;
+  std::vector<std::int64_t> shape = {17, 3};
+};
+
+test::ByteVec CachePickle(const std::vector<CacheEntry>& entries) {
+  test::PickleWriter w;
+  w.Proto(3).Global("collections", "defaultdict").None().Tuple1().Reduce().Mark();
+  for (const CacheEntry& entry : entries) {
+    w.Str(entry.key).EmptyList();
+    if (!entry.bases.empty()) {
+      w.Mark();
+      for (double base : entry.bases) {
+        w.EmptyDict()
+            .Str("pred")
+            .Array(entry.shape, "f8", "<", false, PredBytes(base, entry.score, entry.shape[0]))
+            .SetItem();
+      }
+      w.Appends();
+    }
+  }
+  w.SetItems().Stop();
+  return w.bytes;
+}
+
+Sequence TwoCameraSequence() {
+  Sequence sequence;
+  sequence.name = "shelf";
+  for (const char* name : {"0", "1"}) {
+    Camera camera;
+    camera.name = name;
+    sequence.cameras.push_back(camera);
+  }
+  for (const char* id : {"shelf_000005", "shelf_000006", "shelf_000300"}) {
+    SequenceFrame frame;
+    frame.id = id;
+    sequence.frames.push_back(frame);
+  }
+  return sequence;
+}
+
+TEST(VoxelPoseDetections, KeysMapToFramesAndCameras) {
+  test::TempDir dir;
+  const auto path = dir.Write("pred.pkl", CachePickle({
+                                              {"0_5", {100, 200}, 1.25},  // score above 1 is clamped
+                                              {"1_5", {}},                // nothing detected
+                                              {"3_5", {10}},              // camera not in the sequence
+                                              {"0_7", {10}},              // frame not in the sequence
+                                              {"1_300", {50}, 0.4},
+                                          }));
+  const Sequence sequence = TwoCameraSequence();
+  const Detections detections = ReadVoxelPoseDetections(path, sequence, "shelf");
+  EXPECT_EQ(detections.joints, CocoBodyJoints());
+  ASSERT_EQ(detections.frames.size(), 2u);
+
+  const FrameDetections& f5 = detections.frames[0];
+  EXPECT_EQ(f5.frame_id, "shelf_000005");
+  EXPECT_EQ(f5.cameras, (std::vector<std::string>{"0", "1"}));
+  ASSERT_EQ(f5.views.size(), 2u);
+  ASSERT_EQ(f5.views[0].num_persons(), 2);
+  EXPECT_EQ(f5.views[1].num_persons(), 0);
+  EXPECT_EQ(f5.views[0].Person(1)(0, 3), 203.0);  // x of joint 3 of the second detection
+  EXPECT_EQ(f5.views[0].Person(1)(1, 3), 403.0);
+  EXPECT_EQ(f5.views[0].Person(0)(2, 0), 1.0);
+  EXPECT_EQ(f5.views[0].Person(0)(2, 1), 0.5);
+
+  const FrameDetections& f300 = detections.frames[1];
+  EXPECT_EQ(f300.frame_id, "shelf_000300");
+  EXPECT_EQ(f300.cameras, (std::vector<std::string>{"1"}));
+  EXPECT_DOUBLE_EQ(f300.views[0].Person(0)(2, 0), 0.4);
+}
+
+TEST(VoxelPoseDetections, MalformedCacheNamesFileAndKey) {
+  test::TempDir dir;
+  const Sequence sequence = TwoCameraSequence();
+  const auto bad_key = dir.Write("key.pkl", CachePickle({{"camera0", {1}}}));
+  EXPECT_THAT(ErrorOf([&] { ReadVoxelPoseDetections(bad_key, sequence, "shelf"); }),
+              HasSubstr(bad_key.string() + ": top level: key 'camera0' is not of the form"));
+
+  CacheEntry wrong_shape{"0_5", {1}};
+  wrong_shape.shape = {16, 3};
+  wrong_shape.score = 0.5;
+  const auto shape = dir.Write("shape.pkl", CachePickle({wrong_shape}));
+  const std::string message = ErrorOf([&] { ReadVoxelPoseDetections(shape, sequence, "shelf"); });
+  EXPECT_THAT(message, HasSubstr(shape.string()));
+  EXPECT_THAT(message, HasSubstr("0_5"));
+  EXPECT_THAT(message, HasSubstr("pred"));
+
+  CacheEntry nan{"1_6", {1}};
+  nan.score = std::nan("");
+  const auto nan_path = dir.Write("nan.pkl", CachePickle({nan}));
+  EXPECT_THAT(ErrorOf([&] { ReadVoxelPoseDetections(nan_path, sequence, "shelf"); }),
+              HasSubstr("contains NaN or infinity"));
+
+  EXPECT_THAT(ErrorOf([&] { ReadVoxelPoseDetections(dir.path() / "absent.pkl", sequence, "shelf"); }),
+              HasSubstr("absent.pkl: file not found"));
+}
+
+TEST(VoxelPoseDetections, ShelfFixtureKeys) {
+  RPT_REQUIRE_SHARED_DATA("shelf/pred_shelf_maskrcnn_hrnet_coco.pkl");
+  Sequence sequence;
+  for (int c = 0; c < 5; ++c) {
+    Camera camera;
+    camera.name = std::to_string(c);
+    sequence.cameras.push_back(camera);
+  }
+  for (const char* id : {"shelf_000000", "shelf_000001", "shelf_000002"}) {
+    SequenceFrame frame;
+    frame.id = id;
+    sequence.frames.push_back(frame);
+  }
+  const Detections detections =
+      ReadVoxelPoseDetections(test::SharedData("shelf/pred_shelf_maskrcnn_hrnet_coco.pkl"), sequence, "shelf");
+  ASSERT_EQ(detections.frames.size(), 3u);
+  for (const FrameDetections& frame : detections.frames) {
+    ASSERT_EQ(frame.views.size(), 5u);
+    for (const Poses2D& view : frame.views) {
+      EXPECT_GE(view.num_persons(), 3);
+      EXPECT_LE(view.num_persons(), 5);
+    }
+  }
+  const Poses2D& view = detections.frames[0].views[2];  // key "2_0"
+  EXPECT_NEAR(view.Person(0)(0, 0), 278.49, 0.01);
+  EXPECT_NEAR(view.Person(0)(1, 0), 70.81, 0.01);
+  EXPECT_NEAR(view.Person(0)(2, 0), 0.40, 0.01);
+}
+
+}  // namespace
+}  // namespace rpt

@@ -1,0 +1,6 @@
+# Tests of the Shelf, Campus and CMU Panoptic readers (datasets/readers).
+list(APPEND RPT_DATASETS_TEST_SOURCES
+  ${CMAKE_CURRENT_LIST_DIR}/readers_voxelpose_test.cc
+  ${CMAKE_CURRENT_LIST_DIR}/readers_shelf_campus_test.cc
+  ${CMAKE_CURRENT_LIST_DIR}/readers_panoptic_test.cc
+)
