@@ -1,0 +1,69 @@
+// SPDX-License-Identifier: MIT
+#include "datasets/readers/detections_file.h"
+
+#include <algorithm>
+#include <cctype>
+#include <string>
+
+#include "core/errors.h"
+#include "datasets/readers/generic_detections.h"
+#include "datasets/readers/generic_internal.h"
+#include "datasets/readers/hdf5_cache.h"
+
+namespace rpt {
+
+const char* SupportedDetectionFormats() {
+  return "  a folder of OpenPose JSON files (<camera>/<video>_<frame>_keypoints.json)\n"
+         "  .json with {\"joints\": [...], \"frames\": [...]} (generic detections)\n"
+         "  .json with a list of COCO results [{\"image_id\", \"keypoints\", ...}]\n"
+         "  .h5 / .hdf5 detection cache (rpt convert)";
+}
+
+namespace {
+
+std::string LowerExtension(const std::filesystem::path& path) {
+  std::string extension = path.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+  return extension;
+}
+
+bool IsHdf5Extension(const std::filesystem::path& path) {
+  const std::string extension = LowerExtension(path);
+  return extension == ".h5" || extension == ".hdf5";
+}
+
+}  // namespace
+
+std::vector<Sequence> ReadLabelsFile(const std::filesystem::path& path, const LabelsOptions& options) {
+  if (!IsHdf5Extension(path)) return ReadLabels(path, options);
+  if (!options.split.empty()) {
+    throw ConfigError(path.string() + ": an HDF5 cache keeps no splits; select the split when converting (split '" +
+                      options.split + "' requested)");
+  }
+  return ReadSequencesHdf5(path);
+}
+
+Detections ReadDetectionsFile(const std::filesystem::path& path, const DetectionsFileOptions& options) {
+  const std::string source = path.string();
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw InputError(source + ": file not found");
+  if (std::filesystem::is_directory(path, ec)) return ReadOpenPoseFolder(path, options.openpose);
+
+  if (IsHdf5Extension(path)) return ReadDetectionsHdf5(path);
+  const std::string extension = LowerExtension(path);
+  if (extension == ".json") {
+    const char first = generic_internal::FirstSignificantChar(path);
+    if (first == '[') return ReadCocoDetections(path, options.coco);
+    if (first == '{') return ReadGenericDetections(path);
+    throw InputError(source + ":1:1: expected a JSON object (generic detections) or a list (COCO results); supported:\n" +
+                     SupportedDetectionFormats());
+  }
+  if (extension == ".pkl" || extension == ".pickle") {
+    throw InputError(source + ": VoxelPose pickle caches are not read by this entry point yet (use the dataset's own "
+                              "reader); supported here:\n" +
+                     std::string(SupportedDetectionFormats()));
+  }
+  throw InputError(source + ": unknown detection format '" + extension + "'; supported:\n" + SupportedDetectionFormats());
+}
+
+}  // namespace rpt

@@ -1,0 +1,209 @@
+// SPDX-License-Identifier: MIT
+#include "datasets/readers/generic_common.h"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <regex>
+#include <set>
+#include <unordered_set>
+
+#include "core/errors.h"
+
+namespace rpt {
+namespace {
+
+const std::unordered_set<std::string>& KnownNames() {
+  static const std::unordered_set<std::string> names = [] {
+    std::unordered_set<std::string> out;
+    for (const auto& n : CocoWholeBodyJoints()) out.insert(n);
+    for (const auto& n : DerivedJointNames()) out.insert(n);
+    for (const auto& n : ExtraJointNames()) out.insert(n);
+    return out;
+  }();
+  return names;
+}
+
+// "left_shoulder" -> "shoulder_left", "LShoulder" is not guessed.
+std::string Suggestion(std::string_view name) {
+  for (std::string_view side : {"left", "right"}) {
+    const std::string prefix = std::string(side) + "_";
+    if (name.substr(0, prefix.size()) == prefix) {
+      const std::string candidate = std::string(name.substr(prefix.size())) + "_" + std::string(side);
+      if (IsKnownJointName(candidate)) return candidate;
+      // COCO-WholeBody style: left_big_toe -> foot_big_toe_left.
+      if (IsKnownJointName("foot_" + candidate)) return "foot_" + candidate;
+    }
+  }
+  std::string lower(name);
+  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (lower != name && IsKnownJointName(lower)) return lower;
+  return "";
+}
+
+// One piece of a template: literal text, or a capture group with optional padding and offset.
+struct TemplatePart {
+  std::string literal;
+  int group = -1;     // >= 0: a capture group
+  int width = -1;     // >= 0: numeric, zero-padded
+  long long offset = 0;
+};
+
+std::vector<TemplatePart> ParseTemplate(const std::string& text, const std::string& what) {
+  std::vector<TemplatePart> parts;
+  std::string literal;
+  auto fail = [&](const std::string& why) {
+    throw ConfigError(what + ": template '" + text + "': " + why);
+  };
+  for (size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == '}') {
+      if (i + 1 < text.size() && text[i + 1] == '}') {
+        literal += '}';
+        ++i;
+        continue;
+      }
+      fail("unmatched '}' (write '}}' for a brace)");
+    }
+    if (c != '{') {
+      literal += c;
+      continue;
+    }
+    if (i + 1 < text.size() && text[i + 1] == '{') {
+      literal += '{';
+      ++i;
+      continue;
+    }
+    const size_t close = text.find('}', i);
+    if (close == std::string::npos) fail("unmatched '{'");
+    const std::string field = text.substr(i + 1, close - i - 1);
+    TemplatePart part;
+    const char* p = field.data();
+    const char* end = field.data() + field.size();
+    auto [q, ec] = std::from_chars(p, end, part.group);
+    if (ec != std::errc() || part.group < 0) fail("'{" + field + "}': expected {N}, {N:W} or {N:W+K}");
+    if (q != end) {
+      if (*q != ':') fail("'{" + field + "}': expected {N}, {N:W} or {N:W+K}");
+      ++q;
+      auto [r, ec2] = std::from_chars(q, end, part.width);
+      if (ec2 != std::errc() || part.width < 0 || part.width > 30) fail("'{" + field + "}': width must be 0..30");
+      if (r != end) {
+        const bool plus = *r == '+';
+        if (*r != '+' && *r != '-') fail("'{" + field + "}': expected +K or -K after the width");
+        ++r;
+        auto [s, ec3] = std::from_chars(r, end, part.offset);
+        if (ec3 != std::errc() || s != end) fail("'{" + field + "}': bad offset");
+        if (!plus) part.offset = -part.offset;
+      }
+    }
+    if (!literal.empty()) parts.push_back(TemplatePart{literal});
+    literal.clear();
+    parts.push_back(part);
+    i = close;
+  }
+  if (!literal.empty()) parts.push_back(TemplatePart{literal});
+  return parts;
+}
+
+std::string Expand(const std::vector<TemplatePart>& parts, const std::smatch& match, const std::string& source,
+                   const std::string& text) {
+  std::string out;
+  for (const TemplatePart& part : parts) {
+    if (part.group < 0) {
+      out += part.literal;
+      continue;
+    }
+    const std::string value = match[part.group].str();
+    if (part.width < 0) {
+      out += value;
+      continue;
+    }
+    long long number = 0;
+    const auto [p, ec] = std::from_chars(value.data(), value.data() + value.size(), number);
+    if (value.empty() || ec != std::errc() || p != value.data() + value.size() || number < 0) {
+      throw InputError(source + ": '" + text + "': capture group " + std::to_string(part.group) + " is '" + value +
+                       "', not a non-negative integer");
+    }
+    number += part.offset;
+    if (number < 0) {
+      throw InputError(source + ": '" + text + "': frame number " + value + " " + std::to_string(part.offset) +
+                       " is negative");
+    }
+    std::string digits = std::to_string(number);
+    if (static_cast<int>(digits.size()) < part.width) digits.insert(0, part.width - digits.size(), '0');
+    out += digits;
+  }
+  return out;
+}
+
+}  // namespace
+
+const JointNames& ExtraJointNames() {
+  static const JointNames names = {"head_top", "head_bottom", "neck",      "neck_nose",  "pelvis",     "body_center",
+                                   "spine",    "thorax",      "hand_left", "hand_right"};
+  return names;
+}
+
+bool IsKnownJointName(std::string_view name) {
+  if (name.size() > 6 && name.substr(0, 6) == "extra_") return true;
+  return KnownNames().count(std::string(name)) > 0;
+}
+
+void CheckJointNames(const JointNames& names, const std::string& where) {
+  if (names.empty()) throw InputError(where + ": the joint list is empty");
+  std::set<std::string> seen;
+  for (size_t j = 0; j < names.size(); ++j) {
+    const std::string& name = names[j];
+    if (name.empty()) throw InputError(where + ": joint " + std::to_string(j) + " has an empty name");
+    if (!seen.insert(name).second) throw InputError(where + ": joint name '" + name + "' appears twice");
+    if (!IsKnownJointName(name)) {
+      const std::string suggestion = Suggestion(name);
+      throw InputError(where + ": unknown joint name '" + name + "'" +
+                       (suggestion.empty() ? std::string() : " (did you mean '" + suggestion + "'?)") +
+                       "; names follow core/joints.h (nose, eye_left, shoulder_right, ...), custom joints need the "
+                       "prefix 'extra_'");
+    }
+  }
+}
+
+struct PathMapper::Impl {
+  std::regex pattern;
+  std::vector<TemplatePart> frame_id;
+  std::vector<TemplatePart> camera;
+};
+
+PathMapper::PathMapper(const PathMapping& mapping, const std::string& what) {
+  auto impl = std::make_unique<Impl>();
+  try {
+    impl->pattern = std::regex(mapping.pattern, std::regex::ECMAScript);
+  } catch (const std::regex_error& e) {
+    throw ConfigError(what + ": pattern '" + mapping.pattern + "' is not a valid regular expression (" + e.what() + ")");
+  }
+  impl->frame_id = ParseTemplate(mapping.frame_id, what + " frame id");
+  impl->camera = ParseTemplate(mapping.camera, what + " camera");
+  if (mapping.frame_id.empty()) throw ConfigError(what + ": the frame id template is empty");
+  if (mapping.camera.empty()) throw ConfigError(what + ": the camera template is empty");
+  const int groups = static_cast<int>(impl->pattern.mark_count());
+  for (const auto* parts : {&impl->frame_id, &impl->camera}) {
+    for (const TemplatePart& part : *parts) {
+      if (part.group > groups) {
+        throw ConfigError(what + ": a template uses {" + std::to_string(part.group) + "} but pattern '" +
+                          mapping.pattern + "' has " + std::to_string(groups) + " capture group(s)");
+      }
+    }
+  }
+  impl_ = std::move(impl);
+}
+
+PathMapper::~PathMapper() = default;
+
+bool PathMapper::Apply(const std::string& text, const std::string& source, std::string* frame_id,
+                       std::string* camera) const {
+  std::smatch match;
+  if (!std::regex_match(text, match, impl_->pattern)) return false;
+  *frame_id = Expand(impl_->frame_id, match, source, text);
+  *camera = Expand(impl_->camera, match, source, text);
+  return true;
+}
+
+}  // namespace rpt

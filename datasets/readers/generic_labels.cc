@@ -1,0 +1,460 @@
+// SPDX-License-Identifier: MIT
+#include "datasets/readers/generic_labels.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "core/errors.h"
+#include "datasets/io/json_file.h"
+#include "datasets/readers/generic_common.h"
+#include "datasets/readers/generic_internal.h"
+
+namespace rpt {
+namespace {
+
+using nlohmann::json;
+using generic_internal::IdString;
+using generic_internal::Source;
+
+[[noreturn]] void Fail(const std::string& source, const std::string& pointer, const std::string& what) {
+  throw InputError(source + ": " + pointer + ": " + what);
+}
+
+Camera ParseCamera(const json& root, const std::string& pointer, const std::string& source) {
+  const json& j = io::JsonAt(root, pointer, source);
+  if (!j.is_object()) Fail(source, pointer, "expected a camera object, got " + std::string(j.type_name()));
+  std::string type;
+  if (const json* t = io::JsonFind(root, pointer + "/type"); t && !t->is_null()) {
+    type = io::JsonString(root, pointer + "/type", source);
+  }
+  DistortionModel model = DistortionModel::kOpenCV;
+  if (type == "fisheye") {
+    model = DistortionModel::kFisheye;
+  } else if (type == "h36m") {
+    model = DistortionModel::kH36M;
+  } else if (!type.empty() && type != "pinhole" && type != "opencv" && type != "perspective") {
+    Fail(source, pointer + "/type", "unknown camera type '" + type + "' (known: fisheye, pinhole, h36m)");
+  }
+
+  std::vector<double> dc;
+  if (const json* d = io::JsonFind(root, pointer + "/DC"); d && !d->is_null()) {
+    // Accept [k...] and [[k...]] (a 1xN matrix as some exporters write it).
+    std::string dc_pointer = pointer + "/DC";
+    if (d->is_array() && d->size() == 1 && (*d)[0].is_array()) dc_pointer += "/0";
+    dc = io::JsonNumbers(root, dc_pointer, source);
+  }
+  std::array<double, 5> dist{0, 0, 0, 0, 0};
+  if (model == DistortionModel::kFisheye) {
+    if (dc.size() != 4) {
+      Fail(source, pointer + "/DC", "a fisheye camera needs 4 coefficients (k1, k2, k3, k4), got " + std::to_string(dc.size()));
+    }
+  } else if (dc.size() != 5 && dc.size() != 4 && !dc.empty()) {
+    Fail(source, pointer + "/DC", "expected 5 coefficients (k1, k2, p1, p2, k3), got " + std::to_string(dc.size()));
+  }
+  std::copy(dc.begin(), dc.end(), dist.begin());
+  if (model != DistortionModel::kFisheye && std::all_of(dist.begin(), dist.end(), [](double v) { return v == 0; })) {
+    model = DistortionModel::kNone;
+  }
+
+  const std::vector<double> k = io::JsonMatrix(root, pointer + "/K", source, 3, 3);
+  const std::vector<double> r = io::JsonMatrix(root, pointer + "/R", source, 3, 3);
+  const std::vector<double> t = io::JsonMatrix(root, pointer + "/T", source, 3, 1);
+  Eigen::Matrix3d R;
+  Eigen::Matrix3d K;
+  for (int row = 0; row < 3; ++row) {
+    for (int col = 0; col < 3; ++col) {
+      R(row, col) = r[3 * row + col];
+      K(row, col) = k[3 * row + col];
+    }
+  }
+  Camera camera = Camera::FromCenter(R, Eigen::Vector3d(t[0], t[1], t[2]));
+  camera.name = io::JsonString(root, pointer + "/name", source);
+  camera.K = K;
+  camera.model = model;
+  camera.dist = dist;
+  const std::int64_t width = io::JsonInt(root, pointer + "/width", source);
+  const std::int64_t height = io::JsonInt(root, pointer + "/height", source);
+  if (width <= 0 || height <= 0 || width > 1'000'000 || height > 1'000'000) {
+    Fail(source, pointer, "image size " + std::to_string(width) + "x" + std::to_string(height) + " is not plausible");
+  }
+  camera.width = static_cast<int>(width);
+  camera.height = static_cast<int>(height);
+  if (const std::string error = camera.Validate(); !error.empty()) Fail(source, pointer, error);
+  return camera;
+}
+
+std::vector<Camera> ParseCameras(const json& root, const std::string& pointer, const std::string& source) {
+  const json& list = io::JsonAt(root, pointer, source);
+  if (!list.is_array() || list.empty()) Fail(source, pointer, "expected a non-empty list of cameras");
+  std::vector<Camera> cameras;
+  std::unordered_set<std::string> names;
+  for (size_t c = 0; c < list.size(); ++c) {
+    cameras.push_back(ParseCamera(root, io::JsonPointerJoin(pointer, c), source));
+    if (!names.insert(cameras.back().name).second) {
+      Fail(source, io::JsonPointerJoin(pointer, c) + "/name", "camera name '" + cameras.back().name + "' appears twice");
+    }
+  }
+  return cameras;
+}
+
+bool Near(double a, double b) { return std::abs(a - b) <= 1e-9 * std::max({1.0, std::abs(a), std::abs(b)}); }
+
+template <typename M>
+bool NearAll(const M& a, const M& b) {
+  for (Eigen::Index i = 0; i < a.size(); ++i) {
+    if (!Near(a.data()[i], b.data()[i])) return false;
+  }
+  return true;
+}
+
+// Empty when equal, else what differs.
+std::string CameraDifference(const std::vector<Camera>& a, const std::vector<Camera>& b) {
+  if (a.size() != b.size()) return std::to_string(a.size()) + " vs " + std::to_string(b.size()) + " cameras";
+  for (size_t c = 0; c < a.size(); ++c) {
+    const Camera& x = a[c];
+    const Camera& y = b[c];
+    const std::string where = "camera " + std::to_string(c) + " ('" + x.name + "')";
+    if (x.name != y.name) return "camera " + std::to_string(c) + " is '" + x.name + "' vs '" + y.name + "'";
+    if (x.width != y.width || x.height != y.height) return where + ": image size differs";
+    if (x.model != y.model) return where + ": distortion model differs";
+    if (!NearAll(x.K, y.K)) return where + ": K differs";
+    if (!NearAll(x.R, y.R)) return where + ": R differs";
+    if (!NearAll(x.t, y.t)) return where + ": T differs";
+    for (size_t i = 0; i < 5; ++i) {
+      if (!Near(x.dist[i], y.dist[i])) return where + ": DC differs";
+    }
+  }
+  return "";
+}
+
+JointNames ParseJointNames(const json& root, const std::string& pointer, const std::string& source) {
+  const json& j = io::JsonAt(root, pointer, source);
+  if (!j.is_array()) Fail(source, pointer, "expected a list of joint names, got " + std::string(j.type_name()));
+  JointNames names;
+  for (size_t i = 0; i < j.size(); ++i) {
+    if (!j[i].is_string()) Fail(source, io::JsonPointerJoin(pointer, i), "expected a joint name (string)");
+    names.push_back(j[i].get<std::string>());
+  }
+  CheckJointNames(names, source + ": " + pointer);
+  return names;
+}
+
+// bodies3D: persons x joints x [x, y, z, visibility] (or [x, y, z]: visibility 1).
+void ParseBodies(const json& root, const std::string& pointer, const std::string& source, int num_joints,
+                 Poses3D* poses) {
+  poses->Clear(num_joints);
+  const json* bodies = io::JsonFind(root, pointer);
+  if (!bodies || bodies->is_null()) return;
+  if (!bodies->is_array()) Fail(source, pointer, "expected a list of persons, got " + std::string(bodies->type_name()));
+  for (size_t p = 0; p < bodies->size(); ++p) {
+    const json& person = (*bodies)[p];
+    const std::string person_pointer = io::JsonPointerJoin(pointer, p);
+    if (!person.is_array() || static_cast<int>(person.size()) != num_joints) {
+      Fail(source, person_pointer,
+           "expected " + std::to_string(num_joints) + " joints (as many as \"joints\" names), got " +
+               (person.is_array() ? std::to_string(person.size()) : std::string(person.type_name())));
+    }
+    auto joints = poses->AddPerson();
+    for (int j = 0; j < num_joints; ++j) {
+      const json& joint = person[j];
+      const size_t n = joint.is_array() ? joint.size() : 0;
+      if (n != 4 && n != 3) {
+        Fail(source, io::JsonPointerJoin(person_pointer, j), "expected [x, y, z, visibility]");
+      }
+      for (size_t k = 0; k < n; ++k) {
+        if (!joint[k].is_number()) Fail(source, io::JsonPointerJoin(person_pointer, j), "expected numbers");
+        const double v = joint[k].get<double>();
+        if (!std::isfinite(v)) Fail(source, io::JsonPointerJoin(person_pointer, j), "value is not finite");
+        joints(static_cast<Eigen::Index>(k), j) = v;
+      }
+      if (n == 3) joints(3, j) = 1.0;
+    }
+  }
+}
+
+std::string GroupKey(const json& label) {
+  for (const char* key : {"scene", "seq"}) {
+    const auto it = label.find(key);
+    if (it == label.end() || it->is_null()) continue;
+    return it->is_string() ? it->get<std::string>() : it->dump();
+  }
+  return "";
+}
+
+bool InSplit(const json& root, const std::string& pointer, const std::string& source, const std::string& split) {
+  const json* splits = io::JsonFind(root, pointer + "/splits");
+  if (!splits || splits->is_null()) return false;
+  if (splits->is_string()) return splits->get<std::string>() == split;
+  if (!splits->is_array()) Fail(source, pointer + "/splits", "expected a list of split names");
+  return std::any_of(splits->begin(), splits->end(),
+                     [&](const json& s) { return s.is_string() && s.get<std::string>() == split; });
+}
+
+struct SequenceBuild {
+  Sequence sequence;
+  std::string first_label_id;
+  json first_cameras;  // raw JSON of the first label's cameras (fast equality check)
+  json first_joints;
+  int label_count = 0;                 // labels of this group seen so far (incl. other splits)
+  std::vector<int> frame_index;        // per kept frame: its index among all labels of the group
+  std::vector<bool> has_timestamp;
+  std::optional<double> fps;
+  bool room_set = false;
+};
+
+double ParseFps(const std::string& text) {
+  double fps = 0;
+  const auto [p, ec] = std::from_chars(text.data(), text.data() + text.size(), fps);
+  if (ec != std::errc() || p != text.data() + text.size() || !(fps > 0) || !std::isfinite(fps)) {
+    throw ConfigError("dataset 'generic': param fps: '" + text + "' is not a positive number");
+  }
+  return fps;
+}
+
+}  // namespace
+
+std::vector<Sequence> ReadLabels(const std::filesystem::path& path, const LabelsOptions& options) {
+  if (!(options.fps > 0)) throw ConfigError("ReadLabels: fps must be positive");
+  const std::string source = Source(path);
+  const json root = io::LoadJsonFile(path);
+  if (!root.is_array()) Fail(source, "/", "expected a list of labels, got " + std::string(root.type_name()));
+
+  std::vector<SequenceBuild> builds;
+  std::map<std::string, size_t> build_of_key;
+  std::unordered_map<std::string, size_t> label_of_id;
+  for (size_t i = 0; i < root.size(); ++i) {
+    const std::string pointer = "/" + std::to_string(i);
+    const json& label = root[i];
+    if (!label.is_object()) Fail(source, pointer, "expected a label object, got " + std::string(label.type_name()));
+    const std::string key = GroupKey(label);
+    auto [it, inserted] = build_of_key.emplace(key, builds.size());
+    if (inserted) {
+      builds.emplace_back();
+      builds.back().sequence.name = key.empty() ? path.stem().string() : key;
+    }
+    SequenceBuild& build = builds[it->second];
+    const int index_in_group = build.label_count++;
+    if (!options.split.empty() && !InSplit(root, pointer, source, options.split)) continue;
+
+    const std::string id = IdString(root, pointer + "/id", source);
+    if (const auto [seen, fresh] = label_of_id.emplace(id, i); !fresh) {
+      Fail(source, pointer + "/id", "id '" + id + "' is also used by label " + std::to_string(seen->second));
+    }
+    Sequence& sequence = build.sequence;
+    const json& cameras = io::JsonAt(root, pointer + "/cameras", source);
+    const json& joints = io::JsonAt(root, pointer + "/joints", source);
+    if (build.first_label_id.empty()) {
+      build.first_label_id = id;
+      sequence.cameras = ParseCameras(root, pointer + "/cameras", source);
+      sequence.gt_joints = ParseJointNames(root, pointer + "/joints", source);
+      build.first_cameras = cameras;
+      build.first_joints = joints;
+    } else {
+      if (cameras != build.first_cameras) {
+        const std::string difference = CameraDifference(sequence.cameras, ParseCameras(root, pointer + "/cameras", source));
+        if (!difference.empty()) {
+          throw InputError(source + ": labels '" + build.first_label_id + "' and '" + id + "' (" + pointer +
+                           ") of sequence '" + sequence.name + "' have different cameras (" + difference +
+                           "); give them different \"scene\" values");
+        }
+      }
+      if (joints != build.first_joints && ParseJointNames(root, pointer + "/joints", source) != sequence.gt_joints) {
+        throw InputError(source + ": labels '" + build.first_label_id + "' and '" + id + "' (" + pointer +
+                         ") of sequence '" + sequence.name + "' have different \"joints\"");
+      }
+    }
+
+    SequenceFrame& frame = sequence.frames.emplace_back();
+    frame.id = id;
+    ParseBodies(root, pointer + "/bodies3D", source, static_cast<int>(sequence.gt_joints.size()), &frame.gt);
+    if (const json* ids = io::JsonFind(root, pointer + "/bodyids"); ids && !ids->is_null()) {
+      if (!ids->is_array() || static_cast<int>(ids->size()) != frame.gt.num_persons()) {
+        Fail(source, pointer + "/bodyids", "expected one id per person of bodies3D (" +
+                                               std::to_string(frame.gt.num_persons()) + ")");
+      }
+      for (size_t p = 0; p < ids->size(); ++p) {
+        frame.gt.track_ids[p] = static_cast<int>(io::JsonInt(root, io::JsonPointerJoin(pointer + "/bodyids", p), source));
+      }
+    }
+    const json* timestamp = io::JsonFind(root, pointer + "/timestamp");
+    build.has_timestamp.push_back(timestamp && !timestamp->is_null());
+    if (build.has_timestamp.back()) {
+      frame.timestamp_s = io::JsonNumber(root, pointer + "/timestamp", source);
+      if (!std::isfinite(frame.timestamp_s)) Fail(source, pointer + "/timestamp", "not finite");
+    }
+    build.frame_index.push_back(index_in_group);
+    if (const json* fps = io::JsonFind(root, pointer + "/fps"); fps && !fps->is_null() && !build.fps) {
+      const double value = io::JsonNumber(root, pointer + "/fps", source);
+      if (!(value > 0) || !std::isfinite(value)) Fail(source, pointer + "/fps", "must be positive");
+      build.fps = value;
+    }
+    if (!build.room_set) {
+      const json* size = io::JsonFind(root, pointer + "/room_size");
+      const json* center = io::JsonFind(root, pointer + "/room_center");
+      if (size && !size->is_null()) {
+        const auto v = io::JsonMatrix(root, pointer + "/room_size", source, 3, 1);
+        sequence.room.size_m = Eigen::Vector3d(v[0], v[1], v[2]);
+        build.room_set = true;
+      }
+      if (center && !center->is_null()) {
+        const auto v = io::JsonMatrix(root, pointer + "/room_center", source, 3, 1);
+        sequence.room.center_m = Eigen::Vector3d(v[0], v[1], v[2]);
+        build.room_set = true;
+      }
+    }
+  }
+
+  std::vector<Sequence> sequences;
+  for (SequenceBuild& build : builds) {
+    if (build.sequence.frames.empty()) continue;  // all its labels belong to other splits
+    Sequence& sequence = build.sequence;
+    sequence.fps = build.fps.value_or(options.fps);
+    const bool all = std::all_of(build.has_timestamp.begin(), build.has_timestamp.end(), [](bool b) { return b; });
+    const bool none = std::none_of(build.has_timestamp.begin(), build.has_timestamp.end(), [](bool b) { return b; });
+    if (!all && !none) {
+      const size_t f = std::find(build.has_timestamp.begin(), build.has_timestamp.end(), false) - build.has_timestamp.begin();
+      throw InputError(source + ": label '" + sequence.frames[f].id + "' of sequence '" + sequence.name +
+                       "' has no \"timestamp\" while others have one");
+    }
+    if (none) {
+      for (size_t f = 0; f < sequence.frames.size(); ++f) sequence.frames[f].timestamp_s = build.frame_index[f] / sequence.fps;
+    }
+    ValidateSequence(sequence, source + " (sequence '" + sequence.name + "')");
+    sequences.push_back(std::move(sequence));
+  }
+  if (sequences.empty()) {
+    throw InputError(source + ": no labels" + (options.split.empty() ? std::string() : " in split '" + options.split + "'"));
+  }
+  return sequences;
+}
+
+namespace {
+
+using ojson = nlohmann::ordered_json;
+
+void CheckFinite(double value, const std::string& source, const std::string& where) {
+  if (!std::isfinite(value)) throw InputError(source + ": cannot write " + where + ": value is not finite");
+}
+
+ojson MatrixJson(const Eigen::Matrix3d& m) {
+  ojson rows = ojson::array();
+  for (int r = 0; r < 3; ++r) rows.push_back({m(r, 0), m(r, 1), m(r, 2)});
+  return rows;
+}
+
+ojson CameraJson(const Camera& camera, const std::string& source, const std::string& sequence_name) {
+  const std::string where = "sequence '" + sequence_name + "', camera '" + camera.name + "'";
+  for (Eigen::Index i = 0; i < 9; ++i) {
+    CheckFinite(camera.K.data()[i], source, where);
+    CheckFinite(camera.R.data()[i], source, where);
+  }
+  const Eigen::Vector3d center = camera.Center();
+  for (int i = 0; i < 3; ++i) CheckFinite(center[i], source, where);
+  for (double d : camera.dist) CheckFinite(d, source, where);
+  ojson j;
+  j["name"] = camera.name;
+  j["K"] = MatrixJson(camera.K);
+  switch (camera.model) {
+    case DistortionModel::kNone:
+      j["DC"] = {0.0, 0.0, 0.0, 0.0, 0.0};
+      break;
+    case DistortionModel::kOpenCV:
+    case DistortionModel::kH36M:
+      j["DC"] = {camera.dist[0], camera.dist[1], camera.dist[2], camera.dist[3], camera.dist[4]};
+      break;
+    case DistortionModel::kFisheye:
+      j["DC"] = {camera.dist[0], camera.dist[1], camera.dist[2], camera.dist[3]};
+      break;
+  }
+  j["R"] = MatrixJson(camera.R);
+  j["T"] = ojson::array({ojson::array({center[0]}), ojson::array({center[1]}), ojson::array({center[2]})});
+  j["width"] = camera.width;
+  j["height"] = camera.height;
+  if (camera.model == DistortionModel::kFisheye) j["type"] = "fisheye";
+  if (camera.model == DistortionModel::kH36M) j["type"] = "h36m";
+  return j;
+}
+
+}  // namespace
+
+void WriteLabels(const std::filesystem::path& path, const std::vector<Sequence>& sequences) {
+  const std::string source = Source(path);
+  std::vector<ojson> labels;
+  std::unordered_set<std::string> ids;
+  for (const Sequence& sequence : sequences) {
+    CheckJointNames(sequence.gt_joints, source + ": cannot write sequence '" + sequence.name + "'");
+    ojson cameras = ojson::array();
+    for (const Camera& camera : sequence.cameras) cameras.push_back(CameraJson(camera, source, sequence.name));
+    const ojson joints = sequence.gt_joints;
+    const int num_joints = static_cast<int>(sequence.gt_joints.size());
+    for (const SequenceFrame& frame : sequence.frames) {
+      const std::string where = "sequence '" + sequence.name + "', frame '" + frame.id + "'";
+      if (!ids.insert(frame.id).second) throw InputError(source + ": cannot write " + where + ": duplicate frame id");
+      if (frame.gt.num_persons() > 0 && frame.gt.num_joints != num_joints) {
+        throw InputError(source + ": cannot write " + where + ": " + std::to_string(frame.gt.num_joints) +
+                         " joints, expected " + std::to_string(num_joints));
+      }
+      ojson label;
+      label["id"] = frame.id;
+      label["scene"] = sequence.name;
+      label["timestamp"] = frame.timestamp_s;
+      CheckFinite(frame.timestamp_s, source, where);
+      if (sequence.fps > 0) label["fps"] = sequence.fps;
+      label["joints"] = joints;
+      label["cameras"] = cameras;
+      ojson bodies = ojson::array();
+      bool tracked = false;
+      for (int p = 0; p < frame.gt.num_persons(); ++p) {
+        const auto person = frame.gt.Person(p);
+        ojson body = ojson::array();
+        for (int j = 0; j < num_joints; ++j) {
+          for (int k = 0; k < 4; ++k) CheckFinite(person(k, j), source, where);
+          body.push_back({person(0, j), person(1, j), person(2, j), person(3, j)});
+        }
+        bodies.push_back(std::move(body));
+        tracked |= frame.gt.track_ids[p] >= 0;
+      }
+      label["bodies3D"] = std::move(bodies);
+      if (tracked) label["bodyids"] = frame.gt.track_ids;
+      const Room& room = sequence.room;
+      for (int i = 0; i < 3; ++i) {
+        CheckFinite(room.center_m[i], source, where);
+        CheckFinite(room.size_m[i], source, where);
+      }
+      label["room_center"] = {room.center_m.x(), room.center_m.y(), room.center_m.z()};
+      label["room_size"] = {room.size_m.x(), room.size_m.y(), room.size_m.z()};
+      labels.push_back(std::move(label));
+    }
+  }
+  generic_internal::WriteTextFile(path, generic_internal::DumpListOnePerLine(labels));
+}
+
+DatasetInfo GenericInfo() {
+  DatasetInfo info;
+  info.name = "generic";
+  info.description = "Labels in the generic (skelda) JSON format: cameras and 3D ground truth per multi-view frame";
+  info.layout =
+      "--root is the label file: a JSON list of labels {id, cameras, bodies3D, joints, ...}\n"
+      "(schema: docs/datasets/generic_formats.md); labels are grouped into sequences by \"scene\"/\"seq\".";
+  info.params = {
+      {"split", "", "keep only labels whose \"splits\" contain this name (default: all labels)"},
+      {"fps", "25", "frame rate for timestamps when the labels have no \"timestamp\""},
+  };
+  return info;
+}
+
+std::vector<Sequence> ReadGeneric(const DatasetRequest& request) {
+  const DatasetInfo info = GenericInfo();
+  request.CheckParams(info);
+  LabelsOptions options;
+  options.split = request.Param(info, "split");
+  options.fps = ParseFps(request.Param(info, "fps"));
+  return ReadLabels(request.root, options);
+}
+
+}  // namespace rpt

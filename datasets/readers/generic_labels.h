@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: MIT
+// Generic labels: the RPT authors' "skelda" label list (shared/docs/datasets.md §12), read and
+// written. Exact schema: docs/datasets/generic_formats.md.
+//
+// A file is a JSON list of labels, one per multi-view frame:
+//   {"id": "...", "cameras": [{"name", "K" 3x3, "DC", "R" 3x3 world->camera, "T" camera centre
+//    in metres 3x1, "width", "height", optional "type": "fisheye"}], "bodies3D": [person:
+//    [joint: [x, y, z, visibility]]], "joints": [names], optional "splits", "scene" / "seq",
+//    "room_size", "room_center", "bodyids", "timestamp", "fps"}.
+// Labels are grouped into Sequences by "scene" (else "seq"; one sequence named after the file
+// when neither is present), sequences and frames in file order.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "datasets/dataset_request.h"
+#include "datasets/sequence.h"
+
+namespace rpt {
+
+struct LabelsOptions {
+  std::string split;  // keep only labels whose "splits" list contains it; empty = all labels
+  double fps = 25;    // for timestamps when labels have no "timestamp" and no "fps"
+};
+
+// Reads and validates (ValidateSequence) a label file. Throws InputError naming the file and the
+// JSON pointer: missing file, parse errors (with line and column), wrong shapes, unknown joint
+// names, duplicate ids, and cameras that differ between two labels of one sequence (naming both
+// labels). Frames have no detections (views empty).
+std::vector<Sequence> ReadLabels(const std::filesystem::path& path, const LabelsOptions& options = {});
+
+// Writes the sequences as one label list ("scene" = sequence name, "timestamp", "fps", "bodyids"
+// when tracked, room). kH36M cameras are written with the extension "type": "h36m". Throws
+// InputError naming the file when it cannot be written or a value is not finite.
+void WriteLabels(const std::filesystem::path& path, const std::vector<Sequence>& sequences);
+
+// Registry pair: dataset "generic", --root = the label file, params split (default: all) and fps
+// (default 25).
+DatasetInfo GenericInfo();
+std::vector<Sequence> ReadGeneric(const DatasetRequest& request);
+
+}  // namespace rpt

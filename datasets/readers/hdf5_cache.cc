@@ -1,0 +1,729 @@
+// SPDX-License-Identifier: MIT
+#include "datasets/readers/hdf5_cache.h"
+
+#include <hdf5.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <numeric>
+#include <sstream>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "core/errors.h"
+#include "datasets/readers/generic_common.h"
+#include "datasets/readers/generic_detections.h"
+
+namespace rpt {
+namespace {
+
+constexpr int kVersion = 1;
+constexpr const char* kDetectionsFormat = "rpt-detections";
+constexpr const char* kSequencesFormat = "rpt-sequences";
+
+// Turns HDF5's automatic error printing off for the lifetime of the guard (errors become our
+// exceptions), restoring the previous handler afterwards.
+class QuietHdf5 {
+ public:
+  QuietHdf5() {
+    H5Eget_auto2(H5E_DEFAULT, &func_, &data_);
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  }
+  ~QuietHdf5() { H5Eset_auto2(H5E_DEFAULT, func_, data_); }
+  QuietHdf5(const QuietHdf5&) = delete;
+  QuietHdf5& operator=(const QuietHdf5&) = delete;
+
+ private:
+  H5E_auto2_t func_ = nullptr;
+  void* data_ = nullptr;
+};
+
+// Owns one HDF5 identifier.
+class Id {
+ public:
+  Id() = default;
+  Id(hid_t id, herr_t (*close)(hid_t)) : id_(id), close_(close) {}
+  ~Id() { Reset(); }
+  Id(Id&& other) noexcept : id_(other.id_), close_(other.close_) { other.id_ = H5I_INVALID_HID; }
+  Id& operator=(Id&& other) noexcept {
+    if (this != &other) {
+      Reset();
+      id_ = other.id_;
+      close_ = other.close_;
+      other.id_ = H5I_INVALID_HID;
+    }
+    return *this;
+  }
+  Id(const Id&) = delete;
+  Id& operator=(const Id&) = delete;
+
+  hid_t get() const { return id_; }
+  bool valid() const { return id_ >= 0; }
+
+ private:
+  void Reset() {
+    if (id_ >= 0 && close_) close_(id_);
+    id_ = H5I_INVALID_HID;
+  }
+  hid_t id_ = H5I_INVALID_HID;
+  herr_t (*close_)(hid_t) = nullptr;
+};
+
+std::string ShapeText(const std::vector<hsize_t>& dims) {
+  std::string out = "[";
+  for (size_t i = 0; i < dims.size(); ++i) out += (i ? ", " : "") + std::to_string(dims[i]);
+  return out + "]";
+}
+
+// ---------------------------------------------------------------------------------------------
+// Writing
+
+class Writer {
+ public:
+  Writer(const std::filesystem::path& path, bool add_to_existing) : source_(path.string()) {
+    if (add_to_existing) {
+      if (H5Fis_hdf5(path.c_str()) <= 0) Fail("", "cannot add to it: not an existing HDF5 file");
+      file_ = Id(H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), H5Fclose);
+    } else {
+      file_ = Id(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
+    }
+    if (!file_.valid()) Fail("", "cannot open for writing");
+  }
+
+  [[noreturn]] void Fail(const std::string& place, const std::string& what) const {
+    throw InputError(source_ + ": " + (place.empty() ? std::string() : place + ": ") + what);
+  }
+
+  hid_t file() const { return file_.get(); }
+
+  // Creates `name` (absolute path), replacing an existing object of that name.
+  Id Group(const std::string& name) {
+    if (H5Lexists(file_.get(), name.c_str(), H5P_DEFAULT) > 0) {
+      if (H5Ldelete(file_.get(), name.c_str(), H5P_DEFAULT) < 0) Fail(name, "cannot replace");
+    }
+    Id group(H5Gcreate2(file_.get(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+    if (!group.valid()) Fail(name, "cannot create group");
+    return group;
+  }
+
+  template <typename T>
+  void Numbers(hid_t parent, const std::string& parent_name, const std::string& name, hid_t file_type,
+               hid_t memory_type, const std::vector<hsize_t>& dims, const T* data) {
+    const std::string place = parent_name + "/" + name;
+    Id space(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr), H5Sclose);
+    if (!space.valid()) Fail(place, "cannot create dataspace " + ShapeText(dims));
+    Id dataset(H5Dcreate2(parent, name.c_str(), file_type, space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+               H5Dclose);
+    if (!dataset.valid()) Fail(place, "cannot create dataset");
+    const hsize_t count = std::accumulate(dims.begin(), dims.end(), hsize_t{1}, std::multiplies<>());
+    if (count > 0 && H5Dwrite(dataset.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0) {
+      Fail(place, "write failed");
+    }
+  }
+
+  void Doubles(hid_t parent, const std::string& parent_name, const std::string& name, const std::vector<hsize_t>& dims,
+               const std::vector<double>& data) {
+    Numbers(parent, parent_name, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, dims, data.data());
+  }
+  void Int64s(hid_t parent, const std::string& parent_name, const std::string& name, const std::vector<std::int64_t>& data) {
+    Numbers(parent, parent_name, name, H5T_STD_I64LE, H5T_NATIVE_INT64, {data.size()}, data.data());
+  }
+  void Int32s(hid_t parent, const std::string& parent_name, const std::string& name, const std::vector<hsize_t>& dims,
+              const std::vector<std::int32_t>& data) {
+    Numbers(parent, parent_name, name, H5T_STD_I32LE, H5T_NATIVE_INT32, dims, data.data());
+  }
+
+  // Fixed-length, NUL-padded strings.
+  void Strings(hid_t parent, const std::string& parent_name, const std::string& name,
+               const std::vector<std::string>& values) {
+    size_t width = 1;
+    for (const std::string& v : values) width = std::max(width, v.size());
+    std::vector<char> buffer(values.size() * width, '\0');
+    for (size_t i = 0; i < values.size(); ++i) std::memcpy(buffer.data() + i * width, values[i].data(), values[i].size());
+    Id type(H5Tcopy(H5T_C_S1), H5Tclose);
+    H5Tset_size(type.get(), width);
+    H5Tset_strpad(type.get(), H5T_STR_NULLPAD);
+    H5Tset_cset(type.get(), H5T_CSET_UTF8);
+    Numbers(parent, parent_name, name, type.get(), type.get(), {values.size()}, buffer.data());
+  }
+
+  void StringAttribute(hid_t object, const std::string& place, const std::string& name, const std::string& value) {
+    Id type(H5Tcopy(H5T_C_S1), H5Tclose);
+    H5Tset_size(type.get(), std::max<size_t>(1, value.size()));
+    H5Tset_strpad(type.get(), H5T_STR_NULLPAD);
+    H5Tset_cset(type.get(), H5T_CSET_UTF8);
+    Id space(H5Screate(H5S_SCALAR), H5Sclose);
+    Id attribute(H5Acreate2(object, name.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+    std::string padded = value;
+    padded.resize(std::max<size_t>(1, value.size()), '\0');
+    if (!attribute.valid() || H5Awrite(attribute.get(), type.get(), padded.data()) < 0) {
+      Fail(place, "cannot write attribute " + name);
+    }
+  }
+
+  template <typename T>
+  void NumberAttribute(hid_t object, const std::string& place, const std::string& name, hid_t file_type,
+                       hid_t memory_type, T value) {
+    Id space(H5Screate(H5S_SCALAR), H5Sclose);
+    Id attribute(H5Acreate2(object, name.c_str(), file_type, space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+    if (!attribute.valid() || H5Awrite(attribute.get(), memory_type, &value) < 0) Fail(place, "cannot write attribute " + name);
+  }
+
+  void Close() {
+    if (H5Fflush(file_.get(), H5F_SCOPE_GLOBAL) < 0) Fail("", "flush failed");
+    file_ = Id();
+  }
+
+ private:
+  std::string source_;
+  Id file_;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Reading
+
+class Reader {
+ public:
+  explicit Reader(const std::filesystem::path& path) : source_(path.string()) {
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec)) throw InputError(source_ + ": file not found");
+    if (std::filesystem::is_directory(path, ec)) throw InputError(source_ + ": is a folder, expected an HDF5 file");
+    const htri_t is_hdf5 = H5Fis_hdf5(path.c_str());
+    if (is_hdf5 <= 0) {
+      throw InputError(source_ + ": byte 0: not an HDF5 file (no HDF5 signature at offset 0, 512, 1024, ...)");
+    }
+    file_ = Id(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+    if (!file_.valid()) throw InputError(source_ + ": cannot open the HDF5 file (damaged or truncated?)");
+  }
+
+  [[noreturn]] void Fail(const std::string& place, const std::string& what) const {
+    throw InputError(source_ + ": " + place + ": " + what);
+  }
+
+  bool Exists(const std::string& name) const {
+    // Check each prefix: H5Lexists fails on a missing intermediate group.
+    size_t pos = 0;
+    while ((pos = name.find('/', pos + 1)) != std::string::npos) {
+      if (H5Lexists(file_.get(), name.substr(0, pos).c_str(), H5P_DEFAULT) <= 0) return false;
+    }
+    return H5Lexists(file_.get(), name.c_str(), H5P_DEFAULT) > 0;
+  }
+
+  Id OpenGroup(const std::string& name, const std::string& what) const {
+    if (!Exists(name)) Fail(name, "missing (" + what + ")");
+    Id group(H5Gopen2(file_.get(), name.c_str(), H5P_DEFAULT), H5Gclose);
+    if (!group.valid()) Fail(name, "not a group");
+    return group;
+  }
+
+  Id OpenDataset(const std::string& name) const {
+    if (!Exists(name)) Fail(name, "missing");
+    Id dataset(H5Dopen2(file_.get(), name.c_str(), H5P_DEFAULT), H5Dclose);
+    if (!dataset.valid()) Fail(name, "not a dataset");
+    return dataset;
+  }
+
+  std::vector<hsize_t> Dims(hid_t dataset, const std::string& name) const {
+    Id space(H5Dget_space(dataset), H5Sclose);
+    const int rank = H5Sget_simple_extent_ndims(space.get());
+    if (rank < 0) Fail(name, "cannot read the shape");
+    std::vector<hsize_t> dims(static_cast<size_t>(rank));
+    if (rank > 0) H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr);
+    return dims;
+  }
+
+  // Checks the shape; `expected` entries < 0 accept any size. Returns the dims.
+  std::vector<hsize_t> CheckShape(hid_t dataset, const std::string& name, const std::vector<long long>& expected,
+                                  const std::string& meaning) const {
+    const std::vector<hsize_t> dims = Dims(dataset, name);
+    bool ok = dims.size() == expected.size();
+    for (size_t i = 0; ok && i < dims.size(); ++i) ok = expected[i] < 0 || dims[i] == static_cast<hsize_t>(expected[i]);
+    if (!ok) {
+      std::string want = "[";
+      for (size_t i = 0; i < expected.size(); ++i) want += (i ? ", " : "") + (expected[i] < 0 ? std::string("*") : std::to_string(expected[i]));
+      Fail(name, "shape " + ShapeText(dims) + ", expected " + want + "]" + (meaning.empty() ? "" : " (" + meaning + ")"));
+    }
+    return dims;
+  }
+
+  H5T_class_t TypeClass(hid_t dataset) const {
+    Id type(H5Dget_type(dataset), H5Tclose);
+    return H5Tget_class(type.get());
+  }
+
+  template <typename T>
+  std::vector<T> Numbers(const std::string& name, hid_t memory_type, const std::vector<long long>& expected,
+                         const std::string& meaning = "") const {
+    Id dataset = OpenDataset(name);
+    const H5T_class_t type_class = TypeClass(dataset.get());
+    if (type_class != H5T_FLOAT && type_class != H5T_INTEGER) Fail(name, "expected numbers");
+    const std::vector<hsize_t> dims = CheckShape(dataset.get(), name, expected, meaning);
+    const hsize_t count = std::accumulate(dims.begin(), dims.end(), hsize_t{1}, std::multiplies<>());
+    std::vector<T> values(count);
+    if (count > 0 && H5Dread(dataset.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0) {
+      Fail(name, "read failed (damaged file?)");
+    }
+    return values;
+  }
+
+  std::vector<double> Doubles(const std::string& name, const std::vector<long long>& expected, const std::string& meaning = "") const {
+    std::vector<double> values = Numbers<double>(name, H5T_NATIVE_DOUBLE, expected, meaning);
+    for (size_t i = 0; i < values.size(); ++i) {
+      if (!std::isfinite(values[i])) Fail(name, "element " + std::to_string(i) + " is NaN or infinite");
+    }
+    return values;
+  }
+
+  std::vector<std::int64_t> Int64s(const std::string& name, const std::vector<long long>& expected, const std::string& meaning = "") const {
+    return Numbers<std::int64_t>(name, H5T_NATIVE_INT64, expected, meaning);
+  }
+
+  std::vector<std::string> Strings(const std::string& name, long long expected_count = -1) const {
+    Id dataset = OpenDataset(name);
+    if (TypeClass(dataset.get()) != H5T_STRING) Fail(name, "expected strings");
+    const std::vector<hsize_t> dims = CheckShape(dataset.get(), name, {expected_count}, "");
+    const size_t count = dims[0];
+    std::vector<std::string> out(count);
+    if (count == 0) return out;
+    Id file_type(H5Dget_type(dataset.get()), H5Tclose);
+    if (H5Tis_variable_str(file_type.get()) > 0) {
+      Id memory_type(H5Tcopy(H5T_C_S1), H5Tclose);
+      H5Tset_size(memory_type.get(), H5T_VARIABLE);
+      H5Tset_cset(memory_type.get(), H5Tget_cset(file_type.get()));
+      std::vector<char*> pointers(count, nullptr);
+      if (H5Dread(dataset.get(), memory_type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, pointers.data()) < 0) {
+        Fail(name, "read failed");
+      }
+      for (size_t i = 0; i < count; ++i) out[i] = pointers[i] ? pointers[i] : "";
+      Id space(H5Dget_space(dataset.get()), H5Sclose);
+      H5Dvlen_reclaim(memory_type.get(), space.get(), H5P_DEFAULT, pointers.data());
+      return out;
+    }
+    const size_t width = H5Tget_size(file_type.get());
+    if (width == 0) Fail(name, "bad string size");
+    Id memory_type(H5Tcopy(file_type.get()), H5Tclose);
+    std::vector<char> buffer(count * width);
+    if (H5Dread(dataset.get(), memory_type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, buffer.data()) < 0) Fail(name, "read failed");
+    for (size_t i = 0; i < count; ++i) {
+      const char* begin = buffer.data() + i * width;
+      out[i].assign(begin, strnlen(begin, width));
+      // Space-padded strings (Fortran / MATLAB style).
+      if (H5Tget_strpad(file_type.get()) == H5T_STR_SPACEPAD) out[i].erase(out[i].find_last_not_of(' ') + 1);
+    }
+    return out;
+  }
+
+  // An attribute as text (string attribute) or number (numeric attribute, formatted).
+  bool HasAttribute(hid_t object, const std::string& name) const { return H5Aexists(object, name.c_str()) > 0; }
+
+  std::string StringAttribute(hid_t object, const std::string& place, const std::string& name) const {
+    if (!HasAttribute(object, name)) Fail(place, "attribute '" + name + "' missing");
+    Id attribute(H5Aopen(object, name.c_str(), H5P_DEFAULT), H5Aclose);
+    Id type(H5Aget_type(attribute.get()), H5Tclose);
+    if (H5Tget_class(type.get()) != H5T_STRING) Fail(place, "attribute '" + name + "' is not a string");
+    if (H5Tis_variable_str(type.get()) > 0) {
+      Id memory_type(H5Tcopy(H5T_C_S1), H5Tclose);
+      H5Tset_size(memory_type.get(), H5T_VARIABLE);
+      char* text = nullptr;
+      if (H5Aread(attribute.get(), memory_type.get(), &text) < 0) Fail(place, "cannot read attribute '" + name + "'");
+      std::string out = text ? text : "";
+      H5free_memory(text);
+      return out;
+    }
+    const size_t width = H5Tget_size(type.get());
+    std::vector<char> buffer(width + 1, '\0');
+    if (H5Aread(attribute.get(), type.get(), buffer.data()) < 0) Fail(place, "cannot read attribute '" + name + "'");
+    return std::string(buffer.data(), strnlen(buffer.data(), width));
+  }
+
+  double NumberAttribute(hid_t object, const std::string& place, const std::string& name) const {
+    if (!HasAttribute(object, name)) Fail(place, "attribute '" + name + "' missing");
+    Id attribute(H5Aopen(object, name.c_str(), H5P_DEFAULT), H5Aclose);
+    Id type(H5Aget_type(attribute.get()), H5Tclose);
+    const H5T_class_t type_class = H5Tget_class(type.get());
+    if (type_class != H5T_INTEGER && type_class != H5T_FLOAT) Fail(place, "attribute '" + name + "' is not a number");
+    double value = 0;
+    if (H5Aread(attribute.get(), H5T_NATIVE_DOUBLE, &value) < 0) Fail(place, "cannot read attribute '" + name + "'");
+    return value;
+  }
+
+  void CheckFormat(hid_t group, const std::string& place, const std::string& format) const {
+    const std::string found = HasAttribute(group, "format") ? StringAttribute(group, place, "format") : "";
+    if (found != format) {
+      Fail(place, "attribute format is '" + found + "', expected '" + format + "' (not written by rpt?)");
+    }
+    const double version = NumberAttribute(group, place, "version");
+    if (version != kVersion) {
+      Fail(place, "format version " + std::to_string(version) + " is not supported (this build reads version " +
+                      std::to_string(kVersion) + ")");
+    }
+  }
+
+  // Offsets: offsets[0] = 0, non-decreasing, offsets.back() = total.
+  void CheckOffsets(const std::vector<std::int64_t>& offsets, const std::string& name, const std::string& total_what,
+                    std::int64_t total) const {
+    if (offsets.empty() || offsets.front() != 0) Fail(name, "must start with 0");
+    for (size_t i = 1; i < offsets.size(); ++i) {
+      if (offsets[i] < offsets[i - 1]) Fail(name, "decreases at element " + std::to_string(i));
+    }
+    if (offsets.back() != total) {
+      Fail(name, "ends at " + std::to_string(offsets.back()) + " but " + total_what + " has " + std::to_string(total));
+    }
+  }
+
+  hid_t file() const { return file_.get(); }
+  const std::string& source() const { return source_; }
+
+ private:
+  std::string source_;
+  Id file_;
+};
+
+std::vector<long long> Shape(std::initializer_list<long long> dims) { return dims; }
+
+}  // namespace
+
+// -----------------------------------------------------------------------------------------------
+// Detections
+
+void WriteDetectionsHdf5(const std::filesystem::path& path, const Detections& detections, const Hdf5WriteOptions& options) {
+  const QuietHdf5 quiet;
+  ValidateDetections(detections, path.string() + ": cannot write");
+  const size_t num_joints = detections.joints.size();
+
+  std::vector<std::string> cameras;
+  std::unordered_map<std::string, std::int32_t> camera_index;
+  std::vector<std::string> frame_ids;
+  std::vector<std::int64_t> view_offsets = {0};
+  std::vector<std::int32_t> view_cameras;
+  std::vector<std::int64_t> person_offsets = {0};
+  size_t total_values = 0;
+  for (const FrameDetections& frame : detections.frames) {
+    frame_ids.push_back(frame.frame_id);
+    for (size_t v = 0; v < frame.views.size(); ++v) {
+      const auto [it, fresh] = camera_index.emplace(frame.cameras[v], static_cast<std::int32_t>(cameras.size()));
+      if (fresh) cameras.push_back(frame.cameras[v]);
+      view_cameras.push_back(it->second);
+      person_offsets.push_back(person_offsets.back() + frame.views[v].num_persons());
+      total_values += frame.views[v].data.size();
+    }
+    view_offsets.push_back(static_cast<std::int64_t>(view_cameras.size()));
+  }
+  const std::vector<hsize_t> keypoint_dims = {static_cast<hsize_t>(person_offsets.back()), num_joints, 3};
+
+  Writer writer(path, options.add_to_existing);
+  const std::string name = "/detections";
+  Id group = writer.Group(name);
+  writer.StringAttribute(group.get(), name, "format", kDetectionsFormat);
+  writer.NumberAttribute(group.get(), name, "version", H5T_STD_I32LE, H5T_NATIVE_INT, kVersion);
+  writer.Strings(group.get(), name, "joints", detections.joints);
+  writer.Strings(group.get(), name, "cameras", cameras);
+  writer.Strings(group.get(), name, "frame_ids", frame_ids);
+  writer.Int64s(group.get(), name, "view_offsets", view_offsets);
+  writer.Int32s(group.get(), name, "view_cameras", {view_cameras.size()}, view_cameras);
+  writer.Int64s(group.get(), name, "person_offsets", person_offsets);
+  if (options.float64) {
+    std::vector<double> values;
+    values.reserve(total_values);
+    for (const FrameDetections& frame : detections.frames) {
+      for (const Poses2D& view : frame.views) values.insert(values.end(), view.data.begin(), view.data.end());
+    }
+    writer.Numbers(group.get(), name, "keypoints", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, keypoint_dims, values.data());
+  } else {
+    std::vector<float> values;
+    values.reserve(total_values);
+    for (const FrameDetections& frame : detections.frames) {
+      for (const Poses2D& view : frame.views) {
+        for (double d : view.data) values.push_back(static_cast<float>(d));
+      }
+    }
+    writer.Numbers(group.get(), name, "keypoints", H5T_IEEE_F32LE, H5T_NATIVE_FLOAT, keypoint_dims, values.data());
+  }
+  group = Id();
+  writer.Close();
+}
+
+namespace {
+
+// Reads [P, J, 3] keypoints in their stored precision.
+template <typename T>
+void FillViews(const std::vector<T>& values, const Reader& reader, const std::string& name, Detections* detections,
+               const std::vector<std::int64_t>& person_offsets) {
+  const size_t num_joints = detections->joints.size();
+  const size_t stride = 3 * num_joints;
+  size_t view_index = 0;
+  for (FrameDetections& frame : detections->frames) {
+    for (size_t v = 0; v < frame.views.size(); ++v, ++view_index) {
+      const size_t begin = static_cast<size_t>(person_offsets[view_index]) * stride;
+      const size_t end = static_cast<size_t>(person_offsets[view_index + 1]) * stride;
+      Poses2D& view = frame.views[v];
+      view.Clear(static_cast<int>(num_joints));
+      view.data.resize(end - begin);
+      for (size_t i = begin; i < end; i += 3) {
+        const double x = values[i], y = values[i + 1], score = values[i + 2];
+        if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(score) || score < 0 || score > 1) {
+          const size_t person = i / stride;
+          const size_t joint = (i % stride) / 3;
+          reader.Fail(name, "person " + std::to_string(person) + " (frame '" + frame.frame_id + "', camera '" +
+                                frame.cameras[v] + "'), joint '" + detections->joints[joint] + "': " +
+                                (std::isfinite(x) && std::isfinite(y) && std::isfinite(score)
+                                     ? "score " + std::to_string(score) + " outside [0, 1]"
+                                     : std::string("NaN or infinite value")));
+        }
+        view.data[i - begin] = x;
+        view.data[i - begin + 1] = y;
+        view.data[i - begin + 2] = score;
+      }
+    }
+  }
+}
+
+}  // namespace
+
+Detections ReadDetectionsHdf5(const std::filesystem::path& path) {
+  const QuietHdf5 quiet;
+  const Reader reader(path);
+  const std::string name = "/detections";
+  if (!reader.Exists(name)) {
+    reader.Fail(name, std::string("missing: no detections in this file") +
+                          (reader.Exists("/sequences") ? " (it holds labels only)" : " (not an rpt cache?)"));
+  }
+  Id group = reader.OpenGroup(name, "detections");
+  reader.CheckFormat(group.get(), name, kDetectionsFormat);
+
+  Detections detections;
+  detections.joints = reader.Strings(name + "/joints");
+  CheckJointNames(detections.joints, reader.source() + ": " + name + "/joints");
+  const std::vector<std::string> cameras = reader.Strings(name + "/cameras");
+  for (size_t c = 0; c < cameras.size(); ++c) {
+    if (cameras[c].empty()) reader.Fail(name + "/cameras", "camera " + std::to_string(c) + " has an empty name");
+  }
+  const std::vector<std::string> frame_ids = reader.Strings(name + "/frame_ids");
+  const long long num_frames = static_cast<long long>(frame_ids.size());
+  const std::vector<std::int64_t> view_offsets =
+      reader.Int64s(name + "/view_offsets", Shape({num_frames + 1}), "frames + 1");
+  const std::vector<std::int32_t> view_cameras = reader.Numbers<std::int32_t>(name + "/view_cameras", H5T_NATIVE_INT32, Shape({-1}));
+  reader.CheckOffsets(view_offsets, name + "/view_offsets", name + "/view_cameras", static_cast<std::int64_t>(view_cameras.size()));
+  const long long num_views = static_cast<long long>(view_cameras.size());
+  const std::vector<std::int64_t> person_offsets =
+      reader.Int64s(name + "/person_offsets", Shape({num_views + 1}), "views + 1");
+
+  const std::string keypoints_name = name + "/keypoints";
+  Id keypoints = reader.OpenDataset(keypoints_name);
+  const std::vector<hsize_t> dims = reader.CheckShape(
+      keypoints.get(), keypoints_name, Shape({-1, static_cast<long long>(detections.joints.size()), 3}),
+      "persons x joints x [u, v, score]");
+  reader.CheckOffsets(person_offsets, name + "/person_offsets", keypoints_name, static_cast<std::int64_t>(dims[0]));
+
+  std::unordered_set<std::string> seen_ids;
+  detections.frames.resize(frame_ids.size());
+  for (size_t f = 0; f < frame_ids.size(); ++f) {
+    FrameDetections& frame = detections.frames[f];
+    frame.frame_id = frame_ids[f];
+    if (frame.frame_id.empty()) reader.Fail(name + "/frame_ids", "frame " + std::to_string(f) + " has an empty id");
+    if (!seen_ids.insert(frame.frame_id).second) reader.Fail(name + "/frame_ids", "frame id '" + frame.frame_id + "' appears twice");
+    for (std::int64_t v = view_offsets[f]; v < view_offsets[f + 1]; ++v) {
+      const std::int32_t c = view_cameras[static_cast<size_t>(v)];
+      if (c < 0 || static_cast<size_t>(c) >= cameras.size()) {
+        reader.Fail(name + "/view_cameras", "element " + std::to_string(v) + " is " + std::to_string(c) + ", outside 0.." +
+                                                std::to_string(static_cast<long long>(cameras.size()) - 1));
+      }
+      if (std::find(frame.cameras.begin(), frame.cameras.end(), cameras[c]) != frame.cameras.end()) {
+        reader.Fail(name + "/view_cameras", "frame '" + frame.frame_id + "' has camera '" + cameras[c] + "' twice");
+      }
+      frame.cameras.push_back(cameras[c]);
+    }
+    frame.views.resize(frame.cameras.size());
+  }
+
+  Id type(H5Dget_type(keypoints.get()), H5Tclose);
+  if (H5Tget_class(type.get()) != H5T_FLOAT) reader.Fail(keypoints_name, "expected floating-point values");
+  const size_t count = dims[0] * dims[1] * dims[2];
+  if (H5Tget_size(type.get()) <= 4) {
+    std::vector<float> values(count);
+    if (count > 0 && H5Dread(keypoints.get(), H5T_NATIVE_FLOAT, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0) {
+      reader.Fail(keypoints_name, "read failed (damaged file?)");
+    }
+    FillViews(values, reader, keypoints_name, &detections, person_offsets);
+  } else {
+    std::vector<double> values(count);
+    if (count > 0 && H5Dread(keypoints.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0) {
+      reader.Fail(keypoints_name, "read failed (damaged file?)");
+    }
+    FillViews(values, reader, keypoints_name, &detections, person_offsets);
+  }
+  return detections;
+}
+
+// -----------------------------------------------------------------------------------------------
+// Sequences
+
+void WriteSequencesHdf5(const std::filesystem::path& path, const std::vector<Sequence>& sequences,
+                        const Hdf5WriteOptions& options) {
+  const QuietHdf5 quiet;
+  for (const Sequence& sequence : sequences) {
+    Sequence without_views = sequence;  // views are not stored; validate cameras and GT only
+    for (SequenceFrame& frame : without_views.frames) frame.views.clear();
+    ValidateSequence(without_views, path.string() + ": cannot write sequence '" + sequence.name + "'");
+    CheckJointNames(sequence.gt_joints, path.string() + ": cannot write sequence '" + sequence.name + "'");
+  }
+  Writer writer(path, options.add_to_existing);
+  Id root = writer.Group("/sequences");
+  writer.StringAttribute(root.get(), "/sequences", "format", kSequencesFormat);
+  writer.NumberAttribute(root.get(), "/sequences", "version", H5T_STD_I32LE, H5T_NATIVE_INT, kVersion);
+  writer.NumberAttribute(root.get(), "/sequences", "count", H5T_STD_I64LE, H5T_NATIVE_INT64,
+                         static_cast<std::int64_t>(sequences.size()));
+  for (size_t s = 0; s < sequences.size(); ++s) {
+    const Sequence& sequence = sequences[s];
+    const std::string name = "/sequences/" + std::to_string(s);
+    Id group = writer.Group(name);
+    const hid_t g = group.get();
+    writer.StringAttribute(g, name, "name", sequence.name);
+    writer.NumberAttribute(g, name, "fps", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, sequence.fps);
+    const Room& room = sequence.room;
+    writer.Doubles(g, name, "room_center", {3}, {room.center_m.x(), room.center_m.y(), room.center_m.z()});
+    writer.Doubles(g, name, "room_size", {3}, {room.size_m.x(), room.size_m.y(), room.size_m.z()});
+
+    const hsize_t num_cameras = sequence.cameras.size();
+    std::vector<std::string> names, models;
+    std::vector<std::int32_t> sizes;
+    std::vector<double> K, dist, R, t;
+    for (const Camera& camera : sequence.cameras) {
+      names.push_back(camera.name);
+      models.push_back(DistortionModelName(camera.model));
+      sizes.push_back(camera.width);
+      sizes.push_back(camera.height);
+      for (int r = 0; r < 3; ++r) {
+        for (int c = 0; c < 3; ++c) {
+          K.push_back(camera.K(r, c));
+          R.push_back(camera.R(r, c));
+        }
+        t.push_back(camera.t[r]);
+      }
+      dist.insert(dist.end(), camera.dist.begin(), camera.dist.end());
+    }
+    writer.Strings(g, name, "camera_names", names);
+    writer.Strings(g, name, "camera_models", models);
+    writer.Int32s(g, name, "camera_image_size", {num_cameras, 2}, sizes);
+    writer.Doubles(g, name, "camera_K", {num_cameras, 3, 3}, K);
+    writer.Doubles(g, name, "camera_dist", {num_cameras, 5}, dist);
+    writer.Doubles(g, name, "camera_R", {num_cameras, 3, 3}, R);
+    writer.Doubles(g, name, "camera_t", {num_cameras, 3}, t);
+
+    writer.Strings(g, name, "gt_joints", sequence.gt_joints);
+    std::vector<std::string> frame_ids;
+    std::vector<double> timestamps, poses;
+    std::vector<std::int64_t> offsets = {0};
+    std::vector<std::int32_t> track_ids;
+    for (const SequenceFrame& frame : sequence.frames) {
+      frame_ids.push_back(frame.id);
+      timestamps.push_back(frame.timestamp_s);
+      offsets.push_back(offsets.back() + frame.gt.num_persons());
+      poses.insert(poses.end(), frame.gt.data.begin(), frame.gt.data.end());
+      track_ids.insert(track_ids.end(), frame.gt.track_ids.begin(), frame.gt.track_ids.end());
+    }
+    writer.Strings(g, name, "frame_ids", frame_ids);
+    writer.Doubles(g, name, "timestamps", {frame_ids.size()}, timestamps);
+    writer.Int64s(g, name, "gt_offsets", offsets);
+    writer.Doubles(g, name, "gt_poses", {static_cast<hsize_t>(offsets.back()), sequence.gt_joints.size(), 4}, poses);
+    writer.Int32s(g, name, "gt_track_ids", {track_ids.size()}, track_ids);
+  }
+  root = Id();
+  writer.Close();
+}
+
+std::vector<Sequence> ReadSequencesHdf5(const std::filesystem::path& path) {
+  const QuietHdf5 quiet;
+  const Reader reader(path);
+  if (!reader.Exists("/sequences")) {
+    reader.Fail("/sequences", std::string("missing: no labels in this file") +
+                                  (reader.Exists("/detections") ? " (it holds detections only)" : " (not an rpt cache?)"));
+  }
+  Id root = reader.OpenGroup("/sequences", "labels");
+  reader.CheckFormat(root.get(), "/sequences", kSequencesFormat);
+  const double count = reader.NumberAttribute(root.get(), "/sequences", "count");
+  if (!(count >= 0) || count != std::floor(count) || count > 1e7) reader.Fail("/sequences", "bad attribute count");
+
+  std::vector<Sequence> sequences;
+  for (int s = 0; s < static_cast<int>(count); ++s) {
+    const std::string name = "/sequences/" + std::to_string(s);
+    Id group = reader.OpenGroup(name, "sequence " + std::to_string(s) + " of " + std::to_string(static_cast<int>(count)));
+    Sequence& sequence = sequences.emplace_back();
+    sequence.name = reader.StringAttribute(group.get(), name, "name");
+    sequence.fps = reader.NumberAttribute(group.get(), name, "fps");
+    if (!std::isfinite(sequence.fps) || sequence.fps < 0) reader.Fail(name, "attribute fps is not a non-negative number");
+    const auto center = reader.Doubles(name + "/room_center", Shape({3}));
+    const auto size = reader.Doubles(name + "/room_size", Shape({3}));
+    sequence.room.center_m = Eigen::Vector3d(center[0], center[1], center[2]);
+    sequence.room.size_m = Eigen::Vector3d(size[0], size[1], size[2]);
+
+    const std::vector<std::string> names = reader.Strings(name + "/camera_names");
+    const long long C = static_cast<long long>(names.size());
+    const std::vector<std::string> models = reader.Strings(name + "/camera_models", C);
+    const auto sizes = reader.Numbers<std::int32_t>(name + "/camera_image_size", H5T_NATIVE_INT32, Shape({C, 2}));
+    const auto K = reader.Doubles(name + "/camera_K", Shape({C, 3, 3}));
+    const auto dist = reader.Doubles(name + "/camera_dist", Shape({C, 5}));
+    const auto R = reader.Doubles(name + "/camera_R", Shape({C, 3, 3}));
+    const auto t = reader.Doubles(name + "/camera_t", Shape({C, 3}));
+    for (long long c = 0; c < C; ++c) {
+      Camera& camera = sequence.cameras.emplace_back();
+      camera.name = names[c];
+      const std::string& model = models[c];
+      if (model == "none") {
+        camera.model = DistortionModel::kNone;
+      } else if (model == "opencv") {
+        camera.model = DistortionModel::kOpenCV;
+      } else if (model == "h36m") {
+        camera.model = DistortionModel::kH36M;
+      } else if (model == "fisheye") {
+        camera.model = DistortionModel::kFisheye;
+      } else {
+        reader.Fail(name + "/camera_models", "camera " + std::to_string(c) + ": unknown model '" + model + "'");
+      }
+      camera.width = sizes[2 * c];
+      camera.height = sizes[2 * c + 1];
+      for (int r = 0; r < 3; ++r) {
+        for (int k = 0; k < 3; ++k) {
+          camera.K(r, k) = K[9 * c + 3 * r + k];
+          camera.R(r, k) = R[9 * c + 3 * r + k];
+        }
+        camera.t[r] = t[3 * c + r];
+      }
+      std::copy(dist.begin() + 5 * c, dist.begin() + 5 * c + 5, camera.dist.begin());
+    }
+
+    sequence.gt_joints = reader.Strings(name + "/gt_joints");
+    CheckJointNames(sequence.gt_joints, reader.source() + ": " + name + "/gt_joints");
+    const long long J = static_cast<long long>(sequence.gt_joints.size());
+    const std::vector<std::string> frame_ids = reader.Strings(name + "/frame_ids");
+    const long long F = static_cast<long long>(frame_ids.size());
+    const auto timestamps = reader.Doubles(name + "/timestamps", Shape({F}));
+    const auto offsets = reader.Int64s(name + "/gt_offsets", Shape({F + 1}), "frames + 1");
+    const auto poses = reader.Doubles(name + "/gt_poses", Shape({-1, J, 4}), "persons x joints x [x, y, z, score]");
+    const long long P = static_cast<long long>(J > 0 ? poses.size() / (4 * J) : 0);
+    reader.CheckOffsets(offsets, name + "/gt_offsets", name + "/gt_poses", P);
+    const auto track_ids = reader.Numbers<std::int32_t>(name + "/gt_track_ids", H5T_NATIVE_INT32, Shape({P}));
+    for (long long f = 0; f < F; ++f) {
+      SequenceFrame& frame = sequence.frames.emplace_back();
+      frame.id = frame_ids[f];
+      frame.timestamp_s = timestamps[f];
+      frame.gt.Clear(static_cast<int>(J));
+      frame.gt.data.assign(poses.begin() + offsets[f] * 4 * J, poses.begin() + offsets[f + 1] * 4 * J);
+      frame.gt.track_ids.assign(track_ids.begin() + offsets[f], track_ids.begin() + offsets[f + 1]);
+    }
+    ValidateSequence(sequence, reader.source() + ": " + name);
+  }
+  return sequences;
+}
+
+Hdf5CacheContents ProbeHdf5Cache(const std::filesystem::path& path) {
+  const QuietHdf5 quiet;
+  const Reader reader(path);
+  Hdf5CacheContents contents;
+  contents.detections = reader.Exists("/detections");
+  contents.sequences = reader.Exists("/sequences");
+  return contents;
+}
+
+}  // namespace rpt

@@ -1,0 +1,60 @@
+// SPDX-License-Identifier: MIT
+// The HDF5 cache: detections (and optionally labels) in one file that loads fast.
+//
+// Layout (all datasets contiguous, uncompressed; strings fixed-length, variable-length strings
+// are read too). P = all persons of all views, V = all views, F = frames, J = joints:
+//   /detections                 group, attributes format = "rpt-detections", version = 1
+//     joints         [J]        joint names
+//     cameras        [C]        camera names used by the views
+//     frame_ids      [F]
+//     view_offsets   [F+1]      int64, frame f owns views view_offsets[f] .. view_offsets[f+1]-1
+//     view_cameras   [V]        int32 index into cameras
+//     person_offsets [V+1]      int64, view v owns persons person_offsets[v] .. [v+1]-1
+//     keypoints      [P, J, 3]  float32 (default) or float64: u, v (pixels), score
+//   /sequences                  group, attributes format = "rpt-sequences", version = 1, count
+//     /sequences/<i>            group per sequence (i = 0, 1, ...), attributes name, fps
+//       room_center [3], room_size [3]            float64
+//       camera_names [C], camera_models [C]       strings ("none", "opencv", "h36m", "fisheye")
+//       camera_image_size [C, 2] int32 (width, height); camera_K [C, 3, 3]; camera_dist [C, 5];
+//       camera_R [C, 3, 3]; camera_t [C, 3]       float64 (cam_from_world, metres)
+//       gt_joints [J], frame_ids [F], timestamps [F] float64
+//       gt_offsets [F+1] int64, gt_poses [P, J, 4] float64, gt_track_ids [P] int32
+// Sequences keep cameras and ground truth only (frame views are not stored).
+#pragma once
+
+#include <filesystem>
+#include <vector>
+
+#include "datasets/detections.h"
+#include "datasets/sequence.h"
+
+namespace rpt {
+
+struct Hdf5WriteOptions {
+  bool add_to_existing = false;  // add (or replace) this group in an existing cache instead of a new file
+  bool float64 = false;          // detection keypoints as float64 (exact) instead of float32
+};
+
+// Throws InputError naming the file when it cannot be written or the detections are invalid
+// (ValidateDetections).
+void WriteDetectionsHdf5(const std::filesystem::path& path, const Detections& detections,
+                         const Hdf5WriteOptions& options = {});
+// Throws InputError naming the file and the HDF5 dataset path on anything malformed: not an
+// HDF5 file, no /detections group, wrong shapes, offsets that do not add up, camera indices out
+// of range, NaN or infinite values, scores outside [0, 1], unknown joint names.
+Detections ReadDetectionsHdf5(const std::filesystem::path& path);
+
+// Sequences (cameras + ground truth). Same error behaviour as above; read sequences are checked
+// with ValidateSequence.
+void WriteSequencesHdf5(const std::filesystem::path& path, const std::vector<Sequence>& sequences,
+                        const Hdf5WriteOptions& options = {});
+std::vector<Sequence> ReadSequencesHdf5(const std::filesystem::path& path);
+
+// What a cache file holds. Throws InputError when the file is missing or not HDF5.
+struct Hdf5CacheContents {
+  bool detections = false;
+  bool sequences = false;
+};
+Hdf5CacheContents ProbeHdf5Cache(const std::filesystem::path& path);
+
+}  // namespace rpt

@@ -1,0 +1,226 @@
+// SPDX-License-Identifier: MIT
+#include "datasets/readers/openpose_json.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <tuple>
+#include <utility>
+
+#include "core/errors.h"
+#include "datasets/io/json_file.h"
+#include "datasets/readers/generic_detections.h"
+#include "datasets/readers/generic_internal.h"
+
+namespace rpt {
+namespace {
+
+using nlohmann::json;
+using generic_internal::Source;
+
+// OpenPose body part index -> our joint name (neck, mid-hip are dropped).
+const std::vector<std::pair<int, std::string>>& Body25Map() {
+  static const std::vector<std::pair<int, std::string>> map = {
+      {0, "nose"},          {2, "shoulder_right"},      {3, "elbow_right"},        {4, "wrist_right"},
+      {5, "shoulder_left"}, {6, "elbow_left"},          {7, "wrist_left"},         {9, "hip_right"},
+      {10, "knee_right"},   {11, "ankle_right"},        {12, "hip_left"},          {13, "knee_left"},
+      {14, "ankle_left"},   {15, "eye_right"},          {16, "eye_left"},          {17, "ear_right"},
+      {18, "ear_left"},     {19, "foot_big_toe_left"},  {20, "foot_small_toe_left"}, {21, "foot_heel_left"},
+      {22, "foot_big_toe_right"}, {23, "foot_small_toe_right"}, {24, "foot_heel_right"}};
+  return map;
+}
+
+const std::vector<std::pair<int, std::string>>& Coco18Map() {
+  static const std::vector<std::pair<int, std::string>> map = {
+      {0, "nose"},       {2, "shoulder_right"}, {3, "elbow_right"}, {4, "wrist_right"}, {5, "shoulder_left"},
+      {6, "elbow_left"}, {7, "wrist_left"},     {8, "hip_right"},   {9, "knee_right"},  {10, "ankle_right"},
+      {11, "hip_left"},  {12, "knee_left"},     {13, "ankle_left"}, {14, "eye_right"},  {15, "eye_left"},
+      {16, "ear_right"}, {17, "ear_left"}};
+  return map;
+}
+
+// OpenPose hand order (wrist, thumb 1-4, index 1-4, middle, ring, pinky) = COCO-WholeBody order.
+std::vector<std::string> HandNames(const std::string& side) {
+  std::vector<std::string> names = {"hand_root_" + side};
+  for (const char* finger : {"thumb", "index", "middle", "ring", "pinky"}) {
+    for (int k = 1; k <= 4; ++k) names.push_back(std::string("hand_") + finger + "_" + std::to_string(k) + "_" + side);
+  }
+  return names;
+}
+
+struct RawPerson {
+  int body_points = 0;  // 25, 18 or 0 (no body)
+  std::vector<double> body, face, hand_left, hand_right;
+};
+
+struct RawFile {
+  std::filesystem::path path;
+  std::string frame_id;
+  std::string camera;
+  std::vector<RawPerson> people;
+};
+
+std::vector<double> ReadKeypoints(const json& root, const std::string& pointer, const std::string& source,
+                                  const std::vector<size_t>& allowed_points, const std::string& what) {
+  const json* j = io::JsonFind(root, pointer);
+  if (!j || j->is_null()) return {};
+  std::vector<double> values = io::JsonNumbers(root, pointer, source);
+  if (values.empty()) return values;
+  const bool ok = values.size() % 3 == 0 &&
+                  std::find(allowed_points.begin(), allowed_points.end(), values.size() / 3) != allowed_points.end();
+  if (!ok) {
+    std::string allowed;
+    for (size_t n : allowed_points) allowed += (allowed.empty() ? "" : " or ") + std::to_string(3 * n);
+    throw InputError(source + ": " + pointer + ": " + std::to_string(values.size()) + " numbers, expected " + allowed +
+                     " (" + what + ")");
+  }
+  for (double v : values) {
+    if (!std::isfinite(v)) throw InputError(source + ": " + pointer + ": value is not finite");
+  }
+  return values;
+}
+
+std::vector<RawPerson> ReadOpenPoseFile(const std::filesystem::path& path) {
+  const std::string source = Source(path);
+  const json root = io::LoadJsonFile(path);
+  if (!root.is_object()) throw InputError(source + ": /: expected an OpenPose object with \"people\"");
+  const json& people = io::JsonAt(root, "/people", source);
+  if (!people.is_array()) throw InputError(source + ": /people: expected a list");
+  std::vector<RawPerson> out;
+  for (size_t p = 0; p < people.size(); ++p) {
+    const std::string pointer = io::JsonPointerJoin("/people", p);
+    RawPerson person;
+    person.body = ReadKeypoints(root, pointer + "/pose_keypoints_2d", source, {25, 18},
+                                "BODY_25 has 25 points, COCO-18 has 18; MPI models are not supported");
+    person.body_points = static_cast<int>(person.body.size() / 3);
+    person.face = ReadKeypoints(root, pointer + "/face_keypoints_2d", source, {70}, "70 face points");
+    person.hand_left = ReadKeypoints(root, pointer + "/hand_left_keypoints_2d", source, {21}, "21 hand points");
+    person.hand_right = ReadKeypoints(root, pointer + "/hand_right_keypoints_2d", source, {21}, "21 hand points");
+    out.push_back(std::move(person));
+  }
+  return out;
+}
+
+JointNames JointsOf(OpenPoseJointSet set) {
+  const JointNames& all = CocoWholeBodyJoints();
+  switch (set) {
+    case OpenPoseJointSet::kBody:
+      return CocoBodyJoints();
+    case OpenPoseJointSet::kBodyFeet:
+      return JointNames(all.begin(), all.begin() + 23);
+    case OpenPoseJointSet::kWholeBody:
+    case OpenPoseJointSet::kAuto:
+      break;
+  }
+  return all;
+}
+
+// Copies `count` points of a flat x, y, c list into the joints at `targets` (-1 = dropped).
+void CopyPoints(const std::vector<double>& flat, const std::vector<int>& targets, Eigen::Map<Eigen::Matrix3Xd>* joints) {
+  if (flat.empty()) return;
+  for (size_t i = 0; i < targets.size() && 3 * i + 2 < flat.size(); ++i) {
+    const int j = targets[i];
+    if (j < 0) continue;
+    const double score = generic_internal::ClampScore(flat[3 * i + 2]);
+    (*joints)(0, j) = flat[3 * i];
+    (*joints)(1, j) = flat[3 * i + 1];
+    (*joints)(2, j) = score;
+  }
+}
+
+std::vector<int> Targets(const std::vector<std::pair<int, std::string>>& map, int points, const JointNames& joints) {
+  std::vector<int> targets(points, -1);
+  for (const auto& [index, name] : map) targets[index] = FindJoint(joints, name);
+  return targets;
+}
+
+std::vector<int> Targets(const std::vector<std::string>& names, const JointNames& joints) {
+  std::vector<int> targets;
+  for (const std::string& name : names) targets.push_back(FindJoint(joints, name));
+  return targets;
+}
+
+}  // namespace
+
+Detections ReadOpenPoseFolder(const std::filesystem::path& dir, const OpenPoseFolderOptions& options) {
+  const std::string source = Source(dir);
+  const PathMapper mapper(options.mapping, "OpenPose folder mapping");
+  std::error_code ec;
+  if (!std::filesystem::is_directory(dir, ec)) throw InputError(source + ": folder not found");
+
+  // Collect and map the file names.
+  std::vector<RawFile> files;
+  for (auto it = std::filesystem::recursive_directory_iterator(dir, ec); !ec && it != std::filesystem::recursive_directory_iterator();
+       it.increment(ec)) {
+    if (!it->is_regular_file(ec)) continue;
+    const std::string relative = it->path().lexically_relative(dir).generic_string();
+    RawFile file;
+    file.path = it->path();
+    if (mapper.Apply(relative, source, &file.frame_id, &file.camera)) files.push_back(std::move(file));
+  }
+  if (ec) throw InputError(source + ": cannot list the folder: " + ec.message());
+  if (files.empty()) {
+    throw InputError(source + ": no file matches the pattern '" + options.mapping.pattern +
+                     "' (paths relative to the folder, e.g. <camera>/<video>_000000000000_keypoints.json)");
+  }
+  std::sort(files.begin(), files.end(), [](const RawFile& a, const RawFile& b) {
+    return std::tie(a.frame_id, a.camera, a.path) < std::tie(b.frame_id, b.camera, b.path);
+  });
+  for (size_t i = 1; i < files.size(); ++i) {
+    if (files[i].frame_id == files[i - 1].frame_id && files[i].camera == files[i - 1].camera) {
+      throw InputError(source + ": files '" + files[i - 1].path.string() + "' and '" + files[i].path.string() +
+                       "' both map to frame '" + files[i].frame_id + "', camera '" + files[i].camera + "'");
+    }
+  }
+
+  // Parse, then decide the joint set over all files.
+  bool any_face_or_hand = false, any_body25 = false;
+  for (RawFile& file : files) {
+    file.people = ReadOpenPoseFile(file.path);
+    for (const RawPerson& person : file.people) {
+      any_face_or_hand |= !person.face.empty() || !person.hand_left.empty() || !person.hand_right.empty();
+      any_body25 |= person.body_points == 25;
+    }
+  }
+  OpenPoseJointSet set = options.joints;
+  if (set == OpenPoseJointSet::kAuto) {
+    set = any_face_or_hand ? OpenPoseJointSet::kWholeBody
+          : any_body25     ? OpenPoseJointSet::kBodyFeet
+                           : OpenPoseJointSet::kBody;
+  }
+  Detections detections;
+  detections.joints = JointsOf(set);
+  const JointNames& joints = detections.joints;
+  const std::vector<int> body25 = Targets(Body25Map(), 25, joints);
+  const std::vector<int> coco18 = Targets(Coco18Map(), 18, joints);
+  std::vector<std::string> face_names;
+  for (int i = 0; i < 68; ++i) face_names.push_back((i < 10 ? "face_0" : "face_") + std::to_string(i));
+  face_names.push_back("");  // pupils: dropped
+  face_names.push_back("");
+  const std::vector<int> face = Targets(face_names, joints);
+  const std::vector<int> hand_left = Targets(HandNames("left"), joints);
+  const std::vector<int> hand_right = Targets(HandNames("right"), joints);
+
+  const int num_joints = static_cast<int>(joints.size());
+  for (const RawFile& file : files) {
+    if (detections.frames.empty() || detections.frames.back().frame_id != file.frame_id) {
+      detections.frames.emplace_back().frame_id = file.frame_id;
+    }
+    FrameDetections& frame = detections.frames.back();
+    frame.cameras.push_back(file.camera);
+    Poses2D& view = frame.views.emplace_back();
+    view.Clear(num_joints);
+    for (const RawPerson& person : file.people) {
+      auto person_joints = view.AddPerson();
+      CopyPoints(person.body, person.body_points == 25 ? body25 : coco18, &person_joints);
+      CopyPoints(person.face, face, &person_joints);
+      CopyPoints(person.hand_left, hand_left, &person_joints);
+      CopyPoints(person.hand_right, hand_right, &person_joints);
+      if (!(person_joints.row(2).array() > 0).any()) view.data.resize(view.data.size() - 3 * num_joints);
+    }
+  }
+  ValidateDetections(detections, source);
+  return detections;
+}
+
+}  // namespace rpt

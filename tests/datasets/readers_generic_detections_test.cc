@@ -1,0 +1,366 @@
+// SPDX-License-Identifier: MIT
+// Generic detections JSON, OpenPose folders, COCO result lists and the ReadDetectionsFile entry point.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "datasets/readers/coco_detections.h"
+#include "datasets/readers/detections_file.h"
+#include "datasets/readers/generic_detections.h"
+#include "datasets/readers/hdf5_cache.h"
+#include "datasets/readers/openpose_json.h"
+#include "tests/datasets/readers_generic_test_util.h"
+#include "tests/test_data.h"
+
+namespace rpt {
+namespace {
+
+using ::testing::ContainsRegex;
+using ::testing::HasSubstr;
+using test::InputErrorOf;
+using test::WriteText;
+
+// ---------------------------------------------------------------------------------------------
+// Generic detections
+
+TEST(GenericDetections, RoundTripKeepsEmptyViewsAndMissingJoints) {
+  test::TempDir dir;
+  const Detections detections = test::MakeDetections(6, {"cam_a", "cam_b", "cam_c"}, CocoBodyJoints());
+  const auto path = dir.path() / "detections.json";
+  WriteGenericDetections(path, detections);
+  const Detections read = ReadGenericDetections(path);
+  test::ExpectDetectionsNear(detections, read, 0);
+  EXPECT_EQ(read.frames[0].views[0].num_persons(), 0);  // an empty view stays an empty view
+  EXPECT_EQ(read.frames[0].views[0].num_joints, 17);
+  EXPECT_DOUBLE_EQ(read.frames[0].views[1].Person(0)(2, 3), 0.0);  // missing joint
+}
+
+TEST(GenericDetections, AcceptsNullJointsAndLeftOutCameras) {
+  test::TempDir dir;
+  const auto path = WriteText(dir, "d.json", R"({"joints": ["nose", "wrist_left"], "frames": [
+    {"id": 12, "views": [{"camera": "c1", "poses": [[[10.5, 20, 0.9], null]]}, {"camera": "c2", "poses": []}]},
+    {"id": "f2", "views": []}]})");
+  const Detections read = ReadGenericDetections(path);
+  ASSERT_EQ(read.frames.size(), 2u);
+  EXPECT_EQ(read.frames[0].frame_id, "12");
+  EXPECT_EQ(read.frames[0].cameras, (std::vector<std::string>{"c1", "c2"}));
+  ASSERT_EQ(read.frames[0].views[0].num_persons(), 1);
+  EXPECT_DOUBLE_EQ(read.frames[0].views[0].Person(0)(0, 0), 10.5);
+  EXPECT_DOUBLE_EQ(read.frames[0].views[0].Person(0)(2, 1), 0.0);
+  EXPECT_TRUE(read.frames[1].views.empty());
+}
+
+TEST(GenericDetections, MalformedFilesNameFileAndPointer) {
+  test::TempDir dir;
+  EXPECT_THAT(InputErrorOf([&] { ReadGenericDetections(dir.path() / "none.json"); }), HasSubstr("none.json: file not found"));
+  const auto truncated = WriteText(dir, "cut.json", "{\"joints\": [\"nose\"],\n \"frames\": [{\"id\": \"a\", \"views\": [");
+  EXPECT_THAT(InputErrorOf([&] { ReadGenericDetections(truncated); }), ContainsRegex("cut\\.json:2:[0-9]+: JSON parse error"));
+
+  // 16 joints in a pose while 17 are declared.
+  nlohmann::json doc = {{"joints", CocoBodyJoints()}, {"frames", nlohmann::json::array()}};
+  nlohmann::json pose = nlohmann::json::array();
+  for (int j = 0; j < 16; ++j) pose.push_back({1.0 * j, 2.0, 0.5});
+  doc["frames"].push_back({{"id", "f0"}, {"views", {{{"camera", "c0"}, {"poses", {pose}}}}}});
+  const auto short_pose = WriteText(dir, "short.json", doc.dump());
+  EXPECT_THAT(InputErrorOf([&] { ReadGenericDetections(short_pose); }),
+              HasSubstr("short.json: /frames/0/views/0/poses/0: expected 17 joints (as many as \"joints\" names), got 16"));
+
+  auto write = [&](const std::string& text) { return WriteText(dir, "bad.json", text); };
+  EXPECT_THAT(InputErrorOf([&] { ReadGenericDetections(write(R"({"joints": ["nose", "l_wrist"], "frames": []})")); }),
+              HasSubstr("bad.json: /joints: unknown joint name 'l_wrist'"));
+  EXPECT_THAT(InputErrorOf([&] {
+                ReadGenericDetections(write(R"({"joints": ["nose"], "frames": [{"id": "a", "views": [{"camera": "c", "poses": [[[1, 2, 1.5]]]}]}]})"));
+              }),
+              HasSubstr("/frames/0/views/0/poses/0/0: score 1.500000 outside [0, 1]"));
+  EXPECT_THAT(InputErrorOf([&] {
+                ReadGenericDetections(write(R"({"joints": ["nose"], "frames": [{"id": "a", "views": [{"camera": "c", "poses": [[[1, 2]]]}]}]})"));
+              }),
+              HasSubstr("/frames/0/views/0/poses/0/0: expected [x, y, score] or null"));
+  EXPECT_THAT(InputErrorOf([&] {
+                ReadGenericDetections(write(R"({"joints": ["nose"], "frames": [{"id": "a", "views": [{"camera": "c", "poses": []}, {"camera": "c", "poses": []}]}]})"));
+              }),
+              HasSubstr("/frames/0/views/1/camera: camera 'c' appears twice"));
+  EXPECT_THAT(InputErrorOf([&] {
+                ReadGenericDetections(write(R"({"joints": ["nose"], "frames": [{"id": "a", "views": []}, {"id": "a", "views": []}]})"));
+              }),
+              HasSubstr("/frames/1/id: frame id 'a' also used by /frames/0"));
+  EXPECT_THAT(InputErrorOf([&] { ReadGenericDetections(write(R"({"version": 1.3, "people": []})")); }),
+              HasSubstr("single OpenPose file"));
+}
+
+TEST(GenericDetections, WriterRefusesNaN) {
+  test::TempDir dir;
+  Detections detections = test::MakeDetections(2, {"a"}, CocoBodyJoints());
+  detections.frames[1].views[0].data[4] = std::nan("");
+  EXPECT_THAT(InputErrorOf([&] { WriteGenericDetections(dir.path() / "d.json", detections); }),
+              HasSubstr("frame 'frame_000001', camera 'a', person 0, joint 'eye_left': NaN or infinity"));
+}
+
+// ---------------------------------------------------------------------------------------------
+// OpenPose folders
+
+// A flat x, y, c list of `points` points; point i at (base + i, 2 * base + i) with score s.
+nlohmann::json Flat(int points, double base, double score) {
+  nlohmann::json out = nlohmann::json::array();
+  for (int i = 0; i < points; ++i) {
+    out.push_back(base + i);
+    out.push_back(2 * base + i);
+    out.push_back(score);
+  }
+  return out;
+}
+
+void WriteOpenPose(const test::TempDir& dir, const std::string& relative, const std::vector<nlohmann::json>& people) {
+  nlohmann::json doc = {{"version", 1.3}, {"people", people}};
+  WriteText(dir, relative, doc.dump());
+}
+
+TEST(OpenPose, Body25FolderMapsToCocoNamesAndFeet) {
+  test::TempDir dir;
+  nlohmann::json person = {{"person_id", {-1}}, {"pose_keypoints_2d", Flat(25, 100, 0.8)},
+                           {"face_keypoints_2d", nlohmann::json::array()}, {"hand_left_keypoints_2d", nlohmann::json::array()}};
+  person["pose_keypoints_2d"][3 * 4 + 2] = 0;    // right wrist missing
+  person["pose_keypoints_2d"][3 * 19 + 2] = 1.02;  // confidence above 1 is clamped
+  WriteOpenPose(dir, "Camera0/shelf_000000000000_keypoints.json", {person});
+  WriteOpenPose(dir, "Camera0/shelf_000000000001_keypoints.json", {});
+  WriteOpenPose(dir, "Camera1/shelf_000000000000_keypoints.json", {person, person});
+  WriteText(dir, "Camera1/notes.txt", "ignored");
+
+  OpenPoseFolderOptions options;
+  options.mapping.frame_id = "shelf_{2:6+300}";
+  const Detections d = ReadOpenPoseFolder(dir.path(), options);
+  ASSERT_EQ(d.joints.size(), 23u);  // auto: BODY_25 -> body + feet
+  EXPECT_EQ(d.joints[17], "foot_big_toe_left");
+  ASSERT_EQ(d.frames.size(), 2u);
+  EXPECT_EQ(d.frames[0].frame_id, "shelf_000300");
+  EXPECT_EQ(d.frames[0].cameras, (std::vector<std::string>{"Camera0", "Camera1"}));
+  EXPECT_EQ(d.frames[1].cameras, (std::vector<std::string>{"Camera0"}));
+  EXPECT_EQ(d.frames[1].views[0].num_persons(), 0);
+  EXPECT_EQ(d.frames[0].views[1].num_persons(), 2);
+  const auto p = d.frames[0].views[0].Person(0);
+  const auto at = [&](const std::string& name) { return p.col(FindJoint(d.joints, name)); };
+  EXPECT_DOUBLE_EQ(at("nose")(0), 100);                // BODY_25 0
+  EXPECT_DOUBLE_EQ(at("eye_right")(0), 115);           // 15
+  EXPECT_DOUBLE_EQ(at("eye_left")(0), 116);            // 16
+  EXPECT_DOUBLE_EQ(at("ear_right")(1), 217);           // 17
+  EXPECT_DOUBLE_EQ(at("ear_left")(1), 218);            // 18
+  EXPECT_DOUBLE_EQ(at("shoulder_right")(0), 102);      // 2
+  EXPECT_DOUBLE_EQ(at("shoulder_left")(0), 105);       // 5
+  EXPECT_DOUBLE_EQ(at("hip_right")(0), 109);           // 9 (8 = mid-hip dropped)
+  EXPECT_DOUBLE_EQ(at("ankle_left")(0), 114);          // 14
+  EXPECT_DOUBLE_EQ(at("foot_heel_right")(0), 124);     // 24
+  EXPECT_DOUBLE_EQ(at("wrist_right")(2), 0.0);
+  EXPECT_DOUBLE_EQ(at("foot_big_toe_left")(2), 1.0);
+
+  options.joints = OpenPoseJointSet::kBody;
+  EXPECT_EQ(ReadOpenPoseFolder(dir.path(), options).joints, CocoBodyJoints());
+}
+
+TEST(OpenPose, Coco18FolderGivesCoco17) {
+  test::TempDir dir;
+  WriteOpenPose(dir, "c0/vid_000000000042_keypoints.json", {{{"pose_keypoints_2d", Flat(18, 10, 0.5)}}});
+  const Detections d = ReadOpenPoseFolder(dir.path());
+  EXPECT_EQ(d.joints, CocoBodyJoints());
+  ASSERT_EQ(d.frames.size(), 1u);
+  EXPECT_EQ(d.frames[0].frame_id, "000042");
+  const auto p = d.frames[0].views[0].Person(0);
+  EXPECT_DOUBLE_EQ(p(0, FindJoint(d.joints, "hip_right")), 18);   // COCO-18 8
+  EXPECT_DOUBLE_EQ(p(0, FindJoint(d.joints, "eye_right")), 24);   // 14
+  EXPECT_DOUBLE_EQ(p(0, FindJoint(d.joints, "ear_left")), 27);    // 17
+}
+
+TEST(OpenPose, WholeBodyFaceAndHands) {
+  test::TempDir dir;
+  nlohmann::json person = {{"pose_keypoints_2d", Flat(25, 100, 0.9)},
+                           {"face_keypoints_2d", Flat(70, 300, 0.7)},
+                           {"hand_left_keypoints_2d", Flat(21, 500, 0.6)},
+                           {"hand_right_keypoints_2d", Flat(21, 600, 0.4)}};
+  WriteOpenPose(dir, "cam/a_000000000003_keypoints.json", {person});
+  // A COCO-18 person in another view: feet stay missing.
+  WriteOpenPose(dir, "cam2/a_000000000003_keypoints.json", {{{"pose_keypoints_2d", Flat(18, 10, 0.5)}}});
+  const Detections d = ReadOpenPoseFolder(dir.path());
+  EXPECT_EQ(d.joints, CocoWholeBodyJoints());
+  const auto p = d.frames[0].views[0].Person(0);
+  const auto at = [&](const std::string& name) { return p.col(FindJoint(d.joints, name)); };
+  EXPECT_DOUBLE_EQ(at("face_00")(0), 300);
+  EXPECT_DOUBLE_EQ(at("face_67")(0), 367);
+  EXPECT_DOUBLE_EQ(at("hand_root_left")(0), 500);
+  EXPECT_DOUBLE_EQ(at("hand_thumb_4_left")(0), 504);
+  EXPECT_DOUBLE_EQ(at("hand_index_1_left")(0), 505);
+  EXPECT_DOUBLE_EQ(at("hand_pinky_4_right")(0), 620);
+  EXPECT_DOUBLE_EQ(at("hand_pinky_4_right")(2), 0.4);
+  const auto q = d.frames[0].views[1].Person(0);
+  EXPECT_DOUBLE_EQ(q(2, FindJoint(d.joints, "foot_heel_left")), 0.0);
+  EXPECT_DOUBLE_EQ(q(2, FindJoint(d.joints, "face_10")), 0.0);
+  EXPECT_DOUBLE_EQ(q(0, FindJoint(d.joints, "ankle_left")), 23);  // COCO-18 13
+}
+
+TEST(OpenPose, CustomMappingAndErrors) {
+  test::TempDir dir;
+  // Flat layout: <camera>_<frame>_keypoints.json in one folder.
+  WriteOpenPose(dir, "cam1_000000000005_keypoints.json", {{{"pose_keypoints_2d", Flat(18, 10, 0.5)}}});
+  WriteOpenPose(dir, "cam2_000000000005_keypoints.json", {});
+  OpenPoseFolderOptions options;
+  options.mapping = {R"(([a-z0-9]+)_(\d+)_keypoints\.json)", "seq_{2:4}", "{1}"};
+  const Detections d = ReadOpenPoseFolder(dir.path(), options);
+  ASSERT_EQ(d.frames.size(), 1u);
+  EXPECT_EQ(d.frames[0].frame_id, "seq_0005");
+  EXPECT_EQ(d.frames[0].cameras, (std::vector<std::string>{"cam1", "cam2"}));
+
+  options.mapping.camera = "same";
+  EXPECT_THAT(InputErrorOf([&] { ReadOpenPoseFolder(dir.path(), options); }), HasSubstr("both map to frame 'seq_0005', camera 'same'"));
+  EXPECT_THAT(InputErrorOf([&] { ReadOpenPoseFolder(dir.path()); }), HasSubstr("no file matches the pattern"));
+  EXPECT_THAT(InputErrorOf([&] { ReadOpenPoseFolder(dir.path() / "nope"); }), HasSubstr("nope: folder not found"));
+
+  test::TempDir bad;
+  WriteOpenPose(bad, "c/x_000000000001_keypoints.json", {{{"pose_keypoints_2d", Flat(15, 1, 1)}}});
+  EXPECT_THAT(InputErrorOf([&] { ReadOpenPoseFolder(bad.path()); }),
+              HasSubstr("x_000000000001_keypoints.json: /people/0/pose_keypoints_2d: 45 numbers, expected 75 or 54"));
+  WriteText(bad, "c/x_000000000001_keypoints.json", "{\"people\": [");
+  EXPECT_THAT(InputErrorOf([&] { ReadOpenPoseFolder(bad.path()); }), ContainsRegex("keypoints\\.json:1:[0-9]+: JSON parse error"));
+}
+
+// ---------------------------------------------------------------------------------------------
+// COCO result lists
+
+nlohmann::json CocoResult(std::int64_t image_id, double base, double score = 0.9) {
+  return {{"image_id", image_id}, {"category_id", 1}, {"score", score}, {"keypoints", Flat(17, base, 0.75)}};
+}
+
+TEST(Coco, AnnotationImagesMapFramesAndCameras) {
+  test::TempDir dir;
+  const auto annotations = WriteText(dir, "ann.json", nlohmann::json{{"images", {
+      {{"id", 1}, {"file_name", "images/cam_left/img_0017.jpg"}},
+      {{"id", 2}, {"file_name", "images/cam_right/img_0017.jpg"}},
+      {{"id", 3}, {"file_name", "images/cam_left/img_0018.jpg"}},
+      {{"id", 4}, {"file_name", "whatever.png"}, {"frame_id", "custom_18"}, {"camera", "cam_top"}}}}}.dump());
+  const auto results = WriteText(dir, "results.json",
+                                 nlohmann::json::array({CocoResult(2, 10), CocoResult(1, 20), CocoResult(1, 30, 0.1), CocoResult(4, 40)}).dump());
+  CocoDetectionsOptions options;
+  options.mapping = CocoImageMapping::kAnnotationImages;
+  options.annotation_file = annotations;
+  options.file_name_mapping.frame_id = "lab_{2:6}";
+  const Detections d = ReadCocoDetections(results, options);
+  EXPECT_EQ(d.joints, CocoBodyJoints());
+  ASSERT_EQ(d.frames.size(), 3u);
+  EXPECT_EQ(d.frames[0].frame_id, "custom_18");
+  EXPECT_EQ(d.frames[1].frame_id, "lab_000017");
+  EXPECT_EQ(d.frames[2].frame_id, "lab_000018");
+  EXPECT_EQ(d.frames[1].cameras, (std::vector<std::string>{"cam_left", "cam_right"}));
+  EXPECT_EQ(d.frames[1].views[0].num_persons(), 2);
+  EXPECT_DOUBLE_EQ(d.frames[1].views[0].Person(0)(0, 0), 20);
+  EXPECT_DOUBLE_EQ(d.frames[1].views[0].Person(1)(1, 16), 76);
+  EXPECT_EQ(d.frames[2].views[0].num_persons(), 0);  // listed image without detections
+
+  options.min_score = 0.5;
+  EXPECT_EQ(ReadCocoDetections(results, options).frames[1].views[0].num_persons(), 1);
+}
+
+TEST(Coco, MalformedListsNameFileAndPointer) {
+  test::TempDir dir;
+  auto results = [&](const nlohmann::json& list) { return WriteText(dir, "r.json", list.dump()); };
+  nlohmann::json short_result = CocoResult(10010000001, 1);
+  short_result["keypoints"] = Flat(16, 1, 1);
+  EXPECT_THAT(InputErrorOf([&] { ReadCocoDetections(results(nlohmann::json::array({CocoResult(10010000001, 1), short_result}))); }),
+              HasSubstr("r.json: /1/keypoints: 48 numbers, expected 51"));
+  nlohmann::json whole = CocoResult(10010000002, 1);
+  whole["keypoints"] = Flat(133, 1, 1);
+  EXPECT_THAT(InputErrorOf([&] { ReadCocoDetections(results(nlohmann::json::array({CocoResult(10010000001, 1), whole}))); }),
+              HasSubstr("/1/keypoints: 133 joints, but /0/keypoints has 17"));
+  EXPECT_EQ(ReadCocoDetections(results(nlohmann::json::array({whole}))).joints, CocoWholeBodyJoints());
+  EXPECT_THAT(InputErrorOf([&] { ReadCocoDetections(results(nlohmann::json::array({CocoResult(17, 1)}))); }),
+              HasSubstr("/0/image_id: image id 17 is not an MVOR multi-view id"));
+  EXPECT_THAT(InputErrorOf([&] { ReadCocoDetections(results(nlohmann::json::array({{{"image_id", "x"}}}))); }),
+              HasSubstr("/0/image_id: expected an integer image id"));
+  const auto annotations = WriteText(dir, "ann.json", R"({"images": [{"id": 1, "file_name": "flat.jpg"}]})");
+  CocoDetectionsOptions options;
+  options.mapping = CocoImageMapping::kAnnotationImages;
+  options.annotation_file = annotations;
+  EXPECT_THAT(InputErrorOf([&] { ReadCocoDetections(results(nlohmann::json::array({CocoResult(1, 1)})), options); }),
+              HasSubstr("ann.json: /images/0/file_name: 'flat.jpg' does not match the pattern"));
+  options.annotation_file.clear();
+  EXPECT_THAT(test::ConfigErrorOf([&] { ReadCocoDetections(results(nlohmann::json::array()), options); }), HasSubstr("needs an annotation file"));
+}
+
+TEST(Coco, MvorOpenPoseFixtureUsesCocoKeypoints) {
+  RPT_REQUIRE_SHARED_DATA("mvor/openpose_kps.json");
+  const auto path = test::SharedData("mvor/openpose_kps.json");
+  const Detections d = ReadCocoDetections(path);
+  EXPECT_EQ(d.joints, CocoBodyJoints());
+  size_t views = 0, persons = 0;
+  for (const FrameDetections& frame : d.frames) {
+    views += frame.views.size();
+    for (const Poses2D& view : frame.views) persons += view.num_persons();
+  }
+  EXPECT_EQ(persons, 4091u);
+  EXPECT_EQ(views, 2005u);
+  EXPECT_EQ(d.frames.size(), 726u);
+  // Image 10010000001 = day 1, cam 1, frame 1: one detection; COCO joint 0 (nose) comes from
+  // coco_keypoints (the 10-joint MVOR "keypoints" has the head there).
+  const auto frame = std::find_if(d.frames.begin(), d.frames.end(), [](const FrameDetections& f) { return f.frame_id == "mvor_day1_000001"; });
+  ASSERT_NE(frame, d.frames.end());
+  const auto cam = std::find(frame->cameras.begin(), frame->cameras.end(), "cam1") - frame->cameras.begin();
+  ASSERT_LT(cam, static_cast<long>(frame->cameras.size()));
+  const Poses2D& view = frame->views[cam];
+  ASSERT_EQ(view.num_persons(), 1);
+  EXPECT_DOUBLE_EQ(view.Person(0)(0, 0), 3.72591);
+  EXPECT_DOUBLE_EQ(view.Person(0)(1, 0), 338.525);
+  EXPECT_DOUBLE_EQ(view.Person(0)(0, 1), 3.72129);  // left eye: only in coco_keypoints
+  EXPECT_DOUBLE_EQ(view.Person(0)(2, 2), 0.0);      // right eye missing
+}
+
+TEST(Coco, MvorAnnotationImagesGiveTheSameFramesAsTheIdConvention) {
+  RPT_REQUIRE_SHARED_DATA("mvor/openpose_kps.json");
+  RPT_REQUIRE_SHARED_DATA("mvor/camma_mvor_2018.json");
+  const auto results = test::SharedData("mvor/openpose_kps.json");
+  CocoDetectionsOptions options;
+  options.annotation_file = test::SharedData("mvor/camma_mvor_2018.json");
+  const Detections by_id = ReadCocoDetections(results, options);  // MVOR ids, all 2196 images listed
+  size_t views = 0;
+  for (const FrameDetections& frame : by_id.frames) views += frame.views.size();
+  EXPECT_EQ(by_id.frames.size(), 732u);
+  EXPECT_EQ(views, 2196u);
+
+  options.mapping = CocoImageMapping::kAnnotationImages;
+  options.file_name_mapping = {R"(day(\d+)/cam(\d+)/color/(\d+)\.png)", "mvor_day{1}_{3:6}", "cam{2}"};
+  const Detections by_name = ReadCocoDetections(results, options);
+  test::ExpectDetectionsNear(by_id, by_name, 0);
+}
+
+// ---------------------------------------------------------------------------------------------
+// ReadDetectionsFile
+
+TEST(DetectionsFile, DispatchesOnFolderExtensionAndContent) {
+  test::TempDir dir;
+  const Detections detections = test::MakeDetections(3, {"c0", "c1"}, CocoBodyJoints(), "mvor_day1_");
+  WriteGenericDetections(dir.path() / "generic.json", detections);
+  WriteDetectionsHdf5(dir.path() / "cache.H5", detections, {.add_to_existing = false, .float64 = true});
+  WriteText(dir, "coco.json", "  \n" + nlohmann::json::array({CocoResult(10020000001, 5)}).dump());
+  WriteOpenPose(dir, "openpose/c0/v_000000000001_keypoints.json", {{{"pose_keypoints_2d", Flat(18, 10, 0.5)}}});
+
+  test::ExpectDetectionsNear(detections, ReadDetectionsFile(dir.path() / "generic.json"), 0);
+  test::ExpectDetectionsNear(detections, ReadDetectionsFile(dir.path() / "cache.H5"), 0);
+  const Detections coco = ReadDetectionsFile(dir.path() / "coco.json");
+  ASSERT_EQ(coco.frames.size(), 1u);
+  EXPECT_EQ(coco.frames[0].frame_id, "mvor_day1_000001");
+  EXPECT_EQ(coco.frames[0].cameras[0], "cam2");
+  DetectionsFileOptions options;
+  options.openpose.mapping.frame_id = "f{2:3}";
+  EXPECT_EQ(ReadDetectionsFile(dir.path() / "openpose", options).frames[0].frame_id, "f001");
+
+  WriteText(dir, "voxelpose.pkl", "x");
+  EXPECT_THAT(InputErrorOf([&] { ReadDetectionsFile(dir.path() / "voxelpose.pkl"); }), HasSubstr("VoxelPose pickle"));
+  WriteText(dir, "d.csv", "x");
+  const std::string unknown = InputErrorOf([&] { ReadDetectionsFile(dir.path() / "d.csv"); });
+  EXPECT_THAT(unknown, HasSubstr("d.csv: unknown detection format '.csv'"));
+  EXPECT_THAT(unknown, HasSubstr(".h5 / .hdf5"));
+  EXPECT_THAT(InputErrorOf([&] { ReadDetectionsFile(dir.path() / "absent.json"); }), HasSubstr("absent.json: file not found"));
+  WriteText(dir, "number.json", "42");
+  EXPECT_THAT(InputErrorOf([&] { ReadDetectionsFile(dir.path() / "number.json"); }), HasSubstr("number.json:1:1: expected a JSON object"));
+  WriteText(dir, "fake.h5", "{\"joints\": []}");
+  EXPECT_THAT(InputErrorOf([&] { ReadDetectionsFile(dir.path() / "fake.h5"); }), HasSubstr("fake.h5: byte 0: not an HDF5 file"));
+}
+
+}  // namespace
+}  // namespace rpt

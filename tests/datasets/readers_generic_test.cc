@@ -1,0 +1,229 @@
+// SPDX-License-Identifier: MIT
+// Generic labels (skelda schema) and the shared pieces: joint names and path mappings.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "datasets/readers/generic_common.h"
+#include "datasets/readers/generic_labels.h"
+#include "tests/datasets/readers_generic_test_util.h"
+
+namespace rpt {
+namespace {
+
+using ::testing::HasSubstr;
+using test::InputErrorOf;
+using test::WriteText;
+
+TEST(GenericLabels, RoundTripKeepsCamerasGroundTruthAndTimestamps) {
+  test::TempDir dir;
+  std::vector<Sequence> sequences = {test::MakeLabelSequence("studio/take1", 4, "take1_"),
+                                     test::MakeLabelSequence("studio/take2", 3, "take2_")};
+  sequences[1].cameras[0] = test::LookAtCamera("cam_h36m", {3, 3, 1.8}, DistortionModel::kH36M);
+  for (auto& frame : sequences[1].frames) {  // untracked sequence: no "bodyids" written
+    std::fill(frame.gt.track_ids.begin(), frame.gt.track_ids.end(), -1);
+  }
+  const auto path = dir.path() / "labels.json";
+  WriteLabels(path, sequences);
+  const std::vector<Sequence> read = ReadLabels(path);
+  ASSERT_EQ(read.size(), 2u);
+  for (size_t s = 0; s < 2; ++s) test::ExpectSequencesNear(sequences[s], read[s]);
+  EXPECT_EQ(read[0].cameras[2].model, DistortionModel::kFisheye);
+  EXPECT_EQ(read[0].cameras[1].model, DistortionModel::kOpenCV);
+  EXPECT_EQ(read[0].cameras[0].model, DistortionModel::kNone);
+  EXPECT_EQ(read[1].cameras[0].model, DistortionModel::kH36M);
+  EXPECT_TRUE(read[0].frames[0].views.empty());
+  // A camera centre written as T projects the same way after reading.
+  Eigen::Vector2d a, b;
+  ASSERT_TRUE(sequences[0].cameras[2].Project(Eigen::Vector3d(0.3, 0.2, 1.1), &a));
+  ASSERT_TRUE(read[0].cameras[2].Project(Eigen::Vector3d(0.3, 0.2, 1.1), &b));
+  EXPECT_LT((a - b).norm(), 1e-9);
+}
+
+// A skelda file as the RPT authors' tools write it: T nested 3x1 in metres, no scene, no
+// timestamps, DC of zeros, a fisheye camera, splits.
+constexpr const char* kSkeldaLabels = R"([
+ {"id": "s_000000", "splits": ["test"], "joints": ["nose", "shoulder_left", "shoulder_right"],
+  "imgpaths": ["a.jpg", "b.jpg"],
+  "cameras": [
+    {"name": "00_03", "K": [[1000, 0, 960], [0, 1000, 540], [0, 0, 1]], "DC": [0, 0, 0, 0, 0],
+     "R": [[1, 0, 0], [0, 0, -1], [0, 1, 0]], "T": [[0], [-4], [1.5]], "width": 1920, "height": 1080},
+    {"name": "fish", "type": "fisheye", "K": [[600, 0, 640], [0, 600, 480], [0, 0, 1]], "DC": [0.1, -0.02, 0.003, -0.0004],
+     "R": [[-1, 0, 0], [0, 0, -1], [0, -1, 0]], "T": [[0], [4], [1.5]], "width": 1280, "height": 960}],
+  "bodies3D": [[[0.1, 0.2, 1.7, 1], [0.3, 0.2, 1.5, 0.05], [-0.1, 0.2, 1.5, 1]]],
+  "room_size": [[8], [8], [3]], "room_center": [0, 0, 1.5]},
+ {"id": "s_000001", "splits": ["train"], "joints": ["nose", "shoulder_left", "shoulder_right"],
+  "cameras": [
+    {"name": "00_03", "K": [[1000, 0, 960], [0, 1000, 540], [0, 0, 1]], "DC": [0, 0, 0, 0, 0],
+     "R": [[1, 0, 0], [0, 0, -1], [0, 1, 0]], "T": [[0], [-4], [1.5]], "width": 1920, "height": 1080},
+    {"name": "fish", "type": "fisheye", "K": [[600, 0, 640], [0, 600, 480], [0, 0, 1]], "DC": [0.1, -0.02, 0.003, -0.0004],
+     "R": [[-1, 0, 0], [0, 0, -1], [0, -1, 0]], "T": [[0], [4], [1.5]], "width": 1280, "height": 960}],
+  "bodies3D": []},
+ {"id": "s_000002", "splits": ["test"], "joints": ["nose", "shoulder_left", "shoulder_right"],
+  "cameras": [
+    {"name": "00_03", "K": [[1000, 0, 960], [0, 1000, 540], [0, 0, 1]], "DC": [0, 0, 0, 0, 0],
+     "R": [[1, 0, 0], [0, 0, -1], [0, 1, 0]], "T": [[0], [-4], [1.5]], "width": 1920, "height": 1080},
+    {"name": "fish", "type": "fisheye", "K": [[600, 0, 640], [0, 600, 480], [0, 0, 1]], "DC": [0.1, -0.02, 0.003, -0.0004],
+     "R": [[-1, 0, 0], [0, 0, -1], [0, -1, 0]], "T": [[0], [4], [1.5]], "width": 1280, "height": 960}],
+  "bodies3D": [[[0.1, 0.2, 1.7, 1], [0.3, 0.2, 1.5, 1], [-0.1, 0.2, 1.5, 1]],
+               [[1.1, 0.2, 1.7, 1], [1.3, 0.2, 1.5, 1], [0.9, 0.2, 1.5, 0]]]}
+])";
+
+TEST(GenericLabels, ReadsSkeldaLabelsWithSplitsAndFrameTimestamps) {
+  test::TempDir dir;
+  const auto path = WriteText(dir, "test.json", kSkeldaLabels);
+  const std::vector<Sequence> all = ReadLabels(path);
+  ASSERT_EQ(all.size(), 1u);
+  const Sequence& s = all[0];
+  EXPECT_EQ(s.name, "test");  // no scene: the file's stem
+  ASSERT_EQ(s.frames.size(), 3u);
+  EXPECT_EQ(s.gt_joints, (JointNames{"nose", "shoulder_left", "shoulder_right"}));
+  ASSERT_EQ(s.cameras.size(), 2u);
+  EXPECT_EQ(s.cameras[0].model, DistortionModel::kNone);
+  EXPECT_EQ(s.cameras[1].model, DistortionModel::kFisheye);
+  EXPECT_DOUBLE_EQ(s.cameras[1].dist[3], -0.0004);
+  EXPECT_LT((s.cameras[0].Center() - Eigen::Vector3d(0, -4, 1.5)).norm(), 1e-12);
+  EXPECT_LT((s.room.size_m - Eigen::Vector3d(8, 8, 3)).norm(), 1e-12);
+  EXPECT_LT((s.room.center_m - Eigen::Vector3d(0, 0, 1.5)).norm(), 1e-12);
+  EXPECT_DOUBLE_EQ(s.fps, 25);
+  EXPECT_DOUBLE_EQ(s.frames[2].timestamp_s, 2 / 25.0);
+  EXPECT_EQ(s.frames[2].gt.num_persons(), 2);
+  EXPECT_DOUBLE_EQ(s.frames[0].gt.Person(0)(3, 1), 0.05);
+  EXPECT_EQ(s.frames[1].gt.num_persons(), 0);
+
+  LabelsOptions options;
+  options.split = "test";
+  options.fps = 10;
+  const std::vector<Sequence> test = ReadLabels(path, options);
+  ASSERT_EQ(test.size(), 1u);
+  ASSERT_EQ(test[0].frames.size(), 2u);
+  EXPECT_EQ(test[0].frames[1].id, "s_000002");
+  EXPECT_DOUBLE_EQ(test[0].frames[1].timestamp_s, 0.2);  // index in the file, not in the split
+  options.split = "val";
+  EXPECT_THAT(InputErrorOf([&] { ReadLabels(path, options); }), HasSubstr("no labels in split 'val'"));
+}
+
+std::string Label(const std::string& id, const std::string& scene_key, const std::string& scene, double cx) {
+  return R"({"id": ")" + id + R"(", ")" + scene_key + R"(": ")" + scene +
+         R"(", "joints": ["nose"], "bodies3D": [[[0, 0, 1, 1]]],
+   "cameras": [{"name": "c", "K": [[900, 0, 500], [0, 900, 400], [0, 0, 1]], "DC": [0.1, 0, 0, 0, 0],
+                "R": [[1, 0, 0], [0, 1, 0], [0, 0, 1]], "T": [)" +
+         std::to_string(cx) + R"(, 0, -3], "width": 1000, "height": 800}]})";
+}
+
+TEST(GenericLabels, GroupsLabelsBySceneInFileOrder) {
+  test::TempDir dir;
+  const auto path = WriteText(dir, "l.json",
+                              "[" + Label("b1", "seq", "B", 0) + "," + Label("a1", "seq", "A", 1) + "," +
+                                  Label("b2", "seq", "B", 0) + "," + Label("a2", "seq", "A", 1) + "]");
+  const std::vector<Sequence> sequences = ReadLabels(path);
+  ASSERT_EQ(sequences.size(), 2u);
+  EXPECT_EQ(sequences[0].name, "B");
+  EXPECT_EQ(sequences[1].name, "A");
+  ASSERT_EQ(sequences[0].frames.size(), 2u);
+  EXPECT_EQ(sequences[0].frames[1].id, "b2");
+  EXPECT_DOUBLE_EQ(sequences[0].frames[1].timestamp_s, 1 / 25.0);
+  EXPECT_EQ(sequences[0].cameras[0].model, DistortionModel::kOpenCV);
+  EXPECT_LT((sequences[1].cameras[0].Center() - Eigen::Vector3d(1, 0, -3)).norm(), 1e-12);
+}
+
+TEST(GenericLabels, CamerasThatDifferWithinASequenceNameBothLabels) {
+  test::TempDir dir;
+  const auto path = WriteText(dir, "l.json", "[" + Label("f0", "scene", "S", 0) + "," + Label("f1", "scene", "S", 0) + "," +
+                                                 Label("f2", "scene", "S", 0.5) + "]");
+  const std::string error = InputErrorOf([&] { ReadLabels(path); });
+  EXPECT_THAT(error, HasSubstr("l.json: labels 'f0' and 'f2' (/2) of sequence 'S' have different cameras"));
+  EXPECT_THAT(error, HasSubstr("T differs"));
+}
+
+TEST(GenericLabels, MalformedFilesNameFileAndPlace) {
+  test::TempDir dir;
+  EXPECT_THAT(InputErrorOf([&] { ReadLabels(dir.path() / "missing.json"); }), HasSubstr("missing.json: file not found"));
+  const auto truncated = WriteText(dir, "truncated.json", "[\n" + Label("f0", "scene", "S", 0) + ",\n {\"id\": ");
+  EXPECT_THAT(InputErrorOf([&] { ReadLabels(truncated); }), HasSubstr("truncated.json:5:8: JSON parse error"));
+
+  std::string text = Label("f0", "scene", "S", 0);
+  auto with = [&](const std::string& from, const std::string& to) {
+    std::string t = text;
+    t.replace(t.find(from), from.size(), to);
+    return WriteText(dir, "bad.json", "[" + t + "]");
+  };
+  EXPECT_THAT(InputErrorOf([&] { ReadLabels(with(R"(["nose"])", R"(["nose", "left_shoulder"])")); }),
+              HasSubstr("bad.json: /0/joints: unknown joint name 'left_shoulder' (did you mean 'shoulder_left'?)"));
+  EXPECT_THAT(InputErrorOf([&] { ReadLabels(with(R"(["nose"])", R"(["nose", "eye_left"])")); }),
+              HasSubstr("bad.json: /0/bodies3D/0: expected 2 joints (as many as \"joints\" names), got 1"));
+  EXPECT_THAT(InputErrorOf([&] { ReadLabels(with("[0, 0, 1, 1]", "[0, 0, 1, 1, 5]")); }),
+              HasSubstr("/0/bodies3D/0/0: expected [x, y, z, visibility]"));
+  EXPECT_THAT(InputErrorOf([&] { ReadLabels(with(R"("DC": [0.1, 0, 0, 0, 0])", R"("type": "fisheye", "DC": [0.1, 0, 0, 0, 0])")); }),
+              HasSubstr("/0/cameras/0/DC: a fisheye camera needs 4 coefficients"));
+  EXPECT_THAT(InputErrorOf([&] { ReadLabels(with(R"("width": 1000)", R"("width": "wide")")); }),
+              HasSubstr("/0/cameras/0/width: expected an integer"));
+  EXPECT_THAT(InputErrorOf([&] { ReadLabels(with(R"([[1, 0, 0], [0, 1, 0], [0, 0, 1]])", R"([[2, 0, 0], [0, 1, 0], [0, 0, 1]])")); }),
+              HasSubstr("R is not orthonormal"));
+  const auto duplicate = WriteText(dir, "dup.json", "[" + Label("f0", "scene", "S", 0) + "," + Label("f0", "scene", "T", 0) + "]");
+  EXPECT_THAT(InputErrorOf([&] { ReadLabels(duplicate); }), HasSubstr("dup.json: /1/id: id 'f0' is also used by label 0"));
+  const auto object = WriteText(dir, "object.json", "{\"frames\": []}");
+  EXPECT_THAT(InputErrorOf([&] { ReadLabels(object); }), HasSubstr("object.json: /: expected a list of labels"));
+}
+
+TEST(GenericLabels, RegistryPairTakesSplitAndFps) {
+  test::TempDir dir;
+  const auto path = WriteText(dir, "test.json", kSkeldaLabels);
+  const DatasetInfo info = GenericInfo();
+  EXPECT_EQ(info.name, "generic");
+  DatasetRequest request;
+  request.dataset = "generic";
+  request.root = path;
+  request.params = {{"split", "test"}, {"fps", "50"}};
+  const std::vector<Sequence> sequences = ReadGeneric(request);
+  ASSERT_EQ(sequences.size(), 1u);
+  EXPECT_EQ(sequences[0].frames.size(), 2u);
+  EXPECT_DOUBLE_EQ(sequences[0].frames[1].timestamp_s, 2 / 50.0);
+  request.params = {{"fps", "fast"}};
+  EXPECT_THAT(test::ConfigErrorOf([&] { ReadGeneric(request); }), HasSubstr("fps"));
+  request.params = {{"frames", "1-2"}};
+  EXPECT_THAT(test::ConfigErrorOf([&] { ReadGeneric(request); }), HasSubstr("no parameter 'frames'"));
+}
+
+TEST(GenericCommon, JointNamesAreCheckedWithSuggestions) {
+  EXPECT_TRUE(IsKnownJointName("hand_pinky_4_right"));
+  EXPECT_TRUE(IsKnownJointName("face_07"));
+  EXPECT_TRUE(IsKnownJointName("head_top"));
+  EXPECT_TRUE(IsKnownJointName("hip_middle"));
+  EXPECT_TRUE(IsKnownJointName("extra_tail"));
+  EXPECT_FALSE(IsKnownJointName("extra_"));
+  EXPECT_FALSE(IsKnownJointName("LShoulder"));
+  EXPECT_THAT(InputErrorOf([] { CheckJointNames({"nose", "left_big_toe"}, "f.json: /joints"); }),
+              HasSubstr("f.json: /joints: unknown joint name 'left_big_toe' (did you mean 'foot_big_toe_left'?)"));
+  EXPECT_THAT(InputErrorOf([] { CheckJointNames({"Nose"}, "x"); }), HasSubstr("(did you mean 'nose'?)"));
+  EXPECT_THAT(InputErrorOf([] { CheckJointNames({"nose", "nose"}, "x"); }), HasSubstr("'nose' appears twice"));
+  EXPECT_THAT(InputErrorOf([] { CheckJointNames({}, "x"); }), HasSubstr("x: the joint list is empty"));
+}
+
+TEST(GenericCommon, PathMappingTemplatesPadOffsetAndCheckGroups) {
+  const PathMapper mapper({R"(([^/]+)/(?:.*_)?(\d+)_keypoints\.json)", "shelf_{2:6+300}", "{1}{{x}}"}, "test");
+  std::string frame, camera;
+  ASSERT_TRUE(mapper.Apply("Camera0/shelf_000000000012_keypoints.json", "src", &frame, &camera));
+  EXPECT_EQ(frame, "shelf_000312");
+  EXPECT_EQ(camera, "Camera0{x}");
+  ASSERT_TRUE(mapper.Apply("c1/7_keypoints.json", "src", &frame, &camera));
+  EXPECT_EQ(frame, "shelf_000307");
+  EXPECT_FALSE(mapper.Apply("c1/sub/notes.txt", "src", &frame, &camera));
+
+  const PathMapper minus({R"((\d+)\.png)", "f{1:2-10}", "cam"}, "test");
+  EXPECT_THAT(InputErrorOf([&] { minus.Apply("5.png", "images.json", &frame, &camera); }), HasSubstr("is negative"));
+  ASSERT_TRUE(minus.Apply("1234.png", "images.json", &frame, &camera));
+  EXPECT_EQ(frame, "f1224");
+
+  EXPECT_THAT(test::ConfigErrorOf([] { PathMapper({"(a", "{1}", "c"}, "openpose"); }), HasSubstr("not a valid regular expression"));
+  EXPECT_THAT(test::ConfigErrorOf([] { PathMapper({"(a)", "{2}", "c"}, "openpose"); }),
+              HasSubstr("uses {2} but pattern '(a)' has 1 capture group(s)"));
+  EXPECT_THAT(test::ConfigErrorOf([] { PathMapper({"(a)", "{1:x}", "c"}, "openpose"); }), HasSubstr("width must be"));
+  EXPECT_THAT(test::ConfigErrorOf([] { PathMapper({"(a)", "{1", "c"}, "openpose"); }), HasSubstr("unmatched '{'"));
+  EXPECT_THAT(test::ConfigErrorOf([] { PathMapper({"(a)", "}", "c"}, "openpose"); }), HasSubstr("unmatched '}'"));
+  const PathMapper text_group({R"(([a-z]+)(\d+))", "{1:3}", "c"}, "t");
+  EXPECT_THAT(InputErrorOf([&] { text_group.Apply("abc1", "src", &frame, &camera); }),
+              HasSubstr("capture group 1 is 'abc', not a non-negative integer"));
+}
+
+}  // namespace
+}  // namespace rpt
