@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/errors.h"
+#include "core/text.h"
 #include "datasets/io/json_file.h"
 
 namespace rpt::cli {
@@ -100,7 +101,7 @@ Descriptor Int(std::string key, std::string help, Access access) {
 template <class E, class Access>
 Descriptor Enum(std::string key, std::string help, std::vector<std::pair<std::string, E>> names, Access access) {
   std::string type;
-  for (const auto& [name, value] : names) type += (type.empty() ? "" : "|") + name;
+  for (const auto& [name, value] : names) AppendItem(&type, name, "|");
   Descriptor d{{key, type, std::move(help)}, {}, {}, {}};
   d.set = [access, key, names, type](Config& c, const Json& v, const std::string& where) {
     if (v.is_string()) {
@@ -306,8 +307,7 @@ const Descriptor& Find(const std::string& key, const std::string& where) {
     const std::string section = d.info.key.substr(0, d.info.key.find('.'));
     if (std::find(sections.begin(), sections.end(), section) == sections.end()) sections.push_back(section);
   }
-  std::string list;
-  for (const std::string& section : sections) list += (list.empty() ? "" : ", ") + section;
+  const std::string list = Join(sections);
   throw ConfigError(where + ": unknown option '" + key + "' (sections: " + list +
                     "; `rpt config --dump` lists every option)");
 }
@@ -336,7 +336,7 @@ std::string GetConfigOption(const Config& config, const std::string& key) {
   if (value.is_string()) return value.get<std::string>();
   if (value.is_array()) {
     std::string out;
-    for (const Json& item : value) out += (out.empty() ? "" : ",") + (item.is_string() ? item.get<std::string>() : item.dump());
+    for (const Json& item : value) AppendItem(&out, item.is_string() ? item.get<std::string>() : item.dump(), ",");
     return out;
   }
   return value.dump();

@@ -48,7 +48,7 @@ void RunDemo(const DemoOptions& o) {
   run_options.triangulator = config.triangulator;
   run_options.eval = config.metrics;
   run_options.progress = !o.json;
-  const SequenceRun run = RunSequence(sequence, run_options);
+  const RunResult run = RunSequences({sequence}, run_options);
   const metrics::MetricsResult& m = run.metrics;
 
   if (o.json) {
@@ -57,7 +57,7 @@ void RunDemo(const DemoOptions& o) {
     j["cameras"] = o.cameras;
     j["people"] = o.people;
     j["joints"] = o.joints;
-    j["output_joints"] = run.output_joints.size();
+    j["output_joints"] = run.sequences[0].output_joints.size();
     j["noise"] = o.noise;
     j["distortion"] = o.distortion;
     j["seed"] = o.seed;
@@ -81,7 +81,7 @@ void RunDemo(const DemoOptions& o) {
     return;
   }
   std::printf("rpt demo: %d cameras, %d people, %d frames, %s joints (%zu out), %s detector, %s lens, seed %llu\n",
-              o.cameras, o.people, o.frames, o.joints.c_str(), run.output_joints.size(), o.noise.c_str(),
+              o.cameras, o.people, o.frames, o.joints.c_str(), run.sequences[0].output_joints.size(), o.noise.c_str(),
               o.distortion.c_str(), static_cast<unsigned long long>(o.seed));
   std::printf("persons present %ld, found %ld, matched %d (recall@500 %.1f %%, invalid %.1f %%)\n", run.gt_persons,
               run.output_persons, m.num_matches, m.recall_500, m.invalid);

@@ -7,13 +7,23 @@
 #include <exception>
 
 #include "cli/commands.h"
+#include "cli/run_info.h"
 #include "core/errors.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"rpt: RapidPoseTriangulation, learning-free multi-view multi-person 3D pose triangulation"};
   app.require_subcommand(1);
+  rpt::cli::SetCommandLine(rpt::cli::CommandLine(argc, argv));
   rpt::cli::RegisterDemoCommand(app);
+  rpt::cli::RegisterEvalCommand(app);
+  rpt::cli::RegisterInspectCommand(app);
+  rpt::cli::RegisterDatasetsCommand(app);
+  rpt::cli::RegisterConvertCommand(app);
   rpt::cli::RegisterConfigCommand(app);
+  int exit_code = 0;
+  rpt::cli::RegisterCheckCommand(app, &exit_code);
+  rpt::cli::RegisterSweepCommand(app);
+  rpt::cli::RegisterMergeCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -29,5 +39,5 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "internal error: %s\n", e.what());
     return 1;
   }
-  return 0;
+  return exit_code;
 }

@@ -1,40 +1,98 @@
 // SPDX-License-Identifier: MIT
 #include "cli/run_sequence.h"
 
+#include <atomic>
+#include <exception>
+#include <mutex>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 #include "cli/progress.h"
 #include "core/pipeline/triangulator.h"
 
 namespace rpt::cli {
+namespace {
 
-SequenceRun RunSequence(const Sequence& sequence, const RunOptions& options) {
+TriangulatedSequence Triangulate(const Sequence& sequence, const RunOptions& options, std::atomic<long>* frames_done,
+                                 Progress* progress) {
   TriangulatorOptions tri_options = options.triangulator;
   if (!(tri_options.room_check.size_m.array() > 0).any()) {
     tri_options.room_check.center_m = sequence.room.center_m;
     tri_options.room_check.size_m = sequence.room.size_m;
   }
   Triangulator triangulator(sequence.cameras, sequence.detection_joints, tri_options);
-  metrics::MetricsAccumulator accumulator(options.eval);
-  SequenceRun run;
-  run.timing_frames = metrics::TimingAccumulator(options.warmup_frames);
-  run.output_joints = triangulator.output_joints();
-
-  Progress progress(sequence.name, static_cast<long>(sequence.frames.size()), options.progress);
-  Poses3D persons;
+  TriangulatedSequence out;
+  out.output_joints = triangulator.output_joints();
+  out.timing = metrics::TimingAccumulator(options.warmup_frames);
+  out.predictions.resize(sequence.frames.size());
   FrameStats stats;
-  std::vector<Poses2D> no_views(sequence.cameras.size());
+  const std::vector<Poses2D> no_views(sequence.cameras.size());
   for (size_t f = 0; f < sequence.frames.size(); ++f) {
     const SequenceFrame& frame = sequence.frames[f];
-    triangulator.Process(frame.views.empty() ? no_views : frame.views, frame.timestamp_s, &persons, &stats);
-    run.timing_frames.Add(stats);
-    accumulator.Add(frame.id, frame.gt, sequence.gt_joints, persons, run.output_joints);
-    run.gt_persons += frame.gt.num_persons();
-    run.output_persons += persons.num_persons();
-    if (options.keep_predictions) run.predictions.push_back(persons);
-    progress.Update(static_cast<long>(f + 1));
+    triangulator.Process(frame.views.empty() ? no_views : frame.views, frame.timestamp_s, &out.predictions[f], &stats);
+    out.timing.Add(stats);
+    const long done = ++*frames_done;
+    if (progress != nullptr) progress->Update(done);
   }
-  run.metrics = accumulator.Finalize();
-  run.timing = run.timing_frames.Finalize();
-  return run;
+  return out;
+}
+
+}  // namespace
+
+TriangulatedSequence TriangulateSequence(const Sequence& sequence, const RunOptions& options) {
+  std::atomic<long> done{0};
+  return Triangulate(sequence, options, &done, nullptr);
+}
+
+RunResult RunSequences(const std::vector<Sequence>& sequences, const RunOptions& options) {
+  RunResult result;
+  result.sequences.resize(sequences.size());
+  long total = 0;
+  for (const Sequence& s : sequences) total += static_cast<long>(s.frames.size());
+  Progress progress(sequences.size() == 1 ? sequences[0].name : "triangulating", total, options.progress);
+  std::atomic<long> frames_done{0};
+  std::exception_ptr error;
+  std::mutex error_mutex;
+  const int count = static_cast<int>(sequences.size());
+#ifdef _OPENMP
+  const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
+#pragma omp parallel for schedule(dynamic) num_threads(threads)
+#endif
+  for (int i = 0; i < count; ++i) {
+    try {
+#ifdef _OPENMP
+      Progress* shown = omp_get_thread_num() == 0 ? &progress : nullptr;
+#else
+      Progress* shown = &progress;
+#endif
+      result.sequences[i] = Triangulate(sequences[i], options, &frames_done, shown);
+    } catch (...) {
+      // Exceptions must not cross the OpenMP region: keep the first, rethrow after.
+      std::lock_guard<std::mutex> lock(error_mutex);
+      if (!error) error = std::current_exception();
+    }
+  }
+  if (error) std::rethrow_exception(error);
+
+  metrics::MetricsAccumulator accumulator(options.eval);
+  metrics::TimingAccumulator timing;
+  for (int i = 0; i < count; ++i) {
+    const Sequence& sequence = sequences[i];
+    const TriangulatedSequence& run = result.sequences[i];
+    for (size_t f = 0; f < sequence.frames.size(); ++f) {
+      accumulator.Add(sequence.frames[f].id, sequence.frames[f].gt, sequence.gt_joints, run.predictions[f],
+                      run.output_joints);
+      result.gt_persons += sequence.frames[f].gt.num_persons();
+      result.output_persons += run.predictions[f].num_persons();
+    }
+    result.frames += static_cast<long>(sequence.frames.size());
+    timing.Merge(run.timing);
+  }
+  result.metrics = accumulator.Finalize();
+  result.timing = timing.Finalize();
+  return result;
 }
 
 }  // namespace rpt::cli

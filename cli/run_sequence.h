@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
-// Runs one sequence through the triangulator and the metrics: the loop shared by demo, eval,
-// check, sweep and bench.
+// Runs sequences through the triangulator and the metrics: the loop shared by demo, eval,
+// check, sweep and bench. Independent sequences are triangulated in parallel (OpenMP, one
+// Triangulator per sequence); metrics are then accumulated in sequence order, so results do not
+// depend on the thread count.
 #pragma once
 
 #include <vector>
@@ -17,22 +19,31 @@ namespace rpt::cli {
 struct RunOptions {
   TriangulatorOptions triangulator;  // room_check comes from the sequence unless its size is set
   metrics::EvalOptions eval;
-  bool keep_predictions = false;     // fill SequenceRun::predictions
   bool progress = true;              // progress on stderr for long runs
-  int warmup_frames = 0;             // frames excluded from timing
+  int warmup_frames = 0;             // frames per sequence excluded from timing
+  int threads = 0;                   // sequences in parallel; 0 = OpenMP default
 };
 
-struct SequenceRun {
+// One sequence, triangulated.
+struct TriangulatedSequence {
+  JointNames output_joints;
+  std::vector<Poses3D> predictions;  // per frame
+  metrics::TimingAccumulator timing;
+};
+
+struct RunResult {
   metrics::MetricsResult metrics;
-  metrics::TimingSummary timing;
-  metrics::TimingAccumulator timing_frames;  // raw per-frame times (for merging runs)
+  metrics::TimingSummary timing;  // over all frames of all sequences
+  long frames = 0;
   long gt_persons = 0;      // GT person-frames
   long output_persons = 0;  // triangulated person-frames
-  JointNames output_joints;
-  std::vector<Poses3D> predictions;  // per frame when keep_predictions
+  std::vector<TriangulatedSequence> sequences;
 };
 
-// Throws ConfigError for invalid options, InputError for inconsistent sequences.
-SequenceRun RunSequence(const Sequence& sequence, const RunOptions& options);
+// Triangulates every frame of one sequence (single thread). Throws ConfigError/InputError.
+TriangulatedSequence TriangulateSequence(const Sequence& sequence, const RunOptions& options);
+
+// Triangulates all sequences (in parallel) and evaluates them together.
+RunResult RunSequences(const std::vector<Sequence>& sequences, const RunOptions& options);
 
 }  // namespace rpt::cli

@@ -5,13 +5,14 @@
 #include <charconv>
 
 #include "core/errors.h"
+#include "core/text.h"
 
 namespace rpt {
 namespace {
 
 std::string ValidParams(const DatasetInfo& info) {
   std::string out;
-  for (const DatasetParam& p : info.params) out += (out.empty() ? "" : ", ") + p.name;
+  for (const DatasetParam& p : info.params) AppendItem(&out, p.name);
   return out.empty() ? "(none)" : out;
 }
 

@@ -7,3 +7,5 @@ BUILD_DIR="${BUILD_DIR:-build}"
 cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release -DRPT_BUILD_BENCHMARKS=ON >/dev/null
 cmake --build "$BUILD_DIR" -j"$(nproc)"
 ctest --test-dir "$BUILD_DIR" --output-on-failure -j"$(nproc)"
+# Accuracy and speed regression gates (synthetic suites; real fixtures when ../shared/data exists).
+"$BUILD_DIR/rpt" check --thresholds results/thresholds.json

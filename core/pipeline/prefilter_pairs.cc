@@ -20,9 +20,25 @@ int PrefilterPairs(const PreparedViews& views, std::span<const ViewGeometry> geo
   const double radius_rel = options.max_distance_rel + options.person_speed_m_s * elapsed_s / kPersonSizeM;
   match->assign(views.num_poses(), kPoseFree);
   scratch->distance.assign(views.num_poses(), 0.0);
+  // Project every previous person into every view once.
+  const int num_views = static_cast<int>(views.view_begin.size()) - 1;
+  const size_t per_view = static_cast<size_t>(num_previous) * num_core;
+  scratch->projected.resize(per_view * num_views);
+  for (int v = 0; v < num_views; ++v) {
+    const ViewGeometry& geo = geometry[v];
+    for (size_t idx = 0; idx < per_view; ++idx) {
+      Eigen::Vector2d& uv = scratch->projected[v * per_view + idx];
+      const Eigen::Vector3d h = geo.P.leftCols<3>() * previous.xyz[idx] + geo.P.col(3);
+      if (previous.score[idx] <= 0 || h.z() <= 0) {
+        uv.setConstant(std::numeric_limits<double>::quiet_NaN());
+      } else {
+        uv = h.head<2>() / h.z();
+      }
+    }
+  }
   for (int g = 0; g < views.num_poses(); ++g) {
-    const ViewGeometry& geo = geometry[views.view_of[g]];
     const Keypoint* kps = views.Pose(g);
+    const Eigen::Vector2d* projected = scratch->projected.data() + views.view_of[g] * per_view;
     const double radius = radius_rel * views.bbox_diag[g];
     double best = std::numeric_limits<double>::infinity(), second = best;
     int best_q = -1;
@@ -31,11 +47,10 @@ int PrefilterPairs(const PreparedViews& views, std::span<const ViewGeometry> geo
       int n = 0;
       for (int c = 0; c < num_core; ++c) {
         const Keypoint& kp = kps[core_joints[c]];
-        const size_t idx = static_cast<size_t>(q) * num_core + c;
-        if (kp.score <= 0 || previous.score[idx] <= 0) continue;
-        const Eigen::Vector3d h = geo.P * previous.xyz[idx].homogeneous();
-        if (h.z() <= 0) continue;
-        sum += std::hypot(h.x() / h.z() - kp.u, h.y() / h.z() - kp.v);
+        const Eigen::Vector2d& uv = projected[static_cast<size_t>(q) * num_core + c];
+        if (kp.score <= 0 || std::isnan(uv.x())) continue;
+        const double du = uv.x() - kp.u, dv = uv.y() - kp.v;
+        sum += std::sqrt(du * du + dv * dv);
         ++n;
       }
       if (n < 3) continue;
@@ -56,7 +71,6 @@ int PrefilterPairs(const PreparedViews& views, std::span<const ViewGeometry> geo
     }
   }
   // One match per person and view: of several poses of a view matching q, only the closest keeps it.
-  const int num_views = static_cast<int>(views.view_begin.size()) - 1;
   for (int v = 0; v < num_views; ++v) {
     for (int g = views.view_begin[v]; g < views.view_begin[v + 1]; ++g) {
       if ((*match)[g] < 0) continue;

@@ -42,6 +42,7 @@ inline constexpr int kPoseAmbiguous = -2;
 struct PrefilterScratch {
   std::vector<int> match;         // per pose: person index, kPoseFree or kPoseAmbiguous
   std::vector<double> distance;   // per pose: distance to the matched person (px)
+  std::vector<Eigen::Vector2d> projected;  // per view, person and core joint (NaN = not visible)
 };
 
 // Classifies every pose into scratch->match, then compacts `pairs`.

@@ -6,12 +6,13 @@
 namespace rpt {
 namespace {
 
-// Relative reprojection error of `point` against keypoint `kp` of a pose with diagonal `diag`.
-inline double RelativeReprojectionError(const ViewGeometry& g, const Eigen::Vector3d& point, const Keypoint& kp,
-                                        double diag) {
-  const Eigen::Vector3d h = g.P * point.homogeneous();
-  if (h.z() <= 0) return 1e3;
-  return std::hypot(h.x() / h.z() - kp.u, h.y() / h.z() - kp.v) / diag;
+// Squared reprojection error (px^2) of `point` against keypoint `kp`; large when behind the camera.
+inline double ReprojectionErrorSq(const ViewGeometry& g, const Eigen::Vector3d& point, const Keypoint& kp) {
+  const Eigen::Vector3d h = g.P.leftCols<3>() * point + g.P.col(3);
+  if (h.z() <= 0) return 1e12;
+  const double inv_z = 1.0 / h.z();
+  const double du = h.x() * inv_z - kp.u, dv = h.y() * inv_z - kp.v;
+  return du * du + dv * dv;
 }
 
 }  // namespace
@@ -36,20 +37,22 @@ int ScoreProposals(const PreparedViews& views, std::span<const ViewGeometry> geo
     const double* gap = proposals->gap.data() + static_cast<size_t>(k) * n;
     double* score = proposals->score.data() + static_cast<size_t>(k) * n;
 
+    const double inv_diag_a = 1.0 / diag_a, inv_diag_b = 1.0 / diag_b;
     for (int i = 0; i < n; ++i) {
       if (score[i] <= 0) continue;
-      double s = 1.0;
+      // s = exp(-(e/scale_rep)^2) * exp(-(gap/scale_gap)^2) computed with one exp.
+      double exponent = 0;
       if (use_rep) {
-        const double e = 0.5 * (RelativeReprojectionError(ga, xyz[i], ka[joints[i]], diag_a) +
-                                RelativeReprojectionError(gb, xyz[i], kb[joints[i]], diag_b));
+        const double e = 0.5 * (std::sqrt(ReprojectionErrorSq(ga, xyz[i], ka[joints[i]])) * inv_diag_a +
+                                std::sqrt(ReprojectionErrorSq(gb, xyz[i], kb[joints[i]])) * inv_diag_b);
         const double r = e * inv_rep;
-        s *= std::exp(-r * r);
+        exponent += r * r;
       }
       if (use_tri) {
         const double r = gap[i] * inv_gap;
-        s *= std::exp(-r * r);
+        exponent += r * r;
       }
-      score[i] = s;
+      score[i] = std::exp(-exponent);
     }
     if (options.prune_limbs) {
       for (const ResolvedLimb& limb : limbs) {

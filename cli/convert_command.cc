@@ -1,0 +1,85 @@
+// SPDX-License-Identifier: MIT
+// `rpt convert`: any readable input (dataset or labels, with detections) into one HDF5 cache
+// that loads much faster than JSON; `--labels-out` / `--detections-out` also write the generic
+// JSON interchange files. Every command that takes --labels / --detections accepts the cache.
+#include <cstdio>
+
+#include "cli/commands.h"
+#include "cli/load_input.h"
+#include "core/errors.h"
+#include "datasets/readers/generic_detections.h"
+#include "datasets/readers/generic_labels.h"
+#include "datasets/readers/hdf5_cache.h"
+
+namespace rpt::cli {
+namespace {
+
+struct ConvertArgs {
+  InputArgs input;
+  std::string out;             // HDF5 cache
+  std::string labels_out;      // generic labels JSON
+  std::string detections_out;  // generic detections JSON
+  bool float64 = false;
+};
+
+Detections CollectDetections(const std::vector<Sequence>& sequences) {
+  Detections detections;
+  for (const Sequence& s : sequences) {
+    if (detections.joints.empty()) detections.joints = s.detection_joints;
+    if (!s.detection_joints.empty() && s.detection_joints != detections.joints) {
+      throw InputError("sequence '" + s.name + "' has other detection joints than the first sequence");
+    }
+    for (const SequenceFrame& f : s.frames) {
+      if (f.views.empty()) continue;
+      FrameDetections frame;
+      frame.frame_id = f.id;
+      for (size_t v = 0; v < f.views.size(); ++v) {
+        frame.cameras.push_back(s.cameras[v].name);
+        frame.views.push_back(f.views[v]);
+      }
+      detections.frames.push_back(std::move(frame));
+    }
+  }
+  return detections;
+}
+
+void RunConvert(const ConvertArgs& args) {
+  if (args.out.empty() && args.labels_out.empty() && args.detections_out.empty()) {
+    throw ConfigError("nothing to write: give --out CACHE.h5, --labels-out FILE.json or --detections-out FILE.json");
+  }
+  const std::vector<Sequence> sequences = LoadInput(args.input, /*require_detections=*/false);
+  const Detections detections = CollectDetections(sequences);
+  if (!args.out.empty()) {
+    Hdf5WriteOptions options;
+    options.float64 = args.float64;
+    WriteSequencesHdf5(args.out, sequences, options);
+    if (!detections.frames.empty()) {
+      options.add_to_existing = true;
+      WriteDetectionsHdf5(args.out, detections, options);
+    }
+  }
+  if (!args.labels_out.empty()) WriteLabels(args.labels_out, sequences);
+  if (!args.detections_out.empty()) {
+    if (detections.frames.empty()) throw InputError("the input has no detections to write to " + args.detections_out);
+    WriteGenericDetections(args.detections_out, detections);
+  }
+  long frames = 0;
+  for (const Sequence& s : sequences) frames += static_cast<long>(s.frames.size());
+  std::printf("converted %zu sequence(s), %ld frames, %zu frames with detections\n", sequences.size(), frames,
+              detections.frames.size());
+}
+
+}  // namespace
+
+void RegisterConvertCommand(CLI::App& app) {
+  auto args = std::make_shared<ConvertArgs>();
+  CLI::App* command = app.add_subcommand("convert", "Write an input's labels and detections to an HDF5 cache or JSON");
+  AddInputOptions(command, &args->input);
+  command->add_option("--out", args->out, "HDF5 cache with cameras, ground truth and detections");
+  command->add_option("--labels-out", args->labels_out, "generic labels JSON (skelda schema)");
+  command->add_option("--detections-out", args->detections_out, "generic detections JSON");
+  command->add_flag("--float64", args->float64, "store coordinates as float64 (default float32)");
+  command->callback([args] { RunConvert(*args); });
+}
+
+}  // namespace rpt::cli

@@ -1,0 +1,28 @@
+// SPDX-License-Identifier: MIT
+// `rpt datasets`: the readers, what each needs on disk and its parameters.
+#include <cstdio>
+
+#include "cli/commands.h"
+#include "datasets/registry.h"
+
+namespace rpt::cli {
+
+void RegisterDatasetsCommand(CLI::App& app) {
+  CLI::App* command = app.add_subcommand("datasets", "List the dataset readers, their layouts and parameters");
+  command->callback([] {
+    for (const DatasetEntry& entry : DatasetRegistry()) {
+      const DatasetInfo& info = entry.info;
+      std::printf("%s: %s\n", info.name.c_str(), info.description.c_str());
+      std::printf("  on disk: %s\n", info.layout.c_str());
+      for (const DatasetParam& p : info.params) {
+        std::printf("  --param %s=%s  %s\n", p.name.c_str(), p.default_value.empty() ? "..." : p.default_value.c_str(),
+                    p.help.c_str());
+      }
+      std::printf("\n");
+    }
+    std::printf("Detections: --detections FILE (generic JSON, HDF5 cache, OpenPose folder, COCO result list) or "
+                "--simulate.\nGeneric labels: rpt eval --labels LABELS.json --detections DETECTIONS.json\n");
+  });
+}
+
+}  // namespace rpt::cli

@@ -1,0 +1,87 @@
+// SPDX-License-Identifier: MIT
+#include "cli/load_input.h"
+
+#include <cstdio>
+#include <filesystem>
+
+#include "core/errors.h"
+#include "datasets/detections.h"
+#include "datasets/readers/detections_file.h"
+#include "datasets/readers/generic_labels.h"
+#include "datasets/readers/voxelpose_detections.h"
+#include "datasets/registry.h"
+
+namespace rpt::cli {
+
+void AddInputOptions(CLI::App* command, InputArgs* args) {
+  command->add_option("--dataset", args->dataset, "dataset reader (see `rpt datasets`)");
+  command->add_option("--root", args->root, "dataset folder in its original layout");
+  command->add_option("--param", args->params, "dataset parameter key=value (repeatable; see `rpt datasets`)")
+      ->take_all();
+  command->add_option("--labels", args->labels, "generic labels file (skelda schema) instead of --dataset");
+  command->add_option("--detections", args->detections,
+                      "2D detections: generic JSON, HDF5 cache, OpenPose folder or COCO result list");
+  command->add_flag("--simulate", args->simulate, "simulate 2D detections from the ground truth");
+  command->add_flag("--simulate-perfect", args->simulate_perfect, "with --simulate: exact projections, no noise");
+  command->add_option("--seed", args->seed, "seed of the simulated detector")->capture_default_str();
+}
+
+std::vector<Sequence> LoadInput(const InputArgs& args, bool require_detections) {
+  if (args.dataset.empty() == args.labels.empty()) {
+    throw ConfigError("give either --dataset NAME (with --root DIR) or --labels FILE");
+  }
+  if (args.simulate && !args.detections.empty()) throw ConfigError("--simulate and --detections exclude each other");
+  std::vector<Sequence> sequences;
+  if (!args.labels.empty()) {
+    sequences = ReadLabelsFile(args.labels, LabelsOptions{});
+  } else {
+    DatasetRequest request;
+    request.dataset = args.dataset;
+    request.root = args.root;
+    for (const std::string& assignment : args.params) {
+      const size_t eq = assignment.find('=');
+      if (eq == std::string::npos || eq == 0) throw ConfigError("--param " + assignment + ": expected key=value");
+      request.params[assignment.substr(0, eq)] = assignment.substr(eq + 1);
+    }
+    sequences = ReadDataset(request);
+  }
+  if (args.simulate) {
+    SimulationOptions simulation;
+    simulation.seed = args.seed;
+    simulation.perfect = args.simulate_perfect;
+    for (Sequence& s : sequences) SimulateDetections(simulation, &s);
+  } else if (!args.detections.empty() && std::filesystem::path(args.detections).extension() == ".pkl") {
+    // VoxelPose caches are keyed "<camera>_<frame>": they need the sequence to map keys to ids.
+    for (Sequence& s : sequences) {
+      const std::string prefix = s.frames.empty() ? s.name : s.frames.front().id.substr(0, s.frames.front().id.rfind('_'));
+      AttachDetections(ReadVoxelPoseDetections(args.detections, s, prefix), args.detections, &s);
+    }
+  } else if (!args.detections.empty()) {
+    const Detections detections = ReadDetectionsFile(args.detections, DetectionsFileOptions{});
+    int matched = 0;
+    for (Sequence& s : sequences) {
+      // A detections file may cover several sequences: attach what matches each.
+      try {
+        const AttachReport report = AttachDetections(detections, args.detections, &s);
+        matched += report.frames_with_detections;
+      } catch (const InputError& e) {
+        if (sequences.size() == 1) throw;
+      }
+    }
+    if (matched == 0) throw InputError(args.detections + ": no frame id matches the frames of the input");
+  }
+  for (const Sequence& s : sequences) {
+    ValidateSequence(s, s.name);
+    if (!require_detections) continue;
+    bool any = false;
+    for (const SequenceFrame& f : s.frames) any |= !f.views.empty();
+    if (!any) {
+      throw InputError("sequence '" + s.name +
+                       "' has no 2D detections: pass --detections FILE, --simulate, or the dataset's own cache "
+                       "(e.g. --param detections=voxelpose)");
+    }
+  }
+  return sequences;
+}
+
+}  // namespace rpt::cli

@@ -1,0 +1,218 @@
+// SPDX-License-Identifier: MIT
+#include "cli/results_writer.h"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "cli/report.h"
+#include "core/errors.h"
+#include "core/text.h"
+
+namespace rpt::cli {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+Json Number(double value) { return std::isfinite(value) ? Json(value) : Json(nullptr); }
+
+void WriteText(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream out(path);
+  out << text;
+  if (!out) throw InputError(path.string() + ": cannot write");
+}
+
+std::string Cell(const Json& value, int decimals = 1) {
+  if (value.is_null()) return "-";
+  if (value.is_number_integer()) return std::to_string(value.get<long>());
+  if (value.is_number()) {
+    char text[64];
+    std::snprintf(text, sizeof(text), "%.*f", decimals, value.get<double>());
+    return text;
+  }
+  return value.is_string() ? value.get<std::string>() : value.dump();
+}
+
+}  // namespace
+
+const std::vector<SummaryColumn>& SummaryColumns() {
+  static const std::vector<SummaryColumn> columns = {
+      {"pcp", "%", "PCP"},
+      {"pck100", "%", "PCK@100"},
+      {"pck500", "%", "PCK@500"},
+      {"mpjpe_mm", "mm", "MPJPE"},
+      {"recall100", "%", "Recall@100"},
+      {"recall500", "%", "Recall@500"},
+      {"invalid", "%", "Invalid"},
+      {"f1", "%", "F1"},
+      {"fps", "1/s", "FPS"},
+      {"frame_time_us_median", "us", "Time/frame"},
+      {"frames", "count", "Frames"},
+      {"gt_persons", "count", "GT persons"},
+      {"predictions", "count", "Predictions"},
+      {"matches", "count", "Matches"},
+      {"ap25", "%", "AP@25"},
+      {"ap50", "%", "AP@50"},
+      {"ap75", "%", "AP@75"},
+      {"ap100", "%", "AP@100"},
+      {"ap125", "%", "AP@125"},
+      {"ap150", "%", "AP@150"},
+  };
+  return columns;
+}
+
+Json SummaryJson(const RunResult& run) {
+  const metrics::MetricsResult& m = run.metrics;
+  Json j;
+  j["pcp"] = Number(m.pcp);
+  j["pck100"] = Number(m.pck_100);
+  j["pck500"] = Number(m.pck_500);
+  j["mpjpe_mm"] = Number(m.mpjpe_mm);
+  j["recall100"] = Number(m.recall_100);
+  j["recall500"] = Number(m.recall_500);
+  j["invalid"] = Number(m.invalid);
+  j["f1"] = Number(m.f1);
+  j["fps"] = Number(run.timing.fps);
+  j["frame_time_us_median"] = Number(run.timing.frame_us_median);
+  j["frames"] = run.frames;
+  j["gt_persons"] = m.num_gt_persons;
+  j["predictions"] = m.num_predictions;
+  j["matches"] = m.num_matches;
+  for (size_t i = 0; i < metrics::kApThresholdsMm.size(); ++i) {
+    j["ap" + std::to_string(static_cast<int>(metrics::kApThresholdsMm[i]))] = Number(m.ap[i]);
+  }
+  if (!m.wholebody.empty()) {
+    Json groups;
+    for (const auto& g : m.wholebody) groups[g.name] = Number(g.mpjpe_mm);
+    j["wholebody_mpjpe_mm"] = groups;
+  }
+  if (m.legacy_pcp) {
+    j["legacy_pcp"] = Number(m.legacy_pcp->average_pcp);
+  }
+  j["step_time_us_median"] = StepTimesJson(run.timing);
+  Json units;
+  for (const SummaryColumn& c : SummaryColumns()) units[c.key] = c.unit;
+  j["units"] = units;
+  return j;
+}
+
+std::string SummaryCsv(const std::vector<std::pair<std::string, Json>>& rows) {
+  std::ostringstream out;
+  out << "run";
+  for (const SummaryColumn& c : SummaryColumns()) out << "," << c.key;
+  out << "\n";
+  for (const auto& [label, j] : rows) {
+    out << label;
+    for (const SummaryColumn& c : SummaryColumns()) out << "," << (j.contains(c.key) ? Cell(j[c.key], 4) : "");
+    out << "\n";
+  }
+  return out.str();
+}
+
+std::string SummaryMarkdown(const std::vector<std::pair<std::string, Json>>& rows) {
+  static const std::vector<std::string> keys = {"pcp",       "pck100",    "pck500",  "mpjpe_mm", "recall100",
+                                                "recall500", "invalid",   "f1",      "fps",      "frames"};
+  std::ostringstream out;
+  out << "| run |";
+  for (const std::string& key : keys) {
+    for (const SummaryColumn& c : SummaryColumns()) {
+      if (c.key == key) out << " " << c.title << " (" << c.unit << ") |";
+    }
+  }
+  out << "\n|---|";
+  for (size_t i = 0; i < keys.size(); ++i) out << "---|";
+  out << "\n";
+  for (const auto& [label, j] : rows) {
+    out << "| " << label << " |";
+    for (const std::string& key : keys) out << " " << (j.contains(key) ? Cell(j[key], key == "fps" ? 0 : 1) : "-") << " |";
+    out << "\n";
+  }
+  return out.str();
+}
+
+std::string PaperRow(const RunResult& run) {
+  const Json j = SummaryJson(run);
+  char line[512];
+  std::snprintf(line, sizeof(line),
+                "PCP %s | PCK@100/500 %s / %s | MPJPE %s mm | Recall@100/500 %s / %s | Invalid %s | F1 %s | FPS %s",
+                Cell(j["pcp"]).c_str(), Cell(j["pck100"]).c_str(), Cell(j["pck500"]).c_str(),
+                Cell(j["mpjpe_mm"]).c_str(), Cell(j["recall100"]).c_str(), Cell(j["recall500"]).c_str(),
+                Cell(j["invalid"]).c_str(), Cell(j["f1"]).c_str(), Cell(j["fps"], 0).c_str());
+  return line;
+}
+
+void WritePredictions(const std::filesystem::path& path, const std::vector<Sequence>& sequences, const RunResult& run) {
+  FILE* out = std::fopen(path.c_str(), "w");
+  if (out == nullptr) throw InputError(path.string() + ": cannot write");
+  const JointNames& joints = run.sequences.empty() ? JointNames{} : run.sequences.front().output_joints;
+  std::fprintf(out, "{\"joints\": [");
+  for (size_t j = 0; j < joints.size(); ++j) std::fprintf(out, "%s\"%s\"", j ? ", " : "", joints[j].c_str());
+  std::fprintf(out, "],\n\"frames\": [");
+  bool first_frame = true;
+  for (size_t s = 0; s < sequences.size(); ++s) {
+    for (size_t f = 0; f < sequences[s].frames.size(); ++f) {
+      const Poses3D& persons = run.sequences[s].predictions[f];
+      std::fprintf(out, "%s\n{\"id\": %s, \"persons\": [", first_frame ? "" : ",",
+                   Json(sequences[s].frames[f].id).dump().c_str());
+      first_frame = false;
+      for (int p = 0; p < persons.num_persons(); ++p) {
+        const auto person = persons.Person(p);
+        std::fprintf(out, "%s[", p ? ", " : "");
+        for (int j = 0; j < persons.num_joints; ++j) {
+          std::fprintf(out, "%s[%.6f, %.6f, %.6f, %.4f]", j ? ", " : "", person(0, j), person(1, j), person(2, j),
+                       person(3, j));
+        }
+        std::fprintf(out, "]");
+      }
+      std::fprintf(out, "], \"track_ids\": [");
+      for (int p = 0; p < persons.num_persons(); ++p) std::fprintf(out, "%s%d", p ? ", " : "", persons.track_ids[p]);
+      std::fprintf(out, "]}");
+    }
+  }
+  std::fprintf(out, "\n]}\n");
+  const bool failed = std::ferror(out) != 0;
+  std::fclose(out);
+  if (failed) throw InputError(path.string() + ": write failed");
+}
+
+Json RunInfoJson(const RunInfo& info) {
+  Json j;
+  j["git_revision"] = info.git_revision;
+  j["date_utc"] = info.date_utc;
+  j["command"] = info.command_line;
+  j["cpu"] = info.cpu;
+  j["hardware_threads"] = info.hardware_threads;
+  j["threads"] = info.threads;
+  j["compiler"] = info.compiler;
+  j["build_type"] = info.build_type;
+  return j;
+}
+
+void WriteEvalOutputs(const std::filesystem::path& dir, const std::vector<Sequence>& sequences, const RunResult& run,
+                      const Config& config, const RunInfo& info) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw InputError(dir.string() + ": cannot create output folder: " + ec.message());
+  const Json summary = SummaryJson(run);
+  WriteText(dir / "summary.json", summary.dump(2) + "\n");
+  std::string label;
+  for (const Sequence& s : sequences) AppendItem(&label, s.name, "+");
+  if (sequences.size() > 3) label = sequences.front().name + "+" + std::to_string(sequences.size() - 1) + " more";
+  WriteText(dir / "summary.csv", SummaryCsv({{label, summary}}));
+  WriteText(dir / "summary.md", SummaryMarkdown({{label, summary}}) + "\nRevision " + info.git_revision + ", " +
+                                    info.cpu + ", " + std::to_string(info.threads) + " thread(s). Command: `" +
+                                    info.command_line + "`\n");
+  std::ostringstream joints;
+  joints << "joint,mean_error_mm,pck100_pct,count,num_gt\n";
+  for (const auto& row : run.metrics.joints) {
+    joints << row.name << "," << Cell(Number(row.mean_error_mm), 2) << "," << Cell(Number(row.pck_100), 2) << ","
+           << row.count << "," << row.num_gt << "\n";
+  }
+  WriteText(dir / "per_joint.csv", joints.str());
+  WriteText(dir / "config.json", DumpConfig(config, /*with_comments=*/false));
+  WriteText(dir / "run.json", RunInfoJson(info).dump(2) + "\n");
+  WritePredictions(dir / "predictions.json", sequences, run);
+}
+
+}  // namespace rpt::cli

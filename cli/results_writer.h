@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: MIT
+// Result files of an evaluation: summary.{json,csv,md} with fixed columns and units,
+// per_joint.csv, the resolved config.json, run.json (revision, machine, threads) and
+// predictions.json (3D persons of every frame).
+#pragma once
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "cli/config.h"
+#include "cli/run_info.h"
+#include "cli/run_sequence.h"
+#include "datasets/sequence.h"
+
+namespace rpt::cli {
+
+// A result column: JSON key, unit and how to read it from a run.
+struct SummaryColumn {
+  std::string key;   // JSON key and CSV header, e.g. "mpjpe_mm"
+  std::string unit;  // "%", "mm", "1/s", "us", "count"
+  std::string title; // paper-style column title
+};
+const std::vector<SummaryColumn>& SummaryColumns();
+
+// The summary of a run as one JSON object with SummaryColumns() keys (NaN -> null), plus
+// "wholebody_mpjpe_mm" and "legacy_pcp" when available and "step_time_us_median".
+nlohmann::ordered_json SummaryJson(const RunResult& run);
+
+// CSV / Markdown tables with one row per (label, summary).
+std::string SummaryCsv(const std::vector<std::pair<std::string, nlohmann::ordered_json>>& rows);
+std::string SummaryMarkdown(const std::vector<std::pair<std::string, nlohmann::ordered_json>>& rows);
+
+// The paper-style row printed on the terminal: PCP | PCK@100/500 | MPJPE | Recall@100/500 | Invalid | F1 | FPS.
+std::string PaperRow(const RunResult& run);
+
+// predictions.json: {"joints": [...], "frames": [{"id", "persons": [[[x,y,z,score],...],...], "track_ids": [...]}]}
+void WritePredictions(const std::filesystem::path& path, const std::vector<Sequence>& sequences, const RunResult& run);
+
+// Everything above into `dir` (created). Throws InputError when the folder cannot be written.
+void WriteEvalOutputs(const std::filesystem::path& dir, const std::vector<Sequence>& sequences, const RunResult& run,
+                      const Config& config, const RunInfo& info);
+
+nlohmann::ordered_json RunInfoJson(const RunInfo& info);
+
+}  // namespace rpt::cli

@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: MIT
+#include "cli/run_info.h"
+
+#include <ctime>
+#include <fstream>
+#include <string>
+#include <thread>
+
+#include "git_revision.h"
+
+namespace rpt::cli {
+namespace {
+
+std::string CpuModel() {
+  std::ifstream in("/proc/cpuinfo");
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("model name", 0) == 0) {
+      const size_t colon = line.find(':');
+      if (colon != std::string::npos) return line.substr(line.find_first_not_of(" \t", colon + 1));
+    }
+  }
+  return "unknown";
+}
+
+std::string& StoredCommandLine() {
+  static std::string command_line;
+  return command_line;
+}
+
+}  // namespace
+
+RunInfo CollectRunInfo(int threads, const std::string& command_line) {
+  RunInfo info;
+  info.git_revision = RPT_GIT_REVISION;
+  info.cpu = CpuModel();
+  info.hardware_threads = static_cast<int>(std::thread::hardware_concurrency());
+  info.threads = threads;
+#if defined(__clang__)
+  info.compiler = "clang " __clang_version__;
+#elif defined(__GNUC__)
+  info.compiler = "g++ " __VERSION__;
+#endif
+  info.build_type = RPT_BUILD_TYPE;
+  info.command_line = command_line;
+  char date[32];
+  const std::time_t now = std::time(nullptr);
+  std::strftime(date, sizeof(date), "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
+  info.date_utc = date;
+  return info;
+}
+
+std::string CommandLine(int argc, char** argv) {
+  std::string out = "rpt";
+  for (int i = 1; i < argc; ++i) out += std::string(" ") + argv[i];
+  return out;
+}
+
+void SetCommandLine(const std::string& command_line) { StoredCommandLine() = command_line; }
+const std::string& CurrentCommandLine() { return StoredCommandLine(); }
+
+}  // namespace rpt::cli

@@ -1,0 +1,249 @@
+// SPDX-License-Identifier: MIT
+// `rpt sweep`: one evaluation per configuration (a list, or the grid of --grid options), run in
+// parallel across configurations with OpenMP, one row per configuration in sweep.{csv,md,json}.
+// `--shard k/N` runs every N-th configuration starting at k (1-based) so a sweep can be split
+// across machines; `rpt merge` joins the shard files (docs/sweeps.md shows a Slurm array job).
+#include <atomic>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <mutex>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include "cli/commands.h"
+#include "cli/config_args.h"
+#include "cli/load_input.h"
+#include "cli/progress.h"
+#include "cli/results_writer.h"
+#include "cli/run_info.h"
+#include "cli/run_sequence.h"
+#include "core/errors.h"
+#include "core/text.h"
+#include "datasets/dataset_request.h"
+#include "datasets/io/json_file.h"
+
+namespace rpt::cli {
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::ordered_json;
+
+struct Variant {
+  std::string name;
+  std::vector<std::pair<std::string, std::string>> overrides;  // key, value
+};
+
+struct SweepArgs {
+  InputArgs input;
+  ConfigArgs config;
+  std::vector<std::string> grid;  // key=v1,v2,...
+  std::string list;               // JSON file
+  std::string shard = "1/1";
+  std::string out = "out/sweep";
+  int threads = 0;
+};
+
+std::string AsText(const nlohmann::json& v) { return v.is_string() ? v.get<std::string>() : v.dump(); }
+
+std::vector<Variant> ReadList(const std::string& path) {
+  const nlohmann::json root = io::LoadJsonFile(path);
+  const nlohmann::json& items = root.is_object() ? root.value("configurations", nlohmann::json()) : root;
+  if (!items.is_array()) throw InputError(path + ": expected a list or {\"configurations\": [...]}");
+  std::vector<Variant> variants;
+  for (size_t i = 0; i < items.size(); ++i) {
+    const std::string where = path + ": /configurations/" + std::to_string(i);
+    if (!items[i].is_object()) throw InputError(where + ": expected {\"name\", \"set\"}");
+    Variant v;
+    v.name = items[i].value("name", "config " + std::to_string(i));
+    const nlohmann::json set = items[i].value("set", nlohmann::json::object());  // items() must not outlive it
+    for (const auto& [key, value] : set.items()) {
+      v.overrides.emplace_back(key, AsText(value));
+    }
+    variants.push_back(v);
+  }
+  return variants;
+}
+
+std::vector<Variant> ExpandGrid(const std::vector<std::string>& grid) {
+  std::vector<Variant> variants = {Variant{}};
+  for (const std::string& axis : grid) {
+    const size_t eq = axis.find('=');
+    if (eq == std::string::npos) throw ConfigError("--grid " + axis + ": expected key=value1,value2,...");
+    const std::string key = axis.substr(0, eq);
+    const std::vector<std::string> values = SplitList(axis.substr(eq + 1));
+    if (values.empty()) throw ConfigError("--grid " + axis + ": no values");
+    std::vector<Variant> next;
+    for (const Variant& v : variants) {
+      for (const std::string& value : values) {
+        Variant w = v;
+        w.overrides.emplace_back(key, value);
+        next.push_back(w);
+      }
+    }
+    variants = next;
+  }
+  for (Variant& v : variants) {
+    for (const auto& [key, value] : v.overrides) AppendItem(&v.name, key + "=" + value, " ");
+    if (v.name.empty()) v.name = "default";
+  }
+  return variants;
+}
+
+std::pair<int, int> ParseShard(const std::string& text) {
+  int k = 0, n = 0;
+  char extra = 0;
+  if (std::sscanf(text.c_str(), "%d/%d%c", &k, &n, &extra) != 2 || n < 1 || k < 1 || k > n) {
+    throw ConfigError("--shard " + text + ": expected k/N with 1 <= k <= N");
+  }
+  return {k, n};
+}
+
+void WriteTables(const fs::path& dir, const Json& rows, const std::string& stem) {
+  std::vector<std::pair<std::string, Json>> table;
+  for (const Json& row : rows) table.emplace_back(row["name"].get<std::string>(), row["summary"]);
+  std::ofstream(dir / (stem + ".csv")) << SummaryCsv(table);
+  std::ofstream(dir / (stem + ".md")) << SummaryMarkdown(table);
+}
+
+void RunSweep(const SweepArgs& args) {
+  if (args.grid.empty() == args.list.empty()) throw ConfigError("give either --grid key=v1,v2 (repeatable) or --list FILE");
+  const std::vector<Variant> all = args.list.empty() ? ExpandGrid(args.grid) : ReadList(args.list);
+  const auto [shard, shards] = ParseShard(args.shard);
+  std::vector<int> mine;
+  for (int i = shard - 1; i < static_cast<int>(all.size()); i += shards) mine.push_back(i);
+
+  // Resolve every configuration before running anything: a typo fails fast.
+  std::vector<Config> configs;
+  for (int i : mine) {
+    ConfigArgs config_args = args.config;
+    for (const auto& [key, value] : all[i].overrides) config_args.overrides.push_back(key + "=" + value);
+    configs.push_back(ResolveConfig(config_args));
+  }
+  const std::vector<Sequence> sequences = LoadInput(args.input, true);
+
+  std::vector<Json> summaries(mine.size());
+  std::exception_ptr error;
+  std::mutex error_mutex;
+  std::atomic<long> done{0};
+  Progress progress("sweep", static_cast<long>(mine.size()));
+  const int count = static_cast<int>(mine.size());
+#ifdef _OPENMP
+  const int threads = args.threads > 0 ? args.threads : omp_get_max_threads();
+#pragma omp parallel for schedule(dynamic) num_threads(threads)
+#else
+  const int threads = 1;
+#endif
+  for (int c = 0; c < count; ++c) {
+    try {
+      RunOptions options;
+      options.triangulator = configs[c].triangulator;
+      options.eval = configs[c].metrics;
+      options.progress = false;
+      options.threads = 1;
+      summaries[c] = SummaryJson(RunSequences(sequences, options));
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(error_mutex);
+      if (!error) error = std::current_exception();
+    }
+    const long finished = ++done;
+#ifdef _OPENMP
+    if (omp_get_thread_num() == 0) progress.Update(finished);
+#else
+    progress.Update(finished);
+#endif
+  }
+  if (error) std::rethrow_exception(error);
+
+  Json rows = Json::array();
+  for (int c = 0; c < count; ++c) {
+    Json set = Json::object();
+    for (const auto& [key, value] : all[mine[c]].overrides) set[key] = value;
+    rows.push_back({{"index", mine[c]}, {"name", all[mine[c]].name}, {"set", set}, {"summary", summaries[c]}});
+  }
+  std::error_code ec;
+  fs::create_directories(args.out, ec);
+  if (ec) throw InputError(args.out + ": cannot create output folder: " + ec.message());
+  Json file;
+  file["total"] = all.size();
+  file["shard"] = args.shard;
+  file["run"] = RunInfoJson(CollectRunInfo(threads, CurrentCommandLine()));
+  file["rows"] = rows;
+  const std::string stem = shards == 1 ? "sweep" : "sweep-shard-" + std::to_string(shard) + "-of-" + std::to_string(shards);
+  std::ofstream(fs::path(args.out) / (stem + ".json")) << file.dump(2) << "\n";
+  WriteTables(args.out, rows, stem);
+  std::cout << SummaryMarkdown([&] {
+    std::vector<std::pair<std::string, Json>> table;
+    for (const Json& row : rows) table.emplace_back(row["name"].get<std::string>(), row["summary"]);
+    return table;
+  }());
+  std::printf("%d of %zu configurations; tables in %s/%s.{json,csv,md}\n", count, all.size(), args.out.c_str(), stem.c_str());
+}
+
+void RunMerge(const std::vector<std::string>& inputs, const std::string& out) {
+  std::map<int, Json> by_index;
+  size_t total = 0;
+  for (const std::string& path : inputs) {
+    const nlohmann::json shard = io::LoadJsonFile(path);
+    if (!shard.contains("rows") || !shard.contains("total")) throw InputError(path + ": not a sweep shard file");
+    if (total != 0 && shard["total"].get<size_t>() != total) {
+      throw InputError(path + ": belongs to a sweep of " + std::to_string(shard["total"].get<size_t>()) +
+                       " configurations, the others to " + std::to_string(total));
+    }
+    total = shard["total"].get<size_t>();
+    for (const auto& row : shard["rows"]) {
+      const int index = row["index"].get<int>();
+      if (!by_index.emplace(index, Json::parse(row.dump())).second) {
+        throw InputError(path + ": configuration " + std::to_string(index) + " appears in two shard files");
+      }
+    }
+  }
+  std::string missing;
+  for (size_t i = 0; i < total; ++i) {
+    if (!by_index.count(static_cast<int>(i))) AppendItem(&missing, std::to_string(i));
+  }
+  if (!missing.empty()) throw InputError("merge: configurations missing (shard files absent?): " + missing);
+  Json rows = Json::array();
+  for (auto& [index, row] : by_index) rows.push_back(row);
+  std::error_code ec;
+  fs::create_directories(out, ec);
+  if (ec) throw InputError(out + ": cannot create output folder: " + ec.message());
+  Json file;
+  file["total"] = total;
+  file["shard"] = "1/1";
+  file["rows"] = rows;
+  std::ofstream(fs::path(out) / "sweep.json") << file.dump(2) << "\n";
+  WriteTables(out, rows, "sweep");
+  std::printf("merged %zu configurations from %zu shard files into %s/sweep.{json,csv,md}\n", total, inputs.size(),
+              out.c_str());
+}
+
+}  // namespace
+
+void RegisterSweepCommand(CLI::App& app) {
+  auto args = std::make_shared<SweepArgs>();
+  CLI::App* command = app.add_subcommand("sweep", "Evaluate a list or grid of configurations, one row each");
+  AddInputOptions(command, &args->input);
+  AddConfigOptions(command, &args->config);
+  command->add_option("--grid", args->grid, "key=v1,v2,... (repeatable; the product of all axes)")->take_all();
+  command->add_option("--list", args->list, "JSON list of {\"name\", \"set\": {key: value}} (e.g. results/ablations.json)");
+  command->add_option("--shard", args->shard, "k/N: run configurations k, k+N, ... (1-based)")->capture_default_str();
+  command->add_option("--out", args->out, "output folder")->capture_default_str();
+  command->add_option("--threads", args->threads, "configurations in parallel (default: all cores)");
+  command->callback([args] { RunSweep(*args); });
+}
+
+void RegisterMergeCommand(CLI::App& app) {
+  auto inputs = std::make_shared<std::vector<std::string>>();
+  auto out = std::make_shared<std::string>("out/sweep");
+  CLI::App* command = app.add_subcommand("merge", "Join the shard files of a sharded sweep into one table");
+  command->add_option("shards", *inputs, "sweep-shard-*.json files")->required();
+  command->add_option("--out", *out, "output folder")->capture_default_str();
+  command->callback([inputs, out] { RunMerge(*inputs, *out); });
+}
+
+}  // namespace rpt::cli

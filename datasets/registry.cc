@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: MIT
+#include "datasets/registry.h"
+
+#include "core/errors.h"
+#include "core/text.h"
+#include "datasets/readers/generic_labels.h"
+#include "datasets/readers/panoptic.h"
+#include "datasets/readers/shelf_campus.h"
+#include "datasets/readers/synthetic_dataset.h"
+
+namespace rpt {
+
+const std::vector<DatasetEntry>& DatasetRegistry() {
+  static const std::vector<DatasetEntry> entries = {
+      {ShelfInfo(), ReadShelf},
+      {CampusInfo(), ReadCampus},
+      {PanopticInfo(), ReadPanoptic},
+      {GenericInfo(), ReadGeneric},
+      {SyntheticInfo(), ReadSynthetic},
+  };
+  return entries;
+}
+
+std::vector<Sequence> ReadDataset(const DatasetRequest& request) {
+  std::string known;
+  for (const DatasetEntry& entry : DatasetRegistry()) {
+    if (entry.info.name == request.dataset) return entry.read(request);
+    AppendItem(&known, entry.info.name);
+  }
+  throw ConfigError("unknown dataset '" + request.dataset + "' (known: " + known + "; see `rpt datasets`)");
+}
+
+}  // namespace rpt

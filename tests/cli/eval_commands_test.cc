@@ -1,0 +1,127 @@
+// SPDX-License-Identifier: MIT
+// rpt eval / check / sweep / merge end to end on the built-in synthetic dataset.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "tests/cli/cli_test_util.h"
+
+namespace rpt {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path TempDir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("rpt_cli_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  return dir;
+}
+
+nlohmann::json ReadJson(const fs::path& path) { return nlohmann::json::parse(test::ReadAll(path)); }
+
+TEST(EvalCommand, SyntheticRunWritesEveryOutput) {
+  const fs::path out = TempDir("eval");
+  const test::CommandResult r =
+      test::RunRpt("eval --dataset synthetic --param frames=40 --param people=3 --out " + out.string() + " --json --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json summary = nlohmann::json::parse(r.out);
+  for (const char* key : {"pcp", "pck100", "pck500", "mpjpe_mm", "recall100", "recall500", "invalid", "f1", "fps", "frames"}) {
+    EXPECT_TRUE(summary.contains(key)) << key;
+  }
+  EXPECT_EQ(summary["frames"], 40);
+  EXPECT_GT(summary["recall500"].get<double>(), 99.0);
+  for (const char* file : {"summary.json", "summary.csv", "summary.md", "per_joint.csv", "config.json", "run.json",
+                           "predictions.json"}) {
+    EXPECT_TRUE(fs::exists(out / file)) << file;
+  }
+  const nlohmann::json predictions = ReadJson(out / "predictions.json");
+  ASSERT_EQ(predictions["frames"].size(), 40u);
+  EXPECT_EQ(predictions["joints"].size(), 20u);
+  EXPECT_EQ(predictions["frames"][0]["id"], "synthetic_000000");
+  EXPECT_EQ(predictions["frames"][5]["persons"].size(), predictions["frames"][5]["track_ids"].size());
+  EXPECT_EQ(predictions["frames"][5]["persons"][0][0].size(), 4u) << "x, y, z, score";
+  const nlohmann::json run = ReadJson(out / "run.json");
+  EXPECT_TRUE(run.contains("git_revision"));
+  EXPECT_TRUE(run.contains("cpu"));
+  EXPECT_EQ(ReadJson(out / "summary.json")["f1"], summary["f1"]);
+  EXPECT_NE(test::ReadAll(out / "per_joint.csv").find("wrist_left"), std::string::npos);
+  fs::remove_all(out);
+}
+
+TEST(EvalCommand, BadInputExitsWith2AndNamesTheProblem) {
+  const test::CommandResult unknown = test::RunRpt("eval --dataset nosuch --quiet");
+  EXPECT_EQ(unknown.exit_code, 2);
+  EXPECT_NE(unknown.err.find("unknown dataset 'nosuch'"), std::string::npos) << unknown.err;
+  const test::CommandResult param = test::RunRpt("eval --dataset synthetic --param camras=3 --quiet");
+  EXPECT_EQ(param.exit_code, 2);
+  EXPECT_NE(param.err.find("camras"), std::string::npos) << param.err;
+  const test::CommandResult labels = test::RunRpt("eval --labels /nonexistent/labels.json --simulate --quiet");
+  EXPECT_EQ(labels.exit_code, 2);
+  EXPECT_NE(labels.err.find("/nonexistent/labels.json"), std::string::npos) << labels.err;
+  EXPECT_EQ(test::RunRpt("eval --quiet").exit_code, 2) << "neither --dataset nor --labels";
+}
+
+TEST(CheckCommand, PassesAtAchievedFloorsAndFailsAboveThem) {
+  const fs::path dir = TempDir("check");
+  fs::create_directories(dir);
+  auto write = [&](const std::string& name, double floor) {
+    std::ofstream(dir / name) << R"({"evaluations": [{"name": "tiny", "dataset": "synthetic",
+        "params": {"frames": 30, "people": 2}, "min": {"recall500": )" << floor << R"(}, "max": {"mpjpe_mm": 40}},
+        {"name": "absent data", "dataset": "shelf", "root": "no/such/folder", "simulate": true, "min": {"pcp": 1}}]})";
+  };
+  write("pass.json", 90.0);
+  write("fail.json", 100.1);
+  const test::CommandResult pass = test::RunRpt("check --thresholds " + (dir / "pass.json").string());
+  EXPECT_EQ(pass.exit_code, 0) << pass.out << pass.err;
+  EXPECT_NE(pass.out.find("skipped"), std::string::npos);
+  const test::CommandResult fail = test::RunRpt("check --thresholds " + (dir / "fail.json").string());
+  EXPECT_EQ(fail.exit_code, 1) << fail.out << fail.err;
+  EXPECT_NE(fail.out.find("FAILED"), std::string::npos);
+  std::ofstream(dir / "bad.json") << R"({"evaluations": [{"name": "x", "dataset": "synthetic", "min": {"nonsense": 1}}]})";
+  EXPECT_EQ(test::RunRpt("check --thresholds " + (dir / "bad.json").string()).exit_code, 2);
+  fs::remove_all(dir);
+}
+
+TEST(SweepCommand, TwoConfigurationsGiveTwoRowsThatDifferWhereTheOptionMatters) {
+  const fs::path out = TempDir("sweep");
+  const test::CommandResult r = test::RunRpt("sweep --dataset synthetic --param frames=30 --grid merge.top_k=0,2 --out " +
+                                             out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json sweep = ReadJson(out / "sweep.json");
+  ASSERT_EQ(sweep["rows"].size(), 2u);
+  EXPECT_EQ(sweep["rows"][0]["set"]["merge.top_k"], "0");
+  EXPECT_NE(sweep["rows"][0]["summary"]["mpjpe_mm"], sweep["rows"][1]["summary"]["mpjpe_mm"]);
+  EXPECT_EQ(sweep["rows"][0]["summary"]["recall500"], sweep["rows"][1]["summary"]["recall500"]);
+  EXPECT_TRUE(fs::exists(out / "sweep.csv"));
+  EXPECT_TRUE(fs::exists(out / "sweep.md"));
+  EXPECT_EQ(test::RunRpt("sweep --dataset synthetic --grid merge.topk=1,2 --out " + out.string()).exit_code, 2);
+  fs::remove_all(out);
+}
+
+TEST(SweepCommand, ShardsMergeIntoTheFullTable) {
+  const fs::path out = TempDir("shards");
+  const std::string grid = "--dataset synthetic --param frames=20 --grid filter.min_match_score=0.8,0.9,0.95 --out " + out.string();
+  const test::CommandResult full = test::RunRpt("sweep " + grid);
+  ASSERT_EQ(full.exit_code, 0) << full.err;
+  const nlohmann::json whole = ReadJson(out / "sweep.json");
+  ASSERT_EQ(test::RunRpt("sweep " + grid + " --shard 1/2").exit_code, 0);
+  ASSERT_EQ(test::RunRpt("sweep " + grid + " --shard 2/2").exit_code, 0);
+  EXPECT_EQ(ReadJson(out / "sweep-shard-1-of-2.json")["rows"].size(), 2u);
+  EXPECT_EQ(test::RunRpt("merge " + (out / "sweep-shard-1-of-2.json").string() + " --out " + (out / "m1").string()).exit_code, 2)
+      << "a missing shard is an error";
+  const test::CommandResult merged = test::RunRpt("merge " + (out / "sweep-shard-1-of-2.json").string() + " " +
+                                                  (out / "sweep-shard-2-of-2.json").string() + " --out " + (out / "m").string());
+  ASSERT_EQ(merged.exit_code, 0) << merged.err;
+  const nlohmann::json joined = ReadJson(out / "m" / "sweep.json");
+  ASSERT_EQ(joined["rows"].size(), 3u);
+  for (size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(joined["rows"][i]["name"], whole["rows"][i]["name"]);
+    EXPECT_EQ(joined["rows"][i]["summary"]["mpjpe_mm"], whole["rows"][i]["summary"]["mpjpe_mm"]);
+  }
+  fs::remove_all(out);
+}
+
+}  // namespace
+}  // namespace rpt
