@@ -3,7 +3,10 @@
 
 #include "core/errors.h"
 #include "core/text.h"
+#include "datasets/readers/egohumans.h"
 #include "datasets/readers/generic_labels.h"
+#include "datasets/readers/h3wb.h"
+#include "datasets/readers/human36m.h"
 #include "datasets/readers/panoptic.h"
 #include "datasets/readers/shelf_campus.h"
 #include "datasets/readers/synthetic_dataset.h"
@@ -15,6 +18,9 @@ const std::vector<DatasetEntry>& DatasetRegistry() {
       {ShelfInfo(), ReadShelf},
       {CampusInfo(), ReadCampus},
       {PanopticInfo(), ReadPanoptic},
+      {Human36mInfo(), ReadHuman36m},
+      {H3wbInfo(), ReadH3wb},
+      {EgohumansInfo(), ReadEgohumans},
       {GenericInfo(), ReadGeneric},
       {SyntheticInfo(), ReadSynthetic},
   };

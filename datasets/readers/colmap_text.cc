@@ -1,0 +1,199 @@
+// SPDX-License-Identifier: MIT
+#include "datasets/readers/colmap_text.h"
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "core/errors.h"
+
+namespace rpt {
+namespace {
+
+// Whitespace-separated tokens of a line.
+std::vector<std::string> Tokens(const std::string& line) {
+  std::vector<std::string> out;
+  std::istringstream s(line);
+  s.imbue(std::locale::classic());
+  std::string token;
+  while (s >> token) out.push_back(token);
+  return out;
+}
+
+std::string Trim(const std::string& line) {
+  const std::size_t first = line.find_first_not_of(" \t\r\n");
+  if (first == std::string::npos) return {};
+  const std::size_t last = line.find_last_not_of(" \t\r\n");
+  return line.substr(first, last - first + 1);
+}
+
+std::string Where(const std::string& source, int line) { return source + ":" + std::to_string(line); }
+
+double ParseDouble(const std::string& token, const std::string& what, const std::string& where) {
+  double value = 0;
+  const char* first = token.data();
+  const char* last = token.data() + token.size();
+  if (first != last && *first == '+') ++first;
+  const auto [ptr, ec] = std::from_chars(first, last, value);
+  if (ec != std::errc() || ptr != last) throw InputError(where + ": " + what + " '" + token + "' is not a number");
+  if (!std::isfinite(value)) throw InputError(where + ": " + what + " is NaN or infinite");
+  return value;
+}
+
+int ParseInt(const std::string& token, const std::string& what, const std::string& where) {
+  int value = 0;
+  const auto [ptr, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
+  if (ec != std::errc() || ptr != token.data() + token.size()) {
+    throw InputError(where + ": " + what + " '" + token + "' is not an integer");
+  }
+  return value;
+}
+
+std::ifstream OpenOrThrow(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path.string() + ": file not found or unreadable");
+  return in;
+}
+
+}  // namespace
+
+std::vector<ColmapCamera> ParseColmapCamerasText(std::istream& in, const std::string& source) {
+  std::vector<ColmapCamera> out;
+  std::set<int> ids;
+  std::string raw;
+  int line_number = 0;
+  while (std::getline(in, raw)) {
+    ++line_number;
+    const std::string line = Trim(raw);
+    if (line.empty() || line[0] == '#') continue;
+    const std::string where = Where(source, line_number);
+    const auto tokens = Tokens(line);
+    if (tokens.size() < 4) throw InputError(where + ": expected CAMERA_ID MODEL WIDTH HEIGHT PARAMS...");
+    ColmapCamera camera;
+    camera.line = line_number;
+    camera.camera_id = ParseInt(tokens[0], "CAMERA_ID", where);
+    camera.model = tokens[1];
+    camera.width = ParseInt(tokens[2], "WIDTH", where);
+    camera.height = ParseInt(tokens[3], "HEIGHT", where);
+    if (camera.width <= 0 || camera.height <= 0) throw InputError(where + ": image size must be positive");
+    for (std::size_t i = 4; i < tokens.size(); ++i) {
+      camera.params.push_back(ParseDouble(tokens[i], "parameter " + std::to_string(i - 4), where));
+    }
+    if (!ids.insert(camera.camera_id).second) throw InputError(where + ": duplicate CAMERA_ID " + tokens[0]);
+    out.push_back(std::move(camera));
+  }
+  return out;
+}
+
+std::vector<ColmapImage> ParseColmapImagesText(std::istream& in, const std::string& source) {
+  std::vector<ColmapImage> out;
+  std::set<int> ids;
+  std::string raw;
+  int line_number = 0;
+  while (std::getline(in, raw)) {
+    ++line_number;
+    const std::string line = Trim(raw);
+    if (line.empty() || line[0] == '#') continue;
+    const std::string where = Where(source, line_number);
+    const auto tokens = Tokens(line);
+    if (tokens.size() < 10) throw InputError(where + ": expected IMAGE_ID QW QX QY QZ TX TY TZ CAMERA_ID NAME");
+    ColmapImage image;
+    image.line = line_number;
+    image.image_id = ParseInt(tokens[0], "IMAGE_ID", where);
+    for (int i = 0; i < 4; ++i) image.qvec_wxyz[i] = ParseDouble(tokens[1 + static_cast<std::size_t>(i)], "quaternion", where);
+    for (int i = 0; i < 3; ++i) image.tvec[i] = ParseDouble(tokens[5 + static_cast<std::size_t>(i)], "translation", where);
+    image.camera_id = ParseInt(tokens[8], "CAMERA_ID", where);
+    // NAME is the rest of the line (COLMAP allows spaces in image names).
+    std::size_t pos = 0;
+    for (int i = 0; i < 9; ++i) {
+      pos = line.find_first_not_of(" \t", pos);
+      pos = line.find_first_of(" \t", pos);
+    }
+    image.name = Trim(line.substr(pos));
+    const double norm = image.qvec_wxyz.norm();
+    if (!(std::abs(norm - 1.0) <= 1e-3)) {
+      std::ostringstream msg;
+      msg << where << ": quaternion (" << tokens[1] << ", " << tokens[2] << ", " << tokens[3] << ", " << tokens[4]
+          << ") has norm " << norm << ", expected a unit quaternion";
+      throw InputError(msg.str());
+    }
+    image.qvec_wxyz /= norm;
+    if (!ids.insert(image.image_id).second) throw InputError(where + ": duplicate IMAGE_ID " + tokens[0]);
+    out.push_back(std::move(image));
+    // The POINTS2D line always follows (possibly empty): (X, Y, POINT3D_ID) triples.
+    if (std::getline(in, raw)) {
+      ++line_number;
+      if (Tokens(raw).size() % 3 != 0) {
+        throw InputError(Where(source, line_number) + ": expected the POINTS2D line of image " + tokens[0] +
+                         " (X Y POINT3D_ID triples)");
+      }
+    }
+  }
+  return out;
+}
+
+std::vector<ColmapCamera> ReadColmapCamerasText(const std::filesystem::path& path) {
+  std::ifstream in = OpenOrThrow(path);
+  return ParseColmapCamerasText(in, path.string());
+}
+
+std::vector<ColmapImage> ReadColmapImagesText(const std::filesystem::path& path) {
+  std::ifstream in = OpenOrThrow(path);
+  return ParseColmapImagesText(in, path.string());
+}
+
+Eigen::Matrix3d ColmapQuaternionToRotation(const Eigen::Vector4d& q) {
+  const double w = q[0], x = q[1], y = q[2], z = q[3];
+  Eigen::Matrix3d R;
+  R << 1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y),  //
+      2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x),   //
+      2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y);
+  return R;
+}
+
+Camera ColmapCameraToCamera(const ColmapCamera& colmap, const std::string& source) {
+  const std::string where = Where(source, colmap.line) + ": camera " + std::to_string(colmap.camera_id) + " (" + colmap.model + ")";
+  const std::vector<double>& p = colmap.params;
+  auto expect = [&](std::size_t n) {
+    if (p.size() != n) {
+      throw InputError(where + ": expected " + std::to_string(n) + " parameters, got " + std::to_string(p.size()));
+    }
+  };
+  Camera camera;
+  camera.width = colmap.width;
+  camera.height = colmap.height;
+  double fx = 0, fy = 0, cx = 0, cy = 0;
+  if (colmap.model == "SIMPLE_PINHOLE") {
+    expect(3);
+    fx = fy = p[0], cx = p[1], cy = p[2];
+  } else if (colmap.model == "PINHOLE") {
+    expect(4);
+    fx = p[0], fy = p[1], cx = p[2], cy = p[3];
+  } else if (colmap.model == "SIMPLE_RADIAL" || colmap.model == "RADIAL") {
+    expect(colmap.model == "RADIAL" ? 5 : 4);
+    fx = fy = p[0], cx = p[1], cy = p[2];
+    camera.model = DistortionModel::kOpenCV;
+    camera.dist = {p[3], colmap.model == "RADIAL" ? p[4] : 0.0, 0, 0, 0};
+  } else if (colmap.model == "OPENCV" || colmap.model == "FULL_OPENCV") {
+    expect(colmap.model == "OPENCV" ? 8 : 12);
+    if (colmap.model == "FULL_OPENCV" && (p[9] != 0 || p[10] != 0 || p[11] != 0)) {
+      throw InputError(where + ": rational distortion (k4..k6 != 0) is not supported");
+    }
+    fx = p[0], fy = p[1], cx = p[2], cy = p[3];
+    camera.model = DistortionModel::kOpenCV;
+    camera.dist = {p[4], p[5], p[6], p[7], colmap.model == "FULL_OPENCV" ? p[8] : 0.0};
+  } else if (colmap.model == "OPENCV_FISHEYE") {
+    expect(8);
+    fx = p[0], fy = p[1], cx = p[2], cy = p[3];
+    camera.model = DistortionModel::kFisheye;
+    camera.dist = {p[4], p[5], p[6], p[7], 0.0};
+  } else {
+    throw InputError(where + ": unsupported camera model");
+  }
+  camera.K << fx, 0, cx, 0, fy, cy, 0, 0, 1;
+  return camera;
+}
+
+}  // namespace rpt

@@ -1,0 +1,391 @@
+// SPDX-License-Identifier: MIT
+#include "datasets/readers/egohumans.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <map>
+#include <optional>
+#include <sstream>
+
+#include "core/errors.h"
+#include "datasets/io/npy.h"
+#include "datasets/io/pickle.h"
+#include "datasets/readers/colmap_text.h"
+#include "datasets/readers/h36m_ego_common.h"
+
+namespace rpt {
+namespace {
+
+namespace fs = std::filesystem;
+using h36m_ego::PathName;
+
+constexpr int kAriaImageSize = 1408;  // egohumans: any other COLMAP camera size is an exo camera
+constexpr int kBodyJoints = 17;
+constexpr int kWholeBodyJoints = 133;
+
+struct Options {
+  fs::path root;
+  std::vector<std::string> sequences;  // empty = all
+  std::vector<std::string> cameras;    // empty = all exo cameras
+  std::string anchor = "aria01";
+  std::string gt = "poses3d";
+  bool detections = false;
+  int every = 1;
+  int max_frames = 0;
+  double fps = 20.0;
+};
+
+struct SequenceDir {
+  fs::path path;
+  std::string big;  // e.g. "01_tagging"
+  std::string seq;  // e.g. "001_tagging"
+};
+
+Options ParseOptions(const DatasetRequest& request) {
+  const DatasetInfo info = EgohumansInfo();
+  request.CheckParams(info);
+  Options o;
+  o.root = request.root;
+  o.sequences = SplitList(request.Param(info, "sequences"));
+  o.cameras = SplitList(request.Param(info, "cameras"));
+  o.anchor = request.Param(info, "anchor");
+  o.gt = request.Param(info, "gt");
+  if (o.gt != "poses3d" && o.gt != "refine_poses3d" && o.gt != "fit_poses3d") {
+    throw ConfigError("egohumans: gt: '" + o.gt + "' is not one of poses3d, refine_poses3d, fit_poses3d");
+  }
+  const std::string detections = request.Param(info, "detections");
+  if (detections != "none" && detections != "cache") throw ConfigError("egohumans: detections: '" + detections + "' is not one of none, cache");
+  o.detections = detections == "cache";
+  o.every = h36m_ego::ParseIntParam(request.Param(info, "every"), "egohumans: every", 1);
+  o.max_frames = h36m_ego::ParseIntParam(request.Param(info, "max_frames"), "egohumans: max_frames", 0);
+  const std::string fps = request.Param(info, "fps");
+  double value = 0;
+  const auto [ptr, ec] = std::from_chars(fps.data(), fps.data() + fps.size(), value);
+  if (fps.empty() || ec != std::errc() || ptr != fps.data() + fps.size() || !(value > 0) || !std::isfinite(value)) {
+    throw ConfigError("egohumans: fps: '" + fps + "' is not a positive number");
+  }
+  o.fps = value;
+  return o;
+}
+
+bool IsSequenceDir(const fs::path& p) { return fs::is_directory(p / "colmap" / "workplace"); }
+
+std::vector<fs::path> SortedSubdirs(const fs::path& dir) {
+  std::vector<fs::path> out;
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    if (entry.is_directory()) out.push_back(entry.path());
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// The sequence directories under root: root itself, root/<seq>, or root/<big>/<seq>.
+std::vector<SequenceDir> FindSequences(const Options& options) {
+  fs::path root = options.root.lexically_normal();
+  if (root.filename().empty()) root = root.parent_path();
+  if (!fs::is_directory(root)) throw InputError(PathName(options.root) + ": not a directory");
+  std::vector<SequenceDir> all;
+  if (IsSequenceDir(root)) {
+    all.push_back({root, root.parent_path().filename().string(), root.filename().string()});
+  } else {
+    for (const fs::path& a : SortedSubdirs(root)) {
+      if (IsSequenceDir(a)) {
+        all.push_back({a, root.filename().string(), a.filename().string()});
+        continue;
+      }
+      for (const fs::path& b : SortedSubdirs(a)) {
+        if (IsSequenceDir(b)) all.push_back({b, a.filename().string(), b.filename().string()});
+      }
+    }
+  }
+  if (all.empty()) throw InputError(PathName(options.root) + ": no EgoHumans sequence found (expected <big_seq>/<seq>/colmap/workplace)");
+  if (options.sequences.empty()) return all;
+  std::vector<SequenceDir> out;
+  for (const std::string& wanted : options.sequences) {
+    bool found = false;
+    for (const SequenceDir& s : all) {
+      if (wanted == s.big + "/" + s.seq || wanted == s.seq || wanted == s.big) {
+        out.push_back(s);
+        found = true;
+      }
+    }
+    if (!found) {
+      std::string names;
+      for (const SequenceDir& s : all) names += (names.empty() ? "" : ", ") + s.big + "/" + s.seq;
+      throw InputError(PathName(options.root) + ": unknown sequence '" + wanted + "' (found " + names + ")");
+    }
+  }
+  return out;
+}
+
+// Time stamp from "camXX/00017.jpg" or "00017.npy" (the digits of the file stem).
+std::optional<int> TimeStampOf(const std::string& file_name) {
+  const std::string stem = fs::path(file_name).stem().string();
+  int value = 0;
+  const auto [ptr, ec] = std::from_chars(stem.data(), stem.data() + stem.size(), value);
+  if (stem.empty() || ec != std::errc() || ptr != stem.data() + stem.size()) return std::nullopt;
+  return value;
+}
+
+Eigen::Matrix4d Matrix4(const io::PyView& view) {
+  const auto values = h36m_ego::FiniteNumbers(view, 16);
+  const Eigen::Matrix4d m = Eigen::Map<const Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>(values.data());
+  if ((m.row(3) - Eigen::RowVector4d(0, 0, 0, 1)).cwiseAbs().maxCoeff() > 1e-9) view.Fail("last row must be (0, 0, 0, 1)");
+  return m;
+}
+
+// Camera pose from E = cam_from_aria as a 4x4 that may carry a scale s (colmap_from_aria is a
+// similarity): x_cam = s (R X + t'). The pinhole/fisheye projection ignores the overall factor s,
+// so R = A / s and t = b / s with s = cbrt(det A).
+void SetPose(const Eigen::Matrix4d& cam_from_aria, const std::string& where, Camera* camera) {
+  const Eigen::Matrix3d A = cam_from_aria.topLeftCorner<3, 3>();
+  const double det = A.determinant();
+  if (!(det > 0) || !std::isfinite(det)) throw InputError(where + ": camera_from_anchor has a non-positive determinant");
+  const double scale = std::cbrt(det);
+  const Eigen::Matrix3d R = A / scale;
+  const double error = (R.transpose() * R - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
+  if (error > 1e-4) {
+    std::ostringstream msg;
+    msg << where << ": camera_from_anchor is not a rotation times a scale (max |R^T R - I| = " << error << ")";
+    throw InputError(msg.str());
+  }
+  camera->R = h36m_ego::NearestRotation(R);
+  camera->t = cam_from_aria.topRightCorner<3, 1>() / scale;
+}
+
+std::vector<Camera> ReadExoCameras(const Options& options, const SequenceDir& dir, int reference_time_stamp) {
+  const fs::path workplace = dir.path / "colmap" / "workplace";
+  const fs::path cameras_path = workplace / "cameras.txt";
+  const fs::path images_path = workplace / "images.txt";
+  const std::vector<ColmapCamera> colmap_cameras = ReadColmapCamerasText(cameras_path);
+  const std::vector<ColmapImage> images = ReadColmapImagesText(images_path);
+
+  const fs::path transforms_path = workplace / "colmap_from_aria_transforms.pkl";
+  const io::PyView transforms = io::ReadPickle(transforms_path);
+  const Eigen::Matrix4d colmap_from_anchor = Matrix4(transforms.Key(options.anchor));
+
+  // Exo name of each COLMAP camera: the folder of the first image using it (egohumans
+  // get_colmap_camera_mapping; a later camera with the same name wins, as there).
+  std::map<std::string, const ColmapCamera*> by_name;
+  for (const ColmapCamera& c : colmap_cameras) {
+    if (c.width == kAriaImageSize && c.height == kAriaImageSize) continue;
+    const auto image = std::find_if(images.begin(), images.end(), [&](const ColmapImage& i) { return i.camera_id == c.camera_id; });
+    if (image == images.end()) {
+      throw InputError(PathName(cameras_path) + ":" + std::to_string(c.line) + ": exo camera " + std::to_string(c.camera_id) +
+                       " has no image in " + PathName(images_path) + ", so it has no name");
+    }
+    const std::string name = image->name.substr(0, image->name.find('/'));
+    by_name[name] = &c;
+  }
+  for (const std::string& wanted : options.cameras) {
+    if (!by_name.count(wanted)) throw InputError(PathName(cameras_path) + ": unknown exo camera '" + wanted + "'");
+  }
+
+  std::vector<Camera> out;
+  for (const auto& [name, colmap] : by_name) {
+    if (!options.cameras.empty() && std::find(options.cameras.begin(), options.cameras.end(), name) == options.cameras.end()) {
+      continue;
+    }
+    Camera camera = ColmapCameraToCamera(*colmap, PathName(cameras_path));
+    camera.name = name;
+    Eigen::Matrix4d cam_from_colmap = Eigen::Matrix4d::Identity();
+    std::string where;
+    const fs::path manual = workplace / (name + ".npy");
+    if (fs::is_regular_file(manual)) {
+      // Manual calibration (egohumans CALIBRATION.MANUAL_EXO_CAMERAS): 4x4 colmap -> camera.
+      cam_from_colmap = Matrix4(io::ReadNpy(manual));
+      where = PathName(manual);
+    } else {
+      const ColmapImage* best = nullptr;
+      int best_distance = std::numeric_limits<int>::max();
+      for (const ColmapImage& image : images) {
+        if (image.name.substr(0, image.name.find('/')) != name) continue;
+        const auto stamp = TimeStampOf(image.name);
+        if (!stamp) {
+          throw InputError(PathName(images_path) + ":" + std::to_string(image.line) + ": image name '" + image.name +
+                           "' is not <camera>/<time stamp>.jpg");
+        }
+        const int distance = std::abs(*stamp - reference_time_stamp);
+        if (distance < best_distance) best = &image, best_distance = distance;
+      }
+      cam_from_colmap.topLeftCorner<3, 3>() = ColmapQuaternionToRotation(best->qvec_wxyz);
+      cam_from_colmap.topRightCorner<3, 1>() = best->tvec;
+      where = PathName(images_path) + ":" + std::to_string(best->line);
+    }
+    SetPose(cam_from_colmap * colmap_from_anchor, where + " composed with " + PathName(transforms_path) + "['" + options.anchor + "']",
+            &camera);
+    h36m_ego::CheckCamera(camera, where);
+    out.push_back(std::move(camera));
+  }
+  if (out.empty()) throw InputError(PathName(cameras_path) + ": no exo camera (all cameras are 1408x1408 Aria cameras)");
+  return out;
+}
+
+// Time stamps of processed_data/<gt>/%05d.npy, sorted.
+std::vector<int> GtTimeStamps(const Options& options, const SequenceDir& dir) {
+  const fs::path gt_dir = dir.path / "processed_data" / options.gt;
+  if (!fs::is_directory(gt_dir)) throw InputError(PathName(gt_dir) + ": ground-truth directory not found");
+  std::vector<int> out;
+  for (const auto& entry : fs::directory_iterator(gt_dir)) {
+    if (!entry.is_regular_file() || entry.path().extension() != ".npy") continue;
+    if (const auto stamp = TimeStampOf(entry.path().filename().string())) out.push_back(*stamp);
+  }
+  std::sort(out.begin(), out.end());
+  if (out.empty()) throw InputError(PathName(gt_dir) + ": no %05d.npy files");
+  return out;
+}
+
+std::vector<int> SelectedTimeStamps(const Options& options, const SequenceDir& dir) {
+  const std::vector<int> all = GtTimeStamps(options, dir);
+  std::vector<int> out;
+  for (const std::size_t k : h36m_ego::SelectFrames(all.size(), options.every, options.max_frames)) out.push_back(all[k]);
+  return out;
+}
+
+std::string FrameId(const SequenceDir& dir, int time_stamp) {
+  return "egohumans_" + dir.big + "_" + dir.seq + "_" + h36m_ego::Padded(time_stamp, 5);
+}
+
+int TrackIdOf(const std::string& aria_name, int fallback) {
+  std::size_t digits = aria_name.find_first_of("0123456789");
+  if (digits == std::string::npos) return fallback;
+  int value = 0;
+  const auto [ptr, ec] = std::from_chars(aria_name.data() + digits, aria_name.data() + aria_name.size(), value);
+  return ec == std::errc() && ptr == aria_name.data() + aria_name.size() ? value : fallback;
+}
+
+Poses3D ReadGtFrame(const fs::path& path) {
+  const io::PyView root = io::ReadNpy(path);
+  if (!root.IsDict()) root.Fail("expected a dict aria name -> (17, 4) array");
+  Poses3D gt;
+  gt.Clear(kBodyJoints);
+  int index = 0;
+  for (const auto& [key, value] : root.Items()) {
+    ++index;
+    const std::string& name = key.AsStr();
+    const auto shape = value.Shape();
+    if (shape != std::vector<std::int64_t>{kBodyJoints, 4}) value.Fail("expected shape (17, 4) = COCO-17 x (x, y, z, valid)");
+    const auto v = value.ToDoubles();
+    Eigen::Matrix4Xd joints(4, kBodyJoints);
+    int valid_joints = 0;
+    for (int j = 0; j < kBodyJoints; ++j) {
+      const double* p = &v[static_cast<std::size_t>(4 * j)];
+      if (!std::isfinite(p[3])) value.Fail("joint " + std::to_string(j) + ": valid flag is NaN");
+      const bool valid = p[3] > 0;
+      if (valid && !(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]))) {
+        value.Fail("joint " + std::to_string(j) + ": NaN or infinite coordinate");
+      }
+      joints.col(j) = valid ? Eigen::Vector4d(p[0], p[1], p[2], 1.0) : Eigen::Vector4d::Zero();
+      valid_joints += valid ? 1 : 0;
+    }
+    if (valid_joints == 0) continue;  // a wearer not triangulated in this frame
+    gt.AddPerson(TrackIdOf(name, index)) = joints;
+  }
+  return gt;
+}
+
+// One view of the 2D cache: a list of dicts with 'keypoints' (133, 3) = x, y, confidence.
+Poses2D ReadCacheView(const fs::path& path) {
+  if (!fs::is_regular_file(path)) throw InputError(PathName(path) + ": 2D pose cache file not found");
+  const io::PyView root = io::ReadNpy(path);
+  Poses2D view;
+  view.Clear(kWholeBodyJoints);
+  if (root.IsArray() && root.AsArray().Size() == 0) return view;  // np.save([]) of a frame without detections
+  for (std::size_t i = 0; i < root.Size(); ++i) {
+    const io::PyView entry = root.At(i);
+    const io::PyView keypoints = entry.Key("keypoints");
+    const auto shape = keypoints.Shape();
+    if (shape != std::vector<std::int64_t>{kWholeBodyJoints, 3}) keypoints.Fail("expected shape (133, 3) = COCO-WholeBody x (x, y, score)");
+    const auto v = keypoints.ToDoubles();
+    auto person = view.AddPerson();
+    for (int j = 0; j < kWholeBodyJoints; ++j) {
+      const double* p = &v[static_cast<std::size_t>(3 * j)];
+      if (!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]))) {
+        keypoints.Fail("joint " + std::to_string(j) + ": NaN or infinite value");
+      }
+      person.col(j) << p[0], p[1], std::clamp(p[2], 0.0, 1.0);
+    }
+  }
+  return view;
+}
+
+fs::path CachePath(const SequenceDir& dir, const std::string& camera, int time_stamp) {
+  return dir.path / "processed_data" / "poses2d" / camera / "rgb" / (h36m_ego::Padded(time_stamp, 5) + ".npy");
+}
+
+}  // namespace
+
+DatasetInfo EgohumansInfo() {
+  DatasetInfo info;
+  info.name = "egohumans";
+  info.description = "EgoHumans exo (GoPro fisheye) cameras with triangulated COCO-17 GT of the Aria wearers";
+  info.layout =
+      "<root>/<big_seq>/<seq>/colmap/workplace/{cameras.txt,images.txt,colmap_from_aria_transforms.pkl[,camXX.npy]}\n"
+      "<root>/<big_seq>/<seq>/processed_data/poses3d/%05d.npy (or refine_poses3d, fit_poses3d)\n"
+      "<root>/<big_seq>/<seq>/processed_data/poses2d/<camXX>/rgb/%05d.npy (detections=cache)\n"
+      "root may also be one <big_seq> or one <seq> directory";
+  info.params = {
+      {"sequences", "", "comma-separated <big_seq>/<seq> (or <seq>, or <big_seq>); empty = all under root"},
+      {"cameras", "", "comma-separated exo cameras (camXX); empty = all"},
+      {"anchor", "aria01", "Aria camera whose frame is the GT world (CALIBRATION.ANCHOR_EGO_CAMERA)"},
+      {"gt", "poses3d", "ground-truth folder: poses3d | refine_poses3d | fit_poses3d"},
+      {"detections", "none", "none | cache (processed_data/poses2d, COCO-WholeBody)"},
+      {"every", "1", "keep every n-th ground-truth time stamp"},
+      {"max_frames", "0", "at most this many frames per sequence (0 = all)"},
+      {"fps", "20", "frame rate used for timestamps (time stamp - 1) / fps"},
+  };
+  return info;
+}
+
+std::vector<Sequence> ReadEgohumans(const DatasetRequest& request) {
+  const Options options = ParseOptions(request);
+  std::vector<Sequence> out;
+  for (const SequenceDir& dir : FindSequences(options)) {
+    const std::vector<int> stamps = SelectedTimeStamps(options, dir);
+    Sequence sequence;
+    sequence.name = "egohumans/" + dir.big + "/" + dir.seq;
+    sequence.cameras = ReadExoCameras(options, dir, stamps.empty() ? 1 : stamps.front());
+    sequence.gt_joints = CocoBodyJoints();
+    sequence.fps = options.fps;
+    if (options.detections) sequence.detection_joints = CocoWholeBodyJoints();
+    for (const int stamp : stamps) {
+      SequenceFrame frame;
+      frame.id = FrameId(dir, stamp);
+      frame.timestamp_s = (stamp - 1) / options.fps;
+      frame.gt = ReadGtFrame(dir.path / "processed_data" / options.gt / (h36m_ego::Padded(stamp, 5) + ".npy"));
+      if (options.detections) {
+        for (const Camera& camera : sequence.cameras) frame.views.push_back(ReadCacheView(CachePath(dir, camera.name, stamp)));
+      }
+      sequence.frames.push_back(std::move(frame));
+    }
+    ValidateSequence(sequence, PathName(dir.path));
+    out.push_back(std::move(sequence));
+  }
+  return out;
+}
+
+Detections ReadEgohumansDetections(const DatasetRequest& request) {
+  const Options options = ParseOptions(request);
+  Detections detections;
+  detections.joints = CocoWholeBodyJoints();
+  for (const SequenceDir& dir : FindSequences(options)) {
+    const std::vector<int> stamps = SelectedTimeStamps(options, dir);
+    const std::vector<Camera> cameras = ReadExoCameras(options, dir, stamps.empty() ? 1 : stamps.front());
+    for (const int stamp : stamps) {
+      FrameDetections frame;
+      frame.frame_id = FrameId(dir, stamp);
+      for (const Camera& camera : cameras) {
+        frame.cameras.push_back(camera.name);
+        frame.views.push_back(ReadCacheView(CachePath(dir, camera.name, stamp)));
+      }
+      detections.frames.push_back(std::move(frame));
+    }
+  }
+  return detections;
+}
+
+}  // namespace rpt

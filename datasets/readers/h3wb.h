@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: MIT
+// H3WB reader (dataset name "h3wb"): Human3.6M 3D WholeBody (133 COCO-WholeBody joints) as
+// multi-view frames with the four Human3.6M cameras, one Sequence per subject and action.
+//
+// Two on-disk formats (docs/datasets/human36m_h3wb_egohumans.md):
+//  * npz "new format" (utils/prepare_data_h3wb.py, mmpose h3wb_dataset.py): object members
+//    train_data[subject][action] = {global_3d (N,133,3) world, frame_id (N,), <camera id> =
+//    {camera_3d (N,133,3) mm, pose_2d (N,133,2) px}} and metadata[subject][<camera id>] = {K (1,3,3)
+//    divided by 1000, R (1,3,3) world->camera, T (1,1,3) = -R C in metres, Distortion (1,5) =
+//    k1 k2 p1 p2 k3}. The GT is global_3d (units: param global_units, default mm), checked against
+//    every camera's camera_3d.
+//  * json (2Dto3D_*.json, RGBto3D_*.json): sample id -> {keypoints_3d {"0".."132": {x,y,z}} in
+//    camera coordinates (mm), optional keypoints_2d, image_path}. Views are assembled into frames:
+//    by image_path (subject, "<Action>.<camera id>" folder, frame number) when every sample has a
+//    parseable one, otherwise sample ids 4k..4k+3 are the views of one frame in the camera order
+//    54138969, 55011271, 58860488, 60457274 (INFERRED from the test-id pattern) and the subject is
+//    the one whose cameras (param cameras_file) make the views agree. Either way the views must agree
+//    in world coordinates within 1 cm, else InputError.
+//
+// GT joints: CocoWholeBodyJoints(). Units: metres, Human3.6M world (z up).
+// Frame ids: "h3wb_<subject>_<action>_<frame>" (frame = npz frame_id or the image's frame number,
+// 6 digits; action sanitised: "Directions 1" -> "Directions-1"); for json without image paths
+// "h3wb_<subject>_sample_<first sample id of the frame, 6 digits>" in sequence "h3wb/<subject>/json".
+#pragma once
+
+#include <vector>
+
+#include "datasets/dataset_request.h"
+#include "datasets/detections.h"
+#include "datasets/sequence.h"
+
+namespace rpt {
+
+DatasetInfo H3wbInfo();
+std::vector<Sequence> ReadH3wb(const DatasetRequest& request);
+
+// The 2D keypoints stored with the annotations (npz pose_2d, json keypoints_2d) of the frames
+// ReadH3wb selects, one person per view with score 1, joints CocoWholeBodyJoints(). Same params.
+// (ReadH3wb with param detections=annotations attaches the same views directly.)
+Detections ReadH3wbDetections(const DatasetRequest& request);
+
+}  // namespace rpt

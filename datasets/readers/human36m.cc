@@ -1,0 +1,505 @@
+// SPDX-License-Identifier: MIT
+// Human3.6M reader: h36m-fetch annot.h5 (HDF5, camera-frame mm per camera) or the
+// learnable-triangulation multi-view labels npy (world mm), with cameras from metadata.xml,
+// mmpose cameras.pkl or the labels npy.
+#include "datasets/readers/human36m.h"
+
+#include <hdf5.h>
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <sstream>
+
+#include "core/errors.h"
+#include "datasets/io/npy.h"
+#include "datasets/readers/h36m_ego_common.h"
+#include "datasets/readers/human36m_internal.h"
+
+namespace rpt {
+namespace {
+
+using h36m_ego::PathName;
+
+constexpr double kFps = 50.0;
+constexpr int kNumJoints = 18;  // 17 H36M joints + nose
+constexpr int kNoseIndex = 17;
+constexpr int kNeckNoseIndex = 9;
+constexpr int kHeadIndex = 10;
+// Raw 32-joint indices of the first 17 GT joints (Human36mJoints() order).
+constexpr std::array<int, 17> kRawIndices = {0, 1, 2, 3, 6, 7, 8, 12, 13, 14, 15, 17, 18, 19, 25, 26, 27};
+// learnable-triangulation joint i -> Human36mJoints() index. Their order (raw
+// 3,2,1,6,7,8,0,12,13,15,27,26,25,17,18,19,14): RAnkle RKnee RHip LHip LKnee LAnkle Pelvis Spine
+// Thorax Head RWrist RElbow RShoulder LShoulder LElbow LWrist Neck/Nose.
+constexpr std::array<int, 17> kLearnableTriToJoint = {3, 2, 1, 4, 5, 6, 0, 7, 8, 10, 16, 15, 14, 11, 12, 13, 9};
+
+constexpr const char* kLabelsFileName = "human36m-multiview-labels-GTbboxes.npy";
+
+struct Options {
+  std::filesystem::path root;
+  std::vector<std::string> subjects;
+  std::vector<std::string> actions;  // empty = all
+  std::vector<std::string> exclude;  // "S9/Greeting-2"
+  bool use_npy = false;
+  std::filesystem::path labels_file;
+  std::filesystem::path cameras_file;  // empty = cameras from the labels npy
+  DistortionModel model = DistortionModel::kH36M;
+  bool nose_from_head = true;
+  int every = 1;
+  int max_frames = 0;
+};
+
+// "Directions" matches "Directions-1" and "Directions-2"; "Directions-1" only itself.
+bool ActionMatches(const std::string& action, const std::string& filter) {
+  if (action == filter) return true;
+  if (action.size() <= filter.size() + 1 || action.compare(0, filter.size(), filter) != 0 || action[filter.size()] != '-') {
+    return false;
+  }
+  return std::all_of(action.begin() + static_cast<std::ptrdiff_t>(filter.size()) + 1, action.end(),
+                     [](char c) { return c >= '0' && c <= '9'; });
+}
+
+bool ActionSelected(const Options& options, const std::string& subject, const std::string& action) {
+  if (!options.actions.empty() &&
+      std::none_of(options.actions.begin(), options.actions.end(), [&](const std::string& f) { return ActionMatches(action, f); })) {
+    return false;
+  }
+  for (const std::string& item : options.exclude) {
+    const std::size_t slash = item.find('/');
+    const std::string subject_filter = slash == std::string::npos ? "" : item.substr(0, slash);
+    const std::string action_filter = slash == std::string::npos ? item : item.substr(slash + 1);
+    if ((subject_filter.empty() || subject_filter == subject) && ActionMatches(action, action_filter)) return false;
+  }
+  return true;
+}
+
+std::optional<std::filesystem::path> FirstExisting(const std::vector<std::filesystem::path>& candidates) {
+  for (const auto& p : candidates) {
+    if (std::filesystem::is_regular_file(p)) return p;
+  }
+  return std::nullopt;
+}
+
+std::string ListPaths(const std::vector<std::filesystem::path>& paths) {
+  std::string out;
+  for (const auto& p : paths) out += (out.empty() ? "" : ", ") + p.string();
+  return out;
+}
+
+Options ParseOptions(const DatasetRequest& request) {
+  const DatasetInfo info = Human36mInfo();
+  request.CheckParams(info);
+  Options o;
+  o.root = request.root;
+  o.subjects = SplitList(request.Param(info, "subjects"));
+  if (o.subjects.empty()) throw ConfigError("human36m: subjects: no subject given");
+  o.actions = SplitList(request.Param(info, "actions"));
+  o.exclude = SplitList(request.Param(info, "exclude"));
+  o.model = h36m_ego::ParseH36mDistortion(request.Param(info, "distortion"), "human36m: distortion");
+  const std::string nose = request.Param(info, "nose_proxy");
+  if (nose != "head" && nose != "neck_nose") throw ConfigError("human36m: nose_proxy: '" + nose + "' is not one of head, neck_nose");
+  o.nose_from_head = nose == "head";
+  o.every = h36m_ego::ParseIntParam(request.Param(info, "every"), "human36m: every", 1);
+  o.max_frames = h36m_ego::ParseIntParam(request.Param(info, "max_frames"), "human36m: max_frames", 0);
+
+  const std::string labels_file = request.Param(info, "labels_file");
+  const std::vector<std::filesystem::path> label_candidates =
+      labels_file == "auto" ? std::vector<std::filesystem::path>{o.root / "extra" / kLabelsFileName, o.root / kLabelsFileName}
+                            : std::vector<std::filesystem::path>{h36m_ego::ResolveUnder(o.root, labels_file)};
+  const std::optional<std::filesystem::path> found_labels = FirstExisting(label_candidates);
+
+  const std::string labels = request.Param(info, "labels");
+  if (labels == "annot") {
+    o.use_npy = false;
+  } else if (labels == "npy") {
+    o.use_npy = true;
+  } else if (labels == "auto") {
+    // annot.h5 files of a requested subject win; otherwise the labels npy (its image folders may
+    // also live under processed/); otherwise processed/ alone still means annot.h5 (errors name it).
+    bool has_annot = false;
+    for (const std::string& subject : o.subjects) {
+      const std::filesystem::path dir = o.root / "processed" / subject;
+      if (!std::filesystem::is_directory(dir)) continue;
+      for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+        has_annot = has_annot || std::filesystem::is_regular_file(entry.path() / "annot.h5");
+      }
+    }
+    if (has_annot) {
+      o.use_npy = false;
+    } else if (found_labels) {
+      o.use_npy = true;
+    } else if (std::filesystem::is_directory(o.root / "processed")) {
+      o.use_npy = false;
+    } else {
+      throw InputError(PathName(o.root) + ": no Human3.6M labels found (looked for the directory " +
+                       (o.root / "processed").string() + " and " + ListPaths(label_candidates) + ")");
+    }
+  } else {
+    throw ConfigError("human36m: labels: '" + labels + "' is not one of auto, annot, npy");
+  }
+  if (o.use_npy) {
+    if (!found_labels) throw InputError(ListPaths(label_candidates) + ": labels file not found");
+    o.labels_file = *found_labels;
+  }
+
+  const std::string cameras_file = request.Param(info, "cameras_file");
+  if (cameras_file == "labels") {
+    if (!o.use_npy) throw ConfigError("human36m: cameras_file=labels needs labels=npy");
+  } else if (cameras_file == "auto") {
+    const std::vector<std::filesystem::path> candidates = {o.root / "metadata.xml", o.root / "cameras.pkl",
+                                                           o.root / "annotation_body3d" / "cameras.pkl"};
+    if (const auto found = FirstExisting(candidates)) {
+      o.cameras_file = *found;
+    } else if (!o.use_npy) {
+      throw InputError(ListPaths(candidates) + ": no camera file found (or pass --param cameras_file=PATH)");
+    }
+  } else {
+    o.cameras_file = h36m_ego::ResolveUnder(o.root, cameras_file);
+  }
+  return o;
+}
+
+Sequence NewSequence(const std::string& subject, const std::string& action, std::vector<Camera> cameras) {
+  Sequence sequence;
+  sequence.name = "human36m/" + subject + "/" + action;
+  sequence.cameras = std::move(cameras);
+  sequence.gt_joints = Human36mJoints();
+  sequence.fps = kFps;
+  return sequence;
+}
+
+// Appends a frame with one person whose first 17 joints are `joints_m` (metres, world).
+void AddFrame(const Options& options, const std::string& subject, const std::string& action, long long frame_idx,
+              const Eigen::Matrix<double, 3, 17>& joints_m, Sequence* sequence) {
+  SequenceFrame frame;
+  frame.id = "human36m_" + subject + "_" + action + "_" + h36m_ego::Padded(frame_idx, 6);
+  frame.timestamp_s = static_cast<double>(frame_idx) / kFps;
+  frame.gt.Clear(kNumJoints);
+  auto person = frame.gt.AddPerson(0);
+  for (int j = 0; j < 17; ++j) person.col(j) << joints_m.col(j), 1.0;
+  person.col(kNoseIndex) = person.col(options.nose_from_head ? kHeadIndex : kNeckNoseIndex);
+  sequence->frames.push_back(std::move(frame));
+}
+
+std::vector<Camera> SubjectCameras(const Options& options, const io::PyView* labels, const std::string& subject) {
+  if (options.cameras_file.empty()) return h36m_ego::LearnableTriCameras(*labels, subject, options.model);
+  return ReadHuman36mCameras(options.cameras_file, subject, options.model);
+}
+
+// ---------------------------------------------------------------------------------------
+// HDF5 (h36m-fetch annot.h5)
+
+class H5ErrorSilencer {
+ public:
+  H5ErrorSilencer() {
+    H5Eget_auto2(H5E_DEFAULT, &func_, &data_);
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  }
+  ~H5ErrorSilencer() { H5Eset_auto2(H5E_DEFAULT, func_, data_); }
+  H5ErrorSilencer(const H5ErrorSilencer&) = delete;
+  H5ErrorSilencer& operator=(const H5ErrorSilencer&) = delete;
+
+ private:
+  H5E_auto2_t func_ = nullptr;
+  void* data_ = nullptr;
+};
+
+class H5Id {
+ public:
+  H5Id(hid_t id, herr_t (*close)(hid_t)) : id_(id), close_(close) {}
+  ~H5Id() {
+    if (id_ >= 0) close_(id_);
+  }
+  H5Id(const H5Id&) = delete;
+  H5Id& operator=(const H5Id&) = delete;
+  hid_t get() const { return id_; }
+  bool ok() const { return id_ >= 0; }
+
+ private:
+  hid_t id_;
+  herr_t (*close_)(hid_t);
+};
+
+struct H5Array {
+  std::vector<double> values;  // row-major
+  std::vector<hsize_t> dims;
+};
+
+std::string DimsText(const std::vector<hsize_t>& dims) {
+  std::string out = "(";
+  for (std::size_t i = 0; i < dims.size(); ++i) out += (i ? ", " : "") + std::to_string(dims[i]);
+  return out + (dims.size() == 1 ? ",)" : ")");
+}
+
+// Reads a numeric dataset as doubles; `rank` is the expected number of dimensions.
+H5Array ReadH5Numeric(hid_t file, const std::string& name, int rank, const std::string& source) {
+  const std::string where = source + ": dataset '" + name + "'";
+  // H5Lexists needs every intermediate group to exist.
+  std::size_t pos = 0;
+  while (true) {
+    const std::size_t slash = name.find('/', pos);
+    const std::string prefix = name.substr(0, slash);
+    if (H5Lexists(file, prefix.c_str(), H5P_DEFAULT) <= 0) throw InputError(where + ": missing");
+    if (slash == std::string::npos) break;
+    pos = slash + 1;
+  }
+  const H5Id dataset(H5Dopen2(file, name.c_str(), H5P_DEFAULT), H5Dclose);
+  if (!dataset.ok()) throw InputError(where + ": cannot open (not a dataset?)");
+  const H5Id type(H5Dget_type(dataset.get()), H5Tclose);
+  const H5T_class_t type_class = type.ok() ? H5Tget_class(type.get()) : H5T_NO_CLASS;
+  if (type_class != H5T_INTEGER && type_class != H5T_FLOAT) throw InputError(where + ": expected a numeric dataset");
+  const H5Id space(H5Dget_space(dataset.get()), H5Sclose);
+  const int ndims = space.ok() ? H5Sget_simple_extent_ndims(space.get()) : -1;
+  if (ndims < 0) throw InputError(where + ": unreadable dataspace");
+  H5Array out;
+  out.dims.resize(static_cast<std::size_t>(ndims));
+  if (ndims > 0) H5Sget_simple_extent_dims(space.get(), out.dims.data(), nullptr);
+  if (ndims != rank) throw InputError(where + ": expected " + std::to_string(rank) + " dimensions, got shape " + DimsText(out.dims));
+  std::size_t count = 1;
+  for (hsize_t d : out.dims) {
+    if (d > 0 && count > (std::size_t{1} << 31) / d) throw InputError(where + ": dataset too large " + DimsText(out.dims));
+    count *= static_cast<std::size_t>(d);
+  }
+  out.values.resize(count);
+  if (count > 0 && H5Dread(dataset.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.values.data()) < 0) {
+    throw InputError(where + ": read failed (corrupt file?)");
+  }
+  return out;
+}
+
+struct AnnotRows {
+  std::map<long long, std::vector<std::pair<int, std::size_t>>> by_frame;  // frame -> (camera index, row)
+  H5Array pose;
+};
+
+AnnotRows ReadAnnot(const std::filesystem::path& path) {
+  const std::string source = PathName(path);
+  if (!std::filesystem::is_regular_file(path)) throw InputError(source + ": file not found");
+  const H5ErrorSilencer silence;
+  if (H5Fis_hdf5(path.c_str()) <= 0) throw InputError(source + ": not an HDF5 file");
+  const H5Id file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+  if (!file.ok()) throw InputError(source + ": cannot open HDF5 file");
+  AnnotRows rows;
+  rows.pose = ReadH5Numeric(file.get(), "pose/3d", 3, source);
+  const H5Array camera = ReadH5Numeric(file.get(), "camera", 1, source);
+  const H5Array frame = ReadH5Numeric(file.get(), "frame", 1, source);
+  const hsize_t n = rows.pose.dims[0];
+  if (rows.pose.dims[1] != 32 || rows.pose.dims[2] != 3) {
+    throw InputError(source + ": dataset 'pose/3d': expected shape (N, 32, 3), got " + DimsText(rows.pose.dims));
+  }
+  if (camera.dims[0] != n || frame.dims[0] != n) {
+    throw InputError(source + ": datasets 'camera' " + DimsText(camera.dims) + " and 'frame' " + DimsText(frame.dims) +
+                     " must have one entry per row of 'pose/3d' " + DimsText(rows.pose.dims));
+  }
+  for (std::size_t r = 0; r < n; ++r) {
+    const double cam = camera.values[r];
+    const std::string cam_text = std::isfinite(cam) ? std::to_string(static_cast<long long>(cam)) : "nan";
+    const int index = cam == std::floor(cam) ? h36m_ego::H36mCameraIndex(cam_text) : -1;
+    if (index < 0) throw InputError(source + ": dataset 'camera' row " + std::to_string(r) + ": unknown camera id " + cam_text);
+    const double f = frame.values[r];
+    if (!std::isfinite(f) || f < 1 || f != std::floor(f)) {
+      throw InputError(source + ": dataset 'frame' row " + std::to_string(r) + ": expected a 1-based frame number");
+    }
+    rows.by_frame[static_cast<long long>(f)].emplace_back(index, r);
+  }
+  for (auto& [f, entries] : rows.by_frame) {
+    std::sort(entries.begin(), entries.end());
+    for (std::size_t i = 1; i < entries.size(); ++i) {
+      if (entries[i].first == entries[i - 1].first) {
+        throw InputError(source + ": frame " + std::to_string(f) + " appears twice for camera " +
+                         Human36mCameraIds()[static_cast<std::size_t>(entries[i].first)]);
+      }
+    }
+  }
+  return rows;
+}
+
+// World-frame joints (metres) of row `row` of pose/3d (camera-frame mm of camera `camera`).
+Eigen::Matrix<double, 3, 17> AnnotRowToWorld(const AnnotRows& rows, std::size_t row, const Camera& camera,
+                                             const std::string& source) {
+  Eigen::Matrix<double, 3, 17> out;
+  for (int j = 0; j < 17; ++j) {
+    const double* p = &rows.pose.values[(row * 32 + static_cast<std::size_t>(kRawIndices[static_cast<std::size_t>(j)])) * 3];
+    const Eigen::Vector3d x_cam_m(p[0] / 1000.0, p[1] / 1000.0, p[2] / 1000.0);
+    if (!x_cam_m.allFinite()) {
+      throw InputError(source + ": dataset 'pose/3d' row " + std::to_string(row) + " joint " +
+                       std::to_string(kRawIndices[static_cast<std::size_t>(j)]) + ": NaN or infinite coordinate");
+    }
+    out.col(j) = camera.R.transpose() * (x_cam_m - camera.t);
+  }
+  return out;
+}
+
+std::vector<std::string> SortedActionDirs(const std::filesystem::path& subject_dir) {
+  std::vector<std::string> out;
+  for (const auto& entry : std::filesystem::directory_iterator(subject_dir)) {
+    if (entry.is_directory() && std::filesystem::is_regular_file(entry.path() / "annot.h5")) {
+      out.push_back(entry.path().filename().string());
+    }
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+std::vector<Sequence> ReadFromAnnot(const Options& options) {
+  std::vector<Sequence> out;
+  for (const std::string& subject : options.subjects) {
+    const std::filesystem::path subject_dir = options.root / "processed" / subject;
+    if (!std::filesystem::is_directory(subject_dir)) throw InputError(PathName(subject_dir) + ": unknown subject (no such directory)");
+    const std::vector<Camera> cameras = SubjectCameras(options, nullptr, subject);
+    bool any = false;
+    for (const std::string& action : SortedActionDirs(subject_dir)) {
+      if (!ActionSelected(options, subject, action)) continue;
+      any = true;
+      const std::filesystem::path path = subject_dir / action / "annot.h5";
+      const std::string source = PathName(path);
+      const AnnotRows rows = ReadAnnot(path);
+      Sequence sequence = NewSequence(subject, action, cameras);
+      std::vector<long long> frames;
+      for (const auto& [f, entries] : rows.by_frame) frames.push_back(f);
+      for (const std::size_t k : h36m_ego::SelectFrames(frames.size(), options.every, options.max_frames)) {
+        const auto& entries = rows.by_frame.at(frames[k]);
+        // The GT comes from the first camera (id order); every other camera must agree with it.
+        const int ref_camera = entries.front().first;
+        const auto world = AnnotRowToWorld(rows, entries.front().second, cameras[static_cast<std::size_t>(ref_camera)], source);
+        for (std::size_t e = 1; e < entries.size(); ++e) {
+          const auto other = AnnotRowToWorld(rows, entries[e].second, cameras[static_cast<std::size_t>(entries[e].first)], source);
+          const double deviation = (other - world).colwise().norm().maxCoeff();
+          if (!(deviation <= h36m_ego::kViewAgreementToleranceM)) {
+            std::ostringstream msg;
+            msg << source << ": frame " << frames[k] << ": camera " << Human36mCameraIds()[static_cast<std::size_t>(entries[e].first)]
+                << " puts the pose " << deviation * 1000.0 << " mm away from camera "
+                << Human36mCameraIds()[static_cast<std::size_t>(ref_camera)]
+                << " after conversion to world coordinates (wrong cameras file or subject?)";
+            throw InputError(msg.str());
+          }
+        }
+        AddFrame(options, subject, action, frames[k] - 1, world, &sequence);
+      }
+      ValidateSequence(sequence, source);
+      out.push_back(std::move(sequence));
+    }
+    if (!any) throw InputError(PathName(subject_dir) + ": no selected action directory with an annot.h5");
+  }
+  return out;
+}
+
+// ---------------------------------------------------------------------------------------
+// learnable-triangulation labels npy
+
+std::vector<Sequence> ReadFromLabels(const Options& options) {
+  const std::string source = PathName(options.labels_file);
+  const io::PyView labels = io::ReadNpy(options.labels_file);
+  if (!labels.IsDict()) labels.Fail("expected the dict written by generate-labels-npy-multiview.py");
+  const io::PyView subject_names = labels.Key("subject_names");
+  const io::PyView action_names = labels.Key("action_names");
+  const io::PyView table = labels.Key("table");
+  const auto table_shape = table.Shape();
+  if (table_shape.size() != 1) table.Fail("expected a 1-D structured array, got " + std::to_string(table_shape.size()) + " dimensions");
+  const std::int64_t n = table_shape[0];
+  const auto subject_idx = table.Field("subject_idx").ToDoubles({n});
+  const auto action_idx = table.Field("action_idx").ToDoubles({n});
+  const auto frame_idx = table.Field("frame_idx").ToDoubles({n});
+  const io::PyView keypoints_view = table.Field("keypoints");
+  const auto keypoints_shape = keypoints_view.Shape();
+  if (keypoints_shape != std::vector<std::int64_t>{n, 17, 3}) keypoints_view.Fail("expected 17 x 3 keypoints per row");
+  const io::NdArray& keypoints = keypoints_view.AsArray();
+
+  // (subject index, action index) -> (frame index, table row)
+  std::map<std::pair<int, int>, std::vector<std::pair<long long, std::size_t>>> groups;
+  for (std::size_t r = 0; r < static_cast<std::size_t>(n); ++r) {
+    const double s = subject_idx[r], a = action_idx[r], f = frame_idx[r];
+    if (!(s >= 0 && s < static_cast<double>(subject_names.Size()) && s == std::floor(s))) {
+      table.Fail("row " + std::to_string(r) + ": subject_idx out of range");
+    }
+    if (!(a >= 0 && a < static_cast<double>(action_names.Size()) && a == std::floor(a))) {
+      table.Fail("row " + std::to_string(r) + ": action_idx out of range");
+    }
+    if (!(f >= 0 && f == std::floor(f))) table.Fail("row " + std::to_string(r) + ": frame_idx must be a non-negative integer");
+    groups[{static_cast<int>(s), static_cast<int>(a)}].emplace_back(static_cast<long long>(f), r);
+  }
+
+  std::vector<Sequence> out;
+  for (const std::string& subject : options.subjects) {
+    std::size_t s = subject_names.Size();
+    std::string known;
+    for (std::size_t i = 0; i < subject_names.Size(); ++i) {
+      known += (i ? ", " : "") + subject_names.At(i).AsStr();
+      if (subject_names.At(i).AsStr() == subject) s = i;
+    }
+    if (s == subject_names.Size()) subject_names.Fail("unknown subject '" + subject + "' (file has " + known + ")");
+    const std::vector<Camera> cameras = SubjectCameras(options, &labels, subject);
+    bool any = false;
+    for (std::size_t a = 0; a < action_names.Size(); ++a) {
+      const std::string action = h36m_ego::SanitizeName(action_names.At(a).AsStr());
+      if (!ActionSelected(options, subject, action)) continue;
+      auto it = groups.find({static_cast<int>(s), static_cast<int>(a)});
+      if (it == groups.end()) continue;
+      any = true;
+      auto& rows = it->second;
+      std::stable_sort(rows.begin(), rows.end());
+      Sequence sequence = NewSequence(subject, action, cameras);
+      for (const std::size_t k : h36m_ego::SelectFrames(rows.size(), options.every, options.max_frames)) {
+        const std::size_t row = rows[k].second;
+        Eigen::Matrix<double, 3, 17> joints_m;
+        for (std::size_t i = 0; i < 17; ++i) {
+          for (std::size_t d = 0; d < 3; ++d) {
+            const double v = keypoints.ElementAsDouble(keypoints.StorageIndex((row * 17 + i) * 3 + d)) / 1000.0;
+            if (!std::isfinite(v)) {
+              keypoints_view.Fail("row " + std::to_string(row) + " joint " + std::to_string(i) + ": NaN or infinite coordinate");
+            }
+            joints_m(static_cast<Eigen::Index>(d), kLearnableTriToJoint[i]) = v;
+          }
+        }
+        AddFrame(options, subject, action, rows[k].first, joints_m, &sequence);
+      }
+      ValidateSequence(sequence, source);
+      out.push_back(std::move(sequence));
+    }
+    if (!any) throw InputError(source + ": no labels for subject " + subject + " with the selected actions");
+  }
+  return out;
+}
+
+}  // namespace
+
+const JointNames& Human36mJoints() {
+  static const JointNames names = {"pelvis",       "hip_right",      "knee_right",  "ankle_right",    "hip_left",
+                                   "knee_left",    "ankle_left",     "spine",       "thorax",         "neck_nose",
+                                   "head",         "shoulder_left",  "elbow_left",  "wrist_left",     "shoulder_right",
+                                   "elbow_right",  "wrist_right",    "nose"};
+  return names;
+}
+
+DatasetInfo Human36mInfo() {
+  DatasetInfo info;
+  info.name = "human36m";
+  info.description = "Human3.6M (4 cameras, 1 person): h36m-fetch annot.h5 or learnable-triangulation labels";
+  info.layout =
+      "<root>/metadata.xml or <root>/cameras.pkl (mmpose)   cameras (or param cameras_file)\n"
+      "<root>/processed/<S>/<Action>-<sub>/annot.h5           h36m-fetch labels (labels=annot)\n"
+      "<root>/extra/human36m-multiview-labels-GTbboxes.npy    learnable-triangulation labels (labels=npy)";
+  info.params = {
+      {"subjects", "S9,S11", "comma-separated subjects"},
+      {"actions", "", "comma-separated actions ('Directions' = all its sub-actions, 'Directions-1' = one); empty = all"},
+      {"exclude", "", "comma-separated <subject>/<action> to skip, e.g. S9/Greeting-2"},
+      {"labels", "auto", "auto | annot (processed/*/annot.h5) | npy (learnable-triangulation labels)"},
+      {"labels_file", "auto", "labels npy path (relative to root); auto = extra/ or root"},
+      {"cameras_file", "auto", "metadata.xml | cameras.pkl | labels npy path, or 'labels'; auto = metadata.xml, cameras.pkl, annotation_body3d/cameras.pkl, else the labels npy"},
+      {"distortion", "h36m", "lens model for the stored coefficients: h36m | opencv | none"},
+      {"nose_proxy", "head", "GT joint copied to 'nose': head (raw 15) | neck_nose (raw 14)"},
+      {"every", "1", "keep every n-th labelled frame of each sequence (annot.h5 already holds every 64th frame of S9/S11)"},
+      {"max_frames", "0", "at most this many frames per sequence (0 = all)"},
+  };
+  return info;
+}
+
+std::vector<Sequence> ReadHuman36m(const DatasetRequest& request) {
+  const Options options = ParseOptions(request);
+  return options.use_npy ? ReadFromLabels(options) : ReadFromAnnot(options);
+}
+
+}  // namespace rpt

@@ -1,0 +1,335 @@
+// SPDX-License-Identifier: MIT
+#include "datasets/readers/egohumans.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <map>
+
+#include "core/errors.h"
+#include "tests/datasets/readers_h36m_ego_test_util.h"
+
+namespace rpt {
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+using test::InputErrorOf;
+using test::Num;
+
+// One exo camera of the synthetic scene: fisheye intrinsics and its metric pose in the aria01 frame.
+struct ExoSpec {
+  std::string name;
+  int colmap_id;
+  double fx, fy, cx, cy, k1, k2, k3, k4;
+  Eigen::Vector3d center;  // aria01 frame, metres
+  bool manual = false;     // extrinsics from camXX.npy instead of images.txt
+};
+
+const std::vector<ExoSpec>& Exos() {
+  static const std::vector<ExoSpec> exos = {
+      {"cam01", 1, 1750, 1752, 1920, 1080, 0.05, -0.01, 0.002, -0.0003, {4.0, 0.3, 1.5}},
+      {"cam02", 2, 1700, 1701, 1910, 1075, 0.04, -0.02, 0.001, 0.0001, {-3.0, 3.0, 2.0}},
+      {"cam03", 3, 1800, 1799, 1930, 1085, 0.03, 0.0, 0.0, 0.0, {0.5, -4.0, 1.2}, true},
+  };
+  return exos;
+}
+
+// colmap_from_aria[aria01]: a similarity (scale 1.7).
+Eigen::Matrix4d ColmapFromAnchor() {
+  Eigen::Matrix4d T = Eigen::Matrix4d::Identity();
+  T.topLeftCorner<3, 3>() = 1.7 * Eigen::AngleAxisd(0.4, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  T.topRightCorner<3, 1>() = Eigen::Vector3d(0.3, -0.2, 1.1);
+  return T;
+}
+
+// COLMAP pose cam_from_colmap (rigid) of a camera whose metric aria01-frame pose is (R, -R C).
+Eigen::Matrix4d CamFromColmap(const ExoSpec& exo) {
+  const Eigen::Matrix4d T = ColmapFromAnchor();
+  const double s = std::cbrt(T.topLeftCorner<3, 3>().determinant());
+  const Eigen::Matrix3d Q = T.topLeftCorner<3, 3>() / s;
+  const Eigen::Vector3d u = T.topRightCorner<3, 1>();
+  const Eigen::Matrix3d R = test::LookAt(exo.center, Eigen::Vector3d(0, 0, 1));
+  const Eigen::Vector3d t = -R * exo.center;
+  Eigen::Matrix4d E = Eigen::Matrix4d::Identity();
+  E.topLeftCorner<3, 3>() = R * Q.transpose();
+  E.topRightCorner<3, 1>() = s * t - E.topLeftCorner<3, 3>() * u;
+  return E;
+}
+
+// egohumans ExoCamera.project: E = [R|t](colmap) * colmap_from_aria, then OPENCV_FISHEYE.
+Eigen::Vector2d EgohumansProject(const ExoSpec& exo, const Eigen::Vector3d& X) {
+  const Eigen::Matrix4d E = CamFromColmap(exo) * ColmapFromAnchor();
+  const Eigen::Vector3d p = (E * X.homogeneous()).head<3>();
+  const double a = p.x() / p.z(), b = p.y() / p.z();
+  const double r = std::hypot(a, b);
+  const double theta = std::atan(r);
+  const double t2 = theta * theta;
+  const double theta_d = theta * (1 + exo.k1 * t2 + exo.k2 * t2 * t2 + exo.k3 * t2 * t2 * t2 + exo.k4 * t2 * t2 * t2 * t2);
+  const double scale = r > 1e-12 ? theta_d / r : 1.0;
+  return Eigen::Vector2d(exo.fx * scale * a + exo.cx, exo.fy * scale * b + exo.cy);
+}
+
+// COCO-17 joints (metres, aria01 frame) of person `p` at time stamp `t`.
+Eigen::Matrix<double, 3, 17> Person(int p, int t) {
+  Eigen::Matrix<double, 3, 17> X;
+  for (int j = 0; j < 17; ++j) {
+    X.col(j) << 0.8 * p - 0.4 + 0.1 * std::sin(j + 0.2 * t), 0.5 * p + 0.08 * std::cos(1.3 * j), 1.7 - 0.09 * j + 0.01 * t;
+  }
+  return X;
+}
+
+// Valid flag of person p, joint j at time t: aria02 loses joint 5 at t = 2 and everything at t = 3.
+bool Valid(int p, int j, int t) { return !(p == 1 && ((t == 2 && j == 5) || t == 3)); }
+
+std::vector<double> Flat(const Eigen::Matrix4d& m) {
+  std::vector<double> values;
+  for (int r = 0; r < 4; ++r) {
+    for (int c = 0; c < 4; ++c) values.push_back(m(r, c));
+  }
+  return values;
+}
+
+test::Obj Matrix4Obj(const Eigen::Matrix4d& m) { return test::PyArray({4, 4}, Flat(m)); }
+
+struct TreeOptions {
+  bool nan_in_gt = false;
+  bool bad_quaternion = false;
+  bool gt_wrong_shape = false;
+};
+
+// Writes data/01_tagging/001_tagging with time stamps 1..3 and returns the sequence directory.
+fs::path WriteTree(const fs::path& data, const TreeOptions& options = {}) {
+  const fs::path seq = data / "01_tagging" / "001_tagging";
+  const fs::path work = seq / "colmap" / "workplace";
+  std::string cameras = "# Camera list with one line of data per camera:\n#   CAMERA_ID, MODEL, WIDTH, HEIGHT, PARAMS[]\n# Number of cameras: 4\n";
+  for (const ExoSpec& e : Exos()) {
+    cameras += std::to_string(e.colmap_id) + " OPENCV_FISHEYE 3840 2160 " + Num(e.fx) + " " + Num(e.fy) + " " + Num(e.cx) + " " + Num(e.cy) +
+               " " + Num(e.k1) + " " + Num(e.k2) + " " + Num(e.k3) + " " + Num(e.k4) + "\n";
+  }
+  cameras += "4 FOV 1408 1408 600 600 704 704 0.9\n";  // an Aria camera: ignored
+  test::WriteText(work / "cameras.txt", cameras);
+
+  std::string images = "# Image list with two lines of data per image:\n#   IMAGE_ID, QW, QX, QY, QZ, TX, TY, TZ, CAMERA_ID, NAME\n#   POINTS2D[] as (X, Y, POINT3D_ID)\n# Number of images: 5\n";
+  auto image_line = [&](int id, const Eigen::Matrix4d& E, int camera, const std::string& name) {
+    Eigen::Quaterniond q(Eigen::Matrix3d(E.topLeftCorner<3, 3>()));
+    if (options.bad_quaternion && id == 3) q.coeffs() *= 1.2;
+    images += std::to_string(id) + " " + Num(q.w()) + " " + Num(q.x()) + " " + Num(q.y()) + " " + Num(q.z()) + " " + Num(E(0, 3)) + " " +
+              Num(E(1, 3)) + " " + Num(E(2, 3)) + " " + std::to_string(camera) + " " + name + "\n" + "100.5 200.5 12 300 400 -1\n";
+  };
+  Eigen::Matrix4d wrong = CamFromColmap(Exos()[0]);
+  wrong.topRightCorner<3, 1>() += Eigen::Vector3d(0.5, 0.1, -0.2);
+  image_line(1, CamFromColmap(Exos()[0]), 1, "cam01/00001.jpg");
+  image_line(2, wrong, 1, "cam01/00050.jpg");  // farther in time: not used for time stamp 1
+  image_line(3, CamFromColmap(Exos()[1]), 2, "cam02/00003.jpg");
+  image_line(4, wrong, 3, "cam03/00001.jpg");  // overridden by the manual cam03.npy
+  image_line(5, Eigen::Matrix4d::Identity(), 4, "aria01/00001.jpg");
+  test::WriteText(work / "images.txt", images);
+  test::WriteBytes(work / "cam03.npy",
+                   test::NpyBytes("{'descr': '<f8', 'fortran_order': False, 'shape': (4, 4), }", test::RawOf(Flat(CamFromColmap(Exos()[2])))));
+
+  Eigen::Matrix4d other = Eigen::Matrix4d::Identity();
+  other.topRightCorner<3, 1>() = Eigen::Vector3d(5, 5, 5);
+  test::WriteBytes(work / "colmap_from_aria_transforms.pkl",
+                   test::PickleOf(test::PyDict({{test::PyStr("aria01"), Matrix4Obj(ColmapFromAnchor())},
+                                                {test::PyStr("aria02"), Matrix4Obj(other)}})));
+
+  for (int t = 1; t <= 3; ++t) {
+    std::vector<std::pair<test::Obj, test::Obj>> gt;
+    for (int p = 0; p < 2; ++p) {
+      const auto X = Person(p, t);
+      std::vector<double> values;
+      for (int j = 0; j < 17; ++j) {
+        const bool valid = Valid(p, j, t);
+        for (int d = 0; d < 3; ++d) values.push_back(valid ? X(d, j) : 0.0);
+        values.push_back(valid ? 1.0 : 0.0);
+      }
+      if (options.nan_in_gt && t == 2 && p == 0) values[4 * 3 + 1] = std::nan("");
+      const std::vector<std::int64_t> shape = options.gt_wrong_shape && t == 2 ? std::vector<std::int64_t>{17, 2, 2}
+                                                                               : std::vector<std::int64_t>{17, 4};
+      gt.emplace_back(test::PyStr("aria0" + std::to_string(p + 1)), test::PyArray(shape, values));
+    }
+    const std::string file = "0000" + std::to_string(t) + ".npy";
+    test::WriteBytes(seq / "processed_data" / "poses3d" / file, test::NpyOfObject(test::PyDict(gt)));
+    if (t == 1) test::WriteBytes(seq / "processed_data" / "fit_poses3d" / file, test::NpyOfObject(test::PyDict(gt)));
+
+    for (const ExoSpec& e : Exos()) {
+      std::vector<test::Obj> people;
+      for (int p = 0; p < 2; ++p) {
+        const auto X = Person(p, t);
+        std::vector<double> keypoints(133 * 3, 0.0);
+        for (int j = 0; j < 17; ++j) {
+          if (!Valid(p, j, t)) continue;
+          const Eigen::Vector2d uv = EgohumansProject(e, X.col(j));
+          keypoints[static_cast<std::size_t>(3 * j)] = uv.x();
+          keypoints[static_cast<std::size_t>(3 * j + 1)] = uv.y();
+          keypoints[static_cast<std::size_t>(3 * j + 2)] = j == 0 ? 1.25 : 0.9;  // HRNet may exceed 1
+        }
+        people.push_back(test::PyDict({{test::PyStr("human_name"), test::PyStr("aria0" + std::to_string(p + 1))},
+                                       {test::PyStr("bbox"), test::PyArray({5}, {10, 20, 300, 400, 0.99})},
+                                       {test::PyStr("keypoints"), test::PyArray({133, 3}, keypoints)}}));
+      }
+      if (t == 3 && e.name == "cam02") people.clear();  // nobody detected
+      test::WriteBytes(seq / "processed_data" / "poses2d" / e.name / "rgb" / file, test::NpyOfObjectList(people));
+    }
+  }
+  return seq;
+}
+
+DatasetRequest Request(const fs::path& root, std::map<std::string, std::string> params = {}) {
+  DatasetRequest request;
+  request.dataset = "egohumans";
+  request.root = root;
+  request.params = std::move(params);
+  return request;
+}
+
+TEST(EgohumansReader, GtProjectsOntoTheTwoDCache) {
+  test::TempDir dir;
+  const fs::path data = dir.path() / "data";
+  WriteTree(data);
+  const auto sequences = ReadEgohumans(Request(data, {{"detections", "cache"}}));
+  ASSERT_EQ(sequences.size(), 1u);
+  const Sequence& seq = sequences[0];
+  EXPECT_EQ(seq.name, "egohumans/01_tagging/001_tagging");
+  EXPECT_EQ(seq.gt_joints, CocoBodyJoints());
+  EXPECT_EQ(seq.detection_joints, CocoWholeBodyJoints());
+  ASSERT_EQ(seq.cameras.size(), 3u);
+  for (std::size_t c = 0; c < 3; ++c) {
+    const Camera& camera = seq.cameras[c];
+    EXPECT_EQ(camera.name, Exos()[c].name);
+    EXPECT_EQ(camera.model, DistortionModel::kFisheye);
+    EXPECT_EQ(camera.width, 3840);
+    EXPECT_EQ(camera.height, 2160);
+    EXPECT_DOUBLE_EQ(camera.dist[1], Exos()[c].k2);
+    // Metric pose in the anchor frame despite the scaled colmap_from_aria.
+    EXPECT_LT((camera.Center() - Exos()[c].center).norm(), 1e-9) << camera.name;
+  }
+  ASSERT_EQ(seq.frames.size(), 3u);
+  EXPECT_EQ(seq.frames[0].id, "egohumans_01_tagging_001_tagging_00001");
+  EXPECT_DOUBLE_EQ(seq.frames[2].timestamp_s, 2 / 20.0);
+
+  double worst_px = 0;
+  int checked = 0;
+  for (int t = 1; t <= 3; ++t) {
+    const SequenceFrame& frame = seq.frames[static_cast<std::size_t>(t - 1)];
+    const Poses3D& gt = frame.gt;
+    ASSERT_EQ(gt.num_persons(), t == 3 ? 1 : 2);
+    ASSERT_EQ(frame.views.size(), 3u);
+    for (int p = 0; p < gt.num_persons(); ++p) {
+      EXPECT_EQ(gt.track_ids[static_cast<std::size_t>(p)], p + 1);
+      const auto person = gt.Person(p);
+      for (int j = 0; j < 17; ++j) {
+        EXPECT_EQ(person(3, j), Valid(p, j, t) ? 1.0 : 0.0);
+        if (!Valid(p, j, t)) continue;
+        EXPECT_LT((person.col(j).head<3>() - Person(p, t).col(j)).norm(), 1e-12);
+        for (std::size_t c = 0; c < 3; ++c) {
+          const Poses2D& view = frame.views[c];
+          if (t == 3 && c == 1) {
+            EXPECT_EQ(view.num_persons(), 0);
+            continue;
+          }
+          ASSERT_EQ(view.num_persons(), 2);
+          const auto detection = view.Person(p);
+          Eigen::Vector2d uv;
+          ASSERT_TRUE(seq.cameras[c].Project(person.col(j).head<3>(), &uv));
+          worst_px = std::max(worst_px, (uv - detection.col(j).head<2>()).norm());
+          EXPECT_EQ(detection(2, j), j == 0 ? 1.0 : 0.9);  // clamped to [0, 1]
+          ++checked;
+        }
+      }
+    }
+  }
+  EXPECT_GT(checked, 200);
+  EXPECT_LT(worst_px, 1e-6);
+
+  // The same cache through ReadEgohumansDetections.
+  const Detections detections = ReadEgohumansDetections(Request(data, {{"sequences", "01_tagging/001_tagging"}}));
+  ASSERT_EQ(detections.frames.size(), 3u);
+  EXPECT_EQ(detections.joints.size(), 133u);
+  EXPECT_EQ(detections.frames[1].frame_id, "egohumans_01_tagging_001_tagging_00002");
+  EXPECT_EQ(detections.frames[1].cameras, (std::vector<std::string>{"cam01", "cam02", "cam03"}));
+  Sequence without = ReadEgohumans(Request(data))[0];
+  EXPECT_TRUE(without.frames[0].views.empty());
+  const AttachReport report = AttachDetections(detections, "cache", &without);
+  EXPECT_EQ(report.frames_with_detections, 3);
+  EXPECT_EQ(without.frames[0].views[2].data, seq.frames[0].views[2].data);
+}
+
+TEST(EgohumansReader, RootLevelsAndParams) {
+  test::TempDir dir;
+  const fs::path data = dir.path() / "data";
+  const fs::path seq_dir = WriteTree(data);
+  // root = one big sequence, or the sequence itself.
+  EXPECT_EQ(ReadEgohumans(Request(data / "01_tagging"))[0].name, "egohumans/01_tagging/001_tagging");
+  const auto single = ReadEgohumans(Request(seq_dir, {{"cameras", "cam02,cam01"}, {"every", "2"}}));
+  ASSERT_EQ(single.size(), 1u);
+  EXPECT_EQ(single[0].cameras.size(), 2u);
+  EXPECT_EQ(single[0].cameras[0].name, "cam01");
+  ASSERT_EQ(single[0].frames.size(), 2u);
+  EXPECT_EQ(single[0].frames[1].id, "egohumans_01_tagging_001_tagging_00003");
+  EXPECT_EQ(ReadEgohumans(Request(data, {{"max_frames", "1"}}))[0].frames.size(), 1u);
+  EXPECT_EQ(ReadEgohumans(Request(data, {{"gt", "fit_poses3d"}}))[0].frames.size(), 1u);
+  EXPECT_EQ(ReadEgohumans(Request(data, {{"sequences", "001_tagging"}})).size(), 1u);
+  // Another anchor moves the cameras (GT stays in the file's frame).
+  const auto other = ReadEgohumans(Request(data, {{"anchor", "aria02"}}));
+  EXPECT_GT((other[0].cameras[0].Center() - Exos()[0].center).norm(), 0.1);
+
+  EXPECT_THROW(ReadEgohumans(Request(data, {{"gt", "smpl"}})), ConfigError);
+  EXPECT_THROW(ReadEgohumans(Request(data, {{"detections", "hrnet"}})), ConfigError);
+  EXPECT_THROW(ReadEgohumans(Request(data, {{"fps", "-3"}})), ConfigError);
+  EXPECT_THROW(ReadEgohumans(Request(data, {{"frames", "1-3"}})), ConfigError);
+  EXPECT_THAT(InputErrorOf([&] { ReadEgohumans(Request(data, {{"sequences", "02_lego/001_lego"}})); }),
+              HasSubstr("unknown sequence '02_lego/001_lego' (found 01_tagging/001_tagging)"));
+  EXPECT_THAT(InputErrorOf([&] { ReadEgohumans(Request(data, {{"cameras", "cam09"}})); }), HasSubstr("cameras.txt: unknown exo camera 'cam09'"));
+  EXPECT_THAT(InputErrorOf([&] { ReadEgohumans(Request(data, {{"anchor", "aria07"}})); }),
+              HasSubstr("colmap_from_aria_transforms.pkl: top level: missing key 'aria07'"));
+  EXPECT_THAT(InputErrorOf([&] { ReadEgohumans(Request(data, {{"gt", "refine_poses3d"}})); }),
+              HasSubstr("refine_poses3d: ground-truth directory not found"));
+  EXPECT_THAT(InputErrorOf([&] { ReadEgohumans(Request(dir.path() / "nothing")); }), HasSubstr("nothing: not a directory"));
+}
+
+TEST(EgohumansReader, MalformedInputsNameFileAndPlace) {
+  {
+    test::TempDir dir;
+    WriteTree(dir.path(), {.nan_in_gt = true});
+    EXPECT_THAT(InputErrorOf([&] { ReadEgohumans(Request(dir.path())); }),
+                HasSubstr("poses3d/00002.npy: key 'aria01': joint 3: NaN or infinite coordinate"));
+  }
+  {
+    test::TempDir dir;
+    WriteTree(dir.path(), {.gt_wrong_shape = true});
+    EXPECT_THAT(InputErrorOf([&] { ReadEgohumans(Request(dir.path())); }), HasSubstr("poses3d/00002.npy: key 'aria01': expected shape (17, 4)"));
+  }
+  {
+    test::TempDir dir;
+    WriteTree(dir.path(), {.bad_quaternion = true});
+    EXPECT_THAT(InputErrorOf([&] { ReadEgohumans(Request(dir.path())); }), HasSubstr("images.txt:9: quaternion"));
+  }
+  test::TempDir dir;
+  const fs::path seq = WriteTree(dir.path());
+  // Truncated GT file.
+  const fs::path gt = seq / "processed_data" / "poses3d" / "00003.npy";
+  fs::resize_file(gt, fs::file_size(gt) - 20);
+  EXPECT_THAT(InputErrorOf([&] { ReadEgohumans(Request(dir.path())); }), HasSubstr("poses3d/00003.npy"));
+  EXPECT_EQ(ReadEgohumans(Request(dir.path(), {{"max_frames", "2"}}))[0].frames.size(), 2u);
+  // Missing / malformed 2D cache.
+  fs::remove(seq / "processed_data" / "poses2d" / "cam02" / "rgb" / "00001.npy");
+  EXPECT_THAT(InputErrorOf([&] { ReadEgohumans(Request(dir.path(), {{"detections", "cache"}, {"max_frames", "2"}})); }),
+              HasSubstr("poses2d/cam02/rgb/00001.npy: 2D pose cache file not found"));
+  test::WriteBytes(seq / "processed_data" / "poses2d" / "cam02" / "rgb" / "00001.npy",
+                   test::NpyOfObjectList({test::PyDict({{test::PyStr("keypoints"), test::PyArray({17, 3}, std::vector<double>(51, 1.0))}})}));
+  EXPECT_THAT(InputErrorOf([&] { ReadEgohumansDetections(Request(dir.path(), {{"max_frames", "1"}})); }),
+              HasSubstr("cam02/rgb/00001.npy: [0].keypoints: expected shape (133, 3)"));
+  // A malformed 4x4 manual calibration and a missing cameras.txt.
+  const fs::path work = seq / "colmap" / "workplace";
+  test::WriteBytes(work / "cam03.npy", test::NpyBytes("{'descr': '<f8', 'fortran_order': False, 'shape': (3, 4), }", test::RawOf(std::vector<double>(12, 0.0))));
+  EXPECT_THAT(InputErrorOf([&] { ReadEgohumans(Request(dir.path())); }), HasSubstr("cam03.npy: top level: expected 16 numbers, got shape (3, 4)"));
+  fs::remove(work / "cameras.txt");
+  EXPECT_THAT(InputErrorOf([&] { ReadEgohumans(Request(dir.path())); }), HasSubstr("cameras.txt: file not found"));
+}
+
+}  // namespace
+}  // namespace rpt
