@@ -12,6 +12,7 @@ void RegisterConfigCommand(CLI::App& app);
 void RegisterEvalCommand(CLI::App& app);
 void RegisterDatasetsCommand(CLI::App& app);
 void RegisterConvertCommand(CLI::App& app);
+void RegisterBenchCommand(CLI::App& app);
 void RegisterInspectCommand(CLI::App& app);
 // Commands whose success is not binary set *exit_code (check: 1 when a threshold failed).
 void RegisterCheckCommand(CLI::App& app, int* exit_code);

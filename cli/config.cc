@@ -189,6 +189,8 @@ const std::vector<Descriptor>& Descriptors() {
              [](Config& c) -> double& { return c.triangulator.prefilter.person_speed_m_s; }),
       Number("prefilter.ambiguity_ratio", "second-closest person must be this much farther for a match",
              [](Config& c) -> double& { return c.triangulator.prefilter.ambiguity_ratio; }),
+      Int("prefilter.max_pairs_per_person", "pairs kept per tracked person, best triangulation angle first (<= 0: all)",
+          [](Config& c) -> int& { return c.triangulator.prefilter.max_pairs_per_person; }),
       Enum<TriangulationMethod>("triangulate.method", "steps 4 and 10: ray mid-point or linear DLT (SVD)",
                                 {{"midpoint", TriangulationMethod::kMidpoint}, {"dlt", TriangulationMethod::kDlt}},
                                 [](Config& c) -> TriangulationMethod& { return c.triangulator.triangulate.method; }),

@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   rpt::cli::RegisterInspectCommand(app);
   rpt::cli::RegisterDatasetsCommand(app);
   rpt::cli::RegisterConvertCommand(app);
+  rpt::cli::RegisterBenchCommand(app);
   rpt::cli::RegisterConfigCommand(app);
   int exit_code = 0;
   rpt::cli::RegisterCheckCommand(app, &exit_code);

@@ -43,6 +43,7 @@ std::string TriangulatorOptions::Check() const {
   c.Range("prefilter.max_distance_rel", prefilter.max_distance_rel, 0, 100);
   c.Range("prefilter.person_speed_m_s", prefilter.person_speed_m_s, 0, 1000);
   c.Range("prefilter.ambiguity_ratio", prefilter.ambiguity_ratio, 1, 1000);
+  c.Range("prefilter.max_pairs_per_person", prefilter.max_pairs_per_person, -1, 1e9);
   c.Range("triangulate.min_core_joints", triangulate.min_core_joints, 1, 1000);
   c.Finite("room_check.center_m", room_check.center_m);
   c.Finite("room_check.size_m", room_check.size_m);

@@ -27,6 +27,9 @@ struct PrefilterOptions {
   double max_distance_rel = 0.25;  // match radius at zero elapsed time (fraction of bbox diagonal)
   double person_speed_m_s = 2.0;   // assumed top speed of a person, widens the radius over time
   double ambiguity_ratio = 1.5;    // second-closest person must be this much farther for a match
+  // With many cameras a tracked person yields k(k-1)/2 pairs; keep only this many per person, those
+  // with the best triangulation angle (closest to 90 degrees at the person). <= 0: keep all.
+  int max_pairs_per_person = 30;
 };
 
 enum class TriangulationMethod { kMidpoint, kDlt };

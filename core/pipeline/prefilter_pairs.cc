@@ -7,6 +7,72 @@
 
 namespace rpt {
 
+namespace {
+
+// Keeps at most max_pairs_per_person of the pairs matched to each previous person: those with the
+// viewing-ray angle at the person's last centre closest to 90 degrees (largest sin).
+int ApplyPairBudget(const PreparedViews& views, std::span<const ViewGeometry> geometry, const PreviousPersons& previous,
+                    const PrefilterOptions& options, PrefilterScratch* scratch, std::vector<PosePair>* pairs) {
+  const int num_previous = previous.size();
+  const int num_core = previous.num_core;
+  const std::vector<int>& match = scratch->match;
+  const size_t budget = static_cast<size_t>(options.max_pairs_per_person);
+  scratch->centers.assign(num_previous, Eigen::Vector3d::Zero());
+  for (int q = 0; q < num_previous; ++q) {
+    int n = 0;
+    for (int c = 0; c < num_core; ++c) {
+      const size_t idx = static_cast<size_t>(q) * num_core + c;
+      if (previous.score[idx] <= 0) continue;
+      scratch->centers[q] += previous.xyz[idx];
+      ++n;
+    }
+    if (n > 0) scratch->centers[q] /= n;
+  }
+  scratch->keep.assign(pairs->size(), 1);
+  scratch->covered.resize(views.num_poses());
+  for (int q = 0; q < num_previous; ++q) {
+    scratch->budget.clear();
+    for (size_t k = 0; k < pairs->size(); ++k) {
+      const PosePair& pair = (*pairs)[k];
+      if (match[pair.a] != q) continue;  // both sides match q (mixed pairs were dropped)
+      const Eigen::Vector3d ra = (geometry[views.view_of[pair.a]].center - scratch->centers[q]).normalized();
+      const Eigen::Vector3d rb = (geometry[views.view_of[pair.b]].center - scratch->centers[q]).normalized();
+      scratch->budget.emplace_back(-ra.cross(rb).norm(), static_cast<int>(k));  // -sin(angle): best first
+    }
+    if (scratch->budget.size() <= budget) continue;
+    // Best angles first. Every pose of the person keeps at least its best pair (so the person's
+    // group claims all its poses, see group.exclusive_poses), then the budget fills by angle.
+    std::sort(scratch->budget.begin(), scratch->budget.end());
+    for (const auto& [score, k] : scratch->budget) {
+      scratch->covered[(*pairs)[k].a] = scratch->covered[(*pairs)[k].b] = 0;
+      scratch->keep[k] = 0;
+    }
+    size_t used = 0;
+    for (const auto& [score, k] : scratch->budget) {
+      const PosePair& pair = (*pairs)[k];
+      if (scratch->covered[pair.a] && scratch->covered[pair.b]) continue;
+      scratch->covered[pair.a] = scratch->covered[pair.b] = 1;
+      scratch->keep[k] = 1;
+      ++used;
+    }
+    for (const auto& [score, k] : scratch->budget) {
+      if (used >= budget) break;
+      if (!scratch->keep[k]) {
+        scratch->keep[k] = 1;
+        ++used;
+      }
+    }
+  }
+  int kept = 0;
+  for (size_t k = 0; k < pairs->size(); ++k) {
+    if (scratch->keep[k]) (*pairs)[kept++] = (*pairs)[k];
+  }
+  pairs->resize(kept);
+  return kept;
+}
+
+}  // namespace
+
 int PrefilterPairs(const PreparedViews& views, std::span<const ViewGeometry> geometry,
                    std::span<const int> core_joints, const PreviousPersons& previous, double timestamp_s,
                    const PrefilterOptions& options, PrefilterScratch* scratch, std::vector<PosePair>* pairs) {
@@ -90,6 +156,7 @@ int PrefilterPairs(const PreparedViews& views, std::span<const ViewGeometry> geo
     if (!drop) (*pairs)[kept++] = pair;
   }
   pairs->resize(kept);
+  if (options.max_pairs_per_person > 0) kept = ApplyPairBudget(views, geometry, previous, options, scratch, pairs);
   return kept;
 }
 

@@ -12,6 +12,12 @@
 // free (the paper's one-sided case: the other pose is somebody else); every other pair is kept,
 // in particular both-matched-same, both-free and anything ambiguous. Refusing to act on ambiguous
 // matches keeps true pairs in crowded views and in sparsely sampled sequences.
+//
+// Pair budget (an addition to the paper): a person matched in k views yields k(k-1)/2 pairs, 465
+// with 31 cameras, far more than the merge needs (it keeps the top-k closest proposals per
+// joint). Of the pairs matched to one person only max_pairs_per_person are kept: first the best
+// pair of every pose (so no pose of the person is left unused), then the pairs whose viewing rays
+// meet at the person's last position at the angle closest to 90 degrees.
 #pragma once
 
 #include <span>
@@ -43,6 +49,10 @@ struct PrefilterScratch {
   std::vector<int> match;         // per pose: person index, kPoseFree or kPoseAmbiguous
   std::vector<double> distance;   // per pose: distance to the matched person (px)
   std::vector<Eigen::Vector2d> projected;  // per view, person and core joint (NaN = not visible)
+  std::vector<Eigen::Vector3d> centers;    // per previous person
+  std::vector<std::pair<double, int>> budget;  // (angle score, pair index) of one person's pairs
+  std::vector<char> keep;                  // per pair
+  std::vector<char> covered;               // per pose: used by a kept pair of its person
 };
 
 // Classifies every pose into scratch->match, then compacts `pairs`.

@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: MIT
+#include "bench/bench_scenes.h"
+
+#include "datasets/synthetic/synthetic_sequence.h"
+
+namespace rpt::bench {
+
+const std::vector<BenchScene>& StandardScenes() {
+  static const std::vector<BenchScene> scenes = {
+      {"shelf-like", "5 cameras, 4 people, 17 joints, realistic noise and false positives", 5, 4, false, 300, 25},
+      {"whole-body", "5 cameras, 2 people, 133 joints", 5, 2, true, 200, 120},
+      {"panoptic-like", "31 cameras, 8 people, 17 joints", 31, 8, false, 60, 1000},
+      {"few-views", "3 cameras, 6 people, 17 joints", 3, 6, false, 300, 0},
+  };
+  return scenes;
+}
+
+std::vector<BenchScene> ScalingScenes() {
+  std::vector<BenchScene> scenes;
+  for (int cameras : {2, 3, 5, 8, 12, 16, 24, 31}) {
+    scenes.push_back({"cameras-" + std::to_string(cameras), "4 people", cameras, 4, false, 60, 0});
+  }
+  for (int people : {1, 2, 4, 8, 12, 16, 20}) {
+    scenes.push_back({"people-" + std::to_string(people), "5 cameras", 5, people, false, 60, 0});
+  }
+  return scenes;
+}
+
+Sequence MakeBenchSequence(const BenchScene& scene, uint64_t seed) {
+  synthetic::SceneOptions options;
+  options.rig.num_cameras = scene.cameras;
+  options.num_people = scene.people;
+  options.whole_body = scene.whole_body;
+  options.num_frames = scene.frames;
+  options.seed = seed;
+  if (scene.people > 12) {
+    options.room_size_m = Eigen::Vector3d(12, 12, 3);  // room for a crowd to walk
+    options.rig.radius_m = 7.5;
+  }
+  const synthetic::Scene generated = synthetic::GenerateScene(options);
+  return synthetic::MakeSyntheticSequence(generated, synthetic::DetectorOptions::Realistic(), seed, scene.name);
+}
+
+}  // namespace rpt::bench

@@ -1,0 +1,31 @@
+// SPDX-License-Identifier: MIT
+// The benchmark scenes, shared by `rpt bench` and the Google Benchmark executables, so both
+// measure exactly the same inputs.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "datasets/sequence.h"
+
+namespace rpt::bench {
+
+struct BenchScene {
+  std::string name;         // e.g. "shelf-like"
+  std::string description;  // one line
+  int cameras = 5;
+  int people = 4;
+  bool whole_body = false;
+  int frames = 300;
+  double target_us = 0;     // frame-time target (median, one thread), 0 = none
+};
+
+// shelf-like, whole-body, panoptic-like, few-views.
+const std::vector<BenchScene>& StandardScenes();
+// Scaling series: cameras 2..31 with 4 people; people 1..20 with 5 cameras.
+std::vector<BenchScene> ScalingScenes();
+
+// The scene with realistic simulated detections (seeded, deterministic).
+Sequence MakeBenchSequence(const BenchScene& scene, uint64_t seed = 1);
+
+}  // namespace rpt::bench

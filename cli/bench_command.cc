@@ -1,0 +1,191 @@
+// SPDX-License-Identifier: MIT
+// `rpt bench`: single-threaded speed of the triangulator on the benchmark scenes (bench/), 2D to
+// 3D including undistortion: median per frame and per step over several passes after a warm-up,
+// the accuracy of the same run, and in the same run a straightforward baseline implementation
+// with the speed-up over it.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "bench/baseline_triangulator.h"
+#include "bench/bench_scenes.h"
+#include "cli/commands.h"
+#include "cli/config_args.h"
+#include "cli/report.h"
+#include "cli/results_writer.h"
+#include "cli/run_info.h"
+#include "core/errors.h"
+#include "core/text.h"
+#include "core/pipeline/triangulator.h"
+#include "metrics/accumulator.h"
+#include "metrics/timing.h"
+
+namespace rpt::cli {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+struct BenchArgs {
+  std::vector<std::string> scenes;
+  bool scaling = false;
+  int frames = 0;
+  int repeat = 5;
+  int baseline_frames = 30;
+  bool no_baseline = false;
+  bool json = false;
+  ConfigArgs config;
+};
+
+struct SceneResult {
+  bench::BenchScene scene;
+  metrics::TimingSummary timing;
+  metrics::MetricsResult metrics;
+  double baseline_median_us = 0;
+  metrics::MetricsResult baseline_metrics;
+};
+
+SceneResult BenchScene(const bench::BenchScene& scene, const BenchArgs& args, const Config& config) {
+  const Sequence sequence = bench::MakeBenchSequence(scene);
+  TriangulatorOptions options = config.triangulator;
+  options.room_check.center_m = sequence.room.center_m;
+  options.room_check.size_m = sequence.room.size_m;
+  Triangulator triangulator(sequence.cameras, sequence.detection_joints, options);
+  SceneResult result{scene, {}, {}, 0, {}};
+  Poses3D persons;
+  FrameStats stats;
+  metrics::TimingAccumulator timing;
+  metrics::MetricsAccumulator accuracy(config.metrics);
+  for (int pass = 0; pass <= args.repeat; ++pass) {  // pass 0 warms up (caches, buffer growth)
+    triangulator.Reset();
+    for (size_t f = 0; f < sequence.frames.size(); ++f) {
+      const SequenceFrame& frame = sequence.frames[f];
+      triangulator.Process(frame.views, frame.timestamp_s, &persons, &stats);
+      if (pass > 0) timing.Add(stats);
+      if (pass == 1) accuracy.Add(frame.id, frame.gt, sequence.gt_joints, persons, triangulator.output_joints());
+    }
+  }
+  result.timing = timing.Finalize();
+  result.metrics = accuracy.Finalize();
+  if (!args.no_baseline) {
+    const bench::BaselineTriangulator baseline(sequence.cameras, sequence.detection_joints);
+    std::vector<double> times;
+    metrics::MetricsAccumulator baseline_accuracy(config.metrics);
+    const size_t frames = std::min<size_t>(sequence.frames.size(), static_cast<size_t>(args.baseline_frames));
+    for (size_t f = 0; f < frames; ++f) {
+      const auto start = std::chrono::steady_clock::now();
+      const Poses3D out = baseline.Process(sequence.frames[f].views);
+      times.push_back(std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count());
+      baseline_accuracy.Add(sequence.frames[f].id, sequence.frames[f].gt, sequence.gt_joints, out, sequence.detection_joints);
+    }
+    result.baseline_median_us = metrics::Median(times);
+    result.baseline_metrics = baseline_accuracy.Finalize();
+  }
+  return result;
+}
+
+void RunBench(const BenchArgs& args) {
+  const Config config = ResolveConfig(args.config);
+  std::vector<bench::BenchScene> scenes;
+  const std::vector<bench::BenchScene> all = [&] {
+    std::vector<bench::BenchScene> list = bench::StandardScenes();
+    for (const auto& s : bench::ScalingScenes()) list.push_back(s);
+    return list;
+  }();
+  for (const std::string& name : args.scenes) {
+    const auto it = std::find_if(all.begin(), all.end(), [&](const auto& s) { return s.name == name; });
+    if (it == all.end()) {
+      std::string known;
+      for (const auto& s : all) AppendItem(&known, s.name);
+      throw ConfigError("--scene " + name + ": unknown (known: " + known + ")");
+    }
+    scenes.push_back(*it);
+  }
+  if (scenes.empty()) scenes = args.scaling ? bench::ScalingScenes() : bench::StandardScenes();
+  for (auto& s : scenes) {
+    if (args.frames > 0) s.frames = args.frames;
+  }
+
+  std::vector<SceneResult> results;
+  for (const auto& scene : scenes) {
+    if (!args.json) std::fprintf(stderr, "benchmarking %s ...\n", scene.name.c_str());
+    results.push_back(BenchScene(scene, args, config));
+  }
+  const RunInfo info = CollectRunInfo(1, CurrentCommandLine());
+  if (args.json) {
+    Json j;
+    j["run"] = RunInfoJson(info);
+    j["repeat"] = args.repeat;
+    j["scenes"] = Json::array();
+    for (const SceneResult& r : results) {
+      Json s;
+      s["name"] = r.scene.name;
+      s["description"] = r.scene.description;
+      s["frames"] = r.scene.frames;
+      s["frame_time_us_median"] = r.timing.frame_us_median;
+      s["frame_time_us_mean"] = r.timing.frame_us_mean;
+      s["frame_time_us_p90"] = r.timing.frame_us_p90;
+      s["step_time_us_median"] = StepTimesJson(r.timing);
+      s["mpjpe_mm"] = r.metrics.mpjpe_mm;
+      s["recall500"] = r.metrics.recall_500;
+      s["invalid"] = r.metrics.invalid;
+      if (!args.no_baseline) {
+        s["baseline_frame_time_us_median"] = r.baseline_median_us;
+        s["baseline_mpjpe_mm"] = r.baseline_metrics.mpjpe_mm;
+        s["speedup"] = r.baseline_median_us / r.timing.frame_us_median;
+      }
+      if (r.scene.target_us > 0) {
+        s["target_us"] = r.scene.target_us;
+        s["meets_target"] = r.timing.frame_us_median <= r.scene.target_us;
+      }
+      j["scenes"].push_back(s);
+    }
+    std::cout << j.dump(2) << "\n";
+    return;
+  }
+  std::printf("rpt bench: one thread, median over %d passes after a warm-up; revision %s; %s; %s\n\n", args.repeat,
+              info.git_revision.c_str(), info.cpu.c_str(), info.compiler.c_str());
+  std::printf("%-18s", "step (us)");
+  for (const auto& r : results) std::printf(" %14s", r.scene.name.c_str());
+  std::printf("\n");
+  for (int s = 0; s < kNumSteps; ++s) {
+    std::printf("%-18s", std::string(kStepNames[s]).c_str());
+    for (const auto& r : results) std::printf(" %14.2f", r.timing.step_us_median[s]);
+    std::printf("\n");
+  }
+  auto row = [&](const char* label, auto value, const char* format) {
+    std::printf("%-18s", label);
+    for (const auto& r : results) std::printf(format, value(r));
+    std::printf("\n");
+  };
+  row("total (median)", [](const SceneResult& r) { return r.timing.frame_us_median; }, " %14.2f");
+  row("total (mean)", [](const SceneResult& r) { return r.timing.frame_us_mean; }, " %14.2f");
+  row("target", [](const SceneResult& r) { return r.scene.target_us; }, " %14.0f");
+  row("MPJPE (mm)", [](const SceneResult& r) { return r.metrics.mpjpe_mm; }, " %14.1f");
+  row("Recall@500 (%)", [](const SceneResult& r) { return r.metrics.recall_500; }, " %14.1f");
+  row("Invalid (%)", [](const SceneResult& r) { return r.metrics.invalid; }, " %14.1f");
+  if (!args.no_baseline) {
+    row("baseline (us)", [](const SceneResult& r) { return r.baseline_median_us; }, " %14.1f");
+    row("baseline MPJPE", [](const SceneResult& r) { return r.baseline_metrics.mpjpe_mm; }, " %14.1f");
+    row("speed-up", [](const SceneResult& r) { return r.baseline_median_us / r.timing.frame_us_median; }, " %13.1fx");
+  }
+}
+
+}  // namespace
+
+void RegisterBenchCommand(CLI::App& app) {
+  auto args = std::make_shared<BenchArgs>();
+  CLI::App* command = app.add_subcommand("bench", "Single-threaded speed on the benchmark scenes, with a baseline");
+  command->add_option("--scene", args->scenes, "scene name (repeatable; default: the standard scenes)")->take_all();
+  command->add_flag("--scaling", args->scaling, "the scaling series over cameras (2..31) and people (1..20)");
+  command->add_option("--frames", args->frames, "frames per scene (default: the scene's)");
+  command->add_option("--repeat", args->repeat, "timed passes over the frames")->check(CLI::Range(1, 1000))->capture_default_str();
+  command->add_option("--baseline-frames", args->baseline_frames, "frames for the baseline")->capture_default_str();
+  command->add_flag("--no-baseline", args->no_baseline, "skip the baseline");
+  command->add_flag("--json", args->json, "print the results as JSON");
+  AddConfigOptions(command, &args->config);
+  command->callback([args] { RunBench(*args); });
+}
+
+}  // namespace rpt::cli
