@@ -6,12 +6,14 @@
 #include <Eigen/SVD>
 #include <cmath>
 
+#include "core/fast_math.h"
+
 namespace rpt {
 
 // Mid-point of the closest approach of two rays X = c + s * d (s > 0).
 // Writes the mid-point and the distance between the rays at their closest points ("ray gap").
 // Returns false for (near-)parallel rays or when the closest points lie behind either camera.
-inline bool TriangulateMidpoint(const Eigen::Vector3d& c1, const Eigen::Vector3d& d1, const Eigen::Vector3d& c2,
+RPT_ALWAYS_INLINE bool TriangulateMidpoint(const Eigen::Vector3d& c1, const Eigen::Vector3d& d1, const Eigen::Vector3d& c2,
                                 const Eigen::Vector3d& d2, Eigen::Vector3d* point, double* gap) {
   const Eigen::Vector3d w0 = c1 - c2;
   const double a = d1.dot(d1), b = d1.dot(d2), c = d2.dot(d2);

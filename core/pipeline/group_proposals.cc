@@ -42,13 +42,27 @@ int GroupProposals(const GroupOptions& options, int num_poses, std::span<const i
   s.count.clear();
   s.size.clear();
 
+  s.center_sum.clear();
+  s.center_count.clear();
   for (int k : s.order) {
     const Eigen::Vector3d* xyz = proposals->xyz.data() + static_cast<size_t>(k) * n;
     const double* score = proposals->score.data() + static_cast<size_t>(k) * n;
+    Eigen::Vector3d center = Eigen::Vector3d::Zero();
+    int valid = 0;
+    for (int i = 0; i < n; ++i) {
+      if (score[i] <= 0) continue;
+      center += xyz[i];
+      ++valid;
+    }
+    if (valid > 0) center /= valid;
     int best_group = -1;
     double best_distance = options.max_distance_m;
     const int num_groups = static_cast<int>(s.size.size());
     for (int g = 0; g < num_groups; ++g) {
+      // Cheap bound first: the mean joint distance is at least the distance of the centres (when
+      // both cover the same joints); 3x leaves room for different joint subsets.
+      const Eigen::Vector3d group_center = s.center_sum[g] / s.center_count[g];
+      if ((group_center - center).squaredNorm() > 9.0 * options.max_distance_m * options.max_distance_m) continue;
       double sum = 0;
       int common = 0;
       for (int i = 0; i < n; ++i) {
@@ -69,12 +83,18 @@ int GroupProposals(const GroupOptions& options, int num_poses, std::span<const i
       s.sum.resize(s.sum.size() + n, Eigen::Vector3d::Zero());
       s.count.resize(s.count.size() + n, 0);
       s.size.push_back(0);
+      s.center_sum.push_back(Eigen::Vector3d::Zero());
+      s.center_count.push_back(0);
     }
     for (int i = 0; i < n; ++i) {
       if (score[i] <= 0) continue;
       const size_t gi = static_cast<size_t>(best_group) * n + i;
       s.sum[gi] += xyz[i];
       ++s.count[gi];
+    }
+    if (valid > 0) {
+      s.center_sum[best_group] += center;
+      ++s.center_count[best_group];
     }
     ++s.size[best_group];
     proposals->group[k] = best_group;

@@ -29,6 +29,8 @@ struct GroupScratch {
   std::vector<Eigen::Vector3d> sum;  // per group and joint
   std::vector<int> count;            // per group and joint
   std::vector<int> size;             // per group
+  std::vector<Eigen::Vector3d> center_sum;  // per group: sum of member centres
+  std::vector<int> center_count;
   std::vector<int> renumber;
   std::vector<double> strength;  // per group: sum of pair scores
   std::vector<int> owner;        // per 2D pose: owning group

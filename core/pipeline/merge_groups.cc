@@ -8,44 +8,42 @@ namespace rpt {
 int MergeGroups(const MergeOptions& options, const Proposals& proposals, const Groups& groups,
                 MergeScratch* scratch, Poses3D* persons) {
   const int n = proposals.num_joints;
-  auto& candidates = scratch->candidates;
+  auto& candidates = scratch->candidates;  // (squared distance to the mean, proposal)
+  const double max_distance_sq = options.max_distance_m * options.max_distance_m;
+  const double min_score = std::max(options.min_joint_score, 1e-300);  // score 0 = invalid in any case
   for (int g = 0; g < groups.size(); ++g) {
     auto person = persons->AddPerson();
+    const int first = groups.begin[g], last = groups.begin[g + 1];
     for (int j = 0; j < n; ++j) {
       candidates.clear();
       Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-      for (int m = groups.begin[g]; m < groups.begin[g + 1]; ++m) {
+      int best = -1;  // highest-scoring candidate (fallback)
+      double best_score = -1;
+      for (int m = first; m < last; ++m) {
         const size_t idx = static_cast<size_t>(m) * n + j;
-        if (proposals.score[idx] < options.min_joint_score || proposals.score[idx] <= 0) continue;
+        const double score = proposals.score[idx];
+        if (score < min_score) continue;
         candidates.emplace_back(0.0, m);
         mean += proposals.xyz[idx];
+        if (score > best_score) {
+          best_score = score;
+          best = m;
+        }
       }
       if (candidates.empty()) {
         person.col(j).setZero();
         continue;
       }
       mean /= static_cast<double>(candidates.size());
-      for (auto& [distance, m] : candidates) {
-        distance = (proposals.xyz[static_cast<size_t>(m) * n + j] - mean).norm();
+      size_t kept = 0;
+      for (auto& c : candidates) {
+        c.first = (proposals.xyz[static_cast<size_t>(c.second) * n + j] - mean).squaredNorm();
+        if (options.max_distance_m <= 0 || c.first <= max_distance_sq) candidates[kept++] = c;
       }
-      if (options.max_distance_m > 0) {
-        // Best-scoring candidate, kept if the filter below would drop everything.
-        std::pair<double, int> best = candidates.front();
-        double best_score = -1;
-        for (const auto& c : candidates) {
-          const double score = proposals.score[static_cast<size_t>(c.second) * n + j];
-          if (score > best_score) {
-            best_score = score;
-            best = c;
-          }
-        }
-        candidates.erase(std::remove_if(candidates.begin(), candidates.end(),
-                                        [&](const auto& c) { return c.first > options.max_distance_m; }),
-                         candidates.end());
-        if (candidates.empty() && options.keep_best_when_all_far) candidates.push_back(best);
-      }
+      candidates.resize(kept);
+      if (candidates.empty() && options.keep_best_when_all_far) candidates.emplace_back(0.0, best);
       if (options.top_k > 0 && static_cast<int>(candidates.size()) > options.top_k) {
-        std::partial_sort(candidates.begin(), candidates.begin() + options.top_k, candidates.end());
+        std::nth_element(candidates.begin(), candidates.begin() + (options.top_k - 1), candidates.end());
         candidates.resize(options.top_k);
       }
       if (candidates.empty()) {
@@ -54,8 +52,8 @@ int MergeGroups(const MergeOptions& options, const Proposals& proposals, const G
       }
       Eigen::Vector3d sum = Eigen::Vector3d::Zero();
       double weights = 0, scores = 0;
-      for (const auto& [distance, m] : candidates) {
-        const size_t idx = static_cast<size_t>(m) * n + j;
+      for (const auto& c : candidates) {
+        const size_t idx = static_cast<size_t>(c.second) * n + j;
         const double w = options.score_weighted ? proposals.score[idx] : 1.0;
         sum += w * proposals.xyz[idx];
         weights += w;

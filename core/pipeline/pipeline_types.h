@@ -55,6 +55,8 @@ struct Proposals {
   std::vector<Eigen::Vector3d> xyz; // per proposal and joint (m, world)
   std::vector<double> gap;          // per proposal and joint: ray gap (m); < 0 = not triangulated
   std::vector<double> score;        // per proposal and joint: joint score, 0 = invalid
+  std::vector<double> geometric;    // per proposal and joint: reprojection/gap score before limb
+                                    // pruning and confidence; < 0 = not computed yet
   std::vector<double> pair_score;   // per proposal
   std::vector<int> group;           // per proposal: group index (after grouping)
 
@@ -65,15 +67,17 @@ struct Proposals {
     xyz.clear();
     gap.clear();
     score.clear();
+    geometric.clear();
     pair_score.clear();
     group.clear();
   }
   // Appends a proposal for `pair` with all joints invalid.
   void Add(const PosePair& pair) {
     pairs.push_back(pair);
-    xyz.resize(xyz.size() + num_joints, Eigen::Vector3d::Zero());
+    xyz.resize(xyz.size() + num_joints);  // read only where score > 0: no need to clear
     gap.resize(gap.size() + num_joints, -1.0);
     score.resize(score.size() + num_joints, 0.0);
+    geometric.resize(geometric.size() + num_joints, -1.0);
     pair_score.push_back(0.0);
     group.push_back(-1);
   }

@@ -11,7 +11,8 @@ namespace {
 
 // Keeps at most max_pairs_per_person of the pairs matched to each previous person: those with the
 // viewing-ray angle at the person's last centre closest to 90 degrees (largest sin).
-int ApplyPairBudget(const PreparedViews& views, std::span<const ViewGeometry> geometry, const PreviousPersons& previous,
+int ApplyPairBudget(const PreparedViews& views, std::span<const ViewGeometry> geometry, std::span<const int> core_joints,
+                    const PreviousPersons& previous,
                     const PrefilterOptions& options, PrefilterScratch* scratch, std::vector<PosePair>* pairs) {
   const int num_previous = previous.size();
   const int num_core = previous.num_core;
@@ -37,21 +38,31 @@ int ApplyPairBudget(const PreparedViews& views, std::span<const ViewGeometry> ge
       if (match[pair.a] != q) continue;  // both sides match q (mixed pairs were dropped)
       const Eigen::Vector3d ra = (geometry[views.view_of[pair.a]].center - scratch->centers[q]).normalized();
       const Eigen::Vector3d rb = (geometry[views.view_of[pair.b]].center - scratch->centers[q]).normalized();
-      scratch->budget.emplace_back(-ra.cross(rb).norm(), static_cast<int>(k));  // -sin(angle): best first
+      // Quality: triangulation angle (sin) times the 2D evidence both poses share (mean over the
+      // core joints of sqrt(conf_a * conf_b); truncated or uncertain poses rank low).
+      const Keypoint* ka = views.Pose(pair.a);
+      const Keypoint* kb = views.Pose(pair.b);
+      double evidence = 0;
+      for (int c : core_joints) evidence += std::sqrt(ka[c].score * kb[c].score);
+      const double quality = ra.cross(rb).norm() * evidence / static_cast<double>(core_joints.size());
+      scratch->budget.emplace_back(-quality, static_cast<int>(k));  // best first
     }
     if (scratch->budget.size() <= budget) continue;
-    // Best angles first. Every pose of the person keeps at least its best pair (so the person's
-    // group claims all its poses, see group.exclusive_poses), then the budget fills by angle.
+    // Best pairs first. Every pose of the person keeps its two best pairs (so the person's group
+    // claims all its poses, see group.exclusive_poses), then the budget fills by quality.
     std::sort(scratch->budget.begin(), scratch->budget.end());
     for (const auto& [score, k] : scratch->budget) {
       scratch->covered[(*pairs)[k].a] = scratch->covered[(*pairs)[k].b] = 0;
       scratch->keep[k] = 0;
     }
+    // Two pairs per pose: if the score filter later drops one, the pose is still claimed.
+    constexpr char kPairsPerPose = 2;
     size_t used = 0;
     for (const auto& [score, k] : scratch->budget) {
       const PosePair& pair = (*pairs)[k];
-      if (scratch->covered[pair.a] && scratch->covered[pair.b]) continue;
-      scratch->covered[pair.a] = scratch->covered[pair.b] = 1;
+      if (scratch->covered[pair.a] >= kPairsPerPose && scratch->covered[pair.b] >= kPairsPerPose) continue;
+      ++scratch->covered[pair.a];
+      ++scratch->covered[pair.b];
       scratch->keep[k] = 1;
       ++used;
     }
@@ -156,7 +167,7 @@ int PrefilterPairs(const PreparedViews& views, std::span<const ViewGeometry> geo
     if (!drop) (*pairs)[kept++] = pair;
   }
   pairs->resize(kept);
-  if (options.max_pairs_per_person > 0) kept = ApplyPairBudget(views, geometry, previous, options, scratch, pairs);
+  if (options.max_pairs_per_person > 0) kept = ApplyPairBudget(views, geometry, core_joints, previous, options, scratch, pairs);
   return kept;
 }
 

@@ -12,6 +12,7 @@ void Proposals::Move(int from, int to) {
   std::copy_n(xyz.begin() + from * n, n, xyz.begin() + to * n);
   std::copy_n(gap.begin() + from * n, n, gap.begin() + to * n);
   std::copy_n(score.begin() + from * n, n, score.begin() + to * n);
+  std::copy_n(geometric.begin() + from * n, n, geometric.begin() + to * n);
   pair_score[to] = pair_score[from];
   group[to] = group[from];
 }
@@ -22,6 +23,7 @@ void Proposals::Truncate(int n) {
   xyz.resize(n * joints);
   gap.resize(n * joints);
   score.resize(n * joints);
+  geometric.resize(n * joints);
   pair_score.resize(n);
   group.resize(n);
 }

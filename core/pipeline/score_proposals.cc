@@ -1,13 +1,15 @@
 // SPDX-License-Identifier: MIT
 #include "core/pipeline/score_proposals.h"
 
+#include "core/fast_math.h"
+
 #include <cmath>
 
 namespace rpt {
 namespace {
 
 // Squared reprojection error (px^2) of `point` against keypoint `kp`; large when behind the camera.
-inline double ReprojectionErrorSq(const ViewGeometry& g, const Eigen::Vector3d& point, const Keypoint& kp) {
+RPT_ALWAYS_INLINE double ReprojectionErrorSq(const ViewGeometry& g, const Eigen::Vector3d& point, const Keypoint& kp) {
   const Eigen::Vector3d h = g.P.leftCols<3>() * point + g.P.col(3);
   if (h.z() <= 0) return 1e12;
   const double inv_z = 1.0 / h.z();
@@ -36,10 +38,15 @@ int ScoreProposals(const PreparedViews& views, std::span<const ViewGeometry> geo
     Eigen::Vector3d* xyz = proposals->xyz.data() + static_cast<size_t>(k) * n;
     const double* gap = proposals->gap.data() + static_cast<size_t>(k) * n;
     double* score = proposals->score.data() + static_cast<size_t>(k) * n;
+    double* geometric = proposals->geometric.data() + static_cast<size_t>(k) * n;
 
     const double inv_diag_a = 1.0 / diag_a, inv_diag_b = 1.0 / diag_b;
     for (int i = 0; i < n; ++i) {
       if (score[i] <= 0) continue;
+      if (geometric[i] >= 0) {  // computed by an earlier step for the same pair (core joints)
+        score[i] = geometric[i];
+        continue;
+      }
       // s = exp(-(e/scale_rep)^2) * exp(-(gap/scale_gap)^2) computed with one exp.
       double exponent = 0;
       if (use_rep) {
@@ -52,7 +59,7 @@ int ScoreProposals(const PreparedViews& views, std::span<const ViewGeometry> geo
         const double r = gap[i] * inv_gap;
         exponent += r * r;
       }
-      score[i] = std::exp(-exponent);
+      score[i] = geometric[i] = FastExpNeg(exponent);
     }
     if (options.prune_limbs) {
       for (const ResolvedLimb& limb : limbs) {

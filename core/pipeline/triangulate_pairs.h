@@ -22,4 +22,11 @@ int TriangulatePairs(const PreparedViews& views, std::span<const ViewGeometry> g
                      std::span<const PosePair> pairs, std::span<const int> joints, TriangulationMethod method,
                      int min_joints, Proposals* proposals);
 
+// Step 10: the proposals of the grouped pairs with all joints. proposals->pairs[i] =
+// core.pairs[members[i]]; the core joints (core_joints[c] = output joint of core slot c) are copied
+// from `core` with their geometric scores, the other joints are triangulated.
+int TriangulateMembers(const PreparedViews& views, std::span<const ViewGeometry> geometry, const Proposals& core,
+                       std::span<const int> members, std::span<const int> core_joints, int num_joints,
+                       TriangulationMethod method, Proposals* proposals);
+
 }  // namespace rpt

@@ -171,10 +171,8 @@ void Triangulator::Process(std::span<const Poses2D> views, double timestamp_s, P
   timer.Lap(Step::kGroup);
 
   // Step 10: the grouped pairs again, now with all joints; proposal i = groups.members[i].
-  ws.member_pairs.clear();
-  for (int m : ws.groups.members) ws.member_pairs.push_back(ws.core.pairs[m]);
-  count[at(Step::kTriangulateFull)] = TriangulatePairs(ws.prepared, ws.geometry, ws.member_pairs, ws.all_joints,
-                                                       opt.triangulate.method, 0, &ws.full);
+  count[at(Step::kTriangulateFull)] = TriangulateMembers(ws.prepared, ws.geometry, ws.core, ws.groups.members,
+                                                         ws.core_joints, num_joints, opt.triangulate.method, &ws.full);
   stats->pruned_limbs += ScoreProposals(ws.prepared, ws.geometry, ws.all_joints, ws.all_limbs, opt.score, &ws.full);
   timer.Lap(Step::kTriangulateFull);
 

@@ -39,7 +39,6 @@ struct Workspace {
   Proposals core;
   GroupScratch group_scratch;
   Groups groups;
-  std::vector<PosePair> member_pairs;
   Proposals full;
   MergeScratch merge_scratch;
 

@@ -271,7 +271,7 @@ TEST(ScoreProposals, ModesConfidenceAndLimbPruning) {
   const double s_rep = run(rep_only).score[wrist_left_slot], s_tri = run(tri_only).score[wrist_left_slot];
   EXPECT_LT(s_rep, 1.0);
   EXPECT_LT(s_tri, 1.0);
-  EXPECT_NEAR(c.score[wrist_left_slot], s_rep * s_tri, 1e-12);
+  EXPECT_NEAR(c.score[wrist_left_slot], s_rep * s_tri, 1e-8);  // FastExpNeg precision
   // A limb (elbow_left -> wrist_left) whose allowed range excludes the true length prunes the wrist.
   const Proposals pruned = run(combined, {ResolvedLimb{4, wrist_left_slot, 0.0, 0.05}});
   EXPECT_EQ(pruned.score[wrist_left_slot], 0.0);
@@ -485,6 +485,23 @@ TEST(PostprocessPersons, DropsInvalidPersonsAndFillsMissingJoints) {
   off.enabled = false;
   add(tiny);
   EXPECT_EQ(PostprocessPersons(off, room, neighbour, limbs, &persons, &stats), 3);
+}
+
+}  // namespace
+}  // namespace rpt
+
+#include "core/fast_math.h"
+
+namespace rpt {
+namespace {
+
+TEST(FastExpNeg, MatchesExpWithinTenBillionths) {
+  double worst = 0;
+  for (double x = 0; x < 60; x += 1e-3) worst = std::max(worst, std::abs(FastExpNeg(x) - std::exp(-x)) / std::exp(-x));
+  EXPECT_LT(worst, 1e-8);
+  EXPECT_EQ(FastExpNeg(0.0), 1.0);
+  EXPECT_EQ(FastExpNeg(1e6), 0.0);
+  EXPECT_EQ(FastExpNeg(std::nan("")), 0.0);
 }
 
 }  // namespace
