@@ -7,6 +7,7 @@
 #include "cli/commands.h"
 #include "cli/load_input.h"
 #include "core/errors.h"
+#include "datasets/readers/detections_file.h"
 #include "datasets/readers/generic_detections.h"
 #include "datasets/readers/generic_labels.h"
 #include "datasets/readers/hdf5_cache.h"
@@ -47,16 +48,23 @@ void RunConvert(const ConvertArgs& args) {
   if (args.out.empty() && args.labels_out.empty() && args.detections_out.empty()) {
     throw ConfigError("nothing to write: give --out CACHE.h5, --labels-out FILE.json or --detections-out FILE.json");
   }
-  const std::vector<Sequence> sequences = LoadInput(args.input, /*require_detections=*/false);
-  const Detections detections = CollectDetections(sequences);
+  if (!args.labels_out.empty() && args.input.dataset.empty() && args.input.labels.empty()) {
+    throw ConfigError("--labels-out needs labels: give --dataset NAME --root DIR or --labels FILE");
+  }
+  // Detections alone (no --dataset / --labels): convert the file as it is.
+  const bool detections_only = args.input.dataset.empty() && args.input.labels.empty() && !args.input.detections.empty();
+  const std::vector<Sequence> sequences =
+      detections_only ? std::vector<Sequence>{} : LoadInput(args.input, /*require_detections=*/false);
+  const Detections detections =
+      detections_only ? ReadDetectionsFile(args.input.detections, DetectionsFileOptions{}) : CollectDetections(sequences);
   if (!args.out.empty()) {
     Hdf5WriteOptions options;
     options.float64 = args.float64;
-    WriteSequencesHdf5(args.out, sequences, options);
-    if (!detections.frames.empty()) {
+    if (!sequences.empty()) {
+      WriteSequencesHdf5(args.out, sequences, options);
       options.add_to_existing = true;
-      WriteDetectionsHdf5(args.out, detections, options);
     }
+    if (!detections.frames.empty()) WriteDetectionsHdf5(args.out, detections, options);
   }
   if (!args.labels_out.empty()) WriteLabels(args.labels_out, sequences);
   if (!args.detections_out.empty()) {
