@@ -221,7 +221,7 @@ const std::vector<Descriptor>& Descriptors() {
              [](Config& c) -> double& { return c.triangulator.filter.min_match_score; }),
       Number("group.max_distance_m", "step 9: m, mean core-joint distance to join a group",
              [](Config& c) -> double& { return c.triangulator.group.max_distance_m; }),
-      Int("group.min_group_size", "step 9: groups with fewer proposals are dropped",
+      Int("group.min_group_size", "step 9: groups with fewer proposals are dropped (0 = auto: 1 below 10 cameras, else 2)",
           [](Config& c) -> int& { return c.triangulator.group.min_group_size; }),
       Bool("group.exclusive_poses", "a 2D pose belongs to one person (removes phantoms)",
            [](Config& c) -> bool& { return c.triangulator.group.exclusive_poses; }),

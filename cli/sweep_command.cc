@@ -117,14 +117,27 @@ void RunSweep(const SweepArgs& args) {
   std::vector<int> mine;
   for (int i = shard - 1; i < static_cast<int>(all.size()); i += shards) mine.push_back(i);
 
-  // Resolve every configuration before running anything: a typo fails fast.
+  // Resolve every configuration before running anything: a typo fails fast. Axes named
+  // "param.<key>" are dataset parameters (e.g. param.cameras=3,5,10): those configurations load
+  // their own input.
   std::vector<Config> configs;
+  std::vector<InputArgs> inputs;
+  bool per_config_input = false;
   for (int i : mine) {
     ConfigArgs config_args = args.config;
-    for (const auto& [key, value] : all[i].overrides) config_args.overrides.push_back(key + "=" + value);
+    InputArgs input = args.input;
+    for (const auto& [key, value] : all[i].overrides) {
+      if (key.rfind("param.", 0) == 0) {
+        input.params.push_back(key.substr(6) + "=" + value);
+        per_config_input = true;
+      } else {
+        config_args.overrides.push_back(key + "=" + value);
+      }
+    }
     configs.push_back(ResolveConfig(config_args));
+    inputs.push_back(input);
   }
-  const std::vector<Sequence> sequences = LoadInput(args.input, true);
+  const std::vector<Sequence> shared_input = per_config_input ? std::vector<Sequence>{} : LoadInput(args.input, true);
 
   std::vector<Json> summaries(mine.size());
   std::exception_ptr error;
@@ -145,7 +158,7 @@ void RunSweep(const SweepArgs& args) {
       options.eval = configs[c].metrics;
       options.progress = false;
       options.threads = 1;
-      summaries[c] = SummaryJson(RunSequences(sequences, options));
+      summaries[c] = SummaryJson(RunSequences(per_config_input ? LoadInput(inputs[c], true) : shared_input, options));
     } catch (...) {
       std::lock_guard<std::mutex> lock(error_mutex);
       if (!error) error = std::current_exception();
@@ -229,7 +242,9 @@ void RegisterSweepCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand("sweep", "Evaluate a list or grid of configurations, one row each");
   AddInputOptions(command, &args->input);
   AddConfigOptions(command, &args->config);
-  command->add_option("--grid", args->grid, "key=v1,v2,... (repeatable; the product of all axes)")->take_all();
+  command->add_option("--grid", args->grid,
+                      "key=v1,v2,... (repeatable; the product of all axes); param.<key> axes vary a dataset parameter")
+      ->take_all();
   command->add_option("--list", args->list, "JSON list of {\"name\", \"set\": {key: value}} (e.g. results/ablations.json)");
   command->add_option("--shard", args->shard, "k/N: run configurations k, k+N, ... (1-based)")->capture_default_str();
   command->add_option("--out", args->out, "output folder")->capture_default_str();

@@ -165,7 +165,7 @@ int GroupProposals(const GroupOptions& options, int num_poses, std::span<const i
   int kept = 0;
   *small_groups = 0;
   for (int g = 0; g < num_groups; ++g) {
-    if (s.size[g] >= options.min_group_size) {
+    if (s.size[g] > 0 && s.size[g] >= options.min_group_size) {
       s.renumber[g] = kept++;
     } else if (s.size[g] > 0) {
       ++*small_groups;

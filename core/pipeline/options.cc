@@ -52,7 +52,7 @@ std::string TriangulatorOptions::Check() const {
   c.Positive("score.ray_gap_scale_m", score.ray_gap_scale_m);
   c.Range("filter.min_match_score", filter.min_match_score, 0, 1);
   c.Positive("group.max_distance_m", group.max_distance_m);
-  c.Range("group.min_group_size", group.min_group_size, 1, 1e6);
+  c.Range("group.min_group_size", group.min_group_size, 0, 1e6);
   c.Range("merge.max_distance_m", merge.max_distance_m, -1e6, 1e6);
   c.Range("merge.top_k", merge.top_k, -1e6, 1e6);
   c.Range("merge.min_joint_score", merge.min_joint_score, 0, 1);

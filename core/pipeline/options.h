@@ -68,7 +68,9 @@ struct FilterOptions {
 // Step 9.
 struct GroupOptions {
   double max_distance_m = 0.3;  // mean core-joint distance for a proposal to join a group
-  int min_group_size = 1;       // groups with fewer proposals are dropped
+  // Groups with fewer proposals are dropped. 0 = automatic: 1 below 10 cameras, 2 from 10 up (the
+  // paper recommends raising it with many cameras, where accidental consistent pairs appear).
+  int min_group_size = 0;
   bool exclusive_poses = true;  // a 2D pose belongs to one person: the strongest group keeps it
   bool drop_mirrored = true;    // drop a group that is another group with left/right swapped
 };

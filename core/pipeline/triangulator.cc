@@ -67,6 +67,9 @@ Triangulator::Triangulator(std::vector<Camera> cameras, JointNames input_joints,
   ws.input_joints = std::move(input_joints);
   ws.output_joints = options.undistort.add_derived_joints ? AddDerivedJoints(ws.input_joints) : ws.input_joints;
   ws.options = std::move(options);
+  if (ws.options.group.min_group_size == 0) {
+    ws.options.group.min_group_size = ws.cameras.size() >= 10 ? 2 : 1;  // automatic, see GroupOptions
+  }
 
   for (int j = static_cast<int>(ws.input_joints.size()); j < static_cast<int>(ws.output_joints.size()); ++j) {
     DerivedJointRule rule{j, {}};

@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# Regenerates results/bench.md: rpt bench on the standard scenes and the scaling series, with
+# the machine, compiler flags and commit. Usage: bash scripts/make_bench.sh [BUILD_DIR]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+BUILD="${1:-build}"
+RPT="$BUILD/rpt"
+FLAGS=$(grep -E '^CMAKE_CXX_FLAGS_RELEASE:' "$BUILD/CMakeCache.txt" | cut -d= -f2-)
+NATIVE=$(grep -E '^RPT_MARCH_NATIVE:' "$BUILD/CMakeCache.txt" | cut -d= -f2-)
+{
+  echo "# Benchmarks"
+  echo
+  echo "Regenerate with \`bash scripts/make_bench.sh\` (after building). Single thread, 2D to 3D including"
+  echo "undistortion; medians over 5 passes after a warm-up pass; generated scenes with the realistic"
+  echo "simulated detector (bench/bench_scenes.cc). The baseline is a straightforward implementation of"
+  echo "the same algorithm run in the same process (bench/baseline_triangulator.cc: SVD on every pair and"
+  echo "joint, no pre-filter, fresh allocations per frame)."
+  echo
+  echo "- machine: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ //'), $(nproc) cores"
+  echo "- compiler: $(c++ --version | head -1); flags: \`${FLAGS}\`, -march=native: ${NATIVE}"
+  echo "- commit: $(git rev-parse --short=12 HEAD)$(git diff --quiet HEAD -- core cli bench datasets metrics || echo ' (with uncommitted changes)')"
+  echo
+  echo "## Standard scenes"
+  echo
+  echo '```'
+  "$RPT" bench --repeat 5 2>/dev/null
+  echo '```'
+  echo
+  echo "## Scaling (cameras with 4 people; people with 5 cameras)"
+  echo
+  echo '```'
+  "$RPT" bench --scaling --repeat 3 --baseline-frames 5 2>/dev/null
+  echo '```'
+} > results/bench.md
+echo "wrote results/bench.md"
