@@ -5,9 +5,6 @@
 #include <cstdio>
 #include <iostream>
 
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 #include "cli/commands.h"
 #include "cli/config_args.h"
@@ -38,12 +35,7 @@ void RunEval(const EvalArgs& args) {
   options.threads = args.threads;
   options.progress = !args.quiet;
   const RunResult run = RunSequences(sequences, options);
-#ifdef _OPENMP
-  const int threads = args.threads > 0 ? args.threads : omp_get_max_threads();
-#else
-  const int threads = 1;
-#endif
-  const RunInfo info = CollectRunInfo(std::min<int>(threads, static_cast<int>(sequences.size())), CurrentCommandLine());
+  const RunInfo info = CollectRunInfo(run.threads, CurrentCommandLine());
   const std::string out_dir =
       !args.out.empty() ? args.out : "out/eval-" + (args.input.dataset.empty() ? "labels" : args.input.dataset);
   WriteEvalOutputs(out_dir, sequences, run, config, info);
@@ -56,6 +48,8 @@ void RunEval(const EvalArgs& args) {
   std::printf("%zu sequence(s), %ld frames, %zu cameras, %ld GT persons, %ld predicted persons\n", sequences.size(),
               frames, sequences.front().cameras.size(), run.gt_persons, run.output_persons);
   std::printf("%s\n", PaperRow(run).c_str());
+  std::printf("evaluated %ld frames in %.2f s (%.0f frames/s, %d thread(s) over %zu sequence(s))\n", run.frames,
+              run.wall_seconds, run.wall_seconds > 0 ? run.frames / run.wall_seconds : 0.0, run.threads, sequences.size());
   bool whole_body = false;  // only worth printing when face or hand joints were evaluated
   for (const auto& g : run.metrics.wholebody) whole_body |= (g.name == "Face" || g.name == "Hands") && g.num_persons > 0;
   for (const auto& g : run.metrics.wholebody) {

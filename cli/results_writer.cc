@@ -49,6 +49,7 @@ const std::vector<SummaryColumn>& SummaryColumns() {
       {"fps", "1/s", "FPS"},
       {"frame_time_us_median", "us", "Time/frame"},
       {"frames", "count", "Frames"},
+      {"eval_frames_per_s", "1/s", "Eval throughput"},
       {"gt_persons", "count", "GT persons"},
       {"predictions", "count", "Predictions"},
       {"matches", "count", "Matches"},
@@ -76,6 +77,7 @@ Json SummaryJson(const RunResult& run) {
   j["fps"] = Number(run.timing.fps);
   j["frame_time_us_median"] = Number(run.timing.frame_us_median);
   j["frames"] = run.frames;
+  j["eval_frames_per_s"] = Number(run.wall_seconds > 0 ? run.frames / run.wall_seconds : 0.0);
   j["gt_persons"] = m.num_gt_persons;
   j["predictions"] = m.num_predictions;
   j["matches"] = m.num_matches;

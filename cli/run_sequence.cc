@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "cli/run_sequence.h"
 
+#include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <exception>
 #include <mutex>
 
@@ -47,6 +49,7 @@ TriangulatedSequence TriangulateSequence(const Sequence& sequence, const RunOpti
 }
 
 RunResult RunSequences(const std::vector<Sequence>& sequences, const RunOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
   RunResult result;
   result.sequences.resize(sequences.size());
   long total = 0;
@@ -58,6 +61,7 @@ RunResult RunSequences(const std::vector<Sequence>& sequences, const RunOptions&
   const int count = static_cast<int>(sequences.size());
 #ifdef _OPENMP
   const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
+  result.threads = std::min(threads, std::max(count, 1));
 #pragma omp parallel for schedule(dynamic) num_threads(threads)
 #endif
   for (int i = 0; i < count; ++i) {
@@ -92,6 +96,7 @@ RunResult RunSequences(const std::vector<Sequence>& sequences, const RunOptions&
   }
   result.metrics = accumulator.Finalize();
   result.timing = timing.Finalize();
+  result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
 

@@ -35,6 +35,8 @@ struct RunResult {
   metrics::MetricsResult metrics;
   metrics::TimingSummary timing;  // over all frames of all sequences
   long frames = 0;
+  double wall_seconds = 0;  // whole run (triangulation in parallel + metrics), steady clock
+  int threads = 1;          // threads used for the sequences
   long gt_persons = 0;      // GT person-frames
   long output_persons = 0;  // triangulated person-frames
   std::vector<TriangulatedSequence> sequences;

@@ -39,6 +39,7 @@ int GroupProposals(const GroupOptions& options, int num_poses, std::span<const i
     return sx > sy || (sx == sy && x < y);
   });
   s.sum.clear();
+  s.running_mean.clear();
   s.count.clear();
   s.size.clear();
 
@@ -68,7 +69,7 @@ int GroupProposals(const GroupOptions& options, int num_poses, std::span<const i
       for (int i = 0; i < n; ++i) {
         const size_t gi = static_cast<size_t>(g) * n + i;
         if (score[i] <= 0 || s.count[gi] == 0) continue;
-        sum += (xyz[i] - s.sum[gi] / s.count[gi]).norm();
+        sum += (xyz[i] - s.running_mean[gi]).norm();
         ++common;
       }
       if (common < 2) continue;
@@ -81,6 +82,7 @@ int GroupProposals(const GroupOptions& options, int num_poses, std::span<const i
     if (best_group < 0) {
       best_group = num_groups;
       s.sum.resize(s.sum.size() + n, Eigen::Vector3d::Zero());
+      s.running_mean.resize(s.running_mean.size() + n);
       s.count.resize(s.count.size() + n, 0);
       s.size.push_back(0);
       s.center_sum.push_back(Eigen::Vector3d::Zero());
@@ -91,6 +93,7 @@ int GroupProposals(const GroupOptions& options, int num_poses, std::span<const i
       const size_t gi = static_cast<size_t>(best_group) * n + i;
       s.sum[gi] += xyz[i];
       ++s.count[gi];
+      s.running_mean[gi] = s.sum[gi] / s.count[gi];
     }
     if (valid > 0) {
       s.center_sum[best_group] += center;

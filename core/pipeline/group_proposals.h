@@ -27,6 +27,7 @@ namespace rpt {
 struct GroupScratch {
   std::vector<int> order;
   std::vector<Eigen::Vector3d> sum;  // per group and joint
+  std::vector<Eigen::Vector3d> running_mean;  // per group and joint: sum / count
   std::vector<int> count;            // per group and joint
   std::vector<int> size;             // per group
   std::vector<Eigen::Vector3d> center_sum;  // per group: sum of member centres

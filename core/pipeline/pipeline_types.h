@@ -25,6 +25,7 @@ struct ViewGeometry {
 struct Keypoint {
   double u = 0, v = 0;  // undistorted pixels
   double score = 0;     // 0 = missing
+  double sqrt_score = 0;  // sqrt(score): pair confidence is sqrt(score_a * score_b) = product
   Eigen::Vector3d ray = Eigen::Vector3d::Zero();  // world direction through the joint (unnormalised)
   double x = 0, y = 0;  // normalised undistorted camera coordinates
 };

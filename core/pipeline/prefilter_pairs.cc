@@ -9,56 +9,72 @@ namespace rpt {
 
 namespace {
 
-// Keeps at most max_pairs_per_person of the pairs matched to each previous person: those with the
-// viewing-ray angle at the person's last centre closest to 90 degrees (largest sin).
+// Keeps at most max_pairs_per_person of the pairs matched to each previous person (see the header).
 int ApplyPairBudget(const PreparedViews& views, std::span<const ViewGeometry> geometry, std::span<const int> core_joints,
-                    const PreviousPersons& previous,
-                    const PrefilterOptions& options, PrefilterScratch* scratch, std::vector<PosePair>* pairs) {
+                    const PreviousPersons& previous, const PrefilterOptions& options, PrefilterScratch* scratch,
+                    std::vector<PosePair>* pairs) {
   const int num_previous = previous.size();
   const int num_core = previous.num_core;
+  const int num_views = static_cast<int>(geometry.size());
   const std::vector<int>& match = scratch->match;
   const size_t budget = static_cast<size_t>(options.max_pairs_per_person);
-  scratch->centers.assign(num_previous, Eigen::Vector3d::Zero());
+
+  // Pairs per person (both sides match the same person after the filter above): counting sort.
+  scratch->bucket_begin.assign(num_previous + 1, 0);
+  for (const PosePair& pair : *pairs) {
+    if (match[pair.a] >= 0) ++scratch->bucket_begin[match[pair.a] + 1];
+  }
+  bool over_budget = false;
   for (int q = 0; q < num_previous; ++q) {
+    over_budget |= static_cast<size_t>(scratch->bucket_begin[q + 1]) > budget;
+    scratch->bucket_begin[q + 1] += scratch->bucket_begin[q];
+  }
+  if (!over_budget) return static_cast<int>(pairs->size());
+  scratch->bucket.resize(scratch->bucket_begin[num_previous]);
+  scratch->bucket_fill.assign(scratch->bucket_begin.begin(), scratch->bucket_begin.end() - 1);
+  for (size_t k = 0; k < pairs->size(); ++k) {
+    const int q = match[(*pairs)[k].a];
+    if (q >= 0) scratch->bucket[scratch->bucket_fill[q]++] = static_cast<int>(k);
+  }
+
+  scratch->keep.assign(pairs->size(), 1);
+  scratch->covered.resize(views.num_poses());
+  scratch->directions.resize(static_cast<size_t>(num_views));
+  for (int q = 0; q < num_previous; ++q) {
+    const int first = scratch->bucket_begin[q], last = scratch->bucket_begin[q + 1];
+    if (static_cast<size_t>(last - first) <= budget) continue;
+    // The person's last centre and the unit direction from it to every camera.
+    Eigen::Vector3d center = Eigen::Vector3d::Zero();
     int n = 0;
     for (int c = 0; c < num_core; ++c) {
       const size_t idx = static_cast<size_t>(q) * num_core + c;
       if (previous.score[idx] <= 0) continue;
-      scratch->centers[q] += previous.xyz[idx];
+      center += previous.xyz[idx];
       ++n;
     }
-    if (n > 0) scratch->centers[q] /= n;
-  }
-  scratch->keep.assign(pairs->size(), 1);
-  scratch->covered.resize(views.num_poses());
-  for (int q = 0; q < num_previous; ++q) {
+    if (n > 0) center /= n;
+    for (int v = 0; v < num_views; ++v) scratch->directions[v] = (geometry[v].center - center).normalized();
+    // Quality: sin of the ray angle at the person x the 2D confidence both poses share.
     scratch->budget.clear();
-    for (size_t k = 0; k < pairs->size(); ++k) {
+    for (int i = first; i < last; ++i) {
+      const int k = scratch->bucket[i];
       const PosePair& pair = (*pairs)[k];
-      if (match[pair.a] != q) continue;  // both sides match q (mixed pairs were dropped)
-      const Eigen::Vector3d ra = (geometry[views.view_of[pair.a]].center - scratch->centers[q]).normalized();
-      const Eigen::Vector3d rb = (geometry[views.view_of[pair.b]].center - scratch->centers[q]).normalized();
-      // Quality: triangulation angle (sin) times the 2D evidence both poses share (mean over the
-      // core joints of sqrt(conf_a * conf_b); truncated or uncertain poses rank low).
       const Keypoint* ka = views.Pose(pair.a);
       const Keypoint* kb = views.Pose(pair.b);
       double evidence = 0;
-      for (int c : core_joints) evidence += std::sqrt(ka[c].score * kb[c].score);
-      const double quality = ra.cross(rb).norm() * evidence / static_cast<double>(core_joints.size());
-      scratch->budget.emplace_back(-quality, static_cast<int>(k));  // best first
-    }
-    if (scratch->budget.size() <= budget) continue;
-    // Best pairs first. Every pose of the person keeps its two best pairs (so the person's group
-    // claims all its poses, see group.exclusive_poses), then the budget fills by quality.
-    std::sort(scratch->budget.begin(), scratch->budget.end());
-    for (const auto& [score, k] : scratch->budget) {
-      scratch->covered[(*pairs)[k].a] = scratch->covered[(*pairs)[k].b] = 0;
+      for (int c : core_joints) evidence += ka[c].sqrt_score * kb[c].sqrt_score;
+      const double sine =
+          scratch->directions[views.view_of[pair.a]].cross(scratch->directions[views.view_of[pair.b]]).norm();
+      scratch->budget.emplace_back(-sine * evidence, k);  // best first
       scratch->keep[k] = 0;
+      scratch->covered[pair.a] = scratch->covered[pair.b] = 0;
     }
-    // Two pairs per pose: if the score filter later drops one, the pose is still claimed.
+    std::sort(scratch->budget.begin(), scratch->budget.end());
+    // Every pose of the person keeps its two best pairs (so the person's group claims all its
+    // poses even if the score filter drops one), then the budget fills by quality.
     constexpr char kPairsPerPose = 2;
     size_t used = 0;
-    for (const auto& [score, k] : scratch->budget) {
+    for (const auto& [quality, k] : scratch->budget) {
       const PosePair& pair = (*pairs)[k];
       if (scratch->covered[pair.a] >= kPairsPerPose && scratch->covered[pair.b] >= kPairsPerPose) continue;
       ++scratch->covered[pair.a];
@@ -66,7 +82,7 @@ int ApplyPairBudget(const PreparedViews& views, std::span<const ViewGeometry> ge
       scratch->keep[k] = 1;
       ++used;
     }
-    for (const auto& [score, k] : scratch->budget) {
+    for (const auto& [quality, k] : scratch->budget) {
       if (used >= budget) break;
       if (!scratch->keep[k]) {
         scratch->keep[k] = 1;

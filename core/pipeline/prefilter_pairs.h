@@ -50,7 +50,10 @@ struct PrefilterScratch {
   std::vector<int> match;         // per pose: person index, kPoseFree or kPoseAmbiguous
   std::vector<double> distance;   // per pose: distance to the matched person (px)
   std::vector<Eigen::Vector2d> projected;  // per view, person and core joint (NaN = not visible)
-  std::vector<Eigen::Vector3d> centers;    // per previous person
+  std::vector<int> bucket_begin;           // per previous person + 1: offsets into bucket
+  std::vector<int> bucket;                 // pair indices grouped by matched person
+  std::vector<int> bucket_fill;
+  std::vector<Eigen::Vector3d> directions;  // per view: unit vector from the person to the camera
   std::vector<std::pair<double, int>> budget;  // (angle score, pair index) of one person's pairs
   std::vector<char> keep;                  // per pair
   std::vector<char> covered;               // per pose: used by a kept pair of its person

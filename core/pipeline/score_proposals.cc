@@ -47,16 +47,21 @@ int ScoreProposals(const PreparedViews& views, std::span<const ViewGeometry> geo
         score[i] = geometric[i];
         continue;
       }
-      // s = exp(-(e/scale_rep)^2) * exp(-(gap/scale_gap)^2) computed with one exp.
+      // s = exp(-(e/scale_rep)^2) * exp(-(gap/scale_gap)^2) computed with one exp. The gap term
+      // comes first: when it alone makes the score negligible (< e^-30), skip the projections.
       double exponent = 0;
+      if (use_tri) {
+        const double r = gap[i] * inv_gap;
+        exponent = r * r;
+        if (exponent > 30.0) {
+          score[i] = geometric[i] = 0.0;
+          continue;
+        }
+      }
       if (use_rep) {
         const double e = 0.5 * (std::sqrt(ReprojectionErrorSq(ga, xyz[i], ka[joints[i]])) * inv_diag_a +
                                 std::sqrt(ReprojectionErrorSq(gb, xyz[i], kb[joints[i]])) * inv_diag_b);
         const double r = e * inv_rep;
-        exponent += r * r;
-      }
-      if (use_tri) {
-        const double r = gap[i] * inv_gap;
         exponent += r * r;
       }
       score[i] = geometric[i] = FastExpNeg(exponent);
@@ -74,9 +79,10 @@ int ScoreProposals(const PreparedViews& views, std::span<const ViewGeometry> geo
     // Pair score over the joints both views saw; joint score gets the 2D confidence.
     double weighted = 0, weights = 0;
     for (int i = 0; i < n; ++i) {
-      const double ca = ka[joints[i]].score, cb = kb[joints[i]].score;
-      if (ca <= 0 || cb <= 0) continue;
-      const double c = std::sqrt(ca * cb);
+      const Keypoint& a = ka[joints[i]];
+      const Keypoint& b = kb[joints[i]];
+      if (a.score <= 0 || b.score <= 0) continue;
+      const double c = a.sqrt_score * b.sqrt_score;
       const double w = options.use_confidence ? c : 1.0;
       weighted += w * score[i];
       weights += w;

@@ -29,6 +29,7 @@ void SetFromNormalized(const ViewGeometry& g, double x, double y, double score, 
   kp->u = g.fx * x + g.skew * y + g.cx;
   kp->v = g.fy * y + g.cy;
   kp->score = score;
+  kp->sqrt_score = std::sqrt(score);
   kp->ray = g.R_t * Eigen::Vector3d(x, y, 1.0);
 }
 

@@ -72,6 +72,22 @@ TEST(EvalDatasets, PanopticFixtureWithSimulatedDetections) {
   fs::remove_all(out);
 }
 
+TEST(EvalDatasets, ParallelSequencesGiveTheSameMetricsAsOneThread) {
+  RPT_REQUIRE_SHARED_DATA("panoptic/160906_band2");
+  const fs::path out = TempDir("threads");
+  const std::string input = "--dataset panoptic --root " + test::SharedData("panoptic").string() +
+                            " --param sequences=160906_band1,160906_band2 --param every=1 --simulate";
+  nlohmann::json one = EvalJson(input + " --threads 1", out / "one");
+  nlohmann::json two = EvalJson(input + " --threads 2", out / "two");
+  for (const char* timing : {"fps", "frame_time_us_median", "step_time_us_median", "eval_frames_per_s"}) {
+    one.erase(timing);
+    two.erase(timing);
+  }
+  EXPECT_EQ(one, two);
+  EXPECT_EQ(test::ReadAll(out / "one" / "predictions.json"), test::ReadAll(out / "two" / "predictions.json"));
+  fs::remove_all(out);
+}
+
 TEST(EvalDatasets, GenericInterchangeFilesWrittenByTheTest) {
   const fs::path dir = TempDir("generic");
   synthetic::SceneOptions options;
