@@ -5,6 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 RPT="${1:-build}/rpt"
+cmake --build "${1:-build}" --target rpt > /dev/null  # refresh the embedded git revision
 SHARED="../shared/data"
 OUT=results
 # Timing columns are single-threaded (--threads 1) so they are comparable across rows.
