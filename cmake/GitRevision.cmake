@@ -5,7 +5,8 @@ execute_process(COMMAND git -C ${SOURCE_DIR} rev-parse --short=12 HEAD
 if(NOT status EQUAL 0 OR revision STREQUAL "")
   set(revision "unknown")
 endif()
-execute_process(COMMAND git -C ${SOURCE_DIR} status --porcelain --untracked-files=no
+# Only source changes make a build "dirty" (regenerated results/ do not).
+execute_process(COMMAND git -C ${SOURCE_DIR} status --porcelain --untracked-files=no -- core datasets metrics cli bench cmake CMakeLists.txt
                 OUTPUT_VARIABLE dirty OUTPUT_STRIP_TRAILING_WHITESPACE ERROR_QUIET)
 if(NOT dirty STREQUAL "")
   set(revision "${revision}-dirty")
