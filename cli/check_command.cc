@@ -17,6 +17,7 @@
 
 #include "cli/commands.h"
 #include "cli/config_args.h"
+#include "cli/json_text.h"
 #include "cli/load_input.h"
 #include "cli/results_writer.h"
 #include "cli/run_sequence.h"
@@ -35,7 +36,6 @@ struct CheckArgs {
   bool json = false;
 };
 
-std::string AsText(const Json& value) { return value.is_string() ? value.get<std::string>() : value.dump(); }
 
 // Exit status of the check (0 all pass, 1 a threshold failed).
 int RunCheck(const CheckArgs& args) {
@@ -62,7 +62,7 @@ int RunCheck(const CheckArgs& args) {
     input.seed = e.value("seed", 1);
     if (e.contains("root")) input.root = (base / e["root"].get<std::string>()).string();
     const Json params = e.value("params", Json::object());  // named: items() must not outlive it
-    for (const auto& [key, value] : params.items()) input.params.push_back(key + "=" + AsText(value));
+    for (const auto& [key, value] : params.items()) input.params.push_back(key + "=" + JsonValueText(value));
     const bool needs_files = !input.root.empty() || !input.labels.empty() || !input.detections.empty();
     const std::string needed = !input.root.empty() ? input.root : !input.labels.empty() ? input.labels : input.detections;
     if (needs_files && !fs::exists(needed)) {
@@ -72,7 +72,7 @@ int RunCheck(const CheckArgs& args) {
     }
     ConfigArgs config_args;
     const Json set = e.value("set", Json::object());
-    for (const auto& [key, value] : set.items()) config_args.overrides.push_back(key + "=" + AsText(value));
+    for (const auto& [key, value] : set.items()) config_args.overrides.push_back(key + "=" + JsonValueText(value));
     const Config config = ResolveConfig(config_args);
     RunOptions options;
     options.triangulator = config.triangulator;

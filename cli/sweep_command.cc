@@ -17,6 +17,7 @@
 
 #include "cli/commands.h"
 #include "cli/config_args.h"
+#include "cli/json_text.h"
 #include "cli/load_input.h"
 #include "cli/progress.h"
 #include "cli/results_writer.h"
@@ -48,7 +49,6 @@ struct SweepArgs {
   int threads = 0;
 };
 
-std::string AsText(const nlohmann::json& v) { return v.is_string() ? v.get<std::string>() : v.dump(); }
 
 std::vector<Variant> ReadList(const std::string& path) {
   const nlohmann::json root = io::LoadJsonFile(path);
@@ -62,7 +62,7 @@ std::vector<Variant> ReadList(const std::string& path) {
     v.name = items[i].value("name", "config " + std::to_string(i));
     const nlohmann::json set = items[i].value("set", nlohmann::json::object());  // items() must not outlive it
     for (const auto& [key, value] : set.items()) {
-      v.overrides.emplace_back(key, AsText(value));
+      v.overrides.emplace_back(key, JsonValueText(value));
     }
     variants.push_back(v);
   }

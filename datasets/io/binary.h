@@ -23,6 +23,9 @@ std::vector<std::uint8_t> ReadFileBytes(const std::filesystem::path& path);
 // Name used in messages for a file: the path exactly as the caller gave it.
 std::string SourceName(const std::filesystem::path& path);
 
+// Appends code point `cp` as UTF-8 (invalid code points become U+FFFD).
+void AppendUtf8(std::string& out, std::uint32_t cp);
+
 // Unaligned little-endian loads; callers check the bounds first.
 inline std::uint16_t LoadU16(const std::uint8_t* p) {
   return static_cast<std::uint16_t>(p[0] | (p[1] << 8));

@@ -70,25 +70,6 @@ double MiValue(std::uint32_t type, const std::uint8_t* p) {
   }
 }
 
-void AppendUtf8(std::string& out, std::uint32_t cp) {
-  if (cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF)) cp = 0xFFFD;
-  if (cp < 0x80) {
-    out.push_back(static_cast<char>(cp));
-  } else if (cp < 0x800) {
-    out.push_back(static_cast<char>(0xC0 | (cp >> 6)));
-    out.push_back(static_cast<char>(0x80 | (cp & 0x3F)));
-  } else if (cp < 0x10000) {
-    out.push_back(static_cast<char>(0xE0 | (cp >> 12)));
-    out.push_back(static_cast<char>(0x80 | ((cp >> 6) & 0x3F)));
-    out.push_back(static_cast<char>(0x80 | (cp & 0x3F)));
-  } else {
-    out.push_back(static_cast<char>(0xF0 | (cp >> 18)));
-    out.push_back(static_cast<char>(0x80 | ((cp >> 12) & 0x3F)));
-    out.push_back(static_cast<char>(0x80 | ((cp >> 6) & 0x3F)));
-    out.push_back(static_cast<char>(0x80 | (cp & 0x3F)));
-  }
-}
-
 struct Element {
   std::uint32_t type = 0;
   Bytes data;
@@ -301,7 +282,7 @@ class MatParser {
       case miUTF8: out.assign(reinterpret_cast<const char*>(e.data.data()), e.data.size()); return out;
       case miINT8:
       case miUINT8:
-        for (auto c : e.data) AppendUtf8(out, c);
+        for (auto c : e.data) detail::AppendUtf8(out, c);
         break;
       case miUTF16:
       case miUINT16:
@@ -317,7 +298,7 @@ class MatParser {
               ++i;
             }
           }
-          AppendUtf8(out, cp);
+          detail::AppendUtf8(out, cp);
         }
         if (e.type != miUTF16 && n != count) throw InputError(where + ": char data holds " + std::to_string(n) + " characters, dimensions need " + std::to_string(count));
         return out;
@@ -326,7 +307,7 @@ class MatParser {
       case miUINT32:
       case miINT32:
         if (e.data.size() % 4) throw InputError(where + ": bad UTF-32 text");
-        for (std::size_t i = 0; i < e.data.size(); i += 4) AppendUtf8(out, LoadU32(e.data.data() + i));
+        for (std::size_t i = 0; i < e.data.size(); i += 4) detail::AppendUtf8(out, LoadU32(e.data.data() + i));
         break;
       default: throw InputError(where + ": char data of unsupported storage type " + std::to_string(e.type));
     }

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "datasets/io/py_value.h"
 
+#include "datasets/io/binary.h"
+
 #include <algorithm>
 #include <bit>
 #include <cctype>
@@ -41,25 +43,6 @@ std::uint64_t LoadUnsigned(const std::uint8_t* p, std::size_t n, bool big_endian
     v = (v << 8) | p[k];
   }
   return v;
-}
-
-void AppendUtf8(std::string& out, std::uint32_t cp) {
-  if (cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF)) cp = 0xFFFD;
-  if (cp < 0x80) {
-    out.push_back(static_cast<char>(cp));
-  } else if (cp < 0x800) {
-    out.push_back(static_cast<char>(0xC0 | (cp >> 6)));
-    out.push_back(static_cast<char>(0x80 | (cp & 0x3F)));
-  } else if (cp < 0x10000) {
-    out.push_back(static_cast<char>(0xE0 | (cp >> 12)));
-    out.push_back(static_cast<char>(0x80 | ((cp >> 6) & 0x3F)));
-    out.push_back(static_cast<char>(0x80 | (cp & 0x3F)));
-  } else {
-    out.push_back(static_cast<char>(0xF0 | (cp >> 18)));
-    out.push_back(static_cast<char>(0x80 | ((cp >> 12) & 0x3F)));
-    out.push_back(static_cast<char>(0x80 | ((cp >> 6) & 0x3F)));
-    out.push_back(static_cast<char>(0x80 | (cp & 0x3F)));
-  }
 }
 
 std::string ShapeToString(std::span<const std::int64_t> shape) {
@@ -410,7 +393,7 @@ std::string NdArray::ElementAsString(std::size_t i) const {
     out.assign(reinterpret_cast<const char*>(p), n);
   } else {
     for (std::size_t k = 0; k + 4 <= n; k += 4) {
-      AppendUtf8(out, static_cast<std::uint32_t>(LoadUnsigned(p + k, 4, dtype.byte_order == '>')));
+      detail::AppendUtf8(out, static_cast<std::uint32_t>(LoadUnsigned(p + k, 4, dtype.byte_order == '>')));
     }
   }
   while (!out.empty() && out.back() == '\0') out.pop_back();

@@ -34,20 +34,6 @@ struct Candidate {
 
 }  // namespace
 
-std::string MirrorJointName(const std::string& name) {
-  std::string out;
-  size_t start = 0;
-  while (true) {
-    const size_t end = name.find('_', start);
-    const std::string token = name.substr(start, end == std::string::npos ? std::string::npos : end - start);
-    out += token == "left" ? "right" : token == "right" ? "left" : token;
-    if (end == std::string::npos) break;
-    out += '_';
-    start = end + 1;
-  }
-  return out;
-}
-
 DetectorOptions DetectorOptions::Perfect() {
   DetectorOptions options;
   options.noise_relative = 0.0;
@@ -76,7 +62,7 @@ DetectorSimulator::DetectorSimulator(DetectorOptions options, JointNames output_
   mirror_.resize(num_joints);
   from_whole_body_.resize(num_joints);
   for (int k = 0; k < num_joints; ++k) {
-    const int partner = FindJoint(output_joints_, MirrorJointName(output_joints_[k]));
+    const int partner = FindJoint(output_joints_, rpt::MirrorJointName(output_joints_[k]));
     mirror_[k] = partner >= 0 ? partner : k;
     from_whole_body_[k] = FindJoint(CocoWholeBodyJoints(), output_joints_[k]);
   }

@@ -72,7 +72,5 @@ class DetectorSimulator {
   std::vector<int> from_whole_body_;    // per output joint: index in CocoWholeBodyJoints() or -1
 };
 
-// The name with its "left" and "right" name tokens ('_'-separated) exchanged.
-std::string MirrorJointName(const std::string& name);
 
 }  // namespace rpt::synthetic

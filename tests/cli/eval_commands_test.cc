@@ -13,16 +13,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path TempDir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("rpt_cli_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  return dir;
-}
 
 nlohmann::json ReadJson(const fs::path& path) { return nlohmann::json::parse(test::ReadAll(path)); }
 
 TEST(EvalCommand, SyntheticRunWritesEveryOutput) {
-  const fs::path out = TempDir("eval");
+  const fs::path out = test::TempDir("eval");
   const test::CommandResult r =
       test::RunRpt("eval --dataset synthetic --param frames=40 --param people=3 --out " + out.string() + " --json --quiet");
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -64,7 +59,7 @@ TEST(EvalCommand, BadInputExitsWith2AndNamesTheProblem) {
 }
 
 TEST(CheckCommand, PassesAtAchievedFloorsAndFailsAboveThem) {
-  const fs::path dir = TempDir("check");
+  const fs::path dir = test::TempDir("check");
   fs::create_directories(dir);
   auto write = [&](const std::string& name, double floor) {
     std::ofstream(dir / name) << R"({"evaluations": [{"name": "tiny", "dataset": "synthetic",
@@ -85,7 +80,7 @@ TEST(CheckCommand, PassesAtAchievedFloorsAndFailsAboveThem) {
 }
 
 TEST(SweepCommand, TwoConfigurationsGiveTwoRowsThatDifferWhereTheOptionMatters) {
-  const fs::path out = TempDir("sweep");
+  const fs::path out = test::TempDir("sweep");
   const test::CommandResult r = test::RunRpt("sweep --dataset synthetic --param frames=30 --grid merge.top_k=0,2 --out " +
                                              out.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -101,7 +96,7 @@ TEST(SweepCommand, TwoConfigurationsGiveTwoRowsThatDifferWhereTheOptionMatters) 
 }
 
 TEST(SweepCommand, ShardsMergeIntoTheFullTable) {
-  const fs::path out = TempDir("shards");
+  const fs::path out = test::TempDir("shards");
   const std::string grid = "--dataset synthetic --param frames=20 --grid filter.min_match_score=0.8,0.9,0.95 --out " + out.string();
   const test::CommandResult full = test::RunRpt("sweep " + grid);
   ASSERT_EQ(full.exit_code, 0) << full.err;

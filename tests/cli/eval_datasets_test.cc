@@ -18,12 +18,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path TempDir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("rpt_cli_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
 
 nlohmann::json EvalJson(const std::string& args, const fs::path& out) {
   const test::CommandResult r = test::RunRpt("eval " + args + " --json --quiet --out " + out.string());
@@ -33,7 +27,7 @@ nlohmann::json EvalJson(const std::string& args, const fs::path& out) {
 
 TEST(EvalDatasets, ShelfFixtureWithItsOwnCacheAndSimulated) {
   RPT_REQUIRE_SHARED_DATA("shelf/actorsGT.mat");
-  const fs::path out = TempDir("shelf");
+  const fs::path out = test::TempDir("shelf");
   const std::string root = test::SharedData("shelf").string();
   // The mmpose cache subset is not frame-aligned with the GT subset (datasets.md 3.6): it must run
   // end to end and produce predictions, not good numbers.
@@ -51,7 +45,7 @@ TEST(EvalDatasets, ShelfFixtureWithItsOwnCacheAndSimulated) {
 
 TEST(EvalDatasets, CampusFixtureEmptyCacheGivesNoPredictions) {
   RPT_REQUIRE_SHARED_DATA("campus/actorsGT.mat");
-  const fs::path out = TempDir("campus");
+  const fs::path out = test::TempDir("campus");
   const nlohmann::json j = EvalJson(
       "--dataset campus --root " + test::SharedData("campus").string() + " --param frames=0-2 --param detections=voxelpose", out);
   EXPECT_EQ(j["frames"], 3);
@@ -62,7 +56,7 @@ TEST(EvalDatasets, CampusFixtureEmptyCacheGivesNoPredictions) {
 
 TEST(EvalDatasets, PanopticFixtureWithSimulatedDetections) {
   RPT_REQUIRE_SHARED_DATA("panoptic/160906_band1");
-  const fs::path out = TempDir("panoptic");
+  const fs::path out = test::TempDir("panoptic");
   const nlohmann::json j = EvalJson("--dataset panoptic --root " + test::SharedData("panoptic").string() +
                                         " --param sequences=160906_band1 --param every=1 --simulate",
                                     out);
@@ -74,7 +68,7 @@ TEST(EvalDatasets, PanopticFixtureWithSimulatedDetections) {
 
 TEST(EvalDatasets, ParallelSequencesGiveTheSameMetricsAsOneThread) {
   RPT_REQUIRE_SHARED_DATA("panoptic/160906_band2");
-  const fs::path out = TempDir("threads");
+  const fs::path out = test::TempDir("threads");
   const std::string input = "--dataset panoptic --root " + test::SharedData("panoptic").string() +
                             " --param sequences=160906_band1,160906_band2 --param every=1 --simulate";
   nlohmann::json one = EvalJson(input + " --threads 1", out / "one");
@@ -89,7 +83,7 @@ TEST(EvalDatasets, ParallelSequencesGiveTheSameMetricsAsOneThread) {
 }
 
 TEST(EvalDatasets, GenericInterchangeFilesWrittenByTheTest) {
-  const fs::path dir = TempDir("generic");
+  const fs::path dir = test::TempDir("generic");
   synthetic::SceneOptions options;
   options.num_frames = 30;
   options.num_people = 3;

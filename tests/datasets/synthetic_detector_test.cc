@@ -300,9 +300,9 @@ TEST(SyntheticDetectorTest, LeftRightSwapExchangesSides) {
     }
   }
   EXPECT_GT(checked, 5);
-  EXPECT_EQ(MirrorJointName("hand_index_2_left"), "hand_index_2_right");
-  EXPECT_EQ(MirrorJointName("ear_right"), "ear_left");
-  EXPECT_EQ(MirrorJointName("leftover"), "leftover");
+  EXPECT_EQ(rpt::MirrorJointName("hand_index_2_left"), "hand_index_2_right");
+  EXPECT_EQ(rpt::MirrorJointName("ear_right"), "ear_left");
+  EXPECT_EQ(rpt::MirrorJointName("leftover"), "leftover");
 }
 
 TEST(SyntheticDetectorTest, TruncationZeroesJointsOutsideTheImage) {
