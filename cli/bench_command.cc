@@ -5,6 +5,8 @@
 // with the speed-up over it.
 #include <algorithm>
 #include <chrono>
+#include <filesystem>
+#include <unistd.h>
 #include <cstdio>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -19,6 +21,8 @@
 #include "core/errors.h"
 #include "core/text.h"
 #include "core/pipeline/triangulator.h"
+#include "datasets/detections.h"
+#include "datasets/readers/hdf5_cache.h"
 #include "metrics/accumulator.h"
 #include "metrics/timing.h"
 
@@ -28,6 +32,8 @@ namespace {
 using Json = nlohmann::ordered_json;
 
 struct BenchArgs {
+  bool io = false;
+  int io_frames = 10000;
   std::vector<std::string> scenes;
   bool scaling = false;
   int frames = 0;
@@ -85,7 +91,60 @@ SceneResult BenchScene(const bench::BenchScene& scene, const BenchArgs& args, co
   return result;
 }
 
+// Writes a detections cache of `frames` x 5 views (shelf-like detections, repeated) to a temporary
+// HDF5 file and times reading it back (median of 5 reads, file in the OS cache).
+void RunIoBench(const BenchArgs& args) {
+  const Sequence sequence = bench::MakeBenchSequence(bench::StandardScenes()[0]);
+  Detections detections;
+  detections.joints = sequence.detection_joints;
+  long persons = 0;
+  for (int f = 0; f < args.io_frames; ++f) {
+    const SequenceFrame& source = sequence.frames[f % sequence.frames.size()];
+    FrameDetections frame{"frame_" + std::to_string(f), {}, source.views};
+    for (const Camera& c : sequence.cameras) frame.cameras.push_back(c.name);
+    for (const Poses2D& v : source.views) persons += v.num_persons();
+    detections.frames.push_back(std::move(frame));
+  }
+  const std::filesystem::path path =
+      std::filesystem::temp_directory_path() / ("rpt_bench_io_" + std::to_string(::getpid()) + ".h5");
+  const auto write_start = std::chrono::steady_clock::now();
+  WriteDetectionsHdf5(path, detections);
+  const double write_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - write_start).count();
+  std::vector<double> reads;
+  size_t frames_read = 0;
+  for (int i = 0; i < 5; ++i) {
+    const auto start = std::chrono::steady_clock::now();
+    const Detections loaded = ReadDetectionsHdf5(path);
+    reads.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    frames_read = loaded.frames.size();
+  }
+  const auto size = std::filesystem::file_size(path);
+  std::filesystem::remove(path);
+  if (frames_read != detections.frames.size()) throw InputError(path.string() + ": read back a different frame count");
+  const double read_s = metrics::Median(reads);
+  if (args.json) {
+    Json j;
+    j["frames"] = args.io_frames;
+    j["views"] = sequence.cameras.size();
+    j["persons"] = persons;
+    j["file_mb"] = static_cast<double>(size) / 1e6;
+    j["write_s"] = write_s;
+    j["read_s_median"] = read_s;
+    j["frames_per_s"] = args.io_frames / read_s;
+    std::cout << j.dump(2) << "\n";
+    return;
+  }
+  std::printf("HDF5 detection cache: %d frames x %zu views, %ld persons, %.1f MB; write %.3f s; read %.3f s (median of 5)"
+              " = %.0f frames/s\n",
+              args.io_frames, sequence.cameras.size(), persons, static_cast<double>(size) / 1e6, write_s, read_s,
+              args.io_frames / read_s);
+}
+
 void RunBench(const BenchArgs& args) {
+  if (args.io) {
+    RunIoBench(args);
+    return;
+  }
   const Config config = ResolveConfig(args.config);
   std::vector<bench::BenchScene> scenes;
   const std::vector<bench::BenchScene> all = [&] {
@@ -184,6 +243,10 @@ void RegisterBenchCommand(CLI::App& app) {
   command->add_option("--baseline-frames", args->baseline_frames, "frames for the baseline")->capture_default_str();
   command->add_flag("--no-baseline", args->no_baseline, "skip the baseline");
   command->add_flag("--json", args->json, "print the results as JSON");
+  command->add_flag("--io", args->io, "time reading an HDF5 detection cache instead (see --io-frames)");
+  command->add_option("--io-frames", args->io_frames, "frames in the --io cache (5 views each)")
+      ->check(CLI::Range(1, 10000000))
+      ->capture_default_str();
   AddConfigOptions(command, &args->config);
   command->callback([args] { RunBench(*args); });
 }

@@ -27,6 +27,12 @@ NATIVE=$(grep -E '^RPT_MARCH_NATIVE:' "$BUILD/CMakeCache.txt" | cut -d= -f2-)
   "$RPT" bench --repeat 5 2>/dev/null
   echo '```'
   echo
+  echo "## Loading detections"
+  echo
+  echo '```'
+  "$RPT" bench --io --io-frames 10000
+  echo '```'
+  echo
   echo "## Scaling (cameras with 4 people; people with 5 cameras)"
   echo
   echo '```'
