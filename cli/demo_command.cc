@@ -3,7 +3,6 @@
 // found, the mean joint error and the time per frame and per step.
 #include <cstdio>
 #include <iostream>
-#include <map>
 #include <string>
 
 #include "cli/commands.h"
@@ -12,7 +11,7 @@
 #include "cli/results_writer.h"
 #include "cli/run_sequence.h"
 #include "core/errors.h"
-#include "datasets/synthetic/synthetic_sequence.h"
+#include "datasets/readers/synthetic_dataset.h"
 
 namespace rpt::cli {
 namespace {
@@ -30,26 +29,21 @@ struct DemoOptions {
 };
 
 void RunDemo(const DemoOptions& o) {
-  synthetic::SceneOptions scene_options;
-  scene_options.rig.num_cameras = o.cameras;
-  scene_options.num_people = o.people;
-  scene_options.num_frames = o.frames;
-  scene_options.whole_body = o.joints == "wholebody";
-  scene_options.seed = o.seed;
-  static const std::map<std::string, DistortionModel> kDistortions = {
-      {"none", DistortionModel::kNone}, {"opencv", DistortionModel::kOpenCV}, {"fisheye", DistortionModel::kFisheye}};
-  scene_options.rig.distortion = kDistortions.at(o.distortion);
-  const synthetic::Scene scene = synthetic::GenerateScene(scene_options);
-  const synthetic::DetectorOptions detector =
-      o.noise == "none" ? synthetic::DetectorOptions::Perfect() : synthetic::DetectorOptions::Realistic();
-  const Sequence sequence = synthetic::MakeSyntheticSequence(scene, detector, o.seed, "demo");
-
+  // The demo is the built-in synthetic dataset with the demo's options as its parameters.
+  DatasetRequest request;
+  request.dataset = "synthetic";
+  request.params = {{"cameras", std::to_string(o.cameras)}, {"people", std::to_string(o.people)},
+                    {"frames", std::to_string(o.frames)},   {"joints", o.joints},
+                    {"noise", o.noise},                     {"distortion", o.distortion},
+                    {"seed", std::to_string(o.seed)}};
+  std::vector<Sequence> sequences = ReadSynthetic(request);
+  sequences.front().name = "demo";
   const Config config = ResolveConfig(o.config);
   RunOptions run_options;
   run_options.triangulator = config.triangulator;
   run_options.eval = config.metrics;
   run_options.progress = !o.json;
-  const RunResult run = RunSequences({sequence}, run_options);
+  const RunResult run = RunSequences(sequences, run_options);
   const metrics::MetricsResult& m = run.metrics;
 
   if (o.json) {
@@ -75,7 +69,7 @@ void RunDemo(const DemoOptions& o) {
               run.output_persons, m.num_matches, m.recall_500, m.invalid);
   std::printf("mean joint error (MPJPE, %zu joints) %.1f mm, PCK@100 %.1f %%\n", m.joints.size(), m.mpjpe_mm,
               m.pck_100);
-  if (scene_options.whole_body) {
+  if (o.joints == "wholebody") {
     for (const auto& g : m.wholebody) std::printf("  whole-body MPJPE %-6s %.1f mm\n", g.name.c_str(), g.mpjpe_mm);
   }
   std::printf("time per frame: median %.1f us, mean %.1f us (%.0f FPS, 2D to 3D, one thread)\n",
