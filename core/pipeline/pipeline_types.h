@@ -102,6 +102,9 @@ struct ResolvedLimb {
   int b = 0;  // distal (invalidated when the limb is implausible)
   double min_length_m = 0;
   double max_length_m = 0;
+  // Squared bounds, compared with squared lengths (no square root per limb).
+  double min_length_sq() const { return min_length_m * min_length_m; }
+  double max_length_sq() const { return max_length_m * max_length_m; }
 };
 
 }  // namespace rpt

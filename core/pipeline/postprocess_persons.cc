@@ -18,8 +18,8 @@ int PostprocessPersons(const PostprocessOptions& options, const RoomCheckOptions
     if (options.replace_wrong_joints) {
       for (const ResolvedLimb& limb : limbs) {
         if (person(3, limb.a) <= 0 || person(3, limb.b) <= 0) continue;
-        const double length = (person.col(limb.a).head<3>() - person.col(limb.b).head<3>()).norm();
-        if (length < limb.min_length_m || length > limb.max_length_m) {
+        const double length_sq = (person.col(limb.a).head<3>() - person.col(limb.b).head<3>()).squaredNorm();
+        if (length_sq < limb.min_length_sq() || length_sq > limb.max_length_sq()) {
           person(3, limb.b) = 0;
           ++replaced;
         }

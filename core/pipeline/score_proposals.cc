@@ -20,7 +20,8 @@ RPT_ALWAYS_INLINE double ReprojectionErrorSq(const ViewGeometry& g, const Eigen:
 }  // namespace
 
 int ScoreProposals(const PreparedViews& views, std::span<const ViewGeometry> geometry, std::span<const int> joints,
-                   std::span<const ResolvedLimb> limbs, const ScoreOptions& options, Proposals* proposals) {
+                   std::span<const ResolvedLimb> limbs, const ScoreOptions& options, Proposals* proposals,
+                   bool pair_scores) {
   const int n = proposals->num_joints;
   const bool use_rep = options.mode != ScoreMode::kTriangulationOnly;
   const bool use_tri = options.mode != ScoreMode::kReprojectionOnly;
@@ -69,14 +70,20 @@ int ScoreProposals(const PreparedViews& views, std::span<const ViewGeometry> geo
     if (options.prune_limbs) {
       for (const ResolvedLimb& limb : limbs) {
         if (score[limb.a] <= 0 || score[limb.b] <= 0) continue;
-        const double length = (xyz[limb.a] - xyz[limb.b]).norm();
-        if (length < limb.min_length_m || length > limb.max_length_m) {
+        const double length_sq = (xyz[limb.a] - xyz[limb.b]).squaredNorm();
+        if (length_sq < limb.min_length_sq() || length_sq > limb.max_length_sq()) {
           score[limb.b] = 0;
           ++pruned;
         }
       }
     }
     // Pair score over the joints both views saw; joint score gets the 2D confidence.
+    if (!pair_scores) {
+      if (options.use_confidence) {
+        for (int i = 0; i < n; ++i) score[i] *= ka[joints[i]].sqrt_score * kb[joints[i]].sqrt_score;
+      }
+      continue;
+    }
     double weighted = 0, weights = 0;
     for (int i = 0; i < n; ++i) {
       const Keypoint& a = ka[joints[i]];

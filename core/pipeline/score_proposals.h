@@ -20,8 +20,10 @@
 namespace rpt {
 
 // `joints` maps the proposal's joint slots to prepared-pose joint indices; `limbs` are indexed
-// by slot. Returns the number of joints invalidated by limb pruning.
+// by slot. `pair_scores` = false skips the pair score (step 10: only step 8 uses pair scores).
+// Returns the number of joints invalidated by limb pruning.
 int ScoreProposals(const PreparedViews& views, std::span<const ViewGeometry> geometry, std::span<const int> joints,
-                   std::span<const ResolvedLimb> limbs, const ScoreOptions& options, Proposals* proposals);
+                   std::span<const ResolvedLimb> limbs, const ScoreOptions& options, Proposals* proposals,
+                   bool pair_scores = true);
 
 }  // namespace rpt

@@ -176,7 +176,8 @@ void Triangulator::Process(std::span<const Poses2D> views, double timestamp_s, P
   // Step 10: the grouped pairs again, now with all joints; proposal i = groups.members[i].
   count[at(Step::kTriangulateFull)] = TriangulateMembers(ws.prepared, ws.geometry, ws.core, ws.groups.members,
                                                          ws.core_joints, num_joints, opt.triangulate.method, &ws.full);
-  stats->pruned_limbs += ScoreProposals(ws.prepared, ws.geometry, ws.all_joints, ws.all_limbs, opt.score, &ws.full);
+  stats->pruned_limbs +=
+      ScoreProposals(ws.prepared, ws.geometry, ws.all_joints, ws.all_limbs, opt.score, &ws.full, /*pair_scores=*/false);
   timer.Lap(Step::kTriangulateFull);
 
   persons->Clear(num_joints);
