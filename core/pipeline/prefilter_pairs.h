@@ -54,7 +54,7 @@ struct PrefilterScratch {
   std::vector<int> bucket;                 // pair indices grouped by matched person
   std::vector<int> bucket_fill;
   std::vector<Eigen::Vector3d> directions;  // per view: unit vector from the person to the camera
-  std::vector<std::pair<double, int>> budget;  // (angle score, pair index) of one person's pairs
+  std::vector<std::pair<double, int>> budget;  // (-quality, pair index) of one person's pairs
   std::vector<char> keep;                  // per pair
   std::vector<char> covered;               // per pose: used by a kept pair of its person
 };

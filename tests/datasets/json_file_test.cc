@@ -6,6 +6,7 @@
 
 #include "core/errors.h"
 #include "tests/datasets/io_test_util.h"
+#include "tests/error_message.h"
 #include "tests/test_data.h"
 
 namespace rpt::io {
@@ -13,14 +14,6 @@ namespace {
 
 using ::testing::HasSubstr;
 
-std::string ErrorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "<no InputError>";
-}
 
 test::ByteVec Text(const std::string& s) { return test::ByteVec(s.begin(), s.end()); }
 
@@ -52,23 +45,23 @@ TEST(Json, LoadAndFetchTypedValues) {
 TEST(Json, TypedErrorsNameFileAndPointer) {
   const nlohmann::json root = ParseJsonText(R"([{"R": [[1, 0], [0, 1]], "fx": "big", "w": 1.5, "k": [1, "x"]}])", "calibration_shelf.json");
   const std::string src = "calibration_shelf.json";
-  EXPECT_THAT(ErrorOf([&] { JsonMatrix(root, "/0/R", src, 3, 3); }),
+  EXPECT_THAT(test::InputErrorOf([&] { JsonMatrix(root, "/0/R", src, 3, 3); }),
               HasSubstr("calibration_shelf.json: /0/R: expected 3x3 array of numbers, got 2 rows"));
-  EXPECT_THAT(ErrorOf([&] { JsonNumber(root, "/0/fx", src); }), HasSubstr("calibration_shelf.json: /0/fx: expected a number, got string"));
-  EXPECT_THAT(ErrorOf([&] { JsonInt(root, "/0/w", src); }), HasSubstr("/0/w: expected an integer, got 1.5"));
-  EXPECT_THAT(ErrorOf([&] { JsonNumber(root, "/0/T", src); }), HasSubstr("calibration_shelf.json: /0/T: missing"));
-  EXPECT_THAT(ErrorOf([&] { JsonNumbers(root, "/0/k", src); }), HasSubstr("/0/k: expected an array of numbers, found string at index 1"));
-  EXPECT_THAT(ErrorOf([&] { JsonNumbers(root, "/0/R/0", src, 3); }), HasSubstr("/0/R/0: expected an array of 3 numbers, got 2 elements"));
-  EXPECT_THAT(ErrorOf([&] { JsonString(root, "", src); }), HasSubstr("calibration_shelf.json: /: expected a string, got array"));
+  EXPECT_THAT(test::InputErrorOf([&] { JsonNumber(root, "/0/fx", src); }), HasSubstr("calibration_shelf.json: /0/fx: expected a number, got string"));
+  EXPECT_THAT(test::InputErrorOf([&] { JsonInt(root, "/0/w", src); }), HasSubstr("/0/w: expected an integer, got 1.5"));
+  EXPECT_THAT(test::InputErrorOf([&] { JsonNumber(root, "/0/T", src); }), HasSubstr("calibration_shelf.json: /0/T: missing"));
+  EXPECT_THAT(test::InputErrorOf([&] { JsonNumbers(root, "/0/k", src); }), HasSubstr("/0/k: expected an array of numbers, found string at index 1"));
+  EXPECT_THAT(test::InputErrorOf([&] { JsonNumbers(root, "/0/R/0", src, 3); }), HasSubstr("/0/R/0: expected an array of 3 numbers, got 2 elements"));
+  EXPECT_THAT(test::InputErrorOf([&] { JsonString(root, "", src); }), HasSubstr("calibration_shelf.json: /: expected a string, got array"));
 }
 
 TEST(Json, ParseErrorsNameLineAndColumn) {
   test::TempDir dir;
   const auto path = dir.Write("broken.json", Text("{\n  \"a\": 1,\n  \"b\": [1, 2,, 3]\n}\n"));
-  const std::string msg = ErrorOf([&] { LoadJsonFile(path); });
+  const std::string msg = test::InputErrorOf([&] { LoadJsonFile(path); });
   EXPECT_THAT(msg, HasSubstr("broken.json:3:14: JSON parse error"));
-  EXPECT_THAT(ErrorOf([] { ParseJsonText("", "empty.json"); }), HasSubstr("empty.json:1:1: JSON parse error"));
-  EXPECT_THAT(ErrorOf([] { LoadJsonFile("/nonexistent/calibration.json"); }), HasSubstr("/nonexistent/calibration.json: file not found"));
+  EXPECT_THAT(test::InputErrorOf([] { ParseJsonText("", "empty.json"); }), HasSubstr("empty.json:1:1: JSON parse error"));
+  EXPECT_THAT(test::InputErrorOf([] { LoadJsonFile("/nonexistent/calibration.json"); }), HasSubstr("/nonexistent/calibration.json: file not found"));
 }
 
 TEST(JsonFixture, ShelfCalibration) {

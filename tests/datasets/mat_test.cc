@@ -9,6 +9,7 @@
 #include "core/errors.h"
 #include "datasets/io/binary.h"
 #include "tests/datasets/io_test_util.h"
+#include "tests/error_message.h"
 #include "tests/test_data.h"
 
 namespace rpt::io {
@@ -18,14 +19,6 @@ using ::testing::HasSubstr;
 using test::ByteVec;
 namespace m = test::mat;
 
-std::string ErrorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "<no InputError>";
-}
 
 // Collects the classes of all non-cell leaves.
 void CollectClasses(const MatValue& v, std::set<std::string>& out) {
@@ -63,7 +56,7 @@ TEST(MatFixture, ShelfActorsGT) {
     }
   }
   const MatValue& empty = actor3d.Cell(1).Cell(0);
-  EXPECT_THAT(ErrorOf([&] { empty.RowMajor(14, 3); }),
+  EXPECT_THAT(test::InputErrorOf([&] { empty.RowMajor(14, 3); }),
               HasSubstr("actorsGT.mat: actor3D{1,2}{1,1}: expected a 14x3 numeric matrix, got " + empty.Describe()));
   // actor2D: per actor, per frame, a 1xC cell of 14x2 matrices.
   const MatValue& actor2d = file.Get("actor2D");
@@ -71,7 +64,7 @@ TEST(MatFixture, ShelfActorsGT) {
   ASSERT_TRUE(views.IsCell());
   EXPECT_EQ(views.NumElements(), 5u);
   EXPECT_EQ(views.Cell(0).Describe(), "14x2 double");
-  EXPECT_THAT(ErrorOf([&] { file.Get("actor4D"); }), HasSubstr("variable 'actor4D' not found (variables: actor2D, actor3D)"));
+  EXPECT_THAT(test::InputErrorOf([&] { file.Get("actor4D"); }), HasSubstr("variable 'actor4D' not found (variables: actor2D, actor3D)"));
 }
 
 TEST(MatFixture, CampusActorsGT) {
@@ -95,7 +88,7 @@ TEST(MatFixture, TruncatedFixtureNeverCrashes) {
   const auto bytes = detail::ReadFileBytes(test::SharedData("shelf/actorsGT.mat"));
   for (std::size_t cut = 0; cut < bytes.size(); cut += 53) {
     if (cut == 128) continue;  // header only: a valid, empty MAT file
-    EXPECT_THAT(ErrorOf([&] { ParseMat(std::span(bytes).first(cut), "shelf_cut.mat"); }), HasSubstr("shelf_cut.mat")) << cut;
+    EXPECT_THAT(test::InputErrorOf([&] { ParseMat(std::span(bytes).first(cut), "shelf_cut.mat"); }), HasSubstr("shelf_cut.mat")) << cut;
   }
 }
 
@@ -160,8 +153,8 @@ TEST(Mat, RoundTripCompressedUncompressedAndEmptyCells) {
   EXPECT_EQ(c.Cell(2).dims, (std::vector<std::size_t>{1, 0}));
   EXPECT_EQ(c.Cell(3).Describe(), "1x2 uint16");
   EXPECT_EQ(c.Cell(3).Numeric(), (std::vector<double>{10000, 65535}));
-  EXPECT_THAT(ErrorOf([&] { c.Cell(0, 4); }), HasSubstr("sample.mat: c: cell index {1,5} out of range for 1x4 cell"));
-  EXPECT_THAT(ErrorOf([&] { c.Cell(3).Text(); }), HasSubstr("sample.mat: c{1,4}: expected a char array, got 1x2 uint16"));
+  EXPECT_THAT(test::InputErrorOf([&] { c.Cell(0, 4); }), HasSubstr("sample.mat: c: cell index {1,5} out of range for 1x4 cell"));
+  EXPECT_THAT(test::InputErrorOf([&] { c.Cell(3).Text(); }), HasSubstr("sample.mat: c{1,4}: expected a char array, got 1x2 uint16"));
 
   const MatValue& s = file.Get("s");
   ASSERT_TRUE(s.IsStruct());
@@ -169,7 +162,7 @@ TEST(Mat, RoundTripCompressedUncompressedAndEmptyCells) {
   EXPECT_EQ(s.Field("name").Text(), "cam");
   EXPECT_TRUE(s.Field("flag").logical);
   EXPECT_EQ(s.Field("flag").Describe(), "1x1 logical");
-  EXPECT_THAT(ErrorOf([&] { s.Field("pose"); }), HasSubstr("s: struct has no field 'pose' (fields: name, flag)"));
+  EXPECT_THAT(test::InputErrorOf([&] { s.Field("pose"); }), HasSubstr("s: struct has no field 'pose' (fields: name, flag)"));
 }
 
 TEST(Mat, TruncatedAtEveryCut) {
@@ -180,7 +173,7 @@ TEST(Mat, TruncatedAtEveryCut) {
     if (boundary) {
       EXPECT_NO_THROW(ParseMat(part, "cut.mat")) << cut;
     } else {
-      EXPECT_THAT(ErrorOf([&] { ParseMat(part, "cut.mat"); }), HasSubstr("cut.mat")) << cut;
+      EXPECT_THAT(test::InputErrorOf([&] { ParseMat(part, "cut.mat"); }), HasSubstr("cut.mat")) << cut;
     }
   }
 }
@@ -190,43 +183,43 @@ TEST(Mat, CorruptCompressedData) {
   const std::size_t compressed_at = m::Header().size() + m::Matrix(m::kDoubleClass, {2, 3}, "a", m::Doubles({1, 2, 3, 4, 5, 6})).size();
   ASSERT_EQ(bytes[compressed_at], 15);
   for (std::size_t k = 8; k < 40; ++k) bytes[compressed_at + k] ^= 0x5a;
-  EXPECT_THAT(ErrorOf([&] { ParseMat(bytes, "z.mat"); }), HasSubstr("z.mat: compressed variable at byte"));
+  EXPECT_THAT(test::InputErrorOf([&] { ParseMat(bytes, "z.mat"); }), HasSubstr("z.mat: compressed variable at byte"));
 }
 
 TEST(Mat, HostileDimensionsAndNesting) {
   // Dimensions whose product overflows.
   ByteVec f1 = m::Header();
   test::Append(f1, m::Matrix(m::kDoubleClass, {0x7fffffff, 0x7fffffff, 0x7fffffff}, "x", m::Doubles({})));
-  EXPECT_THAT(ErrorOf([&] { ParseMat(f1, "dims.mat"); }), HasSubstr("dims.mat"));
+  EXPECT_THAT(test::InputErrorOf([&] { ParseMat(f1, "dims.mat"); }), HasSubstr("dims.mat"));
   // A cell claiming more elements than its bytes can hold.
   ByteVec f2 = m::Header();
   test::Append(f2, m::Matrix(m::kCellClass, {100000, 100000}, "big", ByteVec{}));
-  EXPECT_THAT(ErrorOf([&] { ParseMat(f2, "cells.mat"); }), HasSubstr("cells.mat: big: cell array of 10000000000 elements does not fit"));
+  EXPECT_THAT(test::InputErrorOf([&] { ParseMat(f2, "cells.mat"); }), HasSubstr("cells.mat: big: cell array of 10000000000 elements does not fit"));
   // Numeric data shorter than the dimensions.
   ByteVec f3 = m::Header();
   test::Append(f3, m::Matrix(m::kDoubleClass, {14, 3}, "short", m::Doubles({1, 2})));
-  EXPECT_THAT(ErrorOf([&] { ParseMat(f3, "short.mat"); }), HasSubstr("short.mat: short: numeric data holds 2 values, dimensions need 42"));
+  EXPECT_THAT(test::InputErrorOf([&] { ParseMat(f3, "short.mat"); }), HasSubstr("short.mat: short: numeric data holds 2 values, dimensions need 42"));
   // Cells nested 100 deep.
   ByteVec inner = m::Matrix(m::kDoubleClass, {0, 0}, "", m::Doubles({}));
   for (int i = 0; i < 100; ++i) inner = m::Matrix(m::kCellClass, {1, 1}, i == 99 ? "deep" : "", inner);
   ByteVec f4 = m::Header();
   test::Append(f4, inner);
-  EXPECT_THAT(ErrorOf([&] { ParseMat(f4, "deep.mat"); }), HasSubstr("nest deeper than 64 levels"));
+  EXPECT_THAT(test::InputErrorOf([&] { ParseMat(f4, "deep.mat"); }), HasSubstr("nest deeper than 64 levels"));
 }
 
 TEST(Mat, RefusedVariantsAndMissingFile) {
   ByteVec v73 = m::Header("MATLAB 7.3 MAT-file, Platform: GLNXA64, HDF5 schema 1.00");
-  EXPECT_THAT(ErrorOf([&] { ParseMat(v73, "new.mat"); }), HasSubstr("new.mat: MAT v7.3"));
+  EXPECT_THAT(test::InputErrorOf([&] { ParseMat(v73, "new.mat"); }), HasSubstr("new.mat: MAT v7.3"));
   ByteVec be = m::Header();
   be[126] = 'M';
   be[127] = 'I';
-  EXPECT_THAT(ErrorOf([&] { ParseMat(be, "be.mat"); }), HasSubstr("be.mat: big-endian MAT files are not supported"));
-  EXPECT_THAT(ErrorOf([&] { ParseMat(ByteVec(10, 0), "tiny.mat"); }), HasSubstr("tiny.mat: too short"));
+  EXPECT_THAT(test::InputErrorOf([&] { ParseMat(be, "be.mat"); }), HasSubstr("be.mat: big-endian MAT files are not supported"));
+  EXPECT_THAT(test::InputErrorOf([&] { ParseMat(ByteVec(10, 0), "tiny.mat"); }), HasSubstr("tiny.mat: too short"));
   ByteVec sparse = m::Header();
   test::Append(sparse, m::Matrix(5, {2, 2}, "sp", ByteVec{}));
   const MatFile file = ParseMat(sparse, "sparse.mat");
-  EXPECT_THAT(ErrorOf([&] { file.Get("sp").Numeric(); }), HasSubstr("sparse.mat: sp: MAT class sparse (5) is not supported"));
-  EXPECT_THAT(ErrorOf([] { ReadMat("/nonexistent/Shelf/actorsGT.mat"); }), HasSubstr("/nonexistent/Shelf/actorsGT.mat: file not found"));
+  EXPECT_THAT(test::InputErrorOf([&] { file.Get("sp").Numeric(); }), HasSubstr("sparse.mat: sp: MAT class sparse (5) is not supported"));
+  EXPECT_THAT(test::InputErrorOf([] { ReadMat("/nonexistent/Shelf/actorsGT.mat"); }), HasSubstr("/nonexistent/Shelf/actorsGT.mat: file not found"));
 }
 
 }  // namespace

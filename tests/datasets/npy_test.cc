@@ -6,6 +6,7 @@
 
 #include "core/errors.h"
 #include "tests/datasets/io_test_util.h"
+#include "tests/error_message.h"
 
 namespace rpt::io {
 namespace {
@@ -15,14 +16,6 @@ using test::ByteVec;
 using test::NpyBytes;
 using test::PickleWriter;
 
-std::string ErrorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "<no InputError>";
-}
 
 ByteVec F8(const std::vector<double>& v) { return test::RawOf(v); }
 
@@ -101,7 +94,7 @@ TEST(Npy, StructuredDescrWithPaddingAndSubarrays) {
   const auto kp = v.Field("keypoints").ToDoubles({2, 3, 2});
   EXPECT_EQ(kp[0], 0);
   EXPECT_EQ(kp[11], 15);
-  EXPECT_THAT(ErrorOf([&] { v.Field("bbox"); }), HasSubstr("labels.npy: top level: structured array has no field 'bbox'"));
+  EXPECT_THAT(test::InputErrorOf([&] { v.Field("bbox"); }), HasSubstr("labels.npy: top level: structured array has no field 'bbox'"));
 }
 
 TEST(Npy, ObjectArrayDictPayload) {
@@ -114,7 +107,7 @@ TEST(Npy, ObjectArrayDictPayload) {
   const PyView v = ReadNpy(dir.Write("00001.npy", bytes));
   ASSERT_TRUE(v.IsDict());
   EXPECT_EQ(v.Key("aria01").ToDoubles({2, 4})[3], 1.0);
-  EXPECT_THAT(ErrorOf([&] { v.Key("aria02"); }), HasSubstr("00001.npy: top level: missing key 'aria02'"));
+  EXPECT_THAT(test::InputErrorOf([&] { v.Key("aria02"); }), HasSubstr("00001.npy: top level: missing key 'aria02'"));
 }
 
 TEST(Npy, ObjectArrayListPayload) {
@@ -128,7 +121,7 @@ TEST(Npy, ObjectArrayListPayload) {
   // A hostile payload is refused by the pickle VM with the file offset.
   PickleWriter evil;
   evil.Proto(2).Global("os", "system").Stop();
-  const std::string msg = ErrorOf([&] { ParseNpy(NpyBytes("{'descr': '|O', 'fortran_order': False, 'shape': (), }", evil.bytes), "evil.npy"); });
+  const std::string msg = test::InputErrorOf([&] { ParseNpy(NpyBytes("{'descr': '|O', 'fortran_order': False, 'shape': (), }", evil.bytes), "evil.npy"); });
   EXPECT_THAT(msg, HasSubstr("evil.npy"));
   EXPECT_THAT(msg, HasSubstr("'os.system' is not allowed"));
   EXPECT_THAT(msg, HasSubstr("at byte 130"));
@@ -137,17 +130,17 @@ TEST(Npy, ObjectArrayListPayload) {
 TEST(Npy, TruncatedAtEveryCut) {
   const auto bytes = NpyBytes("{'descr': '<f8', 'fortran_order': False, 'shape': (3,), }", F8({1, 2, 3}));
   for (std::size_t cut = 0; cut < bytes.size(); ++cut) {
-    EXPECT_THAT(ErrorOf([&] { ParseNpy(std::span(bytes).first(cut), "cut.npy"); }), HasSubstr("cut.npy")) << cut;
+    EXPECT_THAT(test::InputErrorOf([&] { ParseNpy(std::span(bytes).first(cut), "cut.npy"); }), HasSubstr("cut.npy")) << cut;
   }
   const ByteVec payload = ObjectArrayPickle({}, [](PickleWriter& w) { w.Str("x"); });
   const auto obj = NpyBytes("{'descr': '|O', 'fortran_order': False, 'shape': (), }", payload);
   for (std::size_t cut = 0; cut < obj.size(); ++cut) {
-    EXPECT_THAT(ErrorOf([&] { ParseNpy(std::span(obj).first(cut), "cutobj.npy"); }), HasSubstr("cutobj.npy")) << cut;
+    EXPECT_THAT(test::InputErrorOf([&] { ParseNpy(std::span(obj).first(cut), "cutobj.npy"); }), HasSubstr("cutobj.npy")) << cut;
   }
 }
 
 TEST(Npy, MalformedHeaders) {
-  auto error = [](const std::string& header) { return ErrorOf([&] { ParseNpy(NpyBytes(header, ByteVec(64, 0)), "h.npy"); }); };
+  auto error = [](const std::string& header) { return test::InputErrorOf([&] { ParseNpy(NpyBytes(header, ByteVec(64, 0)), "h.npy"); }); };
   EXPECT_THAT(error("{'descr': '<f8', 'fortran_order': False, 'shape': (4611686018427387904, 4), }"), HasSubstr("overflow"));
   EXPECT_THAT(error("{'descr': '<f8', 'fortran_order': False, 'shape': (-1,), }"), HasSubstr("negative dimension"));
   EXPECT_THAT(error("{'descr': '<M8[ns]', 'fortran_order': False, 'shape': (1,), }"), HasSubstr("unsupported dtype descr '<M8[ns]'"));
@@ -159,14 +152,14 @@ TEST(Npy, MalformedHeaders) {
   EXPECT_THAT(error("{'descr': '<f8', 'fortran_order': 'yes', 'shape': (1,), }"), HasSubstr("'fortran_order': expected bool"));
   ByteVec bad = NpyBytes("{'descr': '<f8', 'fortran_order': False, 'shape': (1,), }", F8({1}));
   bad[0] = 'X';
-  EXPECT_THAT(ErrorOf([&] { ParseNpy(bad, "m.npy"); }), HasSubstr("m.npy: not an NPY file"));
+  EXPECT_THAT(test::InputErrorOf([&] { ParseNpy(bad, "m.npy"); }), HasSubstr("m.npy: not an NPY file"));
   ByteVec v9 = NpyBytes("{'descr': '<f8', 'fortran_order': False, 'shape': (1,), }", F8({1}));
   v9[6] = 9;
-  EXPECT_THAT(ErrorOf([&] { ParseNpy(v9, "v.npy"); }), HasSubstr("unsupported NPY version 9.0"));
+  EXPECT_THAT(test::InputErrorOf([&] { ParseNpy(v9, "v.npy"); }), HasSubstr("unsupported NPY version 9.0"));
 }
 
 TEST(Npy, MissingFileNamesPath) {
-  EXPECT_THAT(ErrorOf([] { ReadNpy("/nonexistent/poses3d/00001.npy"); }), HasSubstr("/nonexistent/poses3d/00001.npy: file not found"));
+  EXPECT_THAT(test::InputErrorOf([] { ReadNpy("/nonexistent/poses3d/00001.npy"); }), HasSubstr("/nonexistent/poses3d/00001.npy: file not found"));
 }
 
 // ---------------------------------------------------------------------------------------
@@ -191,7 +184,7 @@ TEST(Npz, StoredAndDeflatedMembers) {
   const auto ramp = npz.at("ramp").ToDoubles({4000});
   EXPECT_EQ(ramp[13], 6.0);
   EXPECT_EQ(npz.at("README.txt").AsBytes(), "hi");
-  EXPECT_THAT(ErrorOf([&] { npz.at("ramp").ToDoubles({3}); }), HasSubstr("data.npz[ramp.npy]: top level: expected shape (3,)"));
+  EXPECT_THAT(test::InputErrorOf([&] { npz.at("ramp").ToDoubles({3}); }), HasSubstr("data.npz[ramp.npy]: top level: expected shape (3,)"));
 }
 
 TEST(Npz, ObjectMembers) {
@@ -206,7 +199,7 @@ TEST(Npz, ObjectMembers) {
 TEST(Npz, TruncatedAtManyCuts) {
   const ByteVec npz = SampleNpz();
   for (std::size_t cut = 0; cut < npz.size(); cut += 7) {
-    EXPECT_THAT(ErrorOf([&] { ParseNpz(std::span(npz).first(cut), "cut.npz"); }), HasSubstr("cut.npz")) << cut;
+    EXPECT_THAT(test::InputErrorOf([&] { ParseNpz(std::span(npz).first(cut), "cut.npz"); }), HasSubstr("cut.npz")) << cut;
   }
 }
 
@@ -215,26 +208,26 @@ TEST(Npz, CorruptAndUnsupportedArchives) {
   // Flip a byte inside the stored member's NPY data: the CRC catches it.
   ByteVec flipped = npz;
   flipped[30 + 13 + 20 + 128 + 3] ^= 0x55;
-  EXPECT_THAT(ErrorOf([&] { ParseNpz(flipped, "crc.npz"); }), HasSubstr("crc.npz: member 'positions.npy': CRC-32 mismatch"));
+  EXPECT_THAT(test::InputErrorOf([&] { ParseNpz(flipped, "crc.npz"); }), HasSubstr("crc.npz: member 'positions.npy': CRC-32 mismatch"));
   // zip64 markers in the end record.
   ByteVec z64 = npz;
   const std::size_t eocd = z64.size() - 22;
   z64[eocd + 16] = z64[eocd + 17] = z64[eocd + 18] = z64[eocd + 19] = 0xff;
-  EXPECT_THAT(ErrorOf([&] { ParseNpz(z64, "big.npz"); }), HasSubstr("big.npz: zip64 archives are not supported"));
+  EXPECT_THAT(test::InputErrorOf([&] { ParseNpz(z64, "big.npz"); }), HasSubstr("big.npz: zip64 archives are not supported"));
   // An unsupported compression method (bzip2 = 12) in the central directory.
   ByteVec bz = test::ZipBytes({{"a.npy", ByteVec{1, 2, 3}, false, false}});
   const std::size_t central = 30 + 5 + 3;
   bz[central + 10] = 12;
-  EXPECT_THAT(ErrorOf([&] { ParseNpz(bz, "bz.npz"); }), HasSubstr("compression method 12 is not supported"));
+  EXPECT_THAT(test::InputErrorOf([&] { ParseNpz(bz, "bz.npz"); }), HasSubstr("compression method 12 is not supported"));
   // A deflated member claiming an impossible expansion (decompression bomb guard).
   ByteVec bomb = test::ZipBytes({{"a.npy", ByteVec(100, 0), true, false}});
   const std::size_t bomb_central = bomb.size() - 22 - 46 - 5;
   test::ByteVec huge;
   test::AppendLE(huge, 0x7fffffff, 4);
   std::copy(huge.begin(), huge.end(), bomb.begin() + static_cast<std::ptrdiff_t>(bomb_central + 24));
-  EXPECT_THAT(ErrorOf([&] { ParseNpz(bomb, "bomb.npz"); }), HasSubstr("implausible uncompressed size"));
-  EXPECT_THAT(ErrorOf([&] { ParseNpz(ByteVec{'P', 'K'}, "tiny.npz"); }), HasSubstr("tiny.npz: too short for a ZIP archive"));
-  EXPECT_THAT(ErrorOf([] { ReadNpz("/nonexistent/data.npz"); }), HasSubstr("/nonexistent/data.npz: file not found"));
+  EXPECT_THAT(test::InputErrorOf([&] { ParseNpz(bomb, "bomb.npz"); }), HasSubstr("implausible uncompressed size"));
+  EXPECT_THAT(test::InputErrorOf([&] { ParseNpz(ByteVec{'P', 'K'}, "tiny.npz"); }), HasSubstr("tiny.npz: too short for a ZIP archive"));
+  EXPECT_THAT(test::InputErrorOf([] { ReadNpz("/nonexistent/data.npz"); }), HasSubstr("/nonexistent/data.npz: file not found"));
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include "core/errors.h"
 #include "datasets/io/binary.h"
 #include "tests/datasets/io_test_util.h"
+#include "tests/error_message.h"
 #include "tests/test_data.h"
 
 namespace rpt::io {
@@ -20,14 +21,6 @@ using test::PickleWriter;
 
 PyView Parse(const PickleWriter& w, const std::string& name = "test.pkl") { return ParsePickle(w.bytes, name); }
 
-std::string ErrorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "<no InputError>";
-}
 
 // ---------------------------------------------------------------------------------------
 // Real fixtures (skipped when shared/data is absent)
@@ -104,9 +97,9 @@ TEST(PickleFixture, Human36mCameras) {
   EXPECT_EQ(cam.Key("name").AsStr(), "camera1");
   EXPECT_EQ(cam.Key("id").AsStr(), "54138969");
   // Accessor errors name the file and the path.
-  const std::string msg = ErrorOf([&] { cam.Key("R").AsStr(); });
+  const std::string msg = test::InputErrorOf([&] { cam.Key("R").AsStr(); });
   EXPECT_THAT(msg, HasSubstr("cameras.pkl: key ('S1', '54138969').R: expected str, got ndarray <f8 (3, 3)"));
-  EXPECT_THAT(ErrorOf([&] { cam.Key("nope"); }), HasSubstr("missing key 'nope'"));
+  EXPECT_THAT(test::InputErrorOf([&] { cam.Key("nope"); }), HasSubstr("missing key 'nope'"));
 }
 
 TEST(PickleFixture, TruncatedFixtureNeverCrashes) {
@@ -153,8 +146,8 @@ TEST(Pickle, ScalarsAndContainers) {
   EXPECT_EQ(v.Key(*MakeStrTuple({"a", "b"})).AsStr(), "tuple key");
   // Insertion order is kept.
   EXPECT_EQ(v.Items().front().first.AsStr(), "small");
-  EXPECT_THAT(ErrorOf([&] { v.Key("list").AsArray(); }), HasSubstr("test.pkl: key 'list': expected ndarray, got list"));
-  EXPECT_THAT(ErrorOf([&] { v.Key("list").At(9); }), HasSubstr("test.pkl: key 'list': index 9 out of range"));
+  EXPECT_THAT(test::InputErrorOf([&] { v.Key("list").AsArray(); }), HasSubstr("test.pkl: key 'list': expected ndarray, got list"));
+  EXPECT_THAT(test::InputErrorOf([&] { v.Key("list").At(9); }), HasSubstr("test.pkl: key 'list': index 9 out of range"));
 }
 
 TEST(Pickle, NumpyArraysOfSeveralDtypes) {
@@ -182,7 +175,7 @@ TEST(Pickle, NumpyArraysOfSeveralDtypes) {
   EXPECT_EQ(v.At(6).ToDoubles(), (std::vector<double>{-2, 256}));
   EXPECT_DOUBLE_EQ(v.At(7).AsDouble(), 42.0);
   EXPECT_EQ(v.At(8).AsArray().Size(), 0u);
-  EXPECT_THAT(ErrorOf([&] { v.At(0).ToDoubles({3, 2}); }), HasSubstr("[0]: expected shape (3, 2), got ndarray <f8 (2, 3)"));
+  EXPECT_THAT(test::InputErrorOf([&] { v.At(0).ToDoubles({3, 2}); }), HasSubstr("[0]: expected shape (3, 2), got ndarray <f8 (2, 3)"));
 }
 
 TEST(Pickle, StructuredDtypeFromPickle) {
@@ -218,7 +211,7 @@ TEST(Pickle, StructuredDtypeFromPickle) {
   EXPECT_EQ(a.dtype.fields[1].offset, 16u);
   EXPECT_EQ(v.Field("R").ToDoubles({2, 2, 2}), (std::vector<double>{1, 2, 3, 4, 2, 2, 3, 4}));
   EXPECT_EQ(v.Field("id").ToDoubles({2}), (std::vector<double>{100, 101}));
-  EXPECT_THAT(ErrorOf([&] { v.Field("K"); }), HasSubstr("no field 'K' (fields: R, id)"));
+  EXPECT_THAT(test::InputErrorOf([&] { v.Field("K"); }), HasSubstr("no field 'K' (fields: R, id)"));
 }
 
 TEST(Pickle, ObjectArrayScalarsAndDefaultdict) {
@@ -298,36 +291,36 @@ TEST(Pickle, SharedReferencesThroughMemo) {
 TEST(Pickle, RefusesDisallowedGlobals) {
   PickleWriter w;
   w.Proto(2).Global("os", "system").Str("echo pwned").Tuple1().Reduce().Stop();
-  const std::string msg = ErrorOf([&] { Parse(w, "evil.pkl"); });
+  const std::string msg = test::InputErrorOf([&] { Parse(w, "evil.pkl"); });
   EXPECT_THAT(msg, HasSubstr("evil.pkl"));
   EXPECT_THAT(msg, HasSubstr("'os.system' is not allowed"));
   EXPECT_THAT(msg, HasSubstr("GLOBAL (0x63) at byte 2"));
 
   PickleWriter s;
   s.Proto(4).Str("builtins").Str("eval").Op(0x93).Stop();
-  EXPECT_THAT(ErrorOf([&] { Parse(s, "evil4.pkl"); }), HasSubstr("'builtins.eval' is not allowed"));
+  EXPECT_THAT(test::InputErrorOf([&] { Parse(s, "evil4.pkl"); }), HasSubstr("'builtins.eval' is not allowed"));
 
   PickleWriter r;  // an allowed class passed to _reconstruct must still be ndarray
   r.Proto(2).Global("numpy.core.multiarray", "_reconstruct").Global("collections", "OrderedDict").Int(0).Tuple1()
       .Bytes("b").Tuple3().Reduce().Stop();
-  EXPECT_THAT(ErrorOf([&] { Parse(r); }), HasSubstr("only numpy.ndarray can be reconstructed"));
+  EXPECT_THAT(test::InputErrorOf([&] { Parse(r); }), HasSubstr("only numpy.ndarray can be reconstructed"));
 }
 
 TEST(Pickle, RefusesUnknownAndUnsupportedOpcodes) {
   PickleWriter w;
   w.Proto(2).None().Op(0xff);
-  EXPECT_THAT(ErrorOf([&] { Parse(w, "odd.pkl"); }), HasSubstr("odd.pkl: unknown pickle opcode 0xff at byte 3"));
+  EXPECT_THAT(test::InputErrorOf([&] { Parse(w, "odd.pkl"); }), HasSubstr("odd.pkl: unknown pickle opcode 0xff at byte 3"));
   PickleWriter p;
   p.Proto(2).Op('P');
   p.bytes.push_back('1');
   p.bytes.push_back('\n');
-  EXPECT_THAT(ErrorOf([&] { Parse(p); }), HasSubstr("persistent ids are not supported"));
+  EXPECT_THAT(test::InputErrorOf([&] { Parse(p); }), HasSubstr("persistent ids are not supported"));
   PickleWriter t;
   t.Op('I');
-  EXPECT_THAT(ErrorOf([&] { Parse(t); }), HasSubstr("text (protocol 0/1) opcodes"));
+  EXPECT_THAT(test::InputErrorOf([&] { Parse(t); }), HasSubstr("text (protocol 0/1) opcodes"));
   PickleWriter v;
   v.Proto(6);
-  EXPECT_THAT(ErrorOf([&] { Parse(v); }), HasSubstr("unsupported pickle protocol 6"));
+  EXPECT_THAT(test::InputErrorOf([&] { Parse(v); }), HasSubstr("unsupported pickle protocol 6"));
 }
 
 TEST(Pickle, TruncatedAtEveryCutThrowsInputError) {
@@ -337,7 +330,7 @@ TEST(Pickle, TruncatedAtEveryCutThrowsInputError) {
   w.Str("name").Str("camera").SetItems().Stop();
   ASSERT_NO_THROW(Parse(w));
   for (std::size_t cut = 0; cut < w.bytes.size(); ++cut) {
-    const std::string msg = ErrorOf([&] { ParsePickle(std::span(w.bytes).first(cut), "cut.pkl"); });
+    const std::string msg = test::InputErrorOf([&] { ParsePickle(std::span(w.bytes).first(cut), "cut.pkl"); });
     EXPECT_THAT(msg, HasSubstr("cut.pkl")) << "cut at " << cut;
   }
 }
@@ -345,32 +338,32 @@ TEST(Pickle, TruncatedAtEveryCutThrowsInputError) {
 TEST(Pickle, MalformedStructure) {
   PickleWriter a;
   a.Proto(2).Int(1).Append().Stop();
-  EXPECT_THAT(ErrorOf([&] { Parse(a); }), HasSubstr("stack underflow"));
+  EXPECT_THAT(test::InputErrorOf([&] { Parse(a); }), HasSubstr("stack underflow"));
   PickleWriter b;
   b.Proto(2).Get(7).Stop();
-  EXPECT_THAT(ErrorOf([&] { Parse(b); }), HasSubstr("memo entry 7 was never stored"));
+  EXPECT_THAT(test::InputErrorOf([&] { Parse(b); }), HasSubstr("memo entry 7 was never stored"));
   PickleWriter c;
   c.Proto(2).Int(1).Tuple().Stop();
-  EXPECT_THAT(ErrorOf([&] { Parse(c); }), HasSubstr("no MARK"));
+  EXPECT_THAT(test::InputErrorOf([&] { Parse(c); }), HasSubstr("no MARK"));
   PickleWriter d;
   d.Proto(2).EmptyDict().EmptyList().Int(1).SetItem().Stop();
-  EXPECT_THAT(ErrorOf([&] { Parse(d); }), HasSubstr("unhashable dict key of type list"));
+  EXPECT_THAT(test::InputErrorOf([&] { Parse(d); }), HasSubstr("unhashable dict key of type list"));
   PickleWriter e;  // array data length disagrees with shape
   e.Proto(2).Array({4}, "f8", "<", false, ByteVec(24, 0)).Stop();
-  EXPECT_THAT(ErrorOf([&] { Parse(e); }), HasSubstr("ndarray data has 24 bytes, shape and dtype <f8 need 32"));
+  EXPECT_THAT(test::InputErrorOf([&] { Parse(e); }), HasSubstr("ndarray data has 24 bytes, shape and dtype <f8 need 32"));
   PickleWriter f;
   f.Proto(2).Int(1).Build().Stop();
-  EXPECT_THAT(ErrorOf([&] { Parse(f); }), HasSubstr("stack underflow"));
+  EXPECT_THAT(test::InputErrorOf([&] { Parse(f); }), HasSubstr("stack underflow"));
 }
 
 TEST(Pickle, ShapeOverflowRefused) {
   PickleWriter w;
   w.Proto(2).ArrayBegin().ShapeTuple({std::int64_t{1} << 62, std::int64_t{1} << 62}).DType("f8", "<").Bool(false)
       .Bytes("").ArrayEnd().Stop();
-  EXPECT_THAT(ErrorOf([&] { Parse(w); }), HasSubstr("overflows"));
+  EXPECT_THAT(test::InputErrorOf([&] { Parse(w); }), HasSubstr("overflows"));
   PickleWriter n;
   n.Proto(2).ArrayBegin().ShapeTuple({-1}).DType("f8", "<").Bool(false).Bytes("").ArrayEnd().Stop();
-  EXPECT_THAT(ErrorOf([&] { Parse(n); }), HasSubstr("negative array dimension"));
+  EXPECT_THAT(test::InputErrorOf([&] { Parse(n); }), HasSubstr("negative array dimension"));
 }
 
 TEST(Pickle, RecursionBombRefused) {
@@ -380,13 +373,13 @@ TEST(Pickle, RecursionBombRefused) {
   for (int i = 0; i < kDepth; ++i) lists.EmptyList();
   for (int i = 1; i < kDepth; ++i) lists.Append();
   lists.Stop();
-  EXPECT_THAT(ErrorOf([&] { Parse(lists); }), HasSubstr("nests deeper than 200 levels"));
+  EXPECT_THAT(test::InputErrorOf([&] { Parse(lists); }), HasSubstr("nests deeper than 200 levels"));
 
   PickleWriter tuples;
   tuples.Proto(2).EmptyTuple();
   for (int i = 0; i < kDepth; ++i) tuples.Tuple1();
   tuples.Stop();
-  EXPECT_THAT(ErrorOf([&] { Parse(tuples); }), HasSubstr("nests deeper"));
+  EXPECT_THAT(test::InputErrorOf([&] { Parse(tuples); }), HasSubstr("nests deeper"));
 
   // Deep garbage that is popped off the stack must not blow up the destructor either.
   PickleWriter garbage;
@@ -400,13 +393,13 @@ TEST(Pickle, RecursionBombRefused) {
   keys.Proto(2).EmptyDict().EmptyTuple();
   for (int i = 0; i < 100; ++i) keys.Tuple1();
   keys.None().SetItem().Stop();
-  EXPECT_THAT(ErrorOf([&] { Parse(keys); }), HasSubstr("unhashable"));
+  EXPECT_THAT(test::InputErrorOf([&] { Parse(keys); }), HasSubstr("unhashable"));
 }
 
 TEST(Pickle, CycleRefused) {
   PickleWriter w;
   w.Proto(2).EmptyList().Put(0).Get(0).Append().Stop();
-  EXPECT_THAT(ErrorOf([&] { Parse(w); }), HasSubstr("reference cycle"));
+  EXPECT_THAT(test::InputErrorOf([&] { Parse(w); }), HasSubstr("reference cycle"));
 }
 
 TEST(Pickle, QuadraticCopyingBounded) {
@@ -417,11 +410,11 @@ TEST(Pickle, QuadraticCopyingBounded) {
   w.Appends().Put(1).Pop().Pop();
   for (int i = 0; i < 20000; ++i) w.Get(0).Get(1).Tuple1().Reduce().Pop();
   w.None().Stop();
-  EXPECT_THAT(ErrorOf([&] { Parse(w); }), HasSubstr("resource limit"));
+  EXPECT_THAT(test::InputErrorOf([&] { Parse(w); }), HasSubstr("resource limit"));
 }
 
 TEST(Pickle, MissingFileNamesPath) {
-  EXPECT_THAT(ErrorOf([] { ReadPickle("/nonexistent/dir/cameras.pkl"); }),
+  EXPECT_THAT(test::InputErrorOf([] { ReadPickle("/nonexistent/dir/cameras.pkl"); }),
               HasSubstr("/nonexistent/dir/cameras.pkl: file not found"));
 }
 

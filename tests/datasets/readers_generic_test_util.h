@@ -16,27 +16,10 @@
 #include "datasets/detections.h"
 #include "datasets/sequence.h"
 #include "tests/datasets/io_test_util.h"
+#include "tests/error_message.h"
 
 namespace rpt::test {
 
-// The message of the InputError thrown by `f`, or a marker when none is thrown.
-inline std::string InputErrorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "<no InputError>";
-}
-
-inline std::string ConfigErrorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const ConfigError& e) {
-    return e.what();
-  }
-  return "<no ConfigError>";
-}
 
 inline std::filesystem::path WriteText(const TempDir& dir, const std::string& name, const std::string& text) {
   const auto path = dir.path() / name;

@@ -22,6 +22,7 @@
 #include "core/camera.h"
 #include "core/errors.h"
 #include "tests/datasets/io_test_util.h"
+#include "tests/error_message.h"
 
 namespace rpt::test {
 
@@ -381,15 +382,5 @@ inline std::string MetadataXml(const std::vector<double>& w0) {
   return text;
 }
 
-// The message of the InputError `f` throws (fails the test when it throws nothing).
-inline std::string InputErrorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "expected an InputError";
-  return "<no InputError>";
-}
 
 }  // namespace rpt::test

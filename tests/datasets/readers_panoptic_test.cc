@@ -15,6 +15,7 @@
 #include "core/errors.h"
 #include "datasets/readers/panoptic.h"
 #include "tests/datasets/io_test_util.h"
+#include "tests/error_message.h"
 #include "tests/test_data.h"
 
 namespace rpt {
@@ -22,15 +23,6 @@ namespace {
 
 using ::testing::HasSubstr;
 
-template <typename Error = InputError>
-std::string ErrorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "<no exception of the expected type>";
-}
 
 DatasetRequest Request(const std::filesystem::path& root, std::map<std::string, std::string> params) {
   DatasetRequest request;
@@ -218,9 +210,9 @@ TEST(PanopticReader, EveryMaxFramesAndAllHdCameras) {
 
 TEST(PanopticReader, DefaultSequencesAreReportedMissing) {
   RPT_REQUIRE_SHARED_DATA("panoptic");
-  EXPECT_THAT(ErrorOf([] { ReadPanoptic(Request(test::SharedData("panoptic"), {})); }),
+  EXPECT_THAT(test::InputErrorOf([] { ReadPanoptic(Request(test::SharedData("panoptic"), {})); }),
               HasSubstr("panoptic: sequence '160906_pizza1' not found"));
-  EXPECT_THAT(ErrorOf([] {
+  EXPECT_THAT(test::InputErrorOf([] {
                 ReadPanoptic(
                     Request(test::SharedData("panoptic"), {{"sequences", "160906_band1"}, {"cameras", "00_03,00_99"}}));
               }),
@@ -358,12 +350,12 @@ TEST(PanopticReader, MalformedInputNamesFileAndPlace) {
   const std::filesystem::path poses = dir.path() / "seqA" / "hdPose3d_stage1_coco19";
   const std::map<std::string, std::string> base = {{"sequences", "seqA"}, {"cameras", "00_00"}, {"every", "1"}};
 
-  EXPECT_THAT(ErrorOf([&] {
+  EXPECT_THAT(test::InputErrorOf([&] {
                 ReadPanoptic(Request(dir.path(), {{"sequences", "seqA,seqB"}}));
               }),
               HasSubstr("panoptic: sequence 'seqB' not found"));
   EXPECT_THAT(
-      ErrorOf([&] {
+      test::InputErrorOf([&] {
         ReadPanoptic(Request(dir.path(), {{"sequences", "seqA"}, {"cameras", "00_00,00_07"}}));
       }),
       HasSubstr(
@@ -371,34 +363,34 @@ TEST(PanopticReader, MalformedInputNamesFileAndPlace) {
 
   // A NaN (not JSON) and a null coordinate.
   WriteText(poses / "body3DScene_00000013.json", Scene("{\"id\": 2, \"joints19\": [NaN, 1, 2, 0.5]}"));
-  EXPECT_THAT(ErrorOf([&] { ReadPanoptic(Request(dir.path(), base)); }), HasSubstr("body3DScene_00000013.json:1:"));
+  EXPECT_THAT(test::InputErrorOf([&] { ReadPanoptic(Request(dir.path(), base)); }), HasSubstr("body3DScene_00000013.json:1:"));
   std::string with_null = Joints19([](int) { return 0.5; });
   with_null.replace(1, 2, "null");
   WriteText(poses / "body3DScene_00000013.json", Scene("{\"id\": 2, \"joints19\": " + with_null + "}"));
-  EXPECT_THAT(ErrorOf([&] { ReadPanoptic(Request(dir.path(), base)); }),
+  EXPECT_THAT(test::InputErrorOf([&] { ReadPanoptic(Request(dir.path(), base)); }),
               HasSubstr("body3DScene_00000013.json: /bodies/0/joints19"));
   WriteText(poses / "body3DScene_00000013.json", Scene("{\"id\": 2, \"joints19\": [1, 2, 3, 0.5]}"));
-  EXPECT_THAT(ErrorOf([&] { ReadPanoptic(Request(dir.path(), base)); }),
+  EXPECT_THAT(test::InputErrorOf([&] { ReadPanoptic(Request(dir.path(), base)); }),
               HasSubstr("body3DScene_00000013.json: /bodies/0/joints19: expected"));
   WriteText(poses / "body3DScene_00000013.json", "{\"bodies\": 3}");
-  EXPECT_THAT(ErrorOf([&] { ReadPanoptic(Request(dir.path(), base)); }),
+  EXPECT_THAT(test::InputErrorOf([&] { ReadPanoptic(Request(dir.path(), base)); }),
               HasSubstr("body3DScene_00000013.json: /bodies: expected an array"));
 
   // Cameras: missing R, non-orthonormal R, missing file.
   WriteSequence(dir.path(), CalibrationJson("none"));
-  EXPECT_THAT(ErrorOf([&] { ReadPanoptic(Request(dir.path(), base)); }),
+  EXPECT_THAT(test::InputErrorOf([&] { ReadPanoptic(Request(dir.path(), base)); }),
               HasSubstr("calibration_seqA.json: /cameras/0/R: missing"));
   WriteSequence(dir.path(), CalibrationJson("[[1, 0, 0], [0, 1.2, 0], [0, 0, 1]]"));
-  EXPECT_THAT(ErrorOf([&] { ReadPanoptic(Request(dir.path(), base)); }),
+  EXPECT_THAT(test::InputErrorOf([&] { ReadPanoptic(Request(dir.path(), base)); }),
               HasSubstr("calibration_seqA.json: /cameras/0: camera '00_00' (opencv): R is not orthonormal"));
   std::filesystem::remove(dir.path() / "seqA" / "calibration_seqA.json");
-  EXPECT_THAT(ErrorOf([&] { ReadPanoptic(Request(dir.path(), base)); }),
+  EXPECT_THAT(test::InputErrorOf([&] { ReadPanoptic(Request(dir.path(), base)); }),
               HasSubstr("calibration_seqA.json: file not found"));
 
   // No annotation folder.
   WriteSequence(dir.path());
   std::filesystem::remove_all(poses);
-  EXPECT_THAT(ErrorOf([&] { ReadPanoptic(Request(dir.path(), base)); }),
+  EXPECT_THAT(test::InputErrorOf([&] { ReadPanoptic(Request(dir.path(), base)); }),
               HasSubstr("hdPose3d_stage1_coco19: annotation folder not found"));
 }
 
@@ -407,7 +399,7 @@ TEST(PanopticReader, BadParamsAreConfigErrors) {
   WriteSequence(dir.path());
   const auto config_error = [&](std::map<std::string, std::string> params) {
     params.emplace("sequences", "seqA");
-    return ErrorOf<ConfigError>([&] { ReadPanoptic(Request(dir.path(), params)); });
+    return test::ErrorMessage<ConfigError>([&] { ReadPanoptic(Request(dir.path(), params)); });
   };
   EXPECT_THAT(config_error({{"every", "0"}}), HasSubstr("panoptic: param every: '0' is not an integer >= 1"));
   EXPECT_THAT(config_error({{"max_frames", "-2"}}), HasSubstr("max_frames"));

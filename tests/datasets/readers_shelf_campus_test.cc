@@ -18,6 +18,7 @@
 #include "datasets/io/mat.h"
 #include "datasets/readers/shelf_campus.h"
 #include "tests/datasets/io_test_util.h"
+#include "tests/error_message.h"
 #include "tests/test_data.h"
 
 namespace rpt {
@@ -26,15 +27,6 @@ namespace {
 using ::testing::HasSubstr;
 namespace m = test::mat;
 
-template <typename Error = InputError>
-std::string ErrorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "<no exception of the expected type>";
-}
 
 DatasetRequest Request(const std::string& dataset, const std::filesystem::path& root,
                        std::map<std::string, std::string> params) {
@@ -145,7 +137,7 @@ TEST(ShelfReader, VoxelPoseDetectionsAttach) {
 
 TEST(ShelfReader, DefaultFramesExceedTheFixture) {
   RPT_REQUIRE_SHARED_DATA("shelf/actorsGT.mat");
-  const std::string message = ErrorOf([] { ReadShelf(Request("shelf", test::SharedData("shelf"), {})); });
+  const std::string message = test::InputErrorOf([] { ReadShelf(Request("shelf", test::SharedData("shelf"), {})); });
   EXPECT_THAT(message, HasSubstr("actorsGT.mat: frame 600 requested but actor3D has 3 frames (0-2)"));
 }
 
@@ -161,7 +153,7 @@ TEST(ShelfReader, ActorsAndNoseProxyParams) {
       ReadShelf(Request("shelf", test::SharedData("shelf"), {{"frames", "1"}, {"nose_proxy", "bottom"}}))[0];
   const int actor0 = PersonWithTrack(bottom.frames[0].gt, 0);
   EXPECT_EQ(Joint(bottom.frames[0].gt, actor0, 14), Joint(bottom.frames[0].gt, actor0, 12));
-  EXPECT_THAT(ErrorOf([] {
+  EXPECT_THAT(test::InputErrorOf([] {
                 ReadShelf(Request("shelf", test::SharedData("shelf"), {{"frames", "0-2"}, {"actors", "0,4"}}));
               }),
               HasSubstr("actorsGT.mat: actor 4 requested but actor3D has 4 actors (0-3)"));
@@ -321,7 +313,7 @@ TEST(ShelfReader, ActorSelectionOnGeneratedFiles) {
   WriteShelfRoot(dir, ActorsMat(false));
   const Sequence shelf = ReadShelf(Request("shelf", dir.path(), {{"frames", "1"}, {"actors", "1"}}))[0];
   EXPECT_EQ(shelf.frames[0].gt.track_ids, (std::vector<int>{1}));
-  EXPECT_THAT(ErrorOf([&] {
+  EXPECT_THAT(test::InputErrorOf([&] {
                 ReadShelf(Request("shelf", dir.path(), {{"actors", "2"}, {"frames", "0"}}));
               }),
               HasSubstr("actor 2 requested but actor3D has 2 actors (0-1)"));
@@ -330,23 +322,23 @@ TEST(ShelfReader, ActorSelectionOnGeneratedFiles) {
 TEST(ShelfReader, MalformedInputNamesFileAndPlace) {
   test::TempDir dir;
   // No files at all: the calibration is read first.
-  EXPECT_THAT(ErrorOf([&] {
+  EXPECT_THAT(test::InputErrorOf([&] {
                 ReadShelf(Request("shelf", dir.path(), {{"frames", "0"}}));
               }),
               HasSubstr((dir.path() / "calibration_shelf.json").string() + ": file not found"));
-  EXPECT_THAT(ErrorOf([&] {
+  EXPECT_THAT(test::InputErrorOf([&] {
                 ReadShelf(Request("shelf", dir.path() / "nothing", {{"frames", "0"}}));
               }),
               HasSubstr("is not a directory"));
 
   WriteShelfRoot(dir, ActorsMat(false), CalibrationJson(/*first_camera_has_R=*/false));
-  EXPECT_THAT(ErrorOf([&] {
+  EXPECT_THAT(test::InputErrorOf([&] {
                 ReadShelf(Request("shelf", dir.path(), {{"frames", "0"}}));
               }),
               HasSubstr("calibration_shelf.json: /0/R: missing"));
 
   WriteShelfRoot(dir, ActorsMat(false));
-  EXPECT_THAT(ErrorOf([&] {
+  EXPECT_THAT(test::InputErrorOf([&] {
                 ReadShelf(Request("shelf", dir.path(), {{"frames", "2-4"}}));
               }),
               HasSubstr("actorsGT.mat: frame 4 requested but actor3D has 4 frames (0-3)"));
@@ -355,13 +347,13 @@ TEST(ShelfReader, MalformedInputNamesFileAndPlace) {
   std::vector<double> nan_pose = StandingPose(0, 0);
   nan_pose[20] = std::numeric_limits<double>::quiet_NaN();
   WriteShelfRoot(dir, ActorsMat(false, m::Matrix(m::kDoubleClass, {14, 3}, "", m::Doubles(nan_pose))));
-  EXPECT_THAT(ErrorOf([&] {
+  EXPECT_THAT(test::InputErrorOf([&] {
                 ReadShelf(Request("shelf", dir.path(), {{"frames", "0-3"}}));
               }),
               HasSubstr("actorsGT.mat: actor3D{1,2}{2,1}: contains NaN or infinity"));
   WriteShelfRoot(dir,
                  ActorsMat(false, m::Matrix(m::kDoubleClass, {13, 3}, "", m::Doubles(std::vector<double>(39, 1.0)))));
-  EXPECT_THAT(ErrorOf([&] {
+  EXPECT_THAT(test::InputErrorOf([&] {
                 ReadShelf(Request("shelf", dir.path(), {{"frames", "0-3"}}));
               }),
               HasSubstr("actorsGT.mat: actor3D{1,2}{2,1}: expected a 14x3 numeric matrix, got 13x3 double"));
@@ -372,7 +364,7 @@ TEST(ShelfReader, MalformedInputNamesFileAndPlace) {
   test::ByteVec other = m::Header();
   test::Append(other, m::Matrix(m::kDoubleClass, {1, 1}, "x", m::Doubles({1})));
   WriteShelfRoot(dir, other);
-  EXPECT_THAT(ErrorOf([&] {
+  EXPECT_THAT(test::InputErrorOf([&] {
                 ReadShelf(Request("shelf", dir.path(), {{"frames", "0"}}));
               }),
               HasSubstr("variable 'actor3D' not found"));
@@ -382,7 +374,7 @@ TEST(ShelfReader, BadParamsAreConfigErrors) {
   test::TempDir dir;
   WriteShelfRoot(dir, ActorsMat(false));
   const auto config_error = [&](std::map<std::string, std::string> params) {
-    return ErrorOf<ConfigError>([&] { ReadShelf(Request("shelf", dir.path(), params)); });
+    return test::ErrorMessage<ConfigError>([&] { ReadShelf(Request("shelf", dir.path(), params)); });
   };
   EXPECT_THAT(config_error({{"frames", "0"}, {"nose_proxy", "middle"}}),
               HasSubstr("nose_proxy: 'middle' is not one of center, top, bottom"));
@@ -410,7 +402,7 @@ TEST(CampusReader, InfoDefaultsAndGeneratedFiles) {
   ASSERT_EQ(campus.frames.size(), 2u);
   EXPECT_EQ(campus.frames[1].id, "campus_000003");
   EXPECT_EQ(campus.cameras[0].width, 360);
-  EXPECT_THAT(ErrorOf([&] {
+  EXPECT_THAT(test::InputErrorOf([&] {
                 ReadCampus(Request("campus", dir.path(), {{"frames", "0"}, {"detections", "voxelpose"}}));
               }),
               HasSubstr("pred_campus_maskrcnn_hrnet_coco.pkl: file not found"));

@@ -17,6 +17,7 @@
 #include "datasets/readers/voxelpose_calibration.h"
 #include "datasets/readers/voxelpose_detections.h"
 #include "tests/datasets/io_test_util.h"
+#include "tests/error_message.h"
 #include "tests/test_data.h"
 
 namespace rpt {
@@ -24,14 +25,6 @@ namespace {
 
 using ::testing::HasSubstr;
 
-std::string ErrorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "<no InputError>";
-}
 
 std::filesystem::path WriteText(const std::filesystem::path& path, const std::string& text) {
   std::filesystem::create_directories(path.parent_path());
@@ -152,41 +145,41 @@ TEST(VoxelPoseCalibration, RoundedRotationIsReorthonormalised) {
 TEST(VoxelPoseCalibration, MalformedFilesNameFileAndPlace) {
   test::TempDir dir;
   const auto missing = dir.path() / "calibration_shelf.json";
-  EXPECT_THAT(ErrorOf([&] { ReadVoxelPoseCalibration(missing, 1032, 776); }),
+  EXPECT_THAT(test::InputErrorOf([&] { ReadVoxelPoseCalibration(missing, 1032, 776); }),
               HasSubstr(missing.string() + ": file not found"));
 
   const std::string good = VoxelPoseCamera(SomeRotation(0.1), Eigen::Vector3d(1, 2, 3), "");
   const auto no_r = WriteText(
       dir.path() / "no_r.json",
       "{\"0\": " + good + ", \"1\": " + VoxelPoseCamera(SomeRotation(0.2), Eigen::Vector3d(1, 2, 3), "", false) + "}");
-  EXPECT_THAT(ErrorOf([&] { ReadVoxelPoseCalibration(no_r, 1032, 776); }),
+  EXPECT_THAT(test::InputErrorOf([&] { ReadVoxelPoseCalibration(no_r, 1032, 776); }),
               HasSubstr(no_r.string() + ": /1/R: missing"));
 
   const auto scaled =
       WriteText(dir.path() / "scaled.json",
                 "{\"0\": " + VoxelPoseCamera(1.1 * SomeRotation(0.3), Eigen::Vector3d(1, 2, 3), "") + "}");
-  EXPECT_THAT(ErrorOf([&] { ReadVoxelPoseCalibration(scaled, 1032, 776); }),
+  EXPECT_THAT(test::InputErrorOf([&] { ReadVoxelPoseCalibration(scaled, 1032, 776); }),
               HasSubstr(scaled.string() + ": /0/R: not a rotation matrix (max |R^T R - I| = 0.21"));
 
   Eigen::Matrix3d mirror = SomeRotation(0.3);
   mirror.row(2) *= -1;
   const auto reflection =
       WriteText(dir.path() / "mirror.json", "{\"0\": " + VoxelPoseCamera(mirror, Eigen::Vector3d(1, 2, 3), "") + "}");
-  EXPECT_THAT(ErrorOf([&] { ReadVoxelPoseCalibration(reflection, 1032, 776); }),
+  EXPECT_THAT(test::InputErrorOf([&] { ReadVoxelPoseCalibration(reflection, 1032, 776); }),
               HasSubstr(reflection.string() + ": /0/R: a reflection"));
 
   const auto short_k = WriteText(
       dir.path() / "k.json",
       "{\"0\": " + VoxelPoseCamera(SomeRotation(0.3), Eigen::Vector3d(1, 2, 3), "\"k\": [[0.1], [0.2]]") + "}");
-  EXPECT_THAT(ErrorOf([&] { ReadVoxelPoseCalibration(short_k, 1032, 776); }), HasSubstr(short_k.string() + ": /0/k"));
+  EXPECT_THAT(test::InputErrorOf([&] { ReadVoxelPoseCalibration(short_k, 1032, 776); }), HasSubstr(short_k.string() + ": /0/k"));
 
   const auto no_fx = WriteText(dir.path() / "fx.json",
                                "{\"0\": {\"R\": " + Matrix3Json(SomeRotation(0.3)) + ", \"T\": [[0],[0],[0]]}}");
-  EXPECT_THAT(ErrorOf([&] { ReadVoxelPoseCalibration(no_fx, 1032, 776); }),
+  EXPECT_THAT(test::InputErrorOf([&] { ReadVoxelPoseCalibration(no_fx, 1032, 776); }),
               HasSubstr(no_fx.string() + ": /0/fx: missing"));
 
   const auto array = WriteText(dir.path() / "array.json", "[1, 2]");
-  EXPECT_THAT(ErrorOf([&] { ReadVoxelPoseCalibration(array, 1032, 776); }),
+  EXPECT_THAT(test::InputErrorOf([&] { ReadVoxelPoseCalibration(array, 1032, 776); }),
               HasSubstr("expected an object keyed by camera id"));
 }
 
@@ -307,14 +300,14 @@ TEST(VoxelPoseDetections, MalformedCacheNamesFileAndKey) {
   test::TempDir dir;
   const Sequence sequence = TwoCameraSequence();
   const auto bad_key = dir.Write("key.pkl", CachePickle({{"camera0", {1}}}));
-  EXPECT_THAT(ErrorOf([&] { ReadVoxelPoseDetections(bad_key, sequence, "shelf"); }),
+  EXPECT_THAT(test::InputErrorOf([&] { ReadVoxelPoseDetections(bad_key, sequence, "shelf"); }),
               HasSubstr(bad_key.string() + ": top level: key 'camera0' is not of the form"));
 
   CacheEntry wrong_shape{"0_5", {1}};
   wrong_shape.shape = {16, 3};
   wrong_shape.score = 0.5;
   const auto shape = dir.Write("shape.pkl", CachePickle({wrong_shape}));
-  const std::string message = ErrorOf([&] { ReadVoxelPoseDetections(shape, sequence, "shelf"); });
+  const std::string message = test::InputErrorOf([&] { ReadVoxelPoseDetections(shape, sequence, "shelf"); });
   EXPECT_THAT(message, HasSubstr(shape.string()));
   EXPECT_THAT(message, HasSubstr("0_5"));
   EXPECT_THAT(message, HasSubstr("pred"));
@@ -322,10 +315,10 @@ TEST(VoxelPoseDetections, MalformedCacheNamesFileAndKey) {
   CacheEntry nan{"1_6", {1}};
   nan.score = std::nan("");
   const auto nan_path = dir.Write("nan.pkl", CachePickle({nan}));
-  EXPECT_THAT(ErrorOf([&] { ReadVoxelPoseDetections(nan_path, sequence, "shelf"); }),
+  EXPECT_THAT(test::InputErrorOf([&] { ReadVoxelPoseDetections(nan_path, sequence, "shelf"); }),
               HasSubstr("contains NaN or infinity"));
 
-  EXPECT_THAT(ErrorOf([&] { ReadVoxelPoseDetections(dir.path() / "absent.pkl", sequence, "shelf"); }),
+  EXPECT_THAT(test::InputErrorOf([&] { ReadVoxelPoseDetections(dir.path() / "absent.pkl", sequence, "shelf"); }),
               HasSubstr("absent.pkl: file not found"));
 }
 
