@@ -22,6 +22,7 @@ struct FrameDetections {
 struct Detections {
   JointNames joints;                   // joint names of every Poses2D
   std::vector<FrameDetections> frames;
+  InputWarnings warnings;              // corrections the reader applied (one line per file and kind)
 };
 
 struct AttachReport {

@@ -10,6 +10,7 @@
 #include "core/camera.h"
 #include "core/joints.h"
 #include "core/poses.h"
+#include "datasets/input_warnings.h"
 
 namespace rpt {
 
@@ -33,6 +34,7 @@ struct Sequence {
   Room room;
   double fps = 0;
   std::vector<SequenceFrame> frames;
+  InputWarnings warnings;           // corrections the reader applied (one line per file and kind)
 };
 
 // Checks shapes and values (camera validity, joint counts, finite coordinates, scores in [0, 1],

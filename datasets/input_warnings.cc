@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: MIT
+#include "datasets/input_warnings.h"
+
+#include <Eigen/SVD>
+#include <cmath>
+#include <sstream>
+
+#include "core/errors.h"
+
+namespace rpt {
+
+std::string InputWarning::Line() const {
+  std::ostringstream s;
+  s << source << ": " << count << " " << what;
+  if (!measure.empty()) s << " (" << measure << " = " << worst << ")";
+  return s.str();
+}
+
+void InputWarnings::Add(const std::string& source, std::string_view what, std::string_view measure, double value) {
+  for (InputWarning& w : items_) {
+    if (w.source == source && w.what == what) {
+      ++w.count;
+      if (value > w.worst) w.worst = value;
+      return;
+    }
+  }
+  items_.push_back(InputWarning{source, std::string(what), std::string(measure), 1, value});
+}
+
+void InputWarnings::Merge(const InputWarnings& other) {
+  for (const InputWarning& o : other.items_) {
+    bool merged = false;
+    for (InputWarning& w : items_) {
+      if (w.source == o.source && w.what == o.what) {
+        w.count += o.count;
+        if (o.worst > w.worst) w.worst = o.worst;
+        merged = true;
+        break;
+      }
+    }
+    if (!merged) items_.push_back(o);
+  }
+}
+
+long InputWarnings::total() const {
+  long n = 0;
+  for (const InputWarning& w : items_) n += w.count;
+  return n;
+}
+
+Eigen::Matrix3d AcceptRotation(const Eigen::Matrix3d& R, const std::string& source, const std::string& where,
+                               InputWarnings* warnings) {
+  if (!R.allFinite()) throw InputError(where + ": R is not a rotation (non-finite entries)");
+  const double error = (R.transpose() * R - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
+  if (!(error <= kMaxRotationError)) {
+    std::ostringstream s;
+    s << where << ": R is not a rotation (max |R^T R - I| = " << error << ", at most " << kMaxRotationError
+      << " is accepted and re-orthonormalised)";
+    throw InputError(s.str());
+  }
+  if (R.determinant() < 0) throw InputError(where + ": R is a reflection (det < 0), not a rotation");
+  if (error > kRotationRoundOff && warnings != nullptr) {
+    warnings->Add(source, "rotations re-orthonormalised", "max |R^T R - I|", error);
+  }
+  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(R, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  return svd.matrixU() * svd.matrixV().transpose();
+}
+
+double AcceptScoreSlow(double score, const std::string& source, InputWarnings* warnings, const std::string& where) {
+  if (score > 1.0 && score <= kMaxScoreOvershoot) {
+    if (warnings != nullptr) warnings->Add(source, "scores above 1 clamped to 1", "largest", score);
+    return 1.0;
+  }
+  std::ostringstream s;
+  s << where << ": score " << score << " outside [0, 1] (values up to " << kMaxScoreOvershoot
+    << " are clamped to 1)";
+  throw InputError(s.str());
+}
+
+}  // namespace rpt

@@ -1,0 +1,66 @@
+// SPDX-License-Identifier: MIT
+// Real-world imprecision that readers accept, correct and count: rotations stored with a few
+// significant digits, detector confidences slightly above 1. Each correction is counted per file
+// and kind, so a run prints one warning line per file and kind instead of failing or staying
+// silent. Anything beyond the tolerances below stays an InputError.
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace rpt {
+
+// Rotations with max |R^T R - I| up to this are replaced by the nearest rotation (and counted
+// when the deviation exceeds kRotationRoundOff); larger deviations are errors.
+inline constexpr double kMaxRotationError = 1e-3;
+// Deviations up to this are double-precision round-off: corrected silently.
+inline constexpr double kRotationRoundOff = 1e-9;
+// Detector confidences in (1, kMaxScoreOvershoot] are clamped to 1 and counted; larger values,
+// negative values and NaN are errors.
+inline constexpr double kMaxScoreOvershoot = 1.5;
+
+// One kind of correction in one file.
+struct InputWarning {
+  std::string source;  // the file (or file and place) the values came from
+  std::string what;    // what was corrected, plural noun phrase, e.g. "rotations re-orthonormalised"
+  std::string measure; // what `worst` measures, e.g. "max |R^T R - I|"; empty = none
+  long count = 0;      // how many values were corrected
+  double worst = 0;    // the largest deviation seen
+
+  // "SOURCE: 3 rotations re-orthonormalised (max |R^T R - I| = 1.2e-06)".
+  std::string Line() const;
+};
+
+// Counted corrections, aggregated by (source, what).
+class InputWarnings {
+ public:
+  void Add(const std::string& source, std::string_view what, std::string_view measure, double value);
+  void Merge(const InputWarnings& other);
+  const std::vector<InputWarning>& items() const { return items_; }
+  bool empty() const { return items_.empty(); }
+  long total() const;
+
+ private:
+  std::vector<InputWarning> items_;
+};
+
+// The nearest rotation to `R` (SVD polar factor). Throws InputError "`where`: R is not a
+// rotation (...)" when R has non-finite entries, max |R^T R - I| > kMaxRotationError, or det < 0.
+// Corrections beyond round-off are counted under `source` when `warnings` is given.
+Eigen::Matrix3d AcceptRotation(const Eigen::Matrix3d& R, const std::string& source, const std::string& where,
+                               InputWarnings* warnings);
+
+// `score` clamped to [0, 1]: values in (1, kMaxScoreOvershoot] become 1 and are counted under
+// `source`. Throws InputError "<where()>: score ... outside [0, 1]" for NaN, negative or larger
+// values; `where` (a callable returning std::string) is only called on error, so the check
+// costs nothing per joint.
+template <class Where>
+double AcceptScore(double score, const std::string& source, InputWarnings* warnings, Where&& where) {
+  if (score >= 0.0 && score <= 1.0) return score;
+  return AcceptScoreSlow(score, source, warnings, where());
+}
+double AcceptScoreSlow(double score, const std::string& source, InputWarnings* warnings, const std::string& where);
+
+}  // namespace rpt
