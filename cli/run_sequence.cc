@@ -12,6 +12,7 @@
 #endif
 
 #include "cli/progress.h"
+#include "core/errors.h"
 #include "core/pipeline/triangulator.h"
 
 namespace rpt::cli {
@@ -42,6 +43,19 @@ TriangulatedSequence Triangulate(const Sequence& sequence, const RunOptions& opt
 }
 
 }  // namespace
+
+metrics::EvalOptions EvalOptionsFor(const std::vector<Sequence>& sequences, const metrics::EvalOptions& options) {
+  metrics::EvalOptions resolved = options;
+  if (!resolved.evaluated_joints.empty() || sequences.empty()) return resolved;
+  resolved.evaluated_joints = sequences.front().evaluated_joints;
+  for (const Sequence& s : sequences) {
+    if (s.evaluated_joints != resolved.evaluated_joints) {
+      throw ConfigError("sequences '" + sequences.front().name + "' and '" + s.name +
+                        "' evaluate different joints; set metrics.evaluated_joints");
+    }
+  }
+  return resolved;
+}
 
 TriangulatedSequence TriangulateSequence(const Sequence& sequence, const RunOptions& options) {
   std::atomic<long> done{0};
@@ -80,7 +94,7 @@ RunResult RunSequences(const std::vector<Sequence>& sequences, const RunOptions&
   }
   if (error) std::rethrow_exception(error);
 
-  metrics::MetricsAccumulator accumulator(options.eval);
+  metrics::MetricsAccumulator accumulator(EvalOptionsFor(sequences, options.eval));
   metrics::TimingAccumulator timing;
   for (int i = 0; i < count; ++i) {
     const Sequence& sequence = sequences[i];

@@ -42,6 +42,11 @@ struct RunResult {
   std::vector<TriangulatedSequence> sequences;
 };
 
+// The evaluation options of a run: metrics.evaluated_joints when set, else the joints the
+// sequences' dataset evaluates (Sequence::evaluated_joints; empty = the paper's 13). Throws
+// ConfigError when sequences disagree.
+metrics::EvalOptions EvalOptionsFor(const std::vector<Sequence>& sequences, const metrics::EvalOptions& options);
+
 // Triangulates every frame of one sequence (single thread). Throws ConfigError/InputError.
 TriangulatedSequence TriangulateSequence(const Sequence& sequence, const RunOptions& options);
 

@@ -7,6 +7,7 @@
 #include "datasets/readers/generic_labels.h"
 #include "datasets/readers/h3wb.h"
 #include "datasets/readers/human36m.h"
+#include "datasets/readers/mvor.h"
 #include "datasets/readers/panoptic.h"
 #include "datasets/readers/shelf_campus.h"
 #include "datasets/readers/synthetic_dataset.h"
@@ -21,6 +22,7 @@ const std::vector<DatasetEntry>& DatasetRegistry() {
       {Human36mInfo(), ReadHuman36m},
       {H3wbInfo(), ReadH3wb},
       {EgohumansInfo(), ReadEgohumans},
+      {MvorInfo(), ReadMvor},
       {GenericInfo(), ReadGeneric},
       {SyntheticInfo(), ReadSynthetic},
   };

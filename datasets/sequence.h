@@ -31,6 +31,7 @@ struct Sequence {
   std::vector<Camera> cameras;
   JointNames gt_joints;             // joint names of SequenceFrame::gt
   JointNames detection_joints;      // joint names of SequenceFrame::views
+  JointNames evaluated_joints;      // the dataset's evaluated joints; empty = the paper's 13
   Room room;
   double fps = 0;
   std::vector<SequenceFrame> frames;

@@ -1,0 +1,290 @@
+// SPDX-License-Identifier: MIT
+#include "datasets/readers/mvor.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <string>
+
+#include "core/errors.h"
+#include "datasets/detections.h"
+#include "datasets/io/json_file.h"
+#include "datasets/readers/coco_detections.h"
+
+namespace rpt {
+namespace {
+
+constexpr int kNumCameras = 3;
+constexpr int kFilePoints = 12;
+constexpr double kFloorShiftM = 1.0;  // the room frame's origin is about 1 m above the floor
+constexpr const char* kAnnotationFile = "camma_mvor_2018.json";
+constexpr const char* kDetectionsFile = "openpose_kps.json";
+
+// The first of `candidates` (relative to root) that exists, else the first one (for the error).
+std::filesystem::path FindFile(const std::filesystem::path& root, std::initializer_list<std::filesystem::path> candidates) {
+  for (const std::filesystem::path& relative : candidates) {
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(root / relative, ec)) return root / relative;
+  }
+  return root / *candidates.begin();
+}
+
+std::string ParseChoice(const std::string& text, std::initializer_list<const char*> choices, const std::string& what) {
+  std::string list;
+  for (const char* choice : choices) {
+    if (text == choice) return text;
+    list += (list.empty() ? "" : ", ") + std::string(choice);
+  }
+  throw ConfigError(what + ": '" + text + "' is not one of " + list);
+}
+
+std::vector<int> ParseDays(const std::string& text, const std::string& what) {
+  std::vector<int> days;
+  for (const std::string& item : SplitList(text)) {
+    if (item.size() != 1 || item[0] < '1' || item[0] > '4') throw ConfigError(what + ": '" + item + "' is not a day 1-4");
+    days.push_back(item[0] - '0');
+  }
+  if (days.empty()) throw ConfigError(what + ": no day selected by '" + text + "'");
+  std::sort(days.begin(), days.end());
+  days.erase(std::unique(days.begin(), days.end()), days.end());
+  return days;
+}
+
+Eigen::Matrix4d Rigid(const nlohmann::json& root, const std::string& pointer, const std::string& source) {
+  const std::vector<double> v = io::JsonNumbers(root, pointer, source, 16);
+  Eigen::Matrix4d m = Eigen::Map<const Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>(v.data());
+  if (!m.allFinite() || (m.row(3) - Eigen::RowVector4d(0, 0, 0, 1)).cwiseAbs().maxCoeff() > 1e-9) {
+    throw InputError(source + ": " + pointer + ": expected a 4x4 rigid transform with last row 0 0 0 1");
+  }
+  return m;
+}
+
+// World (room frame in metres, floor shift) -> camera i, following the conventions in mvor.h.
+std::vector<Camera> ReadCameras(const nlohmann::json& root, const std::string& source, bool distortion,
+                                InputWarnings* warnings, Eigen::Matrix4d* cam1_to_world) {
+  const std::string base = "/cameras_info/camParams";
+  Eigen::Matrix4d room = Rigid(root, base + "/firstCamToRoomRef", source);
+  room.topLeftCorner<3, 3>() = AcceptRotation(room.topLeftCorner<3, 3>(), source, source + ": " + base + "/firstCamToRoomRef", warnings);
+  Eigen::Matrix4d to_world = Eigen::Matrix4d::Identity();  // room mm -> world m
+  to_world.topLeftCorner<3, 3>() /= 1000.0;
+  to_world(2, 3) = kFloorShiftM;
+  *cam1_to_world = to_world * room;  // camera-1 mm -> world m (not rigid: includes the mm -> m scale)
+
+  std::vector<Camera> cameras;
+  for (int i = 0; i < kNumCameras; ++i) {
+    const std::string extrinsics = io::JsonPointerJoin(base + "/extrinsics", i);
+    const std::string intrinsics = io::JsonPointerJoin(base + "/intrinsics", i);
+    Eigen::Matrix4d cam_to_cam1 = Rigid(root, extrinsics, source);
+    cam_to_cam1.topLeftCorner<3, 3>() =
+        AcceptRotation(cam_to_cam1.topLeftCorner<3, 3>(), source, source + ": " + extrinsics, warnings);
+    // world -> camera i (mm): inv(E_i) * inv(room) * inv(to_world), then mm -> m.
+    const Eigen::Matrix4d cam_to_world_mm = room * cam_to_cam1;  // camera i (mm) -> room (mm)
+    const Eigen::Matrix3d R_cw = cam_to_world_mm.topLeftCorner<3, 3>();
+    const Eigen::Vector3d center_m = cam_to_world_mm.topRightCorner<3, 1>() / 1000.0 + Eigen::Vector3d(0, 0, kFloorShiftM);
+
+    Camera camera;
+    camera.name = "cam" + std::to_string(i + 1);
+    const std::vector<double> size = io::JsonNumbers(root, intrinsics + "/imagesize", source, 2);
+    const std::vector<double> focal = io::JsonNumbers(root, intrinsics + "/focallength", source, 2);
+    const std::vector<double> principal = io::JsonNumbers(root, intrinsics + "/principalpoint", source, 2);
+    const double skew = io::JsonFind(root, intrinsics + "/skew_value") ? io::JsonNumber(root, intrinsics + "/skew_value", source) : 0.0;
+    camera.width = static_cast<int>(size[0]);
+    camera.height = static_cast<int>(size[1]);
+    if (camera.width != size[0] || camera.height != size[1]) {
+      throw InputError(source + ": " + intrinsics + "/imagesize: expected integers");
+    }
+    camera.K << focal[0], skew, principal[0], 0, focal[1], principal[1], 0, 0, 1;
+    camera.R = AcceptRotation(R_cw.transpose(), source, source + ": " + extrinsics, nullptr);
+    camera.t = -camera.R * center_m;
+    if (distortion) {
+      const std::vector<double> d = io::JsonNumbers(root, intrinsics + "/distortion", source, 5);
+      camera.model = DistortionModel::kOpenCV;
+      camera.dist = {d[0], d[1], d[3], d[4], d[2]};  // file k1 k2 k3 p1 p2 -> OpenCV k1 k2 p1 p2 k3
+    }
+    if (const std::string error = camera.Validate(); !error.empty()) throw InputError(source + ": " + intrinsics + ": " + error);
+    cameras.push_back(std::move(camera));
+  }
+  return cameras;
+}
+
+// "2015-04-01 06:47:08.947101" -> seconds since midnight.
+double SecondsOfDay(const std::string& text, const std::string& where) {
+  int year = 0, month = 0, day = 0, hour = 0, minute = 0;
+  double second = 0;
+  if (std::sscanf(text.c_str(), "%d-%d-%d %d:%d:%lf", &year, &month, &day, &hour, &minute, &second) != 6 ||
+      hour < 0 || hour > 23 || minute < 0 || minute > 59 || !(second >= 0 && second < 61)) {
+    throw InputError(where + ": '" + text + "' is not a time 'YYYY-MM-DD hh:mm:ss.ffffff'");
+  }
+  return hour * 3600.0 + minute * 60.0 + second;
+}
+
+// Frame number from "day1/cam2/color/000017.png".
+int FrameNumber(const std::string& file_name, const std::string& where) {
+  const size_t slash = file_name.rfind('/');
+  const size_t dot = file_name.rfind('.');
+  const std::string digits = file_name.substr(slash == std::string::npos ? 0 : slash + 1,
+                                              dot == std::string::npos ? std::string::npos : dot - slash - 1);
+  if (digits.empty() || digits.size() > 9 || !std::all_of(digits.begin(), digits.end(), ::isdigit)) {
+    throw InputError(where + ": file name '" + file_name + "' does not end in a frame number");
+  }
+  return std::stoi(digits);
+}
+
+std::string FrameId(int day, int frame) {
+  char text[48];
+  std::snprintf(text, sizeof(text), "mvor_day%d_%06d", day, frame);
+  return text;
+}
+
+}  // namespace
+
+const JointNames& MvorJoints() {
+  static const JointNames names = {"head",       "shoulder_middle", "shoulder_left", "shoulder_right", "hip_left",
+                                   "hip_right",  "elbow_left",      "elbow_right",   "wrist_left",     "wrist_right",
+                                   "hand_left",  "hand_right",      "nose"};
+  return names;
+}
+
+DatasetInfo MvorInfo() {
+  DatasetInfo info;
+  info.name = "mvor";
+  info.description = "MVOR operating room (3 RGB-D cameras, 732 frames, 4 days), with its OpenPose detections";
+  info.layout = std::string("<root>/annotations/") + kAnnotationFile + "        (or <root>/" + kAnnotationFile +
+                ")\n<root>/detections_results/" + kDetectionsFile + "  (or <root>/" + kDetectionsFile +
+                "; with detections=openpose)";
+  info.params = {
+      {"days", "1,2,3,4", "days to read (one sequence each)"},
+      {"detections", "openpose", "openpose (the shipped " + std::string(kDetectionsFile) + ") | none"},
+      {"distortion", "none", "none (fits the 2D labels best) | file (apply the 5 numbers as k1 k2 k3 p1 p2)"},
+      {"evaluated", "arms_torso", "arms_torso (shoulders, elbows, wrists, hips) | paper (plus nose = MVOR's head)"},
+  };
+  return info;
+}
+
+std::vector<Sequence> ReadMvor(const DatasetRequest& request) {
+  const DatasetInfo info = MvorInfo();
+  request.CheckParams(info);
+  const auto param = [&](const std::string& key) { return request.Param(info, key); };
+  const auto what = [](const std::string& key) { return "mvor: param " + key; };
+  const std::vector<int> days = ParseDays(param("days"), what("days"));
+  const bool with_detections = ParseChoice(param("detections"), {"openpose", "none"}, what("detections")) == "openpose";
+  const bool distortion = ParseChoice(param("distortion"), {"none", "file"}, what("distortion")) == "file";
+  const bool paper_joints = ParseChoice(param("evaluated"), {"arms_torso", "paper"}, what("evaluated")) == "paper";
+
+  std::error_code ec;
+  if (!std::filesystem::is_directory(request.root, ec)) {
+    throw InputError("mvor: root '" + request.root.string() + "' is not a directory");
+  }
+  const std::filesystem::path path = FindFile(request.root, {std::filesystem::path("annotations") / kAnnotationFile, kAnnotationFile});
+  const nlohmann::json root = io::LoadJsonFile(path);
+  const std::string source = path.string();
+
+  InputWarnings warnings;
+  Eigen::Matrix4d cam1_to_world;
+  const std::vector<Camera> cameras = ReadCameras(root, source, distortion, &warnings, &cam1_to_world);
+
+  // 3D persons by their "<id1>_<id2>_<id3>" key.
+  std::map<std::string, std::vector<size_t>> persons_of;
+  const nlohmann::json& persons = io::JsonAt(root, "/annotations3D", source);
+  if (!persons.is_array()) throw InputError(source + ": /annotations3D: expected an array");
+  for (size_t i = 0; i < persons.size(); ++i) {
+    persons_of[io::JsonString(root, io::JsonPointerJoin("/annotations3D", i) + "/image_ids", source)].push_back(i);
+  }
+
+  const JointNames& joints = MvorJoints();
+  const int num_joints = static_cast<int>(joints.size());
+  const int nose = num_joints - 1;
+  std::map<int, Sequence> by_day;
+  for (int day : days) {
+    Sequence& s = by_day[day];
+    s.name = "mvor/day" + std::to_string(day);
+    s.cameras = cameras;
+    s.gt_joints = joints;
+    // Encloses every annotated person's centre with room to spare (x -2.0..2.6, y -0.4..3.1 m).
+    s.room.center_m = Eigen::Vector3d(0.3, 1.3, 1.0);
+    s.room.size_m = Eigen::Vector3d(6.0, 5.0, 2.0);
+    s.evaluated_joints = {"shoulder_left", "shoulder_right", "elbow_left", "elbow_right",
+                          "wrist_left",    "wrist_right",    "hip_left",   "hip_right"};
+    if (paper_joints) s.evaluated_joints.insert(s.evaluated_joints.begin(), "nose");
+  }
+
+  const nlohmann::json& frames = io::JsonAt(root, "/multiview_images", source);
+  if (!frames.is_array()) throw InputError(source + ": /multiview_images: expected an array");
+  std::map<int, double> day_start;
+  for (size_t f = 0; f < frames.size(); ++f) {
+    const std::string base = io::JsonPointerJoin("/multiview_images", f);
+    const nlohmann::json& images = io::JsonAt(root, base + "/images", source);
+    if (!images.is_array() || images.size() != kNumCameras) {
+      throw InputError(source + ": " + base + "/images: expected " + std::to_string(kNumCameras) + " images");
+    }
+    std::string key;
+    int day = 0, frame_number = -1;
+    double time_s = 0;
+    for (int c = 0; c < kNumCameras; ++c) {
+      const std::string image = io::JsonPointerJoin(base + "/images", c);
+      const int cam = static_cast<int>(io::JsonInt(root, image + "/cam_id", source));
+      const int image_day = static_cast<int>(io::JsonInt(root, image + "/day_id", source));
+      const int number = FrameNumber(io::JsonString(root, image + "/file_name", source), source + ": " + image);
+      if (cam != c + 1) throw InputError(source + ": " + image + "/cam_id: expected " + std::to_string(c + 1));
+      if (c > 0 && (image_day != day || number != frame_number)) {
+        throw InputError(source + ": " + image + ": day or frame number differs from the frame's first image");
+      }
+      day = image_day;
+      frame_number = number;
+      if (c == 0) time_s = SecondsOfDay(io::JsonString(root, image + "/date_captured", source), source + ": " + image);
+      key += (c == 0 ? "" : "_") + std::to_string(io::JsonInt(root, image + "/id", source));
+    }
+    const auto sequence = by_day.find(day);
+    if (sequence == by_day.end()) continue;
+    const auto start = day_start.try_emplace(day, time_s).first;
+
+    SequenceFrame frame;
+    frame.id = FrameId(day, frame_number);
+    frame.timestamp_s = time_s - start->second;
+    frame.gt.Clear(num_joints);
+    for (const size_t i : persons_of[key]) {
+      const std::string person = io::JsonPointerJoin("/annotations3D", i);
+      const std::vector<double> values = io::JsonNumbers(root, person + "/keypoints3D", source, 4 * kFilePoints);
+      auto out = frame.gt.AddPerson(static_cast<int>(io::JsonInt(root, person + "/person_id", source)));
+      for (int j = 0; j < kFilePoints; ++j) {
+        const Eigen::Vector4d cam1(values[4 * j], values[4 * j + 1], values[4 * j + 2], 1.0);
+        const double flag = values[4 * j + 3];
+        if (!cam1.allFinite() || !std::isfinite(flag)) {
+          throw InputError(source + ": " + person + "/keypoints3D: point " + std::to_string(j) + " is not finite");
+        }
+        out.col(j) << (cam1_to_world * cam1).head<3>(), flag > 0 ? 1.0 : 0.0;
+      }
+      out.col(nose) = out.col(0);
+    }
+    persons_of.erase(key);
+    sequence->second.frames.push_back(std::move(frame));
+  }
+
+  std::vector<Sequence> out;
+  for (auto& [day, sequence] : by_day) {
+    if (sequence.frames.empty()) throw InputError(source + ": no frames of day " + std::to_string(day));
+    sequence.warnings = warnings;
+    out.push_back(std::move(sequence));
+  }
+
+  if (with_detections) {
+    const std::filesystem::path detections_path =
+        FindFile(request.root, {std::filesystem::path("detections_results") / kDetectionsFile, kDetectionsFile});
+    if (!std::filesystem::is_regular_file(detections_path, ec)) {
+      throw InputError("mvor: " + detections_path.string() +
+                       " not found (the OpenPose detections shipped with MVOR); use --param detections=none with "
+                       "--detections FILE or --simulate");
+    }
+    const Detections detections = ReadCocoDetections(detections_path);
+    for (Sequence& sequence : out) {
+      AttachDetections(detections, detections_path.string(), &sequence);
+      sequence.warnings.Merge(detections.warnings);
+    }
+  }
+  for (const Sequence& sequence : out) ValidateSequence(sequence, source);
+  return out;
+}
+
+}  // namespace rpt
