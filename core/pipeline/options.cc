@@ -48,6 +48,9 @@ std::string TriangulatorOptions::Check() const {
   c.Finite("room_check.center_m", room_check.center_m);
   c.Finite("room_check.size_m", room_check.size_m);
   c.Range("room_check.margin_m", room_check.margin_m, 0, 1e6);
+  c.Positive("score.scale_factor", score.scale_factor);
+  c.Positive("score.noise_prior_m", score.noise_prior_m);
+  c.Range("score.trim_fraction", score.trim_fraction, 0, 0.9);
   c.Positive("score.reprojection_scale_rel", score.reprojection_scale_rel);
   c.Positive("score.ray_gap_scale_m", score.ray_gap_scale_m);
   c.Range("filter.min_match_score", filter.min_match_score, 0, 1);
@@ -61,6 +64,7 @@ std::string TriangulatorOptions::Check() const {
   c.Range("postprocess.max_extent_m", postprocess.max_extent_m, postprocess.min_extent_m, 1e6);
   c.Range("postprocess.filled_joint_score", postprocess.filled_joint_score, 1e-9, 1);
   c.Positive("track.max_distance_m", track.max_distance_m);
+  c.Range("track.max_gap_s", track.max_gap_s, 0, 1e9);
   c.Range("track.max_missing_frames", track.max_missing_frames, 0, 1e6);
   c.Positive("clip_speed.max_speed_m_s", clip_speed.max_speed_m_s);
   return c.error();

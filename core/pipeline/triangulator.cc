@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <limits>
 #include <set>
 #include <string>
 
@@ -102,6 +103,7 @@ Triangulator::Triangulator(std::vector<Camera> cameras, JointNames input_joints,
   ws.core_mirror = MirrorIndices(core_list);
   ws.all_limbs = ResolveLimbs(LimbsFor(ws.output_joints), ws.output_joints);
   ws.previous.Clear(static_cast<int>(ws.core_joints.size()));
+  ws.noise.Reset(ws.options.score.noise_prior_m);
 }
 
 Triangulator::~Triangulator() = default;
@@ -116,6 +118,8 @@ const TriangulatorOptions& Triangulator::options() const { return ws_->options; 
 void Triangulator::Reset() {
   ws_->previous.Clear(static_cast<int>(ws_->core_joints.size()));
   ws_->tracker.Reset();
+  ws_->noise.Reset(ws_->options.score.noise_prior_m);
+  ws_->last_timestamp_s = std::numeric_limits<double>::quiet_NaN();
 }
 
 void Triangulator::Process(std::span<const Poses2D> views, double timestamp_s, Poses3D* persons, FrameStats* stats) {
@@ -135,6 +139,14 @@ void Triangulator::Process(std::span<const Poses2D> views, double timestamp_s, P
   }
   stats->Reset();
   StepTimer timer(stats);
+  // Is this frame continuous with the last one? Unknown times and large gaps break continuity.
+  const double elapsed_s = timestamp_s - ws.last_timestamp_s;  // NaN when either is unknown
+  const bool continuous = elapsed_s > 0 && elapsed_s <= opt.track.max_gap_s;
+  ws.last_timestamp_s = timestamp_s;
+  if (!continuous) {
+    ws.previous.Clear(static_cast<int>(ws.core_joints.size()));
+    ws.tracker.EndTracks();
+  }
   auto& count = stats->count;
   auto at = [](Step s) { return static_cast<int>(s); };
 
@@ -158,7 +170,9 @@ void Triangulator::Process(std::span<const Poses2D> views, double timestamp_s, P
   count[at(Step::kRoomCheck)] = RoomCheck(opt.room_check, &ws.core);
   timer.Lap(Step::kRoomCheck);
 
-  stats->pruned_limbs += ScoreProposals(ws.prepared, ws.geometry, ws.core_joints, ws.core_limbs, opt.score, &ws.core);
+  stats->pruned_limbs += ScoreProposals(ws.prepared, ws.geometry, ws.core_joints, ws.core_limbs, opt.score, &ws.noise,
+                                        &ws.score_scratch, &ws.core);
+  stats->noise_m = opt.score.scale == ScoreScale::kAdaptive ? ws.noise.Estimate() : 0.0;
   count[at(Step::kScore)] = ws.core.size();
   timer.Lap(Step::kScore);
 
@@ -177,7 +191,8 @@ void Triangulator::Process(std::span<const Poses2D> views, double timestamp_s, P
   count[at(Step::kTriangulateFull)] = TriangulateMembers(ws.prepared, ws.geometry, ws.core, ws.groups.members,
                                                          ws.core_joints, num_joints, opt.triangulate.method, &ws.full);
   stats->pruned_limbs +=
-      ScoreProposals(ws.prepared, ws.geometry, ws.all_joints, ws.all_limbs, opt.score, &ws.full, /*pair_scores=*/false);
+      ScoreProposals(ws.prepared, ws.geometry, ws.all_joints, ws.all_limbs, opt.score, &ws.noise, &ws.score_scratch,
+                     &ws.full, /*pair_scores=*/false);
   timer.Lap(Step::kTriangulateFull);
 
   persons->Clear(num_joints);

@@ -3,12 +3,15 @@
 // warm Triangulator does not allocate) and the state carried between frames.
 #pragma once
 
+#include <limits>
 #include <vector>
 
 #include "core/camera.h"
 #include "core/joints.h"
 #include "core/pipeline/group_proposals.h"
 #include "core/pipeline/merge_groups.h"
+#include "core/pipeline/noise_scale.h"
+#include "core/pipeline/score_proposals.h"
 #include "core/pipeline/options.h"
 #include "core/pipeline/pipeline_types.h"
 #include "core/pipeline/prefilter_pairs.h"
@@ -37,6 +40,7 @@ struct Workspace {
   std::vector<PosePair> pairs;
   PrefilterScratch prefilter;
   Proposals core;
+  ScoreScratch score_scratch;
   GroupScratch group_scratch;
   Groups groups;
   Proposals full;
@@ -45,6 +49,8 @@ struct Workspace {
   // Carried between frames.
   PreviousPersons previous;
   Tracker tracker;
+  NoiseScale noise;  // adaptive scoring: the detections' noise level
+  double last_timestamp_s = std::numeric_limits<double>::quiet_NaN();
 };
 
 }  // namespace rpt
