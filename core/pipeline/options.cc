@@ -59,6 +59,8 @@ std::string TriangulatorOptions::Check() const {
   c.Range("merge.max_distance_m", merge.max_distance_m, -1e6, 1e6);
   c.Range("merge.top_k", merge.top_k, -1e6, 1e6);
   c.Range("merge.min_joint_score", merge.min_joint_score, 0, 1);
+  c.Range("verify.min_empty_views", verify.min_empty_views, 1, 1e6);
+  c.Range("verify.min_inside_fraction", verify.min_inside_fraction, 0, 1);
   c.Range("postprocess.min_valid_joints", postprocess.min_valid_joints, 0, 1e6);
   c.Range("postprocess.min_extent_m", postprocess.min_extent_m, 0, 1e6);
   c.Range("postprocess.max_extent_m", postprocess.max_extent_m, postprocess.min_extent_m, 1e6);

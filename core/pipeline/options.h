@@ -94,6 +94,13 @@ struct MergeOptions {
                                        // highest-scoring one instead of leaving the joint missing
 };
 
+// Step 11b (an addition): re-score each person against all views, drop unsupported ones.
+struct VerifyOptions {
+  bool enabled = true;
+  int min_empty_views = 2;             // drop when this many views (and more than support it) see nobody there
+  double min_inside_fraction = 0.8;    // a view is "empty" only if this share of the joints lands in the image
+};
+
 // Step 12.
 struct PostprocessOptions {
   bool enabled = true;
@@ -131,6 +138,7 @@ struct TriangulatorOptions {
   FilterOptions filter;
   GroupOptions group;
   MergeOptions merge;
+  VerifyOptions verify;
   PostprocessOptions postprocess;
   TrackOptions track;
   ClipSpeedOptions clip_speed;

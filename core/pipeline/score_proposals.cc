@@ -59,6 +59,10 @@ void VoteNoise(const PreparedViews& views, int num_views, const ScoreScratch& s,
 
 }  // namespace
 
+double KernelScaleM(const ScoreOptions& options, double noise_m) {
+  return options.scale == ScoreScale::kAdaptive ? options.scale_factor * noise_m : 0.5 * options.ray_gap_scale_m;
+}
+
 int ScoreProposals(const PreparedViews& views, std::span<const ViewGeometry> geometry, std::span<const int> joints,
                    std::span<const ResolvedLimb> limbs, const ScoreOptions& options, NoiseScale* noise,
                    ScoreScratch* scratch, Proposals* proposals, bool pair_scores) {
@@ -112,8 +116,8 @@ int ScoreProposals(const PreparedViews& views, std::span<const ViewGeometry> geo
 
   // Pass 2: kernels, limb pruning, pair scores.
   const double noise_m = noise != nullptr ? noise->Estimate() : options.noise_prior_m;
-  const double inv_rep = adaptive ? 1.0 / (options.scale_factor * noise_m) : 1.0 / options.reprojection_scale_rel;
-  const double inv_gap = adaptive ? 1.0 / (2.0 * options.scale_factor * noise_m) : 1.0 / options.ray_gap_scale_m;
+  const double inv_rep = adaptive ? 1.0 / KernelScaleM(options, noise_m) : 1.0 / options.reprojection_scale_rel;
+  const double inv_gap = adaptive ? 0.5 / KernelScaleM(options, noise_m) : 1.0 / options.ray_gap_scale_m;
   int pruned = 0;
   for (int k = 0; k < proposals->size(); ++k) {
     const PosePair& pair = proposals->pairs[k];

@@ -38,6 +38,10 @@ struct ScoreScratch {
   std::vector<int> best_partner;      // per pose and view: its best partner pose, -1 = none
 };
 
+// The kernel scale in metres: scale_factor x `noise_m` (adaptive), or, for the fixed scale, the
+// ray-gap scale halved (the reprojection error at the person is about half the ray gap).
+double KernelScaleM(const ScoreOptions& options, double noise_m);
+
 // `joints` maps the proposal's joint slots to prepared-pose joint indices; `limbs` are indexed
 // by slot. `pair_scores` = false skips the pair score (step 10: only step 8 uses pair scores).
 // With the adaptive scale and `pair_scores`, the frame's mutually best pairs first update

@@ -15,6 +15,7 @@
 #include "core/pipeline/room_check.h"
 #include "core/pipeline/score_proposals.h"
 #include "core/pipeline/triangulate_pairs.h"
+#include "core/pipeline/verify_persons.h"
 #include "core/pipeline/workspace.h"
 
 namespace rpt {
@@ -198,6 +199,11 @@ void Triangulator::Process(std::span<const Poses2D> views, double timestamp_s, P
   persons->Clear(num_joints);
   count[at(Step::kMerge)] = MergeGroups(opt.merge, ws.full, ws.groups, &ws.merge_scratch, persons);
   timer.Lap(Step::kMerge);
+
+  count[at(Step::kVerify)] = VerifyPersons(opt.verify, ws.prepared, ws.geometry, ws.core_joints,
+                                           KernelScaleM(opt.score, ws.noise.Estimate()), &ws.verify_scratch, persons,
+                                           stats);
+  timer.Lap(Step::kVerify);
 
   count[at(Step::kPostprocess)] =
       PostprocessPersons(opt.postprocess, opt.room_check, ws.neighbour, ws.all_limbs, persons, stats);

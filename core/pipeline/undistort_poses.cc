@@ -19,6 +19,8 @@ ViewGeometry MakeViewGeometry(const Camera& camera) {
   g.cx = camera.K(0, 2);
   g.cy = camera.K(1, 2);
   g.skew = camera.K(0, 1);
+  g.width = camera.width;
+  g.height = camera.height;
   return g;
 }
 

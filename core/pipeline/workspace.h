@@ -17,6 +17,7 @@
 #include "core/pipeline/prefilter_pairs.h"
 #include "core/pipeline/track_persons.h"
 #include "core/pipeline/undistort_poses.h"
+#include "core/pipeline/verify_persons.h"
 
 namespace rpt {
 
@@ -45,6 +46,7 @@ struct Workspace {
   Groups groups;
   Proposals full;
   MergeScratch merge_scratch;
+  VerifyScratch verify_scratch;
 
   // Carried between frames.
   PreviousPersons previous;

@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: MIT
+// Step 11b (`verify`, an addition): re-score each merged person against all views, to reject
+// phantoms: persons assembled from poses of different people that happen to agree in the two or
+// three views they came from.
+//
+// The person's core joints are projected into every view. A view where fewer than 3 of them land
+// inside the image does not see the person. A view that sees the person either
+//   * supports it: some 2D pose there agrees (median residual over the shared core joints, in
+//     metres at the joint's depth, at most twice the score kernel's scale), or
+//   * is occupied: the person's projected box overlaps a detected pose's box (IoU >= 0.1) that
+//     does not agree (an occluder, or the person hidden behind someone), or
+//   * is empty: at least min_inside_fraction of the person's joints land in the image and no
+//     detection is there. Detectors rarely miss a person in plain view.
+// A person with at least min_empty_views empty views and more empty views than supporting views
+// is dropped: more cameras look at the spot and see nobody than see the person. With few
+// cameras (a phantom from 2 of 3 views has at most one empty view) the check cannot decide and
+// keeps the person.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "core/pipeline/frame_stats.h"
+#include "core/pipeline/options.h"
+#include "core/pipeline/pipeline_types.h"
+#include "core/poses.h"
+
+namespace rpt {
+
+struct VerifyScratch {
+  std::vector<Eigen::Vector4d> boxes;    // per prepared pose: min u, min v, max u, max v (undistorted px)
+  std::vector<Eigen::Vector2d> projected;  // per core joint of the person being verified
+  std::vector<double> depth;             // per core joint: depth in the view (m)
+  std::vector<double> residuals;         // per core joint: residual against one pose (m)
+};
+
+// `kernel_scale_m` is the score kernel's scale (score_proposals.h). Removes dropped persons from
+// `persons` (their track ids are not assigned yet) and counts them in stats->unsupported_persons.
+// Returns the number of persons kept.
+int VerifyPersons(const VerifyOptions& options, const PreparedViews& views, std::span<const ViewGeometry> geometry,
+                  std::span<const int> core_joints, double kernel_scale_m, VerifyScratch* scratch, Poses3D* persons,
+                  FrameStats* stats);
+
+}  // namespace rpt
