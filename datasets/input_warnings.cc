@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "datasets/input_warnings.h"
 
+#include <Eigen/LU>
 #include <Eigen/SVD>
 #include <cmath>
 #include <sstream>
