@@ -92,7 +92,7 @@ std::vector<Camera> ReadFourDaCalibration(const std::filesystem::path& path, Inp
       const std::vector<double> dist = io::JsonNumbers(root, base + "/distCoeff", source);
       if (std::any_of(dist.begin(), dist.end(), [](double c) { return c != 0.0; })) {
         throw InputError(source + ": " + base +
-                         "/distCoeff: non-zero distortion is not supported (4D-Association detects on images "
+                         "/distCoeff: non-zero distortion is not supported (4D-Association then works on images "
                          "rectified with OpenCV's getOptimalNewCameraMatrix, which rpt does not reproduce)");
       }
     }

@@ -9,12 +9,12 @@
 //   or "R" (3 numbers = Rodrigues vector, or 9 = row-major matrix) and "T" (3 numbers, metres).
 //      When "RT" is present it wins, as in 4D-Association's parser.
 //   "distCoeff" optional, OpenCV order (k1, k2, p1, p2, k3, ...); absent = none. Only all-zero
-//      coefficients are accepted: 4D-Association undistorts its images with OpenCV's
-//      getOptimalNewCameraMatrix and detects on the rectified images, a model rpt does not
-//      reproduce. "rectifyAlpha" and "newImgSize" are ignored (without distortion they change
-//      nothing).
+//      coefficients are accepted: with distortion, 4D-Association undistorts its images (OpenCV
+//      getOptimalNewCameraMatrix with "rectifyAlpha", then a rectification map) and works with
+//      the new camera matrix, a model rpt does not reproduce. "rectifyAlpha" and "newImgSize"
+//      are ignored (without distortion they change nothing).
 // Cameras are named by their id and ordered numerically when every id is an integer (else by
-// name). Rotations go through AcceptRotation: the files store them with ~7 significant digits,
+// name). Rotations go through AcceptRotation: the files store them with 6-8 significant digits,
 // so they are re-orthonormalised and counted under the file in `warnings`, never refused unless
 // they are not rotations at all. Throws InputError naming the file and JSON pointer.
 #pragma once

@@ -498,7 +498,7 @@ TEST(Shelf4daFixture, CalibrationIsVoxelPoseShelfWithRotationsCounted) {
 //  * found: a GT person whose 12 limb joints (shoulders ... ankles) all project inside the image
 //    is found when an assembled person has >= 4 of those joints with a mean distance to the
 //    projections below 10 % of the GT person's box (larger side of the projected joints' box).
-//    Observed 2138 of 2323 (92.0 %); the misses are people hidden behind the shelf or others.
+//    Observed 2138 of 2323 (92.0 %); the misses were not inspected one by one.
 //  * fragments: assembled persons without a neck (a leg or arm that did not connect).
 //    Observed 233 of 4391 persons (5.3 %).
 //  * views with more assembled persons than neck candidates (OpenPose's own count of the people
