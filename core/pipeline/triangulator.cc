@@ -200,7 +200,7 @@ void Triangulator::Process(std::span<const Poses2D> views, double timestamp_s, P
   count[at(Step::kMerge)] = MergeGroups(opt.merge, ws.full, ws.groups, &ws.merge_scratch, persons);
   timer.Lap(Step::kMerge);
 
-  count[at(Step::kVerify)] = VerifyPersons(opt.verify, ws.prepared, ws.geometry, ws.core_joints,
+  count[at(Step::kVerify)] = VerifyPersons(opt.verify, ws.prepared, ws.geometry, ws.core_joints, ws.full, ws.groups,
                                            KernelScaleM(opt.score, ws.noise.Estimate()), &ws.verify_scratch, persons,
                                            stats);
   timer.Lap(Step::kVerify);

@@ -27,26 +27,32 @@ double Median(double* values, int n) {
 }  // namespace
 
 int VerifyPersons(const VerifyOptions& options, const PreparedViews& views, std::span<const ViewGeometry> geometry,
-                  std::span<const int> core_joints, double kernel_scale_m, VerifyScratch* scratch, Poses3D* persons,
-                  FrameStats* stats) {
+                  std::span<const int> core_joints, const Proposals& proposals, const Groups& groups,
+                  double kernel_scale_m, VerifyScratch* scratch, Poses3D* persons, FrameStats* stats) {
   if (!options.enabled || persons->num_persons() == 0) return persons->num_persons();
   const int num_core = static_cast<int>(core_joints.size());
   const int num_views = static_cast<int>(geometry.size());
+  const bool by_group = groups.size() == persons->num_persons();
   scratch->projected.resize(num_core);
   scratch->depth.resize(num_core);
   scratch->residuals.resize(num_core);
-  // Boxes of the detected poses (their valid joints).
-  scratch->boxes.resize(views.num_poses());
-  for (int g = 0; g < views.num_poses(); ++g) {
-    Eigen::Vector4d box(std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
-                        -std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity());
-    const Keypoint* kps = views.Pose(g);
-    for (int j = 0; j < views.num_joints; ++j) {
-      if (kps[j].score <= 0) continue;
-      box << std::min(box[0], kps[j].u), std::min(box[1], kps[j].v), std::max(box[2], kps[j].u), std::max(box[3], kps[j].v);
+  // Boxes of the detected poses (their valid joints), computed when first needed.
+  bool have_boxes = false;
+  auto compute_boxes = [&] {
+    scratch->boxes.resize(views.num_poses());
+    for (int g = 0; g < views.num_poses(); ++g) {
+      Eigen::Vector4d box(std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+                          -std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity());
+      const Keypoint* kps = views.Pose(g);
+      for (int j = 0; j < views.num_joints; ++j) {
+        if (kps[j].score <= 0) continue;
+        box << std::min(box[0], kps[j].u), std::min(box[1], kps[j].v), std::max(box[2], kps[j].u),
+            std::max(box[3], kps[j].v);
+      }
+      scratch->boxes[g] = box;
     }
-    scratch->boxes[g] = box;
-  }
+    have_boxes = true;
+  };
 
   const double max_residual = 2.0 * kernel_scale_m;
   int kept = 0;
@@ -54,7 +60,21 @@ int VerifyPersons(const VerifyOptions& options, const PreparedViews& views, std:
   for (int p = 0; p < persons->num_persons(); ++p) {
     const auto person = persons->Person(p);
     int support = 0, empty = 0;
-    for (int v = 0; v < num_views; ++v) {
+    scratch->own_view.assign(num_views, 0);
+    if (by_group) {
+      for (int m = groups.begin[p]; m < groups.begin[p + 1]; ++m) {
+        scratch->own_view[views.view_of[proposals.pairs[m].a]] = 1;
+        scratch->own_view[views.view_of[proposals.pairs[m].b]] = 1;
+      }
+      for (int v = 0; v < num_views; ++v) support += scratch->own_view[v];
+    }
+    // Empty views can only come from the other views: skip persons that cannot
+    // be dropped.
+    const int others = num_views - support;
+    const bool can_drop = others >= options.min_empty_views && others > support;
+    for (int v = 0; can_drop && v < num_views; ++v) {
+      if (scratch->own_view[v]) continue;
+      if (!have_boxes) compute_boxes();
       const ViewGeometry& geo = geometry[v];
       int valid = 0, inside = 0;
       Eigen::Vector4d box(std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
