@@ -35,10 +35,11 @@ void NoiseScale::Vote(double residual_m) {
   if (!(residual_m >= 0) || residual_m > kMaxPlausibleResidualM) return;
   counts_[BinOf(residual_m)] += 1.0;
   ++votes_;
-  Update();
+  dirty_ = true;
 }
 
-void NoiseScale::Update() {
+void NoiseScale::Update() const {
+  dirty_ = false;
   double total = 0;
   for (double c : counts_) total += c;
   if (!(total > 0)) return;

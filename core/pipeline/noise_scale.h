@@ -40,15 +40,19 @@ class NoiseScale {
   // One vote: the median residual (m) of a mutually best pair.
   void Vote(double residual_m);
   // The current estimate (m).
-  double Estimate() const { return estimate_; }
+  double Estimate() const {
+    if (dirty_) Update();
+    return estimate_;
+  }
   // Votes received since the last Reset (not decayed).
   long votes() const { return votes_; }
 
  private:
-  void Update();
+  void Update() const;
 
   std::array<double, kBins> counts_{};
-  double estimate_ = 0.02;
+  mutable double estimate_ = 0.02;  // the median, recomputed when asked for after new votes
+  mutable bool dirty_ = false;
   long votes_ = 0;
 };
 

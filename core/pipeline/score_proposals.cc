@@ -78,6 +78,13 @@ int ScoreProposals(const PreparedViews& views, std::span<const ViewGeometry> geo
   scratch->pair_residual.resize(proposals->size());
   scratch->votes.resize(n);
   scratch->terms.resize(n);
+  // Joints whose ray gap alone makes the score negligible skip the projections. The bound uses
+  // the estimate before this frame's votes with a wide margin (score < e^-120 at twice the scale).
+  const double skip_gap = use_tri ? (adaptive ? 2.0 * std::sqrt(120.0) * KernelScaleM(options, noise != nullptr
+                                                                                         ? noise->Estimate()
+                                                                                         : options.noise_prior_m)
+                                              : std::sqrt(30.0) * options.ray_gap_scale_m)
+                                  : std::numeric_limits<double>::infinity();
   for (int k = 0; k < proposals->size(); ++k) {
     const PosePair& pair = proposals->pairs[k];
     const ViewGeometry& ga = geometry[views.view_of[pair.a]];
@@ -98,6 +105,8 @@ int ScoreProposals(const PreparedViews& views, std::span<const ViewGeometry> geo
       if (score[i] <= 0 || geometric[i] >= 0) continue;  // not triangulated, or scored by an earlier step
       if (!use_rep) {
         residual[i] = 0;
+      } else if (gap[i] > skip_gap) {
+        residual[i] = 1e6;  // scored 0 below
       } else {
         double za = 1, zb = 1;
         const double ea = std::sqrt(ReprojectionErrorSq(ga, xyz[i], ka[joints[i]], &za));
@@ -178,7 +187,9 @@ int ScoreProposals(const PreparedViews& views, std::span<const ViewGeometry> geo
     }
     // The worst trim_fraction of the joints do not count (occluded joints reported at wrong places).
     const int trimmed = static_cast<int>(options.trim_fraction * seen);
-    if (trimmed > 0) std::sort(scratch->terms.begin(), scratch->terms.begin() + seen);
+    if (trimmed > 0) {
+      std::nth_element(scratch->terms.begin(), scratch->terms.begin() + trimmed, scratch->terms.begin() + seen);
+    }
     double weighted = 0, weights = 0;
     for (int t = trimmed; t < seen; ++t) {
       weighted += scratch->terms[t].first * scratch->terms[t].second;
