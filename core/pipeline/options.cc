@@ -61,6 +61,11 @@ std::string TriangulatorOptions::Check() const {
   c.Range("merge.min_joint_score", merge.min_joint_score, 0, 1);
   c.Range("verify.min_empty_views", verify.min_empty_views, 1, 1e6);
   c.Range("verify.min_inside_fraction", verify.min_inside_fraction, 0, 1);
+  c.Range("single_view.min_joint_score", single_view.min_joint_score, 0, 1);
+  c.Range("single_view.min_core_joints", single_view.min_core_joints, 2, 1e6);
+  c.Range("single_view.score_factor", single_view.score_factor, 1e-6, 1);
+  c.Range("single_view.duplicate_distance_m", single_view.duplicate_distance_m, 0, 1e6);
+  c.Range("single_view.max_overlap_iou", single_view.max_overlap_iou, 0, 1);
   c.Range("postprocess.min_valid_joints", postprocess.min_valid_joints, 0, 1e6);
   c.Range("postprocess.min_extent_m", postprocess.min_extent_m, 0, 1e6);
   c.Range("postprocess.max_extent_m", postprocess.max_extent_m, postprocess.min_extent_m, 1e6);

@@ -101,6 +101,17 @@ struct VerifyOptions {
   double min_inside_fraction = 0.8;    // a view is "empty" only if this share of the joints lands in the image
 };
 
+// Step 12b (an addition, off by default): persons seen by one camera only, placed at the depth
+// their 2D limb lengths imply (lift_single_views.h).
+struct SingleViewOptions {
+  bool enabled = false;
+  double min_joint_score = 0.3;       // confidence of the joints used
+  int min_core_joints = 6;            // confident core joints a pose needs
+  double score_factor = 0.5;          // joint scores = 2D confidence x this (rank below triangulated persons)
+  double duplicate_distance_m = 0.5;  // centre distance under which a lifted person duplicates another
+  double max_overlap_iou = 0.3;       // poses overlapping a found person's projection this much are that person
+};
+
 // Step 12.
 struct PostprocessOptions {
   bool enabled = true;
@@ -139,6 +150,7 @@ struct TriangulatorOptions {
   GroupOptions group;
   MergeOptions merge;
   VerifyOptions verify;
+  SingleViewOptions single_view;
   PostprocessOptions postprocess;
   TrackOptions track;
   ClipSpeedOptions clip_speed;

@@ -10,6 +10,7 @@
 #include "core/errors.h"
 #include "core/pipeline/clip_speed.h"
 #include "core/pipeline/filter_proposals.h"
+#include "core/pipeline/lift_single_views.h"
 #include "core/pipeline/make_pairs.h"
 #include "core/pipeline/postprocess_persons.h"
 #include "core/pipeline/room_check.h"
@@ -103,6 +104,7 @@ Triangulator::Triangulator(std::vector<Camera> cameras, JointNames input_joints,
   ws.core_limbs = ResolveLimbs(LimbsFor(core_list), core_list);
   ws.core_mirror = MirrorIndices(core_list);
   ws.all_limbs = ResolveLimbs(LimbsFor(ws.output_joints), ws.output_joints);
+  ws.typical_limbs = ResolveTypicalLimbs(ws.output_joints);
   ws.previous.Clear(static_cast<int>(ws.core_joints.size()));
   ws.noise.Reset(ws.options.score.noise_prior_m);
 }
@@ -209,6 +211,19 @@ void Triangulator::Process(std::span<const Poses2D> views, double timestamp_s, P
       PostprocessPersons(opt.postprocess, opt.room_check, ws.neighbour, ws.all_limbs, persons, stats);
   timer.Lap(Step::kPostprocess);
 
+  // Step 12b: persons seen by one view only, post-processed like the others and appended. They
+  // stay out of the pre-filter's memory: their depth is a guess.
+  int num_lifted = LiftSingleViews(opt.single_view, opt.verify, ws.prepared, ws.geometry, ws.core_joints,
+                                   ws.typical_limbs, ws.full, ws.groups, KernelScaleM(opt.score, ws.noise.Estimate()),
+                                   *persons, &ws.verify_scratch, &ws.single_view_scratch, &ws.lifted, stats);
+  if (num_lifted > 0) {
+    num_lifted = PostprocessPersons(opt.postprocess, opt.room_check, ws.neighbour, ws.all_limbs, &ws.lifted, stats);
+    for (int p = 0; p < num_lifted; ++p) persons->AddPerson() = ws.lifted.Person(p);
+  }
+  const int num_triangulated = persons->num_persons() - num_lifted;
+  count[at(Step::kSingleView)] = persons->num_persons();
+  timer.Lap(Step::kSingleView);
+
   int num_detected = persons->num_persons();
   if (opt.track.enabled) num_detected = ws.tracker.Assign(opt.track, ws.core_joints, persons, stats);
   count[at(Step::kTrack)] = persons->num_persons();
@@ -223,6 +238,7 @@ void Triangulator::Process(std::span<const Poses2D> views, double timestamp_s, P
   ws.previous.Clear(num_core);
   ws.previous.timestamp_s = timestamp_s;
   for (int p = 0; p < persons->num_persons(); ++p) {
+    if (p >= num_triangulated && p < num_triangulated + num_lifted) continue;  // single-view persons
     const auto person = persons->Person(p);
     for (int c = 0; c < num_core; ++c) {
       ws.previous.xyz.push_back(person.col(ws.core_joints[c]).head<3>());

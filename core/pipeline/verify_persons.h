@@ -37,6 +37,18 @@ struct VerifyScratch {
   std::vector<char> own_view;            // per view: holds one of the person's own poses
 };
 
+// What one view says about a person (see above).
+enum class ViewVerdict { kUnseen, kSupport, kOccupied, kEmpty };
+
+// Bounding boxes of the prepared poses' valid joints (undistorted px): min u, min v, max u, max v.
+void PoseBoxes(const PreparedViews& views, std::vector<Eigen::Vector4d>* boxes);
+
+// The verdict of `view` on `person` (4 x joints). scratch->boxes must hold PoseBoxes(views).
+// `projected_box`, when given, receives the box of the person's projected core joints.
+ViewVerdict JudgeView(const VerifyOptions& options, const PreparedViews& views, const ViewGeometry& geo, int view,
+                      std::span<const int> core_joints, const Eigen::Ref<const Eigen::Matrix4Xd>& person,
+                      double kernel_scale_m, VerifyScratch* scratch, Eigen::Vector4d* projected_box);
+
 // Person i was merged from group i of `groups` over `proposals` (step 11), whose pairs give its own
 // views. `kernel_scale_m` is the score kernel's scale (score_proposals.h). Removes dropped persons from
 // `persons` (their track ids are not assigned yet) and counts them in stats->unsupported_persons.

@@ -9,6 +9,7 @@
 #include "core/camera.h"
 #include "core/joints.h"
 #include "core/pipeline/group_proposals.h"
+#include "core/pipeline/lift_single_views.h"
 #include "core/pipeline/merge_groups.h"
 #include "core/pipeline/noise_scale.h"
 #include "core/pipeline/score_proposals.h"
@@ -35,6 +36,7 @@ struct Workspace {
   std::vector<ResolvedLimb> core_limbs;  // indexed by core slot
   std::vector<ResolvedLimb> all_limbs;   // indexed by output joint
   std::vector<int> neighbour;          // per output joint, -1 = none
+  std::vector<TypicalLimb> typical_limbs;  // single_view: limbs with typical lengths
 
   // Per-frame buffers.
   PreparedViews prepared;
@@ -47,6 +49,8 @@ struct Workspace {
   Proposals full;
   MergeScratch merge_scratch;
   VerifyScratch verify_scratch;
+  SingleViewScratch single_view_scratch;
+  Poses3D lifted;  // single_view: this frame's persons placed from one view
 
   // Carried between frames.
   PreviousPersons previous;
