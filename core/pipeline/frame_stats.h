@@ -46,6 +46,7 @@ struct FrameStats {
   int filled_joints = 0;      // post-processing: missing joints filled from a neighbour
   int new_tracks = 0;         // tracking: tracks started this frame
   int coasting_tracks = 0;    // tracking: lost persons returned with their last pose
+  double noise_m = 0;         // adaptive scoring: the estimated detection noise (m), 0 with a fixed scale
 
   void Reset() { *this = FrameStats{}; }
 };
