@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // `rpt eval`: a dataset (or generic labels) through the triangulator and the metrics. Prints the
-// paper-style row and writes summary.{md,csv,json}, per_joint.csv, config.json, run.json and
+// paper-style row and writes summary.{md,csv,json}, per_joint.csv, steps.csv, config.json, run.json and
 // predictions.json into the output folder.
 #include <cstdio>
 #include <iostream>
@@ -56,7 +56,7 @@ void RunEval(const EvalArgs& args) {
     if (whole_body) std::printf("  whole-body MPJPE %-6s %.1f mm\n", g.name.c_str(), g.mpjpe_mm);
   }
   if (run.metrics.legacy_pcp) std::printf("  legacy PCP (actors 1-3) %.1f %%\n", run.metrics.legacy_pcp->average_pcp);
-  if (!args.quiet) PrintStepTimes(std::cout, run.timing);
+  if (!args.quiet) PrintStepTimes(std::cout, run.timing, &run.counts);
   std::printf("results in %s\n", out_dir.c_str());
 }
 

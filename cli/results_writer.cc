@@ -93,6 +93,9 @@ Json SummaryJson(const RunResult& run) {
     j["legacy_pcp"] = Number(m.legacy_pcp->average_pcp);
   }
   j["step_time_us_median"] = StepTimesJson(run.timing);
+  j["step_count_per_frame"] = StepCountsJson(run.counts);
+  j["counter_per_frame"] = CountersJson(run.counts);
+  j["detection_noise_m"] = run.counts.noise_frames > 0 ? Json(run.counts.noise_m_median) : Json(nullptr);
   Json units;
   for (const SummaryColumn& c : SummaryColumns()) units[c.key] = c.unit;
   j["units"] = units;
@@ -212,6 +215,7 @@ void WriteEvalOutputs(const std::filesystem::path& dir, const std::vector<Sequen
            << row.count << "," << row.num_gt << "\n";
   }
   WriteText(dir / "per_joint.csv", joints.str());
+  WriteText(dir / "steps.csv", StepsCsv(run.timing, run.counts));
   WriteText(dir / "config.json", DumpConfig(config, /*with_comments=*/false));
   WriteText(dir / "run.json", RunInfoJson(info).dump(2) + "\n");
   WritePredictions(dir / "predictions.json", sequences, run);
