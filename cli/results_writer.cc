@@ -195,11 +195,12 @@ Json RunInfoJson(const RunInfo& info) {
 }
 
 void WriteEvalOutputs(const std::filesystem::path& dir, const std::vector<Sequence>& sequences, const RunResult& run,
-                      const Config& config, const RunInfo& info) {
+                      const Config& config, const RunInfo& info, const Json& extra_summary) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) throw InputError(dir.string() + ": cannot create output folder: " + ec.message());
-  const Json summary = SummaryJson(run);
+  Json summary = SummaryJson(run);
+  summary.update(extra_summary);
   WriteText(dir / "summary.json", summary.dump(2) + "\n");
   std::string label;
   for (const Sequence& s : sequences) AppendItem(&label, s.name, "+");

@@ -39,9 +39,11 @@ std::string PaperRow(const RunResult& run);
 // predictions.json: {"joints": [...], "frames": [{"id", "persons": [[[x,y,z,score],...],...], "track_ids": [...]}]}
 void WritePredictions(const std::filesystem::path& path, const std::vector<Sequence>& sequences, const RunResult& run);
 
-// Everything above into `dir` (created). Throws InputError when the folder cannot be written.
+// Everything above into `dir` (created); `extra_summary` (e.g. eval's warnings and data checks)
+// is merged into summary.json. Throws InputError when the folder cannot be written.
 void WriteEvalOutputs(const std::filesystem::path& dir, const std::vector<Sequence>& sequences, const RunResult& run,
-                      const Config& config, const RunInfo& info);
+                      const Config& config, const RunInfo& info,
+                      const nlohmann::ordered_json& extra_summary = nlohmann::ordered_json::object());
 
 nlohmann::ordered_json RunInfoJson(const RunInfo& info);
 
