@@ -38,6 +38,7 @@ void RunInspect(const InspectArgs& args) {
     // All frames are measured: inspect is run on purpose, eval samples.
     DetectionCheckOptions check_options;
     check_options.max_frames = 0;
+    check_options.shift_frames = 0;
     const SequenceCheck check = CheckDetections(s, check_options);
     nlohmann::ordered_json seq;
     seq["sequence"] = s.name;
