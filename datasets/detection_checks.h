@@ -23,8 +23,7 @@ struct DetectionCheckOptions {
   int max_shift = 5;
   // Frames per sequence at which the shift test compares (evenly spaced); 0 = all.
   int shift_frames = 40;
-  // Consecutive frames further apart than this (or with an unknown time) are not continuous;
-  // the same rule and default as the tracker's max_gap_s.
+  // Consecutive frames further apart than this (or with an unknown time) are not continuous.
   double max_gap_s = 1.0;
   // Joints (shared by name, GT-valid, detected, in front of the camera) a GT person and a
   // detection must have in common to be compared.
