@@ -40,7 +40,9 @@ void RunEval(const EvalArgs& args) {
   const RunInfo info = CollectRunInfo(run.threads, CurrentCommandLine());
   const std::string out_dir =
       !args.out.empty() ? args.out : "out/eval-" + (args.input.dataset.empty() ? "labels" : args.input.dataset);
-  const EvalDiagnostics diagnostics = Diagnose(sequences, run);
+  DetectionCheckOptions check_options;
+  check_options.max_gap_s = config.triangulator.track.max_gap_s;  // one notion of continuity
+  const EvalDiagnostics diagnostics = Diagnose(sequences, run, check_options);
   const nlohmann::ordered_json diagnostics_json = DiagnosticsJson(diagnostics);
   WriteEvalOutputs(out_dir, sequences, run, config, info, diagnostics_json);
   if (args.json) {

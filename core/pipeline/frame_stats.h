@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <iterator>
 #include <string_view>
 
 namespace rpt {
@@ -32,12 +33,17 @@ inline constexpr std::array<std::string_view, kNumSteps> kStepNames = {
     "undistort", "pairs", "prefilter", "triangulate_core", "room_check", "score", "filter",
     "group", "triangulate_full", "merge", "verify", "postprocess", "single_view", "track", "clip_speed"};
 
+// What FrameStats::count holds after each step (kStepNames order).
+inline constexpr std::string_view kStepItems[] = {
+    "poses",     "pairs",   "pairs",   "proposals", "proposals", "proposals", "proposals", "groups",
+    "proposals", "persons", "persons", "persons",   "persons",   "persons",   "joints clipped"};
+static_assert(std::size(kStepItems) == kNumSteps, "one item name per step");
+
 struct FrameStats {
   // Steady-clock time of each step (microseconds) and of the whole frame.
   std::array<double, kNumSteps> time_us{};
   double total_us = 0;
-  // Items after each step: poses, pairs, pairs, proposals, proposals, proposals, proposals,
-  // groups, proposals, persons, persons, persons, persons, persons, joints clipped.
+  // Items after each step: kStepItems.
   std::array<int, kNumSteps> count{};
   // Extra counters.
   int pruned_limbs = 0;       // joints invalidated by limb pruning (steps 7 and 10)
