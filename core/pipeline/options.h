@@ -129,6 +129,21 @@ struct ClipSpeedOptions {
   double max_speed_m_s = 10.0;  // per joint, between consecutive outputs of one track
 };
 
+// Step 15 (optional, off by default): per-track bone-length consistency. Each track keeps the
+// lengths of each limb over its last `window` observations; once a limb has `min_observations`,
+// a length differing from their median by more than max(tolerance_rel x median, min_tolerance_m)
+// makes the limb disagree. The joints explaining the disagreeing limbs (a wrist moved 30 cm: its
+// forearm disagrees, the elbow's upper arm does not) are marked missing and, with
+// postprocess.fill_missing_joints, filled from their neighbour like in step 12
+// (check_bone_lengths.h). Off by default until it is shown to help on real detections.
+struct BoneLengthOptions {
+  bool enabled = false;
+  double tolerance_rel = 0.25;   // relative disagreement with the track's running length
+  double min_tolerance_m = 0.05; // floor of the tolerance, for short bones (hands, face)
+  int min_observations = 10;     // a limb is checked once its track has observed it this often
+  int window = 50;               // observations per limb the running median is taken over
+};
+
 struct TriangulatorOptions {
   UndistortOptions undistort;
   PrefilterOptions prefilter;
@@ -142,6 +157,13 @@ struct TriangulatorOptions {
   PostprocessOptions postprocess;
   TrackOptions track;
   ClipSpeedOptions clip_speed;
+  BoneLengthOptions bone_lengths;
+
+  // Joints with a score at or below this are not observations for the temporal steps
+  // (bone_lengths): missing ones (0) and those filled by post-processing.
+  double UnobservedScore() const {
+    return postprocess.enabled && postprocess.fill_missing_joints ? postprocess.filled_joint_score : 0.0;
+  }
 
   // Empty when valid; otherwise "section.key: problem" for the first invalid value.
   std::string Check() const;

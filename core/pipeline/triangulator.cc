@@ -119,6 +119,7 @@ const TriangulatorOptions& Triangulator::options() const { return ws_->options; 
 void Triangulator::Reset() {
   ws_->previous.Clear(static_cast<int>(ws_->core_joints.size()));
   ws_->tracker.Reset();
+  ws_->bone_lengths.Reset();
   ws_->noise.Reset(ws_->options.score.noise_prior_m);
   ws_->last_timestamp_s = std::numeric_limits<double>::quiet_NaN();
 }
@@ -216,6 +217,17 @@ void Triangulator::Process(std::span<const Poses2D> views, double timestamp_s, P
 
   if (opt.track.enabled) {
     count[at(Step::kClipSpeed)] = ClipSpeed(opt.clip_speed, ws.tracker, timestamp_s, num_detected, persons);
+  }
+  timer.Lap(Step::kClipSpeed);
+
+  // The temporal steps need track ids. Joints at or below the filled score are not observations.
+  const double filled_score = opt.UnobservedScore();
+  if (opt.track.enabled) {
+    count[at(Step::kBoneLengths)] = ws.bone_lengths.Apply(opt.bone_lengths, ws.all_limbs, ws.neighbour, filled_score,
+                                                          num_detected, persons, stats);
+  }
+  if (opt.track.enabled) {
+    // The tracks' last poses are the outputs (what speed clipping and coasting refer to).
     ws.tracker.Commit(*persons, num_detected, timestamp_s);
   }
   // Remember this frame's persons for the next frame's pre-filter.
@@ -229,7 +241,7 @@ void Triangulator::Process(std::span<const Poses2D> views, double timestamp_s, P
       ws.previous.score.push_back(person(3, ws.core_joints[c]));
     }
   }
-  timer.Lap(Step::kClipSpeed);
+  timer.Lap(Step::kBoneLengths);
   timer.Finish();
 }
 

@@ -8,11 +8,12 @@
 
 #include "core/camera.h"
 #include "core/joints.h"
+#include "core/pipeline/check_bone_lengths.h"
 #include "core/pipeline/group_proposals.h"
 #include "core/pipeline/merge_groups.h"
 #include "core/pipeline/noise_scale.h"
-#include "core/pipeline/score_proposals.h"
 #include "core/pipeline/options.h"
+#include "core/pipeline/score_proposals.h"
 #include "core/pipeline/pipeline_types.h"
 #include "core/pipeline/prefilter_pairs.h"
 #include "core/pipeline/track_persons.h"
@@ -51,6 +52,7 @@ struct Workspace {
   // Carried between frames.
   PreviousPersons previous;
   Tracker tracker;
+  BoneLengthChecker bone_lengths;  // per-track running limb lengths
   NoiseScale noise;  // adaptive scoring: the detections' noise level
   double last_timestamp_s = std::numeric_limits<double>::quiet_NaN();
 };

@@ -1,0 +1,220 @@
+// SPDX-License-Identifier: MIT
+// The optional temporal steps: per-track bone-length consistency (step 15), and that it is off by
+// default.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "core/joints.h"
+#include "core/pipeline/check_bone_lengths.h"
+#include "core/pipeline/triangulator.h"
+#include "datasets/synthetic/detector_simulator.h"
+#include "datasets/synthetic/scene.h"
+#include "tests/pipeline/test_scene.h"
+
+namespace rpt {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// --- Bone lengths -------------------------------------------------------------------------------
+
+struct Skeleton {
+  std::vector<ResolvedLimb> limbs;
+  std::vector<int> neighbour;
+};
+Skeleton BodySkeleton() {
+  const JointNames& names = CocoBodyJoints();
+  Skeleton s;
+  for (const LimbSpec& limb : LimbsFor(names)) {
+    s.limbs.push_back(ResolvedLimb{FindJoint(names, limb.a), FindJoint(names, limb.b), limb.min_length_m, limb.max_length_m});
+  }
+  for (const std::string& name : names) s.neighbour.push_back(FindJoint(names, NeighbourJoint(name)));
+  return s;
+}
+
+// A person walking along x at 1 m/s with `noise_m` Gaussian noise per joint and axis.
+Poses3D Walker(int f, double noise_m, std::mt19937_64* rng, int id = 0) {
+  std::normal_distribution<double> noise(0.0, noise_m);
+  Poses3D persons;
+  persons.Clear(17);
+  auto person = persons.AddPerson(id);
+  person = test::StandingPerson(0.04 * f, 0.0);
+  for (int j = 0; j < 17; ++j) person.col(j).head<3>() += Eigen::Vector3d(noise(*rng), noise(*rng), noise(*rng));
+  return persons;
+}
+
+TEST(BoneLengths, MarksExactlyTheCorruptedJoint) {
+  const Skeleton s = BodySkeleton();
+  const int wrist = FindJoint(CocoBodyJoints(), "wrist_left");
+  const int elbow = FindJoint(CocoBodyJoints(), "elbow_left");
+  BoneLengthOptions options;
+  options.enabled = true;
+  for (double filled : {0.0, 0.05}) {
+    SCOPED_TRACE(testing::Message() << "filled score " << filled);
+    BoneLengthChecker checker;
+    std::mt19937_64 rng(5);
+    FrameStats stats;
+    for (int f = 0; f < 30; ++f) {
+      Poses3D frame = Walker(f, 0.01, &rng);
+      const Poses3D before = frame;
+      const int checked = checker.Apply(options, s.limbs, s.neighbour, filled, 1, &frame, &stats);
+      EXPECT_EQ(checked, f < options.min_observations ? 0 : 12) << "12 joints have limbs, checked once known";
+      EXPECT_EQ(frame.data, before.data) << "clean frame " << f;
+    }
+    EXPECT_EQ(stats.bone_length_corrections, 0);
+
+    // The wrist moves 30 cm in one frame: only the wrist is marked (the elbow still agrees with
+    // its upper arm).
+    Poses3D frame = Walker(30, 0.01, &rng);
+    frame.Person(0).col(wrist).head<3>() += Eigen::Vector3d(0, 0.3, 0);
+    Poses3D before = frame;
+    checker.Apply(options, s.limbs, s.neighbour, filled, 1, &frame, &stats);
+    EXPECT_EQ(stats.bone_length_corrections, 1);
+    for (int j = 0; j < 17; ++j) {
+      if (j == wrist) continue;
+      EXPECT_EQ(Eigen::Vector4d(frame.Person(0).col(j)), Eigen::Vector4d(before.Person(0).col(j))) << "joint " << j;
+    }
+    if (filled > 0) {
+      EXPECT_EQ(frame.Person(0)(3, wrist), filled) << "filled from its neighbour like in post-processing";
+      EXPECT_EQ(Eigen::Vector3d(frame.Person(0).col(wrist).head<3>()), Eigen::Vector3d(frame.Person(0).col(elbow).head<3>()));
+      EXPECT_EQ(stats.filled_joints, 1);
+    } else {
+      EXPECT_EQ(frame.Person(0)(3, wrist), 0.0) << "marked missing";
+    }
+
+    // The elbow moves 30 cm: both its limbs disagree; only the elbow is marked, not the wrist.
+    frame = Walker(31, 0.01, &rng);
+    frame.Person(0).col(elbow).head<3>() += Eigen::Vector3d(0, 0.3, 0);
+    before = frame;
+    stats.Reset();
+    checker.Apply(options, s.limbs, s.neighbour, filled, 1, &frame, &stats);
+    EXPECT_EQ(stats.bone_length_corrections, 1);
+    EXPECT_LE(frame.Person(0)(3, elbow), filled);
+    EXPECT_EQ(Eigen::Vector4d(frame.Person(0).col(wrist)), Eigen::Vector4d(before.Person(0).col(wrist)));
+  }
+}
+
+TEST(BoneLengths, CleanTracksFilledJointsAndCoastingPersonsAreNeverCorrected) {
+  const Skeleton s = BodySkeleton();
+  const int wrist = FindJoint(CocoBodyJoints(), "wrist_right");
+  const int elbow = FindJoint(CocoBodyJoints(), "elbow_right");
+  BoneLengthOptions options;
+  options.enabled = true;
+  BoneLengthChecker checker;
+  std::mt19937_64 rng(11);
+  FrameStats stats;
+  for (int f = 0; f < 500; ++f) {
+    // Two tracks with 1 cm noise per joint and axis.
+    Poses3D frame = Walker(f, 0.01, &rng, 0);
+    Poses3D other = Walker(f, 0.01, &rng, 1);
+    other.Person(0).row(1).array() += 2.0;
+    frame.AddPerson(1) = other.Person(0);
+    if (f % 10 == 5) {
+      // A filled wrist sits on its elbow (bone length 0): not an observation.
+      frame.Person(0).col(wrist) = frame.Person(0).col(elbow);
+      frame.Person(0)(3, wrist) = 0.05;
+    }
+    if (f >= 100 && f < 103) {
+      // A coasting person (a third track) with a broken skeleton.
+      auto coasting = frame.AddPerson(2);
+      coasting = test::StandingPerson(-2, -2);
+      coasting.col(wrist).head<3>() += Eigen::Vector3d(1, 0, 0);
+    }
+    const Poses3D before = frame;
+    checker.Apply(options, s.limbs, s.neighbour, 0.05, 2, &frame, &stats);
+    EXPECT_EQ(frame.data, before.data) << "frame " << f;
+  }
+  EXPECT_EQ(stats.bone_length_corrections, 0);
+}
+
+// --- In the pipeline ----------------------------------------------------------------------------
+
+struct SceneRun {
+  std::vector<Poses3D> persons;
+  std::vector<FrameStats> stats;
+};
+
+// A small synthetic scene through the triangulator.
+SceneRun RunScene(const TriangulatorOptions& base, const std::vector<double>& times, int frames = 60) {
+  synthetic::SceneOptions options;
+  options.rig.num_cameras = 4;
+  options.num_people = 3;
+  options.num_frames = frames;
+  options.seed = 5;
+  const synthetic::Scene scene = synthetic::GenerateScene(options);
+  const synthetic::DetectorSimulator detector(synthetic::DetectorOptions::Realistic(), scene.joint_names, 5);
+  TriangulatorOptions tri_options = base;
+  tri_options.room_check.center_m = scene.room_center_m;
+  tri_options.room_check.size_m = scene.room_size_m;
+  Triangulator tri(scene.cameras, scene.joint_names, tri_options);
+  SceneRun run;
+  run.persons.resize(frames);
+  run.stats.resize(frames);
+  std::vector<Poses2D> views;
+  for (int f = 0; f < frames; ++f) {
+    detector.Detect(scene.cameras, scene.gt[f], scene.joint_names, f, &views);
+    tri.Process(views, times.empty() ? f / scene.fps : times[f], &run.persons[f], &run.stats[f]);
+  }
+  return run;
+}
+
+TEST(TemporalSteps, AreOffByDefaultAndLeaveOutputsBitIdentical) {
+  const TriangulatorOptions defaults;
+  EXPECT_FALSE(defaults.bone_lengths.enabled);
+  // Disabled steps ignore their parameters: outputs are bit-identical whatever they are set to.
+  TriangulatorOptions disabled;
+  disabled.bone_lengths.tolerance_rel = 0.01;
+  disabled.bone_lengths.min_tolerance_m = 0;
+  disabled.bone_lengths.min_observations = 1;
+  const SceneRun a = RunScene(defaults, {});
+  const SceneRun b = RunScene(disabled, {});
+  for (size_t f = 0; f < a.persons.size(); ++f) {
+    ASSERT_EQ(a.persons[f].track_ids, b.persons[f].track_ids);
+    ASSERT_EQ(0, std::memcmp(a.persons[f].data.data(), b.persons[f].data.data(), a.persons[f].data.size() * sizeof(double)))
+        << "frame " << f;
+    EXPECT_EQ(a.stats[f].count[static_cast<int>(Step::kBoneLengths)], 0);
+    EXPECT_EQ(a.stats[f].bone_length_corrections, 0);
+  }
+  // Enabled, they do change the outputs (so the comparison above is not vacuous).
+  TriangulatorOptions enabled = disabled;
+  enabled.bone_lengths.enabled = true;
+  const SceneRun c = RunScene(enabled, {});
+  int corrected = 0;
+  for (const FrameStats& s : c.stats) corrected += s.bone_length_corrections;
+  EXPECT_GT(corrected, 0) << "a 1 % tolerance flags noise";
+  EXPECT_NE(c.persons.back().data, a.persons.back().data);
+}
+
+TEST(TemporalSteps, StartAfreshAfterAGapInThePipeline) {
+  // Frames 0-29 continuous, then 1.5 s later frames 30-59, and frame 45 without a time. The first
+  // frame after the gap, the frame with the unknown time and the one after it (its predecessor's
+  // time is unknown) depend on nothing before them: with
+  // the temporal step on they equal the run with them off, bit for bit (fixed score scale: the
+  // adaptive noise estimate carries over gaps and would differ between the runs).
+  std::vector<double> times;
+  for (int f = 0; f < 60; ++f) times.push_back(f < 30 ? f * 0.04 : 1.5 + f * 0.04);
+  times[45] = kNaN;
+  TriangulatorOptions off;
+  off.score.scale = ScoreScale::kFixed;
+  TriangulatorOptions on = off;
+  on.bone_lengths.enabled = true;
+  on.bone_lengths.min_observations = 1;
+  const SceneRun a = RunScene(off, times);
+  const SceneRun b = RunScene(on, times);
+  for (int f : {0, 30, 45, 46}) {
+    SCOPED_TRACE(testing::Message() << "frame " << f);
+    ASSERT_GT(a.persons[f].num_persons(), 0);
+    EXPECT_EQ(a.persons[f].data, b.persons[f].data);
+    EXPECT_EQ(b.stats[f].count[static_cast<int>(Step::kBoneLengths)], 0) << "no lengths known yet";
+  }
+  EXPECT_GT(b.stats[31].count[static_cast<int>(Step::kBoneLengths)], 0);
+  EXPECT_GT(b.stats[47].count[static_cast<int>(Step::kBoneLengths)], 0);
+}
+
+}  // namespace
+}  // namespace rpt
