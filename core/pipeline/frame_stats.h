@@ -24,13 +24,15 @@ enum class Step : int {
   kTrack,            // (13) track ids over time
   kClipSpeed,        // (14) clip joint speed
   kBoneLengths,      // (15) per-track bone-length consistency (optional)
+  kSmooth,           // (16) causal temporal smoothing (optional)
   kCount
 };
 inline constexpr int kNumSteps = static_cast<int>(Step::kCount);
 
 inline constexpr std::array<std::string_view, kNumSteps> kStepNames = {
     "undistort", "pairs", "prefilter", "triangulate_core", "room_check", "score", "filter",
-    "group", "triangulate_full", "merge", "verify", "postprocess", "track", "clip_speed", "bone_lengths"};
+    "group", "triangulate_full", "merge", "verify", "postprocess", "track", "clip_speed", "bone_lengths",
+    "smooth"};
 
 struct FrameStats {
   // Steady-clock time of each step (microseconds) and of the whole frame.
@@ -38,7 +40,7 @@ struct FrameStats {
   double total_us = 0;
   // Items after each step: poses, pairs, pairs, proposals, proposals, proposals, proposals,
   // groups, proposals, persons, persons, persons, persons, joints clipped, joints checked against
-  // their track's bone lengths.
+  // their track's bone lengths, joints smoothed.
   std::array<int, kNumSteps> count{};
   // Extra counters.
   int pruned_limbs = 0;       // joints invalidated by limb pruning (steps 7 and 10)

@@ -73,6 +73,8 @@ std::string TriangulatorOptions::Check() const {
   c.Range("bone_lengths.min_tolerance_m", bone_lengths.min_tolerance_m, 0, 10);
   c.Range("bone_lengths.window", bone_lengths.window, 1, 10000);
   c.Range("bone_lengths.min_observations", bone_lengths.min_observations, 1, bone_lengths.window);
+  c.Range("smooth.measurement_noise_m", smooth.measurement_noise_m, 1e-6, 100);
+  c.Range("smooth.acceleration_m_s2", smooth.acceleration_m_s2, 1e-6, 1e6);
   return c.error();
 }
 

@@ -144,6 +144,23 @@ struct BoneLengthOptions {
   int window = 50;               // observations per limb the running median is taken over
 };
 
+// Temporal smoothing of tracked persons (off by default until it is shown to help on real
+// detections):
+//   causal  = step 16 inside the pipeline: a constant-velocity Kalman filter per track and joint
+//             (white-noise acceleration model; at a fixed frame rate its gains settle to those
+//             of an alpha-beta filter), time-aware (dt from the timestamps), online, no lag on
+//             constant velocity.
+// It does not smooth across a gap of more than track.max_gap_s or an unknown time.
+enum class SmoothMode { kOff, kCausal };
+
+struct SmoothOptions {
+  SmoothMode mode = SmoothMode::kOff;
+  // causal: the filter trusts a new position less the smaller noise_m is compared with the motion
+  // that acceleration_m_s2 allows within the frame interval.
+  double measurement_noise_m = 0.02;  // m, standard deviation of a triangulated joint's error
+  double acceleration_m_s2 = 10.0;    // m/s^2, standard deviation of a joint's acceleration
+};
+
 struct TriangulatorOptions {
   UndistortOptions undistort;
   PrefilterOptions prefilter;
@@ -158,9 +175,10 @@ struct TriangulatorOptions {
   TrackOptions track;
   ClipSpeedOptions clip_speed;
   BoneLengthOptions bone_lengths;
+  SmoothOptions smooth;
 
   // Joints with a score at or below this are not observations for the temporal steps
-  // (bone_lengths): missing ones (0) and those filled by post-processing.
+  // (bone_lengths, smooth): missing ones (0) and those filled by post-processing.
   double UnobservedScore() const {
     return postprocess.enabled && postprocess.fill_missing_joints ? postprocess.filled_joint_score : 0.0;
   }

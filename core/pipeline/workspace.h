@@ -16,6 +16,7 @@
 #include "core/pipeline/score_proposals.h"
 #include "core/pipeline/pipeline_types.h"
 #include "core/pipeline/prefilter_pairs.h"
+#include "core/pipeline/smooth_tracks.h"
 #include "core/pipeline/track_persons.h"
 #include "core/pipeline/undistort_poses.h"
 #include "core/pipeline/verify_persons.h"
@@ -53,6 +54,7 @@ struct Workspace {
   PreviousPersons previous;
   Tracker tracker;
   BoneLengthChecker bone_lengths;  // per-track running limb lengths
+  TrackSmoother smoother;          // per-track joint filters
   NoiseScale noise;  // adaptive scoring: the detections' noise level
   double last_timestamp_s = std::numeric_limits<double>::quiet_NaN();
 };

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // A warm Triangulator performs no heap allocation per frame (counting operator new), also with
-// the optional temporal step bone_lengths enabled.
+// the optional temporal steps (bone_lengths, causal smoothing) enabled.
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -57,6 +57,7 @@ void CheckNoAllocationOnceWarm(bool whole_body, int cameras, int people, bool te
   tri_options.room_check.size_m = scene.room_size_m;
   if (temporal) {
     tri_options.bone_lengths.enabled = true;
+    tri_options.smooth.mode = SmoothMode::kCausal;
   }
   Triangulator tri(scene.cameras, scene.joint_names, tri_options);
   Poses3D persons;
