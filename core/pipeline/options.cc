@@ -75,6 +75,8 @@ std::string TriangulatorOptions::Check() const {
   c.Range("bone_lengths.min_observations", bone_lengths.min_observations, 1, bone_lengths.window);
   c.Range("smooth.measurement_noise_m", smooth.measurement_noise_m, 1e-6, 100);
   c.Range("smooth.acceleration_m_s2", smooth.acceleration_m_s2, 1e-6, 1e6);
+  c.Range("smooth.offline_sigma_s", smooth.offline_sigma_s, 1e-4, 1e3);
+  c.Range("smooth.offline_degree", smooth.offline_degree, 1, 3);
   return c.error();
 }
 

@@ -149,9 +149,12 @@ struct BoneLengthOptions {
 //   causal  = step 16 inside the pipeline: a constant-velocity Kalman filter per track and joint
 //             (white-noise acceleration model; at a fixed frame rate its gains settle to those
 //             of an alpha-beta filter), time-aware (dt from the timestamps), online, no lag on
-//             constant velocity.
-// It does not smooth across a gap of more than track.max_gap_s or an unknown time.
-enum class SmoothMode { kOff, kCausal };
+//             constant velocity;
+//   offline = after a whole sequence has been triangulated (rpt eval and friends): per track and
+//             joint, a Gaussian-weighted local polynomial fit in time (Savitzky-Golay generalised
+//             to uneven times and missing frames), two-sided, so no lag; not usable online.
+// Neither smooths across a gap of more than track.max_gap_s or an unknown time.
+enum class SmoothMode { kOff, kCausal, kOffline };
 
 struct SmoothOptions {
   SmoothMode mode = SmoothMode::kOff;
@@ -159,6 +162,10 @@ struct SmoothOptions {
   // that acceleration_m_s2 allows within the frame interval.
   double measurement_noise_m = 0.02;  // m, standard deviation of a triangulated joint's error
   double acceleration_m_s2 = 10.0;    // m/s^2, standard deviation of a joint's acceleration
+  // offline
+  double offline_sigma_s = 0.1;  // s, standard deviation of the Gaussian time weights (window +-3 sigma)
+  int offline_degree = 2;        // degree of the local polynomial (1: exact on constant velocity,
+                                 // 2: also on constant acceleration)
 };
 
 struct TriangulatorOptions {
