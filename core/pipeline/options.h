@@ -158,8 +158,8 @@ enum class SmoothMode { kOff, kCausal, kOffline };
 
 struct SmoothOptions {
   SmoothMode mode = SmoothMode::kOff;
-  // causal: the filter trusts a new position less the smaller noise_m is compared with the motion
-  // that acceleration_m_s2 allows within the frame interval.
+  // causal: the filter's gains grow with acceleration_m_s2 x dt^2 / measurement_noise_m: more
+  // acceleration or less noise follows the input more closely, the reverse smooths more.
   double measurement_noise_m = 0.02;  // m, standard deviation of a triangulated joint's error
   double acceleration_m_s2 = 10.0;    // m/s^2, standard deviation of a joint's acceleration
   // offline
