@@ -53,6 +53,7 @@ TEST(StepCountAccumulator, CountersFollowTheirNames) {
   stats.filled_joints = 8;
   stats.new_tracks = 9;
   stats.coasting_tracks = 10;
+  stats.bone_length_corrections = 11;
   const auto counters = Counters(stats);
   for (int c = 0; c < kNumCounters; ++c) EXPECT_EQ(counters[c], c + 1) << kCounterNames[c];
 }
