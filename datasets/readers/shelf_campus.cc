@@ -178,7 +178,8 @@ std::vector<Sequence> ReadShelfCampus(const ShelfCampusSpec& spec, const Dataset
 
   Sequence sequence;
   sequence.name = spec.name;
-  sequence.cameras = ReadVoxelPoseCalibration(request.root / spec.calibration_file, spec.width, spec.height);
+  sequence.cameras =
+      ReadVoxelPoseCalibration(request.root / spec.calibration_file, spec.width, spec.height, &sequence.warnings);
   sequence.gt_joints = ShelfCampusJoints();
   sequence.room = spec.room;
   sequence.fps = fps;

@@ -17,6 +17,7 @@
 #include "datasets/readers/voxelpose_calibration.h"
 #include "datasets/readers/voxelpose_detections.h"
 #include "tests/datasets/io_test_util.h"
+#include "tests/datasets/tolerance_test_util.h"
 #include "tests/error_message.h"
 #include "tests/test_data.h"
 
@@ -129,17 +130,32 @@ TEST(VoxelPoseCalibration, DistortionCentreConventionAndNumericOrder) {
   }
 }
 
-TEST(VoxelPoseCalibration, RoundedRotationIsReorthonormalised) {
+TEST(VoxelPoseCalibration, RoundedRotationIsReorthonormalisedAndCounted) {
   test::TempDir dir;
-  Eigen::Matrix3d rounded = SomeRotation(0.4);
-  for (int i = 0; i < 9; ++i) rounded.data()[i] = std::round(rounded.data()[i] * 1e5) / 1e5;  // 5 decimals
-  ASSERT_GT((rounded.transpose() * rounded - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff(), 1e-6);
-  const auto path =
-      WriteText(dir.path() / "c.json", "{\"0\": " + VoxelPoseCamera(rounded, Eigen::Vector3d(0, 0, 0), "") + "}");
-  const std::vector<Camera> cameras = ReadVoxelPoseCalibration(path, 360, 288);
-  ASSERT_EQ(cameras.size(), 1u);
-  EXPECT_EQ(cameras[0].Validate(), "");
-  EXPECT_LT((cameras[0].R - rounded).cwiseAbs().maxCoeff(), 1e-5);
+  const Eigen::Matrix3d rounded = test::RoundedRotation(SomeRotation(0.4));  // 6 significant digits
+  ASSERT_GT(test::OrthonormalityError(rounded), 1e-7);
+  const auto path = WriteText(dir.path() / "c.json", "{\"0\": " + VoxelPoseCamera(rounded, Eigen::Vector3d(0, 0, 0), "") +
+                                                         ", \"1\": " + VoxelPoseCamera(rounded, Eigen::Vector3d(1, 0, 0), "") + "}");
+  InputWarnings warnings;
+  const std::vector<Camera> cameras = ReadVoxelPoseCalibration(path, 360, 288, &warnings);
+  ASSERT_EQ(cameras.size(), 2u);
+  for (const Camera& camera : cameras) {
+    EXPECT_EQ(camera.Validate(), "");
+    EXPECT_LT(test::OrthonormalityError(camera.R), 1e-12);
+    EXPECT_LT((camera.R - rounded).cwiseAbs().maxCoeff(), 1e-5);
+  }
+  test::ExpectOneWarning(warnings, path.string(), test::kRotationsFixed, 2);
+  EXPECT_NO_THROW(ReadVoxelPoseCalibration(path, 360, 288)) << "no sink: corrected all the same";
+}
+
+TEST(VoxelPoseCalibration, RotationBeyondTheToleranceNamesFileAndCamera) {
+  test::TempDir dir;
+  const auto path = WriteText(dir.path() / "c.json",
+                              "{\"0\": " + VoxelPoseCamera(SomeRotation(0.4), Eigen::Vector3d(0, 0, 0), "") + ", \"1\": " +
+                                  VoxelPoseCamera(test::WrongRotation(SomeRotation(0.4)), Eigen::Vector3d(0, 0, 0), "") + "}");
+  InputWarnings warnings;
+  EXPECT_THAT(test::InputErrorOf([&] { ReadVoxelPoseCalibration(path, 360, 288, &warnings); }),
+              HasSubstr(path.string() + ": /1/R: not a rotation matrix (max |R^T R - I| = 0.010025"));
 }
 
 TEST(VoxelPoseCalibration, MalformedFilesNameFileAndPlace) {
@@ -186,9 +202,13 @@ TEST(VoxelPoseCalibration, MalformedFilesNameFileAndPlace) {
 TEST(VoxelPoseCalibration, ShelfAndCampusFixtures) {
   RPT_REQUIRE_SHARED_DATA("shelf/calibration_shelf.json");
   RPT_REQUIRE_SHARED_DATA("campus/calibration_campus.json");
+  InputWarnings shelf_warnings;
   const std::vector<Camera> shelf =
-      ReadVoxelPoseCalibration(test::SharedData("shelf/calibration_shelf.json"), 1032, 776);
+      ReadVoxelPoseCalibration(test::SharedData("shelf/calibration_shelf.json"), 1032, 776, &shelf_warnings);
   ASSERT_EQ(shelf.size(), 5u);
+  // Its rotations have 6 decimals (max |R^T R - I| ~1.1e-6): all five are corrected and counted.
+  test::ExpectOneWarning(shelf_warnings, test::SharedData("shelf/calibration_shelf.json").string(),
+                         test::kRotationsFixed, 5);
   for (size_t c = 0; c < shelf.size(); ++c) {
     EXPECT_EQ(shelf[c].name, std::to_string(c));
     EXPECT_EQ(shelf[c].model, DistortionModel::kNone);
@@ -201,9 +221,11 @@ TEST(VoxelPoseCalibration, ShelfAndCampusFixtures) {
   EXPECT_NEAR(shelf[0].t.y(), 0.9720, 1e-4);
   EXPECT_NEAR(shelf[0].t.z(), 2.6245, 1e-4);
 
+  InputWarnings campus_warnings;
   const std::vector<Camera> campus =
-      ReadVoxelPoseCalibration(test::SharedData("campus/calibration_campus.json"), 360, 288);
+      ReadVoxelPoseCalibration(test::SharedData("campus/calibration_campus.json"), 360, 288, &campus_warnings);
   ASSERT_EQ(campus.size(), 3u);
+  EXPECT_TRUE(campus_warnings.empty()) << "exact to round-off: nothing to report";
   EXPECT_EQ(campus[2].name, "2");
 }
 
