@@ -288,7 +288,9 @@ Poses3D ReadGtFrame(const fs::path& path) {
 }
 
 // One view of the 2D cache: a list of dicts with 'keypoints' (133, 3) = x, y, confidence.
-Poses2D ReadCacheView(const fs::path& path) {
+// Confidences in (1, 1.5] are clamped to 1 and counted under `cache_dir` (one warning line for the
+// sequence's cache folder, not one per file).
+Poses2D ReadCacheView(const fs::path& path, const std::string& cache_dir, InputWarnings* warnings) {
   if (!fs::is_regular_file(path)) throw InputError(PathName(path) + ": 2D pose cache file not found");
   const io::PyView root = io::ReadNpy(path);
   Poses2D view;
@@ -306,14 +308,17 @@ Poses2D ReadCacheView(const fs::path& path) {
       if (!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]))) {
         keypoints.Fail("joint " + std::to_string(j) + ": NaN or infinite value");
       }
-      person.col(j) << p[0], p[1], std::clamp(p[2], 0.0, 1.0);
+      person.col(j) << p[0], p[1],
+          AcceptScore(p[2], cache_dir, warnings, [&] { return keypoints.Where() + ": joint " + std::to_string(j); });
     }
   }
   return view;
 }
 
+fs::path CacheDir(const SequenceDir& dir) { return dir.path / "processed_data" / "poses2d"; }
+
 fs::path CachePath(const SequenceDir& dir, const std::string& camera, int time_stamp) {
-  return dir.path / "processed_data" / "poses2d" / camera / "rgb" / (h36m_ego::Padded(time_stamp, 5) + ".npy");
+  return CacheDir(dir) / camera / "rgb" / (h36m_ego::Padded(time_stamp, 5) + ".npy");
 }
 
 }  // namespace
@@ -357,7 +362,10 @@ std::vector<Sequence> ReadEgohumans(const DatasetRequest& request) {
       frame.timestamp_s = (stamp - 1) / options.fps;
       frame.gt = ReadGtFrame(dir.path / "processed_data" / options.gt / (h36m_ego::Padded(stamp, 5) + ".npy"));
       if (options.detections) {
-        for (const Camera& camera : sequence.cameras) frame.views.push_back(ReadCacheView(CachePath(dir, camera.name, stamp)));
+        for (const Camera& camera : sequence.cameras) {
+          frame.views.push_back(
+              ReadCacheView(CachePath(dir, camera.name, stamp), PathName(CacheDir(dir)), &sequence.warnings));
+        }
       }
       sequence.frames.push_back(std::move(frame));
     }
@@ -381,7 +389,7 @@ Detections ReadEgohumansDetections(const DatasetRequest& request) {
       frame.frame_id = FrameId(dir, stamp);
       for (const Camera& camera : cameras) {
         frame.cameras.push_back(camera.name);
-        frame.views.push_back(ReadCacheView(CachePath(dir, camera.name, stamp)));
+        frame.views.push_back(ReadCacheView(CachePath(dir, camera.name, stamp), PathName(CacheDir(dir)), &detections.warnings));
       }
       detections.frames.push_back(std::move(frame));
     }

@@ -227,6 +227,7 @@ std::vector<Sequence> ReadShelfCampus(const ShelfCampusSpec& spec, const Dataset
     const std::filesystem::path pkl = request.root / spec.detections_file;
     const Detections detections = ReadVoxelPoseDetections(pkl, sequence, spec.name);
     AttachDetections(detections, pkl.string(), &sequence);
+    sequence.warnings.Merge(detections.warnings);
   }
   ValidateSequence(sequence, request.root.string());
   std::vector<Sequence> out;

@@ -290,7 +290,7 @@ Sequence TwoCameraSequence() {
 TEST(VoxelPoseDetections, KeysMapToFramesAndCameras) {
   test::TempDir dir;
   const auto path = dir.Write("pred.pkl", CachePickle({
-                                              {"0_5", {100, 200}, 1.25},  // score above 1 is clamped
+                                              {"0_5", {100, 200}, 1.25},  // above 1: clamped, counted
                                               {"1_5", {}},                // nothing detected
                                               {"3_5", {10}},              // camera not in the sequence
                                               {"0_7", {10}},              // frame not in the sequence
@@ -316,6 +316,34 @@ TEST(VoxelPoseDetections, KeysMapToFramesAndCameras) {
   EXPECT_EQ(f300.frame_id, "shelf_000300");
   EXPECT_EQ(f300.cameras, (std::vector<std::string>{"1"}));
   EXPECT_DOUBLE_EQ(f300.views[0].Person(0)(2, 0), 0.4);
+  // Two detections of key 0_5 with score 1.25; keys outside the sequence are not read.
+  test::ExpectOneWarning(detections.warnings, path.string(), test::kScoresClamped, 2);
+}
+
+TEST(VoxelPoseDetections, ScoresSlightlyAboveOneAreClampedAndCounted) {
+  test::TempDir dir;
+  const auto path = dir.Write("pred.pkl", CachePickle({{"0_5", {100}, 1.008}, {"1_5", {100}, 1.018}, {"0_6", {7}, 1.0}}));
+  const Detections detections = ReadVoxelPoseDetections(path, TwoCameraSequence(), "shelf");
+  ASSERT_EQ(detections.frames.size(), 2u);
+  EXPECT_EQ(detections.frames[0].views[0].Person(0)(2, 0), 1.0);
+  EXPECT_EQ(detections.frames[0].views[1].Person(0)(2, 0), 1.0);
+  EXPECT_EQ(detections.frames[1].views[0].Person(0)(2, 0), 1.0);
+  test::ExpectOneWarning(detections.warnings, path.string(), test::kScoresClamped, 2);
+  EXPECT_DOUBLE_EQ(detections.warnings.items()[0].worst, 1.018);
+}
+
+TEST(VoxelPoseDetections, NegativeLargeOrNanScoresNameFileAndKey) {
+  test::TempDir dir;
+  const Sequence sequence = TwoCameraSequence();
+  for (const double score : {1.6, -0.1}) {
+    const auto path = dir.Write("bad.pkl", CachePickle({{"0_5", {100}, 0.9}, {"1_6", {100}, score}}));
+    EXPECT_THAT(test::InputErrorOf([&] { ReadVoxelPoseDetections(path, sequence, "shelf"); }),
+                HasSubstr(path.string() + ": key '1_6'[0].pred: row 0: score " + (score > 0 ? "1.6" : "-0.1") +
+                          " outside [0, 1]"));
+  }
+  const auto nan = dir.Write("nan.pkl", CachePickle({{"1_6", {100}, std::nan("")}}));
+  EXPECT_THAT(test::InputErrorOf([&] { ReadVoxelPoseDetections(nan, sequence, "shelf"); }),
+              HasSubstr(nan.string() + ": key '1_6'[0].pred: contains NaN or infinity"));
 }
 
 TEST(VoxelPoseDetections, MalformedCacheNamesFileAndKey) {
