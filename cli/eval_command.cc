@@ -5,7 +5,6 @@
 #include <cstdio>
 #include <iostream>
 
-
 #include "cli/commands.h"
 #include "cli/config_args.h"
 #include "cli/load_input.h"
@@ -28,14 +27,17 @@ struct EvalArgs {
 
 void RunEval(const EvalArgs& args) {
   const Config config = ResolveConfig(args.config);
-  const std::vector<Sequence> sequences = LoadInput(args.input, /*require_detections=*/true);
+  InputWarnings warnings;
+  const std::vector<Sequence> sequences = LoadInput(args.input, /*require_detections=*/true, &warnings);
+  PrintInputWarnings(warnings);
   RunOptions options;
   options.triangulator = config.triangulator;
   options.eval = config.metrics;
   options.threads = args.threads;
   options.progress = !args.quiet;
   const RunResult run = RunSequences(sequences, options);
-  const RunInfo info = CollectRunInfo(run.threads, CurrentCommandLine());
+  RunInfo info = CollectRunInfo(run.threads, CurrentCommandLine());
+  info.input_warnings = InputWarningLines(warnings);
   const std::string out_dir =
       !args.out.empty() ? args.out : "out/eval-" + (args.input.dataset.empty() ? "labels" : args.input.dataset);
   WriteEvalOutputs(out_dir, sequences, run, config, info);

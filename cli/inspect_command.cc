@@ -40,7 +40,9 @@ double ProjectedDistance(const Camera& camera, const Poses3D& gt, int g, const P
 }
 
 void RunInspect(const InspectArgs& args) {
-  const std::vector<Sequence> sequences = LoadInput(args.input, /*require_detections=*/false);
+  InputWarnings warnings;
+  const std::vector<Sequence> sequences = LoadInput(args.input, /*require_detections=*/false, &warnings);
+  PrintInputWarnings(warnings);
   nlohmann::ordered_json report = nlohmann::ordered_json::array();
   for (const Sequence& s : sequences) {
     long persons = 0, frames_with_views = 0;

@@ -42,6 +42,8 @@ void WritePredictions(const std::filesystem::path& path, const std::vector<Seque
 void WriteEvalOutputs(const std::filesystem::path& dir, const std::vector<Sequence>& sequences, const RunResult& run,
                       const Config& config, const RunInfo& info);
 
+// run.json: git revision, date, command, machine, threads, build, and "input_warnings" (the
+// readers' correction lines, [] when none).
 nlohmann::ordered_json RunInfoJson(const RunInfo& info);
 
 }  // namespace rpt::cli
