@@ -66,15 +66,15 @@ long InputWarnings::total() const {
 
 Eigen::Matrix3d AcceptRotation(const Eigen::Matrix3d& R, const std::string& source, const std::string& where,
                                InputWarnings* warnings) {
-  if (!R.allFinite()) throw InputError(where + ": not a rotation matrix (non-finite entries)");
+  if (!R.allFinite()) throw InputError(where + ": R is not a rotation (non-finite entries)");
   const double error = (R.transpose() * R - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
   if (!(error <= kMaxRotationError)) {
     std::ostringstream s;
-    s << where << ": not a rotation matrix (max |R^T R - I| = " << error << "; up to " << kMaxRotationError
+    s << where << ": R is not a rotation (max |R^T R - I| = " << error << ", at most " << kMaxRotationError
       << " is accepted and re-orthonormalised)";
     throw InputError(s.str());
   }
-  if (R.determinant() < 0) throw InputError(where + ": a reflection (det < 0), not a rotation matrix");
+  if (R.determinant() < 0) throw InputError(where + ": R is a reflection (det < 0), not a rotation");
   if (error <= kRotationRoundOff) return R;
   if (warnings != nullptr) warnings->Add(source, "rotations re-orthonormalised", "max |R^T R - I|", error);
   const Eigen::JacobiSVD<Eigen::Matrix3d> svd(R, Eigen::ComputeFullU | Eigen::ComputeFullV);

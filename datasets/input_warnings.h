@@ -53,8 +53,8 @@ class InputWarnings {
 };
 
 // The nearest rotation to `R` (SVD polar factor); `R` itself when it is orthonormal to round-off
-// (max |R^T R - I| <= kRotationRoundOff). Throws InputError "<where>: not a rotation matrix
-// (...)" when R has non-finite entries or max |R^T R - I| > kMaxRotationError, and "<where>: a
+// (max |R^T R - I| <= kRotationRoundOff). Throws InputError "<where>: R is not a rotation (...)"
+// when R has non-finite entries or max |R^T R - I| > kMaxRotationError, and "<where>: R is a
 // reflection ..." when det < 0; `where` names the file and the place of R. Corrections beyond
 // round-off are counted under `source` (the file) when `warnings` is given.
 Eigen::Matrix3d AcceptRotation(const Eigen::Matrix3d& R, const std::string& source, const std::string& where,

@@ -67,7 +67,7 @@ std::vector<Camera> LearnableTriCameras(const io::PyView& labels, const std::str
     // File convention: R world->camera (float32), t = -R C in millimetres, K 3x3, dist (k1 k2 p1 p2 k3).
     const Eigen::Matrix3d R =
         AcceptRotation(Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(&R_all[9 * k]), labels.source(),
-                       cameras.Where() + " [" + subject + ", " + id + "]: R", warnings);
+                       cameras.Where() + " [" + subject + ", " + id + "]", warnings);
     const Eigen::Vector3d t_mm(t_all[3 * k], t_all[3 * k + 1], t_all[3 * k + 2]);
     const Eigen::Vector3d center_m = -R.transpose() * t_mm / 1000.0;
     const double* K = &K_all[9 * k];

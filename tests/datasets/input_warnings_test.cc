@@ -48,15 +48,15 @@ TEST(AcceptRotation, RoundOffIsKeptAsItIsAndNotCounted) {
 TEST(AcceptRotation, FartherThanTheToleranceIsAnErrorNamingThePlace) {
   InputWarnings warnings;
   EXPECT_THAT(InputErrorOf([&] { AcceptRotation(test::WrongRotation(SomeRotation()), "cal.json", "cal.json: /3/R", &warnings); }),
-              HasSubstr("cal.json: /3/R: not a rotation matrix (max |R^T R - I| = 0.010025; up to 0.001 is accepted"));
+              HasSubstr("cal.json: /3/R: R is not a rotation (max |R^T R - I| = 0.010025, at most 0.001 is accepted"));
   Eigen::Matrix3d mirror = SomeRotation();
   mirror.row(1) *= -1;
   EXPECT_THAT(InputErrorOf([&] { AcceptRotation(mirror, "cal.json", "cal.json: /3/R", &warnings); }),
-              HasSubstr("cal.json: /3/R: a reflection (det < 0)"));
+              HasSubstr("cal.json: /3/R: R is a reflection (det < 0)"));
   Eigen::Matrix3d nan = SomeRotation();
   nan(2, 1) = std::nan("");
   EXPECT_THAT(InputErrorOf([&] { AcceptRotation(nan, "cal.json", "cal.json: /3/R", &warnings); }),
-              HasSubstr("cal.json: /3/R: not a rotation matrix (non-finite entries)"));
+              HasSubstr("cal.json: /3/R: R is not a rotation (non-finite entries)"));
   // Just inside and just outside the bound (max |R^T R - I| = s^2 - 1).
   EXPECT_NO_THROW(AcceptRotation(std::sqrt(1 + 0.99e-3) * SomeRotation(), "c", "c", &warnings));
   EXPECT_THROW(AcceptRotation(std::sqrt(1 + 1.01e-3) * SomeRotation(), "c", "c", &warnings), InputError);

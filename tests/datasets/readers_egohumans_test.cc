@@ -351,7 +351,7 @@ TEST(EgohumansReader, RotationsBeyondTheToleranceNameFileAndLine) {
   EXPECT_THAT(InputErrorOf([&] { ReadEgohumans(Request(dir.path())); }),
               HasSubstr("images.txt:5 composed with " +
                         (dir.path() / "01_tagging" / "001_tagging" / "colmap" / "workplace" / "colmap_from_aria_transforms.pkl").string() +
-                        "['aria01']: camera_from_anchor / scale: not a rotation matrix"));
+                        "['aria01']: camera_from_anchor / scale: R is not a rotation"));
 }
 
 TEST(EgohumansReader, CacheScoresSlightlyAboveOneAreClampedAndCounted) {

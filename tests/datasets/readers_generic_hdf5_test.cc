@@ -212,7 +212,7 @@ TEST(Hdf5Cache, CameraRotationsWithSixDigitsAreReorthonormalisedAndCounted) {
     editor.PutDoubles("/sequences/0/camera_R", editor.Dims("/sequences/0/camera_R"), R);
   }
   EXPECT_THAT(InputErrorOf([&] { ReadSequencesHdf5(path); }),
-              HasSubstr(path.string() + ": /sequences/0/camera_R: camera 1 ('cam_b'): not a rotation matrix"));
+              HasSubstr(path.string() + ": /sequences/0/camera_R: camera 1 ('cam_b'): R is not a rotation"));
 }
 
 TEST(Hdf5Cache, DetectionScoresSlightlyAboveOneAreClampedAndCounted) {

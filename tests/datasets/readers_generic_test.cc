@@ -195,7 +195,7 @@ TEST(GenericLabels, RotationFartherThanTheToleranceNamesFileAndCamera) {
   const auto path = WriteText(dir, "l.json", "[" + LabelWithR("a0", "A", RotationJson(exact, 17)) + "," +
                                                  LabelWithR("b0", "B", RotationJson(test::WrongRotation(exact), 17)) + "]");
   EXPECT_THAT(InputErrorOf([&] { ReadLabels(path); }),
-              HasSubstr(path.string() + ": /1/cameras/0/R: not a rotation matrix (max |R^T R - I| = 0.010025"));
+              HasSubstr(path.string() + ": /1/cameras/0/R: R is not a rotation (max |R^T R - I| = 0.010025"));
 }
 
 TEST(GenericLabels, MalformedFilesNameFileAndPlace) {
@@ -221,7 +221,7 @@ TEST(GenericLabels, MalformedFilesNameFileAndPlace) {
   EXPECT_THAT(InputErrorOf([&] { ReadLabels(with(R"("width": 1000)", R"("width": "wide")")); }),
               HasSubstr("/0/cameras/0/width: expected an integer"));
   EXPECT_THAT(InputErrorOf([&] { ReadLabels(with(R"([[1, 0, 0], [0, 1, 0], [0, 0, 1]])", R"([[2, 0, 0], [0, 1, 0], [0, 0, 1]])")); }),
-              HasSubstr("bad.json: /0/cameras/0/R: not a rotation matrix (max |R^T R - I| = 3"));
+              HasSubstr("bad.json: /0/cameras/0/R: R is not a rotation (max |R^T R - I| = 3"));
   const auto duplicate = WriteText(dir, "dup.json", "[" + Label("f0", "scene", "S", 0) + "," + Label("f0", "scene", "T", 0) + "]");
   EXPECT_THAT(InputErrorOf([&] { ReadLabels(duplicate); }), HasSubstr("dup.json: /1/id: id 'f0' is also used by label 0"));
   const auto object = WriteText(dir, "object.json", "{\"frames\": []}");

@@ -215,7 +215,7 @@ TEST(H3wbReader, NpzRotationBeyondTheToleranceNamesFileAndCamera) {
   test::TempDir dir;
   WriteNpz(dir.path(), {.wrong_rotation_camera = 3});
   EXPECT_THAT(test::InputErrorOf([&] { ReadH3wb(Request(dir.path())); }),
-              HasSubstr("h3wb_train.npz[metadata.npy]: key 'S8'['60457274'].R: not a rotation matrix (max |R^T R - I| = 0.0100"));
+              HasSubstr("h3wb_train.npz[metadata.npy]: key 'S8'['60457274'].R: R is not a rotation (max |R^T R - I| = 0.0100"));
 }
 
 TEST(H3wbReader, NpzGlobalUnits) {

@@ -249,7 +249,7 @@ TEST(Human36mCameras, PickleRotationBeyondTheToleranceNamesFileAndCamera) {
                      return c == 2 ? test::WrongRotation(R) : R;
                    }));
   EXPECT_THAT(InputErrorOf([&] { ReadHuman36mCameras(pkl, "S1"); }),
-              HasSubstr(pkl.string() + ": key ('S1', '58860488').R: not a rotation matrix (max |R^T R - I| = 0.010025"));
+              HasSubstr(pkl.string() + ": key ('S1', '58860488').R: R is not a rotation (max |R^T R - I| = 0.010025"));
 }
 
 // ---------------------------------------------------------------------------------------
@@ -522,7 +522,7 @@ TEST(Human36mReader, LearnableTriangulationLabelsMalformed) {
   // A camera rotation 1e-2 off is a wrong matrix, not float32 rounding.
   test::WriteBytes(labels, LabelsNpy({"S9"}, {"Directions-1"}, {{0, 0, 1}}, -1, 1));
   EXPECT_THAT(InputErrorOf([&] { ReadHuman36m(Request(dir.path(), {{"subjects", "S9"}})); }),
-              HasSubstr("labels-GTbboxes.npy: key 'cameras' [S9, 55011271]: R: not a rotation matrix (max |R^T R - I| = 0.0100"));
+              HasSubstr("labels-GTbboxes.npy: key 'cameras' [S9, 55011271]: R is not a rotation (max |R^T R - I| = 0.0100"));
   // Nothing at all under root.
   fs::remove(labels);
   EXPECT_THAT(InputErrorOf([&] { ReadHuman36m(Request(dir.path(), {{"subjects", "S9"}})); }), HasSubstr("no Human3.6M labels found"));

@@ -384,7 +384,7 @@ TEST(PanopticReader, MalformedInputNamesFileAndPlace) {
               HasSubstr("calibration_seqA.json: /cameras/0/R: missing"));
   WriteSequence(dir.path(), CalibrationJson("[[1, 0, 0], [0, 1.2, 0], [0, 0, 1]]"));
   EXPECT_THAT(test::InputErrorOf([&] { ReadPanoptic(Request(dir.path(), base)); }),
-              HasSubstr("calibration_seqA.json: /cameras/0/R (camera '00_00'): not a rotation matrix (max |R^T R - I| = 0.44"));
+              HasSubstr("calibration_seqA.json: /cameras/0/R (camera '00_00'): R is not a rotation (max |R^T R - I| = 0.44"));
   std::filesystem::remove(dir.path() / "seqA" / "calibration_seqA.json");
   EXPECT_THAT(test::InputErrorOf([&] { ReadPanoptic(Request(dir.path(), base)); }),
               HasSubstr("calibration_seqA.json: file not found"));
@@ -420,7 +420,7 @@ TEST(PanopticReader, RotationsWithSixDigitsAreReorthonormalisedAndCounted) {
   WriteSequence(dir.path(), CalibrationJson("[[1.005, 0, 0], [0, 1.005, 0], [0, 0, 1.005]]"));
   EXPECT_THAT(test::InputErrorOf([&] { ReadPanoptic(Request(dir.path(), params)); }),
               HasSubstr((dir.path() / "seqA" / "calibration_seqA.json").string() +
-                        ": /cameras/0/R (camera '00_00'): not a rotation matrix (max |R^T R - I| = 0.010025"));
+                        ": /cameras/0/R (camera '00_00'): R is not a rotation (max |R^T R - I| = 0.010025"));
 }
 
 TEST(PanopticReader, BadParamsAreConfigErrors) {

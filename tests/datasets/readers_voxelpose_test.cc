@@ -155,7 +155,7 @@ TEST(VoxelPoseCalibration, RotationBeyondTheToleranceNamesFileAndCamera) {
                                   VoxelPoseCamera(test::WrongRotation(SomeRotation(0.4)), Eigen::Vector3d(0, 0, 0), "") + "}");
   InputWarnings warnings;
   EXPECT_THAT(test::InputErrorOf([&] { ReadVoxelPoseCalibration(path, 360, 288, &warnings); }),
-              HasSubstr(path.string() + ": /1/R: not a rotation matrix (max |R^T R - I| = 0.010025"));
+              HasSubstr(path.string() + ": /1/R: R is not a rotation (max |R^T R - I| = 0.010025"));
 }
 
 TEST(VoxelPoseCalibration, MalformedFilesNameFileAndPlace) {
@@ -175,14 +175,14 @@ TEST(VoxelPoseCalibration, MalformedFilesNameFileAndPlace) {
       WriteText(dir.path() / "scaled.json",
                 "{\"0\": " + VoxelPoseCamera(1.1 * SomeRotation(0.3), Eigen::Vector3d(1, 2, 3), "") + "}");
   EXPECT_THAT(test::InputErrorOf([&] { ReadVoxelPoseCalibration(scaled, 1032, 776); }),
-              HasSubstr(scaled.string() + ": /0/R: not a rotation matrix (max |R^T R - I| = 0.21"));
+              HasSubstr(scaled.string() + ": /0/R: R is not a rotation (max |R^T R - I| = 0.21"));
 
   Eigen::Matrix3d mirror = SomeRotation(0.3);
   mirror.row(2) *= -1;
   const auto reflection =
       WriteText(dir.path() / "mirror.json", "{\"0\": " + VoxelPoseCamera(mirror, Eigen::Vector3d(1, 2, 3), "") + "}");
   EXPECT_THAT(test::InputErrorOf([&] { ReadVoxelPoseCalibration(reflection, 1032, 776); }),
-              HasSubstr(reflection.string() + ": /0/R: a reflection"));
+              HasSubstr(reflection.string() + ": /0/R: R is a reflection"));
 
   const auto short_k = WriteText(
       dir.path() / "k.json",
