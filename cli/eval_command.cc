@@ -6,7 +6,6 @@
 #include <cstdio>
 #include <iostream>
 
-
 #include "cli/commands.h"
 #include "cli/config_args.h"
 #include "cli/diagnostics.h"
@@ -30,14 +29,17 @@ struct EvalArgs {
 
 void RunEval(const EvalArgs& args) {
   const Config config = ResolveConfig(args.config);
-  const std::vector<Sequence> sequences = LoadInput(args.input, /*require_detections=*/true);
+  InputWarnings warnings;
+  const std::vector<Sequence> sequences = LoadInput(args.input, /*require_detections=*/true, &warnings);
+  PrintInputWarnings(warnings);
   RunOptions options;
   options.triangulator = config.triangulator;
   options.eval = config.metrics;
   options.threads = args.threads;
   options.progress = !args.quiet;
   const RunResult run = RunSequences(sequences, options);
-  const RunInfo info = CollectRunInfo(run.threads, CurrentCommandLine());
+  RunInfo info = CollectRunInfo(run.threads, CurrentCommandLine());
+  info.input_warnings = InputWarningLines(warnings);
   const std::string out_dir =
       !args.out.empty() ? args.out : "out/eval-" + (args.input.dataset.empty() ? "labels" : args.input.dataset);
   DetectionCheckOptions check_options;
