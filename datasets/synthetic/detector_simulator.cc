@@ -34,28 +34,6 @@ struct Candidate {
 
 }  // namespace
 
-DetectorOptions DetectorOptions::Perfect() {
-  DetectorOptions options;
-  options.noise_relative = 0.0;
-  options.noise_absolute_px = 0.0;
-  options.outlier_probability = 0.0;
-  options.outlier_relative = 0.0;
-  options.joint_dropout = 0.0;
-  options.person_miss = 0.0;
-  options.false_positives_per_view = 0.0;
-  options.false_positive_score_scale = 1.0;
-  options.left_right_swap = 0.0;
-  options.min_visible_joints = 1;
-  options.score_base = 1.0;
-  options.score_error_slope = 0.0;
-  options.score_jitter = 0.0;
-  options.score_min = 1.0;
-  options.shuffle_persons = false;
-  return options;
-}
-
-DetectorOptions DetectorOptions::Realistic() { return DetectorOptions(); }
-
 DetectorSimulator::DetectorSimulator(DetectorOptions options, JointNames output_joints, uint64_t seed)
     : options_(std::move(options)), output_joints_(std::move(output_joints)), seed_(seed) {
   const int num_joints = static_cast<int>(output_joints_.size());
@@ -130,6 +108,35 @@ bool DetectPerson(const DetectorOptions& options, const ViewContext& view, const
   return true;
 }
 
+// The simulator's 2D label of GT person `p` (appended to `out` when a joint is in the image).
+void LabelPerson(const ViewContext& view, const Eigen::Matrix3Xd& points, const std::vector<char>& present,
+                 const std::vector<int>& from_gt, int num_gt_joints, int p, std::vector<PersonLabel2D>* out) {
+  const Camera& camera = *view.camera;
+  PersonLabel2D label;
+  label.gt_person = p;
+  Eigen::Vector2d lo = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector2d hi = -lo;
+  bool any = false;
+  for (size_t k = 0; k < from_gt.size(); ++k) {
+    if (!present[k]) continue;
+    const Eigen::Vector3d p_cam = camera.R * points.col(k) + camera.t;
+    if (!(p_cam.z() > 0.0) || std::hypot(p_cam.x(), p_cam.y()) / p_cam.z() >= view.max_radius) continue;
+    Eigen::Vector2d uv;
+    if (!camera.Project(points.col(k), &uv) || !uv.allFinite()) continue;
+    lo = lo.cwiseMin(uv);
+    hi = hi.cwiseMax(uv);
+    if (uv.x() >= 0.0 && uv.x() < camera.width && uv.y() >= 0.0 && uv.y() < camera.height) {
+      if (label.visibility.empty()) label.visibility.assign(num_gt_joints, kLabelAbsent);
+      label.visibility[from_gt[k]] = kLabelVisible;
+      any = true;
+    }
+  }
+  if (!any) return;
+  const Eigen::Vector2d size(camera.width, camera.height);
+  label.box_px << lo.cwiseMax(Eigen::Vector2d::Zero()).cwiseMin(size), hi.cwiseMax(Eigen::Vector2d::Zero()).cwiseMin(size);
+  out->push_back(std::move(label));
+}
+
 // A random person placed in front of the camera (built in the camera frame, so the world's up
 // direction does not matter), as world points per output joint.
 void RandomPersonInView(const Camera& camera, const std::vector<int>& from_whole_body, Rng& rng,
@@ -168,7 +175,8 @@ void RandomPersonInView(const Camera& camera, const std::vector<int>& from_whole
 
 void DetectorSimulator::Detect(std::span<const Camera> cameras, const Poses3D& gt, const JointNames& gt_joints,
                                uint64_t frame_index, std::vector<Poses2D>* views,
-                               std::vector<std::vector<DetectionSource>>* sources) const {
+                               std::vector<std::vector<DetectionSource>>* sources,
+                               std::vector<std::vector<PersonLabel2D>>* labels) const {
   if (gt.num_persons() > 0 && gt.num_joints != static_cast<int>(gt_joints.size())) {
     throw InputError("detector simulator: ground truth has " + std::to_string(gt.num_joints) + " joints but " +
                      std::to_string(gt_joints.size()) + " joint names");
@@ -179,6 +187,7 @@ void DetectorSimulator::Detect(std::span<const Camera> cameras, const Poses3D& g
 
   views->resize(cameras.size());
   if (sources != nullptr) sources->assign(cameras.size(), {});
+  if (labels != nullptr) labels->assign(cameras.size(), {});
   Eigen::Matrix3Xd points(3, num_joints);
   std::vector<char> present(num_joints);
   std::vector<Candidate> candidates;
@@ -195,6 +204,7 @@ void DetectorSimulator::Detect(std::span<const Camera> cameras, const Poses3D& g
         present[k] = g >= 0 && person(3, g) > kPresentScore && person.col(g).head<3>().allFinite();
         points.col(k) = g >= 0 ? Eigen::Vector3d(person.col(g).head<3>()) : Eigen::Vector3d::Zero();
       }
+      if (labels != nullptr) LabelPerson(view, points, present, from_gt, static_cast<int>(gt_joints.size()), p, &(*labels)[c]);
       Candidate candidate;
       if (!DetectPerson(options_, view, points, present, rng, &candidate.joints)) continue;
       if (options_.person_miss > 0.0 && rng.Bernoulli(options_.person_miss)) continue;
