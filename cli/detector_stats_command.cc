@@ -57,38 +57,40 @@ Json StatsJson(const DetectorStats& s) {
   j["total"] = ViewJson(s.total);
   j["persons_in_view"] = s.persons_in_view;
   j["persons_truncated"] = s.persons_truncated;
-  const char* classes[3] = {"mostly_visible", "mostly_occluded", "not_labelled"};
+  const char* classes[3] = {"mostly_visible", "mostly_hidden", "unknown"};
   for (int c = 0; c < 3; ++c) {
     j["detection_by_label"][classes[c]] = Json{{"persons", s.persons_by_label[c]},
                                                {"detected", s.detected_by_label[c]},
                                                {"rate", s.detection_rate_by_label[c]}};
   }
-  j["truncated_share"] = s.truncated_share;
   j["box_diagonal_px_median"] = s.box_diagonal_px_median;
   j["box_diagonal_px_median_truncated"] = s.box_diagonal_px_median_truncated;
   j["error"] = Json{{"all", SummaryJson(s.all)},
-                    {"visible", SummaryJson(s.visible)},
-                    {"occluded", SummaryJson(s.occluded)},
-                    {"unlabelled", SummaryJson(s.unlabelled)},
+                    {"hidden", SummaryJson(s.hidden)},
                     {"clear_persons", SummaryJson(s.clear_persons)},
                     {"hidden_persons", SummaryJson(s.hidden_persons)},
                     {"confidence_low", SummaryJson(s.confidence_low)},
                     {"confidence_mid", SummaryJson(s.confidence_mid)},
                     {"confidence_high", SummaryJson(s.confidence_high)}};
+  j["by_visibility"] = Json::object();
+  for (int v = 0; v < detector_stats::kNumVisibilities; ++v) {
+    const detector_stats::VisibilityStats& b = s.by_visibility[v];
+    j["by_visibility"][detector_stats::VisibilityName(v)] = Json{{"joints", b.joints},
+                                                                  {"of_detected", b.of_detected},
+                                                                  {"missing", b.missing},
+                                                                  {"missing_rate", b.missing_rate()},
+                                                                  {"confidence_mean", b.confidence_mean},
+                                                                  {"confidence_histogram", b.confidence_histogram},
+                                                                  {"error", SummaryJson(b.error)}};
+  }
+  j["hidden_share"] = s.hidden_share;
   j["joints_in_image"] = s.joints_in_image;
   j["joints_missing"] = s.joints_missing;
   j["missing_rate"] = s.missing_rate;
-  j["missing_rate_visible"] = s.missing_rate_visible;
-  j["missing_rate_occluded"] = s.missing_rate_occluded;
   j["reported_outside"] = s.reported_outside;
-  j["labelled_joints"] = s.labelled_joints;
-  j["occluded_joints"] = s.occluded_joints;
-  j["occluded_share"] = s.occluded_share;
   j["confidence_histogram"] = s.confidence_histogram;
   j["confidence_mean"] = s.confidence_mean;
   j["confidence_median"] = s.confidence_median;
-  j["confidence_mean_visible"] = s.confidence_mean_visible;
-  j["confidence_mean_occluded"] = s.confidence_mean_occluded;
   j["false_positive_confidence_mean"] = s.false_positive_confidence_mean;
   j["false_positive_joints_mean"] = s.false_positive_joints_mean;
   j["detected_joints_mean"] = s.detected_joints_mean;
@@ -101,6 +103,9 @@ Json StatsJson(const DetectorStats& s) {
                                   {"error", SummaryJson(p.error)},
                                   {"in_image", p.in_image},
                                   {"missing", p.missing},
+                                  {"hidden", p.hidden},
+                                  {"hidden_missing", p.hidden_missing},
+                                  {"confidence_mean", p.confidence_mean},
                                   {"down_count", p.down_count},
                                   {"down_mean", p.down_mean},
                                   {"down_median", p.down_median},
@@ -140,7 +145,7 @@ void PrintMarkdown(const DetectorStats& s, const std::string& input) {
   };
   for (const ViewStats& v : s.views) row(v);
   row(s.total);
-  std::printf("\nDetection rate by the 2D label: mostly visible %s of %ld, mostly occluded %s of %ld, not labelled %s of %ld.\n",
+  std::printf("\nDetection rate by the 2D labels: mostly visible %s of %ld, mostly hidden %s of %ld, no labels %s of %ld.\n",
               Percent(s.detection_rate_by_label[0]).c_str(), s.persons_by_label[0],
               Percent(s.detection_rate_by_label[1]).c_str(), s.persons_by_label[1],
               Percent(s.detection_rate_by_label[2]).c_str(), s.persons_by_label[2]);
@@ -148,21 +153,32 @@ void PrintMarkdown(const DetectorStats& s, const std::string& input) {
   std::printf("\n## Joint errors (box units)\n\n");
   std::printf("| joints | count | median | p90 | p99 | mean |\n|---|---:|---:|---:|---:|---:|\n");
   PrintErrorRow("all", s.all);
-  PrintErrorRow("visible (2D label)", s.visible);
-  PrintErrorRow("occluded (2D label)", s.occluded);
-  PrintErrorRow("no 2D label", s.unlabelled);
-  PrintErrorRow("persons neither truncated nor occluded", s.clear_persons);
-  PrintErrorRow("persons truncated or partly occluded", s.hidden_persons);
+  for (int v = 0; v < detector_stats::kNumVisibilities; ++v) {
+    const std::string name = std::string(detector_stats::VisibilityName(v)) + " (2D label)";
+    PrintErrorRow(name.c_str(), s.by_visibility[v].error);
+  }
+  PrintErrorRow("hidden: occluded or not labelled", s.hidden);
+  PrintErrorRow("persons neither truncated nor hidden", s.clear_persons);
+  PrintErrorRow("persons truncated or partly hidden", s.hidden_persons);
   PrintErrorRow("confidence <= 0.5", s.confidence_low);
   PrintErrorRow("confidence 0.5-0.9", s.confidence_mid);
   PrintErrorRow("confidence >= 0.9", s.confidence_high);
 
+  std::printf("\n## By 2D label (in-image statistic joints of GT persons in view)\n\n");
+  std::printf("| label | joints | share | missing (detected persons) | confidence mean |\n|---|---:|---:|---:|---:|\n");
+  long labelled = 0;
+  for (int v = 0; v < detector_stats::kNumVisibilities; ++v) labelled += s.by_visibility[v].joints;
+  for (int v = 0; v < detector_stats::kNumVisibilities; ++v) {
+    const detector_stats::VisibilityStats& b = s.by_visibility[v];
+    std::printf("| %s | %ld | %s | %s of %ld | %.3f |\n", detector_stats::VisibilityName(v), b.joints,
+                Percent(labelled > 0 ? static_cast<double>(b.joints) / labelled : 0).c_str(),
+                Percent(b.missing_rate()).c_str(), b.of_detected, b.confidence_mean);
+  }
+
   std::printf("\n## Other statistics\n\n| statistic | value |\n|---|---|\n");
-  std::printf("| missing joints (in-image GT joints of detected persons) | %s of %ld (visible %s, occluded %s) |\n",
-              Percent(s.missing_rate).c_str(), s.joints_in_image, Percent(s.missing_rate_visible).c_str(),
-              Percent(s.missing_rate_occluded).c_str());
-  std::printf("| occluded share of 2D-labelled in-image joints | %s of %ld |\n", Percent(s.occluded_share).c_str(),
-              s.labelled_joints);
+  std::printf("| missing joints (in-image GT joints of detected persons) | %s of %ld |\n",
+              Percent(s.missing_rate).c_str(), s.joints_in_image);
+  std::printf("| hidden share (occluded or not labelled, views with 2D labels) | %s |\n", Percent(s.hidden_share).c_str());
   std::printf("| truncated persons (a joint outside the image) | %s of %ld |\n", Percent(s.truncated_share).c_str(),
               s.persons_in_view);
   std::printf("| box diagonal, median px (whole / truncated persons) | %.0f / %.0f |\n", s.box_diagonal_px_median,
@@ -170,13 +186,10 @@ void PrintMarkdown(const DetectorStats& s, const std::string& input) {
   std::printf("| left/right swaps (closer to the mirrored GT joint) | %s of %ld |\n", Percent(s.swap_rate).c_str(),
               s.swap_candidates);
   std::printf("| confidence mean / median | %.3f / %.3f |\n", s.confidence_mean, s.confidence_median);
-  std::printf("| confidence mean of visible / occluded joints | %.3f / %.3f |\n", s.confidence_mean_visible,
-              s.confidence_mean_occluded);
   std::printf("| confidence mean of false positives | %.3f |\n", s.false_positive_confidence_mean);
   std::printf("| reported statistic joints per detection (paired / false positive) | %.2f / %.2f |\n",
               s.detected_joints_mean, s.false_positive_joints_mean);
   std::printf("| reported joints whose GT is outside the image | %ld |\n", s.reported_outside);
-
   std::printf("\n## Confidence distribution (reported joints of detected persons)\n\n| bin |");
   for (int b = 0; b < 10; ++b) std::printf(" %.1f-%.1f |", b / 10.0, (b + 1) / 10.0);
   std::printf("\n|---|");
@@ -187,12 +200,14 @@ void PrintMarkdown(const DetectorStats& s, const std::string& input) {
   for (long n : s.confidence_histogram) std::printf(" %s |", Percent(total > 0 ? static_cast<double>(n) / total : 0).c_str());
 
   std::printf("\n\n## Per joint (box units; offsets: down = along shoulders->hips, out = away from the midline)\n\n");
-  std::printf("| joint | count | median | p90 | missing | down mean | down median | out mean | out median |\n");
-  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  std::printf("| joint | count | median | p90 | missing | hidden | missing of hidden | confidence | down mean | down median | out mean | out median |\n");
+  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  auto share = [](long a, long b) { return Percent(b > 0 ? static_cast<double>(a) / b : 0); };
   for (const detector_stats::JointStats& p : s.per_joint) {
-    std::printf("| %s | %ld | %.3f | %.3f | %s | %+.3f | %+.3f | %+.3f | %+.3f |\n", p.joint.c_str(), p.error.count,
-                p.error.median, p.error.p90, Percent(p.in_image > 0 ? static_cast<double>(p.missing) / p.in_image : 0).c_str(),
-                p.down_mean, p.down_median, p.out_mean, p.out_median);
+    std::printf("| %s | %ld | %.3f | %.3f | %s | %s | %s | %.3f | %+.3f | %+.3f | %+.3f | %+.3f |\n", p.joint.c_str(),
+                p.error.count, p.error.median, p.error.p90, share(p.missing, p.in_image).c_str(),
+                share(p.hidden, p.in_image).c_str(), share(p.hidden_missing, p.hidden).c_str(), p.confidence_mean, p.down_mean,
+                p.down_median, p.out_mean, p.out_median);
   }
 }
 
@@ -200,7 +215,8 @@ std::string Describe(const InputArgs& input) {
   std::string text = !input.dataset.empty() ? "dataset " + input.dataset : "labels " + input.labels;
   for (const std::string& param : input.params) text += " " + param;
   if (input.simulate) {
-    text += ", simulated detector '" + input.detector + "', seed " + std::to_string(input.seed);
+    const std::string profile = input.simulate_perfect ? "perfect" : input.detector.empty() ? "realistic" : input.detector;
+    text += ", simulated detector '" + profile + "', seed " + std::to_string(input.seed);
   } else if (!input.detections.empty()) {
     text += ", detections " + input.detections;
   } else {

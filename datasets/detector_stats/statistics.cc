@@ -61,6 +61,11 @@ double Ratio(long a, long b) { return b > 0 ? static_cast<double>(a) / static_ca
 
 }  // namespace
 
+const char* VisibilityName(int visibility) {
+  static const char* const kNames[kNumVisibilities] = {"visible", "occluded", "not labelled", "unknown"};
+  return visibility >= 0 && visibility < kNumVisibilities ? kNames[visibility] : "?";
+}
+
 double Percentile(std::vector<double> values, double q) {
   if (values.empty()) return 0;
   std::sort(values.begin(), values.end());
@@ -161,29 +166,30 @@ void StatsAccumulator::Add(const Sequence& sequence) {
       const Poses2D& detections = *associated;
       const Association association = Associate(persons, detections, det_index, options_.association);
 
+      const bool view_labelled = c < frame.labels_2d.size();
       for (size_t i = 0; i < persons.size(); ++i) {
         const ProjectedPerson& person = persons[i];
         if (person.num_in_image < options_.min_joints_in_image) continue;
         const PersonLabel2D* label = FindLabel(frame, c, person.gt_person);
-        auto flag = [&](int k) -> int8_t {
-          return label != nullptr && !label->visibility.empty() ? label->visibility[gt_index[k]]
-                                                                : static_cast<int8_t>(kLabelAbsent);
-        };
+        std::vector<int> visibility(num_joints, kUnknown);
+        int visible = 0, hidden = 0;
+        for (int k = 0; k < num_joints; ++k) {
+          if (!person.in_image[k]) continue;
+          if (view_labelled) {
+            const int8_t flag =
+                label != nullptr && !label->visibility.empty() ? label->visibility[gt_index[k]] : int8_t{kLabelAbsent};
+            visibility[k] = flag == kLabelVisible ? kVisible : flag == kLabelOccluded ? kOccluded : kNotLabelled;
+          }
+          ++by_visibility_[visibility[k]].joints;
+          visible += visibility[k] == kVisible;
+          hidden += visibility[k] == kOccluded || visibility[k] == kNotLabelled;
+        }
+        const int label_class = !view_labelled ? 2 : 2 * visible >= person.num_in_image ? 0 : 1;
         ++stats.gt_in_view;
         ++persons_in_view_;
+        ++persons_by_label_[label_class];
         persons_truncated_ += person.truncated;
         (person.truncated ? diagonals_truncated_ : diagonals_).push_back(person.diagonal);
-        int labelled = 0, occluded = 0;
-        for (int k = 0; k < num_joints; ++k) {
-          if (!person.in_image[k] || flag(k) == kLabelAbsent) continue;
-          ++labelled;
-          occluded += flag(k) == kLabelOccluded;
-        }
-        labelled_joints_ += labelled;
-        occluded_joints_ += occluded;
-        const bool any_occluded = occluded > 0;
-        const int label_class = labelled == 0 ? 2 : 2 * occluded > labelled ? 1 : 0;
-        ++persons_by_label_[label_class];
         const int d = association.detection_of_person[i];
         if (d < 0) continue;
         ++stats.detected;
@@ -192,7 +198,7 @@ void StatsAccumulator::Add(const Sequence& sequence) {
         ++detected_count_;
         for (int k = 0; k < num_joints; ++k) detected_joint_count_ += det(2, det_index[k]) > 0;
         const double diagonal = std::max(person.diagonal, 1.0);
-        const bool hidden = person.truncated || any_occluded;
+        const bool clear = !person.truncated && hidden == 0;
 
         // Body frame in the image: axis from the shoulder centre to the hip centre, lateral
         // towards the person's left.
@@ -219,16 +225,17 @@ void StatsAccumulator::Add(const Sequence& sequence) {
             continue;
           }
           JointSamples& samples = per_joint_[global[k]];
-          const int8_t visibility = flag(k);
+          VisibilitySamples& category = by_visibility_[visibility[k]];
+          const bool is_hidden = visibility[k] == kOccluded || visibility[k] == kNotLabelled;
           ++joints_in_image_;
           ++samples.in_image;
-          visible_in_image_ += visibility == kLabelVisible;
-          occluded_in_image_ += visibility == kLabelOccluded;
+          samples.hidden += is_hidden;
+          ++category.of_detected;
           if (!reported) {
             ++joints_missing_;
             ++samples.missing;
-            visible_missing_ += visibility == kLabelVisible;
-            occluded_missing_ += visibility == kLabelOccluded;
+            samples.hidden_missing += is_hidden;
+            ++category.missing;
             continue;
           }
           const Eigen::Vector2d error_px = det.col(j).head<2>() - person.uv.col(k);
@@ -236,18 +243,14 @@ void StatsAccumulator::Add(const Sequence& sequence) {
           const double score = det(2, j);
           all_.push_back(error);
           samples.error.push_back(error);
-          (visibility == kLabelVisible ? visible_ : visibility == kLabelOccluded ? occluded_ : unlabelled_).push_back(error);
-          (hidden ? hidden_ : clear_).push_back(error);
+          samples.confidence_sum += score;
+          category.error.push_back(error);
+          category.confidence_sum += score;
+          (clear ? clear_ : hidden_persons_).push_back(error);
           (score <= 0.5 ? low_ : score < 0.9 ? mid_ : high_).push_back(error);
           confidences_.push_back(score);
           ++histogram_[std::clamp(static_cast<int>(score * 10), 0, 9)];
-          if (visibility == kLabelVisible) {
-            confidence_sum_visible_ += score;
-            ++confidence_count_visible_;
-          } else if (visibility == kLabelOccluded) {
-            confidence_sum_occluded_ += score;
-            ++confidence_count_occluded_;
-          }
+          ++category.histogram[std::clamp(static_cast<int>(score * 10), 0, 9)];
           if (has_axis) samples.down.push_back(error_px.dot(axis) / diagonal);
           if (has_lateral) samples.out.push_back((side[k] < 0 ? -1.0 : 1.0) * error_px.dot(lateral) / diagonal);
           const int m = mirror[k];
@@ -311,29 +314,37 @@ DetectorStats StatsAccumulator::Finalize() const {
   out.box_diagonal_px_median = Percentile(diagonals_, 0.5);
   out.box_diagonal_px_median_truncated = Percentile(diagonals_truncated_, 0.5);
   out.all = Summarize(all_);
-  out.visible = Summarize(visible_);
-  out.occluded = Summarize(occluded_);
-  out.unlabelled = Summarize(unlabelled_);
+  std::vector<double> hidden;
+  long hidden_joints = 0, labelled_view_joints = 0;
+  for (int v = 0; v < kNumVisibilities; ++v) {
+    const VisibilitySamples& samples = by_visibility_[v];
+    VisibilityStats& stats = out.by_visibility[v];
+    stats.joints = samples.joints;
+    stats.of_detected = samples.of_detected;
+    stats.missing = samples.missing;
+    stats.error = Summarize(samples.error);
+    stats.confidence_mean = samples.error.empty() ? 0 : samples.confidence_sum / samples.error.size();
+    stats.confidence_histogram = samples.histogram;
+    if (v == kOccluded || v == kNotLabelled) {
+      hidden.insert(hidden.end(), samples.error.begin(), samples.error.end());
+      hidden_joints += samples.joints;
+    }
+    if (v != kUnknown) labelled_view_joints += samples.joints;
+  }
+  out.hidden = Summarize(hidden);
+  out.hidden_share = Ratio(hidden_joints, labelled_view_joints);
   out.clear_persons = Summarize(clear_);
-  out.hidden_persons = Summarize(hidden_);
+  out.hidden_persons = Summarize(hidden_persons_);
   out.confidence_low = Summarize(low_);
   out.confidence_mid = Summarize(mid_);
   out.confidence_high = Summarize(high_);
   out.joints_in_image = joints_in_image_;
   out.joints_missing = joints_missing_;
   out.missing_rate = Ratio(joints_missing_, joints_in_image_);
-  out.missing_rate_visible = Ratio(visible_missing_, visible_in_image_);
-  out.missing_rate_occluded = Ratio(occluded_missing_, occluded_in_image_);
   out.reported_outside = reported_outside_;
-  out.labelled_joints = labelled_joints_;
-  out.occluded_joints = occluded_joints_;
-  out.occluded_share = Ratio(occluded_joints_, labelled_joints_);
   out.confidence_histogram = histogram_;
   out.confidence_mean = Mean(confidences_);
   out.confidence_median = Percentile(confidences_, 0.5);
-  out.confidence_mean_visible = confidence_count_visible_ > 0 ? confidence_sum_visible_ / confidence_count_visible_ : 0;
-  out.confidence_mean_occluded =
-      confidence_count_occluded_ > 0 ? confidence_sum_occluded_ / confidence_count_occluded_ : 0;
   out.false_positive_confidence_mean = fp_confidence_count_ > 0 ? fp_confidence_sum_ / fp_confidence_count_ : 0;
   out.false_positive_joints_mean = Ratio(fp_confidence_count_, out.total.false_positives);
   out.detected_joints_mean = Ratio(detected_joint_count_, detected_count_);
@@ -347,6 +358,9 @@ DetectorStats StatsAccumulator::Finalize() const {
     j.error = Summarize(s.error);
     j.in_image = s.in_image;
     j.missing = s.missing;
+    j.hidden = s.hidden;
+    j.hidden_missing = s.hidden_missing;
+    j.confidence_mean = s.error.empty() ? 0 : s.confidence_sum / s.error.size();
     j.down_count = static_cast<long>(s.down.size());
     j.out_count = static_cast<long>(s.out.size());
     j.down_mean = Mean(s.down);

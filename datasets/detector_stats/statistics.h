@@ -57,11 +57,34 @@ struct ViewStats {
   double false_positives_per_view() const { return views > 0 ? static_cast<double>(false_positives) / views : 0; }
 };
 
+// How a dataset's 2D label (or the simulator) sees a GT joint that projects into the image.
+enum Visibility : int {
+  kVisible = 0,      // labelled visible
+  kOccluded = 1,     // labelled occluded
+  kNotLabelled = 2,  // the view has 2D labels, but not for this joint (MVOR: flag 0 or no label of the person)
+  kUnknown = 3,      // the view has no 2D labels at all (e.g. a dataset without them)
+};
+constexpr int kNumVisibilities = 4;
+const char* VisibilityName(int visibility);  // "visible", "occluded", "not labelled", "unknown"
+
+struct VisibilityStats {
+  long joints = 0;            // in-image statistic joints of GT persons in view
+  long of_detected = 0;       // of those, of persons paired with a detection
+  long missing = 0;           // of those, not reported
+  ErrorSummary error;
+  double confidence_mean = 0;
+  std::array<long, 10> confidence_histogram{};  // reported joints, bins of 0.1
+  double missing_rate() const { return of_detected > 0 ? static_cast<double>(missing) / of_detected : 0; }
+};
+
 struct JointStats {
   std::string joint;
   ErrorSummary error;
   long in_image = 0;       // GT joints in the image of paired persons
   long missing = 0;        // of those, not reported
+  long hidden = 0;         // of those, occluded or not labelled
+  long hidden_missing = 0; // of those, not reported
+  double confidence_mean = 0;  // of the reported ones
   // Systematic offset in box units in the person's image frame: "down" along the body axis
   // (shoulder centre -> hip centre), "out" across it, away from the body's midline for left/right
   // joints and towards the person's left for the others. Needs both GT shoulders and hips.
@@ -74,31 +97,30 @@ struct DetectorStats {
   std::vector<ViewStats> views; // per camera name, in order of appearance
   ViewStats total;              // camera "all"
 
-  // GT persons in view (over all views), and the detection rate by how the 2D label sees them:
-  // mostly visible (at least half of the labelled in-image statistic joints visible), mostly
-  // occluded, or not labelled (no 2D label, or none of its in-image statistic joints labelled).
+  // GT persons in view (over all views), and the detection rate by how the 2D labels see them:
+  // mostly visible (at least half of the in-image statistic joints kVisible), mostly hidden
+  // (occluded or not labelled), unknown (the view has no 2D labels).
   long persons_in_view = 0, persons_truncated = 0;
-  std::array<long, 3> persons_by_label{}, detected_by_label{};  // visible, occluded, not labelled
-  std::array<double, 3> detection_rate_by_label{};
   double truncated_share = 0;
+  std::array<long, 3> persons_by_label{}, detected_by_label{};
+  std::array<double, 3> detection_rate_by_label{};
   double box_diagonal_px_median = 0, box_diagonal_px_median_truncated = 0;
 
   // Relative joint errors.
   ErrorSummary all;
-  ErrorSummary visible, occluded, unlabelled;  // by the 2D label of the joint (visible / occluded / none)
-  ErrorSummary clear_persons;    // persons neither truncated nor with an occluded statistic joint
-  ErrorSummary hidden_persons;   // the others: truncated or partly occluded
+  std::array<VisibilityStats, kNumVisibilities> by_visibility;  // indexed by Visibility
+  ErrorSummary hidden;           // occluded or not labelled
+  double hidden_share = 0;       // (occluded + not labelled) / labelled-view joints, persons in view
+  ErrorSummary clear_persons;    // persons neither truncated nor with a hidden statistic joint
+  ErrorSummary hidden_persons;   // the others: truncated or partly hidden
   ErrorSummary confidence_low, confidence_mid, confidence_high;  // score <= 0.5, (0.5, 0.9), >= 0.9
 
   long joints_in_image = 0, joints_missing = 0;  // GT joints in the image of paired persons
-  double missing_rate = 0, missing_rate_visible = 0, missing_rate_occluded = 0;
+  double missing_rate = 0;
   long reported_outside = 0;   // reported joints whose GT joint is outside the image (not in the errors)
-  long labelled_joints = 0, occluded_joints = 0;  // in-image GT joints of persons in view that have a 2D label
-  double occluded_share = 0;
 
   std::array<long, 10> confidence_histogram{};  // reported joints, bins of 0.1 (1.0 in the last)
   double confidence_mean = 0, confidence_median = 0;
-  double confidence_mean_visible = 0, confidence_mean_occluded = 0;
   double false_positive_confidence_mean = 0;   // mean score of the reported statistic joints of false positives
   double false_positive_joints_mean = 0;       // mean number of reported statistic joints of false positives
   double detected_joints_mean = 0;             // the same for detections paired with a GT person in view
@@ -121,21 +143,25 @@ class StatsAccumulator {
   struct JointSamples {
     std::vector<double> error;
     std::vector<double> down, out;
-    long in_image = 0, missing = 0;
+    long in_image = 0, missing = 0, hidden = 0, hidden_missing = 0;
+    double confidence_sum = 0;
+  };
+  struct VisibilitySamples {
+    long joints = 0, of_detected = 0, missing = 0;
+    std::vector<double> error;
+    double confidence_sum = 0;
+    std::array<long, 10> histogram{};
   };
   StatsOptions options_;
   JointNames joints_;
   std::vector<JointSamples> per_joint_;
   std::vector<ViewStats> views_;
-  std::vector<double> all_, visible_, occluded_, unlabelled_, clear_, hidden_, low_, mid_, high_;
+  std::array<VisibilitySamples, kNumVisibilities> by_visibility_;
+  std::vector<double> all_, clear_, hidden_persons_, low_, mid_, high_;
   std::vector<double> diagonals_, diagonals_truncated_;
   std::vector<double> confidences_;
-  double confidence_sum_visible_ = 0, confidence_sum_occluded_ = 0;
-  long confidence_count_visible_ = 0, confidence_count_occluded_ = 0;
   long persons_in_view_ = 0, persons_truncated_ = 0;
-  long joints_in_image_ = 0, joints_missing_ = 0;
-  long visible_in_image_ = 0, visible_missing_ = 0, occluded_in_image_ = 0, occluded_missing_ = 0;
-  long reported_outside_ = 0, labelled_joints_ = 0, occluded_joints_ = 0;
+  long joints_in_image_ = 0, joints_missing_ = 0, reported_outside_ = 0;
   long swap_candidates_ = 0, swaps_ = 0;
   double fp_confidence_sum_ = 0;
   long fp_confidence_count_ = 0, detected_joint_count_ = 0, detected_count_ = 0;
