@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 // Simulated 2D pose detector: projects ground-truth 3D poses into each camera and corrupts them
 // like a real detector (noise, outliers, dropout, misses, false positives, left/right swaps,
-// truncation at the image border). Works on any ground truth: joints are matched by name.
+// truncation at the image border; with the fitted model also occluders, confidence-dependent
+// heavy-tailed errors, skeleton-definition offsets and calibration error; detector_options.h,
+// docs/detector_model.md). Works on any ground truth: joints are matched by name.
 #pragma once
 
 #include <cstdint>
@@ -13,6 +15,7 @@
 #include "core/joints.h"
 #include "core/poses.h"
 #include "datasets/sequence.h"
+#include "datasets/synthetic/detector_geometry.h"
 #include "datasets/synthetic/detector_options.h"
 
 namespace rpt::synthetic {
@@ -20,7 +23,8 @@ namespace rpt::synthetic {
 // Where a detected person came from.
 struct DetectionSource {
   int gt_person = -1;    // index into the Poses3D persons, -1 for a false positive
-  bool swapped = false;  // left/right joints exchanged
+  bool swapped = false;  // left/right joints exchanged (all of them)
+  int pairs_swapped = 0;  // left/right pairs exchanged one by one (fitted model's pair_swap)
 };
 
 class DetectorSimulator {
@@ -54,6 +58,12 @@ class DetectorSimulator {
   uint64_t seed_;
   std::vector<int> mirror_;             // left/right partner per output joint
   std::vector<int> from_whole_body_;    // per output joint: index in CocoWholeBodyJoints() or -1
+  std::vector<double> joint_factor_;    // per output joint: fitted error factor
+  std::vector<double> hidden_drop_;     // per output joint: fitted drop chance when hidden
+  std::vector<double> score_factor_;    // per output joint: fitted factor on the confidence
+  std::vector<ResolvedOffset> offsets_;  // skeleton-definition offsets of output joints
+  std::vector<Bone> bones_;             // silhouettes for the occlusion
+  std::vector<double> clutter_;         // per output joint: chance of being hidden by clutter
 };
 
 
