@@ -26,9 +26,8 @@ void AddInputOptions(CLI::App* command, InputArgs* args) {
   command->add_flag("--simulate", args->simulate, "simulate 2D detections from the ground truth");
   command->add_option("--detector", args->detector,
                       "with --simulate: detector profile " + Join(synthetic::DetectorProfileNames(), "|") +
-                          " (docs/detector_model.md)")
-      ->check(CLI::IsMember(synthetic::DetectorProfileNames()))
-      ->capture_default_str();
+                          " (default realistic; docs/detector_model.md)")
+      ->check(CLI::IsMember(synthetic::DetectorProfileNames()));
   command->add_flag("--simulate-perfect", args->simulate_perfect,
                     "deprecated: same as --detector perfect (exact projections, no noise)");
   command->add_option("--seed", args->seed, "seed of the simulated detector")->capture_default_str();
@@ -39,6 +38,13 @@ std::vector<Sequence> LoadInput(const InputArgs& args, bool require_detections) 
     throw ConfigError("give either --dataset NAME (with --root DIR) or --labels FILE");
   }
   if (args.simulate && !args.detections.empty()) throw ConfigError("--simulate and --detections exclude each other");
+  if (!args.simulate && (!args.detector.empty() || args.simulate_perfect)) {
+    throw ConfigError(std::string(args.simulate_perfect ? "--simulate-perfect" : "--detector") +
+                      " needs --simulate (the synthetic dataset takes --param noise=PROFILE)");
+  }
+  if (args.simulate_perfect && !args.detector.empty() && args.detector != "perfect") {
+    throw ConfigError("--simulate-perfect (deprecated) contradicts --detector " + args.detector);
+  }
   std::vector<Sequence> sequences;
   if (!args.labels.empty()) {
     sequences = ReadLabelsFile(args.labels, LabelsOptions{});
@@ -56,7 +62,7 @@ std::vector<Sequence> LoadInput(const InputArgs& args, bool require_detections) 
   if (args.simulate) {
     SimulationOptions simulation;
     simulation.seed = args.seed;
-    simulation.detector = args.simulate_perfect ? "perfect" : args.detector;
+    simulation.detector = args.simulate_perfect ? "perfect" : args.detector.empty() ? "realistic" : args.detector;
     for (Sequence& s : sequences) SimulateDetections(simulation, &s);
   } else if (!args.detections.empty() && std::filesystem::path(args.detections).extension() == ".pkl") {
     // VoxelPose caches are keyed "<camera>_<frame>": they need the sequence to map keys to ids.

@@ -20,7 +20,7 @@ struct InputArgs {
   std::string detections;           // detections file or folder
   bool simulate = false;            // simulated detections from the GT
   bool simulate_perfect = false;    // deprecated alias of detector = "perfect"
-  std::string detector = "realistic";  // simulated detector profile (synthetic::DetectorProfileNames())
+  std::string detector;             // simulated detector profile (synthetic::DetectorProfileNames()); empty = realistic
   uint64_t seed = 1;
 };
 
