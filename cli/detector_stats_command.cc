@@ -57,6 +57,7 @@ Json StatsJson(const DetectorStats& s) {
   j["total"] = ViewJson(s.total);
   j["persons_in_view"] = s.persons_in_view;
   j["persons_truncated"] = s.persons_truncated;
+  j["truncated_share"] = s.truncated_share;
   const char* classes[3] = {"mostly_visible", "mostly_hidden", "unknown"};
   for (int c = 0; c < 3; ++c) {
     j["detection_by_label"][classes[c]] = Json{{"persons", s.persons_by_label[c]},
