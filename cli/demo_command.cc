@@ -82,7 +82,7 @@ void RunDemo(DemoOptions o) {
   }
   std::printf("time per frame: median %.1f us, mean %.1f us (%.0f FPS, 2D to 3D, one thread)\n",
               run.timing.frame_us_median, run.timing.frame_us_mean, run.timing.fps);
-  PrintStepTimes(std::cout, run.timing);
+  PrintStepTimes(std::cout, run.timing, &run.counts);
 }
 
 }  // namespace

@@ -1,13 +1,15 @@
 // SPDX-License-Identifier: MIT
 // `rpt eval`: a dataset (or generic labels) through the triangulator and the metrics. Prints the
-// paper-style row and writes summary.{md,csv,json}, per_joint.csv, config.json, run.json and
-// predictions.json into the output folder.
+// paper-style row and writes summary.{md,csv,json}, per_joint.csv, steps.csv, config.json, run.json and
+// predictions.json into the output folder. Checks the input and the results and prints a
+// "warning: ..." line on stderr for each problem found (cli/diagnostics.h).
 #include <cstdio>
 #include <iostream>
 
 
 #include "cli/commands.h"
 #include "cli/config_args.h"
+#include "cli/diagnostics.h"
 #include "cli/load_input.h"
 #include "cli/report.h"
 #include "cli/results_writer.h"
@@ -38,9 +40,15 @@ void RunEval(const EvalArgs& args) {
   const RunInfo info = CollectRunInfo(run.threads, CurrentCommandLine());
   const std::string out_dir =
       !args.out.empty() ? args.out : "out/eval-" + (args.input.dataset.empty() ? "labels" : args.input.dataset);
-  WriteEvalOutputs(out_dir, sequences, run, config, info);
+  const EvalDiagnostics diagnostics = Diagnose(sequences, run);
+  const nlohmann::ordered_json diagnostics_json = DiagnosticsJson(diagnostics);
+  WriteEvalOutputs(out_dir, sequences, run, config, info, diagnostics_json);
   if (args.json) {
-    std::cout << SummaryJson(run).dump(2) << "\n";
+    nlohmann::ordered_json summary = SummaryJson(run);
+    summary.update(diagnostics_json);
+    std::cout << summary.dump(2) << "\n";
+    std::cout.flush();
+    PrintWarnings(std::cerr, diagnostics);
     return;
   }
   long frames = 0;
@@ -56,8 +64,14 @@ void RunEval(const EvalArgs& args) {
     if (whole_body) std::printf("  whole-body MPJPE %-6s %.1f mm\n", g.name.c_str(), g.mpjpe_mm);
   }
   if (run.metrics.legacy_pcp) std::printf("  legacy PCP (actors 1-3) %.1f %%\n", run.metrics.legacy_pcp->average_pcp);
-  if (!args.quiet) PrintStepTimes(std::cout, run.timing);
+  if (!args.quiet) {
+    PrintCheckSummary(std::cout, diagnostics);
+    PrintStepTimes(std::cout, run.timing, &run.counts);
+  }
   std::printf("results in %s\n", out_dir.c_str());
+  // Last, so they are what the user sees.
+  std::fflush(stdout);
+  PrintWarnings(std::cerr, diagnostics);
 }
 
 }  // namespace

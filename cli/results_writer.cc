@@ -93,6 +93,9 @@ Json SummaryJson(const RunResult& run) {
     j["legacy_pcp"] = Number(m.legacy_pcp->average_pcp);
   }
   j["step_time_us_median"] = StepTimesJson(run.timing);
+  j["step_count_per_frame"] = StepCountsJson(run.counts);
+  j["counter_per_frame"] = CountersJson(run.counts);
+  j["detection_noise_m"] = run.counts.noise_frames > 0 ? Json(run.counts.noise_m_median) : Json(nullptr);
   Json units;
   for (const SummaryColumn& c : SummaryColumns()) units[c.key] = c.unit;
   j["units"] = units;
@@ -192,11 +195,12 @@ Json RunInfoJson(const RunInfo& info) {
 }
 
 void WriteEvalOutputs(const std::filesystem::path& dir, const std::vector<Sequence>& sequences, const RunResult& run,
-                      const Config& config, const RunInfo& info) {
+                      const Config& config, const RunInfo& info, const Json& extra_summary) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) throw InputError(dir.string() + ": cannot create output folder: " + ec.message());
-  const Json summary = SummaryJson(run);
+  Json summary = SummaryJson(run);
+  summary.update(extra_summary);
   WriteText(dir / "summary.json", summary.dump(2) + "\n");
   std::string label;
   for (const Sequence& s : sequences) AppendItem(&label, s.name, "+");
@@ -212,6 +216,7 @@ void WriteEvalOutputs(const std::filesystem::path& dir, const std::vector<Sequen
            << row.count << "," << row.num_gt << "\n";
   }
   WriteText(dir / "per_joint.csv", joints.str());
+  WriteText(dir / "steps.csv", StepsCsv(run.timing, run.counts));
   WriteText(dir / "config.json", DumpConfig(config, /*with_comments=*/false));
   WriteText(dir / "run.json", RunInfoJson(info).dump(2) + "\n");
   WritePredictions(dir / "predictions.json", sequences, run);

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Result files of an evaluation: summary.{json,csv,md} with fixed columns and units,
-// per_joint.csv, the resolved config.json, run.json (revision, machine, threads) and
+// per_joint.csv, steps.csv (time and items per step), the resolved config.json, run.json (revision, machine, threads) and
 // predictions.json (3D persons of every frame).
 #pragma once
 
@@ -25,7 +25,8 @@ struct SummaryColumn {
 const std::vector<SummaryColumn>& SummaryColumns();
 
 // The summary of a run as one JSON object with SummaryColumns() keys (NaN -> null), plus
-// "wholebody_mpjpe_mm" and "legacy_pcp" when available and "step_time_us_median".
+// "wholebody_mpjpe_mm" and "legacy_pcp" when available, "step_time_us_median",
+// "step_count_per_frame", "counter_per_frame" and "detection_noise_m" (null when not estimated).
 nlohmann::ordered_json SummaryJson(const RunResult& run);
 
 // CSV / Markdown tables with one row per (label, summary).
@@ -38,9 +39,11 @@ std::string PaperRow(const RunResult& run);
 // predictions.json: {"joints": [...], "frames": [{"id", "persons": [[[x,y,z,score],...],...], "track_ids": [...]}]}
 void WritePredictions(const std::filesystem::path& path, const std::vector<Sequence>& sequences, const RunResult& run);
 
-// Everything above into `dir` (created). Throws InputError when the folder cannot be written.
+// Everything above into `dir` (created); `extra_summary` (e.g. eval's warnings and data checks)
+// is merged into summary.json. Throws InputError when the folder cannot be written.
 void WriteEvalOutputs(const std::filesystem::path& dir, const std::vector<Sequence>& sequences, const RunResult& run,
-                      const Config& config, const RunInfo& info);
+                      const Config& config, const RunInfo& info,
+                      const nlohmann::ordered_json& extra_summary = nlohmann::ordered_json::object());
 
 nlohmann::ordered_json RunInfoJson(const RunInfo& info);
 

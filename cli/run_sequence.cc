@@ -36,6 +36,7 @@ TriangulatedSequence Triangulate(const Sequence& sequence, const RunOptions& opt
     const SequenceFrame& frame = sequence.frames[f];
     triangulator.Process(frame.views.empty() ? no_views : frame.views, frame.timestamp_s, &out.predictions[f], &stats);
     out.timing.Add(stats);
+    out.counts.Add(stats);
     const long done = ++*frames_done;
     if (progress != nullptr) progress->Update(done);
   }
@@ -96,6 +97,7 @@ RunResult RunSequences(const std::vector<Sequence>& sequences, const RunOptions&
 
   metrics::MetricsAccumulator accumulator(EvalOptionsFor(sequences, options.eval));
   metrics::TimingAccumulator timing;
+  metrics::StepCountAccumulator counts;
   for (int i = 0; i < count; ++i) {
     const Sequence& sequence = sequences[i];
     const TriangulatedSequence& run = result.sequences[i];
@@ -107,9 +109,11 @@ RunResult RunSequences(const std::vector<Sequence>& sequences, const RunOptions&
     }
     result.frames += static_cast<long>(sequence.frames.size());
     timing.Merge(run.timing);
+    counts.Merge(run.counts);
   }
   result.metrics = accumulator.Finalize();
   result.timing = timing.Finalize();
+  result.counts = counts.Finalize();
   result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

@@ -12,6 +12,7 @@
 #include "datasets/sequence.h"
 #include "metrics/accumulator.h"
 #include "metrics/eval_options.h"
+#include "metrics/step_counts.h"
 #include "metrics/timing.h"
 
 namespace rpt::cli {
@@ -29,11 +30,13 @@ struct TriangulatedSequence {
   JointNames output_joints;
   std::vector<Poses3D> predictions;  // per frame
   metrics::TimingAccumulator timing;
+  metrics::StepCountAccumulator counts;  // every frame (warm-up frames included)
 };
 
 struct RunResult {
   metrics::MetricsResult metrics;
   metrics::TimingSummary timing;  // over all frames of all sequences
+  metrics::StepCountSummary counts;  // items per step per frame, over all frames of all sequences
   long frames = 0;
   double wall_seconds = 0;  // whole run (triangulation in parallel + metrics), steady clock
   int threads = 1;          // threads used for the sequences

@@ -9,6 +9,7 @@
 #include "datasets/readers/human36m.h"
 #include "datasets/readers/mvor.h"
 #include "datasets/readers/panoptic.h"
+#include "datasets/readers/shelf_4da.h"
 #include "datasets/readers/shelf_campus.h"
 #include "datasets/readers/synthetic_dataset.h"
 
@@ -17,6 +18,7 @@ namespace rpt {
 const std::vector<DatasetEntry>& DatasetRegistry() {
   static const std::vector<DatasetEntry> entries = {
       {ShelfInfo(), ReadShelf},
+      {Shelf4daInfo(), ReadShelf4da},
       {CampusInfo(), ReadCampus},
       {PanopticInfo(), ReadPanoptic},
       {Human36mInfo(), ReadHuman36m},

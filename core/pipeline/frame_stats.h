@@ -19,7 +19,9 @@ enum class Step : int {
   kGroup,            // (9) group proposals in 3D
   kTriangulateFull,  // (10) re-triangulate grouped pairs with all joints
   kMerge,            // (11) robust per-joint merge per group
+  kVerify,           // (11b) re-score persons against all views
   kPostprocess,      // (12) drop invalid persons, fill joints
+  kSingleView,       // (12b) persons seen by one camera only (off by default)
   kTrack,            // (13) track ids over time
   kClipSpeed,        // (14) clip joint speed
   kCount
@@ -28,24 +30,27 @@ inline constexpr int kNumSteps = static_cast<int>(Step::kCount);
 
 inline constexpr std::array<std::string_view, kNumSteps> kStepNames = {
     "undistort", "pairs", "prefilter", "triangulate_core", "room_check", "score", "filter",
-    "group", "triangulate_full", "merge", "postprocess", "track", "clip_speed"};
+    "group", "triangulate_full", "merge", "verify", "postprocess", "single_view", "track", "clip_speed"};
 
 struct FrameStats {
   // Steady-clock time of each step (microseconds) and of the whole frame.
   std::array<double, kNumSteps> time_us{};
   double total_us = 0;
   // Items after each step: poses, pairs, pairs, proposals, proposals, proposals, proposals,
-  // groups, proposals, persons, persons, persons, joints clipped.
+  // groups, proposals, persons, persons, persons, persons, persons, joints clipped.
   std::array<int, kNumSteps> count{};
   // Extra counters.
   int pruned_limbs = 0;       // joints invalidated by limb pruning (steps 7 and 10)
   int small_groups = 0;       // groups dropped by min_group_size
   int conflicting_proposals = 0;  // proposals removed because their 2D poses belong to another person
   int mirrored_groups = 0;    // groups dropped as left/right-swapped duplicates of another group
+  int unsupported_persons = 0;  // verify: persons dropped because more views see nobody there than see them
+  int single_view_persons = 0;  // single_view: persons placed from one view
   int replaced_joints = 0;    // post-processing: implausible joints replaced by a neighbour
   int filled_joints = 0;      // post-processing: missing joints filled from a neighbour
   int new_tracks = 0;         // tracking: tracks started this frame
   int coasting_tracks = 0;    // tracking: lost persons returned with their last pose
+  double noise_m = 0;         // adaptive scoring: the estimated detection noise (m), 0 with a fixed scale
 
   void Reset() { *this = FrameStats{}; }
 };

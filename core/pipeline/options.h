@@ -51,18 +51,27 @@ struct RoomCheckOptions {
 
 enum class ScoreMode { kCombined, kReprojectionOnly, kTriangulationOnly };
 
+// How the score kernels are scaled: to the noise level estimated from the data (residuals in
+// metres at the joint's depth, see noise_scale.h), or by the fixed constants of the first release
+// (reprojection error relative to the pose's bounding box).
+enum class ScoreScale { kAdaptive, kFixed };
+
 // Steps 6-7: per-joint score from reprojection error, ray gap and 2D confidence; limb pruning.
 struct ScoreOptions {
   ScoreMode mode = ScoreMode::kCombined;
   bool use_confidence = true;       // weight joints by their 2D confidence
-  double reprojection_scale_rel = 0.08;  // reprojection error (rel) at which the score is exp(-1)
-  double ray_gap_scale_m = 0.12;    // distance between the two rays at which the score is exp(-1)
+  ScoreScale scale = ScoreScale::kAdaptive;
+  double scale_factor = 5.0;        // adaptive: kernel scale = scale_factor x estimated noise (m)
+  double noise_prior_m = 0.02;      // adaptive: noise level assumed before the data has spoken (m)
+  double reprojection_scale_rel = 0.08;  // fixed: reprojection error (rel) at which the score is exp(-1)
+  double ray_gap_scale_m = 0.12;    // fixed: distance between the two rays at which the score is exp(-1)
+  double trim_fraction = 0.25;      // the pair score leaves out this share of its worst joints
   bool prune_limbs = true;          // invalidate joints of implausibly short or long limbs
 };
 
 // Step 8.
 struct FilterOptions {
-  double min_match_score = 0.9;  // pairs with a lower pair score are dropped
+  double min_match_score = 0.7;  // pairs with a lower pair score are dropped
 };
 
 // Step 9.
@@ -85,6 +94,24 @@ struct MergeOptions {
                                        // highest-scoring one instead of leaving the joint missing
 };
 
+// Step 11b (an addition): re-score each person against all views, drop unsupported ones.
+struct VerifyOptions {
+  bool enabled = true;
+  int min_empty_views = 2;             // drop when this many views (and more than support it) see nobody there
+  double min_inside_fraction = 0.8;    // a view is "empty" only if this share of the joints lands in the image
+};
+
+// Step 12b (an addition, off by default): persons seen by one camera only, placed at the depth
+// their 2D limb lengths imply (lift_single_views.h).
+struct SingleViewOptions {
+  bool enabled = false;
+  double min_joint_score = 0.3;       // confidence of the joints used
+  int min_core_joints = 6;            // confident core joints a pose needs
+  double score_factor = 0.5;          // joint scores = 2D confidence x this (rank below triangulated persons)
+  double duplicate_distance_m = 0.5;  // centre distance under which a lifted person duplicates another
+  double max_overlap_iou = 0.3;       // poses overlapping a found person's projection this much are that person
+};
+
 // Step 12.
 struct PostprocessOptions {
   bool enabled = true;
@@ -100,6 +127,9 @@ struct PostprocessOptions {
 // Step 13.
 struct TrackOptions {
   bool enabled = true;
+  // Frames further apart than this, or without a known time (NaN timestamp), are not continuous:
+  // tracks end (nothing coasts), and neither the pre-filter nor speed clipping use the frame before.
+  double max_gap_s = 1.0;
   double max_distance_m = 0.5;  // mean core-joint distance to continue a track
   int max_missing_frames = 3;   // a lost person is still returned (last pose) this many frames
 };
@@ -119,6 +149,8 @@ struct TriangulatorOptions {
   FilterOptions filter;
   GroupOptions group;
   MergeOptions merge;
+  VerifyOptions verify;
+  SingleViewOptions single_view;
   PostprocessOptions postprocess;
   TrackOptions track;
   ClipSpeedOptions clip_speed;

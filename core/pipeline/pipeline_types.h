@@ -19,6 +19,8 @@ struct ViewGeometry {
   Eigen::Matrix3d R_t;             // R transposed: camera -> world directions
   Eigen::Vector3d center;          // camera centre in world (m)
   double fx = 1, fy = 1, cx = 0, cy = 0, skew = 0;
+  double focal = 1;                // (fx + fy) / 2: pixels per unit of normalised coordinates
+  int width = 0, height = 0;       // image size (px)
 };
 
 // One undistorted 2D joint and its viewing ray.

@@ -1,68 +1,160 @@
 // SPDX-License-Identifier: MIT
 #include "core/pipeline/score_proposals.h"
 
-#include "core/fast_math.h"
-
+#include <algorithm>
 #include <cmath>
+#include <limits>
+
+#include "core/fast_math.h"
 
 namespace rpt {
 namespace {
 
-// Squared reprojection error (px^2) of `point` against keypoint `kp`; large when behind the camera.
-RPT_ALWAYS_INLINE double ReprojectionErrorSq(const ViewGeometry& g, const Eigen::Vector3d& point, const Keypoint& kp) {
+// Squared reprojection error (px^2) of `point` against keypoint `kp`, and the point's depth in
+// the view (z); a huge error when the point is behind the camera.
+RPT_ALWAYS_INLINE double ReprojectionErrorSq(const ViewGeometry& g, const Eigen::Vector3d& point, const Keypoint& kp,
+                                             double* depth) {
   const Eigen::Vector3d h = g.P.leftCols<3>() * point + g.P.col(3);
+  *depth = h.z();
   if (h.z() <= 0) return 1e12;
   const double inv_z = 1.0 / h.z();
   const double du = h.x() * inv_z - kp.u, dv = h.y() * inv_z - kp.v;
   return du * du + dv * dv;
 }
 
+// Median of values[0..n) (partially reorders them).
+double Median(double* values, int n) {
+  if (n <= 0) return std::numeric_limits<double>::infinity();
+  double* mid = values + n / 2;
+  std::nth_element(values, mid, values + n);
+  if (n % 2 == 1) return *mid;
+  return 0.5 * (*mid + *std::max_element(values, mid));
+}
+
+// Adaptive mode: the mutually best pairs vote for the noise level (see noise_scale.h).
+void VoteNoise(const PreparedViews& views, int num_views, const ScoreScratch& s, const Proposals& proposals,
+               ScoreScratch* scratch, NoiseScale* noise) {
+  const size_t slots = static_cast<size_t>(views.num_poses()) * num_views;
+  scratch->best_residual.assign(slots, std::numeric_limits<double>::infinity());
+  scratch->best_partner.assign(slots, -1);
+  auto offer = [&](int pose, int other, double residual) {
+    const size_t slot = static_cast<size_t>(pose) * num_views + views.view_of[other];
+    if (residual < scratch->best_residual[slot]) {
+      scratch->best_residual[slot] = residual;
+      scratch->best_partner[slot] = other;
+    }
+  };
+  for (int k = 0; k < proposals.size(); ++k) {
+    offer(proposals.pairs[k].a, proposals.pairs[k].b, s.pair_residual[k]);
+    offer(proposals.pairs[k].b, proposals.pairs[k].a, s.pair_residual[k]);
+  }
+  noise->BeginFrame();
+  for (int k = 0; k < proposals.size(); ++k) {
+    const int a = proposals.pairs[k].a, b = proposals.pairs[k].b;
+    const size_t slot_a = static_cast<size_t>(a) * num_views + views.view_of[b];
+    const size_t slot_b = static_cast<size_t>(b) * num_views + views.view_of[a];
+    if (scratch->best_partner[slot_a] == b && scratch->best_partner[slot_b] == a) noise->Vote(s.pair_residual[k]);
+  }
+}
+
 }  // namespace
 
+double KernelScaleM(const ScoreOptions& options, double noise_m) {
+  return options.scale == ScoreScale::kAdaptive ? options.scale_factor * noise_m : 0.5 * options.ray_gap_scale_m;
+}
+
 int ScoreProposals(const PreparedViews& views, std::span<const ViewGeometry> geometry, std::span<const int> joints,
-                   std::span<const ResolvedLimb> limbs, const ScoreOptions& options, Proposals* proposals,
-                   bool pair_scores) {
+                   std::span<const ResolvedLimb> limbs, const ScoreOptions& options, NoiseScale* noise,
+                   ScoreScratch* scratch, Proposals* proposals, bool pair_scores) {
   const int n = proposals->num_joints;
   const bool use_rep = options.mode != ScoreMode::kTriangulationOnly;
   const bool use_tri = options.mode != ScoreMode::kReprojectionOnly;
-  const double inv_rep = 1.0 / options.reprojection_scale_rel;
-  const double inv_gap = 1.0 / options.ray_gap_scale_m;
-  int pruned = 0;
+  const bool adaptive = options.scale == ScoreScale::kAdaptive;
+  const size_t total = static_cast<size_t>(proposals->size()) * n;
+
+  // Pass 1: per-joint residuals. Fixed scale: relative reprojection error (rel) and ray gap (m);
+  // adaptive: reprojection error in metres at the joint's depth, and the ray gap (m).
+  scratch->residual.resize(total);
+  scratch->pair_residual.resize(proposals->size());
+  scratch->votes.resize(n);
+  scratch->terms.resize(n);
+  // Joints whose ray gap alone makes the score negligible skip the projections. The bound uses
+  // the estimate before this frame's votes with a wide margin (score < e^-120 at twice the scale).
+  const double skip_gap = use_tri ? (adaptive ? 2.0 * std::sqrt(120.0) * KernelScaleM(options, noise != nullptr
+                                                                                         ? noise->Estimate()
+                                                                                         : options.noise_prior_m)
+                                              : std::sqrt(30.0) * options.ray_gap_scale_m)
+                                  : std::numeric_limits<double>::infinity();
   for (int k = 0; k < proposals->size(); ++k) {
     const PosePair& pair = proposals->pairs[k];
     const ViewGeometry& ga = geometry[views.view_of[pair.a]];
     const ViewGeometry& gb = geometry[views.view_of[pair.b]];
     const Keypoint* ka = views.Pose(pair.a);
     const Keypoint* kb = views.Pose(pair.b);
-    const double diag_a = views.bbox_diag[pair.a];
-    const double diag_b = views.bbox_diag[pair.b];
-    Eigen::Vector3d* xyz = proposals->xyz.data() + static_cast<size_t>(k) * n;
-    const double* gap = proposals->gap.data() + static_cast<size_t>(k) * n;
-    double* score = proposals->score.data() + static_cast<size_t>(k) * n;
-    double* geometric = proposals->geometric.data() + static_cast<size_t>(k) * n;
+    const size_t base = static_cast<size_t>(k) * n;
+    const Eigen::Vector3d* xyz = proposals->xyz.data() + base;
+    const double* gap = proposals->gap.data() + base;
+    const double* score = proposals->score.data() + base;
+    const double* geometric = proposals->geometric.data() + base;
+    double* residual = scratch->residual.data() + base;
+    const double scale_a = adaptive ? 1.0 / ga.focal : 1.0 / views.bbox_diag[pair.a];
+    const double scale_b = adaptive ? 1.0 / gb.focal : 1.0 / views.bbox_diag[pair.b];
+    int votes = 0;
+    for (int i = 0; i < n; ++i) {
+      residual[i] = -1;
+      if (score[i] <= 0 || geometric[i] >= 0) continue;  // not triangulated, or scored by an earlier step
+      if (!use_rep) {
+        residual[i] = 0;
+      } else if (gap[i] > skip_gap) {
+        residual[i] = 1e6;  // scored 0 below
+      } else {
+        double za = 1, zb = 1;
+        const double ea = std::sqrt(ReprojectionErrorSq(ga, xyz[i], ka[joints[i]], &za));
+        const double eb = std::sqrt(ReprojectionErrorSq(gb, xyz[i], kb[joints[i]], &zb));
+        residual[i] = adaptive ? 0.5 * (ea * std::max(za, 0.0) * scale_a + eb * std::max(zb, 0.0) * scale_b)
+                               : 0.5 * (ea * scale_a + eb * scale_b);
+        if (za <= 0 || zb <= 0) residual[i] = 1e6;
+      }
+      if (pair_scores && adaptive) scratch->votes[votes++] = use_rep ? residual[i] : 0.5 * gap[i];
+    }
+    if (pair_scores && adaptive) scratch->pair_residual[k] = Median(scratch->votes.data(), votes);
+  }
+  if (pair_scores && adaptive && noise != nullptr) {
+    VoteNoise(views, static_cast<int>(geometry.size()), *scratch, *proposals, scratch, noise);
+  }
 
-    const double inv_diag_a = 1.0 / diag_a, inv_diag_b = 1.0 / diag_b;
+  // Pass 2: kernels, limb pruning, pair scores.
+  const double noise_m = noise != nullptr ? noise->Estimate() : options.noise_prior_m;
+  const double inv_rep = adaptive ? 1.0 / KernelScaleM(options, noise_m) : 1.0 / options.reprojection_scale_rel;
+  const double inv_gap = adaptive ? 0.5 / KernelScaleM(options, noise_m) : 1.0 / options.ray_gap_scale_m;
+  int pruned = 0;
+  for (int k = 0; k < proposals->size(); ++k) {
+    const PosePair& pair = proposals->pairs[k];
+    const Keypoint* ka = views.Pose(pair.a);
+    const Keypoint* kb = views.Pose(pair.b);
+    const size_t base = static_cast<size_t>(k) * n;
+    const Eigen::Vector3d* xyz = proposals->xyz.data() + base;
+    const double* gap = proposals->gap.data() + base;
+    const double* residual = scratch->residual.data() + base;
+    double* score = proposals->score.data() + base;
+    double* geometric = proposals->geometric.data() + base;
     for (int i = 0; i < n; ++i) {
       if (score[i] <= 0) continue;
       if (geometric[i] >= 0) {  // computed by an earlier step for the same pair (core joints)
         score[i] = geometric[i];
         continue;
       }
-      // s = exp(-(e/scale_rep)^2) * exp(-(gap/scale_gap)^2) computed with one exp. The gap term
-      // comes first: when it alone makes the score negligible (< e^-30), skip the projections.
       double exponent = 0;
       if (use_tri) {
         const double r = gap[i] * inv_gap;
         exponent = r * r;
-        if (exponent > 30.0) {
+        if (exponent > 30.0) {  // negligible (< e^-30) whatever the reprojection error
           score[i] = geometric[i] = 0.0;
           continue;
         }
       }
       if (use_rep) {
-        const double e = 0.5 * (std::sqrt(ReprojectionErrorSq(ga, xyz[i], ka[joints[i]])) * inv_diag_a +
-                                std::sqrt(ReprojectionErrorSq(gb, xyz[i], kb[joints[i]])) * inv_diag_b);
-        const double r = e * inv_rep;
+        const double r = residual[i] * inv_rep;
         exponent += r * r;
       }
       score[i] = geometric[i] = FastExpNeg(exponent);
@@ -84,16 +176,24 @@ int ScoreProposals(const PreparedViews& views, std::span<const ViewGeometry> geo
       }
       continue;
     }
-    double weighted = 0, weights = 0;
+    int seen = 0;
     for (int i = 0; i < n; ++i) {
       const Keypoint& a = ka[joints[i]];
       const Keypoint& b = kb[joints[i]];
       if (a.score <= 0 || b.score <= 0) continue;
       const double c = a.sqrt_score * b.sqrt_score;
-      const double w = options.use_confidence ? c : 1.0;
-      weighted += w * score[i];
-      weights += w;
+      scratch->terms[seen++] = {score[i], options.use_confidence ? c : 1.0};
       if (options.use_confidence) score[i] *= c;
+    }
+    // The worst trim_fraction of the joints do not count (occluded joints reported at wrong places).
+    const int trimmed = static_cast<int>(options.trim_fraction * seen);
+    if (trimmed > 0) {
+      std::nth_element(scratch->terms.begin(), scratch->terms.begin() + trimmed, scratch->terms.begin() + seen);
+    }
+    double weighted = 0, weights = 0;
+    for (int t = trimmed; t < seen; ++t) {
+      weighted += scratch->terms[t].first * scratch->terms[t].second;
+      weights += scratch->terms[t].second;
     }
     proposals->pair_score[k] = weights > 0 ? weighted / weights : 0.0;
   }

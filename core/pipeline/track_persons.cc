@@ -10,6 +10,10 @@ void Tracker::Reset() {
   next_id_ = 0;
 }
 
+void Tracker::EndTracks() {
+  for (Track& t : tracks_) t.id = -1;
+}
+
 int Tracker::FindSlot(int track_id) const {
   for (size_t s = 0; s < tracks_.size(); ++s) {
     if (tracks_[s].id == track_id) return static_cast<int>(s);

@@ -21,6 +21,8 @@ namespace rpt {
 class Tracker {
  public:
   void Reset();
+  // Ends every track (continuity broken: unknown time or a large gap); ids keep counting up.
+  void EndTracks();
 
   // Sets persons->track_ids and appends coasting persons. `match_joints` are the joints used
   // for the distance. Returns the number of persons that were detected this frame (the

@@ -3,17 +3,20 @@
 
 #include <algorithm>
 #include <chrono>
+#include <limits>
 #include <set>
 #include <string>
 
 #include "core/errors.h"
 #include "core/pipeline/clip_speed.h"
 #include "core/pipeline/filter_proposals.h"
+#include "core/pipeline/lift_single_views.h"
 #include "core/pipeline/make_pairs.h"
 #include "core/pipeline/postprocess_persons.h"
 #include "core/pipeline/room_check.h"
 #include "core/pipeline/score_proposals.h"
 #include "core/pipeline/triangulate_pairs.h"
+#include "core/pipeline/verify_persons.h"
 #include "core/pipeline/workspace.h"
 
 namespace rpt {
@@ -101,7 +104,9 @@ Triangulator::Triangulator(std::vector<Camera> cameras, JointNames input_joints,
   ws.core_limbs = ResolveLimbs(LimbsFor(core_list), core_list);
   ws.core_mirror = MirrorIndices(core_list);
   ws.all_limbs = ResolveLimbs(LimbsFor(ws.output_joints), ws.output_joints);
+  ws.typical_limbs = ResolveTypicalLimbs(ws.output_joints);
   ws.previous.Clear(static_cast<int>(ws.core_joints.size()));
+  ws.noise.Reset(ws.options.score.noise_prior_m);
 }
 
 Triangulator::~Triangulator() = default;
@@ -116,6 +121,8 @@ const TriangulatorOptions& Triangulator::options() const { return ws_->options; 
 void Triangulator::Reset() {
   ws_->previous.Clear(static_cast<int>(ws_->core_joints.size()));
   ws_->tracker.Reset();
+  ws_->noise.Reset(ws_->options.score.noise_prior_m);
+  ws_->last_timestamp_s = std::numeric_limits<double>::quiet_NaN();
 }
 
 void Triangulator::Process(std::span<const Poses2D> views, double timestamp_s, Poses3D* persons, FrameStats* stats) {
@@ -135,6 +142,14 @@ void Triangulator::Process(std::span<const Poses2D> views, double timestamp_s, P
   }
   stats->Reset();
   StepTimer timer(stats);
+  // Is this frame continuous with the last one? Unknown times and large gaps break continuity.
+  const double elapsed_s = timestamp_s - ws.last_timestamp_s;  // NaN when either is unknown
+  const bool continuous = elapsed_s > 0 && elapsed_s <= opt.track.max_gap_s;
+  ws.last_timestamp_s = timestamp_s;
+  if (!continuous) {
+    ws.previous.Clear(static_cast<int>(ws.core_joints.size()));
+    ws.tracker.EndTracks();
+  }
   auto& count = stats->count;
   auto at = [](Step s) { return static_cast<int>(s); };
 
@@ -158,7 +173,9 @@ void Triangulator::Process(std::span<const Poses2D> views, double timestamp_s, P
   count[at(Step::kRoomCheck)] = RoomCheck(opt.room_check, &ws.core);
   timer.Lap(Step::kRoomCheck);
 
-  stats->pruned_limbs += ScoreProposals(ws.prepared, ws.geometry, ws.core_joints, ws.core_limbs, opt.score, &ws.core);
+  stats->pruned_limbs += ScoreProposals(ws.prepared, ws.geometry, ws.core_joints, ws.core_limbs, opt.score, &ws.noise,
+                                        &ws.score_scratch, &ws.core);
+  stats->noise_m = opt.score.scale == ScoreScale::kAdaptive ? ws.noise.Estimate() : 0.0;
   count[at(Step::kScore)] = ws.core.size();
   timer.Lap(Step::kScore);
 
@@ -177,16 +194,35 @@ void Triangulator::Process(std::span<const Poses2D> views, double timestamp_s, P
   count[at(Step::kTriangulateFull)] = TriangulateMembers(ws.prepared, ws.geometry, ws.core, ws.groups.members,
                                                          ws.core_joints, num_joints, opt.triangulate.method, &ws.full);
   stats->pruned_limbs +=
-      ScoreProposals(ws.prepared, ws.geometry, ws.all_joints, ws.all_limbs, opt.score, &ws.full, /*pair_scores=*/false);
+      ScoreProposals(ws.prepared, ws.geometry, ws.all_joints, ws.all_limbs, opt.score, &ws.noise, &ws.score_scratch,
+                     &ws.full, /*pair_scores=*/false);
   timer.Lap(Step::kTriangulateFull);
 
   persons->Clear(num_joints);
   count[at(Step::kMerge)] = MergeGroups(opt.merge, ws.full, ws.groups, &ws.merge_scratch, persons);
   timer.Lap(Step::kMerge);
 
+  count[at(Step::kVerify)] = VerifyPersons(opt.verify, ws.prepared, ws.geometry, ws.core_joints, ws.full, ws.groups,
+                                           KernelScaleM(opt.score, ws.noise.Estimate()), &ws.verify_scratch, persons,
+                                           stats);
+  timer.Lap(Step::kVerify);
+
   count[at(Step::kPostprocess)] =
       PostprocessPersons(opt.postprocess, opt.room_check, ws.neighbour, ws.all_limbs, persons, stats);
   timer.Lap(Step::kPostprocess);
+
+  // Step 12b: persons seen by one view only, post-processed like the others and appended. They
+  // stay out of the pre-filter's memory: their depth is a guess.
+  int num_lifted = LiftSingleViews(opt.single_view, opt.verify, ws.prepared, ws.geometry, ws.core_joints,
+                                   ws.typical_limbs, ws.full, ws.groups, KernelScaleM(opt.score, ws.noise.Estimate()),
+                                   *persons, &ws.verify_scratch, &ws.single_view_scratch, &ws.lifted, stats);
+  if (num_lifted > 0) {
+    num_lifted = PostprocessPersons(opt.postprocess, opt.room_check, ws.neighbour, ws.all_limbs, &ws.lifted, stats);
+    for (int p = 0; p < num_lifted; ++p) persons->AddPerson() = ws.lifted.Person(p);
+  }
+  const int num_triangulated = persons->num_persons() - num_lifted;
+  count[at(Step::kSingleView)] = persons->num_persons();
+  timer.Lap(Step::kSingleView);
 
   int num_detected = persons->num_persons();
   if (opt.track.enabled) num_detected = ws.tracker.Assign(opt.track, ws.core_joints, persons, stats);
@@ -202,6 +238,7 @@ void Triangulator::Process(std::span<const Poses2D> views, double timestamp_s, P
   ws.previous.Clear(num_core);
   ws.previous.timestamp_s = timestamp_s;
   for (int p = 0; p < persons->num_persons(); ++p) {
+    if (p >= num_triangulated && p < num_triangulated + num_lifted) continue;  // single-view persons
     const auto person = persons->Person(p);
     for (int c = 0; c < num_core; ++c) {
       ws.previous.xyz.push_back(person.col(ws.core_joints[c]).head<3>());

@@ -34,11 +34,14 @@ class Triangulator {
   Triangulator& operator=(Triangulator&&) noexcept;
 
   // Triangulates one multi-view frame. `views.size()` must equal the number of cameras and each
-
-  // treated as having no detections in the offending view and stats->count[kUndistort] says so.
+  // non-empty view must have input_joints().size() joints (else InputError). `timestamp_s` is the
+  // frame's time in seconds, NaN when unknown: a frame more than options().track.max_gap_s after
+  // the last one, or with an unknown time, starts afresh (no pre-filter, tracks end, nothing
+  // coasts). The detection noise estimate of the adaptive score carries over regardless.
   void Process(std::span<const Poses2D> views, double timestamp_s, Poses3D* persons, FrameStats* stats);
 
-  // Forgets the previous frame (pre-filter poses, tracks), e.g. between sequences.
+  // Forgets the previous frame (pre-filter poses, tracks) and the noise estimate, e.g. between
+  // sequences.
   void Reset();
 
   const JointNames& input_joints() const;

@@ -14,10 +14,13 @@ ViewGeometry MakeViewGeometry(const Camera& camera) {
   g.R_t = camera.R.transpose();
   g.center = camera.Center();
   g.fx = camera.K(0, 0);
+  g.focal = 0.5 * (camera.K(0, 0) + camera.K(1, 1));
   g.fy = camera.K(1, 1);
   g.cx = camera.K(0, 2);
   g.cy = camera.K(1, 2);
   g.skew = camera.K(0, 1);
+  g.width = camera.width;
+  g.height = camera.height;
   return g;
 }
 

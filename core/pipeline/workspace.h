@@ -3,17 +3,22 @@
 // warm Triangulator does not allocate) and the state carried between frames.
 #pragma once
 
+#include <limits>
 #include <vector>
 
 #include "core/camera.h"
 #include "core/joints.h"
 #include "core/pipeline/group_proposals.h"
+#include "core/pipeline/lift_single_views.h"
 #include "core/pipeline/merge_groups.h"
+#include "core/pipeline/noise_scale.h"
+#include "core/pipeline/score_proposals.h"
 #include "core/pipeline/options.h"
 #include "core/pipeline/pipeline_types.h"
 #include "core/pipeline/prefilter_pairs.h"
 #include "core/pipeline/track_persons.h"
 #include "core/pipeline/undistort_poses.h"
+#include "core/pipeline/verify_persons.h"
 
 namespace rpt {
 
@@ -31,20 +36,27 @@ struct Workspace {
   std::vector<ResolvedLimb> core_limbs;  // indexed by core slot
   std::vector<ResolvedLimb> all_limbs;   // indexed by output joint
   std::vector<int> neighbour;          // per output joint, -1 = none
+  std::vector<TypicalLimb> typical_limbs;  // single_view: limbs with typical lengths
 
   // Per-frame buffers.
   PreparedViews prepared;
   std::vector<PosePair> pairs;
   PrefilterScratch prefilter;
   Proposals core;
+  ScoreScratch score_scratch;
   GroupScratch group_scratch;
   Groups groups;
   Proposals full;
   MergeScratch merge_scratch;
+  VerifyScratch verify_scratch;
+  SingleViewScratch single_view_scratch;
+  Poses3D lifted;  // single_view: this frame's persons placed from one view
 
   // Carried between frames.
   PreviousPersons previous;
   Tracker tracker;
+  NoiseScale noise;  // adaptive scoring: the detections' noise level
+  double last_timestamp_s = std::numeric_limits<double>::quiet_NaN();
 };
 
 }  // namespace rpt

@@ -296,12 +296,16 @@ std::vector<Sequence> ReadMvor(const DatasetRequest& request) {
   }
 
   std::vector<Sequence> out;
+  const bool days_given = request.params.count("days") > 0;
   for (auto& [day, sequence] : by_day) {
+    if (sequence.frames.empty() && !days_given) continue;  // the default asks for all days there are
     if (sequence.frames.empty()) throw InputError(source + ": no frames of day " + std::to_string(day));
-    sequence.warnings = warnings;
     out.push_back(std::move(sequence));
   }
 
+  if (out.empty()) throw InputError(source + ": no multi-view frames");
+  // Corrections are counted once per file: the first sequence carries them.
+  out.front().warnings = warnings;
   if (with_detections) {
     const std::filesystem::path detections_path =
         FindFile(request.root, {std::filesystem::path("detections_results") / kDetectionsFile, kDetectionsFile});
@@ -311,10 +315,8 @@ std::vector<Sequence> ReadMvor(const DatasetRequest& request) {
                        "--detections FILE or --simulate");
     }
     const Detections detections = ReadCocoDetections(detections_path);
-    for (Sequence& sequence : out) {
-      AttachDetections(detections, detections_path.string(), &sequence);
-      sequence.warnings.Merge(detections.warnings);
-    }
+    for (Sequence& sequence : out) AttachDetections(detections, detections_path.string(), &sequence);
+    out.front().warnings.Merge(detections.warnings);
   }
   for (const Sequence& sequence : out) ValidateSequence(sequence, source);
   return out;

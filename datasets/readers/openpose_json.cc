@@ -11,24 +11,13 @@
 #include "datasets/io/json_file.h"
 #include "datasets/readers/generic_detections.h"
 #include "datasets/readers/generic_internal.h"
+#include "datasets/readers/openpose_body25.h"
 
 namespace rpt {
 namespace {
 
 using nlohmann::json;
 using generic_internal::Source;
-
-// OpenPose body part index -> our joint name (neck, mid-hip are dropped).
-const std::vector<std::pair<int, std::string>>& Body25Map() {
-  static const std::vector<std::pair<int, std::string>> map = {
-      {0, "nose"},          {2, "shoulder_right"},      {3, "elbow_right"},        {4, "wrist_right"},
-      {5, "shoulder_left"}, {6, "elbow_left"},          {7, "wrist_left"},         {9, "hip_right"},
-      {10, "knee_right"},   {11, "ankle_right"},        {12, "hip_left"},          {13, "knee_left"},
-      {14, "ankle_left"},   {15, "eye_right"},          {16, "eye_left"},          {17, "ear_right"},
-      {18, "ear_left"},     {19, "foot_big_toe_left"},  {20, "foot_small_toe_left"}, {21, "foot_heel_left"},
-      {22, "foot_big_toe_right"}, {23, "foot_small_toe_right"}, {24, "foot_heel_right"}};
-  return map;
-}
 
 const std::vector<std::pair<int, std::string>>& Coco18Map() {
   static const std::vector<std::pair<int, std::string>> map = {
@@ -191,7 +180,7 @@ Detections ReadOpenPoseFolder(const std::filesystem::path& dir, const OpenPoseFo
   Detections detections;
   detections.joints = JointsOf(set);
   const JointNames& joints = detections.joints;
-  const std::vector<int> body25 = Targets(Body25Map(), 25, joints);
+  const std::vector<int> body25 = Targets(Body25Joints(), joints);  // neck, hip_middle: not in `joints`, dropped
   const std::vector<int> coco18 = Targets(Coco18Map(), 18, joints);
   std::vector<std::string> face_names;
   for (int i = 0; i < 68; ++i) face_names.push_back((i < 10 ? "face_0" : "face_") + std::to_string(i));

@@ -41,8 +41,7 @@ const ShelfCampusSpec& ShelfSpec() {
     s.width = 1032;
     s.height = 776;
     s.default_frames = "300-600";
-    s.room.center_m = Eigen::Vector3d(0.45, -0.32, 0.8);
-    s.room.size_m = Eigen::Vector3d(8.0, 8.0, 2.0);
+    s.room = ShelfRoom();
     s.description = "Shelf (TUM, Belagiannis et al. 2014): 5 cameras, up to 4 actors, VoxelPose calibration";
     return s;
   }();
@@ -240,6 +239,13 @@ const JointNames& ShelfCampusJoints() {
                                    "ankle_left",  "wrist_right", "elbow_right", "shoulder_right", "shoulder_left",
                                    "elbow_left",  "wrist_left",  "head_bottom", "head_top",       "nose"};
   return names;
+}
+
+Room ShelfRoom() {
+  Room room;
+  room.center_m = Eigen::Vector3d(0.45, -0.32, 0.8);
+  room.size_m = Eigen::Vector3d(8.0, 8.0, 2.0);
+  return room;
 }
 
 DatasetInfo ShelfInfo() { return MakeInfo(ShelfSpec()); }

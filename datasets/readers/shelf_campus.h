@@ -38,6 +38,9 @@ namespace rpt {
 // shoulder_right, shoulder_left, elbow_left, wrist_left, head_bottom, head_top, nose.
 const JointNames& ShelfCampusJoints();
 
+// The Shelf capture volume above (world frame of calibration_shelf.json).
+Room ShelfRoom();
+
 // Params of both readers:
 //   frames      frame selection (ParseFrameRanges syntax). Default Shelf "300-600" (VoxelPose,
 //               301 frames; mvpose uses 300-599), Campus "350-470,650-750" (VoxelPose and mvpose).

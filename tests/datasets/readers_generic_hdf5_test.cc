@@ -178,7 +178,7 @@ TEST(Hdf5Cache, NotAnHdf5FileNamesFileAndPlace) {
   EXPECT_THAT(InputErrorOf([&] { ReadDetectionsHdf5(fake); }), HasSubstr("fake.h5: byte 0: not an HDF5 file"));
   EXPECT_THAT(InputErrorOf([&] { ReadSequencesHdf5(fake); }), HasSubstr("fake.h5: byte 0: not an HDF5 file"));
   EXPECT_THAT(InputErrorOf([&] { ReadDetectionsHdf5(dir.path() / "absent.h5"); }), HasSubstr("absent.h5: file not found"));
-  EXPECT_THAT(InputErrorOf([&] { WriteDetectionsHdf5(fake, Detections{CocoBodyJoints(), {}}, {.add_to_existing = true}); }),
+  EXPECT_THAT(InputErrorOf([&] { WriteDetectionsHdf5(fake, Detections{CocoBodyJoints(), {}, {}}, {.add_to_existing = true}); }),
               HasSubstr("fake.h5: cannot add to it: not an existing HDF5 file"));
 }
 

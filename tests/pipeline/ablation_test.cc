@@ -113,7 +113,7 @@ TEST_F(AblationTest, KeepingMergeOutliersChangesPositionsOnly) {
 TEST_F(AblationTest, HigherMinMatchScoreKeepsFewerProposals) {
   const RunResult base = Run([](auto&) {});
   const RunResult strict = Run([](auto& o) { o.filter.min_match_score = 0.97; });
-  const RunResult loose = Run([](auto& o) { o.filter.min_match_score = 0.8; });
+  const RunResult loose = Run([](auto& o) { o.filter.min_match_score = 0.6; });
   EXPECT_LT(Sum(strict, Step::kFilter), Sum(base, Step::kFilter));
   EXPECT_GE(Sum(loose, Step::kFilter), Sum(base, Step::kFilter));
 }

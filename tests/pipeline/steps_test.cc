@@ -227,7 +227,8 @@ TEST(ScoreProposals, CorrectPairsScoreOneMismatchedPairsScoreLow) {
   Proposals proposals;
   TriangulatePairs(f.prepared, f.geometry, pairs, f.core, TriangulationMethod::kMidpoint, 3, &proposals);
   std::vector<ResolvedLimb> no_limbs;
-  ScoreProposals(f.prepared, f.geometry, f.core, no_limbs, ScoreOptions{}, &proposals);
+  ScoreScratch scratch;
+  ScoreProposals(f.prepared, f.geometry, f.core, no_limbs, ScoreOptions{}, nullptr, &scratch, &proposals);
   int correct = 0;
   for (int k = 0; k < proposals.size(); ++k) {
     const bool same = f.prepared.person_of[proposals.pairs[k].a] == f.prepared.person_of[proposals.pairs[k].b];
@@ -254,7 +255,8 @@ TEST(ScoreProposals, ModesConfidenceAndLimbPruning) {
   auto run = [&](ScoreOptions options, std::vector<ResolvedLimb> limbs = {}) {
     Proposals p;
     TriangulatePairs(f.prepared, f.geometry, pairs, f.core, TriangulationMethod::kMidpoint, 3, &p);
-    ScoreProposals(f.prepared, f.geometry, f.core, limbs, options, &p);
+    ScoreScratch scratch;
+    ScoreProposals(f.prepared, f.geometry, f.core, limbs, options, nullptr, &scratch, &p);
     return p;
   };
   ScoreOptions combined;
@@ -272,10 +274,18 @@ TEST(ScoreProposals, ModesConfidenceAndLimbPruning) {
   EXPECT_LT(s_rep, 1.0);
   EXPECT_LT(s_tri, 1.0);
   EXPECT_NEAR(c.score[wrist_left_slot], s_rep * s_tri, 1e-8);  // FastExpNeg precision
+  // The pair score leaves out the worst quarter of the joints: one bad wrist out of 12 does not count.
+  EXPECT_NEAR(c.pair_score[0], 1.0, 1e-9);
+  ScoreOptions untrimmed = combined;
+  untrimmed.trim_fraction = 0;
+  const Proposals u = run(untrimmed);
+  EXPECT_LT(u.pair_score[0], 1.0);
+  // Weights: ten joints with confidence 1, the right wrist 0.5, the left wrist 1.
+  EXPECT_NEAR(u.pair_score[0], (10.5 + c.score[wrist_left_slot]) / 11.5, 1e-9);
   // A limb (elbow_left -> wrist_left) whose allowed range excludes the true length prunes the wrist.
-  const Proposals pruned = run(combined, {ResolvedLimb{4, wrist_left_slot, 0.0, 0.05}});
+  const Proposals pruned = run(untrimmed, {ResolvedLimb{4, wrist_left_slot, 0.0, 0.05}});
   EXPECT_EQ(pruned.score[wrist_left_slot], 0.0);
-  EXPECT_LT(pruned.pair_score[0], c.pair_score[0]);
+  EXPECT_LT(pruned.pair_score[0], u.pair_score[0]);
 }
 
 TEST(FilterProposals, KeepsPairsAtOrAboveTheThreshold) {

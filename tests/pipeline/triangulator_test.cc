@@ -2,6 +2,8 @@
 // The whole pipeline on hand-made scenes, and configuration errors.
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "core/errors.h"
 #include "core/pipeline/triangulator.h"
 #include "tests/pipeline/test_scene.h"
@@ -91,6 +93,46 @@ TEST(Triangulator, PrefilterUsesLastFrameAndResetForgetsIt) {
   tri.Reset();
   tri.Process(views, 0.08, &persons, &stats);
   EXPECT_EQ(stats.count[static_cast<int>(Step::kPrefilter)], 24);
+}
+
+// Continuity: only frames at most track.max_gap_s after the last one use it.
+TEST(Triangulator, UnknownTimesAndLargeGapsStartAfresh) {
+  const auto cameras = test::RingCameras(4);
+  const auto both = test::ProjectPersons(cameras, {test::StandingPerson(-1, 0), test::StandingPerson(1, 0)});
+  const auto one = test::ProjectPersons(cameras, {test::StandingPerson(-1, 0)});
+  const int prefilter = static_cast<int>(Step::kPrefilter);
+  TriangulatorOptions options;
+  options.track.max_gap_s = 0.5;
+  Triangulator tri(cameras, CocoBodyJoints(), options);
+  Poses3D persons;
+  FrameStats stats;
+  tri.Process(both, 0.0, &persons, &stats);
+  ASSERT_EQ(persons.num_persons(), 2);
+  const int first_id = persons.track_ids[0];
+
+  // 0.4 s later (within the gap): pre-filter active, the missing person coasts with its id.
+  tri.Process(one, 0.4, &persons, &stats);
+  EXPECT_EQ(stats.count[prefilter], 6) << "one person in 4 views: 6 pairs, all kept";
+  EXPECT_EQ(stats.coasting_tracks, 1);
+  EXPECT_EQ(persons.num_persons(), 2);
+
+  // 0.6 s after that (beyond the gap): no pre-filter, nobody coasts, new track ids.
+  tri.Process(both, 1.0, &persons, &stats);
+  EXPECT_EQ(stats.count[prefilter], 24) << "the pre-filter does not use a frame 0.6 s old";
+  tri.Process(one, 2.0, &persons, &stats);
+  EXPECT_EQ(stats.coasting_tracks, 0) << "no coasting over a 1 s gap";
+  ASSERT_EQ(persons.num_persons(), 1);
+  EXPECT_GT(persons.track_ids[0], first_id + 1) << "tracks ended at the gap";
+
+  // Unknown time (NaN), time going backwards, the same time twice: never continuous.
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (const auto& [before, t] : std::vector<std::pair<double, double>>{{3.0, nan}, {4.0, 3.9}, {5.0, 5.0}}) {
+    tri.Process(both, before, &persons, &stats);  // a reference frame with two persons
+    tri.Process(one, t, &persons, &stats);
+    EXPECT_EQ(stats.count[prefilter], 6);
+    EXPECT_EQ(stats.coasting_tracks, 0) << "t = " << t;
+    EXPECT_EQ(persons.num_persons(), 1) << "t = " << t;
+  }
 }
 
 }  // namespace

@@ -1,0 +1,112 @@
+// SPDX-License-Identifier: MIT
+#include "datasets/io/text_tokens.h"
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <utility>
+
+#include "core/errors.h"
+
+namespace rpt::io {
+namespace {
+
+bool IsSpace(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f'; }
+
+// Tokens are shown in messages; a corrupt file may hold a very long one.
+std::string Shown(std::string_view token) {
+  constexpr std::size_t kMax = 40;
+  return token.size() <= kMax ? std::string(token) : std::string(token.substr(0, kMax)) + "...";
+}
+
+}  // namespace
+
+TextTokens::TextTokens(std::string text, std::string source) : text_(std::move(text)), source_(std::move(source)) {}
+
+TextTokens TextTokens::FromFile(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path.string() + ": file not found or unreadable");
+  std::ostringstream content;
+  content << in.rdbuf();
+  if (in.bad()) throw InputError(path.string() + ": read error");
+  return TextTokens(std::move(content).str(), path.string());
+}
+
+std::string_view TextTokens::Next() {
+  while (pos_ < text_.size() && IsSpace(text_[pos_])) {
+    if (text_[pos_] == '\n') ++line_;
+    ++pos_;
+  }
+  if (pos_ >= text_.size()) return {};
+  const std::size_t start = pos_;
+  while (pos_ < text_.size() && !IsSpace(text_[pos_])) ++pos_;
+  token_line_ = line_;
+  ++tokens_read_;
+  return std::string_view(text_).substr(start, pos_ - start);
+}
+
+bool TextTokens::AtEnd() {
+  std::size_t p = pos_;
+  while (p < text_.size() && IsSpace(text_[p])) ++p;
+  return p >= text_.size();
+}
+
+void TextTokens::ExpectEnd(const std::string& what) {
+  if (AtEnd()) return;
+  const std::string_view token = Next();
+  Fail("'" + Shown(token) + "' after the end of " + what);
+}
+
+std::int64_t TextTokens::MaxTokensLeft() const {
+  // Every token but the last needs a separator: n tokens need at least 2n - 1 characters.
+  const std::size_t left = text_.size() - pos_;
+  return static_cast<std::int64_t>((left + 1) / 2);
+}
+
+bool TextTokens::ParseInt(std::string_view token, std::int64_t* value) {
+  const char* first = token.data();
+  const char* last = token.data() + token.size();
+  if (first != last && *first == '+') ++first;
+  const auto [ptr, ec] = std::from_chars(first, last, *value);
+  return ec == std::errc() && ptr == last;
+}
+
+bool TextTokens::ParseFiniteDouble(std::string_view token, double* value) {
+  const char* first = token.data();
+  const char* last = token.data() + token.size();
+  if (first != last && *first == '+') ++first;
+  const auto [ptr, ec] = std::from_chars(first, last, *value);
+  return ec == std::errc() && ptr == last && std::isfinite(*value);
+}
+
+std::string TextTokens::Here() const {
+  return source_ + ":" + std::to_string(token_line_) + ": token " + std::to_string(tokens_read_);
+}
+
+void TextTokens::Fail(const std::string& message) const { throw InputError(Here() + ": " + message); }
+
+void TextTokens::FailAtEnd(const std::string& what) const {
+  throw InputError(source_ + ":" + std::to_string(line_) + ": unexpected end of file after token " +
+                   std::to_string(tokens_read_) + ", expected " + what + " (file truncated?)");
+}
+
+void TextTokens::FailInt(std::string_view token, std::int64_t min_value, std::int64_t max_value,
+                         const std::string& what) const {
+  std::string range = max_value == std::numeric_limits<std::int64_t>::max()
+                          ? ">= " + std::to_string(min_value)
+                          : "in [" + std::to_string(min_value) + ", " + std::to_string(max_value) + "]";
+  Fail(what + ": '" + Shown(token) + "' is not an integer " + range);
+}
+
+void TextTokens::FailNumber(std::string_view token, const std::string& what) const {
+  Fail(what + ": '" + Shown(token) + "' is not a finite number");
+}
+
+void TextTokens::FailCount(std::int64_t count, std::int64_t tokens_each, const std::string& what) const {
+  Fail(what + " " + std::to_string(count) + ": needs " + std::to_string(count) + " x " + std::to_string(tokens_each) +
+       " more numbers, the rest of the file holds at most " + std::to_string(MaxTokensLeft()));
+}
+
+}  // namespace rpt::io

@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: MIT
+// Shelf as bundled by 4D-Association (Zhang et al., CVPR 2020, data/shelf/ of
+// github.com/zhangyux15/4d_association): 301 frames x 5 cameras with real OpenPose BODY_25
+// detections, time-aligned with a 3D ground truth.
+//
+//   <root>/calibration.json        cameras (fourda_calibration.h)
+//   <root>/gt.txt                  ground truth, SHELF15 joints in metres (fourda_text.h)
+//   <root>/detection/<camera>.txt  OpenPose candidates and PAF scores per camera (fourda_text.h)
+//
+// Cameras: named by their json id ("0".."4", as the regular Shelf reader); the world frame is
+// the one of VoxelPose's calibration_shelf.json (same R, t = -R T / 1000; checked by the tests),
+// so the room is ShelfRoom(). Rotations are re-orthonormalised and counted in
+// Sequence::warnings.
+//
+// Ground truth (Shelf4daJoints()): the Shelf-14 joints named as ShelfCampusJoints(), the
+// file's 15th joint (pelvis = mean of the hips) as hip_middle, then a derived nose from the head
+// segment as in the Shelf reader (param nose_proxy). Score = the file's validity row (1 here).
+// Track id = the file's identity (0-3). Frames without persons stay, with no ground truth.
+//
+// Frames: the 0-based index in the files; id "shelf4da_000000"; timestamp = index / 25 (the
+// Shelf reader's rate). The files are assumed to be Shelf images 300-600, which nothing in the
+// origin states; the index is therefore not renamed to a Shelf image number.
+//
+// Detections (detections=openpose): per camera and frame, AssociatePafs
+// (openpose_paf_association.h) assembles the BODY_25 candidates into persons, which become
+// COCO-17 (CocoBodyJoints(); neck, mid-hip and feet dropped; a person without any COCO joint is
+// dropped) with the candidate score as confidence. x, y are stored normalised: pixels =
+// x * (width - 1), y * (height - 1), as 4D-Association does.
+#pragma once
+
+#include <vector>
+
+#include "core/joints.h"
+#include "datasets/dataset_request.h"
+#include "datasets/sequence.h"
+
+namespace rpt {
+
+// ankle_right, knee_right, hip_right, hip_left, knee_left, ankle_left, wrist_right, elbow_right,
+// shoulder_right, shoulder_left, elbow_left, wrist_left, head_bottom, head_top, hip_middle, nose.
+const JointNames& Shelf4daJoints();
+
+// Params:
+//   frames         frame selection (ParseFrameRanges syntax) or "all" (default, 0-300).
+//   detections     openpose (default): assemble the detection files; none: ground truth only.
+//   nose_proxy     center (default) | top | bottom, as the Shelf reader.
+//   min_paf_score  PafAssociationOptions::min_paf_score (default 0.05).
+//   min_joints     PafAssociationOptions::min_joints, BODY_25 joints (default 5).
+// Returns one Sequence "shelf-4da". Throws ConfigError for malformed params, InputError for
+// missing or malformed files (naming file, line and token), frames outside the files and
+// detection files whose frame count differs from gt.txt.
+DatasetInfo Shelf4daInfo();
+std::vector<Sequence> ReadShelf4da(const DatasetRequest& request);
+
+}  // namespace rpt

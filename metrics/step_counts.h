@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: MIT
+// What the triangulator produced per frame, step by step: the mean over frames of each step's
+// item count (FrameStats::count), of the extra counters, and the median estimated detection
+// noise of the adaptive score. The companion of TimingAccumulator for counts instead of times.
+#pragma once
+
+#include <array>
+#include <string_view>
+#include <vector>
+
+#include "core/pipeline/frame_stats.h"
+
+namespace rpt::metrics {
+
+// The items FrameStats::count holds after each step (kStepNames order).
+inline constexpr std::array<std::string_view, kNumSteps> kStepItems = {
+    "poses",     "pairs",     "pairs",  "proposals", "proposals", "proposals",     "proposals",
+    "groups",    "proposals", "persons", "persons",  "persons",   "joints clipped"};
+
+// The extra counters of FrameStats, by name (the member names).
+inline constexpr int kNumCounters = 8;
+inline constexpr std::array<std::string_view, kNumCounters> kCounterNames = {
+    "pruned_limbs",     "small_groups",    "conflicting_proposals", "mirrored_groups",
+    "replaced_joints",  "filled_joints",   "new_tracks",            "coasting_tracks"};
+
+struct StepCountSummary {
+  long frames = 0;
+  std::array<double, kNumSteps> count_per_frame{};       // mean of FrameStats::count over frames
+  std::array<double, kNumCounters> counter_per_frame{};  // mean of the extra counters (kCounterNames)
+  long noise_frames = 0;     // frames with an estimated detection noise (noise_m > 0)
+  double noise_m_median = 0; // median of noise_m over those frames; 0 when none (fixed scale)
+};
+
+class StepCountAccumulator {
+ public:
+  void Add(const FrameStats& stats);
+  // Appends another accumulator's frames (e.g. from parallel runs over sequences).
+  void Merge(const StepCountAccumulator& other);
+  StepCountSummary Finalize() const;
+
+ private:
+  long frames_ = 0;
+  std::array<double, kNumSteps> count_sum_{};
+  std::array<double, kNumCounters> counter_sum_{};
+  std::vector<double> noise_m_;
+};
+
+// The extra counters of `stats` in kCounterNames order.
+std::array<int, kNumCounters> Counters(const FrameStats& stats);
+
+}  // namespace rpt::metrics

@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: MIT
+#include "metrics/step_counts.h"
+
+#include <gtest/gtest.h>
+
+namespace rpt::metrics {
+namespace {
+
+FrameStats Frame(int poses, int persons, int filled, double noise_m) {
+  FrameStats stats;
+  stats.count[static_cast<int>(Step::kUndistort)] = poses;
+  stats.count[static_cast<int>(Step::kMerge)] = persons;
+  stats.filled_joints = filled;
+  stats.noise_m = noise_m;
+  return stats;
+}
+
+TEST(StepCountAccumulator, MeansPerFrameAndMedianNoiseOverFramesWithAnEstimate) {
+  StepCountAccumulator counts;
+  counts.Add(Frame(10, 2, 0, 0.0));
+  counts.Add(Frame(12, 3, 4, 0.010));
+  counts.Add(Frame(14, 4, 2, 0.030));
+  StepCountAccumulator other;
+  other.Add(Frame(0, 0, 0, 0.020));
+  counts.Merge(other);
+  const StepCountSummary s = counts.Finalize();
+  EXPECT_EQ(s.frames, 4);
+  EXPECT_DOUBLE_EQ(s.count_per_frame[static_cast<int>(Step::kUndistort)], 9.0);
+  EXPECT_DOUBLE_EQ(s.count_per_frame[static_cast<int>(Step::kMerge)], 2.25);
+  EXPECT_DOUBLE_EQ(s.count_per_frame[static_cast<int>(Step::kTrack)], 0.0);
+  EXPECT_EQ(kCounterNames[5], "filled_joints");
+  EXPECT_DOUBLE_EQ(s.counter_per_frame[5], 1.5);
+  EXPECT_EQ(s.noise_frames, 3) << "frames with noise_m = 0 (fixed scale) have no estimate";
+  EXPECT_DOUBLE_EQ(s.noise_m_median, 0.020);
+}
+
+TEST(StepCountAccumulator, NoFramesGiveZeros) {
+  const StepCountSummary s = StepCountAccumulator().Finalize();
+  EXPECT_EQ(s.frames, 0);
+  EXPECT_EQ(s.noise_frames, 0);
+  EXPECT_EQ(s.noise_m_median, 0.0);
+}
+
+TEST(StepCountAccumulator, CountersFollowTheirNames) {
+  FrameStats stats;
+  stats.pruned_limbs = 1;
+  stats.small_groups = 2;
+  stats.conflicting_proposals = 3;
+  stats.mirrored_groups = 4;
+  stats.replaced_joints = 5;
+  stats.filled_joints = 6;
+  stats.new_tracks = 7;
+  stats.coasting_tracks = 8;
+  const auto counters = Counters(stats);
+  for (int c = 0; c < kNumCounters; ++c) EXPECT_EQ(counters[c], c + 1) << kCounterNames[c];
+}
+
+}  // namespace
+}  // namespace rpt::metrics
