@@ -5,7 +5,8 @@
 // - the hand-tuned "clean" model (fitted.enabled = false, the defaults of DetectorOptions): per-axis
 //   Gaussian pixel noise relative to the person's 2D box plus rare outliers, the confidence
 //   derived from the error;
-// - the fitted model (fitted.enabled = true; profiles realistic and hard): the confidence is drawn
+// - the fitted model (fitted.enabled = true; profiles realistic and hard, fitted to real OpenPose
+//   detections of Shelf and MVOR): the confidence is drawn
 //   first and a heavy-tailed error given it, in metres at the person's depth; joints hidden by
 //   other persons, furniture or the own torso are reported displaced with medium confidence or
 //   dropped; systematic per-joint offsets in 3D (skeleton definitions); per-camera calibration
@@ -80,6 +81,10 @@ struct FittedErrorOptions {
   // shift of all its joints (per-axis sigma, metres at its depth).
   double person_spread = 0.3;
   double person_shift_m = 0.0;
+  // A visible joint is a stray (reported far off, e.g. on another person's limb) with this
+  // chance: a Student-t error (3 degrees of freedom) of scale stray_error_m, same confidence.
+  double stray_probability = 0.0;
+  double stray_error_m = 0.3;
   // Hidden joints (OcclusionOptions): dropped with occluded_drop, else confidence = score_max *
   // Beta(mean, concentration) and a Student-t error of scale occluded_error_m; with occluded_snap a joint
   // hidden by another person is reported on that person's same joint instead.
@@ -129,9 +134,11 @@ struct DetectorOptions {
   static DetectorOptions Perfect();
   // The hand-tuned model used before the fit to real detectors: the defaults above.
   static DetectorOptions Clean();
-  // Fitted to real OpenPose detections (MVOR); the default profile.
+  // Fitted to real OpenPose detections of a multi-camera room (4D-Association's Shelf, hidden
+  // joints' behaviour from MVOR); the default profile.
   static DetectorOptions Realistic();
-  // Clearly worse than realistic: heavier occlusion, noise and misses.
+  // Fitted to real OpenPose detections of an occluded operating room (MVOR): clearly worse
+  // than realistic (more occlusion, misses and noise).
   static DetectorOptions Hard();
 };
 

@@ -196,6 +196,9 @@ bool DetectPersonFitted(const DetectorOptions& options, const ViewContext& view,
       }
     } else if (!(options.joint_dropout > 0.0 && rng.Bernoulli(options.joint_dropout))) {
       draw = DrawVisibleJoint(fitted, pixels_per_metre, person_factor * joint_factor[k], rng);
+      if (fitted.stray_probability > 0.0 && rng.Bernoulli(fitted.stray_probability)) {
+        draw.error_px = StudentError(fitted.stray_error_m * pixels_per_metre, 3.0, rng);
+      }
     }
     if (!draw.reported) {
       out->col(k).setZero();
