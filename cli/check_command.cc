@@ -45,6 +45,8 @@ int RunCheck(const CheckArgs& args) {
     throw InputError(args.thresholds + ": expected {\"evaluations\": [...]}");
   }
   int failures = 0, checked = 0, skipped = 0;
+  // Evaluations often read the same files: one line per file and kind for the whole check.
+  InputWarnings warnings;
   Json report = Json::array();
   std::printf("%-40s %-22s %6s %10s %10s  %s\n", "evaluation", "metric", "bound", "expected", "achieved", "status");
   for (size_t i = 0; i < root["evaluations"].size(); ++i) {
@@ -80,7 +82,9 @@ int RunCheck(const CheckArgs& args) {
     options.eval = config.metrics;
     options.progress = false;
     options.threads = 1;  // timings comparable across machines with different core counts
-    const RunResult run = RunSequences(LoadInput(input, true), options);
+    InputWarnings loaded;
+    const RunResult run = RunSequences(LoadInput(input, true, &loaded), options);
+    warnings.MergeRepeated(loaded);
     const nlohmann::ordered_json summary = SummaryJson(run);
     for (const char* bound : {"min", "max"}) {
       const Json limits = e.value(bound, Json::object());
@@ -100,6 +104,7 @@ int RunCheck(const CheckArgs& args) {
       }
     }
   }
+  PrintInputWarnings(warnings);
   std::printf("%d checks, %d failed, %d evaluations skipped\n", checked, failures, skipped);
   if (args.json) std::cout << report.dump(2) << "\n";
   return failures > 0 ? 1 : 0;

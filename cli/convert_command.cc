@@ -53,10 +53,14 @@ void RunConvert(const ConvertArgs& args) {
   }
   // Detections alone (no --dataset / --labels): convert the file as it is.
   const bool detections_only = args.input.dataset.empty() && args.input.labels.empty() && !args.input.detections.empty();
+  // Corrected values (scores clamped to 1, rotations re-orthonormalised) are what gets written.
+  InputWarnings warnings;
   const std::vector<Sequence> sequences =
-      detections_only ? std::vector<Sequence>{} : LoadInput(args.input, /*require_detections=*/false);
+      detections_only ? std::vector<Sequence>{} : LoadInput(args.input, /*require_detections=*/false, &warnings);
   const Detections detections =
       detections_only ? ReadDetectionsFile(args.input.detections, DetectionsFileOptions{}) : CollectDetections(sequences);
+  warnings.Merge(detections.warnings);  // empty unless read directly above
+  PrintInputWarnings(warnings);
   if (!args.out.empty()) {
     Hdf5WriteOptions options;
     options.float64 = args.float64;

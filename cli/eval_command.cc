@@ -6,7 +6,6 @@
 #include <cstdio>
 #include <iostream>
 
-
 #include "cli/commands.h"
 #include "cli/config_args.h"
 #include "cli/diagnostics.h"
@@ -30,17 +29,22 @@ struct EvalArgs {
 
 void RunEval(const EvalArgs& args) {
   const Config config = ResolveConfig(args.config);
-  const std::vector<Sequence> sequences = LoadInput(args.input, /*require_detections=*/true);
+  InputWarnings warnings;
+  const std::vector<Sequence> sequences = LoadInput(args.input, /*require_detections=*/true, &warnings);
+  PrintInputWarnings(warnings);
   RunOptions options;
   options.triangulator = config.triangulator;
   options.eval = config.metrics;
   options.threads = args.threads;
   options.progress = !args.quiet;
   const RunResult run = RunSequences(sequences, options);
-  const RunInfo info = CollectRunInfo(run.threads, CurrentCommandLine());
+  RunInfo info = CollectRunInfo(run.threads, CurrentCommandLine());
+  info.input_warnings = InputWarningLines(warnings);
   const std::string out_dir =
       !args.out.empty() ? args.out : "out/eval-" + (args.input.dataset.empty() ? "labels" : args.input.dataset);
-  const EvalDiagnostics diagnostics = Diagnose(sequences, run);
+  DetectionCheckOptions check_options;
+  check_options.max_gap_s = config.triangulator.track.max_gap_s;  // one notion of continuity
+  const EvalDiagnostics diagnostics = Diagnose(sequences, run, check_options);
   const nlohmann::ordered_json diagnostics_json = DiagnosticsJson(diagnostics);
   WriteEvalOutputs(out_dir, sequences, run, config, info, diagnostics_json);
   if (args.json) {

@@ -25,7 +25,9 @@ struct InspectArgs {
 void PrintReport(const nlohmann::ordered_json& report, const std::vector<std::string>& shift_lines);
 
 void RunInspect(const InspectArgs& args) {
-  const std::vector<Sequence> sequences = LoadInput(args.input, /*require_detections=*/false);
+  InputWarnings warnings;
+  const std::vector<Sequence> sequences = LoadInput(args.input, /*require_detections=*/false, &warnings);
+  PrintInputWarnings(warnings);
   nlohmann::ordered_json report = nlohmann::ordered_json::array();
   std::vector<std::string> shift_lines;
   std::vector<std::string> warnings;

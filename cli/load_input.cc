@@ -33,7 +33,7 @@ void AddInputOptions(CLI::App* command, InputArgs* args) {
   command->add_option("--seed", args->seed, "seed of the simulated detector")->capture_default_str();
 }
 
-std::vector<Sequence> LoadInput(const InputArgs& args, bool require_detections) {
+std::vector<Sequence> LoadInput(const InputArgs& args, bool require_detections, InputWarnings* warnings) {
   if (args.dataset.empty() == args.labels.empty()) {
     throw ConfigError("give either --dataset NAME (with --root DIR) or --labels FILE");
   }
@@ -46,6 +46,7 @@ std::vector<Sequence> LoadInput(const InputArgs& args, bool require_detections) 
     throw ConfigError("--simulate-perfect (deprecated) contradicts --detector " + args.detector);
   }
   std::vector<Sequence> sequences;
+  InputWarnings detection_warnings;  // of a detections file read once for all sequences
   if (!args.labels.empty()) {
     sequences = ReadLabelsFile(args.labels, LabelsOptions{});
   } else {
@@ -68,10 +69,13 @@ std::vector<Sequence> LoadInput(const InputArgs& args, bool require_detections) 
     // VoxelPose caches are keyed "<camera>_<frame>": they need the sequence to map keys to ids.
     for (Sequence& s : sequences) {
       const std::string prefix = s.frames.empty() ? s.name : s.frames.front().id.substr(0, s.frames.front().id.rfind('_'));
-      AttachDetections(ReadVoxelPoseDetections(args.detections, s, prefix), args.detections, &s);
+      const Detections detections = ReadVoxelPoseDetections(args.detections, s, prefix);
+      AttachDetections(detections, args.detections, &s);
+      s.warnings.Merge(detections.warnings);  // read per sequence: its own frames' corrections
     }
   } else if (!args.detections.empty()) {
     const Detections detections = ReadDetectionsFile(args.detections, DetectionsFileOptions{});
+    detection_warnings = detections.warnings;  // once, however many sequences it is attached to
     int matched = 0;
     for (Sequence& s : sequences) {
       // A detections file may cover several sequences: attach what matches each.
@@ -84,6 +88,8 @@ std::vector<Sequence> LoadInput(const InputArgs& args, bool require_detections) 
     }
     if (matched == 0) throw InputError(args.detections + ": no frame id matches the frames of the input");
   }
+  for (const Sequence& s : sequences) warnings->Merge(s.warnings);
+  warnings->Merge(detection_warnings);
   for (const Sequence& s : sequences) {
     ValidateSequence(s, s.name);
     if (!require_detections) continue;
@@ -96,6 +102,17 @@ std::vector<Sequence> LoadInput(const InputArgs& args, bool require_detections) 
     }
   }
   return sequences;
+}
+
+void PrintInputWarnings(const InputWarnings& warnings) {
+  for (const InputWarning& w : warnings.items()) std::fprintf(stderr, "warning: %s\n", w.Line().c_str());
+  std::fflush(stderr);
+}
+
+std::vector<std::string> InputWarningLines(const InputWarnings& warnings) {
+  std::vector<std::string> lines;
+  for (const InputWarning& w : warnings.items()) lines.push_back(w.Line());
+  return lines;
 }
 
 }  // namespace rpt::cli

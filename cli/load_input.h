@@ -28,6 +28,13 @@ void AddInputOptions(CLI::App* command, InputArgs* args);
 
 // Reads the sequences and attaches detections. With `require_detections`, a sequence without
 // any detection is an InputError explaining the options. Throws InputError / ConfigError.
-std::vector<Sequence> LoadInput(const InputArgs& args, bool require_detections);
+// The corrections the readers applied (rotations re-orthonormalised, scores clamped; one entry
+// per file and kind) are added to `warnings`: the sequences' own and the detection file's.
+std::vector<Sequence> LoadInput(const InputArgs& args, bool require_detections, InputWarnings* warnings);
+
+// Prints every entry as "warning: <line>" on stderr.
+void PrintInputWarnings(const InputWarnings& warnings);
+// The lines of `warnings` (InputWarning::Line()), e.g. for run.json.
+std::vector<std::string> InputWarningLines(const InputWarnings& warnings);
 
 }  // namespace rpt::cli

@@ -20,7 +20,7 @@ void PrintStepTimes(std::ostream& out, const metrics::TimingSummary& timing, con
     if (counts != nullptr) {
       std::snprintf(line, sizeof(line), "  %-18s %12.2f %12.2f %14.2f  %s\n", std::string(kStepNames[s]).c_str(),
                     timing.step_us_median[s], timing.step_us_mean[s], counts->count_per_frame[s],
-                    std::string(metrics::kStepItems[s]).c_str());
+                    std::string(kStepItems[s]).c_str());
     } else {
       std::snprintf(line, sizeof(line), "  %-18s %12.2f %12.2f\n", std::string(kStepNames[s]).c_str(),
                     timing.step_us_median[s], timing.step_us_mean[s]);
@@ -66,7 +66,7 @@ std::string StepsCsv(const metrics::TimingSummary& timing, const metrics::StepCo
   char line[200];
   for (int s = 0; s < kNumSteps; ++s) {
     std::snprintf(line, sizeof(line), "%s,%s,%.4f,%.3f,%.3f\n", std::string(kStepNames[s]).c_str(),
-                  std::string(metrics::kStepItems[s]).c_str(), counts.count_per_frame[s], timing.step_us_median[s],
+                  std::string(kStepItems[s]).c_str(), counts.count_per_frame[s], timing.step_us_median[s],
                   timing.step_us_mean[s]);
     out << line;
   }

@@ -191,6 +191,7 @@ Json RunInfoJson(const RunInfo& info) {
   j["threads"] = info.threads;
   j["compiler"] = info.compiler;
   j["build_type"] = info.build_type;
+  j["input_warnings"] = info.input_warnings;
   return j;
 }
 

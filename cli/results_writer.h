@@ -45,6 +45,8 @@ void WriteEvalOutputs(const std::filesystem::path& dir, const std::vector<Sequen
                       const Config& config, const RunInfo& info,
                       const nlohmann::ordered_json& extra_summary = nlohmann::ordered_json::object());
 
+// run.json: git revision, date, command, machine, threads, build, and "input_warnings" (the
+// readers' correction lines, [] when none).
 nlohmann::ordered_json RunInfoJson(const RunInfo& info);
 
 }  // namespace rpt::cli

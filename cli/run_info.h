@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace rpt::cli {
 
@@ -15,6 +16,7 @@ struct RunInfo {
   std::string build_type;
   std::string command_line;
   std::string date_utc;
+  std::vector<std::string> input_warnings;  // corrections the readers applied, one line per file and kind
 };
 
 RunInfo CollectRunInfo(int threads, const std::string& command_line);

@@ -14,6 +14,7 @@
 #include "cli/progress.h"
 #include "core/errors.h"
 #include "core/pipeline/triangulator.h"
+#include "core/smooth_offline.h"
 
 namespace rpt::cli {
 namespace {
@@ -32,13 +33,22 @@ TriangulatedSequence Triangulate(const Sequence& sequence, const RunOptions& opt
   out.predictions.resize(sequence.frames.size());
   FrameStats stats;
   const std::vector<Poses2D> no_views(sequence.cameras.size());
+  std::vector<double> timestamps_s(sequence.frames.size());
+  std::vector<int> num_detected(sequence.frames.size());
   for (size_t f = 0; f < sequence.frames.size(); ++f) {
     const SequenceFrame& frame = sequence.frames[f];
     triangulator.Process(frame.views.empty() ? no_views : frame.views, frame.timestamp_s, &out.predictions[f], &stats);
     out.timing.Add(stats);
     out.counts.Add(stats);
+    timestamps_s[f] = frame.timestamp_s;
+    num_detected[f] = out.predictions[f].num_persons() - stats.coasting_tracks;
     const long done = ++*frames_done;
     if (progress != nullptr) progress->Update(done);
+  }
+  // smooth.mode = offline: two-sided smoothing over the whole sequence (needs tracking).
+  if (tri_options.track.enabled) {
+    SmoothOffline(tri_options.smooth, tri_options.track.max_gap_s, tri_options.UnobservedScore(), timestamps_s,
+                  num_detected, &out.predictions);
   }
   return out;
 }

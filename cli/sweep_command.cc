@@ -10,6 +10,7 @@
 #include <iostream>
 #include <map>
 #include <mutex>
+#include <optional>
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -137,13 +138,20 @@ void RunSweep(const SweepArgs& args) {
     configs.push_back(ResolveConfig(config_args));
     inputs.push_back(input);
   }
-  const std::vector<Sequence> shared_input = per_config_input ? std::vector<Sequence>{} : LoadInput(args.input, true);
+  // One warning line per file and kind, not one per configuration: configurations that load their
+  // own input read the same files again (MergeRepeated).
+  InputWarnings warnings;
+  const std::vector<Sequence> shared_input =
+      per_config_input ? std::vector<Sequence>{} : LoadInput(args.input, true, &warnings);
+  if (!per_config_input) PrintInputWarnings(warnings);
+  std::vector<InputWarnings> config_warnings(mine.size());
 
   std::vector<Json> summaries(mine.size());
   std::exception_ptr error;
   std::mutex error_mutex;
   std::atomic<long> done{0};
-  Progress progress("sweep", static_cast<long>(mine.size()));
+  std::optional<Progress> progress;  // ended before the warnings are printed (its bar owns the line)
+  progress.emplace("sweep", static_cast<long>(mine.size()));
   const int count = static_cast<int>(mine.size());
 #ifdef _OPENMP
   const int threads = args.threads > 0 ? args.threads : omp_get_max_threads();
@@ -158,19 +166,25 @@ void RunSweep(const SweepArgs& args) {
       options.eval = configs[c].metrics;
       options.progress = false;
       options.threads = 1;
-      summaries[c] = SummaryJson(RunSequences(per_config_input ? LoadInput(inputs[c], true) : shared_input, options));
+      summaries[c] = SummaryJson(
+          RunSequences(per_config_input ? LoadInput(inputs[c], true, &config_warnings[c]) : shared_input, options));
     } catch (...) {
       std::lock_guard<std::mutex> lock(error_mutex);
       if (!error) error = std::current_exception();
     }
     const long finished = ++done;
 #ifdef _OPENMP
-    if (omp_get_thread_num() == 0) progress.Update(finished);
+    if (omp_get_thread_num() == 0) progress->Update(finished);
 #else
-    progress.Update(finished);
+    progress->Update(finished);
 #endif
   }
+  progress.reset();
   if (error) std::rethrow_exception(error);
+  if (per_config_input) {
+    for (const InputWarnings& w : config_warnings) warnings.MergeRepeated(w);
+    PrintInputWarnings(warnings);
+  }
 
   Json rows = Json::array();
   for (int c = 0; c < count; ++c) {
@@ -184,7 +198,9 @@ void RunSweep(const SweepArgs& args) {
   Json file;
   file["total"] = all.size();
   file["shard"] = args.shard;
-  file["run"] = RunInfoJson(CollectRunInfo(threads, CurrentCommandLine()));
+  RunInfo info = CollectRunInfo(threads, CurrentCommandLine());
+  info.input_warnings = InputWarningLines(warnings);
+  file["run"] = RunInfoJson(info);
   file["rows"] = rows;
   const std::string stem = shards == 1 ? "sweep" : "sweep-shard-" + std::to_string(shard) + "-of-" + std::to_string(shards);
   std::ofstream(fs::path(args.out) / (stem + ".json")) << file.dump(2) << "\n";

@@ -34,7 +34,8 @@ struct AttachReport {
 // Sets sequence->detection_joints and every frame's views (camera order of the sequence) from
 // `detections`. Cameras are matched by name; a camera the detections do not mention gets no
 // persons. Throws InputError naming `source` when a detection camera is not in the sequence,
-// when no frame id matches at all, or on joint-count mismatches.
+// when no frame id matches at all, or on joint-count mismatches. `detections.warnings` is not
+// copied (one Detections may be attached to several sequences): the caller reports it once.
 AttachReport AttachDetections(const Detections& detections, const std::string& source, Sequence* sequence);
 
 // Replaces every frame's views by simulated detections of its GT (synthetic detector model,

@@ -43,6 +43,21 @@ void InputWarnings::Merge(const InputWarnings& other) {
   }
 }
 
+void InputWarnings::MergeRepeated(const InputWarnings& other) {
+  for (const InputWarning& o : other.items_) {
+    bool merged = false;
+    for (InputWarning& w : items_) {
+      if (w.source == o.source && w.what == o.what) {
+        if (o.count > w.count) w.count = o.count;
+        if (o.worst > w.worst) w.worst = o.worst;
+        merged = true;
+        break;
+      }
+    }
+    if (!merged) items_.push_back(o);
+  }
+}
+
 long InputWarnings::total() const {
   long n = 0;
   for (const InputWarning& w : items_) n += w.count;
@@ -60,11 +75,25 @@ Eigen::Matrix3d AcceptRotation(const Eigen::Matrix3d& R, const std::string& sour
     throw InputError(s.str());
   }
   if (R.determinant() < 0) throw InputError(where + ": R is a reflection (det < 0), not a rotation");
-  if (error > kRotationRoundOff && warnings != nullptr) {
-    warnings->Add(source, "rotations re-orthonormalised", "max |R^T R - I|", error);
-  }
+  if (error <= kRotationRoundOff) return R;
+  if (warnings != nullptr) warnings->Add(source, "rotations re-orthonormalised", "max |R^T R - I|", error);
   const Eigen::JacobiSVD<Eigen::Matrix3d> svd(R, Eigen::ComputeFullU | Eigen::ComputeFullV);
   return svd.matrixU() * svd.matrixV().transpose();
+}
+
+Eigen::Vector4d AcceptQuaternion(const Eigen::Vector4d& q, const std::string& source, const std::string& where,
+                                 InputWarnings* warnings) {
+  const double norm = q.norm();
+  const double error = std::abs(norm - 1.0);
+  if (!q.allFinite() || !(error <= kMaxRotationError)) {
+    std::ostringstream s;
+    s << where << ": quaternion (" << q[0] << ", " << q[1] << ", " << q[2] << ", " << q[3] << ") has norm " << norm
+      << ", expected a unit quaternion (norms within " << kMaxRotationError << " of 1 are accepted and normalised)";
+    throw InputError(s.str());
+  }
+  if (error <= kRotationRoundOff) return q;
+  if (warnings != nullptr) warnings->Add(source, "quaternions normalised", "max ||q| - 1|", error);
+  return q / norm;
 }
 
 double AcceptScoreSlow(double score, const std::string& source, InputWarnings* warnings, const std::string& where) {

@@ -13,9 +13,10 @@
 namespace rpt {
 
 // Rotations with max |R^T R - I| up to this are replaced by the nearest rotation (and counted
-// when the deviation exceeds kRotationRoundOff); larger deviations are errors.
+// when the deviation exceeds kRotationRoundOff); larger deviations are errors. The same bound
+// applies to | |q| - 1 | of a stored quaternion.
 inline constexpr double kMaxRotationError = 1e-3;
-// Deviations up to this are double-precision round-off: corrected silently.
+// Deviations up to this are double-precision round-off: the value is kept as it is, uncounted.
 inline constexpr double kRotationRoundOff = 1e-9;
 // Detector confidences in (1, kMaxScoreOvershoot] are clamped to 1 and counted; larger values,
 // negative values and NaN are errors.
@@ -37,7 +38,12 @@ struct InputWarning {
 class InputWarnings {
  public:
   void Add(const std::string& source, std::string_view what, std::string_view measure, double value);
+  // Adds the counts of `other` (corrections of other values, e.g. another sequence of the file).
   void Merge(const InputWarnings& other);
+  // Folds in `other` when it describes the same corrections seen again (the same files read once
+  // more, e.g. by another configuration of a sweep): per (source, what) the larger count and
+  // the larger worst value are kept instead of adding.
+  void MergeRepeated(const InputWarnings& other);
   const std::vector<InputWarning>& items() const { return items_; }
   bool empty() const { return items_.empty(); }
   long total() const;
@@ -46,11 +52,22 @@ class InputWarnings {
   std::vector<InputWarning> items_;
 };
 
-// The nearest rotation to `R` (SVD polar factor). Throws InputError "`where`: R is not a
-// rotation (...)" when R has non-finite entries, max |R^T R - I| > kMaxRotationError, or det < 0.
-// Corrections beyond round-off are counted under `source` when `warnings` is given.
+// The nearest rotation to `R` (SVD polar factor); `R` itself when it is orthonormal to round-off
+// (max |R^T R - I| <= kRotationRoundOff). Throws InputError "<where>: R is not a rotation (...)"
+// when R has non-finite entries or max |R^T R - I| > kMaxRotationError, and "<where>: R is a
+// reflection ..." when det < 0; `where` names the file and the place of R. Corrections beyond
+// round-off are counted under `source` (the file) when `warnings` is given.
 Eigen::Matrix3d AcceptRotation(const Eigen::Matrix3d& R, const std::string& source, const std::string& where,
                                InputWarnings* warnings);
+
+// The unit quaternion q / |q| (any component order; `q` itself within round-off). Throws
+// InputError "`where`: quaternion (...) has norm ..." when | |q| - 1 | > kMaxRotationError or q is
+// not finite; normalisations beyond round-off are counted under `source`.
+Eigen::Vector4d AcceptQuaternion(const Eigen::Vector4d& q, const std::string& source, const std::string& where,
+                                 InputWarnings* warnings);
+
+// The branch of AcceptScore below for scores outside [0, 1].
+double AcceptScoreSlow(double score, const std::string& source, InputWarnings* warnings, const std::string& where);
 
 // `score` clamped to [0, 1]: values in (1, kMaxScoreOvershoot] become 1 and are counted under
 // `source`. Throws InputError "<where()>: score ... outside [0, 1]" for NaN, negative or larger
@@ -61,6 +78,5 @@ double AcceptScore(double score, const std::string& source, InputWarnings* warni
   if (score >= 0.0 && score <= 1.0) return score;
   return AcceptScoreSlow(score, source, warnings, where());
 }
-double AcceptScoreSlow(double score, const std::string& source, InputWarnings* warnings, const std::string& where);
 
 }  // namespace rpt

@@ -58,6 +58,8 @@ struct Sequence {
 
 // Checks shapes and values (camera validity, joint counts, finite coordinates, scores in [0, 1],
 // unique frame ids). Throws InputError naming `source`, the frame id and the view on failure.
+// Strict on purpose: readers correct real-world imprecision first (rotations re-orthonormalised,
+// scores clamped; datasets/input_warnings.h), so a reader's Sequence always passes.
 void ValidateSequence(const Sequence& sequence, const std::string& source);
 
 }  // namespace rpt

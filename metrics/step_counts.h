@@ -12,16 +12,12 @@
 
 namespace rpt::metrics {
 
-// The items FrameStats::count holds after each step (kStepNames order).
-inline constexpr std::array<std::string_view, kNumSteps> kStepItems = {
-    "poses",     "pairs",     "pairs",  "proposals", "proposals", "proposals",     "proposals",
-    "groups",    "proposals", "persons", "persons",  "persons",   "joints clipped"};
-
 // The extra counters of FrameStats, by name (the member names).
-inline constexpr int kNumCounters = 8;
+inline constexpr int kNumCounters = 11;
 inline constexpr std::array<std::string_view, kNumCounters> kCounterNames = {
-    "pruned_limbs",     "small_groups",    "conflicting_proposals", "mirrored_groups",
-    "replaced_joints",  "filled_joints",   "new_tracks",            "coasting_tracks"};
+    "pruned_limbs",        "small_groups",        "conflicting_proposals", "mirrored_groups",
+    "unsupported_persons", "single_view_persons", "replaced_joints",       "filled_joints",
+    "new_tracks",          "coasting_tracks",     "bone_length_corrections"};
 
 struct StepCountSummary {
   long frames = 0;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <iterator>
 #include <string_view>
 
 namespace rpt {
@@ -24,20 +25,29 @@ enum class Step : int {
   kSingleView,       // (12b) persons seen by one camera only (off by default)
   kTrack,            // (13) track ids over time
   kClipSpeed,        // (14) clip joint speed
+  kBoneLengths,      // (15) per-track bone-length consistency (optional)
+  kSmooth,           // (16) causal temporal smoothing (optional)
   kCount
 };
 inline constexpr int kNumSteps = static_cast<int>(Step::kCount);
 
 inline constexpr std::array<std::string_view, kNumSteps> kStepNames = {
     "undistort", "pairs", "prefilter", "triangulate_core", "room_check", "score", "filter",
-    "group", "triangulate_full", "merge", "verify", "postprocess", "single_view", "track", "clip_speed"};
+    "group", "triangulate_full", "merge", "verify", "postprocess", "single_view", "track", "clip_speed",
+    "bone_lengths", "smooth"};
+
+// What FrameStats::count holds after each step (kStepNames order).
+inline constexpr std::string_view kStepItems[] = {
+    "poses",     "pairs",   "pairs",   "proposals", "proposals", "proposals",      "proposals",
+    "groups",    "proposals", "persons", "persons", "persons",   "persons",        "persons",
+    "joints clipped", "joints checked", "joints smoothed"};
+static_assert(std::size(kStepItems) == kNumSteps, "one item name per step");
 
 struct FrameStats {
   // Steady-clock time of each step (microseconds) and of the whole frame.
   std::array<double, kNumSteps> time_us{};
   double total_us = 0;
-  // Items after each step: poses, pairs, pairs, proposals, proposals, proposals, proposals,
-  // groups, proposals, persons, persons, persons, persons, persons, joints clipped.
+  // Items after each step: kStepItems.
   std::array<int, kNumSteps> count{};
   // Extra counters.
   int pruned_limbs = 0;       // joints invalidated by limb pruning (steps 7 and 10)
@@ -47,9 +57,11 @@ struct FrameStats {
   int unsupported_persons = 0;  // verify: persons dropped because more views see nobody there than see them
   int single_view_persons = 0;  // single_view: persons placed from one view
   int replaced_joints = 0;    // post-processing: implausible joints replaced by a neighbour
-  int filled_joints = 0;      // post-processing: missing joints filled from a neighbour
+  int filled_joints = 0;      // missing joints filled from a neighbour (post-processing, and
+                              // joints marked missing by bone_lengths)
   int new_tracks = 0;         // tracking: tracks started this frame
   int coasting_tracks = 0;    // tracking: lost persons returned with their last pose
+  int bone_length_corrections = 0;  // bone_lengths: joints marked missing (bones disagree with their track)
   double noise_m = 0;         // adaptive scoring: the estimated detection noise (m), 0 with a fixed scale
 
   void Reset() { *this = FrameStats{}; }

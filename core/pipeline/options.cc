@@ -74,6 +74,14 @@ std::string TriangulatorOptions::Check() const {
   c.Range("track.max_gap_s", track.max_gap_s, 0, 1e9);
   c.Range("track.max_missing_frames", track.max_missing_frames, 0, 1e6);
   c.Positive("clip_speed.max_speed_m_s", clip_speed.max_speed_m_s);
+  c.Range("bone_lengths.tolerance_rel", bone_lengths.tolerance_rel, 0.01, 10);
+  c.Range("bone_lengths.min_tolerance_m", bone_lengths.min_tolerance_m, 0, 10);
+  c.Range("bone_lengths.window", bone_lengths.window, 1, 10000);
+  c.Range("bone_lengths.min_observations", bone_lengths.min_observations, 1, bone_lengths.window);
+  c.Range("smooth.measurement_noise_m", smooth.measurement_noise_m, 1e-6, 100);
+  c.Range("smooth.acceleration_m_s2", smooth.acceleration_m_s2, 1e-6, 1e6);
+  c.Range("smooth.offline_sigma_s", smooth.offline_sigma_s, 1e-4, 1e3);
+  c.Range("smooth.offline_degree", smooth.offline_degree, 1, 3);
   return c.error();
 }
 

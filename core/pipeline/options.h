@@ -140,6 +140,45 @@ struct ClipSpeedOptions {
   double max_speed_m_s = 10.0;  // per joint, between consecutive outputs of one track
 };
 
+// Step 15 (optional, off by default): per-track bone-length consistency. Each track keeps the
+// lengths of each limb over its last `window` observations; once a limb has `min_observations`,
+// a length differing from their median by more than max(tolerance_rel x median, min_tolerance_m)
+// makes the limb disagree. The joints explaining the disagreeing limbs (a wrist moved 30 cm: its
+// forearm disagrees, the elbow's upper arm does not) are marked missing and, with
+// postprocess.fill_missing_joints, filled from their neighbour like in step 12
+// (check_bone_lengths.h). Off by default until it is shown to help on real detections.
+struct BoneLengthOptions {
+  bool enabled = false;
+  double tolerance_rel = 0.25;   // relative disagreement with the track's running length
+  double min_tolerance_m = 0.05; // floor of the tolerance, for short bones (hands, face)
+  int min_observations = 10;     // a limb is checked once its track has observed it this often
+  int window = 50;               // observations per limb the running median is taken over
+};
+
+// Temporal smoothing of tracked persons (off by default until it is shown to help on real
+// detections):
+//   causal  = step 16 inside the pipeline: a constant-velocity Kalman filter per track and joint
+//             (white-noise acceleration model; at a fixed frame rate its gains settle to those
+//             of an alpha-beta filter), time-aware (dt from the timestamps), online, no lag on
+//             constant velocity;
+//   offline = after a whole sequence has been triangulated (rpt eval and friends): per track and
+//             joint, a Gaussian-weighted local polynomial fit in time (Savitzky-Golay generalised
+//             to uneven times and missing frames), two-sided, so no lag; not usable online.
+// Neither smooths across a gap of more than track.max_gap_s or an unknown time.
+enum class SmoothMode { kOff, kCausal, kOffline };
+
+struct SmoothOptions {
+  SmoothMode mode = SmoothMode::kOff;
+  // causal: the filter's gains grow with acceleration_m_s2 x dt^2 / measurement_noise_m: more
+  // acceleration or less noise follows the input more closely, the reverse smooths more.
+  double measurement_noise_m = 0.02;  // m, standard deviation of a triangulated joint's error
+  double acceleration_m_s2 = 10.0;    // m/s^2, standard deviation of a joint's acceleration
+  // offline
+  double offline_sigma_s = 0.1;  // s, standard deviation of the Gaussian time weights (window +-3 sigma)
+  int offline_degree = 2;        // degree of the local polynomial (1: exact on constant velocity,
+                                 // 2: also on constant acceleration)
+};
+
 struct TriangulatorOptions {
   UndistortOptions undistort;
   PrefilterOptions prefilter;
@@ -154,6 +193,14 @@ struct TriangulatorOptions {
   PostprocessOptions postprocess;
   TrackOptions track;
   ClipSpeedOptions clip_speed;
+  BoneLengthOptions bone_lengths;
+  SmoothOptions smooth;
+
+  // Joints with a score at or below this are not observations for the temporal steps
+  // (bone_lengths, smooth): missing ones (0) and those filled by post-processing.
+  double UnobservedScore() const {
+    return postprocess.enabled && postprocess.fill_missing_joints ? postprocess.filled_joint_score : 0.0;
+  }
 
   // Empty when valid; otherwise "section.key: problem" for the first invalid value.
   std::string Check() const;

@@ -7,6 +7,24 @@
 
 namespace rpt {
 
+int FillMissingJoints(std::span<const int> neighbour, double filled_score, Eigen::Map<Eigen::Matrix4Xd> person) {
+  const int n = static_cast<int>(person.cols());
+  int filled = 0;
+  // Repeated passes let fills propagate along chains (e.g. finger tip <- ... <- wrist).
+  for (int pass = 0; pass < 6; ++pass) {
+    bool changed = false;
+    for (int j = 0; j < n; ++j) {
+      if (person(3, j) > 0 || neighbour[j] < 0 || person(3, neighbour[j]) <= 0) continue;
+      person.col(j).head<3>() = person.col(neighbour[j]).head<3>();
+      person(3, j) = filled_score;
+      ++filled;
+      changed = true;
+    }
+    if (!changed) break;
+  }
+  return filled;
+}
+
 int PostprocessPersons(const PostprocessOptions& options, const RoomCheckOptions& room, std::span<const int> neighbour,
                        std::span<const ResolvedLimb> limbs, Poses3D* persons, FrameStats* stats) {
   if (!options.enabled) return persons->num_persons();
@@ -42,20 +60,7 @@ int PostprocessPersons(const PostprocessOptions& options, const RoomCheckOptions
     if (options.drop_outside_room && !InsideRoom(center / valid, room)) continue;
     stats->replaced_joints += replaced;
 
-    if (options.fill_missing_joints) {
-      // Repeated passes let fills propagate along chains (e.g. finger tip <- ... <- wrist).
-      for (int pass = 0; pass < 6; ++pass) {
-        bool changed = false;
-        for (int j = 0; j < n; ++j) {
-          if (person(3, j) > 0 || neighbour[j] < 0 || person(3, neighbour[j]) <= 0) continue;
-          person.col(j).head<3>() = person.col(neighbour[j]).head<3>();
-          person(3, j) = options.filled_joint_score;
-          ++stats->filled_joints;
-          changed = true;
-        }
-        if (!changed) break;
-      }
-    }
+    if (options.fill_missing_joints) stats->filled_joints += FillMissingJoints(neighbour, options.filled_joint_score, person);
     if (kept != p) {
       persons->Person(kept) = persons->Person(p);
       persons->track_ids[kept] = persons->track_ids[p];

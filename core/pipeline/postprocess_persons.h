@@ -16,6 +16,11 @@
 
 namespace rpt {
 
+// Fills the missing joints (score <= 0) of one person from their neighbour joints
+// (`neighbour[j]`, -1 = none), repeatedly so fills propagate along chains; filled joints get
+// `filled_score`. Returns the number of joints filled.
+int FillMissingJoints(std::span<const int> neighbour, double filled_score, Eigen::Map<Eigen::Matrix4Xd> person);
+
 // `neighbour[j]` is the joint filling j (-1 = none); `limbs` index the persons' joints.
 // Returns the number of persons kept.
 int PostprocessPersons(const PostprocessOptions& options, const RoomCheckOptions& room, std::span<const int> neighbour,

@@ -121,6 +121,8 @@ const TriangulatorOptions& Triangulator::options() const { return ws_->options; 
 void Triangulator::Reset() {
   ws_->previous.Clear(static_cast<int>(ws_->core_joints.size()));
   ws_->tracker.Reset();
+  ws_->bone_lengths.Reset();
+  ws_->smoother.Reset();
   ws_->noise.Reset(ws_->options.score.noise_prior_m);
   ws_->last_timestamp_s = std::numeric_limits<double>::quiet_NaN();
 }
@@ -231,6 +233,21 @@ void Triangulator::Process(std::span<const Poses2D> views, double timestamp_s, P
 
   if (opt.track.enabled) {
     count[at(Step::kClipSpeed)] = ClipSpeed(opt.clip_speed, ws.tracker, timestamp_s, num_detected, persons);
+  }
+  timer.Lap(Step::kClipSpeed);
+
+  // The temporal steps need track ids. Joints at or below the filled score are not observations.
+  const double filled_score = opt.UnobservedScore();
+  if (opt.track.enabled) {
+    count[at(Step::kBoneLengths)] = ws.bone_lengths.Apply(opt.bone_lengths, ws.all_limbs, ws.neighbour, filled_score,
+                                                          num_detected, persons, stats);
+  }
+  timer.Lap(Step::kBoneLengths);
+
+  if (opt.track.enabled) {
+    count[at(Step::kSmooth)] =
+        ws.smoother.Apply(opt.smooth, opt.track.max_gap_s, filled_score, timestamp_s, num_detected, persons);
+    // The tracks' last poses are the outputs (what speed clipping and coasting refer to).
     ws.tracker.Commit(*persons, num_detected, timestamp_s);
   }
   // Remember this frame's persons for the next frame's pre-filter.
@@ -245,7 +262,7 @@ void Triangulator::Process(std::span<const Poses2D> views, double timestamp_s, P
       ws.previous.score.push_back(person(3, ws.core_joints[c]));
     }
   }
-  timer.Lap(Step::kClipSpeed);
+  timer.Lap(Step::kSmooth);
   timer.Finish();
 }
 

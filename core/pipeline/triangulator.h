@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // RapidPoseTriangulation: multi-view multi-person 3D pose triangulation from 2D poses
-// (Bermuth, Poeppel, Reif, CVPR 2026, section 3.1, steps 1-14).
+// (Bermuth, Poeppel, Reif, CVPR 2026, section 3.1, steps 1-14), plus the optional temporal steps
+// 15-16 (bone_lengths, smooth).
 //
 // Usage:
 //   Triangulator tri(cameras, joint_names, options);   // throws ConfigError on bad options

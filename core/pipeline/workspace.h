@@ -8,14 +8,16 @@
 
 #include "core/camera.h"
 #include "core/joints.h"
+#include "core/pipeline/check_bone_lengths.h"
 #include "core/pipeline/group_proposals.h"
 #include "core/pipeline/lift_single_views.h"
 #include "core/pipeline/merge_groups.h"
 #include "core/pipeline/noise_scale.h"
-#include "core/pipeline/score_proposals.h"
 #include "core/pipeline/options.h"
+#include "core/pipeline/score_proposals.h"
 #include "core/pipeline/pipeline_types.h"
 #include "core/pipeline/prefilter_pairs.h"
+#include "core/pipeline/smooth_tracks.h"
 #include "core/pipeline/track_persons.h"
 #include "core/pipeline/undistort_poses.h"
 #include "core/pipeline/verify_persons.h"
@@ -55,6 +57,8 @@ struct Workspace {
   // Carried between frames.
   PreviousPersons previous;
   Tracker tracker;
+  BoneLengthChecker bone_lengths;  // per-track running limb lengths
+  TrackSmoother smoother;          // per-track joint filters
   NoiseScale noise;  // adaptive scoring: the detections' noise level
   double last_timestamp_s = std::numeric_limits<double>::quiet_NaN();
 };

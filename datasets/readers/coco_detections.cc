@@ -8,6 +8,7 @@
 #include <unordered_map>
 
 #include "core/errors.h"
+#include "datasets/input_warnings.h"
 #include "datasets/io/json_file.h"
 #include "datasets/readers/generic_detections.h"
 #include "datasets/readers/generic_internal.h"
@@ -109,6 +110,7 @@ Detections ReadCocoDetections(const std::filesystem::path& path, const CocoDetec
     throw InputError(source + ": /: expected a list of detection results [{\"image_id\", \"keypoints\", ...}], got " +
                      std::string(root.type_name()));
   }
+  Detections detections;
   // frame id -> camera -> flat x, y, c of its persons.
   std::map<std::string, std::map<std::string, std::vector<double>>> frames;
   for (const auto& [id, key] : listed) frames[key.frame_id][key.camera];
@@ -162,11 +164,12 @@ Detections ReadCocoDetections(const std::filesystem::path& path, const CocoDetec
       }
       view.push_back(values[k]);
       view.push_back(values[k + 1]);
-      view.push_back(generic_internal::ClampScore(values[k + 2]));
+      view.push_back(AcceptScore(values[k + 2], source, &detections.warnings, [&] {
+        return source + ": " + io::JsonPointerJoin(keypoints_pointer, k + 2) + " (joint " + std::to_string(k / 3) + ")";
+      }));
     }
   }
 
-  Detections detections;
   detections.joints = num_points == 133 ? CocoWholeBodyJoints() : CocoBodyJoints();
   const int num_joints = static_cast<int>(detections.joints.size());
   detections.frames.reserve(frames.size());

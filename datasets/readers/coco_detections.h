@@ -39,10 +39,11 @@ struct CocoDetectionsOptions {
   double min_score = 0;
 };
 
-// Joint names are COCO-17 (or COCO-WholeBody for 133 points). Joint scores are clamped to [0, 1];
-// frames sorted by id, cameras by name. Throws InputError naming the file and the JSON pointer:
-// not a list, wrong keypoint lengths (mixed lengths too), an image id the mapping cannot place
-// (naming it), two images mapping to the same frame and camera; ConfigError for bad options.
+// Joint names are COCO-17 (or COCO-WholeBody for 133 points). Joint scores in (1, 1.5] are
+// clamped to 1 and counted in Detections::warnings; frames sorted by id, cameras by name. Throws
+// InputError naming the file and the JSON pointer: not a list, wrong keypoint lengths (mixed
+// lengths too), negative scores or scores above 1.5, an image id the mapping cannot place (naming
+// it), two images mapping to the same frame and camera; ConfigError for bad options.
 Detections ReadCocoDetections(const std::filesystem::path& path, const CocoDetectionsOptions& options = {});
 
 }  // namespace rpt

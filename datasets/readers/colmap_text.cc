@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/errors.h"
+#include "datasets/input_warnings.h"
 
 namespace rpt {
 namespace {
@@ -87,7 +88,7 @@ std::vector<ColmapCamera> ParseColmapCamerasText(std::istream& in, const std::st
   return out;
 }
 
-std::vector<ColmapImage> ParseColmapImagesText(std::istream& in, const std::string& source) {
+std::vector<ColmapImage> ParseColmapImagesText(std::istream& in, const std::string& source, InputWarnings* warnings) {
   std::vector<ColmapImage> out;
   std::set<int> ids;
   std::string raw;
@@ -112,14 +113,7 @@ std::vector<ColmapImage> ParseColmapImagesText(std::istream& in, const std::stri
       pos = line.find_first_of(" \t", pos);
     }
     image.name = Trim(line.substr(pos));
-    const double norm = image.qvec_wxyz.norm();
-    if (!(std::abs(norm - 1.0) <= 1e-3)) {
-      std::ostringstream msg;
-      msg << where << ": quaternion (" << tokens[1] << ", " << tokens[2] << ", " << tokens[3] << ", " << tokens[4]
-          << ") has norm " << norm << ", expected a unit quaternion";
-      throw InputError(msg.str());
-    }
-    image.qvec_wxyz /= norm;
+    image.qvec_wxyz = AcceptQuaternion(image.qvec_wxyz, source, where, warnings);
     if (!ids.insert(image.image_id).second) throw InputError(where + ": duplicate IMAGE_ID " + tokens[0]);
     out.push_back(std::move(image));
     // The POINTS2D line always follows (possibly empty): (X, Y, POINT3D_ID) triples.
@@ -139,9 +133,9 @@ std::vector<ColmapCamera> ReadColmapCamerasText(const std::filesystem::path& pat
   return ParseColmapCamerasText(in, path.string());
 }
 
-std::vector<ColmapImage> ReadColmapImagesText(const std::filesystem::path& path) {
+std::vector<ColmapImage> ReadColmapImagesText(const std::filesystem::path& path, InputWarnings* warnings) {
   std::ifstream in = OpenOrThrow(path);
-  return ParseColmapImagesText(in, path.string());
+  return ParseColmapImagesText(in, path.string(), warnings);
 }
 
 Eigen::Matrix3d ColmapQuaternionToRotation(const Eigen::Vector4d& q) {

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "core/camera.h"
+#include "datasets/input_warnings.h"
 
 namespace rpt {
 
@@ -39,12 +40,14 @@ struct ColmapImage {
 
 // Parse the text formats; `source` names the data in messages ("<source>:<line>: ...").
 // Throws InputError on malformed lines, non-finite numbers, duplicate ids and quaternions whose
-// norm is not within 1e-3 of 1 (they are normalised otherwise).
+// norm is not within 1e-3 of 1 (AcceptQuaternion, datasets/input_warnings.h: they are normalised
+// otherwise, and counted in `warnings` when given and the norm is off by more than round-off).
 std::vector<ColmapCamera> ParseColmapCamerasText(std::istream& in, const std::string& source);
-std::vector<ColmapImage> ParseColmapImagesText(std::istream& in, const std::string& source);
+std::vector<ColmapImage> ParseColmapImagesText(std::istream& in, const std::string& source,
+                                               InputWarnings* warnings = nullptr);
 // Path overloads: open the file (InputError naming it when missing) and parse.
 std::vector<ColmapCamera> ReadColmapCamerasText(const std::filesystem::path& path);
-std::vector<ColmapImage> ReadColmapImagesText(const std::filesystem::path& path);
+std::vector<ColmapImage> ReadColmapImagesText(const std::filesystem::path& path, InputWarnings* warnings = nullptr);
 
 // Rotation matrix of a unit quaternion (w, x, y, z), COLMAP's convention.
 Eigen::Matrix3d ColmapQuaternionToRotation(const Eigen::Vector4d& qvec_wxyz);

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "core/errors.h"
+#include "datasets/input_warnings.h"
 #include "datasets/io/npy.h"
 #include "datasets/io/pickle.h"
 #include "datasets/readers/colmap_text.h"
@@ -140,29 +141,26 @@ Eigen::Matrix4d Matrix4(const io::PyView& view) {
 
 // Camera pose from E = cam_from_aria as a 4x4 that may carry a scale s (colmap_from_aria is a
 // similarity): x_cam = s (R X + t'). The pinhole/fisheye projection ignores the overall factor s,
-// so R = A / s and t = b / s with s = cbrt(det A).
-void SetPose(const Eigen::Matrix4d& cam_from_aria, const std::string& where, Camera* camera) {
+// so R = A / s and t = b / s with s = cbrt(det A). R goes through AcceptRotation: counted under
+// `source` (the files the pose comes from), errors name `where` (with the line).
+void SetPose(const Eigen::Matrix4d& cam_from_aria, const std::string& source, const std::string& where,
+             InputWarnings* warnings, Camera* camera) {
   const Eigen::Matrix3d A = cam_from_aria.topLeftCorner<3, 3>();
   const double det = A.determinant();
   if (!(det > 0) || !std::isfinite(det)) throw InputError(where + ": camera_from_anchor has a non-positive determinant");
   const double scale = std::cbrt(det);
-  const Eigen::Matrix3d R = A / scale;
-  const double error = (R.transpose() * R - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
-  if (error > 1e-4) {
-    std::ostringstream msg;
-    msg << where << ": camera_from_anchor is not a rotation times a scale (max |R^T R - I| = " << error << ")";
-    throw InputError(msg.str());
-  }
-  camera->R = h36m_ego::NearestRotation(R);
+  camera->R = AcceptRotation(A / scale, source, where + ": camera_from_anchor / scale", warnings);
   camera->t = cam_from_aria.topRightCorner<3, 1>() / scale;
 }
 
-std::vector<Camera> ReadExoCameras(const Options& options, const SequenceDir& dir, int reference_time_stamp) {
+// The exo cameras; rotation and quaternion corrections are counted in `warnings`.
+std::vector<Camera> ReadExoCameras(const Options& options, const SequenceDir& dir, int reference_time_stamp,
+                                   InputWarnings* warnings) {
   const fs::path workplace = dir.path / "colmap" / "workplace";
   const fs::path cameras_path = workplace / "cameras.txt";
   const fs::path images_path = workplace / "images.txt";
   const std::vector<ColmapCamera> colmap_cameras = ReadColmapCamerasText(cameras_path);
-  const std::vector<ColmapImage> images = ReadColmapImagesText(images_path);
+  const std::vector<ColmapImage> images = ReadColmapImagesText(images_path, warnings);
 
   const fs::path transforms_path = workplace / "colmap_from_aria_transforms.pkl";
   const io::PyView transforms = io::ReadPickle(transforms_path);
@@ -193,12 +191,12 @@ std::vector<Camera> ReadExoCameras(const Options& options, const SequenceDir& di
     Camera camera = ColmapCameraToCamera(*colmap, PathName(cameras_path));
     camera.name = name;
     Eigen::Matrix4d cam_from_colmap = Eigen::Matrix4d::Identity();
-    std::string where;
+    std::string where, pose_file;
     const fs::path manual = workplace / (name + ".npy");
     if (fs::is_regular_file(manual)) {
       // Manual calibration (egohumans CALIBRATION.MANUAL_EXO_CAMERAS): 4x4 colmap -> camera.
       cam_from_colmap = Matrix4(io::ReadNpy(manual));
-      where = PathName(manual);
+      where = pose_file = PathName(manual);
     } else {
       const ColmapImage* best = nullptr;
       int best_distance = std::numeric_limits<int>::max();
@@ -214,10 +212,11 @@ std::vector<Camera> ReadExoCameras(const Options& options, const SequenceDir& di
       }
       cam_from_colmap.topLeftCorner<3, 3>() = ColmapQuaternionToRotation(best->qvec_wxyz);
       cam_from_colmap.topRightCorner<3, 1>() = best->tvec;
-      where = PathName(images_path) + ":" + std::to_string(best->line);
+      pose_file = PathName(images_path);
+      where = pose_file + ":" + std::to_string(best->line);
     }
-    SetPose(cam_from_colmap * colmap_from_anchor, where + " composed with " + PathName(transforms_path) + "['" + options.anchor + "']",
-            &camera);
+    const std::string composed = " composed with " + PathName(transforms_path) + "['" + options.anchor + "']";
+    SetPose(cam_from_colmap * colmap_from_anchor, pose_file + composed, where + composed, warnings, &camera);
     h36m_ego::CheckCamera(camera, where);
     out.push_back(std::move(camera));
   }
@@ -289,7 +288,9 @@ Poses3D ReadGtFrame(const fs::path& path) {
 }
 
 // One view of the 2D cache: a list of dicts with 'keypoints' (133, 3) = x, y, confidence.
-Poses2D ReadCacheView(const fs::path& path) {
+// Confidences in (1, 1.5] are clamped to 1 and counted under `cache_dir` (one warning line for the
+// sequence's cache folder, not one per file).
+Poses2D ReadCacheView(const fs::path& path, const std::string& cache_dir, InputWarnings* warnings) {
   if (!fs::is_regular_file(path)) throw InputError(PathName(path) + ": 2D pose cache file not found");
   const io::PyView root = io::ReadNpy(path);
   Poses2D view;
@@ -307,14 +308,17 @@ Poses2D ReadCacheView(const fs::path& path) {
       if (!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]))) {
         keypoints.Fail("joint " + std::to_string(j) + ": NaN or infinite value");
       }
-      person.col(j) << p[0], p[1], std::clamp(p[2], 0.0, 1.0);
+      person.col(j) << p[0], p[1],
+          AcceptScore(p[2], cache_dir, warnings, [&] { return keypoints.Where() + ": joint " + std::to_string(j); });
     }
   }
   return view;
 }
 
+fs::path CacheDir(const SequenceDir& dir) { return dir.path / "processed_data" / "poses2d"; }
+
 fs::path CachePath(const SequenceDir& dir, const std::string& camera, int time_stamp) {
-  return dir.path / "processed_data" / "poses2d" / camera / "rgb" / (h36m_ego::Padded(time_stamp, 5) + ".npy");
+  return CacheDir(dir) / camera / "rgb" / (h36m_ego::Padded(time_stamp, 5) + ".npy");
 }
 
 }  // namespace
@@ -348,7 +352,7 @@ std::vector<Sequence> ReadEgohumans(const DatasetRequest& request) {
     const std::vector<int> stamps = SelectedTimeStamps(options, dir);
     Sequence sequence;
     sequence.name = "egohumans/" + dir.big + "/" + dir.seq;
-    sequence.cameras = ReadExoCameras(options, dir, stamps.empty() ? 1 : stamps.front());
+    sequence.cameras = ReadExoCameras(options, dir, stamps.empty() ? 1 : stamps.front(), &sequence.warnings);
     sequence.gt_joints = CocoBodyJoints();
     sequence.fps = options.fps;
     if (options.detections) sequence.detection_joints = CocoWholeBodyJoints();
@@ -358,7 +362,10 @@ std::vector<Sequence> ReadEgohumans(const DatasetRequest& request) {
       frame.timestamp_s = (stamp - 1) / options.fps;
       frame.gt = ReadGtFrame(dir.path / "processed_data" / options.gt / (h36m_ego::Padded(stamp, 5) + ".npy"));
       if (options.detections) {
-        for (const Camera& camera : sequence.cameras) frame.views.push_back(ReadCacheView(CachePath(dir, camera.name, stamp)));
+        for (const Camera& camera : sequence.cameras) {
+          frame.views.push_back(
+              ReadCacheView(CachePath(dir, camera.name, stamp), PathName(CacheDir(dir)), &sequence.warnings));
+        }
       }
       sequence.frames.push_back(std::move(frame));
     }
@@ -374,13 +381,15 @@ Detections ReadEgohumansDetections(const DatasetRequest& request) {
   detections.joints = CocoWholeBodyJoints();
   for (const SequenceDir& dir : FindSequences(options)) {
     const std::vector<int> stamps = SelectedTimeStamps(options, dir);
-    const std::vector<Camera> cameras = ReadExoCameras(options, dir, stamps.empty() ? 1 : stamps.front());
+    // Only the camera names are used here: their pose corrections are not part of the detections.
+    InputWarnings camera_warnings;
+    const std::vector<Camera> cameras = ReadExoCameras(options, dir, stamps.empty() ? 1 : stamps.front(), &camera_warnings);
     for (const int stamp : stamps) {
       FrameDetections frame;
       frame.frame_id = FrameId(dir, stamp);
       for (const Camera& camera : cameras) {
         frame.cameras.push_back(camera.name);
-        frame.views.push_back(ReadCacheView(CachePath(dir, camera.name, stamp)));
+        frame.views.push_back(ReadCacheView(CachePath(dir, camera.name, stamp), PathName(CacheDir(dir)), &detections.warnings));
       }
       detections.frames.push_back(std::move(frame));
     }

@@ -32,8 +32,10 @@ DatasetInfo EgohumansInfo();
 std::vector<Sequence> ReadEgohumans(const DatasetRequest& request);
 
 // The 2D cache processed_data/poses2d/<cam>/rgb/%05d.npy of the selected sequences, frames and
-// cameras as Detections (CocoWholeBodyJoints(), scores clamped to [0, 1]). Same params as
-// ReadEgohumans; frame ids match its frames.
+// cameras as Detections (CocoWholeBodyJoints()). Scores in (1, 1.5] are clamped to 1 and counted
+// in Detections::warnings (one line per sequence's poses2d folder); negative scores or scores
+// above 1.5 are errors naming the file and joint. Same params as ReadEgohumans; frame ids match
+// its frames.
 Detections ReadEgohumansDetections(const DatasetRequest& request);
 
 }  // namespace rpt

@@ -6,6 +6,7 @@
 #include <unordered_set>
 
 #include "core/errors.h"
+#include "datasets/input_warnings.h"
 #include "datasets/io/json_file.h"
 #include "datasets/readers/generic_common.h"
 #include "datasets/readers/generic_internal.h"
@@ -20,9 +21,10 @@ using generic_internal::Source;
   throw InputError(source + ": " + pointer + ": " + what);
 }
 
-// One view's "poses": persons x joints x [x, y, score].
+// One view's "poses": persons x joints x [x, y, score]. Scores slightly above 1 are clamped and
+// counted in `warnings`.
 void ParsePoses(const json& poses, const std::string& pointer, const std::string& source, int num_joints,
-                Poses2D* out) {
+                Poses2D* out, InputWarnings* warnings) {
   out->Clear(num_joints);
   if (poses.is_null()) return;
   if (!poses.is_array()) Fail(source, pointer, "expected a list of persons, got " + std::string(poses.type_name()));
@@ -42,14 +44,13 @@ void ParsePoses(const json& poses, const std::string& pointer, const std::string
           !joint[2].is_number()) {
         Fail(source, io::JsonPointerJoin(io::JsonPointerJoin(pointer, p), j), "expected [x, y, score] or null");
       }
-      const double x = joint[0].get<double>(), y = joint[1].get<double>(), score = joint[2].get<double>();
-      if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(score)) {
+      const double x = joint[0].get<double>(), y = joint[1].get<double>();
+      if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(joint[2].get<double>())) {
         Fail(source, io::JsonPointerJoin(io::JsonPointerJoin(pointer, p), j), "value is not finite");
       }
-      if (score < 0 || score > 1) {
-        Fail(source, io::JsonPointerJoin(io::JsonPointerJoin(pointer, p), j),
-             "score " + std::to_string(score) + " outside [0, 1] (0 marks a missing joint)");
-      }
+      const double score = AcceptScore(joint[2].get<double>(), source, warnings, [&] {
+        return source + ": " + io::JsonPointerJoin(io::JsonPointerJoin(pointer, p), j);
+      });
       joints(0, j) = x;
       joints(1, j) = y;
       joints(2, j) = score;
@@ -140,7 +141,7 @@ Detections ReadGenericDetections(const std::filesystem::path& path) {
       const auto poses = views[v].find("poses");
       if (poses == views[v].end()) Fail(source, view_pointer + "/poses", "missing (write [] for no detections)");
       frame.cameras.push_back(std::move(camera));
-      ParsePoses(*poses, view_pointer + "/poses", source, num_joints, &frame.views.emplace_back());
+      ParsePoses(*poses, view_pointer + "/poses", source, num_joints, &frame.views.emplace_back(), &detections.warnings);
     }
   }
   return detections;

@@ -6,7 +6,8 @@
 //                "views": [{"camera": "<name>", "poses": [[[x, y, score], ... per joint], ... per person]}]}]}
 //
 // Pixels of the original (distorted) image; score in [0, 1], 0 for a missing joint (a joint may
-// also be written as null). A camera without detections has an empty "poses" list (or is left
+// also be written as null). Scores in (1, 1.5] are clamped to 1 and counted in
+// Detections::warnings (datasets/input_warnings.h). A camera without detections has an empty "poses" list (or is left
 // out). Exact schema: docs/datasets/generic_formats.md.
 #pragma once
 
@@ -18,7 +19,7 @@ namespace rpt {
 
 // Throws InputError naming the file and the JSON pointer: missing file, parse errors (line and
 // column), unknown joint names, a pose with a different number of joints than "joints", scores
-// outside [0, 1], duplicate frame ids or cameras.
+// that are negative or above 1.5, duplicate frame ids or cameras.
 Detections ReadGenericDetections(const std::filesystem::path& path);
 
 // Throws InputError naming the file when it cannot be written or a value is not finite or the

@@ -53,9 +53,6 @@ std::string DumpListOnePerLine(const std::vector<Json>& items) {
   return text;
 }
 
-// Score clamped into [0, 1] (detector confidences may slightly exceed 1).
-inline double ClampScore(double score) { return std::clamp(score, 0.0, 1.0); }
-
 // The first non-blank byte of a file (after a UTF-8 BOM), or 0 when it is empty/unreadable.
 inline char FirstSignificantChar(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);

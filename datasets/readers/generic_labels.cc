@@ -10,6 +10,7 @@
 #include <unordered_set>
 
 #include "core/errors.h"
+#include "datasets/input_warnings.h"
 #include "datasets/io/json_file.h"
 #include "datasets/readers/generic_common.h"
 #include "datasets/readers/generic_internal.h"
@@ -25,7 +26,9 @@ using generic_internal::Source;
   throw InputError(source + ": " + pointer + ": " + what);
 }
 
-Camera ParseCamera(const json& root, const std::string& pointer, const std::string& source) {
+// A near-orthonormal R is replaced by the nearest rotation and counted in `warnings` (nullptr:
+// not counted, for re-parses of cameras already counted).
+Camera ParseCamera(const json& root, const std::string& pointer, const std::string& source, InputWarnings* warnings) {
   const json& j = io::JsonAt(root, pointer, source);
   if (!j.is_object()) Fail(source, pointer, "expected a camera object, got " + std::string(j.type_name()));
   std::string type;
@@ -72,6 +75,7 @@ Camera ParseCamera(const json& root, const std::string& pointer, const std::stri
       K(row, col) = k[3 * row + col];
     }
   }
+  R = AcceptRotation(R, source, source + ": " + pointer + "/R", warnings);
   Camera camera = Camera::FromCenter(R, Eigen::Vector3d(t[0], t[1], t[2]));
   camera.name = io::JsonString(root, pointer + "/name", source);
   camera.K = K;
@@ -88,13 +92,14 @@ Camera ParseCamera(const json& root, const std::string& pointer, const std::stri
   return camera;
 }
 
-std::vector<Camera> ParseCameras(const json& root, const std::string& pointer, const std::string& source) {
+std::vector<Camera> ParseCameras(const json& root, const std::string& pointer, const std::string& source,
+                                 InputWarnings* warnings) {
   const json& list = io::JsonAt(root, pointer, source);
   if (!list.is_array() || list.empty()) Fail(source, pointer, "expected a non-empty list of cameras");
   std::vector<Camera> cameras;
   std::unordered_set<std::string> names;
   for (size_t c = 0; c < list.size(); ++c) {
-    cameras.push_back(ParseCamera(root, io::JsonPointerJoin(pointer, c), source));
+    cameras.push_back(ParseCamera(root, io::JsonPointerJoin(pointer, c), source, warnings));
     if (!names.insert(cameras.back().name).second) {
       Fail(source, io::JsonPointerJoin(pointer, c) + "/name", "camera name '" + cameras.back().name + "' appears twice");
     }
@@ -250,13 +255,15 @@ std::vector<Sequence> ReadLabels(const std::filesystem::path& path, const Labels
     const json& joints = io::JsonAt(root, pointer + "/joints", source);
     if (build.first_label_id.empty()) {
       build.first_label_id = id;
-      sequence.cameras = ParseCameras(root, pointer + "/cameras", source);
+      sequence.cameras = ParseCameras(root, pointer + "/cameras", source, &sequence.warnings);
       sequence.gt_joints = ParseJointNames(root, pointer + "/joints", source);
       build.first_cameras = cameras;
       build.first_joints = joints;
     } else {
       if (cameras != build.first_cameras) {
-        const std::string difference = CameraDifference(sequence.cameras, ParseCameras(root, pointer + "/cameras", source));
+        // Only compared with the first label's cameras (which were counted), so not counted again.
+        const std::string difference =
+            CameraDifference(sequence.cameras, ParseCameras(root, pointer + "/cameras", source, nullptr));
         if (!difference.empty()) {
           throw InputError(source + ": labels '" + build.first_label_id + "' and '" + id + "' (" + pointer +
                            ") of sequence '" + sequence.name + "' have different cameras (" + difference +

@@ -28,7 +28,9 @@ struct LabelsOptions {
 // Reads and validates (ValidateSequence) a label file. Throws InputError naming the file and the
 // JSON pointer: missing file, parse errors (with line and column), wrong shapes, unknown joint
 // names, duplicate ids, and cameras that differ between two labels of one sequence (naming both
-// labels). Frames have no detections (views empty).
+// labels). Frames have no detections (views empty). An R within 1e-3 of a rotation (max
+// |R^T R - I|) is replaced by the nearest rotation and counted in Sequence::warnings; farther is
+// an InputError naming the file and the camera's JSON pointer.
 std::vector<Sequence> ReadLabels(const std::filesystem::path& path, const LabelsOptions& options = {});
 
 // Writes the sequences as one label list ("scene" = sequence name, "timestamp", "fps", "bodyids"

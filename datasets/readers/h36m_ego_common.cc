@@ -103,17 +103,6 @@ std::vector<double> FiniteNumbers(const io::PyView& view, std::size_t count) {
   return values;
 }
 
-Eigen::Matrix3d NearestRotation(const Eigen::Matrix3d& m) {
-  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(m, Eigen::ComputeFullU | Eigen::ComputeFullV);
-  Eigen::Matrix3d r = svd.matrixU() * svd.matrixV().transpose();
-  if (r.determinant() < 0) {
-    Eigen::Matrix3d u = svd.matrixU();
-    u.col(2) *= -1.0;
-    r = u * svd.matrixV().transpose();
-  }
-  return r;
-}
-
 void CheckCamera(const Camera& camera, const std::string& source) {
   if (const std::string problem = camera.Validate(); !problem.empty()) throw InputError(source + ": " + problem);
 }

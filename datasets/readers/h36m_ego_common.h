@@ -51,9 +51,6 @@ void H36mImageSize(int camera_index, int* width, int* height);
 // InputError at `view` otherwise ("expected 9 numbers, got shape (3, 2)" / "contains NaN").
 std::vector<double> FiniteNumbers(const io::PyView& view, std::size_t count);
 
-// The nearest rotation to `m` (SVD projection), for rotations stored as float32.
-Eigen::Matrix3d NearestRotation(const Eigen::Matrix3d& m);
-
 // Checks Camera::Validate(); throws InputError("<source>: <problem>").
 void CheckCamera(const Camera& camera, const std::string& source);
 

@@ -13,8 +13,10 @@
 #include <set>
 #include <sstream>
 #include <tuple>
+#include <utility>
 
 #include "core/errors.h"
+#include "datasets/input_warnings.h"
 #include "datasets/io/json_file.h"
 #include "datasets/io/npy.h"
 #include "datasets/readers/h36m_ego_common.h"
@@ -60,6 +62,7 @@ struct Clip {
   std::vector<Camera> cameras;
   std::vector<ClipFrame> frames;
   std::string source;
+  InputWarnings warnings;  // corrections of the cameras (carried by the subject's first clip)
 };
 
 bool ActionMatches(const std::string& action, const std::vector<std::string>& filters) {
@@ -162,14 +165,15 @@ std::vector<double> PoseArray(const io::PyView& view, std::int64_t expected_rows
   return view.ToDoubles();
 }
 
-Camera NpzCamera(const io::PyView& entry, const std::string& id, DistortionModel model) {
+Camera NpzCamera(const io::PyView& entry, const std::string& id, DistortionModel model, InputWarnings* warnings) {
   // File convention: K divided by 1000, R world->camera (float32), T = -R C in metres, Distortion
   // k1 k2 p1 p2 k3 (VERIFIED against metadata.xml for S5/60457274, datasets.md §7).
   const auto K = h36m_ego::FiniteNumbers(entry.Key("K"), 9);
   const auto R = h36m_ego::FiniteNumbers(entry.Key("R"), 9);
   const auto T = h36m_ego::FiniteNumbers(entry.Key("T"), 3);
   const auto d = h36m_ego::FiniteNumbers(entry.Key("Distortion"), 5);
-  const Eigen::Matrix3d R_cw = h36m_ego::NearestRotation(Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(R.data()));
+  const Eigen::Matrix3d R_cw = AcceptRotation(Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(R.data()),
+                                              entry.source(), entry.Key("R").Where(), warnings);
   const Eigen::Vector3d center_m = -R_cw.transpose() * Eigen::Vector3d(T[0], T[1], T[2]);
   Camera camera = h36m_ego::MakeH36mCamera(id, R_cw, center_m, K[0] * 1000.0, K[4] * 1000.0, K[2] * 1000.0, K[5] * 1000.0, d[0],
                                            d[1], d[4], d[2], d[3], model);
@@ -200,8 +204,9 @@ std::vector<Clip> ReadNpzClips(const Options& options, bool want_2d) {
     const auto subject_meta = metadata.Find(subject);
     if (!subject_meta) metadata.Fail("unknown subject '" + subject + "' (file has " + SubjectList(metadata) + ")");
     std::vector<Camera> cameras;
+    InputWarnings camera_warnings;  // taken over by the subject's first clip
     for (const std::string& id : Human36mCameraIds()) {
-      if (const auto entry = subject_meta->Find(id)) cameras.push_back(NpzCamera(*entry, id, options.model));
+      if (const auto entry = subject_meta->Find(id)) cameras.push_back(NpzCamera(*entry, id, options.model, &camera_warnings));
     }
     if (cameras.empty()) subject_meta->Fail("no camera entries (expected keys " + Human36mCameraIds().front() + ", ...)");
     bool any = false;
@@ -214,6 +219,7 @@ std::vector<Clip> ReadNpzClips(const Options& options, bool want_2d) {
       clip.action = action;
       clip.cameras = cameras;
       clip.source = source;
+      clip.warnings = std::exchange(camera_warnings, InputWarnings{});
       std::int64_t n = 0;
       const auto global = PoseArray(act.Key("global_3d"), -1, 3, &n);
       const auto frame_ids = h36m_ego::FiniteNumbers(act.Key("frame_id"), static_cast<std::size_t>(n));
@@ -589,12 +595,15 @@ std::vector<Clip> ReadJsonClips(const Options& options, bool want_2d) {
     cameras_file = h36m_ego::ResolveUnder(options.root, options.cameras_file);
   }
   std::map<std::string, std::optional<std::vector<Camera>>> camera_cache;
+  // Corrections of each subject's cameras, taken over by the subject's first clip (cameras tried
+  // only to identify a subject are not counted).
+  std::map<std::string, InputWarnings> camera_warnings;
   auto cameras_of = [&](const std::string& subject, bool required) -> const std::vector<Camera>* {
     auto it = camera_cache.find(subject);
     if (it == camera_cache.end()) {
       std::optional<std::vector<Camera>> cams;
       try {
-        cams = ReadHuman36mCameras(cameras_file, subject, options.model);
+        cams = ReadHuman36mCameras(cameras_file, subject, options.model, &camera_warnings[subject]);
       } catch (const InputError&) {
         if (required) throw;
       }
@@ -685,6 +694,7 @@ std::vector<Clip> ReadJsonClips(const Options& options, bool want_2d) {
       clip.sample_ids = !by_path;
       clip.cameras = *cameras_of(group.subject, true);
       clip.source = source;
+      clip.warnings = std::exchange(camera_warnings[group.subject], InputWarnings{});
     }
     ClipFrame frame;
     frame.number = group.number;
@@ -784,6 +794,7 @@ std::vector<Sequence> ReadH3wb(const DatasetRequest& request) {
       person.row(3).setOnes();
       sequence.frames.push_back(std::move(frame));
     }
+    sequence.warnings = std::move(clip.warnings);
     ValidateSequence(sequence, clip.source);
     out.push_back(std::move(sequence));
   }

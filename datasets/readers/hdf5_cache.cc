@@ -12,6 +12,7 @@
 #include <unordered_set>
 
 #include "core/errors.h"
+#include "datasets/input_warnings.h"
 #include "datasets/readers/generic_common.h"
 #include "datasets/readers/generic_detections.h"
 
@@ -461,19 +462,19 @@ void FillViews(const std::vector<T>& values, const Reader& reader, const std::st
       view.Clear(static_cast<int>(num_joints));
       view.data.resize(end - begin);
       for (size_t i = begin; i < end; i += 3) {
-        const double x = values[i], y = values[i + 1], score = values[i + 2];
-        if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(score) || score < 0 || score > 1) {
-          const size_t person = i / stride;
-          const size_t joint = (i % stride) / 3;
-          reader.Fail(name, "person " + std::to_string(person) + " (frame '" + frame.frame_id + "', camera '" +
-                                frame.cameras[v] + "'), joint '" + detections->joints[joint] + "': " +
-                                (std::isfinite(x) && std::isfinite(y) && std::isfinite(score)
-                                     ? "score " + std::to_string(score) + " outside [0, 1]"
-                                     : std::string("NaN or infinite value")));
+        const double x = values[i], y = values[i + 1];
+        // "<file>: /detections/keypoints: person 3 (frame 'f', camera 'c'), joint 'nose'" for messages.
+        const auto where = [&] {
+          return reader.source() + ": " + name + ": person " + std::to_string(i / stride) + " (frame '" +
+                 frame.frame_id + "', camera '" + frame.cameras[v] + "'), joint '" +
+                 detections->joints[(i % stride) / 3] + "'";
+        };
+        if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(static_cast<double>(values[i + 2]))) {
+          throw InputError(where() + ": NaN or infinite value");
         }
         view.data[i - begin] = x;
         view.data[i - begin + 1] = y;
-        view.data[i - begin + 2] = score;
+        view.data[i - begin + 2] = AcceptScore(values[i + 2], reader.source(), &detections->warnings, where);
       }
     }
   }
@@ -690,6 +691,10 @@ std::vector<Sequence> ReadSequencesHdf5(const std::filesystem::path& path) {
         }
         camera.t[r] = t[3 * c + r];
       }
+      camera.R = AcceptRotation(camera.R, reader.source(),
+                                reader.source() + ": " + name + "/camera_R: camera " + std::to_string(c) + " ('" +
+                                    camera.name + "')",
+                                &sequence.warnings);
       std::copy(dist.begin() + 5 * c, dist.begin() + 5 * c + 5, camera.dist.begin());
     }
 

@@ -41,11 +41,14 @@ void WriteDetectionsHdf5(const std::filesystem::path& path, const Detections& de
                          const Hdf5WriteOptions& options = {});
 // Throws InputError naming the file and the HDF5 dataset path on anything malformed: not an
 // HDF5 file, no /detections group, wrong shapes, offsets that do not add up, camera indices out
-// of range, NaN or infinite values, scores outside [0, 1], unknown joint names.
+// of range, NaN or infinite values, negative scores or scores above 1.5, unknown joint names.
+// Scores in (1, 1.5] (a cache written by another tool) are clamped to 1 and counted in
+// Detections::warnings.
 Detections ReadDetectionsHdf5(const std::filesystem::path& path);
 
-// Sequences (cameras + ground truth). Same error behaviour as above; read sequences are checked
-// with ValidateSequence.
+// Sequences (cameras + ground truth). Same error behaviour as above; camera_R within 1e-3 of a
+// rotation is replaced by the nearest rotation and counted in Sequence::warnings (AcceptRotation),
+// farther is an error; read sequences are checked with ValidateSequence.
 void WriteSequencesHdf5(const std::filesystem::path& path, const std::vector<Sequence>& sequences,
                         const Hdf5WriteOptions& options = {});
 std::vector<Sequence> ReadSequencesHdf5(const std::filesystem::path& path);

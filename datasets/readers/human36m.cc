@@ -13,6 +13,7 @@
 #include <map>
 #include <optional>
 #include <sstream>
+#include <utility>
 
 #include "core/errors.h"
 #include "datasets/io/npy.h"
@@ -184,9 +185,12 @@ void AddFrame(const Options& options, const std::string& subject, const std::str
   sequence->frames.push_back(std::move(frame));
 }
 
-std::vector<Camera> SubjectCameras(const Options& options, const io::PyView* labels, const std::string& subject) {
-  if (options.cameras_file.empty()) return h36m_ego::LearnableTriCameras(*labels, subject, options.model);
-  return ReadHuman36mCameras(options.cameras_file, subject, options.model);
+// The cameras of `subject`; their corrections go to `warnings`, which the subject's first sequence
+// takes over (the cameras are shared by all its sequences: counted once).
+std::vector<Camera> SubjectCameras(const Options& options, const io::PyView* labels, const std::string& subject,
+                                   InputWarnings* warnings) {
+  if (options.cameras_file.empty()) return h36m_ego::LearnableTriCameras(*labels, subject, options.model, warnings);
+  return ReadHuman36mCameras(options.cameras_file, subject, options.model, warnings);
 }
 
 // ---------------------------------------------------------------------------------------
@@ -349,7 +353,8 @@ std::vector<Sequence> ReadFromAnnot(const Options& options) {
   for (const std::string& subject : options.subjects) {
     const std::filesystem::path subject_dir = options.root / "processed" / subject;
     if (!std::filesystem::is_directory(subject_dir)) throw InputError(PathName(subject_dir) + ": unknown subject (no such directory)");
-    const std::vector<Camera> cameras = SubjectCameras(options, nullptr, subject);
+    InputWarnings camera_warnings;
+    const std::vector<Camera> cameras = SubjectCameras(options, nullptr, subject, &camera_warnings);
     bool any = false;
     for (const std::string& action : SortedActionDirs(subject_dir)) {
       if (!ActionSelected(options, subject, action)) continue;
@@ -358,6 +363,7 @@ std::vector<Sequence> ReadFromAnnot(const Options& options) {
       const std::string source = PathName(path);
       const AnnotRows rows = ReadAnnot(path);
       Sequence sequence = NewSequence(subject, action, cameras);
+      sequence.warnings = std::exchange(camera_warnings, InputWarnings{});
       std::vector<long long> frames;
       for (const auto& [f, entries] : rows.by_frame) frames.push_back(f);
       for (const std::size_t k : h36m_ego::SelectFrames(frames.size(), options.every, options.max_frames)) {
@@ -431,7 +437,8 @@ std::vector<Sequence> ReadFromLabels(const Options& options) {
       if (subject_names.At(i).AsStr() == subject) s = i;
     }
     if (s == subject_names.Size()) subject_names.Fail("unknown subject '" + subject + "' (file has " + known + ")");
-    const std::vector<Camera> cameras = SubjectCameras(options, &labels, subject);
+    InputWarnings camera_warnings;
+    const std::vector<Camera> cameras = SubjectCameras(options, &labels, subject, &camera_warnings);
     bool any = false;
     for (std::size_t a = 0; a < action_names.Size(); ++a) {
       const std::string action = h36m_ego::SanitizeName(action_names.At(a).AsStr());
@@ -442,6 +449,7 @@ std::vector<Sequence> ReadFromLabels(const Options& options) {
       auto& rows = it->second;
       std::stable_sort(rows.begin(), rows.end());
       Sequence sequence = NewSequence(subject, action, cameras);
+      sequence.warnings = std::exchange(camera_warnings, InputWarnings{});
       for (const std::size_t k : h36m_ego::SelectFrames(rows.size(), options.every, options.max_frames)) {
         const std::size_t row = rows[k].second;
         Eigen::Matrix<double, 3, 17> joints_m;

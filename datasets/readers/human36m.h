@@ -36,10 +36,14 @@ std::vector<Sequence> ReadHuman36m(const DatasetRequest& request);
 
 // The four cameras of `subject` ("S1".."S11") in camera-id order, from metadata.xml (*.xml),
 // mmpose cameras.pkl (*.pkl) or the learnable-triangulation labels (*.npy). Distortion
-// coefficients are stored as (k1, k2, p1, p2, k3) with `model` (kNone zeroes them).
-// Throws InputError naming the file and the place on missing/malformed input or unknown subject.
+// coefficients are stored as (k1, k2, p1, p2, k3) with `model` (kNone zeroes them). Stored
+// rotation matrices (pkl, npy) within 1e-3 of a rotation are replaced by the nearest rotation and
+// counted in `warnings` when given (AcceptRotation, datasets/input_warnings.h).
+// Throws InputError naming the file and the place on missing/malformed input, a matrix that is
+// not a rotation, or an unknown subject.
 std::vector<Camera> ReadHuman36mCameras(const std::filesystem::path& path, const std::string& subject,
-                                        DistortionModel model = DistortionModel::kH36M);
+                                        DistortionModel model = DistortionModel::kH36M,
+                                        InputWarnings* warnings = nullptr);
 
 // "54138969", "55011271", "58860488", "60457274" (metadata.xml camera order 1..4).
 const std::vector<std::string>& Human36mCameraIds();

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "core/errors.h"
+#include "datasets/input_warnings.h"
 #include "datasets/io/npy.h"
 #include "datasets/io/pickle.h"
 #include "datasets/readers/h36m_ego_common.h"
@@ -33,7 +34,8 @@ Camera MakeH36mCamera(const std::string& id, const Eigen::Matrix3d& R_cam_from_w
   return camera;
 }
 
-std::vector<Camera> LearnableTriCameras(const io::PyView& labels, const std::string& subject, DistortionModel model) {
+std::vector<Camera> LearnableTriCameras(const io::PyView& labels, const std::string& subject, DistortionModel model,
+                                        InputWarnings* warnings) {
   const io::PyView subjects = labels.Key("subject_names");
   std::size_t subject_idx = subjects.Size();
   std::string known;
@@ -63,7 +65,9 @@ std::vector<Camera> LearnableTriCameras(const io::PyView& labels, const std::str
     if (H36mCameraIndex(id) < 0) camera_names.At(c).Fail("unknown Human3.6M camera id '" + id + "'");
     const std::size_t k = subject_idx * num_cameras + c;
     // File convention: R world->camera (float32), t = -R C in millimetres, K 3x3, dist (k1 k2 p1 p2 k3).
-    const Eigen::Matrix3d R = NearestRotation(Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(&R_all[9 * k]));
+    const Eigen::Matrix3d R =
+        AcceptRotation(Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(&R_all[9 * k]), labels.source(),
+                       cameras.Where() + " [" + subject + ", " + id + "]", warnings);
     const Eigen::Vector3d t_mm(t_all[3 * k], t_all[3 * k + 1], t_all[3 * k + 2]);
     const Eigen::Vector3d center_m = -R.transpose() * t_mm / 1000.0;
     const double* K = &K_all[9 * k];
@@ -156,7 +160,8 @@ std::vector<Camera> MetadataXmlCameras(const std::filesystem::path& path, const 
 
 // mmpose cameras.pkl: {(subject, camera_id): {R: camera->world 3x3, T: centre (m) 3x1, f, c, k (3),
 // p (2), w, h, name, id}}.
-std::vector<Camera> MmposeCameras(const std::filesystem::path& path, const std::string& subject, DistortionModel model) {
+std::vector<Camera> MmposeCameras(const std::filesystem::path& path, const std::string& subject, DistortionModel model,
+                                  InputWarnings* warnings) {
   const io::PyView root = io::ReadPickle(path);
   std::vector<Camera> out;
   for (const std::string& id : Human36mCameraIds()) {
@@ -179,7 +184,9 @@ std::vector<Camera> MmposeCameras(const std::filesystem::path& path, const std::
     const auto c = FiniteNumbers(entry->Key("c"), 2);
     const auto k = FiniteNumbers(entry->Key("k"), 3);
     const auto p = FiniteNumbers(entry->Key("p"), 2);
-    const Eigen::Matrix3d R_world_from_cam = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(R_c2w.data());
+    const Eigen::Matrix3d R_world_from_cam =
+        AcceptRotation(Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(R_c2w.data()), root.source(),
+                       entry->Key("R").Where(), warnings);
     Camera camera = MakeH36mCamera(id, R_world_from_cam.transpose(), Eigen::Vector3d(T[0], T[1], T[2]), f[0], f[1], c[0],
                                    c[1], k[0], k[1], k[2], p[0], p[1], model);
     if (entry->Has("w")) camera.width = static_cast<int>(entry->Key("w").AsInt());
@@ -199,11 +206,12 @@ const std::vector<std::string>& Human36mCameraIds() {
 }
 
 std::vector<Camera> ReadHuman36mCameras(const std::filesystem::path& path, const std::string& subject,
-                                        DistortionModel model) {
+                                        DistortionModel model, InputWarnings* warnings) {
   const std::string ext = path.extension().string();
+  // metadata.xml stores angles: its rotations are exact and need no check.
   if (ext == ".xml") return h36m_ego::MetadataXmlCameras(path, subject, model);
-  if (ext == ".pkl") return h36m_ego::MmposeCameras(path, subject, model);
-  if (ext == ".npy") return h36m_ego::LearnableTriCameras(io::ReadNpy(path), subject, model);
+  if (ext == ".pkl") return h36m_ego::MmposeCameras(path, subject, model, warnings);
+  if (ext == ".npy") return h36m_ego::LearnableTriCameras(io::ReadNpy(path), subject, model, warnings);
   throw InputError(path.string() + ": unknown Human3.6M camera file type (expected metadata.xml, cameras.pkl or a labels .npy)");
 }
 

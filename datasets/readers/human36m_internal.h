@@ -7,13 +7,16 @@
 #include <vector>
 
 #include "core/camera.h"
+#include "datasets/input_warnings.h"
 #include "datasets/io/py_value.h"
 
 namespace rpt::h36m_ego {
 
 // Cameras of `subject` from the dict stored in the learnable-triangulation labels npy
-// (`subject_names`, `camera_names`, structured `cameras` with R, t (mm), K, dist).
-std::vector<Camera> LearnableTriCameras(const io::PyView& labels, const std::string& subject, DistortionModel model);
+// (`subject_names`, `camera_names`, structured `cameras` with R, t (mm), K, dist). R is stored as
+// float32: it goes through AcceptRotation and is counted in `warnings`.
+std::vector<Camera> LearnableTriCameras(const io::PyView& labels, const std::string& subject, DistortionModel model,
+                                        InputWarnings* warnings);
 
 // A Human3.6M camera from the raw calibration numbers. R is world->camera, centre in metres.
 // Distortion stored as (k1, k2, p1, p2, k3); zeroed for kNone.

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "core/errors.h"
+#include "datasets/input_warnings.h"
 #include "datasets/io/json_file.h"
 #include "datasets/readers/generic_detections.h"
 #include "datasets/readers/generic_internal.h"
@@ -49,8 +50,11 @@ struct RawFile {
   std::vector<RawPerson> people;
 };
 
+// A flat x, y, confidence list; confidences in (1, 1.5] are clamped to 1 and counted under
+// `folder` (one warning line per folder, not per file).
 std::vector<double> ReadKeypoints(const json& root, const std::string& pointer, const std::string& source,
-                                  const std::vector<size_t>& allowed_points, const std::string& what) {
+                                  const std::vector<size_t>& allowed_points, const std::string& what,
+                                  const std::string& folder, InputWarnings* warnings) {
   const json* j = io::JsonFind(root, pointer);
   if (!j || j->is_null()) return {};
   std::vector<double> values = io::JsonNumbers(root, pointer, source);
@@ -66,10 +70,16 @@ std::vector<double> ReadKeypoints(const json& root, const std::string& pointer, 
   for (double v : values) {
     if (!std::isfinite(v)) throw InputError(source + ": " + pointer + ": value is not finite");
   }
+  for (size_t i = 2; i < values.size(); i += 3) {
+    values[i] = AcceptScore(values[i], folder, warnings, [&] {
+      return source + ": " + io::JsonPointerJoin(pointer, i) + " (point " + std::to_string(i / 3) + ")";
+    });
+  }
   return values;
 }
 
-std::vector<RawPerson> ReadOpenPoseFile(const std::filesystem::path& path) {
+std::vector<RawPerson> ReadOpenPoseFile(const std::filesystem::path& path, const std::string& folder,
+                                        InputWarnings* warnings) {
   const std::string source = Source(path);
   const json root = io::LoadJsonFile(path);
   if (!root.is_object()) throw InputError(source + ": /: expected an OpenPose object with \"people\"");
@@ -80,11 +90,13 @@ std::vector<RawPerson> ReadOpenPoseFile(const std::filesystem::path& path) {
     const std::string pointer = io::JsonPointerJoin("/people", p);
     RawPerson person;
     person.body = ReadKeypoints(root, pointer + "/pose_keypoints_2d", source, {25, 18},
-                                "BODY_25 has 25 points, COCO-18 has 18; MPI models are not supported");
+                                "BODY_25 has 25 points, COCO-18 has 18; MPI models are not supported", folder, warnings);
     person.body_points = static_cast<int>(person.body.size() / 3);
-    person.face = ReadKeypoints(root, pointer + "/face_keypoints_2d", source, {70}, "70 face points");
-    person.hand_left = ReadKeypoints(root, pointer + "/hand_left_keypoints_2d", source, {21}, "21 hand points");
-    person.hand_right = ReadKeypoints(root, pointer + "/hand_right_keypoints_2d", source, {21}, "21 hand points");
+    person.face = ReadKeypoints(root, pointer + "/face_keypoints_2d", source, {70}, "70 face points", folder, warnings);
+    person.hand_left =
+        ReadKeypoints(root, pointer + "/hand_left_keypoints_2d", source, {21}, "21 hand points", folder, warnings);
+    person.hand_right =
+        ReadKeypoints(root, pointer + "/hand_right_keypoints_2d", source, {21}, "21 hand points", folder, warnings);
     out.push_back(std::move(person));
   }
   return out;
@@ -110,10 +122,9 @@ void CopyPoints(const std::vector<double>& flat, const std::vector<int>& targets
   for (size_t i = 0; i < targets.size() && 3 * i + 2 < flat.size(); ++i) {
     const int j = targets[i];
     if (j < 0) continue;
-    const double score = generic_internal::ClampScore(flat[3 * i + 2]);
     (*joints)(0, j) = flat[3 * i];
     (*joints)(1, j) = flat[3 * i + 1];
-    (*joints)(2, j) = score;
+    (*joints)(2, j) = flat[3 * i + 2];  // checked and clamped by ReadKeypoints
   }
 }
 
@@ -163,9 +174,10 @@ Detections ReadOpenPoseFolder(const std::filesystem::path& dir, const OpenPoseFo
   }
 
   // Parse, then decide the joint set over all files.
+  InputWarnings warnings;
   bool any_face_or_hand = false, any_body25 = false;
   for (RawFile& file : files) {
-    file.people = ReadOpenPoseFile(file.path);
+    file.people = ReadOpenPoseFile(file.path, source, &warnings);
     for (const RawPerson& person : file.people) {
       any_face_or_hand |= !person.face.empty() || !person.hand_left.empty() || !person.hand_right.empty();
       any_body25 |= person.body_points == 25;
@@ -179,6 +191,7 @@ Detections ReadOpenPoseFolder(const std::filesystem::path& dir, const OpenPoseFo
   }
   Detections detections;
   detections.joints = JointsOf(set);
+  detections.warnings = std::move(warnings);
   const JointNames& joints = detections.joints;
   const std::vector<int> body25 = Targets(Body25Joints(), joints);  // neck, hip_middle: not in `joints`, dropped
   const std::vector<int> coco18 = Targets(Coco18Map(), 18, joints);

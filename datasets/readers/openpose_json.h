@@ -32,10 +32,12 @@ struct OpenPoseFolderOptions {
 };
 
 // Reads every matching file below `dir` (recursively). Frames are sorted by id, cameras by name
-// within a frame; a file with no people gives an empty view. Joint scores are clamped to
-// [0, 1]; neck, mid-hip and the pupils are dropped. Throws InputError naming the file and the
-// JSON pointer (bad lengths, not numbers), when two files map to the same frame and camera
-// (naming both), or when no file matches; ConfigError for a malformed mapping.
+// within a frame; a file with no people gives an empty view. Confidences in (1, 1.5] are clamped
+// to 1 and counted in Detections::warnings under `dir` (one line for the folder); neck, mid-hip
+// and the pupils are dropped. Throws InputError naming the file and the JSON pointer (bad
+// lengths, not numbers, negative confidences or confidences above 1.5), when two files map to the
+// same frame and camera (naming both), or when no file matches; ConfigError for a malformed
+// mapping.
 Detections ReadOpenPoseFolder(const std::filesystem::path& dir, const OpenPoseFolderOptions& options = {});
 
 }  // namespace rpt

@@ -9,6 +9,7 @@
 #include <map>
 
 #include "core/errors.h"
+#include "datasets/input_warnings.h"
 #include "datasets/io/json_file.h"
 
 namespace rpt {
@@ -55,8 +56,10 @@ Eigen::Matrix3d RowMajor3x3(const std::vector<double>& v) {
   return Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(v.data());
 }
 
-// The selected cameras of calibration_<seq>.json, in the order asked for.
-std::vector<Camera> ReadCameras(const std::filesystem::path& path, const std::string& selection) {
+// The selected cameras of calibration_<seq>.json, in the order asked for. A near-orthonormal R
+// is replaced by the nearest rotation and counted in `warnings`.
+std::vector<Camera> ReadCameras(const std::filesystem::path& path, const std::string& selection,
+                                InputWarnings* warnings) {
   const nlohmann::json root = io::LoadJsonFile(path);
   const std::string source = path.string();
   const nlohmann::json& list = io::JsonAt(root, "/cameras", source);
@@ -89,10 +92,12 @@ std::vector<Camera> ReadCameras(const std::filesystem::path& path, const std::st
     const std::vector<double> resolution = io::JsonNumbers(root, base + "/resolution", source, 2);
     const std::vector<double> dist = io::JsonNumbers(root, base + "/distCoef", source, 5);
     const std::vector<double> t = io::JsonMatrix(root, base + "/t", source, 3, 1);
+    const Eigen::Matrix3d R = AcceptRotation(RowMajor3x3(io::JsonMatrix(root, base + "/R", source, 3, 3)), source,
+                                             source + ": " + base + "/R (camera '" + name + "')", warnings);
     Camera camera = ConvertPanopticCamera(
         name, static_cast<int>(resolution[0]), static_cast<int>(resolution[1]),
-        RowMajor3x3(io::JsonMatrix(root, base + "/K", source, 3, 3)), {dist[0], dist[1], dist[2], dist[3], dist[4]},
-        RowMajor3x3(io::JsonMatrix(root, base + "/R", source, 3, 3)), Eigen::Vector3d(t[0], t[1], t[2]));
+        RowMajor3x3(io::JsonMatrix(root, base + "/K", source, 3, 3)), {dist[0], dist[1], dist[2], dist[3], dist[4]}, R,
+        Eigen::Vector3d(t[0], t[1], t[2]));
     if (const std::string error = camera.Validate(); !error.empty()) {
       throw InputError(source + ": " + base + ": " + error);  // error names the camera
     }
@@ -230,7 +235,7 @@ std::vector<Sequence> ReadPanoptic(const DatasetRequest& request) {
     const std::filesystem::path folder = request.root / name;
     Sequence sequence;
     sequence.name = "panoptic/" + name;
-    sequence.cameras = ReadCameras(folder / ("calibration_" + name + ".json"), camera_selection);
+    sequence.cameras = ReadCameras(folder / ("calibration_" + name + ".json"), camera_selection, &sequence.warnings);
     sequence.gt_joints = PanopticJoints();
     sequence.room.center_m = Eigen::Vector3d(0.0, -0.5, 0.8);
     sequence.room.size_m = Eigen::Vector3d(8.0, 8.0, 2.0);

@@ -5,8 +5,10 @@
 //   <root>/<seq>/hdPose3d_stage1_coco19/body3DScene_%08d.json  3D bodies per HD frame
 //
 // File conventions: world in centimetres with y pointing DOWN (gravity), floor near y = 0;
-// cameras "R" world->camera and "t" translation in cm (x_cam = R X + t), "K" 3x3, "distCoef"
-// [k1, k2, p1, p2, k3] of the OpenCV radial-tangential model, "resolution" [w, h]. Bodies:
+// cameras "R" world->camera (an R within 1e-3 of a rotation is replaced by the nearest rotation
+// and counted in Sequence::warnings, farther is an error) and "t" translation in cm
+// (x_cam = R X + t), "K" 3x3, "distCoef" [k1, k2, p1, p2, k3] of the OpenCV radial-tangential
+// model, "resolution" [w, h]. Bodies:
 // "joints19" = 19 x (x, y, z, c), c = confidence, a missing joint is (0, 0, 0, -1).
 //
 // rpt conventions: metres, z up. A point maps as (x, y, z) -> (x, z, -y) / 100 (the axis

@@ -177,7 +177,8 @@ std::vector<Sequence> ReadShelfCampus(const ShelfCampusSpec& spec, const Dataset
 
   Sequence sequence;
   sequence.name = spec.name;
-  sequence.cameras = ReadVoxelPoseCalibration(request.root / spec.calibration_file, spec.width, spec.height);
+  sequence.cameras =
+      ReadVoxelPoseCalibration(request.root / spec.calibration_file, spec.width, spec.height, &sequence.warnings);
   sequence.gt_joints = ShelfCampusJoints();
   sequence.room = spec.room;
   sequence.fps = fps;
@@ -225,6 +226,7 @@ std::vector<Sequence> ReadShelfCampus(const ShelfCampusSpec& spec, const Dataset
     const std::filesystem::path pkl = request.root / spec.detections_file;
     const Detections detections = ReadVoxelPoseDetections(pkl, sequence, spec.name);
     AttachDetections(detections, pkl.string(), &sequence);
+    sequence.warnings.Merge(detections.warnings);
   }
   ValidateSequence(sequence, request.root.string());
   std::vector<Sequence> out;

@@ -1,21 +1,16 @@
 // SPDX-License-Identifier: MIT
 #include "datasets/readers/voxelpose_calibration.h"
 
-#include <Eigen/LU>
-#include <Eigen/SVD>
 #include <algorithm>
 #include <cctype>
-#include <sstream>
 #include <string>
 
 #include "core/errors.h"
+#include "datasets/input_warnings.h"
 #include "datasets/io/json_file.h"
 
 namespace rpt {
 namespace {
-
-// Rounding in the files is ~1e-6; anything beyond this is a wrong matrix, not rounding.
-constexpr double kMaxRotationError = 1e-3;
 
 bool IsSmallInteger(const std::string& text) {
   return !text.empty() && text.size() <= 9 &&
@@ -38,19 +33,6 @@ Eigen::Matrix3d RowMajor3x3(const std::vector<double>& v) {
   return Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(v.data());
 }
 
-// The nearest rotation to R (polar decomposition via SVD), after checking R is one up to rounding.
-Eigen::Matrix3d NearestRotation(const Eigen::Matrix3d& R, const std::string& where) {
-  const double error = (R.transpose() * R - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
-  if (!R.allFinite() || !(error <= kMaxRotationError)) {
-    std::ostringstream s;
-    s << where << ": not a rotation matrix (max |R^T R - I| = " << error << ")";
-    throw InputError(s.str());
-  }
-  if (R.determinant() < 0) throw InputError(where + ": a reflection (det < 0), not a rotation matrix");
-  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(R, Eigen::ComputeFullU | Eigen::ComputeFullV);
-  return svd.matrixU() * svd.matrixV().transpose();
-}
-
 // Optional n x 1 coefficient vector; absent = zeros.
 std::vector<double> OptionalCoefficients(const nlohmann::json& root, const std::string& pointer,
                                          const std::string& source, std::size_t n) {
@@ -60,7 +42,8 @@ std::vector<double> OptionalCoefficients(const nlohmann::json& root, const std::
 
 }  // namespace
 
-std::vector<Camera> ReadVoxelPoseCalibration(const std::filesystem::path& path, int image_width, int image_height) {
+std::vector<Camera> ReadVoxelPoseCalibration(const std::filesystem::path& path, int image_width, int image_height,
+                                             InputWarnings* warnings) {
   const nlohmann::json root = io::LoadJsonFile(path);
   const std::string source = path.string();
   if (!root.is_object()) throw InputError(source + ": expected an object keyed by camera id");
@@ -74,7 +57,7 @@ std::vector<Camera> ReadVoxelPoseCalibration(const std::filesystem::path& path, 
     }
     const Eigen::Matrix3d R_file = RowMajor3x3(io::JsonMatrix(root, base + "/R", source, 3, 3));
     const std::vector<double> center_mm = io::JsonMatrix(root, base + "/T", source, 3, 1);
-    const Eigen::Matrix3d R = NearestRotation(R_file, source + ": " + base + "/R");
+    const Eigen::Matrix3d R = AcceptRotation(R_file, source, source + ": " + base + "/R", warnings);
 
     // x_cam = R (X - C): the file's T is the centre C, in millimetres.
     Camera camera = Camera::FromCenter(R, Eigen::Vector3d(center_mm[0], center_mm[1], center_mm[2]) / 1000.0);

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "core/camera.h"
+#include "datasets/input_warnings.h"
 
 namespace rpt {
 
@@ -28,11 +29,13 @@ namespace rpt {
 //
 // The Shelf file stores R with 6 decimals (|R^T R - I| up to ~1.1e-6, just above
 // Camera::Validate's 1e-6 tolerance), so an R within 1e-3 of a rotation is replaced by the
-// nearest rotation (SVD); the change moves projections by ~1e-3 px.
+// nearest rotation (AcceptRotation, datasets/input_warnings.h) and counted in `warnings` when
+// given; the change moves projections by ~1e-3 px.
 //
 // Throws InputError naming the file and the JSON pointer for a missing file, a missing or
 // malformed entry, an R that is not a rotation (|R^T R - I| > 1e-3, or a reflection), and a
 // camera that fails Camera::Validate.
-std::vector<Camera> ReadVoxelPoseCalibration(const std::filesystem::path& path, int image_width, int image_height);
+std::vector<Camera> ReadVoxelPoseCalibration(const std::filesystem::path& path, int image_width, int image_height,
+                                             InputWarnings* warnings = nullptr);
 
 }  // namespace rpt

@@ -9,6 +9,7 @@
 
 #include "core/errors.h"
 #include "core/joints.h"
+#include "datasets/input_warnings.h"
 #include "datasets/io/pickle.h"
 
 namespace rpt {
@@ -34,8 +35,9 @@ bool SplitKey(const std::string& key, std::string* camera, long* frame) {
   return true;
 }
 
-// One detection {"pred": 17x3} appended to `view`.
-void AddDetection(const io::PyView& detection, Poses2D* view) {
+// One detection {"pred": 17x3} appended to `view`. Heatmap maxima can overshoot 1 slightly:
+// scores in (1, 1.5] are clamped to 1 and counted in `warnings`.
+void AddDetection(const io::PyView& detection, Poses2D* view, InputWarnings* warnings) {
   if (!detection.IsDict()) {
     detection.Fail(std::string("expected a dict with key 'pred', got ") + PyKindName(detection.kind()));
   }
@@ -48,8 +50,8 @@ void AddDetection(const io::PyView& detection, Poses2D* view) {
   for (int j = 0; j < kCocoJoints; ++j) {
     person(0, j) = rows[3 * j];
     person(1, j) = rows[3 * j + 1];
-    // Heatmap maxima can overshoot 1 slightly; rpt scores live in [0, 1].
-    person(2, j) = std::clamp(rows[3 * j + 2], 0.0, 1.0);
+    person(2, j) = AcceptScore(rows[3 * j + 2], pred.source(), warnings,
+                               [&] { return pred.Where() + ": row " + std::to_string(j); });
   }
 }
 
@@ -97,7 +99,7 @@ Detections ReadVoxelPoseDetections(const std::filesystem::path& path, const Sequ
       }
       Poses2D view;
       view.Clear(kCocoJoints);
-      for (const io::PyView& detection : value->Elements()) AddDetection(detection, &view);
+      for (const io::PyView& detection : value->Elements()) AddDetection(detection, &view, &detections.warnings);
       frame.cameras.push_back(sequence.cameras[c].name);
       frame.views.push_back(std::move(view));
     }

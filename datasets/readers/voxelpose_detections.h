@@ -22,9 +22,10 @@ namespace rpt {
 // joints CocoBodyJoints() and one FrameDetections per sequence frame that has at least one key
 // (with an empty Poses2D for an empty list), cameras in sequence order. Keys of frames or cameras
 // that are not in the sequence are ignored (the full caches cover every image; the mmpose Campus
-// subset even lists cameras 3 and 4 that Campus does not have). Scores are clamped to [0, 1].
-// Throws InputError naming the file and the key for a key that is not "<camera>_<frame>", a
-// value that is not a list of {"pred": 17x3 array}, and non-finite numbers.
+// subset even lists cameras 3 and 4 that Campus does not have). Scores in (1, 1.5] are clamped to
+// 1 and counted in Detections::warnings. Throws InputError naming the file and the key for a key
+// that is not "<camera>_<frame>", a value that is not a list of {"pred": 17x3 array}, non-finite
+// numbers, and negative scores or scores above 1.5.
 Detections ReadVoxelPoseDetections(const std::filesystem::path& path, const Sequence& sequence,
                                    const std::string& dataset_prefix);
 

@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/pipeline/frame_stats.h"
 #include "tests/cli/cli_test_util.h"
 
 namespace rpt {
@@ -19,7 +20,7 @@ TEST(BenchCommand, ReportsStepsAccuracyAndBaseline) {
   const nlohmann::json& s = j["scenes"][0];
   EXPECT_EQ(s["name"], "few-views");
   EXPECT_GT(s["frame_time_us_median"].get<double>(), 0.0);
-  EXPECT_EQ(s["step_time_us_median"].size(), 13u);
+  EXPECT_EQ(s["step_time_us_median"].size(), static_cast<size_t>(kNumSteps)) << "one entry per step";
   EXPECT_GT(s["baseline_frame_time_us_median"].get<double>(), s["frame_time_us_median"].get<double>());
   EXPECT_GT(s["speedup"].get<double>(), 1.0);
   EXPECT_LT(s["mpjpe_mm"].get<double>(), 60.0);

@@ -9,6 +9,7 @@
 
 #include "core/errors.h"
 #include "tests/datasets/readers_h36m_ego_test_util.h"
+#include "tests/datasets/tolerance_test_util.h"
 
 namespace rpt {
 namespace {
@@ -106,6 +107,25 @@ TEST(ColmapText, MalformedInputNamesFileAndLine) {
   // A slightly unnormalised quaternion is accepted and normalised.
   const auto ok = images("1 1.0004 0 0 0 0 0 0 1 a/1.jpg\n\n");
   EXPECT_DOUBLE_EQ(ok[0].qvec_wxyz.norm(), 1.0);
+  // 1e-2 off is not rounding.
+  EXPECT_THAT(InputErrorOf([&] { images("# a\n# b\n# c\n2 0.505 0.505 0.505 0.505 0 0 0 1 a/1.jpg\n\n"); }),
+              HasSubstr("images.txt:4: quaternion (0.505, 0.505, 0.505, 0.505) has norm 1.01, expected a unit quaternion"));
+}
+
+TEST(ColmapText, RoundedQuaternionsAreNormalisedAndCounted) {
+  std::istringstream in(
+      "# 6 significant digits\n"
+      "1 0.500001 0.5 0.499999 0.500002 0 0 0 1 a/1.jpg\n\n"
+      "2 0.707107 0.707107 0 0 0 0 0 1 a/2.jpg\n\n"
+      "3 1 0 0 0 0 0 0 1 a/3.jpg\n\n");  // exact: not counted
+  InputWarnings warnings;
+  const auto images = ParseColmapImagesText(in, "images.txt", &warnings);
+  ASSERT_EQ(images.size(), 3u);
+  for (const ColmapImage& image : images) EXPECT_NEAR(image.qvec_wxyz.norm(), 1.0, 1e-15);
+  EXPECT_EQ(images[2].qvec_wxyz, Eigen::Vector4d(1, 0, 0, 0));
+  test::ExpectOneWarning(warnings, "images.txt", test::kQuaternionsFixed, 2);
+  const Eigen::Matrix3d R = ColmapQuaternionToRotation(images[1].qvec_wxyz);
+  EXPECT_LT(test::OrthonormalityError(R), 1e-15);
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 
 #include "core/errors.h"
 #include "tests/datasets/readers_h36m_ego_test_util.h"
+#include "tests/datasets/tolerance_test_util.h"
 
 namespace rpt {
 namespace {
@@ -96,9 +97,21 @@ test::Obj Matrix4Obj(const Eigen::Matrix4d& m) { return test::PyArray({4, 4}, Fl
 
 struct TreeOptions {
   bool nan_in_gt = false;
-  bool bad_quaternion = false;
+  bool bad_quaternion = false;   // image 3's quaternion scaled by 1.2
   bool gt_wrong_shape = false;
+  int quaternion_digits = 17;    // significant digits of the quaternions in images.txt
+  double quaternion_scale = 1.0;  // image 3's quaternion scaled by this
+  int anchor_digits = 17;        // significant digits of colmap_from_aria[aria01]
+  double anchor_stretch = 1.0;   // colmap_from_aria[aria01] stretched along y: not a similarity
+  double joint0_score = 1.25;    // 2D cache score of joint 0 (HRNet may exceed 1)
 };
+
+// `m` with every entry rounded to `digits` significant digits.
+Eigen::Matrix4d Rounded(const Eigen::Matrix4d& m, int digits) {
+  Eigen::Matrix4d out = m;
+  for (Eigen::Index i = 0; i < 16; ++i) out.data()[i] = std::stod(test::NumDigits(out.data()[i], digits));
+  return out;
+}
 
 // Writes data/01_tagging/001_tagging with time stamps 1..3 and returns the sequence directory.
 fs::path WriteTree(const fs::path& data, const TreeOptions& options = {}) {
@@ -116,7 +129,10 @@ fs::path WriteTree(const fs::path& data, const TreeOptions& options = {}) {
   auto image_line = [&](int id, const Eigen::Matrix4d& E, int camera, const std::string& name) {
     Eigen::Quaterniond q(Eigen::Matrix3d(E.topLeftCorner<3, 3>()));
     if (options.bad_quaternion && id == 3) q.coeffs() *= 1.2;
-    images += std::to_string(id) + " " + Num(q.w()) + " " + Num(q.x()) + " " + Num(q.y()) + " " + Num(q.z()) + " " + Num(E(0, 3)) + " " +
+    if (id == 3) q.coeffs() *= options.quaternion_scale;
+    const int d = options.quaternion_digits;
+    images += std::to_string(id) + " " + test::NumDigits(q.w(), d) + " " + test::NumDigits(q.x(), d) + " " +
+              test::NumDigits(q.y(), d) + " " + test::NumDigits(q.z(), d) + " " + Num(E(0, 3)) + " " +
               Num(E(1, 3)) + " " + Num(E(2, 3)) + " " + std::to_string(camera) + " " + name + "\n" + "100.5 200.5 12 300 400 -1\n";
   };
   Eigen::Matrix4d wrong = CamFromColmap(Exos()[0]);
@@ -132,8 +148,10 @@ fs::path WriteTree(const fs::path& data, const TreeOptions& options = {}) {
 
   Eigen::Matrix4d other = Eigen::Matrix4d::Identity();
   other.topRightCorner<3, 1>() = Eigen::Vector3d(5, 5, 5);
+  Eigen::Matrix4d anchor = Rounded(ColmapFromAnchor(), options.anchor_digits);
+  anchor.row(1).head<3>() *= options.anchor_stretch;
   test::WriteBytes(work / "colmap_from_aria_transforms.pkl",
-                   test::PickleOf(test::PyDict({{test::PyStr("aria01"), Matrix4Obj(ColmapFromAnchor())},
+                   test::PickleOf(test::PyDict({{test::PyStr("aria01"), Matrix4Obj(anchor)},
                                                 {test::PyStr("aria02"), Matrix4Obj(other)}})));
 
   for (int t = 1; t <= 3; ++t) {
@@ -165,7 +183,7 @@ fs::path WriteTree(const fs::path& data, const TreeOptions& options = {}) {
           const Eigen::Vector2d uv = EgohumansProject(e, X.col(j));
           keypoints[static_cast<std::size_t>(3 * j)] = uv.x();
           keypoints[static_cast<std::size_t>(3 * j + 1)] = uv.y();
-          keypoints[static_cast<std::size_t>(3 * j + 2)] = j == 0 ? 1.25 : 0.9;  // HRNet may exceed 1
+          keypoints[static_cast<std::size_t>(3 * j + 2)] = j == 0 ? options.joint0_score : 0.9;
         }
         people.push_back(test::PyDict({{test::PyStr("human_name"), test::PyStr("aria0" + std::to_string(p + 1))},
                                        {test::PyStr("bbox"), test::PyArray({5}, {10, 20, 300, 400, 0.99})},
@@ -236,7 +254,7 @@ TEST(EgohumansReader, GtProjectsOntoTheTwoDCache) {
           Eigen::Vector2d uv;
           ASSERT_TRUE(seq.cameras[c].Project(person.col(j).head<3>(), &uv));
           worst_px = std::max(worst_px, (uv - detection.col(j).head<2>()).norm());
-          EXPECT_EQ(detection(2, j), j == 0 ? 1.0 : 0.9);  // clamped to [0, 1]
+          EXPECT_EQ(detection(2, j), j == 0 ? 1.0 : 0.9);  // 1.25 clamped to 1
           ++checked;
         }
       }
@@ -244,6 +262,10 @@ TEST(EgohumansReader, GtProjectsOntoTheTwoDCache) {
   }
   EXPECT_GT(checked, 200);
   EXPECT_LT(worst_px, 1e-6);
+  // The clamped scores are counted in one line for the sequence's cache folder: joint 0 of every
+  // detected person (2 per view at t = 1, 2; only aria01 at t = 3, and cam02 sees nobody then).
+  const std::string cache_dir = (data / "01_tagging" / "001_tagging" / "processed_data" / "poses2d").string();
+  test::ExpectOneWarning(seq.warnings, cache_dir, test::kScoresClamped, 6 + 6 + 2);
 
   // The same cache through ReadEgohumansDetections.
   const Detections detections = ReadEgohumansDetections(Request(data, {{"sequences", "01_tagging/001_tagging"}}));
@@ -251,6 +273,7 @@ TEST(EgohumansReader, GtProjectsOntoTheTwoDCache) {
   EXPECT_EQ(detections.joints.size(), 133u);
   EXPECT_EQ(detections.frames[1].frame_id, "egohumans_01_tagging_001_tagging_00002");
   EXPECT_EQ(detections.frames[1].cameras, (std::vector<std::string>{"cam01", "cam02", "cam03"}));
+  test::ExpectOneWarning(detections.warnings, cache_dir, test::kScoresClamped, 14);
   Sequence without = ReadEgohumans(Request(data))[0];
   EXPECT_TRUE(without.frames[0].views.empty());
   const AttachReport report = AttachDetections(detections, "cache", &without);
@@ -289,6 +312,72 @@ TEST(EgohumansReader, RootLevelsAndParams) {
   EXPECT_THAT(InputErrorOf([&] { ReadEgohumans(Request(data, {{"gt", "refine_poses3d"}})); }),
               HasSubstr("refine_poses3d: ground-truth directory not found"));
   EXPECT_THAT(InputErrorOf([&] { ReadEgohumans(Request(dir.path() / "nothing")); }), HasSubstr("nothing: not a directory"));
+}
+
+TEST(EgohumansReader, RoundedQuaternionsAndAnchorAreCorrectedAndCounted) {
+  test::TempDir dir;
+  const fs::path data = dir.path() / "data";
+  const fs::path seq_dir = WriteTree(data, {.quaternion_digits = 6, .anchor_digits = 6});
+  const Sequence seq = ReadEgohumans(Request(data))[0];
+  for (std::size_t c = 0; c < 3; ++c) {
+    EXPECT_LT(test::OrthonormalityError(seq.cameras[c].R), 1e-12);
+    EXPECT_LT((seq.cameras[c].Center() - Exos()[c].center).norm(), 1e-4) << seq.cameras[c].name;
+  }
+  const fs::path work = seq_dir / "colmap" / "workplace";
+  const std::string anchor = " composed with " + (work / "colmap_from_aria_transforms.pkl").string() + "['aria01']";
+  // Four rounded quaternions (the identity of the Aria image is exact); the rounded similarity
+  // makes every camera's composed rotation off by ~1e-6: one line per file combination.
+  ASSERT_EQ(seq.warnings.items().size(), 3u) << seq.warnings.items()[0].Line();
+  EXPECT_EQ(seq.warnings.items()[0].source, (work / "images.txt").string());
+  EXPECT_EQ(seq.warnings.items()[0].what, test::kQuaternionsFixed);
+  EXPECT_EQ(seq.warnings.items()[0].count, 4);
+  EXPECT_EQ(seq.warnings.items()[1].source, (work / "images.txt").string() + anchor);
+  EXPECT_EQ(seq.warnings.items()[1].what, test::kRotationsFixed);
+  EXPECT_EQ(seq.warnings.items()[1].count, 2);
+  EXPECT_EQ(seq.warnings.items()[2].source, (work / "cam03.npy").string() + anchor);
+  EXPECT_EQ(seq.warnings.items()[2].count, 1);
+}
+
+TEST(EgohumansReader, RotationsBeyondTheToleranceNameFileAndLine) {
+  {
+    test::TempDir dir;
+    WriteTree(dir.path(), {.quaternion_scale = 1.01});
+    EXPECT_THAT(InputErrorOf([&] { ReadEgohumans(Request(dir.path())); }),
+                HasSubstr("images.txt:9: quaternion ("));
+    EXPECT_THAT(InputErrorOf([&] { ReadEgohumans(Request(dir.path())); }), HasSubstr(") has norm 1.01, expected a unit quaternion"));
+  }
+  test::TempDir dir;
+  WriteTree(dir.path(), {.anchor_stretch = 1.01});
+  EXPECT_THAT(InputErrorOf([&] { ReadEgohumans(Request(dir.path())); }),
+              HasSubstr("images.txt:5 composed with " +
+                        (dir.path() / "01_tagging" / "001_tagging" / "colmap" / "workplace" / "colmap_from_aria_transforms.pkl").string() +
+                        "['aria01']: camera_from_anchor / scale: R is not a rotation"));
+}
+
+TEST(EgohumansReader, CacheScoresSlightlyAboveOneAreClampedAndCounted) {
+  test::TempDir dir;
+  const fs::path seq_dir = WriteTree(dir.path(), {.joint0_score = 1.018});
+  const Detections detections = ReadEgohumansDetections(Request(dir.path()));
+  for (const FrameDetections& frame : detections.frames) {
+    for (const Poses2D& view : frame.views) {
+      for (int p = 0; p < view.num_persons(); ++p) EXPECT_LE(view.Person(p)(2, 0), 1.0);
+    }
+  }
+  EXPECT_EQ(detections.frames[0].views[0].Person(0)(2, 0), 1.0);
+  test::ExpectOneWarning(detections.warnings, (seq_dir / "processed_data" / "poses2d").string(), test::kScoresClamped, 14);
+  EXPECT_DOUBLE_EQ(detections.warnings.items()[0].worst, 1.018);
+}
+
+TEST(EgohumansReader, CacheScoresNegativeLargeOrNanNameFileAndJoint) {
+  for (const double score : {1.6, -0.1, std::nan("")}) {
+    test::TempDir dir;
+    WriteTree(dir.path(), {.joint0_score = score});
+    const std::string what = std::isnan(score) ? "joint 0: NaN or infinite value"
+                             : score > 1      ? "joint 0: score 1.6 outside [0, 1]"
+                                              : "joint 0: score -0.1 outside [0, 1]";
+    EXPECT_THAT(InputErrorOf([&] { ReadEgohumansDetections(Request(dir.path())); }),
+                HasSubstr("poses2d/cam01/rgb/00001.npy: [0].keypoints: " + what));
+  }
 }
 
 TEST(EgohumansReader, MalformedInputsNameFileAndPlace) {

@@ -3,6 +3,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "datasets/readers/coco_detections.h"
@@ -11,6 +13,7 @@
 #include "datasets/readers/hdf5_cache.h"
 #include "datasets/readers/openpose_json.h"
 #include "tests/datasets/readers_generic_test_util.h"
+#include "tests/datasets/tolerance_test_util.h"
 #include "tests/test_data.h"
 
 namespace rpt {
@@ -70,9 +73,9 @@ TEST(GenericDetections, MalformedFilesNameFileAndPointer) {
   EXPECT_THAT(InputErrorOf([&] { ReadGenericDetections(write(R"({"joints": ["nose", "l_wrist"], "frames": []})")); }),
               HasSubstr("bad.json: /joints: unknown joint name 'l_wrist'"));
   EXPECT_THAT(InputErrorOf([&] {
-                ReadGenericDetections(write(R"({"joints": ["nose"], "frames": [{"id": "a", "views": [{"camera": "c", "poses": [[[1, 2, 1.5]]]}]}]})"));
+                ReadGenericDetections(write(R"({"joints": ["nose"], "frames": [{"id": "a", "views": [{"camera": "c", "poses": [[[1, 2, 1.6]]]}]}]})"));
               }),
-              HasSubstr("/frames/0/views/0/poses/0/0: score 1.500000 outside [0, 1]"));
+              HasSubstr("bad.json: /frames/0/views/0/poses/0/0: score 1.6 outside [0, 1] (values up to 1.5 are clamped to 1)"));
   EXPECT_THAT(InputErrorOf([&] {
                 ReadGenericDetections(write(R"({"joints": ["nose"], "frames": [{"id": "a", "views": [{"camera": "c", "poses": [[[1, 2]]]}]}]})"));
               }),
@@ -95,6 +98,37 @@ TEST(GenericDetections, WriterRefusesNaN) {
   detections.frames[1].views[0].data[4] = std::nan("");
   EXPECT_THAT(InputErrorOf([&] { WriteGenericDetections(dir.path() / "d.json", detections); }),
               HasSubstr("frame 'frame_000001', camera 'a', person 0, joint 'eye_left': NaN or infinity"));
+}
+
+// One frame, one view, one person of two joints with the given score texts (JSON numbers).
+std::string OnePersonJson(const std::string& nose_score, const std::string& eye_score) {
+  return R"({"joints": ["nose", "eye_left"], "frames": [{"id": "f0", "views": [{"camera": "c", "poses": [[[1, 2, )" +
+         nose_score + "], [3, 4, " + eye_score + "]]]}]}]}";
+}
+
+TEST(GenericDetections, ScoresSlightlyAboveOneAreClampedAndCounted) {
+  test::TempDir dir;
+  const auto path = WriteText(dir, "d.json", OnePersonJson("1.008", "1.018"));
+  const Detections d = ReadGenericDetections(path);
+  const auto person = d.frames[0].views[0].Person(0);
+  EXPECT_EQ(person(2, 0), 1.0);
+  EXPECT_EQ(person(2, 1), 1.0);
+  test::ExpectOneWarning(d.warnings, path.string(), test::kScoresClamped, 2);
+  EXPECT_EQ(d.warnings.items()[0].Line(), path.string() + ": 2 scores above 1 clamped to 1 (largest = 1.018)");
+  EXPECT_TRUE(ReadGenericDetections(WriteText(dir, "ok.json", OnePersonJson("1", "0.5"))).warnings.empty());
+}
+
+TEST(GenericDetections, NegativeLargeOrNanScoresNameFileAndPointer) {
+  test::TempDir dir;
+  const auto large = WriteText(dir, "large.json", OnePersonJson("0.9", "1.6"));
+  EXPECT_THAT(InputErrorOf([&] { ReadGenericDetections(large); }),
+              HasSubstr(large.string() + ": /frames/0/views/0/poses/0/1: score 1.6 outside [0, 1]"));
+  const auto negative = WriteText(dir, "negative.json", OnePersonJson("-0.1", "0.9"));
+  EXPECT_THAT(InputErrorOf([&] { ReadGenericDetections(negative); }),
+              HasSubstr(negative.string() + ": /frames/0/views/0/poses/0/0: score -0.1 outside [0, 1]"));
+  // JSON has no NaN: a file that writes one is a parse error naming line and column.
+  const auto nan = WriteText(dir, "nan.json", OnePersonJson("NaN", "0.9"));
+  EXPECT_THAT(InputErrorOf([&] { ReadGenericDetections(nan); }), ContainsRegex("nan\\.json:1:[0-9]+: JSON parse error"));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -121,7 +155,7 @@ TEST(OpenPose, Body25FolderMapsToCocoNamesAndFeet) {
   nlohmann::json person = {{"person_id", {-1}}, {"pose_keypoints_2d", Flat(25, 100, 0.8)},
                            {"face_keypoints_2d", nlohmann::json::array()}, {"hand_left_keypoints_2d", nlohmann::json::array()}};
   person["pose_keypoints_2d"][3 * 4 + 2] = 0;    // right wrist missing
-  person["pose_keypoints_2d"][3 * 19 + 2] = 1.02;  // confidence above 1 is clamped
+  person["pose_keypoints_2d"][3 * 19 + 2] = 1.02;  // confidence above 1: clamped and counted
   WriteOpenPose(dir, "Camera0/shelf_000000000000_keypoints.json", {person});
   WriteOpenPose(dir, "Camera0/shelf_000000000001_keypoints.json", {});
   WriteOpenPose(dir, "Camera1/shelf_000000000000_keypoints.json", {person, person});
@@ -152,6 +186,7 @@ TEST(OpenPose, Body25FolderMapsToCocoNamesAndFeet) {
   EXPECT_DOUBLE_EQ(at("foot_heel_right")(0), 124);     // 24
   EXPECT_DOUBLE_EQ(at("wrist_right")(2), 0.0);
   EXPECT_DOUBLE_EQ(at("foot_big_toe_left")(2), 1.0);
+  test::ExpectOneWarning(d.warnings, dir.path().string(), test::kScoresClamped, 3);  // 3 persons in 2 files
 
   options.joints = OpenPoseJointSet::kBody;
   EXPECT_EQ(ReadOpenPoseFolder(dir.path(), options).joints, CocoBodyJoints());
@@ -221,6 +256,42 @@ TEST(OpenPose, CustomMappingAndErrors) {
   EXPECT_THAT(InputErrorOf([&] { ReadOpenPoseFolder(bad.path()); }), ContainsRegex("keypoints\\.json:1:[0-9]+: JSON parse error"));
 }
 
+TEST(OpenPose, ConfidencesSlightlyAboveOneAreCountedOncePerFolder) {
+  test::TempDir dir;
+  nlohmann::json person = {{"pose_keypoints_2d", Flat(18, 10, 0.5)}};
+  person["pose_keypoints_2d"][3 * 0 + 2] = 1.008;   // nose
+  person["pose_keypoints_2d"][3 * 14 + 2] = 1.018;  // right eye
+  nlohmann::json hands = {{"pose_keypoints_2d", Flat(18, 10, 0.5)}, {"hand_left_keypoints_2d", Flat(21, 50, 1.008)}};
+  WriteOpenPose(dir, "c0/v_000000000001_keypoints.json", {person});
+  WriteOpenPose(dir, "c1/v_000000000001_keypoints.json", {person, hands});
+  const Detections d = ReadOpenPoseFolder(dir.path());
+  for (const Poses2D& view : d.frames[0].views) {
+    for (size_t i = 2; i < view.data.size(); i += 3) EXPECT_LE(view.data[i], 1.0);
+    EXPECT_EQ(view.Person(0)(2, FindJoint(d.joints, "nose")), 1.0);
+    EXPECT_EQ(view.Person(0)(2, FindJoint(d.joints, "eye_right")), 1.0);
+  }
+  EXPECT_EQ(d.frames[0].views[1].Person(1)(2, FindJoint(d.joints, "hand_root_left")), 1.0);
+  // One line for the folder, not one per file: 2 + 2 + 21 values above 1.
+  test::ExpectOneWarning(d.warnings, dir.path().string(), test::kScoresClamped, 25);
+}
+
+TEST(OpenPose, NegativeOrLargeConfidencesNameFileAndPointer) {
+  for (const double score : {1.6, -0.1}) {
+    test::TempDir dir;
+    nlohmann::json person = {{"pose_keypoints_2d", Flat(18, 10, 0.5)}};
+    person["pose_keypoints_2d"][3 * 5 + 2] = score;
+    WriteOpenPose(dir, "c0/v_000000000001_keypoints.json", {{{"pose_keypoints_2d", Flat(18, 10, 0.5)}}});
+    WriteOpenPose(dir, "c1/v_000000000001_keypoints.json", {person});
+    EXPECT_THAT(InputErrorOf([&] { ReadOpenPoseFolder(dir.path()); }),
+                HasSubstr((dir.path() / "c1" / "v_000000000001_keypoints.json").string() +
+                          ": /people/0/pose_keypoints_2d/17 (point 5): score " + (score > 0 ? "1.6" : "-0.1") +
+                          " outside [0, 1]"));
+  }
+  test::TempDir dir;
+  WriteText(dir, "c0/v_000000000001_keypoints.json", R"({"people": [{"pose_keypoints_2d": [1, 2, NaN]}]})");
+  EXPECT_THAT(InputErrorOf([&] { ReadOpenPoseFolder(dir.path()); }), ContainsRegex("keypoints\\.json:1:[0-9]+: JSON parse error"));
+}
+
 // ---------------------------------------------------------------------------------------------
 // COCO result lists
 
@@ -281,6 +352,63 @@ TEST(Coco, MalformedListsNameFileAndPointer) {
               HasSubstr("ann.json: /images/0/file_name: 'flat.jpg' does not match the pattern"));
   options.annotation_file.clear();
   EXPECT_THAT(test::ConfigErrorOf([&] { ReadCocoDetections(results(nlohmann::json::array()), options); }), HasSubstr("needs an annotation file"));
+}
+
+TEST(Coco, ScoresSlightlyAboveOneAreClampedAndCounted) {
+  test::TempDir dir;
+  nlohmann::json first = CocoResult(10010000001, 1), second = CocoResult(10020000001, 5);
+  first["keypoints"][2] = 1.008;
+  second["keypoints"][3 * 16 + 2] = 1.018;
+  const auto path = WriteText(dir, "r.json", nlohmann::json::array({first, second}).dump());
+  const Detections d = ReadCocoDetections(path);
+  ASSERT_EQ(d.frames.size(), 1u);
+  EXPECT_EQ(d.frames[0].views[0].Person(0)(2, 0), 1.0);
+  EXPECT_EQ(d.frames[0].views[1].Person(0)(2, 16), 1.0);
+  EXPECT_EQ(d.frames[0].views[1].Person(0)(2, 15), 0.75);
+  test::ExpectOneWarning(d.warnings, path.string(), test::kScoresClamped, 2);
+}
+
+TEST(Coco, NegativeLargeOrNanScoresNameFileAndPointer) {
+  test::TempDir dir;
+  for (const double score : {1.6, -0.1}) {
+    nlohmann::json bad = CocoResult(10010000002, 1);
+    bad["keypoints"][3 * 4 + 2] = score;
+    const auto path = WriteText(dir, "r.json", nlohmann::json::array({CocoResult(10010000001, 1), bad}).dump());
+    EXPECT_THAT(InputErrorOf([&] { ReadCocoDetections(path); }),
+                HasSubstr(path.string() + ": /1/keypoints/14 (joint 4): score " + (score > 0 ? "1.6" : "-0.1") +
+                          " outside [0, 1]"));
+  }
+  std::string text = nlohmann::json::array({CocoResult(10010000001, 1)}).dump();
+  text.replace(text.find("0.75"), 4, "NaN");
+  const auto nan = WriteText(dir, "nan.json", text);
+  EXPECT_THAT(InputErrorOf([&] { ReadCocoDetections(nan); }), ContainsRegex("nan\\.json:1:[0-9]+: JSON parse error"));
+}
+
+TEST(Coco, MvorOpenPoseFixtureClampsAndCountsEveryScoreAboveOne) {
+  RPT_REQUIRE_SHARED_DATA("mvor/openpose_kps.json");
+  const auto path = test::SharedData("mvor/openpose_kps.json");
+  // Count the values above 1 independently: the same arrays the reader uses (coco_keypoints when
+  // present, else keypoints), every third number.
+  const nlohmann::json results = nlohmann::json::parse(std::ifstream(path));
+  long above = 0;
+  double largest = 0;
+  for (const nlohmann::json& item : results) {
+    const nlohmann::json& keypoints = item.contains("coco_keypoints") ? item["coco_keypoints"] : item["keypoints"];
+    for (size_t k = 2; k < keypoints.size(); k += 3) {
+      const double score = keypoints[k].get<double>();
+      if (score > 1) ++above, largest = std::max(largest, score);
+    }
+  }
+  ASSERT_GT(above, 0) << "the MVOR OpenPose output has confidences above 1";
+
+  const Detections d = ReadCocoDetections(path);
+  for (const FrameDetections& frame : d.frames) {
+    for (const Poses2D& view : frame.views) {
+      for (size_t i = 2; i < view.data.size(); i += 3) ASSERT_LE(view.data[i], 1.0);
+    }
+  }
+  test::ExpectOneWarning(d.warnings, path.string(), test::kScoresClamped, above);
+  EXPECT_DOUBLE_EQ(d.warnings.items()[0].worst, largest);
 }
 
 TEST(Coco, MvorOpenPoseFixtureUsesCocoKeypoints) {

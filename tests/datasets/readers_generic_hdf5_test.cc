@@ -11,6 +11,7 @@
 #include "datasets/readers/detections_file.h"
 #include "datasets/readers/hdf5_cache.h"
 #include "tests/datasets/readers_generic_test_util.h"
+#include "tests/datasets/tolerance_test_util.h"
 
 namespace rpt {
 namespace {
@@ -182,6 +183,75 @@ TEST(Hdf5Cache, NotAnHdf5FileNamesFileAndPlace) {
               HasSubstr("fake.h5: cannot add to it: not an existing HDF5 file"));
 }
 
+TEST(Hdf5Cache, CameraRotationsWithSixDigitsAreReorthonormalisedAndCounted) {
+  test::TempDir dir;
+  const Sequence sequence = test::MakeLabelSequence("a", 2, "a_");
+  const auto path = dir.path() / "cache.h5";
+  WriteSequencesHdf5(path, {sequence});
+  {
+    Hdf5Editor editor(path);  // camera_R as another tool would store it: 6 significant digits
+    std::vector<double> R = editor.GetDoubles("/sequences/0/camera_R");
+    for (int c = 0; c < 2; ++c) {
+      const Eigen::Matrix3d rounded = test::RoundedRotation(sequence.cameras[c].R);
+      for (int k = 0; k < 9; ++k) R[9 * c + k] = rounded(k / 3, k % 3);
+    }
+    editor.PutDoubles("/sequences/0/camera_R", editor.Dims("/sequences/0/camera_R"), R);
+  }
+  const Sequence read = ReadSequencesHdf5(path).at(0);
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_LT(test::OrthonormalityError(read.cameras[c].R), 1e-12);
+    EXPECT_LT((read.cameras[c].R - sequence.cameras[c].R).cwiseAbs().maxCoeff(), 1e-5);
+  }
+  EXPECT_EQ(read.cameras[2].R, sequence.cameras[2].R) << "stored exactly: kept as it is";
+  test::ExpectOneWarning(read.warnings, path.string(), test::kRotationsFixed, 2);
+
+  {
+    Hdf5Editor editor(path);
+    std::vector<double> R = editor.GetDoubles("/sequences/0/camera_R");
+    for (int k = 9; k < 18; ++k) R[k] *= 1.005;  // camera 1: 1e-2 off
+    editor.PutDoubles("/sequences/0/camera_R", editor.Dims("/sequences/0/camera_R"), R);
+  }
+  EXPECT_THAT(InputErrorOf([&] { ReadSequencesHdf5(path); }),
+              HasSubstr(path.string() + ": /sequences/0/camera_R: camera 1 ('cam_b'): R is not a rotation"));
+}
+
+TEST(Hdf5Cache, DetectionScoresSlightlyAboveOneAreClampedAndCounted) {
+  test::TempDir dir;
+  const Detections detections = test::MakeDetections(4, {"a", "b"}, CocoBodyJoints());
+  const auto path = dir.path() / "d.h5";
+  WriteDetectionsHdf5(path, detections);
+  {
+    Hdf5Editor editor(path);  // a cache written by another tool
+    std::vector<double> keypoints = editor.GetDoubles("/detections/keypoints");
+    keypoints[2] = 1.008;           // person 0, joint 0
+    keypoints[3 * 17 + 2] = 1.018;  // person 1, joint 0
+    editor.PutDoubles("/detections/keypoints", editor.Dims("/detections/keypoints"), keypoints);
+  }
+  const Detections read = ReadDetectionsHdf5(path);
+  EXPECT_EQ(read.frames[0].views[1].Person(0)(2, 0), 1.0);
+  EXPECT_EQ(read.frames[1].views[0].Person(0)(2, 0), 1.0);
+  test::ExpectOneWarning(read.warnings, path.string(), test::kScoresClamped, 2);
+  EXPECT_DOUBLE_EQ(read.warnings.items()[0].worst, 1.018);
+}
+
+TEST(Hdf5Cache, NegativeLargeOrNanScoresNameTheDatasetPath) {
+  test::TempDir dir;
+  const Detections detections = test::MakeDetections(4, {"a", "b"}, CocoBodyJoints());
+  const auto path = dir.path() / "d.h5";
+  for (const double score : {1.6, -0.1, std::numeric_limits<double>::quiet_NaN()}) {
+    WriteDetectionsHdf5(path, detections);
+    {
+      Hdf5Editor editor(path);
+      std::vector<double> keypoints = editor.GetDoubles("/detections/keypoints");
+      keypoints[2] = score;
+      editor.PutDoubles("/detections/keypoints", editor.Dims("/detections/keypoints"), keypoints);
+    }
+    const std::string what = std::isnan(score) ? "NaN or infinite value" : score > 1 ? "score 1.6 outside [0, 1]" : "score -0.1 outside [0, 1]";
+    EXPECT_THAT(InputErrorOf([&] { ReadDetectionsHdf5(path); }),
+                HasSubstr(path.string() + ": /detections/keypoints: person 0 (frame 'frame_000000', camera 'b'), joint 'nose': " + what));
+  }
+}
+
 TEST(Hdf5Cache, MalformedDatasetsNameTheDatasetPath) {
   test::TempDir dir;
   const Detections detections = test::MakeDetections(4, {"a", "b"}, CocoBodyJoints());
@@ -217,7 +287,7 @@ TEST(Hdf5Cache, MalformedDatasetsNameTheDatasetPath) {
     editor.PutDoubles("/detections/keypoints", editor.Dims("/detections/keypoints"), keypoints);
   }
   EXPECT_THAT(InputErrorOf([&] { ReadDetectionsHdf5(path); }), HasSubstr("/detections/keypoints: person 0"));
-  EXPECT_THAT(InputErrorOf([&] { ReadDetectionsHdf5(path); }), HasSubstr("score 3.000000 outside [0, 1]"));
+  EXPECT_THAT(InputErrorOf([&] { ReadDetectionsHdf5(path); }), HasSubstr("joint 'nose': score 3 outside [0, 1]"));
 
   fresh();
   {

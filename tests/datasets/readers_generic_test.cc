@@ -3,9 +3,13 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+#include <cstdio>
+
 #include "datasets/readers/generic_common.h"
 #include "datasets/readers/generic_labels.h"
 #include "tests/datasets/readers_generic_test_util.h"
+#include "tests/datasets/tolerance_test_util.h"
 
 namespace rpt {
 namespace {
@@ -135,6 +139,65 @@ TEST(GenericLabels, CamerasThatDifferWithinASequenceNameBothLabels) {
   EXPECT_THAT(error, HasSubstr("T differs"));
 }
 
+// R as JSON rows with `digits` significant digits.
+std::string RotationJson(const Eigen::Matrix3d& R, int digits) {
+  std::string text = "[";
+  for (int r = 0; r < 3; ++r) {
+    text += r ? ", [" : "[";
+    for (int c = 0; c < 3; ++c) {
+      char number[40];
+      std::snprintf(number, sizeof(number), "%.*g", digits, R(r, c));
+      text += std::string(c ? ", " : "") + number;
+    }
+    text += "]";
+  }
+  return text + "]";
+}
+
+// Label() with the camera's R replaced by `R_json`.
+std::string LabelWithR(const std::string& id, const std::string& scene, const std::string& R_json) {
+  std::string label = Label(id, "scene", scene, 0);
+  const std::string identity = "[[1, 0, 0], [0, 1, 0], [0, 0, 1]]";
+  return label.replace(label.find(identity), identity.size(), R_json);
+}
+
+TEST(GenericLabels, RotationsWithSixDigitsAreReorthonormalisedAndCountedOncePerCamera) {
+  test::TempDir dir;
+  const Eigen::Matrix3d exact =
+      Eigen::AngleAxisd(0.8, Eigen::Vector3d(0.2, 0.9, -0.4).normalized()).toRotationMatrix();
+  const std::string rounded = RotationJson(exact, 6);
+  // Two scenes of two labels each: the cameras of a scene are parsed (and counted) once.
+  const auto path = WriteText(dir, "l.json", "[" + LabelWithR("a0", "A", rounded) + "," + LabelWithR("a1", "A", rounded) +
+                                                 "," + LabelWithR("b0", "B", rounded) + "," +
+                                                 LabelWithR("b1", "B", rounded) + "]");
+  const std::vector<Sequence> sequences = ReadLabels(path);
+  ASSERT_EQ(sequences.size(), 2u);
+  InputWarnings all;
+  for (const Sequence& sequence : sequences) {
+    EXPECT_LT(test::OrthonormalityError(sequence.cameras[0].R), 1e-12);
+    EXPECT_LT((sequence.cameras[0].R - exact).cwiseAbs().maxCoeff(), 1e-5);
+    EXPECT_LT((sequence.cameras[0].Center() - Eigen::Vector3d(0, 0, -3)).norm(), 1e-12);
+    test::ExpectOneWarning(sequence.warnings, path.string(), test::kRotationsFixed, 1);
+    all.Merge(sequence.warnings);
+  }
+  ASSERT_EQ(all.items().size(), 1u);
+  EXPECT_EQ(all.items()[0].Line().rfind(path.string() + ": 2 rotations re-orthonormalised (max |R^T R - I| = ", 0), 0u)
+      << all.items()[0].Line();
+  // Written with 17 digits: round-off only, nothing to report.
+  const auto exact_path = WriteText(dir, "exact.json", "[" + LabelWithR("a0", "A", RotationJson(exact, 17)) + "]");
+  EXPECT_TRUE(ReadLabels(exact_path)[0].warnings.empty());
+}
+
+TEST(GenericLabels, RotationFartherThanTheToleranceNamesFileAndCamera) {
+  test::TempDir dir;
+  const Eigen::Matrix3d exact =
+      Eigen::AngleAxisd(0.8, Eigen::Vector3d(0.2, 0.9, -0.4).normalized()).toRotationMatrix();
+  const auto path = WriteText(dir, "l.json", "[" + LabelWithR("a0", "A", RotationJson(exact, 17)) + "," +
+                                                 LabelWithR("b0", "B", RotationJson(test::WrongRotation(exact), 17)) + "]");
+  EXPECT_THAT(InputErrorOf([&] { ReadLabels(path); }),
+              HasSubstr(path.string() + ": /1/cameras/0/R: R is not a rotation (max |R^T R - I| = 0.010025"));
+}
+
 TEST(GenericLabels, MalformedFilesNameFileAndPlace) {
   test::TempDir dir;
   EXPECT_THAT(InputErrorOf([&] { ReadLabels(dir.path() / "missing.json"); }), HasSubstr("missing.json: file not found"));
@@ -158,7 +221,7 @@ TEST(GenericLabels, MalformedFilesNameFileAndPlace) {
   EXPECT_THAT(InputErrorOf([&] { ReadLabels(with(R"("width": 1000)", R"("width": "wide")")); }),
               HasSubstr("/0/cameras/0/width: expected an integer"));
   EXPECT_THAT(InputErrorOf([&] { ReadLabels(with(R"([[1, 0, 0], [0, 1, 0], [0, 0, 1]])", R"([[2, 0, 0], [0, 1, 0], [0, 0, 1]])")); }),
-              HasSubstr("R is not orthonormal"));
+              HasSubstr("bad.json: /0/cameras/0/R: R is not a rotation (max |R^T R - I| = 3"));
   const auto duplicate = WriteText(dir, "dup.json", "[" + Label("f0", "scene", "S", 0) + "," + Label("f0", "scene", "T", 0) + "]");
   EXPECT_THAT(InputErrorOf([&] { ReadLabels(duplicate); }), HasSubstr("dup.json: /1/id: id 'f0' is also used by label 0"));
   const auto object = WriteText(dir, "object.json", "{\"frames\": []}");

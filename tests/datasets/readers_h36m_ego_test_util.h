@@ -248,6 +248,13 @@ inline std::string Num(double v) {
   return buf;
 }
 
+// `v` with `digits` significant digits.
+inline std::string NumDigits(double v, int digits) {
+  char buf[64];
+  std::snprintf(buf, sizeof(buf), "%.*g", digits, v);
+  return buf;
+}
+
 struct H5Item {
   std::string name;  // e.g. "pose/3d"
   std::vector<hsize_t> dims;

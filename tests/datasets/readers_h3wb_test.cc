@@ -10,6 +10,7 @@
 #include "core/errors.h"
 #include "datasets/readers/human36m.h"
 #include "tests/datasets/readers_h36m_ego_test_util.h"
+#include "tests/datasets/tolerance_test_util.h"
 
 namespace rpt {
 namespace {
@@ -54,6 +55,7 @@ struct NpzOptions {
   double global_scale = 1000.0;  // metres -> file units of global_3d
   bool nan_in_global = false;
   bool camera_3d_2d = false;     // wrong last extent of camera_3d
+  int wrong_rotation_camera = -1;  // this camera of S8 gets a rotation 1e-2 off
 };
 
 test::Obj ActionObj(int subject, const std::vector<int>& frames, const NpzOptions& options) {
@@ -94,12 +96,14 @@ test::Obj ActionObj(int subject, const std::vector<int>& frames, const NpzOption
   return test::PyDict(entries);
 }
 
-test::Obj MetadataObj(int subject) {
+// Cameras of `subject` as stored in the npz (float32, as the real file); R of camera
+// `wrong_camera` 1e-2 off.
+test::Obj MetadataObj(int subject, int wrong_camera = -1) {
   std::vector<std::pair<test::Obj, test::Obj>> cams;
   const auto calibs = test::SyntheticH36mCalibs(subject);
   for (std::size_t c = 0; c < 4; ++c) {
     const H36mCalib& k = calibs[c];
-    const Eigen::Matrix3d R = k.R();
+    const Eigen::Matrix3d R = static_cast<int>(c) == wrong_camera ? test::WrongRotation(k.R()) : k.R();
     const Eigen::Vector3d T = -R * k.center_mm / 1000.0;
     const Eigen::Matrix3d Rt = R.transpose();  // column-major storage of R^T = row-major values of R
     const std::vector<double> r(Rt.data(), Rt.data() + 9);
@@ -119,7 +123,7 @@ fs::path WriteNpz(const fs::path& dir, const NpzOptions& options = {}, bool with
       {test::PyStr("S5"), test::PyDict({{test::PyStr("Walking"), ActionObj(5, {1, 2}, options)}})},
   });
   const test::Obj metadata = test::PyDict({
-      {test::PyStr("S8"), MetadataObj(8)},
+      {test::PyStr("S8"), MetadataObj(8, options.wrong_rotation_camera)},
       {test::PyStr("S5"), MetadataObj(5)},
       {test::PyStr("left_side"), test::PyList({test::PyInt(1), test::PyInt(3)})},
   });
@@ -168,6 +172,10 @@ TEST(H3wbReader, NpzRoundTrip) {
     EXPECT_EQ(person.row(3).minCoeff(), 1.0);
   }
   EXPECT_EQ(sequences[1].name, "h3wb/S8/Eating");
+  // The float32 rotations are re-orthonormalised and counted once per subject (first sequence).
+  for (const Camera& camera : seq.cameras) EXPECT_LT(test::OrthonormalityError(camera.R), 1e-12);
+  test::ExpectOneWarning(seq.warnings, (dir.path() / "h3wb_train.npz").string() + "[metadata.npy]", test::kRotationsFixed, 4);
+  EXPECT_TRUE(sequences[1].warnings.empty());
 
   // 2D from pose_2d; it matches the projection of the GT with the reader's cameras.
   const Detections detections = ReadH3wbDetections(Request(dir.path(), {{"actions", "Directions"}}));
@@ -201,6 +209,13 @@ TEST(H3wbReader, NpzRoundTrip) {
   EXPECT_EQ(s5[0].frames[0].id, "h3wb_S5_Walking_000001");
   EXPECT_EQ(ReadH3wb(Request(dir.path(), {{"every", "2"}}))[0].frames.size(), 2u);
   EXPECT_EQ(ReadH3wb(Request(dir.path(), {{"distortion", "opencv"}}))[0].cameras[0].model, DistortionModel::kOpenCV);
+}
+
+TEST(H3wbReader, NpzRotationBeyondTheToleranceNamesFileAndCamera) {
+  test::TempDir dir;
+  WriteNpz(dir.path(), {.wrong_rotation_camera = 3});
+  EXPECT_THAT(test::InputErrorOf([&] { ReadH3wb(Request(dir.path())); }),
+              HasSubstr("h3wb_train.npz[metadata.npy]: key 'S8'['60457274'].R: R is not a rotation (max |R^T R - I| = 0.0100"));
 }
 
 TEST(H3wbReader, NpzGlobalUnits) {

@@ -5,9 +5,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 
 #include "core/errors.h"
 #include "tests/datasets/readers_h36m_ego_test_util.h"
+#include "tests/datasets/tolerance_test_util.h"
 #include "tests/test_data.h"
 
 namespace rpt {
@@ -194,6 +196,62 @@ TEST(Human36mCameras, MalformedMetadataXml) {
   EXPECT_THAT(msg, HasSubstr("singular"));
 }
 
+// An mmpose-style cameras.pkl of subject S1 (R camera->world, T centre in metres); `R_of(c)`
+// gives the stored R of camera c.
+test::ByteVec MmposeCamerasPickle(const std::function<Eigen::Matrix3d(std::size_t)>& R_of) {
+  std::vector<std::pair<test::Obj, test::Obj>> entries;
+  const auto calibs = test::SyntheticH36mCalibs(1);
+  for (std::size_t c = 0; c < 4; ++c) {
+    const H36mCalib& k = calibs[c];
+    const Eigen::Matrix3d R = R_of(c);
+    std::vector<double> r;
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) r.push_back(R(i, j));
+    }
+    const Eigen::Vector3d T = k.center_mm / 1000.0;
+    entries.emplace_back(test::PyTuple({test::PyStr("S1"), test::PyStr(Human36mCameraIds()[c])}),
+                         test::PyDict({{test::PyStr("R"), test::PyArray({3, 3}, r)},
+                                       {test::PyStr("T"), test::PyArray({3, 1}, {T.x(), T.y(), T.z()})},
+                                       {test::PyStr("f"), test::PyArray({2, 1}, {k.fx, k.fy})},
+                                       {test::PyStr("c"), test::PyArray({2, 1}, {k.cx, k.cy})},
+                                       {test::PyStr("k"), test::PyArray({3, 1}, {k.k1, k.k2, k.k3})},
+                                       {test::PyStr("p"), test::PyArray({2, 1}, {k.p1, k.p2})}}));
+  }
+  return test::PickleOf(test::PyDict(entries));
+}
+
+TEST(Human36mCameras, PickleRotationsWithSixDigitsAreReorthonormalisedAndCounted) {
+  test::TempDir dir;
+  const fs::path pkl = dir.path() / "cameras.pkl";
+  const auto calibs = test::SyntheticH36mCalibs(1);
+  test::WriteBytes(pkl, MmposeCamerasPickle([&](std::size_t c) { return test::RoundedRotation(calibs[c].R().transpose()); }));
+  InputWarnings warnings;
+  const auto cameras = ReadHuman36mCameras(pkl, "S1", DistortionModel::kH36M, &warnings);
+  ASSERT_EQ(cameras.size(), 4u);
+  for (std::size_t c = 0; c < 4; ++c) {
+    EXPECT_LT(test::OrthonormalityError(cameras[c].R), 1e-12);
+    EXPECT_LT((cameras[c].R - calibs[c].R()).cwiseAbs().maxCoeff(), 1e-5);
+  }
+  test::ExpectOneWarning(warnings, pkl.string(), test::kRotationsFixed, 4);
+  // Stored exactly: round-off, nothing to report.
+  test::WriteBytes(pkl, MmposeCamerasPickle([&](std::size_t c) { return Eigen::Matrix3d(calibs[c].R().transpose()); }));
+  InputWarnings none;
+  ReadHuman36mCameras(pkl, "S1", DistortionModel::kH36M, &none);
+  EXPECT_TRUE(none.empty());
+}
+
+TEST(Human36mCameras, PickleRotationBeyondTheToleranceNamesFileAndCamera) {
+  test::TempDir dir;
+  const fs::path pkl = dir.path() / "cameras.pkl";
+  const auto calibs = test::SyntheticH36mCalibs(1);
+  test::WriteBytes(pkl, MmposeCamerasPickle([&](std::size_t c) {
+                     const Eigen::Matrix3d R = calibs[c].R().transpose();
+                     return c == 2 ? test::WrongRotation(R) : R;
+                   }));
+  EXPECT_THAT(InputErrorOf([&] { ReadHuman36mCameras(pkl, "S1"); }),
+              HasSubstr(pkl.string() + ": key ('S1', '58860488').R: R is not a rotation (max |R^T R - I| = 0.010025"));
+}
+
 // ---------------------------------------------------------------------------------------
 // annot.h5
 
@@ -340,13 +398,16 @@ struct LabelRow {
   int subject_idx, action_idx, frame_idx;
 };
 
+// The labels npy; R is stored as float32 (as the real file), camera `wrong_camera` of every
+// subject with a rotation 1e-2 off.
 test::ByteVec LabelsNpy(const std::vector<std::string>& subjects, const std::vector<std::string>& actions,
-                        const std::vector<LabelRow>& rows, double nan_at_row = -1) {
+                        const std::vector<LabelRow>& rows, double nan_at_row = -1, int wrong_camera = -1) {
   test::ByteVec cams;
   for (const std::string& s : subjects) {
     const int number = std::stoi(s.substr(1));
+    int camera = 0;
     for (const H36mCalib& k : test::SyntheticH36mCalibs(number)) {
-      const Eigen::Matrix3d R = k.R();
+      const Eigen::Matrix3d R = camera++ == wrong_camera ? test::WrongRotation(k.R()) : k.R();
       const Eigen::Vector3d t = -R * k.center_mm;
       for (int r = 0; r < 3; ++r) {
         for (int c = 0; c < 3; ++c) test::AppendAs(cams, "f4", R(r, c));
@@ -426,6 +487,11 @@ TEST(Human36mReader, LearnableTriangulationLabelsRoundTrip) {
   }
   EXPECT_EQ(sequences[1].name, "human36m/S9/Eating-2");
   EXPECT_EQ(sequences[1].frames.size(), 1u);
+  // The float32 rotations are re-orthonormalised and counted once for the subject's cameras (on
+  // its first sequence), not once per sequence.
+  for (const Camera& camera : seq.cameras) EXPECT_LT(test::OrthonormalityError(camera.R), 1e-12);
+  test::ExpectOneWarning(seq.warnings, labels.string(), test::kRotationsFixed, 4);
+  EXPECT_TRUE(sequences[1].warnings.empty());
 
   // The same cameras through ReadHuman36mCameras, and an explicit cameras file.
   const auto npy_cameras = ReadHuman36mCameras(labels, "S1");
@@ -453,6 +519,10 @@ TEST(Human36mReader, LearnableTriangulationLabelsMalformed) {
   const test::ByteVec full = LabelsNpy({"S9"}, {"Directions-1"}, {{0, 0, 1}});
   test::WriteBytes(labels, test::ByteVec(full.begin(), full.begin() + static_cast<std::ptrdiff_t>(full.size() / 2)));
   EXPECT_THAT(InputErrorOf([&] { ReadHuman36m(Request(dir.path(), {{"subjects", "S9"}})); }), HasSubstr("labels-GTbboxes.npy"));
+  // A camera rotation 1e-2 off is a wrong matrix, not float32 rounding.
+  test::WriteBytes(labels, LabelsNpy({"S9"}, {"Directions-1"}, {{0, 0, 1}}, -1, 1));
+  EXPECT_THAT(InputErrorOf([&] { ReadHuman36m(Request(dir.path(), {{"subjects", "S9"}})); }),
+              HasSubstr("labels-GTbboxes.npy: key 'cameras' [S9, 55011271]: R is not a rotation (max |R^T R - I| = 0.0100"));
   // Nothing at all under root.
   fs::remove(labels);
   EXPECT_THAT(InputErrorOf([&] { ReadHuman36m(Request(dir.path(), {{"subjects", "S9"}})); }), HasSubstr("no Human3.6M labels found"));

@@ -222,15 +222,16 @@ TEST(PanopticReader, DefaultSequencesAreReportedMissing) {
 // ---------------------------------------------------------------------------------------
 // Files written here
 
-std::string Num(double v) {
+std::string Num(double v, int digits = 17) {
   char buffer[40];
-  std::snprintf(buffer, sizeof(buffer), "%.17g", v);
+  std::snprintf(buffer, sizeof(buffer), "%.*g", digits, v);
   return buffer;
 }
 
-// A Panoptic camera at `center_cm` (Panoptic world: y down) looking at (0, -100, 0) cm.
+// A Panoptic camera at `center_cm` (Panoptic world: y down) looking at (0, -100, 0) cm; R printed
+// with `r_digits` significant digits.
 std::string PanopticCameraJson(const std::string& name, const std::string& type, const Eigen::Vector3d& center_cm,
-                               const std::string& override_R = "") {
+                               const std::string& override_R = "", int r_digits = 17) {
   const Eigen::Vector3d z = (Eigen::Vector3d(0, -100, 0) - center_cm).normalized();
   const Eigen::Vector3d x = Eigen::Vector3d(0, 1, 0).cross(z).normalized();  // world "down" is +y
   const Eigen::Vector3d y = z.cross(x);
@@ -239,7 +240,8 @@ std::string PanopticCameraJson(const std::string& name, const std::string& type,
   const Eigen::Vector3d t = -R * center_cm;
   std::string r_json = "[";
   for (int r = 0; r < 3; ++r)
-    r_json += std::string(r ? "," : "") + "[" + Num(R(r, 0)) + "," + Num(R(r, 1)) + "," + Num(R(r, 2)) + "]";
+    r_json += std::string(r ? "," : "") + "[" + Num(R(r, 0), r_digits) + "," + Num(R(r, 1), r_digits) + "," +
+              Num(R(r, 2), r_digits) + "]";
   r_json += "]";
   if (!override_R.empty()) r_json = override_R;
   const bool hd = type == "hd";
@@ -252,11 +254,11 @@ std::string PanopticCameraJson(const std::string& name, const std::string& type,
   return s;
 }
 
-std::string CalibrationJson(const std::string& first_R = "") {
+std::string CalibrationJson(const std::string& first_R = "", int r_digits = 17) {
   return "{\"calibDataSource\": \"test\", \"cameras\": [" +
-         PanopticCameraJson("00_00", "hd", Eigen::Vector3d(0, -200, -400), first_R) + ", " +
-         PanopticCameraJson("01_01", "vga", Eigen::Vector3d(400, -150, 0)) + ", " +
-         PanopticCameraJson("00_01", "hd", Eigen::Vector3d(-400, -250, 10)) + "]}";
+         PanopticCameraJson("00_00", "hd", Eigen::Vector3d(0, -200, -400), first_R, r_digits) + ", " +
+         PanopticCameraJson("01_01", "vga", Eigen::Vector3d(400, -150, 0), "", r_digits) + ", " +
+         PanopticCameraJson("00_01", "hd", Eigen::Vector3d(-400, -250, 10), "", r_digits) + "]}";
 }
 
 // joints19 text: joint j at (10 + j, -150 + 5 j, 20) cm with confidence c(j).
@@ -376,13 +378,13 @@ TEST(PanopticReader, MalformedInputNamesFileAndPlace) {
   EXPECT_THAT(test::InputErrorOf([&] { ReadPanoptic(Request(dir.path(), base)); }),
               HasSubstr("body3DScene_00000013.json: /bodies: expected an array"));
 
-  // Cameras: missing R, non-orthonormal R, missing file.
+  // Cameras: missing R, an R 0.44 away from a rotation (beyond the 1e-3 tolerance), missing file.
   WriteSequence(dir.path(), CalibrationJson("none"));
   EXPECT_THAT(test::InputErrorOf([&] { ReadPanoptic(Request(dir.path(), base)); }),
               HasSubstr("calibration_seqA.json: /cameras/0/R: missing"));
   WriteSequence(dir.path(), CalibrationJson("[[1, 0, 0], [0, 1.2, 0], [0, 0, 1]]"));
   EXPECT_THAT(test::InputErrorOf([&] { ReadPanoptic(Request(dir.path(), base)); }),
-              HasSubstr("calibration_seqA.json: /cameras/0: camera '00_00' (opencv): R is not orthonormal"));
+              HasSubstr("calibration_seqA.json: /cameras/0/R (camera '00_00'): R is not a rotation (max |R^T R - I| = 0.44"));
   std::filesystem::remove(dir.path() / "seqA" / "calibration_seqA.json");
   EXPECT_THAT(test::InputErrorOf([&] { ReadPanoptic(Request(dir.path(), base)); }),
               HasSubstr("calibration_seqA.json: file not found"));
@@ -392,6 +394,33 @@ TEST(PanopticReader, MalformedInputNamesFileAndPlace) {
   std::filesystem::remove_all(poses);
   EXPECT_THAT(test::InputErrorOf([&] { ReadPanoptic(Request(dir.path(), base)); }),
               HasSubstr("hdPose3d_stage1_coco19: annotation folder not found"));
+}
+
+TEST(PanopticReader, RotationsWithSixDigitsAreReorthonormalisedAndCounted) {
+  test::TempDir dir;
+  WriteSequence(dir.path(), CalibrationJson("", 6));
+  const std::map<std::string, std::string> params = {{"sequences", "seqA"}, {"cameras", "00_00,00_01"}, {"every", "1"}};
+  const Sequence sequence = ReadPanoptic(Request(dir.path(), params))[0];
+  ASSERT_EQ(sequence.cameras.size(), 2u);
+  for (const Camera& camera : sequence.cameras) {
+    EXPECT_LT((camera.R.transpose() * camera.R - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff(), 1e-12);
+  }
+  // Only the two selected cameras are read (the VGA camera's R is not used, so not counted).
+  ASSERT_EQ(sequence.warnings.items().size(), 1u);
+  const InputWarning& w = sequence.warnings.items()[0];
+  EXPECT_EQ(w.source, (dir.path() / "seqA" / "calibration_seqA.json").string());
+  EXPECT_EQ(w.what, "rotations re-orthonormalised");
+  EXPECT_EQ(w.count, 2);
+  EXPECT_GT(w.worst, 1e-9);
+  EXPECT_LT(w.worst, 1e-5);
+
+  WriteSequence(dir.path());  // 17 digits: exact to round-off, nothing to report
+  EXPECT_TRUE(ReadPanoptic(Request(dir.path(), params))[0].warnings.empty());
+  // 1e-2 off is a wrong matrix, not rounding.
+  WriteSequence(dir.path(), CalibrationJson("[[1.005, 0, 0], [0, 1.005, 0], [0, 0, 1.005]]"));
+  EXPECT_THAT(test::InputErrorOf([&] { ReadPanoptic(Request(dir.path(), params)); }),
+              HasSubstr((dir.path() / "seqA" / "calibration_seqA.json").string() +
+                        ": /cameras/0/R (camera '00_00'): R is not a rotation (max |R^T R - I| = 0.010025"));
 }
 
 TEST(PanopticReader, BadParamsAreConfigErrors) {

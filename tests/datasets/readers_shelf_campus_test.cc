@@ -56,6 +56,13 @@ TEST(ShelfReader, FixtureCamerasAndGroundTruth) {
   const Sequence& shelf = sequences[0];
   EXPECT_EQ(shelf.name, "shelf");
   ASSERT_EQ(shelf.cameras.size(), 5u);
+  // calibration_shelf.json stores R with 6 decimals: one warning line for its 5 corrected rotations.
+  ASSERT_EQ(shelf.warnings.items().size(), 1u);
+  EXPECT_EQ(shelf.warnings.items()[0].Line().rfind(test::SharedData("shelf/calibration_shelf.json").string() +
+                                                       ": 5 rotations re-orthonormalised (max |R^T R - I| = 1.0",
+                                                   0),
+            0u)
+      << shelf.warnings.items()[0].Line();
   for (size_t c = 0; c < 5; ++c) {
     EXPECT_EQ(shelf.cameras[c].name, std::to_string(c));
     EXPECT_EQ(shelf.cameras[c].width, 1032);
@@ -202,14 +209,15 @@ TEST(CampusReader, EmptyDetectionCacheGivesFramesWithoutPersons) {
 // ---------------------------------------------------------------------------------------
 // Files written here
 
-std::string Num(double v) {
+std::string Num(double v, int digits = 17) {
   char buffer[40];
-  std::snprintf(buffer, sizeof(buffer), "%.17g", v);
+  std::snprintf(buffer, sizeof(buffer), "%.*g", digits, v);
   return buffer;
 }
 
-// A 3-camera VoxelPose calibration around the origin, one with distortion.
-std::string CalibrationJson(bool first_camera_has_R = true) {
+// A 3-camera VoxelPose calibration around the origin, one with distortion; R printed with
+// `r_digits` significant digits.
+std::string CalibrationJson(bool first_camera_has_R = true, int r_digits = 17) {
   std::string text = "{";
   for (int c = 0; c < 3; ++c) {
     const double yaw = 2.0 * M_PI * c / 3.0;
@@ -224,7 +232,8 @@ std::string CalibrationJson(bool first_camera_has_R = true) {
     if (c != 0 || first_camera_has_R) {
       text += "\"R\": [";
       for (int r = 0; r < 3; ++r)
-        text += std::string(r ? "," : "") + "[" + Num(R(r, 0)) + "," + Num(R(r, 1)) + "," + Num(R(r, 2)) + "]";
+        text += std::string(r ? "," : "") + "[" + Num(R(r, 0), r_digits) + "," + Num(R(r, 1), r_digits) + "," +
+                Num(R(r, 2), r_digits) + "]";
       text += "], ";
     }
     const Eigen::Vector3d mm = center * 1000.0;
@@ -306,6 +315,22 @@ TEST(ShelfReader, GeneratedFilesGroundTruth) {
     EXPECT_GT(uv.x(), 0);
     EXPECT_LT(uv.x(), 1032);
   }
+}
+
+TEST(ShelfReader, RotationsWithSixDigitsAreCountedOnTheSequence) {
+  test::TempDir dir;
+  WriteShelfRoot(dir, ActorsMat(false), CalibrationJson(true, 6));
+  const Sequence shelf = ReadShelf(Request("shelf", dir.path(), {{"frames", "0-1"}}))[0];
+  for (const Camera& camera : shelf.cameras) {
+    EXPECT_LT((camera.R.transpose() * camera.R - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff(), 1e-12);
+  }
+  ASSERT_EQ(shelf.warnings.items().size(), 1u);
+  EXPECT_EQ(shelf.warnings.items()[0].source, (dir.path() / "calibration_shelf.json").string());
+  EXPECT_EQ(shelf.warnings.items()[0].what, "rotations re-orthonormalised");
+  EXPECT_EQ(shelf.warnings.items()[0].count, 3);
+  EXPECT_EQ(ReadShelf(Request("shelf", dir.path(), {{"frames", "0"}}))[0].warnings.total(), 3);
+  WriteShelfRoot(dir, ActorsMat(false));
+  EXPECT_TRUE(ReadShelf(Request("shelf", dir.path(), {{"frames", "0"}}))[0].warnings.empty()) << "17 digits: round-off";
 }
 
 TEST(ShelfReader, ActorSelectionOnGeneratedFiles) {

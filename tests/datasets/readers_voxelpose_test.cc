@@ -17,6 +17,7 @@
 #include "datasets/readers/voxelpose_calibration.h"
 #include "datasets/readers/voxelpose_detections.h"
 #include "tests/datasets/io_test_util.h"
+#include "tests/datasets/tolerance_test_util.h"
 #include "tests/error_message.h"
 #include "tests/test_data.h"
 
@@ -129,17 +130,32 @@ TEST(VoxelPoseCalibration, DistortionCentreConventionAndNumericOrder) {
   }
 }
 
-TEST(VoxelPoseCalibration, RoundedRotationIsReorthonormalised) {
+TEST(VoxelPoseCalibration, RoundedRotationIsReorthonormalisedAndCounted) {
   test::TempDir dir;
-  Eigen::Matrix3d rounded = SomeRotation(0.4);
-  for (int i = 0; i < 9; ++i) rounded.data()[i] = std::round(rounded.data()[i] * 1e5) / 1e5;  // 5 decimals
-  ASSERT_GT((rounded.transpose() * rounded - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff(), 1e-6);
-  const auto path =
-      WriteText(dir.path() / "c.json", "{\"0\": " + VoxelPoseCamera(rounded, Eigen::Vector3d(0, 0, 0), "") + "}");
-  const std::vector<Camera> cameras = ReadVoxelPoseCalibration(path, 360, 288);
-  ASSERT_EQ(cameras.size(), 1u);
-  EXPECT_EQ(cameras[0].Validate(), "");
-  EXPECT_LT((cameras[0].R - rounded).cwiseAbs().maxCoeff(), 1e-5);
+  const Eigen::Matrix3d rounded = test::RoundedRotation(SomeRotation(0.4));  // 6 significant digits
+  ASSERT_GT(test::OrthonormalityError(rounded), 1e-7);
+  const auto path = WriteText(dir.path() / "c.json", "{\"0\": " + VoxelPoseCamera(rounded, Eigen::Vector3d(0, 0, 0), "") +
+                                                         ", \"1\": " + VoxelPoseCamera(rounded, Eigen::Vector3d(1, 0, 0), "") + "}");
+  InputWarnings warnings;
+  const std::vector<Camera> cameras = ReadVoxelPoseCalibration(path, 360, 288, &warnings);
+  ASSERT_EQ(cameras.size(), 2u);
+  for (const Camera& camera : cameras) {
+    EXPECT_EQ(camera.Validate(), "");
+    EXPECT_LT(test::OrthonormalityError(camera.R), 1e-12);
+    EXPECT_LT((camera.R - rounded).cwiseAbs().maxCoeff(), 1e-5);
+  }
+  test::ExpectOneWarning(warnings, path.string(), test::kRotationsFixed, 2);
+  EXPECT_NO_THROW(ReadVoxelPoseCalibration(path, 360, 288)) << "no sink: corrected all the same";
+}
+
+TEST(VoxelPoseCalibration, RotationBeyondTheToleranceNamesFileAndCamera) {
+  test::TempDir dir;
+  const auto path = WriteText(dir.path() / "c.json",
+                              "{\"0\": " + VoxelPoseCamera(SomeRotation(0.4), Eigen::Vector3d(0, 0, 0), "") + ", \"1\": " +
+                                  VoxelPoseCamera(test::WrongRotation(SomeRotation(0.4)), Eigen::Vector3d(0, 0, 0), "") + "}");
+  InputWarnings warnings;
+  EXPECT_THAT(test::InputErrorOf([&] { ReadVoxelPoseCalibration(path, 360, 288, &warnings); }),
+              HasSubstr(path.string() + ": /1/R: R is not a rotation (max |R^T R - I| = 0.010025"));
 }
 
 TEST(VoxelPoseCalibration, MalformedFilesNameFileAndPlace) {
@@ -159,14 +175,14 @@ TEST(VoxelPoseCalibration, MalformedFilesNameFileAndPlace) {
       WriteText(dir.path() / "scaled.json",
                 "{\"0\": " + VoxelPoseCamera(1.1 * SomeRotation(0.3), Eigen::Vector3d(1, 2, 3), "") + "}");
   EXPECT_THAT(test::InputErrorOf([&] { ReadVoxelPoseCalibration(scaled, 1032, 776); }),
-              HasSubstr(scaled.string() + ": /0/R: not a rotation matrix (max |R^T R - I| = 0.21"));
+              HasSubstr(scaled.string() + ": /0/R: R is not a rotation (max |R^T R - I| = 0.21"));
 
   Eigen::Matrix3d mirror = SomeRotation(0.3);
   mirror.row(2) *= -1;
   const auto reflection =
       WriteText(dir.path() / "mirror.json", "{\"0\": " + VoxelPoseCamera(mirror, Eigen::Vector3d(1, 2, 3), "") + "}");
   EXPECT_THAT(test::InputErrorOf([&] { ReadVoxelPoseCalibration(reflection, 1032, 776); }),
-              HasSubstr(reflection.string() + ": /0/R: a reflection"));
+              HasSubstr(reflection.string() + ": /0/R: R is a reflection"));
 
   const auto short_k = WriteText(
       dir.path() / "k.json",
@@ -186,9 +202,13 @@ TEST(VoxelPoseCalibration, MalformedFilesNameFileAndPlace) {
 TEST(VoxelPoseCalibration, ShelfAndCampusFixtures) {
   RPT_REQUIRE_SHARED_DATA("shelf/calibration_shelf.json");
   RPT_REQUIRE_SHARED_DATA("campus/calibration_campus.json");
+  InputWarnings shelf_warnings;
   const std::vector<Camera> shelf =
-      ReadVoxelPoseCalibration(test::SharedData("shelf/calibration_shelf.json"), 1032, 776);
+      ReadVoxelPoseCalibration(test::SharedData("shelf/calibration_shelf.json"), 1032, 776, &shelf_warnings);
   ASSERT_EQ(shelf.size(), 5u);
+  // Its rotations have 6 decimals (max |R^T R - I| ~1.1e-6): all five are corrected and counted.
+  test::ExpectOneWarning(shelf_warnings, test::SharedData("shelf/calibration_shelf.json").string(),
+                         test::kRotationsFixed, 5);
   for (size_t c = 0; c < shelf.size(); ++c) {
     EXPECT_EQ(shelf[c].name, std::to_string(c));
     EXPECT_EQ(shelf[c].model, DistortionModel::kNone);
@@ -201,9 +221,11 @@ TEST(VoxelPoseCalibration, ShelfAndCampusFixtures) {
   EXPECT_NEAR(shelf[0].t.y(), 0.9720, 1e-4);
   EXPECT_NEAR(shelf[0].t.z(), 2.6245, 1e-4);
 
+  InputWarnings campus_warnings;
   const std::vector<Camera> campus =
-      ReadVoxelPoseCalibration(test::SharedData("campus/calibration_campus.json"), 360, 288);
+      ReadVoxelPoseCalibration(test::SharedData("campus/calibration_campus.json"), 360, 288, &campus_warnings);
   ASSERT_EQ(campus.size(), 3u);
+  EXPECT_TRUE(campus_warnings.empty()) << "exact to round-off: nothing to report";
   EXPECT_EQ(campus[2].name, "2");
 }
 
@@ -268,7 +290,7 @@ Sequence TwoCameraSequence() {
 TEST(VoxelPoseDetections, KeysMapToFramesAndCameras) {
   test::TempDir dir;
   const auto path = dir.Write("pred.pkl", CachePickle({
-                                              {"0_5", {100, 200}, 1.25},  // score above 1 is clamped
+                                              {"0_5", {100, 200}, 1.25},  // above 1: clamped, counted
                                               {"1_5", {}},                // nothing detected
                                               {"3_5", {10}},              // camera not in the sequence
                                               {"0_7", {10}},              // frame not in the sequence
@@ -294,6 +316,34 @@ TEST(VoxelPoseDetections, KeysMapToFramesAndCameras) {
   EXPECT_EQ(f300.frame_id, "shelf_000300");
   EXPECT_EQ(f300.cameras, (std::vector<std::string>{"1"}));
   EXPECT_DOUBLE_EQ(f300.views[0].Person(0)(2, 0), 0.4);
+  // Two detections of key 0_5 with score 1.25; keys outside the sequence are not read.
+  test::ExpectOneWarning(detections.warnings, path.string(), test::kScoresClamped, 2);
+}
+
+TEST(VoxelPoseDetections, ScoresSlightlyAboveOneAreClampedAndCounted) {
+  test::TempDir dir;
+  const auto path = dir.Write("pred.pkl", CachePickle({{"0_5", {100}, 1.008}, {"1_5", {100}, 1.018}, {"0_6", {7}, 1.0}}));
+  const Detections detections = ReadVoxelPoseDetections(path, TwoCameraSequence(), "shelf");
+  ASSERT_EQ(detections.frames.size(), 2u);
+  EXPECT_EQ(detections.frames[0].views[0].Person(0)(2, 0), 1.0);
+  EXPECT_EQ(detections.frames[0].views[1].Person(0)(2, 0), 1.0);
+  EXPECT_EQ(detections.frames[1].views[0].Person(0)(2, 0), 1.0);
+  test::ExpectOneWarning(detections.warnings, path.string(), test::kScoresClamped, 2);
+  EXPECT_DOUBLE_EQ(detections.warnings.items()[0].worst, 1.018);
+}
+
+TEST(VoxelPoseDetections, NegativeLargeOrNanScoresNameFileAndKey) {
+  test::TempDir dir;
+  const Sequence sequence = TwoCameraSequence();
+  for (const double score : {1.6, -0.1}) {
+    const auto path = dir.Write("bad.pkl", CachePickle({{"0_5", {100}, 0.9}, {"1_6", {100}, score}}));
+    EXPECT_THAT(test::InputErrorOf([&] { ReadVoxelPoseDetections(path, sequence, "shelf"); }),
+                HasSubstr(path.string() + ": key '1_6'[0].pred: row 0: score " + (score > 0 ? "1.6" : "-0.1") +
+                          " outside [0, 1]"));
+  }
+  const auto nan = dir.Write("nan.pkl", CachePickle({{"1_6", {100}, std::nan("")}}));
+  EXPECT_THAT(test::InputErrorOf([&] { ReadVoxelPoseDetections(nan, sequence, "shelf"); }),
+              HasSubstr(nan.string() + ": key '1_6'[0].pred: contains NaN or infinity"));
 }
 
 TEST(VoxelPoseDetections, MalformedCacheNamesFileAndKey) {

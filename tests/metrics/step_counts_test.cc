@@ -28,8 +28,8 @@ TEST(StepCountAccumulator, MeansPerFrameAndMedianNoiseOverFramesWithAnEstimate) 
   EXPECT_DOUBLE_EQ(s.count_per_frame[static_cast<int>(Step::kUndistort)], 9.0);
   EXPECT_DOUBLE_EQ(s.count_per_frame[static_cast<int>(Step::kMerge)], 2.25);
   EXPECT_DOUBLE_EQ(s.count_per_frame[static_cast<int>(Step::kTrack)], 0.0);
-  EXPECT_EQ(kCounterNames[5], "filled_joints");
-  EXPECT_DOUBLE_EQ(s.counter_per_frame[5], 1.5);
+  EXPECT_EQ(kCounterNames[7], "filled_joints");
+  EXPECT_DOUBLE_EQ(s.counter_per_frame[7], 1.5);
   EXPECT_EQ(s.noise_frames, 3) << "frames with noise_m = 0 (fixed scale) have no estimate";
   EXPECT_DOUBLE_EQ(s.noise_m_median, 0.020);
 }
@@ -47,10 +47,13 @@ TEST(StepCountAccumulator, CountersFollowTheirNames) {
   stats.small_groups = 2;
   stats.conflicting_proposals = 3;
   stats.mirrored_groups = 4;
-  stats.replaced_joints = 5;
-  stats.filled_joints = 6;
-  stats.new_tracks = 7;
-  stats.coasting_tracks = 8;
+  stats.unsupported_persons = 5;
+  stats.single_view_persons = 6;
+  stats.replaced_joints = 7;
+  stats.filled_joints = 8;
+  stats.new_tracks = 9;
+  stats.coasting_tracks = 10;
+  stats.bone_length_corrections = 11;
   const auto counters = Counters(stats);
   for (int c = 0; c < kNumCounters; ++c) EXPECT_EQ(counters[c], c + 1) << kCounterNames[c];
 }

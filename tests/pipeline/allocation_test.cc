@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// A warm Triangulator performs no heap allocation per frame (counting operator new).
+// A warm Triangulator performs no heap allocation per frame (counting operator new), also with
+// the optional temporal steps (bone_lengths, causal smoothing) enabled.
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -39,7 +40,7 @@ long CountAllocations(Triangulator& tri, const std::vector<std::vector<Poses2D>>
   return g_allocations.load();
 }
 
-void CheckNoAllocationOnceWarm(bool whole_body, int cameras, int people) {
+void CheckNoAllocationOnceWarm(bool whole_body, int cameras, int people, bool temporal = false) {
   synthetic::SceneOptions options;
   options.rig.num_cameras = cameras;
   options.num_people = people;
@@ -54,6 +55,10 @@ void CheckNoAllocationOnceWarm(bool whole_body, int cameras, int people) {
   TriangulatorOptions tri_options;
   tri_options.room_check.center_m = scene.room_center_m;
   tri_options.room_check.size_m = scene.room_size_m;
+  if (temporal) {
+    tri_options.bone_lengths.enabled = true;
+    tri_options.smooth.mode = SmoothMode::kCausal;
+  }
   Triangulator tri(scene.cameras, scene.joint_names, tri_options);
   Poses3D persons;
   FrameStats stats;
@@ -66,6 +71,10 @@ void CheckNoAllocationOnceWarm(bool whole_body, int cameras, int people) {
 TEST(Allocation, WarmTriangulatorDoesNotAllocateBody) { CheckNoAllocationOnceWarm(false, 5, 4); }
 TEST(Allocation, WarmTriangulatorDoesNotAllocateWholeBody) { CheckNoAllocationOnceWarm(true, 5, 2); }
 TEST(Allocation, WarmTriangulatorDoesNotAllocateManyCameras) { CheckNoAllocationOnceWarm(false, 12, 8); }
+TEST(Allocation, WarmTriangulatorWithTemporalStepsDoesNotAllocateBody) { CheckNoAllocationOnceWarm(false, 5, 4, true); }
+TEST(Allocation, WarmTriangulatorWithTemporalStepsDoesNotAllocateWholeBody) {
+  CheckNoAllocationOnceWarm(true, 5, 2, true);
+}
 
 }  // namespace
 }  // namespace rpt
