@@ -1,13 +1,14 @@
 // SPDX-License-Identifier: MIT
 #include "bench/bench_scenes.h"
 
+#include "datasets/synthetic/detector_options.h"
 #include "datasets/synthetic/synthetic_sequence.h"
 
 namespace rpt::bench {
 
 const std::vector<BenchScene>& StandardScenes() {
   static const std::vector<BenchScene> scenes = {
-      {"shelf-like", "5 cameras, 4 people, 17 joints, realistic noise and false positives", 5, 4, false, 300, 25},
+      {"shelf-like", "5 cameras, 4 people, 17 joints, pixel noise and false positives", 5, 4, false, 300, 25},
       {"whole-body", "5 cameras, 2 people, 133 joints", 5, 2, true, 200, 120},
       {"panoptic-like", "31 cameras, 8 people, 17 joints", 31, 8, false, 60, 1000},
       {"few-views", "3 cameras, 6 people, 17 joints", 3, 6, false, 300, 0},
@@ -26,7 +27,7 @@ std::vector<BenchScene> ScalingScenes() {
   return scenes;
 }
 
-Sequence MakeBenchSequence(const BenchScene& scene, uint64_t seed) {
+Sequence MakeBenchSequence(const BenchScene& scene, uint64_t seed, const std::string& detector) {
   synthetic::SceneOptions options;
   options.rig.num_cameras = scene.cameras;
   options.num_people = scene.people;
@@ -38,7 +39,7 @@ Sequence MakeBenchSequence(const BenchScene& scene, uint64_t seed) {
     options.rig.radius_m = 7.5;
   }
   const synthetic::Scene generated = synthetic::GenerateScene(options);
-  return synthetic::MakeSyntheticSequence(generated, synthetic::DetectorOptions::Realistic(), seed, scene.name);
+  return synthetic::MakeSyntheticSequence(generated, synthetic::DetectorProfile(detector), seed, scene.name);
 }
 
 }  // namespace rpt::bench

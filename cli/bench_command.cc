@@ -23,6 +23,7 @@
 #include "core/pipeline/triangulator.h"
 #include "datasets/detections.h"
 #include "datasets/readers/hdf5_cache.h"
+#include "datasets/synthetic/detector_options.h"
 #include "metrics/accumulator.h"
 #include "metrics/timing.h"
 
@@ -41,6 +42,7 @@ struct BenchArgs {
   int baseline_frames = 30;
   bool no_baseline = false;
   bool json = false;
+  std::string detector = "clean";
   ConfigArgs config;
 };
 
@@ -53,7 +55,7 @@ struct SceneResult {
 };
 
 SceneResult BenchScene(const bench::BenchScene& scene, const BenchArgs& args, const Config& config) {
-  const Sequence sequence = bench::MakeBenchSequence(scene);
+  const Sequence sequence = bench::MakeBenchSequence(scene, 1, args.detector);
   TriangulatorOptions options = config.triangulator;
   options.room_check.center_m = sequence.room.center_m;
   options.room_check.size_m = sequence.room.size_m;
@@ -94,7 +96,7 @@ SceneResult BenchScene(const bench::BenchScene& scene, const BenchArgs& args, co
 // Writes a detections cache of `frames` x 5 views (shelf-like detections, repeated) to a temporary
 // HDF5 file and times reading it back (median of 5 reads, file in the OS cache).
 void RunIoBench(const BenchArgs& args) {
-  const Sequence sequence = bench::MakeBenchSequence(bench::StandardScenes()[0]);
+  const Sequence sequence = bench::MakeBenchSequence(bench::StandardScenes()[0], 1, args.detector);
   Detections detections;
   detections.joints = sequence.detection_joints;
   long persons = 0;
@@ -242,6 +244,10 @@ void RegisterBenchCommand(CLI::App& app) {
   command->add_option("--repeat", args->repeat, "timed passes over the frames")->check(CLI::Range(1, 1000))->capture_default_str();
   command->add_option("--baseline-frames", args->baseline_frames, "frames for the baseline")->capture_default_str();
   command->add_flag("--no-baseline", args->no_baseline, "skip the baseline");
+  command->add_option("--detector", args->detector,
+                      "simulated detector profile of the scenes (clean: the workload of results/bench.md)")
+      ->check(CLI::IsMember(synthetic::DetectorProfileNames()))
+      ->capture_default_str();
   command->add_flag("--json", args->json, "print the results as JSON");
   command->add_flag("--io", args->io, "time reading an HDF5 detection cache instead (see --io-frames)");
   command->add_option("--io-frames", args->io_frames, "frames in the --io cache (5 views each)")

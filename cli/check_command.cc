@@ -7,7 +7,7 @@
 // File format:
 //   {"evaluations": [{"name": "...", "dataset": "synthetic", "root": "relative/to/this/file",
 //                     "params": {"cameras": "5"}, "set": {"merge.top_k": "0"},
-//                     "simulate": false, "simulate_perfect": false, "seed": 1,
+//                     "simulate": false, "detector": "realistic", "seed": 1,
 //                     "labels": "...", "detections": "...",
 //                     "min": {"recall500": 99.0}, "max": {"mpjpe_mm": 30.0, "frame_time_us_median": 2000}}]}
 #include <cmath>
@@ -60,7 +60,8 @@ int RunCheck(const CheckArgs& args) {
     input.labels = e.contains("labels") ? (base / e["labels"].get<std::string>()).string() : "";
     input.detections = e.contains("detections") ? (base / e["detections"].get<std::string>()).string() : "";
     input.simulate = e.value("simulate", false);
-    input.simulate_perfect = e.value("simulate_perfect", false);
+    input.simulate_perfect = e.value("simulate_perfect", false);  // deprecated: "detector": "perfect"
+    input.detector = e.value("detector", "");
     input.seed = e.value("seed", 1);
     if (e.contains("root")) input.root = (base / e["root"].get<std::string>()).string();
     const Json params = e.value("params", Json::object());  // named: items() must not outlive it

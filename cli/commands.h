@@ -14,6 +14,7 @@ void RegisterDatasetsCommand(CLI::App& app);
 void RegisterConvertCommand(CLI::App& app);
 void RegisterBenchCommand(CLI::App& app);
 void RegisterInspectCommand(CLI::App& app);
+void RegisterDetectorStatsCommand(CLI::App& app);
 // Commands whose success is not binary set *exit_code (check: 1 when a threshold failed).
 void RegisterCheckCommand(CLI::App& app, int* exit_code);
 void RegisterSweepCommand(CLI::App& app);

@@ -11,7 +11,9 @@
 #include "cli/results_writer.h"
 #include "cli/run_sequence.h"
 #include "core/errors.h"
+#include "core/text.h"
 #include "datasets/readers/synthetic_dataset.h"
+#include "datasets/synthetic/detector_options.h"
 
 namespace rpt::cli {
 namespace {
@@ -21,20 +23,26 @@ struct DemoOptions {
   int people = 4;
   int frames = 300;
   std::string joints = "body";
-  std::string noise = "realistic";
+  std::string detector;  // profile; empty = realistic
+  std::string noise;     // deprecated alias of detector
   std::string distortion = "none";
   uint64_t seed = 1;
   bool json = false;
   ConfigArgs config;
 };
 
-void RunDemo(const DemoOptions& o) {
+void RunDemo(DemoOptions o) {
+  const std::string from_noise = o.noise == "none" ? "perfect" : o.noise;
+  if (!o.noise.empty() && !o.detector.empty() && from_noise != o.detector) {
+    throw ConfigError("--noise " + o.noise + " (deprecated) contradicts --detector " + o.detector);
+  }
+  if (o.detector.empty()) o.detector = o.noise.empty() ? "realistic" : from_noise;
   // The demo is the built-in synthetic dataset with the demo's options as its parameters.
   DatasetRequest request;
   request.dataset = "synthetic";
   request.params = {{"cameras", std::to_string(o.cameras)}, {"people", std::to_string(o.people)},
                     {"frames", std::to_string(o.frames)},   {"joints", o.joints},
-                    {"noise", o.noise},                     {"distortion", o.distortion},
+                    {"noise", o.detector},                  {"distortion", o.distortion},
                     {"seed", std::to_string(o.seed)}};
   std::vector<Sequence> sequences = ReadSynthetic(request);
   sequences.front().name = "demo";
@@ -52,7 +60,7 @@ void RunDemo(const DemoOptions& o) {
     j["people"] = o.people;
     j["joints"] = o.joints;
     j["output_joints"] = run.sequences[0].output_joints.size();
-    j["noise"] = o.noise;
+    j["detector"] = o.detector;
     j["distortion"] = o.distortion;
     j["seed"] = o.seed;
     j["persons_present"] = run.gt_persons;
@@ -63,7 +71,7 @@ void RunDemo(const DemoOptions& o) {
     return;
   }
   std::printf("rpt demo: %d cameras, %d people, %d frames, %s joints (%zu out), %s detector, %s lens, seed %llu\n",
-              o.cameras, o.people, o.frames, o.joints.c_str(), run.sequences[0].output_joints.size(), o.noise.c_str(),
+              o.cameras, o.people, o.frames, o.joints.c_str(), run.sequences[0].output_joints.size(), o.detector.c_str(),
               o.distortion.c_str(), static_cast<unsigned long long>(o.seed));
   std::printf("persons present %ld, found %ld, matched %d (recall@500 %.1f %%, invalid %.1f %%)\n", run.gt_persons,
               run.output_persons, m.num_matches, m.recall_500, m.invalid);
@@ -88,9 +96,13 @@ void RegisterDemoCommand(CLI::App& app) {
   demo->add_option("--joints", options->joints, "body (17 COCO + 3) or wholebody (133 + 3)")
       ->check(CLI::IsMember({"body", "wholebody"}))
       ->capture_default_str();
-  demo->add_option("--noise", options->noise, "simulated detector: realistic or none")
-      ->check(CLI::IsMember({"realistic", "none"}))
-      ->capture_default_str();
+  std::vector<std::string> profiles = synthetic::DetectorProfileNames();
+  demo->add_option("--detector", options->detector,
+                   "simulated detector profile: " + Join(profiles, ", ") + " (default realistic; docs/detector_model.md)")
+      ->check(CLI::IsMember(profiles));
+  profiles.push_back("none");
+  demo->add_option("--noise", options->noise, "deprecated alias of --detector ('none' = perfect)")
+      ->check(CLI::IsMember(profiles));
   demo->add_option("--distortion", options->distortion, "lens model: none, opencv or fisheye")
       ->check(CLI::IsMember({"none", "opencv", "fisheye"}))
       ->capture_default_str();

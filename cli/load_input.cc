@@ -5,11 +5,13 @@
 #include <filesystem>
 
 #include "core/errors.h"
+#include "core/text.h"
 #include "datasets/detections.h"
 #include "datasets/readers/detections_file.h"
 #include "datasets/readers/generic_labels.h"
 #include "datasets/readers/voxelpose_detections.h"
 #include "datasets/registry.h"
+#include "datasets/synthetic/detector_options.h"
 
 namespace rpt::cli {
 
@@ -22,7 +24,12 @@ void AddInputOptions(CLI::App* command, InputArgs* args) {
   command->add_option("--detections", args->detections,
                       "2D detections: generic JSON, HDF5 cache, OpenPose folder or COCO result list");
   command->add_flag("--simulate", args->simulate, "simulate 2D detections from the ground truth");
-  command->add_flag("--simulate-perfect", args->simulate_perfect, "with --simulate: exact projections, no noise");
+  command->add_option("--detector", args->detector,
+                      "with --simulate: detector profile " + Join(synthetic::DetectorProfileNames(), "|") +
+                          " (default realistic; docs/detector_model.md)")
+      ->check(CLI::IsMember(synthetic::DetectorProfileNames()));
+  command->add_flag("--simulate-perfect", args->simulate_perfect,
+                    "deprecated: same as --detector perfect (exact projections, no noise)");
   command->add_option("--seed", args->seed, "seed of the simulated detector")->capture_default_str();
 }
 
@@ -31,6 +38,13 @@ std::vector<Sequence> LoadInput(const InputArgs& args, bool require_detections, 
     throw ConfigError("give either --dataset NAME (with --root DIR) or --labels FILE");
   }
   if (args.simulate && !args.detections.empty()) throw ConfigError("--simulate and --detections exclude each other");
+  if (!args.simulate && (!args.detector.empty() || args.simulate_perfect)) {
+    throw ConfigError(std::string(args.simulate_perfect ? "--simulate-perfect" : "--detector") +
+                      " needs --simulate (the synthetic dataset takes --param noise=PROFILE)");
+  }
+  if (args.simulate_perfect && !args.detector.empty() && args.detector != "perfect") {
+    throw ConfigError("--simulate-perfect (deprecated) contradicts --detector " + args.detector);
+  }
   std::vector<Sequence> sequences;
   InputWarnings detection_warnings;  // of a detections file read once for all sequences
   if (!args.labels.empty()) {
@@ -49,7 +63,7 @@ std::vector<Sequence> LoadInput(const InputArgs& args, bool require_detections, 
   if (args.simulate) {
     SimulationOptions simulation;
     simulation.seed = args.seed;
-    simulation.perfect = args.simulate_perfect;
+    simulation.detector = args.simulate_perfect ? "perfect" : args.detector.empty() ? "realistic" : args.detector;
     for (Sequence& s : sequences) SimulateDetections(simulation, &s);
   } else if (!args.detections.empty() && std::filesystem::path(args.detections).extension() == ".pkl") {
     // VoxelPose caches are keyed "<camera>_<frame>": they need the sequence to map keys to ids.

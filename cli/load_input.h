@@ -19,7 +19,8 @@ struct InputArgs {
   std::string labels;               // generic labels file (instead of --dataset)
   std::string detections;           // detections file or folder
   bool simulate = false;            // simulated detections from the GT
-  bool simulate_perfect = false;    // exact projections instead of the realistic model
+  bool simulate_perfect = false;    // deprecated alias of detector = "perfect"
+  std::string detector;             // simulated detector profile (synthetic::DetectorProfileNames()); empty = realistic
   uint64_t seed = 1;
 };
 

@@ -55,12 +55,12 @@ void SimulateDetections(const SimulationOptions& options, Sequence* sequence) {
     const bool whole_body = FindJoint(sequence->gt_joints, "hand_root_left") >= 0;
     joints = whole_body ? CocoWholeBodyJoints() : CocoBodyJoints();
   }
-  const synthetic::DetectorOptions model =
-      options.perfect ? synthetic::DetectorOptions::Perfect() : synthetic::DetectorOptions::Realistic();
+  const synthetic::DetectorOptions model = synthetic::DetectorProfile(options.perfect ? "perfect" : options.detector);
   const synthetic::DetectorSimulator detector(model, joints, options.seed);
   sequence->detection_joints = joints;
   for (size_t f = 0; f < sequence->frames.size(); ++f) {
-    detector.Detect(sequence->cameras, sequence->frames[f].gt, sequence->gt_joints, f, &sequence->frames[f].views);
+    SequenceFrame& frame = sequence->frames[f];
+    detector.Detect(sequence->cameras, frame.gt, sequence->gt_joints, f, &frame.views, nullptr, &frame.labels_2d);
   }
 }
 

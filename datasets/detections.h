@@ -39,10 +39,12 @@ struct AttachReport {
 AttachReport AttachDetections(const Detections& detections, const std::string& source, Sequence* sequence);
 
 // Replaces every frame's views by simulated detections of its GT (synthetic detector model,
-// joints mapped by name to `joints`; default: COCO-17, or COCO-WholeBody when the GT has it).
+// joints mapped by name to `joints`; default: COCO-17, or COCO-WholeBody when the GT has it), and
+// its labels_2d by the simulator's view of the GT (which joints it treated as occluded).
 struct SimulationOptions {
   uint64_t seed = 1;
-  bool perfect = false;   // exact projections instead of the realistic detector model
+  std::string detector = "realistic";  // profile: perfect | clean | realistic | hard (docs/detector_model.md)
+  bool perfect = false;   // deprecated: same as detector = "perfect"
   JointNames joints;      // empty = automatic as above
 };
 void SimulateDetections(const SimulationOptions& options, Sequence* sequence);

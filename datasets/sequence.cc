@@ -34,6 +34,22 @@ void ValidateSequence(const Sequence& sequence, const std::string& source) {
       throw InputError(Where(source, frame) + ": " + std::to_string(frame.views.size()) + " views for " +
                        std::to_string(sequence.cameras.size()) + " cameras");
     }
+    if (!frame.labels_2d.empty() && frame.labels_2d.size() != sequence.cameras.size()) {
+      throw InputError(Where(source, frame) + ": 2D labels for " + std::to_string(frame.labels_2d.size()) +
+                       " views, expected " + std::to_string(sequence.cameras.size()));
+    }
+    for (const std::vector<PersonLabel2D>& labels : frame.labels_2d) {
+      for (const PersonLabel2D& label : labels) {
+        if (label.gt_person < -1 || label.gt_person >= frame.gt.num_persons()) {
+          throw InputError(Where(source, frame) + ": 2D label of GT person " + std::to_string(label.gt_person) +
+                           ", the frame has " + std::to_string(frame.gt.num_persons()));
+        }
+        if (!label.visibility.empty() && label.visibility.size() != sequence.gt_joints.size()) {
+          throw InputError(Where(source, frame) + ": 2D label with " + std::to_string(label.visibility.size()) +
+                           " joint flags, expected " + std::to_string(sequence.gt_joints.size()));
+        }
+      }
+    }
     for (size_t v = 0; v < frame.views.size(); ++v) {
       const Poses2D& view = frame.views[v];
       const std::string where = Where(source, frame) + ", camera '" + sequence.cameras[v].name + "'";

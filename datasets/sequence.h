@@ -4,6 +4,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -19,11 +20,28 @@ struct Room {
   Eigen::Vector3d size_m = Eigen::Vector3d::Zero();  // <= 0 on an axis: unbounded
 };
 
+// How a dataset (or the detector simulator) labels one person in one image. COCO convention for
+// the per-joint flags.
+enum : int8_t {
+  kLabelAbsent = 0,    // not labelled in this image (outside it, or the annotator gave no position)
+  kLabelOccluded = 1,  // labelled, hidden behind something
+  kLabelVisible = 2,   // labelled and visible
+};
+struct PersonLabel2D {
+  int gt_person = -1;                   // index into SequenceFrame::gt; -1 = labelled in 2D only (no 3D label)
+  Eigen::Vector4d box_px = Eigen::Vector4d::Zero();  // x0, y0, x1, y1 in the image; all zero = none
+  std::vector<int8_t> visibility;       // per GT joint (gt_joints order): kLabel*; empty = not labelled
+};
+
 struct SequenceFrame {
   std::string id;                // unique label id (e.g. "shelf_000300")
   double timestamp_s = 0;        // for speed clipping and tracking
   Poses3D gt;                    // ground truth; joint score = visibility (> 0.1 visible)
   std::vector<Poses2D> views;    // detections per camera (may be empty when not loaded)
+  // Per camera, the persons labelled in that image (datasets with 2D labels such as MVOR, and
+  // simulated detections: the simulator's own occlusion). Empty when there are none; only the
+  // detector statistics (`rpt detector-stats`) use them.
+  std::vector<std::vector<PersonLabel2D>> labels_2d;
 };
 
 struct Sequence {

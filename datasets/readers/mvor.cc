@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -193,6 +194,15 @@ std::vector<Sequence> ReadMvor(const DatasetRequest& request) {
     persons_of[io::JsonString(root, io::JsonPointerJoin("/annotations3D", i) + "/image_ids", source)].push_back(i);
   }
 
+  // 2D labels by image id: `annotations`, 10 points x [x, y, v] in the order of MvorJoints()
+  // (v: 0 not labelled, 1 occluded, 2 visible), person_id -1 for persons labelled by a box only.
+  std::map<std::int64_t, std::vector<size_t>> labels_of;
+  if (const nlohmann::json* labels = io::JsonFind(root, "/annotations"); labels != nullptr && labels->is_array()) {
+    for (size_t i = 0; i < labels->size(); ++i) {
+      labels_of[io::JsonInt(root, io::JsonPointerJoin("/annotations", i) + "/image_id", source)].push_back(i);
+    }
+  }
+
   const JointNames& joints = MvorJoints();
   const int num_joints = static_cast<int>(joints.size());
   const int nose = num_joints - 1;
@@ -220,6 +230,7 @@ std::vector<Sequence> ReadMvor(const DatasetRequest& request) {
       throw InputError(source + ": " + base + "/images: expected " + std::to_string(kNumCameras) + " images");
     }
     std::string key;
+    std::vector<std::int64_t> image_ids;
     int day = 0, frame_number = -1;
     double time_s = 0;
     for (int c = 0; c < kNumCameras; ++c) {
@@ -234,7 +245,8 @@ std::vector<Sequence> ReadMvor(const DatasetRequest& request) {
       day = image_day;
       frame_number = number;
       if (c == 0) time_s = SecondsOfDay(io::JsonString(root, image + "/date_captured", source), source + ": " + image);
-      key += (c == 0 ? "" : "_") + std::to_string(io::JsonInt(root, image + "/id", source));
+      image_ids.push_back(io::JsonInt(root, image + "/id", source));
+      key += (c == 0 ? "" : "_") + std::to_string(image_ids.back());
     }
     const auto sequence = by_day.find(day);
     if (sequence == by_day.end()) continue;
@@ -259,6 +271,27 @@ std::vector<Sequence> ReadMvor(const DatasetRequest& request) {
       out.col(nose) = out.col(0);
     }
     persons_of.erase(key);
+    frame.labels_2d.resize(kNumCameras);
+    for (int c = 0; c < kNumCameras; ++c) {
+      for (const size_t i : labels_of[image_ids[c]]) {
+        const std::string label = io::JsonPointerJoin("/annotations", i);
+        PersonLabel2D out;
+        const int person_id = static_cast<int>(io::JsonInt(root, label + "/person_id", source));
+        for (int p = 0; p < frame.gt.num_persons() && person_id >= 0; ++p) {
+          if (frame.gt.track_ids[p] == person_id) out.gt_person = p;
+        }
+        const std::vector<double> box = io::JsonNumbers(root, label + "/bbox", source, 4);
+        out.box_px << box[0], box[1], box[0] + box[2], box[1] + box[3];
+        const std::vector<double> points = io::JsonNumbers(root, label + "/keypoints", source, 30);
+        out.visibility.assign(num_joints, kLabelAbsent);
+        for (int j = 0; j < 10; ++j) {
+          const double v = points[3 * j + 2];
+          out.visibility[j] = v == 2 ? kLabelVisible : v == 1 ? kLabelOccluded : kLabelAbsent;
+        }
+        out.visibility[nose] = out.visibility[0];
+        frame.labels_2d[c].push_back(std::move(out));
+      }
+    }
     sequence->second.frames.push_back(std::move(frame));
   }
 

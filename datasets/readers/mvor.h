@@ -26,6 +26,11 @@
 // Evaluated joints (Sequence::evaluated_joints): the 8 arm and torso joints, or with
 // evaluated=paper also the nose (the head).
 //
+// 2D labels (`annotations`: per image, 10 points with COCO visibility flags 0 not labelled /
+// 1 occluded / 2 visible, and a box; person_id -1 for persons labelled by a box only) become
+// SequenceFrame::labels_2d, linked to the 3D person with the same person_id (the nose takes the
+// head's flag, the hands are never labelled). Only the detector statistics use them.
+//
 // One sequence per day ("mvor/day1" ...), frames in file order with ids
 // "mvor_day<day>_<frame, 6 digits>" (the convention of ReadCocoDetections' MVOR mapping) and
 // timestamps from the images' `date_captured` (seconds since the day's first frame): MVOR's

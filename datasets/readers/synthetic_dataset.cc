@@ -5,6 +5,7 @@
 
 #include "core/errors.h"
 #include "core/text.h"
+#include "datasets/synthetic/detector_options.h"
 #include "datasets/synthetic/synthetic_sequence.h"
 
 namespace rpt {
@@ -45,7 +46,7 @@ DatasetInfo SyntheticInfo() {
       {"joints", "body", "body (17 COCO) or wholebody (133 COCO-WholeBody)"},
       {"layout", "ring", "camera placement: ring or random"},
       {"distortion", "none", "lens model: none, opencv or fisheye"},
-      {"noise", "realistic", "simulated detector: realistic or none"},
+      {"noise", "realistic", "simulated detector profile: perfect, clean, realistic or hard (none = perfect)"},
       {"seed", "1", "random seed of scene and detector"},
   };
   return info;
@@ -67,9 +68,9 @@ std::vector<Sequence> ReadSynthetic(const DatasetRequest& request) {
       {"none", DistortionModel::kNone}, {"opencv", DistortionModel::kOpenCV}, {"fisheye", DistortionModel::kFisheye}};
   options.rig.distortion = kDistortions.at(OneOf(param("distortion"), "distortion", {"none", "opencv", "fisheye"}));
   options.seed = static_cast<uint64_t>(ToInt(param("seed"), "seed", 0, 2147483647));
-  const bool perfect = OneOf(param("noise"), "noise", {"realistic", "none"}) == "none";
+  const std::string noise = OneOf(param("noise"), "noise", {"perfect", "clean", "realistic", "hard", "none"});
   const synthetic::Scene scene = synthetic::GenerateScene(options);
-  const auto detector = perfect ? synthetic::DetectorOptions::Perfect() : synthetic::DetectorOptions::Realistic();
+  const synthetic::DetectorOptions detector = synthetic::DetectorProfile(noise);
   return {synthetic::MakeSyntheticSequence(scene, detector, options.seed, "synthetic")};
 }
 

@@ -11,6 +11,8 @@
 
 #include "core/errors.h"
 #include "datasets/synthetic/camera_rig.h"
+#include "datasets/synthetic/detector_error_model.h"
+#include "datasets/synthetic/detector_occlusion.h"
 #include "datasets/synthetic/person_motion.h"
 #include "datasets/synthetic/random.h"
 
@@ -32,29 +34,21 @@ struct Candidate {
   DetectionSource source;
 };
 
-}  // namespace
-
-DetectorOptions DetectorOptions::Perfect() {
-  DetectorOptions options;
-  options.noise_relative = 0.0;
-  options.noise_absolute_px = 0.0;
-  options.outlier_probability = 0.0;
-  options.outlier_relative = 0.0;
-  options.joint_dropout = 0.0;
-  options.person_miss = 0.0;
-  options.false_positives_per_view = 0.0;
-  options.false_positive_score_scale = 1.0;
-  options.left_right_swap = 0.0;
-  options.min_visible_joints = 1;
-  options.score_base = 1.0;
-  options.score_error_slope = 0.0;
-  options.score_jitter = 0.0;
-  options.score_min = 1.0;
-  options.shuffle_persons = false;
-  return options;
+// Projects a joint for detection: false when behind the camera, beyond the lens model's monotonic
+// range or not finite.
+bool ProjectJoint(const ViewContext& view, const Eigen::Vector3d& point, Eigen::Vector2d* uv) {
+  const Camera& camera = *view.camera;
+  const Eigen::Vector3d p_cam = camera.R * point + camera.t;
+  if (!(p_cam.z() > 0.0)) return false;
+  if (std::hypot(p_cam.x(), p_cam.y()) / p_cam.z() >= view.max_radius) return false;
+  return camera.Project(point, uv) && uv->allFinite();
 }
 
-DetectorOptions DetectorOptions::Realistic() { return DetectorOptions(); }
+bool InImage(const Camera& camera, const Eigen::Vector2d& uv) {
+  return uv.x() >= 0.0 && uv.x() < camera.width && uv.y() >= 0.0 && uv.y() < camera.height;
+}
+
+}  // namespace
 
 DetectorSimulator::DetectorSimulator(DetectorOptions options, JointNames output_joints, uint64_t seed)
     : options_(std::move(options)), output_joints_(std::move(output_joints)), seed_(seed) {
@@ -65,6 +59,23 @@ DetectorSimulator::DetectorSimulator(DetectorOptions options, JointNames output_
     const int partner = FindJoint(output_joints_, rpt::MirrorJointName(output_joints_[k]));
     mirror_[k] = partner >= 0 ? partner : k;
     from_whole_body_[k] = FindJoint(CocoWholeBodyJoints(), output_joints_[k]);
+  }
+  joint_factor_.assign(num_joints, 1.0);
+  hidden_drop_.assign(num_joints, options_.fitted.occluded_drop);
+  score_factor_.assign(num_joints, 1.0);
+  for (const FittedJoint& joint : options_.fitted.joints) {
+    const int k = FindJoint(output_joints_, joint.joint);
+    if (k < 0) continue;
+    joint_factor_[k] = joint.error_factor;
+    if (joint.hidden_drop >= 0.0) hidden_drop_[k] = joint.hidden_drop;
+    score_factor_[k] = joint.score_factor;
+  }
+  offsets_ = ResolveOffsets(options_.joint_offsets, output_joints_);
+  bones_ = BodyBones(output_joints_, options_.occlusion);
+  clutter_.assign(num_joints, 0.0);
+  for (const JointChance& chance : options_.occlusion.clutter) {
+    const int k = FindJoint(output_joints_, chance.joint);
+    if (k >= 0) clutter_[k] = chance.probability;
   }
 }
 
@@ -130,6 +141,106 @@ bool DetectPerson(const DetectorOptions& options, const ViewContext& view, const
   return true;
 }
 
+// The fitted model's detection of one person: like DetectPerson, but the confidence is drawn
+// first and the error given it, hidden joints are displaced or dropped, all joints share a
+// per-person error factor and shift. `snap_uv` / `snap_ok` (may be empty) are the other persons'
+// projections, where a joint hidden by one of them may be reported. *hidden_share receives the
+// hidden fraction of the in-image joints.
+bool DetectPersonFitted(const DetectorOptions& options, const ViewContext& view, const Eigen::Matrix3Xd& points,
+                        const std::vector<char>& present, const std::vector<char>& hidden,
+                        const std::vector<int>& occluder, const std::vector<double>& joint_factor,
+                        const std::vector<double>& hidden_drop, const std::vector<double>& score_factor,
+                        const std::vector<Eigen::Matrix2Xd>& snap_uv, const std::vector<std::vector<char>>& snap_ok,
+                        Rng& rng, Eigen::Matrix3Xd* out, double* hidden_share) {
+  const FittedErrorOptions& fitted = options.fitted;
+  const Camera& camera = *view.camera;
+  const int num_joints = static_cast<int>(points.cols());
+  out->setZero(3, num_joints);
+  std::vector<char> visible(num_joints, 0);
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  int num_visible = 0, num_projected = 0, num_hidden = 0;
+  for (int k = 0; k < num_joints; ++k) {
+    Eigen::Vector2d uv;
+    if (!present[k] || !ProjectJoint(view, points.col(k), &uv)) continue;
+    out->col(k).head<2>() = uv;
+    centroid += camera.R * points.col(k) + camera.t;
+    ++num_projected;
+    if (InImage(camera, uv)) {
+      visible[k] = 1;
+      ++num_visible;
+      num_hidden += hidden[k] != 0;
+    }
+  }
+  if (num_visible < options.min_visible_joints || num_visible == 0) return false;
+  *hidden_share = static_cast<double>(num_hidden) / num_visible;
+
+  const double pixels_per_metre = PixelsPerMetre(camera, centroid / num_projected);
+  const double person_factor = fitted.person_spread > 0.0 ? std::exp(fitted.person_spread * rng.Normal()) : 1.0;
+  Eigen::Vector2d shift = Eigen::Vector2d::Zero();
+  if (fitted.person_shift_m > 0.0) {
+    shift = Eigen::Vector2d(rng.Normal(), rng.Normal()) * (fitted.person_shift_m * pixels_per_metre);
+  }
+  for (int k = 0; k < num_joints; ++k) {
+    if (!visible[k]) {
+      out->col(k).setZero();
+      continue;
+    }
+    Eigen::Vector2d base = out->col(k).head<2>();
+    JointDraw draw;
+    if (hidden[k]) {
+      draw = DrawHiddenJoint(fitted, hidden_drop[k], pixels_per_metre, rng);
+      const int q = occluder[k];
+      if (draw.reported && fitted.occluded_snap > 0.0 && q >= 0 && q < static_cast<int>(snap_ok.size()) &&
+          snap_ok[q][k] && rng.Bernoulli(fitted.occluded_snap)) {
+        base = snap_uv[q].col(k);
+      }
+    } else if (!(options.joint_dropout > 0.0 && rng.Bernoulli(options.joint_dropout))) {
+      draw = DrawVisibleJoint(fitted, pixels_per_metre, person_factor * joint_factor[k], rng);
+      if (fitted.stray_probability > 0.0 && rng.Bernoulli(fitted.stray_probability)) {
+        draw.error_px = StudentError(fitted.stray_error_m * pixels_per_metre, 3.0, rng);
+      }
+    }
+    if (!draw.reported) {
+      out->col(k).setZero();
+      continue;
+    }
+    Eigen::Vector2d uv = base + shift + draw.error_px;
+    uv.x() = std::clamp(uv.x(), 0.0, static_cast<double>(camera.width));
+    uv.y() = std::clamp(uv.y(), 0.0, static_cast<double>(camera.height));
+    out->col(k).head<2>() = uv;
+    (*out)(2, k) = std::clamp(draw.score * score_factor[k], options.score_min, 1.0);
+  }
+  return true;
+}
+
+// The simulator's 2D label of GT person `p` (appended to `out` when a joint is in the image):
+// projections with the true camera, hidden joints as occluded.
+void LabelPerson(const ViewContext& view, const Eigen::Matrix3Xd& points, const std::vector<char>& present,
+                 const std::vector<char>& hidden, const std::vector<int>& from_gt, int num_gt_joints, int p,
+                 std::vector<PersonLabel2D>* out) {
+  const Camera& camera = *view.camera;
+  PersonLabel2D label;
+  label.gt_person = p;
+  label.visibility.assign(num_gt_joints, kLabelAbsent);
+  Eigen::Vector2d lo = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector2d hi = -lo;
+  bool any = false;
+  for (size_t k = 0; k < from_gt.size(); ++k) {
+    Eigen::Vector2d uv;
+    if (!present[k] || !ProjectJoint(view, points.col(k), &uv)) continue;
+    lo = lo.cwiseMin(uv);
+    hi = hi.cwiseMax(uv);
+    if (InImage(camera, uv)) {
+      label.visibility[from_gt[k]] = hidden[k] ? kLabelOccluded : kLabelVisible;
+      any = true;
+    }
+  }
+  if (!any) return;
+  const Eigen::Vector2d size(camera.width, camera.height);
+  label.box_px << lo.cwiseMax(Eigen::Vector2d::Zero()).cwiseMin(size), hi.cwiseMax(Eigen::Vector2d::Zero()).cwiseMin(size);
+  out->push_back(std::move(label));
+}
+
 // A random person placed in front of the camera (built in the camera frame, so the world's up
 // direction does not matter), as world points per output joint.
 void RandomPersonInView(const Camera& camera, const std::vector<int>& from_whole_body, Rng& rng,
@@ -168,41 +279,109 @@ void RandomPersonInView(const Camera& camera, const std::vector<int>& from_whole
 
 void DetectorSimulator::Detect(std::span<const Camera> cameras, const Poses3D& gt, const JointNames& gt_joints,
                                uint64_t frame_index, std::vector<Poses2D>* views,
-                               std::vector<std::vector<DetectionSource>>* sources) const {
+                               std::vector<std::vector<DetectionSource>>* sources,
+                               std::vector<std::vector<PersonLabel2D>>* labels) const {
   if (gt.num_persons() > 0 && gt.num_joints != static_cast<int>(gt_joints.size())) {
     throw InputError("detector simulator: ground truth has " + std::to_string(gt.num_joints) + " joints but " +
                      std::to_string(gt_joints.size()) + " joint names");
   }
   const int num_joints = static_cast<int>(output_joints_.size());
+  const int num_persons = gt.num_persons();
+  const bool fitted = options_.fitted.enabled;
   std::vector<int> from_gt(num_joints);
   for (int k = 0; k < num_joints; ++k) from_gt[k] = FindJoint(gt_joints, output_joints_[k]);
 
+  // The GT per output joint (camera independent), and where the detector's skeleton puts it.
+  std::vector<Eigen::Matrix3Xd> gt_points(num_persons, Eigen::Matrix3Xd::Zero(3, num_joints));
+  std::vector<std::vector<char>> present(num_persons, std::vector<char>(num_joints, 0));
+  for (int p = 0; p < num_persons; ++p) {
+    const auto person = gt.Person(p);
+    for (int k = 0; k < num_joints; ++k) {
+      const int g = from_gt[k];
+      present[p][k] = g >= 0 && person(3, g) > kPresentScore && person.col(g).head<3>().allFinite();
+      if (g >= 0) gt_points[p].col(k) = person.col(g).head<3>();
+    }
+  }
+  std::vector<Eigen::Matrix3Xd> detector_points = gt_points;
+  const BodyJoints body(output_joints_);
+  for (int p = 0; p < num_persons; ++p) ApplyJointOffsets(offsets_, body, present[p], &detector_points[p]);
+
   views->resize(cameras.size());
   if (sources != nullptr) sources->assign(cameras.size(), {});
+  if (labels != nullptr) labels->assign(cameras.size(), {});
   Eigen::Matrix3Xd points(3, num_joints);
-  std::vector<char> present(num_joints);
+  std::vector<char> fp_present(num_joints);
+  const std::vector<char> none_hidden(num_joints, 0);
+  const std::vector<int> no_occluder(num_joints, -1);
   std::vector<Candidate> candidates;
+  ViewOcclusion occlusion;
+  std::vector<Eigen::Matrix2Xd> snap_uv;
+  std::vector<std::vector<char>> snap_ok;
   for (size_t c = 0; c < cameras.size(); ++c) {
     const Camera& camera = cameras[c];
     Rng rng(DeriveSeed(seed_, frame_index, c));
-    const ViewContext view{&camera, MonotonicRadius(camera), std::hypot(camera.width, camera.height)};
+    // The detector works with the camera as miscalibrated; labels use the true one.
+    const Camera seen = PerturbedCamera(camera, seed_, c, options_.calibration_px);
+    const ViewContext true_view{&camera, MonotonicRadius(camera), std::hypot(camera.width, camera.height)};
+    const ViewContext view{&seen, MonotonicRadius(seen), std::hypot(seen.width, seen.height)};
+    ComputeOcclusion(options_.occlusion, bones_, body, clutter_, camera, gt_points, present, gt.track_ids, seed_, frame_index, c,
+                     &occlusion);
+    snap_uv.clear();
+    snap_ok.clear();
+    if (fitted && options_.fitted.occluded_snap > 0.0) {
+      for (int p = 0; p < num_persons; ++p) {
+        snap_uv.emplace_back(Eigen::Matrix2Xd::Zero(2, num_joints));
+        snap_ok.emplace_back(num_joints, 0);
+        for (int k = 0; k < num_joints; ++k) {
+          Eigen::Vector2d uv;
+          if (!present[p][k] || !ProjectJoint(view, detector_points[p].col(k), &uv) || !InImage(seen, uv)) continue;
+          snap_uv[p].col(k) = uv;
+          snap_ok[p][k] = 1;
+        }
+      }
+    }
     candidates.clear();
 
-    for (int p = 0; p < gt.num_persons(); ++p) {
-      const auto person = gt.Person(p);
-      for (int k = 0; k < num_joints; ++k) {
-        const int g = from_gt[k];
-        present[k] = g >= 0 && person(3, g) > kPresentScore && person.col(g).head<3>().allFinite();
-        points.col(k) = g >= 0 ? Eigen::Vector3d(person.col(g).head<3>()) : Eigen::Vector3d::Zero();
+    for (int p = 0; p < num_persons; ++p) {
+      if (labels != nullptr) {
+        LabelPerson(true_view, gt_points[p], present[p], occlusion.hidden[p], from_gt,
+                    static_cast<int>(gt_joints.size()), p, &(*labels)[c]);
       }
       Candidate candidate;
-      if (!DetectPerson(options_, view, points, present, rng, &candidate.joints)) continue;
-      if (options_.person_miss > 0.0 && rng.Bernoulli(options_.person_miss)) continue;
+      if (fitted) {
+        double hidden_share = 0;
+        if (!DetectPersonFitted(options_, view, detector_points[p], present[p], occlusion.hidden[p],
+                                occlusion.occluder[p], joint_factor_, hidden_drop_, score_factor_, snap_uv,
+                                snap_ok, rng, &candidate.joints,
+                                &hidden_share)) {
+          continue;
+        }
+        const double miss = options_.person_miss + options_.fitted.person_miss_hidden * hidden_share * hidden_share;
+        if (miss > 0.0 && rng.Bernoulli(miss)) continue;
+      } else {
+        if (!DetectPerson(options_, view, detector_points[p], present[p], rng, &candidate.joints)) continue;
+        if (options_.person_miss > 0.0 && rng.Bernoulli(options_.person_miss)) continue;
+      }
       candidate.source.gt_person = p;
       if (options_.left_right_swap > 0.0 && rng.Bernoulli(options_.left_right_swap)) {
         const Eigen::Matrix3Xd original = candidate.joints;
         for (int k = 0; k < num_joints; ++k) candidate.joints.col(k) = original.col(mirror_[k]);
         candidate.source.swapped = true;
+        if (fitted) {
+          for (int k = 0; k < num_joints; ++k) {
+            if (mirror_[k] != k) candidate.joints(2, k) *= options_.fitted.swap_score_factor;
+          }
+        }
+      }
+      if (fitted && options_.fitted.pair_swap > 0.0) {
+        for (int k = 0; k < num_joints; ++k) {
+          const int m = mirror_[k];
+          if (m <= k || !rng.Bernoulli(options_.fitted.pair_swap)) continue;
+          candidate.joints.col(k).swap(candidate.joints.col(m));
+          candidate.joints(2, k) *= options_.fitted.swap_score_factor;
+          candidate.joints(2, m) *= options_.fitted.swap_score_factor;
+          ++candidate.source.pairs_swapped;
+        }
       }
       candidates.push_back(std::move(candidate));
     }
@@ -210,9 +389,28 @@ void DetectorSimulator::Detect(std::span<const Camera> cameras, const Poses3D& g
     const int num_false_positives = rng.Poisson(options_.false_positives_per_view);
     for (int f = 0; f < num_false_positives; ++f) {
       for (int attempt = 0; attempt < kFalsePositiveAttempts; ++attempt) {
-        RandomPersonInView(camera, from_whole_body_, rng, &points, &present);
+        RandomPersonInView(camera, from_whole_body_, rng, &points, &fp_present);
         Candidate candidate;
-        if (!DetectPerson(options_, view, points, present, rng, &candidate.joints)) continue;
+        if (fitted) {
+          double hidden_share = 0;
+          if (!DetectPersonFitted(options_, view, points, fp_present, none_hidden, no_occluder, joint_factor_, hidden_drop_,
+                                  score_factor_, {}, {},
+                                  rng, &candidate.joints, &hidden_share)) {
+            continue;
+          }
+          int kept = 0;
+          for (int k = 0; k < num_joints; ++k) {
+            if (candidate.joints(2, k) <= 0.0) continue;
+            if (rng.Bernoulli(options_.fitted.false_positive_joint_keep)) {
+              ++kept;
+            } else {
+              candidate.joints.col(k).setZero();
+            }
+          }
+          if (kept < 2) continue;
+        } else if (!DetectPerson(options_, view, points, fp_present, rng, &candidate.joints)) {
+          continue;
+        }
         for (int k = 0; k < num_joints; ++k) {
           double& score = candidate.joints(2, k);
           if (score > 0.0) score = std::max(options_.score_min, score * options_.false_positive_score_scale);

@@ -58,4 +58,38 @@ int Rng::Poisson(double mean) {
   return count;
 }
 
+double Rng::Gamma(double shape) {
+  if (!(shape > 0.0)) return 0.0;
+  if (shape < 1.0) {
+    // Gamma(a) = Gamma(a + 1) * U^(1/a).
+    const double boost = std::pow(1.0 - Uniform(), 1.0 / shape);
+    return Gamma(shape + 1.0) * boost;
+  }
+  const double d = shape - 1.0 / 3.0;
+  const double c = 1.0 / std::sqrt(9.0 * d);
+  while (true) {
+    double x, v;
+    do {
+      x = Normal();
+      v = 1.0 + c * x;
+    } while (v <= 0.0);
+    v = v * v * v;
+    const double u = 1.0 - Uniform();  // (0, 1]
+    if (u < 1.0 - 0.0331 * x * x * x * x) return d * v;
+    if (std::log(u) < 0.5 * x * x + d * (1.0 - v + std::log(v))) return d * v;
+  }
+}
+
+double Rng::Beta(double a, double b) {
+  const double x = Gamma(a);
+  const double y = Gamma(b);
+  return x + y > 0.0 ? x / (x + y) : 0.5;
+}
+
+double Rng::StudentScale(double dof) {
+  if (!(dof > 0.0)) return 1.0;
+  const double chi2 = 2.0 * Gamma(0.5 * dof);
+  return chi2 > 0.0 ? std::sqrt(dof / chi2) : 1e6;
+}
+
 }  // namespace rpt::synthetic

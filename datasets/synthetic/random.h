@@ -33,6 +33,13 @@ class Rng {
   double Normal(double mean, double sigma) { return mean + sigma * Normal(); }
   // Poisson with the given mean (Knuth's multiplication method; fine for small means).
   int Poisson(double mean);
+  // Gamma with the given shape > 0 and scale 1 (Marsaglia-Tsang; shape < 1 by boosting).
+  double Gamma(double shape);
+  // Beta(a, b), a, b > 0, from two Gamma draws.
+  double Beta(double a, double b);
+  // The radius factor of a 2D Student-t with `dof` degrees of freedom: sqrt(dof / chi2_dof), to
+  // multiply a 2D standard normal with; 1 for dof <= 0 (Gaussian).
+  double StudentScale(double dof);
 
  private:
   std::mt19937_64 engine_;

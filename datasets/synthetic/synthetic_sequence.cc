@@ -24,7 +24,7 @@ Sequence MakeSyntheticSequence(const Scene& scene, const DetectorOptions& detect
     frame.id = id;
     frame.timestamp_s = static_cast<double>(f) / scene.fps;
     frame.gt = scene.gt[f];
-    detector.Detect(scene.cameras, scene.gt[f], scene.joint_names, f, &frame.views);
+    detector.Detect(scene.cameras, scene.gt[f], scene.joint_names, f, &frame.views, nullptr, &frame.labels_2d);
   }
   return sequence;
 }

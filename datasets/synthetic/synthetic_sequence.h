@@ -12,7 +12,8 @@
 
 namespace rpt::synthetic {
 
-// Frame ids are "<name>_000000", ...; timestamps frame / fps; detections use the scene's joints.
+// Frame ids are "<name>_000000", ...; timestamps frame / fps; detections use the scene's joints;
+// labels_2d are the simulator's view of the GT (which joints its occluders hid).
 Sequence MakeSyntheticSequence(const Scene& scene, const DetectorOptions& detector, uint64_t seed,
                                const std::string& name = "synthetic");
 

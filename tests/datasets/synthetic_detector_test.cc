@@ -95,9 +95,9 @@ TEST(SyntheticDetectorTest, PerfectReproducesProjectionExactly) {
 
 TEST(SyntheticDetectorTest, SameFrameSameResultInAnyOrder) {
   const Scene scene = TestScene(10);
-  const DetectorSimulator a(DetectorOptions::Realistic(), scene.joint_names, 5);
-  const DetectorSimulator b(DetectorOptions::Realistic(), scene.joint_names, 5);
-  const DetectorSimulator other(DetectorOptions::Realistic(), scene.joint_names, 6);
+  const DetectorSimulator a(DetectorOptions::Clean(), scene.joint_names, 5);
+  const DetectorSimulator b(DetectorOptions::Clean(), scene.joint_names, 5);
+  const DetectorSimulator other(DetectorOptions::Clean(), scene.joint_names, 6);
   std::vector<Poses2D> first, second, third;
   for (int f : {7, 3, 9}) a.Detect(scene.cameras, scene.gt[f], scene.joint_names, f, &first);
   a.Detect(scene.cameras, scene.gt[3], scene.joint_names, 3, &first);
@@ -116,9 +116,9 @@ TEST(SyntheticDetectorTest, SameFrameSameResultInAnyOrder) {
   EXPECT_TRUE(differs);
 }
 
-// Realistic detector with everything but the pixel noise and confidences switched off.
+// Clean detector with everything but the pixel noise and confidences switched off.
 DetectorOptions NoiseOnly() {
-  DetectorOptions options = DetectorOptions::Realistic();
+  DetectorOptions options = DetectorOptions::Clean();
   options.outlier_probability = 0;
   options.joint_dropout = 0;
   options.person_miss = 0;
@@ -127,7 +127,7 @@ DetectorOptions NoiseOnly() {
   return options;
 }
 
-TEST(SyntheticDetectorTest, RealisticNoiseScalesWithPersonSize) {
+TEST(SyntheticDetectorTest, CleanNoiseScalesWithPersonSize) {
   const Scene scene = TestScene(100);
   for (bool with_outliers : {false, true}) {
     DetectorOptions options = NoiseOnly();
@@ -197,7 +197,7 @@ TEST(SyntheticDetectorTest, RealisticNoiseScalesWithPersonSize) {
 
 TEST(SyntheticDetectorTest, DropoutMissAndSwapRatesMatchOptions) {
   const Scene scene = TestScene(200, 23);
-  DetectorOptions options = DetectorOptions::Realistic();
+  DetectorOptions options = DetectorOptions::Clean();
   options.false_positives_per_view = 0;
   options.shuffle_persons = false;
   const DetectorSimulator detector(options, scene.joint_names, 8);
@@ -243,7 +243,7 @@ TEST(SyntheticDetectorTest, FalsePositivesAreHumanShapedAtTheConfiguredRate) {
   Scene scene = TestScene(1);
   Poses3D empty;
   empty.Clear(17);
-  DetectorOptions options = DetectorOptions::Realistic();
+  DetectorOptions options = DetectorOptions::Clean();
   const DetectorSimulator detector(options, scene.joint_names, 2);
   std::vector<Poses2D> views;
   std::vector<std::vector<DetectionSource>> sources;
@@ -392,7 +392,7 @@ TEST(SyntheticDetectorTest, MapsJointsByNameFromAnyGroundTruth) {
     }
   }
   // Whole-body output from body-only GT: only the 17 body joints can be present.
-  const DetectorSimulator whole(DetectorOptions::Realistic(), CocoWholeBodyJoints(), 1);
+  const DetectorSimulator whole(DetectorOptions::Clean(), CocoWholeBodyJoints(), 1);
   whole.Detect(scene.cameras, scene.gt[0], scene.joint_names, 0, &a);
   for (const Poses2D& view : a) {
     ASSERT_EQ(view.num_joints, 133);
