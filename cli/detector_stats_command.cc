@@ -227,7 +227,9 @@ std::string Describe(const InputArgs& input) {
 }
 
 void RunDetectorStats(const DetectorStatsArgs& args) {
-  const std::vector<Sequence> sequences = LoadInput(args.input, /*require_detections=*/true);
+  InputWarnings input_warnings;
+  const std::vector<Sequence> sequences = LoadInput(args.input, /*require_detections=*/true, &input_warnings);
+  PrintInputWarnings(input_warnings);
   detector_stats::StatsOptions options;
   std::stringstream list(args.joints);
   for (std::string item; std::getline(list, item, ',');) {
