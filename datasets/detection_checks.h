@@ -93,7 +93,7 @@ inline constexpr long kMinComparedPersons = 5;
 // shift could stand out). It warns when the best k != 0 brings the median down to at most
 // kShiftMaxRatio of the median at k = 0 and is closer in at least kShiftMinWinShare of the
 // (frame, camera) comparisons.
-inline constexpr double kShiftMaxRatio = 0.67;
+inline constexpr double kShiftMaxRatio = 0.8;
 inline constexpr double kShiftMinWinShare = 0.7;
 inline constexpr int kShiftMinFrames = 10;
 

@@ -19,7 +19,11 @@ TEST(DemoCommand, JsonHasTheDocumentedKeysAndSaneValues) {
   EXPECT_EQ(j["frames"], 60);
   EXPECT_EQ(j["persons_present"], 4 * 60);
   EXPECT_GE(j["persons_found"].get<int>(), 4 * 60 * 95 / 100);
-  EXPECT_LT(j["mpjpe_mm"].get<double>(), 40.0);
+  // The default detector profile is `realistic` (fitted to real OpenPose output, whose hips and
+  // shoulders sit 3-6 cm from the GT's): about 43 mm here. Below 30 mm would mean the noise is
+  // not applied; the clean profile gives about 17 mm.
+  EXPECT_GT(j["mpjpe_mm"].get<double>(), 30.0);
+  EXPECT_LT(j["mpjpe_mm"].get<double>(), 55.0);
   EXPECT_GT(j["frame_time_us_median"].get<double>(), 0.0);
   for (const char* step : {"undistort", "pairs", "prefilter", "triangulate_core", "group", "merge", "track"}) {
     EXPECT_TRUE(j["step_time_us_median"].contains(step)) << step;

@@ -63,7 +63,7 @@ TEST(CheckCommand, PassesAtAchievedFloorsAndFailsAboveThem) {
   fs::create_directories(dir);
   auto write = [&](const std::string& name, double floor) {
     std::ofstream(dir / name) << R"({"evaluations": [{"name": "tiny", "dataset": "synthetic",
-        "params": {"frames": 30, "people": 2}, "min": {"recall500": )" << floor << R"(}, "max": {"mpjpe_mm": 40}},
+        "params": {"frames": 30, "people": 2, "noise": "clean"}, "min": {"recall500": )" << floor << R"(}, "max": {"mpjpe_mm": 40}},
         {"name": "absent data", "dataset": "shelf", "root": "no/such/folder", "simulate": true, "min": {"pcp": 1}}]})";
   };
   write("pass.json", 90.0);

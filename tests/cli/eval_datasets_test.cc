@@ -37,7 +37,9 @@ TEST(EvalDatasets, ShelfFixtureWithItsOwnCacheAndSimulated) {
   EXPECT_GT(cache["predictions"].get<int>(), 0);
   const nlohmann::json predictions = nlohmann::json::parse(test::ReadAll(out / "predictions.json"));
   EXPECT_EQ(predictions["frames"][0]["id"], "shelf_000000");
-  const nlohmann::json simulated = EvalJson("--dataset shelf --root " + root + " --param frames=0-2 --simulate", out);
+  // The clean detector profile: its small errors make a tight bound that catches convention errors.
+  const nlohmann::json simulated =
+      EvalJson("--dataset shelf --root " + root + " --param frames=0-2 --simulate --detector clean", out);
   EXPECT_EQ(simulated["recall500"], 100.0);
   EXPECT_LT(simulated["mpjpe_mm"].get<double>(), 40.0);
   fs::remove_all(out);
@@ -78,7 +80,7 @@ TEST(EvalDatasets, PanopticFixtureWithSimulatedDetections) {
   RPT_REQUIRE_SHARED_DATA("panoptic/160906_band1");
   const fs::path out = test::TempDir("panoptic");
   const nlohmann::json j = EvalJson("--dataset panoptic --root " + test::SharedData("panoptic").string() +
-                                        " --param sequences=160906_band1 --param every=1 --simulate",
+                                        " --param sequences=160906_band1 --param every=1 --simulate --detector clean",
                                     out);
   EXPECT_EQ(j["frames"], 20);
   EXPECT_GT(j["recall500"].get<double>(), 99.0);
@@ -142,7 +144,7 @@ TEST(EvalDatasets, GenericInterchangeFilesWrittenByTheTest) {
 }
 
 TEST(InspectCommand, ReportsSmallDistancesForConsistentInput) {
-  const test::CommandResult r = test::RunRpt("inspect --dataset synthetic --param frames=10 --json");
+  const test::CommandResult r = test::RunRpt("inspect --dataset synthetic --param frames=10 --param noise=clean --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json j = nlohmann::json::parse(r.out);
   ASSERT_EQ(j[0]["cameras"].size(), 5u);

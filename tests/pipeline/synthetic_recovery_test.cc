@@ -149,60 +149,91 @@ TEST(SyntheticRecovery, NoiseFreeWholeBodyScenesAreRecoveredExactly) {
   }
 }
 
-// Realistic detector on fixed seeds: every person seen well by at least two views is found,
-// and every output person is close to a real person (no phantom).
-TEST(SyntheticRecovery, RealisticNoiseFindsEveryPersonAndNoPhantom) {
-  for (uint64_t seed : {1, 2, 3}) {
-    SCOPED_TRACE(testing::Message() << "seed " << seed);
-    SceneOptions options;
-    options.rig.num_cameras = 5;
-    options.num_people = 4;
-    options.num_frames = 150;
-    options.seed = seed;
-    const Scene scene = GenerateScene(options);
-    const DetectorSimulator detector(DetectorOptions::Realistic(), scene.joint_names, seed);
-    TriangulatorOptions tri_options;
-    tri_options.room_check.center_m = scene.room_center_m;
-    tri_options.room_check.size_m = scene.room_size_m;
-    Triangulator tri(scene.cameras, scene.joint_names, tri_options);
-    std::vector<Poses2D> views;
-    std::vector<std::vector<synthetic::DetectionSource>> sources;
-    Poses3D persons;
-    FrameStats stats;
-    int present = 0, found = 0, phantoms = 0, false_positive_views = 0;
-    double error_sum = 0;
-    for (int f = 0; f < options.num_frames; ++f) {
-      detector.Detect(scene.cameras, scene.gt[f], scene.joint_names, f, &views, &sources);
-      for (const auto& s : sources) {
-        for (const auto& d : s) false_positive_views += d.gt_person < 0 ? 1 : 0;
-      }
-      tri.Process(views, f / scene.fps, &persons, &stats);
-      const Poses3D& gt = scene.gt[f];
-      for (int p = 0; p < persons.num_persons(); ++p) {
-        double best = 1e9;
-        for (int g = 0; g < gt.num_persons(); ++g) {
-          best = std::min(best, MeanJointError(gt, g, scene.joint_names, persons, p, tri.output_joints(), 0.0));
-        }
-        phantoms += best > 0.25 ? 1 : 0;
-      }
+// A simulated detector on fixed seeds (5 cameras, 4 people, 150 frames): how many persons seen
+// well by at least two views are found (within 0.15 m), how many output persons are phantoms
+// (farther than 0.25 m from every real person), and the mean joint error of those found.
+struct RecoveryCounts {
+  int present = 0, found = 0, output = 0, phantoms = 0, false_positive_views = 0;
+  double mean_error_m = 0;
+};
+
+RecoveryCounts MeasureRecovery(const DetectorOptions& detector_options, uint64_t seed) {
+  SceneOptions options;
+  options.rig.num_cameras = 5;
+  options.num_people = 4;
+  options.num_frames = 150;
+  options.seed = seed;
+  const Scene scene = GenerateScene(options);
+  const DetectorSimulator detector(detector_options, scene.joint_names, seed);
+  TriangulatorOptions tri_options;
+  tri_options.room_check.center_m = scene.room_center_m;
+  tri_options.room_check.size_m = scene.room_size_m;
+  Triangulator tri(scene.cameras, scene.joint_names, tri_options);
+  std::vector<Poses2D> views;
+  std::vector<std::vector<synthetic::DetectionSource>> sources;
+  Poses3D persons;
+  FrameStats stats;
+  RecoveryCounts counts;
+  double error_sum = 0;
+  for (int f = 0; f < options.num_frames; ++f) {
+    detector.Detect(scene.cameras, scene.gt[f], scene.joint_names, f, &views, &sources);
+    for (const auto& s : sources) {
+      for (const auto& d : s) counts.false_positive_views += d.gt_person < 0 ? 1 : 0;
+    }
+    tri.Process(views, f / scene.fps, &persons, &stats);
+    const Poses3D& gt = scene.gt[f];
+    counts.output += persons.num_persons();
+    for (int p = 0; p < persons.num_persons(); ++p) {
+      double best = 1e9;
       for (int g = 0; g < gt.num_persons(); ++g) {
-        if (BestPairVisibility(views, sources, scene.joint_names, g) < 8) continue;
-        ++present;
-        double best = 1e9;
-        for (int p = 0; p < persons.num_persons(); ++p) {
-          best = std::min(best, MeanJointError(gt, g, scene.joint_names, persons, p, tri.output_joints(), 0.0));
-        }
-        if (best < 0.15) {
-          ++found;
-          error_sum += best;
-        }
+        best = std::min(best, MeanJointError(gt, g, scene.joint_names, persons, p, tri.output_joints(), 0.0));
+      }
+      counts.phantoms += best > 0.25 ? 1 : 0;
+    }
+    for (int g = 0; g < gt.num_persons(); ++g) {
+      if (BestPairVisibility(views, sources, scene.joint_names, g) < 8) continue;
+      ++counts.present;
+      double best = 1e9;
+      for (int p = 0; p < persons.num_persons(); ++p) {
+        best = std::min(best, MeanJointError(gt, g, scene.joint_names, persons, p, tri.output_joints(), 0.0));
+      }
+      if (best < 0.15) {
+        ++counts.found;
+        error_sum += best;
       }
     }
-    EXPECT_GT(false_positive_views, 50) << "the detector must actually produce false positives";
-    EXPECT_GT(present, 400);
-    EXPECT_EQ(found, present);
-    EXPECT_EQ(phantoms, 0);
-    EXPECT_LT(error_sum / std::max(found, 1), 0.04) << "mean joint error (m)";
+  }
+  counts.mean_error_m = error_sum / std::max(counts.found, 1);
+  return counts;
+}
+
+// The clean profile (Gaussian noise, 1 % outliers): every person is found, no phantom.
+TEST(SyntheticRecovery, CleanDetectorFindsEveryPersonAndNoPhantom) {
+  for (uint64_t seed : {1, 2, 3}) {
+    SCOPED_TRACE(testing::Message() << "seed " << seed);
+    const RecoveryCounts c = MeasureRecovery(DetectorOptions::Clean(), seed);
+    EXPECT_GT(c.false_positive_views, 50) << "the detector must actually produce false positives";
+    EXPECT_GT(c.present, 400);
+    EXPECT_EQ(c.found, c.present);
+    EXPECT_EQ(c.phantoms, 0);
+    EXPECT_LT(c.mean_error_m, 0.025) << "mean joint error (m)";
+  }
+}
+
+// The realistic profile (fitted to real OpenPose: heavy tails, occluded joints reported at wrong
+// places, stray joints, skeleton offsets, calibration error): at least 99 % of the persons are
+// found and at most 1 % of the output persons are phantoms (the synthetic target);
+// observed 597-599 of 599 found, 0-4 phantoms of about 600, 42-43 mm.
+TEST(SyntheticRecovery, RealisticDetectorFinds99PercentAndAtMostOnePercentPhantoms) {
+  for (uint64_t seed : {1, 2, 3}) {
+    SCOPED_TRACE(testing::Message() << "seed " << seed);
+    const RecoveryCounts c = MeasureRecovery(DetectorOptions::Realistic(), seed);
+    EXPECT_GT(c.false_positive_views, 50) << "the detector must actually produce false positives";
+    EXPECT_GT(c.present, 400);
+    EXPECT_GE(c.found, 0.99 * c.present);
+    EXPECT_LE(c.phantoms, 0.01 * c.output);
+    EXPECT_GT(c.mean_error_m, 0.03) << "the realistic errors are not applied";
+    EXPECT_LT(c.mean_error_m, 0.05) << "mean joint error (m)";
   }
 }
 
