@@ -22,6 +22,12 @@ sweep synthetic-wholebody --dataset synthetic --param joints=wholebody --param p
       --grid param.cameras=3,5,10
 sweep ablations-synthetic --dataset synthetic --param cameras=6 --param people=5 --param frames=300 \
       --list results/ablations.json
+# The simulated detector's profiles (docs/detector_model.md) on one scene.
+sweep synthetic-detectors --dataset synthetic --param cameras=5 --param people=4 --param frames=200 \
+      --grid param.noise=perfect,clean,realistic,hard
+# The pair score's two knobs around their defaults (docs/algorithm.md, step 8).
+SCORE_GRID=(--grid score.scale_factor=4,5,6 --grid filter.min_match_score=0.6,0.7,0.8)
+sweep scoring-synthetic --dataset synthetic --param cameras=5 --param people=4 --param frames=200 "${SCORE_GRID[@]}"
 
 # results/real: every real case we can run, with the paper's row beside ours.
 real() {  # name, then rpt eval arguments
@@ -35,6 +41,10 @@ real() {  # name, then rpt eval arguments
 ours() { sed -n 3p "$OUT/real/$1/summary.md" | sed "s/^| [^|]*|/| $2 |/"; }
 
 real_results() {
+  sweep real/ablations-mvor --dataset mvor --root "$SHARED/mvor" --list results/ablations.json
+  sweep real/ablations-shelf4da--dataset shelf-4da --root "$SHARED/shelf/4d_association" --list results/ablations.json
+  sweep real/scoring-mvor --dataset mvor --root "$SHARED/mvor" "${SCORE_GRID[@]}"
+  sweep real/scoring-shelf4da --dataset shelf-4da --root "$SHARED/shelf/4d_association" "${SCORE_GRID[@]}"
   real mvor-openpose         --dataset mvor --root "$SHARED/mvor"
   real mvor-openpose-paper   --dataset mvor --root "$SHARED/mvor" --param evaluated=paper
   real shelf4da-openpose     --dataset shelf-4da --root "$SHARED/shelf/4d_association"
