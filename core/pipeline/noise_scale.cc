@@ -11,10 +11,10 @@ namespace {
 constexpr double kLow = 1e-3;
 constexpr double kHigh = 0.3;
 
-double BinWidth() { return std::log(kHigh / kLow) / NoiseScale::kBins; }
+const double kBinWidth = std::log(kHigh / kLow) / NoiseScale::kBins;  // in log(m)
 
 int BinOf(double value) {
-  const double position = std::log(std::max(value, kLow) / kLow) / BinWidth();
+  const double position = std::log(std::max(value, kLow) / kLow) / kBinWidth;
   return std::clamp(static_cast<int>(position), 0, NoiseScale::kBins - 1);
 }
 
@@ -48,7 +48,7 @@ void NoiseScale::Update() const {
   for (int b = 0; b < kBins; ++b) {
     if (below + counts_[b] >= 0.5 * total) {
       const double fraction = counts_[b] > 0 ? (0.5 * total - below) / counts_[b] : 0.5;
-      estimate_ = std::clamp(kLow * std::exp((b + fraction) * BinWidth()), kMinNoiseM, kMaxNoiseM);
+      estimate_ = std::clamp(kLow * std::exp((b + fraction) * kBinWidth), kMinNoiseM, kMaxNoiseM);
       return;
     }
     below += counts_[b];

@@ -30,7 +30,7 @@ namespace rpt {
 
 // Reused buffers of the score step.
 struct ScoreScratch {
-  std::vector<double> residual;       // per proposal and joint
+  std::vector<double> residual;       // per proposal and joint (adaptive scale, step 7)
   std::vector<double> pair_residual;  // per proposal: median joint residual (adaptive scale)
   std::vector<double> votes;          // per joint of one proposal
   std::vector<std::pair<double, double>> terms;  // (s_i, w_i) per joint of one proposal
@@ -44,9 +44,9 @@ double KernelScaleM(const ScoreOptions& options, double noise_m);
 
 // `joints` maps the proposal's joint slots to prepared-pose joint indices; `limbs` are indexed
 // by slot. `pair_scores` = false skips the pair score (step 10: only step 8 uses pair scores).
-// With the adaptive scale and `pair_scores`, the frame's mutually best pairs first update
-// `noise` (which may be null: the prior noise_prior_m is used). Returns the number of joints
-// invalidated by limb pruning.
+// With the adaptive scale and `pair_scores`, the frame's mutually best pairs first vote into
+// `noise`, whose estimate then sets the kernels (null: the prior noise_prior_m is used).
+// Returns the number of joints invalidated by limb pruning.
 int ScoreProposals(const PreparedViews& views, std::span<const ViewGeometry> geometry, std::span<const int> joints,
                    std::span<const ResolvedLimb> limbs, const ScoreOptions& options, NoiseScale* noise,
                    ScoreScratch* scratch, Proposals* proposals, bool pair_scores = true);
