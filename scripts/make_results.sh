@@ -38,11 +38,11 @@ real() {  # name, then rpt eval arguments
   rm -f "$dir/predictions.json"  # large; rerun the command to get it
   echo "wrote $dir"
 }
-ours() { sed -n 3p "$OUT/real/$1/summary.md" | sed "s/^| [^|]*|/| $2 |/"; }
+ours() { sed -n 3p "$OUT/real/$1/summary.md" | sed "s#^| [^|]*|#| $2 |#"; }
 
 real_results() {
   sweep real/ablations-mvor --dataset mvor --root "$SHARED/mvor" --list results/ablations.json
-  sweep real/ablations-shelf4da--dataset shelf-4da --root "$SHARED/shelf/4d_association" --list results/ablations.json
+  sweep real/ablations-shelf4da --dataset shelf-4da --root "$SHARED/shelf/4d_association" --list results/ablations.json
   sweep real/scoring-mvor --dataset mvor --root "$SHARED/mvor" "${SCORE_GRID[@]}"
   sweep real/scoring-shelf4da --dataset shelf-4da --root "$SHARED/shelf/4d_association" "${SCORE_GRID[@]}"
   real mvor-openpose         --dataset mvor --root "$SHARED/mvor"
