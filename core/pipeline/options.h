@@ -76,7 +76,7 @@ struct FilterOptions {
 
 // Step 9.
 struct GroupOptions {
-  double max_distance_m = 0.3;  // mean core-joint distance for a proposal to join a group
+  double max_distance_m = 0.25;  // mean core-joint distance for a proposal to join a group
   // Groups with fewer proposals are dropped. 0 = automatic: 1 below 10 cameras, 2 from 10 up (the
   // paper recommends raising it with many cameras, where accidental consistent pairs appear).
   int min_group_size = 0;
