@@ -432,7 +432,8 @@ void PrintComparison(const std::vector<Column>& columns, const std::string& inpu
       if (std::find(joints.begin(), joints.end(), p.joint) == joints.end()) joints.push_back(p.joint);
     }
   }
-  std::printf("\nPer joint (%s):\n\n", Join(names, " / ").c_str());
+  std::printf("\nPer joint (%s; offsets: medians, down = along shoulders->hips, out = away from the midline):\n\n",
+              Join(names, " / ").c_str());
   std::printf("| joint | error median | missing | hidden | missing when hidden | confidence | offset down | offset out |\n");
   std::printf("|---|---:|---:|---:|---:|---:|---:|---:|\n");
   for (const std::string& joint : joints) {
@@ -487,8 +488,8 @@ DetectorStats ComputeStats(const std::vector<Sequence>& sequences, const Detecto
 
 // The input's own name for the column header: the dataset, else the labels file.
 std::string InputColumnName(const InputArgs& input) {
-  if (!input.dataset.empty()) return "input (" + input.dataset + ")";
-  return "input (" + std::filesystem::path(input.labels).filename().string() + ")";
+  if (!input.dataset.empty()) return "input: " + input.dataset;
+  return "input: " + std::filesystem::path(input.labels).filename().string();
 }
 
 void RunComparison(const DetectorStatsArgs& args) {
