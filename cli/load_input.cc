@@ -61,10 +61,8 @@ std::vector<Sequence> LoadInput(const InputArgs& args, bool require_detections, 
     sequences = ReadDataset(request);
   }
   if (args.simulate) {
-    SimulationOptions simulation;
-    simulation.seed = args.seed;
-    simulation.detector = args.simulate_perfect ? "perfect" : args.detector.empty() ? "realistic" : args.detector;
-    for (Sequence& s : sequences) SimulateDetections(simulation, &s);
+    SimulateInputDetections(args.simulate_perfect ? "perfect" : args.detector.empty() ? "realistic" : args.detector,
+                            args.seed, &sequences);
   } else if (!args.detections.empty() && std::filesystem::path(args.detections).extension() == ".pkl") {
     // VoxelPose caches are keyed "<camera>_<frame>": they need the sequence to map keys to ids.
     for (Sequence& s : sequences) {
@@ -102,6 +100,13 @@ std::vector<Sequence> LoadInput(const InputArgs& args, bool require_detections, 
     }
   }
   return sequences;
+}
+
+void SimulateInputDetections(const std::string& profile, uint64_t seed, std::vector<Sequence>* sequences) {
+  SimulationOptions simulation;
+  simulation.seed = seed;
+  simulation.detector = profile;
+  for (Sequence& s : *sequences) SimulateDetections(simulation, &s);
 }
 
 void PrintInputWarnings(const InputWarnings& warnings) {

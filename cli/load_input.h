@@ -32,6 +32,11 @@ void AddInputOptions(CLI::App* command, InputArgs* args);
 // per file and kind) are added to `warnings`: the sequences' own and the detection file's.
 std::vector<Sequence> LoadInput(const InputArgs& args, bool require_detections, InputWarnings* warnings);
 
+// Replaces the 2D detections (and the 2D labels) of every sequence by those of the simulated
+// detector `profile` (synthetic::DetectorProfileNames()), drawn from its GT and cameras: what
+// LoadInput does for --simulate --detector PROFILE --seed SEED.
+void SimulateInputDetections(const std::string& profile, uint64_t seed, std::vector<Sequence>* sequences);
+
 // Prints every entry as "warning: <line>" on stderr.
 void PrintInputWarnings(const InputWarnings& warnings);
 // The lines of `warnings` (InputWarning::Line()), e.g. for run.json.
