@@ -67,6 +67,11 @@ Json StatsJson(const DetectorStats& s) {
   j["persons_in_view"] = s.persons_in_view;
   j["persons_truncated"] = s.persons_truncated;
   j["truncated_share"] = s.truncated_share;
+  j["persons_in_any_view"] = s.persons_in_any_view;
+  j["persons_by_detecting_views"] = {{"0", s.persons_by_detecting_views[0]},
+                                     {"1", s.persons_by_detecting_views[1]},
+                                     {"2", s.persons_by_detecting_views[2]},
+                                     {"3+", s.persons_by_detecting_views[3]}};
   const char* classes[3] = {"mostly_visible", "mostly_hidden", "unknown"};
   for (int c = 0; c < 3; ++c) {
     j["detection_by_label"][classes[c]] = Json{{"persons", s.persons_by_label[c]},
@@ -191,6 +196,9 @@ void PrintMarkdown(const DetectorStats& s, const std::string& input) {
   std::printf("| hidden share (occluded or not labelled, views with 2D labels) | %s |\n", Percent(s.hidden_share).c_str());
   std::printf("| truncated persons (a joint outside the image) | %s of %ld |\n", Percent(s.truncated_share).c_str(),
               s.persons_in_view);
+  std::printf("| GT persons detected in 0 / 1 / 2 / 3+ views (of %ld in view of a camera, per frame) | %s / %s / %s / %s |\n",
+              s.persons_in_any_view, Percent(s.ShareDetectedInViews(0)).c_str(), Percent(s.ShareDetectedInViews(1)).c_str(),
+              Percent(s.ShareDetectedInViews(2)).c_str(), Percent(s.ShareDetectedInViews(3)).c_str());
   std::printf("| box diagonal, median px (whole / truncated persons) | %.0f / %.0f |\n", s.box_diagonal_px_median,
               s.box_diagonal_px_median_truncated);
   std::printf("| left/right swaps (closer to the mirrored GT joint) | %s of %ld |\n", Percent(s.swap_rate).c_str(),
@@ -312,6 +320,16 @@ const std::vector<std::pair<const char*, RowFunction>>& CompareRows() {
          return Cell{}
              .Add(s.persons_by_label[0] > 0, "%.3f", s.detection_rate_by_label[0])
              .Add(s.persons_by_label[1] > 0, "%.3f", s.detection_rate_by_label[1])
+             .Text();
+       }},
+      {"GT persons detected in 0 / 1 / 2 / 3+ views",
+       [](const DetectorStats& s) {
+         const bool any = s.persons_in_any_view > 0;
+         return Cell{}
+             .Add(any, "%.3f", s.ShareDetectedInViews(0))
+             .Add(any, "%.3f", s.ShareDetectedInViews(1))
+             .Add(any, "%.3f", s.ShareDetectedInViews(2))
+             .Add(any, "%.3f", s.ShareDetectedInViews(3))
              .Text();
        }},
       {"false positives per view",

@@ -132,8 +132,10 @@ void StatsAccumulator::Add(const Sequence& sequence) {
   }
 
   std::vector<ProjectedPerson> persons;
+  std::vector<int> detecting_views;  // per GT person of the frame; -1 = in no view
   for (const SequenceFrame& frame : sequence.frames) {
     if (frame.views.empty()) continue;
+    detecting_views.assign(frame.gt.num_persons(), -1);
     for (size_t c = 0; c < frame.views.size(); ++c) {
       const Camera& camera = sequence.cameras[c];
       const Poses2D& view = frame.views[c];
@@ -187,11 +189,13 @@ void StatsAccumulator::Add(const Sequence& sequence) {
         const int label_class = !view_labelled ? 2 : 2 * visible >= person.num_in_image ? 0 : 1;
         ++stats.gt_in_view;
         ++persons_in_view_;
+        detecting_views[person.gt_person] = std::max(detecting_views[person.gt_person], 0);
         ++persons_by_label_[label_class];
         persons_truncated_ += person.truncated;
         (person.truncated ? diagonals_truncated_ : diagonals_).push_back(person.diagonal);
         const int d = association.detection_of_person[i];
         if (d < 0) continue;
+        ++detecting_views[person.gt_person];
         ++stats.detected;
         ++detected_by_label_[label_class];
         const auto det = detections.Person(d);
@@ -287,6 +291,9 @@ void StatsAccumulator::Add(const Sequence& sequence) {
         }
       }
     }
+    for (int views : detecting_views) {
+      if (views >= 0) ++persons_by_detecting_views_[std::min(views, 3)];
+    }
   }
 }
 
@@ -311,6 +318,8 @@ DetectorStats StatsAccumulator::Finalize() const {
   out.persons_by_label = persons_by_label_;
   out.detected_by_label = detected_by_label_;
   for (int c = 0; c < 3; ++c) out.detection_rate_by_label[c] = Ratio(detected_by_label_[c], persons_by_label_[c]);
+  out.persons_by_detecting_views = persons_by_detecting_views_;
+  for (long n : persons_by_detecting_views_) out.persons_in_any_view += n;
   out.box_diagonal_px_median = Percentile(diagonals_, 0.5);
   out.box_diagonal_px_median_truncated = Percentile(diagonals_truncated_, 0.5);
   out.all = Summarize(all_);

@@ -105,6 +105,13 @@ struct DetectorStats {
   std::array<long, 3> persons_by_label{}, detected_by_label{};
   std::array<double, 3> detection_rate_by_label{};
   double box_diagonal_px_median = 0, box_diagonal_px_median_truncated = 0;
+  // Multi-view reach: GT persons (per frame, in view of at least one camera) by the number of
+  // views whose detections pair with them: 0, 1, 2, 3 or more. Triangulation needs 2.
+  std::array<long, 4> persons_by_detecting_views{};
+  long persons_in_any_view = 0;
+  double ShareDetectedInViews(int k) const {  // k = 0..3 (3: 3 or more)
+    return persons_in_any_view > 0 ? static_cast<double>(persons_by_detecting_views[k]) / persons_in_any_view : 0;
+  }
 
   // Relative joint errors.
   ErrorSummary all;
@@ -166,6 +173,7 @@ class StatsAccumulator {
   double fp_confidence_sum_ = 0;
   long fp_confidence_count_ = 0, detected_joint_count_ = 0, detected_count_ = 0;
   std::array<long, 3> persons_by_label_{}, detected_by_label_{};
+  std::array<long, 4> persons_by_detecting_views_{};
   std::array<long, 10> histogram_{};
 };
 
