@@ -12,8 +12,8 @@ NATIVE=$(grep -E '^RPT_MARCH_NATIVE:' "$BUILD/CMakeCache.txt" | cut -d= -f2-)
   echo "# Benchmarks"
   echo
   echo "Regenerate with \`bash scripts/make_bench.sh\` (after building). Single thread, 2D to 3D including"
-  echo "undistortion; medians over 5 passes after a warm-up pass; generated scenes with the realistic"
-  echo "simulated detector (bench/bench_scenes.cc). The baseline is a straightforward implementation of"
+  echo "undistortion; medians over 5 passes after a warm-up pass; generated scenes with the \`clean\`"
+  echo "simulated detector profile, the workload of every earlier run (bench/bench_scenes.cc; \`rpt bench --detector\` changes it). The baseline is a straightforward implementation of"
   echo "the same algorithm run in the same process (bench/baseline_triangulator.cc: SVD on every pair and"
   echo "joint, no pre-filter, fresh allocations per frame)."
   echo
