@@ -5,6 +5,9 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD="${1:-build}"
 RPT="$BUILD/rpt"
+# Pinned to one core where possible: on a shared 2-core machine migrations add 10-30 % noise.
+PIN=""
+command -v taskset > /dev/null && PIN="taskset -c $(( $(nproc) - 1 ))"
 cmake --build "$BUILD" --target rpt > /dev/null  # refresh the embedded git revision
 FLAGS=$(grep -E '^CMAKE_CXX_FLAGS_RELEASE:' "$BUILD/CMakeCache.txt" | cut -d= -f2-)
 NATIVE=$(grep -E '^RPT_MARCH_NATIVE:' "$BUILD/CMakeCache.txt" | cut -d= -f2-)
@@ -17,26 +20,26 @@ NATIVE=$(grep -E '^RPT_MARCH_NATIVE:' "$BUILD/CMakeCache.txt" | cut -d= -f2-)
   echo "the same algorithm run in the same process (bench/baseline_triangulator.cc: SVD on every pair and"
   echo "joint, no pre-filter, fresh allocations per frame)."
   echo
-  echo "- machine: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ //'), $(nproc) cores"
+  echo "- machine: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ //'), $(nproc) cores${PIN:+; timed runs pinned to one core ($PIN)}"
   echo "- compiler: $(c++ --version | head -1); flags: \`${FLAGS}\`, -march=native: ${NATIVE}"
   echo "- commit: $(git rev-parse --short=12 HEAD)$(git diff --quiet HEAD -- core cli bench datasets metrics || echo ' (with uncommitted changes)')"
   echo
   echo "## Standard scenes"
   echo
   echo '```'
-  "$RPT" bench --repeat 5 2>/dev/null
+  $PIN "$RPT" bench --repeat 5 2>/dev/null
   echo '```'
   echo
   echo "## Loading detections"
   echo
   echo '```'
-  "$RPT" bench --io --io-frames 10000
+  $PIN "$RPT" bench --io --io-frames 10000
   echo '```'
   echo
   echo "## Scaling (cameras with 4 people; people with 5 cameras)"
   echo
   echo '```'
-  "$RPT" bench --scaling --repeat 3 --baseline-frames 5 2>/dev/null
+  $PIN "$RPT" bench --scaling --repeat 3 --baseline-frames 5 2>/dev/null
   echo '```'
 } > results/bench.md
 echo "wrote results/bench.md"
