@@ -104,6 +104,7 @@ int RunCheck(const CheckArgs& args) {
       }
     }
   }
+  std::fflush(stdout);  // the table first, then the readers' corrections (stderr)
   PrintInputWarnings(warnings);
   std::printf("%d checks, %d failed, %d evaluations skipped\n", checked, failures, skipped);
   if (args.json) std::cout << report.dump(2) << "\n";
