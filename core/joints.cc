@@ -93,6 +93,18 @@ const JointNames& EvaluationJoints13() {
   return names;
 }
 
+int JointSide(std::string_view name) {
+  size_t start = 0;
+  while (start <= name.size()) {
+    const size_t end = std::min(name.find('_', start), name.size());
+    const std::string_view token = name.substr(start, end - start);
+    if (token == "left") return 1;
+    if (token == "right") return -1;
+    start = end + 1;
+  }
+  return 0;
+}
+
 std::string MirrorJointName(std::string_view name) {
   std::string out;
   size_t start = 0;

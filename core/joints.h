@@ -35,6 +35,10 @@ const JointNames& EvaluationJoints13();
 // wrist_right, hand_thumb_1_left -> hand_thumb_1_right; unchanged when it has none.
 std::string MirrorJointName(std::string_view name);
 
+// +1 for a joint of the left side, -1 for the right side, 0 otherwise (its "left" / "right"
+// token, '_'-separated).
+int JointSide(std::string_view name);
+
 // For each joint, the index of its left/right counterpart in `names` (itself when none).
 std::vector<int> MirrorIndices(const JointNames& names);
 

@@ -7,23 +7,11 @@
 #include <string_view>
 
 #include "core/errors.h"
+#include "core/joints.h"
 #include "core/text.h"
 
 namespace rpt::detector_stats {
 namespace {
-
-// +1 for a joint of the left side, -1 for the right, 0 otherwise ('_'-separated tokens).
-int Side(std::string_view name) {
-  size_t start = 0;
-  while (start <= name.size()) {
-    const size_t end = std::min(name.find('_', start), name.size());
-    const std::string_view token = name.substr(start, end - start);
-    if (token == "left") return 1;
-    if (token == "right") return -1;
-    start = end + 1;
-  }
-  return 0;
-}
 
 const PersonLabel2D* FindLabel(const SequenceFrame& frame, size_t view, int gt_person) {
   if (view >= frame.labels_2d.size()) return nullptr;
@@ -116,7 +104,7 @@ void StatsAccumulator::Add(const Sequence& sequence) {
   for (int k = 0; k < num_joints; ++k) {
     const int m = FindJoint(joints, MirrorJointName(joints[k]));
     mirror[k] = m != k ? m : -1;
-    side[k] = Side(joints[k]);
+    side[k] = JointSide(joints[k]);
   }
   // Shoulders and hips of the GT, for the body frame of the offsets.
   std::vector<int> body_index;

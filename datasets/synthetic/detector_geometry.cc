@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/joints.h"
 #include "datasets/synthetic/random.h"
 
 namespace rpt::synthetic {
@@ -13,18 +14,6 @@ namespace {
 constexpr uint64_t kCalibrationStream = 0xCA11B7A7E0000001ULL;
 
 }  // namespace
-
-int JointSide(std::string_view name) {
-  size_t start = 0;
-  while (start <= name.size()) {
-    const size_t end = std::min(name.find('_', start), name.size());
-    const std::string_view token = name.substr(start, end - start);
-    if (token == "left") return 1;
-    if (token == "right") return -1;
-    start = end + 1;
-  }
-  return 0;
-}
 
 double PixelsPerMetre(const Camera& camera, const Eigen::Vector3d& p_cam) {
   const double pinhole = 0.5 * (camera.K(0, 0) + camera.K(1, 1)) / std::max(p_cam.z(), 1e-3);

@@ -14,9 +14,6 @@
 
 namespace rpt::synthetic {
 
-// +1 for a joint of the left side, -1 for the right side, 0 otherwise ('_'-separated tokens).
-int JointSide(std::string_view name);
-
 // Pixels per metre at the camera-frame point `p_cam` (z > 0): the distance between the
 // projections of p_cam -+ 0.25 m along the camera's x axis, divided by 0.5 m; the pinhole value
 // mean(fx, fy) / z when a projection fails.

@@ -392,6 +392,13 @@ TEST(GroupProposals, MirroredDuplicateOfAPersonIsDropped) {
   EXPECT_EQ(GroupProposals(options, 5, mirror, &p, &groups, &scratch, &counters), 2);
 }
 
+TEST(JointSide, ReadsTheSideToken) {
+  EXPECT_EQ(JointSide("wrist_left"), 1);
+  EXPECT_EQ(JointSide("hand_thumb_1_right"), -1);
+  EXPECT_EQ(JointSide("nose"), 0);
+  EXPECT_EQ(JointSide("leftover_joint"), 0) << "tokens, not substrings";
+}
+
 TEST(MirrorJointName, SwapsSideTokens) {
   EXPECT_EQ(MirrorJointName("wrist_left"), "wrist_right");
   EXPECT_EQ(MirrorJointName("hand_thumb_1_right"), "hand_thumb_1_left");
