@@ -2,6 +2,7 @@
 #include "datasets/io/json_file.h"
 
 #include <algorithm>
+#include <cctype>
 
 #include "core/errors.h"
 #include "datasets/io/binary.h"
@@ -155,6 +156,20 @@ std::vector<double> JsonMatrix(const nlohmann::json& root, const std::string& po
     }
   }
   return out;
+}
+
+std::vector<std::string> JsonObjectKeysNumericOrder(const nlohmann::json& object) {
+  auto small_integer = [](const std::string& text) {
+    return !text.empty() && text.size() <= 9 &&
+           std::all_of(text.begin(), text.end(), [](unsigned char c) { return std::isdigit(c) != 0; });
+  };
+  std::vector<std::string> keys;
+  for (const auto& item : object.items()) keys.push_back(item.key());
+  if (std::all_of(keys.begin(), keys.end(), small_integer)) {
+    std::sort(keys.begin(), keys.end(),
+              [](const std::string& a, const std::string& b) { return std::stol(a) < std::stol(b); });
+  }
+  return keys;
 }
 
 }  // namespace rpt::io

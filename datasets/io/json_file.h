@@ -45,5 +45,8 @@ std::vector<double> JsonNumbers(const nlohmann::json& root, const std::string& p
 // files that store matrices flat, a flat array of rows*cols numbers.
 std::vector<double> JsonMatrix(const nlohmann::json& root, const std::string& pointer, const std::string& source,
                                std::size_t rows, std::size_t cols);
+// The keys of a JSON object (calibration files keyed by camera id) in the order nlohmann stores
+// them (lexicographic), re-sorted numerically when every key is a small non-negative integer.
+std::vector<std::string> JsonObjectKeysNumericOrder(const nlohmann::json& object);
 
 }  // namespace rpt::io

@@ -3,7 +3,6 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <string>
 
@@ -12,22 +11,6 @@
 
 namespace rpt {
 namespace {
-
-bool IsSmallInteger(const std::string& text) {
-  return !text.empty() && text.size() <= 9 &&
-         std::all_of(text.begin(), text.end(), [](unsigned char c) { return std::isdigit(c) != 0; });
-}
-
-// Camera ids, numerically ordered when every id is an integer.
-std::vector<std::string> CameraIds(const nlohmann::json& root) {
-  std::vector<std::string> ids;
-  for (const auto& item : root.items()) ids.push_back(item.key());
-  if (std::all_of(ids.begin(), ids.end(), IsSmallInteger)) {
-    std::sort(ids.begin(), ids.end(),
-              [](const std::string& a, const std::string& b) { return std::stol(a) < std::stol(b); });
-  }
-  return ids;
-}
 
 Eigen::Matrix3d RowMajor3x3(const double* v) { return Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(v); }
 
@@ -61,7 +44,7 @@ std::vector<Camera> ReadFourDaCalibration(const std::filesystem::path& path, Inp
   if (root.empty()) throw InputError(source + ": no cameras");
 
   std::vector<Camera> cameras;
-  for (const std::string& id : CameraIds(root)) {
+  for (const std::string& id : io::JsonObjectKeysNumericOrder(root)) {
     const std::string base = io::JsonPointerJoin("", id);
     if (!root.at(id).is_object()) throw InputError(source + ": " + base + ": expected an object with K, RT, imgSize");
     Camera camera;

@@ -2,7 +2,6 @@
 #include "datasets/readers/voxelpose_calibration.h"
 
 #include <algorithm>
-#include <cctype>
 #include <string>
 
 #include "core/errors.h"
@@ -11,23 +10,6 @@
 
 namespace rpt {
 namespace {
-
-bool IsSmallInteger(const std::string& text) {
-  return !text.empty() && text.size() <= 9 &&
-         std::all_of(text.begin(), text.end(), [](unsigned char c) { return std::isdigit(c) != 0; });
-}
-
-// Camera ids in file order as nlohmann stores them (lexicographic), re-sorted numerically when
-// every id is an integer.
-std::vector<std::string> CameraIds(const nlohmann::json& root) {
-  std::vector<std::string> ids;
-  for (const auto& item : root.items()) ids.push_back(item.key());
-  if (std::all_of(ids.begin(), ids.end(), IsSmallInteger)) {
-    std::sort(ids.begin(), ids.end(),
-              [](const std::string& a, const std::string& b) { return std::stol(a) < std::stol(b); });
-  }
-  return ids;
-}
 
 Eigen::Matrix3d RowMajor3x3(const std::vector<double>& v) {
   return Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(v.data());
@@ -50,7 +32,7 @@ std::vector<Camera> ReadVoxelPoseCalibration(const std::filesystem::path& path, 
   if (root.empty()) throw InputError(source + ": no cameras");
 
   std::vector<Camera> cameras;
-  for (const std::string& id : CameraIds(root)) {
+  for (const std::string& id : io::JsonObjectKeysNumericOrder(root)) {
     const std::string base = io::JsonPointerJoin("", id);
     if (!root.at(id).is_object()) {
       throw InputError(source + ": " + base + ": expected an object with R, T, fx, fy, cx, cy");
