@@ -7,17 +7,12 @@
 #include <utility>
 
 #include "core/errors.h"
-#include "metrics/average_precision.h"
+#include "metrics/reducers/reducers.h"
 
 namespace rpt::metrics {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-double Percent(double numerator, double denominator) {
-  return denominator > 0 ? 100.0 * numerator / denominator : kNaN;
-}
 
 void CheckPoses(const Poses3D& poses, const JointNames& names, std::string_view what, std::string_view frame_id) {
   const size_t expected = static_cast<size_t>(poses.num_persons()) * poses.num_joints * 4;
@@ -53,11 +48,12 @@ MetricsAccumulator::MetricsAccumulator(const EvalOptions& options) : options_(op
   options_.Check();
   evaluated_ = options_.EvaluatedJoints();
   pcp_layout_ = MakeGenericPcpLayout(evaluated_);
-  gt_valid_per_joint_.assign(evaluated_.size(), 0);
-  pcp_total_.assign(pcp_layout_.parts.size(), 0);
-  pcp_correct_nearest_.assign(pcp_layout_.parts.size(), 0);
-  group_num_joints_.assign(WholeBodyGroups().size(), 0);
-  if (options_.legacy_pcp.layout != LegacyPcpLayout::kNone) legacy_.emplace(options_.legacy_pcp);
+  records_.evaluated = evaluated_;
+  records_.gt_valid_per_joint.assign(evaluated_.size(), 0);
+  records_.pcp_total.assign(pcp_layout_.parts.size(), 0);
+  records_.pcp_correct_nearest.assign(pcp_layout_.parts.size(), 0);
+  records_.group_num_joints.assign(WholeBodyGroups().size(), 0);
+  if (options_.legacy_pcp.layout != LegacyPcpLayout::kNone) records_.legacy.emplace(options_.legacy_pcp);
 }
 
 void MetricsAccumulator::UpdateLayout(const JointNames& gt_names, const JointNames& pred_names) {
@@ -103,7 +99,7 @@ void MetricsAccumulator::UpdateLayout(const JointNames& gt_names, const JointNam
     }
   }
 
-  if (legacy_) {
+  if (records_.legacy) {
     const JointNames& shelf = options_.legacy_pcp.gt_joints.empty() ? Shelf14Joints() : options_.legacy_pcp.gt_joints;
     if (!gt_names.empty()) layout.gt_legacy = MapJointNames(shelf, gt_names, "ground-truth (legacy PCP, Shelf14)");
     if (!pred_names.empty()) {
@@ -116,12 +112,12 @@ void MetricsAccumulator::UpdateLayout(const JointNames& gt_names, const JointNam
   // Only report group sizes for lists that actually carry persons' joints.
   if (options_.wholebody_groups && !gt_names.empty() && !pred_names.empty()) {
     for (size_t k = 0; k < WholeBodyGroups().size(); ++k) {
-      group_num_joints_[k] = static_cast<int>(layout_.gt_group[k].size());
+      records_.group_num_joints[k] = static_cast<int>(layout_.gt_group[k].size());
     }
   }
 }
 
-MetricsAccumulator::PairRecord MetricsAccumulator::MakePair(const Poses3D& gt,
+PairRecord MetricsAccumulator::MakePair(const Poses3D& gt,
                                                             int gt_idx,
                                                             const EvalPerson& gt_person,
                                                             const Poses3D& predictions,
@@ -199,7 +195,7 @@ void MetricsAccumulator::AddLegacyFrame(const Poses3D& gt, const Poses3D& predic
     }
     preds.push_back(CocoToShelf14(coco, options_.legacy_pcp.layout));
   }
-  legacy_->AddFrame(actors, preds);
+  records_.legacy->AddFrame(actors, preds);
 }
 
 void MetricsAccumulator::Add(std::string_view frame_id,
@@ -218,7 +214,7 @@ void MetricsAccumulator::Add(std::string_view frame_id,
     throw InputError("metrics: frame '" + std::string(frame_id) + "' was added twice");
   }
   UpdateLayout(gt_names, pred_names);
-  ++num_frames_;
+  ++records_.num_frames;
 
   // Kept GT persons: at least one valid evaluated joint.
   std::vector<EvalPerson> gt_persons;
@@ -226,10 +222,10 @@ void MetricsAccumulator::Add(std::string_view frame_id,
   for (int g = 0; g < gt.num_persons(); ++g) {
     EvalPerson person = ExtractPerson(gt, g, layout_.gt_eval, options_.min_gt_score);
     if (!person.valid.any()) {
-      ++num_dropped_gt_;
+      ++records_.num_dropped_gt;
       continue;
     }
-    for (Eigen::Index j = 0; j < person.valid.size(); ++j) gt_valid_per_joint_[j] += person.valid(j) ? 1 : 0;
+    for (Eigen::Index j = 0; j < person.valid.size(); ++j) records_.gt_valid_per_joint[j] += person.valid(j) ? 1 : 0;
     gt_persons.push_back(std::move(person));
     gt_source.push_back(g);
   }
@@ -242,23 +238,24 @@ void MetricsAccumulator::Add(std::string_view frame_id,
 
   const int num_gt = static_cast<int>(gt_persons.size());
   const int num_pred = static_cast<int>(pred_persons.size());
-  const int gt_id_base = num_gt_;
-  num_gt_ += num_gt;
-  if (num_gt > 0) ++num_frames_with_gt_;
+  const int gt_id_base = records_.num_gt;
+  records_.num_gt += num_gt;
+  if (num_gt > 0) ++records_.num_frames_with_gt;
   const bool counted = num_gt > 0 || options_.count_preds_without_gt;
-  num_pred_total_ += num_pred;
-  if (counted) num_pred_counted_ += num_pred;
+  records_.num_pred_total += num_pred;
+  if (counted) records_.num_pred_counted += num_pred;
 
   Eigen::MatrixXd cost(num_pred, num_gt);
   for (int p = 0; p < num_pred; ++p) {
     for (int g = 0; g < num_gt; ++g) cost(p, g) = PersonMpjpe(gt_persons[g], pred_persons[p]);
   }
 
-  // Candidate pairs of this frame; (pred, gt) -> index in records_.
-  const size_t first_record = records_.size();
+  // Candidate pairs of this frame; (pred, gt) -> index in records_.pairs.
+  std::vector<PairRecord>& pairs = records_.pairs;
+  const size_t first_record = pairs.size();
   auto find_or_add = [&](int p, int g) -> PairRecord& {
-    for (size_t r = first_record; r < records_.size(); ++r) {
-      if (records_[r].pred_idx == p && records_[r].gt_idx == g) return records_[r];
+    for (size_t r = first_record; r < pairs.size(); ++r) {
+      if (pairs[r].pred_idx == p && pairs[r].gt_idx == g) return pairs[r];
     }
     PairRecord record;
     if (g >= 0) {
@@ -270,8 +267,8 @@ void MetricsAccumulator::Add(std::string_view frame_id,
     record.pred_idx = p;
     record.gt_idx = g;
     record.counted = counted;
-    records_.push_back(std::move(record));
-    return records_.back();
+    pairs.push_back(std::move(record));
+    return pairs.back();
   };
 
   const std::vector<int> nearest = NearestGt(cost);
@@ -295,161 +292,18 @@ void MetricsAccumulator::Add(std::string_view frame_id,
     const std::vector<PartOutcome> outcomes = EvaluateGenericPcp(pcp_layout_, gt_persons[g], pred, options_.pcp_alpha);
     for (size_t k = 0; k < outcomes.size(); ++k) {
       if (outcomes[k] == PartOutcome::kNotEvaluated) continue;
-      ++pcp_total_[k];
-      if (outcomes[k] == PartOutcome::kCorrect) ++pcp_correct_nearest_[k];
+      ++records_.pcp_total[k];
+      if (outcomes[k] == PartOutcome::kCorrect) ++records_.pcp_correct_nearest[k];
     }
   }
 
-  if (legacy_) AddLegacyFrame(gt, predictions);
+  if (records_.legacy) AddLegacyFrame(gt, predictions);
 }
 
 MetricsResult MetricsAccumulator::Finalize() const {
   MetricsResult result;
-  result.num_frames = num_frames_;
-  result.num_frames_with_gt = num_frames_with_gt_;
-  result.num_gt_persons = num_gt_;
-  result.num_dropped_gt_persons = num_dropped_gt_;
-  result.num_predictions = num_pred_counted_;
-  result.num_predictions_total = num_pred_total_;
-
-  // The nearest-GT records drive greedy matching and AP.
-  std::vector<size_t> nearest_idx;
-  std::vector<MatchRecord> nearest_records;
-  std::vector<MatchRecord> ap_records;
-  for (size_t r = 0; r < records_.size(); ++r) {
-    if (!(records_[r].flags & kNearest)) continue;
-    nearest_idx.push_back(r);
-    nearest_records.push_back(records_[r].match);
-    if (records_[r].counted) ap_records.push_back(records_[r].match);
-  }
-
-  // Match sets: at the gate, at 100 mm and at 500 mm.
-  std::vector<bool> in_match(records_.size(), false), in_100(records_.size(), false),
-      in_500(records_.size(), false);
-  if (options_.matching == MatchingMode::kGreedyScore) {
-    const std::pair<double, std::vector<bool>*> sets[] = {
-        {options_.match_threshold_mm, &in_match}, {100.0, &in_100}, {500.0, &in_500}};
-    for (const auto& [threshold, set] : sets) {
-      const std::vector<bool> is_tp = GreedyMatch(nearest_records, threshold);
-      for (size_t i = 0; i < is_tp.size(); ++i) (*set)[nearest_idx[i]] = is_tp[i];
-    }
-  } else {
-    for (size_t r = 0; r < records_.size(); ++r) {
-      in_match[r] = records_[r].flags & kHungarianMatch;
-      in_100[r] = records_[r].flags & kHungarian100;
-      in_500[r] = records_[r].flags & kHungarian500;
-    }
-  }
-
-  int tp = 0, tp_100 = 0, tp_500 = 0;
-  for (size_t r = 0; r < records_.size(); ++r) {
-    tp += in_match[r] ? 1 : 0;
-    tp_100 += in_100[r] ? 1 : 0;
-    tp_500 += in_500[r] ? 1 : 0;
-  }
-  const int fp = num_pred_counted_ - tp;
-  const int fn = num_gt_ - tp;
-  result.num_matches = tp;
-  result.recall_100 = Percent(tp_100, num_gt_);
-  result.recall_500 = Percent(tp_500, num_gt_);
-  result.invalid = Percent(fp, num_pred_counted_);
-  result.f1 = Percent(2.0 * tp, 2.0 * tp + fp + fn);
-
-  // Joint- and person-level errors over the matched pairs.
-  const size_t num_joints = evaluated_.size();
-  std::vector<double> joint_error_sum(num_joints, 0.0);
-  std::vector<int> joint_error_count(num_joints, 0), joint_hits_100(num_joints, 0), joint_matched_gt(num_joints, 0);
-  int hits_100 = 0, hits_500 = 0, matched_valid = 0;
-  double mpjpe_sum = 0.0;
-  int mpjpe_count = 0;
-  std::vector<double> group_sum(WholeBodyGroups().size(), 0.0);
-  std::vector<int> group_count(WholeBodyGroups().size(), 0);
-  std::vector<int> pcp_correct_matched(pcp_layout_.parts.size(), 0);
-  for (size_t r = 0; r < records_.size(); ++r) {
-    if (!in_match[r]) continue;
-    const PairRecord& record = records_[r];
-    if (std::isnan(record.report_error_mm)) {
-      ++result.num_unaligned_matches;
-    } else {
-      mpjpe_sum += record.report_error_mm;
-      ++mpjpe_count;
-    }
-    for (size_t j = 0; j < num_joints; ++j) {
-      const double e = record.joint_errors(j);
-      if (std::isnan(e)) continue;  // GT-invalid
-      ++matched_valid;
-      ++joint_matched_gt[j];
-      if (std::isinf(e)) ++result.num_missing_pred_joints;
-      if (e < 100.0) {
-        ++hits_100;
-        ++joint_hits_100[j];
-      }
-      if (e < 500.0) ++hits_500;
-      const double reported = record.report_joint_errors(j);
-      if (std::isfinite(reported)) {
-        joint_error_sum[j] += reported;
-        ++joint_error_count[j];
-      }
-    }
-    for (size_t k = 0; k < record.group_errors.size(); ++k) {
-      if (std::isnan(record.group_errors[k])) continue;
-      group_sum[k] += record.group_errors[k];
-      ++group_count[k];
-    }
-    for (size_t k = 0; k < record.pcp.size(); ++k) {
-      if (record.pcp[k] == PartOutcome::kCorrect) ++pcp_correct_matched[k];
-    }
-  }
-  result.mpjpe_mm = mpjpe_count > 0 ? mpjpe_sum / mpjpe_count : kNaN;
-
-  int all_valid = 0;
-  for (const int n : gt_valid_per_joint_) all_valid += n;
-  const bool all_gt = options_.pck_denominator == PckDenominator::kAllGt;
-  const int pck_denominator = all_gt ? all_valid : matched_valid;
-  result.pck_100 = Percent(hits_100, pck_denominator);
-  result.pck_500 = Percent(hits_500, pck_denominator);
-
-  for (size_t j = 0; j < num_joints; ++j) {
-    JointResult joint;
-    joint.name = evaluated_[j];
-    joint.count = joint_error_count[j];
-    joint.mean_error_mm = joint.count > 0 ? joint_error_sum[j] / joint.count : kNaN;
-    joint.num_gt = all_gt ? gt_valid_per_joint_[j] : joint_matched_gt[j];
-    joint.pck_100 = Percent(joint_hits_100[j], joint.num_gt);
-    result.joints.push_back(joint);
-  }
-
-  for (size_t k = 0; k < kApThresholdsMm.size(); ++k) {
-    result.ap[k] = 100.0 * AveragePrecision(ap_records, num_gt_, kApThresholdsMm[k]);
-  }
-
-  // Generic PCP, pooled over all evaluable parts of all GT persons.
-  const bool nearest_pcp = options_.pcp_matching == PcpMatching::kNearestPrediction;
-  int pcp_correct = 0, pcp_total = 0;
-  for (size_t k = 0; k < pcp_layout_.parts.size(); ++k) {
-    PcpPartResult part;
-    part.name = GenericPcpParts()[k].name;
-    part.correct = nearest_pcp ? pcp_correct_nearest_[k] : pcp_correct_matched[k];
-    part.total = pcp_total_[k];
-    part.pcp = Percent(part.correct, part.total);
-    pcp_correct += part.correct;
-    pcp_total += part.total;
-    result.pcp_parts.push_back(part);
-  }
-  result.pcp = Percent(pcp_correct, pcp_total);
-
-  if (options_.wholebody_groups) {
-    for (size_t k = 0; k < WholeBodyGroups().size(); ++k) {
-      GroupResult group;
-      group.name = WholeBodyGroups()[k].name;
-      group.num_persons = group_count[k];
-      group.num_joints = group_num_joints_[k];
-      group.mpjpe_mm = group_count[k] > 0 ? group_sum[k] / group_count[k] : kNaN;
-      result.wholebody.push_back(group);
-    }
-  }
-
-  if (legacy_) result.legacy_pcp = legacy_->Finalize();
+  const MatchSets matches = SelectMatches(records_, options_);
+  for (const MetricReducer reduce : MetricReducers()) reduce(records_, matches, options_, &result);
   return result;
 }
 
