@@ -1,28 +1,23 @@
 // SPDX-License-Identifier: MIT
-// `rpt check --thresholds FILE`: re-runs every evaluation listed in the file and exits 1 when a
-// metric falls below its floor ("min") or rises above its ceiling ("max"), printing expected vs
-// achieved. Entries whose data is missing (e.g. ../shared/data on a machine without it) are
-// reported as skipped.
-//
-// File format:
-//   {"evaluations": [{"name": "...", "dataset": "synthetic", "root": "relative/to/this/file",
-//                     "params": {"cameras": "5"}, "set": {"merge.top_k": "0"},
-//                     "simulate": false, "detector": "realistic", "seed": 1,
-//                     "labels": "...", "detections": "...",
-//                     "min": {"recall500": 99.0}, "max": {"mpjpe_mm": 30.0, "frame_time_us_median": 2000}}]}
+// `rpt check --thresholds FILE`: validates the whole thresholds file (cli/thresholds_file.h; exit 2
+// naming the file and JSON path when it is invalid), then re-runs every evaluation listed and exits 1
+// when a metric falls below its floor ("min") or rises above its ceiling ("max"), printing expected
+// vs achieved. An evaluation that fails to run is named in the table and the others still run (exit
+// 1 at the end). Entries whose data is missing (e.g. ../shared/data on a machine without it) are
+// reported as skipped, or as failures with --fail-on-skip. --junit FILE writes one JUnit testcase per
+// check for CI systems.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 
 #include "cli/commands.h"
-#include "cli/config_args.h"
-#include "cli/json_text.h"
+#include "cli/junit_xml.h"
 #include "cli/load_input.h"
 #include "cli/results_writer.h"
 #include "cli/run_sequence.h"
+#include "cli/thresholds_file.h"
 #include "core/errors.h"
-#include "datasets/io/json_file.h"
 
 namespace rpt::cli {
 namespace {
@@ -34,81 +29,120 @@ struct CheckArgs {
   std::string thresholds;
   std::string only;
   bool json = false;
+  bool fail_on_skip = false;
+  std::string junit;
 };
 
+std::string CheckName(const ThresholdCheck& check) {
+  char limit[32];
+  std::snprintf(limit, sizeof(limit), "%g", check.limit);
+  return check.metric + " " + check.bound + " " + limit;
+}
 
-// Exit status of the check (0 all pass, 1 a threshold failed).
-int RunCheck(const CheckArgs& args) {
-  const Json root = io::LoadJsonFile(args.thresholds);
-  const fs::path base = fs::path(args.thresholds).parent_path();
-  if (!root.contains("evaluations") || !root["evaluations"].is_array()) {
-    throw InputError(args.thresholds + ": expected {\"evaluations\": [...]}");
+// Per evaluation outcome: every check passes, fails, errors or is skipped.
+class CheckReport {
+ public:
+  void Checked(const ThresholdEvaluation& e, const ThresholdCheck& check, double achieved, bool pass) {
+    ++checked_;
+    failures_ += pass ? 0 : 1;
+    std::printf("%-40s %-22s %6s %10.2f %10.2f  %s\n", e.name.c_str(), check.metric.c_str(), check.bound.c_str(),
+                check.limit, achieved, pass ? "ok" : "FAILED");
+    json_.push_back({{"evaluation", e.name}, {"metric", check.metric}, {"bound", check.bound},
+                     {"expected", check.limit}, {"achieved", std::isnan(achieved) ? Json(nullptr) : Json(achieved)},
+                     {"pass", pass}});
+    char message[128];
+    std::snprintf(message, sizeof(message), "expected %s %g, achieved %.4g", check.bound == "min" ? ">=" : "<=",
+                  check.limit, achieved);
+    cases_.push_back({e.name, CheckName(check), pass ? JunitCase::Outcome::kPass : JunitCase::Outcome::kFailure,
+                      pass ? "" : message});
   }
-  int failures = 0, checked = 0, skipped = 0;
+
+  void Skipped(const ThresholdEvaluation& e, bool as_failure) {
+    ++skipped_;
+    const std::string why = e.required_path + " absent";
+    std::printf("%-40s %-22s %6s %10s %10s  %s (%s)\n", e.name.c_str(), "-", "-", "-", "-",
+                as_failure ? "SKIPPED, failing" : "skipped", why.c_str());
+    AddCases(e, as_failure ? JunitCase::Outcome::kFailure : JunitCase::Outcome::kSkipped,
+             as_failure ? "skipped (" + why + "), --fail-on-skip" : "skipped (" + why + ")");
+  }
+
+  void Errored(const ThresholdEvaluation& e, const std::string& what) {
+    ++errored_;
+    std::printf("%-40s %-22s %6s %10s %10s  ERROR: %s\n", e.name.c_str(), "-", "-", "-", "-", what.c_str());
+    json_.push_back({{"evaluation", e.name}, {"error", what}, {"pass", false}});
+    AddCases(e, JunitCase::Outcome::kError, what);
+  }
+
+  void PrintTotals() const {
+    std::printf("%d checks, %d failed, %d evaluations skipped", checked_, failures_, skipped_);
+    if (errored_ > 0) std::printf(", %d evaluations failed to run", errored_);
+    std::printf("\n");
+  }
+
+  int ExitCode(bool fail_on_skip) const {
+    return failures_ > 0 || errored_ > 0 || (fail_on_skip && skipped_ > 0) ? 1 : 0;
+  }
+  const Json& json() const { return json_; }
+  const std::vector<JunitCase>& cases() const { return cases_; }
+
+ private:
+  // One case per check of an evaluation that did not produce numbers (one for the evaluation when it has none).
+  void AddCases(const ThresholdEvaluation& e, JunitCase::Outcome outcome, const std::string& message) {
+    if (e.checks.empty()) cases_.push_back({e.name, "evaluation", outcome, message});
+    for (const ThresholdCheck& check : e.checks) cases_.push_back({e.name, CheckName(check), outcome, message});
+  }
+
+  int checked_ = 0, failures_ = 0, skipped_ = 0, errored_ = 0;
+  Json json_ = Json::array();
+  std::vector<JunitCase> cases_;
+};
+
+// Runs one evaluation and checks its bounds; throws what the readers or the pipeline throw.
+void RunEvaluation(const ThresholdEvaluation& e, InputWarnings* warnings, CheckReport* report) {
+  RunOptions options;
+  options.triangulator = e.config.triangulator;
+  options.eval = e.config.metrics;
+  options.progress = false;
+  options.threads = 1;  // timings comparable across machines with different core counts
+  InputWarnings loaded;
+  const RunResult run = RunSequences(LoadInput(e.input, true, &loaded), options);
+  warnings->MergeRepeated(loaded);
+  const nlohmann::ordered_json summary = SummaryJson(run);
+  for (const ThresholdCheck& check : e.checks) {
+    // A metric the run does not report (e.g. legacy_pcp without metrics.legacy_pcp) fails its check.
+    const bool is_null = !summary.contains(check.metric) || summary[check.metric].is_null();
+    const double achieved = is_null ? std::nan("") : summary[check.metric].get<double>();
+    const bool pass = !is_null && (check.bound == "min" ? achieved >= check.limit : achieved <= check.limit);
+    report->Checked(e, check, achieved, pass);
+  }
+}
+
+// Exit status of the check (0 all pass, 1 a check failed, an evaluation failed or, with --fail-on-skip, was skipped).
+int RunCheck(const CheckArgs& args) {
+  const ThresholdsFile file = ReadThresholdsFile(args.thresholds);
+  CheckReport report;
   // Evaluations often read the same files: one line per file and kind for the whole check.
   InputWarnings warnings;
-  Json report = Json::array();
   std::printf("%-40s %-22s %6s %10s %10s  %s\n", "evaluation", "metric", "bound", "expected", "achieved", "status");
-  for (size_t i = 0; i < root["evaluations"].size(); ++i) {
-    const Json& e = root["evaluations"][i];
-    const std::string where = args.thresholds + ": /evaluations/" + std::to_string(i);
-    if (!e.is_object() || !e.contains("name")) throw InputError(where + ": expected an object with a \"name\"");
-    const std::string name = e["name"].get<std::string>();
-    if (!args.only.empty() && name.find(args.only) == std::string::npos) continue;
-    InputArgs input;
-    input.dataset = e.value("dataset", "");
-    input.labels = e.contains("labels") ? (base / e["labels"].get<std::string>()).string() : "";
-    input.detections = e.contains("detections") ? (base / e["detections"].get<std::string>()).string() : "";
-    input.simulate = e.value("simulate", false);
-    input.simulate_perfect = e.value("simulate_perfect", false);  // deprecated: "detector": "perfect"
-    input.detector = e.value("detector", "");
-    input.seed = e.value("seed", 1);
-    if (e.contains("root")) input.root = (base / e["root"].get<std::string>()).string();
-    const Json params = e.value("params", Json::object());  // named: items() must not outlive it
-    for (const auto& [key, value] : params.items()) input.params.push_back(key + "=" + JsonValueText(value));
-    const bool needs_files = !input.root.empty() || !input.labels.empty() || !input.detections.empty();
-    const std::string needed = !input.root.empty() ? input.root : !input.labels.empty() ? input.labels : input.detections;
-    if (needs_files && !fs::exists(needed)) {
-      std::printf("%-40s %-22s %6s %10s %10s  skipped (%s absent)\n", name.c_str(), "-", "-", "-", "-", needed.c_str());
-      ++skipped;
+  for (const ThresholdEvaluation& e : file.evaluations) {
+    if (!args.only.empty() && e.name.find(args.only) == std::string::npos) continue;
+    if (!e.required_path.empty() && !fs::exists(e.required_path)) {
+      report.Skipped(e, args.fail_on_skip);
       continue;
     }
-    ConfigArgs config_args;
-    const Json set = e.value("set", Json::object());
-    for (const auto& [key, value] : set.items()) config_args.overrides.push_back(key + "=" + JsonValueText(value));
-    const Config config = ResolveConfig(config_args);
-    RunOptions options;
-    options.triangulator = config.triangulator;
-    options.eval = config.metrics;
-    options.progress = false;
-    options.threads = 1;  // timings comparable across machines with different core counts
-    InputWarnings loaded;
-    const RunResult run = RunSequences(LoadInput(input, true, &loaded), options);
-    warnings.MergeRepeated(loaded);
-    const nlohmann::ordered_json summary = SummaryJson(run);
-    for (const char* bound : {"min", "max"}) {
-      const Json limits = e.value(bound, Json::object());
-      for (const auto& [metric, expected] : limits.items()) {
-        if (!expected.is_number()) throw InputError(where + "/" + bound + "/" + metric + ": expected a number");
-        if (!summary.contains(metric)) throw InputError(where + "/" + bound + ": unknown metric '" + metric + "'");
-        const bool is_null = summary[metric].is_null();
-        const double achieved = is_null ? std::nan("") : summary[metric].get<double>();
-        const double limit = expected.get<double>();
-        const bool pass = !is_null && (std::string(bound) == "min" ? achieved >= limit : achieved <= limit);
-        ++checked;
-        failures += pass ? 0 : 1;
-        std::printf("%-40s %-22s %6s %10.2f %10.2f  %s\n", name.c_str(), metric.c_str(), bound, limit, achieved,
-                    pass ? "ok" : "FAILED");
-        report.push_back({{"evaluation", name}, {"metric", metric}, {"bound", bound}, {"expected", limit},
-                          {"achieved", is_null ? Json(nullptr) : Json(achieved)}, {"pass", pass}});
-      }
+    try {
+      RunEvaluation(e, &warnings, &report);
+    } catch (const std::exception& error) {
+      report.Errored(e, error.what());
     }
+    std::fflush(stdout);
   }
   std::fflush(stdout);  // the table first, then the readers' corrections (stderr)
   PrintInputWarnings(warnings);
-  std::printf("%d checks, %d failed, %d evaluations skipped\n", checked, failures, skipped);
-  if (args.json) std::cout << report.dump(2) << "\n";
-  return failures > 0 ? 1 : 0;
+  report.PrintTotals();
+  if (args.json) std::cout << report.json().dump(2) << "\n";
+  if (!args.junit.empty()) WriteJunitXml(args.junit, "rpt check " + args.thresholds, report.cases());
+  return report.ExitCode(args.fail_on_skip);
 }
 
 }  // namespace
@@ -119,6 +153,10 @@ void RegisterCheckCommand(CLI::App& app, int* exit_code) {
   command->add_option("--thresholds", args->thresholds, "thresholds JSON (e.g. results/thresholds.json)")->required();
   command->add_option("--only", args->only, "only evaluations whose name contains this text");
   command->add_flag("--json", args->json, "also print the checks as JSON");
+  command->add_flag("--fail-on-skip", args->fail_on_skip,
+                    "evaluations skipped for missing data count as failures (exit 1)");
+  command->add_option("--junit", args->junit, "also write the checks as JUnit XML to this file (one testcase per check)");
+  command->footer(ThresholdsSchemaText());
   command->callback([args, exit_code] { *exit_code = RunCheck(*args); });
 }
 

@@ -1,0 +1,155 @@
+// SPDX-License-Identifier: MIT
+// rpt check: the thresholds file is validated before anything runs, a failing evaluation is named
+// while the others still run, --fail-on-skip, and --junit writes well-formed JUnit XML.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "cli/junit_xml.h"
+#include "tests/cli/cli_test_util.h"
+#include "tests/cli/xml_check.h"
+
+namespace rpt {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A tiny synthetic evaluation that passes its one check.
+const char* const kTinyEvaluation = R"({"name": "tiny", "dataset": "synthetic",
+    "params": {"frames": 10, "people": 2, "noise": "clean"}, "min": {"recall500": 50}})";
+
+struct CheckRun {
+  test::CommandResult result;
+  fs::path file;
+};
+
+CheckRun RunCheck(const fs::path& dir, const std::string& name, const std::string& json, const std::string& flags = "") {
+  const fs::path file = dir / name;
+  std::ofstream(file) << json;
+  return {test::RunRpt("check --thresholds " + file.string() + " " + flags), file};
+}
+
+class CheckCommandTest : public ::testing::Test {
+ protected:
+  void SetUp() override { dir_ = test::TempDir("check_command"); }
+  void TearDown() override { fs::remove_all(dir_); }
+  fs::path dir_;
+};
+
+TEST_F(CheckCommandTest, InvalidFilesExitWith2NamingFileAndJsonPathBeforeAnythingRuns) {
+  struct Case {
+    std::string evaluation;  // the second evaluation (the first is valid and would run)
+    std::string expected;    // in the message, after "<file>: "
+  };
+  const Case cases[] = {
+      {R"({"name": "x", "datset": "synthetic"})", "/evaluations/1/datset: unknown key 'datset' (did you mean 'dataset'?)"},
+      {R"({"name": "x", "dataset": "shelff"})", "/evaluations/1/dataset: unknown dataset 'shelff' (did you mean 'shelf'?)"},
+      {R"({"name": "x", "dataset": "synthetic", "min": {"recal500": 1}})",
+       "/evaluations/1/min/recal500: unknown metric 'recal500' (did you mean 'recall500'?)"},
+      {R"({"name": "x", "dataset": "synthetic", "max": {"mpjpe_mm": "30"}})",
+       "/evaluations/1/max/mpjpe_mm: expected a number, got string"},
+      {R"({"name": "x", "dataset": "synthetic", "simulate": "yes"})", "/evaluations/1/simulate: expected true or false"},
+      {R"({"name": 3, "dataset": "synthetic"})", "/evaluations/1/name: expected a string"},
+      {R"({"dataset": "synthetic"})", "/evaluations/1: missing \"name\""},
+      {R"({"name": "x", "dataset": "synthetic", "seed": -1})", "/evaluations/1/seed: expected a non-negative integer"},
+      {R"({"name": "x", "dataset": "synthetic", "set": {"merge.no_such_option": 1}})", "/evaluations/1/set: "},
+      {R"({"name": "x", "dataset": "synthetic", "params": {"cameras": [1]}})", "/evaluations/1/params/cameras: expected"},
+      {R"({"name": "x", "dataset": "synthetic", "params": {"camras": 3}})",
+       "/evaluations/1/params/camras: dataset 'synthetic' has no parameter 'camras' (did you mean 'cameras'?)"},
+  };
+  for (const Case& c : cases) {
+    const CheckRun run = RunCheck(dir_, "bad.json", std::string(R"({"evaluations": [)") + kTinyEvaluation + ", " +
+                                                        c.evaluation + "]}");
+    EXPECT_EQ(run.result.exit_code, 2) << c.evaluation << "\n" << run.result.err;
+    EXPECT_NE(run.result.err.find(run.file.string() + ": " + c.expected), std::string::npos)
+        << c.evaluation << "\n" << run.result.err;
+    EXPECT_EQ(run.result.out, "") << "nothing runs before the file is valid";
+  }
+  const CheckRun top = RunCheck(dir_, "top.json", R"({"evaluation": []})");
+  EXPECT_EQ(top.result.exit_code, 2);
+  EXPECT_NE(top.result.err.find(": /evaluation: unknown key 'evaluation' (did you mean 'evaluations'?)"),
+            std::string::npos)
+      << top.result.err;
+}
+
+TEST_F(CheckCommandTest, AFailingEvaluationIsNamedAndTheOthersStillRun) {
+  std::ofstream(dir_ / "broken_labels.json") << "{ not json";
+  const CheckRun run = RunCheck(dir_, "thresholds.json",
+                                std::string(R"({"evaluations": [{"name": "broken", "labels": "broken_labels.json",
+                                    "simulate": true, "min": {"pcp": 1}}, )") +
+                                    kTinyEvaluation + "]}");
+  EXPECT_EQ(run.result.exit_code, 1) << run.result.out << run.result.err;
+  EXPECT_NE(run.result.out.find("broken"), std::string::npos);
+  EXPECT_NE(run.result.out.find("ERROR: "), std::string::npos) << run.result.out;
+  EXPECT_NE(run.result.out.find("broken_labels.json"), std::string::npos) << "the error names the file";
+  EXPECT_NE(run.result.out.find("recall500"), std::string::npos) << "the next evaluation still ran";
+  EXPECT_NE(run.result.out.find("1 checks, 0 failed, 0 evaluations skipped, 1 evaluations failed to run"),
+            std::string::npos)
+      << run.result.out;
+}
+
+TEST_F(CheckCommandTest, FailOnSkipTurnsSkippedEvaluationsIntoFailures) {
+  const std::string json = std::string(R"({"evaluations": [)") + kTinyEvaluation +
+                           R"(, {"name": "absent data", "dataset": "shelf", "root": "no/such/folder",
+                               "simulate": true, "min": {"pcp": 1}}]})";
+  const CheckRun lenient = RunCheck(dir_, "thresholds.json", json);
+  EXPECT_EQ(lenient.result.exit_code, 0) << lenient.result.out << lenient.result.err;
+  EXPECT_NE(lenient.result.out.find("skipped (" + (dir_ / "no/such/folder").string() + " absent)"), std::string::npos)
+      << lenient.result.out;
+  const CheckRun strict = RunCheck(dir_, "thresholds.json", json, "--fail-on-skip");
+  EXPECT_EQ(strict.result.exit_code, 1) << strict.result.out << strict.result.err;
+  EXPECT_NE(strict.result.out.find("SKIPPED, failing"), std::string::npos) << strict.result.out;
+}
+
+TEST_F(CheckCommandTest, JunitHasOneWellFormedTestcasePerCheck) {
+  std::ofstream(dir_ / "broken_labels.json") << "{ not json";
+  const std::string json = R"({"evaluations": [
+      {"name": "tiny <\"&'>", "dataset": "synthetic", "params": {"frames": 10, "people": 2, "noise": "clean"},
+       "min": {"recall500": 50, "pcp": 100.5}, "max": {"mpjpe_mm": 500}},
+      {"name": "absent", "dataset": "shelf", "root": "no/such/folder", "simulate": true, "min": {"pcp": 1}},
+      {"name": "broken", "labels": "broken_labels.json", "simulate": true, "min": {"pcp": 1}}]})";
+  const fs::path junit = dir_ / "check.xml";
+  const CheckRun run = RunCheck(dir_, "thresholds.json", json, "--junit " + junit.string());
+  EXPECT_EQ(run.result.exit_code, 1) << run.result.out << run.result.err;
+  const test::XmlElement root = test::XmlReader::Parse(test::ReadAll(junit));
+  EXPECT_EQ(root.name, "testsuites");
+  ASSERT_EQ(root.children.size(), 1u);
+  const test::XmlElement& suite = root.children[0];
+  EXPECT_EQ(suite.attributes.at("tests"), "5");
+  EXPECT_EQ(suite.attributes.at("failures"), "1");
+  EXPECT_EQ(suite.attributes.at("errors"), "1");
+  EXPECT_EQ(suite.attributes.at("skipped"), "1");
+  ASSERT_EQ(suite.children.size(), 5u);
+  // "min" checks in key order, then "max".
+  EXPECT_EQ(suite.children[0].attributes.at("classname"), "tiny <\"&'>");
+  EXPECT_EQ(suite.children[0].attributes.at("name"), "pcp min 100.5");
+  ASSERT_EQ(suite.children[0].children.size(), 1u);
+  EXPECT_EQ(suite.children[0].children[0].name, "failure");
+  EXPECT_TRUE(suite.children[1].children.empty()) << "recall500 passes";
+  EXPECT_TRUE(suite.children[2].children.empty()) << "mpjpe_mm passes";
+  EXPECT_EQ(suite.children[3].children.at(0).name, "skipped");
+  EXPECT_EQ(suite.children[4].children.at(0).name, "error");
+  EXPECT_NE(suite.children[4].children[0].attributes.at("message").find("broken_labels.json"), std::string::npos);
+}
+
+TEST(JunitXml, EscapesMarkupAndDropsCharactersXmlForbids) {
+  const std::string xml = cli::JunitXml("suite & <co>", {{"a\x01 \"b\"", "c 'd' </testcase>", cli::JunitCase::Outcome::kFailure,
+                                                          "x < y && \x1f z > w"}});
+  const test::XmlElement root = test::XmlReader::Parse(xml);
+  EXPECT_EQ(root.attributes.at("name"), "suite & <co>");
+  const test::XmlElement& testcase = root.children.at(0).children.at(0);
+  EXPECT_EQ(testcase.attributes.at("classname"), "a \"b\"");
+  EXPECT_EQ(testcase.attributes.at("name"), "c 'd' </testcase>");
+  EXPECT_EQ(testcase.children.at(0).attributes.at("message"), "x < y &&  z > w");
+}
+
+TEST(XmlReader, RejectsMalformedXml) {
+  for (const char* bad : {"<a>", "<a></b>", "<a x=\"<\"/>", "<a x=\"&nbsp;\"/>", "<a x=1/>", "<a/><b/>"}) {
+    EXPECT_THROW(test::XmlReader::Parse(bad), std::runtime_error) << bad;
+  }
+}
+
+}  // namespace
+}  // namespace rpt

@@ -1,0 +1,124 @@
+// SPDX-License-Identifier: MIT
+// A strict reader for the XML subset rpt writes (declaration, nested elements with quoted attributes,
+// whitespace between them): enough to prove that JUnit output is well-formed and to read it back.
+#pragma once
+
+#include <cctype>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace rpt::test {
+
+struct XmlElement {
+  std::string name;
+  std::map<std::string, std::string> attributes;  // entities decoded
+  std::vector<XmlElement> children;
+};
+
+class XmlReader {
+ public:
+  // Throws std::runtime_error("offset N: why") when `text` is not well-formed.
+  static XmlElement Parse(const std::string& text) {
+    XmlReader reader(text);
+    reader.SkipSpace();
+    if (reader.text_.compare(reader.pos_, 5, "<?xml") == 0) {
+      const size_t end = reader.text_.find("?>", reader.pos_);
+      if (end == std::string::npos) reader.Fail("unterminated declaration");
+      reader.pos_ = end + 2;
+    }
+    reader.SkipSpace();
+    XmlElement root = reader.Element();
+    reader.SkipSpace();
+    if (reader.pos_ != reader.text_.size()) reader.Fail("content after the root element");
+    return root;
+  }
+
+ private:
+  explicit XmlReader(const std::string& text) : text_(text) {}
+
+  [[noreturn]] void Fail(const std::string& why) const {
+    throw std::runtime_error("offset " + std::to_string(pos_) + ": " + why);
+  }
+  void SkipSpace() {
+    while (pos_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[pos_]))) ++pos_;
+  }
+  void Expect(char c) {
+    if (pos_ >= text_.size() || text_[pos_] != c) Fail(std::string("expected '") + c + "'");
+    ++pos_;
+  }
+  std::string Name() {
+    const size_t start = pos_;
+    while (pos_ < text_.size() && (std::isalnum(static_cast<unsigned char>(text_[pos_])) || text_[pos_] == '_' ||
+                                   text_[pos_] == '-' || text_[pos_] == '.' || text_[pos_] == ':')) {
+      ++pos_;
+    }
+    if (pos_ == start) Fail("expected a name");
+    return text_.substr(start, pos_ - start);
+  }
+  std::string AttributeValue() {
+    const char quote = text_[pos_];
+    if (quote != '"' && quote != '\'') Fail("expected a quoted value");
+    ++pos_;
+    std::string value;
+    while (pos_ < text_.size() && text_[pos_] != quote) {
+      const char c = text_[pos_];
+      if (c == '<') Fail("'<' in an attribute value");
+      if (static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\n' && c != '\r') Fail("control character");
+      if (c == '&') {
+        static const std::map<std::string, char> entities = {
+            {"amp", '&'}, {"lt", '<'}, {"gt", '>'}, {"quot", '"'}, {"apos", '\''}};
+        const size_t end = text_.find(';', pos_);
+        if (end == std::string::npos) Fail("unterminated entity");
+        const auto it = entities.find(text_.substr(pos_ + 1, end - pos_ - 1));
+        if (it == entities.end()) Fail("unknown entity");
+        value += it->second;
+        pos_ = end + 1;
+        continue;
+      }
+      value += c;
+      ++pos_;
+    }
+    Expect(quote);
+    return value;
+  }
+  XmlElement Element() {
+    Expect('<');
+    XmlElement element;
+    element.name = Name();
+    while (true) {
+      SkipSpace();
+      if (pos_ >= text_.size()) Fail("unterminated tag");
+      if (text_[pos_] == '/') {
+        ++pos_;
+        Expect('>');
+        return element;
+      }
+      if (text_[pos_] == '>') {
+        ++pos_;
+        break;
+      }
+      const std::string key = Name();
+      Expect('=');
+      if (!element.attributes.emplace(key, AttributeValue()).second) Fail("repeated attribute " + key);
+    }
+    while (true) {
+      SkipSpace();
+      if (text_.compare(pos_, 2, "</") == 0) {
+        pos_ += 2;
+        if (Name() != element.name) Fail("mismatched closing tag of " + element.name);
+        SkipSpace();
+        Expect('>');
+        return element;
+      }
+      if (pos_ >= text_.size() || text_[pos_] != '<') Fail("expected an element or </" + element.name + ">");
+      element.children.push_back(Element());
+    }
+  }
+
+  const std::string& text_;
+  size_t pos_ = 0;
+};
+
+}  // namespace rpt::test
