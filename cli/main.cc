@@ -5,14 +5,64 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
+#include <string>
+#include <vector>
 
+#include "cli/closest_name.h"
 #include "cli/commands.h"
 #include "cli/run_info.h"
 #include "core/errors.h"
+#include "git_revision.h"
+
+namespace {
+
+std::vector<std::string> SubcommandNames(CLI::App& app) {
+  std::vector<std::string> names;
+  for (const CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) names.push_back(sub->get_name());
+  return names;
+}
+
+// "unknown subcommand 'evl'; did you mean 'eval'?" when the first argument is not a subcommand
+// (CLI11 would only say that a subcommand is required). Returns false when it printed the error.
+bool CheckSubcommand(CLI::App& app, int argc, char** argv) {
+  if (argc < 2 || argv[1][0] == '-') return true;
+  const std::vector<std::string> names = SubcommandNames(app);
+  const std::string given = argv[1];
+  for (const std::string& name : names) {
+    if (name == given) return true;
+  }
+  const std::string closest = rpt::cli::ClosestName(given, names);
+  std::fprintf(stderr, "error: unknown subcommand '%s'%s\nRun with --help for the list.\n", given.c_str(),
+               closest.empty() ? "" : ("; did you mean '" + closest + "'?").c_str());
+  return false;
+}
+
+// For flags a subcommand does not know: the closest option of that subcommand, e.g.
+// "--thresold: did you mean '--thresholds'?" (CLI11 hands such flags back to the main app).
+void PrintOptionSuggestions(CLI::App& app) {
+  std::vector<std::string> options;
+  std::vector<std::string> extras = app.remaining();
+  for (CLI::App* sub : app.get_subcommands()) {
+    for (const CLI::Option* option : sub->get_options()) {
+      for (const std::string& name : option->get_lnames()) options.push_back("--" + name);
+    }
+    for (const std::string& extra : sub->remaining()) extras.push_back(extra);
+  }
+  for (const std::string& extra : extras) {
+    if (extra.size() < 3 || extra.rfind("--", 0) != 0) continue;
+    const std::string flag = extra.substr(0, extra.find('='));
+    const std::string closest = rpt::cli::ClosestName(flag, options);
+    if (!closest.empty()) std::fprintf(stderr, "%s: did you mean '%s'?\n", flag.c_str(), closest.c_str());
+  }
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"rpt: RapidPoseTriangulation, learning-free multi-view multi-person 3D pose triangulation"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("rpt ") + RPT_VERSION + " (git " + RPT_GIT_REVISION + ")",
+                       "print the version and git revision, then exit");
   rpt::cli::SetCommandLine(rpt::cli::CommandLine(argc, argv));
   rpt::cli::RegisterDemoCommand(app);
   rpt::cli::RegisterEvalCommand(app);
@@ -26,10 +76,12 @@ int main(int argc, char** argv) {
   rpt::cli::RegisterCheckCommand(app, &exit_code);
   rpt::cli::RegisterSweepCommand(app);
   rpt::cli::RegisterMergeCommand(app);
+  if (!CheckSubcommand(app, argc, argv)) return 2;
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);
+    if (code != 0) PrintOptionSuggestions(app);  // also when a required option is missing because it was misspelt
     return code == 0 ? 0 : 2;
   } catch (const rpt::InputError& e) {
     std::fprintf(stderr, "error: %s\n", e.what());

@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: MIT
+// The rpt entry point: --version, unknown subcommands and unknown flags with "did you mean".
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "cli/closest_name.h"
+#include "tests/cli/cli_test_util.h"
+
+namespace rpt {
+namespace {
+
+TEST(Main, VersionPrintsProjectVersionAndGitRevision) {
+  const test::CommandResult r = test::RunRpt("--version");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out.rfind("rpt 0.", 0), 0u) << r.out;
+  EXPECT_NE(r.out.find(" (git "), std::string::npos) << r.out;
+}
+
+TEST(Main, UnknownSubcommandSuggestsTheClosestAndExitsWith2) {
+  const test::CommandResult r = test::RunRpt("evl --dataset synthetic");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("unknown subcommand 'evl'; did you mean 'eval'?"), std::string::npos) << r.err;
+  const test::CommandResult far = test::RunRpt("frobnicate");
+  EXPECT_EQ(far.exit_code, 2);
+  EXPECT_NE(far.err.find("unknown subcommand 'frobnicate'"), std::string::npos) << far.err;
+  EXPECT_EQ(far.err.find("did you mean"), std::string::npos) << far.err;
+}
+
+TEST(Main, UnknownFlagOfASubcommandSuggestsTheClosest) {
+  const test::CommandResult r = test::RunRpt("check --thresholdz x.json");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--thresholdz: did you mean '--thresholds'?"), std::string::npos) << r.err;
+}
+
+TEST(ClosestName, PicksTheNearestNameWithinATypoDistance) {
+  EXPECT_EQ(cli::EditDistance("kitten", "sitting"), 3);
+  EXPECT_EQ(cli::ClosestName("evl", {"demo", "eval", "sweep"}), "eval");
+  EXPECT_EQ(cli::ClosestName("recal500", {"recall100", "recall500"}), "recall500");
+  EXPECT_EQ(cli::ClosestName("zzz", {"eval", "check"}), "");
+}
+
+}  // namespace
+}  // namespace rpt
