@@ -83,7 +83,7 @@ TEST(EvalDiagnostics, CleanSyntheticRunHasCountsAndNoWarning) {
   const Json& counts = summary.at("step_count_per_frame");
   ASSERT_EQ(counts.size(), 17u) << "one count per step, steps 1-16 with 11b and 12b";
   EXPECT_NEAR(counts.at("merge").get<double>(), 4.0, 0.2) << "4 people per frame";
-  EXPECT_GT(counts.at("pairs").get<double>(), counts.at("merge").get<double>());
+  EXPECT_GT(counts.at("make_pairs").get<double>(), counts.at("merge").get<double>());
   EXPECT_TRUE(summary.at("counter_per_frame").contains("filled_joints"));
   EXPECT_TRUE(summary.contains("detection_noise_m"));
   ASSERT_EQ(summary.at("data_checks").size(), 1u);
@@ -196,7 +196,7 @@ TEST(EvalDiagnostics, NoPredictionsNameTheStepWhereEverythingIsGone) {
   EXPECT_EQ(Count(codes, "camera_without_detections"), 4) << c.result.err;
   EXPECT_EQ(Count(codes, "no_predictions"), 1) << c.result.err;
   EXPECT_EQ(Count(codes, "low_recall"), 0) << "no_predictions says it all";
-  EXPECT_NE(c.result.err.find("nothing is left after step 'pairs'"), std::string::npos) << c.result.err;
+  EXPECT_NE(c.result.err.find("nothing is left after step 'make_pairs'"), std::string::npos) << c.result.err;
 }
 
 TEST(EvalDiagnostics, ManyFramesWithoutPredictionAndLowRecall) {
