@@ -13,7 +13,8 @@ struct FrameStats {
   // Steady-clock time of each step (microseconds) and of the whole frame.
   std::array<double, kNumSteps> time_us{};
   double total_us = 0;
-  // Items after each step: kSteps[s].item. A step that does not run records 0 here and in time_us.
+  // Items after each step: kSteps[s].item. The tracking steps (track .. smooth) record 0 here and
+  // in time_us when they do not run; a disabled filtering step counts the items it passes on.
   std::array<int, kNumSteps> count{};
   // Extra counters.
   int pruned_limbs = 0;       // joints invalidated by limb pruning (steps 7 and 10)
