@@ -13,6 +13,7 @@
 #include <string>
 
 #include "bench/bench_scenes.h"
+#include "core/pipeline/room_check.h"
 #include "core/pipeline/triangulator.h"
 
 namespace rpt::bench {
@@ -31,8 +32,7 @@ Prepared& Get(const BenchScene& scene) {
     Prepared p;
     p.sequence = MakeBenchSequence(scene);
     TriangulatorOptions options;
-    options.room_check.center_m = p.sequence.room.center_m;
-    options.room_check.size_m = p.sequence.room.size_m;
+    UseDatasetRoomIfUnset(p.sequence.room.center_m, p.sequence.room.size_m, &options.room_check);
     p.triangulator = std::make_unique<Triangulator>(p.sequence.cameras, p.sequence.detection_joints, options);
     it = cache.emplace(scene.name, std::move(p)).first;
   }
@@ -91,7 +91,7 @@ void BM_Frame(benchmark::State& state, BenchScene scene) {
     state.ResumeTiming();
   }
   const double iterations = static_cast<double>(state.iterations());
-  for (int s = 0; s < kNumSteps; ++s) state.counters[std::string(kStepNames[s]) + "_us"] = step_sum[s] / iterations;
+  for (int s = 0; s < kNumSteps; ++s) state.counters[std::string(kSteps[s].key) + "_us"] = step_sum[s] / iterations;
   state.counters["mpjpe_mm"] = matched > 0 ? 1000.0 * error_sum / matched : 0.0;
   state.counters["frames_per_s"] = benchmark::Counter(iterations, benchmark::Counter::kIsRate);
 }

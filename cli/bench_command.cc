@@ -20,6 +20,7 @@
 #include "cli/run_info.h"
 #include "core/errors.h"
 #include "core/text.h"
+#include "core/pipeline/room_check.h"
 #include "core/pipeline/triangulator.h"
 #include "datasets/detections.h"
 #include "datasets/readers/hdf5_cache.h"
@@ -57,8 +58,7 @@ struct SceneResult {
 SceneResult BenchScene(const bench::BenchScene& scene, const BenchArgs& args, const Config& config) {
   const Sequence sequence = bench::MakeBenchSequence(scene, 1, args.detector);
   TriangulatorOptions options = config.triangulator;
-  options.room_check.center_m = sequence.room.center_m;
-  options.room_check.size_m = sequence.room.size_m;
+  UseDatasetRoomIfUnset(sequence.room.center_m, sequence.room.size_m, &options.room_check);
   Triangulator triangulator(sequence.cameras, sequence.detection_joints, options);
   SceneResult result{scene, {}, {}, 0, {}};
   Poses3D persons;
@@ -211,7 +211,7 @@ void RunBench(const BenchArgs& args) {
   for (const auto& r : results) std::printf(" %14s", r.scene.name.c_str());
   std::printf("\n");
   for (int s = 0; s < kNumSteps; ++s) {
-    std::printf("%-18s", std::string(kStepNames[s]).c_str());
+    std::printf("%-18s", std::string(kSteps[s].key).c_str());
     for (const auto& r : results) std::printf(" %14.2f", r.timing.step_us_median[s]);
     std::printf("\n");
   }

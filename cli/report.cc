@@ -18,11 +18,11 @@ void PrintStepTimes(std::ostream& out, const metrics::TimingSummary& timing, con
   out << line;
   for (int s = 0; s < kNumSteps; ++s) {
     if (counts != nullptr) {
-      std::snprintf(line, sizeof(line), "  %-18s %12.2f %12.2f %14.2f  %s\n", std::string(kStepNames[s]).c_str(),
+      std::snprintf(line, sizeof(line), "  %-18s %12.2f %12.2f %14.2f  %s\n", std::string(kSteps[s].key).c_str(),
                     timing.step_us_median[s], timing.step_us_mean[s], counts->count_per_frame[s],
-                    std::string(kStepItems[s]).c_str());
+                    std::string(kSteps[s].item).c_str());
     } else {
-      std::snprintf(line, sizeof(line), "  %-18s %12.2f %12.2f\n", std::string(kStepNames[s]).c_str(),
+      std::snprintf(line, sizeof(line), "  %-18s %12.2f %12.2f\n", std::string(kSteps[s].key).c_str(),
                     timing.step_us_median[s], timing.step_us_mean[s]);
     }
     out << line;
@@ -42,13 +42,13 @@ void PrintStepTimes(std::ostream& out, const metrics::TimingSummary& timing, con
 
 nlohmann::ordered_json StepTimesJson(const metrics::TimingSummary& timing) {
   nlohmann::ordered_json steps = nlohmann::ordered_json::object();
-  for (int s = 0; s < kNumSteps; ++s) steps[std::string(kStepNames[s])] = timing.step_us_median[s];
+  for (int s = 0; s < kNumSteps; ++s) steps[std::string(kSteps[s].key)] = timing.step_us_median[s];
   return steps;
 }
 
 nlohmann::ordered_json StepCountsJson(const metrics::StepCountSummary& counts) {
   nlohmann::ordered_json steps = nlohmann::ordered_json::object();
-  for (int s = 0; s < kNumSteps; ++s) steps[std::string(kStepNames[s])] = counts.count_per_frame[s];
+  for (int s = 0; s < kNumSteps; ++s) steps[std::string(kSteps[s].key)] = counts.count_per_frame[s];
   return steps;
 }
 
@@ -65,8 +65,8 @@ std::string StepsCsv(const metrics::TimingSummary& timing, const metrics::StepCo
   out << "step,items,count_per_frame,time_us_median,time_us_mean\n";
   char line[200];
   for (int s = 0; s < kNumSteps; ++s) {
-    std::snprintf(line, sizeof(line), "%s,%s,%.4f,%.3f,%.3f\n", std::string(kStepNames[s]).c_str(),
-                  std::string(kStepItems[s]).c_str(), counts.count_per_frame[s], timing.step_us_median[s],
+    std::snprintf(line, sizeof(line), "%s,%s,%.4f,%.3f,%.3f\n", std::string(kSteps[s].key).c_str(),
+                  std::string(kSteps[s].item).c_str(), counts.count_per_frame[s], timing.step_us_median[s],
                   timing.step_us_mean[s]);
     out << line;
   }

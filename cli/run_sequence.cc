@@ -13,6 +13,7 @@
 
 #include "cli/progress.h"
 #include "core/errors.h"
+#include "core/pipeline/room_check.h"
 #include "core/pipeline/triangulator.h"
 #include "core/smooth_offline.h"
 
@@ -22,10 +23,7 @@ namespace {
 TriangulatedSequence Triangulate(const Sequence& sequence, const RunOptions& options, std::atomic<long>* frames_done,
                                  Progress* progress) {
   TriangulatorOptions tri_options = options.triangulator;
-  if (!(tri_options.room_check.size_m.array() > 0).any()) {
-    tri_options.room_check.center_m = sequence.room.center_m;
-    tri_options.room_check.size_m = sequence.room.size_m;
-  }
+  UseDatasetRoomIfUnset(sequence.room.center_m, sequence.room.size_m, &tri_options.room_check);
   Triangulator triangulator(sequence.cameras, sequence.detection_joints, tri_options);
   TriangulatedSequence out;
   out.output_joints = triangulator.output_joints();

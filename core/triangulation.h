@@ -32,8 +32,9 @@ RPT_ALWAYS_INLINE bool TriangulateMidpoint(const Eigen::Vector3d& c1, const Eige
 
 // Linear (DLT) triangulation from normalised image coordinates and the cam_from_world [R | t]
 // of both views. The four DLT equations A [X; 1] = 0 are solved for the finite point X in the
-// least-squares sense through the 3x3 normal equations (closed-form inverse); for points at
-// finite distance this is the same linear estimate as the SVD null vector, about 20x faster.
+// least-squares sense through the 3x3 normal equations (closed-form inverse), with the homogeneous
+// coordinate fixed to 1. This is close to, but not exactly, the SVD null vector of A (which also
+// varies the homogeneous scale; equal for noise-free points), and about 20x faster.
 // Returns false for a (near-)singular system or a point behind either camera.
 inline bool TriangulateDlt(const Eigen::Matrix<double, 3, 4>& rt1, const Eigen::Vector2d& xy1,
                            const Eigen::Matrix<double, 3, 4>& rt2, const Eigen::Vector2d& xy2,

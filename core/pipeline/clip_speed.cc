@@ -3,8 +3,8 @@
 
 namespace rpt {
 
-int ClipSpeed(const ClipSpeedOptions& options, const Tracker& tracker, double timestamp_s, int num_detected,
-              Poses3D* persons) {
+int steps::ClipSpeed(const ClipSpeedOptions& options, const Tracker& tracker, double timestamp_s, int num_detected,
+                     Poses3D* persons) {
   if (!options.enabled) return 0;
   int clipped = 0;
   for (int p = 0; p < num_detected; ++p) {

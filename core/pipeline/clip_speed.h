@@ -4,14 +4,18 @@
 #pragma once
 
 #include "core/pipeline/options.h"
-#include "core/pipeline/track_persons.h"
+#include "core/pipeline/track.h"
 #include "core/poses.h"
 
 namespace rpt {
+
+namespace steps {
 
 // Clips the first `num_detected` persons against their tracks' last poses. Returns the number
 // of joints clipped.
 int ClipSpeed(const ClipSpeedOptions& options, const Tracker& tracker, double timestamp_s, int num_detected,
               Poses3D* persons);
+
+}  // namespace steps
 
 }  // namespace rpt

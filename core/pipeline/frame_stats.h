@@ -1,53 +1,20 @@
 // SPDX-License-Identifier: MIT
-// Per-frame statistics: what each step produced and how long it took.
+// Per-frame statistics: what each step produced and how long it took (steps.h), and the extra
+// counters. Every step reports into this one struct.
 #pragma once
 
 #include <array>
-#include <iterator>
-#include <string_view>
+
+#include "core/pipeline/steps.h"
 
 namespace rpt {
-
-// The pipeline steps in execution order. Names match code, config sections and docs.
-enum class Step : int {
-  kUndistort = 0,    // undistort 2D poses, add derived joints
-  kPairs,            // (1) all cross-view pose pairs
-  kPrefilter,        // (2) filter pairs with last frame's poses
-  kTriangulateCore,  // (3-4) triangulate core joints of each pair
-  kRoomCheck,        // (5) drop proposals outside the room
-  kScore,            // (6-7) reproject, score joints, prune limbs
-  kFilter,           // (8) drop pairs under min_match_score
-  kGroup,            // (9) group proposals in 3D
-  kTriangulateFull,  // (10) re-triangulate grouped pairs with all joints
-  kMerge,            // (11) robust per-joint merge per group
-  kVerify,           // (11b) re-score persons against all views
-  kPostprocess,      // (12) drop invalid persons, fill joints
-  kSingleView,       // (12b) persons seen by one camera only (off by default)
-  kTrack,            // (13) track ids over time
-  kClipSpeed,        // (14) clip joint speed
-  kBoneLengths,      // (15) per-track bone-length consistency (optional)
-  kSmooth,           // (16) causal temporal smoothing (optional)
-  kCount
-};
-inline constexpr int kNumSteps = static_cast<int>(Step::kCount);
-
-inline constexpr std::array<std::string_view, kNumSteps> kStepNames = {
-    "undistort", "pairs", "prefilter", "triangulate_core", "room_check", "score", "filter",
-    "group", "triangulate_full", "merge", "verify", "postprocess", "single_view", "track", "clip_speed",
-    "bone_lengths", "smooth"};
-
-// What FrameStats::count holds after each step (kStepNames order).
-inline constexpr std::string_view kStepItems[] = {
-    "poses",     "pairs",   "pairs",   "proposals", "proposals", "proposals",      "proposals",
-    "groups",    "proposals", "persons", "persons", "persons",   "persons",        "persons",
-    "joints clipped", "joints checked", "joints smoothed"};
-static_assert(std::size(kStepItems) == kNumSteps, "one item name per step");
 
 struct FrameStats {
   // Steady-clock time of each step (microseconds) and of the whole frame.
   std::array<double, kNumSteps> time_us{};
   double total_us = 0;
-  // Items after each step: kStepItems.
+  // Items after each step: kSteps[s].item. The tracking steps (track .. smooth) record 0 here and
+  // in time_us when they do not run; a disabled filtering step counts the items it passes on.
   std::array<int, kNumSteps> count{};
   // Extra counters.
   int pruned_limbs = 0;       // joints invalidated by limb pruning (steps 7 and 10)

@@ -3,7 +3,7 @@
 
 namespace rpt {
 
-int MakePairs(const PreparedViews& views, std::vector<PosePair>* pairs) {
+int steps::MakePairs(const PreparedViews& views, std::vector<PosePair>* pairs) {
   pairs->clear();
   const int num_views = static_cast<int>(views.view_begin.size()) - 1;
   for (int va = 0; va < num_views; ++va) {

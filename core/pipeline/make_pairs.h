@@ -8,7 +8,11 @@
 
 namespace rpt {
 
+namespace steps {
+
 // Appends all cross-view pairs (view(a) < view(b)) to `pairs` (cleared first). Returns the count.
 int MakePairs(const PreparedViews& views, std::vector<PosePair>* pairs);
+
+}  // namespace steps
 
 }  // namespace rpt

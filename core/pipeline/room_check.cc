@@ -13,7 +13,13 @@ bool InsideRoom(const Eigen::Vector3d& point, const RoomCheckOptions& room) {
   return true;
 }
 
-int RoomCheck(const RoomCheckOptions& room, Proposals* proposals) {
+void UseDatasetRoomIfUnset(const Eigen::Vector3d& center_m, const Eigen::Vector3d& size_m, RoomCheckOptions* room) {
+  if ((room->size_m.array() > 0).any()) return;
+  room->center_m = center_m;
+  room->size_m = size_m;
+}
+
+int steps::RoomCheck(const RoomCheckOptions& room, Proposals* proposals) {
   const bool bounded = (room.size_m.array() > 0).any();
   if (!bounded) return proposals->size();
   const int n = proposals->num_joints;

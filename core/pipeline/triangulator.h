@@ -3,6 +3,8 @@
 // (Bermuth, Poeppel, Reif, CVPR 2026, section 3.1, steps 1-14), plus the optional temporal steps
 // 15-16 (bone_lengths, smooth).
 //
+// The steps, their names and their files are listed in core/pipeline/steps.h.
+//
 // Usage:
 //   Triangulator tri(cameras, joint_names, options);   // throws ConfigError on bad options
 //   for each frame: tri.Process(views, timestamp_s, &poses, &stats);
@@ -25,7 +27,11 @@
 
 namespace rpt {
 
-struct Workspace;  // internal buffers (core/pipeline/workspace.h)
+// Internal (core/pipeline/): the resolved model, fixed at construction (model.h), the per-frame
+// buffers (frame_buffers.h) and the state carried between frames (temporal_state.h).
+struct TriangulatorModel;
+struct FrameBuffers;
+struct TemporalState;
 
 class Triangulator {
  public:
@@ -48,10 +54,13 @@ class Triangulator {
   const JointNames& input_joints() const;
   const JointNames& output_joints() const;
   const std::vector<Camera>& cameras() const;
+  // The options as given (automatic values such as group.min_group_size = 0 stay as they are).
   const TriangulatorOptions& options() const;
 
  private:
-  std::unique_ptr<Workspace> ws_;
+  std::unique_ptr<const TriangulatorModel> model_;
+  std::unique_ptr<FrameBuffers> frame_;
+  std::unique_ptr<TemporalState> temporal_;
 };
 
 }  // namespace rpt

@@ -25,7 +25,7 @@ TEST(DemoCommand, JsonHasTheDocumentedKeysAndSaneValues) {
   EXPECT_GT(j["mpjpe_mm"].get<double>(), 30.0);
   EXPECT_LT(j["mpjpe_mm"].get<double>(), 55.0);
   EXPECT_GT(j["frame_time_us_median"].get<double>(), 0.0);
-  for (const char* step : {"undistort", "pairs", "prefilter", "triangulate_core", "group", "merge", "track"}) {
+  for (const char* step : {"undistort", "make_pairs", "prefilter", "triangulate_core", "group", "merge", "track"}) {
     EXPECT_TRUE(j["step_time_us_median"].contains(step)) << step;
   }
 }

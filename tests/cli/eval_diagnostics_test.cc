@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "core/pipeline/steps.h"
 #include "tests/cli/cli_test_util.h"
 #include "tests/test_data.h"
 
@@ -81,15 +82,15 @@ TEST(EvalDiagnostics, CleanSyntheticRunHasCountsAndNoWarning) {
   const Json summary = ReadJson(out / "summary.json");
   EXPECT_TRUE(summary.at("warnings").empty()) << summary["warnings"].dump();
   const Json& counts = summary.at("step_count_per_frame");
-  ASSERT_EQ(counts.size(), 17u) << "one count per step, steps 1-16 with 11b and 12b";
+  ASSERT_EQ(counts.size(), static_cast<size_t>(kNumSteps)) << "one count per step (core/pipeline/steps.h)";
   EXPECT_NEAR(counts.at("merge").get<double>(), 4.0, 0.2) << "4 people per frame";
-  EXPECT_GT(counts.at("pairs").get<double>(), counts.at("merge").get<double>());
+  EXPECT_GT(counts.at("make_pairs").get<double>(), counts.at("merge").get<double>());
   EXPECT_TRUE(summary.at("counter_per_frame").contains("filled_joints"));
   EXPECT_TRUE(summary.contains("detection_noise_m"));
   ASSERT_EQ(summary.at("data_checks").size(), 1u);
   EXPECT_TRUE(summary["data_checks"][0]["frame_shift"]["tested"].get<bool>());
   const std::string steps = test::ReadAll(out / "steps.csv");
-  EXPECT_EQ(std::count(steps.begin(), steps.end(), '\n'), 18) << "header and 17 steps\n" << steps;
+  EXPECT_EQ(std::count(steps.begin(), steps.end(), '\n'), kNumSteps + 1) << "header and one row per step\n" << steps;
   EXPECT_EQ(steps.rfind("step,items,count_per_frame,time_us_median,time_us_mean\n", 0), 0u) << steps;
   fs::remove_all(out);
 }
@@ -196,7 +197,7 @@ TEST(EvalDiagnostics, NoPredictionsNameTheStepWhereEverythingIsGone) {
   EXPECT_EQ(Count(codes, "camera_without_detections"), 4) << c.result.err;
   EXPECT_EQ(Count(codes, "no_predictions"), 1) << c.result.err;
   EXPECT_EQ(Count(codes, "low_recall"), 0) << "no_predictions says it all";
-  EXPECT_NE(c.result.err.find("nothing is left after step 'pairs'"), std::string::npos) << c.result.err;
+  EXPECT_NE(c.result.err.find("nothing is left after step 'make_pairs'"), std::string::npos) << c.result.err;
 }
 
 TEST(EvalDiagnostics, ManyFramesWithoutPredictionAndLowRecall) {

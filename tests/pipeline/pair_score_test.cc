@@ -9,9 +9,10 @@
 #include "core/joints.h"
 #include "core/pipeline/make_pairs.h"
 #include "core/pipeline/noise_scale.h"
-#include "core/pipeline/score_proposals.h"
-#include "core/pipeline/triangulate_pairs.h"
-#include "core/pipeline/undistort_poses.h"
+#include "core/pipeline/proposal_scoring.h"
+#include "core/pipeline/triangulate_core.h"
+#include "core/pipeline/undistort.h"
+#include "core/pipeline/view_geometry.h"
 #include "datasets/synthetic/detector_options.h"
 #include "datasets/synthetic/detector_simulator.h"
 #include "datasets/synthetic/scene.h"
@@ -63,10 +64,10 @@ PairTally TallyPairs(const DetectorOptions& detector_options, const ScoreOptions
   PairTally tally;
   for (int f = 0; f < scene_options.num_frames; ++f) {
     detector.Detect(scene.cameras, scene.gt[f], scene.joint_names, f, &views, &sources);
-    UndistortPoses(views, scene.cameras, geometry, derived, core, 3, static_cast<int>(output.size()),
+    steps::Undistort(views, scene.cameras, geometry, derived, core, 3, static_cast<int>(output.size()),
                    UndistortOptions{}, &prepared);
-    MakePairs(prepared, &pairs);
-    TriangulatePairs(prepared, geometry, pairs, core, TriangulationMethod::kMidpoint, 3, &proposals);
+    steps::MakePairs(prepared, &pairs);
+    steps::TriangulateCore(prepared, geometry, pairs, core, TriangulationMethod::kMidpoint, 3, &proposals);
     ScoreProposals(prepared, geometry, core, no_limbs, score, &noise, &scratch, &proposals);
     for (int k = 0; k < proposals.size(); ++k) {
       const PosePair& pair = proposals.pairs[k];

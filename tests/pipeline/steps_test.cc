@@ -6,16 +6,17 @@
 #include <vector>
 
 #include "core/joints.h"
-#include "core/pipeline/filter_proposals.h"
-#include "core/pipeline/group_proposals.h"
+#include "core/pipeline/filter.h"
+#include "core/pipeline/group.h"
 #include "core/pipeline/make_pairs.h"
-#include "core/pipeline/merge_groups.h"
-#include "core/pipeline/postprocess_persons.h"
-#include "core/pipeline/prefilter_pairs.h"
+#include "core/pipeline/merge.h"
+#include "core/pipeline/postprocess.h"
+#include "core/pipeline/prefilter.h"
 #include "core/pipeline/room_check.h"
-#include "core/pipeline/score_proposals.h"
-#include "core/pipeline/triangulate_pairs.h"
-#include "core/pipeline/undistort_poses.h"
+#include "core/pipeline/proposal_scoring.h"
+#include "core/pipeline/triangulate_core.h"
+#include "core/pipeline/undistort.h"
+#include "core/pipeline/view_geometry.h"
 #include "core/triangulation.h"
 #include "tests/pipeline/test_scene.h"
 
@@ -48,7 +49,7 @@ struct StepFixture {
     views = test::ProjectPersons(cameras, persons);
   }
   void Prepare() {
-    UndistortPoses(views, cameras, geometry, derived, core, 3, static_cast<int>(output.size()), UndistortOptions{},
+    steps::Undistort(views, cameras, geometry, derived, core, 3, static_cast<int>(output.size()), UndistortOptions{},
                    &prepared);
   }
   std::vector<Camera> cameras;
@@ -86,7 +87,7 @@ TEST(TriangulateMidpoint, GapOfSkewRaysAndDegenerateCases) {
       << "crossing behind the first camera";
 }
 
-TEST(UndistortPoses, RaysPassThroughTheJointsAndDerivedJointsAreAdded) {
+TEST(Undistort, RaysPassThroughTheJointsAndDerivedJointsAreAdded) {
   StepFixture f(3, {test::StandingPerson(0.2, -0.1, 0.4)});
   f.Prepare();
   ASSERT_EQ(f.prepared.num_poses(), 3);
@@ -107,7 +108,7 @@ TEST(UndistortPoses, RaysPassThroughTheJointsAndDerivedJointsAreAdded) {
   }
 }
 
-TEST(UndistortPoses, LowScoresNaNsAndPosesWithoutCoreJointsAreMissing) {
+TEST(Undistort, LowScoresNaNsAndPosesWithoutCoreJointsAreMissing) {
   StepFixture f(2, {test::StandingPerson(0, 0)});
   f.views[0].Person(0)(2, 5) = 0.05;        // below min_joint_score
   f.views[0].Person(0)(0, 6) = std::nan("");  // NaN coordinate
@@ -127,16 +128,16 @@ TEST(MakePairs, EveryCrossViewPairOnce) {
   extra = test::ProjectPersons({f.cameras[1]}, {test::StandingPerson(0, 1.5)})[0].Person(0);
   f.Prepare();
   std::vector<PosePair> pairs;
-  EXPECT_EQ(MakePairs(f.prepared, &pairs), 2 * 3);
+  EXPECT_EQ(steps::MakePairs(f.prepared, &pairs), 2 * 3);
   for (const PosePair& p : pairs) EXPECT_LT(f.prepared.view_of[p.a], f.prepared.view_of[p.b]);
 }
 
-TEST(PrefilterPairs, KeepsBothOrNeitherMatchedDropsOneSided) {
+TEST(Prefilter, KeepsBothOrNeitherMatchedDropsOneSided) {
   const auto a = test::StandingPerson(-1, 0), b = test::StandingPerson(1, 0), c = test::StandingPerson(0, 1.5);
   StepFixture f(2, {a, b, c});
   f.Prepare();
   std::vector<PosePair> pairs;
-  MakePairs(f.prepared, &pairs);
+  steps::MakePairs(f.prepared, &pairs);
   ASSERT_EQ(pairs.size(), 9u);
   // Previous frame knew a and b (slightly moved), not c.
   PreviousPersons previous;
@@ -149,7 +150,7 @@ TEST(PrefilterPairs, KeepsBothOrNeitherMatchedDropsOneSided) {
   }
   PrefilterScratch scratch;
   const std::vector<int>& match = scratch.match;
-  const int kept = PrefilterPairs(f.prepared, f.geometry, f.core, previous, 0.0, PrefilterOptions{}, &scratch, &pairs);
+  const int kept = steps::Prefilter(f.prepared, f.geometry, f.core, previous, 0.0, PrefilterOptions{}, &scratch, &pairs);
   // Kept: a-a, b-b (same match), c-c (neither). Dropped: mixed ones and one-sided c-x / x-c.
   EXPECT_EQ(kept, 3);
   for (const PosePair& p : pairs) {
@@ -157,20 +158,20 @@ TEST(PrefilterPairs, KeepsBothOrNeitherMatchedDropsOneSided) {
   }
   EXPECT_EQ(match[f.prepared.view_begin[0] + 2], kPoseFree);
   // Disabled: everything stays.
-  MakePairs(f.prepared, &pairs);
+  steps::MakePairs(f.prepared, &pairs);
   PrefilterOptions off;
   off.enabled = false;
-  EXPECT_EQ(PrefilterPairs(f.prepared, f.geometry, f.core, previous, 0.0, off, &scratch, &pairs), 9);
+  EXPECT_EQ(steps::Prefilter(f.prepared, f.geometry, f.core, previous, 0.0, off, &scratch, &pairs), 9);
 }
 
-TEST(TriangulatePairs, ExactRecoveryWithMidpointAndDlt) {
+TEST(TriangulateCore, ExactRecoveryWithMidpointAndDlt) {
   StepFixture f(4, {test::StandingPerson(0.5, 0.3, 1.0)});
   f.Prepare();
   std::vector<PosePair> pairs;
-  MakePairs(f.prepared, &pairs);
+  steps::MakePairs(f.prepared, &pairs);
   for (TriangulationMethod method : {TriangulationMethod::kMidpoint, TriangulationMethod::kDlt}) {
     Proposals proposals;
-    ASSERT_EQ(TriangulatePairs(f.prepared, f.geometry, pairs, f.all, method, 3, &proposals), 6);
+    ASSERT_EQ(steps::TriangulateCore(f.prepared, f.geometry, pairs, f.all, method, 3, &proposals), 6);
     for (int k = 0; k < proposals.size(); ++k) {
       for (int j = 0; j < 17; ++j) {
         EXPECT_LT((proposals.xyz[k * 20 + j] - f.persons[0].col(j).head<3>()).norm(), 1e-9);
@@ -181,17 +182,17 @@ TEST(TriangulatePairs, ExactRecoveryWithMidpointAndDlt) {
   }
 }
 
-TEST(TriangulatePairs, PairsWithTooFewCommonJointsYieldNoProposal) {
+TEST(TriangulateCore, PairsWithTooFewCommonJointsYieldNoProposal) {
   StepFixture f(2, {test::StandingPerson(0, 0)});
   for (int j = 0; j < 17; ++j) {
     if (j != 5 && j != 6 && j != 11 && j != 12) f.views[1].Person(0)(2, j) = 0;  // only 4 joints in view 1
   }
   f.Prepare();
   std::vector<PosePair> pairs;
-  MakePairs(f.prepared, &pairs);
+  steps::MakePairs(f.prepared, &pairs);
   Proposals proposals;
-  EXPECT_EQ(TriangulatePairs(f.prepared, f.geometry, pairs, f.core, TriangulationMethod::kMidpoint, 4, &proposals), 1);
-  EXPECT_EQ(TriangulatePairs(f.prepared, f.geometry, pairs, f.core, TriangulationMethod::kMidpoint, 5, &proposals), 0);
+  EXPECT_EQ(steps::TriangulateCore(f.prepared, f.geometry, pairs, f.core, TriangulationMethod::kMidpoint, 4, &proposals), 1);
+  EXPECT_EQ(steps::TriangulateCore(f.prepared, f.geometry, pairs, f.core, TriangulationMethod::kMidpoint, 5, &proposals), 0);
 }
 
 Proposals OneJointProposals(const std::vector<Eigen::Vector3d>& points) {
@@ -211,21 +212,21 @@ TEST(RoomCheck, DropsProposalsOutsideTheBoxPlusMargin) {
   room.center_m = Eigen::Vector3d(0, 0, 1);
   room.size_m = Eigen::Vector3d(5, 0, 3);  // y unbounded
   room.margin_m = 0.5;
-  EXPECT_EQ(RoomCheck(room, &p), 3);
+  EXPECT_EQ(steps::RoomCheck(room, &p), 3);
   EXPECT_NEAR(p.xyz[1].x(), 2.9, 1e-12);
   EXPECT_NEAR(p.xyz[2].y(), 50, 1e-12);
   RoomCheckOptions unbounded;
   Proposals q = OneJointProposals({{1e6, 0, 0}});
-  EXPECT_EQ(RoomCheck(unbounded, &q), 1);
+  EXPECT_EQ(steps::RoomCheck(unbounded, &q), 1);
 }
 
 TEST(ScoreProposals, CorrectPairsScoreOneMismatchedPairsScoreLow) {
   StepFixture f(2, {test::StandingPerson(-1.2, 0), test::StandingPerson(1.2, 0.3, 2.0)});
   f.Prepare();
   std::vector<PosePair> pairs;
-  MakePairs(f.prepared, &pairs);
+  steps::MakePairs(f.prepared, &pairs);
   Proposals proposals;
-  TriangulatePairs(f.prepared, f.geometry, pairs, f.core, TriangulationMethod::kMidpoint, 3, &proposals);
+  steps::TriangulateCore(f.prepared, f.geometry, pairs, f.core, TriangulationMethod::kMidpoint, 3, &proposals);
   std::vector<ResolvedLimb> no_limbs;
   ScoreScratch scratch;
   ScoreProposals(f.prepared, f.geometry, f.core, no_limbs, ScoreOptions{}, nullptr, &scratch, &proposals);
@@ -250,11 +251,11 @@ TEST(ScoreProposals, ModesConfidenceAndLimbPruning) {
   f.views[1].Person(0)(2, 10) = 0.5;
   f.Prepare();
   std::vector<PosePair> pairs;
-  MakePairs(f.prepared, &pairs);
+  steps::MakePairs(f.prepared, &pairs);
   const int wrist_left_slot = 6, wrist_right_slot = 7;  // order of DefaultCoreJoints()
   auto run = [&](ScoreOptions options, std::vector<ResolvedLimb> limbs = {}) {
     Proposals p;
-    TriangulatePairs(f.prepared, f.geometry, pairs, f.core, TriangulationMethod::kMidpoint, 3, &p);
+    steps::TriangulateCore(f.prepared, f.geometry, pairs, f.core, TriangulationMethod::kMidpoint, 3, &p);
     ScoreScratch scratch;
     ScoreProposals(f.prepared, f.geometry, f.core, limbs, options, nullptr, &scratch, &p);
     return p;
@@ -288,16 +289,16 @@ TEST(ScoreProposals, ModesConfidenceAndLimbPruning) {
   EXPECT_LT(pruned.pair_score[0], u.pair_score[0]);
 }
 
-TEST(FilterProposals, KeepsPairsAtOrAboveTheThreshold) {
+TEST(Filter, KeepsPairsAtOrAboveTheThreshold) {
   Proposals p = OneJointProposals({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}});
   p.pair_score = {0.95, 0.5, 0.9};
   FilterOptions options;
   options.min_match_score = 0.9;
-  EXPECT_EQ(FilterProposals(options, &p), 2);
+  EXPECT_EQ(steps::Filter(options, &p), 2);
   EXPECT_NEAR(p.xyz[1].x(), 2.0, 1e-12);
 }
 
-TEST(GroupProposals, ClustersByPersonAndDropsSmallGroups) {
+TEST(Group, ClustersByPersonAndDropsSmallGroups) {
   Proposals p;
   p.Clear(3);
   auto add = [&](Eigen::Vector3d base, double score) {
@@ -317,10 +318,10 @@ TEST(GroupProposals, ClustersByPersonAndDropsSmallGroups) {
   add({5, 5, 0}, 0.91);  // a lone proposal
   Groups groups;
   GroupScratch scratch;
-  GroupCounters counters;
+  FrameStats counters;
   GroupOptions options;
   const std::vector<int> no_mirror = {0, 1, 2};
-  EXPECT_EQ(GroupProposals(options, 12, no_mirror, &p, &groups, &scratch, &counters), 3);
+  EXPECT_EQ(steps::Group(options, 12, no_mirror, &p, &groups, &scratch, &counters), 3);
   EXPECT_EQ(counters.small_groups, 0);
   EXPECT_EQ(counters.conflicting_proposals, 0);
   EXPECT_EQ(p.group[0], p.group[2]);
@@ -328,13 +329,13 @@ TEST(GroupProposals, ClustersByPersonAndDropsSmallGroups) {
   EXPECT_EQ(p.group[1], p.group[3]);
   EXPECT_NE(p.group[0], p.group[1]);
   options.min_group_size = 2;
-  EXPECT_EQ(GroupProposals(options, 12, no_mirror, &p, &groups, &scratch, &counters), 2);
+  EXPECT_EQ(steps::Group(options, 12, no_mirror, &p, &groups, &scratch, &counters), 2);
   EXPECT_EQ(counters.small_groups, 1);
   EXPECT_EQ(p.group[5], -1);
   EXPECT_EQ(groups.members.size(), 5u);
 }
 
-TEST(GroupProposals, ExclusivePosesRemovePhantomsThatReuseAPersonsPoses) {
+TEST(Group, ExclusivePosesRemovePhantomsThatReuseAPersonsPoses) {
   // Person A: poses 0,1,2 (three views) -> proposals (0,1), (0,2), (1,2) near the origin.
   // Phantom: pair (2, 3) -- pose 2 belongs to A -- triangulated 1.5 m away.
   Proposals p;
@@ -352,18 +353,18 @@ TEST(GroupProposals, ExclusivePosesRemovePhantomsThatReuseAPersonsPoses) {
   add(2, 3, {1.5, 0, 0}, 0.99);  // stronger pair score, but a weaker group
   Groups groups;
   GroupScratch scratch;
-  GroupCounters counters;
+  FrameStats counters;
   GroupOptions options;
   const std::vector<int> no_mirror = {0, 1};
-  EXPECT_EQ(GroupProposals(options, 4, no_mirror, &p, &groups, &scratch, &counters), 1);
+  EXPECT_EQ(steps::Group(options, 4, no_mirror, &p, &groups, &scratch, &counters), 1);
   EXPECT_EQ(counters.conflicting_proposals, 1);
   EXPECT_EQ(p.group[3], -1);
   options.exclusive_poses = false;
-  EXPECT_EQ(GroupProposals(options, 4, no_mirror, &p, &groups, &scratch, &counters), 2);
+  EXPECT_EQ(steps::Group(options, 4, no_mirror, &p, &groups, &scratch, &counters), 2);
   EXPECT_EQ(counters.conflicting_proposals, 0);
 }
 
-TEST(GroupProposals, MirroredDuplicateOfAPersonIsDropped) {
+TEST(Group, MirroredDuplicateOfAPersonIsDropped) {
   // Joints: 0 = left, 1 = right. Person: left at y=+0.2, right at y=-0.2 (three proposals).
   // A left/right-swapped detection pair gives the same person mirrored (one proposal).
   Proposals p;
@@ -381,15 +382,15 @@ TEST(GroupProposals, MirroredDuplicateOfAPersonIsDropped) {
   add(3, 4, -0.2, 0.99);  // mirrored: its "left" joint sits on the person's right
   Groups groups;
   GroupScratch scratch;
-  GroupCounters counters;
+  FrameStats counters;
   GroupOptions options;
   const std::vector<int> mirror = {1, 0};
-  EXPECT_EQ(GroupProposals(options, 5, mirror, &p, &groups, &scratch, &counters), 1);
+  EXPECT_EQ(steps::Group(options, 5, mirror, &p, &groups, &scratch, &counters), 1);
   EXPECT_EQ(counters.mirrored_groups, 1);
   EXPECT_EQ(p.group[3], -1);
   EXPECT_EQ(p.group[0], 0);
   options.drop_mirrored = false;
-  EXPECT_EQ(GroupProposals(options, 5, mirror, &p, &groups, &scratch, &counters), 2);
+  EXPECT_EQ(steps::Group(options, 5, mirror, &p, &groups, &scratch, &counters), 2);
 }
 
 TEST(JointSide, ReadsTheSideToken) {
@@ -410,7 +411,7 @@ TEST(MirrorJointName, SwapsSideTokens) {
   EXPECT_EQ(mirror[16], 15);
 }
 
-TEST(MergeGroups, DistanceFilterTopKAndWeighting) {
+TEST(Merge, DistanceFilterTopKAndWeighting) {
   // One group, one joint, five proposals: four near (0,0,0), one outlier at 1 m.
   Proposals p = OneJointProposals({{0.01, 0, 0}, {-0.01, 0, 0}, {0.03, 0, 0}, {0, 0.02, 0}, {1, 0, 0}});
   p.score = {1.0, 1.0, 0.5, 1.0, 1.0};
@@ -421,7 +422,7 @@ TEST(MergeGroups, DistanceFilterTopKAndWeighting) {
   auto merge = [&](MergeOptions options) {
     Poses3D persons;
     persons.Clear(1);
-    MergeGroups(options, p, groups, &scratch, &persons);
+    steps::Merge(options, p, groups, &scratch, &persons);
     return Eigen::Vector4d(persons.Person(0).col(0));
   };
   MergeOptions plain;
@@ -447,20 +448,20 @@ TEST(MergeGroups, DistanceFilterTopKAndWeighting) {
   pair_group.members = {0, 1};
   Poses3D out;
   out.Clear(1);
-  MergeGroups(distance, two, pair_group, &scratch, &out);
+  steps::Merge(distance, two, pair_group, &scratch, &out);
   EXPECT_NEAR(out.Person(0)(0, 0), 1.0, 1e-12);
   EXPECT_NEAR(out.Person(0)(3, 0), 0.8, 1e-12);
   MergeOptions no_fallback = distance;
   no_fallback.keep_best_when_all_far = false;
   out.Clear(1);
-  MergeGroups(no_fallback, two, pair_group, &scratch, &out);
+  steps::Merge(no_fallback, two, pair_group, &scratch, &out);
   EXPECT_EQ(out.Person(0)(3, 0), 0.0);
   MergeOptions strict = plain;
   strict.min_joint_score = 1.1;
   EXPECT_EQ(merge(strict)(3), 0.0) << "no candidate: missing";
 }
 
-TEST(PostprocessPersons, DropsInvalidPersonsAndFillsMissingJoints) {
+TEST(Postprocess, DropsInvalidPersonsAndFillsMissingJoints) {
   const JointNames names = AddDerivedJoints(CocoBodyJoints());
   std::vector<int> neighbour;
   for (const auto& n : names) neighbour.push_back(FindJoint(names, NeighbourJoint(n)));
@@ -490,7 +491,7 @@ TEST(PostprocessPersons, DropsInvalidPersonsAndFillsMissingJoints) {
   RoomCheckOptions room;
   room.size_m = Eigen::Vector3d(10, 10, 0);
   FrameStats stats;
-  EXPECT_EQ(PostprocessPersons(PostprocessOptions{}, room, neighbour, limbs, &persons, &stats), 2);
+  EXPECT_EQ(steps::Postprocess(PostprocessOptions{}, room, neighbour, limbs, &persons, &stats), 2);
   EXPECT_EQ(persons.num_persons(), 2);
   EXPECT_GE(stats.filled_joints, 2);
   EXPECT_EQ(stats.replaced_joints, 1);
@@ -501,7 +502,7 @@ TEST(PostprocessPersons, DropsInvalidPersonsAndFillsMissingJoints) {
   PostprocessOptions off;
   off.enabled = false;
   add(tiny);
-  EXPECT_EQ(PostprocessPersons(off, room, neighbour, limbs, &persons, &stats), 3);
+  EXPECT_EQ(steps::Postprocess(off, room, neighbour, limbs, &persons, &stats), 3);
 }
 
 }  // namespace

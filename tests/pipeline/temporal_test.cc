@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "core/joints.h"
-#include "core/pipeline/check_bone_lengths.h"
-#include "core/pipeline/smooth_tracks.h"
+#include "core/pipeline/bone_lengths.h"
+#include "core/pipeline/smooth.h"
 #include "core/pipeline/triangulator.h"
 #include "core/smooth_offline.h"
 #include "datasets/synthetic/detector_simulator.h"

@@ -4,7 +4,7 @@
 
 #include "core/joints.h"
 #include "core/pipeline/clip_speed.h"
-#include "core/pipeline/track_persons.h"
+#include "core/pipeline/track.h"
 #include "tests/pipeline/test_scene.h"
 
 namespace rpt {
@@ -97,12 +97,12 @@ TEST(ClipSpeed, LimitsJointDisplacementPerSecond) {
   tracker.Assign(options, Core(), &frame1, &stats);
   ClipSpeedOptions clip;
   clip.max_speed_m_s = 1.0;  // 10 cm per 0.1 s
-  EXPECT_EQ(ClipSpeed(clip, tracker, 0.1, 1, &frame1), 1);
+  EXPECT_EQ(steps::ClipSpeed(clip, tracker, 0.1, 1, &frame1), 1);
   const Eigen::Vector3d step = frame1.Person(0).col(9).head<3>() - frame0.Person(0).col(9).head<3>();
   EXPECT_NEAR(step.norm(), 0.1, 1e-12);
   EXPECT_LT((frame1.Person(0).col(0) - moved.col(0)).norm(), 1e-12) << "slow joints untouched";
   clip.enabled = false;
-  EXPECT_EQ(ClipSpeed(clip, tracker, 0.1, 1, &frame1), 0);
+  EXPECT_EQ(steps::ClipSpeed(clip, tracker, 0.1, 1, &frame1), 0);
 }
 
 }  // namespace

@@ -20,7 +20,7 @@ TEST(Triangulator, RecoversTwoPersonsExactly) {
   FrameStats stats;
   tri.Process(test::ProjectPersons(cameras, bodies), 0.0, &persons, &stats);
   ASSERT_EQ(persons.num_persons(), 2);
-  EXPECT_EQ(stats.count[static_cast<int>(Step::kPairs)], 6 * 4);
+  EXPECT_EQ(stats.count[static_cast<int>(Step::kMakePairs)], 6 * 4);
   EXPECT_EQ(stats.count[static_cast<int>(Step::kFilter)], 12) << "only the 6 correct pairs per person survive";
   for (const auto& body : bodies) {
     double best = 1e9;
@@ -31,6 +31,40 @@ TEST(Triangulator, RecoversTwoPersonsExactly) {
   // Derived joints are the means of their sources.
   const auto p0 = persons.Person(0);
   EXPECT_LT((p0.col(17).head<3>() - 0.5 * (p0.col(11).head<3>() + p0.col(12).head<3>())).norm(), 1e-3);
+}
+
+TEST(Triangulator, StepsThatDoNotRunRecordNoTimeAndNoCount) {
+  const auto cameras = test::RingCameras(4);
+  const auto views = test::ProjectPersons(cameras, {test::StandingPerson(0, 0)});
+  TriangulatorOptions no_track;
+  no_track.track.enabled = false;  // clip_speed is enabled, but needs tracking
+  ASSERT_TRUE(no_track.clip_speed.enabled);
+  Triangulator tri(cameras, CocoBodyJoints(), no_track);
+  Poses3D persons;
+  FrameStats stats;
+  for (double t : {0.0, 0.04}) {
+    tri.Process(views, t, &persons, &stats);
+    ASSERT_EQ(persons.num_persons(), 1);
+    for (Step step : {Step::kTrack, Step::kClipSpeed, Step::kBoneLengths, Step::kSmooth}) {
+      EXPECT_EQ(stats.time_us[static_cast<int>(step)], 0.0) << Info(step).key;
+      EXPECT_EQ(stats.count[static_cast<int>(step)], 0) << Info(step).key;
+    }
+    EXPECT_EQ(stats.count[static_cast<int>(Step::kRemember)], 1) << "the person is kept for the pre-filter";
+  }
+  // With tracking on, track and clip_speed run; bone_lengths and smooth are off by default.
+  Triangulator tracked(cameras, CocoBodyJoints(), TriangulatorOptions{});
+  tracked.Process(views, 0.0, &persons, &stats);
+  EXPECT_EQ(stats.count[static_cast<int>(Step::kTrack)], 1);
+  EXPECT_GT(stats.time_us[static_cast<int>(Step::kTrack)], 0.0);
+  EXPECT_EQ(stats.time_us[static_cast<int>(Step::kBoneLengths)], 0.0);
+  EXPECT_EQ(stats.time_us[static_cast<int>(Step::kSmooth)], 0.0);
+}
+
+TEST(Triangulator, KeepsTheOptionsAsGiven) {
+  TriangulatorOptions options;
+  ASSERT_EQ(options.group.min_group_size, 0) << "automatic";
+  const Triangulator tri(test::RingCameras(10), CocoBodyJoints(), options);
+  EXPECT_EQ(tri.options().group.min_group_size, 0) << "the resolved value (2 with 10 cameras) stays internal";
 }
 
 TEST(Triangulator, EmptyFramesAndFramesWithOneViewGiveNobody) {

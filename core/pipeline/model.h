@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: MIT
+// The Triangulator's resolved model: everything fixed when it is built (cameras, view geometry,
+// joints, derived-joint rules, core joints, limbs, neighbours, resolved options). Built once by
+// BuildModel() and read-only afterwards; the steps take the parts they read as const references.
+// The per-frame buffers are in frame_buffers.h, the state carried between frames in
+// temporal_state.h.
+#pragma once
+
+#include <vector>
+
+#include "core/camera.h"
+#include "core/joints.h"
+#include "core/pipeline/options.h"
+#include "core/pipeline/pipeline_types.h"
+#include "core/pipeline/single_view.h"
+#include "core/pipeline/undistort.h"
+
+namespace rpt {
+
+struct TriangulatorModel {
+  std::vector<Camera> cameras;
+  std::vector<ViewGeometry> geometry;  // per camera
+  JointNames input_joints;
+  JointNames output_joints;            // input joints + derived joints
+  TriangulatorOptions options;         // as the user gave them
+  TriangulatorOptions resolved;        // what the steps read: `options` with automatic values
+                                       // resolved (group.min_group_size = 0 -> 1 or 2)
+  std::vector<DerivedJointRule> derived;
+  std::vector<int> core_joints;        // step 3: output-joint indices of the core joints
+  std::vector<int> core_mirror;        // per core slot: slot of its left/right counterpart
+  std::vector<int> all_joints;         // 0 .. num_output_joints-1
+  std::vector<ResolvedLimb> core_limbs;  // indexed by core slot
+  std::vector<ResolvedLimb> all_limbs;   // indexed by output joint
+  std::vector<int> neighbour;          // per output joint, -1 = none
+  std::vector<TypicalLimb> typical_limbs;  // single_view: limbs with typical lengths
+
+  int num_core_joints() const { return static_cast<int>(core_joints.size()); }
+  int num_output_joints() const { return static_cast<int>(output_joints.size()); }
+};
+
+// Validates the inputs (ConfigError on bad options, cameras or joint lists) and resolves them.
+TriangulatorModel BuildModel(std::vector<Camera> cameras, JointNames input_joints, TriangulatorOptions options);
+
+}  // namespace rpt

@@ -1,0 +1,75 @@
+// SPDX-License-Identifier: MIT
+#include "core/pipeline/postprocess.h"
+
+#include <algorithm>
+
+#include "core/pipeline/room_check.h"
+
+namespace rpt {
+
+int FillMissingJoints(std::span<const int> neighbour, double filled_score, Eigen::Map<Eigen::Matrix4Xd> person) {
+  const int n = static_cast<int>(person.cols());
+  int filled = 0;
+  // Repeated passes let fills propagate along chains (e.g. finger tip <- ... <- wrist).
+  for (int pass = 0; pass < 6; ++pass) {
+    bool changed = false;
+    for (int j = 0; j < n; ++j) {
+      if (person(3, j) > 0 || neighbour[j] < 0 || person(3, neighbour[j]) <= 0) continue;
+      person.col(j).head<3>() = person.col(neighbour[j]).head<3>();
+      person(3, j) = filled_score;
+      ++filled;
+      changed = true;
+    }
+    if (!changed) break;
+  }
+  return filled;
+}
+
+int steps::Postprocess(const PostprocessOptions& options, const RoomCheckOptions& room, std::span<const int> neighbour,
+                       std::span<const ResolvedLimb> limbs, Poses3D* persons, FrameStats* stats) {
+  if (!options.enabled) return persons->num_persons();
+  const int n = persons->num_joints;
+  int kept = 0;
+  for (int p = 0; p < persons->num_persons(); ++p) {
+    auto person = persons->Person(p);
+    int replaced = 0;
+    if (options.replace_wrong_joints) {
+      for (const ResolvedLimb& limb : limbs) {
+        if (person(3, limb.a) <= 0 || person(3, limb.b) <= 0) continue;
+        const double length_sq = (person.col(limb.a).head<3>() - person.col(limb.b).head<3>()).squaredNorm();
+        if (length_sq < limb.min_length_sq() || length_sq > limb.max_length_sq()) {
+          person(3, limb.b) = 0;
+          ++replaced;
+        }
+      }
+    }
+    int valid = 0;
+    Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = Eigen::Vector3d::Constant(-1e300);
+    Eigen::Vector3d center = Eigen::Vector3d::Zero();
+    for (int j = 0; j < n; ++j) {
+      if (person(3, j) <= 0) continue;
+      const Eigen::Vector3d x = person.col(j).head<3>();
+      lo = lo.cwiseMin(x);
+      hi = hi.cwiseMax(x);
+      center += x;
+      ++valid;
+    }
+    if (valid < options.min_valid_joints || valid == 0) continue;
+    const double extent = (hi - lo).norm();
+    if (extent < options.min_extent_m || extent > options.max_extent_m) continue;
+    if (options.drop_outside_room && !InsideRoom(center / valid, room)) continue;
+    stats->replaced_joints += replaced;
+
+    if (options.fill_missing_joints) stats->filled_joints += FillMissingJoints(neighbour, options.filled_joint_score, person);
+    if (kept != p) {
+      persons->Person(kept) = persons->Person(p);
+      persons->track_ids[kept] = persons->track_ids[p];
+    }
+    ++kept;
+  }
+  persons->data.resize(static_cast<size_t>(kept) * 4 * n);
+  persons->track_ids.resize(kept);
+  return kept;
+}
+
+}  // namespace rpt

@@ -1,0 +1,190 @@
+// SPDX-License-Identifier: MIT
+#include "core/pipeline/prefilter.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace rpt {
+
+namespace {
+
+// Keeps at most max_pairs_per_person of the pairs matched to each previous person (see the header).
+int ApplyPairBudget(const PreparedViews& views, std::span<const ViewGeometry> geometry, std::span<const int> core_joints,
+                    const PreviousPersons& previous, const PrefilterOptions& options, PrefilterScratch* scratch,
+                    std::vector<PosePair>* pairs) {
+  const int num_previous = previous.size();
+  const int num_core = previous.num_core;
+  const int num_views = static_cast<int>(geometry.size());
+  const std::vector<int>& match = scratch->match;
+  const size_t budget = static_cast<size_t>(options.max_pairs_per_person);
+
+  // Pairs per person (both sides match the same person after the filter above): counting sort.
+  scratch->bucket_begin.assign(num_previous + 1, 0);
+  for (const PosePair& pair : *pairs) {
+    if (match[pair.a] >= 0) ++scratch->bucket_begin[match[pair.a] + 1];
+  }
+  bool over_budget = false;
+  for (int q = 0; q < num_previous; ++q) {
+    over_budget |= static_cast<size_t>(scratch->bucket_begin[q + 1]) > budget;
+    scratch->bucket_begin[q + 1] += scratch->bucket_begin[q];
+  }
+  if (!over_budget) return static_cast<int>(pairs->size());
+  scratch->bucket.resize(scratch->bucket_begin[num_previous]);
+  scratch->bucket_fill.assign(scratch->bucket_begin.begin(), scratch->bucket_begin.end() - 1);
+  for (size_t k = 0; k < pairs->size(); ++k) {
+    const int q = match[(*pairs)[k].a];
+    if (q >= 0) scratch->bucket[scratch->bucket_fill[q]++] = static_cast<int>(k);
+  }
+
+  scratch->keep.assign(pairs->size(), 1);
+  scratch->covered.resize(views.num_poses());
+  scratch->directions.resize(static_cast<size_t>(num_views));
+  for (int q = 0; q < num_previous; ++q) {
+    const int first = scratch->bucket_begin[q], last = scratch->bucket_begin[q + 1];
+    if (static_cast<size_t>(last - first) <= budget) continue;
+    // The person's last centre and the unit direction from it to every camera.
+    Eigen::Vector3d center = Eigen::Vector3d::Zero();
+    int n = 0;
+    for (int c = 0; c < num_core; ++c) {
+      const size_t idx = static_cast<size_t>(q) * num_core + c;
+      if (previous.score[idx] <= 0) continue;
+      center += previous.xyz[idx];
+      ++n;
+    }
+    if (n > 0) center /= n;
+    for (int v = 0; v < num_views; ++v) scratch->directions[v] = (geometry[v].center - center).normalized();
+    // Quality: sin of the ray angle at the person x the 2D confidence both poses share.
+    scratch->budget.clear();
+    for (int i = first; i < last; ++i) {
+      const int k = scratch->bucket[i];
+      const PosePair& pair = (*pairs)[k];
+      const Keypoint* ka = views.Pose(pair.a);
+      const Keypoint* kb = views.Pose(pair.b);
+      double evidence = 0;
+      for (int c : core_joints) evidence += ka[c].sqrt_score * kb[c].sqrt_score;
+      const double sine =
+          scratch->directions[views.view_of[pair.a]].cross(scratch->directions[views.view_of[pair.b]]).norm();
+      scratch->budget.emplace_back(-sine * evidence, k);  // best first
+      scratch->keep[k] = 0;
+      scratch->covered[pair.a] = scratch->covered[pair.b] = 0;
+    }
+    std::sort(scratch->budget.begin(), scratch->budget.end());
+    // Every pose of the person keeps its two best pairs (so the person's group claims all its
+    // poses even if the score filter drops one), then the budget fills by quality.
+    constexpr char kPairsPerPose = 2;
+    size_t used = 0;
+    for (const auto& [quality, k] : scratch->budget) {
+      const PosePair& pair = (*pairs)[k];
+      if (scratch->covered[pair.a] >= kPairsPerPose && scratch->covered[pair.b] >= kPairsPerPose) continue;
+      ++scratch->covered[pair.a];
+      ++scratch->covered[pair.b];
+      scratch->keep[k] = 1;
+      ++used;
+    }
+    for (const auto& [quality, k] : scratch->budget) {
+      if (used >= budget) break;
+      if (!scratch->keep[k]) {
+        scratch->keep[k] = 1;
+        ++used;
+      }
+    }
+  }
+  int kept = 0;
+  for (size_t k = 0; k < pairs->size(); ++k) {
+    if (scratch->keep[k]) (*pairs)[kept++] = (*pairs)[k];
+  }
+  pairs->resize(kept);
+  return kept;
+}
+
+}  // namespace
+
+int steps::Prefilter(const PreparedViews& views, std::span<const ViewGeometry> geometry,
+                     std::span<const int> core_joints, const PreviousPersons& previous, double timestamp_s,
+                     const PrefilterOptions& options, PrefilterScratch* scratch, std::vector<PosePair>* pairs) {
+  std::vector<int>* match = &scratch->match;
+  const int num_previous = previous.size();
+  if (!options.enabled || num_previous == 0) return static_cast<int>(pairs->size());
+
+  const int num_core = static_cast<int>(core_joints.size());
+  constexpr double kPersonSizeM = 1.8;
+  const double elapsed_s = std::max(0.0, timestamp_s - previous.timestamp_s);
+  const double radius_rel = options.max_distance_rel + options.person_speed_m_s * elapsed_s / kPersonSizeM;
+  match->assign(views.num_poses(), kPoseFree);
+  scratch->distance.assign(views.num_poses(), 0.0);
+  // Project every previous person into every view once.
+  const int num_views = static_cast<int>(views.view_begin.size()) - 1;
+  const size_t per_view = static_cast<size_t>(num_previous) * num_core;
+  scratch->projected.resize(per_view * num_views);
+  for (int v = 0; v < num_views; ++v) {
+    const ViewGeometry& geo = geometry[v];
+    for (size_t idx = 0; idx < per_view; ++idx) {
+      Eigen::Vector2d& uv = scratch->projected[v * per_view + idx];
+      const Eigen::Vector3d h = geo.P.leftCols<3>() * previous.xyz[idx] + geo.P.col(3);
+      if (previous.score[idx] <= 0 || h.z() <= 0) {
+        uv.setConstant(std::numeric_limits<double>::quiet_NaN());
+      } else {
+        uv = h.head<2>() / h.z();
+      }
+    }
+  }
+  for (int g = 0; g < views.num_poses(); ++g) {
+    const Keypoint* kps = views.Pose(g);
+    const Eigen::Vector2d* projected = scratch->projected.data() + views.view_of[g] * per_view;
+    const double radius = radius_rel * views.bbox_diag[g];
+    double best = std::numeric_limits<double>::infinity(), second = best;
+    int best_q = -1;
+    for (int q = 0; q < num_previous; ++q) {
+      double sum = 0;
+      int n = 0;
+      for (int c = 0; c < num_core; ++c) {
+        const Keypoint& kp = kps[core_joints[c]];
+        const Eigen::Vector2d& uv = projected[static_cast<size_t>(q) * num_core + c];
+        if (kp.score <= 0 || std::isnan(uv.x())) continue;
+        const double du = uv.x() - kp.u, dv = uv.y() - kp.v;
+        sum += std::sqrt(du * du + dv * dv);
+        ++n;
+      }
+      if (n < 3) continue;
+      const double mean = sum / n;
+      if (mean < best) {
+        second = best;
+        best = mean;
+        best_q = q;
+      } else if (mean < second) {
+        second = mean;
+      }
+    }
+    if (best < radius && second >= options.ambiguity_ratio * best) {
+      (*match)[g] = best_q;
+      scratch->distance[g] = best;
+    } else if (best < 2 * radius) {
+      (*match)[g] = kPoseAmbiguous;
+    }
+  }
+  // One match per person and view: of several poses of a view matching q, only the closest keeps it.
+  for (int v = 0; v < num_views; ++v) {
+    for (int g = views.view_begin[v]; g < views.view_begin[v + 1]; ++g) {
+      if ((*match)[g] < 0) continue;
+      for (int h = g + 1; h < views.view_begin[v + 1]; ++h) {
+        if ((*match)[h] != (*match)[g]) continue;
+        const int loser = scratch->distance[h] < scratch->distance[g] ? g : h;
+        (*match)[loser] = kPoseAmbiguous;
+        if (loser == g) break;
+      }
+    }
+  }
+
+  int kept = 0;
+  for (const PosePair& pair : *pairs) {
+    const int a = (*match)[pair.a], b = (*match)[pair.b];
+    const bool drop = (a >= 0 && b >= 0 && a != b) || (a >= 0 && b == kPoseFree) || (a == kPoseFree && b >= 0);
+    if (!drop) (*pairs)[kept++] = pair;
+  }
+  pairs->resize(kept);
+  if (options.max_pairs_per_person > 0) kept = ApplyPairBudget(views, geometry, core_joints, previous, options, scratch, pairs);
+  return kept;
+}
+
+}  // namespace rpt

@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: MIT
+// Step 2: filter pairs with the last frame's 3D poses.
+//
+// The previous persons' core joints are projected into every view and compared with each 2D pose
+// (mean core-joint distance relative to the pose's bounding-box diagonal). A pose is
+//   matched to person q  when q is within the match radius, clearly the closest (the second
+//                        closest is at least `ambiguity_ratio` times farther), and this pose is
+//                        q's closest pose in its view (a person is matched once per view),
+//   free                 when nobody is within twice the radius (a new person),
+//   ambiguous            otherwise.
+// A pair is dropped when its poses match different persons, or when one is matched and the other
+// free (the paper's one-sided case: the other pose is somebody else); every other pair is kept,
+// in particular both-matched-same, both-free and anything ambiguous. Refusing to act on ambiguous
+// matches keeps true pairs in crowded views and in sparsely sampled sequences.
+//
+// Pair budget (an addition to the paper): a person matched in k views yields k(k-1)/2 pairs, 465
+// with 31 cameras, far more than the merge needs (it keeps the top-k closest proposals per
+// joint). Of the pairs matched to one person only max_pairs_per_person are kept: first the two
+// best pairs of every pose (so no pose of the person is left unclaimed, even if the score filter
+// drops one), then the best remaining ones. Quality = sin of the angle at which the viewing rays
+// meet at the person's last position x the 2D confidence both poses share on the core joints.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "core/pipeline/options.h"
+#include "core/pipeline/pipeline_types.h"
+
+namespace rpt {
+
+// Core joints of the previous frame's persons: `num_core` entries per person; score 0 = missing.
+struct PreviousPersons {
+  int num_core = 0;
+  double timestamp_s = 0;  // when these persons were output
+  std::vector<Eigen::Vector3d> xyz;
+  std::vector<double> score;
+  int size() const { return num_core > 0 ? static_cast<int>(score.size()) / num_core : 0; }
+  void Clear(int core) {
+    num_core = core;
+    xyz.clear();
+    score.clear();
+  }
+};
+
+inline constexpr int kPoseFree = -1;
+inline constexpr int kPoseAmbiguous = -2;
+
+struct PrefilterScratch {
+  std::vector<int> match;         // per pose: person index, kPoseFree or kPoseAmbiguous
+  std::vector<double> distance;   // per pose: distance to the matched person (px)
+  std::vector<Eigen::Vector2d> projected;  // per view, person and core joint (NaN = not visible)
+  std::vector<int> bucket_begin;           // per previous person + 1: offsets into bucket
+  std::vector<int> bucket;                 // pair indices grouped by matched person
+  std::vector<int> bucket_fill;
+  std::vector<Eigen::Vector3d> directions;  // per view: unit vector from the person to the camera
+  std::vector<std::pair<double, int>> budget;  // (-quality, pair index) of one person's pairs
+  std::vector<char> keep;                  // per pair
+  std::vector<char> covered;               // per pose: used by a kept pair of its person
+};
+
+namespace steps {
+
+// Classifies every pose into scratch->match, then compacts `pairs`.
+// Returns the number of pairs kept. Does nothing (keeps all) when there are no previous persons.
+// `timestamp_s` is the current frame's time (the radius grows with the time since `previous`).
+int Prefilter(const PreparedViews& views, std::span<const ViewGeometry> geometry,
+              std::span<const int> core_joints, const PreviousPersons& previous, double timestamp_s,
+              const PrefilterOptions& options, PrefilterScratch* scratch, std::vector<PosePair>* pairs);
+
+}  // namespace steps
+
+}  // namespace rpt

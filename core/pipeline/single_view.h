@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: MIT
+// Step 12b (`single_view`, an addition, off by default): persons seen by only one camera.
+//
+// Triangulation needs two views; with few cameras and heavy occlusion (3 cameras in an operating
+// room) a quarter of the people are detected in one view only. This step places such a person
+// on its viewing rays at the depth its 2D limb lengths imply for a typical adult (shoulder width
+// 0.36 m, hip width 0.24 m, shoulder-to-hip 0.50 m, upper arm 0.29 m, forearm 0.26 m, thigh
+// 0.42 m, shin 0.40 m). Foreshortening only shortens a limb in the image, so each limb's depth
+// estimate is too far, never too near; the depth taken is the second nearest of the estimates
+// (the nearest when there are two), which also ignores one limb detected too long.
+// The joints lie on their rays at that depth (a flat pose); their scores are the 2D confidences
+// times score_factor, so these persons rank below triangulated ones.
+//
+// A pose is lifted only when it
+//   * belongs to no kept group and overlaps no person already found (box IoU < 0.3 in its view),
+//   * has at least min_core_joints core joints with confidence >= min_joint_score, two limbs of
+//     the list above among them,
+//   * is not contradicted by the other views (verify.h: fewer than
+//     verify.min_empty_views empty views, or not more than the one view that sees it),
+//   * is at least duplicate_distance_m (centre to centre) from every person found and lifted
+//     before it (poses are taken by decreasing mean confidence).
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "core/joints.h"
+#include "core/pipeline/frame_stats.h"
+#include "core/pipeline/options.h"
+#include "core/pipeline/pipeline_types.h"
+#include "core/pipeline/verify.h"
+#include "core/poses.h"
+
+namespace rpt {
+
+// A limb with its typical adult length, resolved to joint indices.
+struct TypicalLimb {
+  int a = 0, b = 0;
+  double length_m = 0;
+};
+// The limbs listed above that `joints` has.
+std::vector<TypicalLimb> ResolveTypicalLimbs(const JointNames& joints);
+
+struct SingleViewScratch {
+  std::vector<char> taken;                       // per prepared pose: used by a person already
+  std::vector<std::pair<double, int>> order;     // (-mean confidence, pose) of the candidates
+  std::vector<double> depths;                    // per limb of one pose
+  std::vector<Eigen::Vector3d> centers;          // per person: centre of its valid core joints
+  Eigen::Matrix4Xd person;                       // the person being lifted
+};
+
+namespace steps {
+
+// `proposals`/`groups`: the merged groups (step 11) whose poses are taken; `found`: the persons
+// found so far. Fills `lifted` (cleared first) and counts them in stats->single_view_persons.
+// Returns the number lifted.
+int SingleView(const SingleViewOptions& options, const VerifyOptions& verify, const PreparedViews& views,
+               std::span<const ViewGeometry> geometry, std::span<const int> core_joints,
+               std::span<const TypicalLimb> limbs, const Proposals& proposals, const Groups& groups,
+               double kernel_scale_m, const Poses3D& found, VerifyScratch* verify_scratch,
+               SingleViewScratch* scratch, Poses3D* lifted, FrameStats* stats);
+
+}  // namespace steps
+
+}  // namespace rpt

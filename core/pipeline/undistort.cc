@@ -1,0 +1,108 @@
+// SPDX-License-Identifier: MIT
+#include "core/pipeline/undistort.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rpt {
+
+namespace {
+
+void SetFromNormalized(const ViewGeometry& g, double x, double y, double score, Keypoint* kp) {
+  kp->x = x;
+  kp->y = y;
+  kp->u = g.fx * x + g.skew * y + g.cx;
+  kp->v = g.fy * y + g.cy;
+  kp->score = score;
+  kp->sqrt_score = std::sqrt(score);
+  kp->ray = g.R_t * Eigen::Vector3d(x, y, 1.0);
+}
+
+}  // namespace
+
+int steps::Undistort(std::span<const Poses2D> views, std::span<const Camera> cameras,
+                     std::span<const ViewGeometry> geometry, std::span<const DerivedJointRule> derived,
+                     std::span<const int> core_joints, int min_core_joints, int num_output_joints,
+                     const UndistortOptions& options, PreparedViews* prepared) {
+  PreparedViews& out = *prepared;
+  out.num_joints = num_output_joints;
+  out.view_of.clear();
+  out.person_of.clear();
+  out.bbox_diag.clear();
+  out.keypoints.clear();
+  out.view_begin.clear();
+
+  const int num_views = static_cast<int>(views.size());
+  for (int v = 0; v < num_views; ++v) {
+    out.view_begin.push_back(out.num_poses());
+    const Poses2D& view = views[v];
+    const Camera& camera = cameras[v];
+    const ViewGeometry& g = geometry[v];
+    const bool distorted = camera.HasDistortion();
+    for (int p = 0; p < view.num_persons(); ++p) {
+      const auto person = view.Person(p);
+      const size_t base = out.keypoints.size();
+      out.keypoints.resize(base + num_output_joints);
+      Keypoint* kps = out.keypoints.data() + base;
+      for (int j = 0; j < view.num_joints; ++j) {
+        const double u = person(0, j), v_px = person(1, j), s = person(2, j);
+        if (!(s >= options.min_joint_score) || !std::isfinite(u) || !std::isfinite(v_px) || !std::isfinite(s)) {
+          kps[j] = Keypoint{};
+          continue;
+        }
+        Eigen::Vector2d xy;
+        if (distorted) {
+          xy = camera.PixelToNormalized(Eigen::Vector2d(u, v_px));
+        } else {
+          // Pinhole: invert K directly (cheaper than the generic path).
+          const double y = (v_px - g.cy) / g.fy;
+          xy = Eigen::Vector2d((u - g.cx - g.skew * y) / g.fx, y);
+        }
+        SetFromNormalized(g, xy.x(), xy.y(), std::min(s, 1.0), &kps[j]);
+      }
+      for (int j = view.num_joints; j < num_output_joints; ++j) kps[j] = Keypoint{};
+      // Derived joints: mean of the sources in normalised coordinates, score = weakest source.
+      for (const DerivedJointRule& rule : derived) {
+        for (const std::vector<int>& sources : rule.alternatives) {
+          double x = 0, y = 0, score = 1.0;
+          bool complete = true;
+          for (int s : sources) {
+            if (kps[s].score <= 0) {
+              complete = false;
+              break;
+            }
+            x += kps[s].x;
+            y += kps[s].y;
+            score = std::min(score, kps[s].score);
+          }
+          if (!complete) continue;
+          const double n = static_cast<double>(sources.size());
+          SetFromNormalized(g, x / n, y / n, score, &kps[rule.output_index]);
+          break;
+        }
+      }
+      // Usable only with enough core joints; bounding box over all valid joints.
+      int core_valid = 0;
+      for (int c : core_joints) core_valid += kps[c].score > 0 ? 1 : 0;
+      if (core_valid < min_core_joints) {
+        out.keypoints.resize(base);
+        continue;
+      }
+      double min_u = 1e300, min_v = 1e300, max_u = -1e300, max_v = -1e300;
+      for (int j = 0; j < num_output_joints; ++j) {
+        if (kps[j].score <= 0) continue;
+        min_u = std::min(min_u, kps[j].u);
+        max_u = std::max(max_u, kps[j].u);
+        min_v = std::min(min_v, kps[j].v);
+        max_v = std::max(max_v, kps[j].v);
+      }
+      out.view_of.push_back(v);
+      out.person_of.push_back(p);
+      out.bbox_diag.push_back(std::max(1.0, std::hypot(max_u - min_u, max_v - min_v)));
+    }
+  }
+  out.view_begin.push_back(out.num_poses());
+  return out.num_poses();
+}
+
+}  // namespace rpt

@@ -1,0 +1,136 @@
+// SPDX-License-Identifier: MIT
+#include "core/pipeline/verify.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace rpt {
+namespace {
+
+double BoxIou(const Eigen::Vector4d& a, const Eigen::Vector4d& b) {
+  const double w = std::min(a[2], b[2]) - std::max(a[0], b[0]);
+  const double h = std::min(a[3], b[3]) - std::max(a[1], b[1]);
+  if (w <= 0 || h <= 0) return 0.0;
+  const double inter = w * h;
+  const double area_a = (a[2] - a[0]) * (a[3] - a[1]), area_b = (b[2] - b[0]) * (b[3] - b[1]);
+  return inter / std::max(area_a + area_b - inter, 1e-12);
+}
+
+// Median of values[0..n) (reorders them); +inf for none.
+double Median(double* values, int n) {
+  if (n <= 0) return std::numeric_limits<double>::infinity();
+  std::nth_element(values, values + n / 2, values + n);
+  return values[n / 2];
+}
+
+}  // namespace
+
+void PoseBoxes(const PreparedViews& views, std::vector<Eigen::Vector4d>* boxes) {
+  boxes->resize(views.num_poses());
+  for (int g = 0; g < views.num_poses(); ++g) {
+    Eigen::Vector4d box(std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+                        -std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity());
+    const Keypoint* kps = views.Pose(g);
+    for (int j = 0; j < views.num_joints; ++j) {
+      if (kps[j].score <= 0) continue;
+      box << std::min(box[0], kps[j].u), std::min(box[1], kps[j].v), std::max(box[2], kps[j].u),
+          std::max(box[3], kps[j].v);
+    }
+    (*boxes)[g] = box;
+  }
+}
+
+ViewVerdict JudgeView(const VerifyOptions& options, const PreparedViews& views, const ViewGeometry& geo, int view,
+                      std::span<const int> core_joints, const Eigen::Ref<const Eigen::Matrix4Xd>& person,
+                      double kernel_scale_m, VerifyScratch* scratch, Eigen::Vector4d* projected_box) {
+  const int num_core = static_cast<int>(core_joints.size());
+  scratch->projected.resize(num_core);
+  scratch->depth.resize(num_core);
+  scratch->residuals.resize(num_core);
+  int valid = 0, inside = 0;
+  Eigen::Vector4d box(std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+                      -std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity());
+  for (int c = 0; c < num_core; ++c) {
+    scratch->depth[c] = -1;
+    if (person(3, core_joints[c]) <= 0) continue;
+    const Eigen::Vector3d h = geo.P.leftCols<3>() * person.col(core_joints[c]).head<3>() + geo.P.col(3);
+    ++valid;
+    if (h.z() <= 0) continue;
+    const Eigen::Vector2d uv = h.head<2>() / h.z();
+    scratch->projected[c] = uv;
+    scratch->depth[c] = h.z();
+    box << std::min(box[0], uv.x()), std::min(box[1], uv.y()), std::max(box[2], uv.x()), std::max(box[3], uv.y());
+    if (uv.x() >= 0 && uv.y() >= 0 && uv.x() < geo.width && uv.y() < geo.height) ++inside;
+  }
+  if (projected_box != nullptr) *projected_box = box;
+  if (inside < 3) return ViewVerdict::kUnseen;
+  double best = std::numeric_limits<double>::infinity();
+  bool occupied = false;
+  for (int g = views.view_begin[view]; g < views.view_begin[view + 1]; ++g) {
+    const Keypoint* kps = views.Pose(g);
+    int n = 0;
+    for (int c = 0; c < num_core; ++c) {
+      const Keypoint& kp = kps[core_joints[c]];
+      if (scratch->depth[c] <= 0 || kp.score <= 0) continue;
+      scratch->residuals[n++] = (scratch->projected[c] - Eigen::Vector2d(kp.u, kp.v)).norm() * scratch->depth[c] / geo.focal;
+    }
+    if (n >= 3) best = std::min(best, Median(scratch->residuals.data(), n));
+    occupied = occupied || BoxIou(box, scratch->boxes[g]) >= 0.1;
+  }
+  if (best <= 2.0 * kernel_scale_m) return ViewVerdict::kSupport;
+  if (!occupied && inside >= options.min_inside_fraction * valid) return ViewVerdict::kEmpty;
+  return ViewVerdict::kOccupied;
+}
+
+int steps::Verify(const VerifyOptions& options, const PreparedViews& views, std::span<const ViewGeometry> geometry,
+                  std::span<const int> core_joints, const Proposals& proposals, const Groups& groups,
+                  double kernel_scale_m, VerifyScratch* scratch, Poses3D* persons, FrameStats* stats) {
+  if (!options.enabled || persons->num_persons() == 0) return persons->num_persons();
+  const int num_views = static_cast<int>(geometry.size());
+  const bool by_group = groups.size() == persons->num_persons();
+  bool have_boxes = false;  // pose boxes are computed when first needed
+  int kept = 0;
+  const int num_joints = persons->num_joints;
+  for (int p = 0; p < persons->num_persons(); ++p) {
+    const auto person = persons->Person(p);
+    int support = 0, empty = 0;
+    scratch->own_view.assign(num_views, 0);
+    if (by_group) {
+      for (int m = groups.begin[p]; m < groups.begin[p + 1]; ++m) {
+        scratch->own_view[views.view_of[proposals.pairs[m].a]] = 1;
+        scratch->own_view[views.view_of[proposals.pairs[m].b]] = 1;
+      }
+      for (int v = 0; v < num_views; ++v) support += scratch->own_view[v];
+    }
+    // Empty views can only come from the other views: skip persons that cannot be dropped.
+    const int others = num_views - support;
+    const bool can_drop = others >= options.min_empty_views && others > support;
+    for (int v = 0; can_drop && v < num_views; ++v) {
+      if (scratch->own_view[v]) continue;
+      if (!have_boxes) {
+        PoseBoxes(views, &scratch->boxes);
+        have_boxes = true;
+      }
+      const ViewVerdict verdict =
+          JudgeView(options, views, geometry[v], v, core_joints, person, kernel_scale_m, scratch, nullptr);
+      support += verdict == ViewVerdict::kSupport;
+      empty += verdict == ViewVerdict::kEmpty;
+    }
+    if (empty >= options.min_empty_views && empty > support) {
+      ++stats->unsupported_persons;
+      continue;
+    }
+    if (kept != p) {
+      std::copy_n(persons->data.begin() + 4 * static_cast<size_t>(p) * num_joints, 4 * static_cast<size_t>(num_joints),
+                  persons->data.begin() + 4 * static_cast<size_t>(kept) * num_joints);
+      persons->track_ids[kept] = persons->track_ids[p];
+    }
+    ++kept;
+  }
+  persons->data.resize(4 * static_cast<size_t>(kept) * num_joints);
+  persons->track_ids.resize(kept);
+  return kept;
+}
+
+}  // namespace rpt
