@@ -57,7 +57,7 @@ MetricsAccumulator::MetricsAccumulator(const EvalOptions& options) : options_(op
   pcp_total_.assign(pcp_layout_.parts.size(), 0);
   pcp_correct_nearest_.assign(pcp_layout_.parts.size(), 0);
   group_num_joints_.assign(WholeBodyGroups().size(), 0);
-  if (options_.legacy_pcp.layout != LegacyPcpLayout::kNone) legacy_.emplace(options_.legacy_pcp);
+  if (options_.legacy_pcp != LegacyPcpLayout::kNone) legacy_.emplace(options_);
 }
 
 void MetricsAccumulator::UpdateLayout(const JointNames& gt_names, const JointNames& pred_names) {
@@ -104,7 +104,7 @@ void MetricsAccumulator::UpdateLayout(const JointNames& gt_names, const JointNam
   }
 
   if (legacy_) {
-    const JointNames& shelf = options_.legacy_pcp.gt_joints.empty() ? Shelf14Joints() : options_.legacy_pcp.gt_joints;
+    const JointNames& shelf = options_.legacy_pcp_gt_joints.empty() ? Shelf14Joints() : options_.legacy_pcp_gt_joints;
     if (!gt_names.empty()) layout.gt_legacy = MapJointNames(shelf, gt_names, "ground-truth (legacy PCP, Shelf14)");
     if (!pred_names.empty()) {
       layout.pred_legacy = MapJointNames(CocoBodyJoints(), pred_names, "prediction (legacy PCP, COCO-17)");
@@ -197,7 +197,7 @@ void MetricsAccumulator::AddLegacyFrame(const Poses3D& gt, const Poses3D& predic
     for (int j = 0; j < 17; ++j) {
       coco.col(j) = JointMmOrNaN(predictions, p, layout_.pred_legacy[j], options_.min_pred_score);
     }
-    preds.push_back(CocoToShelf14(coco, options_.legacy_pcp.layout));
+    preds.push_back(CocoToShelf14(coco, options_.legacy_pcp));
   }
   legacy_->AddFrame(actors, preds);
 }
@@ -326,7 +326,7 @@ MetricsResult MetricsAccumulator::Finalize() const {
   // Match sets: at the gate, at 100 mm and at 500 mm.
   std::vector<bool> in_match(records_.size(), false), in_100(records_.size(), false),
       in_500(records_.size(), false);
-  if (options_.matching == MatchingMode::kGreedyScore) {
+  if (options_.matching == MatchingMode::kGreedy) {
     const std::pair<double, std::vector<bool>*> sets[] = {
         {options_.match_threshold_mm, &in_match}, {100.0, &in_100}, {500.0, &in_500}};
     for (const auto& [threshold, set] : sets) {
@@ -424,7 +424,7 @@ MetricsResult MetricsAccumulator::Finalize() const {
   }
 
   // Generic PCP, pooled over all evaluable parts of all GT persons.
-  const bool nearest_pcp = options_.pcp_matching == PcpMatching::kNearestPrediction;
+  const bool nearest_pcp = options_.pcp_matching == PcpMatching::kNearest;
   int pcp_correct = 0, pcp_total = 0;
   for (size_t k = 0; k < pcp_layout_.parts.size(); ++k) {
     PcpPartResult part;
