@@ -20,6 +20,17 @@ std::filesystem::path WriteTemp(const std::string& name, const std::string& text
   return path;
 }
 
+// The ConfigError of applying `assignment` to `config` and checking it, or "no error".
+std::string ErrorOf(const std::string& assignment, Config* config) {
+  try {
+    ApplyConfigOverride(assignment, config);
+    CheckConfig(*config);
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
 TEST(Config, SetReachesTriangulatorAndMetricOptions) {
   Config c;
   ApplyConfigOverride("prefilter.enabled=false", &c);
@@ -58,15 +69,7 @@ TEST(Config, EveryOptionRoundTripsThroughTextAndJson) {
 
 TEST(Config, UnknownKeysAndBadValuesAreErrorsNamingThePlace) {
   Config c;
-  auto message = [&](const std::string& assignment) {
-    try {
-      ApplyConfigOverride(assignment, &c);
-      CheckConfig(c);
-    } catch (const ConfigError& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
+  auto message = [&c](const std::string& assignment) { return ErrorOf(assignment, &c); };
   EXPECT_NE(message("prefilter.enabld=true").find("unknown option 'prefilter.enabld'"), std::string::npos);
   EXPECT_NE(message("filter.nothing=1").find("filter"), std::string::npos);
   EXPECT_NE(message("prefilter.enabled=maybe").find("expected true or false"), std::string::npos);
@@ -159,14 +162,7 @@ TEST(Config, ListValuesAcceptJsonAndCommaLists) {
   EXPECT_TRUE(c.metrics.evaluated_joints.empty());
   ApplyConfigOverride("room_check.size_m=[1,2,3]", &c);
   EXPECT_EQ(c.triangulator.room_check.size_m, Eigen::Vector3d(1, 2, 3));
-  auto message = [&](const std::string& assignment) {
-    try {
-      ApplyConfigOverride(assignment, &c);
-    } catch (const ConfigError& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
+  auto message = [&c](const std::string& assignment) { return ErrorOf(assignment, &c); };
   // The old trap: a JSON list was taken as the joint names '["a"' and '"b"]'.
   EXPECT_NE(message("triangulate.core_joints=[\"a\",\"b\"").find("is not a JSON list"), std::string::npos);
   EXPECT_NE(message("triangulate.core_joints=[1, 2]").find("expected a list of joint names"), std::string::npos);
@@ -175,14 +171,7 @@ TEST(Config, ListValuesAcceptJsonAndCommaLists) {
 
 TEST(Config, TyposGetADidYouMean) {
   Config c;
-  auto message = [&](const std::string& assignment) {
-    try {
-      ApplyConfigOverride(assignment, &c);
-    } catch (const ConfigError& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
+  auto message = [&c](const std::string& assignment) { return ErrorOf(assignment, &c); };
   EXPECT_NE(message("score.scale_facter=4").find("did you mean 'score.scale_factor'?"), std::string::npos);
   EXPECT_NE(message("sore.scale_factor=4").find("did you mean 'score.scale_factor'?"), std::string::npos);
   EXPECT_NE(message("score.mode=combind").find("did you mean 'combined'?"), std::string::npos);
@@ -219,13 +208,7 @@ TEST(Config, TyposGetADidYouMean) {
 TEST(Config, ChecksNameSectionAndKeyWithRangesFromTheMetadata) {
   auto problem = [](const std::string& assignment) {
     Config c;
-    try {
-      ApplyConfigOverride(assignment, &c);
-      CheckConfig(c);
-    } catch (const ConfigError& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
+    return ErrorOf(assignment, &c);
   };
   EXPECT_EQ(problem("filter.min_match_score=1.5"), "filter.min_match_score: 1.5 is outside [0, 1]");
   EXPECT_EQ(problem("score.scale_factor=0"), "score.scale_factor: 0 must be > 0");

@@ -37,6 +37,14 @@ TEST(EvalOptions, CheckRejectsBadValues) {
   options = {};
   options.legacy_pcp_actors = 0;
   EXPECT_THROW(options.Check(), ConfigError);
+  options = {};
+  options.legacy_pcp_alpha = 0.0;
+  try {
+    options.Check();
+    FAIL();
+  } catch (const ConfigError& e) {
+    EXPECT_STREQ(e.what(), "metrics.legacy_pcp_alpha: 0 must be > 0");
+  }
 }
 
 }  // namespace
