@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 #include <string>
 #include <string_view>
@@ -18,6 +19,7 @@ namespace rpt {
 // The values an OptionSpec accepts: "[0, 1]", "(0, 1]", ">= 0", "> 0", "<= 3"; "" when any.
 inline std::string DescribeRange(const OptionSpec& spec) {
   std::ostringstream s;
+  s << std::setprecision(10);  // 1000000000, not 1e+09
   const bool has_min = std::isfinite(spec.min), has_max = std::isfinite(spec.max);
   if (has_min && has_max) {
     s << (spec.min_exclusive ? "(" : "[") << spec.min << ", " << spec.max << "]";
@@ -37,6 +39,7 @@ std::string CheckOptionValue(const T& value, const OptionSpec& spec) {
     const bool below = spec.min_exclusive ? !(x > spec.min) : !(x >= spec.min);
     if (!std::isfinite(x) || below || x > spec.max) {
       std::ostringstream s;
+      s << std::setprecision(10);
       const bool two_sided = std::isfinite(spec.min) && std::isfinite(spec.max);
       s << x << (two_sided ? " is outside " : " must be ") << DescribeRange(spec);
       return s.str();
