@@ -1,30 +1,155 @@
 // SPDX-License-Identifier: MIT
 #include "cli/config.h"
 
-#include <algorithm>
-#include <functional>
-#include <map>
+#include <Eigen/Core>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <type_traits>
 
+#include "cli/closest_name.h"
 #include "core/errors.h"
+#include "core/options_check.h"
 #include "core/text.h"
 #include "datasets/io/json_file.h"
 
 namespace rpt::cli {
 namespace {
 
-using Json = nlohmann::ordered_json;
+using Json = nlohmann::json;
 
-struct Descriptor {
-  ConfigOptionInfo info;
-  std::function<void(Config&, const Json&, const std::string&)> set;  // from a JSON value
-  std::function<Json(const Config&)> get;
-  std::function<Json(const std::string&, const std::string&)> parse;  // text -> JSON value
-};
+template <class>
+constexpr bool kUnsupportedOptionType = false;
+
+// Calls f(section, key, field, spec) for every option of `config` (Config or const Config), in
+// dump order.
+template <class Self, class F>
+void ForEachOption(Self& config, F&& f) {
+  auto section_visitor = [&f](std::string_view section, auto& options) {
+    auto field_visitor = [&f, section](std::string_view key, auto& field, const OptionSpec& spec) {
+      f(section, key, field, spec);
+    };
+    VisitFields(field_visitor, options);
+  };
+  VisitSections(section_visitor, config);
+}
+
+std::string FullKey(std::string_view section, std::string_view key) {
+  return std::string(section) + "." + std::string(key);
+}
+
+// Calls f(field, spec) for the option named `key` ("section.name"); false when there is none.
+template <class Self, class F>
+bool ForOption(Self& config, const std::string& key, F&& f) {
+  bool found = false;
+  ForEachOption(config, [&](std::string_view section, std::string_view name, auto& field, const OptionSpec& spec) {
+    if (!found && key.size() == section.size() + 1 + name.size() && FullKey(section, name) == key) {
+      found = true;
+      f(field, spec);
+    }
+  });
+  return found;
+}
+
+std::vector<std::string> Sections() {
+  std::vector<std::string> sections;
+  const Config config;
+  ForEachOption(config, [&](std::string_view section, std::string_view, const auto&, const OptionSpec&) {
+    if (sections.empty() || sections.back() != section) sections.emplace_back(section);
+  });
+  return sections;
+}
+
+std::vector<std::string> Keys() {
+  std::vector<std::string> keys;
+  for (const ConfigOptionInfo& option : ConfigOptions()) keys.push_back(option.key);
+  return keys;
+}
+
+[[noreturn]] void UnknownOption(const std::string& where, const std::string& key) {
+  const std::string section = key.substr(0, key.find('.'));
+  std::string known;  // the keys of the section, or the sections
+  for (const std::string& candidate : Keys()) {
+    if (candidate.rfind(section + ".", 0) == 0) AppendItem(&known, candidate.substr(section.size() + 1));
+  }
+  known = known.empty() ? "sections: " + Join(Sections()) : section + " has: " + known;
+  throw ConfigError(where + ": unknown option '" + key + "'" + DidYouMean(key, Keys()) + " (" + known + ")");
+}
 
 [[noreturn]] void Bad(const std::string& where, const std::string& key, const std::string& problem) {
   throw ConfigError(where + ": " + key + ": " + problem);
+}
+
+template <class T>
+std::string TypeName() {
+  if constexpr (std::is_same_v<T, bool>) {
+    return "bool";
+  } else if constexpr (std::is_same_v<T, int>) {
+    return "int";
+  } else if constexpr (std::is_same_v<T, double>) {
+    return "number";
+  } else if constexpr (std::is_same_v<T, JointNames>) {
+    return "list of joint names";
+  } else if constexpr (std::is_same_v<T, Eigen::Vector3d>) {
+    return "[x, y, z]";
+  } else if constexpr (std::is_enum_v<T>) {
+    std::string names;
+    for (const auto& [value, name] : EnumNames<T>::values) AppendItem(&names, name, "|");
+    return names;
+  } else {
+    static_assert(kUnsupportedOptionType<T>, "add the type to TypeName, ToJson, FromJson and TextToJson");
+  }
+}
+
+template <class T>
+Json ToJson(const T& value) {
+  if constexpr (std::is_enum_v<T>) {
+    return Json(std::string(EnumName(value)));
+  } else if constexpr (std::is_same_v<T, Eigen::Vector3d>) {
+    return Json::array({value.x(), value.y(), value.z()});
+  } else {
+    return Json(value);
+  }
+}
+
+// Sets *out from a JSON value; returns the problem ("" when set).
+template <class T>
+std::string FromJson(const Json& v, T* out) {
+  const std::string got = ", got " + v.dump();
+  if constexpr (std::is_same_v<T, bool>) {
+    if (!v.is_boolean()) return "expected true or false" + got;
+    *out = v.get<bool>();
+  } else if constexpr (std::is_same_v<T, int>) {
+    if (!v.is_number_integer()) return "expected an integer" + got;
+    const long long value = v.get<long long>();
+    if (value < std::numeric_limits<int>::min() || value > std::numeric_limits<int>::max()) {
+      return "integer out of range" + got;
+    }
+    *out = static_cast<int>(value);
+  } else if constexpr (std::is_same_v<T, double>) {
+    if (!v.is_number()) return "expected a number" + got;
+    *out = v.get<double>();
+  } else if constexpr (std::is_same_v<T, JointNames>) {
+    if (!v.is_array()) return "expected a list of joint names" + got;
+    JointNames names;
+    for (const Json& item : v) {
+      if (!item.is_string()) return "expected a list of joint names" + got;
+      names.push_back(item.get<std::string>());
+    }
+    *out = std::move(names);
+  } else if constexpr (std::is_same_v<T, Eigen::Vector3d>) {
+    if (!v.is_array() || v.size() != 3 || !v[0].is_number() || !v[1].is_number() || !v[2].is_number()) {
+      return "expected [x, y, z]" + got;
+    }
+    *out = Eigen::Vector3d(v[0].get<double>(), v[1].get<double>(), v[2].get<double>());
+  } else if constexpr (std::is_enum_v<T>) {
+    std::vector<std::string> names;
+    for (const auto& [value, name] : EnumNames<T>::values) names.emplace_back(name);
+    if (!v.is_string() || !EnumFromName(v.get<std::string>(), out)) {
+      return "expected one of " + TypeName<T>() + got + (v.is_string() ? DidYouMean(v.get<std::string>(), names) : "");
+    }
+  }
+  return {};
 }
 
 std::string Trim(std::string s) {
@@ -33,7 +158,17 @@ std::string Trim(std::string s) {
   return s;
 }
 
-double ParseNumber(const std::string& text, const std::string& key, const std::string& where) {
+// The comma-separated items of `text`, trimmed, empty ones left out.
+std::vector<std::string> CommaItems(const std::string& text) {
+  std::vector<std::string> items;
+  std::stringstream s(text);
+  for (std::string item; std::getline(s, item, ',');) {
+    if (!Trim(item).empty()) items.push_back(Trim(item));
+  }
+  return items;
+}
+
+double ParseNumber(const std::string& text, const std::string& where, const std::string& key) {
   try {
     size_t used = 0;
     const double value = std::stod(text, &used);
@@ -43,339 +178,95 @@ double ParseNumber(const std::string& text, const std::string& key, const std::s
   Bad(where, key, "'" + text + "' is not a number");
 }
 
-template <class Access>
-Descriptor Bool(std::string key, std::string help, Access access) {
-  Descriptor d{{key, "bool", std::move(help)}, {}, {}, {}};
-  d.set = [access, key](Config& c, const Json& v, const std::string& where) {
-    if (!v.is_boolean()) Bad(where, key, "expected true or false, got " + v.dump());
-    access(c) = v.get<bool>();
-  };
-  d.get = [access](const Config& c) { return Json(access(const_cast<Config&>(c))); };
-  d.parse = [key](const std::string& text, const std::string& where) {
+// The JSON value a `--set` text stands for, by the option's type.
+template <class T>
+Json TextToJson(const std::string& text, const std::string& where, const std::string& key) {
+  if constexpr (std::is_same_v<T, bool>) {
     if (text == "true" || text == "1" || text == "on") return Json(true);
     if (text == "false" || text == "0" || text == "off") return Json(false);
     Bad(where, key, "expected true or false, got '" + text + "'");
-  };
-  return d;
-}
-
-template <class Access>
-Descriptor Number(std::string key, std::string help, Access access, bool integer = false) {
-  Descriptor d{{key, integer ? "int" : "number", std::move(help)}, {}, {}, {}};
-  d.set = [access, key, integer](Config& c, const Json& v, const std::string& where) {
-    if (!v.is_number()) Bad(where, key, "expected a number, got " + v.dump());
-    if (integer && !v.is_number_integer()) Bad(where, key, "expected an integer, got " + v.dump());
-    access(c) = v.get<double>();
-  };
-  d.get = [access, integer](const Config& c) {
-    const double value = access(const_cast<Config&>(c));
-    return integer ? Json(static_cast<long>(value)) : Json(value);
-  };
-  d.parse = [key, integer](const std::string& text, const std::string& where) {
-    const double value = ParseNumber(text, key, where);
-    if (integer) {
-      if (value != static_cast<long>(value)) Bad(where, key, "expected an integer, got '" + text + "'");
-      return Json(static_cast<long>(value));
+  } else if constexpr (std::is_same_v<T, int>) {
+    const double value = ParseNumber(text, where, key);
+    if (value != static_cast<double>(static_cast<long long>(value))) {
+      Bad(where, key, "expected an integer, got '" + text + "'");
     }
-    return Json(value);
-  };
-  return d;
-}
-
-// Integer fields are stored as int; adapt them to the double-based Number descriptor.
-template <class Access>
-Descriptor Int(std::string key, std::string help, Access access) {
-  struct Proxy {
-    int* target;
-    operator double() const { return *target; }
-    Proxy& operator=(double v) {
-      *target = static_cast<int>(v);
-      return *this;
-    }
-  };
-  auto proxy_access = [access](Config& c) { return Proxy{&access(c)}; };
-  Descriptor d = Number(std::move(key), std::move(help), [proxy_access](Config& c) { return proxy_access(c); }, true);
-  return d;
-}
-
-template <class E, class Access>
-Descriptor Enum(std::string key, std::string help, std::vector<std::pair<std::string, E>> names, Access access) {
-  std::string type;
-  for (const auto& [name, value] : names) AppendItem(&type, name, "|");
-  Descriptor d{{key, type, std::move(help)}, {}, {}, {}};
-  d.set = [access, key, names, type](Config& c, const Json& v, const std::string& where) {
-    if (v.is_string()) {
-      for (const auto& [name, value] : names) {
-        if (name == v.get<std::string>()) {
-          access(c) = value;
-          return;
-        }
+    return Json(static_cast<long long>(value));
+  } else if constexpr (std::is_same_v<T, double>) {
+    return Json(ParseNumber(text, where, key));
+  } else if constexpr (std::is_same_v<T, JointNames> || std::is_same_v<T, Eigen::Vector3d>) {
+    if (!text.empty() && text.front() == '[') {  // a JSON list
+      try {
+        return Json::parse(text);
+      } catch (const Json::exception&) {
+        Bad(where, key, "'" + text + "' is not a JSON list (write [\"a\", \"b\"] or a,b)");
       }
     }
-    Bad(where, key, "expected one of " + type + ", got " + v.dump());
-  };
-  d.get = [access, names](const Config& c) {
-    for (const auto& [name, value] : names) {
-      if (value == access(const_cast<Config&>(c))) return Json(name);
-    }
-    return Json("?");
-  };
-  d.parse = [](const std::string& text, const std::string&) { return Json(text); };
-  return d;
-}
-
-template <class Access>
-Descriptor NameList(std::string key, std::string help, Access access) {
-  Descriptor d{{key, "list of joint names", std::move(help)}, {}, {}, {}};
-  d.set = [access, key](Config& c, const Json& v, const std::string& where) {
-    if (!v.is_array()) Bad(where, key, "expected a list of joint names, got " + v.dump());
-    JointNames names;
-    for (const Json& item : v) {
-      if (!item.is_string()) Bad(where, key, "expected a list of joint names, got " + v.dump());
-      names.push_back(item.get<std::string>());
-    }
-    access(c) = names;
-  };
-  d.get = [access](const Config& c) { return Json(access(const_cast<Config&>(c))); };
-  d.parse = [](const std::string& text, const std::string&) {
     Json list = Json::array();
-    std::stringstream s(text);
-    for (std::string item; std::getline(s, item, ',');) {
-      if (!Trim(item).empty()) list.push_back(Trim(item));
+    for (const std::string& item : CommaItems(text)) {
+      if constexpr (std::is_same_v<T, JointNames>) {
+        list.push_back(item);
+      } else {
+        list.push_back(ParseNumber(item, where, key));
+      }
     }
     return list;
-  };
-  return d;
+  } else {
+    return Json(text);
+  }
 }
 
-template <class Access>
-Descriptor Vector3(std::string key, std::string help, Access access) {
-  Descriptor d{{key, "[x, y, z]", std::move(help)}, {}, {}, {}};
-  d.set = [access, key](Config& c, const Json& v, const std::string& where) {
-    if (!v.is_array() || v.size() != 3 || !v[0].is_number() || !v[1].is_number() || !v[2].is_number()) {
-      Bad(where, key, "expected [x, y, z], got " + v.dump());
+// One option of a configuration, ready to print.
+struct OptionText {
+  std::string section, name;
+  std::string value;    // JSON
+  std::string comment;  // "type, unit, range: help"
+};
+
+std::vector<OptionText> OptionTexts(const Config& config) {
+  std::vector<OptionText> out;
+  ForEachOption(config, [&](std::string_view section, std::string_view name, const auto& field, const OptionSpec& spec) {
+    using T = std::decay_t<decltype(field)>;
+    std::string comment = TypeName<T>();
+    if (!spec.unit.empty()) AppendItem(&comment, spec.unit);
+    if (const std::string range = DescribeRange(spec); !range.empty()) AppendItem(&comment, range);
+    out.push_back({std::string(section), std::string(name), ToJson(field).dump(), comment + ": " + std::string(spec.help)});
+  });
+  return out;
+}
+
+// `text` in a Markdown table cell: each '|' escaped and spaced ("a \| b").
+std::string TableCell(std::string_view text) {
+  std::string out;
+  for (const char c : text) {
+    if (c == '|') {
+      out += " \\| ";
+    } else {
+      out += c;
     }
-    access(c) = Eigen::Vector3d(v[0].get<double>(), v[1].get<double>(), v[2].get<double>());
-  };
-  d.get = [access](const Config& c) {
-    const Eigen::Vector3d& x = access(const_cast<Config&>(c));
-    return Json::array({x.x(), x.y(), x.z()});
-  };
-  d.parse = [key](const std::string& text, const std::string& where) {
-    Json list = Json::array();
-    std::stringstream s(text);
-    for (std::string item; std::getline(s, item, ',');) list.push_back(ParseNumber(Trim(item), key, where));
-    return list;
-  };
-  return d;
-}
-
-const std::vector<Descriptor>& Descriptors() {
-  using metrics::Alignment;
-  using metrics::LegacyPcpLayout;
-  using metrics::MatchingMode;
-  using metrics::PcpMatching;
-  using metrics::PckDenominator;
-  static const std::vector<Descriptor> table = {
-      Number("undistort.min_joint_score", "2D joints with a lower score are missing",
-             [](Config& c) -> double& { return c.triangulator.undistort.min_joint_score; }),
-      Bool("undistort.add_derived_joints", "append hip_middle, shoulder_middle, head (computed in 2D)",
-           [](Config& c) -> bool& { return c.triangulator.undistort.add_derived_joints; }),
-      Bool("prefilter.enabled", "step 2: filter pairs with the last frame's persons (ablation: false)",
-           [](Config& c) -> bool& { return c.triangulator.prefilter.enabled; }),
-      Number("prefilter.max_distance_rel", "match radius at zero elapsed time, fraction of the pose's bbox diagonal",
-             [](Config& c) -> double& { return c.triangulator.prefilter.max_distance_rel; }),
-      Number("prefilter.person_speed_m_s", "m/s, widens the match radius with the time since the last frame",
-             [](Config& c) -> double& { return c.triangulator.prefilter.person_speed_m_s; }),
-      Number("prefilter.ambiguity_ratio", "second-closest person must be this much farther for a match",
-             [](Config& c) -> double& { return c.triangulator.prefilter.ambiguity_ratio; }),
-      Int("prefilter.max_pairs_per_person", "pairs kept per tracked person, best triangulation angle first (<= 0: all)",
-          [](Config& c) -> int& { return c.triangulator.prefilter.max_pairs_per_person; }),
-      Enum<TriangulationMethod>("triangulate.method", "steps 4 and 10: ray mid-point or linear DLT (SVD)",
-                                {{"midpoint", TriangulationMethod::kMidpoint}, {"dlt", TriangulationMethod::kDlt}},
-                                [](Config& c) -> TriangulationMethod& { return c.triangulator.triangulate.method; }),
-      NameList("triangulate.core_joints", "step 3: joints used for association (empty = shoulders, hips, elbows, wrists, knees, ankles)",
-               [](Config& c) -> JointNames& { return c.triangulator.triangulate.core_joints; }),
-      Int("triangulate.min_core_joints", "a pair needs this many core joints seen in both views",
-          [](Config& c) -> int& { return c.triangulator.triangulate.min_core_joints; }),
-      Vector3("room_check.center_m", "m, room centre (used when room_check.size_m is set; else the dataset's room)",
-              [](Config& c) -> Eigen::Vector3d& { return c.triangulator.room_check.center_m; }),
-      Vector3("room_check.size_m", "m, room size per axis (<= 0: unbounded; all zero: the dataset's room)",
-              [](Config& c) -> Eigen::Vector3d& { return c.triangulator.room_check.size_m; }),
-      Number("room_check.margin_m", "m, tolerance around the room box",
-             [](Config& c) -> double& { return c.triangulator.room_check.margin_m; }),
-      Enum<ScoreMode>("score.mode", "steps 6-7: combined, or only one error term (paper ablations)",
-                      {{"combined", ScoreMode::kCombined},
-                       {"reprojection", ScoreMode::kReprojectionOnly},
-                       {"triangulation", ScoreMode::kTriangulationOnly}},
-                      [](Config& c) -> ScoreMode& { return c.triangulator.score.mode; }),
-      Bool("score.use_confidence", "weight joints by 2D confidence (ablation: false)",
-           [](Config& c) -> bool& { return c.triangulator.score.use_confidence; }),
-      Enum<ScoreScale>("score.scale", "kernel scale: adaptive (estimated detection noise) or fixed (first release)",
-                       {{"adaptive", ScoreScale::kAdaptive}, {"fixed", ScoreScale::kFixed}},
-                       [](Config& c) -> ScoreScale& { return c.triangulator.score.scale; }),
-      Number("score.scale_factor", "adaptive: kernel scale = factor x estimated noise",
-             [](Config& c) -> double& { return c.triangulator.score.scale_factor; }),
-      Number("score.noise_prior_m", "adaptive: m, noise level assumed before the data has spoken",
-             [](Config& c) -> double& { return c.triangulator.score.noise_prior_m; }),
-      Number("score.trim_fraction", "the pair score leaves out this share of its worst joints",
-             [](Config& c) -> double& { return c.triangulator.score.trim_fraction; }),
-      Number("score.reprojection_scale_rel", "fixed: relative reprojection error giving score factor e^-1",
-             [](Config& c) -> double& { return c.triangulator.score.reprojection_scale_rel; }),
-      Number("score.ray_gap_scale_m", "fixed: m, ray gap giving score factor e^-1",
-             [](Config& c) -> double& { return c.triangulator.score.ray_gap_scale_m; }),
-      Bool("score.prune_limbs", "invalidate joints of implausibly short or long limbs",
-           [](Config& c) -> bool& { return c.triangulator.score.prune_limbs; }),
-      Number("filter.min_match_score", "step 8: pairs with a lower score are dropped",
-             [](Config& c) -> double& { return c.triangulator.filter.min_match_score; }),
-      Number("group.max_distance_m", "step 9: m, mean core-joint distance to join a group",
-             [](Config& c) -> double& { return c.triangulator.group.max_distance_m; }),
-      Int("group.min_group_size", "step 9: groups with fewer proposals are dropped (0 = auto: 1 below 10 cameras, else 2)",
-          [](Config& c) -> int& { return c.triangulator.group.min_group_size; }),
-      Bool("group.exclusive_poses", "a 2D pose belongs to one person (removes phantoms)",
-           [](Config& c) -> bool& { return c.triangulator.group.exclusive_poses; }),
-      Bool("group.drop_mirrored", "drop a group that is another group with left/right swapped",
-           [](Config& c) -> bool& { return c.triangulator.group.drop_mirrored; }),
-      Number("merge.max_distance_m", "step 11: m, drop joint proposals farther from the mean (<= 0: keep all)",
-             [](Config& c) -> double& { return c.triangulator.merge.max_distance_m; }),
-      Int("merge.top_k", "step 11: keep the k closest joint proposals (<= 0: all)",
-          [](Config& c) -> int& { return c.triangulator.merge.top_k; }),
-      Bool("merge.score_weighted", "step 11: weighted average by joint score",
-           [](Config& c) -> bool& { return c.triangulator.merge.score_weighted; }),
-      Number("merge.min_joint_score", "step 11: joint proposals below are ignored",
-             [](Config& c) -> double& { return c.triangulator.merge.min_joint_score; }),
-      Bool("merge.keep_best_when_all_far", "step 11: keep the best candidate when the distance filter drops all",
-           [](Config& c) -> bool& { return c.triangulator.merge.keep_best_when_all_far; }),
-      Bool("verify.enabled", "step 11b: drop persons that more views see nobody at than see them",
-           [](Config& c) -> bool& { return c.triangulator.verify.enabled; }),
-      Int("verify.min_empty_views", "step 11b: empty views needed (and more than supporting views) to drop a person",
-          [](Config& c) -> int& { return c.triangulator.verify.min_empty_views; }),
-      Number("verify.min_inside_fraction", "step 11b: a view counts as empty only if this share of the joints is in the image",
-             [](Config& c) -> double& { return c.triangulator.verify.min_inside_fraction; }),
-      Bool("single_view.enabled", "step 12b: place persons seen by one camera at the depth their limb lengths imply",
-           [](Config& c) -> bool& { return c.triangulator.single_view.enabled; }),
-      Number("single_view.min_joint_score", "step 12b: confidence of the joints used",
-             [](Config& c) -> double& { return c.triangulator.single_view.min_joint_score; }),
-      Int("single_view.min_core_joints", "step 12b: confident core joints a pose needs",
-          [](Config& c) -> int& { return c.triangulator.single_view.min_core_joints; }),
-      Number("single_view.score_factor", "step 12b: joint scores = 2D confidence x this",
-             [](Config& c) -> double& { return c.triangulator.single_view.score_factor; }),
-      Number("single_view.duplicate_distance_m", "step 12b: m, centre distance under which a lifted person is a duplicate",
-             [](Config& c) -> double& { return c.triangulator.single_view.duplicate_distance_m; }),
-      Number("single_view.max_overlap_iou", "step 12b: poses overlapping a found person's projection this much are that person",
-             [](Config& c) -> double& { return c.triangulator.single_view.max_overlap_iou; }),
-      Bool("postprocess.enabled", "step 12 (ablation: false)",
-           [](Config& c) -> bool& { return c.triangulator.postprocess.enabled; }),
-      Int("postprocess.min_valid_joints", "persons with fewer valid joints are dropped",
-          [](Config& c) -> int& { return c.triangulator.postprocess.min_valid_joints; }),
-      Number("postprocess.min_extent_m", "m, drop persons with a smaller bounding-box diagonal",
-             [](Config& c) -> double& { return c.triangulator.postprocess.min_extent_m; }),
-      Number("postprocess.max_extent_m", "m, drop persons with a larger bounding-box diagonal",
-             [](Config& c) -> double& { return c.triangulator.postprocess.max_extent_m; }),
-      Bool("postprocess.drop_outside_room", "drop persons whose centre is outside the room",
-           [](Config& c) -> bool& { return c.triangulator.postprocess.drop_outside_room; }),
-      Bool("postprocess.replace_wrong_joints", "joints of implausible limbs take their neighbour's place",
-           [](Config& c) -> bool& { return c.triangulator.postprocess.replace_wrong_joints; }),
-      Bool("postprocess.fill_missing_joints", "missing joints take their neighbour's position",
-           [](Config& c) -> bool& { return c.triangulator.postprocess.fill_missing_joints; }),
-      Number("postprocess.filled_joint_score", "score of filled joints (> 0)",
-             [](Config& c) -> double& { return c.triangulator.postprocess.filled_joint_score; }),
-      Bool("track.enabled", "step 13: persistent ids (ablation: false)",
-           [](Config& c) -> bool& { return c.triangulator.track.enabled; }),
-      Number("track.max_distance_m", "m, mean core-joint distance to continue a track",
-             [](Config& c) -> double& { return c.triangulator.track.max_distance_m; }),
-      Number("track.max_gap_s", "s, frames further apart (or with unknown time) start afresh: no coasting, no pre-filter",
-             [](Config& c) -> double& { return c.triangulator.track.max_gap_s; }),
-      Int("track.max_missing_frames", "a lost person is returned with its last pose this many frames",
-          [](Config& c) -> int& { return c.triangulator.track.max_missing_frames; }),
-      Bool("clip_speed.enabled", "step 14: clip joint speed (needs tracking)",
-           [](Config& c) -> bool& { return c.triangulator.clip_speed.enabled; }),
-      Number("clip_speed.max_speed_m_s", "m/s, maximum joint speed",
-             [](Config& c) -> double& { return c.triangulator.clip_speed.max_speed_m_s; }),
-      Bool("bone_lengths.enabled", "step 15: mark joints whose bones disagree with their track's lengths (needs tracking)",
-           [](Config& c) -> bool& { return c.triangulator.bone_lengths.enabled; }),
-      Number("bone_lengths.tolerance_rel", "a limb disagrees beyond this fraction of its track's running length",
-             [](Config& c) -> double& { return c.triangulator.bone_lengths.tolerance_rel; }),
-      Number("bone_lengths.min_tolerance_m", "m, floor of the tolerance (short bones: hands, face)",
-             [](Config& c) -> double& { return c.triangulator.bone_lengths.min_tolerance_m; }),
-      Int("bone_lengths.min_observations", "a limb is checked once its track has observed it this often",
-          [](Config& c) -> int& { return c.triangulator.bone_lengths.min_observations; }),
-      Int("bone_lengths.window", "observations per limb the running median is taken over",
-          [](Config& c) -> int& { return c.triangulator.bone_lengths.window; }),
-      Enum<SmoothMode>("smooth.mode",
-                       "smoothing of tracked persons: causal (step 16, Kalman filter) or offline (two-sided, whole sequences)",
-                       {{"off", SmoothMode::kOff}, {"causal", SmoothMode::kCausal}, {"offline", SmoothMode::kOffline}},
-                       [](Config& c) -> SmoothMode& { return c.triangulator.smooth.mode; }),
-      Number("smooth.measurement_noise_m", "causal: m, standard deviation of a triangulated joint's error",
-             [](Config& c) -> double& { return c.triangulator.smooth.measurement_noise_m; }),
-      Number("smooth.acceleration_m_s2", "causal: m/s^2, standard deviation of a joint's acceleration (higher: smooths less)",
-             [](Config& c) -> double& { return c.triangulator.smooth.acceleration_m_s2; }),
-      Number("smooth.offline_sigma_s", "offline: s, sigma of the Gaussian time weights (window +-3 sigma)",
-             [](Config& c) -> double& { return c.triangulator.smooth.offline_sigma_s; }),
-      Int("smooth.offline_degree", "offline: degree of the local polynomial fit (1-3)",
-          [](Config& c) -> int& { return c.triangulator.smooth.offline_degree; }),
-      NameList("metrics.evaluated_joints", "joints evaluated and matched (empty = the paper's 13)",
-               [](Config& c) -> JointNames& { return c.metrics.evaluated_joints; }),
-      Number("metrics.min_gt_score", "GT joints with a lower or equal score are invalid",
-             [](Config& c) -> double& { return c.metrics.min_gt_score; }),
-      Number("metrics.min_pred_score", "predicted joints with a lower or equal score are missing",
-             [](Config& c) -> double& { return c.metrics.min_pred_score; }),
-      Enum<MatchingMode>("metrics.matching", "score-ranked greedy over the dataset (VoxelPose) or per-frame Hungarian",
-                         {{"greedy", MatchingMode::kGreedyScore}, {"hungarian", MatchingMode::kHungarian}},
-                         [](Config& c) -> MatchingMode& { return c.metrics.matching; }),
-      Number("metrics.match_threshold_mm", "mm, a pair matches iff its MPJPE is below",
-             [](Config& c) -> double& { return c.metrics.match_threshold_mm; }),
-      Enum<PckDenominator>("metrics.pck_denominator", "joints of all GT persons, or of matched ones only",
-                           {{"all_gt", PckDenominator::kAllGt}, {"matched_gt", PckDenominator::kMatchedGt}},
-                           [](Config& c) -> PckDenominator& { return c.metrics.pck_denominator; }),
-      Bool("metrics.count_preds_without_gt", "predictions in frames without GT count as invalid",
-           [](Config& c) -> bool& { return c.metrics.count_preds_without_gt; }),
-      Enum<Alignment>("metrics.alignment", "reported MPJPE absolute or pelvis-aligned",
-                      {{"none", Alignment::kNone}, {"pelvis", Alignment::kPelvis}},
-                      [](Config& c) -> Alignment& { return c.metrics.alignment; }),
-      Enum<PcpMatching>("metrics.pcp_matching", "generic PCP against the nearest prediction or the matched one",
-                        {{"nearest", PcpMatching::kNearestPrediction}, {"matched", PcpMatching::kMatched}},
-                        [](Config& c) -> PcpMatching& { return c.metrics.pcp_matching; }),
-      Number("metrics.pcp_alpha", "part correct iff mean endpoint error <= alpha * part length",
-             [](Config& c) -> double& { return c.metrics.pcp_alpha; }),
-      Bool("metrics.wholebody_groups", "MPJPE per whole-body group All|Body|Face|Hands",
-           [](Config& c) -> bool& { return c.metrics.wholebody_groups; }),
-      Enum<LegacyPcpLayout>("metrics.legacy_pcp", "legacy Shelf/Campus PCP with VoxelPose head synthesis",
-                            {{"none", LegacyPcpLayout::kNone}, {"shelf", LegacyPcpLayout::kShelf}, {"campus", LegacyPcpLayout::kCampus}},
-                            [](Config& c) -> LegacyPcpLayout& { return c.metrics.legacy_pcp.layout; }),
-      Bool("metrics.legacy_pcp_skip_empty_frames", "legacy PCP: skip frames without predictions (Faster-VoxelPose)",
-           [](Config& c) -> bool& { return c.metrics.legacy_pcp.skip_frames_without_predictions; }),
-      Int("metrics.legacy_pcp_actors", "legacy PCP: average over actors 0..n-1",
-          [](Config& c) -> int& { return c.metrics.legacy_pcp.num_averaged_actors; }),
-  };
-  return table;
-}
-
-const Descriptor& Find(const std::string& key, const std::string& where) {
-  for (const Descriptor& d : Descriptors()) {
-    if (d.info.key == key) return d;
   }
-  std::vector<std::string> sections;
-  for (const Descriptor& d : Descriptors()) {
-    const std::string section = d.info.key.substr(0, d.info.key.find('.'));
-    if (std::find(sections.begin(), sections.end(), section) == sections.end()) sections.push_back(section);
-  }
-  const std::string list = Join(sections);
-  throw ConfigError(where + ": unknown option '" + key + "' (sections: " + list +
-                    "; `rpt config --dump` lists every option)");
+  return out;
 }
 
 }  // namespace
 
 std::vector<ConfigOptionInfo> ConfigOptions() {
   std::vector<ConfigOptionInfo> out;
-  for (const Descriptor& d : Descriptors()) out.push_back(d.info);
+  const Config defaults;
+  ForEachOption(defaults, [&](std::string_view section, std::string_view name, const auto& field, const OptionSpec& spec) {
+    using T = std::decay_t<decltype(field)>;
+    out.push_back({FullKey(section, name), TypeName<T>(), ToJson(field).dump(), spec});
+  });
   return out;
 }
 
 void SetConfigOption(const std::string& key, const std::string& value, const std::string& where, Config* config) {
-  const Descriptor& d = Find(key, where);
-  d.set(*config, d.parse(value, where), where);
+  const bool found = ForOption(*config, key, [&](auto& field, const OptionSpec&) {
+    using T = std::decay_t<decltype(field)>;
+    if (const std::string problem = FromJson(TextToJson<T>(value, where, key), &field); !problem.empty()) {
+      Bad(where, key, problem);
+    }
+  });
+  if (!found) UnknownOption(where, key);
 }
 
 void ApplyConfigOverride(const std::string& assignment, Config* config) {
@@ -385,7 +276,10 @@ void ApplyConfigOverride(const std::string& assignment, Config* config) {
 }
 
 std::string GetConfigOption(const Config& config, const std::string& key) {
-  const Json value = Find(key, "option").get(config);
+  Json value;
+  if (!ForOption(config, key, [&](const auto& field, const OptionSpec&) { value = ToJson(field); })) {
+    UnknownOption("option", key);
+  }
   if (value.is_string()) return value.get<std::string>();
   if (value.is_array()) {
     std::string out;
@@ -396,45 +290,86 @@ std::string GetConfigOption(const Config& config, const std::string& key) {
 }
 
 void LoadConfigFile(const std::filesystem::path& path, Config* config) {
-  const nlohmann::json root = io::LoadJsonFile(path);
+  const Json root = io::LoadJsonFile(path);
   const std::string source = path.string();
   if (!root.is_object()) throw ConfigError(source + ": expected an object of sections");
+  const std::vector<std::string> sections = Sections();
   for (const auto& [section, values] : root.items()) {
+    if (std::find(sections.begin(), sections.end(), section) == sections.end()) {
+      throw ConfigError(source + ": unknown section '" + section + "'" + DidYouMean(section, sections) +
+                        " (sections: " + Join(sections) + ")");
+    }
     if (!values.is_object()) throw ConfigError(source + ": /" + section + ": expected an object of options");
     for (const auto& [name, value] : values.items()) {
       const std::string key = section + "." + name;
-      const Descriptor& d = Find(key, source);
-      d.set(*config, Json::parse(value.dump()), source + ": /" + section + "/" + name);
+      const std::string where = source + ": /" + section + "/" + name;
+      const bool found = ForOption(*config, key, [&](auto& field, const OptionSpec&) {
+        if (const std::string problem = FromJson(value, &field); !problem.empty()) Bad(where, key, problem);
+      });
+      if (!found) UnknownOption(source, key);
     }
   }
-  CheckConfig(*config);
+  try {
+    CheckConfig(*config);
+  } catch (const ConfigError& e) {
+    throw ConfigError(source + ": " + e.what());
+  }
 }
 
 std::string DumpConfig(const Config& config, bool with_comments) {
-  // Sections in table order, options in table order.
-  std::vector<std::string> sections;
-  for (const Descriptor& d : Descriptors()) {
-    const std::string section = d.info.key.substr(0, d.info.key.find('.'));
-    if (sections.empty() || sections.back() != section) sections.push_back(section);
-  }
+  const std::vector<OptionText> options = OptionTexts(config);
   std::ostringstream out;
+  if (with_comments) {
+    out << "// rpt configuration with a comment per option (type, unit, range: meaning). The comments make\n"
+           "// this text documentation, not JSON: `rpt config --dump` prints the JSON that --config reads.\n";
+  }
   out << "{\n";
-  for (size_t s = 0; s < sections.size(); ++s) {
-    out << "  \"" << sections[s] << "\": {\n";
-    std::vector<const Descriptor*> members;
-    for (const Descriptor& d : Descriptors()) {
-      if (d.info.key.rfind(sections[s] + ".", 0) == 0) members.push_back(&d);
-    }
-    for (size_t m = 0; m < members.size(); ++m) {
-      const Descriptor& d = *members[m];
-      out << "    \"" << d.info.key.substr(sections[s].size() + 1) << "\": " << d.get(config).dump()
-          << (m + 1 < members.size() ? "," : "");
-      if (with_comments) out << "  // " << d.info.type << ": " << d.info.help;
-      out << "\n";
-    }
-    out << "  }" << (s + 1 < sections.size() ? "," : "") << "\n";
+  for (size_t i = 0; i < options.size(); ++i) {
+    const OptionText& o = options[i];
+    const bool first_of_section = i == 0 || options[i - 1].section != o.section;
+    const bool last_of_section = i + 1 == options.size() || options[i + 1].section != o.section;
+    if (first_of_section) out << "  \"" << o.section << "\": {\n";
+    out << "    \"" << o.name << "\": " << o.value << (last_of_section ? "" : ",");
+    if (with_comments) out << "  // " << o.comment;
+    out << "\n";
+    if (last_of_section) out << "  }" << (i + 1 < options.size() ? "," : "") << "\n";
   }
   out << "}\n";
+  return out.str();
+}
+
+std::string ConfigMarkdown() {
+  std::ostringstream out;
+  out << "# Options\n\n"
+         "<!-- Generated by `rpt config --markdown > docs/options.md` from the VisitFields functions beside\n"
+         "the options structs; a test fails when this file differs. Edit the help texts there. -->\n\n"
+         "Every option of the triangulator (one section per pipeline step, see [algorithm.md](algorithm.md)) and\n"
+         "of the evaluation (section `metrics`, see [metrics.md](metrics.md)), with its default.\n\n"
+         "* `rpt config --dump` prints the configuration as JSON; `--config FILE` reads such a file (any\n"
+         "  subset of sections and keys) on every command that runs the pipeline. `--dump --comments` adds\n"
+         "  each option's type, unit, range and meaning as comments (then it is no longer JSON).\n"
+         "* `--set section.key=value` sets one option (repeatable, applied after `--config`). Booleans are\n"
+         "  `true`/`false`; lists are JSON (`--set 'triangulate.core_joints=[\"hip_left\", \"hip_right\"]'`) or\n"
+         "  comma lists (`--set triangulate.core_joints=hip_left,hip_right`); 3-vectors likewise\n"
+         "  (`[8, 8, 3]` or `8,8,3`).\n"
+         "* Unknown keys, values of the wrong type and values outside the range are errors (exit code 2)\n"
+         "  naming the file or `--set` and the key. Settings that are valid but have no effect (such as\n"
+         "  `clip_speed.enabled=true` with `track.enabled=false`) print a warning.\n";
+  const std::vector<OptionText> options = OptionTexts(Config{});
+  const std::vector<ConfigOptionInfo> infos = ConfigOptions();
+  for (size_t i = 0; i < options.size(); ++i) {
+    const OptionText& o = options[i];
+    const ConfigOptionInfo& info = infos[i];
+    if (i == 0 || options[i - 1].section != o.section) {
+      out << "\n## `" << o.section << "`\n\n"
+          << "| option | default | type | unit | range | meaning |\n"
+          << "|---|---|---|---|---|---|\n";
+    }
+    std::string value = o.value;
+    if (value.size() >= 2 && value.front() == '"') value = value.substr(1, value.size() - 2);
+    out << "| `" << info.key << "` | " << value << " | " << TableCell(info.type) << " | " << info.spec.unit << " | "
+        << DescribeRange(info.spec) << " | " << TableCell(info.spec.help) << " |\n";
+  }
   return out.str();
 }
 
@@ -442,5 +377,7 @@ void CheckConfig(const Config& config) {
   if (const std::string error = config.triangulator.Check(); !error.empty()) throw ConfigError(error);
   config.metrics.Check();
 }
+
+std::vector<std::string> ConfigWarnings(const Config& config) { return config.triangulator.Warnings(); }
 
 }  // namespace rpt::cli

@@ -1,11 +1,17 @@
 // SPDX-License-Identifier: MIT
 #include "cli/config_args.h"
 
+#include <iostream>
+
 namespace rpt::cli {
 
 void AddConfigOptions(CLI::App* command, ConfigArgs* args) {
-  command->add_option("--config", args->config_file, "JSON configuration file (see `rpt config --dump`)");
-  command->add_option("--set", args->overrides, "override one option, e.g. --set prefilter.enabled=false (repeatable)")
+  command->add_option("--config", args->config_file, "JSON configuration file (the format `rpt config --dump` prints)");
+  command
+      ->add_option("--set", args->overrides,
+                   "override one option, e.g. --set prefilter.enabled=false; lists as JSON or comma list: "
+                   "--set 'triangulate.core_joints=[\"hip_left\",\"hip_right\"]' or ...=hip_left,hip_right "
+                   "(repeatable, after --config)")
       ->take_all();
 }
 
@@ -14,6 +20,7 @@ Config ResolveConfig(const ConfigArgs& args) {
   if (!args.config_file.empty()) LoadConfigFile(args.config_file, &config);
   for (const std::string& assignment : args.overrides) ApplyConfigOverride(assignment, &config);
   CheckConfig(config);
+  for (const std::string& warning : ConfigWarnings(config)) std::cerr << "warning: " << warning << "\n";
   return config;
 }
 

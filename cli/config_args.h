@@ -16,7 +16,8 @@ struct ConfigArgs {
 };
 
 void AddConfigOptions(CLI::App* command, ConfigArgs* args);
-// Defaults, then the file, then the overrides in order; checked. Throws ConfigError.
+// Defaults, then the file, then the overrides in order; checked (throws ConfigError). Settings
+// without effect are printed to stderr as "warning: ...".
 Config ResolveConfig(const ConfigArgs& args);
 
 }  // namespace rpt::cli

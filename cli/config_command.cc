@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
-// `rpt config --dump`: the configuration (defaults, or a file plus overrides) with a comment per
-// option; `--json` prints strict JSON that `--config` accepts.
+// `rpt config`: the configuration (defaults, or a file plus overrides) as JSON that `--config`
+// reads back (`--dump`, the default), with a comment per option (`--comments`, then not JSON), or
+// as the Markdown tables of docs/options.md (`--markdown`).
 #include <iostream>
 
 #include "cli/commands.h"
@@ -12,16 +13,31 @@ void RegisterConfigCommand(CLI::App& app) {
   struct Options {
     ConfigArgs config;
     bool dump = false;
+    bool comments = false;
     bool json = false;
+    bool markdown = false;
   };
   auto options = std::make_shared<Options>();
   CLI::App* command = app.add_subcommand("config", "Print the configuration: every triangulator and metric option");
-  command->add_flag("--dump", options->dump, "print the resolved configuration (default action)");
-  command->add_flag("--json", options->json, "strict JSON without comments");
+  command->footer(
+      "Options are set with --config FILE (JSON, any subset of sections and keys) and --set section.key=value\n"
+      "(repeatable, after the file). List values: JSON (--set 'triangulate.core_joints=[\"hip_left\",\"hip_right\"]')\n"
+      "or comma lists (--set triangulate.core_joints=hip_left,hip_right); 3-vectors: [8,8,3] or 8,8,3.\n"
+      "Every option with its default, range and meaning: docs/options.md (rpt config --markdown).");
+  command->add_flag("--dump", options->dump, "print the resolved configuration as JSON (default action)");
+  CLI::Option* comments = command->add_flag(
+      "--comments", options->comments, "add each option's type, unit, range and meaning as // comments (then not JSON)");
+  command->add_flag("--json", options->json, "strict JSON (the default; kept for older scripts)")->excludes(comments);
+  command->add_flag("--markdown", options->markdown, "print the option tables of docs/options.md (defaults)")
+      ->excludes(comments);
   AddConfigOptions(command, &options->config);
   command->callback([options] {
+    if (options->markdown) {
+      std::cout << ConfigMarkdown();
+      return;
+    }
     const Config config = ResolveConfig(options->config);
-    std::cout << DumpConfig(config, !options->json);
+    std::cout << DumpConfig(config, options->comments);
   });
 }
 

@@ -53,7 +53,7 @@ MetricsAccumulator::MetricsAccumulator(const EvalOptions& options) : options_(op
   records_.pcp_total.assign(pcp_layout_.parts.size(), 0);
   records_.pcp_correct_nearest.assign(pcp_layout_.parts.size(), 0);
   records_.group_num_joints.assign(WholeBodyGroups().size(), 0);
-  if (options_.legacy_pcp.layout != LegacyPcpLayout::kNone) records_.legacy.emplace(options_.legacy_pcp);
+  if (options_.legacy_pcp != LegacyPcpLayout::kNone) records_.legacy.emplace(options_);
 }
 
 void MetricsAccumulator::UpdateLayout(const JointNames& gt_names, const JointNames& pred_names) {
@@ -100,7 +100,7 @@ void MetricsAccumulator::UpdateLayout(const JointNames& gt_names, const JointNam
   }
 
   if (records_.legacy) {
-    const JointNames& shelf = options_.legacy_pcp.gt_joints.empty() ? Shelf14Joints() : options_.legacy_pcp.gt_joints;
+    const JointNames& shelf = options_.legacy_pcp_gt_joints.empty() ? Shelf14Joints() : options_.legacy_pcp_gt_joints;
     if (!gt_names.empty()) layout.gt_legacy = MapJointNames(shelf, gt_names, "ground-truth (legacy PCP, Shelf14)");
     if (!pred_names.empty()) {
       layout.pred_legacy = MapJointNames(CocoBodyJoints(), pred_names, "prediction (legacy PCP, COCO-17)");
@@ -193,7 +193,7 @@ void MetricsAccumulator::AddLegacyFrame(const Poses3D& gt, const Poses3D& predic
     for (int j = 0; j < 17; ++j) {
       coco.col(j) = JointMmOrNaN(predictions, p, layout_.pred_legacy[j], options_.min_pred_score);
     }
-    preds.push_back(CocoToShelf14(coco, options_.legacy_pcp.layout));
+    preds.push_back(CocoToShelf14(coco, options_.legacy_pcp));
   }
   records_.legacy->AddFrame(actors, preds);
 }

@@ -1,39 +1,32 @@
 // SPDX-License-Identifier: MIT
 #include "metrics/eval_options.h"
 
-#include <cmath>
 #include <set>
 #include <string>
 
 #include "core/errors.h"
+#include "core/options_check.h"
 
 namespace rpt::metrics {
-namespace {
-
-void Require(bool condition, const std::string& message) {
-  if (!condition) throw ConfigError("metrics options: " + message);
-}
-
-}  // namespace
 
 const JointNames& EvalOptions::EvaluatedJoints() const {
   return evaluated_joints.empty() ? EvaluationJoints13() : evaluated_joints;
 }
 
 void EvalOptions::Check() const {
+  OptionsChecker checker("metrics");
+  VisitFields(checker, *this);
   std::set<std::string> seen;
   for (const std::string& name : evaluated_joints) {
-    Require(!name.empty(), "evaluated_joints contains an empty name");
-    Require(seen.insert(name).second, "evaluated_joints lists '" + name + "' twice");
+    if (name.empty()) checker.Require("contains an empty name", "evaluated_joints");
+    if (!seen.insert(name).second) checker.Require("lists '" + name + "' twice", "evaluated_joints");
   }
-  Require(std::isfinite(min_gt_score) && min_gt_score >= 0.0, "min_gt_score must be finite and >= 0");
-  Require(std::isfinite(min_pred_score) && min_pred_score >= 0.0, "min_pred_score must be finite and >= 0");
-  Require(match_threshold_mm > 0.0, "match_threshold_mm must be > 0");
-  Require(std::isfinite(pcp_alpha) && pcp_alpha > 0.0, "pcp_alpha must be finite and > 0");
-  Require(std::isfinite(legacy_pcp.alpha) && legacy_pcp.alpha > 0.0, "legacy_pcp.alpha must be finite and > 0");
-  Require(legacy_pcp.num_averaged_actors >= 1, "legacy_pcp.num_averaged_actors must be >= 1");
-  Require(legacy_pcp.gt_joints.empty() || legacy_pcp.gt_joints.size() == 14,
-          "legacy_pcp.gt_joints must list 14 names (Shelf14 order) or be empty");
+  if (!legacy_pcp_gt_joints.empty() && legacy_pcp_gt_joints.size() != 14) {
+    checker.Require("must list 14 names (Shelf14 order) or be empty, got " +
+                        std::to_string(legacy_pcp_gt_joints.size()),
+                    "legacy_pcp_gt_joints");
+  }
+  if (!checker.error().empty()) throw ConfigError(checker.error());
 }
 
 }  // namespace rpt::metrics

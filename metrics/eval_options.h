@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // All switches of the evaluation, with defaults. The definitions behind each switch and the
-// reasons for each default are in docs/metrics.md (which follows the recommendations of the
-// research note shared/docs/metrics.md, section 8).
+// reasons for each default are in docs/metrics.md. VisitFields (the convention of
+// core/option_spec.h) names each field once; its key in the config section "metrics" is the
+// field's name.
 //
 // Units: millimetres (mm) for every threshold (inputs are metres and converted once, on entry).
 #pragma once
@@ -10,14 +11,15 @@
 #include <vector>
 
 #include "core/joints.h"
+#include "core/option_spec.h"
 
 namespace rpt::metrics {
 
 // How predictions are paired one-to-one with ground-truth persons.
 enum class MatchingMode {
-  kGreedyScore,  // VoxelPose: each prediction -> its nearest GT in the frame, then score-ranked greedy
-                 // over the whole dataset, accepting a pair if its error < threshold and the GT is free
-  kHungarian,    // per frame: minimum-total-error one-to-one assignment among pairs below the threshold
+  kGreedy,     // VoxelPose: each prediction -> its nearest GT in the frame, then score-ranked greedy
+               // over the whole dataset, accepting a pair if its error < threshold and the GT is free
+  kHungarian,  // per frame: minimum-total-error one-to-one assignment among pairs below the threshold
 };
 
 // Denominator of PCK@t.
@@ -34,8 +36,8 @@ enum class Alignment {
 
 // Which prediction the generic PCP scores a GT person against.
 enum class PcpMatching {
-  kNearestPrediction,  // the prediction of the same frame with the smallest MPJPE, no gate (legacy style)
-  kMatched,            // the prediction matched to it by the main matching (gated, one-to-one)
+  kNearest,  // the prediction of the same frame with the smallest MPJPE, no gate (legacy style)
+  kMatched,  // the prediction matched to it by the main matching (gated, one-to-one)
 };
 
 // Layout rules of the legacy Shelf / Campus PCP (VoxelPose lib/dataset/{shelf,campus}.py).
@@ -45,19 +47,41 @@ enum class LegacyPcpLayout {
   kCampus,  // COCO->Shelf14 with the Campus head synthesis (ear-based)
 };
 
-struct LegacyPcpOptions {
-  // Head-synthesis rule and on/off switch. Default off: only Shelf/Campus runs need it.
-  LegacyPcpLayout layout = LegacyPcpLayout::kNone;
-  // Names of the 14 GT joints in Shelf14 order (empty = Shelf14Joints()); lets a reader keep its own names.
-  JointNames gt_joints;
-  // true: frames without any prediction are skipped (Faster-VoxelPose, optimistic). Default false:
-  // their actors count all 10 parts wrong (mvpose, the correct behaviour; metrics.md 2.2).
-  bool skip_frames_without_predictions = false;
-  // The reported average is the mean per-actor PCP of actor ids 0..num_averaged_actors-1 (VoxelPose: 3).
-  int num_averaged_actors = 3;
-  // PCP alpha: part correct iff mean endpoint error <= alpha * GT part length (VoxelPose: 0.5).
-  double alpha = 0.5;
+}  // namespace rpt::metrics
+
+namespace rpt {
+
+template <>
+struct EnumNames<metrics::MatchingMode> {
+  static constexpr std::array<std::pair<metrics::MatchingMode, std::string_view>, 2> values = {
+      {{metrics::MatchingMode::kGreedy, "greedy"}, {metrics::MatchingMode::kHungarian, "hungarian"}}};
 };
+template <>
+struct EnumNames<metrics::PckDenominator> {
+  static constexpr std::array<std::pair<metrics::PckDenominator, std::string_view>, 2> values = {
+      {{metrics::PckDenominator::kAllGt, "all_gt"}, {metrics::PckDenominator::kMatchedGt, "matched_gt"}}};
+};
+template <>
+struct EnumNames<metrics::Alignment> {
+  static constexpr std::array<std::pair<metrics::Alignment, std::string_view>, 2> values = {
+      {{metrics::Alignment::kNone, "none"}, {metrics::Alignment::kPelvis, "pelvis"}}};
+};
+template <>
+struct EnumNames<metrics::PcpMatching> {
+  static constexpr std::array<std::pair<metrics::PcpMatching, std::string_view>, 2> values = {
+      {{metrics::PcpMatching::kNearest, "nearest"}, {metrics::PcpMatching::kMatched, "matched"}}};
+};
+template <>
+struct EnumNames<metrics::LegacyPcpLayout> {
+  static constexpr std::array<std::pair<metrics::LegacyPcpLayout, std::string_view>, 3> values = {
+      {{metrics::LegacyPcpLayout::kNone, "none"},
+       {metrics::LegacyPcpLayout::kShelf, "shelf"},
+       {metrics::LegacyPcpLayout::kCampus, "campus"}}};
+};
+
+}  // namespace rpt
+
+namespace rpt::metrics {
 
 struct EvalOptions {
   // Joints evaluated and used for matching, by name (empty = EvaluationJoints13(), the paper's 13).
@@ -68,7 +92,7 @@ struct EvalOptions {
   // Predicted joints with score <= this are missing: infinitely wrong for PCK/PCP, excluded from MPJPE (0).
   double min_pred_score = 0.0;
   // Pairing rule (default greedy by score: VoxelPose protocol, required for AP; metrics.md 3.1 / 8.1).
-  MatchingMode matching = MatchingMode::kGreedyScore;
+  MatchingMode matching = MatchingMode::kGreedy;
   // A pair is a match (TP) iff its MPJPE < this, mm (VoxelPose 500; also the Recall@500 / Invalid gate).
   double match_threshold_mm = 500.0;
   // PCK denominator (default all GT: matched-only would make PCK@500 ~100 % and uninformative; 8.2).
@@ -80,18 +104,65 @@ struct EvalOptions {
   // Matching, Recall, PCK and PCP always use absolute coordinates.
   Alignment alignment = Alignment::kNone;
   // Generic PCP pairing (default nearest prediction without gate, mimicking legacy PCP; metrics.md 8.4).
-  PcpMatching pcp_matching = PcpMatching::kNearestPrediction;
+  PcpMatching pcp_matching = PcpMatching::kNearest;
   // Generic PCP alpha: part correct iff mean endpoint error <= alpha * GT part length (0.5, standard).
   double pcp_alpha = 0.5;
   // Compute MPJPE per whole-body group All / Body / Face / Hands (H3WB index groups, resolved by name).
   bool wholebody_groups = true;
-  // Legacy Shelf/Campus PCP (off by default).
-  LegacyPcpOptions legacy_pcp;
 
-  // Throws rpt::ConfigError naming the offending field.
+  // Legacy Shelf/Campus PCP (metrics.md 4), off by default: only Shelf/Campus runs need it.
+  // The layout picks the head-synthesis rule; kNone = not computed.
+  LegacyPcpLayout legacy_pcp = LegacyPcpLayout::kNone;
+  // true: frames without any prediction are skipped (Faster-VoxelPose, optimistic). Default false:
+  // their actors count all 10 parts wrong (mvpose, the correct behaviour; metrics.md 2.2).
+  bool legacy_pcp_skip_empty_frames = false;
+  // The reported average is the mean per-actor PCP of actor ids 0..legacy_pcp_actors-1 (VoxelPose: 3).
+  int legacy_pcp_actors = 3;
+  // Part correct iff mean endpoint error <= alpha * GT part length (VoxelPose: 0.5).
+  double legacy_pcp_alpha = 0.5;
+  // Names of the 14 GT joints in Shelf14 order (empty = Shelf14Joints()); lets a reader keep its own names.
+  JointNames legacy_pcp_gt_joints;
+
+  // Throws rpt::ConfigError "metrics.key: problem" for the first invalid value.
   void Check() const;
   // evaluated_joints, or EvaluationJoints13() when empty.
   const JointNames& EvaluatedJoints() const;
 };
+
+template <class Visitor, OptionsOf<EvalOptions> Self>
+void VisitFields(Visitor& v, Self& o) {
+  v("evaluated_joints", o.evaluated_joints,
+    OptionSpec{.help = "joints evaluated and used for matching, each in GT and predictions once (empty = the "
+                       "paper's 13)"});
+  v("min_gt_score", o.min_gt_score,
+    OptionSpec{.help = "GT joints with a lower or equal score are invalid", .min = 0});
+  v("min_pred_score", o.min_pred_score,
+    OptionSpec{.help = "predicted joints with a lower or equal score are missing", .min = 0});
+  v("matching", o.matching,
+    OptionSpec{.help = "score-ranked greedy over the dataset (VoxelPose) or per-frame Hungarian"});
+  v("match_threshold_mm", o.match_threshold_mm,
+    OptionSpec{.help = "a pair matches iff its MPJPE is below", .unit = "mm", .min = 0, .min_exclusive = true});
+  v("pck_denominator", o.pck_denominator, OptionSpec{.help = "joints of all GT persons, or of matched ones only"});
+  v("count_preds_without_gt", o.count_preds_without_gt,
+    OptionSpec{.help = "predictions in frames without GT count as invalid and as AP false positives"});
+  v("alignment", o.alignment, OptionSpec{.help = "reported MPJPE absolute or pelvis-aligned"});
+  v("pcp_matching", o.pcp_matching,
+    OptionSpec{.help = "generic PCP against the nearest prediction (no gate) or the matched one"});
+  v("pcp_alpha", o.pcp_alpha,
+    OptionSpec{.help = "generic PCP: part correct iff mean endpoint error <= alpha x GT part length", .min = 0,
+               .min_exclusive = true});
+  v("wholebody_groups", o.wholebody_groups, OptionSpec{.help = "MPJPE per whole-body group All|Body|Face|Hands"});
+  v("legacy_pcp", o.legacy_pcp,
+    OptionSpec{.help = "legacy Shelf/Campus PCP with VoxelPose head synthesis (none: not computed)"});
+  v("legacy_pcp_skip_empty_frames", o.legacy_pcp_skip_empty_frames,
+    OptionSpec{.help = "legacy PCP: skip frames without predictions (Faster-VoxelPose, optimistic)"});
+  v("legacy_pcp_actors", o.legacy_pcp_actors,
+    OptionSpec{.help = "legacy PCP: the average is over actor ids 0..n-1", .min = 1});
+  v("legacy_pcp_alpha", o.legacy_pcp_alpha,
+    OptionSpec{.help = "legacy PCP: part correct iff mean endpoint error <= alpha x GT part length", .min = 0,
+               .min_exclusive = true});
+  v("legacy_pcp_gt_joints", o.legacy_pcp_gt_joints,
+    OptionSpec{.help = "legacy PCP: names of the 14 GT joints in Shelf14 order (empty = the Shelf14 names)"});
+}
 
 }  // namespace rpt::metrics

@@ -11,7 +11,7 @@ MatchSets SelectMatches(const EvalRecords& records, const EvalOptions& options) 
   sets.at_gate.assign(pairs.size(), false);
   sets.at_100.assign(pairs.size(), false);
   sets.at_500.assign(pairs.size(), false);
-  if (options.matching == MatchingMode::kGreedyScore) {
+  if (options.matching == MatchingMode::kGreedy) {
     // The nearest-GT records drive greedy matching (as they drive AP).
     std::vector<size_t> nearest_idx;
     std::vector<MatchRecord> nearest_records;

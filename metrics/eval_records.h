@@ -53,7 +53,7 @@ struct EvalRecords {
   std::vector<int> pcp_total;            // evaluable generic PCP parts over all kept GT
   std::vector<int> pcp_correct_nearest;  // correct parts against each GT's nearest prediction
   std::vector<int> group_num_joints;     // joints of each whole-body group present in both lists
-  std::optional<LegacyPcpEvaluator> legacy;  // legacy PCP counts, when legacy_pcp.layout != kNone
+  std::optional<LegacyPcpEvaluator> legacy;  // legacy PCP counts, when legacy_pcp != kNone
 };
 
 // One flag per pair: matched at match_threshold_mm, at 100 mm, at 500 mm (greedy by score over the

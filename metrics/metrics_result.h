@@ -72,7 +72,7 @@ struct MetricsResult {
   std::vector<JointResult> joints;       // evaluated joints, in EvalOptions order
   std::vector<PcpPartResult> pcp_parts;  // GenericPcpParts() order
   std::vector<GroupResult> wholebody;    // WholeBodyGroups() order; empty when disabled
-  std::optional<LegacyPcpResult> legacy_pcp;  // when legacy_pcp.layout != kNone
+  std::optional<LegacyPcpResult> legacy_pcp;  // when legacy_pcp != kNone
 };
 
 }  // namespace rpt::metrics

@@ -130,15 +130,15 @@ Shelf14 CocoToShelf14(const Coco17& c, LegacyPcpLayout layout) {
   return shelf;
 }
 
-LegacyPcpEvaluator::LegacyPcpEvaluator(const LegacyPcpOptions& options) : options_(options) {}
+LegacyPcpEvaluator::LegacyPcpEvaluator(const EvalOptions& options) : options_(options) {}
 
 void LegacyPcpEvaluator::AddFrame(std::span<const LegacyActor> gt, std::span<const Shelf14> preds) {
   ++num_frames_;
-  if (preds.empty() && options_.skip_frames_without_predictions) {
+  if (preds.empty() && options_.legacy_pcp_skip_empty_frames) {
     ++num_skipped_frames_;
     return;
   }
-  const double alpha = options_.alpha;
+  const double alpha = options_.legacy_pcp_alpha;
   for (const LegacyActor& actor : gt) {
     ActorCounts& counts = actors_[actor.actor_id];
     ++counts.num_frames;
@@ -193,7 +193,7 @@ LegacyPcpResult LegacyPcpEvaluator::Finalize() const {
       actor.group_pcp[group] =
           Percent(group_correct, static_cast<double>(counts.num_frames) * LegacyGroupParts()[group].size());
     }
-    if (actor_id >= 0 && actor_id < options_.num_averaged_actors && counts.num_frames > 0) {
+    if (actor_id >= 0 && actor_id < options_.legacy_pcp_actors && counts.num_frames > 0) {
       ++num_averaged;
       result.average_pcp += actor.pcp;
       for (int group = 0; group < kNumLegacyGroups; ++group) result.average_group_pcp[group] += actor.group_pcp[group];

@@ -118,7 +118,7 @@ struct LegacyPcpResult {
     std::array<double, kNumLegacyGroups> group_pcp;  // percent, LegacyPcpGroupNames() order
   };
   std::vector<Actor> actors;  // sorted by actor_id; only actors with GT in some evaluated frame
-  // Mean of the per-actor values over actor ids 0..num_averaged_actors-1 that have GT (percent).
+  // Mean of the per-actor values over actor ids 0..legacy_pcp_actors-1 that have GT (percent).
   double average_pcp = 0.0;
   std::array<double, kNumLegacyGroups> average_group_pcp{};
   // Actor-frames whose nearest prediction has mean joint error < 500 mm, percent of all actor-frames.
@@ -130,7 +130,8 @@ struct LegacyPcpResult {
 // Accumulates legacy PCP frame by frame.
 class LegacyPcpEvaluator {
  public:
-  explicit LegacyPcpEvaluator(const LegacyPcpOptions& options);
+  // Reads the legacy_pcp_* fields of `options`.
+  explicit LegacyPcpEvaluator(const EvalOptions& options);
 
   // One frame: the GT actors present and all predictions, already in Shelf14 layout (mm).
   // Each actor is matched to the prediction with the smallest mean joint error over the 14 joints
@@ -144,7 +145,7 @@ class LegacyPcpEvaluator {
     int num_frames = 0;
     std::array<int, kNumLegacyParts> correct{};
   };
-  LegacyPcpOptions options_;
+  EvalOptions options_;
   std::map<int, ActorCounts> actors_;
   int num_frames_ = 0;
   int num_skipped_frames_ = 0;

@@ -1,6 +1,11 @@
 // SPDX-License-Identifier: MIT
 // Options of every pipeline step, one section per step, named like the step (and like the
-// config-file section and the timing output). Defaults are documented in docs/algorithm.md.
+// config-file section and the timing output).
+//
+// Beside each struct, VisitFields names every field once with its key, help text, unit and valid
+// range (the convention of core/option_spec.h); the struct's initialisers are the defaults.
+// Everything that reads or writes options by name (config files, --set, `rpt config --dump`, the
+// generated docs/options.md, Check()) is a visitor of these functions.
 //
 // Units: metres (m), metres per second (m/s), pixels (px). Image-space distances that depend on
 // how large a person appears are given relative to the 2D pose's bounding-box diagonal (rel).
@@ -10,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "core/option_spec.h"
+
 namespace rpt {
 
 // Undistortion and preparation of the 2D poses.
@@ -17,6 +24,14 @@ struct UndistortOptions {
   double min_joint_score = 0.1;    // 2D joints with a lower score are treated as missing
   bool add_derived_joints = true;  // append hip_middle, shoulder_middle, head (computed in 2D)
 };
+
+template <class Visitor, OptionsOf<UndistortOptions> Self>
+void VisitFields(Visitor& v, Self& o) {
+  v("min_joint_score", o.min_joint_score,
+    OptionSpec{.help = "2D joints with a lower score (or NaN) are missing", .min = 0, .max = 1});
+  v("add_derived_joints", o.add_derived_joints,
+    OptionSpec{.help = "append hip_middle, shoulder_middle, head (computed in 2D)"});
+}
 
 // Step 2: keep pairs whose two poses both match the same last-frame person, or neither does.
 // The match radius grows with the time since the last frame, so sparsely sampled sequences
@@ -27,12 +42,36 @@ struct PrefilterOptions {
   double max_distance_rel = 0.25;  // match radius at zero elapsed time (fraction of bbox diagonal)
   double person_speed_m_s = 2.0;   // assumed top speed of a person, widens the radius over time
   double ambiguity_ratio = 1.5;    // second-closest person must be this much farther for a match
-  // With many cameras a tracked person yields k(k-1)/2 pairs; keep only this many per person, those
-  // with the best triangulation angle (closest to 90 degrees at the person). <= 0: keep all.
+  // With many cameras a tracked person yields k(k-1)/2 pairs; keep only this many per person: first
+  // the two best pairs of each of its poses, then the best others. Best = sin of the angle between
+  // the two viewing rays at the person x the 2D confidence both poses share on the core joints.
+  // <= 0: keep all.
   int max_pairs_per_person = 30;
 };
 
+template <class Visitor, OptionsOf<PrefilterOptions> Self>
+void VisitFields(Visitor& v, Self& o) {
+  v("enabled", o.enabled, OptionSpec{.help = "filter pairs with the last frame's persons (ablation: false)"});
+  v("max_distance_rel", o.max_distance_rel,
+    OptionSpec{.help = "match radius at zero elapsed time, fraction of the pose's bbox diagonal",
+               .unit = "rel", .min = 0, .max = 100});
+  v("person_speed_m_s", o.person_speed_m_s,
+    OptionSpec{.help = "assumed top speed of a person, widens the match radius with the time since the last frame",
+               .unit = "m/s", .min = 0, .max = 1000});
+  v("ambiguity_ratio", o.ambiguity_ratio,
+    OptionSpec{.help = "the second-closest person must be this much farther for a match", .min = 1, .max = 1000});
+  v("max_pairs_per_person", o.max_pairs_per_person,
+    OptionSpec{.help = "pairs kept per tracked person: each pose's two best, then the best others; best = sin of "
+                       "the ray angle at the person x shared 2D confidence (<= 0: keep all)",
+               .min = -1, .max = 1e9});
+}
+
 enum class TriangulationMethod { kMidpoint, kDlt };
+template <>
+struct EnumNames<TriangulationMethod> {
+  static constexpr std::array<std::pair<TriangulationMethod, std::string_view>, 2> values = {
+      {{TriangulationMethod::kMidpoint, "midpoint"}, {TriangulationMethod::kDlt, "dlt"}}};
+};
 
 // Steps 3, 4 and 10.
 struct TriangulateOptions {
@@ -42,6 +81,16 @@ struct TriangulateOptions {
   int min_core_joints = 3;               // a pair needs this many core joints seen in both views
 };
 
+template <class Visitor, OptionsOf<TriangulateOptions> Self>
+void VisitFields(Visitor& v, Self& o) {
+  v("method", o.method,
+    OptionSpec{.help = "ray mid-point, or linear DLT (least squares through the 3x3 normal equations)"});
+  v("core_joints", o.core_joints,
+    OptionSpec{.help = "joints used for association (empty = shoulders, hips, elbows, wrists, knees, ankles)"});
+  v("min_core_joints", o.min_core_joints,
+    OptionSpec{.help = "a pair needs this many core joints seen in both views", .min = 1, .max = 1000});
+}
+
 // Step 5: the room is an axis-aligned box. A size component <= 0 leaves that axis unbounded.
 struct RoomCheckOptions {
   Eigen::Vector3d center_m = Eigen::Vector3d::Zero();
@@ -49,12 +98,33 @@ struct RoomCheckOptions {
   double margin_m = 0.5;  // tolerance around the box
 };
 
+template <class Visitor, OptionsOf<RoomCheckOptions> Self>
+void VisitFields(Visitor& v, Self& o) {
+  v("center_m", o.center_m,
+    OptionSpec{.help = "room centre (used when room_check.size_m is set; else the dataset's room)", .unit = "m"});
+  v("size_m", o.size_m,
+    OptionSpec{.help = "room size per axis (<= 0: unbounded; all zero: the dataset's room)", .unit = "m"});
+  v("margin_m", o.margin_m, OptionSpec{.help = "tolerance around the room box", .unit = "m", .min = 0, .max = 1e6});
+}
+
 enum class ScoreMode { kCombined, kReprojectionOnly, kTriangulationOnly };
+template <>
+struct EnumNames<ScoreMode> {
+  static constexpr std::array<std::pair<ScoreMode, std::string_view>, 3> values = {
+      {{ScoreMode::kCombined, "combined"},
+       {ScoreMode::kReprojectionOnly, "reprojection"},
+       {ScoreMode::kTriangulationOnly, "triangulation"}}};
+};
 
 // How the score kernels are scaled: to the noise level estimated from the data (residuals in
 // metres at the joint's depth, see noise_scale.h), or by the fixed constants of the first release
 // (reprojection error relative to the pose's bounding box).
 enum class ScoreScale { kAdaptive, kFixed };
+template <>
+struct EnumNames<ScoreScale> {
+  static constexpr std::array<std::pair<ScoreScale, std::string_view>, 2> values = {
+      {{ScoreScale::kAdaptive, "adaptive"}, {ScoreScale::kFixed, "fixed"}}};
+};
 
 // Steps 6-7: per-joint score from reprojection error, ray gap and 2D confidence; limb pruning.
 struct ScoreOptions {
@@ -69,10 +139,37 @@ struct ScoreOptions {
   bool prune_limbs = true;          // invalidate joints of implausibly short or long limbs
 };
 
+template <class Visitor, OptionsOf<ScoreOptions> Self>
+void VisitFields(Visitor& v, Self& o) {
+  v("mode", o.mode, OptionSpec{.help = "combined, or only one error term (the paper's ablations)"});
+  v("use_confidence", o.use_confidence, OptionSpec{.help = "weight joints by their 2D confidence (ablation: false)"});
+  v("scale", o.scale,
+    OptionSpec{.help = "kernel scale: adaptive (estimated detection noise) or fixed (the first release's)"});
+  v("scale_factor", o.scale_factor,
+    OptionSpec{.help = "adaptive: kernel scale = factor x estimated noise", .min = 0, .min_exclusive = true});
+  v("noise_prior_m", o.noise_prior_m,
+    OptionSpec{.help = "adaptive: noise level assumed before the data has spoken", .unit = "m", .min = 0,
+               .min_exclusive = true});
+  v("trim_fraction", o.trim_fraction,
+    OptionSpec{.help = "the pair score leaves out this share of its worst joints", .min = 0, .max = 0.9});
+  v("reprojection_scale_rel", o.reprojection_scale_rel,
+    OptionSpec{.help = "fixed: reprojection error giving score factor e^-1", .unit = "rel", .min = 0,
+               .min_exclusive = true});
+  v("ray_gap_scale_m", o.ray_gap_scale_m,
+    OptionSpec{.help = "fixed: ray gap giving score factor e^-1", .unit = "m", .min = 0, .min_exclusive = true});
+  v("prune_limbs", o.prune_limbs, OptionSpec{.help = "invalidate joints of implausibly short or long limbs"});
+}
+
 // Step 8.
 struct FilterOptions {
   double min_match_score = 0.7;  // pairs with a lower pair score are dropped
 };
+
+template <class Visitor, OptionsOf<FilterOptions> Self>
+void VisitFields(Visitor& v, Self& o) {
+  v("min_match_score", o.min_match_score,
+    OptionSpec{.help = "pairs with a lower pair score are dropped", .min = 0, .max = 1});
+}
 
 // Step 9.
 struct GroupOptions {
@@ -84,6 +181,20 @@ struct GroupOptions {
   bool drop_mirrored = true;    // drop a group that is another group with left/right swapped
 };
 
+template <class Visitor, OptionsOf<GroupOptions> Self>
+void VisitFields(Visitor& v, Self& o) {
+  v("max_distance_m", o.max_distance_m,
+    OptionSpec{.help = "mean core-joint distance for a proposal to join a group", .unit = "m", .min = 0,
+               .min_exclusive = true});
+  v("min_group_size", o.min_group_size,
+    OptionSpec{.help = "groups with fewer proposals are dropped (0 = automatic: 1 below 10 cameras, else 2)",
+               .min = 0, .max = 1e6});
+  v("exclusive_poses", o.exclusive_poses,
+    OptionSpec{.help = "a 2D pose belongs to one person: the strongest group keeps it (removes phantoms)"});
+  v("drop_mirrored", o.drop_mirrored,
+    OptionSpec{.help = "drop a group that is another group with left/right swapped"});
+}
+
 // Step 11.
 struct MergeOptions {
   double max_distance_m = 0.2;  // drop joint proposals this far from the mean (<= 0: keep all)
@@ -94,12 +205,36 @@ struct MergeOptions {
                                        // highest-scoring one instead of leaving the joint missing
 };
 
+template <class Visitor, OptionsOf<MergeOptions> Self>
+void VisitFields(Visitor& v, Self& o) {
+  v("max_distance_m", o.max_distance_m,
+    OptionSpec{.help = "drop joint proposals this far from the mean (<= 0: keep all)", .unit = "m", .min = -1e6,
+               .max = 1e6});
+  v("top_k", o.top_k,
+    OptionSpec{.help = "then keep the k closest joint proposals (<= 0: keep all)", .min = -1e6, .max = 1e6});
+  v("score_weighted", o.score_weighted,
+    OptionSpec{.help = "weighted average by joint score instead of plain mean"});
+  v("min_joint_score", o.min_joint_score,
+    OptionSpec{.help = "joint proposals with a lower score are ignored", .min = 0, .max = 1});
+  v("keep_best_when_all_far", o.keep_best_when_all_far,
+    OptionSpec{.help = "keep the highest-scoring candidate when the distance filter drops all of them"});
+}
+
 // Step 11b (an addition): re-score each person against all views, drop unsupported ones.
 struct VerifyOptions {
   bool enabled = true;
   int min_empty_views = 2;             // drop when this many views (and more than support it) see nobody there
   double min_inside_fraction = 0.8;    // a view is "empty" only if this share of the joints lands in the image
 };
+
+template <class Visitor, OptionsOf<VerifyOptions> Self>
+void VisitFields(Visitor& v, Self& o) {
+  v("enabled", o.enabled, OptionSpec{.help = "re-score each person against all views, drop unsupported ones"});
+  v("min_empty_views", o.min_empty_views,
+    OptionSpec{.help = "empty views needed (and more than supporting ones) to drop a person", .min = 1, .max = 1e6});
+  v("min_inside_fraction", o.min_inside_fraction,
+    OptionSpec{.help = "a view is empty only if this share of the joints lands in the image", .min = 0, .max = 1});
+}
 
 // Step 12b (an addition, off by default): persons seen by one camera only, placed at the depth
 // their 2D limb lengths imply (lift_single_views.h).
@@ -111,6 +246,24 @@ struct SingleViewOptions {
   double duplicate_distance_m = 0.5;  // centre distance under which a lifted person duplicates another
   double max_overlap_iou = 0.3;       // poses overlapping a found person's projection this much are that person
 };
+
+template <class Visitor, OptionsOf<SingleViewOptions> Self>
+void VisitFields(Visitor& v, Self& o) {
+  v("enabled", o.enabled,
+    OptionSpec{.help = "place persons seen by one camera at the depth their 2D limb lengths imply"});
+  v("min_joint_score", o.min_joint_score, OptionSpec{.help = "confidence of the joints used", .min = 0, .max = 1});
+  v("min_core_joints", o.min_core_joints,
+    OptionSpec{.help = "confident core joints a pose needs", .min = 2, .max = 1e6});
+  v("score_factor", o.score_factor,
+    OptionSpec{.help = "joint scores = 2D confidence x this (ranks below triangulated persons)", .min = 1e-6,
+               .max = 1});
+  v("duplicate_distance_m", o.duplicate_distance_m,
+    OptionSpec{.help = "centre distance under which a lifted person duplicates another", .unit = "m", .min = 0,
+               .max = 1e6});
+  v("max_overlap_iou", o.max_overlap_iou,
+    OptionSpec{.help = "poses overlapping a found person's projection this much are that person", .min = 0,
+               .max = 1});
+}
 
 // Step 12.
 struct PostprocessOptions {
@@ -124,6 +277,26 @@ struct PostprocessOptions {
   double filled_joint_score = 0.05; // score given to filled joints (> 0 so they count as present)
 };
 
+template <class Visitor, OptionsOf<PostprocessOptions> Self>
+void VisitFields(Visitor& v, Self& o) {
+  v("enabled", o.enabled, OptionSpec{.help = "post-process persons (ablation: false)"});
+  v("min_valid_joints", o.min_valid_joints,
+    OptionSpec{.help = "persons with fewer valid joints are dropped", .min = 0, .max = 1e6});
+  v("min_extent_m", o.min_extent_m,
+    OptionSpec{.help = "drop persons whose bounding-box diagonal is smaller", .unit = "m", .min = 0, .max = 1e6});
+  v("max_extent_m", o.max_extent_m,
+    OptionSpec{.help = "drop persons whose bounding-box diagonal is larger (>= min_extent_m)", .unit = "m",
+               .min = 0, .max = 1e6});
+  v("drop_outside_room", o.drop_outside_room,
+    OptionSpec{.help = "drop persons whose centre is outside the room (+ margin)"});
+  v("replace_wrong_joints", o.replace_wrong_joints,
+    OptionSpec{.help = "joints of implausible limbs take their neighbour's place"});
+  v("fill_missing_joints", o.fill_missing_joints,
+    OptionSpec{.help = "missing joints take their neighbour's position"});
+  v("filled_joint_score", o.filled_joint_score,
+    OptionSpec{.help = "score given to filled joints (> 0 so they count as present)", .min = 1e-9, .max = 1});
+}
+
 // Step 13.
 struct TrackOptions {
   bool enabled = true;
@@ -134,11 +307,32 @@ struct TrackOptions {
   int max_missing_frames = 3;   // a lost person is still returned (last pose) this many frames
 };
 
+template <class Visitor, OptionsOf<TrackOptions> Self>
+void VisitFields(Visitor& v, Self& o) {
+  v("enabled", o.enabled, OptionSpec{.help = "persistent ids across frames (ablation: false)"});
+  v("max_distance_m", o.max_distance_m,
+    OptionSpec{.help = "mean core-joint distance to continue a track", .unit = "m", .min = 0,
+               .min_exclusive = true});
+  v("max_gap_s", o.max_gap_s,
+    OptionSpec{.help = "frames further apart (or with unknown time) start afresh: no coasting, no pre-filter",
+               .unit = "s", .min = 0, .max = 1e9});
+  v("max_missing_frames", o.max_missing_frames,
+    OptionSpec{.help = "a lost person is still returned (last pose) this many frames", .min = 0, .max = 1e6});
+}
+
 // Step 14.
 struct ClipSpeedOptions {
   bool enabled = true;
   double max_speed_m_s = 10.0;  // per joint, between consecutive outputs of one track
 };
+
+template <class Visitor, OptionsOf<ClipSpeedOptions> Self>
+void VisitFields(Visitor& v, Self& o) {
+  v("enabled", o.enabled, OptionSpec{.help = "clip each joint's speed per track (needs track.enabled)"});
+  v("max_speed_m_s", o.max_speed_m_s,
+    OptionSpec{.help = "maximum joint speed between consecutive outputs of one track", .unit = "m/s", .min = 0,
+               .min_exclusive = true});
+}
 
 // Step 15 (optional, off by default): per-track bone-length consistency. Each track keeps the
 // lengths of each limb over its last `window` observations; once a limb has `min_observations`,
@@ -155,6 +349,22 @@ struct BoneLengthOptions {
   int window = 50;               // observations per limb the running median is taken over
 };
 
+template <class Visitor, OptionsOf<BoneLengthOptions> Self>
+void VisitFields(Visitor& v, Self& o) {
+  v("enabled", o.enabled,
+    OptionSpec{.help = "mark joints whose bones disagree with their track's lengths (needs track.enabled)"});
+  v("tolerance_rel", o.tolerance_rel,
+    OptionSpec{.help = "a limb disagrees beyond this fraction of its track's running length", .min = 0.01,
+               .max = 10});
+  v("min_tolerance_m", o.min_tolerance_m,
+    OptionSpec{.help = "floor of the tolerance (short bones: hands, face)", .unit = "m", .min = 0, .max = 10});
+  v("min_observations", o.min_observations,
+    OptionSpec{.help = "a limb is checked once its track has observed it this often (<= window)", .min = 1,
+               .max = 10000});
+  v("window", o.window,
+    OptionSpec{.help = "observations per limb the running median is taken over", .min = 1, .max = 10000});
+}
+
 // Temporal smoothing of tracked persons (off by default until it is shown to help on real
 // detections):
 //   causal  = step 16 inside the pipeline: a constant-velocity Kalman filter per track and joint
@@ -166,6 +376,11 @@ struct BoneLengthOptions {
 //             to uneven times and missing frames), two-sided, so no lag; not usable online.
 // Neither smooths across a gap of more than track.max_gap_s or an unknown time.
 enum class SmoothMode { kOff, kCausal, kOffline };
+template <>
+struct EnumNames<SmoothMode> {
+  static constexpr std::array<std::pair<SmoothMode, std::string_view>, 3> values = {
+      {{SmoothMode::kOff, "off"}, {SmoothMode::kCausal, "causal"}, {SmoothMode::kOffline, "offline"}}};
+};
 
 struct SmoothOptions {
   SmoothMode mode = SmoothMode::kOff;
@@ -178,6 +393,26 @@ struct SmoothOptions {
   int offline_degree = 2;        // degree of the local polynomial (1: exact on constant velocity,
                                  // 2: also on constant acceleration)
 };
+
+template <class Visitor, OptionsOf<SmoothOptions> Self>
+void VisitFields(Visitor& v, Self& o) {
+  v("mode", o.mode,
+    OptionSpec{.help = "smoothing of tracked persons: causal (Kalman filter, online) or offline (two-sided, whole "
+                       "sequences; needs track.enabled)"});
+  v("measurement_noise_m", o.measurement_noise_m,
+    OptionSpec{.help = "causal: standard deviation of a triangulated joint's error", .unit = "m", .min = 1e-6,
+               .max = 100});
+  v("acceleration_m_s2", o.acceleration_m_s2,
+    OptionSpec{.help = "causal: standard deviation of a joint's acceleration (higher: smooths less)",
+               .unit = "m/s^2", .min = 1e-6, .max = 1e6});
+  v("offline_sigma_s", o.offline_sigma_s,
+    OptionSpec{.help = "offline: standard deviation of the Gaussian time weights (window +-3 sigma)", .unit = "s",
+               .min = 1e-4, .max = 1e3});
+  v("offline_degree", o.offline_degree,
+    OptionSpec{.help = "offline: degree of the local polynomial (1: exact on constant velocity, 2: also on "
+                       "constant acceleration)",
+               .min = 1, .max = 3});
+}
 
 struct TriangulatorOptions {
   UndistortOptions undistort;
@@ -202,8 +437,33 @@ struct TriangulatorOptions {
     return postprocess.enabled && postprocess.fill_missing_joints ? postprocess.filled_joint_score : 0.0;
   }
 
-  // Empty when valid; otherwise "section.key: problem" for the first invalid value.
+  // Empty when valid; otherwise "section.key: problem" for the first invalid value (the ranges of
+  // VisitFields, then the checks between fields).
   std::string Check() const;
+  // Settings that are valid but have no effect with the others ("clip_speed.enabled=true has no
+  // effect with track.enabled=false ..."), one line each.
+  std::vector<std::string> Warnings() const;
 };
+
+// Names each section once, in pipeline order: the config-file sections, the `section.` prefix of
+// --set keys and the order of `rpt config --dump`.
+template <class Visitor, OptionsOf<TriangulatorOptions> Self>
+void VisitSections(Visitor& v, Self& o) {
+  v("undistort", o.undistort);
+  v("prefilter", o.prefilter);
+  v("triangulate", o.triangulate);
+  v("room_check", o.room_check);
+  v("score", o.score);
+  v("filter", o.filter);
+  v("group", o.group);
+  v("merge", o.merge);
+  v("verify", o.verify);
+  v("single_view", o.single_view);
+  v("postprocess", o.postprocess);
+  v("track", o.track);
+  v("clip_speed", o.clip_speed);
+  v("bone_lengths", o.bone_lengths);
+  v("smooth", o.smooth);
+}
 
 }  // namespace rpt

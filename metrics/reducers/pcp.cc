@@ -16,7 +16,7 @@ void ReducePcp(const EvalRecords& records, const MatchSets& matches, const EvalO
       if (outcomes[k] == PartOutcome::kCorrect) ++correct_matched[k];
     }
   }
-  const bool nearest = options.pcp_matching == PcpMatching::kNearestPrediction;
+  const bool nearest = options.pcp_matching == PcpMatching::kNearest;
   int correct = 0, total = 0;
   result->pcp_parts.clear();
   for (size_t k = 0; k < num_parts; ++k) {

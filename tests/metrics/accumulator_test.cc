@@ -460,7 +460,7 @@ TEST(MetricsAccumulator, LegacyShelfPcpThroughTheAccumulator) {
   // GT in Shelf14 names with actor ids as track ids; predictions in COCO-17.
   EvalOptions options;
   options.evaluated_joints = DefaultCoreJoints();  // Shelf14 GT has no nose
-  options.legacy_pcp.layout = LegacyPcpLayout::kShelf;
+  options.legacy_pcp = LegacyPcpLayout::kShelf;
   Poses3D gt = EmptyPoses(14), pred = EmptyPoses(17);
   for (int actor = 0; actor < 2; ++actor) {
     const Eigen::Matrix3Xd coco = PersonAt(2.0 * actor);

@@ -15,7 +15,7 @@ TEST(EvalOptions, DefaultsAreValidAndEvaluateThePapers13Joints) {
   EXPECT_EQ(options.EvaluatedJoints().size(), 13u);
   EXPECT_DOUBLE_EQ(options.match_threshold_mm, 500.0);
   EXPECT_DOUBLE_EQ(options.min_gt_score, 0.1);
-  EXPECT_EQ(options.matching, MatchingMode::kGreedyScore);
+  EXPECT_EQ(options.matching, MatchingMode::kGreedy);
   EXPECT_EQ(options.pck_denominator, PckDenominator::kAllGt);
   EXPECT_TRUE(options.count_preds_without_gt);
   EXPECT_EQ(options.alignment, Alignment::kNone);
@@ -32,11 +32,19 @@ TEST(EvalOptions, CheckRejectsBadValues) {
   options.pcp_alpha = -1.0;
   EXPECT_THROW(options.Check(), ConfigError);
   options = {};
-  options.legacy_pcp.gt_joints = {"a", "b"};
+  options.legacy_pcp_gt_joints = {"a", "b"};
   EXPECT_THROW(options.Check(), ConfigError);
   options = {};
-  options.legacy_pcp.num_averaged_actors = 0;
+  options.legacy_pcp_actors = 0;
   EXPECT_THROW(options.Check(), ConfigError);
+  options = {};
+  options.legacy_pcp_alpha = 0.0;
+  try {
+    options.Check();
+    FAIL();
+  } catch (const ConfigError& e) {
+    EXPECT_STREQ(e.what(), "metrics.legacy_pcp_alpha: 0 must be > 0");
+  }
 }
 
 }  // namespace

@@ -133,9 +133,9 @@ TEST(CocoToShelf14, MissingEarPropagatesToTheHead) {
 // Frame 1: actors 0 and 1 predicted (actor 1 with the right wrist 400 mm off), the 4th actor (id 3)
 // far from every prediction. Frame 2: actor 0 present, no prediction at all.
 LegacyPcpResult RunShelfScenario(bool skip_frames_without_predictions) {
-  LegacyPcpOptions options;
-  options.layout = LegacyPcpLayout::kShelf;
-  options.skip_frames_without_predictions = skip_frames_without_predictions;
+  EvalOptions options;
+  options.legacy_pcp = LegacyPcpLayout::kShelf;
+  options.legacy_pcp_skip_empty_frames = skip_frames_without_predictions;
   LegacyPcpEvaluator evaluator(options);
 
   const Shelf14 actor0 = HandShelf(kShelfBottom, kShelfTop);
