@@ -8,7 +8,7 @@
 //   struct FilterOptions {
 //     double min_match_score = 0.7;
 //   };
-//   template <class Visitor, class Self>  // Self = FilterOptions or const FilterOptions
+//   template <class Visitor, OptionsOf<FilterOptions> Self>  // FilterOptions or const FilterOptions
 //   void VisitFields(Visitor& v, Self& o) {
 //     v("min_match_score", o.min_match_score,
 //       OptionSpec{.help = "pairs with a lower pair score are dropped", .min = 0, .max = 1});
@@ -21,17 +21,20 @@
 #pragma once
 
 #include <array>
+#include <concepts>
 #include <limits>
 #include <string_view>
+#include <type_traits>
 #include <utility>
 
 namespace rpt {
 
 struct OptionSpec {
-  std::string_view help;        // one line: what the value does (not how it is typed)
-  std::string_view unit;        // "m", "m/s", "s", "px", "rel" (of the bbox diagonal), "" = none
+  std::string_view help = {};   // one line: what the value does (not how it is typed)
+  std::string_view unit = {};   // "m", "m/s", "s", "px", "rel" (of the bbox diagonal), "" = none
   double min = -std::numeric_limits<double>::infinity();  // inclusive range of numbers
   double max = std::numeric_limits<double>::infinity();
+  bool min_exclusive = false;   // true: values must be > min (not >= min)
 };
 
 // Specialise for each enumeration used in options:
@@ -41,6 +44,11 @@ struct OptionSpec {
 //   };
 template <class Enum>
 struct EnumNames;
+
+// `Self` is `Options` or `const Options`: keeps the VisitFields templates of different structs in
+// one namespace apart (one template serves reading and writing).
+template <class Self, class Options>
+concept OptionsOf = std::same_as<std::remove_const_t<Self>, Options>;
 
 // The name of an enumeration value ("" when it has none).
 template <class Enum>

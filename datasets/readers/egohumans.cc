@@ -47,29 +47,17 @@ struct SequenceDir {
 };
 
 Options ParseOptions(const DatasetRequest& request) {
-  const DatasetInfo info = EgohumansInfo();
-  request.CheckParams(info);
+  const EgohumansParams params = ParseDatasetParams<EgohumansParams>("egohumans", request);
   Options o;
   o.root = request.root;
-  o.sequences = SplitList(request.Param(info, "sequences"));
-  o.cameras = SplitList(request.Param(info, "cameras"));
-  o.anchor = request.Param(info, "anchor");
-  o.gt = request.Param(info, "gt");
-  if (o.gt != "poses3d" && o.gt != "refine_poses3d" && o.gt != "fit_poses3d") {
-    throw ConfigError("egohumans: gt: '" + o.gt + "' is not one of poses3d, refine_poses3d, fit_poses3d");
-  }
-  const std::string detections = request.Param(info, "detections");
-  if (detections != "none" && detections != "cache") throw ConfigError("egohumans: detections: '" + detections + "' is not one of none, cache");
-  o.detections = detections == "cache";
-  o.every = h36m_ego::ParseIntParam(request.Param(info, "every"), "egohumans: every", 1);
-  o.max_frames = h36m_ego::ParseIntParam(request.Param(info, "max_frames"), "egohumans: max_frames", 0);
-  const std::string fps = request.Param(info, "fps");
-  double value = 0;
-  const auto [ptr, ec] = std::from_chars(fps.data(), fps.data() + fps.size(), value);
-  if (fps.empty() || ec != std::errc() || ptr != fps.data() + fps.size() || !(value > 0) || !std::isfinite(value)) {
-    throw ConfigError("egohumans: fps: '" + fps + "' is not a positive number");
-  }
-  o.fps = value;
+  o.sequences = params.sequences;
+  o.cameras = params.cameras;
+  o.anchor = params.anchor;
+  o.gt = std::string(EnumName(params.gt));
+  o.detections = params.detections == EgohumansDetections::kCache;
+  o.every = params.every;
+  o.max_frames = params.max_frames;
+  o.fps = params.fps;
   return o;
 }
 
@@ -332,16 +320,7 @@ DatasetInfo EgohumansInfo() {
       "<root>/<big_seq>/<seq>/processed_data/poses3d/%05d.npy (or refine_poses3d, fit_poses3d)\n"
       "<root>/<big_seq>/<seq>/processed_data/poses2d/<camXX>/rgb/%05d.npy (detections=cache)\n"
       "root may also be one <big_seq> or one <seq> directory";
-  info.params = {
-      {"sequences", "", "comma-separated <big_seq>/<seq> (or <seq>, or <big_seq>); empty = all under root"},
-      {"cameras", "", "comma-separated exo cameras (camXX); empty = all"},
-      {"anchor", "aria01", "Aria camera whose frame is the GT world (CALIBRATION.ANCHOR_EGO_CAMERA)"},
-      {"gt", "poses3d", "ground-truth folder: poses3d | refine_poses3d | fit_poses3d"},
-      {"detections", "none", "none | cache (processed_data/poses2d, COCO-WholeBody)"},
-      {"every", "1", "keep every n-th ground-truth time stamp"},
-      {"max_frames", "0", "at most this many frames per sequence (0 = all)"},
-      {"fps", "20", "frame rate used for timestamps (time stamp - 1) / fps"},
-  };
+  info.params = DescribeDatasetParams<EgohumansParams>();
   return info;
 }
 

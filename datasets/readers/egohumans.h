@@ -20,13 +20,50 @@
 // "egohumans/<big_seq>/<seq>". Timestamps: (time stamp - 1) / fps.
 #pragma once
 
+#include <string>
 #include <vector>
 
-#include "datasets/dataset_request.h"
+#include "datasets/dataset_params.h"
 #include "datasets/detections.h"
 #include "datasets/sequence.h"
 
 namespace rpt {
+
+enum class EgohumansGt { kPoses3d, kRefinePoses3d, kFitPoses3d };
+template <>
+struct EnumNames<EgohumansGt> {
+  static constexpr std::array<std::pair<EgohumansGt, std::string_view>, 3> values = {
+      {{EgohumansGt::kPoses3d, "poses3d"}, {EgohumansGt::kRefinePoses3d, "refine_poses3d"}, {EgohumansGt::kFitPoses3d, "fit_poses3d"}}};
+};
+enum class EgohumansDetections { kNone, kCache };
+template <>
+struct EnumNames<EgohumansDetections> {
+  static constexpr std::array<std::pair<EgohumansDetections, std::string_view>, 2> values = {
+      {{EgohumansDetections::kNone, "none"}, {EgohumansDetections::kCache, "cache"}}};
+};
+
+struct EgohumansParams {
+  ParamList sequences;  // empty = all under root
+  ParamList cameras;    // empty = all exo cameras
+  std::string anchor = "aria01";
+  EgohumansGt gt = EgohumansGt::kPoses3d;
+  EgohumansDetections detections = EgohumansDetections::kNone;
+  int every = 1;
+  int max_frames = 0;
+  double fps = 20;
+};
+
+template <class Visitor, OptionsOf<EgohumansParams> Self>
+void VisitFields(Visitor& v, Self& o) {
+  v("sequences", o.sequences, OptionSpec{.help = "<big_seq>/<seq> (or <seq>, or <big_seq>); empty = all under root"});
+  v("cameras", o.cameras, OptionSpec{.help = "exo cameras (camXX); empty = all"});
+  v("anchor", o.anchor, OptionSpec{.help = "Aria camera whose frame is the GT world (CALIBRATION.ANCHOR_EGO_CAMERA)"});
+  v("gt", o.gt, OptionSpec{.help = "ground-truth folder"});
+  v("detections", o.detections, OptionSpec{.help = "cache = processed_data/poses2d (COCO-WholeBody)"});
+  v("every", o.every, OptionSpec{.help = "keep every n-th ground-truth time stamp", .min = 1});
+  v("max_frames", o.max_frames, OptionSpec{.help = "at most this many frames per sequence (0 = all)", .min = 0});
+  v("fps", o.fps, OptionSpec{.help = "frame rate used for timestamps (time stamp - 1) / fps", .unit = "Hz", .min = 0, .min_exclusive = true});
+}
 
 DatasetInfo EgohumansInfo();
 std::vector<Sequence> ReadEgohumans(const DatasetRequest& request);

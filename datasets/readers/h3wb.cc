@@ -98,13 +98,11 @@ std::optional<fs::path> FindAnnotationFile(const fs::path& root, const std::stri
 }
 
 Options ParseOptions(const DatasetRequest& request) {
-  const DatasetInfo info = H3wbInfo();
-  request.CheckParams(info);
+  const H3wbParams params = ParseDatasetParams<H3wbParams>("h3wb", request);
   Options o;
   o.root = request.root;
-  const std::string format = request.Param(info, "format");
-  if (format != "auto" && format != "json" && format != "npz") throw ConfigError("h3wb: format: '" + format + "' is not one of auto, json, npz");
-  const std::string file = request.Param(info, "file");
+  const std::string format(EnumName(params.format));
+  const std::string& file = params.file;
   if (file == "auto") {
     std::vector<fs::path> tried;
     const auto found = FindAnnotationFile(o.root, format, &tried);
@@ -117,28 +115,23 @@ Options ParseOptions(const DatasetRequest& request) {
   } else {
     o.file = h36m_ego::ResolveUnder(o.root, file);
   }
-  if (format == "auto") {
+  if (params.format == H3wbFormat::kAuto) {
     const std::string ext = o.file.extension().string();
     if (ext != ".npz" && ext != ".json") throw ConfigError("h3wb: cannot tell the format of '" + o.file.string() + "' (pass --param format=json|npz)");
     o.npz = ext == ".npz";
   } else {
-    o.npz = format == "npz";
+    o.npz = params.format == H3wbFormat::kNpz;
   }
-  o.subjects = SplitList(request.Param(info, "subjects"));
-  if (o.subjects.empty()) throw ConfigError("h3wb: subjects: no subject given");
-  o.actions = SplitList(request.Param(info, "actions"));
-  o.cameras_file = request.Param(info, "cameras_file");
-  o.model = h36m_ego::ParseH36mDistortion(request.Param(info, "distortion"), "h3wb: distortion");
-  o.global_units = request.Param(info, "global_units");
-  if (o.global_units != "mm" && o.global_units != "m") throw ConfigError("h3wb: global_units: '" + o.global_units + "' is not one of mm, m");
-  o.global_to_m = o.global_units == "mm" ? 0.001 : 1.0;
-  o.every = h36m_ego::ParseIntParam(request.Param(info, "every"), "h3wb: every", 1);
-  o.max_frames = h36m_ego::ParseIntParam(request.Param(info, "max_frames"), "h3wb: max_frames", 0);
-  const std::string detections = request.Param(info, "detections");
-  if (detections != "none" && detections != "annotations") {
-    throw ConfigError("h3wb: detections: '" + detections + "' is not one of none, annotations");
-  }
-  o.detections = detections == "annotations";
+  o.subjects = params.subjects;
+  if (o.subjects.empty()) throw ConfigError("h3wb: param subjects: no subject given");
+  o.actions = params.actions;
+  o.cameras_file = params.cameras_file;
+  o.model = ToDistortionModel(params.distortion);
+  o.global_units = std::string(EnumName(params.global_units));
+  o.global_to_m = params.global_units == H3wbGlobalUnits::kMm ? 0.001 : 1.0;
+  o.every = params.every;
+  o.max_frames = params.max_frames;
+  o.detections = params.detections == H3wbDetections::kAnnotations;
   return o;
 }
 
@@ -756,18 +749,7 @@ DatasetInfo H3wbInfo() {
       "<root>/RGBto3D_train.json | 2Dto3D_train.json (or datasets/json/) json format, plus\n"
       "<root>/metadata.xml or <root>/cameras.pkl                          Human3.6M cameras for json\n"
       "root may also be the annotation file itself";
-  info.params = {
-      {"file", "auto", "annotation file (relative to root); auto = see layout"},
-      {"format", "auto", "auto (by extension) | json | npz"},
-      {"subjects", "S8", "comma-separated subjects"},
-      {"actions", "", "comma-separated actions (npz keys / image folders); empty = all"},
-      {"cameras_file", "auto", "json only: metadata.xml or cameras.pkl (auto = next to root or the file)"},
-      {"distortion", "h36m", "lens model for the stored coefficients: h36m | opencv | none"},
-      {"global_units", "mm", "npz only: units of global_3d, mm | m (checked against camera_3d)"},
-      {"every", "1", "keep every n-th frame of each sequence"},
-      {"max_frames", "0", "at most this many frames per sequence (0 = all)"},
-      {"detections", "none", "none | annotations (the stored 2D: npz pose_2d, json keypoints_2d; score 1)"},
-  };
+  info.params = DescribeDatasetParams<H3wbParams>();
   return info;
 }
 

@@ -91,33 +91,29 @@ std::string ListPaths(const std::vector<std::filesystem::path>& paths) {
 }
 
 Options ParseOptions(const DatasetRequest& request) {
-  const DatasetInfo info = Human36mInfo();
-  request.CheckParams(info);
+  const Human36mParams params = ParseDatasetParams<Human36mParams>("human36m", request);
   Options o;
   o.root = request.root;
-  o.subjects = SplitList(request.Param(info, "subjects"));
-  if (o.subjects.empty()) throw ConfigError("human36m: subjects: no subject given");
-  o.actions = SplitList(request.Param(info, "actions"));
-  o.exclude = SplitList(request.Param(info, "exclude"));
-  o.model = h36m_ego::ParseH36mDistortion(request.Param(info, "distortion"), "human36m: distortion");
-  const std::string nose = request.Param(info, "nose_proxy");
-  if (nose != "head" && nose != "neck_nose") throw ConfigError("human36m: nose_proxy: '" + nose + "' is not one of head, neck_nose");
-  o.nose_from_head = nose == "head";
-  o.every = h36m_ego::ParseIntParam(request.Param(info, "every"), "human36m: every", 1);
-  o.max_frames = h36m_ego::ParseIntParam(request.Param(info, "max_frames"), "human36m: max_frames", 0);
+  o.subjects = params.subjects;
+  if (o.subjects.empty()) throw ConfigError("human36m: param subjects: no subject given");
+  o.actions = params.actions;
+  o.exclude = params.exclude;
+  o.model = ToDistortionModel(params.distortion);
+  o.nose_from_head = params.nose_proxy == H36mNoseProxy::kHead;
+  o.every = params.every;
+  o.max_frames = params.max_frames;
 
-  const std::string labels_file = request.Param(info, "labels_file");
+  const std::string& labels_file = params.labels_file;
   const std::vector<std::filesystem::path> label_candidates =
       labels_file == "auto" ? std::vector<std::filesystem::path>{o.root / "extra" / kLabelsFileName, o.root / kLabelsFileName}
                             : std::vector<std::filesystem::path>{h36m_ego::ResolveUnder(o.root, labels_file)};
   const std::optional<std::filesystem::path> found_labels = FirstExisting(label_candidates);
 
-  const std::string labels = request.Param(info, "labels");
-  if (labels == "annot") {
+  if (params.labels == H36mLabels::kAnnot) {
     o.use_npy = false;
-  } else if (labels == "npy") {
+  } else if (params.labels == H36mLabels::kNpy) {
     o.use_npy = true;
-  } else if (labels == "auto") {
+  } else {
     // annot.h5 files of a requested subject win; otherwise the labels npy (its image folders may
     // also live under processed/); otherwise processed/ alone still means annot.h5 (errors name it).
     bool has_annot = false;
@@ -138,15 +134,13 @@ Options ParseOptions(const DatasetRequest& request) {
       throw InputError(PathName(o.root) + ": no Human3.6M labels found (looked for the directory " +
                        (o.root / "processed").string() + " and " + ListPaths(label_candidates) + ")");
     }
-  } else {
-    throw ConfigError("human36m: labels: '" + labels + "' is not one of auto, annot, npy");
   }
   if (o.use_npy) {
     if (!found_labels) throw InputError(ListPaths(label_candidates) + ": labels file not found");
     o.labels_file = *found_labels;
   }
 
-  const std::string cameras_file = request.Param(info, "cameras_file");
+  const std::string& cameras_file = params.cameras_file;
   if (cameras_file == "labels") {
     if (!o.use_npy) throw ConfigError("human36m: cameras_file=labels needs labels=npy");
   } else if (cameras_file == "auto") {
@@ -482,6 +476,18 @@ const JointNames& Human36mJoints() {
   return names;
 }
 
+DistortionModel ToDistortionModel(H36mLens lens) {
+  switch (lens) {
+    case H36mLens::kOpenCV:
+      return DistortionModel::kOpenCV;
+    case H36mLens::kNone:
+      return DistortionModel::kNone;
+    case H36mLens::kH36m:
+      break;
+  }
+  return DistortionModel::kH36M;
+}
+
 DatasetInfo Human36mInfo() {
   DatasetInfo info;
   info.name = "human36m";
@@ -490,18 +496,7 @@ DatasetInfo Human36mInfo() {
       "<root>/metadata.xml or <root>/cameras.pkl (mmpose)   cameras (or param cameras_file)\n"
       "<root>/processed/<S>/<Action>-<sub>/annot.h5           h36m-fetch labels (labels=annot)\n"
       "<root>/extra/human36m-multiview-labels-GTbboxes.npy    learnable-triangulation labels (labels=npy)";
-  info.params = {
-      {"subjects", "S9,S11", "comma-separated subjects"},
-      {"actions", "", "comma-separated actions ('Directions' = all its sub-actions, 'Directions-1' = one); empty = all"},
-      {"exclude", "", "comma-separated <subject>/<action> to skip, e.g. S9/Greeting-2"},
-      {"labels", "auto", "auto | annot (processed/*/annot.h5) | npy (learnable-triangulation labels)"},
-      {"labels_file", "auto", "labels npy path (relative to root); auto = extra/ or root"},
-      {"cameras_file", "auto", "metadata.xml | cameras.pkl | labels npy path, or 'labels'; auto = metadata.xml, cameras.pkl, annotation_body3d/cameras.pkl, else the labels npy"},
-      {"distortion", "h36m", "lens model for the stored coefficients: h36m | opencv | none"},
-      {"nose_proxy", "head", "GT joint copied to 'nose': head (raw 15) | neck_nose (raw 14)"},
-      {"every", "1", "keep every n-th labelled frame of each sequence (annot.h5 already holds every 64th frame of S9/S11)"},
-      {"max_frames", "0", "at most this many frames per sequence (0 = all)"},
-  };
+  info.params = DescribeDatasetParams<Human36mParams>();
   return info;
 }
 
