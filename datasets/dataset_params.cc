@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "core/text.h"
+#include "datasets/io/number_text.h"
 
 namespace rpt::dataset_params {
 namespace {
@@ -49,9 +50,7 @@ void ParseInteger(std::string_view text, const OptionSpec& spec, const std::stri
   constexpr double lo = static_cast<double>(std::numeric_limits<Int>::min());
   constexpr double hi = static_cast<double>(std::numeric_limits<Int>::max());
   Int value = 0;
-  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  const bool ok = !text.empty() && ec == std::errc() && ptr == text.data() + text.size();
-  if (!ok || !InRange(static_cast<double>(value), spec)) Fail(text, what, WithRange("an integer", spec, lo, hi));
+  if (!io::ParseInteger(text, &value) || !InRange(static_cast<double>(value), spec)) Fail(text, what, WithRange("an integer", spec, lo, hi));
   *out = value;
 }
 
@@ -86,9 +85,7 @@ void Parse(std::string_view text, const OptionSpec& spec, const std::string& wha
 
 void Parse(std::string_view text, const OptionSpec& spec, const std::string& what, double* out) {
   double value = 0;
-  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  const bool ok = !text.empty() && ec == std::errc() && ptr == text.data() + text.size() && std::isfinite(value);
-  if (!ok || !InRange(value, spec)) {
+  if (!io::ParseFiniteNumber(text, &value) || !InRange(value, spec)) {
     const std::string range = RangeText(spec, -HUGE_VAL, HUGE_VAL);
     Fail(text, what, range == "> 0" ? "a positive number" : range.empty() ? "a number" : "a number " + range);
   }

@@ -5,14 +5,14 @@
 #include <charconv>
 
 #include "core/errors.h"
+#include "datasets/io/number_text.h"
 
 namespace rpt {
 namespace {
 
 int ParseInt(std::string_view text, const std::string& what) {
   int value = 0;
-  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (ec != std::errc() || ptr != text.data() + text.size()) {
+  if (!io::ParseInteger(text, &value)) {
     throw ConfigError(what + ": '" + std::string(text) + "' is not an integer");
   }
   return value;

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "core/errors.h"
+#include "datasets/io/number_text.h"
 #include "datasets/input_warnings.h"
 #include "datasets/io/npy.h"
 #include "datasets/io/pickle.h"
@@ -115,8 +116,7 @@ std::vector<SequenceDir> FindSequences(const Options& options) {
 std::optional<int> TimeStampOf(const std::string& file_name) {
   const std::string stem = fs::path(file_name).stem().string();
   int value = 0;
-  const auto [ptr, ec] = std::from_chars(stem.data(), stem.data() + stem.size(), value);
-  if (stem.empty() || ec != std::errc() || ptr != stem.data() + stem.size()) return std::nullopt;
+  if (!io::ParseInteger(stem, &value)) return std::nullopt;
   return value;
 }
 
@@ -241,8 +241,7 @@ int TrackIdOf(const std::string& aria_name, int fallback) {
   std::size_t digits = aria_name.find_first_of("0123456789");
   if (digits == std::string::npos) return fallback;
   int value = 0;
-  const auto [ptr, ec] = std::from_chars(aria_name.data() + digits, aria_name.data() + aria_name.size(), value);
-  return ec == std::errc() && ptr == aria_name.data() + aria_name.size() ? value : fallback;
+  return io::ParseInteger(std::string_view(aria_name).substr(digits), &value) ? value : fallback;
 }
 
 Poses3D ReadGtFrame(const fs::path& path) {

@@ -16,6 +16,7 @@
 #include <utility>
 
 #include "core/errors.h"
+#include "datasets/io/number_text.h"
 #include "datasets/input_warnings.h"
 #include "datasets/io/json_file.h"
 #include "datasets/io/npy.h"
@@ -413,8 +414,7 @@ class SampleSax final : public nlohmann::json_sax<nlohmann::json> {
 
   static int JointIndex(const std::string& text) {
     int value = -1;
-    const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-    return ec == std::errc() && ptr == text.data() + text.size() && value >= 0 && value < kJoints ? value : -1;
+    return io::ParseInteger(text, &value) && value >= 0 && value < kJoints ? value : -1;
   }
 
   std::string Pointer(int levels) const {
@@ -460,8 +460,7 @@ class SampleSax final : public nlohmann::json_sax<nlohmann::json> {
   void StartSample() {
     sample_ = JsonSample();
     sample_.key = sample_key_;
-    const auto [ptr, ec] = std::from_chars(sample_key_.data(), sample_key_.data() + sample_key_.size(), sample_.id);
-    if (sample_key_.empty() || ec != std::errc() || ptr != sample_key_.data() + sample_key_.size() || sample_.id < 0) {
+    if (!io::ParseInteger(sample_key_, &sample_.id) || sample_.id < 0) {
       Fail(Pointer(1), "sample id is not a non-negative integer");
     }
     sample_.camera_mm.setZero(3, kJoints);

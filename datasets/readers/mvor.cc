@@ -10,6 +10,7 @@
 #include <string>
 
 #include "core/errors.h"
+#include "datasets/io/number_text.h"
 #include "datasets/detections.h"
 #include "datasets/io/json_file.h"
 #include "datasets/readers/coco_detections.h"
@@ -121,7 +122,9 @@ int FrameNumber(const std::string& file_name, const std::string& where) {
   if (digits.empty() || digits.size() > 9 || !std::all_of(digits.begin(), digits.end(), ::isdigit)) {
     throw InputError(where + ": file name '" + file_name + "' does not end in a frame number");
   }
-  return std::stoi(digits);
+  int frame = 0;
+  if (!io::ParseInteger(digits, &frame)) throw InputError(where + ": file name '" + file_name + "': bad frame number");
+  return frame;
 }
 
 std::string FrameId(int day, int frame) {

@@ -9,6 +9,7 @@
 #include <map>
 
 #include "core/errors.h"
+#include "datasets/io/number_text.h"
 #include "datasets/input_warnings.h"
 #include "datasets/io/json_file.h"
 
@@ -111,8 +112,7 @@ std::vector<PoseFile> ListPoseFiles(const std::filesystem::path& folder) {
     }
     const std::string digits = name.substr(prefix.size(), name.size() - prefix.size() - 5);
     PoseFile file;
-    const auto [ptr, parse_error] = std::from_chars(digits.data(), digits.data() + digits.size(), file.frame);
-    if (parse_error != std::errc() || ptr != digits.data() + digits.size()) continue;
+    if (!io::ParseInteger(digits, &file.frame)) continue;
     file.path = entry.path();
     files.push_back(std::move(file));
   }

@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "core/errors.h"
+#include "datasets/io/number_text.h"
 #include "datasets/detections.h"
 #include "datasets/io/mat.h"
 #include "datasets/readers/voxelpose_calibration.h"
@@ -90,8 +91,7 @@ std::string FrameId(const std::string& prefix, int frame) {
 
 int ParseNonNegative(const std::string& text, const std::string& what) {
   int value = 0;
-  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (ec != std::errc() || ptr != text.data() + text.size() || value < 0) {
+  if (!io::ParseInteger(text, &value) || value < 0) {
     throw ConfigError(what + ": '" + text + "' is not a non-negative integer");
   }
   return value;
