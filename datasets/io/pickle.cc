@@ -1,4 +1,7 @@
 // SPDX-License-Identifier: MIT
+// Over 500 lines on purpose: the pickle virtual machine is one cohesive state machine (stack,
+// memo, mark, one case per opcode of protocols 0-5, the allow-list of reconstructable globals);
+// splitting the opcode switch would spread one loop's invariants over several files.
 #include "datasets/io/pickle.h"
 
 #include <algorithm>
