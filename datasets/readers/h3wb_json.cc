@@ -24,6 +24,7 @@
 #include "datasets/readers/h36m_ego_common.h"
 #include "datasets/readers/human36m.h"
 #include "datasets/readers/human36m_internal.h"
+
 namespace rpt::h3wb {
 namespace {
 
