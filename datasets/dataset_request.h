@@ -6,6 +6,10 @@
 //   std::vector<Sequence> Read<Name>(const DatasetRequest& request);
 // and a <Name>Params struct with VisitFields: the reader parses request.params into it once
 // (ParseDatasetParams, datasets/dataset_params.h) and <Name>Info() lists it (DescribeDatasetParams).
+// Read<Name> walks the data once and returns the sequences with their ground truth and, when a
+// detections parameter asks for the dataset's own 2D (e.g. detections=voxelpose, =cache,
+// =annotations), the frames' views filled in the same walk. Readers load whole sequences into
+// memory (no reader streams frame by frame yet).
 // Readers convert everything to metres in a z-up world frame where the dataset allows it, name
 // joints like core/joints.h (nose, shoulder_left, ...; dataset-specific extras such as
 // head_top), and set frame ids "<dataset>[_<sequence>]_<frame number, 6 digits>".

@@ -353,26 +353,4 @@ std::vector<Sequence> ReadEgohumans(const DatasetRequest& request) {
   return out;
 }
 
-Detections ReadEgohumansDetections(const DatasetRequest& request) {
-  const Options options = ParseOptions(request);
-  Detections detections;
-  detections.joints = CocoWholeBodyJoints();
-  for (const SequenceDir& dir : FindSequences(options)) {
-    const std::vector<int> stamps = SelectedTimeStamps(options, dir);
-    // Only the camera names are used here: their pose corrections are not part of the detections.
-    InputWarnings camera_warnings;
-    const std::vector<Camera> cameras = ReadExoCameras(options, dir, stamps.empty() ? 1 : stamps.front(), &camera_warnings);
-    for (const int stamp : stamps) {
-      FrameDetections frame;
-      frame.frame_id = FrameId(dir, stamp);
-      for (const Camera& camera : cameras) {
-        frame.cameras.push_back(camera.name);
-        frame.views.push_back(ReadCacheView(CachePath(dir, camera.name, stamp), PathName(CacheDir(dir)), &detections.warnings));
-      }
-      detections.frames.push_back(std::move(frame));
-    }
-  }
-  return detections;
-}
-
 }  // namespace rpt

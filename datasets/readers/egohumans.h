@@ -66,13 +66,10 @@ void VisitFields(Visitor& v, Self& o) {
 }
 
 DatasetInfo EgohumansInfo();
+// One walk over the selected sequences: cameras, GT and, with param detections=cache, the 2D cache
+// processed_data/poses2d/<cam>/rgb/%05d.npy (CocoWholeBodyJoints()). Cache scores in (1, 1.5] are
+// clamped to 1 and counted in Sequence::warnings (one line per sequence's poses2d folder); negative
+// scores or scores above 1.5 are errors naming the file and joint.
 std::vector<Sequence> ReadEgohumans(const DatasetRequest& request);
-
-// The 2D cache processed_data/poses2d/<cam>/rgb/%05d.npy of the selected sequences, frames and
-// cameras as Detections (CocoWholeBodyJoints()). Scores in (1, 1.5] are clamped to 1 and counted
-// in Detections::warnings (one line per sequence's poses2d folder); negative scores or scores
-// above 1.5 are errors naming the file and joint. Same params as ReadEgohumans; frame ids match
-// its frames.
-Detections ReadEgohumansDetections(const DatasetRequest& request);
 
 }  // namespace rpt

@@ -320,23 +320,4 @@ std::vector<Sequence> ReadH3wb(const DatasetRequest& request) {
   return out;
 }
 
-Detections ReadH3wbDetections(const DatasetRequest& request) {
-  const Options options = ParseOptions(request);
-  Detections detections;
-  detections.joints = CocoWholeBodyJoints();
-  for (const Clip& clip : ReadClips(options, true)) {
-    for (const ClipFrame& f : clip.frames) {
-      FrameDetections frame;
-      frame.frame_id = FrameId(clip, f.number);
-      for (std::size_t c = 0; c < clip.cameras.size(); ++c) {
-        if (!f.pose_2d[c]) continue;
-        frame.cameras.push_back(clip.cameras[c].name);
-        frame.views.push_back(View2D(clip, f, c, frame.frame_id));
-      }
-      detections.frames.push_back(std::move(frame));
-    }
-  }
-  return detections;
-}
-
 }  // namespace rpt

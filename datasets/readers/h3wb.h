@@ -82,11 +82,9 @@ void VisitFields(Visitor& v, Self& o) {
 }
 
 DatasetInfo H3wbInfo();
+// One walk over the annotations: the GT and, with param detections=annotations, the stored 2D
+// keypoints (npz pose_2d, json keypoints_2d) as one person per view with score 1
+// (CocoWholeBodyJoints(); a view without stored 2D has no person).
 std::vector<Sequence> ReadH3wb(const DatasetRequest& request);
-
-// The 2D keypoints stored with the annotations (npz pose_2d, json keypoints_2d) of the frames
-// ReadH3wb selects, one person per view with score 1, joints CocoWholeBodyJoints(). Same params.
-// (ReadH3wb with param detections=annotations attaches the same views directly.)
-Detections ReadH3wbDetections(const DatasetRequest& request);
 
 }  // namespace rpt
