@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // `rpt datasets`: the readers, what each needs on disk and its parameters.
 #include <cstdio>
+#include <memory>
 
 #include "cli/commands.h"
 #include "datasets/registry.h"
@@ -9,14 +10,20 @@ namespace rpt::cli {
 
 void RegisterDatasetsCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand("datasets", "List the dataset readers, their layouts and parameters");
-  command->callback([] {
+  auto markdown = std::make_shared<bool>(false);
+  command->add_flag("--markdown", *markdown, "print only the parameter tables of docs/datasets.md");
+  command->callback([markdown] {
+    if (*markdown) {
+      std::printf("%s", DatasetParamsMarkdown().c_str());
+      return;
+    }
     for (const DatasetEntry& entry : DatasetRegistry()) {
       const DatasetInfo& info = entry.info;
       std::printf("%s: %s\n", info.name.c_str(), info.description.c_str());
       std::printf("  on disk: %s\n", info.layout.c_str());
       for (const DatasetParam& p : info.params) {
-        std::printf("  --param %s=%s  %s\n", p.name.c_str(), p.default_value.empty() ? "..." : p.default_value.c_str(),
-                    p.help.c_str());
+        std::printf("  --param %s=%s  %s [%s]\n", p.name.c_str(), p.default_value.empty() ? "..." : p.default_value.c_str(),
+                    p.help.c_str(), p.type.c_str());
       }
       std::printf("\n");
     }

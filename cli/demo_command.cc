@@ -37,14 +37,17 @@ void RunDemo(DemoOptions o) {
     throw ConfigError("--noise " + o.noise + " (deprecated) contradicts --detector " + o.detector);
   }
   if (o.detector.empty()) o.detector = o.noise.empty() ? "realistic" : from_noise;
-  // The demo is the built-in synthetic dataset with the demo's options as its parameters.
-  DatasetRequest request;
-  request.dataset = "synthetic";
-  request.params = {{"cameras", std::to_string(o.cameras)}, {"people", std::to_string(o.people)},
-                    {"frames", std::to_string(o.frames)},   {"joints", o.joints},
-                    {"noise", o.detector},                  {"distortion", o.distortion},
-                    {"seed", std::to_string(o.seed)}};
-  std::vector<Sequence> sequences = ReadSynthetic(request);
+  // The demo is the built-in synthetic dataset with the demo's options as its parameters (the
+  // choices are checked by CLI11 against the same names).
+  SyntheticParams params;
+  params.cameras = o.cameras;
+  params.people = o.people;
+  params.frames = o.frames;
+  EnumFromName(o.joints, &params.joints);
+  EnumFromName(o.distortion, &params.distortion);
+  params.noise = o.detector;
+  params.seed = o.seed;
+  std::vector<Sequence> sequences = MakeSyntheticDataset(params);
   sequences.front().name = "demo";
   const Config config = ResolveConfig(o.config);
   RunOptions run_options;

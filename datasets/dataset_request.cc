@@ -5,45 +5,20 @@
 #include <charconv>
 
 #include "core/errors.h"
-#include "core/text.h"
+#include "datasets/io/number_text.h"
 
 namespace rpt {
 namespace {
 
-std::string ValidParams(const DatasetInfo& info) {
-  std::string out;
-  for (const DatasetParam& p : info.params) AppendItem(&out, p.name);
-  return out.empty() ? "(none)" : out;
-}
-
 int ParseInt(std::string_view text, const std::string& what) {
   int value = 0;
-  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (ec != std::errc() || ptr != text.data() + text.size()) {
+  if (!io::ParseInteger(text, &value)) {
     throw ConfigError(what + ": '" + std::string(text) + "' is not an integer");
   }
   return value;
 }
 
 }  // namespace
-
-std::string DatasetRequest::Param(const DatasetInfo& info, const std::string& key) const {
-  const auto known = std::find_if(info.params.begin(), info.params.end(), [&](const DatasetParam& p) { return p.name == key; });
-  if (known == info.params.end()) {
-    throw ConfigError("dataset '" + info.name + "' has no parameter '" + key + "' (valid: " + ValidParams(info) + ")");
-  }
-  const auto it = params.find(key);
-  return it != params.end() ? it->second : known->default_value;
-}
-
-void DatasetRequest::CheckParams(const DatasetInfo& info) const {
-  for (const auto& [key, value] : params) {
-    const bool known = std::any_of(info.params.begin(), info.params.end(), [&](const DatasetParam& p) { return p.name == key; });
-    if (!known) {
-      throw ConfigError("dataset '" + info.name + "' has no parameter '" + key + "' (valid: " + ValidParams(info) + ")");
-    }
-  }
-}
 
 std::vector<std::string> SplitList(const std::string& text) {
   std::vector<std::string> out;

@@ -4,6 +4,12 @@
 // Every reader is a pair of functions (datasets/readers/<name>.h):
 //   DatasetInfo <Name>Info();
 //   std::vector<Sequence> Read<Name>(const DatasetRequest& request);
+// and a <Name>Params struct with VisitFields: the reader parses request.params into it once
+// (ParseDatasetParams, datasets/dataset_params.h) and <Name>Info() lists it (DescribeDatasetParams).
+// Read<Name> walks the data once and returns the sequences with their ground truth and, when a
+// detections parameter asks for the dataset's own 2D (e.g. detections=voxelpose, =cache,
+// =annotations), the frames' views filled in the same walk. Readers load whole sequences into
+// memory (no reader streams frame by frame yet).
 // Readers convert everything to metres in a z-up world frame where the dataset allows it, name
 // joints like core/joints.h (nose, shoulder_left, ...; dataset-specific extras such as
 // head_top), and set frame ids "<dataset>[_<sequence>]_<frame number, 6 digits>".
@@ -17,9 +23,10 @@
 namespace rpt {
 
 struct DatasetParam {
-  std::string name;         // e.g. "frames"
+  std::string name;           // e.g. "frames"
   std::string default_value;  // as text; empty = none
-  std::string help;         // one line
+  std::string help;           // one line
+  std::string type;           // what the value must be, e.g. "integer in [2, 64]", "none | voxelpose"
 };
 
 struct DatasetInfo {
@@ -32,13 +39,7 @@ struct DatasetInfo {
 struct DatasetRequest {
   std::string dataset;
   std::filesystem::path root;
-  std::map<std::string, std::string> params;  // key=value from the command line
-
-  // The value of `key`, or `info`'s default. Throws ConfigError when `key` is not among
-  // info.params (listing the valid ones).
-  std::string Param(const DatasetInfo& info, const std::string& key) const;
-  // Throws ConfigError naming the first given param that `info` does not accept.
-  void CheckParams(const DatasetInfo& info) const;
+  std::map<std::string, std::string> params;  // key=value from the command line (parsed by the reader)
 };
 
 // Parses "a,b,c" into {"a","b","c"} (empty items dropped).

@@ -31,6 +31,24 @@ const std::vector<DatasetEntry>& DatasetRegistry() {
   return entries;
 }
 
+std::string DatasetParamsMarkdown() {
+  const auto cell = [](const std::string& text) {  // '|' would end the table cell
+    std::string out;
+    for (const char c : text) out += c == '|' ? std::string("\\|") : std::string(1, c);
+    return out;
+  };
+  std::string out;
+  for (const DatasetEntry& entry : DatasetRegistry()) {
+    out += "\n### " + entry.info.name + "\n\n";
+    out += "| `--param` | default | value | meaning |\n|---|---|---|---|\n";
+    for (const DatasetParam& p : entry.info.params) {
+      out += "| `" + p.name + "` | " + (p.default_value.empty() ? std::string("(empty)") : "`" + p.default_value + "`") +
+             " | " + cell(p.type) + " | " + cell(p.help) + " |\n";
+    }
+  }
+  return out;
+}
+
 std::vector<Sequence> ReadDataset(const DatasetRequest& request) {
   std::string known;
   for (const DatasetEntry& entry : DatasetRegistry()) {

@@ -18,6 +18,11 @@ struct DatasetEntry {
 
 const std::vector<DatasetEntry>& DatasetRegistry();
 
+// The parameters of every reader as Markdown: one "### <name>" heading and one table (parameter,
+// default, type, meaning) per dataset, as docs/datasets.md shows them between its
+// "<!-- dataset-params:begin -->" and "<!-- dataset-params:end -->" markers.
+std::string DatasetParamsMarkdown();
+
 // Reads request.dataset; throws ConfigError for an unknown dataset (listing the known ones).
 std::vector<Sequence> ReadDataset(const DatasetRequest& request);
 

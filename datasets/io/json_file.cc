@@ -5,6 +5,7 @@
 #include <cctype>
 
 #include "core/errors.h"
+#include "datasets/io/number_text.h"
 #include "datasets/io/binary.h"
 
 namespace rpt::io {
@@ -167,7 +168,13 @@ std::vector<std::string> JsonObjectKeysNumericOrder(const nlohmann::json& object
   for (const auto& item : object.items()) keys.push_back(item.key());
   if (std::all_of(keys.begin(), keys.end(), small_integer)) {
     std::sort(keys.begin(), keys.end(),
-              [](const std::string& a, const std::string& b) { return std::stol(a) < std::stol(b); });
+              [](const std::string& a, const std::string& b) {
+                long long x = 0;
+                long long y = 0;
+                ParseInteger(a, &x);  // small_integer() checked every key
+                ParseInteger(b, &y);
+                return x < y;
+              });
   }
   return keys;
 }

@@ -8,6 +8,7 @@
 #include <unordered_set>
 
 #include "core/errors.h"
+#include "datasets/io/number_text.h"
 #include "datasets/io/binary.h"
 #include "datasets/io/pickle.h"
 
@@ -172,19 +173,15 @@ class LiteralParser {
     const std::string token(text_.substr(start, pos_ - start));
     if (pos_ < text_.size() && (text_[pos_] == 'L' || text_[pos_] == 'l')) ++pos_;  // Python 2 long
     if (token.empty() || token == "-" || token == "+") Fail("bad number");
-    try {
-      std::size_t used = 0;
-      if (is_float) {
-        const double d = std::stod(token, &used);
-        if (used != token.size()) Fail("bad number '" + token.substr(0, 40) + "'");
-        return MakeFloat(d);
-      }
-      const long long v = std::stoll(token, &used);
-      if (used != token.size()) Fail("bad number '" + token.substr(0, 40) + "'");
-      return MakeInt(v);
-    } catch (const std::logic_error&) {
-      Fail("number out of range '" + token.substr(0, 40) + "'");
+    const std::string problem = "bad number '" + token.substr(0, 40) + "' (malformed or out of range)";
+    if (is_float) {
+      double d = 0;
+      if (!io::ParseNumber(token, &d)) Fail(problem);
+      return MakeFloat(d);
     }
+    long long v = 0;
+    if (!io::ParseInteger(token, &v)) Fail(problem);
+    return MakeInt(v);
   }
 
   std::string_view text_;

@@ -1,4 +1,7 @@
 // SPDX-License-Identifier: MIT
+// Over 500 lines on purpose: the pickle virtual machine is one cohesive state machine (stack,
+// memo, mark, one case per opcode of protocols 0-5, the allow-list of reconstructable globals);
+// splitting the opcode switch would spread one loop's invariants over several files.
 #include "datasets/io/pickle.h"
 
 #include <algorithm>
@@ -295,16 +298,10 @@ class Vm {
   }
 
   void SetItem(PyValue& dict, PyValuePtr key, PyValuePtr value) {
-    auto k = KeyString(*key);
+    const std::optional<std::string> k = KeyString(*key);
     if (!k) Fail(std::string("unhashable dict key of type ") + PyKindName(key->kind));
     Charge(k->size());
-    auto it = dict.key_index.find(*k);
-    if (it != dict.key_index.end()) {
-      dict.entries[it->second].second = std::move(value);
-    } else {
-      dict.key_index.emplace(std::move(*k), dict.entries.size());
-      dict.entries.emplace_back(std::move(key), std::move(value));
-    }
+    DictSet(dict, std::move(key), std::move(value));
   }
 
   std::int64_t DecodeLong(const std::uint8_t* p, std::size_t n) {

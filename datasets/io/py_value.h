@@ -114,6 +114,8 @@ enum class PyKind {
 };
 
 const char* PyKindName(PyKind kind);
+// "(3, 17)" / "(5,)" / "()": a shape as Python prints it.
+std::string ShapeToString(std::span<const std::int64_t> shape);
 
 struct PyValue {
   PyKind kind = PyKind::kNone;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "datasets/io/text_tokens.h"
 
+#include "datasets/io/number_text.h"
+
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -65,21 +67,9 @@ std::int64_t TextTokens::MaxTokensLeft() const {
   return static_cast<std::int64_t>((left + 1) / 2);
 }
 
-bool TextTokens::ParseInt(std::string_view token, std::int64_t* value) {
-  const char* first = token.data();
-  const char* last = token.data() + token.size();
-  if (first != last && *first == '+') ++first;
-  const auto [ptr, ec] = std::from_chars(first, last, *value);
-  return ec == std::errc() && ptr == last;
-}
+bool TextTokens::ParseInt(std::string_view token, std::int64_t* value) { return ParseInteger(token, value); }
 
-bool TextTokens::ParseFiniteDouble(std::string_view token, double* value) {
-  const char* first = token.data();
-  const char* last = token.data() + token.size();
-  if (first != last && *first == '+') ++first;
-  const auto [ptr, ec] = std::from_chars(first, last, *value);
-  return ec == std::errc() && ptr == last && std::isfinite(*value);
-}
+bool TextTokens::ParseFiniteDouble(std::string_view token, double* value) { return ParseFiniteNumber(token, value); }
 
 std::string TextTokens::Here() const {
   return source_ + ":" + std::to_string(token_line_) + ": token " + std::to_string(tokens_read_);
@@ -94,10 +84,7 @@ void TextTokens::FailAtEnd(const std::string& what) const {
 
 void TextTokens::FailInt(std::string_view token, std::int64_t min_value, std::int64_t max_value,
                          const std::string& what) const {
-  std::string range = max_value == std::numeric_limits<std::int64_t>::max()
-                          ? ">= " + std::to_string(min_value)
-                          : "in [" + std::to_string(min_value) + ", " + std::to_string(max_value) + "]";
-  Fail(what + ": '" + Shown(token) + "' is not an integer " + range);
+  Fail(what + ": '" + Shown(token) + "' is not an integer " + IntegerRangeText(min_value, max_value));
 }
 
 void TextTokens::FailNumber(std::string_view token, const std::string& what) const {

@@ -8,6 +8,7 @@
 #include <unordered_map>
 
 #include "core/errors.h"
+#include "datasets/io/number_text.h"
 #include "datasets/input_warnings.h"
 #include "datasets/io/json_file.h"
 #include "datasets/readers/generic_detections.h"
@@ -34,8 +35,7 @@ std::int64_t ImageId(const json& value, const std::string& source, const std::st
   if (value.is_string()) {
     const std::string text = value.get<std::string>();
     std::int64_t id = 0;
-    const auto [p, ec] = std::from_chars(text.data(), text.data() + text.size(), id);
-    if (ec == std::errc() && p == text.data() + text.size() && !text.empty()) return id;
+    if (io::ParseInteger(text, &id)) return id;
   }
   throw InputError(source + ": " + pointer + ": expected an integer image id, got " + value.dump());
 }

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/errors.h"
+#include "datasets/io/number_text.h"
 #include "datasets/input_warnings.h"
 
 namespace rpt {
@@ -34,21 +35,14 @@ std::string Where(const std::string& source, int line) { return source + ":" + s
 
 double ParseDouble(const std::string& token, const std::string& what, const std::string& where) {
   double value = 0;
-  const char* first = token.data();
-  const char* last = token.data() + token.size();
-  if (first != last && *first == '+') ++first;
-  const auto [ptr, ec] = std::from_chars(first, last, value);
-  if (ec != std::errc() || ptr != last) throw InputError(where + ": " + what + " '" + token + "' is not a number");
+  if (!io::ParseNumber(token, &value)) throw InputError(where + ": " + what + " '" + token + "' is not a number");
   if (!std::isfinite(value)) throw InputError(where + ": " + what + " is NaN or infinite");
   return value;
 }
 
 int ParseInt(const std::string& token, const std::string& what, const std::string& where) {
   int value = 0;
-  const auto [ptr, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
-  if (ec != std::errc() || ptr != token.data() + token.size()) {
-    throw InputError(where + ": " + what + " '" + token + "' is not an integer");
-  }
+  if (!io::ParseInteger(token, &value)) throw InputError(where + ": " + what + " '" + token + "' is not an integer");
   return value;
 }
 

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "core/errors.h"
+#include "datasets/io/number_text.h"
 #include "datasets/input_warnings.h"
 #include "datasets/io/npy.h"
 #include "datasets/io/pickle.h"
@@ -47,29 +48,17 @@ struct SequenceDir {
 };
 
 Options ParseOptions(const DatasetRequest& request) {
-  const DatasetInfo info = EgohumansInfo();
-  request.CheckParams(info);
+  const EgohumansParams params = ParseDatasetParams<EgohumansParams>("egohumans", request);
   Options o;
   o.root = request.root;
-  o.sequences = SplitList(request.Param(info, "sequences"));
-  o.cameras = SplitList(request.Param(info, "cameras"));
-  o.anchor = request.Param(info, "anchor");
-  o.gt = request.Param(info, "gt");
-  if (o.gt != "poses3d" && o.gt != "refine_poses3d" && o.gt != "fit_poses3d") {
-    throw ConfigError("egohumans: gt: '" + o.gt + "' is not one of poses3d, refine_poses3d, fit_poses3d");
-  }
-  const std::string detections = request.Param(info, "detections");
-  if (detections != "none" && detections != "cache") throw ConfigError("egohumans: detections: '" + detections + "' is not one of none, cache");
-  o.detections = detections == "cache";
-  o.every = h36m_ego::ParseIntParam(request.Param(info, "every"), "egohumans: every", 1);
-  o.max_frames = h36m_ego::ParseIntParam(request.Param(info, "max_frames"), "egohumans: max_frames", 0);
-  const std::string fps = request.Param(info, "fps");
-  double value = 0;
-  const auto [ptr, ec] = std::from_chars(fps.data(), fps.data() + fps.size(), value);
-  if (fps.empty() || ec != std::errc() || ptr != fps.data() + fps.size() || !(value > 0) || !std::isfinite(value)) {
-    throw ConfigError("egohumans: fps: '" + fps + "' is not a positive number");
-  }
-  o.fps = value;
+  o.sequences = params.sequences;
+  o.cameras = params.cameras;
+  o.anchor = params.anchor;
+  o.gt = std::string(EnumName(params.gt));
+  o.detections = params.detections == EgohumansDetections::kCache;
+  o.every = params.every;
+  o.max_frames = params.max_frames;
+  o.fps = params.fps;
   return o;
 }
 
@@ -127,8 +116,7 @@ std::vector<SequenceDir> FindSequences(const Options& options) {
 std::optional<int> TimeStampOf(const std::string& file_name) {
   const std::string stem = fs::path(file_name).stem().string();
   int value = 0;
-  const auto [ptr, ec] = std::from_chars(stem.data(), stem.data() + stem.size(), value);
-  if (stem.empty() || ec != std::errc() || ptr != stem.data() + stem.size()) return std::nullopt;
+  if (!io::ParseInteger(stem, &value)) return std::nullopt;
   return value;
 }
 
@@ -253,8 +241,7 @@ int TrackIdOf(const std::string& aria_name, int fallback) {
   std::size_t digits = aria_name.find_first_of("0123456789");
   if (digits == std::string::npos) return fallback;
   int value = 0;
-  const auto [ptr, ec] = std::from_chars(aria_name.data() + digits, aria_name.data() + aria_name.size(), value);
-  return ec == std::errc() && ptr == aria_name.data() + aria_name.size() ? value : fallback;
+  return io::ParseInteger(std::string_view(aria_name).substr(digits), &value) ? value : fallback;
 }
 
 Poses3D ReadGtFrame(const fs::path& path) {
@@ -332,16 +319,7 @@ DatasetInfo EgohumansInfo() {
       "<root>/<big_seq>/<seq>/processed_data/poses3d/%05d.npy (or refine_poses3d, fit_poses3d)\n"
       "<root>/<big_seq>/<seq>/processed_data/poses2d/<camXX>/rgb/%05d.npy (detections=cache)\n"
       "root may also be one <big_seq> or one <seq> directory";
-  info.params = {
-      {"sequences", "", "comma-separated <big_seq>/<seq> (or <seq>, or <big_seq>); empty = all under root"},
-      {"cameras", "", "comma-separated exo cameras (camXX); empty = all"},
-      {"anchor", "aria01", "Aria camera whose frame is the GT world (CALIBRATION.ANCHOR_EGO_CAMERA)"},
-      {"gt", "poses3d", "ground-truth folder: poses3d | refine_poses3d | fit_poses3d"},
-      {"detections", "none", "none | cache (processed_data/poses2d, COCO-WholeBody)"},
-      {"every", "1", "keep every n-th ground-truth time stamp"},
-      {"max_frames", "0", "at most this many frames per sequence (0 = all)"},
-      {"fps", "20", "frame rate used for timestamps (time stamp - 1) / fps"},
-  };
+  info.params = DescribeDatasetParams<EgohumansParams>();
   return info;
 }
 
@@ -373,28 +351,6 @@ std::vector<Sequence> ReadEgohumans(const DatasetRequest& request) {
     out.push_back(std::move(sequence));
   }
   return out;
-}
-
-Detections ReadEgohumansDetections(const DatasetRequest& request) {
-  const Options options = ParseOptions(request);
-  Detections detections;
-  detections.joints = CocoWholeBodyJoints();
-  for (const SequenceDir& dir : FindSequences(options)) {
-    const std::vector<int> stamps = SelectedTimeStamps(options, dir);
-    // Only the camera names are used here: their pose corrections are not part of the detections.
-    InputWarnings camera_warnings;
-    const std::vector<Camera> cameras = ReadExoCameras(options, dir, stamps.empty() ? 1 : stamps.front(), &camera_warnings);
-    for (const int stamp : stamps) {
-      FrameDetections frame;
-      frame.frame_id = FrameId(dir, stamp);
-      for (const Camera& camera : cameras) {
-        frame.cameras.push_back(camera.name);
-        frame.views.push_back(ReadCacheView(CachePath(dir, camera.name, stamp), PathName(CacheDir(dir)), &detections.warnings));
-      }
-      detections.frames.push_back(std::move(frame));
-    }
-  }
-  return detections;
 }
 
 }  // namespace rpt

@@ -20,22 +20,56 @@
 // "egohumans/<big_seq>/<seq>". Timestamps: (time stamp - 1) / fps.
 #pragma once
 
+#include <string>
 #include <vector>
 
-#include "datasets/dataset_request.h"
+#include "datasets/dataset_params.h"
 #include "datasets/detections.h"
 #include "datasets/sequence.h"
 
 namespace rpt {
 
-DatasetInfo EgohumansInfo();
-std::vector<Sequence> ReadEgohumans(const DatasetRequest& request);
+enum class EgohumansGt { kPoses3d, kRefinePoses3d, kFitPoses3d };
+template <>
+struct EnumNames<EgohumansGt> {
+  static constexpr std::array<std::pair<EgohumansGt, std::string_view>, 3> values = {
+      {{EgohumansGt::kPoses3d, "poses3d"}, {EgohumansGt::kRefinePoses3d, "refine_poses3d"}, {EgohumansGt::kFitPoses3d, "fit_poses3d"}}};
+};
+enum class EgohumansDetections { kNone, kCache };
+template <>
+struct EnumNames<EgohumansDetections> {
+  static constexpr std::array<std::pair<EgohumansDetections, std::string_view>, 2> values = {
+      {{EgohumansDetections::kNone, "none"}, {EgohumansDetections::kCache, "cache"}}};
+};
 
-// The 2D cache processed_data/poses2d/<cam>/rgb/%05d.npy of the selected sequences, frames and
-// cameras as Detections (CocoWholeBodyJoints()). Scores in (1, 1.5] are clamped to 1 and counted
-// in Detections::warnings (one line per sequence's poses2d folder); negative scores or scores
-// above 1.5 are errors naming the file and joint. Same params as ReadEgohumans; frame ids match
-// its frames.
-Detections ReadEgohumansDetections(const DatasetRequest& request);
+struct EgohumansParams {
+  ParamList sequences;  // empty = all under root
+  ParamList cameras;    // empty = all exo cameras
+  std::string anchor = "aria01";
+  EgohumansGt gt = EgohumansGt::kPoses3d;
+  EgohumansDetections detections = EgohumansDetections::kNone;
+  int every = 1;
+  int max_frames = 0;
+  double fps = 20;
+};
+
+template <class Visitor, OptionsOf<EgohumansParams> Self>
+void VisitFields(Visitor& v, Self& o) {
+  v("sequences", o.sequences, OptionSpec{.help = "<big_seq>/<seq> (or <seq>, or <big_seq>); empty = all under root"});
+  v("cameras", o.cameras, OptionSpec{.help = "exo cameras (camXX); empty = all"});
+  v("anchor", o.anchor, OptionSpec{.help = "Aria camera whose frame is the GT world (CALIBRATION.ANCHOR_EGO_CAMERA)"});
+  v("gt", o.gt, OptionSpec{.help = "ground-truth folder"});
+  v("detections", o.detections, OptionSpec{.help = "cache = processed_data/poses2d (COCO-WholeBody)"});
+  v("every", o.every, OptionSpec{.help = "keep every n-th ground-truth time stamp", .min = 1});
+  v("max_frames", o.max_frames, OptionSpec{.help = "at most this many frames per sequence (0 = all)", .min = 0});
+  v("fps", o.fps, OptionSpec{.help = "frame rate used for timestamps (time stamp - 1) / fps", .unit = "Hz", .min = 0, .min_exclusive = true});
+}
+
+DatasetInfo EgohumansInfo();
+// One walk over the selected sequences: cameras, GT and, with param detections=cache, the 2D cache
+// processed_data/poses2d/<cam>/rgb/%05d.npy (CocoWholeBodyJoints()). Cache scores in (1, 1.5] are
+// clamped to 1 and counted in Sequence::warnings (one line per sequence's poses2d folder); negative
+// scores or scores above 1.5 are errors naming the file and joint.
+std::vector<Sequence> ReadEgohumans(const DatasetRequest& request);
 
 }  // namespace rpt

@@ -9,6 +9,7 @@
 #include <unordered_set>
 
 #include "core/errors.h"
+#include "datasets/io/number_text.h"
 
 namespace rpt {
 namespace {
@@ -119,8 +120,7 @@ std::string Expand(const std::vector<TemplatePart>& parts, const std::smatch& ma
       continue;
     }
     long long number = 0;
-    const auto [p, ec] = std::from_chars(value.data(), value.data() + value.size(), number);
-    if (value.empty() || ec != std::errc() || p != value.data() + value.size() || number < 0) {
+    if (!io::ParseInteger(value, &number) || number < 0) {
       throw InputError(source + ": '" + text + "': capture group " + std::to_string(part.group) + " is '" + value +
                        "', not a non-negative integer");
     }

@@ -212,15 +212,6 @@ struct SequenceBuild {
   bool room_set = false;
 };
 
-double ParseFps(const std::string& text) {
-  double fps = 0;
-  const auto [p, ec] = std::from_chars(text.data(), text.data() + text.size(), fps);
-  if (ec != std::errc() || p != text.data() + text.size() || !(fps > 0) || !std::isfinite(fps)) {
-    throw ConfigError("dataset 'generic': param fps: '" + text + "' is not a positive number");
-  }
-  return fps;
-}
-
 }  // namespace
 
 std::vector<Sequence> ReadLabels(const std::filesystem::path& path, const LabelsOptions& options) {
@@ -448,20 +439,12 @@ DatasetInfo GenericInfo() {
   info.layout =
       "--root is the label file: a JSON list of labels {id, cameras, bodies3D, joints, ...}\n"
       "(schema: docs/datasets/generic_formats.md); labels are grouped into sequences by \"scene\"/\"seq\".";
-  info.params = {
-      {"split", "", "keep only labels whose \"splits\" contain this name (default: all labels)"},
-      {"fps", "25", "frame rate for timestamps when the labels have no \"timestamp\""},
-  };
+  info.params = DescribeDatasetParams<LabelsOptions>();
   return info;
 }
 
 std::vector<Sequence> ReadGeneric(const DatasetRequest& request) {
-  const DatasetInfo info = GenericInfo();
-  request.CheckParams(info);
-  LabelsOptions options;
-  options.split = request.Param(info, "split");
-  options.fps = ParseFps(request.Param(info, "fps"));
-  return ReadLabels(request.root, options);
+  return ReadLabels(request.root, ParseDatasetParams<LabelsOptions>("generic", request));
 }
 
 }  // namespace rpt

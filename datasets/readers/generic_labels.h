@@ -15,15 +15,23 @@
 #include <string>
 #include <vector>
 
-#include "datasets/dataset_request.h"
+#include "datasets/dataset_params.h"
 #include "datasets/sequence.h"
 
 namespace rpt {
 
+// Also the parameters of the "generic" dataset.
 struct LabelsOptions {
   std::string split;  // keep only labels whose "splits" list contains it; empty = all labels
   double fps = 25;    // for timestamps when labels have no "timestamp" and no "fps"
 };
+
+template <class Visitor, OptionsOf<LabelsOptions> Self>
+void VisitFields(Visitor& v, Self& o) {
+  v("split", o.split, OptionSpec{.help = "keep only labels whose \"splits\" contain this name (default: all labels)"});
+  v("fps", o.fps,
+    OptionSpec{.help = "frame rate for timestamps when the labels have no \"timestamp\"", .unit = "Hz", .min = 0, .min_exclusive = true});
+}
 
 // Reads and validates (ValidateSequence) a label file. Throws InputError naming the file and the
 // JSON pointer: missing file, parse errors (with line and column), wrong shapes, unknown joint

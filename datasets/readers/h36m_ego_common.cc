@@ -32,23 +32,6 @@ std::string ShapeText(const std::vector<std::int64_t>& shape) {
 
 }  // namespace
 
-int ParseIntParam(const std::string& text, const std::string& what, int min_value) {
-  int value = 0;
-  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (text.empty() || ec != std::errc() || ptr != text.data() + text.size()) {
-    throw ConfigError(what + ": '" + text + "' is not an integer");
-  }
-  if (value < min_value) throw ConfigError(what + ": must be at least " + std::to_string(min_value) + ", got " + text);
-  return value;
-}
-
-DistortionModel ParseH36mDistortion(const std::string& text, const std::string& what) {
-  if (text == "h36m") return DistortionModel::kH36M;
-  if (text == "opencv") return DistortionModel::kOpenCV;
-  if (text == "none") return DistortionModel::kNone;
-  throw ConfigError(what + ": '" + text + "' is not one of h36m, opencv, none");
-}
-
 std::vector<std::size_t> SelectFrames(std::size_t count, int every, int max_frames) {
   std::vector<std::size_t> out;
   const std::size_t step = every > 0 ? static_cast<std::size_t>(every) : 1;

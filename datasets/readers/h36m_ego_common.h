@@ -21,12 +21,6 @@ namespace rpt::h36m_ego {
 // far below 1 mm; a wrong subject, camera order or unit is off by decimetres to metres.
 inline constexpr double kViewAgreementToleranceM = 0.01;
 
-// Parses a non-negative integer parameter; throws ConfigError("<what>: ...") otherwise.
-int ParseIntParam(const std::string& text, const std::string& what, int min_value);
-
-// "h36m" | "opencv" | "none" -> distortion model; throws ConfigError naming `what`.
-DistortionModel ParseH36mDistortion(const std::string& text, const std::string& what);
-
 // Indices of the frames kept from `count` available ones: every `every`-th (starting with the
 // first), at most `max_frames` of them (0 = no limit).
 std::vector<std::size_t> SelectFrames(std::size_t count, int every, int max_frames);

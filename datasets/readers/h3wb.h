@@ -23,20 +23,68 @@
 // "h3wb_<subject>_sample_<first sample id of the frame, 6 digits>" in sequence "h3wb/<subject>/json".
 #pragma once
 
+#include <string>
 #include <vector>
 
-#include "datasets/dataset_request.h"
+#include "datasets/dataset_params.h"
+#include "datasets/readers/human36m.h"
 #include "datasets/detections.h"
 #include "datasets/sequence.h"
 
 namespace rpt {
 
-DatasetInfo H3wbInfo();
-std::vector<Sequence> ReadH3wb(const DatasetRequest& request);
+enum class H3wbFormat { kAuto, kJson, kNpz };
+template <>
+struct EnumNames<H3wbFormat> {
+  static constexpr std::array<std::pair<H3wbFormat, std::string_view>, 3> values = {
+      {{H3wbFormat::kAuto, "auto"}, {H3wbFormat::kJson, "json"}, {H3wbFormat::kNpz, "npz"}}};
+};
+enum class H3wbGlobalUnits { kMm, kM };
+template <>
+struct EnumNames<H3wbGlobalUnits> {
+  static constexpr std::array<std::pair<H3wbGlobalUnits, std::string_view>, 2> values = {
+      {{H3wbGlobalUnits::kMm, "mm"}, {H3wbGlobalUnits::kM, "m"}}};
+};
+enum class H3wbDetections { kNone, kAnnotations };
+template <>
+struct EnumNames<H3wbDetections> {
+  static constexpr std::array<std::pair<H3wbDetections, std::string_view>, 2> values = {
+      {{H3wbDetections::kNone, "none"}, {H3wbDetections::kAnnotations, "annotations"}}};
+};
 
-// The 2D keypoints stored with the annotations (npz pose_2d, json keypoints_2d) of the frames
-// ReadH3wb selects, one person per view with score 1, joints CocoWholeBodyJoints(). Same params.
-// (ReadH3wb with param detections=annotations attaches the same views directly.)
-Detections ReadH3wbDetections(const DatasetRequest& request);
+struct H3wbParams {
+  std::string file = "auto";
+  H3wbFormat format = H3wbFormat::kAuto;
+  ParamList subjects = {"S8"};
+  ParamList actions;  // empty = all
+  std::string cameras_file = "auto";
+  H36mLens distortion = H36mLens::kH36m;
+  H3wbGlobalUnits global_units = H3wbGlobalUnits::kMm;
+  int every = 1;
+  int max_frames = 0;
+  H3wbDetections detections = H3wbDetections::kNone;
+};
+
+template <class Visitor, OptionsOf<H3wbParams> Self>
+void VisitFields(Visitor& v, Self& o) {
+  v("file", o.file, OptionSpec{.help = "annotation file (relative to root); auto = see layout"});
+  v("format", o.format, OptionSpec{.help = "annotation format; auto = by extension"});
+  v("subjects", o.subjects, OptionSpec{.help = "subjects"});
+  v("actions", o.actions, OptionSpec{.help = "actions (npz keys / image folders); empty = all"});
+  v("cameras_file", o.cameras_file,
+    OptionSpec{.help = "json only: metadata.xml or cameras.pkl (auto = next to root or the file)"});
+  v("distortion", o.distortion, OptionSpec{.help = "lens model for the stored coefficients"});
+  v("global_units", o.global_units, OptionSpec{.help = "npz only: units of global_3d (checked against camera_3d)"});
+  v("every", o.every, OptionSpec{.help = "keep every n-th frame of each sequence", .min = 1});
+  v("max_frames", o.max_frames, OptionSpec{.help = "at most this many frames per sequence (0 = all)", .min = 0});
+  v("detections", o.detections,
+    OptionSpec{.help = "annotations = the stored 2D (npz pose_2d, json keypoints_2d; score 1)"});
+}
+
+DatasetInfo H3wbInfo();
+// One walk over the annotations: the GT and, with param detections=annotations, the stored 2D
+// keypoints (npz pose_2d, json keypoints_2d) as one person per view with score 1
+// (CocoWholeBodyJoints(); a view without stored 2D has no person).
+std::vector<Sequence> ReadH3wb(const DatasetRequest& request);
 
 }  // namespace rpt

@@ -12,6 +12,7 @@
 #include <unordered_set>
 
 #include "core/errors.h"
+#include "datasets/io/hdf5_file.h"
 #include "datasets/input_warnings.h"
 #include "datasets/readers/generic_common.h"
 #include "datasets/readers/generic_detections.h"
@@ -23,363 +24,35 @@ constexpr int kVersion = 1;
 constexpr const char* kDetectionsFormat = "rpt-detections";
 constexpr const char* kSequencesFormat = "rpt-sequences";
 
-// Turns HDF5's automatic error printing off for the lifetime of the guard (errors become our
-// exceptions), restoring the previous handler afterwards.
-class QuietHdf5 {
- public:
-  QuietHdf5() {
-    H5Eget_auto2(H5E_DEFAULT, &func_, &data_);
-    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+using io::Hdf5Id;
+using io::Hdf5Quiet;
+using io::Hdf5Reader;
+using io::Hdf5Writer;
+using io::ShapeText;
+
+void CheckFormat(const io::Hdf5Reader& reader, hid_t group, const std::string& place, const std::string& format) {
+  const std::string found = reader.HasAttribute(group, "format") ? reader.StringAttribute(group, place, "format") : "";
+  if (found != format) {
+    reader.Fail(place, "attribute format is '" + found + "', expected '" + format + "' (not written by rpt?)");
   }
-  ~QuietHdf5() { H5Eset_auto2(H5E_DEFAULT, func_, data_); }
-  QuietHdf5(const QuietHdf5&) = delete;
-  QuietHdf5& operator=(const QuietHdf5&) = delete;
-
- private:
-  H5E_auto2_t func_ = nullptr;
-  void* data_ = nullptr;
-};
-
-// Owns one HDF5 identifier.
-class Id {
- public:
-  Id() = default;
-  Id(hid_t id, herr_t (*close)(hid_t)) : id_(id), close_(close) {}
-  ~Id() { Reset(); }
-  Id(Id&& other) noexcept : id_(other.id_), close_(other.close_) { other.id_ = H5I_INVALID_HID; }
-  Id& operator=(Id&& other) noexcept {
-    if (this != &other) {
-      Reset();
-      id_ = other.id_;
-      close_ = other.close_;
-      other.id_ = H5I_INVALID_HID;
-    }
-    return *this;
+  const double version = reader.NumberAttribute(group, place, "version");
+  if (version != kVersion) {
+    reader.Fail(place, "format version " + std::to_string(version) + " is not supported (this build reads version " +
+                    std::to_string(kVersion) + ")");
   }
-  Id(const Id&) = delete;
-  Id& operator=(const Id&) = delete;
-
-  hid_t get() const { return id_; }
-  bool valid() const { return id_ >= 0; }
-
- private:
-  void Reset() {
-    if (id_ >= 0 && close_) close_(id_);
-    id_ = H5I_INVALID_HID;
-  }
-  hid_t id_ = H5I_INVALID_HID;
-  herr_t (*close_)(hid_t) = nullptr;
-};
-
-std::string ShapeText(const std::vector<hsize_t>& dims) {
-  std::string out = "[";
-  for (size_t i = 0; i < dims.size(); ++i) out += (i ? ", " : "") + std::to_string(dims[i]);
-  return out + "]";
 }
 
-// ---------------------------------------------------------------------------------------------
-// Writing
-
-class Writer {
- public:
-  Writer(const std::filesystem::path& path, bool add_to_existing) : source_(path.string()) {
-    if (add_to_existing) {
-      if (H5Fis_hdf5(path.c_str()) <= 0) Fail("", "cannot add to it: not an existing HDF5 file");
-      file_ = Id(H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), H5Fclose);
-    } else {
-      file_ = Id(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
-    }
-    if (!file_.valid()) Fail("", "cannot open for writing");
+// Offsets: offsets[0] = 0, non-decreasing, offsets.back() = total.
+void CheckOffsets(const io::Hdf5Reader& reader, const std::vector<std::int64_t>& offsets, const std::string& name, const std::string& total_what,
+                  std::int64_t total) {
+  if (offsets.empty() || offsets.front() != 0) reader.Fail(name, "must start with 0");
+  for (size_t i = 1; i < offsets.size(); ++i) {
+    if (offsets[i] < offsets[i - 1]) reader.Fail(name, "decreases at element " + std::to_string(i));
   }
-
-  [[noreturn]] void Fail(const std::string& place, const std::string& what) const {
-    throw InputError(source_ + ": " + (place.empty() ? std::string() : place + ": ") + what);
+  if (offsets.back() != total) {
+    reader.Fail(name, "ends at " + std::to_string(offsets.back()) + " but " + total_what + " has " + std::to_string(total));
   }
-
-  hid_t file() const { return file_.get(); }
-
-  // Creates `name` (absolute path), replacing an existing object of that name.
-  Id Group(const std::string& name) {
-    if (H5Lexists(file_.get(), name.c_str(), H5P_DEFAULT) > 0) {
-      if (H5Ldelete(file_.get(), name.c_str(), H5P_DEFAULT) < 0) Fail(name, "cannot replace");
-    }
-    Id group(H5Gcreate2(file_.get(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
-    if (!group.valid()) Fail(name, "cannot create group");
-    return group;
-  }
-
-  template <typename T>
-  void Numbers(hid_t parent, const std::string& parent_name, const std::string& name, hid_t file_type,
-               hid_t memory_type, const std::vector<hsize_t>& dims, const T* data) {
-    const std::string place = parent_name + "/" + name;
-    Id space(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr), H5Sclose);
-    if (!space.valid()) Fail(place, "cannot create dataspace " + ShapeText(dims));
-    Id dataset(H5Dcreate2(parent, name.c_str(), file_type, space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-               H5Dclose);
-    if (!dataset.valid()) Fail(place, "cannot create dataset");
-    const hsize_t count = std::accumulate(dims.begin(), dims.end(), hsize_t{1}, std::multiplies<>());
-    if (count > 0 && H5Dwrite(dataset.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0) {
-      Fail(place, "write failed");
-    }
-  }
-
-  void Doubles(hid_t parent, const std::string& parent_name, const std::string& name, const std::vector<hsize_t>& dims,
-               const std::vector<double>& data) {
-    Numbers(parent, parent_name, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, dims, data.data());
-  }
-  void Int64s(hid_t parent, const std::string& parent_name, const std::string& name, const std::vector<std::int64_t>& data) {
-    Numbers(parent, parent_name, name, H5T_STD_I64LE, H5T_NATIVE_INT64, {data.size()}, data.data());
-  }
-  void Int32s(hid_t parent, const std::string& parent_name, const std::string& name, const std::vector<hsize_t>& dims,
-              const std::vector<std::int32_t>& data) {
-    Numbers(parent, parent_name, name, H5T_STD_I32LE, H5T_NATIVE_INT32, dims, data.data());
-  }
-
-  // Fixed-length, NUL-padded strings.
-  void Strings(hid_t parent, const std::string& parent_name, const std::string& name,
-               const std::vector<std::string>& values) {
-    size_t width = 1;
-    for (const std::string& v : values) width = std::max(width, v.size());
-    std::vector<char> buffer(values.size() * width, '\0');
-    for (size_t i = 0; i < values.size(); ++i) std::memcpy(buffer.data() + i * width, values[i].data(), values[i].size());
-    Id type(H5Tcopy(H5T_C_S1), H5Tclose);
-    H5Tset_size(type.get(), width);
-    H5Tset_strpad(type.get(), H5T_STR_NULLPAD);
-    H5Tset_cset(type.get(), H5T_CSET_UTF8);
-    Numbers(parent, parent_name, name, type.get(), type.get(), {values.size()}, buffer.data());
-  }
-
-  void StringAttribute(hid_t object, const std::string& place, const std::string& name, const std::string& value) {
-    Id type(H5Tcopy(H5T_C_S1), H5Tclose);
-    H5Tset_size(type.get(), std::max<size_t>(1, value.size()));
-    H5Tset_strpad(type.get(), H5T_STR_NULLPAD);
-    H5Tset_cset(type.get(), H5T_CSET_UTF8);
-    Id space(H5Screate(H5S_SCALAR), H5Sclose);
-    Id attribute(H5Acreate2(object, name.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
-    std::string padded = value;
-    padded.resize(std::max<size_t>(1, value.size()), '\0');
-    if (!attribute.valid() || H5Awrite(attribute.get(), type.get(), padded.data()) < 0) {
-      Fail(place, "cannot write attribute " + name);
-    }
-  }
-
-  template <typename T>
-  void NumberAttribute(hid_t object, const std::string& place, const std::string& name, hid_t file_type,
-                       hid_t memory_type, T value) {
-    Id space(H5Screate(H5S_SCALAR), H5Sclose);
-    Id attribute(H5Acreate2(object, name.c_str(), file_type, space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
-    if (!attribute.valid() || H5Awrite(attribute.get(), memory_type, &value) < 0) Fail(place, "cannot write attribute " + name);
-  }
-
-  void Close() {
-    if (H5Fflush(file_.get(), H5F_SCOPE_GLOBAL) < 0) Fail("", "flush failed");
-    file_ = Id();
-  }
-
- private:
-  std::string source_;
-  Id file_;
-};
-
-// ---------------------------------------------------------------------------------------------
-// Reading
-
-class Reader {
- public:
-  explicit Reader(const std::filesystem::path& path) : source_(path.string()) {
-    std::error_code ec;
-    if (!std::filesystem::exists(path, ec)) throw InputError(source_ + ": file not found");
-    if (std::filesystem::is_directory(path, ec)) throw InputError(source_ + ": is a folder, expected an HDF5 file");
-    const htri_t is_hdf5 = H5Fis_hdf5(path.c_str());
-    if (is_hdf5 <= 0) {
-      throw InputError(source_ + ": byte 0: not an HDF5 file (no HDF5 signature at offset 0, 512, 1024, ...)");
-    }
-    file_ = Id(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
-    if (!file_.valid()) throw InputError(source_ + ": cannot open the HDF5 file (damaged or truncated?)");
-  }
-
-  [[noreturn]] void Fail(const std::string& place, const std::string& what) const {
-    throw InputError(source_ + ": " + place + ": " + what);
-  }
-
-  bool Exists(const std::string& name) const {
-    // Check each prefix: H5Lexists fails on a missing intermediate group.
-    size_t pos = 0;
-    while ((pos = name.find('/', pos + 1)) != std::string::npos) {
-      if (H5Lexists(file_.get(), name.substr(0, pos).c_str(), H5P_DEFAULT) <= 0) return false;
-    }
-    return H5Lexists(file_.get(), name.c_str(), H5P_DEFAULT) > 0;
-  }
-
-  Id OpenGroup(const std::string& name, const std::string& what) const {
-    if (!Exists(name)) Fail(name, "missing (" + what + ")");
-    Id group(H5Gopen2(file_.get(), name.c_str(), H5P_DEFAULT), H5Gclose);
-    if (!group.valid()) Fail(name, "not a group");
-    return group;
-  }
-
-  Id OpenDataset(const std::string& name) const {
-    if (!Exists(name)) Fail(name, "missing");
-    Id dataset(H5Dopen2(file_.get(), name.c_str(), H5P_DEFAULT), H5Dclose);
-    if (!dataset.valid()) Fail(name, "not a dataset");
-    return dataset;
-  }
-
-  std::vector<hsize_t> Dims(hid_t dataset, const std::string& name) const {
-    Id space(H5Dget_space(dataset), H5Sclose);
-    const int rank = H5Sget_simple_extent_ndims(space.get());
-    if (rank < 0) Fail(name, "cannot read the shape");
-    std::vector<hsize_t> dims(static_cast<size_t>(rank));
-    if (rank > 0) H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr);
-    return dims;
-  }
-
-  // Checks the shape; `expected` entries < 0 accept any size. Returns the dims.
-  std::vector<hsize_t> CheckShape(hid_t dataset, const std::string& name, const std::vector<long long>& expected,
-                                  const std::string& meaning) const {
-    const std::vector<hsize_t> dims = Dims(dataset, name);
-    bool ok = dims.size() == expected.size();
-    for (size_t i = 0; ok && i < dims.size(); ++i) ok = expected[i] < 0 || dims[i] == static_cast<hsize_t>(expected[i]);
-    if (!ok) {
-      std::string want = "[";
-      for (size_t i = 0; i < expected.size(); ++i) want += (i ? ", " : "") + (expected[i] < 0 ? std::string("*") : std::to_string(expected[i]));
-      Fail(name, "shape " + ShapeText(dims) + ", expected " + want + "]" + (meaning.empty() ? "" : " (" + meaning + ")"));
-    }
-    return dims;
-  }
-
-  H5T_class_t TypeClass(hid_t dataset) const {
-    Id type(H5Dget_type(dataset), H5Tclose);
-    return H5Tget_class(type.get());
-  }
-
-  template <typename T>
-  std::vector<T> Numbers(const std::string& name, hid_t memory_type, const std::vector<long long>& expected,
-                         const std::string& meaning = "") const {
-    Id dataset = OpenDataset(name);
-    const H5T_class_t type_class = TypeClass(dataset.get());
-    if (type_class != H5T_FLOAT && type_class != H5T_INTEGER) Fail(name, "expected numbers");
-    const std::vector<hsize_t> dims = CheckShape(dataset.get(), name, expected, meaning);
-    const hsize_t count = std::accumulate(dims.begin(), dims.end(), hsize_t{1}, std::multiplies<>());
-    std::vector<T> values(count);
-    if (count > 0 && H5Dread(dataset.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0) {
-      Fail(name, "read failed (damaged file?)");
-    }
-    return values;
-  }
-
-  std::vector<double> Doubles(const std::string& name, const std::vector<long long>& expected, const std::string& meaning = "") const {
-    std::vector<double> values = Numbers<double>(name, H5T_NATIVE_DOUBLE, expected, meaning);
-    for (size_t i = 0; i < values.size(); ++i) {
-      if (!std::isfinite(values[i])) Fail(name, "element " + std::to_string(i) + " is NaN or infinite");
-    }
-    return values;
-  }
-
-  std::vector<std::int64_t> Int64s(const std::string& name, const std::vector<long long>& expected, const std::string& meaning = "") const {
-    return Numbers<std::int64_t>(name, H5T_NATIVE_INT64, expected, meaning);
-  }
-
-  std::vector<std::string> Strings(const std::string& name, long long expected_count = -1) const {
-    Id dataset = OpenDataset(name);
-    if (TypeClass(dataset.get()) != H5T_STRING) Fail(name, "expected strings");
-    const std::vector<hsize_t> dims = CheckShape(dataset.get(), name, {expected_count}, "");
-    const size_t count = dims[0];
-    std::vector<std::string> out(count);
-    if (count == 0) return out;
-    Id file_type(H5Dget_type(dataset.get()), H5Tclose);
-    if (H5Tis_variable_str(file_type.get()) > 0) {
-      Id memory_type(H5Tcopy(H5T_C_S1), H5Tclose);
-      H5Tset_size(memory_type.get(), H5T_VARIABLE);
-      H5Tset_cset(memory_type.get(), H5Tget_cset(file_type.get()));
-      std::vector<char*> pointers(count, nullptr);
-      if (H5Dread(dataset.get(), memory_type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, pointers.data()) < 0) {
-        Fail(name, "read failed");
-      }
-      for (size_t i = 0; i < count; ++i) out[i] = pointers[i] ? pointers[i] : "";
-      Id space(H5Dget_space(dataset.get()), H5Sclose);
-      H5Dvlen_reclaim(memory_type.get(), space.get(), H5P_DEFAULT, pointers.data());
-      return out;
-    }
-    const size_t width = H5Tget_size(file_type.get());
-    if (width == 0) Fail(name, "bad string size");
-    Id memory_type(H5Tcopy(file_type.get()), H5Tclose);
-    std::vector<char> buffer(count * width);
-    if (H5Dread(dataset.get(), memory_type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, buffer.data()) < 0) Fail(name, "read failed");
-    for (size_t i = 0; i < count; ++i) {
-      const char* begin = buffer.data() + i * width;
-      out[i].assign(begin, strnlen(begin, width));
-      // Space-padded strings (Fortran / MATLAB style).
-      if (H5Tget_strpad(file_type.get()) == H5T_STR_SPACEPAD) out[i].erase(out[i].find_last_not_of(' ') + 1);
-    }
-    return out;
-  }
-
-  // An attribute as text (string attribute) or number (numeric attribute, formatted).
-  bool HasAttribute(hid_t object, const std::string& name) const { return H5Aexists(object, name.c_str()) > 0; }
-
-  std::string StringAttribute(hid_t object, const std::string& place, const std::string& name) const {
-    if (!HasAttribute(object, name)) Fail(place, "attribute '" + name + "' missing");
-    Id attribute(H5Aopen(object, name.c_str(), H5P_DEFAULT), H5Aclose);
-    Id type(H5Aget_type(attribute.get()), H5Tclose);
-    if (H5Tget_class(type.get()) != H5T_STRING) Fail(place, "attribute '" + name + "' is not a string");
-    if (H5Tis_variable_str(type.get()) > 0) {
-      Id memory_type(H5Tcopy(H5T_C_S1), H5Tclose);
-      H5Tset_size(memory_type.get(), H5T_VARIABLE);
-      char* text = nullptr;
-      if (H5Aread(attribute.get(), memory_type.get(), &text) < 0) Fail(place, "cannot read attribute '" + name + "'");
-      std::string out = text ? text : "";
-      H5free_memory(text);
-      return out;
-    }
-    const size_t width = H5Tget_size(type.get());
-    std::vector<char> buffer(width + 1, '\0');
-    if (H5Aread(attribute.get(), type.get(), buffer.data()) < 0) Fail(place, "cannot read attribute '" + name + "'");
-    return std::string(buffer.data(), strnlen(buffer.data(), width));
-  }
-
-  double NumberAttribute(hid_t object, const std::string& place, const std::string& name) const {
-    if (!HasAttribute(object, name)) Fail(place, "attribute '" + name + "' missing");
-    Id attribute(H5Aopen(object, name.c_str(), H5P_DEFAULT), H5Aclose);
-    Id type(H5Aget_type(attribute.get()), H5Tclose);
-    const H5T_class_t type_class = H5Tget_class(type.get());
-    if (type_class != H5T_INTEGER && type_class != H5T_FLOAT) Fail(place, "attribute '" + name + "' is not a number");
-    double value = 0;
-    if (H5Aread(attribute.get(), H5T_NATIVE_DOUBLE, &value) < 0) Fail(place, "cannot read attribute '" + name + "'");
-    return value;
-  }
-
-  void CheckFormat(hid_t group, const std::string& place, const std::string& format) const {
-    const std::string found = HasAttribute(group, "format") ? StringAttribute(group, place, "format") : "";
-    if (found != format) {
-      Fail(place, "attribute format is '" + found + "', expected '" + format + "' (not written by rpt?)");
-    }
-    const double version = NumberAttribute(group, place, "version");
-    if (version != kVersion) {
-      Fail(place, "format version " + std::to_string(version) + " is not supported (this build reads version " +
-                      std::to_string(kVersion) + ")");
-    }
-  }
-
-  // Offsets: offsets[0] = 0, non-decreasing, offsets.back() = total.
-  void CheckOffsets(const std::vector<std::int64_t>& offsets, const std::string& name, const std::string& total_what,
-                    std::int64_t total) const {
-    if (offsets.empty() || offsets.front() != 0) Fail(name, "must start with 0");
-    for (size_t i = 1; i < offsets.size(); ++i) {
-      if (offsets[i] < offsets[i - 1]) Fail(name, "decreases at element " + std::to_string(i));
-    }
-    if (offsets.back() != total) {
-      Fail(name, "ends at " + std::to_string(offsets.back()) + " but " + total_what + " has " + std::to_string(total));
-    }
-  }
-
-  hid_t file() const { return file_.get(); }
-  const std::string& source() const { return source_; }
-
- private:
-  std::string source_;
-  Id file_;
-};
+}
 
 std::vector<long long> Shape(std::initializer_list<long long> dims) { return dims; }
 
@@ -389,7 +62,7 @@ std::vector<long long> Shape(std::initializer_list<long long> dims) { return dim
 // Detections
 
 void WriteDetectionsHdf5(const std::filesystem::path& path, const Detections& detections, const Hdf5WriteOptions& options) {
-  const QuietHdf5 quiet;
+  const Hdf5Quiet quiet;
   ValidateDetections(detections, path.string() + ": cannot write");
   const size_t num_joints = detections.joints.size();
 
@@ -413,9 +86,9 @@ void WriteDetectionsHdf5(const std::filesystem::path& path, const Detections& de
   }
   const std::vector<hsize_t> keypoint_dims = {static_cast<hsize_t>(person_offsets.back()), num_joints, 3};
 
-  Writer writer(path, options.add_to_existing);
+  Hdf5Writer writer(path, options.add_to_existing);
   const std::string name = "/detections";
-  Id group = writer.Group(name);
+  Hdf5Id group = writer.Group(name);
   writer.StringAttribute(group.get(), name, "format", kDetectionsFormat);
   writer.NumberAttribute(group.get(), name, "version", H5T_STD_I32LE, H5T_NATIVE_INT, kVersion);
   writer.Strings(group.get(), name, "joints", detections.joints);
@@ -441,7 +114,7 @@ void WriteDetectionsHdf5(const std::filesystem::path& path, const Detections& de
     }
     writer.Numbers(group.get(), name, "keypoints", H5T_IEEE_F32LE, H5T_NATIVE_FLOAT, keypoint_dims, values.data());
   }
-  group = Id();
+  group = Hdf5Id();
   writer.Close();
 }
 
@@ -449,7 +122,7 @@ namespace {
 
 // Reads [P, J, 3] keypoints in their stored precision.
 template <typename T>
-void FillViews(const std::vector<T>& values, const Reader& reader, const std::string& name, Detections* detections,
+void FillViews(const std::vector<T>& values, const Hdf5Reader& reader, const std::string& name, Detections* detections,
                const std::vector<std::int64_t>& person_offsets) {
   const size_t num_joints = detections->joints.size();
   const size_t stride = 3 * num_joints;
@@ -483,15 +156,15 @@ void FillViews(const std::vector<T>& values, const Reader& reader, const std::st
 }  // namespace
 
 Detections ReadDetectionsHdf5(const std::filesystem::path& path) {
-  const QuietHdf5 quiet;
-  const Reader reader(path);
+  const Hdf5Quiet quiet;
+  const Hdf5Reader reader(path);
   const std::string name = "/detections";
   if (!reader.Exists(name)) {
     reader.Fail(name, std::string("missing: no detections in this file") +
                           (reader.Exists("/sequences") ? " (it holds labels only)" : " (not an rpt cache?)"));
   }
-  Id group = reader.OpenGroup(name, "detections");
-  reader.CheckFormat(group.get(), name, kDetectionsFormat);
+  Hdf5Id group = reader.OpenGroup(name, "detections");
+  CheckFormat(reader, group.get(), name, kDetectionsFormat);
 
   Detections detections;
   detections.joints = reader.Strings(name + "/joints");
@@ -505,17 +178,17 @@ Detections ReadDetectionsHdf5(const std::filesystem::path& path) {
   const std::vector<std::int64_t> view_offsets =
       reader.Int64s(name + "/view_offsets", Shape({num_frames + 1}), "frames + 1");
   const std::vector<std::int32_t> view_cameras = reader.Numbers<std::int32_t>(name + "/view_cameras", H5T_NATIVE_INT32, Shape({-1}));
-  reader.CheckOffsets(view_offsets, name + "/view_offsets", name + "/view_cameras", static_cast<std::int64_t>(view_cameras.size()));
+  CheckOffsets(reader, view_offsets, name + "/view_offsets", name + "/view_cameras", static_cast<std::int64_t>(view_cameras.size()));
   const long long num_views = static_cast<long long>(view_cameras.size());
   const std::vector<std::int64_t> person_offsets =
       reader.Int64s(name + "/person_offsets", Shape({num_views + 1}), "views + 1");
 
   const std::string keypoints_name = name + "/keypoints";
-  Id keypoints = reader.OpenDataset(keypoints_name);
+  Hdf5Id keypoints = reader.OpenDataset(keypoints_name);
   const std::vector<hsize_t> dims = reader.CheckShape(
       keypoints.get(), keypoints_name, Shape({-1, static_cast<long long>(detections.joints.size()), 3}),
       "persons x joints x [u, v, score]");
-  reader.CheckOffsets(person_offsets, name + "/person_offsets", keypoints_name, static_cast<std::int64_t>(dims[0]));
+  CheckOffsets(reader, person_offsets, name + "/person_offsets", keypoints_name, static_cast<std::int64_t>(dims[0]));
 
   std::unordered_set<std::string> seen_ids;
   detections.frames.resize(frame_ids.size());
@@ -538,7 +211,7 @@ Detections ReadDetectionsHdf5(const std::filesystem::path& path) {
     frame.views.resize(frame.cameras.size());
   }
 
-  Id type(H5Dget_type(keypoints.get()), H5Tclose);
+  Hdf5Id type(H5Dget_type(keypoints.get()), H5Tclose);
   if (H5Tget_class(type.get()) != H5T_FLOAT) reader.Fail(keypoints_name, "expected floating-point values");
   const size_t count = dims[0] * dims[1] * dims[2];
   if (H5Tget_size(type.get()) <= 4) {
@@ -562,15 +235,15 @@ Detections ReadDetectionsHdf5(const std::filesystem::path& path) {
 
 void WriteSequencesHdf5(const std::filesystem::path& path, const std::vector<Sequence>& sequences,
                         const Hdf5WriteOptions& options) {
-  const QuietHdf5 quiet;
+  const Hdf5Quiet quiet;
   for (const Sequence& sequence : sequences) {
     Sequence without_views = sequence;  // views are not stored; validate cameras and GT only
     for (SequenceFrame& frame : without_views.frames) frame.views.clear();
     ValidateSequence(without_views, path.string() + ": cannot write sequence '" + sequence.name + "'");
     CheckJointNames(sequence.gt_joints, path.string() + ": cannot write sequence '" + sequence.name + "'");
   }
-  Writer writer(path, options.add_to_existing);
-  Id root = writer.Group("/sequences");
+  Hdf5Writer writer(path, options.add_to_existing);
+  Hdf5Id root = writer.Group("/sequences");
   writer.StringAttribute(root.get(), "/sequences", "format", kSequencesFormat);
   writer.NumberAttribute(root.get(), "/sequences", "version", H5T_STD_I32LE, H5T_NATIVE_INT, kVersion);
   writer.NumberAttribute(root.get(), "/sequences", "count", H5T_STD_I64LE, H5T_NATIVE_INT64,
@@ -578,7 +251,7 @@ void WriteSequencesHdf5(const std::filesystem::path& path, const std::vector<Seq
   for (size_t s = 0; s < sequences.size(); ++s) {
     const Sequence& sequence = sequences[s];
     const std::string name = "/sequences/" + std::to_string(s);
-    Id group = writer.Group(name);
+    Hdf5Id group = writer.Group(name);
     const hid_t g = group.get();
     writer.StringAttribute(g, name, "name", sequence.name);
     writer.NumberAttribute(g, name, "fps", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, sequence.fps);
@@ -630,26 +303,26 @@ void WriteSequencesHdf5(const std::filesystem::path& path, const std::vector<Seq
     writer.Doubles(g, name, "gt_poses", {static_cast<hsize_t>(offsets.back()), sequence.gt_joints.size(), 4}, poses);
     writer.Int32s(g, name, "gt_track_ids", {track_ids.size()}, track_ids);
   }
-  root = Id();
+  root = Hdf5Id();
   writer.Close();
 }
 
 std::vector<Sequence> ReadSequencesHdf5(const std::filesystem::path& path) {
-  const QuietHdf5 quiet;
-  const Reader reader(path);
+  const Hdf5Quiet quiet;
+  const Hdf5Reader reader(path);
   if (!reader.Exists("/sequences")) {
     reader.Fail("/sequences", std::string("missing: no labels in this file") +
                                   (reader.Exists("/detections") ? " (it holds detections only)" : " (not an rpt cache?)"));
   }
-  Id root = reader.OpenGroup("/sequences", "labels");
-  reader.CheckFormat(root.get(), "/sequences", kSequencesFormat);
+  Hdf5Id root = reader.OpenGroup("/sequences", "labels");
+  CheckFormat(reader, root.get(), "/sequences", kSequencesFormat);
   const double count = reader.NumberAttribute(root.get(), "/sequences", "count");
   if (!(count >= 0) || count != std::floor(count) || count > 1e7) reader.Fail("/sequences", "bad attribute count");
 
   std::vector<Sequence> sequences;
   for (int s = 0; s < static_cast<int>(count); ++s) {
     const std::string name = "/sequences/" + std::to_string(s);
-    Id group = reader.OpenGroup(name, "sequence " + std::to_string(s) + " of " + std::to_string(static_cast<int>(count)));
+    Hdf5Id group = reader.OpenGroup(name, "sequence " + std::to_string(s) + " of " + std::to_string(static_cast<int>(count)));
     Sequence& sequence = sequences.emplace_back();
     sequence.name = reader.StringAttribute(group.get(), name, "name");
     sequence.fps = reader.NumberAttribute(group.get(), name, "fps");
@@ -707,7 +380,7 @@ std::vector<Sequence> ReadSequencesHdf5(const std::filesystem::path& path) {
     const auto offsets = reader.Int64s(name + "/gt_offsets", Shape({F + 1}), "frames + 1");
     const auto poses = reader.Doubles(name + "/gt_poses", Shape({-1, J, 4}), "persons x joints x [x, y, z, score]");
     const long long P = static_cast<long long>(J > 0 ? poses.size() / (4 * J) : 0);
-    reader.CheckOffsets(offsets, name + "/gt_offsets", name + "/gt_poses", P);
+    CheckOffsets(reader, offsets, name + "/gt_offsets", name + "/gt_poses", P);
     const auto track_ids = reader.Numbers<std::int32_t>(name + "/gt_track_ids", H5T_NATIVE_INT32, Shape({P}));
     for (long long f = 0; f < F; ++f) {
       SequenceFrame& frame = sequence.frames.emplace_back();
@@ -723,8 +396,8 @@ std::vector<Sequence> ReadSequencesHdf5(const std::filesystem::path& path) {
 }
 
 Hdf5CacheContents ProbeHdf5Cache(const std::filesystem::path& path) {
-  const QuietHdf5 quiet;
-  const Reader reader(path);
+  const Hdf5Quiet quiet;
+  const Hdf5Reader reader(path);
   Hdf5CacheContents contents;
   contents.detections = reader.Exists("/detections");
   contents.sequences = reader.Exists("/sequences");

@@ -4,8 +4,6 @@
 // mmpose cameras.pkl or the labels npy.
 #include "datasets/readers/human36m.h"
 
-#include <hdf5.h>
-
 #include <Eigen/Core>
 #include <algorithm>
 #include <array>
@@ -16,6 +14,7 @@
 #include <utility>
 
 #include "core/errors.h"
+#include "datasets/io/hdf5_file.h"
 #include "datasets/io/npy.h"
 #include "datasets/readers/h36m_ego_common.h"
 #include "datasets/readers/human36m_internal.h"
@@ -91,33 +90,29 @@ std::string ListPaths(const std::vector<std::filesystem::path>& paths) {
 }
 
 Options ParseOptions(const DatasetRequest& request) {
-  const DatasetInfo info = Human36mInfo();
-  request.CheckParams(info);
+  const Human36mParams params = ParseDatasetParams<Human36mParams>("human36m", request);
   Options o;
   o.root = request.root;
-  o.subjects = SplitList(request.Param(info, "subjects"));
-  if (o.subjects.empty()) throw ConfigError("human36m: subjects: no subject given");
-  o.actions = SplitList(request.Param(info, "actions"));
-  o.exclude = SplitList(request.Param(info, "exclude"));
-  o.model = h36m_ego::ParseH36mDistortion(request.Param(info, "distortion"), "human36m: distortion");
-  const std::string nose = request.Param(info, "nose_proxy");
-  if (nose != "head" && nose != "neck_nose") throw ConfigError("human36m: nose_proxy: '" + nose + "' is not one of head, neck_nose");
-  o.nose_from_head = nose == "head";
-  o.every = h36m_ego::ParseIntParam(request.Param(info, "every"), "human36m: every", 1);
-  o.max_frames = h36m_ego::ParseIntParam(request.Param(info, "max_frames"), "human36m: max_frames", 0);
+  o.subjects = params.subjects;
+  if (o.subjects.empty()) throw ConfigError("human36m: param subjects: no subject given");
+  o.actions = params.actions;
+  o.exclude = params.exclude;
+  o.model = ToDistortionModel(params.distortion);
+  o.nose_from_head = params.nose_proxy == H36mNoseProxy::kHead;
+  o.every = params.every;
+  o.max_frames = params.max_frames;
 
-  const std::string labels_file = request.Param(info, "labels_file");
+  const std::string& labels_file = params.labels_file;
   const std::vector<std::filesystem::path> label_candidates =
       labels_file == "auto" ? std::vector<std::filesystem::path>{o.root / "extra" / kLabelsFileName, o.root / kLabelsFileName}
                             : std::vector<std::filesystem::path>{h36m_ego::ResolveUnder(o.root, labels_file)};
   const std::optional<std::filesystem::path> found_labels = FirstExisting(label_candidates);
 
-  const std::string labels = request.Param(info, "labels");
-  if (labels == "annot") {
+  if (params.labels == H36mLabels::kAnnot) {
     o.use_npy = false;
-  } else if (labels == "npy") {
+  } else if (params.labels == H36mLabels::kNpy) {
     o.use_npy = true;
-  } else if (labels == "auto") {
+  } else {
     // annot.h5 files of a requested subject win; otherwise the labels npy (its image folders may
     // also live under processed/); otherwise processed/ alone still means annot.h5 (errors name it).
     bool has_annot = false;
@@ -138,15 +133,13 @@ Options ParseOptions(const DatasetRequest& request) {
       throw InputError(PathName(o.root) + ": no Human3.6M labels found (looked for the directory " +
                        (o.root / "processed").string() + " and " + ListPaths(label_candidates) + ")");
     }
-  } else {
-    throw ConfigError("human36m: labels: '" + labels + "' is not one of auto, annot, npy");
   }
   if (o.use_npy) {
     if (!found_labels) throw InputError(ListPaths(label_candidates) + ": labels file not found");
     o.labels_file = *found_labels;
   }
 
-  const std::string cameras_file = request.Param(info, "cameras_file");
+  const std::string& cameras_file = params.cameras_file;
   if (cameras_file == "labels") {
     if (!o.use_npy) throw ConfigError("human36m: cameras_file=labels needs labels=npy");
   } else if (cameras_file == "auto") {
@@ -196,114 +189,31 @@ std::vector<Camera> SubjectCameras(const Options& options, const io::PyView* lab
 // ---------------------------------------------------------------------------------------
 // HDF5 (h36m-fetch annot.h5)
 
-class H5ErrorSilencer {
- public:
-  H5ErrorSilencer() {
-    H5Eget_auto2(H5E_DEFAULT, &func_, &data_);
-    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  }
-  ~H5ErrorSilencer() { H5Eset_auto2(H5E_DEFAULT, func_, data_); }
-  H5ErrorSilencer(const H5ErrorSilencer&) = delete;
-  H5ErrorSilencer& operator=(const H5ErrorSilencer&) = delete;
-
- private:
-  H5E_auto2_t func_ = nullptr;
-  void* data_ = nullptr;
-};
-
-class H5Id {
- public:
-  H5Id(hid_t id, herr_t (*close)(hid_t)) : id_(id), close_(close) {}
-  ~H5Id() {
-    if (id_ >= 0) close_(id_);
-  }
-  H5Id(const H5Id&) = delete;
-  H5Id& operator=(const H5Id&) = delete;
-  hid_t get() const { return id_; }
-  bool ok() const { return id_ >= 0; }
-
- private:
-  hid_t id_;
-  herr_t (*close_)(hid_t);
-};
-
-struct H5Array {
-  std::vector<double> values;  // row-major
-  std::vector<hsize_t> dims;
-};
-
-std::string DimsText(const std::vector<hsize_t>& dims) {
-  std::string out = "(";
-  for (std::size_t i = 0; i < dims.size(); ++i) out += (i ? ", " : "") + std::to_string(dims[i]);
-  return out + (dims.size() == 1 ? ",)" : ")");
-}
-
-// Reads a numeric dataset as doubles; `rank` is the expected number of dimensions.
-H5Array ReadH5Numeric(hid_t file, const std::string& name, int rank, const std::string& source) {
-  const std::string where = source + ": dataset '" + name + "'";
-  // H5Lexists needs every intermediate group to exist.
-  std::size_t pos = 0;
-  while (true) {
-    const std::size_t slash = name.find('/', pos);
-    const std::string prefix = name.substr(0, slash);
-    if (H5Lexists(file, prefix.c_str(), H5P_DEFAULT) <= 0) throw InputError(where + ": missing");
-    if (slash == std::string::npos) break;
-    pos = slash + 1;
-  }
-  const H5Id dataset(H5Dopen2(file, name.c_str(), H5P_DEFAULT), H5Dclose);
-  if (!dataset.ok()) throw InputError(where + ": cannot open (not a dataset?)");
-  const H5Id type(H5Dget_type(dataset.get()), H5Tclose);
-  const H5T_class_t type_class = type.ok() ? H5Tget_class(type.get()) : H5T_NO_CLASS;
-  if (type_class != H5T_INTEGER && type_class != H5T_FLOAT) throw InputError(where + ": expected a numeric dataset");
-  const H5Id space(H5Dget_space(dataset.get()), H5Sclose);
-  const int ndims = space.ok() ? H5Sget_simple_extent_ndims(space.get()) : -1;
-  if (ndims < 0) throw InputError(where + ": unreadable dataspace");
-  H5Array out;
-  out.dims.resize(static_cast<std::size_t>(ndims));
-  if (ndims > 0) H5Sget_simple_extent_dims(space.get(), out.dims.data(), nullptr);
-  if (ndims != rank) throw InputError(where + ": expected " + std::to_string(rank) + " dimensions, got shape " + DimsText(out.dims));
-  std::size_t count = 1;
-  for (hsize_t d : out.dims) {
-    if (d > 0 && count > (std::size_t{1} << 31) / d) throw InputError(where + ": dataset too large " + DimsText(out.dims));
-    count *= static_cast<std::size_t>(d);
-  }
-  out.values.resize(count);
-  if (count > 0 && H5Dread(dataset.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.values.data()) < 0) {
-    throw InputError(where + ": read failed (corrupt file?)");
-  }
-  return out;
-}
-
 struct AnnotRows {
   std::map<long long, std::vector<std::pair<int, std::size_t>>> by_frame;  // frame -> (camera index, row)
-  H5Array pose;
+  std::vector<double> pose;  // rows x 32 x 3, camera-frame mm
 };
 
 AnnotRows ReadAnnot(const std::filesystem::path& path) {
   const std::string source = PathName(path);
-  if (!std::filesystem::is_regular_file(path)) throw InputError(source + ": file not found");
-  const H5ErrorSilencer silence;
-  if (H5Fis_hdf5(path.c_str()) <= 0) throw InputError(source + ": not an HDF5 file");
-  const H5Id file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
-  if (!file.ok()) throw InputError(source + ": cannot open HDF5 file");
+  const io::Hdf5Quiet quiet;
+  const io::Hdf5Reader file(path);
   AnnotRows rows;
-  rows.pose = ReadH5Numeric(file.get(), "pose/3d", 3, source);
-  const H5Array camera = ReadH5Numeric(file.get(), "camera", 1, source);
-  const H5Array frame = ReadH5Numeric(file.get(), "frame", 1, source);
-  const hsize_t n = rows.pose.dims[0];
-  if (rows.pose.dims[1] != 32 || rows.pose.dims[2] != 3) {
-    throw InputError(source + ": dataset 'pose/3d': expected shape (N, 32, 3), got " + DimsText(rows.pose.dims));
-  }
-  if (camera.dims[0] != n || frame.dims[0] != n) {
-    throw InputError(source + ": datasets 'camera' " + DimsText(camera.dims) + " and 'frame' " + DimsText(frame.dims) +
-                     " must have one entry per row of 'pose/3d' " + DimsText(rows.pose.dims));
+  rows.pose = file.Numbers<double>("pose/3d", H5T_NATIVE_DOUBLE, {-1, 32, 3}, "rows x 32 raw joints x 3");
+  const std::vector<double> camera = file.Numbers<double>("camera", H5T_NATIVE_DOUBLE, {-1}, "camera id per row");
+  const std::vector<double> frame = file.Numbers<double>("frame", H5T_NATIVE_DOUBLE, {-1}, "frame number per row");
+  const std::size_t n = rows.pose.size() / (32 * 3);
+  if (camera.size() != n || frame.size() != n) {
+    throw InputError(source + ": camera (" + std::to_string(camera.size()) + " rows) and frame (" +
+                     std::to_string(frame.size()) + " rows) must have one entry per row of pose/3d (" +
+                     std::to_string(n) + " rows)");
   }
   for (std::size_t r = 0; r < n; ++r) {
-    const double cam = camera.values[r];
+    const double cam = camera[r];
     const std::string cam_text = std::isfinite(cam) ? std::to_string(static_cast<long long>(cam)) : "nan";
     const int index = cam == std::floor(cam) ? h36m_ego::H36mCameraIndex(cam_text) : -1;
     if (index < 0) throw InputError(source + ": dataset 'camera' row " + std::to_string(r) + ": unknown camera id " + cam_text);
-    const double f = frame.values[r];
+    const double f = frame[r];
     if (!std::isfinite(f) || f < 1 || f != std::floor(f)) {
       throw InputError(source + ": dataset 'frame' row " + std::to_string(r) + ": expected a 1-based frame number");
     }
@@ -326,7 +236,7 @@ Eigen::Matrix<double, 3, 17> AnnotRowToWorld(const AnnotRows& rows, std::size_t 
                                              const std::string& source) {
   Eigen::Matrix<double, 3, 17> out;
   for (int j = 0; j < 17; ++j) {
-    const double* p = &rows.pose.values[(row * 32 + static_cast<std::size_t>(kRawIndices[static_cast<std::size_t>(j)])) * 3];
+    const double* p = &rows.pose[(row * 32 + static_cast<std::size_t>(kRawIndices[static_cast<std::size_t>(j)])) * 3];
     const Eigen::Vector3d x_cam_m(p[0] / 1000.0, p[1] / 1000.0, p[2] / 1000.0);
     if (!x_cam_m.allFinite()) {
       throw InputError(source + ": dataset 'pose/3d' row " + std::to_string(row) + " joint " +
@@ -482,6 +392,18 @@ const JointNames& Human36mJoints() {
   return names;
 }
 
+DistortionModel ToDistortionModel(H36mLens lens) {
+  switch (lens) {
+    case H36mLens::kOpenCV:
+      return DistortionModel::kOpenCV;
+    case H36mLens::kNone:
+      return DistortionModel::kNone;
+    case H36mLens::kH36m:
+      break;
+  }
+  return DistortionModel::kH36M;
+}
+
 DatasetInfo Human36mInfo() {
   DatasetInfo info;
   info.name = "human36m";
@@ -490,18 +412,7 @@ DatasetInfo Human36mInfo() {
       "<root>/metadata.xml or <root>/cameras.pkl (mmpose)   cameras (or param cameras_file)\n"
       "<root>/processed/<S>/<Action>-<sub>/annot.h5           h36m-fetch labels (labels=annot)\n"
       "<root>/extra/human36m-multiview-labels-GTbboxes.npy    learnable-triangulation labels (labels=npy)";
-  info.params = {
-      {"subjects", "S9,S11", "comma-separated subjects"},
-      {"actions", "", "comma-separated actions ('Directions' = all its sub-actions, 'Directions-1' = one); empty = all"},
-      {"exclude", "", "comma-separated <subject>/<action> to skip, e.g. S9/Greeting-2"},
-      {"labels", "auto", "auto | annot (processed/*/annot.h5) | npy (learnable-triangulation labels)"},
-      {"labels_file", "auto", "labels npy path (relative to root); auto = extra/ or root"},
-      {"cameras_file", "auto", "metadata.xml | cameras.pkl | labels npy path, or 'labels'; auto = metadata.xml, cameras.pkl, annotation_body3d/cameras.pkl, else the labels npy"},
-      {"distortion", "h36m", "lens model for the stored coefficients: h36m | opencv | none"},
-      {"nose_proxy", "head", "GT joint copied to 'nose': head (raw 15) | neck_nose (raw 14)"},
-      {"every", "1", "keep every n-th labelled frame of each sequence (annot.h5 already holds every 64th frame of S9/S11)"},
-      {"max_frames", "0", "at most this many frames per sequence (0 = all)"},
-  };
+  info.params = DescribeDatasetParams<Human36mParams>();
   return info;
 }
 

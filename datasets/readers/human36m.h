@@ -26,10 +26,67 @@
 
 #include "core/camera.h"
 #include "core/joints.h"
-#include "datasets/dataset_request.h"
+#include "datasets/dataset_params.h"
 #include "datasets/sequence.h"
 
 namespace rpt {
+
+// The lens model of the stored Human3.6M coefficients (Human3.6M and H3WB readers).
+enum class H36mLens { kH36m, kOpenCV, kNone };
+template <>
+struct EnumNames<H36mLens> {
+  static constexpr std::array<std::pair<H36mLens, std::string_view>, 3> values = {
+      {{H36mLens::kH36m, "h36m"}, {H36mLens::kOpenCV, "opencv"}, {H36mLens::kNone, "none"}}};
+};
+DistortionModel ToDistortionModel(H36mLens lens);
+
+enum class H36mLabels { kAuto, kAnnot, kNpy };
+template <>
+struct EnumNames<H36mLabels> {
+  static constexpr std::array<std::pair<H36mLabels, std::string_view>, 3> values = {
+      {{H36mLabels::kAuto, "auto"}, {H36mLabels::kAnnot, "annot"}, {H36mLabels::kNpy, "npy"}}};
+};
+
+enum class H36mNoseProxy { kHead, kNeckNose };
+template <>
+struct EnumNames<H36mNoseProxy> {
+  static constexpr std::array<std::pair<H36mNoseProxy, std::string_view>, 2> values = {
+      {{H36mNoseProxy::kHead, "head"}, {H36mNoseProxy::kNeckNose, "neck_nose"}}};
+};
+
+struct Human36mParams {
+  ParamList subjects = {"S9", "S11"};
+  ParamList actions;  // empty = all
+  ParamList exclude;  // "<subject>/<action>"
+  H36mLabels labels = H36mLabels::kAuto;
+  std::string labels_file = "auto";
+  std::string cameras_file = "auto";
+  H36mLens distortion = H36mLens::kH36m;
+  H36mNoseProxy nose_proxy = H36mNoseProxy::kHead;
+  int every = 1;
+  int max_frames = 0;
+};
+
+template <class Visitor, OptionsOf<Human36mParams> Self>
+void VisitFields(Visitor& v, Self& o) {
+  v("subjects", o.subjects, OptionSpec{.help = "subjects"});
+  v("actions", o.actions,
+    OptionSpec{.help = "actions ('Directions' = all its sub-actions, 'Directions-1' = one); empty = all"});
+  v("exclude", o.exclude, OptionSpec{.help = "<subject>/<action> to skip, e.g. S9/Greeting-2"});
+  v("labels", o.labels,
+    OptionSpec{.help = "annot = processed/*/annot.h5, npy = learnable-triangulation labels, auto = whichever is there"});
+  v("labels_file", o.labels_file, OptionSpec{.help = "labels npy path (relative to root); auto = extra/ or root"});
+  v("cameras_file", o.cameras_file,
+    OptionSpec{.help = "metadata.xml | cameras.pkl | labels npy path, or 'labels'; auto = metadata.xml, cameras.pkl, "
+                       "annotation_body3d/cameras.pkl, else the labels npy"});
+  v("distortion", o.distortion, OptionSpec{.help = "lens model for the stored coefficients"});
+  v("nose_proxy", o.nose_proxy, OptionSpec{.help = "GT joint copied to 'nose': head (raw 15) or neck_nose (raw 14)"});
+  v("every", o.every,
+    OptionSpec{.help = "keep every n-th labelled frame of each sequence (annot.h5 already holds every 64th frame of "
+                       "S9/S11)",
+               .min = 1});
+  v("max_frames", o.max_frames, OptionSpec{.help = "at most this many frames per sequence (0 = all)", .min = 0});
+}
 
 DatasetInfo Human36mInfo();
 std::vector<Sequence> ReadHuman36m(const DatasetRequest& request);

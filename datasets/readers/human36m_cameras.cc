@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "core/errors.h"
+#include "datasets/io/number_text.h"
 #include "datasets/input_warnings.h"
 #include "datasets/io/npy.h"
 #include "datasets/io/pickle.h"
@@ -92,9 +93,7 @@ std::string ReadText(const std::filesystem::path& path) {
 int SubjectNumber(const std::string& subject) {
   if (subject.size() < 2 || subject[0] != 'S') return -1;
   int n = 0;
-  const auto [ptr, ec] = std::from_chars(subject.data() + 1, subject.data() + subject.size(), n);
-  if (ec != std::errc() || ptr != subject.data() + subject.size()) return -1;
-  return n;
+  return io::ParseInteger(std::string_view(subject).substr(1), &n) ? n : -1;
 }
 
 Eigen::Matrix3d RotationXYZ(double rx, double ry, double rz) {
@@ -130,11 +129,7 @@ std::vector<Camera> MetadataXmlCameras(const std::filesystem::path& path, const 
       ++end;
     }
     double value = 0;
-    const char* first = text.data() + i;
-    const char* last = text.data() + end;
-    if (*first == '+') ++first;
-    const auto [ptr, ec] = std::from_chars(first, last, value);
-    if (ec != std::errc() || ptr != last || !std::isfinite(value)) {
+    if (!io::ParseFiniteNumber(std::string_view(text).substr(i, end - i), &value)) {
       throw InputError(where + ": value " + std::to_string(w0.size()) + " ('" + text.substr(i, std::min<std::size_t>(end - i, 40)) +
                        "') is not a finite number");
     }

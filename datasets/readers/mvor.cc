@@ -10,6 +10,7 @@
 #include <string>
 
 #include "core/errors.h"
+#include "datasets/io/number_text.h"
 #include "datasets/detections.h"
 #include "datasets/io/json_file.h"
 #include "datasets/readers/coco_detections.h"
@@ -30,15 +31,6 @@ std::filesystem::path FindFile(const std::filesystem::path& root, std::initializ
     if (std::filesystem::is_regular_file(root / relative, ec)) return root / relative;
   }
   return root / *candidates.begin();
-}
-
-std::string ParseChoice(const std::string& text, std::initializer_list<const char*> choices, const std::string& what) {
-  std::string list;
-  for (const char* choice : choices) {
-    if (text == choice) return text;
-    list += (list.empty() ? "" : ", ") + std::string(choice);
-  }
-  throw ConfigError(what + ": '" + text + "' is not one of " + list);
 }
 
 std::vector<int> ParseDays(const std::string& text, const std::string& what) {
@@ -130,7 +122,9 @@ int FrameNumber(const std::string& file_name, const std::string& where) {
   if (digits.empty() || digits.size() > 9 || !std::all_of(digits.begin(), digits.end(), ::isdigit)) {
     throw InputError(where + ": file name '" + file_name + "' does not end in a frame number");
   }
-  return std::stoi(digits);
+  int frame = 0;
+  if (!io::ParseInteger(digits, &frame)) throw InputError(where + ": file name '" + file_name + "': bad frame number");
+  return frame;
 }
 
 std::string FrameId(int day, int frame) {
@@ -155,24 +149,16 @@ DatasetInfo MvorInfo() {
   info.layout = std::string("<root>/annotations/") + kAnnotationFile + "        (or <root>/" + kAnnotationFile +
                 ")\n<root>/detections_results/" + kDetectionsFile + "  (or <root>/" + kDetectionsFile +
                 "; with detections=openpose)";
-  info.params = {
-      {"days", "1,2,3,4", "days to read (one sequence each)"},
-      {"detections", "openpose", "openpose (the shipped " + std::string(kDetectionsFile) + ") | none"},
-      {"distortion", "none", "none (fits the 2D labels best) | file (apply the 5 numbers as k1 k2 k3 p1 p2)"},
-      {"evaluated", "arms_torso", "arms_torso (shoulders, elbows, wrists, hips) | paper (plus nose = MVOR's head)"},
-  };
+  info.params = DescribeDatasetParams<MvorParams>();
   return info;
 }
 
 std::vector<Sequence> ReadMvor(const DatasetRequest& request) {
-  const DatasetInfo info = MvorInfo();
-  request.CheckParams(info);
-  const auto param = [&](const std::string& key) { return request.Param(info, key); };
-  const auto what = [](const std::string& key) { return "mvor: param " + key; };
-  const std::vector<int> days = ParseDays(param("days"), what("days"));
-  const bool with_detections = ParseChoice(param("detections"), {"openpose", "none"}, what("detections")) == "openpose";
-  const bool distortion = ParseChoice(param("distortion"), {"none", "file"}, what("distortion")) == "file";
-  const bool paper_joints = ParseChoice(param("evaluated"), {"arms_torso", "paper"}, what("evaluated")) == "paper";
+  const MvorParams params = ParseDatasetParams<MvorParams>("mvor", request);
+  const std::vector<int> days = ParseDays(params.days, dataset_params::What("mvor", "days"));
+  const bool with_detections = params.detections == MvorDetections::kOpenPose;
+  const bool distortion = params.distortion == MvorDistortion::kFile;
+  const bool paper_joints = params.evaluated == MvorEvaluated::kPaper;
 
   std::error_code ec;
   if (!std::filesystem::is_directory(request.root, ec)) {
@@ -296,7 +282,7 @@ std::vector<Sequence> ReadMvor(const DatasetRequest& request) {
   }
 
   std::vector<Sequence> out;
-  const bool days_given = request.params.count("days") > 0;
+  const bool days_given = request.params.count("days") > 0;  // an explicit day must have frames
   for (auto& [day, sequence] : by_day) {
     if (sequence.frames.empty() && !days_given) continue;  // the default asks for all days there are
     if (sequence.frames.empty()) throw InputError(source + ": no frames of day " + std::to_string(day));

@@ -37,10 +37,11 @@
 // frames are about 75 s apart, so nothing carries over from one frame to the next.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "core/joints.h"
-#include "datasets/dataset_request.h"
+#include "datasets/dataset_params.h"
 #include "datasets/sequence.h"
 
 namespace rpt {
@@ -52,6 +53,42 @@ const JointNames& MvorJoints();
 //   detections  openpose (default: the shipped openpose_kps.json) | none
 //   distortion  none (default) | file (the file's 5 numbers as k1, k2, k3, p1, p2)
 //   evaluated   arms_torso (default: shoulders, elbows, wrists, hips) | paper (plus nose = head)
+enum class MvorDetections { kOpenPose, kNone };
+enum class MvorDistortion { kNone, kFile };
+enum class MvorEvaluated { kArmsTorso, kPaper };
+template <>
+struct EnumNames<MvorDetections> {
+  static constexpr std::array<std::pair<MvorDetections, std::string_view>, 2> values = {
+      {{MvorDetections::kOpenPose, "openpose"}, {MvorDetections::kNone, "none"}}};
+};
+template <>
+struct EnumNames<MvorDistortion> {
+  static constexpr std::array<std::pair<MvorDistortion, std::string_view>, 2> values = {
+      {{MvorDistortion::kNone, "none"}, {MvorDistortion::kFile, "file"}}};
+};
+template <>
+struct EnumNames<MvorEvaluated> {
+  static constexpr std::array<std::pair<MvorEvaluated, std::string_view>, 2> values = {
+      {{MvorEvaluated::kArmsTorso, "arms_torso"}, {MvorEvaluated::kPaper, "paper"}}};
+};
+
+struct MvorParams {
+  std::string days = "1,2,3,4";
+  MvorDetections detections = MvorDetections::kOpenPose;
+  MvorDistortion distortion = MvorDistortion::kNone;
+  MvorEvaluated evaluated = MvorEvaluated::kArmsTorso;
+};
+
+template <class Visitor, OptionsOf<MvorParams> Self>
+void VisitFields(Visitor& v, Self& o) {
+  v("days", o.days, OptionSpec{.help = "days to read, comma-separated 1-4 (one sequence each)"});
+  v("detections", o.detections, OptionSpec{.help = "openpose = the OpenPose detections shipped with MVOR"});
+  v("distortion", o.distortion,
+    OptionSpec{.help = "none fits the 2D labels best; file applies the 5 numbers as k1 k2 k3 p1 p2"});
+  v("evaluated", o.evaluated,
+    OptionSpec{.help = "arms_torso = shoulders, elbows, wrists, hips; paper = plus nose (MVOR's head)"});
+}
+
 DatasetInfo MvorInfo();
 std::vector<Sequence> ReadMvor(const DatasetRequest& request);
 

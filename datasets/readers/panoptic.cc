@@ -9,6 +9,7 @@
 #include <map>
 
 #include "core/errors.h"
+#include "datasets/io/number_text.h"
 #include "datasets/input_warnings.h"
 #include "datasets/io/json_file.h"
 
@@ -35,21 +36,6 @@ std::string FrameId(const std::string& sequence, long frame) {
   char digits[32];
   std::snprintf(digits, sizeof(digits), "%06ld", frame);
   return "panoptic_" + sequence + "_" + digits;
-}
-
-long ParseLong(const std::string& text, long min_value, const std::string& what) {
-  long value = 0;
-  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (ec != std::errc() || ptr != text.data() + text.size() || value < min_value) {
-    throw ConfigError(what + ": '" + text + "' is not an integer >= " + std::to_string(min_value));
-  }
-  return value;
-}
-
-bool ParseBool(const std::string& text, const std::string& what) {
-  if (text == "true" || text == "1" || text == "yes" || text == "on") return true;
-  if (text == "false" || text == "0" || text == "no" || text == "off") return false;
-  throw ConfigError(what + ": '" + text + "' is not true or false");
 }
 
 Eigen::Matrix3d RowMajor3x3(const std::vector<double>& v) {
@@ -126,8 +112,7 @@ std::vector<PoseFile> ListPoseFiles(const std::filesystem::path& folder) {
     }
     const std::string digits = name.substr(prefix.size(), name.size() - prefix.size() - 5);
     PoseFile file;
-    const auto [ptr, parse_error] = std::from_chars(digits.data(), digits.data() + digits.size(), file.frame);
-    if (parse_error != std::errc() || ptr != digits.data() + digits.size()) continue;
+    if (!io::ParseInteger(digits, &file.frame)) continue;
     file.path = entry.path();
     files.push_back(std::move(file));
   }
@@ -197,26 +182,18 @@ DatasetInfo PanopticInfo() {
   info.layout =
       "<root>/<seq>/calibration_<seq>.json\n"
       "<root>/<seq>/hdPose3d_stage1_coco19/body3DScene_%08d.json";
-  info.params = {
-      {"sequences", kPanopticDefaultSequences, "sequence folders under the root (default: VoxelPose validation)"},
-      {"cameras", kPanopticDefaultCameras, "camera names, or hd = all 31 HD cameras"},
-      {"every", "12", "take annotation files whose sorted-list index is a multiple of this (VoxelPose: 12)"},
-      {"max_frames", "0", "at most this many frames per sequence (0 = all)"},
-      {"skip_empty", "true", "drop frames without GT persons (as VoxelPose); false keeps them"},
-  };
+  info.params = DescribeDatasetParams<PanopticParams>();
   return info;
 }
 
 std::vector<Sequence> ReadPanoptic(const DatasetRequest& request) {
-  const DatasetInfo info = PanopticInfo();
-  request.CheckParams(info);
-  const auto param = [&](const std::string& key) { return request.Param(info, key); };
-  const std::vector<std::string> names = SplitList(param("sequences"));
+  const PanopticParams params = ParseDatasetParams<PanopticParams>("panoptic", request);
+  const std::vector<std::string>& names = params.sequences;
   if (names.empty()) throw ConfigError("panoptic: param sequences: no sequences selected");
-  const std::string camera_selection = param("cameras");
-  const long every = ParseLong(param("every"), 1, "panoptic: param every");
-  const long max_frames = ParseLong(param("max_frames"), 0, "panoptic: param max_frames");
-  const bool skip_empty = ParseBool(param("skip_empty"), "panoptic: param skip_empty");
+  const std::string& camera_selection = params.cameras;
+  const long every = params.every;
+  const long max_frames = params.max_frames;
+  const bool skip_empty = params.skip_empty;
 
   std::error_code ec;
   if (!std::filesystem::is_directory(request.root, ec)) {

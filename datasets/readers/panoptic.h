@@ -32,7 +32,7 @@
 
 #include "core/camera.h"
 #include "core/joints.h"
-#include "datasets/dataset_request.h"
+#include "datasets/dataset_params.h"
 #include "datasets/sequence.h"
 
 namespace rpt {
@@ -66,6 +66,24 @@ inline constexpr const char* kPanopticDefaultCameras = "00_03,00_06,00_12,00_13,
 // Returns one Sequence per sequence ("panoptic/<seq>"). Throws ConfigError for malformed params
 // and InputError for a missing sequence folder, an unknown camera (listing the available ones)
 // and missing/malformed files (naming the file and the JSON pointer).
+struct PanopticParams {
+  ParamList sequences = SplitList(kPanopticDefaultSequences);
+  std::string cameras = kPanopticDefaultCameras;  // camera names, or "hd"
+  int every = 12;
+  int max_frames = 0;
+  bool skip_empty = true;
+};
+
+template <class Visitor, OptionsOf<PanopticParams> Self>
+void VisitFields(Visitor& v, Self& o) {
+  v("sequences", o.sequences, OptionSpec{.help = "sequence folders under the root (default: VoxelPose validation)"});
+  v("cameras", o.cameras, OptionSpec{.help = "comma-separated camera names, or hd = all 31 HD cameras"});
+  v("every", o.every,
+    OptionSpec{.help = "take annotation files whose sorted-list index is a multiple of this (VoxelPose: 12)", .min = 1});
+  v("max_frames", o.max_frames, OptionSpec{.help = "at most this many frames per sequence (0 = all)", .min = 0});
+  v("skip_empty", o.skip_empty, OptionSpec{.help = "drop frames without GT persons (as VoxelPose); false keeps them"});
+}
+
 DatasetInfo PanopticInfo();
 std::vector<Sequence> ReadPanoptic(const DatasetRequest& request);
 

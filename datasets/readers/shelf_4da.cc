@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <array>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -26,60 +25,7 @@ constexpr int kHeadBottom = 12;
 constexpr int kHeadTop = 13;
 constexpr int kNose = 15;  // derived, after the file's joints
 
-enum class NoseProxy { kCenter, kTop, kBottom };
-
-struct Params {
-  std::string frames;  // "all" or ranges
-  bool detections = true;
-  NoseProxy nose_proxy = NoseProxy::kCenter;
-  PafAssociationOptions association;
-};
-
-std::string What(const std::string& key) { return std::string(kName) + ": param " + key; }
-
-Params ParseParams(const DatasetRequest& request) {
-  const DatasetInfo info = Shelf4daInfo();
-  request.CheckParams(info);
-  const auto param = [&](const std::string& key) { return request.Param(info, key); };
-  Params p;
-  p.frames = param("frames");
-
-  const std::string detections = param("detections");
-  if (detections != "openpose" && detections != "none") {
-    throw ConfigError(What("detections") + ": '" + detections + "' is not one of openpose, none");
-  }
-  p.detections = detections == "openpose";
-
-  const std::string nose = param("nose_proxy");
-  if (nose == "center") {
-    p.nose_proxy = NoseProxy::kCenter;
-  } else if (nose == "top") {
-    p.nose_proxy = NoseProxy::kTop;
-  } else if (nose == "bottom") {
-    p.nose_proxy = NoseProxy::kBottom;
-  } else {
-    throw ConfigError(What("nose_proxy") + ": '" + nose + "' is not one of center, top, bottom");
-  }
-
-  const std::string paf = param("min_paf_score");
-  double min_paf = 0;
-  const auto [paf_end, paf_ec] = std::from_chars(paf.data(), paf.data() + paf.size(), min_paf);
-  if (paf_ec != std::errc() || paf_end != paf.data() + paf.size() || !std::isfinite(min_paf) || min_paf < 0) {
-    throw ConfigError(What("min_paf_score") + ": '" + paf + "' is not a number >= 0");
-  }
-  p.association.min_paf_score = min_paf;
-
-  const std::string joints = param("min_joints");
-  int min_joints = 0;
-  const auto [joints_end, joints_ec] = std::from_chars(joints.data(), joints.data() + joints.size(), min_joints);
-  if (joints_ec != std::errc() || joints_end != joints.data() + joints.size() || min_joints < 2 ||
-      min_joints > kBody25Joints) {
-    throw ConfigError(What("min_joints") + ": '" + joints + "' is not an integer in [2, " +
-                      std::to_string(kBody25Joints) + "]");
-  }
-  p.association.min_joints = min_joints;
-  return p;
-}
+std::string What(const std::string& key) { return dataset_params::What(kName, key); }
 
 std::string FrameId(size_t index) {
   char digits[32];
@@ -106,7 +52,7 @@ std::vector<size_t> SelectFrames(const std::string& text, size_t num_frames, con
 }
 
 // gt.txt persons -> Poses3D with the derived nose.
-void ConvertGroundTruth(const std::vector<FourDaPerson>& persons, NoseProxy nose_proxy, const std::string& source,
+void ConvertGroundTruth(const std::vector<FourDaPerson>& persons, HeadNoseProxy nose_proxy, const std::string& source,
                         size_t frame, Poses3D* gt) {
   gt->Clear(static_cast<int>(Shelf4daJoints().size()));
   for (size_t p = 0; p < persons.size(); ++p) {
@@ -120,8 +66,8 @@ void ConvertGroundTruth(const std::vector<FourDaPerson>& persons, NoseProxy nose
     joints.leftCols(kFileJoints) = person.joints;
     const Eigen::Vector3d bottom = person.joints.col(kHeadBottom).head<3>();
     const Eigen::Vector3d top = person.joints.col(kHeadTop).head<3>();
-    const Eigen::Vector3d nose = nose_proxy == NoseProxy::kTop      ? top
-                                 : nose_proxy == NoseProxy::kBottom ? bottom
+    const Eigen::Vector3d nose = nose_proxy == HeadNoseProxy::kTop      ? top
+                                 : nose_proxy == HeadNoseProxy::kBottom ? bottom
                                                                     : Eigen::Vector3d(0.5 * (bottom + top));
     joints.col(kNose) << nose, std::min(person.joints(3, kHeadBottom), person.joints(3, kHeadTop));
   }
@@ -180,18 +126,15 @@ DatasetInfo Shelf4daInfo() {
       "<root>/calibration.json   cameras (K, RT world->camera in metres, imgSize)\n"
       "<root>/gt.txt   ground truth (SHELF15 joints in metres, identity per person)\n"
       "<root>/detection/<camera>.txt   OpenPose BODY_25 candidates and PAF scores (only with detections=openpose)";
-  info.params = {
-      {"frames", "all", "frame indices in the files, e.g. 0-300 or 0-300:10 (all = every frame)"},
-      {"detections", "openpose", "openpose (assemble detection/<camera>.txt into persons) | none"},
-      {"nose_proxy", "center", "GT point named nose: center (mean of head_bottom, head_top) | top | bottom"},
-      {"min_paf_score", "0.05", "PAF association: ignore links with a lower PAF score (file values)"},
-      {"min_joints", "5", "PAF association: drop persons with fewer BODY_25 joints"},
-  };
+  info.params = DescribeDatasetParams<Shelf4daParams>();
   return info;
 }
 
 std::vector<Sequence> ReadShelf4da(const DatasetRequest& request) {
-  const Params params = ParseParams(request);
+  const Shelf4daParams params = ParseDatasetParams<Shelf4daParams>(kName, request);
+  PafAssociationOptions association;
+  association.min_paf_score = params.min_paf_score;
+  association.min_joints = params.min_joints;
   std::error_code ec;
   if (!std::filesystem::is_directory(request.root, ec)) {
     throw InputError(std::string(kName) + ": root '" + request.root.string() + "' is not a directory");
@@ -219,7 +162,7 @@ std::vector<Sequence> ReadShelf4da(const DatasetRequest& request) {
     ConvertGroundTruth(gt.frames[f], params.nose_proxy, gt_source, f, &frame.gt);
   }
 
-  if (params.detections) {
+  if (params.detections == Shelf4daDetections::kOpenPose) {
     sequence.detection_joints = CocoBodyJoints();
     for (SequenceFrame& frame : sequence.frames) frame.views.resize(sequence.cameras.size());
     for (size_t c = 0; c < sequence.cameras.size(); ++c) {
@@ -231,7 +174,7 @@ std::vector<Sequence> ReadShelf4da(const DatasetRequest& request) {
                          gt_source + " has " + std::to_string(gt.frames.size()));
       }
       for (size_t i = 0; i < frames.size(); ++i) {
-        AssembleView(detections.frames[frames[i]], params.association, camera, &sequence.frames[i].views[c]);
+        AssembleView(detections.frames[frames[i]], association, camera, &sequence.frames[i].views[c]);
       }
     }
   }

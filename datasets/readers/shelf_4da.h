@@ -28,10 +28,14 @@
 // x * (width - 1), y * (height - 1), as 4D-Association does.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "core/joints.h"
-#include "datasets/dataset_request.h"
+#include "datasets/dataset_params.h"
+#include "datasets/readers/openpose_body25.h"
+#include "datasets/readers/openpose_paf_association.h"
+#include "datasets/readers/shelf_campus.h"
 #include "datasets/sequence.h"
 
 namespace rpt {
@@ -49,6 +53,32 @@ const JointNames& Shelf4daJoints();
 // Returns one Sequence "shelf-4da". Throws ConfigError for malformed params, InputError for
 // missing or malformed files (naming file, line and token), frames outside the files and
 // detection files whose frame count differs from gt.txt.
+enum class Shelf4daDetections { kOpenPose, kNone };
+template <>
+struct EnumNames<Shelf4daDetections> {
+  static constexpr std::array<std::pair<Shelf4daDetections, std::string_view>, 2> values = {
+      {{Shelf4daDetections::kOpenPose, "openpose"}, {Shelf4daDetections::kNone, "none"}}};
+};
+
+struct Shelf4daParams {
+  std::string frames = "all";  // "all" or ParseFrameRanges syntax
+  Shelf4daDetections detections = Shelf4daDetections::kOpenPose;
+  HeadNoseProxy nose_proxy = HeadNoseProxy::kCenter;
+  double min_paf_score = PafAssociationOptions{}.min_paf_score;
+  int min_joints = PafAssociationOptions{}.min_joints;
+};
+
+template <class Visitor, OptionsOf<Shelf4daParams> Self>
+void VisitFields(Visitor& v, Self& o) {
+  v("frames", o.frames, OptionSpec{.help = "frame indices in the files, e.g. 0-300 or 0-300:10 (all = every frame)"});
+  v("detections", o.detections, OptionSpec{.help = "openpose = assemble detection/<camera>.txt into persons"});
+  v("nose_proxy", o.nose_proxy, OptionSpec{.help = "GT point named nose: center (mean of head_bottom, head_top), top or bottom"});
+  v("min_paf_score", o.min_paf_score,
+    OptionSpec{.help = "PAF association: ignore links with a lower PAF score (file values)", .min = 0});
+  v("min_joints", o.min_joints,
+    OptionSpec{.help = "PAF association: drop persons with fewer BODY_25 joints", .min = 2, .max = kBody25Joints});
+}
+
 DatasetInfo Shelf4daInfo();
 std::vector<Sequence> ReadShelf4da(const DatasetRequest& request);
 

@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "core/errors.h"
+#include "datasets/io/number_text.h"
 #include "datasets/detections.h"
 #include "datasets/io/mat.h"
 #include "datasets/readers/voxelpose_calibration.h"
@@ -27,7 +28,7 @@ struct ShelfCampusSpec {
   std::string detections_file;   // VoxelPose 2D cache in the root
   int width = 0;                 // image size, px
   int height = 0;
-  std::string default_frames;
+  std::string default_frames;    // of param frames
   Room room;
   std::string description;
 };
@@ -65,6 +66,12 @@ const ShelfCampusSpec& CampusSpec() {
   return spec;
 }
 
+ShelfCampusParams DefaultParams(const ShelfCampusSpec& spec) {
+  ShelfCampusParams params;
+  params.frames = spec.default_frames;
+  return params;
+}
+
 DatasetInfo MakeInfo(const ShelfCampusSpec& spec) {
   DatasetInfo info;
   info.name = spec.name;
@@ -72,13 +79,7 @@ DatasetInfo MakeInfo(const ShelfCampusSpec& spec) {
   info.layout = "<root>/" + spec.calibration_file + "   VoxelPose cameras (R world->camera, T = centre in mm)\n" +
                 "<root>/actorsGT.mat   ground truth (actor3D: actors x frames, 14x3 metres or empty)\n" + "<root>/" +
                 spec.detections_file + "   VoxelPose 2D detections (only with detections=voxelpose)";
-  info.params = {
-      {"frames", spec.default_frames, "frame selection, e.g. 300-600 or 350-470,650-750 or 0-3199:10"},
-      {"actors", "all", "actor indices to load, e.g. 0,1,2 (all = every actor in actorsGT.mat)"},
-      {"nose_proxy", "center", "GT point named nose: center (mean of head_bottom, head_top) | top | bottom"},
-      {"detections", "none", "none | voxelpose (load " + spec.detections_file + " from the root)"},
-      {"fps", "25", "frame rate for timestamps (frame / fps)"},
-  };
+  info.params = DescribeDatasetParams(DefaultParams(spec));
   return info;
 }
 
@@ -90,29 +91,10 @@ std::string FrameId(const std::string& prefix, int frame) {
 
 int ParseNonNegative(const std::string& text, const std::string& what) {
   int value = 0;
-  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (ec != std::errc() || ptr != text.data() + text.size() || value < 0) {
+  if (!io::ParseInteger(text, &value) || value < 0) {
     throw ConfigError(what + ": '" + text + "' is not a non-negative integer");
   }
   return value;
-}
-
-double ParsePositive(const std::string& text, const std::string& what) {
-  double value = 0;
-  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (ec != std::errc() || ptr != text.data() + text.size() || !(value > 0) || !std::isfinite(value)) {
-    throw ConfigError(what + ": '" + text + "' is not a positive number");
-  }
-  return value;
-}
-
-enum class NoseProxy { kCenter, kTop, kBottom };
-
-NoseProxy ParseNoseProxy(const std::string& text, const std::string& what) {
-  if (text == "center") return NoseProxy::kCenter;
-  if (text == "top") return NoseProxy::kTop;
-  if (text == "bottom") return NoseProxy::kBottom;
-  throw ConfigError(what + ": '" + text + "' is not one of center, top, bottom");
 }
 
 // actor3D: 1xP cell of Fx1 cells. Returns F, after checking that every actor has the same F.
@@ -154,18 +136,12 @@ std::vector<int> SelectActors(const std::string& text, size_t num_actors, const 
 }
 
 std::vector<Sequence> ReadShelfCampus(const ShelfCampusSpec& spec, const DatasetRequest& request) {
-  const DatasetInfo info = MakeInfo(spec);
-  request.CheckParams(info);
-  const auto param = [&](const std::string& key) { return request.Param(info, key); };
-  const auto what = [&](const std::string& key) { return spec.name + ": param " + key; };
+  const ShelfCampusParams params = ParseDatasetParams(spec.name, request, DefaultParams(spec));
+  const auto what = [&](const std::string& key) { return dataset_params::What(spec.name, key); };
 
-  const std::vector<int> frames = ParseFrameRanges(param("frames"), what("frames"));
-  const NoseProxy nose_proxy = ParseNoseProxy(param("nose_proxy"), what("nose_proxy"));
-  const std::string detections_mode = param("detections");
-  if (detections_mode != "none" && detections_mode != "voxelpose") {
-    throw ConfigError(what("detections") + ": '" + detections_mode + "' is not one of none, voxelpose");
-  }
-  const double fps = ParsePositive(param("fps"), what("fps"));
+  const std::vector<int> frames = ParseFrameRanges(params.frames, what("frames"));
+  const HeadNoseProxy nose_proxy = params.nose_proxy;
+  const double fps = params.fps;
   if (frames.front() < 0) {
     throw ConfigError(what("frames") + ": frame " + std::to_string(frames.front()) + " is negative");
   }
@@ -188,7 +164,7 @@ std::vector<Sequence> ReadShelfCampus(const ShelfCampusSpec& spec, const Dataset
   const io::MatValue& actor3d = mat.Get("actor3D");
   const size_t num_frames = CountFrames(actor3d);
   const std::vector<int> actors =
-      SelectActors(param("actors"), actor3d.NumElements(), what("actors"), mat_path.string());
+      SelectActors(params.actors, actor3d.NumElements(), what("actors"), mat_path.string());
   if (static_cast<size_t>(frames.back()) >= num_frames) {
     throw InputError(mat_path.string() + ": frame " + std::to_string(frames.back()) + " requested but actor3D has " +
                      std::to_string(num_frames) + " frames (0-" + std::to_string(num_frames == 0 ? 0 : num_frames - 1) +
@@ -214,15 +190,15 @@ std::vector<Sequence> ReadShelfCampus(const ShelfCampusSpec& spec, const Dataset
       }
       const Eigen::Vector3d bottom = person.col(kHeadBottom).head<3>();
       const Eigen::Vector3d top = person.col(kHeadTop).head<3>();
-      const Eigen::Vector3d nose = nose_proxy == NoseProxy::kTop      ? top
-                                   : nose_proxy == NoseProxy::kBottom ? bottom
+      const Eigen::Vector3d nose = nose_proxy == HeadNoseProxy::kTop      ? top
+                                   : nose_proxy == HeadNoseProxy::kBottom ? bottom
                                                                       : Eigen::Vector3d(0.5 * (bottom + top));
       person.col(kFileJoints) << nose, 1.0;
     }
     sequence.frames.push_back(std::move(frame));
   }
 
-  if (detections_mode == "voxelpose") {
+  if (params.detections == ShelfCampusDetections::kVoxelPose) {
     const std::filesystem::path pkl = request.root / spec.detections_file;
     const Detections detections = ReadVoxelPoseDetections(pkl, sequence, spec.name);
     AttachDetections(detections, pkl.string(), &sequence);

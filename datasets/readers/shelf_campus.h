@@ -26,10 +26,11 @@
 // (root) can be, not the head.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "core/joints.h"
-#include "datasets/dataset_request.h"
+#include "datasets/dataset_params.h"
 #include "datasets/sequence.h"
 
 namespace rpt {
@@ -53,6 +54,40 @@ Room ShelfRoom();
 // Returns one Sequence ("shelf" / "campus"). Throws ConfigError for malformed params and
 // InputError for missing/malformed files and frames or actors outside actorsGT.mat (naming
 // the frame/actor count).
+// Which point of the head the GT joint "nose" is (Shelf, Campus and the 4D-Association Shelf
+// annotate head_bottom and head_top only).
+enum class HeadNoseProxy { kCenter, kTop, kBottom };
+template <>
+struct EnumNames<HeadNoseProxy> {
+  static constexpr std::array<std::pair<HeadNoseProxy, std::string_view>, 3> values = {
+      {{HeadNoseProxy::kCenter, "center"}, {HeadNoseProxy::kTop, "top"}, {HeadNoseProxy::kBottom, "bottom"}}};
+};
+
+enum class ShelfCampusDetections { kNone, kVoxelPose };
+template <>
+struct EnumNames<ShelfCampusDetections> {
+  static constexpr std::array<std::pair<ShelfCampusDetections, std::string_view>, 2> values = {
+      {{ShelfCampusDetections::kNone, "none"}, {ShelfCampusDetections::kVoxelPose, "voxelpose"}}};
+};
+
+// The parameters of "shelf" and "campus" (their default frames differ: ShelfInfo/CampusInfo).
+struct ShelfCampusParams {
+  std::string frames;          // ParseFrameRanges syntax
+  std::string actors = "all";  // "all" or actor indices
+  HeadNoseProxy nose_proxy = HeadNoseProxy::kCenter;
+  ShelfCampusDetections detections = ShelfCampusDetections::kNone;
+  double fps = 25;
+};
+
+template <class Visitor, OptionsOf<ShelfCampusParams> Self>
+void VisitFields(Visitor& v, Self& o) {
+  v("frames", o.frames, OptionSpec{.help = "frame selection, e.g. 300-600 or 350-470,650-750 or 0-3199:10"});
+  v("actors", o.actors, OptionSpec{.help = "actor indices to load, e.g. 0,1,2 (all = every actor in actorsGT.mat)"});
+  v("nose_proxy", o.nose_proxy, OptionSpec{.help = "GT point named nose: center (mean of head_bottom, head_top), top or bottom"});
+  v("detections", o.detections, OptionSpec{.help = "voxelpose = load the VoxelPose 2D cache from the root"});
+  v("fps", o.fps, OptionSpec{.help = "frame rate for timestamps (frame / fps)", .unit = "Hz", .min = 0, .min_exclusive = true});
+}
+
 DatasetInfo ShelfInfo();
 std::vector<Sequence> ReadShelf(const DatasetRequest& request);
 DatasetInfo CampusInfo();

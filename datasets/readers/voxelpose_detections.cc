@@ -8,6 +8,7 @@
 #include <unordered_map>
 
 #include "core/errors.h"
+#include "datasets/io/number_text.h"
 #include "core/joints.h"
 #include "datasets/input_warnings.h"
 #include "datasets/io/pickle.h"
@@ -27,10 +28,7 @@ std::string FrameId(const std::string& prefix, long frame) {
 bool SplitKey(const std::string& key, std::string* camera, long* frame) {
   const size_t underscore = key.rfind('_');
   if (underscore == std::string::npos || underscore == 0 || underscore + 1 == key.size()) return false;
-  const char* first = key.data() + underscore + 1;
-  const char* last = key.data() + key.size();
-  const auto [ptr, ec] = std::from_chars(first, last, *frame);
-  if (ec != std::errc() || ptr != last || *frame < 0) return false;
+  if (!io::ParseInteger(std::string_view(key).substr(underscore + 1), frame) || *frame < 0) return false;
   *camera = key.substr(0, underscore);
   return true;
 }

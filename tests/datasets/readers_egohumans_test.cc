@@ -267,18 +267,10 @@ TEST(EgohumansReader, GtProjectsOntoTheTwoDCache) {
   const std::string cache_dir = (data / "01_tagging" / "001_tagging" / "processed_data" / "poses2d").string();
   test::ExpectOneWarning(seq.warnings, cache_dir, test::kScoresClamped, 6 + 6 + 2);
 
-  // The same cache through ReadEgohumansDetections.
-  const Detections detections = ReadEgohumansDetections(Request(data, {{"sequences", "01_tagging/001_tagging"}}));
-  ASSERT_EQ(detections.frames.size(), 3u);
-  EXPECT_EQ(detections.joints.size(), 133u);
-  EXPECT_EQ(detections.frames[1].frame_id, "egohumans_01_tagging_001_tagging_00002");
-  EXPECT_EQ(detections.frames[1].cameras, (std::vector<std::string>{"cam01", "cam02", "cam03"}));
-  test::ExpectOneWarning(detections.warnings, cache_dir, test::kScoresClamped, 14);
-  Sequence without = ReadEgohumans(Request(data))[0];
+  // Without detections=cache the same walk reads no 2D.
+  const Sequence without = ReadEgohumans(Request(data))[0];
   EXPECT_TRUE(without.frames[0].views.empty());
-  const AttachReport report = AttachDetections(detections, "cache", &without);
-  EXPECT_EQ(report.frames_with_detections, 3);
-  EXPECT_EQ(without.frames[0].views[2].data, seq.frames[0].views[2].data);
+  EXPECT_EQ(without.frames.size(), seq.frames.size());
 }
 
 TEST(EgohumansReader, RootLevelsAndParams) {
@@ -357,15 +349,15 @@ TEST(EgohumansReader, RotationsBeyondTheToleranceNameFileAndLine) {
 TEST(EgohumansReader, CacheScoresSlightlyAboveOneAreClampedAndCounted) {
   test::TempDir dir;
   const fs::path seq_dir = WriteTree(dir.path(), {.joint0_score = 1.018});
-  const Detections detections = ReadEgohumansDetections(Request(dir.path()));
-  for (const FrameDetections& frame : detections.frames) {
+  const Sequence seq = ReadEgohumans(Request(dir.path(), {{"detections", "cache"}}))[0];
+  for (const SequenceFrame& frame : seq.frames) {
     for (const Poses2D& view : frame.views) {
       for (int p = 0; p < view.num_persons(); ++p) EXPECT_LE(view.Person(p)(2, 0), 1.0);
     }
   }
-  EXPECT_EQ(detections.frames[0].views[0].Person(0)(2, 0), 1.0);
-  test::ExpectOneWarning(detections.warnings, (seq_dir / "processed_data" / "poses2d").string(), test::kScoresClamped, 14);
-  EXPECT_DOUBLE_EQ(detections.warnings.items()[0].worst, 1.018);
+  EXPECT_EQ(seq.frames[0].views[0].Person(0)(2, 0), 1.0);
+  test::ExpectOneWarning(seq.warnings, (seq_dir / "processed_data" / "poses2d").string(), test::kScoresClamped, 14);
+  EXPECT_DOUBLE_EQ(seq.warnings.items()[0].worst, 1.018);
 }
 
 TEST(EgohumansReader, CacheScoresNegativeLargeOrNanNameFileAndJoint) {
@@ -375,7 +367,7 @@ TEST(EgohumansReader, CacheScoresNegativeLargeOrNanNameFileAndJoint) {
     const std::string what = std::isnan(score) ? "joint 0: NaN or infinite value"
                              : score > 1      ? "joint 0: score 1.6 outside [0, 1]"
                                               : "joint 0: score -0.1 outside [0, 1]";
-    EXPECT_THAT(InputErrorOf([&] { ReadEgohumansDetections(Request(dir.path())); }),
+    EXPECT_THAT(InputErrorOf([&] { ReadEgohumans(Request(dir.path(), {{"detections", "cache"}})); }),
                 HasSubstr("poses2d/cam01/rgb/00001.npy: [0].keypoints: " + what));
   }
 }
@@ -410,7 +402,7 @@ TEST(EgohumansReader, MalformedInputsNameFileAndPlace) {
               HasSubstr("poses2d/cam02/rgb/00001.npy: 2D pose cache file not found"));
   test::WriteBytes(seq / "processed_data" / "poses2d" / "cam02" / "rgb" / "00001.npy",
                    test::NpyOfObjectList({test::PyDict({{test::PyStr("keypoints"), test::PyArray({17, 3}, std::vector<double>(51, 1.0))}})}));
-  EXPECT_THAT(InputErrorOf([&] { ReadEgohumansDetections(Request(dir.path(), {{"max_frames", "1"}})); }),
+  EXPECT_THAT(InputErrorOf([&] { ReadEgohumans(Request(dir.path(), {{"detections", "cache"}, {"max_frames", "1"}})); }),
               HasSubstr("cam02/rgb/00001.npy: [0].keypoints: expected shape (133, 3)"));
   // A malformed 4x4 manual calibration and a missing cameras.txt.
   const fs::path work = seq / "colmap" / "workplace";

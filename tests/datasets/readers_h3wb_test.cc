@@ -177,15 +177,17 @@ TEST(H3wbReader, NpzRoundTrip) {
   test::ExpectOneWarning(seq.warnings, (dir.path() / "h3wb_train.npz").string() + "[metadata.npy]", test::kRotationsFixed, 4);
   EXPECT_TRUE(sequences[1].warnings.empty());
 
-  // 2D from pose_2d; it matches the projection of the GT with the reader's cameras.
-  const Detections detections = ReadH3wbDetections(Request(dir.path(), {{"actions", "Directions"}}));
-  ASSERT_EQ(detections.frames.size(), 3u);
-  EXPECT_EQ(detections.joints.size(), 133u);
-  EXPECT_EQ(detections.frames[1].frame_id, "h3wb_S8_Directions-1_000005");
-  ASSERT_EQ(detections.frames[1].cameras.size(), 4u);
+  // 2D from pose_2d (detections=annotations, read in the same walk as the GT); it matches the
+  // projection of the GT with the reader's cameras.
+  const auto with_views = ReadH3wb(Request(dir.path(), {{"actions", "Directions"}, {"detections", "annotations"}}));
+  ASSERT_EQ(with_views.size(), 1u);
+  EXPECT_EQ(with_views[0].detection_joints.size(), 133u);
+  ASSERT_EQ(with_views[0].frames.size(), 3u);
+  EXPECT_EQ(with_views[0].frames[1].id, "h3wb_S8_Directions-1_000005");
+  ASSERT_EQ(with_views[0].frames[1].views.size(), 4u);
   double worst = 0;
   for (std::size_t c = 0; c < 4; ++c) {
-    const auto person = detections.frames[1].views[c].Person(0);
+    const auto person = with_views[0].frames[1].views[c].Person(0);
     for (int j = 0; j < 133; ++j) {
       Eigen::Vector2d uv;
       seq.cameras[c].Project(seq.frames[1].gt.Person(0).col(j).head<3>(), &uv);
@@ -194,12 +196,7 @@ TEST(H3wbReader, NpzRoundTrip) {
     }
   }
   EXPECT_LT(worst, 0.01);  // float32 cameras in the file
-  Sequence attached = seq;
-  EXPECT_EQ(AttachDetections(detections, "h3wb", &attached).frames_with_detections, 3);
-  const auto with_views = ReadH3wb(Request(dir.path(), {{"detections", "annotations"}}));
-  EXPECT_EQ(with_views[0].detection_joints.size(), 133u);
-  ASSERT_EQ(with_views[0].frames[1].views.size(), 4u);
-  EXPECT_EQ(with_views[0].frames[1].views[2].data, detections.frames[1].views[2].data);
+  for (std::size_t f = 0; f < 3; ++f) EXPECT_EQ(with_views[0].frames[f].gt.data, seq.frames[f].gt.data);
   EXPECT_THROW(ReadH3wb(Request(dir.path(), {{"detections", "hrnet"}})), ConfigError);
 
   // Other subject, params.
@@ -319,12 +316,18 @@ TEST(H3wbReader, JsonByIdsFindsTheSubject) {
   EXPECT_EQ(s5[0].frames[0].id, "h3wb_S5_sample_000004");
   EXPECT_LT((s5[0].frames[0].gt.Person(0).topRows<3>() - WholeBody(9)).cwiseAbs().maxCoeff(), 1e-9);
 
-  const Detections detections = ReadH3wbDetections(Request(dir.path()));
-  ASSERT_EQ(detections.frames.size(), 2u);
-  EXPECT_EQ(detections.frames[1].cameras, (std::vector<std::string>{"55011271", "60457274"}));
+  // Frame 3 has two views: the other two cameras get no person.
+  const auto with_views = ReadH3wb(Request(dir.path(), {{"detections", "annotations"}}));
+  ASSERT_EQ(with_views[0].frames.size(), 2u);
+  const std::vector<Poses2D>& frame_views = with_views[0].frames[1].views;
+  ASSERT_EQ(frame_views.size(), 4u);
+  EXPECT_EQ(frame_views[0].num_persons(), 0);
+  EXPECT_EQ(frame_views[1].num_persons(), 1);
+  EXPECT_EQ(frame_views[2].num_persons(), 0);
+  EXPECT_EQ(frame_views[3].num_persons(), 1);
   Eigen::Vector2d uv;
   seq.cameras[3].Project(WholeBody(3).col(40), &uv);
-  EXPECT_LT((detections.frames[1].views[1].Person(0).col(40).head<2>() - uv).norm(), 1e-9);
+  EXPECT_LT((frame_views[3].Person(0).col(40).head<2>() - uv).norm(), 1e-9);
 
   EXPECT_THAT(InputErrorOf([&] { ReadH3wb(Request(dir.path(), {{"subjects", "S1"}})); }),
               HasSubstr("2Dto3D_train.json: unknown subject 'S1' (file has S5, S8)"));
@@ -352,7 +355,8 @@ TEST(H3wbReader, JsonByImagePath) {
   EXPECT_EQ(sequences[0].frames[0].id, "h3wb_S8_Directions-1_000004");
   EXPECT_EQ(sequences[0].frames[1].id, "h3wb_S8_Directions-1_000012");
   EXPECT_LT((sequences[0].frames[1].gt.Person(0).topRows<3>() - WholeBody(12)).cwiseAbs().maxCoeff(), 1e-9);
-  EXPECT_TRUE(ReadH3wbDetections(Request(dir.path(), {{"file", "RGBto3D_train.json"}})).frames[0].views.empty());
+  const auto rgb = ReadH3wb(Request(dir.path(), {{"file", "RGBto3D_train.json"}, {"detections", "annotations"}}));
+  for (const Poses2D& view : rgb[0].frames[0].views) EXPECT_EQ(view.num_persons(), 0);  // no keypoints_2d
   const auto s5 = ReadH3wb(Request(dir.path(), {{"file", "RGBto3D_train.json"}, {"subjects", "S5"}, {"actions", "Eating"}}));
   ASSERT_EQ(s5.size(), 1u);
   EXPECT_EQ(s5[0].frames[0].id, "h3wb_S5_Eating_000002");

@@ -435,7 +435,8 @@ TEST(PanopticReader, BadParamsAreConfigErrors) {
   EXPECT_THAT(config_error({{"skip_empty", "maybe"}}), HasSubstr("skip_empty: 'maybe' is not true or false"));
   EXPECT_THAT(config_error({{"cameras", ","}}), HasSubstr("no cameras selected"));
   EXPECT_THAT(config_error({{"interval", "3"}}), HasSubstr("no parameter 'interval'"));
-  EXPECT_EQ(DatasetRequest{}.Param(PanopticInfo(), "cameras"), "00_03,00_06,00_12,00_13,00_23");
+  EXPECT_EQ(PanopticParams{}.cameras, "00_03,00_06,00_12,00_13,00_23");
+  EXPECT_THAT(config_error({{"camera", "00_03"}}), HasSubstr("did you mean 'cameras'?"));
 }
 
 }  // namespace

@@ -414,10 +414,10 @@ TEST(ShelfReader, BadParamsAreConfigErrors) {
 TEST(CampusReader, InfoDefaultsAndGeneratedFiles) {
   const DatasetInfo info = CampusInfo();
   EXPECT_EQ(info.name, "campus");
-  const DatasetRequest defaults;
-  EXPECT_EQ(defaults.Param(info, "frames"), "350-470,650-750");
+  EXPECT_EQ(info.params.at(0).name, "frames");
+  EXPECT_EQ(info.params.at(0).default_value, "350-470,650-750");
   EXPECT_EQ(ShelfInfo().name, "shelf");
-  EXPECT_EQ(defaults.Param(ShelfInfo(), "frames"), "300-600");
+  EXPECT_EQ(ShelfInfo().params.at(0).default_value, "300-600");
 
   test::TempDir dir;
   dir.Write("actorsGT.mat", ActorsMat(false));

@@ -1,0 +1,177 @@
+// SPDX-License-Identifier: MIT
+// Typed dataset parameters (datasets/dataset_params.h): parsing, ranges, "did you mean", the
+// parameter lists of every reader and their table in docs/datasets.md.
+#include "datasets/dataset_params.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "core/errors.h"
+#include "datasets/readers/synthetic_dataset.h"
+#include "datasets/registry.h"
+#include "tests/error_message.h"
+
+namespace rpt {
+namespace {
+
+using ::testing::HasSubstr;
+
+enum class Color { kRed, kGreen };
+
+}  // namespace
+
+template <>
+struct EnumNames<Color> {
+  static constexpr std::array<std::pair<Color, std::string_view>, 2> values = {
+      {{Color::kRed, "red"}, {Color::kGreen, "green"}}};
+};
+
+namespace {
+
+struct TestParams {
+  int count = 3;
+  std::uint64_t seed = 1;
+  double rate = 25;
+  double weight = 0.5;
+  bool flag = true;
+  std::string name = "x";
+  ParamList items = {"a", "b"};
+  Color color = Color::kRed;
+};
+
+template <class Visitor, OptionsOf<TestParams> Self>
+void VisitFields(Visitor& v, Self& o) {
+  v("count", o.count, OptionSpec{.help = "a count", .min = 2, .max = 64});
+  v("seed", o.seed, OptionSpec{.help = "a seed"});
+  v("rate", o.rate, OptionSpec{.help = "a rate", .min = 0, .min_exclusive = true});
+  v("weight", o.weight, OptionSpec{.help = "a weight", .min = 0});
+  v("flag", o.flag, OptionSpec{.help = "a flag"});
+  v("name", o.name, OptionSpec{.help = "a name"});
+  v("items", o.items, OptionSpec{.help = "some items"});
+  v("color", o.color, OptionSpec{.help = "a color"});
+}
+
+DatasetRequest Request(std::map<std::string, std::string> params) {
+  DatasetRequest request;
+  request.params = std::move(params);
+  return request;
+}
+
+TestParams Parse(std::map<std::string, std::string> params) {
+  return ParseDatasetParams<TestParams>("test", Request(std::move(params)));
+}
+
+std::string ErrorOf(std::map<std::string, std::string> params) {
+  return test::ErrorMessage<ConfigError>([&] { Parse(params); });
+}
+
+TEST(DatasetParams, DefaultsComeFromTheStruct) {
+  const TestParams p = Parse({});
+  EXPECT_EQ(p.count, 3);
+  EXPECT_EQ(p.items, (ParamList{"a", "b"}));
+  EXPECT_EQ(p.color, Color::kRed);
+}
+
+TEST(DatasetParams, ParsesEveryType) {
+  const TestParams p = Parse({{"count", "64"},
+                              {"seed", "18446744073709551615"},
+                              {"rate", "0.5"},
+                              {"weight", "0"},
+                              {"flag", "false"},
+                              {"name", "y z"},
+                              {"items", "c, d,,e"},
+                              {"color", "green"}});
+  EXPECT_EQ(p.count, 64);
+  EXPECT_EQ(p.seed, 18446744073709551615ULL);
+  EXPECT_DOUBLE_EQ(p.rate, 0.5);
+  EXPECT_DOUBLE_EQ(p.weight, 0);
+  EXPECT_FALSE(p.flag);
+  EXPECT_EQ(p.name, "y z");
+  EXPECT_EQ(p.items, (ParamList{"c", "d", "e"}));
+  EXPECT_EQ(p.color, Color::kGreen);
+}
+
+TEST(DatasetParams, BadValuesNameDatasetParamAndRange) {
+  EXPECT_THAT(ErrorOf({{"count", "65"}}), HasSubstr("test: param count: '65' is not an integer in [2, 64]"));
+  EXPECT_THAT(ErrorOf({{"count", "3.5"}}), HasSubstr("'3.5' is not an integer in [2, 64]"));
+  EXPECT_THAT(ErrorOf({{"count", "3000000000"}}), HasSubstr("is not an integer in [2, 64]"));
+  EXPECT_THAT(ErrorOf({{"seed", "-1"}}), HasSubstr("test: param seed: '-1' is not an integer"));
+  EXPECT_THAT(ErrorOf({{"rate", "0"}}), HasSubstr("test: param rate: '0' is not a positive number"));
+  EXPECT_THAT(ErrorOf({{"rate", "inf"}}), HasSubstr("is not a positive number"));
+  EXPECT_THAT(ErrorOf({{"weight", "-0.1"}}), HasSubstr("'-0.1' is not a number >= 0"));
+  EXPECT_THAT(ErrorOf({{"flag", "maybe"}}), HasSubstr("test: param flag: 'maybe' is not true or false"));
+  EXPECT_THAT(ErrorOf({{"color", "blue"}}), HasSubstr("test: param color: 'blue' is not one of red, green"));
+}
+
+TEST(DatasetParams, UnknownKeysListTheValidOnesAndSuggestTheNearest) {
+  const std::string message = ErrorOf({{"cuont", "3"}});
+  EXPECT_THAT(message, HasSubstr("dataset 'test' has no parameter 'cuont' (valid: count, seed, rate, weight"));
+  EXPECT_THAT(message, HasSubstr("did you mean 'count'?"));
+  EXPECT_THAT(ErrorOf({{"zzzzzz", "1"}}), ::testing::Not(HasSubstr("did you mean")));
+}
+
+TEST(DatasetParams, DescriptionCarriesDefaultsAndTypes) {
+  const std::vector<DatasetParam> params = DescribeDatasetParams<TestParams>();
+  ASSERT_EQ(params.size(), 8u);
+  EXPECT_EQ(params[0].name, "count");
+  EXPECT_EQ(params[0].default_value, "3");
+  EXPECT_EQ(params[0].type, "integer in [2, 64]");
+  EXPECT_EQ(params[1].type, "integer");
+  EXPECT_EQ(params[2].type, "number > 0");
+  EXPECT_EQ(params[3].type, "number >= 0");
+  EXPECT_EQ(params[4].default_value, "true");
+  EXPECT_EQ(params[6].default_value, "a,b");
+  EXPECT_EQ(params[7].type, "red | green");
+}
+
+// Every reader's listed defaults are values its own parser accepts, and they parse back to the
+// same text (one source of truth: the struct initialisers).
+TEST(DatasetParams, EveryReaderListsParsableDefaults) {
+  for (const DatasetEntry& entry : DatasetRegistry()) {
+    ASSERT_FALSE(entry.info.params.empty()) << entry.info.name;
+    for (const DatasetParam& p : entry.info.params) {
+      EXPECT_FALSE(p.help.empty()) << entry.info.name << " " << p.name;
+      EXPECT_FALSE(p.type.empty()) << entry.info.name << " " << p.name;
+    }
+  }
+  // The synthetic reader takes its listed defaults back (the others need files on disk).
+  std::map<std::string, std::string> given;
+  for (const DatasetParam& p : SyntheticInfo().params) given[p.name] = p.default_value;
+  given["frames"] = "2";
+  DatasetRequest request = Request(given);
+  EXPECT_EQ(ReadSynthetic(request).front().frames.size(), 2u);
+}
+
+// `rpt demo --seed` takes any uint64; so does the synthetic reader (it used to stop at 2^31 - 1).
+TEST(DatasetParams, SyntheticSeedTakesTheFullRange) {
+  const DatasetRequest request = Request({{"frames", "1"}, {"seed", "3000000000"}});
+  EXPECT_EQ(ParseDatasetParams<SyntheticParams>("synthetic", request).seed, 3000000000ULL);
+  EXPECT_EQ(ReadSynthetic(request).front().frames.size(), 1u);
+  EXPECT_THAT(test::ErrorMessage<ConfigError>([] { ReadSynthetic(Request({{"noise", "noisy"}})); }),
+              HasSubstr("synthetic: param noise: 'noisy' is not one of"));
+  EXPECT_THAT(test::ErrorMessage<ConfigError>([] { ReadSynthetic(Request({{"camras", "3"}})); }),
+              HasSubstr("did you mean 'cameras'?"));
+}
+
+// docs/datasets.md shows the tables DatasetParamsMarkdown() generates from the readers' visits.
+TEST(DatasetParams, DocsTablesMatchTheReaders) {
+  std::ifstream file(std::string(RPT_SOURCE_DIR) + "/docs/datasets.md");
+  ASSERT_TRUE(file.good());
+  std::stringstream text;
+  text << file.rdbuf();
+  const std::string docs = text.str();
+  const std::string begin = "<!-- dataset-params:begin -->\n";
+  const std::string end = "<!-- dataset-params:end -->";
+  const size_t a = docs.find(begin);
+  const size_t b = docs.find(end);
+  ASSERT_NE(a, std::string::npos);
+  ASSERT_NE(b, std::string::npos);
+  EXPECT_EQ(docs.substr(a + begin.size(), b - a - begin.size()), DatasetParamsMarkdown())
+      << "regenerate the tables in docs/datasets.md (rpt datasets --markdown)";
+}
+
+}  // namespace
+}  // namespace rpt
