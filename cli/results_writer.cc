@@ -17,12 +17,6 @@ using Json = nlohmann::ordered_json;
 
 Json Number(double value) { return std::isfinite(value) ? Json(value) : Json(nullptr); }
 
-void WriteText(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream out(path);
-  out << text;
-  if (!out) throw InputError(path.string() + ": cannot write");
-}
-
 std::string Cell(const Json& value, int decimals = 1) {
   if (value.is_null()) return "-";
   if (value.is_number_integer()) return std::to_string(value.get<long>());
@@ -35,6 +29,20 @@ std::string Cell(const Json& value, int decimals = 1) {
 }
 
 }  // namespace
+
+void WriteText(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream out(path);
+  out << text;
+  out.flush();
+  if (!out) throw InputError(path.string() + ": cannot write");
+}
+
+std::string CsvField(const std::string& text) {
+  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (const char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
 
 const std::vector<SummaryColumn>& SummaryColumns() {
   static const std::vector<SummaryColumn> columns = {
@@ -108,7 +116,7 @@ std::string SummaryCsv(const std::vector<std::pair<std::string, Json>>& rows) {
   for (const SummaryColumn& c : SummaryColumns()) out << "," << c.key;
   out << "\n";
   for (const auto& [label, j] : rows) {
-    out << label;
+    out << CsvField(label);
     for (const SummaryColumn& c : SummaryColumns()) out << "," << (j.contains(c.key) ? Cell(j[c.key], 4) : "");
     out << "\n";
   }
@@ -213,7 +221,7 @@ void WriteEvalOutputs(const std::filesystem::path& dir, const std::vector<Sequen
   std::ostringstream joints;
   joints << "joint,mean_error_mm,pck100_pct,count,num_gt\n";
   for (const auto& row : run.metrics.joints) {
-    joints << row.name << "," << Cell(Number(row.mean_error_mm), 2) << "," << Cell(Number(row.pck_100), 2) << ","
+    joints << CsvField(row.name) << "," << Cell(Number(row.mean_error_mm), 2) << "," << Cell(Number(row.pck_100), 2) << ","
            << row.count << "," << row.num_gt << "\n";
   }
   WriteText(dir / "per_joint.csv", joints.str());

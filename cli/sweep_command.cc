@@ -107,8 +107,8 @@ std::pair<int, int> ParseShard(const std::string& text) {
 void WriteTables(const fs::path& dir, const Json& rows, const std::string& stem) {
   std::vector<std::pair<std::string, Json>> table;
   for (const Json& row : rows) table.emplace_back(row["name"].get<std::string>(), row["summary"]);
-  std::ofstream(dir / (stem + ".csv")) << SummaryCsv(table);
-  std::ofstream(dir / (stem + ".md")) << SummaryMarkdown(table);
+  WriteText(dir / (stem + ".csv"), SummaryCsv(table));
+  WriteText(dir / (stem + ".md"), SummaryMarkdown(table));
 }
 
 void RunSweep(const SweepArgs& args) {
