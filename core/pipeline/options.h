@@ -458,8 +458,8 @@ void VisitSections(Visitor& v, Self& o) {
   v("group", o.group);
   v("merge", o.merge);
   v("verify", o.verify);
-  v("single_view", o.single_view);
   v("postprocess", o.postprocess);
+  v("single_view", o.single_view);
   v("track", o.track);
   v("clip_speed", o.clip_speed);
   v("bone_lengths", o.bone_lengths);
