@@ -237,7 +237,7 @@ void VisitFields(Visitor& v, Self& o) {
 }
 
 // Step 12b (an addition, off by default): persons seen by one camera only, placed at the depth
-// their 2D limb lengths imply (lift_single_views.h).
+// their 2D limb lengths imply (single_view.h).
 struct SingleViewOptions {
   bool enabled = false;
   double min_joint_score = 0.3;       // confidence of the joints used
@@ -340,7 +340,7 @@ void VisitFields(Visitor& v, Self& o) {
 // makes the limb disagree. The joints explaining the disagreeing limbs (a wrist moved 30 cm: its
 // forearm disagrees, the elbow's upper arm does not) are marked missing and, with
 // postprocess.fill_missing_joints, filled from their neighbour like in step 12
-// (check_bone_lengths.h). Off by default until it is shown to help on real detections.
+// (bone_lengths.h). Off by default until it is shown to help on real detections.
 struct BoneLengthOptions {
   bool enabled = false;
   double tolerance_rel = 0.25;   // relative disagreement with the track's running length
@@ -458,8 +458,8 @@ void VisitSections(Visitor& v, Self& o) {
   v("group", o.group);
   v("merge", o.merge);
   v("verify", o.verify);
-  v("single_view", o.single_view);
   v("postprocess", o.postprocess);
+  v("single_view", o.single_view);
   v("track", o.track);
   v("clip_speed", o.clip_speed);
   v("bone_lengths", o.bone_lengths);

@@ -22,6 +22,23 @@ RPT_ALWAYS_INLINE double ReprojectionErrorSq(const ViewGeometry& g, const Eigen:
   return du * du + dv * dv;
 }
 
+// What both passes read of proposal k: the geometry of its two views, its two 2D poses, and
+// the index of its first joint in the per-joint arrays.
+struct ProposalViews {
+  const ViewGeometry& ga;
+  const ViewGeometry& gb;
+  const Keypoint* ka;
+  const Keypoint* kb;
+  size_t base;
+};
+
+RPT_ALWAYS_INLINE ProposalViews ViewsOf(const PreparedViews& views, std::span<const ViewGeometry> geometry,
+                                        const Proposals& proposals, int k) {
+  const PosePair& pair = proposals.pairs[k];
+  return {geometry[views.view_of[pair.a]], geometry[views.view_of[pair.b]], views.Pose(pair.a), views.Pose(pair.b),
+          static_cast<size_t>(k) * proposals.num_joints};
+}
+
 // Residual of joint i of a proposal: the mean reprojection error over both views, in metres at
 // the joint (adaptive: `scale` = 1 / focal length) or relative to the pose's box (fixed:
 // `scale` = 1 / box diagonal); implausibly large when the point is behind a camera.
@@ -134,12 +151,7 @@ int Score(const PreparedViews& views, std::span<const ViewGeometry> geometry, st
     const double skip_gap =
         use_tri ? 2.0 * std::sqrt(30.0) * KernelScaleM(options, noise->Estimate()) : std::numeric_limits<double>::infinity();
     for (int k = 0; k < proposals->size(); ++k) {
-      const PosePair& pair = proposals->pairs[k];
-      const ViewGeometry& ga = geometry[views.view_of[pair.a]];
-      const ViewGeometry& gb = geometry[views.view_of[pair.b]];
-      const Keypoint* ka = views.Pose(pair.a);
-      const Keypoint* kb = views.Pose(pair.b);
-      const size_t base = static_cast<size_t>(k) * n;
+      const auto [ga, gb, ka, kb, base] = ViewsOf(views, geometry, *proposals, k);
       const Eigen::Vector3d* xyz = proposals->xyz.data() + base;
       const double* gap = proposals->gap.data() + base;
       const double* score = proposals->score.data() + base;
@@ -175,11 +187,7 @@ int Score(const PreparedViews& views, std::span<const ViewGeometry> geometry, st
   int pruned = 0;
   for (int k = 0; k < proposals->size(); ++k) {
     const PosePair& pair = proposals->pairs[k];
-    const ViewGeometry& ga = geometry[views.view_of[pair.a]];
-    const ViewGeometry& gb = geometry[views.view_of[pair.b]];
-    const Keypoint* ka = views.Pose(pair.a);
-    const Keypoint* kb = views.Pose(pair.b);
-    const size_t base = static_cast<size_t>(k) * n;
+    const auto [ga, gb, ka, kb, base] = ViewsOf(views, geometry, *proposals, k);
     const Eigen::Vector3d* xyz = proposals->xyz.data() + base;
     const double* gap = proposals->gap.data() + base;
     const double* residual = vote ? scratch->residual.data() + base : nullptr;

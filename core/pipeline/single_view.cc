@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "core/joints.h"
+#include "core/pipeline/box_iou.h"
 
 namespace rpt {
 namespace {
@@ -30,15 +31,6 @@ constexpr std::array<TypicalLimbName, 11> kTypicalLimbs = {{
     {"hip_right", "knee_right", 0.42},
     {"knee_left", "ankle_left", 0.40},
 }};
-
-double BoxIou(const Eigen::Vector4d& a, const Eigen::Vector4d& b) {
-  const double w = std::min(a[2], b[2]) - std::max(a[0], b[0]);
-  const double h = std::min(a[3], b[3]) - std::max(a[1], b[1]);
-  if (w <= 0 || h <= 0) return 0.0;
-  const double inter = w * h;
-  const double area_a = (a[2] - a[0]) * (a[3] - a[1]), area_b = (b[2] - b[0]) * (b[3] - b[1]);
-  return inter / std::max(area_a + area_b - inter, 1e-12);
-}
 
 // Centre of the valid core joints; false when none is valid.
 bool Center(const Eigen::Ref<const Eigen::Matrix4Xd>& person, std::span<const int> core_joints, Eigen::Vector3d* center) {

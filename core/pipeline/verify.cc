@@ -5,17 +5,10 @@
 #include <cmath>
 #include <limits>
 
+#include "core/pipeline/box_iou.h"
+
 namespace rpt {
 namespace {
-
-double BoxIou(const Eigen::Vector4d& a, const Eigen::Vector4d& b) {
-  const double w = std::min(a[2], b[2]) - std::max(a[0], b[0]);
-  const double h = std::min(a[3], b[3]) - std::max(a[1], b[1]);
-  if (w <= 0 || h <= 0) return 0.0;
-  const double inter = w * h;
-  const double area_a = (a[2] - a[0]) * (a[3] - a[1]), area_b = (b[2] - b[0]) * (b[3] - b[1]);
-  return inter / std::max(area_a + area_b - inter, 1e-12);
-}
 
 // Median of values[0..n) (reorders them); +inf for none.
 double Median(double* values, int n) {

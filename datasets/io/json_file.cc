@@ -179,4 +179,15 @@ std::vector<std::string> JsonObjectKeysNumericOrder(const nlohmann::json& object
   return keys;
 }
 
+void ForEachJsonCamera(const nlohmann::json& root, const std::string& source, const std::string& members,
+                       const std::function<void(const std::string& id, const std::string& pointer)>& per_camera) {
+  if (!root.is_object()) throw InputError(source + ": expected an object keyed by camera id");
+  if (root.empty()) throw InputError(source + ": no cameras");
+  for (const std::string& id : JsonObjectKeysNumericOrder(root)) {
+    const std::string pointer = JsonPointerJoin("", id);
+    if (!root.at(id).is_object()) throw InputError(source + ": " + pointer + ": expected an object with " + members);
+    per_camera(id, pointer);
+  }
+}
+
 }  // namespace rpt::io

@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <limits>
 #include <string>
 #include <string_view>
@@ -48,5 +49,10 @@ std::vector<double> JsonMatrix(const nlohmann::json& root, const std::string& po
 // The keys of a JSON object (calibration files keyed by camera id) in the order nlohmann stores
 // them (lexicographic), re-sorted numerically when every key is a small non-negative integer.
 std::vector<std::string> JsonObjectKeysNumericOrder(const nlohmann::json& object);
+// Calls per_camera(id, pointer) for each member of a calibration file keyed by camera id, in the
+// order of JsonObjectKeysNumericOrder. Throws InputError naming `source` when root is not a
+// non-empty object or a member is not an object; `members` says what a member holds ("R, T, fx").
+void ForEachJsonCamera(const nlohmann::json& root, const std::string& source, const std::string& members,
+                       const std::function<void(const std::string& id, const std::string& pointer)>& per_camera);
 
 }  // namespace rpt::io

@@ -155,42 +155,27 @@ const char* PyKindName(PyKind kind) {
   return "?";
 }
 
+namespace {
+
+// A new value of `kind` whose `field` holds `value`.
+template <class T>
+PyValuePtr MakeWith(PyKind kind, T PyValue::*field, T value) {
+  auto v = std::make_shared<PyValue>();
+  v->kind = kind;
+  (*v).*field = std::move(value);
+  return v;
+}
+
+}  // namespace
+
 PyValuePtr MakeNone() { return std::make_shared<PyValue>(); }
-PyValuePtr MakeBool(bool value) {
-  auto v = std::make_shared<PyValue>();
-  v->kind = PyKind::kBool;
-  v->bool_value = value;
-  return v;
-}
-PyValuePtr MakeInt(std::int64_t value) {
-  auto v = std::make_shared<PyValue>();
-  v->kind = PyKind::kInt;
-  v->int_value = value;
-  return v;
-}
-PyValuePtr MakeFloat(double value) {
-  auto v = std::make_shared<PyValue>();
-  v->kind = PyKind::kFloat;
-  v->float_value = value;
-  return v;
-}
-PyValuePtr MakeStr(std::string value) {
-  auto v = std::make_shared<PyValue>();
-  v->kind = PyKind::kStr;
-  v->text = std::move(value);
-  return v;
-}
-PyValuePtr MakeBytes(std::string value) {
-  auto v = std::make_shared<PyValue>();
-  v->kind = PyKind::kBytes;
-  v->text = std::move(value);
-  return v;
-}
+PyValuePtr MakeBool(bool value) { return MakeWith(PyKind::kBool, &PyValue::bool_value, value); }
+PyValuePtr MakeInt(std::int64_t value) { return MakeWith(PyKind::kInt, &PyValue::int_value, value); }
+PyValuePtr MakeFloat(double value) { return MakeWith(PyKind::kFloat, &PyValue::float_value, value); }
+PyValuePtr MakeStr(std::string value) { return MakeWith(PyKind::kStr, &PyValue::text, std::move(value)); }
+PyValuePtr MakeBytes(std::string value) { return MakeWith(PyKind::kBytes, &PyValue::text, std::move(value)); }
 PyValuePtr MakeTuple(std::vector<PyValuePtr> items) {
-  auto v = std::make_shared<PyValue>();
-  v->kind = PyKind::kTuple;
-  v->items = std::move(items);
-  return v;
+  return MakeWith(PyKind::kTuple, &PyValue::items, std::move(items));
 }
 PyValuePtr MakeStrTuple(std::initializer_list<std::string_view> items) {
   std::vector<PyValuePtr> values;

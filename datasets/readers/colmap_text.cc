@@ -33,6 +33,37 @@ std::string Trim(const std::string& line) {
 
 std::string Where(const std::string& source, int line) { return source + ":" + std::to_string(line); }
 
+// The lines of a COLMAP text file, numbered for error messages; Next() skips blank lines and
+// '#' comments.
+class NumberedLines {
+ public:
+  NumberedLines(std::istream& in, const std::string& source) : in_(in), source_(source) {}
+
+  // The next data line, trimmed; false at the end of the input.
+  bool Next(std::string* line) {
+    std::string raw;
+    while (NextRaw(&raw)) {
+      *line = Trim(raw);
+      if (!line->empty() && (*line)[0] != '#') return true;
+    }
+    return false;
+  }
+  // The next line as it is (even when blank); false at the end of the input.
+  bool NextRaw(std::string* raw) {
+    if (!std::getline(in_, *raw)) return false;
+    ++number_;
+    return true;
+  }
+  int number() const { return number_; }
+  // "file:line" of the line read last.
+  std::string Where() const { return rpt::Where(source_, number_); }
+
+ private:
+  std::istream& in_;
+  const std::string& source_;
+  int number_ = 0;
+};
+
 double ParseDouble(const std::string& token, const std::string& what, const std::string& where) {
   double value = 0;
   if (!io::ParseNumber(token, &value)) throw InputError(where + ": " + what + " '" + token + "' is not a number");
@@ -57,17 +88,14 @@ std::ifstream OpenOrThrow(const std::filesystem::path& path) {
 std::vector<ColmapCamera> ParseColmapCamerasText(std::istream& in, const std::string& source) {
   std::vector<ColmapCamera> out;
   std::set<int> ids;
-  std::string raw;
-  int line_number = 0;
-  while (std::getline(in, raw)) {
-    ++line_number;
-    const std::string line = Trim(raw);
-    if (line.empty() || line[0] == '#') continue;
-    const std::string where = Where(source, line_number);
+  NumberedLines lines(in, source);
+  std::string line;
+  while (lines.Next(&line)) {
+    const std::string where = lines.Where();
     const auto tokens = Tokens(line);
     if (tokens.size() < 4) throw InputError(where + ": expected CAMERA_ID MODEL WIDTH HEIGHT PARAMS...");
     ColmapCamera camera;
-    camera.line = line_number;
+    camera.line = lines.number();
     camera.camera_id = ParseInt(tokens[0], "CAMERA_ID", where);
     camera.model = tokens[1];
     camera.width = ParseInt(tokens[2], "WIDTH", where);
@@ -85,17 +113,14 @@ std::vector<ColmapCamera> ParseColmapCamerasText(std::istream& in, const std::st
 std::vector<ColmapImage> ParseColmapImagesText(std::istream& in, const std::string& source, InputWarnings* warnings) {
   std::vector<ColmapImage> out;
   std::set<int> ids;
-  std::string raw;
-  int line_number = 0;
-  while (std::getline(in, raw)) {
-    ++line_number;
-    const std::string line = Trim(raw);
-    if (line.empty() || line[0] == '#') continue;
-    const std::string where = Where(source, line_number);
+  NumberedLines lines(in, source);
+  std::string line;
+  while (lines.Next(&line)) {
+    const std::string where = lines.Where();
     const auto tokens = Tokens(line);
     if (tokens.size() < 10) throw InputError(where + ": expected IMAGE_ID QW QX QY QZ TX TY TZ CAMERA_ID NAME");
     ColmapImage image;
-    image.line = line_number;
+    image.line = lines.number();
     image.image_id = ParseInt(tokens[0], "IMAGE_ID", where);
     for (int i = 0; i < 4; ++i) image.qvec_wxyz[i] = ParseDouble(tokens[1 + static_cast<std::size_t>(i)], "quaternion", where);
     for (int i = 0; i < 3; ++i) image.tvec[i] = ParseDouble(tokens[5 + static_cast<std::size_t>(i)], "translation", where);
@@ -111,10 +136,9 @@ std::vector<ColmapImage> ParseColmapImagesText(std::istream& in, const std::stri
     if (!ids.insert(image.image_id).second) throw InputError(where + ": duplicate IMAGE_ID " + tokens[0]);
     out.push_back(std::move(image));
     // The POINTS2D line always follows (possibly empty): (X, Y, POINT3D_ID) triples.
-    if (std::getline(in, raw)) {
-      ++line_number;
+    if (std::string raw; lines.NextRaw(&raw)) {
       if (Tokens(raw).size() % 3 != 0) {
-        throw InputError(Where(source, line_number) + ": expected the POINTS2D line of image " + tokens[0] +
+        throw InputError(lines.Where() + ": expected the POINTS2D line of image " + tokens[0] +
                          " (X Y POINT3D_ID triples)");
       }
     }

@@ -40,13 +40,8 @@ int ImageSide(double value, const std::string& where) {
 std::vector<Camera> ReadFourDaCalibration(const std::filesystem::path& path, InputWarnings* warnings) {
   const nlohmann::json root = io::LoadJsonFile(path);
   const std::string source = path.string();
-  if (!root.is_object()) throw InputError(source + ": expected an object keyed by camera id");
-  if (root.empty()) throw InputError(source + ": no cameras");
-
   std::vector<Camera> cameras;
-  for (const std::string& id : io::JsonObjectKeysNumericOrder(root)) {
-    const std::string base = io::JsonPointerJoin("", id);
-    if (!root.at(id).is_object()) throw InputError(source + ": " + base + ": expected an object with K, RT, imgSize");
+  io::ForEachJsonCamera(root, source, "K, RT, imgSize", [&](const std::string& id, const std::string& base) {
     Camera camera;
     camera.name = id;
     camera.K = RowMajor3x3(io::JsonNumbers(root, base + "/K", source, 9).data());
@@ -84,7 +79,7 @@ std::vector<Camera> ReadFourDaCalibration(const std::filesystem::path& path, Inp
       throw InputError(source + ": " + base + ": " + error);  // error names the camera
     }
     cameras.push_back(std::move(camera));
-  }
+  });
   return cameras;
 }
 

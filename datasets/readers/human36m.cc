@@ -212,10 +212,10 @@ AnnotRows ReadAnnot(const std::filesystem::path& path) {
     const double cam = camera[r];
     const std::string cam_text = std::isfinite(cam) ? std::to_string(static_cast<long long>(cam)) : "nan";
     const int index = cam == std::floor(cam) ? h36m_ego::H36mCameraIndex(cam_text) : -1;
-    if (index < 0) throw InputError(source + ": dataset 'camera' row " + std::to_string(r) + ": unknown camera id " + cam_text);
+    if (index < 0) throw InputError(source + ": camera: row " + std::to_string(r) + ": unknown camera id " + cam_text);
     const double f = frame[r];
     if (!std::isfinite(f) || f < 1 || f != std::floor(f)) {
-      throw InputError(source + ": dataset 'frame' row " + std::to_string(r) + ": expected a 1-based frame number");
+      throw InputError(source + ": frame: row " + std::to_string(r) + ": expected a 1-based frame number");
     }
     rows.by_frame[static_cast<long long>(f)].emplace_back(index, r);
   }
@@ -239,7 +239,7 @@ Eigen::Matrix<double, 3, 17> AnnotRowToWorld(const AnnotRows& rows, std::size_t 
     const double* p = &rows.pose[(row * 32 + static_cast<std::size_t>(kRawIndices[static_cast<std::size_t>(j)])) * 3];
     const Eigen::Vector3d x_cam_m(p[0] / 1000.0, p[1] / 1000.0, p[2] / 1000.0);
     if (!x_cam_m.allFinite()) {
-      throw InputError(source + ": dataset 'pose/3d' row " + std::to_string(row) + " joint " +
+      throw InputError(source + ": pose/3d: row " + std::to_string(row) + " joint " +
                        std::to_string(kRawIndices[static_cast<std::size_t>(j)]) + ": NaN or infinite coordinate");
     }
     out.col(j) = camera.R.transpose() * (x_cam_m - camera.t);

@@ -28,15 +28,8 @@ std::vector<Camera> ReadVoxelPoseCalibration(const std::filesystem::path& path, 
                                              InputWarnings* warnings) {
   const nlohmann::json root = io::LoadJsonFile(path);
   const std::string source = path.string();
-  if (!root.is_object()) throw InputError(source + ": expected an object keyed by camera id");
-  if (root.empty()) throw InputError(source + ": no cameras");
-
   std::vector<Camera> cameras;
-  for (const std::string& id : io::JsonObjectKeysNumericOrder(root)) {
-    const std::string base = io::JsonPointerJoin("", id);
-    if (!root.at(id).is_object()) {
-      throw InputError(source + ": " + base + ": expected an object with R, T, fx, fy, cx, cy");
-    }
+  io::ForEachJsonCamera(root, source, "R, T, fx, fy, cx, cy", [&](const std::string& id, const std::string& base) {
     const Eigen::Matrix3d R_file = RowMajor3x3(io::JsonMatrix(root, base + "/R", source, 3, 3));
     const std::vector<double> center_mm = io::JsonMatrix(root, base + "/T", source, 3, 1);
     const Eigen::Matrix3d R = AcceptRotation(R_file, source, source + ": " + base + "/R", warnings);
@@ -60,7 +53,7 @@ std::vector<Camera> ReadVoxelPoseCalibration(const std::filesystem::path& path, 
       throw InputError(source + ": " + base + ": " + error);  // error names the camera
     }
     cameras.push_back(std::move(camera));
-  }
+  });
   return cameras;
 }
 

@@ -2,6 +2,7 @@
 // Tests of the detector profiles and the fitted detector model: the clean profile is the pre-fit
 // model bit for bit, the fitted model is deterministic, reproduces the statistics measured on
 // real detections, and its parts (occluders, skeleton offsets, calibration error) do what they say.
+// Over 500 lines on purpose: the fitted model is one unit; its parts are tested against each other.
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>

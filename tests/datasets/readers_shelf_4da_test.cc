@@ -2,6 +2,8 @@
 // The 4D-Association Shelf reader: the real bundle in shared/data/shelf/4d_association (skipped
 // when absent; never copied into the project) and small files of the same grammar written by the
 // tests (hand-made numbers, nothing derived from the bundle).
+// Over 500 lines on purpose: one file for the one reader, its real-data checks beside the
+// small-file cases they explain.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 

@@ -4,6 +4,7 @@
 // with it.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -13,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "core/pipeline/options.h"
 #include "core/pipeline/steps.h"
 
 namespace rpt {
@@ -119,6 +121,22 @@ TEST(StepTable, DocsHeadingsAgree) {
     EXPECT_TRUE(numbers.count(number)) << "docs/algorithm.md: heading '" << number << ". " << title
                                        << "' names no step of core/pipeline/steps.h";
   }
+}
+
+// The options sections (config files, `rpt config --dump`, docs/options.md) come in the order the
+// steps that read them run.
+TEST(StepTable, OptionsSectionsFollowTheStepOrder) {
+  std::vector<std::string> from_steps;
+  for (const StepInfo& step : kAllSteps) {
+    const std::string section(step.section);
+    if (section.empty()) continue;
+    if (std::find(from_steps.begin(), from_steps.end(), section) == from_steps.end()) from_steps.push_back(section);
+  }
+  std::vector<std::string> visited;
+  auto visitor = [&visited](const char* name, const auto&) { visited.emplace_back(name); };
+  const TriangulatorOptions options;
+  VisitSections(visitor, options);
+  EXPECT_EQ(visited, from_steps);
 }
 
 }  // namespace
