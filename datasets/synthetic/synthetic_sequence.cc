@@ -45,9 +45,7 @@ Sequence MakeSyntheticSequence(const Scene& scene, const DetectorOptions& detect
 
 SyntheticSource::SyntheticSource(const SceneOptions& options, const DetectorOptions& detector, uint64_t seed,
                                  const std::string& name)
-    : scene_(options),
-      header_(HeaderOf(scene_.shell(), name)),
-      detector_(detector, scene_.shell().joint_names, seed) {}
+    : scene_(options), header_(HeaderOf(scene_.shell(), name)), detector_(detector, scene_.shell().joint_names, seed) {}
 
 bool SyntheticSource::Next(SequenceFrame* frame) {
   if (!scene_.Next(&frame->gt)) return false;
