@@ -5,6 +5,7 @@
 #include <atomic>
 #include <chrono>
 #include <exception>
+#include <functional>
 #include <mutex>
 
 #ifdef _OPENMP
@@ -20,26 +21,36 @@
 namespace rpt::cli {
 namespace {
 
-TriangulatedSequence Triangulate(const Sequence& sequence, const RunOptions& options, std::atomic<long>* frames_done,
-                                 Progress* progress) {
+// Triangulates the frames `next_frame` hands out (nullptr after the last) of a sequence with
+// header `header`, keeping only the predictions (and per frame a timestamp and a count for the
+// offline smoothing): the frames themselves belong to the caller. `num_frames`: how many frames
+// to reserve room for (-1 = unknown).
+TriangulatedSequence Triangulate(const SequenceHeader& header, long num_frames,
+                                 const std::function<const SequenceFrame*()>& next_frame, const RunOptions& options,
+                                 const FrameVisitor& on_frame, std::atomic<long>* frames_done, Progress* progress) {
   TriangulatorOptions tri_options = options.triangulator;
-  UseDatasetRoomIfUnset(sequence.room.center_m, sequence.room.size_m, &tri_options.room_check);
-  Triangulator triangulator(sequence.cameras, sequence.detection_joints, tri_options);
+  UseDatasetRoomIfUnset(header.room.center_m, header.room.size_m, &tri_options.room_check);
+  Triangulator triangulator(header.cameras, header.detection_joints, tri_options);
   TriangulatedSequence out;
   out.output_joints = triangulator.output_joints();
   out.timing = metrics::TimingAccumulator(options.warmup_frames);
-  out.predictions.resize(sequence.frames.size());
   FrameStats stats;
-  const std::vector<Poses2D> no_views(sequence.cameras.size());
-  std::vector<double> timestamps_s(sequence.frames.size());
-  std::vector<int> num_detected(sequence.frames.size());
-  for (size_t f = 0; f < sequence.frames.size(); ++f) {
-    const SequenceFrame& frame = sequence.frames[f];
-    triangulator.Process(frame.views.empty() ? no_views : frame.views, frame.timestamp_s, &out.predictions[f], &stats);
+  const std::vector<Poses2D> no_views(header.cameras.size());
+  std::vector<double> timestamps_s;
+  std::vector<int> num_detected;
+  if (num_frames > 0) {
+    out.predictions.reserve(static_cast<size_t>(num_frames));
+    timestamps_s.reserve(static_cast<size_t>(num_frames));
+    num_detected.reserve(static_cast<size_t>(num_frames));
+  }
+  while (const SequenceFrame* frame = next_frame()) {
+    Poses3D& prediction = out.predictions.emplace_back();
+    triangulator.Process(frame->views.empty() ? no_views : frame->views, frame->timestamp_s, &prediction, &stats);
     out.timing.Add(stats);
     out.counts.Add(stats);
-    timestamps_s[f] = frame.timestamp_s;
-    num_detected[f] = out.predictions[f].num_persons() - stats.coasting_tracks;
+    timestamps_s.push_back(frame->timestamp_s);
+    num_detected.push_back(prediction.num_persons() - stats.coasting_tracks);
+    if (on_frame) on_frame(*frame, prediction);
     const long done = ++*frames_done;
     if (progress != nullptr) progress->Update(done);
   }
@@ -49,6 +60,17 @@ TriangulatedSequence Triangulate(const Sequence& sequence, const RunOptions& opt
                   num_detected, &out.predictions);
   }
   return out;
+}
+
+// The frames of a materialised sequence, in place.
+TriangulatedSequence Triangulate(const Sequence& sequence, const RunOptions& options, std::atomic<long>* frames_done,
+                                 Progress* progress) {
+  size_t f = 0;
+  const auto next_frame = [&]() -> const SequenceFrame* {
+    return f < sequence.frames.size() ? &sequence.frames[f++] : nullptr;
+  };
+  return Triangulate(sequence, static_cast<long>(sequence.frames.size()), next_frame, options, {}, frames_done,
+                     progress);
 }
 
 }  // namespace
@@ -69,6 +91,13 @@ metrics::EvalOptions EvalOptionsFor(const std::vector<Sequence>& sequences, cons
 TriangulatedSequence TriangulateSequence(const Sequence& sequence, const RunOptions& options) {
   std::atomic<long> done{0};
   return Triangulate(sequence, options, &done, nullptr);
+}
+
+TriangulatedSequence TriangulateSource(FrameSource& source, const RunOptions& options, const FrameVisitor& on_frame) {
+  SequenceFrame buffer;  // the one input frame alive: each Next overwrites it
+  const auto next_frame = [&]() -> const SequenceFrame* { return source.Next(&buffer) ? &buffer : nullptr; };
+  std::atomic<long> done{0};
+  return Triangulate(source.header(), source.num_frames(), next_frame, options, on_frame, &done, nullptr);
 }
 
 RunResult RunSequences(const std::vector<Sequence>& sequences, const RunOptions& options) {

@@ -5,10 +5,12 @@
 // depend on the thread count.
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include "core/pipeline/options.h"
 #include "core/poses.h"
+#include "datasets/frame_source.h"
 #include "datasets/sequence.h"
 #include "metrics/accumulator.h"
 #include "metrics/eval_options.h"
@@ -52,6 +54,17 @@ metrics::EvalOptions EvalOptionsFor(const std::vector<Sequence>& sequences, cons
 
 // Triangulates every frame of one sequence (single thread). Throws ConfigError/InputError.
 TriangulatedSequence TriangulateSequence(const Sequence& sequence, const RunOptions& options);
+
+// Sees one input frame and its prediction (before smoothing.mode = offline smoothing, which
+// needs the whole sequence), before the next frame is pulled.
+using FrameVisitor = std::function<void(const SequenceFrame& frame, const Poses3D& prediction)>;
+
+// Triangulates the frames of `source` as they are pulled (single thread): one input frame is
+// alive at a time, only the predictions are kept, so memory is flat in the number of input
+// frames apart from the predictions. Gives the same predictions as TriangulateSequence on the
+// materialised sequence. Throws ConfigError/InputError.
+TriangulatedSequence TriangulateSource(FrameSource& source, const RunOptions& options,
+                                       const FrameVisitor& on_frame = {});
 
 // Triangulates all sequences (in parallel) and evaluates them together.
 RunResult RunSequences(const std::vector<Sequence>& sequences, const RunOptions& options);

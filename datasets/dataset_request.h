@@ -4,12 +4,20 @@
 // Every reader is a pair of functions (datasets/readers/<name>.h):
 //   DatasetInfo <Name>Info();
 //   std::vector<Sequence> Read<Name>(const DatasetRequest& request);
+// and, where the format can be walked frame by frame, a third:
+//   std::vector<std::unique_ptr<FrameSource>> Stream<Name>Dataset(const DatasetRequest& request);
+// registered beside the other two (datasets/registry.cc). A FrameSource (datasets/frame_source.h)
+// announces the SequenceHeader (name, cameras, joint names, room, fps) and then hands out one
+// frame per Next() into the caller's buffer: memory flat in the number of frames. Read<Name> of a
+// streaming reader is the same frames materialised (Materialize), so both give the same numbers.
+// StreamDataset (registry.h) gives every dataset as sources: the loaded sequences of readers that
+// do not stream go behind SequenceSource. Which readers stream and why the others load whole:
+// docs/datasets.md, "Streaming".
 // and a <Name>Params struct with VisitFields: the reader parses request.params into it once
 // (ParseDatasetParams, datasets/dataset_params.h) and <Name>Info() lists it (DescribeDatasetParams).
 // Read<Name> walks the data once and returns the sequences with their ground truth and, when a
 // detections parameter asks for the dataset's own 2D (e.g. detections=voxelpose, =cache,
-// =annotations), the frames' views filled in the same walk. Readers load whole sequences into
-// memory (no reader streams frame by frame yet).
+// =annotations), the frames' views filled in the same walk.
 // Readers convert everything to metres in a z-up world frame where the dataset allows it, name
 // joints like core/joints.h (nose, shoulder_left, ...; dataset-specific extras such as
 // head_top), and set frame ids "<dataset>[_<sequence>]_<frame number, 6 digits>".

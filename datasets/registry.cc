@@ -26,7 +26,7 @@ const std::vector<DatasetEntry>& DatasetRegistry() {
       {EgohumansInfo(), ReadEgohumans},
       {MvorInfo(), ReadMvor},
       {GenericInfo(), ReadGeneric},
-      {SyntheticInfo(), ReadSynthetic},
+      {SyntheticInfo(), ReadSynthetic, StreamSyntheticDataset},
   };
   return entries;
 }
@@ -49,13 +49,24 @@ std::string DatasetParamsMarkdown() {
   return out;
 }
 
-std::vector<Sequence> ReadDataset(const DatasetRequest& request) {
+namespace {
+
+const DatasetEntry& FindDataset(const std::string& name) {
   std::string known;
   for (const DatasetEntry& entry : DatasetRegistry()) {
-    if (entry.info.name == request.dataset) return entry.read(request);
+    if (entry.info.name == name) return entry;
     AppendItem(&known, entry.info.name);
   }
-  throw ConfigError("unknown dataset '" + request.dataset + "' (known: " + known + "; see `rpt datasets`)");
+  throw ConfigError("unknown dataset '" + name + "' (known: " + known + "; see `rpt datasets`)");
+}
+
+}  // namespace
+
+std::vector<Sequence> ReadDataset(const DatasetRequest& request) { return FindDataset(request.dataset).read(request); }
+
+std::vector<std::unique_ptr<FrameSource>> StreamDataset(const DatasetRequest& request) {
+  const DatasetEntry& entry = FindDataset(request.dataset);
+  return entry.stream ? entry.stream(request) : SourcesOf(entry.read(request));
 }
 
 }  // namespace rpt

@@ -44,7 +44,9 @@ struct SequenceFrame {
   std::vector<std::vector<PersonLabel2D>> labels_2d;
 };
 
-struct Sequence {
+// What a sequence is, without its frames: what a FrameSource (datasets/frame_source.h) announces
+// before its first frame.
+struct SequenceHeader {
   std::string name;                 // e.g. "shelf", "panoptic/160906_band1"
   std::vector<Camera> cameras;
   JointNames gt_joints;             // joint names of SequenceFrame::gt
@@ -52,6 +54,10 @@ struct Sequence {
   JointNames evaluated_joints;      // the dataset's evaluated joints; empty = the paper's 13
   Room room;
   double fps = 0;
+};
+
+// A sequence with all its frames in memory.
+struct Sequence : SequenceHeader {
   std::vector<SequenceFrame> frames;
   InputWarnings warnings;           // corrections the reader applied (one line per file and kind)
 };

@@ -40,7 +40,7 @@ std::vector<Sequence> ReadSynthetic(const DatasetRequest& request) {
   return MakeSyntheticDataset(ParseDatasetParams<SyntheticParams>(kName, request));
 }
 
-std::vector<Sequence> MakeSyntheticDataset(const SyntheticParams& params) {
+std::unique_ptr<FrameSource> StreamSynthetic(const SyntheticParams& params) {
   std::vector<std::string> profiles = synthetic::DetectorProfileNames();
   profiles.push_back("none");
   if (std::find(profiles.begin(), profiles.end(), params.noise) == profiles.end()) {
@@ -55,9 +55,20 @@ std::vector<Sequence> MakeSyntheticDataset(const SyntheticParams& params) {
   options.rig.layout = params.layout;
   options.rig.distortion = ToDistortionModel(params.distortion);
   options.seed = params.seed;
-  const synthetic::Scene scene = synthetic::GenerateScene(options);
-  const synthetic::DetectorOptions detector = synthetic::DetectorProfile(params.noise);
-  return {synthetic::MakeSyntheticSequence(scene, detector, options.seed, kName)};
+  return std::make_unique<synthetic::SyntheticSource>(options, synthetic::DetectorProfile(params.noise), options.seed,
+                                                      kName);
+}
+
+std::vector<std::unique_ptr<FrameSource>> StreamSyntheticDataset(const DatasetRequest& request) {
+  std::vector<std::unique_ptr<FrameSource>> sources;
+  sources.push_back(StreamSynthetic(ParseDatasetParams<SyntheticParams>(kName, request)));
+  return sources;
+}
+
+std::vector<Sequence> MakeSyntheticDataset(const SyntheticParams& params) {
+  std::vector<Sequence> sequences;
+  sequences.push_back(Materialize(*StreamSynthetic(params)));
+  return sequences;
 }
 
 }  // namespace rpt

@@ -3,10 +3,12 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "datasets/dataset_params.h"
+#include "datasets/frame_source.h"
 #include "datasets/sequence.h"
 #include "datasets/synthetic/camera_rig.h"
 
@@ -62,5 +64,9 @@ DatasetInfo SyntheticInfo();
 std::vector<Sequence> ReadSynthetic(const DatasetRequest& request);
 // The same from parsed parameters (what `rpt demo` calls).
 std::vector<Sequence> MakeSyntheticDataset(const SyntheticParams& params);
+// The one synthetic sequence streamed: frames are generated when pulled (memory flat in the
+// number of frames; the same numbers as MakeSyntheticDataset).
+std::unique_ptr<FrameSource> StreamSynthetic(const SyntheticParams& params);
+std::vector<std::unique_ptr<FrameSource>> StreamSyntheticDataset(const DatasetRequest& request);
 
 }  // namespace rpt

@@ -23,14 +23,14 @@ constexpr double kWallMargin = 0.65;
 constexpr double kWaypointMargin = 1.0;
 // Steering keeps this much more than the minimum separation when it can.
 constexpr double kComfortExtra = 0.35;
-constexpr double kLookahead = 1.0;       // m, free path wanted ahead
-constexpr int kSteerSteps = 16;          // candidate directions per half turn
+constexpr double kLookahead = 1.0;        // m, free path wanted ahead
+constexpr int kSteerSteps = 16;           // candidate directions per half turn
 constexpr double kWaitProbability = 0.2;  // chance of standing still at a waypoint
-constexpr double kTurnRate = 3.0;        // rad/s
-constexpr double kAcceleration = 1.5;    // m/s^2
-constexpr double kDeceleration = 3.0;    // m/s^2
-constexpr double kArrivalRadius = 0.3;   // m
-constexpr double kBlockedTimeout = 2.0;  // s, then a new waypoint
+constexpr double kTurnRate = 3.0;         // rad/s
+constexpr double kAcceleration = 1.5;     // m/s^2
+constexpr double kDeceleration = 3.0;     // m/s^2
+constexpr double kArrivalRadius = 0.3;    // m
+constexpr double kBlockedTimeout = 2.0;   // s, then a new waypoint
 
 struct Box2 {
   Vector2d lo, hi;
@@ -82,53 +82,129 @@ Vector2d SampleWaypoint(Rng& rng, const Box2& area, const Vector2d& from, double
 
 Vector2d Direction(double angle) { return Vector2d(std::cos(angle), std::sin(angle)); }
 
-// Multi-agent walk: waypoints, steering around others, waiting, standing still.
-std::vector<Path> SimulateWalks(const SceneOptions& options, Rng& rng) {
-  const int n = options.num_people;
-  const double dt = 1.0 / options.fps;
-  const Box2 walk = ShrunkRoom(options.room_center_m, options.room_size_m, kWallMargin);
-  const double half_min = std::min(options.room_size_m.x(), options.room_size_m.y()) * 0.5;
-  const Box2 waypoints = ShrunkRoom(options.room_center_m, options.room_size_m,
-                                    std::min(kWaypointMargin, std::max(kWallMargin, half_min - 0.5)));
-  const double min_sep = options.min_separation_m;
-  const double comfort = min_sep + kComfortExtra;
-
-  // Initial placement: rejection sampling, generous spacing first.
-  std::vector<Agent> agents(n);
-  for (double spacing : {min_sep + 0.5, min_sep + 1e-3}) {
-    bool placed_all = true;
-    for (int i = 0; i < n && placed_all; ++i) {
-      bool placed = false;
-      for (int attempt = 0; attempt < 5000 && !placed; ++attempt) {
-        agents[i].position = walk.Sample(rng);
-        placed = std::all_of(agents.begin(), agents.begin() + i,
-                             [&](const Agent& other) { return (other.position - agents[i].position).norm() >= spacing; });
+// Multi-agent walk: waypoints, steering around others, waiting, standing still. The agents'
+// positions and headings are the path of the current frame; Step() advances them by one frame.
+// Memory does not depend on the number of frames (the scene streams; SceneStream).
+class Walkers {
+ public:
+  Walkers(const SceneOptions& options, uint64_t seed)
+      : rng(seed),
+        n(options.num_people),
+        dt(1.0 / options.fps),
+        walk(ShrunkRoom(options.room_center_m, options.room_size_m, kWallMargin)),
+        waypoints(ShrunkRoom(
+            options.room_center_m, options.room_size_m,
+            std::min(kWaypointMargin,
+                     std::max(kWallMargin, std::min(options.room_size_m.x(), options.room_size_m.y()) * 0.5 - 0.5)))),
+        min_sep(options.min_separation_m),
+        comfort(options.min_separation_m + kComfortExtra),
+        agents(options.num_people) {
+    // Initial placement: rejection sampling, generous spacing first.
+    for (double spacing : {min_sep + 0.5, min_sep + 1e-3}) {
+      bool placed_all = true;
+      for (int i = 0; i < n && placed_all; ++i) {
+        bool placed = false;
+        for (int attempt = 0; attempt < 5000 && !placed; ++attempt) {
+          agents[i].position = walk.Sample(rng);
+          placed = std::all_of(agents.begin(), agents.begin() + i, [&](const Agent& other) {
+            return (other.position - agents[i].position).norm() >= spacing;
+          });
+        }
+        placed_all = placed;
       }
-      placed_all = placed;
+      if (placed_all) break;
+      if (spacing < min_sep + 0.1) {
+        throw ConfigError("synthetic scene: cannot place " + std::to_string(n) + " people " + std::to_string(min_sep) +
+                          " m apart in the room");
+      }
     }
-    if (placed_all) break;
-    if (spacing < min_sep + 0.1) {
-      throw ConfigError("synthetic scene: cannot place " + std::to_string(n) + " people " + std::to_string(min_sep) +
-                        " m apart in the room");
-    }
-  }
-  for (Agent& agent : agents) {
-    agent.preferred_speed = rng.Uniform(0.6, 1.5);
-    agent.heading = rng.Uniform(-kPi, kPi);
-    agent.waypoint = SampleWaypoint(rng, waypoints, agent.position, agent.heading);
-    agent.heading = std::atan2(agent.waypoint.y() - agent.position.y(), agent.waypoint.x() - agent.position.x()) +
-                    rng.Normal(0.0, 0.2);
-    if (rng.Bernoulli(0.2)) {
-      agent.wait_s = rng.Uniform(0.5, 3.0);
-    } else {
-      agent.speed = agent.preferred_speed;
+    for (Agent& agent : agents) {
+      agent.preferred_speed = rng.Uniform(0.6, 1.5);
+      agent.heading = rng.Uniform(-kPi, kPi);
+      agent.waypoint = SampleWaypoint(rng, waypoints, agent.position, agent.heading);
+      agent.heading = std::atan2(agent.waypoint.y() - agent.position.y(), agent.waypoint.x() - agent.position.x()) +
+                      rng.Normal(0.0, 0.2);
+      if (rng.Bernoulli(0.2)) {
+        agent.wait_s = rng.Uniform(0.5, 3.0);
+      } else {
+        agent.speed = agent.preferred_speed;
+      }
     }
   }
 
+  const std::vector<Agent>& Agents() const { return agents; }
+
+  void Step() {
+    for (int i = 0; i < n; ++i) {
+      Agent& agent = agents[i];
+      double target_speed = 0.0;
+      double desired_heading = agent.heading;
+      if (agent.wait_s > 0.0) {
+        agent.wait_s -= dt;
+      } else {
+        const Vector2d to_waypoint = agent.waypoint - agent.position;
+        const double distance = to_waypoint.norm();
+        if (distance < kArrivalRadius) {
+          if (rng.Bernoulli(kWaitProbability)) agent.wait_s = rng.Uniform(0.8, 3.0);
+          agent.waypoint = SampleWaypoint(rng, waypoints, agent.position, agent.heading);
+        }
+        const Vector2d goal = agent.waypoint - agent.position;
+        const double goal_heading = std::atan2(goal.y(), goal.x());
+        const double lookahead = std::min(kLookahead, goal.norm());
+        // Steering: the smallest deviation from the goal direction, penalising intrusion into
+        // the others' comfort zones; right turns win ties (people pass on the right).
+        double best_cost = std::numeric_limits<double>::infinity();
+        double best_steer = 0.0, best_intrusion = 0.0;
+        for (int k = 0; k <= 2 * kSteerSteps; ++k) {
+          const double steer = (k % 2 == 1 ? -1.0 : 1.0) * ((k + 1) / 2) * (kPi / kSteerSteps);
+          const double crowding = intrusion(i, Direction(goal_heading + steer), lookahead);
+          if (crowding < 0.0) continue;
+          const double cost = std::abs(steer) + 4.0 * crowding + (steer > 0.0 ? 1e-3 : 0.0);
+          if (cost < best_cost) {
+            best_cost = cost;
+            best_steer = steer;
+            best_intrusion = crowding;
+          }
+        }
+        if (std::isfinite(best_cost)) {
+          agent.blocked_s = 0.0;
+          desired_heading = goal_heading + best_steer;
+          target_speed =
+              agent.preferred_speed * (1.0 - 0.3 * std::abs(best_steer) / kPi) * (best_intrusion > 0.0 ? 0.75 : 1.0);
+        } else {
+          desired_heading = goal_heading;
+          agent.blocked_s += dt;
+          if (agent.blocked_s > kBlockedTimeout) {
+            agent.blocked_s = 0.0;
+            agent.waypoint = SampleWaypoint(rng, waypoints, agent.position, agent.heading);
+          }
+        }
+      }
+      // Turn with a limited rate; walk slower while the heading is off.
+      const double turn = std::remainder(desired_heading - agent.heading, 2.0 * kPi);
+      agent.heading = std::remainder(agent.heading + std::clamp(turn, -kTurnRate * dt, kTurnRate * dt), 2.0 * kPi);
+      const double remaining = std::remainder(desired_heading - agent.heading, 2.0 * kPi);
+      target_speed *= std::max(0.0, std::cos(remaining));
+      agent.speed = std::clamp(target_speed, agent.speed - kDeceleration * dt, agent.speed + kAcceleration * dt);
+      // Hard constraints: inside the room, minimum separation to everybody's current position.
+      const Vector2d next = agent.position + agent.speed * dt * Direction(agent.heading);
+      bool allowed = walk.Contains(next);
+      for (int j = 0; j < n && allowed; ++j) {
+        if (j != i && (agents[j].position - next).norm() < min_sep) allowed = false;
+      }
+      if (allowed) {
+        agent.position = next;
+      } else {
+        agent.speed = 0.0;
+      }
+    }
+  }
+
+ private:
   // Scores walking `lookahead` metres towards `direction`, treating the others as static: -1 when
   // infeasible (leaves the walkable area or comes closer than min_sep + 5 cm to somebody it is not
   // already moving away from), otherwise the summed intrusion into the others' comfort zones (m).
-  auto intrusion = [&](int i, const Vector2d& direction, double lookahead) {
+  double intrusion(int i, const Vector2d& direction, double lookahead) const {
     const Vector2d& start = agents[i].position;
     const Vector2d end = start + lookahead * direction;
     if (!walk.Contains(end)) return -1.0;
@@ -141,121 +217,62 @@ std::vector<Path> SimulateWalks(const SceneOptions& options, Rng& rng) {
       total += std::max(0.0, comfort - closest);
     }
     return total;
-  };
+  }
 
-  std::vector<Path> paths(n);
-  for (Path& path : paths) {
-    path.position.reserve(options.num_frames);
-    path.heading.reserve(options.num_frames);
-  }
-  for (int frame = 0; frame < options.num_frames; ++frame) {
-    if (frame > 0) {
-      for (int i = 0; i < n; ++i) {
-        Agent& agent = agents[i];
-        double target_speed = 0.0;
-        double desired_heading = agent.heading;
-        if (agent.wait_s > 0.0) {
-          agent.wait_s -= dt;
-        } else {
-          const Vector2d to_waypoint = agent.waypoint - agent.position;
-          const double distance = to_waypoint.norm();
-          if (distance < kArrivalRadius) {
-            if (rng.Bernoulli(kWaitProbability)) agent.wait_s = rng.Uniform(0.8, 3.0);
-            agent.waypoint = SampleWaypoint(rng, waypoints, agent.position, agent.heading);
-          }
-          const Vector2d goal = agent.waypoint - agent.position;
-          const double goal_heading = std::atan2(goal.y(), goal.x());
-          const double lookahead = std::min(kLookahead, goal.norm());
-          // Steering: the smallest deviation from the goal direction, penalising intrusion into
-          // the others' comfort zones; right turns win ties (people pass on the right).
-          double best_cost = std::numeric_limits<double>::infinity();
-          double best_steer = 0.0, best_intrusion = 0.0;
-          for (int k = 0; k <= 2 * kSteerSteps; ++k) {
-            const double steer = (k % 2 == 1 ? -1.0 : 1.0) * ((k + 1) / 2) * (kPi / kSteerSteps);
-            const double crowding = intrusion(i, Direction(goal_heading + steer), lookahead);
-            if (crowding < 0.0) continue;
-            const double cost = std::abs(steer) + 4.0 * crowding + (steer > 0.0 ? 1e-3 : 0.0);
-            if (cost < best_cost) {
-              best_cost = cost;
-              best_steer = steer;
-              best_intrusion = crowding;
-            }
-          }
-          if (std::isfinite(best_cost)) {
-            agent.blocked_s = 0.0;
-            desired_heading = goal_heading + best_steer;
-            target_speed = agent.preferred_speed * (1.0 - 0.3 * std::abs(best_steer) / kPi) *
-                           (best_intrusion > 0.0 ? 0.75 : 1.0);
-          } else {
-            desired_heading = goal_heading;
-            agent.blocked_s += dt;
-            if (agent.blocked_s > kBlockedTimeout) {
-              agent.blocked_s = 0.0;
-              agent.waypoint = SampleWaypoint(rng, waypoints, agent.position, agent.heading);
-            }
-          }
-        }
-        // Turn with a limited rate; walk slower while the heading is off.
-        const double turn = std::remainder(desired_heading - agent.heading, 2.0 * kPi);
-        agent.heading = std::remainder(agent.heading + std::clamp(turn, -kTurnRate * dt, kTurnRate * dt), 2.0 * kPi);
-        const double remaining = std::remainder(desired_heading - agent.heading, 2.0 * kPi);
-        target_speed *= std::max(0.0, std::cos(remaining));
-        agent.speed = std::clamp(target_speed, agent.speed - kDeceleration * dt, agent.speed + kAcceleration * dt);
-        // Hard constraints: inside the room, minimum separation to everybody's current position.
-        const Vector2d next = agent.position + agent.speed * dt * Direction(agent.heading);
-        bool allowed = walk.Contains(next);
-        for (int j = 0; j < n && allowed; ++j) {
-          if (j != i && (agents[j].position - next).norm() < min_sep) allowed = false;
-        }
-        if (allowed) {
-          agent.position = next;
-        } else {
-          agent.speed = 0.0;
-        }
-      }
-    }
-    for (int i = 0; i < n; ++i) {
-      paths[i].position.push_back(agents[i].position);
-      paths[i].heading.push_back(agents[i].heading);
-    }
-  }
-  return paths;
-}
+  Rng rng;
+  const int n;
+  const double dt;
+  const Box2 walk;
+  const Box2 waypoints;
+  const double min_sep;
+  const double comfort;
+  std::vector<Agent> agents;
+};
 
-// Poses the people along their paths into per-frame ground truth.
-std::vector<Poses3D> AnimatePaths(const std::vector<Path>& paths, const std::vector<BodyShape>& shapes,
-                                  bool whole_body, int num_frames, double fps, double floor_z, Rng& rng) {
-  const double dt = 1.0 / fps;
-  const int n = static_cast<int>(paths.size());
-  const int num_joints = NumPosedJoints(whole_body);
-  std::vector<GaitState> gaits(n);
-  for (int i = 0; i < n; ++i) {
-    gaits[i].phase_rad = rng.Uniform(-kPi, kPi);
-    if (num_frames > 1) gaits[i].speed_mps = (paths[i].position[1] - paths[i].position[0]).norm() * fps;
+// Poses the people along their ground paths into ground truth, one frame after the other.
+class Animator {
+ public:
+  // Draws each person's gait phase from `rng` (in person order).
+  Animator(std::vector<BodyShape> shapes, bool whole_body, double fps, double floor_z, Rng& rng)
+      : shapes_(std::move(shapes)), whole_body_(whole_body), fps_(fps), floor_z_(floor_z), gaits_(shapes_.size()) {
+    for (GaitState& gait : gaits_) gait.phase_rad = rng.Uniform(-kPi, kPi);
   }
-  std::vector<Poses3D> frames(num_frames);
-  Eigen::Matrix3Xd joints;
-  for (int frame = 0; frame < num_frames; ++frame) {
-    Poses3D& poses = frames[frame];
-    poses.Clear(num_joints);
-    for (int i = 0; i < n; ++i) {
-      GaitState& gait = gaits[i];
+
+  // The walking speed before the first frame: the step from frame 0 to frame 1 (sequences of
+  // more than one frame).
+  void SetInitialSpeeds(const std::vector<Vector2d>& frame0, const std::vector<Vector2d>& frame1) {
+    for (size_t i = 0; i < gaits_.size(); ++i) gaits_[i].speed_mps = (frame1[i] - frame0[i]).norm() * fps_;
+  }
+
+  // Frame `frame` (0, 1, 2, ... in order) with the people at `position` facing `heading`.
+  void Pose(int frame, const std::vector<Vector2d>& position, const std::vector<double>& heading, Poses3D* poses) {
+    const double dt = 1.0 / fps_;
+    poses->Clear(NumPosedJoints(whole_body_));
+    for (size_t i = 0; i < gaits_.size(); ++i) {
+      GaitState& gait = gaits_[i];
       if (frame > 0) {
-        const double speed = (paths[i].position[frame] - paths[i].position[frame - 1]).norm() * fps;
+        const double speed = (position[i] - gait.position_m).norm() * fps_;
         gait.speed_mps += (speed - gait.speed_mps) * std::min(1.0, dt / 0.25);
         AdvanceGaitPhase(dt, &gait);
       }
-      gait.position_m = paths[i].position[frame];
-      gait.heading_rad = paths[i].heading[frame];
-      PoseJoints(shapes[i], gait, whole_body, &joints);
-      auto person = poses.AddPerson(i);
-      person.topRows<3>() = joints;
-      person.row(2).array() += floor_z;
+      gait.position_m = position[i];
+      gait.heading_rad = heading[i];
+      PoseJoints(shapes_[i], gait, whole_body_, &joints_);
+      auto person = poses->AddPerson(static_cast<int>(i));
+      person.topRows<3>() = joints_;
+      person.row(2).array() += floor_z_;
       person.row(3).setOnes();
     }
   }
-  return frames;
-}
+
+ private:
+  std::vector<BodyShape> shapes_;
+  bool whole_body_;
+  double fps_;
+  double floor_z_;
+  std::vector<GaitState> gaits_;  // position_m: where the person was in the last posed frame
+  Eigen::Matrix3Xd joints_;
+};
 
 void CheckCommon(int num_people, int num_frames, double fps, const Eigen::Vector3d& room_size_m) {
   if (num_people < 0) throw ConfigError("synthetic scene: num_people must be >= 0");
@@ -280,19 +297,71 @@ Scene MakeSceneShell(const RigOptions& rig, uint64_t seed, bool whole_body, cons
 
 }  // namespace
 
-Scene GenerateScene(const SceneOptions& options) {
+struct SceneStream::State {
+  State(const SceneOptions& options, std::vector<BodyShape> shapes, Rng& gait_rng)
+      : walkers(options, DeriveSeed(options.seed, 3)),
+        animator(std::move(shapes), options.whole_body, options.fps,
+                 options.room_center_m.z() - 0.5 * options.room_size_m.z(), gait_rng) {}
+
+  // The ground path of frame `next_frame` (positions, headings), and of the frame after it.
+  void Load(std::vector<Vector2d>* position, std::vector<double>* heading) const {
+    position->clear();
+    heading->clear();
+    for (const Agent& agent : walkers.Agents()) {
+      position->push_back(agent.position);
+      heading->push_back(agent.heading);
+    }
+  }
+
+  Walkers walkers;
+  Animator animator;
+  std::vector<Vector2d> position, next_position;
+  std::vector<double> heading, next_heading;
+};
+
+SceneStream::SceneStream(const SceneOptions& options) : num_frames_(options.num_frames) {
   CheckCommon(options.num_people, options.num_frames, options.fps, options.room_size_m);
   if (!(options.min_separation_m >= 0.0)) throw ConfigError("synthetic scene: min_separation_m must be >= 0");
-  Scene scene = MakeSceneShell(options.rig, options.seed, options.whole_body, options.room_center_m,
-                               options.room_size_m, options.fps);
+  shell_ = MakeSceneShell(options.rig, options.seed, options.whole_body, options.room_center_m, options.room_size_m,
+                          options.fps);
   Rng body_rng(DeriveSeed(options.seed, 2));
   std::vector<BodyShape> shapes;
   for (int i = 0; i < options.num_people; ++i) shapes.push_back(RandomBodyShape(body_rng));
-  Rng walk_rng(DeriveSeed(options.seed, 3));
-  const std::vector<Path> paths = SimulateWalks(options, walk_rng);
   Rng gait_rng(DeriveSeed(options.seed, 4));
-  const double floor_z = options.room_center_m.z() - 0.5 * options.room_size_m.z();
-  scene.gt = AnimatePaths(paths, shapes, options.whole_body, options.num_frames, options.fps, floor_z, gait_rng);
+  state_ = std::make_unique<State>(options, std::move(shapes), gait_rng);
+  state_->Load(&state_->position, &state_->heading);
+  if (num_frames_ > 1) {
+    state_->walkers.Step();
+    state_->Load(&state_->next_position, &state_->next_heading);
+    state_->animator.SetInitialSpeeds(state_->position, state_->next_position);
+  }
+}
+
+SceneStream::~SceneStream() = default;
+SceneStream::SceneStream(SceneStream&&) noexcept = default;
+SceneStream& SceneStream::operator=(SceneStream&&) noexcept = default;
+
+bool SceneStream::Next(Poses3D* gt) {
+  if (next_frame_ >= num_frames_) return false;
+  State& state = *state_;
+  state.animator.Pose(next_frame_, state.position, state.heading, gt);
+  ++next_frame_;
+  if (next_frame_ < num_frames_) {
+    std::swap(state.position, state.next_position);
+    std::swap(state.heading, state.next_heading);
+    if (next_frame_ + 1 < num_frames_) {
+      state.walkers.Step();
+      state.Load(&state.next_position, &state.next_heading);
+    }
+  }
+  return true;
+}
+
+Scene GenerateScene(const SceneOptions& options) {
+  SceneStream stream(options);
+  Scene scene = stream.shell();
+  scene.gt.resize(options.num_frames);
+  for (Poses3D& gt : scene.gt) stream.Next(&gt);
   return scene;
 }
 
@@ -337,7 +406,26 @@ Scene MakeCrossingScene(const CrossingOptions& options) {
     }
   }
   const double floor_z = options.room_center_m.z() - 0.5 * options.room_size_m.z();
-  scene.gt = AnimatePaths(paths, shapes, options.whole_body, options.num_frames, options.fps, floor_z, rng);
+  Animator animator(std::move(shapes), options.whole_body, options.fps, floor_z, rng);
+  std::vector<Vector2d> position(options.num_people);
+  std::vector<double> heading(options.num_people);
+  const auto load = [&](int frame) {
+    for (int i = 0; i < options.num_people; ++i) {
+      position[i] = paths[i].position[frame];
+      heading[i] = paths[i].heading[frame];
+    }
+  };
+  if (options.num_frames > 1) {
+    load(1);
+    const std::vector<Vector2d> frame1 = position;
+    load(0);
+    animator.SetInitialSpeeds(position, frame1);
+  }
+  scene.gt.resize(options.num_frames);
+  for (int frame = 0; frame < options.num_frames; ++frame) {
+    load(frame);
+    animator.Pose(frame, position, heading, &scene.gt[frame]);
+  }
   return scene;
 }
 

@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "core/camera.h"
@@ -40,6 +41,30 @@ struct Scene {
 // min_separation_m, every joint stays inside the room box. Deterministic in the options.
 // Throws ConfigError on invalid options (e.g. a room too small for the people).
 Scene GenerateScene(const SceneOptions& options);
+
+// The scene of GenerateScene frame by frame, with the same numbers: the walk is simulated one
+// frame ahead of the gait, so memory does not depend on num_frames. The constructor throws what
+// GenerateScene throws.
+class SceneStream {
+ public:
+  explicit SceneStream(const SceneOptions& options);
+  ~SceneStream();
+  SceneStream(SceneStream&&) noexcept;
+  SceneStream& operator=(SceneStream&&) noexcept;
+
+  // Cameras, joint names, room and fps of the scene; gt is empty.
+  const Scene& shell() const { return shell_; }
+  int num_frames() const { return num_frames_; }
+  // The next frame's ground truth (frames 0 .. num_frames - 1 in order); false after the last.
+  bool Next(Poses3D* gt);
+
+ private:
+  struct State;
+  Scene shell_;
+  int num_frames_ = 0;
+  int next_frame_ = 0;
+  std::unique_ptr<State> state_;
+};
 
 struct CrossingOptions {
   RigOptions rig;                                   // camera rig

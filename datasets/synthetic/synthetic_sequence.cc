@@ -4,29 +4,54 @@
 #include <cstdio>
 
 namespace rpt::synthetic {
+namespace {
+
+SequenceHeader HeaderOf(const Scene& scene, const std::string& name) {
+  SequenceHeader header;
+  header.name = name;
+  header.cameras = scene.cameras;
+  header.gt_joints = scene.joint_names;
+  header.detection_joints = scene.joint_names;
+  header.room.center_m = scene.room_center_m;
+  header.room.size_m = scene.room_size_m;
+  header.fps = scene.fps;
+  return header;
+}
+
+// Frame `index` from its ground truth (already in frame->gt): id, timestamp and detections.
+void CompleteFrame(const SequenceHeader& header, const DetectorSimulator& detector, size_t index,
+                   SequenceFrame* frame) {
+  char id[64];
+  std::snprintf(id, sizeof(id), "%s_%06zu", header.name.c_str(), index);
+  frame->id = id;
+  frame->timestamp_s = static_cast<double>(index) / header.fps;
+  detector.Detect(header.cameras, frame->gt, header.gt_joints, index, &frame->views, nullptr, &frame->labels_2d);
+}
+
+}  // namespace
 
 Sequence MakeSyntheticSequence(const Scene& scene, const DetectorOptions& detector_options, uint64_t seed,
                                const std::string& name) {
   Sequence sequence;
-  sequence.name = name;
-  sequence.cameras = scene.cameras;
-  sequence.gt_joints = scene.joint_names;
-  sequence.detection_joints = scene.joint_names;
-  sequence.room.center_m = scene.room_center_m;
-  sequence.room.size_m = scene.room_size_m;
-  sequence.fps = scene.fps;
+  static_cast<SequenceHeader&>(sequence) = HeaderOf(scene, name);
   const DetectorSimulator detector(detector_options, scene.joint_names, seed);
   sequence.frames.resize(scene.gt.size());
   for (size_t f = 0; f < scene.gt.size(); ++f) {
-    SequenceFrame& frame = sequence.frames[f];
-    char id[64];
-    std::snprintf(id, sizeof(id), "%s_%06zu", name.c_str(), f);
-    frame.id = id;
-    frame.timestamp_s = static_cast<double>(f) / scene.fps;
-    frame.gt = scene.gt[f];
-    detector.Detect(scene.cameras, scene.gt[f], scene.joint_names, f, &frame.views, nullptr, &frame.labels_2d);
+    sequence.frames[f].gt = scene.gt[f];
+    CompleteFrame(sequence, detector, f, &sequence.frames[f]);
   }
   return sequence;
+}
+
+SyntheticSource::SyntheticSource(const SceneOptions& options, const DetectorOptions& detector, uint64_t seed,
+                                 const std::string& name)
+    : scene_(options), header_(HeaderOf(scene_.shell(), name)), detector_(detector, scene_.shell().joint_names, seed) {}
+
+bool SyntheticSource::Next(SequenceFrame* frame) {
+  if (!scene_.Next(&frame->gt)) return false;
+  CompleteFrame(header_, detector_, next_frame_, frame);
+  ++next_frame_;
+  return true;
 }
 
 }  // namespace rpt::synthetic

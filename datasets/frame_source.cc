@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: MIT
+#include "datasets/frame_source.h"
+
+#include <utility>
+
+namespace rpt {
+
+SequenceSource::SequenceSource(Sequence sequence) : sequence_(std::move(sequence)) {}
+
+bool SequenceSource::Next(SequenceFrame* frame) {
+  if (next_ >= sequence_.frames.size()) return false;
+  *frame = std::move(sequence_.frames[next_]);
+  sequence_.frames[next_] = SequenceFrame{};  // delivered: its memory goes with the caller's buffer
+  ++next_;
+  return true;
+}
+
+std::vector<std::unique_ptr<FrameSource>> SourcesOf(std::vector<Sequence> sequences) {
+  std::vector<std::unique_ptr<FrameSource>> sources;
+  sources.reserve(sequences.size());
+  for (Sequence& sequence : sequences) sources.push_back(std::make_unique<SequenceSource>(std::move(sequence)));
+  return sources;
+}
+
+Sequence Materialize(FrameSource& source) {
+  Sequence sequence;
+  static_cast<SequenceHeader&>(sequence) = source.header();
+  if (source.num_frames() > 0) sequence.frames.reserve(static_cast<size_t>(source.num_frames()));
+  SequenceFrame frame;
+  while (source.Next(&frame)) sequence.frames.push_back(std::move(frame));
+  sequence.warnings = source.warnings();
+  return sequence;
+}
+
+}  // namespace rpt

@@ -1,0 +1,37 @@
+// SPDX-License-Identifier: MIT
+// A FrameSource wrapper for tests that counts the input frames a consumer holds at once.
+#pragma once
+
+#include <memory>
+#include <set>
+#include <utility>
+
+#include "datasets/frame_source.h"
+
+namespace rpt {
+
+// Counts the frames a consumer holds: the distinct buffers it passes to Next (a consumer that
+// kept frames would need a new buffer per kept frame).
+class CountingSource final : public FrameSource {
+ public:
+  explicit CountingSource(std::unique_ptr<FrameSource> inner) : inner_(std::move(inner)) {}
+  const SequenceHeader& header() const override { return inner_->header(); }
+  long num_frames() const override { return inner_->num_frames(); }
+  bool Next(SequenceFrame* frame) override {
+    buffers_.insert(frame);
+    const bool more = inner_->Next(frame);
+    delivered_ += more ? 1 : 0;
+    return more;
+  }
+  const InputWarnings& warnings() const override { return inner_->warnings(); }
+
+  size_t frames_alive_peak() const { return buffers_.size(); }
+  long delivered() const { return delivered_; }
+
+ private:
+  std::unique_ptr<FrameSource> inner_;
+  std::set<const SequenceFrame*> buffers_;
+  long delivered_ = 0;
+};
+
+}  // namespace rpt
