@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "cli/junit_xml.h"
 
-#include <fstream>
 
 #include "core/errors.h"
+#include "datasets/io/text_file.h"
 
 namespace rpt::cli {
 
@@ -55,9 +55,7 @@ std::string JunitXml(const std::string& suite_name, const std::vector<JunitCase>
 
 void WriteJunitXml(const std::filesystem::path& path, const std::string& suite_name,
                    const std::vector<JunitCase>& cases) {
-  std::ofstream out(path);
-  out << JunitXml(suite_name, cases);
-  if (!out) throw InputError(path.string() + ": cannot write");
+  io::WriteTextFile(path, JunitXml(suite_name, cases));
 }
 
 }  // namespace rpt::cli

@@ -9,6 +9,7 @@
 #include "cli/report.h"
 #include "core/errors.h"
 #include "core/text.h"
+#include "datasets/io/text_file.h"
 
 namespace rpt::cli {
 namespace {
@@ -29,13 +30,6 @@ std::string Cell(const Json& value, int decimals = 1) {
 }
 
 }  // namespace
-
-void WriteText(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream out(path);
-  out << text;
-  out.flush();
-  if (!out) throw InputError(path.string() + ": cannot write");
-}
 
 std::string CsvField(const std::string& text) {
   if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
@@ -210,12 +204,12 @@ void WriteEvalOutputs(const std::filesystem::path& dir, const std::vector<Sequen
   if (ec) throw InputError(dir.string() + ": cannot create output folder: " + ec.message());
   Json summary = SummaryJson(run);
   summary.update(extra_summary);
-  WriteText(dir / "summary.json", summary.dump(2) + "\n");
+  io::WriteTextFile(dir / "summary.json", summary.dump(2) + "\n");
   std::string label;
   for (const Sequence& s : sequences) AppendItem(&label, s.name, "+");
   if (sequences.size() > 3) label = sequences.front().name + "+" + std::to_string(sequences.size() - 1) + " more";
-  WriteText(dir / "summary.csv", SummaryCsv({{label, summary}}));
-  WriteText(dir / "summary.md", SummaryMarkdown({{label, summary}}) + "\nRevision " + info.git_revision + ", " +
+  io::WriteTextFile(dir / "summary.csv", SummaryCsv({{label, summary}}));
+  io::WriteTextFile(dir / "summary.md", SummaryMarkdown({{label, summary}}) + "\nRevision " + info.git_revision + ", " +
                                     info.cpu + ", " + std::to_string(info.threads) + " thread(s). Command: `" +
                                     info.command_line + "`\n");
   std::ostringstream joints;
@@ -224,10 +218,10 @@ void WriteEvalOutputs(const std::filesystem::path& dir, const std::vector<Sequen
     joints << CsvField(row.name) << "," << Cell(Number(row.mean_error_mm), 2) << "," << Cell(Number(row.pck_100), 2) << ","
            << row.count << "," << row.num_gt << "\n";
   }
-  WriteText(dir / "per_joint.csv", joints.str());
-  WriteText(dir / "steps.csv", StepsCsv(run.timing, run.counts));
-  WriteText(dir / "config.json", DumpConfig(config, /*with_comments=*/false));
-  WriteText(dir / "run.json", RunInfoJson(info).dump(2) + "\n");
+  io::WriteTextFile(dir / "per_joint.csv", joints.str());
+  io::WriteTextFile(dir / "steps.csv", StepsCsv(run.timing, run.counts));
+  io::WriteTextFile(dir / "config.json", DumpConfig(config, /*with_comments=*/false));
+  io::WriteTextFile(dir / "run.json", RunInfoJson(info).dump(2) + "\n");
   WritePredictions(dir / "predictions.json", sequences, run);
 }
 

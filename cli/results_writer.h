@@ -30,8 +30,6 @@ const std::vector<SummaryColumn>& SummaryColumns();
 nlohmann::ordered_json SummaryJson(const RunResult& run);
 
 // CSV / Markdown tables with one row per (label, summary).
-// Writes `text` to `path`; throws InputError naming the file when it cannot be written.
-void WriteText(const std::filesystem::path& path, const std::string& text);
 // A CSV field (RFC 4180): quoted, with inner quotes doubled, when it holds a comma, quote or line break.
 std::string CsvField(const std::string& text);
 std::string SummaryCsv(const std::vector<std::pair<std::string, nlohmann::ordered_json>>& rows);

@@ -28,6 +28,7 @@
 #include "core/text.h"
 #include "datasets/dataset_request.h"
 #include "datasets/io/json_file.h"
+#include "datasets/io/text_file.h"
 
 namespace rpt::cli {
 namespace {
@@ -107,8 +108,8 @@ std::pair<int, int> ParseShard(const std::string& text) {
 void WriteTables(const fs::path& dir, const Json& rows, const std::string& stem) {
   std::vector<std::pair<std::string, Json>> table;
   for (const Json& row : rows) table.emplace_back(row["name"].get<std::string>(), row["summary"]);
-  WriteText(dir / (stem + ".csv"), SummaryCsv(table));
-  WriteText(dir / (stem + ".md"), SummaryMarkdown(table));
+  io::WriteTextFile(dir / (stem + ".csv"), SummaryCsv(table));
+  io::WriteTextFile(dir / (stem + ".md"), SummaryMarkdown(table));
 }
 
 void RunSweep(const SweepArgs& args) {
@@ -203,7 +204,7 @@ void RunSweep(const SweepArgs& args) {
   file["run"] = RunInfoJson(info);
   file["rows"] = rows;
   const std::string stem = shards == 1 ? "sweep" : "sweep-shard-" + std::to_string(shard) + "-of-" + std::to_string(shards);
-  std::ofstream(fs::path(args.out) / (stem + ".json")) << file.dump(2) << "\n";
+  io::WriteTextFile(fs::path(args.out) / (stem + ".json"), file.dump(2) + "\n");
   WriteTables(args.out, rows, stem);
   std::cout << SummaryMarkdown([&] {
     std::vector<std::pair<std::string, Json>> table;
@@ -245,7 +246,7 @@ void RunMerge(const std::vector<std::string>& inputs, const std::string& out) {
   file["total"] = total;
   file["shard"] = "1/1";
   file["rows"] = rows;
-  std::ofstream(fs::path(out) / "sweep.json") << file.dump(2) << "\n";
+  io::WriteTextFile(fs::path(out) / "sweep.json", file.dump(2) + "\n");
   WriteTables(out, rows, "sweep");
   std::printf("merged %zu configurations from %zu shard files into %s/sweep.{json,csv,md}\n", total, inputs.size(),
               out.c_str());

@@ -8,6 +8,7 @@
 #include "core/errors.h"
 #include "datasets/input_warnings.h"
 #include "datasets/io/json_file.h"
+#include "datasets/io/text_file.h"
 #include "datasets/readers/generic_common.h"
 #include "datasets/readers/generic_internal.h"
 
@@ -172,7 +173,7 @@ void WriteGenericDetections(const std::filesystem::path& path, const Detections&
     text += f + 1 < detections.frames.size() ? ",\n" : "\n";
   }
   text += "]}\n";
-  generic_internal::WriteTextFile(path, text);
+  io::WriteTextFile(path, text);
 }
 
 }  // namespace rpt

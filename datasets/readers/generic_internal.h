@@ -32,15 +32,6 @@ inline std::string IdString(const nlohmann::json& root, const std::string& point
   throw InputError(source + ": " + pointer + ": expected a string or an integer id, got " + std::string(j.type_name()));
 }
 
-// Writes `text` to `path` (replacing it). Throws InputError naming the file on failure.
-inline void WriteTextFile(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) throw InputError(Source(path) + ": cannot open for writing");
-  out.write(text.data(), static_cast<std::streamsize>(text.size()));
-  out.close();
-  if (!out) throw InputError(Source(path) + ": write failed");
-}
-
 // A JSON list written one element per line (diff-friendly, compact).
 template <typename Json>
 std::string DumpListOnePerLine(const std::vector<Json>& items) {

@@ -12,6 +12,7 @@
 #include "core/errors.h"
 #include "datasets/input_warnings.h"
 #include "datasets/io/json_file.h"
+#include "datasets/io/text_file.h"
 #include "datasets/readers/generic_common.h"
 #include "datasets/readers/generic_internal.h"
 
@@ -429,7 +430,7 @@ void WriteLabels(const std::filesystem::path& path, const std::vector<Sequence>&
       labels.push_back(std::move(label));
     }
   }
-  generic_internal::WriteTextFile(path, generic_internal::DumpListOnePerLine(labels));
+  io::WriteTextFile(path, generic_internal::DumpListOnePerLine(labels));
 }
 
 DatasetInfo GenericInfo() {
