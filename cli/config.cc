@@ -7,7 +7,7 @@
 #include <sstream>
 #include <type_traits>
 
-#include "cli/closest_name.h"
+#include "core/closest_name.h"
 #include "core/errors.h"
 #include "core/options_check.h"
 #include "core/text.h"

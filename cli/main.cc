@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "cli/closest_name.h"
+#include "core/closest_name.h"
 #include "cli/commands.h"
 #include "cli/run_info.h"
 #include "core/errors.h"
@@ -31,7 +31,7 @@ bool CheckSubcommand(CLI::App& app, int argc, char** argv) {
   for (const std::string& name : names) {
     if (name == given) return true;
   }
-  const std::string closest = rpt::cli::ClosestName(given, names);
+  const std::string closest = rpt::ClosestName(given, names);
   std::fprintf(stderr, "error: unknown subcommand '%s'%s\nRun with --help for the list.\n", given.c_str(),
                closest.empty() ? "" : ("; did you mean '" + closest + "'?").c_str());
   return false;
@@ -51,7 +51,7 @@ void PrintOptionSuggestions(CLI::App& app) {
   for (const std::string& extra : extras) {
     if (extra.size() < 3 || extra.rfind("--", 0) != 0) continue;
     const std::string flag = extra.substr(0, extra.find('='));
-    const std::string closest = rpt::cli::ClosestName(flag, options);
+    const std::string closest = rpt::ClosestName(flag, options);
     if (!closest.empty()) std::fprintf(stderr, "%s: did you mean '%s'?\n", flag.c_str(), closest.c_str());
   }
 }

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
-#include "cli/closest_name.h"
+#include "core/closest_name.h"
 #include "cli/config_args.h"
 #include "cli/json_text.h"
 #include "cli/results_writer.h"

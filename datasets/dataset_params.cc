@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/closest_name.h"
 #include "core/text.h"
 #include "datasets/io/number_text.h"
 
@@ -52,21 +53,6 @@ void ParseInteger(std::string_view text, const OptionSpec& spec, const std::stri
   Int value = 0;
   if (!io::ParseInteger(text, &value) || !InRange(static_cast<double>(value), spec)) Fail(text, what, WithRange("an integer", spec, lo, hi));
   *out = value;
-}
-
-// Edits (insert, delete, substitute, swap two neighbours) that turn `a` into `b` (optimal string
-// alignment distance: "cuont" is one swap from "count").
-size_t EditDistance(std::string_view a, std::string_view b) {
-  std::vector<std::vector<size_t>> d(a.size() + 1, std::vector<size_t>(b.size() + 1));
-  for (size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
-  for (size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
-  for (size_t i = 1; i <= a.size(); ++i) {
-    for (size_t j = 1; j <= b.size(); ++j) {
-      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
-    }
-  }
-  return d[a.size()][b.size()];
 }
 
 }  // namespace
@@ -126,25 +112,11 @@ std::string TypeText(const bool*, const OptionSpec&) { return "true | false"; }
 std::string TypeText(const std::string*, const OptionSpec&) { return "text"; }
 std::string TypeText(const ParamList*, const OptionSpec&) { return "comma-separated list"; }
 
-std::string NearestName(std::string_view key, const std::vector<std::string>& known) {
-  std::string best;
-  size_t best_distance = std::string::npos;
-  for (const std::string& name : known) {
-    const size_t distance = EditDistance(key, name);
-    if (distance < best_distance) {
-      best_distance = distance;
-      best = name;
-    }
-  }
-  if (best.empty() || 3 * best_distance > std::max(key.size(), best.size())) return "";
-  return best;
-}
-
 void CheckKnownKeys(const std::string& dataset, const std::map<std::string, std::string>& given,
                     const std::vector<std::string>& known) {
   for (const auto& [key, value] : given) {
     if (std::find(known.begin(), known.end(), key) != known.end()) continue;
-    const std::string nearest = NearestName(key, known);
+    const std::string nearest = ClosestName(key, known);
     throw ConfigError("dataset '" + dataset + "' has no parameter '" + key + "' (valid: " +
                       (known.empty() ? std::string("(none)") : Join(known)) + ")" +
                       (nearest.empty() ? std::string() : "; did you mean '" + nearest + "'?"));

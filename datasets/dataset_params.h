@@ -70,10 +70,6 @@ std::string TypeText(const ParamList*, const OptionSpec& spec);
 void CheckKnownKeys(const std::string& dataset, const std::map<std::string, std::string>& given,
                     const std::vector<std::string>& known);
 
-// The `known` name nearest to `key` by edit distance, or "" when none is close (more than a third
-// of the longer name differs).
-std::string NearestName(std::string_view key, const std::vector<std::string>& known);
-
 template <class Enum>
 std::string EnumList(std::string_view separator) {
   std::string out;

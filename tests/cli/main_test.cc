@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "cli/closest_name.h"
+#include "core/closest_name.h"
 #include "tests/cli/cli_test_util.h"
 
 namespace rpt {
@@ -34,10 +34,13 @@ TEST(Main, UnknownFlagOfASubcommandSuggestsTheClosest) {
 }
 
 TEST(ClosestName, PicksTheNearestNameWithinATypoDistance) {
-  EXPECT_EQ(cli::EditDistance("kitten", "sitting"), 3);
-  EXPECT_EQ(cli::ClosestName("evl", {"demo", "eval", "sweep"}), "eval");
-  EXPECT_EQ(cli::ClosestName("recal500", {"recall100", "recall500"}), "recall500");
-  EXPECT_EQ(cli::ClosestName("zzz", {"eval", "check"}), "");
+  EXPECT_EQ(EditDistance("kitten", "sitting"), 3);
+  EXPECT_EQ(ClosestName("evl", {"demo", "eval", "sweep"}), "eval");
+  EXPECT_EQ(ClosestName("recal500", {"recall100", "recall500"}), "recall500");
+  EXPECT_EQ(ClosestName("zzz", {"eval", "check"}), "");
+  // A swap of two neighbours is one edit: "cuont" is close to "count".
+  EXPECT_EQ(EditDistance("cuont", "count"), 1);
+  EXPECT_EQ(ClosestName("cuont", {"count", "seed"}), "count");
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// "did you mean": the known name closest to a misspelt one (edit distance), for error messages.
+// "did you mean": the known name closest to a misspelt one (edit distance), for the error messages
+// of every command, option key, dataset parameter and thresholds key (one rule everywhere).
 #pragma once
 
 #include <algorithm>
@@ -7,22 +8,23 @@
 #include <string_view>
 #include <vector>
 
-namespace rpt::cli {
+namespace rpt {
 
-// Levenshtein distance (insert, delete, substitute: 1 each).
+// Edits (insert, delete, substitute, swap two neighbours: 1 each) that turn `a` into `b`
+// (optimal string alignment distance: "cuont" is one swap from "count").
 inline int EditDistance(std::string_view a, std::string_view b) {
-  std::vector<int> row(b.size() + 1);
-  for (size_t j = 0; j <= b.size(); ++j) row[j] = static_cast<int>(j);
+  std::vector<std::vector<int>> d(a.size() + 1, std::vector<int>(b.size() + 1));
+  for (size_t i = 0; i <= a.size(); ++i) d[i][0] = static_cast<int>(i);
+  for (size_t j = 0; j <= b.size(); ++j) d[0][j] = static_cast<int>(j);
   for (size_t i = 1; i <= a.size(); ++i) {
-    int diagonal = row[0];
-    row[0] = static_cast<int>(i);
     for (size_t j = 1; j <= b.size(); ++j) {
-      const int substitute = diagonal + (a[i - 1] == b[j - 1] ? 0 : 1);
-      diagonal = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, substitute});
+      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) {
+        d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+      }
     }
   }
-  return row[b.size()];
+  return d[a.size()][b.size()];
 }
 
 // The candidate closest to `name` when it is close enough to be a typo (distance at most a third
@@ -47,4 +49,4 @@ inline std::string DidYouMean(std::string_view name, const std::vector<std::stri
   return closest.empty() ? std::string() : " (did you mean '" + closest + "'?)";
 }
 
-}  // namespace rpt::cli
+}  // namespace rpt
