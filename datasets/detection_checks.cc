@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <deque>
 #include <limits>
+#include <utility>
 
 namespace rpt {
 namespace {
@@ -137,90 +139,281 @@ std::string Fixed(double value, int decimals) {
   return text;
 }
 
-// Projected GT per (frame, camera), computed once on demand.
-class ProjectionCache {
+// Keeps every stride-th of the items offered (by their running index), doubling the stride
+// whenever more than `max_kept` are kept: a sample spread over a stream of unknown length, in
+// bounded memory. With max_kept = 0, or while at most max_kept items came, it keeps all.
+template <class T>
+class Thinning {
  public:
-  ProjectionCache(const Sequence& s, const std::vector<int>& det_of_gt, int min_joints)
-      : s_(s), det_of_gt_(det_of_gt), min_joints_(min_joints), cache_(s.frames.size()) {}
-  const ProjectedView& Get(int frame, int camera) {
-    std::vector<ProjectedView>& views = cache_[frame];
-    if (views.empty()) {
-      views.resize(s_.cameras.size());
-      for (size_t c = 0; c < s_.cameras.size(); ++c) {
-        views[c] = ProjectPersons(s_.cameras[c], s_.frames[frame].gt, det_of_gt_, min_joints_);
-      }
-    }
-    return views[camera];
+  explicit Thinning(size_t max_kept) : max_kept_(max_kept) {}
+  bool Wants(long index) const { return index % stride_ == 0; }
+  void Add(long index, T item) {
+    if (!Wants(index)) return;
+    kept_.push_back({index, std::move(item)});
+    if (max_kept_ == 0 || kept_.size() <= max_kept_) return;
+    stride_ *= 2;
+    std::erase_if(kept_, [&](const auto& entry) { return entry.first % stride_ != 0; });
+  }
+  // Up to `max` of the kept items, evenly spaced (all when max <= 0).
+  std::vector<const T*> Pick(int max) const {
+    std::vector<const T*> out;
+    for (int i : EvenlySpaced(static_cast<int>(kept_.size()), max)) out.push_back(&kept_[i].second);
+    return out;
   }
 
  private:
-  const Sequence& s_;
-  const std::vector<int>& det_of_gt_;
-  int min_joints_;
-  std::vector<std::vector<ProjectedView>> cache_;
+  size_t max_kept_;
+  long stride_ = 1;
+  std::vector<std::pair<long, T>> kept_;
 };
 
-ShiftCheck CheckShift(const Sequence& s, const DetectionCheckOptions& options, ProjectionCache* cache) {
-  ShiftCheck shift;
-  const int K = options.max_shift;
-  const int n = static_cast<int>(s.frames.size());
+// What one measured frame contributes per camera.
+struct MeasuredCamera {
+  long in_view = 0;
+  bool empty = false;
+  std::vector<double> px, rel;
+};
+using MeasuredFrame = std::vector<MeasuredCamera>;  // empty: no GT person or no detection
+
+// What one sampled shift anchor contributes: per (camera with detections) the relative distance
+// per shift, and the GT motion over max_shift frames.
+struct AnchorUnits {
+  std::vector<std::vector<double>> units;
+  std::vector<double> motion;
+};
+
+}  // namespace
+
+// The frames the checks still need: the last 2 * max_shift + 1 (with their GT projections,
+// computed once on demand), the counts, and the sampled measurements.
+struct DetectionChecker::State {
+  struct Entry {
+    long index = 0;
+    bool input = false;
+    std::vector<Poses2D> views;
+    Poses3D gt;
+    std::vector<ProjectedView> projected;  // per camera, empty until needed
+  };
+
+  State(const SequenceHeader& h, long n, const DetectionCheckOptions& o)
+      : header(h), options(o), num_frames(n),
+        measured_thinning(n >= 0 ? 0 : 2 * static_cast<size_t>(std::max(o.max_frames, 0))),
+        anchor_thinning(o.shift_frames > 0 ? 2 * static_cast<size_t>(o.shift_frames) : 0) {
+    check.sequence = h.name;
+    det_of_gt.assign(h.gt_joints.size(), -1);
+    for (size_t j = 0; j < h.gt_joints.size(); ++j) {
+      det_of_gt[j] = FindJoint(h.detection_joints, h.gt_joints[j]);
+      check.shared_joints += det_of_gt[j] >= 0 ? 1 : 0;
+    }
+    check.cameras.resize(h.cameras.size());
+    for (size_t c = 0; c < h.cameras.size(); ++c) check.cameras[c].name = h.cameras[c].name;
+    if (n >= 0) measured = EvenlySpaced(static_cast<int>(n), o.max_frames);
+    K = std::max(o.max_shift, 0);
+  }
+
+  Entry& At(long index) { return ring[ring.size() - 1 - (last - index)]; }
+  const ProjectedView& ProjectedAt(long index, int camera) {
+    Entry& e = At(index);
+    if (e.projected.empty()) {
+      e.projected.resize(header.cameras.size());
+      for (size_t c = 0; c < header.cameras.size(); ++c) {
+        e.projected[c] = ProjectPersons(header.cameras[c], e.gt, det_of_gt, options.min_joints);
+      }
+    }
+    return e.projected[camera];
+  }
+
+  bool IsMeasured(long f) {
+    if (num_frames < 0) return measured_thinning.Wants(f);
+    while (next_measured < measured.size() && measured[next_measured] < f) ++next_measured;
+    return next_measured < measured.size() && measured[next_measured] == f;
+  }
+
+  void Measure(long f) {
+    Entry& e = At(f);
+    MeasuredFrame out;
+    if (e.gt.num_persons() > 0 && e.input) {
+      out.resize(header.cameras.size());
+      for (size_t c = 0; c < header.cameras.size(); ++c) {
+        MeasuredCamera& camera = out[c];
+        const Poses2D& view = e.views[c];
+        camera.empty = view.num_persons() == 0;
+        for (const Projected& p : ProjectedAt(f, static_cast<int>(c))) {
+          if (!p.in_view) continue;
+          ++camera.in_view;
+          const double d = NearestPx(p, view, options.min_joints);
+          if (d < 0) continue;
+          camera.px.push_back(d);
+          camera.rel.push_back(d / p.diagonal);
+        }
+      }
+    }
+    measured_thinning.Add(f, std::move(out));
+  }
+
+  void Anchor(long f) {
+    const long a = anchors++;
+    if (!anchor_thinning.Wants(a)) return;
+    AnchorUnits out;
+    const Entry& e = At(f);
+    for (size_t c = 0; c < header.cameras.size(); ++c) {
+      const Poses2D& view = e.views[c];
+      if (view.num_persons() == 0) continue;
+      std::vector<double> unit(2 * K + 1);
+      bool complete = true;
+      for (int k = -K; k <= K && complete; ++k) {
+        unit[k + K] = MeanRelDistance(ProjectedAt(f + k, static_cast<int>(c)), view, options.min_joints);
+        complete = unit[k + K] >= 0;
+      }
+      if (!complete) continue;
+      out.units.push_back(std::move(unit));
+      const Poses2D before = AsPoses2D(ProjectedAt(f, static_cast<int>(c)), view.num_joints);
+      const double moved = MeanRelDistance(ProjectedAt(f + K, static_cast<int>(c)), before, options.min_joints);
+      if (moved >= 0) out.motion.push_back(moved);
+    }
+    anchor_thinning.Add(a, std::move(out));
+  }
+
+  // Frame f is done with: measured if sampled, a shift anchor when its max_shift neighbours on
+  // each side exist, are continuous and it has detections.
+  void Process(long f, bool has_next_k) {
+    if (IsMeasured(f)) Measure(f);
+    if (K > 0 && has_next_k && f >= K && last_break <= f - K && At(f).input) Anchor(f);
+  }
+
+  SequenceHeader header;
+  DetectionCheckOptions options;
+  long num_frames;
+  int K = 0;
+  std::vector<int> det_of_gt;
+  SequenceCheck check;
+  std::deque<Entry> ring;
+  long last = -1;             // index of the newest frame
+  long next_center = 0;       // the next frame to process
+  double last_time = 0;
+  long last_break = 0;        // the last frame not continuous with its predecessor (0: none)
+  bool any_break = false;
+  std::vector<int> measured;  // with a known frame count: the measured frames
+  size_t next_measured = 0;
+  Thinning<MeasuredFrame> measured_thinning;
+  long anchors = 0;           // eligible shift anchors seen
+  Thinning<AnchorUnits> anchor_thinning;
+};
+
+DetectionChecker::DetectionChecker(const SequenceHeader& header, long num_frames, const DetectionCheckOptions& options)
+    : state_(std::make_unique<State>(header, num_frames, options)) {}
+DetectionChecker::~DetectionChecker() = default;
+DetectionChecker::DetectionChecker(DetectionChecker&&) noexcept = default;
+DetectionChecker& DetectionChecker::operator=(DetectionChecker&&) noexcept = default;
+
+void DetectionChecker::Add(const SequenceFrame& frame) {
+  State& s = *state_;
+  const long f = ++s.last;
+  if (f > 0) {
+    const double dt = frame.timestamp_s - s.last_time;
+    if (!(dt > 0 && dt <= s.options.max_gap_s)) {  // NaN: not continuous
+      s.last_break = f;
+      s.any_break = true;
+    }
+  }
+  s.last_time = frame.timestamp_s;
+  ++s.check.frames;
+
+  // Counts over all frames (cheap).
+  const bool input = HasInput(frame);
+  if (frame.gt.num_persons() > 0) {
+    ++s.check.frames_with_gt;
+    s.check.frames_with_gt_no_input += input ? 0 : 1;
+  }
+  if (input) {
+    for (size_t c = 0; c < s.check.cameras.size(); ++c) {
+      CameraCheck& camera = s.check.cameras[c];
+      ++camera.input_frames;
+      camera.detections += frame.views[c].num_persons();
+      camera.empty_frames += frame.views[c].num_persons() == 0 ? 1 : 0;
+    }
+  }
+
+  if (s.ring.size() == static_cast<size_t>(2 * s.K + 1)) {
+    State::Entry recycled = std::move(s.ring.front());
+    s.ring.pop_front();
+    s.ring.push_back(std::move(recycled));
+  } else {
+    s.ring.emplace_back();
+  }
+  State::Entry& e = s.ring.back();
+  e.index = f;
+  e.input = input;
+  if (input) {
+    e.views = frame.views;
+  } else {
+    e.views.assign(s.header.cameras.size(), Poses2D{});
+  }
+  e.gt = frame.gt;
+  e.projected.clear();
+  for (; s.next_center + s.K <= f; ++s.next_center) s.Process(s.next_center, /*has_next_k=*/true);
+}
+
+SequenceCheck DetectionChecker::Finish() {
+  State& s = *state_;
+  for (; s.next_center <= s.last; ++s.next_center) s.Process(s.next_center, /*has_next_k=*/false);
+  SequenceCheck check = std::move(s.check);
+  const int num_cameras = static_cast<int>(check.cameras.size());
+
+  // Distances over the measured frames.
+  std::vector<std::vector<double>> px(num_cameras), rel(num_cameras);
+  const std::vector<const MeasuredFrame*> measured = s.measured_thinning.Pick(s.num_frames >= 0 ? 0 : s.options.max_frames);
+  check.measured_frames = static_cast<long>(measured.size());
+  for (const MeasuredFrame* frame : measured) {
+    for (int c = 0; c < static_cast<int>(frame->size()); ++c) {
+      const MeasuredCamera& m = (*frame)[c];
+      CameraCheck& camera = check.cameras[c];
+      camera.gt_in_view += m.in_view;
+      if (m.in_view > 0) {
+        ++camera.frames_gt_in_view;
+        camera.empty_frames_gt_in_view += m.empty ? 1 : 0;
+      }
+      px[c].insert(px[c].end(), m.px.begin(), m.px.end());
+      rel[c].insert(rel[c].end(), m.rel.begin(), m.rel.end());
+    }
+  }
+  for (int c = 0; c < num_cameras; ++c) {
+    check.cameras[c].gt_compared = static_cast<long>(px[c].size());
+    check.cameras[c].px_median = MedianOrNaN(px[c]);
+    check.cameras[c].rel_median = MedianOrNaN(rel[c]);
+  }
+
+  // The frame-shift test over the sampled anchors.
+  ShiftCheck& shift = check.shift;
+  const int K = s.options.max_shift;
   if (K <= 0) {
     shift.reason = "disabled";
-    return shift;
+    return check;
   }
-  // breaks[i] = number of non-continuous links among frames 0..i.
-  std::vector<int> breaks(std::max(n, 1), 0);
-  for (int i = 1; i < n; ++i) {
-    const double dt = s.frames[i].timestamp_s - s.frames[i - 1].timestamp_s;
-    const bool continuous = dt > 0 && dt <= options.max_gap_s;  // false for NaN
-    breaks[i] = breaks[i - 1] + (continuous ? 0 : 1);
-  }
-  std::vector<int> anchors;
-  for (int f = K; f + K < n; ++f) {
-    if (breaks[f + K] != breaks[f - K] || !HasInput(s.frames[f])) continue;
-    anchors.push_back(f);
-  }
-  if (anchors.empty()) {
+  if (s.anchors == 0) {
     char text[160];
-    if (n > 0 && breaks[n - 1] > 0) {
+    if (s.any_break) {
       std::snprintf(text, sizeof(text), "frames are not continuous (more than %g s apart or without a time)",
-                    options.max_gap_s);
+                    s.options.max_gap_s);
     } else {
       std::snprintf(text, sizeof(text), "no frame with detections has %d continuous frames on each side", K);
     }
     shift.reason = text;
-    return shift;
+    return check;
   }
   const int num_shifts = 2 * K + 1;
   std::vector<std::vector<double>> units;  // per (frame, camera): relative distance per shift
   std::vector<double> motion;
-  for (int sample : EvenlySpaced(static_cast<int>(anchors.size()), options.shift_frames)) {
-    const int f = anchors[sample];
-    const SequenceFrame& frame = s.frames[f];
-    bool used = false;
-    for (size_t c = 0; c < s.cameras.size(); ++c) {
-      const Poses2D& view = frame.views[c];
-      if (view.num_persons() == 0) continue;
-      std::vector<double> unit(num_shifts);
-      bool complete = true;
-      for (int k = -K; k <= K && complete; ++k) {
-        unit[k + K] = MeanRelDistance(cache->Get(f + k, static_cast<int>(c)), view, options.min_joints);
-        complete = unit[k + K] >= 0;
-      }
-      if (!complete) continue;
-      units.push_back(std::move(unit));
-      used = true;
-      const Poses2D before = AsPoses2D(cache->Get(f, static_cast<int>(c)), view.num_joints);
-      const double moved = MeanRelDistance(cache->Get(f + K, static_cast<int>(c)), before, options.min_joints);
-      if (moved >= 0) motion.push_back(moved);
-    }
-    shift.frames += used ? 1 : 0;
+  for (const AnchorUnits* anchor : s.anchor_thinning.Pick(s.options.shift_frames)) {
+    units.insert(units.end(), anchor->units.begin(), anchor->units.end());
+    motion.insert(motion.end(), anchor->motion.begin(), anchor->motion.end());
+    shift.frames += anchor->units.empty() ? 0 : 1;
   }
   shift.comparisons = static_cast<long>(units.size());
   shift.rel_median.assign(num_shifts, kNaN);
   if (units.empty()) {
     shift.reason = "no GT person in view next to a detection at every shift";
-    return shift;
+    return check;
   }
   for (int i = 0; i < num_shifts; ++i) {
     std::vector<double> values;
@@ -248,74 +441,13 @@ ShiftCheck CheckShift(const Sequence& s, const DetectionCheckOptions& options, P
   } else {
     shift.tested = true;
   }
-  return shift;
+  return check;
 }
 
-}  // namespace
-
 SequenceCheck CheckDetections(const Sequence& s, const DetectionCheckOptions& options) {
-  SequenceCheck check;
-  check.sequence = s.name;
-  check.frames = static_cast<long>(s.frames.size());
-  std::vector<int> det_of_gt(s.gt_joints.size(), -1);
-  for (size_t j = 0; j < s.gt_joints.size(); ++j) {
-    det_of_gt[j] = FindJoint(s.detection_joints, s.gt_joints[j]);
-    check.shared_joints += det_of_gt[j] >= 0 ? 1 : 0;
-  }
-  ProjectionCache cache(s, det_of_gt, options.min_joints);
-  const int num_cameras = static_cast<int>(s.cameras.size());
-  check.cameras.resize(num_cameras);
-  for (int c = 0; c < num_cameras; ++c) check.cameras[c].name = s.cameras[c].name;
-
-  // Counts over all frames (cheap).
-  for (const SequenceFrame& frame : s.frames) {
-    const bool input = HasInput(frame);
-    if (frame.gt.num_persons() > 0) {
-      ++check.frames_with_gt;
-      check.frames_with_gt_no_input += input ? 0 : 1;
-    }
-    if (!input) continue;
-    for (int c = 0; c < num_cameras; ++c) {
-      CameraCheck& camera = check.cameras[c];
-      ++camera.input_frames;
-      camera.detections += frame.views[c].num_persons();
-      camera.empty_frames += frame.views[c].num_persons() == 0 ? 1 : 0;
-    }
-  }
-
-  // Distances over the measured frames.
-  std::vector<std::vector<double>> px(num_cameras), rel(num_cameras);
-  const std::vector<int> measured = EvenlySpaced(static_cast<int>(s.frames.size()), options.max_frames);
-  check.measured_frames = static_cast<long>(measured.size());
-  for (int f : measured) {
-    const SequenceFrame& frame = s.frames[f];
-    if (frame.gt.num_persons() == 0 || !HasInput(frame)) continue;
-    for (int c = 0; c < num_cameras; ++c) {
-      CameraCheck& camera = check.cameras[c];
-      const Poses2D& view = frame.views[c];
-      long in_view = 0;
-      for (const Projected& p : cache.Get(f, c)) {
-        if (!p.in_view) continue;
-        ++in_view;
-        const double d = NearestPx(p, view, options.min_joints);
-        if (d < 0) continue;
-        px[c].push_back(d);
-        rel[c].push_back(d / p.diagonal);
-      }
-      camera.gt_in_view += in_view;
-      if (in_view > 0) {
-        ++camera.frames_gt_in_view;
-        camera.empty_frames_gt_in_view += view.num_persons() == 0 ? 1 : 0;
-      }
-    }
-  }
-  for (int c = 0; c < num_cameras; ++c) {
-    check.cameras[c].gt_compared = static_cast<long>(px[c].size());
-    check.cameras[c].px_median = MedianOrNaN(px[c]);
-    check.cameras[c].rel_median = MedianOrNaN(rel[c]);
-  }
-  check.shift = CheckShift(s, options, &cache);
-  return check;
+  DetectionChecker checker(s, static_cast<long>(s.frames.size()), options);
+  for (const SequenceFrame& frame : s.frames) checker.Add(frame);
+  return checker.Finish();
 }
 
 std::vector<SequenceCheck> CheckDetections(const std::vector<Sequence>& sequences,

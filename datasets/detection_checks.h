@@ -9,6 +9,7 @@
 #pragma once
 
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -73,8 +74,34 @@ struct SequenceCheck {
   ShiftCheck shift;
 };
 
-// Measures one sequence (or all). Fast: the distances use at most max_frames frames and the shift
-// test at most shift_frames frames per sequence.
+// Measures one sequence frame by frame as the frames stream past (datasets/frame_source.h):
+// counts over every frame, GT-to-detection distances on sampled frames, and the shift test on
+// sampled frames with max_shift continuous neighbours on each side. It holds the last
+// 2 * max_shift + 1 frames and the sampled measurements only, so memory does not grow with the
+// number of frames. With the frame count known in advance (`num_frames` >= 0) the measured frames
+// are max_frames evenly spaced frames; otherwise, and for the shift test's anchors, every
+// stride-th candidate is kept, the stride doubling whenever more than twice the wanted number
+// are kept, and the wanted number is picked evenly spaced from those (all candidates while there
+// are at most twice the wanted number).
+class DetectionChecker {
+ public:
+  DetectionChecker(const SequenceHeader& header, long num_frames, const DetectionCheckOptions& options = {});
+  ~DetectionChecker();
+  DetectionChecker(DetectionChecker&&) noexcept;
+  DetectionChecker& operator=(DetectionChecker&&) noexcept;
+
+  // The next frame of the sequence (in order; views empty or one per camera).
+  void Add(const SequenceFrame& frame);
+  // The measurements, once every frame was added; the checker is spent afterwards.
+  SequenceCheck Finish();
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+// Measures one sequence (or all) with a DetectionChecker. Fast: the distances use at most
+// max_frames frames and the shift test at most shift_frames frames per sequence.
 SequenceCheck CheckDetections(const Sequence& sequence, const DetectionCheckOptions& options = {});
 std::vector<SequenceCheck> CheckDetections(const std::vector<Sequence>& sequences,
                                            const DetectionCheckOptions& options = {});

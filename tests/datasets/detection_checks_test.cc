@@ -206,6 +206,47 @@ TEST(DetectionChecks, SamplingKeepsItFast) {
   EXPECT_TRUE(Codes(check).empty()) << Describe(check);
 }
 
+// The checks stream: a checker fed frame by frame without knowing the frame count gives what the
+// whole sequence gives while the sample covers every candidate, and keeps bounded samples beyond.
+SequenceCheck CheckStreamed(const Sequence& s, const DetectionCheckOptions& options) {
+  DetectionChecker checker(s, /*num_frames=*/-1, options);
+  for (const SequenceFrame& frame : s.frames) checker.Add(frame);
+  return checker.Finish();
+}
+
+TEST(DetectionChecks, StreamedWithUnknownLengthMatchesTheWholeSequenceWhileSamplesCoverAll) {
+  DetectionCheckOptions options;
+  options.max_frames = 100;
+  options.shift_frames = 60;  // up to 120 anchors are all kept
+  const Sequence s = Synthetic(100);
+  const SequenceCheck whole = CheckDetections(s, options);
+  const SequenceCheck streamed = CheckStreamed(s, options);
+  EXPECT_EQ(Describe(streamed), Describe(whole));
+  EXPECT_EQ(streamed.measured_frames, 100);
+  EXPECT_EQ(streamed.shift.frames, 60) << "60 picked evenly from the 90 anchors (frames 5..94)";
+}
+
+TEST(DetectionChecks, StreamedLongSequenceKeepsBoundedSpreadSamples) {
+  DetectionCheckOptions options;
+  options.max_frames = 20;
+  options.shift_frames = 15;
+  const Sequence s = Synthetic(400);
+  const SequenceCheck whole = CheckDetections(s, options);
+  const SequenceCheck streamed = CheckStreamed(s, options);
+  EXPECT_EQ(streamed.measured_frames, 20);
+  EXPECT_EQ(streamed.shift.frames, 15);
+  EXPECT_EQ(streamed.frames, 400);
+  EXPECT_EQ(streamed.frames_with_gt, whole.frames_with_gt);
+  ASSERT_EQ(streamed.cameras.size(), whole.cameras.size());
+  for (size_t c = 0; c < whole.cameras.size(); ++c) {
+    EXPECT_EQ(streamed.cameras[c].detections, whole.cameras[c].detections) << "counts cover every frame";
+    EXPECT_NEAR(streamed.cameras[c].rel_median, whole.cameras[c].rel_median, 0.01) << "other frames, same error";
+  }
+  EXPECT_EQ(streamed.shift.tested, whole.shift.tested);
+  EXPECT_EQ(LooksShifted(streamed.shift), LooksShifted(whole.shift));
+  EXPECT_TRUE(Codes(streamed).empty()) << Describe(streamed);
+}
+
 TEST(DetectionChecks, RealMvorFixtureRaisesNothing) {
   RPT_REQUIRE_SHARED_DATA("mvor/camma_mvor_2018.json");
   RPT_REQUIRE_SHARED_DATA("mvor/openpose_kps.json");
