@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 
 namespace rpt::cli {
 namespace {
@@ -61,10 +62,10 @@ std::vector<CheckWarning> ResultWarnings(const std::vector<Sequence>& sequences,
   return warnings;
 }
 
-EvalDiagnostics Diagnose(const std::vector<Sequence>& sequences, const RunResult& run,
-                         const DetectionCheckOptions& options) {
+EvalDiagnostics Diagnose(std::vector<SequenceCheck> checks, const std::vector<Sequence>& sequences,
+                         const RunResult& run) {
   EvalDiagnostics diagnostics;
-  diagnostics.checks = CheckDetections(sequences, options);
+  diagnostics.checks = std::move(checks);
   for (const SequenceCheck& check : diagnostics.checks) {
     for (CheckWarning& w : DetectionWarnings(check)) diagnostics.warnings.push_back(std::move(w));
   }

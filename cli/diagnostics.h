@@ -27,9 +27,10 @@ struct EvalDiagnostics {
 // Warnings about the results of `run` over `sequences`.
 std::vector<CheckWarning> ResultWarnings(const std::vector<Sequence>& sequences, const RunResult& run);
 
-// The input checks and all warnings of an evaluation.
-EvalDiagnostics Diagnose(const std::vector<Sequence>& sequences, const RunResult& run,
-                         const DetectionCheckOptions& options = {});
+// All warnings of an evaluation: those of the input checks `checks` (one per sequence, e.g.
+// StreamedRun::checks) and those of the results. `sequences` need only their frames' GT.
+EvalDiagnostics Diagnose(std::vector<SequenceCheck> checks, const std::vector<Sequence>& sequences,
+                         const RunResult& run);
 
 // {"warnings": [{"code", "message"}, ...], "data_checks": [per sequence]} for summary.json.
 nlohmann::ordered_json DiagnosticsJson(const EvalDiagnostics& diagnostics);

@@ -30,21 +30,26 @@ struct EvalArgs {
 void RunEval(const EvalArgs& args) {
   const Config config = ResolveConfig(args.config);
   InputWarnings warnings;
-  const std::vector<Sequence> sequences = LoadInput(args.input, /*require_detections=*/true, &warnings);
+  std::vector<std::unique_ptr<FrameSource>> sources = OpenInput(args.input, /*require_detections=*/true, &warnings);
   PrintInputWarnings(warnings);
   RunOptions options;
   options.triangulator = config.triangulator;
   options.eval = config.metrics;
   options.threads = args.threads;
   options.progress = !args.quiet;
-  const RunResult run = RunSequences(sequences, options);
+  DetectionCheckOptions check_options;
+  check_options.max_gap_s = config.triangulator.track.max_gap_s;  // one notion of continuity
+  // Streamed: each frame is checked and triangulated, then dropped but for its id, time and GT.
+  StreamedRun streamed = RunSources(std::move(sources), options, check_options);
+  PrintInputWarnings(streamed.warnings);  // the corrections of streamed sources, known now
+  warnings.Merge(streamed.warnings);
+  const RunResult& run = streamed.run;
+  const std::vector<Sequence>& sequences = streamed.sequences;
   RunInfo info = CollectRunInfo(run.threads, CurrentCommandLine());
   info.input_warnings = InputWarningLines(warnings);
   const std::string out_dir =
       !args.out.empty() ? args.out : "out/eval-" + (args.input.dataset.empty() ? "labels" : args.input.dataset);
-  DetectionCheckOptions check_options;
-  check_options.max_gap_s = config.triangulator.track.max_gap_s;  // one notion of continuity
-  const EvalDiagnostics diagnostics = Diagnose(sequences, run, check_options);
+  const EvalDiagnostics diagnostics = Diagnose(std::move(streamed.checks), sequences, run);
   const nlohmann::ordered_json diagnostics_json = DiagnosticsJson(diagnostics);
   WriteEvalOutputs(out_dir, sequences, run, config, info, diagnostics_json);
   if (args.json) {

@@ -11,6 +11,7 @@
 #include "datasets/readers/generic_labels.h"
 #include "datasets/readers/voxelpose_detections.h"
 #include "datasets/registry.h"
+#include "datasets/simulated_source.h"
 #include "datasets/synthetic/detector_options.h"
 
 namespace rpt::cli {
@@ -33,7 +34,10 @@ void AddInputOptions(CLI::App* command, InputArgs* args) {
   command->add_option("--seed", args->seed, "seed of the simulated detector")->capture_default_str();
 }
 
-std::vector<Sequence> LoadInput(const InputArgs& args, bool require_detections, InputWarnings* warnings) {
+namespace {
+
+// Throws ConfigError on contradicting input options.
+void CheckInputArgs(const InputArgs& args) {
   if (args.dataset.empty() == args.labels.empty()) {
     throw ConfigError("give either --dataset NAME (with --root DIR) or --labels FILE");
   }
@@ -45,24 +49,40 @@ std::vector<Sequence> LoadInput(const InputArgs& args, bool require_detections, 
   if (args.simulate_perfect && !args.detector.empty() && args.detector != "perfect") {
     throw ConfigError("--simulate-perfect (deprecated) contradicts --detector " + args.detector);
   }
+}
+
+DatasetRequest RequestOf(const InputArgs& args) {
+  DatasetRequest request;
+  request.dataset = args.dataset;
+  request.root = args.root;
+  for (const std::string& assignment : args.params) {
+    const size_t eq = assignment.find('=');
+    if (eq == std::string::npos || eq == 0) throw ConfigError("--param " + assignment + ": expected key=value");
+    request.params[assignment.substr(0, eq)] = assignment.substr(eq + 1);
+  }
+  return request;
+}
+
+SimulationOptions SimulationOf(const InputArgs& args) {
+  SimulationOptions simulation;
+  simulation.seed = args.seed;
+  simulation.detector = args.simulate_perfect ? "perfect" : args.detector.empty() ? "realistic" : args.detector;
+  return simulation;
+}
+
+}  // namespace
+
+std::vector<Sequence> LoadInput(const InputArgs& args, bool require_detections, InputWarnings* warnings) {
+  CheckInputArgs(args);
   std::vector<Sequence> sequences;
   InputWarnings detection_warnings;  // of a detections file read once for all sequences
   if (!args.labels.empty()) {
     sequences = ReadLabelsFile(args.labels, LabelsOptions{});
   } else {
-    DatasetRequest request;
-    request.dataset = args.dataset;
-    request.root = args.root;
-    for (const std::string& assignment : args.params) {
-      const size_t eq = assignment.find('=');
-      if (eq == std::string::npos || eq == 0) throw ConfigError("--param " + assignment + ": expected key=value");
-      request.params[assignment.substr(0, eq)] = assignment.substr(eq + 1);
-    }
-    sequences = ReadDataset(request);
+    sequences = ReadDataset(RequestOf(args));
   }
   if (args.simulate) {
-    SimulateInputDetections(args.simulate_perfect ? "perfect" : args.detector.empty() ? "realistic" : args.detector,
-                            args.seed, &sequences);
+    for (Sequence& s : sequences) SimulateDetections(SimulationOf(args), &s);
   } else if (!args.detections.empty() && std::filesystem::path(args.detections).extension() == ".pkl") {
     // VoxelPose caches are keyed "<camera>_<frame>": they need the sequence to map keys to ids.
     for (Sequence& s : sequences) {
@@ -100,6 +120,25 @@ std::vector<Sequence> LoadInput(const InputArgs& args, bool require_detections, 
     }
   }
   return sequences;
+}
+
+std::vector<std::unique_ptr<FrameSource>> OpenInput(const InputArgs& args, bool require_detections,
+                                                    InputWarnings* warnings) {
+  CheckInputArgs(args);
+  if (args.dataset.empty() || !args.detections.empty() || !DatasetStreams(args.dataset)) {
+    std::vector<Sequence> sequences = LoadInput(args, require_detections, warnings);
+    for (Sequence& s : sequences) s.warnings = {};  // in `warnings` already: not twice
+    return SourcesOf(std::move(sequences));
+  }
+  // The reader streams and its detections are its own or simulated frame by frame: nothing is
+  // loaded whole. Streamed frames are validated as they come (cli/run_sequence.h).
+  std::vector<std::unique_ptr<FrameSource>> sources = StreamDataset(RequestOf(args));
+  if (args.simulate) {
+    for (auto& source : sources) {
+      source = std::make_unique<SimulatedDetectionsSource>(std::move(source), SimulationOf(args));
+    }
+  }
+  return sources;
 }
 
 void SimulateInputDetections(const std::string& profile, uint64_t seed, std::vector<Sequence>* sequences) {

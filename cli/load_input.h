@@ -5,9 +5,11 @@
 
 #include <CLI/CLI.hpp>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "datasets/frame_source.h"
 #include "datasets/sequence.h"
 
 namespace rpt::cli {
@@ -31,6 +33,14 @@ void AddInputOptions(CLI::App* command, InputArgs* args);
 // The corrections the readers applied (rotations re-orthonormalised, scores clamped; one entry
 // per file and kind) are added to `warnings`: the sequences' own and the detection file's.
 std::vector<Sequence> LoadInput(const InputArgs& args, bool require_detections, InputWarnings* warnings);
+
+// The input as frame sources (datasets/frame_source.h), for consumers that stream (rpt eval):
+// a dataset whose reader streams, with its own or simulated detections, is pulled frame by
+// frame and never loaded whole; every other input is LoadInput's sequences behind
+// SequenceSource. `warnings` gets what LoadInput gives; a streamed source's own corrections are
+// complete once it is exhausted (FrameSource::warnings).
+std::vector<std::unique_ptr<FrameSource>> OpenInput(const InputArgs& args, bool require_detections,
+                                                    InputWarnings* warnings);
 
 // Replaces the 2D detections (and the 2D labels) of every sequence by those of the simulated
 // detector `profile` (synthetic::DetectorProfileNames()), drawn from its GT and cameras: what

@@ -8,12 +8,13 @@
 namespace rpt::cli {
 namespace {
 constexpr double kQuietSeconds = 2.0;
+constexpr double kUnknownTotalSeconds = 10.0;
 }
 
 Progress::Progress(std::string label, long total, bool enabled)
     : label_(std::move(label)),
       total_(total),
-      enabled_(enabled && total > 0),
+      enabled_(enabled && total != 0),
       tty_(isatty(fileno(stderr)) != 0),
       start_(std::chrono::steady_clock::now()),
       last_draw_(start_) {}
@@ -26,6 +27,13 @@ void Progress::Update(long done) {
   if (!enabled_) return;
   const auto now = std::chrono::steady_clock::now();
   const double elapsed = std::chrono::duration<double>(now - start_).count();
+  if (total_ < 0) {  // unknown length: a line every kUnknownTotalSeconds
+    if (elapsed < kQuietSeconds || std::chrono::duration<double>(now - last_draw_).count() < kUnknownTotalSeconds) return;
+    last_draw_ = now;
+    std::fprintf(stderr, "%s: %ld (%.0f s)\n", label_.c_str(), done, elapsed);
+    std::fflush(stderr);
+    return;
+  }
   if (elapsed < kQuietSeconds && done < total_) return;
   if (!shown_ && done >= total_) return;  // finished quickly: stay silent
   const int decile = static_cast<int>(10 * done / total_);

@@ -10,6 +10,7 @@ namespace rpt::cli {
 
 class Progress {
  public:
+  // `total` items; < 0: unknown (a count every 10 s instead of a bar); 0: nothing to show.
   Progress(std::string label, long total, bool enabled = true);
   ~Progress();
   void Update(long done);  // cheap; call every item

@@ -65,39 +65,65 @@ const std::vector<SummaryColumn>& SummaryColumns() {
   return columns;
 }
 
-Json SummaryJson(const RunResult& run) {
-  const metrics::MetricsResult& m = run.metrics;
-  Json j;
-  j["pcp"] = Number(m.pcp);
-  j["pck100"] = Number(m.pck_100);
-  j["pck500"] = Number(m.pck_500);
-  j["mpjpe_mm"] = Number(m.mpjpe_mm);
-  j["recall100"] = Number(m.recall_100);
-  j["recall500"] = Number(m.recall_500);
-  j["invalid"] = Number(m.invalid);
-  j["f1"] = Number(m.f1);
-  j["fps"] = Number(run.timing.fps);
-  j["frame_time_us_median"] = Number(run.timing.frame_us_median);
-  j["frames"] = run.frames;
-  j["eval_frames_per_s"] = Number(run.wall_seconds > 0 ? run.frames / run.wall_seconds : 0.0);
-  j["gt_persons"] = m.num_gt_persons;
-  j["predictions"] = m.num_predictions;
-  j["matches"] = m.num_matches;
+namespace {
+
+// The metric columns of one result (SummaryColumns' keys that the metrics give) into *j.
+void AddMetricColumns(const metrics::MetricsResult& m, Json* j) {
+  (*j)["pcp"] = Number(m.pcp);
+  (*j)["pck100"] = Number(m.pck_100);
+  (*j)["pck500"] = Number(m.pck_500);
+  (*j)["mpjpe_mm"] = Number(m.mpjpe_mm);
+  (*j)["recall100"] = Number(m.recall_100);
+  (*j)["recall500"] = Number(m.recall_500);
+  (*j)["invalid"] = Number(m.invalid);
+  (*j)["f1"] = Number(m.f1);
+}
+
+void AddCountColumns(const metrics::MetricsResult& m, Json* j) {
+  (*j)["gt_persons"] = m.num_gt_persons;
+  (*j)["predictions"] = m.num_predictions;
+  (*j)["matches"] = m.num_matches;
   for (size_t i = 0; i < metrics::kApThresholdsMm.size(); ++i) {
-    j["ap" + std::to_string(static_cast<int>(metrics::kApThresholdsMm[i]))] = Number(m.ap[i]);
+    (*j)["ap" + std::to_string(static_cast<int>(metrics::kApThresholdsMm[i]))] = Number(m.ap[i]);
   }
   if (!m.wholebody.empty()) {
     Json groups;
     for (const auto& g : m.wholebody) groups[g.name] = Number(g.mpjpe_mm);
-    j["wholebody_mpjpe_mm"] = groups;
+    (*j)["wholebody_mpjpe_mm"] = groups;
   }
-  if (m.legacy_pcp) {
-    j["legacy_pcp"] = Number(m.legacy_pcp->average_pcp);
-  }
+  if (m.legacy_pcp) (*j)["legacy_pcp"] = Number(m.legacy_pcp->average_pcp);
+}
+
+}  // namespace
+
+Json SequenceSummaryJson(const SequenceResult& sequence) {
+  Json j;
+  j["sequence"] = sequence.name;
+  AddMetricColumns(sequence.metrics, &j);
+  j["fps"] = Number(sequence.timing.fps);
+  j["frame_time_us_median"] = Number(sequence.timing.frame_us_median);
+  j["frames"] = sequence.frames;
+  AddCountColumns(sequence.metrics, &j);
+  return j;
+}
+
+Json SummaryJson(const RunResult& run) {
+  const metrics::MetricsResult& m = run.metrics;
+  Json j;
+  AddMetricColumns(m, &j);
+  j["fps"] = Number(run.timing.fps);
+  j["frame_time_us_median"] = Number(run.timing.frame_us_median);
+  j["frames"] = run.frames;
+  j["eval_frames_per_s"] = Number(run.wall_seconds > 0 ? run.frames / run.wall_seconds : 0.0);
+  AddCountColumns(m, &j);
   j["step_time_us_median"] = StepTimesJson(run.timing);
   j["step_count_per_frame"] = StepCountsJson(run.counts);
   j["counter_per_frame"] = CountersJson(run.counts);
   j["detection_noise_m"] = run.counts.noise_frames > 0 ? Json(run.counts.noise_m_median) : Json(nullptr);
+  if (!run.per_sequence.empty()) {
+    j["per_sequence"] = Json::array();
+    for (const SequenceResult& sequence : run.per_sequence) j["per_sequence"].push_back(SequenceSummaryJson(sequence));
+  }
   Json units;
   for (const SummaryColumn& c : SummaryColumns()) units[c.key] = c.unit;
   j["units"] = units;
@@ -208,8 +234,11 @@ void WriteEvalOutputs(const std::filesystem::path& dir, const std::vector<Sequen
   std::string label;
   for (const Sequence& s : sequences) AppendItem(&label, s.name, "+");
   if (sequences.size() > 3) label = sequences.front().name + "+" + std::to_string(sequences.size() - 1) + " more";
-  io::WriteTextFile(dir / "summary.csv", SummaryCsv({{label, summary}}));
-  io::WriteTextFile(dir / "summary.md", SummaryMarkdown({{label, summary}}) + "\nRevision " + info.git_revision + ", " +
+  // The whole run first, then (with several sequences) one row per sequence.
+  std::vector<std::pair<std::string, Json>> rows = {{label, summary}};
+  for (const SequenceResult& sequence : run.per_sequence) rows.emplace_back(sequence.name, SequenceSummaryJson(sequence));
+  io::WriteTextFile(dir / "summary.csv", SummaryCsv(rows));
+  io::WriteTextFile(dir / "summary.md", SummaryMarkdown(rows) + "\nRevision " + info.git_revision + ", " +
                                     info.cpu + ", " + std::to_string(info.threads) + " thread(s). Command: `" +
                                     info.command_line + "`\n");
   std::ostringstream joints;

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Result files of an evaluation: summary.{json,csv,md} with fixed columns and units,
+// Result files of an evaluation: summary.{json,csv,md} with fixed columns and units (the whole
+// run, then one row per sequence when there are several),
 // per_joint.csv, steps.csv (time and items per step), the resolved config.json, run.json (revision, machine, threads) and
 // predictions.json (3D persons of every frame).
 #pragma once
@@ -26,8 +27,12 @@ const std::vector<SummaryColumn>& SummaryColumns();
 
 // The summary of a run as one JSON object with SummaryColumns() keys (NaN -> null), plus
 // "wholebody_mpjpe_mm" and "legacy_pcp" when available, "step_time_us_median",
-// "step_count_per_frame", "counter_per_frame" and "detection_noise_m" (null when not estimated).
+// "step_count_per_frame", "counter_per_frame" and "detection_noise_m" (null when not estimated),
+// and with several sequences "per_sequence": one SequenceSummaryJson per sequence.
 nlohmann::ordered_json SummaryJson(const RunResult& run);
+// One sequence of a run: "sequence" (its name) and the SummaryColumns() keys it has on its own
+// (everything but the run's wall-clock throughput), plus "wholebody_mpjpe_mm" / "legacy_pcp".
+nlohmann::ordered_json SequenceSummaryJson(const SequenceResult& sequence);
 
 // CSV / Markdown tables with one row per (label, summary).
 // A CSV field (RFC 4180): quoted, with inner quotes doubled, when it holds a comma, quote or line break.

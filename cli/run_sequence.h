@@ -6,10 +6,12 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <vector>
 
 #include "core/pipeline/options.h"
 #include "core/poses.h"
+#include "datasets/detection_checks.h"
 #include "datasets/frame_source.h"
 #include "datasets/sequence.h"
 #include "metrics/accumulator.h"
@@ -35,6 +37,14 @@ struct TriangulatedSequence {
   metrics::StepCountAccumulator counts;  // every frame (warm-up frames included)
 };
 
+// One sequence's own numbers in a run of several (RunResult::per_sequence).
+struct SequenceResult {
+  std::string name;
+  metrics::MetricsResult metrics;
+  metrics::TimingSummary timing;
+  long frames = 0;
+};
+
 struct RunResult {
   metrics::MetricsResult metrics;
   metrics::TimingSummary timing;  // over all frames of all sequences
@@ -45,6 +55,8 @@ struct RunResult {
   long gt_persons = 0;      // GT person-frames
   long output_persons = 0;  // triangulated person-frames
   std::vector<TriangulatedSequence> sequences;
+  // With more than one sequence: each evaluated on its own, in input order (empty otherwise).
+  std::vector<SequenceResult> per_sequence;
 };
 
 // The evaluation options of a run: metrics.evaluated_joints when set, else the joints the
@@ -68,5 +80,23 @@ TriangulatedSequence TriangulateSource(FrameSource& source, const RunOptions& op
 
 // Triangulates all sequences (in parallel) and evaluates them together.
 RunResult RunSequences(const std::vector<Sequence>& sequences, const RunOptions& options);
+
+// An evaluation of streamed input (RunSources).
+struct StreamedRun {
+  RunResult run;
+  // Per source: its header and per frame the id, the time and the GT; the 2D detections and
+  // labels are dropped once the frame is triangulated and checked.
+  std::vector<Sequence> sequences;
+  std::vector<SequenceCheck> checks;  // the input checks (DetectionChecker), one per source
+  InputWarnings warnings;             // the corrections the sources applied (complete)
+};
+
+// What RunSequences does, on frame sources (datasets/frame_source.h): each source is pulled frame
+// by frame (sources in parallel), each frame validated, checked (DetectionChecker with
+// `check_options`) and triangulated, then dropped but for its id, time and GT. Input memory is
+// flat in the number of frames; what grows is the GT and the predictions the metrics and
+// outputs need. Same numbers as RunSequences on the materialised sequences.
+StreamedRun RunSources(std::vector<std::unique_ptr<FrameSource>> sources, const RunOptions& options,
+                       const DetectionCheckOptions& check_options = {});
 
 }  // namespace rpt::cli

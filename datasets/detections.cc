@@ -49,14 +49,19 @@ AttachReport AttachDetections(const Detections& detections, const std::string& s
   return report;
 }
 
+JointNames SimulatedDetectionJoints(const SimulationOptions& options, const JointNames& gt_joints) {
+  if (!options.joints.empty()) return options.joints;
+  const bool whole_body = FindJoint(gt_joints, "hand_root_left") >= 0;
+  return whole_body ? CocoWholeBodyJoints() : CocoBodyJoints();
+}
+
+synthetic::DetectorOptions SimulatedDetectorModel(const SimulationOptions& options) {
+  return synthetic::DetectorProfile(options.perfect ? "perfect" : options.detector);
+}
+
 void SimulateDetections(const SimulationOptions& options, Sequence* sequence) {
-  JointNames joints = options.joints;
-  if (joints.empty()) {
-    const bool whole_body = FindJoint(sequence->gt_joints, "hand_root_left") >= 0;
-    joints = whole_body ? CocoWholeBodyJoints() : CocoBodyJoints();
-  }
-  const synthetic::DetectorOptions model = synthetic::DetectorProfile(options.perfect ? "perfect" : options.detector);
-  const synthetic::DetectorSimulator detector(model, joints, options.seed);
+  const JointNames joints = SimulatedDetectionJoints(options, sequence->gt_joints);
+  const synthetic::DetectorSimulator detector(SimulatedDetectorModel(options), joints, options.seed);
   sequence->detection_joints = joints;
   for (size_t f = 0; f < sequence->frames.size(); ++f) {
     SequenceFrame& frame = sequence->frames[f];

@@ -10,6 +10,7 @@
 #include "core/joints.h"
 #include "core/poses.h"
 #include "datasets/sequence.h"
+#include "datasets/synthetic/detector_options.h"
 
 namespace rpt {
 
@@ -48,5 +49,9 @@ struct SimulationOptions {
   JointNames joints;      // empty = automatic as above
 };
 void SimulateDetections(const SimulationOptions& options, Sequence* sequence);
+// Its parts (also used frame by frame: datasets/simulated_source.h): the simulated joints for GT
+// with `gt_joints`, and the detector model of the profile.
+JointNames SimulatedDetectionJoints(const SimulationOptions& options, const JointNames& gt_joints);
+synthetic::DetectorOptions SimulatedDetectorModel(const SimulationOptions& options);
 
 }  // namespace rpt

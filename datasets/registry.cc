@@ -20,7 +20,7 @@ const std::vector<DatasetEntry>& DatasetRegistry() {
       {ShelfInfo(), ReadShelf},
       {Shelf4daInfo(), ReadShelf4da},
       {CampusInfo(), ReadCampus},
-      {PanopticInfo(), ReadPanoptic},
+      {PanopticInfo(), ReadPanoptic, StreamPanoptic},
       {Human36mInfo(), ReadHuman36m},
       {H3wbInfo(), ReadH3wb},
       {EgohumansInfo(), ReadEgohumans},
@@ -67,6 +67,13 @@ std::vector<Sequence> ReadDataset(const DatasetRequest& request) { return FindDa
 std::vector<std::unique_ptr<FrameSource>> StreamDataset(const DatasetRequest& request) {
   const DatasetEntry& entry = FindDataset(request.dataset);
   return entry.stream ? entry.stream(request) : SourcesOf(entry.read(request));
+}
+
+bool DatasetStreams(const std::string& dataset) {
+  for (const DatasetEntry& entry : DatasetRegistry()) {
+    if (entry.info.name == dataset) return static_cast<bool>(entry.stream);
+  }
+  return false;
 }
 
 }  // namespace rpt

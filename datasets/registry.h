@@ -32,5 +32,7 @@ std::vector<Sequence> ReadDataset(const DatasetRequest& request);
 // The sequences of request.dataset as frame sources: streamed where the reader streams
 // (DatasetEntry::stream), else the loaded sequences behind SequenceSource. Same errors.
 std::vector<std::unique_ptr<FrameSource>> StreamDataset(const DatasetRequest& request);
+// Whether the reader of `dataset` streams frame by frame (false for unknown names).
+bool DatasetStreams(const std::string& dataset);
 
 }  // namespace rpt

@@ -67,5 +67,9 @@ struct Sequence : SequenceHeader {
 // Strict on purpose: readers correct real-world imprecision first (rotations re-orthonormalised,
 // scores clamped; datasets/input_warnings.h), so a reader's Sequence always passes.
 void ValidateSequence(const Sequence& sequence, const std::string& source);
+// Its two parts, for frames that stream (datasets/frame_source.h): the header (cameras), and one
+// frame against its header (repeated frame ids are left to the consumer).
+void ValidateSequenceHeader(const SequenceHeader& sequence, const std::string& source);
+void ValidateFrame(const SequenceHeader& sequence, const SequenceFrame& frame, const std::string& source);
 
 }  // namespace rpt

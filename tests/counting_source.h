@@ -14,13 +14,20 @@ namespace rpt {
 // kept frames would need a new buffer per kept frame).
 class CountingSource final : public FrameSource {
  public:
-  explicit CountingSource(std::unique_ptr<FrameSource> inner) : inner_(std::move(inner)) {}
+  // The counts, also kept up to date in `*report` when given (for consumers that destroy the source).
+  struct Counts {
+    size_t frames_alive_peak = 0;
+    long delivered = 0;
+  };
+  explicit CountingSource(std::unique_ptr<FrameSource> inner, Counts* report = nullptr)
+      : inner_(std::move(inner)), report_(report) {}
   const SequenceHeader& header() const override { return inner_->header(); }
   long num_frames() const override { return inner_->num_frames(); }
   bool Next(SequenceFrame* frame) override {
     buffers_.insert(frame);
     const bool more = inner_->Next(frame);
     delivered_ += more ? 1 : 0;
+    if (report_ != nullptr) *report_ = {buffers_.size(), delivered_};
     return more;
   }
   const InputWarnings& warnings() const override { return inner_->warnings(); }
@@ -30,6 +37,7 @@ class CountingSource final : public FrameSource {
 
  private:
   std::unique_ptr<FrameSource> inner_;
+  Counts* report_;
   std::set<const SequenceFrame*> buffers_;
   long delivered_ = 0;
 };

@@ -146,6 +146,56 @@ void ReadBodies(const std::filesystem::path& path, Poses3D* gt) {
   }
 }
 
+// One sequence, one annotation file read per frame pulled: memory does not grow with the frames.
+class PanopticSource final : public FrameSource {
+ public:
+  PanopticSource(const std::filesystem::path& root, const std::string& name, const PanopticParams& params)
+      : name_(name), folder_(root / name), params_(params) {
+    header_.name = "panoptic/" + name;
+    header_.cameras = ReadCameras(folder_ / ("calibration_" + name + ".json"), params.cameras, &warnings_);
+    header_.gt_joints = PanopticJoints();
+    header_.room.center_m = Eigen::Vector3d(0.0, -0.5, 0.8);
+    header_.room.size_m = Eigen::Vector3d(8.0, 8.0, 2.0);
+    header_.fps = kHdFps;
+    files_ = ListPoseFiles(folder_ / kPoseFolder);
+  }
+
+  const std::filesystem::path& folder() const { return folder_; }
+  const SequenceHeader& header() const override { return header_; }
+  long num_frames() const override {
+    if (params_.skip_empty) return -1;  // known only once the files are read
+    const long sampled = (static_cast<long>(files_.size()) + params_.every - 1) / params_.every;
+    return params_.max_frames > 0 ? std::min<long>(sampled, params_.max_frames) : sampled;
+  }
+  bool Next(SequenceFrame* frame) override {
+    while (next_ < files_.size()) {
+      if (params_.max_frames > 0 && delivered_ >= params_.max_frames) return false;
+      const PoseFile& file = files_[next_];
+      next_ += static_cast<size_t>(params_.every);
+      frame->id = FrameId(name_, file.frame);
+      frame->timestamp_s = static_cast<double>(file.frame) / kHdFps;
+      frame->views.clear();
+      frame->labels_2d.clear();
+      ReadBodies(file.path, &frame->gt);
+      if (params_.skip_empty && frame->gt.num_persons() == 0) continue;
+      ++delivered_;
+      return true;
+    }
+    return false;
+  }
+  const InputWarnings& warnings() const override { return warnings_; }
+
+ private:
+  std::string name_;
+  std::filesystem::path folder_;
+  PanopticParams params_;
+  SequenceHeader header_;
+  InputWarnings warnings_;
+  std::vector<PoseFile> files_;
+  size_t next_ = 0;
+  long delivered_ = 0;
+};
+
 }  // namespace
 
 const JointNames& PanopticJoints() {
@@ -186,49 +236,32 @@ DatasetInfo PanopticInfo() {
   return info;
 }
 
-std::vector<Sequence> ReadPanoptic(const DatasetRequest& request) {
+std::vector<std::unique_ptr<FrameSource>> StreamPanoptic(const DatasetRequest& request) {
   const PanopticParams params = ParseDatasetParams<PanopticParams>("panoptic", request);
-  const std::vector<std::string>& names = params.sequences;
-  if (names.empty()) throw ConfigError("panoptic: param sequences: no sequences selected");
-  const std::string& camera_selection = params.cameras;
-  const long every = params.every;
-  const long max_frames = params.max_frames;
-  const bool skip_empty = params.skip_empty;
-
+  if (params.sequences.empty()) throw ConfigError("panoptic: param sequences: no sequences selected");
   std::error_code ec;
   if (!std::filesystem::is_directory(request.root, ec)) {
     throw InputError("panoptic: root '" + request.root.string() + "' is not a directory");
   }
-
   // All sequence folders are checked before any is read, so a typo fails fast.
-  for (const std::string& name : names) {
+  for (const std::string& name : params.sequences) {
     if (!std::filesystem::is_directory(request.root / name, ec)) {
       throw InputError("panoptic: sequence '" + name + "' not found: " + (request.root / name).string() +
                        " is not a directory");
     }
   }
-  std::vector<Sequence> sequences;
-  for (const std::string& name : names) {
-    const std::filesystem::path folder = request.root / name;
-    Sequence sequence;
-    sequence.name = "panoptic/" + name;
-    sequence.cameras = ReadCameras(folder / ("calibration_" + name + ".json"), camera_selection, &sequence.warnings);
-    sequence.gt_joints = PanopticJoints();
-    sequence.room.center_m = Eigen::Vector3d(0.0, -0.5, 0.8);
-    sequence.room.size_m = Eigen::Vector3d(8.0, 8.0, 2.0);
-    sequence.fps = kHdFps;
+  std::vector<std::unique_ptr<FrameSource>> sources;
+  for (const std::string& name : params.sequences) {
+    sources.push_back(std::make_unique<PanopticSource>(request.root, name, params));
+  }
+  return sources;
+}
 
-    const std::vector<PoseFile> files = ListPoseFiles(folder / kPoseFolder);
-    for (size_t i = 0; i < files.size(); i += static_cast<size_t>(every)) {
-      if (max_frames > 0 && static_cast<long>(sequence.frames.size()) >= max_frames) break;
-      SequenceFrame frame;
-      frame.id = FrameId(name, files[i].frame);
-      frame.timestamp_s = static_cast<double>(files[i].frame) / kHdFps;
-      ReadBodies(files[i].path, &frame.gt);
-      if (skip_empty && frame.gt.num_persons() == 0) continue;
-      sequence.frames.push_back(std::move(frame));
-    }
-    ValidateSequence(sequence, folder.string());
+std::vector<Sequence> ReadPanoptic(const DatasetRequest& request) {
+  std::vector<Sequence> sequences;
+  for (const std::unique_ptr<FrameSource>& source : StreamPanoptic(request)) {
+    Sequence sequence = Materialize(*source);
+    ValidateSequence(sequence, static_cast<const PanopticSource&>(*source).folder().string());
     sequences.push_back(std::move(sequence));
   }
   return sequences;

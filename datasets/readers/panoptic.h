@@ -27,12 +27,14 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "core/camera.h"
 #include "core/joints.h"
 #include "datasets/dataset_params.h"
+#include "datasets/frame_source.h"
 #include "datasets/sequence.h"
 
 namespace rpt {
@@ -86,5 +88,9 @@ void VisitFields(Visitor& v, Self& o) {
 
 DatasetInfo PanopticInfo();
 std::vector<Sequence> ReadPanoptic(const DatasetRequest& request);
+// The same sequences streamed: cameras and the file list are read up front (all errors about
+// folders, calibrations and cameras surface here), one annotation file per frame pulled.
+// ReadPanoptic is these sources materialised.
+std::vector<std::unique_ptr<FrameSource>> StreamPanoptic(const DatasetRequest& request);
 
 }  // namespace rpt

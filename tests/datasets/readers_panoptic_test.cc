@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "datasets/frame_source.h"
 #include "datasets/readers/panoptic.h"
 #include "tests/datasets/io_test_util.h"
 #include "tests/error_message.h"
@@ -217,6 +218,34 @@ TEST(PanopticReader, DefaultSequencesAreReportedMissing) {
                     Request(test::SharedData("panoptic"), {{"sequences", "160906_band1"}, {"cameras", "00_03,00_99"}}));
               }),
               HasSubstr("calibration_160906_band1.json: camera '00_99' not found; HD cameras: 00_00, 00_01, 00_02"));
+}
+
+TEST(PanopticReader, StreamsOneAnnotationFilePerFramePulled) {
+  RPT_REQUIRE_SHARED_DATA("panoptic/160906_band1");
+  const DatasetRequest request =
+      Request(test::SharedData("panoptic"), {{"sequences", "160906_band1,160906_band2"}, {"every", "1"}});
+  const std::vector<Sequence> read = ReadPanoptic(request);
+  std::vector<std::unique_ptr<FrameSource>> sources = StreamPanoptic(request);
+  ASSERT_EQ(sources.size(), 2u);
+  EXPECT_EQ(sources[0]->num_frames(), -1) << "skip_empty: the count is known once the files are read";
+  for (size_t s = 0; s < sources.size(); ++s) {
+    EXPECT_EQ(sources[s]->header().cameras.size(), read[s].cameras.size());
+    SequenceFrame frame;  // one buffer for every frame
+    size_t f = 0;
+    while (sources[s]->Next(&frame)) {
+      ASSERT_LT(f, read[s].frames.size());
+      EXPECT_EQ(frame.id, read[s].frames[f].id);
+      EXPECT_EQ(frame.gt.data, read[s].frames[f].gt.data);
+      ++f;
+    }
+    EXPECT_EQ(f, read[s].frames.size());
+  }
+  const std::vector<std::unique_ptr<FrameSource>> counted = StreamPanoptic(
+      Request(test::SharedData("panoptic"), {{"sequences", "160906_band1"}, {"every", "3"}, {"skip_empty", "false"}}));
+  const Sequence all = Materialize(*StreamPanoptic(Request(test::SharedData("panoptic"),
+                                                            {{"sequences", "160906_band1"}, {"every", "3"}, {"skip_empty", "false"}}))[0]);
+  EXPECT_EQ(counted[0]->num_frames(), 7) << "20 files, every 3rd: known in advance without skip_empty";
+  EXPECT_EQ(static_cast<long>(all.frames.size()), counted[0]->num_frames());
 }
 
 // ---------------------------------------------------------------------------------------

@@ -1,0 +1,29 @@
+// SPDX-License-Identifier: MIT
+#include "datasets/simulated_source.h"
+
+#include <utility>
+
+namespace rpt {
+namespace {
+
+SequenceHeader WithDetectionJoints(SequenceHeader header, const JointNames& joints) {
+  header.detection_joints = joints;
+  return header;
+}
+
+}  // namespace
+
+SimulatedDetectionsSource::SimulatedDetectionsSource(std::unique_ptr<FrameSource> frames,
+                                                     const SimulationOptions& options)
+    : frames_(std::move(frames)),
+      header_(WithDetectionJoints(frames_->header(), SimulatedDetectionJoints(options, frames_->header().gt_joints))),
+      detector_(SimulatedDetectorModel(options), header_.detection_joints, options.seed) {}
+
+bool SimulatedDetectionsSource::Next(SequenceFrame* frame) {
+  if (!frames_->Next(frame)) return false;
+  detector_.Detect(header_.cameras, frame->gt, header_.gt_joints, next_frame_++, &frame->views, nullptr,
+                   &frame->labels_2d);
+  return true;
+}
+
+}  // namespace rpt
