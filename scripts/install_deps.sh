@@ -8,5 +8,6 @@ $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends \
   build-essential cmake pkg-config ccache \
   libeigen3-dev libopencv-dev nlohmann-json3-dev libcli11-dev libhdf5-dev zlib1g-dev \
-  libgtest-dev libgmock-dev libbenchmark-dev >/dev/null
+  libgtest-dev libgmock-dev libbenchmark-dev \
+  clang libclang-rt-14-dev >/dev/null
 echo "dependencies installed"

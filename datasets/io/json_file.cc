@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <optional>
 
 #include "core/errors.h"
 #include "datasets/io/number_text.h"
@@ -34,19 +36,41 @@ void LineColumn(std::string_view text, std::size_t byte, std::size_t* line, std:
   *column = byte > line_start ? byte - line_start : 1;
 }
 
+// nlohmann's DOM builder, except that every error the parser reports (syntax errors and number
+// overflows such as 1e400, which nlohmann reports as out_of_range.406 rather than parse_error)
+// becomes an InputError naming the source, line and column. sax_parse calls parse_error() of
+// this type (it is a template on the SAX type), so hiding the base's method is enough.
+class DomBuilder : public nlohmann::detail::json_sax_dom_parser<nlohmann::json> {
+ public:
+  DomBuilder(nlohmann::json& root, std::string_view text, const std::string& source)
+      : json_sax_dom_parser(root, /*allow_exceptions=*/true), text_(text), source_(source) {}
+
+  [[noreturn]] bool parse_error(std::size_t position, const std::string& /*token*/, const nlohmann::detail::exception& e) {
+    std::size_t line = 0, column = 0;
+    LineColumn(text_, position, &line, &column);
+    std::string msg = e.what();
+    // Drop nlohmann's own "[json.exception.parse_error.101] parse error at line 1, column 2: " prefix.
+    if (msg.rfind("[json.exception", 0) == 0) {
+      if (auto p = msg.find("] "); p != std::string::npos) msg = msg.substr(p + 2);
+      if (msg.rfind("parse error", 0) == 0) {
+        if (auto p = msg.find(": "); p != std::string::npos) msg = msg.substr(p + 2);
+      }
+    }
+    throw InputError(source_ + ":" + std::to_string(line) + ":" + std::to_string(column) + ": JSON parse error: " + msg);
+  }
+
+ private:
+  std::string_view text_;
+  const std::string& source_;
+};
+
 }  // namespace
 
 nlohmann::json ParseJsonText(std::string_view text, const std::string& source) {
-  try {
-    return nlohmann::json::parse(text.begin(), text.end());
-  } catch (const nlohmann::json::parse_error& e) {
-    std::size_t line = 0, column = 0;
-    LineColumn(text, e.byte, &line, &column);
-    std::string msg = e.what();
-    // Drop nlohmann's own "[json.exception.parse_error.101] parse error at line 1, column 2: " prefix.
-    if (auto p = msg.find(": "); p != std::string::npos && msg.rfind("[json.exception", 0) == 0) msg = msg.substr(p + 2);
-    throw InputError(source + ":" + std::to_string(line) + ":" + std::to_string(column) + ": JSON parse error: " + msg);
-  }
+  nlohmann::json root;
+  DomBuilder builder(root, text, source);
+  nlohmann::json::sax_parse(text.begin(), text.end(), &builder);
+  return root;
 }
 
 nlohmann::json LoadJsonFile(const std::filesystem::path& path) {
@@ -93,14 +117,37 @@ double JsonNumber(const nlohmann::json& root, const std::string& pointer, const 
   return j.get<double>();
 }
 
-std::int64_t JsonInt(const nlohmann::json& root, const std::string& pointer, const std::string& source) {
-  const auto& j = JsonAt(root, pointer, source);
+std::optional<std::int64_t> JsonToInt64(const nlohmann::json& j) {
+  if (j.is_number_unsigned()) {
+    const auto u = j.get<std::uint64_t>();
+    if (u > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max())) return std::nullopt;
+    return static_cast<std::int64_t>(u);
+  }
   if (j.is_number_integer()) return j.get<std::int64_t>();
   if (j.is_number_float()) {
+    // Integral doubles inside the int64 range; 2^63 itself is the first double outside it.
     const double d = j.get<double>();
-    if (d == static_cast<double>(static_cast<std::int64_t>(d))) return static_cast<std::int64_t>(d);
+    if (std::isfinite(d) && d == std::floor(d) && d >= -0x1p63 && d < 0x1p63) return static_cast<std::int64_t>(d);
+  }
+  return std::nullopt;
+}
+
+std::int64_t JsonInt(const nlohmann::json& root, const std::string& pointer, const std::string& source) {
+  const auto& j = JsonAt(root, pointer, source);
+  if (const auto value = JsonToInt64(j)) return *value;
+  if (j.is_number_unsigned() || (j.is_number_float() && j.get<double>() == std::floor(j.get<double>()))) {
+    Fail(source, pointer, "integer " + j.dump() + " is outside the 64-bit signed range");
   }
   Fail(source, pointer, "expected an integer, got " + (j.is_number() ? j.dump() : TypeName(j)));
+}
+
+std::int64_t JsonIntIn(const nlohmann::json& root, const std::string& pointer, const std::string& source,
+                       std::int64_t min_value, std::int64_t max_value) {
+  const std::int64_t value = JsonInt(root, pointer, source);
+  if (value < min_value || value > max_value) {
+    Fail(source, pointer, std::to_string(value) + " is not an integer " + IntegerRangeText(min_value, max_value));
+  }
+  return value;
 }
 
 bool JsonBool(const nlohmann::json& root, const std::string& pointer, const std::string& source) {

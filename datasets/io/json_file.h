@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -36,7 +37,14 @@ const nlohmann::json* JsonFind(const nlohmann::json& root, const std::string& po
 const nlohmann::json& JsonAt(const nlohmann::json& root, const std::string& pointer, const std::string& source);
 
 double JsonNumber(const nlohmann::json& root, const std::string& pointer, const std::string& source);
+// An integer: a JSON integer or an integral float, within the int64 range. Anything else, including
+// 2^63 + 5 (stored by nlohmann as an unsigned) and 1e30, throws InputError naming the pointer.
 std::int64_t JsonInt(const nlohmann::json& root, const std::string& pointer, const std::string& source);
+// JsonInt within [min_value, max_value] ("<source>: <pointer>: 70000 is not an integer in [0, 65535]").
+std::int64_t JsonIntIn(const nlohmann::json& root, const std::string& pointer, const std::string& source,
+                       std::int64_t min_value, std::int64_t max_value);
+// The value as an int64 when it is an integer (or integral float) inside the int64 range.
+std::optional<std::int64_t> JsonToInt64(const nlohmann::json& j);
 bool JsonBool(const nlohmann::json& root, const std::string& pointer, const std::string& source);
 std::string JsonString(const nlohmann::json& root, const std::string& pointer, const std::string& source);
 // A flat array of numbers, optionally of an exact length.

@@ -25,19 +25,16 @@ struct ViewKey {
   std::string camera;
 };
 
-// An image id written as an integer or as a string of digits.
+// An image id written as an integer or as a string of digits, inside the int64 range (an id of
+// 2^63 + 5 is refused instead of wrapping to a negative number).
 std::int64_t ImageId(const json& value, const std::string& source, const std::string& pointer) {
-  if (value.is_number_integer()) return value.get<std::int64_t>();
-  if (value.is_number_float()) {
-    const double d = value.get<double>();
-    if (std::isfinite(d) && d == std::floor(d) && std::abs(d) < 9e15) return static_cast<std::int64_t>(d);
-  }
+  if (const auto id = io::JsonToInt64(value)) return *id;
   if (value.is_string()) {
     const std::string text = value.get<std::string>();
     std::int64_t id = 0;
     if (io::ParseInteger(text, &id)) return id;
   }
-  throw InputError(source + ": " + pointer + ": expected an integer image id, got " + value.dump());
+  throw InputError(source + ": " + pointer + ": expected an integer image id in the 64-bit signed range, got " + value.dump());
 }
 
 std::optional<ViewKey> MvorView(std::int64_t image_id) {

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/errors.h"
+#include "datasets/camera_plausibility.h"
 #include "datasets/io/json_file.h"
 
 namespace rpt {
@@ -78,6 +79,7 @@ std::vector<Camera> ReadFourDaCalibration(const std::filesystem::path& path, Inp
     if (const std::string error = camera.Validate(); !error.empty()) {
       throw InputError(source + ": " + base + ": " + error);  // error names the camera
     }
+    CountImplausibleCamera(camera, source, warnings);
     cameras.push_back(std::move(camera));
   });
   return cameras;

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <optional>
 #include <unordered_map>
@@ -11,6 +12,7 @@
 
 #include "core/errors.h"
 #include "datasets/input_warnings.h"
+#include "datasets/camera_plausibility.h"
 #include "datasets/io/json_file.h"
 #include "datasets/io/text_file.h"
 #include "datasets/readers/generic_common.h"
@@ -101,6 +103,7 @@ std::vector<Camera> ParseCameras(const json& root, const std::string& pointer, c
   std::unordered_set<std::string> names;
   for (size_t c = 0; c < list.size(); ++c) {
     cameras.push_back(ParseCamera(root, io::JsonPointerJoin(pointer, c), source, warnings));
+    CountImplausibleCamera(cameras.back(), source, warnings);
     if (!names.insert(cameras.back().name).second) {
       Fail(source, io::JsonPointerJoin(pointer, c) + "/name", "camera name '" + cameras.back().name + "' appears twice");
     }
@@ -195,10 +198,17 @@ std::string GroupKey(const json& label) {
 bool InSplit(const json& root, const std::string& pointer, const std::string& source, const std::string& split) {
   const json* splits = io::JsonFind(root, pointer + "/splits");
   if (!splits || splits->is_null()) return false;
-  if (splits->is_string()) return splits->get<std::string>() == split;
-  if (!splits->is_array()) Fail(source, pointer + "/splits", "expected a list of split names");
-  return std::any_of(splits->begin(), splits->end(),
-                     [&](const json& s) { return s.is_string() && s.get<std::string>() == split; });
+  // A bare string ("splits": "test") is refused rather than guessed at: a list is what the format
+  // documents, and a typo elsewhere in the type would otherwise drop labels silently.
+  if (!splits->is_array()) {
+    Fail(source, pointer + "/splits", "expected a list of split names (e.g. [\"test\"]), got " + std::string(splits->type_name()));
+  }
+  for (size_t k = 0; k < splits->size(); ++k) {
+    if (!(*splits)[k].is_string()) {
+      Fail(source, io::JsonPointerJoin(pointer + "/splits", k), "expected a split name, got " + std::string((*splits)[k].type_name()));
+    }
+  }
+  return std::any_of(splits->begin(), splits->end(), [&](const json& s) { return s.get<std::string>() == split; });
 }
 
 struct SequenceBuild {
@@ -277,7 +287,15 @@ std::vector<Sequence> ReadLabels(const std::filesystem::path& path, const Labels
                                                std::to_string(frame.gt.num_persons()) + ")");
       }
       for (size_t p = 0; p < ids->size(); ++p) {
-        frame.gt.track_ids[p] = static_cast<int>(io::JsonInt(root, io::JsonPointerJoin(pointer + "/bodyids", p), source));
+        const std::string id_pointer = io::JsonPointerJoin(pointer + "/bodyids", p);
+        const int body_id = static_cast<int>(io::JsonIntIn(root, id_pointer, source, -1, std::numeric_limits<int>::max()));
+        // Ids name persons across frames (tracking metrics): two persons of one frame cannot share one.
+        for (size_t q = 0; q < p && body_id >= 0; ++q) {
+          if (frame.gt.track_ids[q] == body_id) {
+            Fail(source, id_pointer, "body id " + std::to_string(body_id) + " is also the id of person " + std::to_string(q));
+          }
+        }
+        frame.gt.track_ids[p] = body_id;
       }
     }
     const json* timestamp = io::JsonFind(root, pointer + "/timestamp");
@@ -285,6 +303,16 @@ std::vector<Sequence> ReadLabels(const std::filesystem::path& path, const Labels
     if (build.has_timestamp.back()) {
       frame.timestamp_s = io::JsonNumber(root, pointer + "/timestamp", source);
       if (!std::isfinite(frame.timestamp_s)) Fail(source, pointer + "/timestamp", "not finite");
+      // Tracking and smoothing take the time between frames from here: it must move forward.
+      if (sequence.frames.size() >= 2 && build.has_timestamp[build.has_timestamp.size() - 2]) {
+        const double previous = sequence.frames[sequence.frames.size() - 2].timestamp_s;
+        if (!(frame.timestamp_s > previous)) {
+          Fail(source, pointer + "/timestamp",
+               "timestamp " + json(frame.timestamp_s).dump() + " does not increase (the previous label of sequence '" +
+                   sequence.name + "', '" + sequence.frames[sequence.frames.size() - 2].id + "', has " +
+                   json(previous).dump() + ")");
+        }
+      }
     }
     build.frame_index.push_back(index_in_group);
     if (const json* fps = io::JsonFind(root, pointer + "/fps"); fps && !fps->is_null() && !build.fps) {

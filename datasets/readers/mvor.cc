@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <string>
 
@@ -19,6 +20,7 @@ namespace rpt {
 namespace {
 
 constexpr int kNumCameras = 3;
+constexpr std::int64_t kMinInt = std::numeric_limits<int>::min(), kMaxInt = std::numeric_limits<int>::max();
 constexpr int kFilePoints = 12;
 constexpr double kFloorShiftM = 1.0;  // the room frame's origin is about 1 m above the floor
 constexpr const char* kAnnotationFile = "camma_mvor_2018.json";
@@ -83,11 +85,13 @@ std::vector<Camera> ReadCameras(const nlohmann::json& root, const std::string& s
     const std::vector<double> focal = io::JsonNumbers(root, intrinsics + "/focallength", source, 2);
     const std::vector<double> principal = io::JsonNumbers(root, intrinsics + "/principalpoint", source, 2);
     const double skew = io::JsonFind(root, intrinsics + "/skew_value") ? io::JsonNumber(root, intrinsics + "/skew_value", source) : 0.0;
+    for (const double side : size) {
+      if (!(side >= 1 && side <= 1e6) || side != std::floor(side)) {  // checked before the cast to int
+        throw InputError(source + ": " + intrinsics + "/imagesize: expected integers in [1, 1000000]");
+      }
+    }
     camera.width = static_cast<int>(size[0]);
     camera.height = static_cast<int>(size[1]);
-    if (camera.width != size[0] || camera.height != size[1]) {
-      throw InputError(source + ": " + intrinsics + "/imagesize: expected integers");
-    }
     camera.K << focal[0], skew, principal[0], 0, focal[1], principal[1], 0, 0, 1;
     camera.R = AcceptRotation(R_cw.transpose(), source, source + ": " + extrinsics, nullptr);
     camera.t = -camera.R * center_m;
@@ -221,8 +225,8 @@ std::vector<Sequence> ReadMvor(const DatasetRequest& request) {
     double time_s = 0;
     for (int c = 0; c < kNumCameras; ++c) {
       const std::string image = io::JsonPointerJoin(base + "/images", c);
-      const int cam = static_cast<int>(io::JsonInt(root, image + "/cam_id", source));
-      const int image_day = static_cast<int>(io::JsonInt(root, image + "/day_id", source));
+      const int cam = static_cast<int>(io::JsonIntIn(root, image + "/cam_id", source, 1, kNumCameras));
+      const int image_day = static_cast<int>(io::JsonIntIn(root, image + "/day_id", source, 0, kMaxInt));
       const int number = FrameNumber(io::JsonString(root, image + "/file_name", source), source + ": " + image);
       if (cam != c + 1) throw InputError(source + ": " + image + "/cam_id: expected " + std::to_string(c + 1));
       if (c > 0 && (image_day != day || number != frame_number)) {
@@ -245,7 +249,7 @@ std::vector<Sequence> ReadMvor(const DatasetRequest& request) {
     for (const size_t i : persons_of[key]) {
       const std::string person = io::JsonPointerJoin("/annotations3D", i);
       const std::vector<double> values = io::JsonNumbers(root, person + "/keypoints3D", source, 4 * kFilePoints);
-      auto out = frame.gt.AddPerson(static_cast<int>(io::JsonInt(root, person + "/person_id", source)));
+      auto out = frame.gt.AddPerson(static_cast<int>(io::JsonIntIn(root, person + "/person_id", source, kMinInt, kMaxInt)));
       for (int j = 0; j < kFilePoints; ++j) {
         const Eigen::Vector4d cam1(values[4 * j], values[4 * j + 1], values[4 * j + 2], 1.0);
         const double flag = values[4 * j + 3];
@@ -262,7 +266,7 @@ std::vector<Sequence> ReadMvor(const DatasetRequest& request) {
       for (const size_t i : labels_of[image_ids[c]]) {
         const std::string label = io::JsonPointerJoin("/annotations", i);
         PersonLabel2D out;
-        const int person_id = static_cast<int>(io::JsonInt(root, label + "/person_id", source));
+        const int person_id = static_cast<int>(io::JsonIntIn(root, label + "/person_id", source, kMinInt, kMaxInt));
         for (int p = 0; p < frame.gt.num_persons() && person_id >= 0; ++p) {
           if (frame.gt.track_ids[p] == person_id) out.gt_person = p;
         }

@@ -6,11 +6,13 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <map>
 
 #include "core/errors.h"
 #include "datasets/io/number_text.h"
 #include "datasets/input_warnings.h"
+#include "datasets/camera_plausibility.h"
 #include "datasets/io/json_file.h"
 
 namespace rpt {
@@ -76,6 +78,11 @@ std::vector<Camera> ReadCameras(const std::filesystem::path& path, const std::st
     }
     const std::string base = io::JsonPointerJoin("/cameras", it->second);
     const std::vector<double> resolution = io::JsonNumbers(root, base + "/resolution", source, 2);
+    for (const double side : resolution) {
+      if (!(side >= 1 && side <= 1e6) || side != std::floor(side)) {  // checked before the cast to int
+        throw InputError(source + ": " + base + "/resolution: expected integers in [1, 1000000]");
+      }
+    }
     const std::vector<double> dist = io::JsonNumbers(root, base + "/distCoef", source, 5);
     const std::vector<double> t = io::JsonMatrix(root, base + "/t", source, 3, 1);
     const Eigen::Matrix3d R = AcceptRotation(RowMajor3x3(io::JsonMatrix(root, base + "/R", source, 3, 3)), source,
@@ -87,6 +94,7 @@ std::vector<Camera> ReadCameras(const std::filesystem::path& path, const std::st
     if (const std::string error = camera.Validate(); !error.empty()) {
       throw InputError(source + ": " + base + ": " + error);  // error names the camera
     }
+    CountImplausibleCamera(camera, source, warnings);
     cameras.push_back(std::move(camera));
   }
   return cameras;
@@ -136,7 +144,7 @@ void ReadBodies(const std::filesystem::path& path, Poses3D* gt) {
       throw InputError(source + ": " + base + "/joints19: contains NaN or infinity");
     }
     if (!(joints[4 * kRootJoint + 3] > kVisibleScore)) continue;  // root invisible: dropped as in VoxelPose
-    const auto id = io::JsonInt(root, base + "/id", source);
+    const auto id = io::JsonIntIn(root, base + "/id", source, std::numeric_limits<int>::min(), std::numeric_limits<int>::max());
     auto person = gt->AddPerson(static_cast<int>(id));
     for (int j = 0; j < kJoints; ++j) {
       const double c = joints[4 * j + 3];

@@ -6,6 +6,7 @@
 
 #include "core/errors.h"
 #include "datasets/input_warnings.h"
+#include "datasets/camera_plausibility.h"
 #include "datasets/io/json_file.h"
 
 namespace rpt {
@@ -39,9 +40,10 @@ std::vector<Camera> ReadVoxelPoseCalibration(const std::filesystem::path& path, 
     camera.name = id;
     camera.width = image_width;
     camera.height = image_height;
-    camera.K << io::JsonNumber(root, base + "/fx", source), 0.0, io::JsonNumber(root, base + "/cx", source),  //
-        0.0, io::JsonNumber(root, base + "/fy", source), io::JsonNumber(root, base + "/cy", source),          //
-        0.0, 0.0, 1.0;
+    // Read before the comma initialiser: a throw in the middle of one asserts in Debug builds.
+    const double fx = io::JsonNumber(root, base + "/fx", source), fy = io::JsonNumber(root, base + "/fy", source);
+    const double cx = io::JsonNumber(root, base + "/cx", source), cy = io::JsonNumber(root, base + "/cy", source);
+    camera.K << fx, 0.0, cx, 0.0, fy, cy, 0.0, 0.0, 1.0;
 
     const std::vector<double> k = OptionalCoefficients(root, base + "/k", source, 3);
     const std::vector<double> p = OptionalCoefficients(root, base + "/p", source, 2);
@@ -52,6 +54,7 @@ std::vector<Camera> ReadVoxelPoseCalibration(const std::filesystem::path& path, 
     if (const std::string error = camera.Validate(); !error.empty()) {
       throw InputError(source + ": " + base + ": " + error);  // error names the camera
     }
+    CountImplausibleCamera(camera, source, warnings);
     cameras.push_back(std::move(camera));
   });
   return cameras;

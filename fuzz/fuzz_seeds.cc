@@ -1,0 +1,177 @@
+// SPDX-License-Identifier: MIT
+#include "fuzz/fuzz_seeds.h"
+
+#include <Eigen/Geometry>
+#include <filesystem>
+#include <string>
+
+#include "core/joints.h"
+#include "datasets/io/binary.h"
+#include "datasets/readers/generic_detections.h"
+#include "datasets/readers/generic_labels.h"
+#include "datasets/readers/hdf5_cache.h"
+#include "fuzz/fuzz_targets.h"
+#include "tests/datasets/io_test_util.h"
+#include "tests/datasets/readers_generic_test_util.h"
+#include "tests/datasets/readers_h36m_ego_test_util.h"
+
+namespace rpt::fuzz {
+namespace {
+
+namespace fs = std::filesystem;
+using test::ByteVec;
+
+Bytes Of(const std::string& text) { return Bytes(text.begin(), text.end()); }
+
+// What a project writer puts into a file, read back as bytes.
+template <class Write>
+Bytes Written(const std::string& name, Write&& write) {
+  test::TempDir dir;
+  const fs::path path = dir.path() / name;
+  write(path);
+  return io::detail::ReadFileBytes(path);
+}
+
+// `count` numbers first, first + step, ... separated by spaces (4D-Association text).
+std::string Numbers(int count, double first, double step) {
+  std::string out;
+  for (int i = 0; i < count; ++i) out += (i ? " " : "") + std::to_string(first + step * i);
+  return out;
+}
+
+// x, y, score triples of `joints` points.
+std::string Keypoints(int joints, double x0) {
+  std::string out;
+  for (int j = 0; j < joints; ++j) {
+    out += (j ? ", " : "") + std::to_string(x0 + 10 * j) + ", " + std::to_string(200 + 5 * j) + ", " + (j % 4 ? "0.8" : "0.0");
+  }
+  return out;
+}
+
+// A VoxelPose cache: defaultdict {"<camera>_<frame>": [{"pred": 17x3 float64}]}.
+ByteVec VoxelPosePickle() {
+  test::PickleWriter w;
+  w.Proto(3).Global("collections", "defaultdict").None().Tuple1().Reduce().Mark();
+  for (const char* key : {"0_0", "1_0", "0_2"}) {
+    w.Str(key).EmptyList().Mark();
+    std::vector<double> pred;
+    for (int j = 0; j < 17; ++j) {
+      for (double v : {100.0 + 3 * j, 50.0 + 2 * j, 0.5 + 0.02 * j}) pred.push_back(v);
+    }
+    w.EmptyDict().Str("pred").Array({17, 3}, "f8", "<", false, test::RawOf(pred)).SetItem();
+    w.Appends();
+  }
+  w.SetItems().Stop();
+  return w.bytes;
+}
+
+ByteVec Npy2x3() {
+  return test::NpyBytes("{'descr': '<f8', 'fortran_order': False, 'shape': (2, 3), }", test::RawOf(std::vector<double>{1, 2, 3, 4, 5, 6}));
+}
+
+ByteVec MatFile() {
+  using namespace test::mat;
+  ByteVec out = Header();
+  test::Append(out, Matrix(kDoubleClass, {2, 2}, "a", Doubles({1, 2, 3, 4})));
+  test::Append(out, Compressed(Matrix(kDoubleClass, {1, 3}, "b", Doubles({5, 6, 7}))));
+  const std::string text = "hi";
+  ByteVec chars;
+  for (char c : text) test::AppendLE(chars, static_cast<std::uint8_t>(c), 2);
+  test::Append(out, Matrix(kCharClass, {1, 2}, "s", Element(kUInt16, chars)));
+  return out;
+}
+
+// A 4D-Association detection file: BODY25, `frames` frames of one candidate per joint.
+std::string FourDaDetections(int frames) {
+  std::string out = "4 " + std::to_string(frames) + "\n";
+  for (int f = 0; f < frames; ++f) {
+    for (int j = 0; j < 25; ++j) out += "1\n" + std::to_string(0.3 + 0.01 * j) + "\n" + std::to_string(0.2 + 0.02 * j) + "\n0.9\n";
+    for (int k = 0; k < 26; ++k) out += "0.7\n";
+  }
+  return out;
+}
+
+std::string FourDaSkeletons() {
+  std::string out = "19 2\n";
+  for (int f = 0; f < 2; ++f) {
+    out += "1\n5\n";
+    for (int row = 0; row < 4; ++row) out += Numbers(19, row == 3 ? 1 : 0.1 * row + f, row == 3 ? 0 : 0.05) + "\n";
+  }
+  return out;
+}
+
+// A small MVOR annotation file of day 1: three cameras, one multi-view frame, one 3D person.
+std::string MvorAnnotations() {
+  std::string intrinsics;
+  for (int c = 0; c < 3; ++c) {
+    intrinsics += std::string(c ? ", " : "") +
+                  R"({"focallength": [500, 500], "principalpoint": [320, 240], "distortion": [0.1, 0, 0, 0, 0], "skew_value": 0, "imagesize": [640, 480]})";
+  }
+  auto rigid = [](double tx) { return "[1, 0, 0, " + std::to_string(tx) + ", 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]"; };
+  std::string images;
+  for (int c = 1; c <= 3; ++c) {
+    images += std::string(c > 1 ? ", " : "") + R"({"id": )" + std::to_string(10000000000LL + c * 10000000LL + 5) +
+              R"(, "file_name": "day1/cam)" + std::to_string(c) + R"(/color/000005.png", "cam_id": )" + std::to_string(c) +
+              R"(, "day_id": 1, "width": 640, "height": 480, "date_captured": "2015-04-01 06:47:08.500000"})";
+  }
+  std::string points;
+  for (int j = 0; j < 12; ++j) points += (j ? ", " : "") + std::to_string(100 * j) + ", 0, 3000, 2";
+  return R"({"cameras_info": {"camParams": {"intrinsics": [)" + intrinsics + R"(], "extrinsics": [)" + rigid(0) + ", " +
+         rigid(1000) + ", " + rigid(-500) + R"(], "firstCamToRoomRef": [1, 0, 0, 1000, 0, 0, 1, 0, 0, -1, 0, 1000, 0, 0, 0, 1]}},
+ "images": [)" + images + R"(], "multiview_images": [{"id": "x", "images": [)" + images + R"(]}],
+ "annotations3D": [{"image_ids": "10010000005_10020000005_10030000005", "person_id": 4, "ref_camera": 2, "keypoints3D": [)" +
+         points + R"(], "id": "1"}],
+ "annotations": [{"image_id": 10010000005, "person_id": 4, "bbox": [10, 20, 100, 200], "keypoints": [)" + Keypoints(10, 50) + "]}]}";
+}
+
+}  // namespace
+
+std::map<std::string, std::vector<std::pair<std::string, Bytes>>> MakeFuzzSeeds() {
+  std::map<std::string, std::vector<std::pair<std::string, Bytes>>> seeds;
+  const Sequence labels = test::MakeLabelSequence("scene", 3, "frame_");
+  seeds["labels"] = {
+      {"written.json", Written("labels.json", [&](const fs::path& p) { WriteLabels(p, {labels}); })},
+      {"skelda.json", Of(R"([{"id": "s_0", "splits": ["test"], "joints": ["nose", "shoulder_left"], "timestamp": 0.5, "bodyids": [1],
+  "cameras": [{"name": "c0", "type": "fisheye", "K": [[600, 0, 640], [0, 600, 480], [0, 0, 1]], "DC": [0.1, -0.02, 0.003, -0.0004],
+    "R": [[1, 0, 0], [0, 0, -1], [0, 1, 0]], "T": [[0], [-4], [1.5]], "width": 1280, "height": 960}],
+  "bodies3D": [[[0.1, 0.2, 1.7, 1], [0.3, 0.2, 1.5]]], "room_size": [8, 8, 3], "room_center": [[0], [0], [1.5]]}])")}};
+  const Detections detections = test::MakeDetections(3, {"cam_a", "cam_b"}, CocoBodyJoints());
+  seeds["detections_json"] = {
+      {"written.json", Written("detections.json", [&](const fs::path& p) { WriteGenericDetections(p, detections); })}};
+  seeds["coco"] = {{"mvor_results.json", Of(R"([{"image_id": 10010000005, "category_id": 1, "score": 0.9, "keypoints": [)" +
+                                                Keypoints(17, 100) + R"(]}, {"image_id": "10020000005", "category_id": 1, "score": 0.4, "keypoints": [)" +
+                                                Keypoints(17, 300) + "]}]")}};
+  seeds["openpose"] = {{"body25.json", Of(R"({"version": 1.3, "people": [{"person_id": [-1], "pose_keypoints_2d": [)" + Keypoints(25, 40) +
+                                          R"(]}, {"pose_keypoints_2d": [)" + Keypoints(25, 400) + "]}]}")}};
+  const std::string voxelpose_camera =
+      R"({"R": [[1, 0, 0], [0, 0, -1], [0, 1, 0]], "T": [[0], [-4000], [1500]], "fx": 1000, "fy": 1001, "cx": 516, "cy": 388,
+  "k": [[-0.2], [0.05], [0.0]], "p": [[0.001], [-0.0005]]})";
+  seeds["voxelpose_calibration"] = {{"calibration.json", Of(R"({"0": )" + voxelpose_camera + R"(, "1": )" + voxelpose_camera + "}")}};
+  seeds["voxelpose_detections"] = {{"pred.pkl", VoxelPosePickle()}};
+  test::PickleWriter dict;
+  dict.Proto(2).EmptyDict().Mark().Str("a").Int(5).Str("b").Float(2.5).Str("c").EmptyList().SetItems().Stop();
+  seeds["pickle"] = {{"cache.pkl", VoxelPosePickle()}, {"dict.pkl", dict.bytes}};
+  seeds["npy"] = {{"a.npy", Npy2x3()}};
+  seeds["npz"] = {{"stored.npz", test::ZipBytes({{"a.npy", Npy2x3()}, {"b.npy", Npy2x3(), true}})},
+                  {"numpy.npz", test::ZipBytes({{"x.npy", Npy2x3(), true, true}})}};
+  seeds["mat"] = {{"a.mat", MatFile()}};
+  seeds["hdf5"] = {
+      {"sequences.h5", Written("s.h5", [&](const fs::path& p) { WriteSequencesHdf5(p, {labels}); })},
+      {"detections.h5", Written("d.h5", [&](const fs::path& p) { WriteDetectionsHdf5(p, detections); })}};
+  seeds["colmap_cameras"] = {{"cameras.txt", Of("# Camera list\n1 PINHOLE 640 480 500 500 320 240\n2 OPENCV 640 480 500 501 320 240 0.1 -0.01 0.001 0.002\n"
+                                                "3 SIMPLE_RADIAL 800 600 700 400 300 0.05\n")}};
+  seeds["colmap_images"] = {{"images.txt", Of("# Image list\n1 1 0 0 0 0.1 0.2 3 1 cam1/000001.jpg\n100 200 -1\n"
+                                              "2 0.7071068 0 0.7071068 0 -1 0 4 2 cam2/000001.jpg\n\n")}};
+  seeds["fourda_detections"] = {{"detection.txt", Of(FourDaDetections(2))}};
+  seeds["fourda_skeletons"] = {{"gt.txt", Of(FourDaSkeletons())}};
+  seeds["fourda_calibration"] = {{"calibration.json", Of(R"({"0": {"K": [1000, 0, 480, 0, 1000, 270, 0, 0, 1], "imgSize": [960, 540],
+  "RT": [1, 0, 0, 0.1, 0, 1, 0, 0.2, 0, 0, 1, 3], "distCoeff": [0, 0, 0, 0, 0]},
+ "1": {"K": [1000, 0, 480, 0, 1000, 270, 0, 0, 1], "imgSize": [960, 540], "R": [0, 0.3, 0], "T": [0.5, 0, 3]}})")}};
+  seeds["panoptic_calibration"] = {{"calibration.json", Of(PanopticCalibrationText())}};
+  seeds["panoptic_bodies"] = {{"body3DScene.json", Of(PanopticBodiesText())}};
+  seeds["mvor"] = {{"camma_mvor_2018.json", Of(MvorAnnotations())}};
+  seeds["h36m_metadata_xml"] = {{"metadata.xml", Of(test::MetadataXml(test::W0(test::SyntheticH36mCalibs)))}};
+  return seeds;
+}
+
+}  // namespace rpt::fuzz

@@ -1,0 +1,102 @@
+// SPDX-License-Identifier: MIT
+// The fuzz targets in the ordinary test suite (no clang needed): every format has seeds, every
+// seed is accepted by its reader, and cut or flipped seeds are refused with input errors only.
+// Inputs that crashed a fuzzer become regression tests at the end of this file.
+#include "fuzz/fuzz_targets.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <initializer_list>
+#include <set>
+
+#include "fuzz/fuzz_seeds.h"
+
+namespace rpt::fuzz {
+namespace {
+
+const std::map<std::string, std::vector<std::pair<std::string, Bytes>>>& Seeds() {
+  static const auto seeds = MakeFuzzSeeds();
+  return seeds;
+}
+
+TEST(FuzzTargets, EveryTargetHasSeedsAndEverySeedIsAccepted) {
+  std::set<std::string> names;
+  for (const FuzzTarget& target : FuzzTargets()) {
+    EXPECT_TRUE(names.insert(target.name).second) << "duplicate target " << target.name;
+    EXPECT_EQ(FindFuzzTarget(target.name), &target);
+    const auto it = Seeds().find(target.name);
+    ASSERT_NE(it, Seeds().end()) << "no seeds for " << target.name;
+    ASSERT_FALSE(it->second.empty()) << target.name;
+    for (const auto& [file, bytes] : it->second) {
+      EXPECT_TRUE(RunFuzzTarget(target, bytes)) << target.name << ": seed " << file << " refused";
+    }
+  }
+  for (const auto& [name, files] : Seeds()) EXPECT_TRUE(names.count(name)) << "seeds for unknown target " << name;
+  EXPECT_EQ(FindFuzzTarget("no such format"), nullptr);
+}
+
+// Formats whose hardening is on another branch (issue 10, finding 3: HDF5, branch s10-bounds):
+// until that is merged some corrupt HDF5 caches end in std::bad_alloc ("internal error", exit 1)
+// instead of an input error. They are left out of the loop below and have their own DISABLED_
+// tests at the end; drop the name here and the DISABLED_ prefixes with that merge.
+const std::set<std::string> kHardenedElsewhere = {"hdf5"};
+
+// Runs every seed of `target` cut at 24 places and with one byte changed at 24 places: the
+// reader accepts or refuses with an input error; anything else (another exception) fails here,
+// a crash aborts. Adds to the counts of runs and of refused inputs.
+void CheckCutAndFlippedSeeds(const FuzzTarget& target, long* runs, long* refused) {
+  for (const auto& [file, seed] : Seeds().at(target.name)) {
+    constexpr std::size_t kPlaces = 24;
+    for (std::size_t k = 0; k < kPlaces; ++k) {
+      const std::size_t at = seed.size() * k / kPlaces;
+      const Bytes cut(seed.begin(), seed.begin() + static_cast<std::ptrdiff_t>(at));
+      Bytes flipped = seed;
+      flipped[at] ^= static_cast<std::uint8_t>(0x55 + k);
+      for (const Bytes* input : std::initializer_list<const Bytes*>{&cut, &flipped}) {
+        ++*runs;
+        try {
+          *refused += RunFuzzTarget(target, *input) ? 0 : 1;
+        } catch (const std::exception& e) {
+          ADD_FAILURE() << target.name << " (" << file << " " << (input == &cut ? "cut" : "flipped") << " at " << at
+                        << "): " << e.what();
+        }
+      }
+    }
+  }
+}
+
+TEST(FuzzTargets, CutAndFlippedSeedsEndInInputErrorsOnly) {
+  long runs = 0, refused = 0;
+  for (const FuzzTarget& target : FuzzTargets()) {
+    if (!kHardenedElsewhere.count(target.name)) CheckCutAndFlippedSeeds(target, &runs, &refused);
+  }
+  // Cutting a file anywhere but at its end leaves nothing a reader should accept most of the time.
+  EXPECT_GT(refused, runs / 2);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Regressions: inputs that crashed a fuzz target, made again here.
+
+// Found by CutAndFlippedSeedsEndInInputErrorsOnly: the sequences cache with byte size * 14 / 24
+// xor 0x63 (inside a dataset's header) made ReadSequencesHdf5 throw std::bad_alloc.
+TEST(FuzzRegressions, DISABLED_Hdf5SequencesCacheWithAFlippedByteIsAnInputError) {
+  const auto& seeds = Seeds().at("hdf5");
+  const auto it = std::find_if(seeds.begin(), seeds.end(), [](const auto& seed) { return seed.first == "sequences.h5"; });
+  ASSERT_NE(it, seeds.end());
+  Bytes bytes = it->second;
+  bytes[bytes.size() * 14 / 24] ^= 0x63;
+  bool accepted = true;
+  EXPECT_NO_THROW(accepted = RunFuzzTarget(*FindFuzzTarget("hdf5"), bytes));
+  EXPECT_FALSE(accepted);
+}
+
+TEST(FuzzRegressions, DISABLED_Hdf5CutAndFlippedSeedsEndInInputErrorsOnly) {
+  long runs = 0, refused = 0;
+  CheckCutAndFlippedSeeds(*FindFuzzTarget("hdf5"), &runs, &refused);
+  EXPECT_GT(refused, runs / 2);
+}
+
+}  // namespace
+}  // namespace rpt::fuzz
