@@ -75,9 +75,9 @@ ReprojectedPerson Project(const Camera& camera, const Poses3D& persons, int p, d
 // Projects and matches every person of `persons` in one view; per detection, the matched person
 // goes to *of_detection.
 std::vector<ReprojectedPerson> ReprojectPersons(const Camera& camera, const Poses2D* view,
-                                                const JointNames& detection_joints,
-                                                const PersonsWithJoints& persons, double min_score,
-                                                const ReprojectionOptions& options, std::vector<int>* of_detection) {
+                                                const JointNames& detection_joints, const PersonsWithJoints& persons,
+                                                double min_score, const ReprojectionOptions& options,
+                                                std::vector<int>* of_detection) {
   std::vector<ReprojectedPerson> out;
   if (persons.persons == nullptr) return out;
   const Poses3D& poses = *persons.persons;
@@ -123,8 +123,8 @@ std::vector<ViewReprojection> ReprojectFrame(const std::vector<Camera>& cameras,
     const int num_detections = view != nullptr ? view->num_persons() : 0;
     result.prediction_of_detection.assign(num_detections, -1);
     result.gt_of_detection.assign(num_detections, -1);
-    result.predictions = ReprojectPersons(cameras[c], view, detection_joints, predictions,
-                                          options.prediction_min_score, options, &result.prediction_of_detection);
+    result.predictions = ReprojectPersons(cameras[c], view, detection_joints, predictions, options.prediction_min_score,
+                                          options, &result.prediction_of_detection);
     result.gt = ReprojectPersons(cameras[c], view, detection_joints, gt, options.gt_min_score, options,
                                  &result.gt_of_detection);
   }

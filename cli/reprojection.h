@@ -29,15 +29,15 @@ enum class JointReprojection : int8_t {
 
 // One 3D person in one camera.
 struct ReprojectedPerson {
-  int person_idx = -1;   // index into the frame's Poses3D
-  int track_id = -1;     // Poses3D::track_ids; -1 for GT and untracked predictions
-  Eigen::Matrix2Xd uv_px;                  // per 3D joint: distorted image pixel; set unless kMissing3D / kBehindCamera
-  std::vector<JointReprojection> status;   // per 3D joint
-  std::vector<double> error_px;            // per 3D joint: |projection - detection|; NaN unless kMeasured
-  int detection_idx = -1;                  // the matched detection of this view, or -1
-  int num_measured = 0;                    // joints with status kMeasured
-  double mean_error_px = 0;                // mean of error_px over the measured joints; NaN when none
-  bool in_image = false;                   // at least one projected joint lies inside the image
+  int person_idx = -1;                    // index into the frame's Poses3D
+  int track_id = -1;                      // Poses3D::track_ids; -1 for GT and untracked predictions
+  Eigen::Matrix2Xd uv_px;                 // per 3D joint: distorted image pixel; set unless kMissing3D / kBehindCamera
+  std::vector<JointReprojection> status;  // per 3D joint
+  std::vector<double> error_px;           // per 3D joint: |projection - detection|; NaN unless kMeasured
+  int detection_idx = -1;                 // the matched detection of this view, or -1
+  int num_measured = 0;                   // joints with status kMeasured
+  double mean_error_px = 0;               // mean of error_px over the measured joints; NaN when none
+  bool in_image = false;                  // at least one projected joint lies inside the image
 };
 
 // One camera.
@@ -49,8 +49,8 @@ struct ViewReprojection {
 };
 
 struct ReprojectionOptions {
-  double gate_relative = 0.5;     // a match needs a mean joint distance <= this x the projected box diagonal
-  int min_common_joints = 2;      // joints present in both the projection and the detection
+  double gate_relative = 0.5;         // a match needs a mean joint distance <= this x the projected box diagonal
+  int min_common_joints = 2;          // joints present in both the projection and the detection
   double prediction_min_score = 0.0;  // predicted joints with a score above this are present
   double gt_min_score = 0.1;          // GT joints with a score (visibility) above this are present (as the metrics)
 };

@@ -118,8 +118,8 @@ TEST(Reprojection, GtWithItsOwnJointsAndVisibilityThreshold) {
   SetJoint(g, 1, 0.1 - 0.002, -0.2, 2, 1.0);  // u = 320 + 1000 * 0.049 * (1 + 0.1 * (0.049^2 + 0.01))
   SetJoint(g, 2, 0.2, 0, 2, 0.05);
   const Poses3D predictions = TestPredictions();
-  const std::vector<ViewReprojection> views = ReprojectFrame(
-      {TestCamera()}, {TestDetections()}, kDetectionJoints, {&predictions, &kPredictionJoints}, {&gt, &gt_joints});
+  const std::vector<ViewReprojection> views = ReprojectFrame({TestCamera()}, {TestDetections()}, kDetectionJoints,
+                                                             {&predictions, &kPredictionJoints}, {&gt, &gt_joints});
   const ViewReprojection& view = views[0];
   ASSERT_EQ(view.gt.size(), 1u);
   const ReprojectedPerson& p = view.gt[0];
