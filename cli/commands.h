@@ -15,6 +15,7 @@ void RegisterConvertCommand(CLI::App& app);
 void RegisterBenchCommand(CLI::App& app);
 void RegisterInspectCommand(CLI::App& app);
 void RegisterDetectorStatsCommand(CLI::App& app);
+void RegisterRenderCommand(CLI::App& app);
 // Commands whose success is not binary set *exit_code (check: 1 when a threshold failed).
 void RegisterCheckCommand(CLI::App& app, int* exit_code);
 void RegisterSweepCommand(CLI::App& app);

@@ -68,6 +68,7 @@ int main(int argc, char** argv) {
   rpt::cli::RegisterEvalCommand(app);
   rpt::cli::RegisterInspectCommand(app);
   rpt::cli::RegisterDetectorStatsCommand(app);
+  rpt::cli::RegisterRenderCommand(app);
   rpt::cli::RegisterDatasetsCommand(app);
   rpt::cli::RegisterConvertCommand(app);
   rpt::cli::RegisterBenchCommand(app);

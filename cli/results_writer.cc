@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "cli/results_writer.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 
@@ -27,6 +29,32 @@ std::string Cell(const Json& value, int decimals = 1) {
     return text;
   }
   return value.is_string() ? value.get<std::string>() : value.dump();
+}
+
+// "legacy_pcp_actor1" for actor id 0: the papers number Shelf/Campus actors from 1.
+std::string LegacyPcpActorKey(int actor_id) { return "legacy_pcp_actor" + std::to_string(actor_id + 1); }
+
+// The legacy PCP keys of any row: "legacy_pcp", then the per-actor keys from actor 1 to the
+// highest any row reports; empty when no row has a legacy PCP.
+std::vector<std::string> LegacyPcpKeys(const std::vector<std::pair<std::string, Json>>& rows) {
+  std::vector<int> actors;
+  bool any = false;
+  const std::string prefix = "legacy_pcp_actor";
+  for (const auto& [label, j] : rows) {
+    any |= j.contains("legacy_pcp");
+    for (const auto& [key, value] : j.items()) {
+      if (key.rfind(prefix, 0) != 0) continue;
+      const int actor = std::atoi(key.c_str() + prefix.size()) - 1;
+      if (std::find(actors.begin(), actors.end(), actor) == actors.end()) actors.push_back(actor);
+    }
+  }
+  std::vector<std::string> keys;
+  if (!any) return keys;
+  keys.push_back("legacy_pcp");
+  // Actors 1 to the highest reported: an actor without GT in the frames evaluated shows "-".
+  const int last = actors.empty() ? -1 : *std::max_element(actors.begin(), actors.end());
+  for (int actor = 0; actor <= last; ++actor) keys.push_back(LegacyPcpActorKey(actor));
+  return keys;
 }
 
 }  // namespace
@@ -91,7 +119,13 @@ void AddCountColumns(const metrics::MetricsResult& m, Json* j) {
     for (const auto& g : m.wholebody) groups[g.name] = Number(g.mpjpe_mm);
     (*j)["wholebody_mpjpe_mm"] = groups;
   }
-  if (m.legacy_pcp) (*j)["legacy_pcp"] = Number(m.legacy_pcp->average_pcp);
+  if (m.legacy_pcp) {
+    (*j)["legacy_pcp"] = Number(m.legacy_pcp->average_pcp);
+    // Per actor the average is over (metrics.legacy_pcp_actors), numbered from 1 as in the papers.
+    for (const auto& actor : m.legacy_pcp->actors) {
+      if (actor.averaged) (*j)[LegacyPcpActorKey(actor.actor_id)] = Number(actor.pcp);
+    }
+  }
 }
 
 }  // namespace
@@ -126,18 +160,24 @@ Json SummaryJson(const RunResult& run) {
   }
   Json units;
   for (const SummaryColumn& c : SummaryColumns()) units[c.key] = c.unit;
+  for (const std::string& key : LegacyPcpKeys({{"", j}})) {
+    if (j.contains(key)) units[key] = "%";
+  }
   j["units"] = units;
   return j;
 }
 
 std::string SummaryCsv(const std::vector<std::pair<std::string, Json>>& rows) {
   std::ostringstream out;
+  const std::vector<std::string> legacy = LegacyPcpKeys(rows);  // after the fixed columns, when any row has them
   out << "run";
   for (const SummaryColumn& c : SummaryColumns()) out << "," << c.key;
+  for (const std::string& key : legacy) out << "," << key;
   out << "\n";
   for (const auto& [label, j] : rows) {
     out << CsvField(label);
     for (const SummaryColumn& c : SummaryColumns()) out << "," << (j.contains(c.key) ? Cell(j[c.key], 4) : "");
+    for (const std::string& key : legacy) out << "," << (j.contains(key) ? Cell(j[key], 4) : "");
     out << "\n";
   }
   return out.str();
@@ -159,6 +199,22 @@ std::string SummaryMarkdown(const std::vector<std::pair<std::string, Json>>& row
   for (const auto& [label, j] : rows) {
     out << "| " << label << " |";
     for (const std::string& key : keys) out << " " << (j.contains(key) ? Cell(j[key], key == "fps" ? 0 : 1) : "-") << " |";
+    out << "\n";
+  }
+  // The legacy Shelf/Campus PCP as the papers report it: per actor, then their average.
+  std::vector<std::string> legacy = LegacyPcpKeys(rows);
+  if (legacy.empty()) return out.str();
+  std::rotate(legacy.begin(), legacy.begin() + 1, legacy.end());  // the average last
+  out << "\nLegacy Shelf/Campus PCP (%, `metrics.legacy_pcp`):\n\n| run |";
+  for (const std::string& key : legacy) {
+    out << (key == "legacy_pcp" ? std::string(" Average |") : " Actor " + key.substr(key.rfind('r') + 1) + " |");
+  }
+  out << "\n|---|";
+  for (size_t i = 0; i < legacy.size(); ++i) out << "---|";
+  out << "\n";
+  for (const auto& [label, j] : rows) {
+    out << "| " << label << " |";
+    for (const std::string& key : legacy) out << " " << (j.contains(key) ? Cell(j[key], 1) : "-") << " |";
     out << "\n";
   }
   return out.str();

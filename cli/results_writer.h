@@ -26,7 +26,8 @@ struct SummaryColumn {
 const std::vector<SummaryColumn>& SummaryColumns();
 
 // The summary of a run as one JSON object with SummaryColumns() keys (NaN -> null), plus
-// "wholebody_mpjpe_mm" and "legacy_pcp" when available, "step_time_us_median",
+// "wholebody_mpjpe_mm" and "legacy_pcp" (the average over the actors) with "legacy_pcp_actor1",
+// "legacy_pcp_actor2", ... (one per averaged actor) when available, "step_time_us_median",
 // "step_count_per_frame", "counter_per_frame" and "detection_noise_m" (null when not estimated),
 // and with several sequences "per_sequence": one SequenceSummaryJson per sequence.
 nlohmann::ordered_json SummaryJson(const RunResult& run);
@@ -34,7 +35,9 @@ nlohmann::ordered_json SummaryJson(const RunResult& run);
 // (everything but the run's wall-clock throughput), plus "wholebody_mpjpe_mm" / "legacy_pcp".
 nlohmann::ordered_json SequenceSummaryJson(const SequenceResult& sequence);
 
-// CSV / Markdown tables with one row per (label, summary).
+// CSV / Markdown tables with one row per (label, summary). When a row has a legacy PCP, the CSV
+// gains the columns legacy_pcp, legacy_pcp_actor1, ... after the fixed ones, and the Markdown a
+// second table in the papers' layout: Actor 1 | Actor 2 | ... | Average.
 // A CSV field (RFC 4180): quoted, with inner quotes doubled, when it holds a comma, quote or line break.
 std::string CsvField(const std::string& text);
 std::string SummaryCsv(const std::vector<std::pair<std::string, nlohmann::ordered_json>>& rows);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // `rpt sweep`: one evaluation per configuration (a list, or the grid of --grid options), run in
-// parallel across configurations with OpenMP, one row per configuration in sweep.{csv,md,json}.
+// parallel across configurations with OpenMP, one row per configuration in sweep.{csv,md,json,html}
+// (sweep.html: cli/sweep_html.h).
 // `--shard k/N` runs every N-th configuration starting at k (1-based) so a sweep can be split
 // across machines; `rpt merge` joins the shard files (docs/sweeps.md shows a Slurm array job).
 #include <atomic>
@@ -24,6 +25,7 @@
 #include "cli/results_writer.h"
 #include "cli/run_info.h"
 #include "cli/run_sequence.h"
+#include "cli/sweep_html.h"
 #include "core/errors.h"
 #include "core/text.h"
 #include "datasets/dataset_request.h"
@@ -124,7 +126,10 @@ void RunSweep(const SweepArgs& args) {
   // their own input.
   std::vector<Config> configs;
   std::vector<InputArgs> inputs;
+  std::vector<bool> is_default;  // the configuration is the base one (sweep.html's deltas are against it)
   bool per_config_input = false;
+  const Config base_options = ResolveConfig(args.config);
+  const std::string base_config = DumpConfig(base_options, false);
   for (int i : mine) {
     ConfigArgs config_args = args.config;
     InputArgs input = args.input;
@@ -138,6 +143,7 @@ void RunSweep(const SweepArgs& args) {
     }
     configs.push_back(ResolveConfig(config_args));
     inputs.push_back(input);
+    is_default.push_back(input.params == args.input.params && DumpConfig(configs.back(), false) == base_config);
   }
   // One warning line per file and kind, not one per configuration: configurations that load their
   // own input read the same files again (MergeRepeated).
@@ -191,7 +197,19 @@ void RunSweep(const SweepArgs& args) {
   for (int c = 0; c < count; ++c) {
     Json set = Json::object();
     for (const auto& [key, value] : all[mine[c]].overrides) set[key] = value;
-    rows.push_back({{"index", mine[c]}, {"name", all[mine[c]].name}, {"set", set}, {"summary", summaries[c]}});
+    rows.push_back({{"index", mine[c]},
+                    {"name", all[mine[c]].name},
+                    {"set", set},
+                    {"default", static_cast<bool>(is_default[c])},
+                    {"summary", summaries[c]}});
+  }
+  // The base configuration's value of every varied option (sweep.html shows them greyed where a
+  // row does not set the option).
+  Json base = Json::object();
+  for (const Variant& v : all) {
+    for (const auto& [key, value] : v.overrides) {
+      if (key.rfind("param.", 0) != 0 && !base.contains(key)) base[key] = GetConfigOption(base_options, key);
+    }
   }
   std::error_code ec;
   fs::create_directories(args.out, ec);
@@ -202,20 +220,24 @@ void RunSweep(const SweepArgs& args) {
   RunInfo info = CollectRunInfo(threads, CurrentCommandLine());
   info.input_warnings = InputWarningLines(warnings);
   file["run"] = RunInfoJson(info);
+  file["base"] = base;
   file["rows"] = rows;
   const std::string stem = shards == 1 ? "sweep" : "sweep-shard-" + std::to_string(shard) + "-of-" + std::to_string(shards);
   io::WriteTextFile(fs::path(args.out) / (stem + ".json"), file.dump(2) + "\n");
   WriteTables(args.out, rows, stem);
+  io::WriteTextFile(fs::path(args.out) / (stem + ".html"), SweepHtml(file));
   std::cout << SummaryMarkdown([&] {
     std::vector<std::pair<std::string, Json>> table;
     for (const Json& row : rows) table.emplace_back(row["name"].get<std::string>(), row["summary"]);
     return table;
   }());
-  std::printf("%d of %zu configurations; tables in %s/%s.{json,csv,md}\n", count, all.size(), args.out.c_str(), stem.c_str());
+  std::printf("%d of %zu configurations; tables in %s/%s.{json,csv,md,html}\n", count, all.size(), args.out.c_str(),
+              stem.c_str());
 }
 
 void RunMerge(const std::vector<std::string>& inputs, const std::string& out) {
   std::map<int, Json> by_index;
+  Json base = Json::object();
   size_t total = 0;
   for (const std::string& path : inputs) {
     const nlohmann::json shard = io::LoadJsonFile(path);
@@ -225,6 +247,7 @@ void RunMerge(const std::vector<std::string>& inputs, const std::string& out) {
                        " configurations, the others to " + std::to_string(total));
     }
     total = shard["total"].get<size_t>();
+    if (shard.contains("base")) base.update(Json::parse(shard["base"].dump()));
     for (const auto& row : shard["rows"]) {
       const int index = row["index"].get<int>();
       if (!by_index.emplace(index, Json::parse(row.dump())).second) {
@@ -245,10 +268,12 @@ void RunMerge(const std::vector<std::string>& inputs, const std::string& out) {
   Json file;
   file["total"] = total;
   file["shard"] = "1/1";
+  file["base"] = base;
   file["rows"] = rows;
   io::WriteTextFile(fs::path(out) / "sweep.json", file.dump(2) + "\n");
   WriteTables(out, rows, "sweep");
-  std::printf("merged %zu configurations from %zu shard files into %s/sweep.{json,csv,md}\n", total, inputs.size(),
+  io::WriteTextFile(fs::path(out) / "sweep.html", SweepHtml(file));
+  std::printf("merged %zu configurations from %zu shard files into %s/sweep.{json,csv,md,html}\n", total, inputs.size(),
               out.c_str());
 }
 

@@ -194,6 +194,7 @@ LegacyPcpResult LegacyPcpEvaluator::Finalize() const {
           Percent(group_correct, static_cast<double>(counts.num_frames) * LegacyGroupParts()[group].size());
     }
     if (actor_id >= 0 && actor_id < options_.legacy_pcp_actors && counts.num_frames > 0) {
+      actor.averaged = true;
       ++num_averaged;
       result.average_pcp += actor.pcp;
       for (int group = 0; group < kNumLegacyGroups; ++group) result.average_group_pcp[group] += actor.group_pcp[group];

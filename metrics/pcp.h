@@ -116,6 +116,7 @@ struct LegacyPcpResult {
     int num_frames = 0;                              // actor-frames with GT (after skipping)
     double pcp = 0.0;                                // percent, all 10 parts
     std::array<double, kNumLegacyGroups> group_pcp;  // percent, LegacyPcpGroupNames() order
+    bool averaged = false;                           // one of the actors average_pcp is over
   };
   std::vector<Actor> actors;  // sorted by actor_id; only actors with GT in some evaluated frame
   // Mean of the per-actor values over actor ids 0..legacy_pcp_actors-1 that have GT (percent).

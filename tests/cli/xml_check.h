@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 // A strict reader for the XML subset rpt writes (declaration, nested elements with quoted attributes,
 // whitespace between them): enough to prove that JUnit output is well-formed and to read it back.
+// With Markup::kDocument it also reads what sweep.html holds: a <!DOCTYPE ...> line and character
+// data between elements (the five named entities only), kept in XmlElement::text.
 #pragma once
 
 #include <cctype>
@@ -15,14 +17,26 @@ struct XmlElement {
   std::string name;
   std::map<std::string, std::string> attributes;  // entities decoded
   std::vector<XmlElement> children;
+  std::string text;  // the element's own character data, entities decoded (Markup::kDocument only)
+};
+
+enum class Markup {
+  kElementsOnly,  // JUnit: elements and whitespace
+  kDocument,      // (X)HTML: also a doctype and text between elements
 };
 
 class XmlReader {
  public:
   // Throws std::runtime_error("offset N: why") when `text` is not well-formed.
-  static XmlElement Parse(const std::string& text) {
+  static XmlElement Parse(const std::string& text, Markup markup = Markup::kElementsOnly) {
     XmlReader reader(text);
+    reader.allow_text_ = markup == Markup::kDocument;
     reader.SkipSpace();
+    if (reader.allow_text_ && reader.text_.compare(reader.pos_, 9, "<!DOCTYPE") == 0) {
+      const size_t end = reader.text_.find('>', reader.pos_);
+      if (end == std::string::npos) reader.Fail("unterminated doctype");
+      reader.pos_ = end + 1;
+    }
     if (reader.text_.compare(reader.pos_, 5, "<?xml") == 0) {
       const size_t end = reader.text_.find("?>", reader.pos_);
       if (end == std::string::npos) reader.Fail("unterminated declaration");
@@ -57,14 +71,12 @@ class XmlReader {
     if (pos_ == start) Fail("expected a name");
     return text_.substr(start, pos_ - start);
   }
-  std::string AttributeValue() {
-    const char quote = text_[pos_];
-    if (quote != '"' && quote != '\'') Fail("expected a quoted value");
-    ++pos_;
+  // Characters up to `stop` (not consumed), entities decoded; '<' is an error.
+  std::string CharacterData(char stop, const char* where) {
     std::string value;
-    while (pos_ < text_.size() && text_[pos_] != quote) {
+    while (pos_ < text_.size() && text_[pos_] != stop) {
       const char c = text_[pos_];
-      if (c == '<') Fail("'<' in an attribute value");
+      if (c == '<') Fail(std::string("'<' in ") + where);
       if (static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\n' && c != '\r') Fail("control character");
       if (c == '&') {
         static const std::map<std::string, char> entities = {
@@ -80,6 +92,13 @@ class XmlReader {
       value += c;
       ++pos_;
     }
+    return value;
+  }
+  std::string AttributeValue() {
+    const char quote = text_[pos_];
+    if (quote != '"' && quote != '\'') Fail("expected a quoted value");
+    ++pos_;
+    std::string value = CharacterData(quote, "an attribute value");
     Expect(quote);
     return value;
   }
@@ -104,6 +123,7 @@ class XmlReader {
       if (!element.attributes.emplace(key, AttributeValue()).second) Fail("repeated attribute " + key);
     }
     while (true) {
+      if (allow_text_) element.text += CharacterData('<', "text");
       SkipSpace();
       if (text_.compare(pos_, 2, "</") == 0) {
         pos_ += 2;
@@ -119,6 +139,7 @@ class XmlReader {
 
   const std::string& text_;
   size_t pos_ = 0;
+  bool allow_text_ = false;
 };
 
 }  // namespace rpt::test

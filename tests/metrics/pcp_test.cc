@@ -164,6 +164,9 @@ TEST(LegacyPcpEvaluator, ShelfScenarioFramesWithoutPredictionsAreWrong) {
   EXPECT_EQ(result.actors[2].actor_id, 3);
   EXPECT_NEAR(result.actors[2].pcp, 0.0, 1e-9);
   EXPECT_NEAR(result.average_pcp, 70.0, 1e-9);  // (50 + 90) / 2: actor 3 is not averaged
+  EXPECT_TRUE(result.actors[0].averaged);
+  EXPECT_TRUE(result.actors[1].averaged);
+  EXPECT_FALSE(result.actors[2].averaged);
   EXPECT_NEAR(result.recall_500, 50.0, 1e-9);   // 2 of 4 actor-frames
   EXPECT_EQ(result.num_frames, 2);
   EXPECT_EQ(result.num_skipped_frames, 0);

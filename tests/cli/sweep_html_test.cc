@@ -1,0 +1,200 @@
+// SPDX-License-Identifier: MIT
+// sweep.html (cli/sweep_html.h): well-formed, one row per configuration, a column per varied
+// option, deltas against the default configuration worked out by hand, one bar per row per chart;
+// and `rpt sweep` / `rpt merge` write it.
+#include "cli/sweep_html.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "tests/cli/cli_test_util.h"
+#include "tests/cli/xml_check.h"
+
+namespace rpt::cli {
+namespace {
+
+namespace fs = std::filesystem;
+using test::XmlElement;
+
+// Every element named `name` below `root`, depth first.
+std::vector<const XmlElement*> FindAll(const XmlElement& root, const std::string& name) {
+  std::vector<const XmlElement*> out;
+  std::function<void(const XmlElement&)> visit = [&](const XmlElement& e) {
+    if (e.name == name) out.push_back(&e);
+    for (const XmlElement& child : e.children) visit(child);
+  };
+  visit(root);
+  return out;
+}
+
+std::string Attribute(const XmlElement& e, const std::string& key) {
+  const auto it = e.attributes.find(key);
+  return it == e.attributes.end() ? "" : it->second;
+}
+
+// The text of an element and its descendants.
+std::string AllText(const XmlElement& e) {
+  std::string text = e.text;
+  for (const XmlElement& child : e.children) text += AllText(child);
+  return text;
+}
+
+// The rows of the table with id "sweep".
+std::vector<const XmlElement*> TableRows(const XmlElement& html) {
+  for (const XmlElement* table : FindAll(html, "table")) {
+    if (Attribute(*table, "id") == "sweep") return FindAll(*FindAll(*table, "tbody").at(0), "tr");
+  }
+  ADD_FAILURE() << "no table id=sweep";
+  return {};
+}
+
+// The cell of `row` holding `metric` (data-metric attribute), or nullptr.
+const XmlElement* MetricCell(const XmlElement& row, const std::string& metric) {
+  for (const XmlElement* td : FindAll(row, "td")) {
+    if (Attribute(*td, "data-metric") == metric) return td;
+  }
+  return nullptr;
+}
+
+nlohmann::ordered_json Row(const std::string& name, nlohmann::ordered_json set, bool is_default,
+                           nlohmann::ordered_json summary) {
+  return {{"name", name}, {"set", set}, {"default", is_default}, {"summary", summary}};
+}
+
+TEST(SweepHtml, RowsOptionsAndDeltasAgainstTheDefault) {
+  nlohmann::ordered_json sweep;
+  sweep["base"] = {{"score.mode", "adaptive"}, {"merge.top_k", "2"}};
+  sweep["run"] = {{"command", "rpt sweep --list a&b.json"}};
+  sweep["rows"] = {
+      Row("fewer <outliers>", {{"merge.top_k", "0"}}, false,
+          {{"pcp", 92.5}, {"mpjpe_mm", 55.25}, {"invalid", 10.0}, {"frame_time_us_median", 120.0}}),
+      Row("default", nlohmann::ordered_json::object(), true,
+          {{"pcp", 90.0}, {"mpjpe_mm", 50.0}, {"invalid", 10.0}, {"frame_time_us_median", 100.0}}),
+      Row("triangulation only", {{"score.mode", "triangulation"}}, false,
+          {{"pcp", nullptr}, {"mpjpe_mm", 49.0}, {"invalid", 12.0}, {"frame_time_us_median", 90.0}}),
+  };
+  EXPECT_EQ(FindSweepBaseline(sweep["rows"]).row, 1u);
+  EXPECT_TRUE(FindSweepBaseline(sweep["rows"]).is_default);
+  const std::string page = SweepHtml(sweep);
+  const XmlElement html = test::XmlReader::Parse(page, test::Markup::kDocument);  // throws when malformed
+  EXPECT_EQ(html.name, "html");
+
+  const std::vector<const XmlElement*> rows = TableRows(html);
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(Attribute(*rows[1], "class"), "baseline");
+  EXPECT_EQ(FindAll(*rows[0], "td").at(0)->text, "fewer <outliers>");
+  // Columns: configuration, the two varied options (first appearance), then the metrics reported.
+  const std::vector<const XmlElement*> header = FindAll(*FindAll(html, "thead").at(0), "th");
+  ASSERT_EQ(header.size(), 1u + 2u + 4u);
+  EXPECT_EQ(header[1]->text, "merge.top_k");
+  EXPECT_EQ(header[2]->text, "score.mode");
+  EXPECT_EQ(header[3]->text, "PCP (%)");
+  EXPECT_EQ(header[4]->text, "MPJPE (mm)");
+  // A row shows its own value, else the base value greyed.
+  const std::vector<const XmlElement*> first = FindAll(*rows[0], "td");
+  EXPECT_EQ(first[1]->text, "0");
+  EXPECT_EQ(first[2]->text, "adaptive");
+  EXPECT_EQ(Attribute(*first[2], "class"), "option inherited");
+
+  // Deltas by hand: PCP 92.5 - 90 = +2.5 (better), MPJPE 55.25 - 50 = +5.25 (worse), Invalid
+  // 10 - 10 = 0 (same), time 120 - 100 = +20 us (worse); row 3: MPJPE -1 (better), PCP missing.
+  const auto delta = [&](size_t row, const std::string& metric) -> const XmlElement* {
+    const XmlElement* cell = MetricCell(*rows[row], metric);
+    if (cell == nullptr || cell->children.empty()) return nullptr;
+    return &cell->children[0];
+  };
+  ASSERT_NE(delta(0, "pcp"), nullptr);
+  EXPECT_EQ(Attribute(*delta(0, "pcp"), "data-delta"), "2.5000");
+  EXPECT_EQ(Attribute(*delta(0, "pcp"), "class"), "delta better");
+  EXPECT_EQ(delta(0, "pcp")->text, "+2.5");
+  EXPECT_EQ(Attribute(*delta(0, "mpjpe_mm"), "data-delta"), "5.2500");
+  EXPECT_EQ(Attribute(*delta(0, "mpjpe_mm"), "class"), "delta worse");
+  EXPECT_EQ(Attribute(*delta(0, "invalid"), "class"), "delta same");
+  EXPECT_EQ(delta(0, "invalid")->text, "\u00b10.0");
+  EXPECT_EQ(Attribute(*delta(0, "frame_time_us_median"), "class"), "delta worse");
+  EXPECT_EQ(delta(0, "frame_time_us_median")->text, "+20");
+  EXPECT_EQ(Attribute(*delta(2, "mpjpe_mm"), "class"), "delta better");
+  EXPECT_EQ(delta(2, "mpjpe_mm")->text, "\u22121.0");
+  EXPECT_EQ(MetricCell(*rows[2], "pcp")->text, "-");
+  EXPECT_EQ(delta(1, "pcp"), nullptr) << "no delta on the baseline row";
+
+  // One chart per reported headline metric, one bar per configuration.
+  const std::vector<const XmlElement*> charts = FindAll(html, "svg");
+  ASSERT_EQ(charts.size(), 4u);
+  for (const XmlElement* chart : charts) {
+    int bars = 0;
+    for (const XmlElement* g : FindAll(*chart, "g")) bars += Attribute(*g, "class").rfind("bar ", 0) == 0 ? 1 : 0;
+    EXPECT_EQ(bars, 3) << Attribute(*chart, "data-metric");
+  }
+  EXPECT_EQ(Attribute(*charts[0], "data-metric"), "pcp");
+  EXPECT_EQ(FindAll(*charts[0], "rect").size(), 2u) << "no bar for a missing value";
+  EXPECT_NE(AllText(html).find("rpt sweep --list a&b.json"), std::string::npos);
+  EXPECT_EQ(page.find("<script"), std::string::npos) << "no script, nothing to load";
+}
+
+TEST(SweepHtml, WithoutADefaultRowDeltasAreAgainstTheFirst) {
+  nlohmann::ordered_json sweep;
+  sweep["rows"] = {Row("a", {{"param.cameras", "3"}}, false, {{"pcp", 50.0}}),
+                   Row("b", {{"param.cameras", "5"}}, false, {{"pcp", 75.0}})};
+  EXPECT_EQ(FindSweepBaseline(sweep["rows"]).row, 0u);
+  EXPECT_FALSE(FindSweepBaseline(sweep["rows"]).is_default);
+  const XmlElement html = test::XmlReader::Parse(SweepHtml(sweep), test::Markup::kDocument);
+  const std::vector<const XmlElement*> rows = TableRows(html);
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(Attribute(MetricCell(*rows[1], "pcp")->children.at(0), "data-delta"), "25.0000");
+  EXPECT_NE(AllText(html).find("the first row: no configuration equals the default"), std::string::npos);
+}
+
+nlohmann::json ReadJson(const fs::path& path) {
+  std::ifstream in(path);
+  return nlohmann::json::parse(in);
+}
+
+TEST(SweepHtml, WrittenBySweepAndMergeWithDeltasMatchingSweepJson) {
+  const fs::path out = test::TempDir("sweep_html");
+  // filter.min_match_score defaults to 0.7: the second configuration is the default.
+  const std::string grid =
+      "--dataset synthetic --param frames=20 --grid filter.min_match_score=0.95,0.7 --out " + out.string();
+  const test::CommandResult r = test::RunRpt("sweep " + grid);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("sweep.{json,csv,md,html}"), std::string::npos) << r.out;
+  const nlohmann::json sweep = ReadJson(out / "sweep.json");
+  ASSERT_EQ(sweep["rows"].size(), 2u);
+  EXPECT_FALSE(sweep["rows"][0]["default"].get<bool>());
+  EXPECT_TRUE(sweep["rows"][1]["default"].get<bool>());
+  EXPECT_EQ(sweep["base"]["filter.min_match_score"], "0.7");
+  const XmlElement html = test::XmlReader::Parse(test::ReadAll(out / "sweep.html"), test::Markup::kDocument);
+  const std::vector<const XmlElement*> rows = TableRows(html);
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(Attribute(*rows[1], "class"), "baseline");
+  for (const std::string metric : {"pcp", "mpjpe_mm", "recall500"}) {
+    const double expected =
+        sweep["rows"][0]["summary"][metric].get<double>() - sweep["rows"][1]["summary"][metric].get<double>();
+    const XmlElement* cell = MetricCell(*rows[0], metric);
+    ASSERT_NE(cell, nullptr) << metric;
+    ASSERT_FALSE(cell->children.empty()) << metric;
+    EXPECT_NEAR(std::stod(Attribute(cell->children[0], "data-delta")), expected, 1e-4) << metric;
+  }
+
+  ASSERT_EQ(test::RunRpt("sweep " + grid + " --shard 1/2").exit_code, 0);
+  ASSERT_EQ(test::RunRpt("sweep " + grid + " --shard 2/2").exit_code, 0);
+  const test::CommandResult merged =
+      test::RunRpt("merge " + (out / "sweep-shard-1-of-2.json").string() + " " +
+                   (out / "sweep-shard-2-of-2.json").string() + " --out " + (out / "m").string());
+  ASSERT_EQ(merged.exit_code, 0) << merged.err;
+  const XmlElement joined = test::XmlReader::Parse(test::ReadAll(out / "m" / "sweep.html"), test::Markup::kDocument);
+  const std::vector<const XmlElement*> joined_rows = TableRows(joined);
+  ASSERT_EQ(joined_rows.size(), 2u);
+  EXPECT_EQ(Attribute(*joined_rows[1], "class"), "baseline");
+  EXPECT_EQ(Attribute(MetricCell(*joined_rows[0], "mpjpe_mm")->children.at(0), "data-delta"),
+            Attribute(MetricCell(*rows[0], "mpjpe_mm")->children.at(0), "data-delta"));
+  fs::remove_all(out);
+}
+
+}  // namespace
+}  // namespace rpt::cli
