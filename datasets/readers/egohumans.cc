@@ -295,8 +295,11 @@ Poses2D ReadCacheView(const fs::path& path, const std::string& cache_dir, InputW
       if (!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]))) {
         keypoints.Fail("joint " + std::to_string(j) + ": NaN or infinite value");
       }
-      person.col(j) << p[0], p[1],
+      // Checked before the comma initialiser: a throw inside one aborts Debug builds (Eigen asserts
+      // that every coefficient was given).
+      const double score =
           AcceptScore(p[2], cache_dir, warnings, [&] { return keypoints.Where() + ": joint " + std::to_string(j); });
+      person.col(j) << p[0], p[1], score;
     }
   }
   return view;

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <fstream>
 #include <functional>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -193,6 +194,16 @@ TEST(VoxelPoseCalibration, MalformedFilesNameFileAndPlace) {
                                "{\"0\": {\"R\": " + Matrix3Json(SomeRotation(0.3)) + ", \"T\": [[0],[0],[0]]}}");
   EXPECT_THAT(test::InputErrorOf([&] { ReadVoxelPoseCalibration(no_fx, 1032, 776); }),
               HasSubstr(no_fx.string() + ": /0/fx: missing"));
+
+  // A missing cx is read after fx and 0 were given to K's comma initialiser: the throw must not
+  // happen inside it (Debug builds abort on an unfinished comma initialiser, issue 10 finding 6).
+  for (const char* key : {"cx", "fy", "cy"}) {
+    nlohmann::json camera = nlohmann::json::parse(good);
+    camera.erase(key);
+    const auto path = WriteText(dir.path() / (std::string(key) + ".json"), "{\"0\": " + camera.dump() + "}");
+    EXPECT_THAT(test::InputErrorOf([&] { ReadVoxelPoseCalibration(path, 1032, 776); }),
+                HasSubstr(path.string() + ": /0/" + key + ": missing"));
+  }
 
   const auto array = WriteText(dir.path() / "array.json", "[1, 2]");
   EXPECT_THAT(test::InputErrorOf([&] { ReadVoxelPoseCalibration(array, 1032, 776); }),
