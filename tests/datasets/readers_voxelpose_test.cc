@@ -327,8 +327,13 @@ TEST(VoxelPoseDetections, KeysMapToFramesAndCameras) {
   EXPECT_EQ(f300.frame_id, "shelf_000300");
   EXPECT_EQ(f300.cameras, (std::vector<std::string>{"1"}));
   EXPECT_DOUBLE_EQ(f300.views[0].Person(0)(2, 0), 0.4);
-  // Two detections of key 0_5 with score 1.25; keys outside the sequence are not read.
-  test::ExpectOneWarning(detections.warnings, path.string(), test::kScoresClamped, 2);
+  // Two detections of key 0_5 with score 1.25; keys of frames outside the sequence are not read,
+  // the key of camera 3 (not in the sequence) is counted as unused input.
+  ASSERT_EQ(detections.warnings.items().size(), 2u);
+  EXPECT_EQ(detections.warnings.items()[0].Line(), path.string() + ": 2 scores above 1 clamped to 1 (largest = 1.25)");
+  EXPECT_EQ(detections.warnings.items()[1].Line(),
+            path.string() + ": 1 keys of cameras not in the calibration ignored (cameras '3')");
+  EXPECT_EQ(detections.warnings.items()[1].kind, InputWarningKind::kUnused);
 }
 
 TEST(VoxelPoseDetections, ScoresSlightlyAboveOneAreClampedAndCounted) {
