@@ -186,7 +186,13 @@ TEST(OpenPose, Body25FolderMapsToCocoNamesAndFeet) {
   EXPECT_DOUBLE_EQ(at("foot_heel_right")(0), 124);     // 24
   EXPECT_DOUBLE_EQ(at("wrist_right")(2), 0.0);
   EXPECT_DOUBLE_EQ(at("foot_big_toe_left")(2), 1.0);
-  test::ExpectOneWarning(d.warnings, dir.path().string(), test::kScoresClamped, 3);  // 3 persons in 2 files
+  // notes.txt does not match the pattern: ignored and counted; 3 scores clamped (3 persons in 2 files).
+  ASSERT_EQ(d.warnings.items().size(), 2u);
+  EXPECT_EQ(d.warnings.items()[0].Line(), dir.path().string() + ": 1 files not matching the pattern '" +
+                                              OpenPoseFolderOptions{}.mapping.pattern +
+                                              "' ignored (e.g. 'Camera1/notes.txt')");
+  EXPECT_EQ(d.warnings.items()[1].what, test::kScoresClamped);
+  EXPECT_EQ(d.warnings.items()[1].count, 3);
 
   options.joints = OpenPoseJointSet::kBody;
   EXPECT_EQ(ReadOpenPoseFolder(dir.path(), options).joints, CocoBodyJoints());

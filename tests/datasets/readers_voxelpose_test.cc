@@ -330,10 +330,10 @@ TEST(VoxelPoseDetections, KeysMapToFramesAndCameras) {
   // Two detections of key 0_5 with score 1.25; keys of frames outside the sequence are not read,
   // the key of camera 3 (not in the sequence) is counted as unused input.
   ASSERT_EQ(detections.warnings.items().size(), 2u);
-  EXPECT_EQ(detections.warnings.items()[0].Line(), path.string() + ": 2 scores above 1 clamped to 1 (largest = 1.25)");
-  EXPECT_EQ(detections.warnings.items()[1].Line(),
+  EXPECT_EQ(detections.warnings.items()[0].Line(),
             path.string() + ": 1 keys of cameras not in the calibration ignored (cameras '3')");
-  EXPECT_EQ(detections.warnings.items()[1].kind, InputWarningKind::kUnused);
+  EXPECT_EQ(detections.warnings.items()[0].kind, InputWarningKind::kUnused);
+  EXPECT_EQ(detections.warnings.items()[1].Line(), path.string() + ": 2 scores above 1 clamped to 1 (largest = 1.25)");
 }
 
 TEST(VoxelPoseDetections, ScoresSlightlyAboveOneAreClampedAndCounted) {
