@@ -30,6 +30,7 @@ struct CheckArgs {
   std::string only;
   bool json = false;
   bool fail_on_skip = false;
+  bool strict = false;  // input not used fails the evaluation (CheckStrict)
   std::string junit;
 };
 
@@ -98,14 +99,16 @@ class CheckReport {
 };
 
 // Runs one evaluation and checks its bounds; throws what the readers or the pipeline throw.
-void RunEvaluation(const ThresholdEvaluation& e, InputWarnings* warnings, CheckReport* report) {
+void RunEvaluation(const ThresholdEvaluation& e, bool strict, InputWarnings* warnings, CheckReport* report) {
   RunOptions options;
   options.triangulator = e.config.triangulator;
   options.eval = e.config.metrics;
   options.progress = false;
   options.threads = 1;  // timings comparable across machines with different core counts
   InputWarnings loaded;
-  const RunResult run = RunSequences(LoadInput(e.input, true, &loaded), options);
+  InputArgs input = e.input;
+  input.strict = strict;
+  const RunResult run = RunSequences(LoadInput(input, true, &loaded), options);
   warnings->MergeRepeated(loaded);
   const nlohmann::ordered_json summary = SummaryJson(run);
   for (const ThresholdCheck& check : e.checks) {
@@ -131,7 +134,7 @@ int RunCheck(const CheckArgs& args) {
       continue;
     }
     try {
-      RunEvaluation(e, &warnings, &report);
+      RunEvaluation(e, args.strict, &warnings, &report);
     } catch (const std::exception& error) {
       report.Errored(e, error.what());
     }
@@ -155,6 +158,8 @@ void RegisterCheckCommand(CLI::App& app, int* exit_code) {
   command->add_flag("--json", args->json, "also print the checks as JSON");
   command->add_flag("--fail-on-skip", args->fail_on_skip,
                     "evaluations skipped for missing data count as failures (exit 1)");
+  command->add_flag("--strict", args->strict,
+                    "an evaluation whose input is not all used (entries skipped, frames matching nothing) fails");
   command->add_option("--junit", args->junit, "also write the checks as JUnit XML to this file (one testcase per check)");
   command->footer(ThresholdsSchemaText());
   command->callback([args, exit_code] { *exit_code = RunCheck(*args); });

@@ -2,6 +2,7 @@
 // `rpt convert`: any readable input (dataset or labels, with detections) into one HDF5 cache
 // that loads much faster than JSON; `--labels-out` / `--detections-out` also write the generic
 // JSON interchange files. Every command that takes --labels / --detections accepts the cache.
+#include <algorithm>
 #include <cstdio>
 
 #include "cli/commands.h"
@@ -60,6 +61,7 @@ void RunConvert(const ConvertArgs& args) {
   const Detections detections =
       detections_only ? ReadDetectionsFile(args.input.detections, DetectionsFileOptions{}) : CollectDetections(sequences);
   warnings.Merge(detections.warnings);  // empty unless read directly above
+  CheckStrict(args.input.strict, warnings);  // LoadInput checked its own; this covers the direct read
   PrintInputWarnings(warnings);
   if (!args.out.empty()) {
     Hdf5WriteOptions options;
@@ -77,8 +79,13 @@ void RunConvert(const ConvertArgs& args) {
   }
   long frames = 0;
   for (const Sequence& s : sequences) frames += static_cast<long>(s.frames.size());
-  std::printf("converted %zu sequence(s), %ld frames, %zu frames with detections\n", sequences.size(), frames,
-              detections.frames.size());
+  long frames_with_detections = 0;  // at least one person in some view (frames listed empty do not count)
+  for (const FrameDetections& frame : detections.frames) {
+    frames_with_detections +=
+        std::any_of(frame.views.begin(), frame.views.end(), [](const Poses2D& view) { return view.num_persons() > 0; });
+  }
+  std::printf("converted %zu sequence(s), %ld frames, %ld frames with detections\n", sequences.size(), frames,
+              frames_with_detections);
 }
 
 }  // namespace

@@ -41,7 +41,8 @@ void RunEval(const EvalArgs& args) {
   check_options.max_gap_s = config.triangulator.track.max_gap_s;  // one notion of continuity
   // Streamed: each frame is checked and triangulated, then dropped but for its id, time and GT.
   StreamedRun streamed = RunSources(std::move(sources), options, check_options);
-  PrintInputWarnings(streamed.warnings);  // the corrections of streamed sources, known now
+  CheckStrict(args.input.strict, streamed.warnings);
+  PrintInputWarnings(streamed.warnings);  // what streamed sources corrected or left unused, known now
   warnings.Merge(streamed.warnings);
   const RunResult& run = streamed.run;
   const std::vector<Sequence>& sequences = streamed.sequences;

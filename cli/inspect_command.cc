@@ -4,6 +4,7 @@
 // to the person's box), and whether detections fit the GT of another frame better. A wrong axis,
 // unit, distortion or camera order shows at once as hundreds of pixels. The same checks give
 // eval's warnings (datasets/detection_checks.h), printed here too.
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -35,7 +36,9 @@ void RunInspect(const InspectArgs& args) {
     long persons = 0, frames_with_views = 0;
     for (const SequenceFrame& f : s.frames) {
       persons += f.gt.num_persons();
-      frames_with_views += f.views.empty() ? 0 : 1;
+      // At least one person in some view: frames the detections list as empty (or lack) do not count.
+      frames_with_views +=
+          std::any_of(f.views.begin(), f.views.end(), [](const Poses2D& view) { return view.num_persons() > 0; });
     }
     // All frames are measured: inspect is run on purpose, eval samples.
     DetectionCheckOptions check_options;

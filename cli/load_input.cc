@@ -32,6 +32,9 @@ void AddInputOptions(CLI::App* command, InputArgs* args) {
   command->add_flag("--simulate-perfect", args->simulate_perfect,
                     "deprecated: same as --detector perfect (exact projections, no noise)");
   command->add_option("--seed", args->seed, "seed of the simulated detector")->capture_default_str();
+  command->add_flag("--strict", args->strict,
+                    "exit 2 when any input is not used (entries skipped, frames or files matching nothing); "
+                    "corrections such as scores clamped to 1 are still accepted");
 }
 
 namespace {
@@ -88,26 +91,21 @@ std::vector<Sequence> LoadInput(const InputArgs& args, bool require_detections, 
     for (Sequence& s : sequences) {
       const std::string prefix = s.frames.empty() ? s.name : s.frames.front().id.substr(0, s.frames.front().id.rfind('_'));
       const Detections detections = ReadVoxelPoseDetections(args.detections, s, prefix);
-      AttachDetections(detections, args.detections, &s);
+      AttachDetections(detections, args.detections, std::span<Sequence>(&s, 1), &s.warnings);
       s.warnings.Merge(detections.warnings);  // read per sequence: its own frames' corrections
     }
   } else if (!args.detections.empty()) {
+    // One file for all sequences (the scenes of a labels file): each frame goes to its sequence,
+    // with the same errors and counted warnings as for a single sequence.
     const Detections detections = ReadDetectionsFile(args.detections, DetectionsFileOptions{});
     detection_warnings = detections.warnings;  // once, however many sequences it is attached to
-    int matched = 0;
-    for (Sequence& s : sequences) {
-      // A detections file may cover several sequences: attach what matches each.
-      try {
-        const AttachReport report = AttachDetections(detections, args.detections, &s);
-        matched += report.frames_with_detections;
-      } catch (const InputError& e) {
-        if (sequences.size() == 1) throw;
-      }
-    }
-    if (matched == 0) throw InputError(args.detections + ": no frame id matches the frames of the input");
+    AttachDetections(detections, args.detections, sequences, &detection_warnings);
   }
-  for (const Sequence& s : sequences) warnings->Merge(s.warnings);
-  warnings->Merge(detection_warnings);
+  InputWarnings loaded;
+  for (const Sequence& s : sequences) loaded.Merge(s.warnings);
+  loaded.Merge(detection_warnings);
+  CheckStrict(args.strict, loaded);
+  warnings->Merge(loaded);
   for (const Sequence& s : sequences) {
     ValidateSequence(s, s.name);
     if (!require_detections) continue;
@@ -138,6 +136,9 @@ std::vector<std::unique_ptr<FrameSource>> OpenInput(const InputArgs& args, bool 
       source = std::make_unique<SimulatedDetectionsSource>(std::move(source), SimulationOf(args));
     }
   }
+  // What the sources found unusable so far (e.g. files not matching the reader's pattern); the
+  // rest is known once they are exhausted: the consumer checks their warnings again then.
+  for (const auto& source : sources) CheckStrict(args.strict, source->warnings());
   return sources;
 }
 
@@ -146,6 +147,14 @@ void SimulateInputDetections(const std::string& profile, uint64_t seed, std::vec
   simulation.seed = seed;
   simulation.detector = profile;
   for (Sequence& s : *sequences) SimulateDetections(simulation, &s);
+}
+
+void CheckStrict(bool strict, const InputWarnings& warnings) {
+  const std::vector<InputWarning> unused = warnings.Unused();
+  if (!strict || unused.empty()) return;
+  std::string message = "--strict: part of the input is not used (" + std::to_string(unused.size()) + " warning(s)):";
+  for (const InputWarning& w : unused) message += "\n  warning: " + w.Line();
+  throw InputError(message);
 }
 
 void PrintInputWarnings(const InputWarnings& warnings) {

@@ -24,14 +24,17 @@ struct InputArgs {
   bool simulate_perfect = false;    // deprecated alias of detector = "perfect"
   std::string detector;             // simulated detector profile (synthetic::DetectorProfileNames()); empty = realistic
   uint64_t seed = 1;
+  bool strict = false;  // --strict: unused input is an error (CheckStrict)
 };
 
 void AddInputOptions(CLI::App* command, InputArgs* args);
 
 // Reads the sequences and attaches detections. With `require_detections`, a sequence without
 // any detection is an InputError explaining the options. Throws InputError / ConfigError.
-// The corrections the readers applied (rotations re-orthonormalised, scores clamped; one entry
-// per file and kind) are added to `warnings`: the sequences' own and the detection file's.
+// The corrections the readers applied (rotations re-orthonormalised, scores clamped) and the
+// input they could not use (skipped entries, unmatched frames, ...; one entry per file and kind)
+// are added to `warnings`: the sequences' own and the detection file's. With args.strict, unused
+// input throws (CheckStrict).
 std::vector<Sequence> LoadInput(const InputArgs& args, bool require_detections, InputWarnings* warnings);
 
 // The input as frame sources (datasets/frame_source.h), for consumers that stream (rpt eval):
@@ -46,6 +49,11 @@ std::vector<std::unique_ptr<FrameSource>> OpenInput(const InputArgs& args, bool 
 // detector `profile` (synthetic::DetectorProfileNames()), drawn from its GT and cameras: what
 // LoadInput does for --simulate --detector PROFILE --seed SEED.
 void SimulateInputDetections(const std::string& profile, uint64_t seed, std::vector<Sequence>* sequences);
+
+// With `strict` (--strict), throws InputError listing every entry of `warnings` that reports
+// unused input (InputWarningKind::kUnused), one "warning: <line>" per line; corrections within
+// the tolerances (rotations re-orthonormalised, scores clamped) are accepted.
+void CheckStrict(bool strict, const InputWarnings& warnings);
 
 // Prints every entry as "warning: <line>" on stderr.
 void PrintInputWarnings(const InputWarnings& warnings);

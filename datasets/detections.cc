@@ -2,49 +2,89 @@
 #include "datasets/detections.h"
 
 #include <unordered_map>
+#include <unordered_set>
 
 #include "core/errors.h"
 #include "datasets/synthetic/detector_simulator.h"
 
 namespace rpt {
 
-AttachReport AttachDetections(const Detections& detections, const std::string& source, Sequence* sequence) {
-  std::unordered_map<std::string, int> camera_index;
-  for (size_t c = 0; c < sequence->cameras.size(); ++c) camera_index[sequence->cameras[c].name] = static_cast<int>(c);
-  std::unordered_map<std::string, const FrameDetections*> by_id;
-  for (const FrameDetections& frame : detections.frames) by_id[frame.frame_id] = &frame;
+AttachReport AttachDetections(const Detections& detections, const std::string& source, std::span<Sequence> sequences,
+                              InputWarnings* warnings) {
+  struct Place {
+    Sequence* sequence;
+    SequenceFrame* frame;
+    const std::unordered_map<std::string, int>* camera_index;
+  };
+  std::vector<std::unordered_map<std::string, int>> camera_index(sequences.size());
+  std::unordered_map<std::string, std::vector<Place>> places;  // frame id -> the frames holding it
+  for (size_t s = 0; s < sequences.size(); ++s) {
+    Sequence& sequence = sequences[s];
+    for (size_t c = 0; c < sequence.cameras.size(); ++c)
+      camera_index[s][sequence.cameras[c].name] = static_cast<int>(c);
+    for (SequenceFrame& frame : sequence.frames) places[frame.id].push_back(Place{&sequence, &frame, &camera_index[s]});
+  }
 
-  AttachReport report;
   const int num_joints = static_cast<int>(detections.joints.size());
-  sequence->detection_joints = detections.joints;
-  for (SequenceFrame& frame : sequence->frames) {
-    frame.views.assign(sequence->cameras.size(), Poses2D{});
-    for (Poses2D& view : frame.views) view.Clear(num_joints);
-    const auto it = by_id.find(frame.id);
-    if (it == by_id.end()) {
-      ++report.frames_without;
-      continue;
-    }
-    ++report.frames_with_detections;
-    const FrameDetections& found = *it->second;
-    for (size_t v = 0; v < found.views.size(); ++v) {
-      const auto cam = camera_index.find(found.cameras[v]);
-      if (cam == camera_index.end()) {
-        throw InputError(source + ": frame '" + frame.id + "': camera '" + found.cameras[v] +
-                         "' is not a camera of sequence '" + sequence->name + "'");
-      }
-      if (found.views[v].num_persons() > 0 && found.views[v].num_joints != num_joints) {
-        throw InputError(source + ": frame '" + frame.id + "', camera '" + found.cameras[v] + "': " +
-                         std::to_string(found.views[v].num_joints) + " joints, expected " + std::to_string(num_joints));
-      }
-      frame.views[cam->second] = found.views[v];
+  for (Sequence& sequence : sequences) {
+    sequence.detection_joints = detections.joints;
+    for (SequenceFrame& frame : sequence.frames) {
+      frame.views.assign(sequence.cameras.size(), Poses2D{});
+      for (Poses2D& view : frame.views) view.Clear(num_joints);
     }
   }
-  report.unused_frames = static_cast<int>(detections.frames.size()) - report.frames_with_detections;
-  if (report.frames_with_detections == 0 && !sequence->frames.empty()) {
-    throw InputError(source + ": none of its " + std::to_string(detections.frames.size()) +
-                     " frame ids matches a frame of sequence '" + sequence->name + "' (e.g. '" +
-                     sequence->frames.front().id + "')");
+  AttachReport report;
+  std::string first_unused;
+  std::unordered_set<const SequenceFrame*> attached;
+  for (const FrameDetections& found : detections.frames) {
+    const auto it = places.find(found.frame_id);
+    if (it == places.end()) {
+      if (report.unused_frames++ == 0) first_unused = found.frame_id;
+      continue;
+    }
+    for (const Place& place : it->second) {
+      attached.insert(place.frame);
+      for (size_t v = 0; v < found.views.size(); ++v) {
+        const auto cam = place.camera_index->find(found.cameras[v]);
+        if (cam == place.camera_index->end()) {
+          throw InputError(source + ": frame '" + found.frame_id + "': camera '" + found.cameras[v] +
+                           "' is not a camera of sequence '" + place.sequence->name + "'");
+        }
+        if (found.views[v].num_persons() > 0 && found.views[v].num_joints != num_joints) {
+          throw InputError(source + ": frame '" + found.frame_id + "', camera '" + found.cameras[v] +
+                           "': " + std::to_string(found.views[v].num_joints) + " joints, expected " +
+                           std::to_string(num_joints));
+        }
+        place.frame->views[cam->second] = found.views[v];
+      }
+    }
+  }
+
+  std::string first_without;
+  for (const Sequence& sequence : sequences) {
+    int with = 0;
+    for (const SequenceFrame& frame : sequence.frames) {
+      if (attached.count(&frame)) {
+        ++with;
+      } else if (report.frames_without++ == 0) {
+        first_without = frame.id;
+      }
+    }
+    if (with == 0 && !sequence.frames.empty()) {
+      throw InputError(source + ": none of its " + std::to_string(detections.frames.size()) + " frame ids" +
+                       (detections.frames.empty() ? "" : " (e.g. '" + detections.frames.front().frame_id + "')") +
+                       " matches a frame of sequence '" + sequence.name + "' (e.g. '" + sequence.frames.front().id +
+                       "')");
+    }
+    report.frames_with_detections += with;
+  }
+  if (warnings != nullptr) {
+    warnings->AddUnused(source,
+                        "detection frames whose id is no frame of the input, ignored (first '" + first_unused + "')",
+                        report.unused_frames);
+    warnings->AddUnused(
+        source, "frames of the input absent from it, evaluated without detections (first '" + first_without + "')",
+        report.frames_without);
   }
   return report;
 }

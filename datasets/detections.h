@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -27,17 +28,23 @@ struct Detections {
 };
 
 struct AttachReport {
-  int frames_with_detections = 0;   // sequence frames that received detections
-  int frames_without = 0;           // sequence frames absent from the detections (no persons)
-  int unused_frames = 0;            // detection frames whose id is not in the sequence
+  int frames_with_detections = 0;  // input frames listed in the detections (possibly with no person)
+  int frames_without = 0;          // input frames absent from the detections (no persons)
+  int unused_frames = 0;           // detection frames whose id is no frame of the input (ignored)
 };
 
-// Sets sequence->detection_joints and every frame's views (camera order of the sequence) from
-// `detections`. Cameras are matched by name; a camera the detections do not mention gets no
-// persons. Throws InputError naming `source` when a detection camera is not in the sequence,
-// when no frame id matches at all, or on joint-count mismatches. `detections.warnings` is not
-// copied (one Detections may be attached to several sequences): the caller reports it once.
-AttachReport AttachDetections(const Detections& detections, const std::string& source, Sequence* sequence);
+// Sets every sequence's detection_joints and its frames' views (camera order of the sequence)
+// from `detections`. Each detection frame goes to the sequence that holds its frame id, so one
+// file may serve several sequences (the scenes of a labels file, MVOR's days) and behaves as if
+// each sequence had its own file. Cameras are matched by name; a camera the detections do not
+// mention gets no persons. Throws InputError naming `source` and the frame when a detection
+// camera is not a camera of the frame's sequence, on joint-count mismatches, and naming the
+// sequence when none of its frame ids is in the detections. The frames that do not match
+// (AttachReport::unused_frames, frames_without) are counted under `source` in `warnings` as
+// unused input, one line each with the first id. `detections.warnings` is not copied (one
+// Detections may be attached more than once): the caller reports it once.
+AttachReport AttachDetections(const Detections& detections, const std::string& source, std::span<Sequence> sequences,
+                              InputWarnings* warnings);
 
 // Replaces every frame's views by simulated detections of its GT (synthetic detector model,
 // joints mapped by name to `joints`; default: COCO-17, or COCO-WholeBody when the GT has it), and

@@ -28,6 +28,17 @@ void InputWarnings::Add(const std::string& source, std::string_view what, std::s
   items_.push_back(InputWarning{source, std::string(what), std::string(measure), 1, value});
 }
 
+void InputWarnings::AddUnused(const std::string& source, std::string_view what, long count) {
+  if (count <= 0) return;
+  for (InputWarning& w : items_) {
+    if (w.source == source && w.what == what) {
+      w.count += count;
+      return;
+    }
+  }
+  items_.push_back(InputWarning{source, std::string(what), "", count, 0, InputWarningKind::kUnused});
+}
+
 void InputWarnings::Merge(const InputWarnings& other) {
   for (const InputWarning& o : other.items_) {
     bool merged = false;
@@ -62,6 +73,14 @@ long InputWarnings::total() const {
   long n = 0;
   for (const InputWarning& w : items_) n += w.count;
   return n;
+}
+
+std::vector<InputWarning> InputWarnings::Unused() const {
+  std::vector<InputWarning> out;
+  for (const InputWarning& w : items_) {
+    if (w.kind == InputWarningKind::kUnused) out.push_back(w);
+  }
+  return out;
 }
 
 Eigen::Matrix3d AcceptRotation(const Eigen::Matrix3d& R, const std::string& source, const std::string& where,

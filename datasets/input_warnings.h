@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
-// Real-world imprecision that readers accept, correct and count: rotations stored with a few
-// significant digits, detector confidences slightly above 1. Each correction is counted per file
-// and kind, so a run prints one warning line per file and kind instead of failing or staying
-// silent. Anything beyond the tolerances below stays an InputError.
+// What readers accept from real-world input without failing, counted so that nothing changes or
+// disappears silently: imprecision they correct (rotations stored with a few significant digits,
+// detector confidences slightly above 1), and input they cannot use (entries of another
+// category, files whose names match no pattern, detection frames or cameras that match nothing).
+// Each is counted per file and kind, so a run prints one warning line per file and kind instead
+// of failing or staying silent. Anything beyond the tolerances below stays an InputError.
 #pragma once
 
 #include <Eigen/Core>
@@ -22,22 +24,35 @@ inline constexpr double kRotationRoundOff = 1e-9;
 // negative values and NaN are errors.
 inline constexpr double kMaxScoreOvershoot = 1.5;
 
-// One kind of correction in one file.
+// Corrections change values within the tolerances above and lose nothing; unused input is input
+// the run ignores (what `--strict` refuses, docs/datasets.md "Real-world tolerance").
+enum class InputWarningKind {
+  kCorrected,  // e.g. rotations re-orthonormalised, scores clamped to 1
+  kUnused,     // e.g. skipped entries, files matching no pattern, unmatched frames, unknown cameras
+};
+
+// One kind of correction (or of unused input) in one file.
 struct InputWarning {
   std::string source;  // the file (or file and place) the values came from
   std::string what;    // what was corrected, plural noun phrase, e.g. "rotations re-orthonormalised"
   std::string measure; // what `worst` measures, e.g. "max |R^T R - I|"; empty = none
-  long count = 0;      // how many values were corrected
+  long count = 0;      // how many values were corrected (or entries, files, frames not used)
   double worst = 0;    // the largest deviation seen
+  InputWarningKind kind = InputWarningKind::kCorrected;
 
   // "SOURCE: 3 rotations re-orthonormalised (max |R^T R - I| = 1.2e-06)".
   std::string Line() const;
 };
 
-// Counted corrections, aggregated by (source, what).
+// Counted corrections and unused input, aggregated by (source, what).
 class InputWarnings {
  public:
+  // One more correction of kind `what` under `source`; `value` is the deviation `measure` measures.
   void Add(const std::string& source, std::string_view what, std::string_view measure, double value);
+  // `count` more items of input under `source` that are not used, of kind `what` (a plural noun
+  // phrase saying what happens to them, e.g. "entries of another category than person skipped").
+  // A count of 0 adds nothing.
+  void AddUnused(const std::string& source, std::string_view what, long count = 1);
   // Adds the counts of `other` (corrections of other values, e.g. another sequence of the file).
   void Merge(const InputWarnings& other);
   // Folds in `other` when it describes the same corrections seen again (the same files read once
@@ -47,6 +62,8 @@ class InputWarnings {
   const std::vector<InputWarning>& items() const { return items_; }
   bool empty() const { return items_.empty(); }
   long total() const;
+  // The entries of kind kUnused (what --strict refuses).
+  std::vector<InputWarning> Unused() const;
 
  private:
   std::vector<InputWarning> items_;

@@ -37,6 +37,15 @@ std::int64_t ImageId(const json& value, const std::string& source, const std::st
   throw InputError(source + ": " + pointer + ": expected an integer image id in the 64-bit signed range, got " + value.dump());
 }
 
+// COCO's person category is 1; results without "category_id" are taken as persons. Written as a
+// number or as a string of digits (MVOR's openpose_kps.json writes "1").
+bool IsPerson(const json& item) {
+  const auto category = item.find("category_id");
+  if (category == item.end() || category->is_null()) return true;
+  if (category->is_number()) return category->get<double>() == 1.0;
+  return category->is_string() && category->get<std::string>() == "1";
+}
+
 std::optional<ViewKey> MvorView(std::int64_t image_id) {
   constexpr std::int64_t kDay = 10'000'000'000LL, kCam = 10'000'000LL;
   const std::int64_t day = image_id / kDay;
@@ -117,11 +126,18 @@ Detections ReadCocoDetections(const std::filesystem::path& path, const CocoDetec
     const std::string pointer = "/" + std::to_string(i);
     const json& item = root[i];
     if (!item.is_object()) throw InputError(source + ": " + pointer + ": expected a detection object");
+    if (!IsPerson(item)) {
+      detections.warnings.AddUnused(source, "results of another category than person (category_id 1) skipped");
+      continue;
+    }
     if (options.min_score > 0) {
-      if (const auto score = item.find("score"); score != item.end() && score->is_number() &&
-                                                 score->get<double>() < options.min_score) {
+      const auto score = item.find("score");
+      if (score != item.end() && !score->is_number()) {
+        detections.warnings.AddUnused(source,
+                                      "results with a non-numeric \"score\" skipped (min_score needs a number)");
         continue;
       }
+      if (score != item.end() && score->get<double>() < options.min_score) continue;  // filtered on purpose
     }
     const std::int64_t image_id = ImageId(io::JsonAt(root, pointer + "/image_id", source), source, pointer + "/image_id");
     ViewKey key;
@@ -142,7 +158,10 @@ Detections ReadCocoDetections(const std::filesystem::path& path, const CocoDetec
     if (keypoints_key.empty()) keypoints_key = item.contains("coco_keypoints") ? "coco_keypoints" : "keypoints";
     const std::string keypoints_pointer = io::JsonPointerJoin(pointer, keypoints_key);
     const std::vector<double> values = io::JsonNumbers(root, keypoints_pointer, source);
-    if (values.empty()) continue;  // MVOR: a box without keypoints
+    if (values.empty()) {  // a box without keypoints
+      detections.warnings.AddUnused(source, "results without keypoints (box only) skipped");
+      continue;
+    }
     if (values.size() != 17 * 3 && values.size() != 133 * 3) {
       throw InputError(source + ": " + keypoints_pointer + ": " + std::to_string(values.size()) +
                        " numbers, expected 51 (17 COCO joints x [x, y, score]) or 399 (COCO-WholeBody)");

@@ -40,7 +40,9 @@ struct CocoDetectionsOptions {
 };
 
 // Joint names are COCO-17 (or COCO-WholeBody for 133 points). Joint scores in (1, 1.5] are
-// clamped to 1 and counted in Detections::warnings; frames sorted by id, cameras by name. Throws
+// clamped to 1 and counted in Detections::warnings; so are, as unused input, the results skipped:
+// another "category_id" than person (1), no keypoints (box only), and with min_score > 0 a
+// "score" that is not a number. Frames sorted by id, cameras by name. Throws
 // InputError naming the file and the JSON pointer: not a list, wrong keypoint lengths (mixed
 // lengths too), negative scores or scores above 1.5, an image id the mapping cannot place (naming
 // it), two images mapping to the same frame and camera; ConfigError for bad options.

@@ -212,22 +212,32 @@ std::vector<Camera> ReadExoCameras(const Options& options, const SequenceDir& di
   return out;
 }
 
-// Time stamps of processed_data/<gt>/%05d.npy, sorted.
-std::vector<int> GtTimeStamps(const Options& options, const SequenceDir& dir) {
+// Time stamps of processed_data/<gt>/%05d.npy, sorted; other entries are counted in `warnings`
+// (unused input).
+std::vector<int> GtTimeStamps(const Options& options, const SequenceDir& dir, InputWarnings* warnings) {
   const fs::path gt_dir = dir.path / "processed_data" / options.gt;
   if (!fs::is_directory(gt_dir)) throw InputError(PathName(gt_dir) + ": ground-truth directory not found");
   std::vector<int> out;
+  long others = 0;
+  std::string first_other;
   for (const auto& entry : fs::directory_iterator(gt_dir)) {
-    if (!entry.is_regular_file() || entry.path().extension() != ".npy") continue;
-    if (const auto stamp = TimeStampOf(entry.path().filename().string())) out.push_back(*stamp);
+    const std::string name = entry.path().filename().string();
+    const auto stamp = TimeStampOf(name);
+    if (entry.is_regular_file() && entry.path().extension() == ".npy" && stamp) {
+      out.push_back(*stamp);
+    } else if (others++ == 0 || name < first_other) {
+      first_other = name;
+    }
   }
+  warnings->AddUnused(PathName(gt_dir), "entries not named <time stamp>.npy ignored (e.g. '" + first_other + "')",
+                      others);
   std::sort(out.begin(), out.end());
   if (out.empty()) throw InputError(PathName(gt_dir) + ": no %05d.npy files");
   return out;
 }
 
-std::vector<int> SelectedTimeStamps(const Options& options, const SequenceDir& dir) {
-  const std::vector<int> all = GtTimeStamps(options, dir);
+std::vector<int> SelectedTimeStamps(const Options& options, const SequenceDir& dir, InputWarnings* warnings) {
+  const std::vector<int> all = GtTimeStamps(options, dir, warnings);
   std::vector<int> out;
   for (const std::size_t k : h36m_ego::SelectFrames(all.size(), options.every, options.max_frames)) out.push_back(all[k]);
   return out;
@@ -295,8 +305,11 @@ Poses2D ReadCacheView(const fs::path& path, const std::string& cache_dir, InputW
       if (!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]))) {
         keypoints.Fail("joint " + std::to_string(j) + ": NaN or infinite value");
       }
-      person.col(j) << p[0], p[1],
+      // Checked before the comma initialiser: a throw inside one aborts Debug builds (Eigen asserts
+      // that every coefficient was given).
+      const double score =
           AcceptScore(p[2], cache_dir, warnings, [&] { return keypoints.Where() + ": joint " + std::to_string(j); });
+      person.col(j) << p[0], p[1], score;
     }
   }
   return view;
@@ -327,8 +340,8 @@ std::vector<Sequence> ReadEgohumans(const DatasetRequest& request) {
   const Options options = ParseOptions(request);
   std::vector<Sequence> out;
   for (const SequenceDir& dir : FindSequences(options)) {
-    const std::vector<int> stamps = SelectedTimeStamps(options, dir);
     Sequence sequence;
+    const std::vector<int> stamps = SelectedTimeStamps(options, dir, &sequence.warnings);
     sequence.name = "egohumans/" + dir.big + "/" + dir.seq;
     sequence.cameras = ReadExoCameras(options, dir, stamps.empty() ? 1 : stamps.front(), &sequence.warnings);
     sequence.gt_joints = CocoBodyJoints();

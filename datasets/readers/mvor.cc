@@ -9,6 +9,7 @@
 #include <limits>
 #include <map>
 #include <string>
+#include <unordered_set>
 
 #include "core/errors.h"
 #include "datasets/io/number_text.h"
@@ -285,6 +286,20 @@ std::vector<Sequence> ReadMvor(const DatasetRequest& request) {
     sequence->second.frames.push_back(std::move(frame));
   }
 
+  // 3D persons left over belong to days not selected, or to no multi-view frame at all: those of
+  // a selected day (the day of the key's first image id) are unused input.
+  long unmatched_persons = 0;
+  for (const auto& [key, indices] : persons_of) {
+    std::int64_t first_image = 0;
+    const bool parsed = io::ParseInteger(std::string_view(key).substr(0, key.find('_')), &first_image);
+    const std::int64_t day = first_image / 10'000'000'000LL;
+    if (!parsed || std::find(days.begin(), days.end(), day) != days.end()) {
+      unmatched_persons += static_cast<long>(indices.size());
+    }
+  }
+  warnings.AddUnused(source, "annotations3D entries whose image_ids are no multi-view frame ignored",
+                     unmatched_persons);
+
   std::vector<Sequence> out;
   const bool days_given = request.params.count("days") > 0;  // an explicit day must have frames
   for (auto& [day, sequence] : by_day) {
@@ -304,8 +319,23 @@ std::vector<Sequence> ReadMvor(const DatasetRequest& request) {
                        " not found (the OpenPose detections shipped with MVOR); use --param detections=none with "
                        "--detections FILE or --simulate");
     }
-    const Detections detections = ReadCocoDetections(detections_path);
-    for (Sequence& sequence : out) AttachDetections(detections, detections_path.string(), &sequence);
+    Detections detections = ReadCocoDetections(detections_path);
+    // The file covers every day: frames of days not selected are left out on purpose (not unused
+    // input). A COCO result list has no entry for an image without detections: the loaded frames
+    // it lacks get empty views.
+    std::unordered_set<std::string> loaded;
+    for (const Sequence& sequence : out) {
+      for (const SequenceFrame& frame : sequence.frames) loaded.insert(frame.id);
+    }
+    std::erase_if(detections.frames, [&](const FrameDetections& frame) {
+      const bool selected_day = std::any_of(days.begin(), days.end(), [&](int day) {
+        return frame.frame_id.rfind("mvor_day" + std::to_string(day) + "_", 0) == 0;
+      });
+      return !selected_day;
+    });
+    for (const FrameDetections& frame : detections.frames) loaded.erase(frame.frame_id);
+    for (const std::string& id : loaded) detections.frames.push_back(FrameDetections{id, {}, {}});
+    AttachDetections(detections, detections_path.string(), out, &out.front().warnings);
     out.front().warnings.Merge(detections.warnings);
   }
   for (const Sequence& sequence : out) ValidateSequence(sequence, source);

@@ -150,13 +150,19 @@ Detections ReadOpenPoseFolder(const std::filesystem::path& dir, const OpenPoseFo
 
   // Collect and map the file names.
   std::vector<RawFile> files;
+  long unmatched = 0;
+  std::string first_unmatched;
   for (auto it = std::filesystem::recursive_directory_iterator(dir, ec); !ec && it != std::filesystem::recursive_directory_iterator();
        it.increment(ec)) {
     if (!it->is_regular_file(ec)) continue;
     const std::string relative = it->path().lexically_relative(dir).generic_string();
     RawFile file;
     file.path = it->path();
-    if (mapper.Apply(relative, source, &file.frame_id, &file.camera)) files.push_back(std::move(file));
+    if (mapper.Apply(relative, source, &file.frame_id, &file.camera)) {
+      files.push_back(std::move(file));
+    } else if (unmatched++ == 0 || relative < first_unmatched) {
+      first_unmatched = relative;  // the first by name: the same line whatever the listing order
+    }
   }
   if (ec) throw InputError(source + ": cannot list the folder: " + ec.message());
   if (files.empty()) {
@@ -175,6 +181,10 @@ Detections ReadOpenPoseFolder(const std::filesystem::path& dir, const OpenPoseFo
 
   // Parse, then decide the joint set over all files.
   InputWarnings warnings;
+  warnings.AddUnused(
+      source,
+      "files not matching the pattern '" + options.mapping.pattern + "' ignored (e.g. '" + first_unmatched + "')",
+      unmatched);
   bool any_face_or_hand = false, any_body25 = false;
   for (RawFile& file : files) {
     file.people = ReadOpenPoseFile(file.path, source, &warnings);

@@ -26,7 +26,8 @@ enum class OpenPoseJointSet {
 
 struct OpenPoseFolderOptions {
   // Matched against each file's path relative to the folder ('/'-separated); files that do not
-  // match are ignored. Group 1: camera folder, group 2: frame number.
+  // match are ignored and counted (Detections::warnings, unused input). Group 1: camera folder,
+  // group 2: frame number.
   PathMapping mapping{R"(([^/]+)/(?:.*_)?(\d+)_keypoints\.json)", "{2:6}", "{1}"};
   OpenPoseJointSet joints = OpenPoseJointSet::kAuto;
 };

@@ -106,24 +106,30 @@ struct PoseFile {
 };
 
 // body3DScene_<number>.json files sorted by name (= by number: they are zero padded), as
-// VoxelPose's sorted(glob(...)).
-std::vector<PoseFile> ListPoseFiles(const std::filesystem::path& folder) {
+// VoxelPose's sorted(glob(...)). Other files are counted in `warnings` (unused input).
+std::vector<PoseFile> ListPoseFiles(const std::filesystem::path& folder, InputWarnings* warnings) {
   std::error_code ec;
   if (!std::filesystem::is_directory(folder, ec)) throw InputError(folder.string() + ": annotation folder not found");
   std::vector<PoseFile> files;
+  long others = 0;
+  std::string first_other;
   for (const auto& entry : std::filesystem::directory_iterator(folder)) {
     const std::string name = entry.path().filename().string();
     const std::string prefix = kPosePrefix;
-    if (name.size() <= prefix.size() + 5 || name.compare(0, prefix.size(), prefix) != 0 ||
-        name.compare(name.size() - 5, 5, ".json") != 0) {
+    PoseFile file;
+    const bool matches = name.size() > prefix.size() + 5 && name.compare(0, prefix.size(), prefix) == 0 &&
+                         name.compare(name.size() - 5, 5, ".json") == 0 &&
+                         io::ParseInteger(name.substr(prefix.size(), name.size() - prefix.size() - 5), &file.frame);
+    if (!matches) {
+      if (others++ == 0 || name < first_other) first_other = name;
       continue;
     }
-    const std::string digits = name.substr(prefix.size(), name.size() - prefix.size() - 5);
-    PoseFile file;
-    if (!io::ParseInteger(digits, &file.frame)) continue;
     file.path = entry.path();
     files.push_back(std::move(file));
   }
+  warnings->AddUnused(
+      folder.string(),
+      "entries not named " + std::string(kPosePrefix) + "<number>.json ignored (e.g. '" + first_other + "')", others);
   std::sort(files.begin(), files.end(),
             [](const PoseFile& a, const PoseFile& b) { return a.path.filename() < b.path.filename(); });
   if (files.empty()) throw InputError(folder.string() + ": no " + std::string(kPosePrefix) + "*.json files");
@@ -165,7 +171,7 @@ class PanopticSource final : public FrameSource {
     header_.room.center_m = Eigen::Vector3d(0.0, -0.5, 0.8);
     header_.room.size_m = Eigen::Vector3d(8.0, 8.0, 2.0);
     header_.fps = kHdFps;
-    files_ = ListPoseFiles(folder_ / kPoseFolder);
+    files_ = ListPoseFiles(folder_ / kPoseFolder, &warnings_);
   }
 
   const std::filesystem::path& folder() const { return folder_; }

@@ -201,7 +201,7 @@ std::vector<Sequence> ReadShelfCampus(const ShelfCampusSpec& spec, const Dataset
   if (params.detections == ShelfCampusDetections::kVoxelPose) {
     const std::filesystem::path pkl = request.root / spec.detections_file;
     const Detections detections = ReadVoxelPoseDetections(pkl, sequence, spec.name);
-    AttachDetections(detections, pkl.string(), &sequence);
+    AttachDetections(detections, pkl.string(), std::span<Sequence>(&sequence, 1), &sequence.warnings);
     sequence.warnings.Merge(detections.warnings);
   }
   ValidateSequence(sequence, request.root.string());

@@ -40,10 +40,15 @@ std::vector<Camera> ReadVoxelPoseCalibration(const std::filesystem::path& path, 
     camera.name = id;
     camera.width = image_width;
     camera.height = image_height;
-    // Read before the comma initialiser: a throw in the middle of one asserts in Debug builds.
-    const double fx = io::JsonNumber(root, base + "/fx", source), fy = io::JsonNumber(root, base + "/fy", source);
-    const double cx = io::JsonNumber(root, base + "/cx", source), cy = io::JsonNumber(root, base + "/cy", source);
-    camera.K << fx, 0.0, cx, 0.0, fy, cy, 0.0, 0.0, 1.0;
+    // Read before the comma initialiser: a throw inside one (a missing key) aborts Debug builds
+    // (Eigen asserts that every coefficient was given).
+    const double fx = io::JsonNumber(root, base + "/fx", source);
+    const double fy = io::JsonNumber(root, base + "/fy", source);
+    const double cx = io::JsonNumber(root, base + "/cx", source);
+    const double cy = io::JsonNumber(root, base + "/cy", source);
+    camera.K << fx, 0.0, cx,  //
+        0.0, fy, cy,          //
+        0.0, 0.0, 1.0;
 
     const std::vector<double> k = OptionalCoefficients(root, base + "/k", source, 3);
     const std::vector<double> p = OptionalCoefficients(root, base + "/p", source, 2);

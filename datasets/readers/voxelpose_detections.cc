@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <set>
 #include <unordered_map>
 
 #include "core/errors.h"
@@ -70,6 +71,8 @@ Detections ReadVoxelPoseDetections(const std::filesystem::path& path, const Sequ
   // Per sequence frame, per sequence camera: the view, if the file has its key.
   std::vector<std::vector<const io::PyView*>> found(sequence.frames.size(),
                                                     std::vector<const io::PyView*>(sequence.cameras.size(), nullptr));
+  long unknown_camera_keys = 0;
+  std::set<std::string> unknown_cameras;
   const auto items = root.Items();
   for (const auto& [key, value] : items) {
     if (!key.IsStr()) root.Fail("key " + io::Repr(key.value()) + " is not a string \"{camera}_{frame}\"");
@@ -80,11 +83,20 @@ Detections ReadVoxelPoseDetections(const std::filesystem::path& path, const Sequ
     }
     const auto f = frame_index.find(FrameId(dataset_prefix, frame));
     const auto c = camera_index.find(camera);
-    if (f == frame_index.end() || c == camera_index.end()) continue;
+    if (c == camera_index.end()) {  // the whole cache is checked, not only the selected frames
+      ++unknown_camera_keys;
+      unknown_cameras.insert(camera);
+      continue;
+    }
+    if (f == frame_index.end()) continue;  // a frame not selected: the caches cover every image
     found[f->second][c->second] = &value;
   }
 
   Detections detections;
+  std::string names;
+  for (const std::string& camera : unknown_cameras) names += (names.empty() ? "'" : ", '") + camera + "'";
+  detections.warnings.AddUnused(root.source(), "keys of cameras not in the calibration ignored (cameras " + names + ")",
+                                unknown_camera_keys);
   detections.joints = CocoBodyJoints();
   for (size_t f = 0; f < found.size(); ++f) {
     FrameDetections frame;

@@ -153,3 +153,31 @@ TEST(InputWarnings, MergeAddsCountsAndMergeRepeatedKeepsTheLarger) {
 
 }  // namespace
 }  // namespace rpt
+
+namespace rpt {
+namespace {
+
+TEST(InputWarnings, UnusedInputIsCountedInBulkAndKeptApartFromCorrections) {
+  InputWarnings warnings;
+  warnings.Add("cal.json", "rotations re-orthonormalised", "max |R^T R - I|", 1e-6);
+  warnings.AddUnused("dets", "frames ignored", 3);
+  warnings.AddUnused("dets", "frames ignored", 2);
+  warnings.AddUnused("dets", "files ignored", 0);  // nothing to report: no line
+  ASSERT_EQ(warnings.items().size(), 2u);
+  EXPECT_EQ(warnings.items()[1].Line(), "dets: 5 frames ignored");
+  const std::vector<InputWarning> unused = warnings.Unused();
+  ASSERT_EQ(unused.size(), 1u);
+  EXPECT_EQ(unused[0].what, "frames ignored");
+  EXPECT_EQ(warnings.items()[0].kind, InputWarningKind::kCorrected);
+
+  InputWarnings again;
+  again.AddUnused("dets", "frames ignored", 4);
+  warnings.MergeRepeated(again);
+  EXPECT_EQ(warnings.items()[1].count, 5);
+  warnings.Merge(again);
+  EXPECT_EQ(warnings.items()[1].count, 9);
+  EXPECT_EQ(warnings.items()[1].kind, InputWarningKind::kUnused);
+}
+
+}  // namespace
+}  // namespace rpt

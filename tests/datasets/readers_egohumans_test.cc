@@ -372,6 +372,21 @@ TEST(EgohumansReader, CacheScoresNegativeLargeOrNanNameFileAndJoint) {
   }
 }
 
+TEST(EgohumansReader, GroundTruthEntriesNotNamedByTimeStampAreCounted) {
+  test::TempDir dir;
+  const fs::path seq_dir = WriteTree(dir.path());
+  const fs::path gt_dir = seq_dir / "processed_data" / "poses3d";
+  const size_t frames = ReadEgohumans(Request(dir.path()))[0].frames.size();
+  // Before: ignored without a word (a renamed or misnamed frame simply vanished).
+  test::WriteText(gt_dir / "00009_old.npy", "x");
+  test::WriteText(gt_dir / "notes.txt", "x");
+  const Sequence seq = ReadEgohumans(Request(dir.path()))[0];
+  EXPECT_EQ(seq.frames.size(), frames);
+  test::ExpectOneWarning(seq.warnings, gt_dir.string(),
+                         "entries not named <time stamp>.npy ignored (e.g. '00009_old.npy')", 2);
+  EXPECT_EQ(seq.warnings.items()[0].kind, InputWarningKind::kUnused);
+}
+
 TEST(EgohumansReader, MalformedInputsNameFileAndPlace) {
   {
     test::TempDir dir;

@@ -186,7 +186,13 @@ TEST(OpenPose, Body25FolderMapsToCocoNamesAndFeet) {
   EXPECT_DOUBLE_EQ(at("foot_heel_right")(0), 124);     // 24
   EXPECT_DOUBLE_EQ(at("wrist_right")(2), 0.0);
   EXPECT_DOUBLE_EQ(at("foot_big_toe_left")(2), 1.0);
-  test::ExpectOneWarning(d.warnings, dir.path().string(), test::kScoresClamped, 3);  // 3 persons in 2 files
+  // notes.txt does not match the pattern: ignored and counted; 3 scores clamped (3 persons in 2 files).
+  ASSERT_EQ(d.warnings.items().size(), 2u);
+  EXPECT_EQ(d.warnings.items()[0].Line(), dir.path().string() + ": 1 files not matching the pattern '" +
+                                              OpenPoseFolderOptions{}.mapping.pattern +
+                                              "' ignored (e.g. 'Camera1/notes.txt')");
+  EXPECT_EQ(d.warnings.items()[1].what, test::kScoresClamped);
+  EXPECT_EQ(d.warnings.items()[1].count, 3);
 
   options.joints = OpenPoseJointSet::kBody;
   EXPECT_EQ(ReadOpenPoseFolder(dir.path(), options).joints, CocoBodyJoints());
@@ -458,6 +464,66 @@ TEST(Coco, MvorAnnotationImagesGiveTheSameFramesAsTheIdConvention) {
 
 // ---------------------------------------------------------------------------------------------
 // ReadDetectionsFile
+
+TEST(Coco, SkippedResultsAreCountedAsUnusedInput) {
+  test::TempDir dir;
+  nlohmann::json chair = CocoResult(10010000001, 3), text_category = CocoResult(10010000001, 4);
+  chair["category_id"] = 62;
+  text_category["category_id"] = "62";
+  nlohmann::json string_person = CocoResult(10010000002, 5), box_only = CocoResult(10010000002, 6);
+  string_person["category_id"] = "1";  // MVOR's openpose_kps.json writes the category as a string
+  box_only["keypoints"] = nlohmann::json::array();
+  nlohmann::json no_score = CocoResult(10020000001, 7);
+  no_score["score"] = "high";
+  const auto path = WriteText(
+      dir, "r.json",
+      nlohmann::json::array({CocoResult(10010000001, 1), chair, text_category, string_person, box_only, no_score})
+          .dump());
+  // Before: the chairs became persons, the box-only result vanished silently.
+  const Detections d = ReadCocoDetections(path);
+  // mvor_day1_000001: cam1 (the person, not the chairs), cam2 (score "high": unused without
+  // min_score); mvor_day1_000002: cam1 (category "1"; the box-only result skipped).
+  ASSERT_EQ(d.frames.size(), 2u);
+  ASSERT_EQ(d.frames[0].cameras, (std::vector<std::string>{"cam1", "cam2"}));
+  EXPECT_EQ(d.frames[0].views[0].num_persons(), 1);
+  EXPECT_EQ(d.frames[0].views[1].num_persons(), 1);
+  ASSERT_EQ(d.frames[1].cameras, (std::vector<std::string>{"cam1"}));
+  EXPECT_EQ(d.frames[1].views[0].num_persons(), 1);
+  std::vector<std::string> lines;
+  for (const InputWarning& w : d.warnings.items()) {
+    EXPECT_EQ(w.kind, InputWarningKind::kUnused) << w.Line();
+    lines.push_back(w.Line());
+  }
+  EXPECT_EQ(lines, (std::vector<std::string>{
+                       path.string() + ": 2 results of another category than person (category_id 1) skipped",
+                       path.string() + ": 1 results without keypoints (box only) skipped"}));
+
+  // With min_score a score that is not a number cannot be compared: skipped and counted.
+  CocoDetectionsOptions options;
+  options.min_score = 0.5;
+  const Detections filtered = ReadCocoDetections(path, options);
+  EXPECT_EQ(filtered.frames[0].cameras, (std::vector<std::string>{"cam1"}));
+  ASSERT_EQ(filtered.warnings.items().size(), 3u);
+  EXPECT_EQ(filtered.warnings.items()[2].Line(),
+            path.string() + ": 1 results with a non-numeric \"score\" skipped (min_score needs a number)");
+}
+
+TEST(OpenPose, FilesNotMatchingThePatternAreCountedOnceForTheFolder) {
+  test::TempDir dir;
+  WriteOpenPose(dir, "cam0/v_000000000001_keypoints.json", {{{"pose_keypoints_2d", Flat(18, 10, 0.5)}}});
+  // A camera whose files are named differently: before, the whole camera vanished silently.
+  WriteOpenPose(dir, "cam1/v_000000000001.json", {{{"pose_keypoints_2d", Flat(18, 10, 0.5)}}});
+  WriteOpenPose(dir, "cam1/v_000000000002.json", {});
+  WriteText(dir, "README.txt", "notes");
+  const Detections d = ReadOpenPoseFolder(dir.path());
+  ASSERT_EQ(d.frames.size(), 1u);
+  EXPECT_EQ(d.frames[0].cameras, (std::vector<std::string>{"cam0"}));
+  test::ExpectOneWarning(
+      d.warnings, dir.path().string(),
+      "files not matching the pattern '" + OpenPoseFolderOptions{}.mapping.pattern + "' ignored (e.g. 'README.txt')",
+      3);
+  EXPECT_EQ(d.warnings.items()[0].kind, InputWarningKind::kUnused);
+}
 
 TEST(DetectionsFile, DispatchesOnFolderExtensionAndContent) {
   test::TempDir dir;

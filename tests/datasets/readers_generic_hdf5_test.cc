@@ -168,8 +168,11 @@ TEST(Hdf5Cache, SequencesAndDetectionsShareOneFile) {
 
   // The detections attach to the labels by frame id and camera name.
   Sequence sequence = read[0];
-  const AttachReport report = AttachDetections(ReadDetectionsHdf5(path), path.string(), &sequence);
+  InputWarnings warnings;
+  const AttachReport report =
+      AttachDetections(ReadDetectionsHdf5(path), path.string(), std::span<Sequence>(&sequence, 1), &warnings);
   EXPECT_EQ(report.frames_with_detections, 3);
+  EXPECT_TRUE(warnings.empty());
   ValidateSequence(sequence, "attached");
 }
 

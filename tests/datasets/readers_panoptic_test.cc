@@ -319,14 +319,22 @@ void WriteSequence(const std::filesystem::path& root, const std::string& calibra
                   "}, {\"id\": 2, \"joints19\": " + Joints19([](int) { return 0.3; }) + "}"));
   WriteText(poses / "body3DScene_00000013.json",
             Scene("{\"id\": 2, \"joints19\": " + Joints19([](int) { return 1.0; }) + "}"));
-  WriteText(poses / "notes.json", "not a pose file");  // ignored: not body3DScene_<n>.json
 }
 
 TEST(PanopticReader, GeneratedFilesMissingJointsEmptyBodiesAndRoots) {
   test::TempDir dir;
   WriteSequence(dir.path());
   const std::map<std::string, std::string> base = {{"sequences", "seqA"}, {"cameras", "00_00,00_01"}, {"every", "1"}};
+  // Not body3DScene_<number>.json: ignored, and counted (one line for the folder).
+  const std::filesystem::path poses = dir.path() / "seqA" / "hdPose3d_stage1_coco19";
+  WriteText(poses / "notes.json", "not a pose file");
+  WriteText(poses / "body3DScene_0000001x.json", Scene(""));
   const Sequence kept = ReadPanoptic(Request(dir.path(), base))[0];  // skip_empty=true
+  ASSERT_EQ(kept.warnings.items().size(), 1u);
+  EXPECT_EQ(
+      kept.warnings.items()[0].Line(),
+      poses.string() + ": 2 entries not named body3DScene_<number>.json ignored (e.g. 'body3DScene_0000001x.json')");
+  EXPECT_EQ(kept.warnings.items()[0].kind, InputWarningKind::kUnused);
   ASSERT_EQ(kept.frames.size(), 3u);
   EXPECT_EQ(kept.frames[0].id, "panoptic_seqA_000010");
   EXPECT_EQ(kept.frames[1].id, "panoptic_seqA_000012");

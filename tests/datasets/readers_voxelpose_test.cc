@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <fstream>
 #include <functional>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -194,6 +195,16 @@ TEST(VoxelPoseCalibration, MalformedFilesNameFileAndPlace) {
   EXPECT_THAT(test::InputErrorOf([&] { ReadVoxelPoseCalibration(no_fx, 1032, 776); }),
               HasSubstr(no_fx.string() + ": /0/fx: missing"));
 
+  // A missing cx is read after fx and 0 were given to K's comma initialiser: the throw must not
+  // happen inside it (Debug builds abort on an unfinished comma initialiser, issue 10 finding 6).
+  for (const char* key : {"cx", "fy", "cy"}) {
+    nlohmann::json camera = nlohmann::json::parse(good);
+    camera.erase(key);
+    const auto path = WriteText(dir.path() / (std::string(key) + ".json"), "{\"0\": " + camera.dump() + "}");
+    EXPECT_THAT(test::InputErrorOf([&] { ReadVoxelPoseCalibration(path, 1032, 776); }),
+                HasSubstr(path.string() + ": /0/" + key + ": missing"));
+  }
+
   const auto array = WriteText(dir.path() / "array.json", "[1, 2]");
   EXPECT_THAT(test::InputErrorOf([&] { ReadVoxelPoseCalibration(array, 1032, 776); }),
               HasSubstr("expected an object keyed by camera id"));
@@ -316,8 +327,13 @@ TEST(VoxelPoseDetections, KeysMapToFramesAndCameras) {
   EXPECT_EQ(f300.frame_id, "shelf_000300");
   EXPECT_EQ(f300.cameras, (std::vector<std::string>{"1"}));
   EXPECT_DOUBLE_EQ(f300.views[0].Person(0)(2, 0), 0.4);
-  // Two detections of key 0_5 with score 1.25; keys outside the sequence are not read.
-  test::ExpectOneWarning(detections.warnings, path.string(), test::kScoresClamped, 2);
+  // Two detections of key 0_5 with score 1.25; keys of frames outside the sequence are not read,
+  // the key of camera 3 (not in the sequence) is counted as unused input.
+  ASSERT_EQ(detections.warnings.items().size(), 2u);
+  EXPECT_EQ(detections.warnings.items()[0].Line(),
+            path.string() + ": 1 keys of cameras not in the calibration ignored (cameras '3')");
+  EXPECT_EQ(detections.warnings.items()[0].kind, InputWarningKind::kUnused);
+  EXPECT_EQ(detections.warnings.items()[1].Line(), path.string() + ": 2 scores above 1 clamped to 1 (largest = 1.25)");
 }
 
 TEST(VoxelPoseDetections, ScoresSlightlyAboveOneAreClampedAndCounted) {
