@@ -43,7 +43,6 @@ const char* SignalName(int signal_number) {
   while (sigwait(&signals, &signal_number) != 0) {
   }
   const int removed = io::RemoveTemporariesForExit();
-  std::fflush(stdout);
   std::fprintf(stderr, "\ninterrupted (%s): %d unfinished output(s) removed, finished outputs unchanged\n",
                SignalName(signal_number), removed);
   std::fflush(stderr);
