@@ -114,7 +114,7 @@ RunFolder CheckCompleteRun(const fs::path& out) {
   const Json run = Json::parse(test::ReadAll(out / "run.json"));
   const Json summary = Json::parse(test::ReadAll(out / "summary.json"));
   const Json predictions = Json::parse(test::ReadAll(out / "predictions.json"));
-  (void)Json::parse(test::ReadAll(out / "config.json"));
+  EXPECT_TRUE(Json::parse(test::ReadAll(out / "config.json")).is_object());
   folder.run_id = run.at("run_id").get<std::string>();
   EXPECT_FALSE(folder.run_id.empty());
   EXPECT_EQ(summary.at("run_id"), folder.run_id);
@@ -132,7 +132,9 @@ RunFolder CheckCompleteRun(const fs::path& out) {
   }
   const size_t column = std::find(keys.begin(), keys.end(), "frames") - keys.begin();
   EXPECT_LT(column, values.size()) << row;
-  if (column < values.size()) EXPECT_EQ(std::stol(values[column]), folder.frames) << row;
+  if (column < values.size()) {
+    EXPECT_EQ(std::stol(values[column]), folder.frames) << row;
+  }
   return folder;
 }
 
