@@ -2,12 +2,15 @@
 // `rpt convert`: any readable input (dataset or labels, with detections) into one HDF5 cache
 // that loads much faster than JSON; `--labels-out` / `--detections-out` also write the generic
 // JSON interchange files. Every command that takes --labels / --detections accepts the cache.
+// Every output is written beside its file and renamed over it when complete (io::StagedFile).
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 
 #include "cli/commands.h"
 #include "cli/load_input.h"
 #include "core/errors.h"
+#include "datasets/io/staged_output.h"
 #include "datasets/readers/detections_file.h"
 #include "datasets/readers/generic_detections.h"
 #include "datasets/readers/generic_labels.h"
@@ -63,19 +66,41 @@ void RunConvert(const ConvertArgs& args) {
   warnings.Merge(detections.warnings);  // empty unless read directly above
   CheckStrict(args.input.strict, warnings);  // LoadInput checked its own; this covers the direct read
   PrintInputWarnings(warnings);
-  if (!args.out.empty()) {
-    Hdf5WriteOptions options;
-    options.float64 = args.float64;
-    if (!sequences.empty()) {
-      WriteSequencesHdf5(args.out, sequences, options);
-      options.add_to_existing = true;
+  if (!args.out.empty() && (!sequences.empty() || !detections.frames.empty())) {
+    // Written beside the cache and renamed over it when complete: an interrupted or failed
+    // conversion leaves the old cache as it was.
+    std::error_code ec;
+    const auto status = std::filesystem::status(args.out, ec);
+    if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) {
+      throw InputError(args.out + ": not a regular file (an HDF5 cache cannot be written to a device or pipe)");
     }
-    if (!detections.frames.empty()) WriteDetectionsHdf5(args.out, detections, options);
+    io::StagedFile cache(args.out);
+    try {
+      Hdf5WriteOptions options;
+      options.float64 = args.float64;
+      if (!sequences.empty()) {
+        WriteSequencesHdf5(cache.path(), sequences, options);
+        options.add_to_existing = true;
+      }
+      if (!detections.frames.empty()) WriteDetectionsHdf5(cache.path(), detections, options);
+    } catch (const InputError& e) {  // name the cache, not its temporary
+      std::string message = e.what();
+      const std::string temporary = cache.path().string();
+      for (size_t at; (at = message.find(temporary)) != std::string::npos;) message.replace(at, temporary.size(), args.out);
+      throw InputError(message);
+    }
+    cache.Commit();
   }
-  if (!args.labels_out.empty()) WriteLabels(args.labels_out, sequences);
+  const auto warn_replaced = [](const std::string& file, int replaced) {
+    if (replaced > 0) {
+      std::fprintf(stderr, "warning: %s: %d string(s) not valid UTF-8 (frame ids, names); invalid bytes written as U+FFFD\n",
+                   file.c_str(), replaced);
+    }
+  };
+  if (!args.labels_out.empty()) warn_replaced(args.labels_out, WriteLabels(args.labels_out, sequences));
   if (!args.detections_out.empty()) {
     if (detections.frames.empty()) throw InputError("the input has no detections to write to " + args.detections_out);
-    WriteGenericDetections(args.detections_out, detections);
+    warn_replaced(args.detections_out, WriteGenericDetections(args.detections_out, detections));
   }
   long frames = 0;
   for (const Sequence& s : sequences) frames += static_cast<long>(s.frames.size());

@@ -14,6 +14,7 @@
 #include "cli/results_writer.h"
 #include "cli/run_info.h"
 #include "cli/run_sequence.h"
+#include "datasets/io/json_output.h"
 
 namespace rpt::cli {
 namespace {
@@ -56,7 +57,7 @@ void RunEval(const EvalArgs& args) {
   if (args.json) {
     nlohmann::ordered_json summary = SummaryJson(run);
     summary.update(diagnostics_json);
-    std::cout << summary.dump(2) << "\n";
+    std::cout << io::DumpJson(summary, 2) << "\n";  // invalid UTF-8 (a frame id) as U+FFFD, not an error
     std::cout.flush();
     PrintWarnings(std::cerr, diagnostics);
     return;

@@ -1,13 +1,14 @@
 // SPDX-License-Identifier: MIT
 #include "cli/junit_xml.h"
 
-
 #include "core/errors.h"
+#include "datasets/io/json_output.h"
 #include "datasets/io/text_file.h"
 
 namespace rpt::cli {
 
-std::string XmlEscape(std::string_view text) {
+std::string XmlEscape(std::string_view raw) {
+  const std::string text = io::ValidUtf8(std::string(raw));  // XML must be valid UTF-8 (a path from the file system may not be)
   std::string out;
   out.reserve(text.size());
   for (const char c : text) {

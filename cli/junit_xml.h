@@ -18,7 +18,8 @@ struct JunitCase {
 };
 
 // `text` with & < > " ' as entities and the characters XML 1.0 forbids (controls other than tab,
-// newline, carriage return) dropped: safe in text and in quoted attributes.
+// newline, carriage return) dropped, bytes that are not valid UTF-8 as U+FFFD: safe in text and in
+// quoted attributes.
 std::string XmlEscape(std::string_view text);
 
 // <testsuites><testsuite name=suite_name tests failures errors skipped><testcase .../>...</testsuite></testsuites>.

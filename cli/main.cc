@@ -1,15 +1,19 @@
 // SPDX-License-Identifier: MIT
 // rpt: multi-view multi-person 3D pose triangulation and its offline evaluation.
 // Exit codes: 0 success, 2 bad input or configuration (message names the file and place),
-// 1 internal error.
+// 1 internal error, 128 + signal number when interrupted (130 for Ctrl-C; cli/interrupt.h).
 #include <CLI/CLI.hpp>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <exception>
+#include <iostream>
 #include <string>
 #include <vector>
 
 #include "core/closest_name.h"
 #include "cli/commands.h"
+#include "cli/interrupt.h"
 #include "cli/run_info.h"
 #include "core/errors.h"
 #include "git_revision.h"
@@ -59,6 +63,7 @@ void PrintOptionSuggestions(CLI::App& app) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  rpt::cli::InstallInterruptHandler();  // before any other thread starts
   CLI::App app{"rpt: RapidPoseTriangulation, learning-free multi-view multi-person 3D pose triangulation"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("rpt ") + RPT_VERSION + " (git " + RPT_GIT_REVISION + ")",
@@ -93,6 +98,12 @@ int main(int argc, char** argv) {
   } catch (const std::exception& e) {
     std::fprintf(stderr, "internal error: %s\n", e.what());
     return 1;
+  }
+  // Printed results are outputs too: a full disk or closed pipe behind stdout is an error.
+  std::cout.flush();
+  if (std::fflush(stdout) != 0 || std::ferror(stdout) || !std::cout) {
+    std::fprintf(stderr, "error: standard output: write failed (%s)\n", std::strerror(errno));
+    return 2;
   }
   return exit_code;
 }

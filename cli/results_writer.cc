@@ -5,12 +5,13 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <sstream>
 
 #include "cli/report.h"
 #include "core/errors.h"
 #include "core/text.h"
+#include "datasets/io/json_output.h"
+#include "datasets/io/staged_output.h"
 #include "datasets/io/text_file.h"
 
 namespace rpt::cli {
@@ -231,42 +232,54 @@ std::string PaperRow(const RunResult& run) {
   return line;
 }
 
-void WritePredictions(const std::filesystem::path& path, const std::vector<Sequence>& sequences, const RunResult& run) {
-  FILE* out = std::fopen(path.c_str(), "w");
-  if (out == nullptr) throw InputError(path.string() + ": cannot write");
+void WritePredictions(const std::filesystem::path& path, const std::vector<Sequence>& sequences, const RunResult& run,
+                      const std::string& run_id, int* replaced) {
   const JointNames& joints = run.sequences.empty() ? JointNames{} : run.sequences.front().output_joints;
-  std::fprintf(out, "{\"joints\": [");
-  for (size_t j = 0; j < joints.size(); ++j) std::fprintf(out, "%s\"%s\"", j ? ", " : "", joints[j].c_str());
-  std::fprintf(out, "],\n\"frames\": [");
-  bool first_frame = true;
-  for (size_t s = 0; s < sequences.size(); ++s) {
-    for (size_t f = 0; f < sequences[s].frames.size(); ++f) {
-      const Poses3D& persons = run.sequences[s].predictions[f];
-      std::fprintf(out, "%s\n{\"id\": %s, \"persons\": [", first_frame ? "" : ",",
-                   Json(sequences[s].frames[f].id).dump().c_str());
-      first_frame = false;
-      for (int p = 0; p < persons.num_persons(); ++p) {
-        const auto person = persons.Person(p);
-        std::fprintf(out, "%s[", p ? ", " : "");
-        for (int j = 0; j < persons.num_joints; ++j) {
-          std::fprintf(out, "%s[%.6f, %.6f, %.6f, %.4f]", j ? ", " : "", person(0, j), person(1, j), person(2, j),
-                       person(3, j));
-        }
-        std::fprintf(out, "]");
+  io::WriteTextFile(path, [&](std::ostream& out) {
+    // Strings through nlohmann (escaped, UTF-8 checked); numbers with fixed decimals, null when not finite.
+    out << "{\"run_id\": " << io::DumpJson(Json(run_id), -1, replaced)
+        << ", \"joints\": " << io::DumpJson(Json(joints), -1, replaced) << ",\n\"frames\": [";
+    char number[64];
+    const auto write_number = [&](double value, int decimals) {
+      if (!std::isfinite(value)) {
+        out << "null";
+        return;
       }
-      std::fprintf(out, "], \"track_ids\": [");
-      for (int p = 0; p < persons.num_persons(); ++p) std::fprintf(out, "%s%d", p ? ", " : "", persons.track_ids[p]);
-      std::fprintf(out, "]}");
+      std::snprintf(number, sizeof(number), "%.*f", decimals, value);
+      out << number;
+    };
+    bool first_frame = true;
+    for (size_t s = 0; s < sequences.size(); ++s) {
+      for (size_t f = 0; f < sequences[s].frames.size(); ++f) {
+        const Poses3D& persons = run.sequences[s].predictions[f];
+        out << (first_frame ? "" : ",") << "\n{\"id\": " << io::DumpJson(Json(sequences[s].frames[f].id), -1, replaced)
+            << ", \"persons\": [";
+        first_frame = false;
+        for (int p = 0; p < persons.num_persons(); ++p) {
+          const auto person = persons.Person(p);
+          out << (p ? ", [" : "[");
+          for (int j = 0; j < persons.num_joints; ++j) {
+            out << (j ? ", [" : "[");
+            for (int row = 0; row < 4; ++row) {
+              if (row) out << ", ";
+              write_number(person(row, j), row < 3 ? 6 : 4);
+            }
+            out << "]";
+          }
+          out << "]";
+        }
+        out << "], \"track_ids\": [";
+        for (int p = 0; p < persons.num_persons(); ++p) out << (p ? ", " : "") << persons.track_ids[p];
+        out << "]}";
+      }
     }
-  }
-  std::fprintf(out, "\n]}\n");
-  const bool failed = std::ferror(out) != 0;
-  std::fclose(out);
-  if (failed) throw InputError(path.string() + ": write failed");
+    out << "\n]}\n";
+  });
 }
 
 Json RunInfoJson(const RunInfo& info) {
   Json j;
+  j["run_id"] = info.run_id;
   j["git_revision"] = info.git_revision;
   j["date_utc"] = info.date_utc;
   j["command"] = info.command_line;
@@ -279,35 +292,73 @@ Json RunInfoJson(const RunInfo& info) {
   return j;
 }
 
-void WriteEvalOutputs(const std::filesystem::path& dir, const std::vector<Sequence>& sequences, const RunResult& run,
-                      const Config& config, const RunInfo& info, const Json& extra_summary) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) throw InputError(dir.string() + ": cannot create output folder: " + ec.message());
-  Json summary = SummaryJson(run);
+namespace {
+
+// The files of one run into `staging`, run.json last.
+void WriteRunFiles(const std::filesystem::path& staging, const std::vector<Sequence>& sequences, const RunResult& run,
+                   const Config& config, const RunInfo& info, const Json& extra_summary,
+                   std::vector<std::pair<std::string, int>>* replaced) {
+  const auto write_json = [&](const std::string& name, const Json& value) {
+    int count = 0;
+    const std::string text = io::DumpJson(value, 2, &count) + "\n";
+    io::WriteTextFile(staging / name, text);
+    if (count > 0) replaced->emplace_back(name, count);
+  };
+  Json summary;
+  summary["run_id"] = info.run_id;
+  summary.update(SummaryJson(run));
   summary.update(extra_summary);
-  io::WriteTextFile(dir / "summary.json", summary.dump(2) + "\n");
+  write_json("summary.json", summary);
   std::string label;
   for (const Sequence& s : sequences) AppendItem(&label, s.name, "+");
   if (sequences.size() > 3) label = sequences.front().name + "+" + std::to_string(sequences.size() - 1) + " more";
   // The whole run first, then (with several sequences) one row per sequence.
   std::vector<std::pair<std::string, Json>> rows = {{label, summary}};
   for (const SequenceResult& sequence : run.per_sequence) rows.emplace_back(sequence.name, SequenceSummaryJson(sequence));
-  io::WriteTextFile(dir / "summary.csv", SummaryCsv(rows));
-  io::WriteTextFile(dir / "summary.md", SummaryMarkdown(rows) + "\nRevision " + info.git_revision + ", " +
-                                    info.cpu + ", " + std::to_string(info.threads) + " thread(s). Command: `" +
-                                    info.command_line + "`\n");
+  io::WriteTextFile(staging / "summary.csv", SummaryCsv(rows));
+  io::WriteTextFile(staging / "summary.md", SummaryMarkdown(rows) + "\nRevision " + info.git_revision + ", " + info.cpu +
+                                                ", " + std::to_string(info.threads) + " thread(s). Command: `" +
+                                                info.command_line + "`\n");
   std::ostringstream joints;
   joints << "joint,mean_error_mm,pck100_pct,count,num_gt\n";
   for (const auto& row : run.metrics.joints) {
     joints << CsvField(row.name) << "," << Cell(Number(row.mean_error_mm), 2) << "," << Cell(Number(row.pck_100), 2) << ","
            << row.count << "," << row.num_gt << "\n";
   }
-  io::WriteTextFile(dir / "per_joint.csv", joints.str());
-  io::WriteTextFile(dir / "steps.csv", StepsCsv(run.timing, run.counts));
-  io::WriteTextFile(dir / "config.json", DumpConfig(config, /*with_comments=*/false));
-  io::WriteTextFile(dir / "run.json", RunInfoJson(info).dump(2) + "\n");
-  WritePredictions(dir / "predictions.json", sequences, run);
+  io::WriteTextFile(staging / "per_joint.csv", joints.str());
+  io::WriteTextFile(staging / "steps.csv", StepsCsv(run.timing, run.counts));
+  io::WriteTextFile(staging / "config.json", DumpConfig(config, /*with_comments=*/false));
+  int predictions_replaced = 0;
+  WritePredictions(staging / "predictions.json", sequences, run, info.run_id, &predictions_replaced);
+  if (predictions_replaced > 0) replaced->emplace_back("predictions.json", predictions_replaced);
+  write_json("run.json", RunInfoJson(info));  // last: the marker of a complete run
+}
+
+}  // namespace
+
+void WriteEvalOutputs(const std::filesystem::path& dir, const std::vector<Sequence>& sequences, const RunResult& run,
+                      const Config& config, const RunInfo& info, const Json& extra_summary) {
+  // The new run is built in a sibling folder and swapped in whole (io::StagedFolder); run.json, the
+  // marker of a complete run, is written last. When the folder must be replaced in place, the old
+  // marker goes first, so a reader never takes a mixed folder for a complete run.
+  io::StagedFolder folder(dir);
+  const std::filesystem::path staging = folder.path();
+  if (folder.in_place()) {
+    std::error_code ec;
+    std::filesystem::remove(staging / "run.json", ec);
+    if (ec) throw InputError((dir / "run.json").string() + ": cannot remove the old run marker: " + ec.message());
+  }
+  std::vector<std::pair<std::string, int>> replaced;  // file, strings with invalid UTF-8
+  try {
+    WriteRunFiles(staging, sequences, run, config, info, extra_summary, &replaced);
+    folder.Commit();
+  } catch (const InputError& e) {
+    throw InputError(folder.NamedAsTarget(e.what()));
+  }
+  for (const auto& [name, count] : replaced) {
+    std::fprintf(stderr, "warning: %s: %d string(s) not valid UTF-8 (frame ids, names); invalid bytes written as U+FFFD\n",
+                 (dir / name).string().c_str(), count);
+  }
 }
 
 }  // namespace rpt::cli

@@ -46,16 +46,22 @@ std::string SummaryMarkdown(const std::vector<std::pair<std::string, nlohmann::o
 // The paper-style row printed on the terminal: PCP | PCK@100/500 | MPJPE | Recall@100/500 | Invalid | F1 | FPS.
 std::string PaperRow(const RunResult& run);
 
-// predictions.json: {"joints": [...], "frames": [{"id", "persons": [[[x,y,z,score],...],...], "track_ids": [...]}]}
-void WritePredictions(const std::filesystem::path& path, const std::vector<Sequence>& sequences, const RunResult& run);
+// predictions.json: {"run_id", "joints": [...], "frames": [{"id", "persons": [[[x,y,z,score],...],...], "track_ids": [...]}]}
+// (coordinates not finite are null). Adds the number of strings with invalid UTF-8 (written as U+FFFD) to `*replaced`.
+void WritePredictions(const std::filesystem::path& path, const std::vector<Sequence>& sequences, const RunResult& run,
+                      const std::string& run_id, int* replaced);
 
 // Everything above into `dir` (created); `extra_summary` (e.g. eval's warnings and data checks)
-// is merged into summary.json. Throws InputError when the folder cannot be written.
+// is merged into summary.json. Atomic: `dir` holds either its old contents or the complete new run
+// (built beside it and swapped in; run.json, written last, marks a complete run; summary.json,
+// predictions.json and run.json carry the same "run_id"). Strings that are not valid UTF-8 are
+// written as U+FFFD with one "warning: <file>: ..." line on stderr per file. Throws InputError
+// naming the file when anything cannot be written; `dir` is then left as it was.
 void WriteEvalOutputs(const std::filesystem::path& dir, const std::vector<Sequence>& sequences, const RunResult& run,
                       const Config& config, const RunInfo& info,
                       const nlohmann::ordered_json& extra_summary = nlohmann::ordered_json::object());
 
-// run.json: git revision, date, command, machine, threads, build, and "input_warnings" (the
+// run.json: run id, git revision, date, command, machine, threads, build, and "input_warnings" (the
 // readers' correction lines, [] when none).
 nlohmann::ordered_json RunInfoJson(const RunInfo& info);
 

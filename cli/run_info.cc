@@ -1,7 +1,11 @@
 // SPDX-License-Identifier: MIT
 #include "cli/run_info.h"
 
+#include <unistd.h>
+
 #include <ctime>
+#include <random>
+#include <cstdio>
 #include <fstream>
 #include <string>
 #include <thread>
@@ -46,6 +50,11 @@ RunInfo CollectRunInfo(int threads, const std::string& command_line) {
   const std::time_t now = std::time(nullptr);
   std::strftime(date, sizeof(date), "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
   info.date_utc = date;
+  char run_id[80];
+  std::strftime(date, sizeof(date), "%Y%m%dT%H%M%SZ", std::gmtime(&now));
+  std::snprintf(run_id, sizeof(run_id), "%s-%d-%08x", date, static_cast<int>(::getpid()),
+                static_cast<unsigned>(std::random_device{}()));
+  info.run_id = run_id;
   return info;
 }
 

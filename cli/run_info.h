@@ -16,6 +16,7 @@ struct RunInfo {
   std::string build_type;
   std::string command_line;
   std::string date_utc;
+  std::string run_id;  // unique per run ("<date>-<pid>-<random>"); every JSON output of the run carries it
   std::vector<std::string> input_warnings;  // corrections the readers applied, one line per file and kind
 };
 

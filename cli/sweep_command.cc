@@ -30,6 +30,8 @@
 #include "core/text.h"
 #include "datasets/dataset_request.h"
 #include "datasets/io/json_file.h"
+#include "datasets/io/json_output.h"
+#include "datasets/io/staged_output.h"
 #include "datasets/io/text_file.h"
 
 namespace rpt::cli {
@@ -112,6 +114,32 @@ void WriteTables(const fs::path& dir, const Json& rows, const std::string& stem)
   for (const Json& row : rows) table.emplace_back(row["name"].get<std::string>(), row["summary"]);
   io::WriteTextFile(dir / (stem + ".csv"), SummaryCsv(table));
   io::WriteTextFile(dir / (stem + ".md"), SummaryMarkdown(table));
+}
+
+// <stem>.{csv,md,json} into `out`, each file atomic, the JSON (the data the tables show) last. With
+// `whole_folder` the three are swapped in together (io::StagedFolder; other files in `out`, e.g. shard
+// files, are kept). Shards share a folder and may finish at the same time on different machines:
+// a folder swap could then drop another shard's files, so a shard replaces only its own files.
+void WriteSweepFiles(const fs::path& out, const Json& file, const std::string& stem, bool whole_folder) {
+  std::optional<io::StagedFolder> folder;
+  if (whole_folder) folder.emplace(out);
+  std::error_code ec;
+  if (!whole_folder) fs::create_directories(out, ec);
+  if (ec) throw InputError(out.string() + ": cannot create output folder: " + ec.message());
+  const fs::path dir = whole_folder ? folder->path() : out;
+  int replaced = 0;
+  try {
+    WriteTables(dir, file["rows"], stem);
+    io::WriteTextFile(dir / (stem + ".html"), SweepHtml(file));
+    io::WriteTextFile(dir / (stem + ".json"), io::DumpJson(file, 2, &replaced) + "\n");  // last
+    if (folder) folder->Commit();
+  } catch (const InputError& e) {
+    throw InputError(folder ? folder->NamedAsTarget(e.what()) : std::string(e.what()));
+  }
+  if (replaced > 0) {
+    std::fprintf(stderr, "warning: %s: %d string(s) not valid UTF-8; invalid bytes written as U+FFFD\n",
+                 (out / (stem + ".json")).string().c_str(), replaced);
+  }
 }
 
 void RunSweep(const SweepArgs& args) {
@@ -211,9 +239,6 @@ void RunSweep(const SweepArgs& args) {
       if (key.rfind("param.", 0) != 0 && !base.contains(key)) base[key] = GetConfigOption(base_options, key);
     }
   }
-  std::error_code ec;
-  fs::create_directories(args.out, ec);
-  if (ec) throw InputError(args.out + ": cannot create output folder: " + ec.message());
   Json file;
   file["total"] = all.size();
   file["shard"] = args.shard;
@@ -223,9 +248,7 @@ void RunSweep(const SweepArgs& args) {
   file["base"] = base;
   file["rows"] = rows;
   const std::string stem = shards == 1 ? "sweep" : "sweep-shard-" + std::to_string(shard) + "-of-" + std::to_string(shards);
-  io::WriteTextFile(fs::path(args.out) / (stem + ".json"), file.dump(2) + "\n");
-  WriteTables(args.out, rows, stem);
-  io::WriteTextFile(fs::path(args.out) / (stem + ".html"), SweepHtml(file));
+  WriteSweepFiles(args.out, file, stem, /*whole_folder=*/shards == 1);
   std::cout << SummaryMarkdown([&] {
     std::vector<std::pair<std::string, Json>> table;
     for (const Json& row : rows) table.emplace_back(row["name"].get<std::string>(), row["summary"]);
@@ -262,17 +285,12 @@ void RunMerge(const std::vector<std::string>& inputs, const std::string& out) {
   if (!missing.empty()) throw InputError("merge: configurations missing (shard files absent?): " + missing);
   Json rows = Json::array();
   for (auto& [index, row] : by_index) rows.push_back(row);
-  std::error_code ec;
-  fs::create_directories(out, ec);
-  if (ec) throw InputError(out + ": cannot create output folder: " + ec.message());
   Json file;
   file["total"] = total;
   file["shard"] = "1/1";
   file["base"] = base;
   file["rows"] = rows;
-  io::WriteTextFile(fs::path(out) / "sweep.json", file.dump(2) + "\n");
-  WriteTables(out, rows, "sweep");
-  io::WriteTextFile(fs::path(out) / "sweep.html", SweepHtml(file));
+  WriteSweepFiles(out, file, "sweep", /*whole_folder=*/true);
   std::printf("merged %zu configurations from %zu shard files into %s/sweep.{json,csv,md,html}\n", total, inputs.size(),
               out.c_str());
 }

@@ -4,15 +4,22 @@
 #include <fstream>
 
 #include "core/errors.h"
+#include "datasets/io/staged_output.h"
 
 namespace rpt::io {
 
-void WriteTextFile(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+void WriteTextFile(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write) {
+  StagedFile staged(path);
+  std::ofstream out(staged.path(), std::ios::binary | std::ios::trunc);
   if (!out) throw InputError(path.string() + ": cannot open for writing");
-  out.write(text.data(), static_cast<std::streamsize>(text.size()));
+  write(out);
   out.close();
   if (!out) throw InputError(path.string() + ": write failed");
+  staged.Commit();
+}
+
+void WriteTextFile(const std::filesystem::path& path, const std::string& text) {
+  WriteTextFile(path, [&text](std::ostream& out) { out.write(text.data(), static_cast<std::streamsize>(text.size())); });
 }
 
 }  // namespace rpt::io

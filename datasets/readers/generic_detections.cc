@@ -8,6 +8,7 @@
 #include "core/errors.h"
 #include "datasets/input_warnings.h"
 #include "datasets/io/json_file.h"
+#include "datasets/io/json_output.h"
 #include "datasets/io/text_file.h"
 #include "datasets/readers/generic_common.h"
 #include "datasets/readers/generic_internal.h"
@@ -148,12 +149,13 @@ Detections ReadGenericDetections(const std::filesystem::path& path) {
   return detections;
 }
 
-void WriteGenericDetections(const std::filesystem::path& path, const Detections& detections) {
+int WriteGenericDetections(const std::filesystem::path& path, const Detections& detections) {
   const std::string source = Source(path);
   ValidateDetections(detections, source + ": cannot write");
   const int num_joints = static_cast<int>(detections.joints.size());
   // Written by hand: one frame per line, numbers in nlohmann's shortest round-trip form.
-  std::string text = "{\"joints\": " + json(detections.joints).dump() + ",\n\"frames\": [\n";
+  int replaced = 0;  // strings with invalid UTF-8, written as U+FFFD
+  std::string text = "{\"joints\": " + io::DumpJson(json(detections.joints), -1, &replaced) + ",\n\"frames\": [\n";
   for (size_t f = 0; f < detections.frames.size(); ++f) {
     const FrameDetections& frame = detections.frames[f];
     json views = json::array();
@@ -169,11 +171,12 @@ void WriteGenericDetections(const std::filesystem::path& path, const Detections&
       views.push_back({{"camera", frame.cameras[v]}, {"poses", std::move(poses)}});
     }
     json frame_json = {{"id", frame.frame_id}, {"views", std::move(views)}};
-    text += frame_json.dump();
+    text += io::DumpJson(frame_json, -1, &replaced);
     text += f + 1 < detections.frames.size() ? ",\n" : "\n";
   }
   text += "]}\n";
   io::WriteTextFile(path, text);
+  return replaced;
 }
 
 }  // namespace rpt

@@ -24,7 +24,8 @@ Detections ReadGenericDetections(const std::filesystem::path& path);
 
 // Throws InputError naming the file when it cannot be written or a value is not finite or the
 // shapes are inconsistent.
-void WriteGenericDetections(const std::filesystem::path& path, const Detections& detections);
+// Returns the number of strings that were not valid UTF-8 (written as U+FFFD).
+int WriteGenericDetections(const std::filesystem::path& path, const Detections& detections);
 
 // Checks what every detection reader guarantees: known joint names, one camera name per view,
 // unique frame ids and cameras per frame, joint counts, finite values and scores in [0, 1].

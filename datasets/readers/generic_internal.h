@@ -14,6 +14,7 @@
 
 #include "core/errors.h"
 #include "datasets/io/json_file.h"
+#include "datasets/io/json_output.h"
 
 namespace rpt::generic_internal {
 
@@ -32,12 +33,13 @@ inline std::string IdString(const nlohmann::json& root, const std::string& point
   throw InputError(source + ": " + pointer + ": expected a string or an integer id, got " + std::string(j.type_name()));
 }
 
-// A JSON list written one element per line (diff-friendly, compact).
+// A JSON list written one element per line (diff-friendly, compact); invalid UTF-8 is written as
+// U+FFFD and counted in `*replaced` (io::DumpJson).
 template <typename Json>
-std::string DumpListOnePerLine(const std::vector<Json>& items) {
+std::string DumpListOnePerLine(const std::vector<Json>& items, int* replaced = nullptr) {
   std::string text = "[\n";
   for (size_t i = 0; i < items.size(); ++i) {
-    text += items[i].dump();
+    text += io::DumpJson(items[i], -1, replaced);
     text += i + 1 < items.size() ? ",\n" : "\n";
   }
   text += "]\n";

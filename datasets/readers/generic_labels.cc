@@ -409,7 +409,7 @@ ojson CameraJson(const Camera& camera, const std::string& source, const std::str
 
 }  // namespace
 
-void WriteLabels(const std::filesystem::path& path, const std::vector<Sequence>& sequences) {
+int WriteLabels(const std::filesystem::path& path, const std::vector<Sequence>& sequences) {
   const std::string source = Source(path);
   std::vector<ojson> labels;
   std::unordered_set<std::string> ids;
@@ -458,7 +458,9 @@ void WriteLabels(const std::filesystem::path& path, const std::vector<Sequence>&
       labels.push_back(std::move(label));
     }
   }
-  io::WriteTextFile(path, generic_internal::DumpListOnePerLine(labels));
+  int replaced = 0;
+  io::WriteTextFile(path, generic_internal::DumpListOnePerLine(labels, &replaced));
+  return replaced;
 }
 
 DatasetInfo GenericInfo() {

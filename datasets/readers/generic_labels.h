@@ -44,7 +44,8 @@ std::vector<Sequence> ReadLabels(const std::filesystem::path& path, const Labels
 // Writes the sequences as one label list ("scene" = sequence name, "timestamp", "fps", "bodyids"
 // when tracked, room). kH36M cameras are written with the extension "type": "h36m". Throws
 // InputError naming the file when it cannot be written or a value is not finite.
-void WriteLabels(const std::filesystem::path& path, const std::vector<Sequence>& sequences);
+// Returns the number of strings that were not valid UTF-8 (written as U+FFFD).
+int WriteLabels(const std::filesystem::path& path, const std::vector<Sequence>& sequences);
 
 // Registry pair: dataset "generic", --root = the label file, params split (default: all) and fps
 // (default 25).

@@ -1,0 +1,241 @@
+// SPDX-License-Identifier: MIT
+#include "datasets/io/staged_output.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "core/errors.h"
+
+namespace rpt::io {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Every temporary that exists right now. Creating, committing and discarding a temporary happen
+// under the lock, so RemoveTemporariesForExit (which keeps the lock) sees each one either not yet
+// created or registered, and never a half-done rename.
+struct Registry {
+  std::mutex mutex;
+  std::vector<fs::path> paths;
+  long next_number = 0;
+};
+
+Registry& TheRegistry() {
+  static Registry* registry = new Registry;  // never destroyed: the interrupt thread may use it during exit
+  return *registry;
+}
+
+void Unregister(Registry& registry, const fs::path& path) {
+  auto& paths = registry.paths;
+  paths.erase(std::remove(paths.begin(), paths.end(), path), paths.end());
+}
+
+// `<target>.tmp-<pid>-<n>` (call with the lock held).
+fs::path NextTemporaryName(Registry& registry, const fs::path& target) {
+  return target.parent_path() /
+         (target.filename().string() + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(registry.next_number++));
+}
+
+std::string ErrnoText() { return std::strerror(errno); }
+
+// Flushes a file's (or a folder's) data and entries to disk.
+bool SyncToDisk(const fs::path& path, bool folder) {
+  const int fd = ::open(path.c_str(), (folder ? O_RDONLY | O_DIRECTORY : O_RDONLY) | O_CLOEXEC);
+  if (fd < 0) return false;
+  const bool ok = ::fsync(fd) == 0 || errno == EINVAL;  // EINVAL: the file system does not sync (e.g. some FUSE)
+  ::close(fd);
+  return ok;
+}
+
+// Does `folder` hold the current directory (or is it)? Then it cannot be swapped away.
+bool HoldsCurrentDirectory(const fs::path& folder) {
+  std::error_code ec;
+  const fs::path cwd = fs::current_path(ec);
+  const fs::path canonical = fs::canonical(folder, ec);
+  if (ec) return false;
+  return std::mismatch(canonical.begin(), canonical.end(), cwd.begin(), cwd.end()).first == canonical.end();
+}
+
+// Exchanges two existing paths atomically; false when the file system cannot.
+bool ExchangePaths(const fs::path& a, const fs::path& b) {
+#ifdef RENAME_EXCHANGE
+  return ::renameat2(AT_FDCWD, a.c_str(), AT_FDCWD, b.c_str(), RENAME_EXCHANGE) == 0;
+#else
+  (void)a;
+  (void)b;
+  errno = EINVAL;
+  return false;
+#endif
+}
+
+}  // namespace
+
+StagedFile::StagedFile(const fs::path& target) : target_(target) {
+  std::error_code ec;
+  if (fs::is_symlink(target_, ec)) {  // replace what the link points to, not the link
+    const fs::path resolved = fs::weakly_canonical(target_, ec);
+    if (!ec) target_ = resolved;
+  }
+  const fs::file_status status = fs::status(target_, ec);
+  if (fs::is_directory(status)) throw InputError(target_.string() + ": is a folder, expected a file");
+  if (fs::exists(status) && !fs::is_regular_file(status)) {  // a device or FIFO: written in place
+    temporary_ = target_;
+    return;
+  }
+  Registry& registry = TheRegistry();
+  std::lock_guard<std::mutex> lock(registry.mutex);
+  for (;;) {
+    temporary_ = NextTemporaryName(registry, target_);
+    const int fd = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd < 0 && errno == EEXIST) continue;
+    if (fd < 0) throw InputError(target_.string() + ": cannot open for writing (" + ErrnoText() + ")");
+    if (fs::exists(status)) ::fchmod(fd, static_cast<mode_t>(status.permissions()) & 07777);  // keep the old mode
+    ::close(fd);
+    break;
+  }
+  registry.paths.push_back(temporary_);
+  pending_ = true;
+}
+
+StagedFile::~StagedFile() {
+  if (!pending_) return;
+  Registry& registry = TheRegistry();
+  std::lock_guard<std::mutex> lock(registry.mutex);
+  std::error_code ec;
+  fs::remove(temporary_, ec);
+  Unregister(registry, temporary_);
+}
+
+void StagedFile::Commit() {
+  if (!pending_) return;  // written in place
+  if (!SyncToDisk(temporary_, /*folder=*/false)) {
+    throw InputError(target_.string() + ": write failed (" + ErrnoText() + ")");
+  }
+  Registry& registry = TheRegistry();
+  std::lock_guard<std::mutex> lock(registry.mutex);
+  if (::rename(temporary_.c_str(), target_.c_str()) != 0) {
+    throw InputError(target_.string() + ": cannot replace (" + ErrnoText() + ")");  // the destructor removes the temporary
+  }
+  Unregister(registry, temporary_);
+  pending_ = false;
+}
+
+StagedFolder::StagedFolder(const fs::path& target) : target_(target) {
+  std::error_code ec;
+  if (target_.filename().empty()) target_ = target_.parent_path();  // "out/" -> "out"
+  const fs::file_status status = fs::status(target_, ec);
+  if (fs::exists(status) && !fs::is_directory(status)) {
+    throw InputError(target_.string() + ": exists and is not a folder");
+  }
+  const fs::path absolute = fs::absolute(target_, ec).lexically_normal();
+  if ((fs::exists(status) && HoldsCurrentDirectory(target_)) || !absolute.has_relative_path()) {
+    staging_ = target_;  // in place
+    return;
+  }
+  if (!absolute.parent_path().empty()) fs::create_directories(absolute.parent_path(), ec);
+  if (ec) throw InputError(target_.string() + ": cannot create output folder: " + ec.message());
+  Registry& registry = TheRegistry();
+  std::lock_guard<std::mutex> lock(registry.mutex);
+  for (;;) {
+    staging_ = NextTemporaryName(registry, target_);
+    if (::mkdir(staging_.c_str(), 0777) == 0) break;
+    if (errno != EEXIST) throw InputError(target_.string() + ": cannot create output folder (" + ErrnoText() + ")");
+  }
+  registry.paths.push_back(staging_);
+  pending_ = true;
+  if (!fs::exists(status)) return;
+  // Carry the old entries over; should that fail (e.g. hard links not allowed), fall back to in place.
+  for (const fs::directory_entry& entry : fs::directory_iterator(target_, ec)) {
+    fs::copy(entry.path(), staging_ / entry.path().filename(),
+             fs::copy_options::recursive | fs::copy_options::create_hard_links | fs::copy_options::copy_symlinks, ec);
+    if (ec) break;
+  }
+  if (ec) {
+    fs::remove_all(staging_, ec);
+    Unregister(registry, staging_);
+    pending_ = false;
+    staging_ = target_;
+  }
+}
+
+StagedFolder::~StagedFolder() {
+  if (!pending_) return;
+  Registry& registry = TheRegistry();
+  std::lock_guard<std::mutex> lock(registry.mutex);
+  std::error_code ec;
+  fs::remove_all(staging_, ec);
+  Unregister(registry, staging_);
+}
+
+void StagedFolder::Commit() {
+  if (!pending_) return;  // in place: every file was committed on its own
+  if (!SyncToDisk(staging_, /*folder=*/true)) {
+    throw InputError(target_.string() + ": cannot flush the new folder (" + ErrnoText() + ")");
+  }
+  Registry& registry = TheRegistry();
+  std::lock_guard<std::mutex> lock(registry.mutex);
+  std::error_code ec;
+  if (!fs::exists(target_, ec)) {
+    if (::rename(staging_.c_str(), target_.c_str()) != 0) {
+      throw InputError(target_.string() + ": cannot create output folder (" + ErrnoText() + ")");
+    }
+    Unregister(registry, staging_);
+    pending_ = false;
+    return;
+  }
+  if (ExchangePaths(staging_, target_)) {  // staging_ now holds the old contents
+    fs::remove_all(staging_, ec);
+    Unregister(registry, staging_);
+    pending_ = false;
+    return;
+  }
+  // No atomic exchange here: move the old folder aside, the new one in, then drop the old one.
+  // Killed in between, the old folder waits intact under its temporary name.
+  const fs::path old = NextTemporaryName(registry, target_);
+  if (::rename(target_.c_str(), old.c_str()) != 0) {
+    throw InputError(target_.string() + ": cannot replace the output folder (" + ErrnoText() + ")");
+  }
+  registry.paths.push_back(old);
+  if (::rename(staging_.c_str(), target_.c_str()) != 0) {
+    const std::string error = ErrnoText();
+    ::rename(old.c_str(), target_.c_str());
+    Unregister(registry, old);
+    throw InputError(target_.string() + ": cannot replace the output folder (" + error + ")");
+  }
+  Unregister(registry, staging_);
+  pending_ = false;
+  fs::remove_all(old, ec);
+  Unregister(registry, old);
+}
+
+std::string StagedFolder::NamedAsTarget(std::string message) const {
+  if (in_place()) return message;
+  const std::string staging = staging_.string(), target = target_.string();
+  for (size_t at = 0; (at = message.find(staging, at)) != std::string::npos; at += target.size()) {
+    message.replace(at, staging.size(), target);
+  }
+  return message;
+}
+
+int RemoveTemporariesForExit() {
+  Registry& registry = TheRegistry();
+  registry.mutex.lock();  // kept: the process exits next
+  int removed = 0;
+  for (const fs::path& path : registry.paths) {
+    std::error_code ec;
+    if (fs::remove_all(path, ec) > 0) ++removed;
+  }
+  registry.paths.clear();
+  return removed;
+}
+
+}  // namespace rpt::io

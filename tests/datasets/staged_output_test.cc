@@ -1,0 +1,208 @@
+// SPDX-License-Identifier: MIT
+// io::StagedFile / io::StagedFolder: outputs appear complete or not at all, temporaries never stay.
+#include "datasets/io/staged_output.h"
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/errors.h"
+#include "datasets/io/json_output.h"
+#include "datasets/io/text_file.h"
+
+namespace rpt::io {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string Read(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// Names in `dir`, sorted.
+std::vector<std::string> Entries(const fs::path& dir) {
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(dir)) names.push_back(entry.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+fs::path FreshDir(const std::string& name) {
+  const fs::path dir = fs::path(testing::TempDir()) / ("rpt_staged_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+TEST(StagedFile, TargetChangesOnlyOnCommit) {
+  const fs::path dir = FreshDir("file");
+  WriteTextFile(dir / "a.txt", "old\n");
+  {
+    StagedFile staged(dir / "a.txt");
+    std::ofstream(staged.path()) << "new\n";
+    EXPECT_EQ(Read(dir / "a.txt"), "old\n");
+    EXPECT_EQ(staged.path().parent_path(), dir);
+    staged.Commit();
+  }
+  EXPECT_EQ(Read(dir / "a.txt"), "new\n");
+  EXPECT_EQ(Entries(dir), std::vector<std::string>{"a.txt"});
+  fs::remove_all(dir);
+}
+
+TEST(StagedFile, FailedWriteKeepsTheOldFileAndLeavesNoTemporary) {
+  const fs::path dir = FreshDir("failed");
+  WriteTextFile(dir / "a.txt", "old\n");
+  EXPECT_THROW(WriteTextFile(dir / "a.txt",
+                             [](std::ostream& out) {
+                               out << "half of the new";
+                               throw InputError("disk gone");
+                             }),
+               InputError);
+  EXPECT_EQ(Read(dir / "a.txt"), "old\n");
+  EXPECT_EQ(Entries(dir), std::vector<std::string>{"a.txt"});
+  fs::remove_all(dir);
+}
+
+TEST(StagedFile, AFolderInTheWayIsAnErrorNamingTheFile) {
+  const fs::path dir = FreshDir("folder_in_way");
+  fs::create_directories(dir / "summary.json");
+  try {
+    WriteTextFile(dir / "summary.json", "{}");
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find((dir / "summary.json").string()), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(Entries(dir), std::vector<std::string>{"summary.json"});
+  fs::remove_all(dir);
+}
+
+TEST(StagedFolder, SwapsInTheNewContentsAndKeepsOtherFiles) {
+  const fs::path root = FreshDir("folder");
+  const fs::path out = root / "run";
+  WriteTextFile(out.string() + "-unused", "");  // a sibling that must not be touched
+  fs::create_directories(out / "render");
+  WriteTextFile(out / "summary.json", "old summary");
+  WriteTextFile(out / "report.html", "kept");
+  WriteTextFile(out / "render" / "frame.png", "kept too");
+  {
+    StagedFolder folder(out);
+    ASSERT_FALSE(folder.in_place());
+    WriteTextFile(folder.path() / "summary.json", "new summary");
+    WriteTextFile(folder.path() / "run.json", "{}");
+    EXPECT_EQ(Read(out / "summary.json"), "old summary");  // nothing changes before Commit
+    EXPECT_FALSE(fs::exists(out / "run.json"));
+    folder.Commit();
+  }
+  EXPECT_EQ(Read(out / "summary.json"), "new summary");
+  EXPECT_EQ(Read(out / "run.json"), "{}");
+  EXPECT_EQ(Read(out / "report.html"), "kept");
+  EXPECT_EQ(Read(out / "render" / "frame.png"), "kept too");
+  EXPECT_EQ(Entries(root), (std::vector<std::string>{"run", "run-unused"}));
+  fs::remove_all(root);
+}
+
+TEST(StagedFolder, WithoutCommitTheOldFolderStaysAndTheStagingGoes) {
+  const fs::path root = FreshDir("abandoned");
+  fs::create_directories(root / "run");
+  WriteTextFile(root / "run" / "summary.json", "old");
+  {
+    StagedFolder folder(root / "run");
+    WriteTextFile(folder.path() / "summary.json", "new");
+    EXPECT_EQ(Entries(root).size(), 2u);  // run and its staging sibling
+  }
+  EXPECT_EQ(Entries(root), std::vector<std::string>{"run"});
+  EXPECT_EQ(Read(root / "run" / "summary.json"), "old");
+  fs::remove_all(root);
+}
+
+TEST(StagedFolder, ANewFolderAppearsOnlyOnCommit) {
+  const fs::path root = FreshDir("new");
+  StagedFolder folder(root / "a" / "run");
+  WriteTextFile(folder.path() / "run.json", "{}");
+  EXPECT_FALSE(fs::exists(root / "a" / "run"));
+  folder.Commit();
+  EXPECT_EQ(Entries(root / "a"), std::vector<std::string>{"run"});
+  EXPECT_EQ(Read(root / "a" / "run" / "run.json"), "{}");
+  const std::string message = folder.NamedAsTarget("x: " + folder.path().string() + "/run.json: write failed");
+  EXPECT_EQ(message, "x: " + (root / "a" / "run").string() + "/run.json: write failed");
+  fs::remove_all(root);
+}
+
+// The current directory cannot be swapped away: its files are replaced one by one.
+TEST(StagedFolder, TheCurrentDirectoryIsWrittenInPlace) {
+  const fs::path root = FreshDir("cwd");
+  const fs::path previous = fs::current_path();
+  fs::current_path(root);
+  {
+    StagedFolder folder(".");
+    EXPECT_TRUE(folder.in_place());
+    WriteTextFile(folder.path() / "run.json", "{}");
+    folder.Commit();
+  }
+  fs::current_path(previous);
+  EXPECT_EQ(Entries(root), std::vector<std::string>{"run.json"});
+  fs::remove_all(root);
+}
+
+TEST(StagedFolder, AFileInTheWayIsAnErrorNamingIt) {
+  const fs::path root = FreshDir("file_in_way");
+  WriteTextFile(root / "run", "a file");
+  try {
+    StagedFolder folder(root / "run");
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find((root / "run").string()), std::string::npos) << e.what();
+  }
+  fs::remove_all(root);
+}
+
+TEST(RemoveTemporariesForExit, RemovesWhatIsBeingWritten) {
+  // Run in a child: the registry stays locked afterwards, as in the process that exits.
+  const fs::path root = FreshDir("exit");
+  WriteTextFile(root / "kept.txt", "old");
+  fs::create_directories(root / "run");
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    StagedFile file(root / "kept.txt");
+    std::ofstream(file.path()) << "half";
+    StagedFolder folder(root / "run");
+    std::ofstream(folder.path() / "summary.json") << "half";
+    ::_exit(RemoveTemporariesForExit());
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 2);  // the file's and the folder's temporaries
+  EXPECT_EQ(Entries(root), (std::vector<std::string>{"kept.txt", "run"}));
+  EXPECT_EQ(Read(root / "kept.txt"), "old");
+  EXPECT_TRUE(fs::is_empty(root / "run"));
+  fs::remove_all(root);
+}
+
+TEST(JsonOutput, EscapesQuotesAndReplacesInvalidUtf8) {
+  int replaced = 0;
+  const nlohmann::ordered_json value = {{"joints", {"left \"wrist\"", "ok"}}, {"id", "frame\xff\xfe"}};
+  const std::string text = DumpJson(value, -1, &replaced);
+  EXPECT_EQ(replaced, 1);
+  const nlohmann::json parsed = nlohmann::json::parse(text);
+  EXPECT_EQ(parsed["joints"][0], "left \"wrist\"");
+  EXPECT_EQ(parsed["id"], "frame\xef\xbf\xbd\xef\xbf\xbd");  // two U+FFFD
+  replaced = 0;
+  EXPECT_EQ(DumpJson(nlohmann::json("plain"), -1, &replaced), "\"plain\"");
+  EXPECT_EQ(replaced, 0);
+}
+
+}  // namespace
+}  // namespace rpt::io
