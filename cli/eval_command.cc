@@ -14,6 +14,7 @@
 #include "cli/results_writer.h"
 #include "cli/run_info.h"
 #include "cli/run_sequence.h"
+#include "cli/thread_count.h"
 
 namespace rpt::cli {
 namespace {
@@ -86,7 +87,7 @@ void RegisterEvalCommand(CLI::App& app) {
   AddInputOptions(command, &args->input);
   AddConfigOptions(command, &args->config);
   command->add_option("--out", args->out, "output folder (default out/eval-<dataset>)");
-  command->add_option("--threads", args->threads, "sequences evaluated in parallel (default: all cores)");
+  AddThreadsOption(command, &args->threads, "sequences evaluated");
   command->add_flag("--json", args->json, "print the summary as one JSON object");
   command->add_flag("--quiet", args->quiet, "no progress, no step table");
   command->callback([args] { RunEval(*args); });

@@ -13,6 +13,7 @@
 #endif
 
 #include "cli/progress.h"
+#include "cli/thread_count.h"
 #include "core/errors.h"
 #include "core/pipeline/room_check.h"
 #include "core/pipeline/triangulator.h"
@@ -112,8 +113,8 @@ RunResult RunSequences(const std::vector<Sequence>& sequences, const RunOptions&
   std::mutex error_mutex;
   const int count = static_cast<int>(sequences.size());
 #ifdef _OPENMP
-  const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
-  result.threads = std::min(threads, std::max(count, 1));
+  const int threads = ClampThreads(options.threads, count);
+  result.threads = threads;
 #pragma omp parallel for schedule(dynamic) num_threads(threads)
 #endif
   for (int i = 0; i < count; ++i) {
