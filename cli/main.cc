@@ -3,6 +3,7 @@
 // Exit codes: 0 success, 2 bad input or configuration (message names the file and place),
 // 1 internal error.
 #include <CLI/CLI.hpp>
+#include <cstdint>
 #include <cstdio>
 #include <exception>
 #include <string>
@@ -12,6 +13,7 @@
 #include "cli/commands.h"
 #include "cli/run_info.h"
 #include "core/errors.h"
+#include "datasets/io/inflate_budget.h"
 #include "git_revision.h"
 
 namespace {
@@ -63,6 +65,13 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("rpt ") + RPT_VERSION + " (git " + RPT_GIT_REVISION + ")",
                        "print the version and git revision, then exit");
+  // Global options, accepted before or after the subcommand (fallthrough).
+  app.fallthrough();
+  app.add_option_function<std::uint64_t>(
+         "--max-inflate-mb", [](std::uint64_t megabytes) { rpt::io::SetInflateLimitMb(megabytes); },
+         "limit on the data decompressed from one input file (MAT, NPZ, compressed HDF5), in MiB "
+         "(default: 64 x the file size, at least 64, at most 4096)")
+      ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 24));
   rpt::cli::SetCommandLine(rpt::cli::CommandLine(argc, argv));
   rpt::cli::RegisterDemoCommand(app);
   rpt::cli::RegisterEvalCommand(app);
