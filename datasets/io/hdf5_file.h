@@ -292,8 +292,8 @@ class Hdf5Reader {
   }
 
   // Before reading `count` elements of `file_element_bytes` each into a buffer of
-  // `memory_element_bytes` each: contiguous data must lie inside the file, and the buffer is
-  // taken from the budget.
+  // `memory_element_bytes` each: contiguous data must match its shape and lie inside the file
+  // (not checked when `file_element_bytes` is 0), and the buffer is taken from the budget.
   void PrepareRead(hid_t dataset, const std::string& name, hsize_t count, size_t file_element_bytes,
                    size_t memory_element_bytes) const {
     hsize_t file_bytes = 0, memory_bytes = 0;
@@ -305,13 +305,20 @@ class Hdf5Reader {
     if (!create.valid()) Fail(name, "cannot read the storage layout (damaged?)");
     if (H5Pget_layout(create.get()) == H5D_CONTIGUOUS) {
       const haddr_t offset = H5Dget_offset(dataset);
-      if (offset != HADDR_UNDEF) {
+      if (offset != HADDR_UNDEF && file_element_bytes > 0) {
         // HDF5 trusts the layout's size when it copies the data: a size that disagrees with the
         // shape makes it read past its own buffers.
         const hsize_t stored = H5Dget_storage_size(dataset);
         if (stored != file_bytes) {
           Fail(name, "stores " + std::to_string(stored) + " bytes, its shape and type need " + std::to_string(file_bytes) +
                          " (damaged?)");
+        }
+        // HDF5 sizes its read buffer by the end of allocation the superblock declares: it must
+        // cover the data too, as must the file on disk.
+        haddr_t eoa = 0;
+        if (H5Fget_eoa(file_.get(), &eoa) < 0 || offset > eoa || file_bytes > eoa - offset) {
+          Fail(name, "data of " + std::to_string(file_bytes) + " bytes at byte " + std::to_string(offset) +
+                         " lies beyond the end of the file's address space (damaged?)");
         }
         if (offset > file_bytes_ || file_bytes > file_bytes_ - offset) {
           Fail(name, "data of " + std::to_string(file_bytes) + " bytes at byte " + std::to_string(offset) +
@@ -362,7 +369,7 @@ class Hdf5Reader {
     const htri_t variable = H5Tis_variable_str(file_type.get());
     if (variable < 0) Fail(name, "unreadable string type (damaged?)");
     if (variable > 0) {
-      PrepareRead(dataset.get(), name, count, sizeof(char*), sizeof(char*));
+      PrepareRead(dataset.get(), name, count, 0, sizeof(char*));  // 0: heap references, their size is HDF5's
       Hdf5Id memory_type(H5Tcopy(H5T_C_S1), H5Tclose);
       H5Tset_size(memory_type.get(), H5T_VARIABLE);
       H5Tset_cset(memory_type.get(), H5Tget_cset(file_type.get()));
