@@ -15,6 +15,7 @@
 #include "cli/run_info.h"
 #include "cli/run_sequence.h"
 #include "datasets/io/json_output.h"
+#include "cli/thread_count.h"
 
 namespace rpt::cli {
 namespace {
@@ -93,7 +94,7 @@ void RegisterEvalCommand(CLI::App& app) {
   AddInputOptions(command, &args->input);
   AddConfigOptions(command, &args->config);
   command->add_option("--out", args->out, "output folder (default out/eval-<dataset>)");
-  command->add_option("--threads", args->threads, "sequences evaluated in parallel (default: all cores)");
+  AddThreadsOption(command, &args->threads, "sequences evaluated");
   command->add_flag("--json", args->json, "print the summary as one JSON object");
   command->add_flag("--quiet", args->quiet, "no progress, no step table");
   command->callback([args] { RunEval(*args); });

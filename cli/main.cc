@@ -4,6 +4,7 @@
 // 1 internal error, 128 + signal number when interrupted (130 for Ctrl-C; cli/interrupt.h).
 #include <CLI/CLI.hpp>
 #include <cerrno>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -16,6 +17,7 @@
 #include "cli/interrupt.h"
 #include "cli/run_info.h"
 #include "core/errors.h"
+#include "datasets/io/inflate_budget.h"
 #include "git_revision.h"
 
 namespace {
@@ -68,6 +70,13 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("rpt ") + RPT_VERSION + " (git " + RPT_GIT_REVISION + ")",
                        "print the version and git revision, then exit");
+  // Global options, accepted before or after the subcommand (fallthrough).
+  app.fallthrough();
+  app.add_option_function<std::uint64_t>(
+         "--max-inflate-mb", [](std::uint64_t megabytes) { rpt::io::SetInflateLimitMb(megabytes); },
+         "limit on the data decompressed from one input file (MAT, NPZ, compressed HDF5), in MiB "
+         "(default: 64 x the file size, at least 64, at most 4096)")
+      ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 24));
   rpt::cli::SetCommandLine(rpt::cli::CommandLine(argc, argv));
   rpt::cli::RegisterDemoCommand(app);
   rpt::cli::RegisterEvalCommand(app);

@@ -13,6 +13,7 @@
 #endif
 
 #include "cli/progress.h"
+#include "cli/thread_count.h"
 #include "core/errors.h"
 #include "core/pipeline/room_check.h"
 #include "core/pipeline/triangulator.h"
@@ -45,7 +46,11 @@ TriangulatedSequence Triangulate(const SequenceHeader& header, long num_frames,
   }
   while (const SequenceFrame* frame = next_frame()) {
     Poses3D& prediction = out.predictions.emplace_back();
-    triangulator.Process(frame->views.empty() ? no_views : frame->views, frame->timestamp_s, &prediction, &stats);
+    try {
+      triangulator.Process(frame->views.empty() ? no_views : frame->views, frame->timestamp_s, &prediction, &stats);
+    } catch (const InputError& e) {  // e.g. more persons in a view than triangulate.max_persons_per_view
+      throw InputError(header.name + ": frame '" + frame->id + "': " + e.what());
+    }
     out.timing.Add(stats);
     out.counts.Add(stats);
     timestamps_s.push_back(frame->timestamp_s);
@@ -81,8 +86,8 @@ int ForEachSequence(int count, int threads, Progress* progress, const std::funct
   std::mutex error_mutex;
   int used = 1;
 #ifdef _OPENMP
-  const int team = threads > 0 ? threads : omp_get_max_threads();
-  used = std::min(team, std::max(count, 1));
+  const int team = ClampThreads(threads, count);  // at most the cores and the work
+  used = team;
 #pragma omp parallel for schedule(dynamic) num_threads(team)
 #endif
   for (int i = 0; i < count; ++i) {

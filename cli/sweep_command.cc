@@ -26,6 +26,7 @@
 #include "cli/run_info.h"
 #include "cli/run_sequence.h"
 #include "cli/sweep_html.h"
+#include "cli/thread_count.h"
 #include "core/errors.h"
 #include "core/text.h"
 #include "datasets/dataset_request.h"
@@ -189,7 +190,7 @@ void RunSweep(const SweepArgs& args) {
   progress.emplace("sweep", static_cast<long>(mine.size()));
   const int count = static_cast<int>(mine.size());
 #ifdef _OPENMP
-  const int threads = args.threads > 0 ? args.threads : omp_get_max_threads();
+  const int threads = ClampThreads(args.threads, count);
 #pragma omp parallel for schedule(dynamic) num_threads(threads)
 #else
   const int threads = 1;
@@ -308,7 +309,7 @@ void RegisterSweepCommand(CLI::App& app) {
   command->add_option("--list", args->list, "JSON list of {\"name\", \"set\": {key: value}} (e.g. results/ablations.json)");
   command->add_option("--shard", args->shard, "k/N: run configurations k, k+N, ... (1-based)")->capture_default_str();
   command->add_option("--out", args->out, "output folder")->capture_default_str();
-  command->add_option("--threads", args->threads, "configurations in parallel (default: all cores)");
+  AddThreadsOption(command, &args->threads, "configurations");
   command->callback([args] { RunSweep(*args); });
 }
 

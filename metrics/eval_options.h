@@ -135,9 +135,9 @@ void VisitFields(Visitor& v, Self& o) {
     OptionSpec{.help = "joints evaluated and used for matching, each in GT and predictions once (empty = the "
                        "paper's 13)"});
   v("min_gt_score", o.min_gt_score,
-    OptionSpec{.help = "GT joints with a lower or equal score are invalid", .min = 0});
+    OptionSpec{.help = "GT joints with a lower or equal score are invalid", .min = 0, .max = 1});
   v("min_pred_score", o.min_pred_score,
-    OptionSpec{.help = "predicted joints with a lower or equal score are missing", .min = 0});
+    OptionSpec{.help = "predicted joints with a lower or equal score are missing", .min = 0, .max = 1});
   v("matching", o.matching,
     OptionSpec{.help = "score-ranked greedy over the dataset (VoxelPose) or per-frame Hungarian"});
   v("match_threshold_mm", o.match_threshold_mm,
@@ -157,7 +157,7 @@ void VisitFields(Visitor& v, Self& o) {
   v("legacy_pcp_skip_empty_frames", o.legacy_pcp_skip_empty_frames,
     OptionSpec{.help = "legacy PCP: skip frames without predictions (Faster-VoxelPose, optimistic)"});
   v("legacy_pcp_actors", o.legacy_pcp_actors,
-    OptionSpec{.help = "legacy PCP: the average is over actor ids 0..n-1", .min = 1});
+    OptionSpec{.help = "legacy PCP: the average is over actor ids 0..n-1", .min = 1, .max = 10000});
   v("legacy_pcp_alpha", o.legacy_pcp_alpha,
     OptionSpec{.help = "legacy PCP: part correct iff mean endpoint error <= alpha x GT part length", .min = 0,
                .min_exclusive = true});

@@ -78,6 +78,13 @@ void Triangulator::Process(std::span<const Poses2D> views, double timestamp_s, P
       throw InputError("view " + std::to_string(v) + " has poses with " + std::to_string(views[v].num_joints) +
                        " joints, expected " + std::to_string(num_inputs));
     }
+    // Association cost grows with the square of the persons per view: refuse before any work.
+    if (views[v].num_persons() > opt.triangulate.max_persons_per_view) {
+      throw InputError("view " + std::to_string(v) + " (camera '" + m.cameras[v].name + "') has " +
+                       std::to_string(views[v].num_persons()) + " 2D poses, above triangulate.max_persons_per_view (" +
+                       std::to_string(opt.triangulate.max_persons_per_view) +
+                       "); raise it with --set triangulate.max_persons_per_view=N if this is a real scene");
+    }
   }
   stats->Reset();
   StepTimer timer(stats);

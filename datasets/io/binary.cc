@@ -38,12 +38,9 @@ std::string HexByte(std::uint8_t value) {
   return buffer;
 }
 
-std::vector<std::uint8_t> InflateUpTo(Bytes input, bool raw_deflate, std::size_t limit,
+std::vector<std::uint8_t> InflateUpTo(Bytes input, bool raw_deflate, std::size_t limit, InflateBudget* budget,
                                       const std::string& what) {
-  if (limit > kMaxInflatedBytes) {
-    throw InputError(what + ": declared uncompressed size " + std::to_string(limit) +
-                     " bytes exceeds the reader's limit of " + std::to_string(kMaxInflatedBytes));
-  }
+  budget->Reserve(limit, what);
   z_stream stream{};
   const int init = raw_deflate ? inflateInit2(&stream, -MAX_WBITS) : inflateInit(&stream);
   if (init != Z_OK) throw InputError(what + ": zlib initialisation failed");
@@ -88,6 +85,7 @@ std::vector<std::uint8_t> InflateUpTo(Bytes input, bool raw_deflate, std::size_t
   }
   inflateEnd(&stream);
   (void)finished;
+  budget->Release(limit - produced);
   out.resize(produced);
   return out;
 }

@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include "datasets/io/inflate_budget.h"
+
 namespace rpt::io::detail {
 
 using Bytes = std::span<const std::uint8_t>;
@@ -49,15 +51,13 @@ inline bool CheckedAdd(std::size_t a, std::size_t b, std::size_t* out) {
 // "0x3f"
 std::string HexByte(std::uint8_t value);
 
-// Largest output any single inflate call may produce. Real inputs here (actorsGT.mat,
-// npz members) are far smaller; the cap keeps a decompression bomb from exhausting memory.
-inline constexpr std::size_t kMaxInflatedBytes = std::size_t{1} << 30;
-
 // Inflates `input` (zlib-wrapped when raw_deflate is false, bare deflate as in ZIP when
-// true) and returns at most `limit` bytes; it stops early at the end of the stream. The
-// output buffer grows with the data actually produced, never with a size claimed by the
-// file. Throws InputError("<what>: ...") on corrupt data or when limit > kMaxInflatedBytes.
-std::vector<std::uint8_t> InflateUpTo(Bytes input, bool raw_deflate, std::size_t limit,
+// true) and returns at most `limit` bytes; it stops early at the end of the stream. `limit` is
+// reserved from the file's `budget` before anything is inflated (what the stream did not fill
+// is given back). The output buffer grows with the data actually produced, never with a size
+// claimed by the file. Throws InputError("<what>: ...") on corrupt data or when the budget
+// cannot take `limit`.
+std::vector<std::uint8_t> InflateUpTo(Bytes input, bool raw_deflate, std::size_t limit, InflateBudget* budget,
                                       const std::string& what);
 
 }  // namespace rpt::io::detail

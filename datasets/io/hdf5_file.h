@@ -8,6 +8,7 @@
 
 #include <hdf5.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -17,6 +18,7 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "datasets/io/inflate_budget.h"
 
 namespace rpt::io {
 
@@ -177,17 +179,37 @@ class Hdf5Writer {
 };
 
 // Reads an HDF5 file; every error is an InputError "<file>: <object path>: <problem>".
+//
+// A damaged file must not crash the reader or make it allocate for sizes it does not hold, so
+// before any read it checks what HDF5 reports about the object against what the buffer will be:
+// numbers must have a standard IEEE float or integer type, strings a sane width, attributes one
+// element and at most kMaxAttributes per object; the element count is computed with overflow
+// checks; uncompressed (contiguous) data must lie inside the file on disk; the in-memory size of
+// every dataset read is taken from the file's decompression budget (inflate_budget.h) before the
+// buffer is allocated, so a compressed or never-written dataset cannot expand without bound.
 class Hdf5Reader {
  public:
+  static constexpr int kMaxAttributes = 64;
+  static constexpr size_t kMaxStringWidth = size_t{1} << 16;
+
   explicit Hdf5Reader(const std::filesystem::path& path) : source_(path.string()) {
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) throw InputError(source_ + ": file not found");
     if (std::filesystem::is_directory(path, ec)) throw InputError(source_ + ": is a folder, expected an HDF5 file");
+    file_bytes_ = std::filesystem::file_size(path, ec);
+    if (ec) throw InputError(source_ + ": cannot determine the file size: " + ec.message());
+    budget_ = InflateBudget(source_, file_bytes_);
     const htri_t is_hdf5 = H5Fis_hdf5(path.c_str());
     if (is_hdf5 <= 0) {
       throw InputError(source_ + ": byte 0: not an HDF5 file (no HDF5 signature at offset 0, 512, 1024, ...)");
     }
-    file_ = Hdf5Id(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+    // Strong close degree: closing the file closes every object still open in it, so an error
+    // path cannot leave objects behind for the library's shutdown ("infinite loop closing library").
+    Hdf5Id access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+    if (!access.valid() || H5Pset_fclose_degree(access.get(), H5F_CLOSE_STRONG) < 0) {
+      throw InputError(source_ + ": cannot set up HDF5 file access");
+    }
+    file_ = Hdf5Id(H5Fopen(path.c_str(), H5F_ACC_RDONLY, access.get()), H5Fclose);
     if (!file_.valid()) throw InputError(source_ + ": cannot open the HDF5 file (damaged or truncated?)");
   }
 
@@ -207,23 +229,25 @@ class Hdf5Reader {
   Hdf5Id OpenGroup(const std::string& name, const std::string& what) const {
     if (!Exists(name)) Fail(name, "missing (" + what + ")");
     Hdf5Id group(H5Gopen2(file_.get(), name.c_str(), H5P_DEFAULT), H5Gclose);
-    if (!group.valid()) Fail(name, "not a group");
+    if (!group.valid()) Fail(name, "not a group (or damaged)");
     return group;
   }
 
   Hdf5Id OpenDataset(const std::string& name) const {
     if (!Exists(name)) Fail(name, "missing");
     Hdf5Id dataset(H5Dopen2(file_.get(), name.c_str(), H5P_DEFAULT), H5Dclose);
-    if (!dataset.valid()) Fail(name, "not a dataset");
+    if (!dataset.valid()) Fail(name, "not a dataset (or damaged)");
     return dataset;
   }
 
   std::vector<hsize_t> Dims(hid_t dataset, const std::string& name) const {
     Hdf5Id space(H5Dget_space(dataset), H5Sclose);
+    if (!space.valid()) Fail(name, "cannot read the shape (damaged?)");
+    if (H5Sget_simple_extent_type(space.get()) != H5S_SIMPLE) Fail(name, "not an array (scalar or empty dataspace)");
     const int rank = H5Sget_simple_extent_ndims(space.get());
-    if (rank < 0) Fail(name, "cannot read the shape");
+    if (rank < 0 || rank > H5S_MAX_RANK) Fail(name, "cannot read the shape (damaged?)");
     std::vector<hsize_t> dims(static_cast<size_t>(rank));
-    if (rank > 0) H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr);
+    if (rank > 0 && H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr) < 0) Fail(name, "cannot read the shape");
     return dims;
   }
 
@@ -241,19 +265,80 @@ class Hdf5Reader {
     return dims;
   }
 
+  // The number of elements of `dims`, refusing products that overflow.
+  hsize_t Count(const std::vector<hsize_t>& dims, const std::string& name) const {
+    hsize_t count = 1;
+    for (const hsize_t d : dims) {
+      if (__builtin_mul_overflow(count, d, &count)) Fail(name, "shape " + ShapeText(dims) + " is too large");
+    }
+    return count;
+  }
+
   H5T_class_t TypeClass(hid_t dataset) const {
     Hdf5Id type(H5Dget_type(dataset), H5Tclose);
-    return H5Tget_class(type.get());
+    return type.valid() ? H5Tget_class(type.get()) : H5T_NO_CLASS;
+  }
+
+  // True for the standard IEEE floats and two's-complement integers (either byte order): the only
+  // number types whose conversion HDF5 does not have to take on trust from the file.
+  static bool IsStandardNumber(hid_t type) {
+    for (const hid_t standard : {H5T_IEEE_F32LE, H5T_IEEE_F32BE, H5T_IEEE_F64LE, H5T_IEEE_F64BE, H5T_STD_I8LE,
+                                 H5T_STD_I8BE, H5T_STD_I16LE, H5T_STD_I16BE, H5T_STD_I32LE, H5T_STD_I32BE,
+                                 H5T_STD_I64LE, H5T_STD_I64BE, H5T_STD_U8LE, H5T_STD_U8BE, H5T_STD_U16LE,
+                                 H5T_STD_U16BE, H5T_STD_U32LE, H5T_STD_U32BE, H5T_STD_U64LE, H5T_STD_U64BE}) {
+      if (H5Tequal(type, standard) > 0) return true;
+    }
+    return false;
+  }
+
+  // Before reading `count` elements of `file_element_bytes` each into a buffer of
+  // `memory_element_bytes` each: contiguous data must match its shape and lie inside the file
+  // (not checked when `file_element_bytes` is 0), and the buffer is taken from the budget.
+  void PrepareRead(hid_t dataset, const std::string& name, hsize_t count, size_t file_element_bytes,
+                   size_t memory_element_bytes) const {
+    hsize_t file_bytes = 0, memory_bytes = 0;
+    if (__builtin_mul_overflow(count, file_element_bytes, &file_bytes) ||
+        __builtin_mul_overflow(count, memory_element_bytes, &memory_bytes)) {
+      Fail(name, std::to_string(count) + " elements are too many");
+    }
+    Hdf5Id create(H5Dget_create_plist(dataset), H5Pclose);
+    if (!create.valid()) Fail(name, "cannot read the storage layout (damaged?)");
+    if (H5Pget_layout(create.get()) == H5D_CONTIGUOUS) {
+      const haddr_t offset = H5Dget_offset(dataset);
+      if (offset != HADDR_UNDEF && file_element_bytes > 0) {
+        // HDF5 trusts the layout's size when it copies the data: a size that disagrees with the
+        // shape makes it read past its own buffers.
+        const hsize_t stored = H5Dget_storage_size(dataset);
+        if (stored != file_bytes) {
+          Fail(name, "stores " + std::to_string(stored) + " bytes, its shape and type need " + std::to_string(file_bytes) +
+                         " (damaged?)");
+        }
+        // HDF5 sizes its read buffer by the end of allocation the superblock declares: it must
+        // cover the data too, as must the file on disk.
+        haddr_t eoa = 0;
+        if (H5Fget_eoa(file_.get(), &eoa) < 0 || offset > eoa || file_bytes > eoa - offset) {
+          Fail(name, "data of " + std::to_string(file_bytes) + " bytes at byte " + std::to_string(offset) +
+                         " lies beyond the end of the file's address space (damaged?)");
+        }
+        if (offset > file_bytes_ || file_bytes > file_bytes_ - offset) {
+          Fail(name, "data of " + std::to_string(file_bytes) + " bytes at byte " + std::to_string(offset) +
+                         " runs past the end of the file (" + std::to_string(file_bytes_) +
+                         " bytes; truncated or damaged?)");
+        }
+      }
+    }
+    budget_.Reserve(memory_bytes, source_ + ": " + name);
   }
 
   template <typename T>
   std::vector<T> Numbers(const std::string& name, hid_t memory_type, const std::vector<long long>& expected,
                          const std::string& meaning = "") const {
     Hdf5Id dataset = OpenDataset(name);
-    const H5T_class_t type_class = TypeClass(dataset.get());
-    if (type_class != H5T_FLOAT && type_class != H5T_INTEGER) Fail(name, "expected numbers");
+    Hdf5Id file_type(H5Dget_type(dataset.get()), H5Tclose);
+    if (!file_type.valid() || !IsStandardNumber(file_type.get())) Fail(name, "expected numbers (IEEE float or integer)");
     const std::vector<hsize_t> dims = CheckShape(dataset.get(), name, expected, meaning);
-    const hsize_t count = std::accumulate(dims.begin(), dims.end(), hsize_t{1}, std::multiplies<>());
+    const hsize_t count = Count(dims, name);
+    PrepareRead(dataset.get(), name, count, H5Tget_size(file_type.get()), sizeof(T));
     std::vector<T> values(count);
     if (count > 0 && H5Dread(dataset.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0) {
       Fail(name, "read failed (damaged file?)");
@@ -275,68 +360,113 @@ class Hdf5Reader {
 
   std::vector<std::string> Strings(const std::string& name, long long expected_count = -1) const {
     Hdf5Id dataset = OpenDataset(name);
-    if (TypeClass(dataset.get()) != H5T_STRING) Fail(name, "expected strings");
+    Hdf5Id file_type(H5Dget_type(dataset.get()), H5Tclose);
+    if (!file_type.valid() || H5Tget_class(file_type.get()) != H5T_STRING) Fail(name, "expected strings");
     const std::vector<hsize_t> dims = CheckShape(dataset.get(), name, {expected_count}, "");
     const size_t count = dims[0];
-    std::vector<std::string> out(count);
+    std::vector<std::string> out;
     if (count == 0) return out;
-    Hdf5Id file_type(H5Dget_type(dataset.get()), H5Tclose);
-    if (H5Tis_variable_str(file_type.get()) > 0) {
+    const htri_t variable = H5Tis_variable_str(file_type.get());
+    if (variable < 0) Fail(name, "unreadable string type (damaged?)");
+    if (variable > 0) {
+      PrepareRead(dataset.get(), name, count, 0, sizeof(char*));  // 0: heap references, their size is HDF5's
       Hdf5Id memory_type(H5Tcopy(H5T_C_S1), H5Tclose);
       H5Tset_size(memory_type.get(), H5T_VARIABLE);
       H5Tset_cset(memory_type.get(), H5Tget_cset(file_type.get()));
-      std::vector<char*> pointers(count, nullptr);
-      if (H5Dread(dataset.get(), memory_type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, pointers.data()) < 0) {
-        Fail(name, "read failed");
-      }
-      for (size_t i = 0; i < count; ++i) out[i] = pointers[i] ? pointers[i] : "";
       Hdf5Id space(H5Dget_space(dataset.get()), H5Sclose);
+      std::vector<char*> pointers(count, nullptr);
+      const herr_t read = H5Dread(dataset.get(), memory_type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, pointers.data());
+      // Reclaim whatever was read, also when the read failed half-way.
+      out.resize(count);
+      size_t text_bytes = 0;
+      for (size_t i = 0; i < count; ++i) {
+        if (pointers[i]) {
+          out[i] = std::string(pointers[i], strnlen(pointers[i], kMaxStringWidth));
+          text_bytes += out[i].size();
+        }
+      }
       H5Dvlen_reclaim(memory_type.get(), space.get(), H5P_DEFAULT, pointers.data());
+      if (read < 0) Fail(name, "read failed (damaged file?)");
+      budget_.Reserve(text_bytes, source_ + ": " + name);
       return out;
     }
     const size_t width = H5Tget_size(file_type.get());
-    if (width == 0) Fail(name, "bad string size");
+    if (width == 0 || width > kMaxStringWidth) Fail(name, "string width " + std::to_string(width) + " is out of range");
+    PrepareRead(dataset.get(), name, count, width, width);
     Hdf5Id memory_type(H5Tcopy(file_type.get()), H5Tclose);
+    if (!memory_type.valid()) Fail(name, "unreadable string type (damaged?)");
+    const H5T_str_t pad = H5Tget_strpad(file_type.get());
     std::vector<char> buffer(count * width);
     if (H5Dread(dataset.get(), memory_type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, buffer.data()) < 0) Fail(name, "read failed");
+    out.resize(count);
     for (size_t i = 0; i < count; ++i) {
       const char* begin = buffer.data() + i * width;
       out[i].assign(begin, strnlen(begin, width));
       // Space-padded strings (Fortran / MATLAB style).
-      if (H5Tget_strpad(file_type.get()) == H5T_STR_SPACEPAD) out[i].erase(out[i].find_last_not_of(' ') + 1);
+      if (pad == H5T_STR_SPACEPAD) out[i].erase(out[i].find_last_not_of(' ') + 1);
     }
     return out;
   }
 
-  // An attribute as text (string attribute) or number (numeric attribute, formatted).
-  bool HasAttribute(hid_t object, const std::string& name) const { return H5Aexists(object, name.c_str()) > 0; }
+  // Whether `object` has an attribute `name`. The attributes are listed (at most kMaxAttributes)
+  // rather than looked up, and a damaged attribute list is an error naming `place`.
+  bool HasAttribute(hid_t object, const std::string& place, const std::string& name) const {
+    struct Listing {
+      std::vector<std::string> names;
+    } listing;
+    const auto collect = [](hid_t, const char* attribute, const H5A_info_t*, void* data) -> herr_t {
+      auto* l = static_cast<Listing*>(data);
+      l->names.emplace_back(attribute ? attribute : "");
+      return l->names.size() > static_cast<size_t>(kMaxAttributes) ? 1 : 0;
+    };
+    hsize_t index = 0;
+    if (H5Aiterate2(object, H5_INDEX_NAME, H5_ITER_NATIVE, &index, collect, &listing) < 0) {
+      Fail(place, "cannot list the attributes (damaged?)");
+    }
+    if (listing.names.size() > static_cast<size_t>(kMaxAttributes)) {
+      Fail(place, "more than " + std::to_string(kMaxAttributes) + " attributes (damaged or not an rpt cache?)");
+    }
+    return std::find(listing.names.begin(), listing.names.end(), name) != listing.names.end();
+  }
+
+  // Opens attribute `name` of `object` and checks it holds one element.
+  Hdf5Id OpenAttribute(hid_t object, const std::string& place, const std::string& name) const {
+    if (!HasAttribute(object, place, name)) Fail(place, "attribute '" + name + "' missing");
+    Hdf5Id attribute(H5Aopen(object, name.c_str(), H5P_DEFAULT), H5Aclose);
+    if (!attribute.valid()) Fail(place, "cannot open attribute '" + name + "' (damaged?)");
+    Hdf5Id space(H5Aget_space(attribute.get()), H5Sclose);
+    const hssize_t points = space.valid() ? H5Sget_simple_extent_npoints(space.get()) : -1;
+    if (points != 1) Fail(place, "attribute '" + name + "' must hold one value, it holds " + std::to_string(points));
+    return attribute;
+  }
 
   std::string StringAttribute(hid_t object, const std::string& place, const std::string& name) const {
-    if (!HasAttribute(object, name)) Fail(place, "attribute '" + name + "' missing");
-    Hdf5Id attribute(H5Aopen(object, name.c_str(), H5P_DEFAULT), H5Aclose);
+    Hdf5Id attribute = OpenAttribute(object, place, name);
     Hdf5Id type(H5Aget_type(attribute.get()), H5Tclose);
-    if (H5Tget_class(type.get()) != H5T_STRING) Fail(place, "attribute '" + name + "' is not a string");
-    if (H5Tis_variable_str(type.get()) > 0) {
+    if (!type.valid() || H5Tget_class(type.get()) != H5T_STRING) Fail(place, "attribute '" + name + "' is not a string");
+    const htri_t variable = H5Tis_variable_str(type.get());
+    if (variable < 0) Fail(place, "attribute '" + name + "': unreadable string type (damaged?)");
+    if (variable > 0) {
       Hdf5Id memory_type(H5Tcopy(H5T_C_S1), H5Tclose);
       H5Tset_size(memory_type.get(), H5T_VARIABLE);
       char* text = nullptr;
-      if (H5Aread(attribute.get(), memory_type.get(), &text) < 0) Fail(place, "cannot read attribute '" + name + "'");
-      std::string out = text ? text : "";
+      const herr_t read = H5Aread(attribute.get(), memory_type.get(), &text);
+      std::string out = text ? std::string(text, strnlen(text, kMaxStringWidth)) : "";
       H5free_memory(text);
+      if (read < 0) Fail(place, "cannot read attribute '" + name + "'");
       return out;
     }
     const size_t width = H5Tget_size(type.get());
+    if (width == 0 || width > kMaxStringWidth) Fail(place, "attribute '" + name + "' has string width " + std::to_string(width));
     std::vector<char> buffer(width + 1, '\0');
     if (H5Aread(attribute.get(), type.get(), buffer.data()) < 0) Fail(place, "cannot read attribute '" + name + "'");
     return std::string(buffer.data(), strnlen(buffer.data(), width));
   }
 
   double NumberAttribute(hid_t object, const std::string& place, const std::string& name) const {
-    if (!HasAttribute(object, name)) Fail(place, "attribute '" + name + "' missing");
-    Hdf5Id attribute(H5Aopen(object, name.c_str(), H5P_DEFAULT), H5Aclose);
+    Hdf5Id attribute = OpenAttribute(object, place, name);
     Hdf5Id type(H5Aget_type(attribute.get()), H5Tclose);
-    const H5T_class_t type_class = H5Tget_class(type.get());
-    if (type_class != H5T_INTEGER && type_class != H5T_FLOAT) Fail(place, "attribute '" + name + "' is not a number");
+    if (!type.valid() || !IsStandardNumber(type.get())) Fail(place, "attribute '" + name + "' is not a number");
     double value = 0;
     if (H5Aread(attribute.get(), H5T_NATIVE_DOUBLE, &value) < 0) Fail(place, "cannot read attribute '" + name + "'");
     return value;
@@ -347,6 +477,8 @@ class Hdf5Reader {
 
  private:
   std::string source_;
+  std::uintmax_t file_bytes_ = 0;
+  mutable InflateBudget budget_{std::string(), 0};
   Hdf5Id file_;
 };
 

@@ -476,6 +476,7 @@ MatFile ParseMat(std::span<const std::uint8_t> bytes, const std::string& source)
   file.header_text.assign(reinterpret_cast<const char*>(h), text_end);
 
   MatParser parser(source);
+  InflateBudget budget(source, bytes.size());
   const Buffer whole{bytes, source, 0, false};
   std::size_t pos = 128;
   while (pos < bytes.size()) {
@@ -494,12 +495,12 @@ MatFile ParseMat(std::span<const std::uint8_t> bytes, const std::string& source)
     } else if (type == miCOMPRESSED) {
       const std::string what = source + ": compressed variable at byte " + std::to_string(pos);
       // First the inner tag, to learn the size; then exactly that much.
-      const auto head = detail::InflateUpTo(data, false, 8, what);
+      const auto head = detail::InflateUpTo(data, false, 8, &budget, what);
       if (head.size() < 8) throw InputError(what + ": inflated data too short");
       const std::uint32_t inner_type = LoadU32(head.data());
       const std::size_t inner_size = LoadU32(head.data() + 4);
       if (inner_type == miMATRIX) {
-        const auto body = detail::InflateUpTo(data, false, 8 + inner_size, what);
+        const auto body = detail::InflateUpTo(data, false, 8 + inner_size, &budget, what);
         if (body.size() < 8 + inner_size) {
           throw InputError(what + ": inflated to " + std::to_string(body.size()) + " bytes, its element needs " + std::to_string(8 + inner_size));
         }

@@ -3,6 +3,7 @@
 
 #include <zlib.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cstring>
 #include <unordered_set>
@@ -394,6 +395,10 @@ std::vector<ZipEntry> ListZip(Bytes z, const std::string& source) {
     if (data_offset > z.size() || csize > z.size() - data_offset) {
       throw InputError(member + ": data at byte " + std::to_string(data_offset) + " runs past the end of the file (truncated?)");
     }
+    // Deflate cannot expand more than ~1032:1; a larger claim is corrupt or hostile.
+    if (method == 8 && usize / 1032 > csize + 1) {
+      throw InputError(member + ": implausible uncompressed size " + std::to_string(usize));
+    }
     entry.method = method;
     entry.crc = crc;
     entry.compressed_size = csize;
@@ -404,7 +409,8 @@ std::vector<ZipEntry> ListZip(Bytes z, const std::string& source) {
   return out;
 }
 
-std::vector<std::uint8_t> ExtractZip(Bytes z, const ZipEntry& entry, const std::string& source) {
+std::vector<std::uint8_t> ExtractZip(Bytes z, const ZipEntry& entry, const std::string& source,
+                                     InflateBudget* budget) {
   const std::string member = source + ": member '" + entry.name + "'";
   const Bytes raw = z.subspan(entry.data_offset, entry.compressed_size);
   std::vector<std::uint8_t> out;
@@ -412,11 +418,7 @@ std::vector<std::uint8_t> ExtractZip(Bytes z, const ZipEntry& entry, const std::
     if (entry.compressed_size != entry.uncompressed_size) throw InputError(member + ": stored member with differing sizes");
     out.assign(raw.begin(), raw.end());
   } else {
-    // Deflate cannot expand more than ~1032:1; a larger claim is corrupt or hostile.
-    if (entry.uncompressed_size / 1032 > entry.compressed_size + 1) {
-      throw InputError(member + ": implausible uncompressed size " + std::to_string(entry.uncompressed_size));
-    }
-    out = detail::InflateUpTo(raw, true, entry.uncompressed_size, member);
+    out = detail::InflateUpTo(raw, true, entry.uncompressed_size, budget, member);
     if (out.size() != entry.uncompressed_size) {
       throw InputError(member + ": inflated to " + std::to_string(out.size()) + " bytes, the directory says " +
                        std::to_string(entry.uncompressed_size));
@@ -447,11 +449,32 @@ PyView ReadNpy(const std::filesystem::path& path) {
   return ParseNpyImpl(bytes, detail::SourceName(path));
 }
 
-std::map<std::string, PyView> ParseNpz(std::span<const std::uint8_t> bytes, const std::string& source) {
+std::map<std::string, PyView> ParseNpz(std::span<const std::uint8_t> bytes, const std::string& source,
+                                       const std::vector<std::string>& required) {
+  const std::vector<ZipEntry> entries = ListZip(bytes, source);
+  // Everything the directory promises is known before a byte is inflated: a missing member or
+  // a total beyond the budget fails here, not after gigabytes of other members.
+  for (const std::string& name : required) {
+    const bool present = std::any_of(entries.begin(), entries.end(), [&](const ZipEntry& e) {
+      return e.name == name + ".npy" || e.name == name;
+    });
+    if (!present) {
+      std::string names;
+      for (const ZipEntry& e : entries) names += (names.empty() ? "" : ", ") + e.name;
+      throw InputError(source + ": no member '" + name + ".npy' (members: " + (names.empty() ? "none" : names) + ")");
+    }
+  }
+  InflateBudget budget(source, bytes.size());
+  std::uint64_t declared = 0;
+  for (const ZipEntry& entry : entries) {
+    if (entry.method != 0) declared += entry.uncompressed_size;
+  }
+  budget.Reserve(declared, source + ": deflated members");
+  budget.Release(declared);
   std::map<std::string, PyView> out;
-  for (const ZipEntry& entry : ListZip(bytes, source)) {
+  for (const ZipEntry& entry : entries) {
     if (!entry.name.empty() && entry.name.back() == '/') continue;  // directory
-    auto data = ExtractZip(bytes, entry, source);
+    auto data = ExtractZip(bytes, entry, source, &budget);
     const std::string member_source = source + "[" + entry.name + "]";
     constexpr std::string_view kSuffix = ".npy";
     if (entry.name.size() > kSuffix.size() && entry.name.compare(entry.name.size() - kSuffix.size(), kSuffix.size(), kSuffix) == 0) {
@@ -463,9 +486,9 @@ std::map<std::string, PyView> ParseNpz(std::span<const std::uint8_t> bytes, cons
   return out;
 }
 
-std::map<std::string, PyView> ReadNpz(const std::filesystem::path& path) {
+std::map<std::string, PyView> ReadNpz(const std::filesystem::path& path, const std::vector<std::string>& required) {
   const auto bytes = detail::ReadFileBytes(path);
-  return ParseNpz(bytes, detail::SourceName(path));
+  return ParseNpz(bytes, detail::SourceName(path), required);
 }
 
 }  // namespace rpt::io

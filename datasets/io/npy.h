@@ -19,6 +19,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "datasets/io/py_value.h"
 
@@ -29,9 +30,12 @@ PyView ParseNpy(std::span<const std::uint8_t> bytes, const std::string& source);
 PyView ReadNpy(const std::filesystem::path& path);
 
 // Member name (".npy" suffix removed, as numpy's NpzFile does) -> value. Members that are
-// not .npy files are returned as bytes under their full name.
-std::map<std::string, PyView> ParseNpz(std::span<const std::uint8_t> bytes, const std::string& source);
-std::map<std::string, PyView> ReadNpz(const std::filesystem::path& path);
+// not .npy files are returned as bytes under their full name. Before anything is inflated, the
+// `required` members (names without ".npy") must be in the archive and the sizes the directory
+// declares must fit the file's decompression budget (inflate_budget.h); else InputError.
+std::map<std::string, PyView> ParseNpz(std::span<const std::uint8_t> bytes, const std::string& source,
+                                       const std::vector<std::string>& required = {});
+std::map<std::string, PyView> ReadNpz(const std::filesystem::path& path, const std::vector<std::string>& required = {});
 
 // The pieces, exposed for readers and tests.
 // Parses a Python literal (dict, list, tuple, str, int, float, True/False/None) such as an

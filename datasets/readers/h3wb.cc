@@ -153,7 +153,7 @@ std::string SubjectList(const io::PyView& dict) {
 
 std::vector<Clip> ReadNpzClips(const Options& options, bool want_2d) {
   const std::string source = PathName(options.file);
-  const auto members = io::ReadNpz(options.file);
+  const auto members = io::ReadNpz(options.file, {"train_data", "metadata"});
   auto member = [&](const std::string& name) -> io::PyView {
     const auto it = members.find(name);
     if (it == members.end()) throw InputError(source + ": no member '" + name + ".npy' (expected the H3WB npz format)");

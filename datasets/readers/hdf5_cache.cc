@@ -31,7 +31,7 @@ using io::Hdf5Writer;
 using io::ShapeText;
 
 void CheckFormat(const io::Hdf5Reader& reader, hid_t group, const std::string& place, const std::string& format) {
-  const std::string found = reader.HasAttribute(group, "format") ? reader.StringAttribute(group, place, "format") : "";
+  const std::string found = reader.HasAttribute(group, place, "format") ? reader.StringAttribute(group, place, "format") : "";
   if (found != format) {
     reader.Fail(place, "attribute format is '" + found + "', expected '" + format + "' (not written by rpt?)");
   }
@@ -212,9 +212,13 @@ Detections ReadDetectionsHdf5(const std::filesystem::path& path) {
   }
 
   Hdf5Id type(H5Dget_type(keypoints.get()), H5Tclose);
-  if (H5Tget_class(type.get()) != H5T_FLOAT) reader.Fail(keypoints_name, "expected floating-point values");
-  const size_t count = dims[0] * dims[1] * dims[2];
-  if (H5Tget_size(type.get()) <= 4) {
+  if (!type.valid() || H5Tget_class(type.get()) != H5T_FLOAT || !Hdf5Reader::IsStandardNumber(type.get())) {
+    reader.Fail(keypoints_name, "expected IEEE floating-point values");
+  }
+  const size_t count = reader.Count(dims, keypoints_name);
+  const bool single = H5Tget_size(type.get()) <= 4;
+  reader.PrepareRead(keypoints.get(), keypoints_name, count, H5Tget_size(type.get()), single ? sizeof(float) : sizeof(double));
+  if (single) {
     std::vector<float> values(count);
     if (count > 0 && H5Dread(keypoints.get(), H5T_NATIVE_FLOAT, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0) {
       reader.Fail(keypoints_name, "read failed (damaged file?)");

@@ -214,7 +214,7 @@ TEST(Config, ChecksNameSectionAndKeyWithRangesFromTheMetadata) {
   EXPECT_EQ(problem("score.scale_factor=0"), "score.scale_factor: 0 must be > 0");
   EXPECT_EQ(problem("prefilter.ambiguity_ratio=0.5"), "prefilter.ambiguity_ratio: 0.5 is outside [1, 1000]");
   EXPECT_EQ(problem("metrics.pcp_alpha=0"), "metrics.pcp_alpha: 0 must be > 0");
-  EXPECT_EQ(problem("metrics.legacy_pcp_actors=0"), "metrics.legacy_pcp_actors: 0 must be >= 1");
+  EXPECT_EQ(problem("metrics.legacy_pcp_actors=0"), "metrics.legacy_pcp_actors: 0 is outside [1, 10000]");
   EXPECT_EQ(problem("metrics.legacy_pcp_alpha=-1"), "metrics.legacy_pcp_alpha: -1 must be > 0");
   EXPECT_EQ(problem("metrics.evaluated_joints=nose,nose"), "metrics.evaluated_joints: lists 'nose' twice");
   // The checks between fields stay.
@@ -223,6 +223,15 @@ TEST(Config, ChecksNameSectionAndKeyWithRangesFromTheMetadata) {
   EXPECT_EQ(problem("bone_lengths.min_observations=60"),
             "bone_lengths.min_observations: 60 is above bone_lengths.window (50)");
   EXPECT_EQ(problem("merge.top_k=0"), "no error");
+  // Negative "keep all" values were accepted (issue 10): 0 is the one way to say "keep all".
+  EXPECT_EQ(problem("merge.top_k=-1"), "merge.top_k: -1 is outside [0, 1000000]");
+  EXPECT_EQ(problem("merge.max_distance_m=-0.5"), "merge.max_distance_m: -0.5 is outside [0, 1000000]");
+  EXPECT_EQ(problem("prefilter.max_pairs_per_person=-1"),
+            "prefilter.max_pairs_per_person: -1 is outside [0, 1000000000]");
+  EXPECT_EQ(problem("triangulate.max_persons_per_view=0"), "triangulate.max_persons_per_view: 0 is outside [1, 100000]");
+  EXPECT_EQ(problem("metrics.min_gt_score=2"), "metrics.min_gt_score: 2 is outside [0, 1]");
+  EXPECT_EQ(problem("metrics.legacy_pcp_actors=1000000000"),
+            "metrics.legacy_pcp_actors: 1000000000 is outside [1, 10000]");
   // Every option is described.
   for (const ConfigOptionInfo& option : ConfigOptions()) {
     EXPECT_FALSE(option.spec.help.empty()) << option.key;

@@ -4,10 +4,12 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
 
 #include "core/errors.h"
 #include "datasets/io/binary.h"
+#include "datasets/io/inflate_budget.h"
 #include "tests/datasets/io_test_util.h"
 #include "tests/error_message.h"
 #include "tests/test_data.h"
@@ -220,6 +222,33 @@ TEST(Mat, RefusedVariantsAndMissingFile) {
   const MatFile file = ParseMat(sparse, "sparse.mat");
   EXPECT_THAT(test::InputErrorOf([&] { file.Get("sp").Numeric(); }), HasSubstr("sparse.mat: sp: MAT class sparse (5) is not supported"));
   EXPECT_THAT(test::InputErrorOf([] { ReadMat("/nonexistent/Shelf/actorsGT.mat"); }), HasSubstr("/nonexistent/Shelf/actorsGT.mat: file not found"));
+}
+
+// A 4 MB MAT file with four compressed variables took 5.1 GB and 46 s, then exited 0 (issue 10):
+// each variable was under the per-call cap. Now all variables of a file share one budget (64 x
+// the file size, at least 64 MiB), checked before each variable is inflated.
+TEST(Mat, CompressedVariablesShareOneDecompressionBudget) {
+  const ByteVec zeros = m::Matrix(m::kDoubleClass, {3'000'000, 1}, "v", m::Doubles(std::vector<double>(3'000'000, 0.0)));
+  ByteVec bytes = m::Header();
+  std::vector<std::size_t> starts;
+  for (const char name : std::string("abcd")) {
+    ByteVec named = zeros;  // the 1-character name sits in the small element after flags and dims
+    const std::size_t at = std::search(named.begin(), named.end(), std::begin("v"), std::begin("v") + 1) - named.begin();
+    named[at] = static_cast<std::uint8_t>(name);
+    starts.push_back(bytes.size());
+    test::Append(bytes, m::Compressed(named));
+  }
+  ASSERT_LT(bytes.size(), 1'000'000u) << "a small file";
+  EXPECT_THAT(test::InputErrorOf([&] { ParseMat(bytes, "bomb.mat"); }),
+              HasSubstr("bomb.mat: compressed variable at byte " + std::to_string(starts[2]) +
+                        ": decompressing 22.9 MB would take the data decompressed from bomb.mat to 68.7 MB, above the "
+                        "limit of 64.0 MB (64 x the file size, at least 64 MB, at most 4096 MB; raise it with "
+                        "--max-inflate-mb N if the file is genuine)"));
+  SetInflateLimitMb(100);  // what `rpt --max-inflate-mb 100` does
+  const MatFile file = ParseMat(bytes, "bomb.mat");
+  SetInflateLimitMb(0);
+  EXPECT_EQ(file.variables.size(), 4u);
+  EXPECT_EQ(file.Get("d").NumElements(), 3'000'000u);
 }
 
 }  // namespace

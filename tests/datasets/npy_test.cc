@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "core/errors.h"
+#include "datasets/io/inflate_budget.h"
 #include "tests/datasets/io_test_util.h"
 #include "tests/error_message.h"
 
@@ -228,6 +229,28 @@ TEST(Npz, CorruptAndUnsupportedArchives) {
   EXPECT_THAT(test::InputErrorOf([&] { ParseNpz(bomb, "bomb.npz"); }), HasSubstr("implausible uncompressed size"));
   EXPECT_THAT(test::InputErrorOf([&] { ParseNpz(ByteVec{'P', 'K'}, "tiny.npz"); }), HasSubstr("tiny.npz: too short for a ZIP archive"));
   EXPECT_THAT(test::InputErrorOf([] { ReadNpz("/nonexistent/data.npz"); }), HasSubstr("/nonexistent/data.npz: file not found"));
+}
+
+// A 1 MB NPZ inflated to 2 GB before the "missing member" error (issue 10). Required members are
+// looked up in the directory first, and the sizes the directory declares must fit the file's
+// decompression budget before any member is inflated.
+TEST(Npz, RequiredMembersAndTheBudgetAreCheckedBeforeInflating) {
+  // A member whose deflate data is garbage: inflating it would fail with "corrupt compressed data".
+  ByteVec broken = test::ZipBytes({{"train_data.npy", ByteVec(4096, 7), true, false}});
+  broken[30 + 14 + 2] ^= 0xff;
+  EXPECT_THAT(test::InputErrorOf([&] { ParseNpz(broken, "h3wb.npz", {"train_data", "metadata"}); }),
+              HasSubstr("h3wb.npz: no member 'metadata.npy' (members: train_data.npy)"));
+  // Two members of 40 MB each (under the budget alone, 80 MB together) in a file of 80 kB.
+  const ByteVec zeros(40 << 20, 0);
+  const ByteVec two = test::ZipBytes({{"a.bin", zeros, true, false}, {"b.bin", zeros, true, false}});
+  ASSERT_LT(two.size(), 200'000u);
+  EXPECT_THAT(test::InputErrorOf([&] { ParseNpz(two, "two.npz"); }),
+              HasSubstr("two.npz: deflated members: decompressing 80.0 MB would take the data decompressed from "
+                        "two.npz to 80.0 MB, above the limit of 64.0 MB"));
+  SetInflateLimitMb(100);
+  const auto members = ParseNpz(two, "two.npz", {"a.bin", "b.bin"});
+  SetInflateLimitMb(0);
+  EXPECT_EQ(members.size(), 2u);
 }
 
 }  // namespace
