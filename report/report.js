@@ -73,6 +73,10 @@
     options: { plugins: { legend: { display: false } }, scales: { y: { beginAtZero: true, title: { display: true, text: 'mm' } } } },
   });
   const curve = data.recall_curve || { threshold_mm: [], recall: [] };
+  if (data.input_loaded && !curve.recall.length) {
+    el('plot-recall').closest('figure').querySelector('figcaption').textContent +=
+        ': not computed (the curve redoes the greedy matching; this run used metrics.matching = hungarian)';
+  }
   const recallPoints = curve.threshold_mm.map((t, i) => ({ x: t, y: curve.recall[i] }));
   // The paper's two recall points, for reference.
   const paperPoints = data.paper ? [{ x: 100, y: data.paper.recall100 }, { x: 500, y: data.paper.recall500 }] : [];
@@ -265,8 +269,17 @@
     const away = cameraMean.clone().sub(target);
     away.sub(up.clone().multiplyScalar(away.dot(up)));
     if (away.length() < 1e-3) away.set(1, 0, 0).sub(up.clone().multiplyScalar(up.x));
-    away.setLength(spread * 1.1);
-    camera3d.position.copy(target).add(away).add(up.clone().multiplyScalar(spread * 0.8));
+    // Close enough that the people fill the view; the cameras may lie outside it (zoom out to see them).
+    let peopleRadius = 1;
+    for (const sc of scenes) {
+      if (sc.sequence !== s) continue;
+      for (const person of sc.gt.concat(sc.predictions)) {
+        for (const p of person.joints) if (p) peopleRadius = Math.max(peopleRadius, new THREE.Vector3().fromArray(p).distanceTo(target));
+      }
+    }
+    const distance = Math.min(spread * 1.1, Math.max(3, peopleRadius * 2.2));
+    away.setLength(distance);
+    camera3d.position.copy(target).add(away).add(up.clone().multiplyScalar(distance * 0.7));
     controls.target.copy(target);
     controls.update();
     cameraSequence = s;
@@ -397,12 +410,15 @@
     el('frame-stats').textContent = 'The run\'s input could not be re-loaded, so the report has no frames (see the warnings above).';
   } else {
     initViewer();
-    showScene(0);
+    // ?scene=K opens the K-th frame that carries a scene (0-based) instead of the first.
+    const wanted = Number(new URLSearchParams(window.location.search).get('scene'));
+    showScene(Number.isInteger(wanted) && wanted >= 0 && wanted < scenes.length ? wanted : 0);
   }
-  // #only-<section>: that section alone (for screenshots of one part, docs/report.md).
-  const only = /^#only-([\w-]+)$/.exec(window.location.hash);
+  // #only-<section>[+<section>...]: those sections alone (for screenshots of one part, docs/report.md).
+  const only = /^#only-([\w+-]+)$/.exec(window.location.hash);
   if (only) {
-    document.querySelectorAll('main > section').forEach((section) => { section.hidden = section.id !== only[1]; });
+    const shown = only[1].split('+');
+    document.querySelectorAll('main > section').forEach((section) => { section.hidden = !shown.includes(section.id); });
     window.scrollTo(0, 0);
   }
   body.dataset.rptReady = '1';

@@ -54,9 +54,10 @@ inline std::string ChromiumCommand(const std::string& extra) {
          extra + " 2>/dev/null";
 }
 
-// The DOM of `page` after its scripts ran.
-inline std::string DumpDom(const std::filesystem::path& page) {
-  const std::string command = ChromiumCommand("--dump-dom file://" + std::filesystem::absolute(page).string());
+// The DOM of `page` after its scripts ran; `query` is appended to the URL ("?scene=3").
+inline std::string DumpDom(const std::filesystem::path& page, const std::string& query = "") {
+  const std::string command =
+      ChromiumCommand("--dump-dom 'file://" + std::filesystem::absolute(page).string() + query + "'");
   std::string dom;
   FILE* pipe = popen(command.c_str(), "r");
   if (pipe == nullptr) return dom;
@@ -77,14 +78,14 @@ inline std::string BodyAttribute(const std::string& dom, const std::string& name
   return "";
 }
 
-// A PNG of the page scrolled to `anchor` (an element id), width x height pixels.
-inline bool Screenshot(const std::filesystem::path& page, const std::string& anchor, const std::filesystem::path& png,
+// A PNG of the page at URL suffix `suffix` ("?scene=3#only-viewer"), width x height pixels.
+inline bool Screenshot(const std::filesystem::path& page, const std::string& suffix, const std::filesystem::path& png,
                        int width, int height) {
   std::filesystem::create_directories(png.parent_path());
   std::filesystem::remove(png);
   const std::string command = ChromiumCommand("--window-size=" + std::to_string(width) + "," + std::to_string(height) +
-                                              " --screenshot=" + png.string() + " file://" +
-                                              std::filesystem::absolute(page).string() + "#" + anchor);
+                                              " --screenshot=" + png.string() + " 'file://" +
+                                              std::filesystem::absolute(page).string() + suffix + "'");
   const int status = std::system((command + " >/dev/null").c_str());
   return status == 0 && std::filesystem::exists(png) && std::filesystem::file_size(png) > 1000;
 }
