@@ -20,5 +20,6 @@ void RegisterRenderCommand(CLI::App& app);
 void RegisterCheckCommand(CLI::App& app, int* exit_code);
 void RegisterSweepCommand(CLI::App& app);
 void RegisterMergeCommand(CLI::App& app);
+void RegisterReportCommand(CLI::App& app);
 
 }  // namespace rpt::cli

@@ -91,6 +91,7 @@ int main(int argc, char** argv) {
   rpt::cli::RegisterCheckCommand(app, &exit_code);
   rpt::cli::RegisterSweepCommand(app);
   rpt::cli::RegisterMergeCommand(app);
+  rpt::cli::RegisterReportCommand(app);
   if (!CheckSubcommand(app, argc, argv)) return 2;
   try {
     app.parse(argc, argv);

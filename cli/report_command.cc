@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: MIT
+// `rpt report RUN_DIR`: one self-contained report.html for an `rpt eval` output folder (docs/report.md).
+// Reads the recorded files, re-loads the run's input from the command line in run.json (for GT,
+// cameras and detections; without it the report keeps the recorded tables and says why), evaluates
+// the recorded predictions frame by frame with the run's config.json, and writes the page.
+#include <cstdio>
+#include <iostream>
+
+#include "cli/commands.h"
+#include "cli/config.h"
+#include "cli/report_data.h"
+#include "cli/report_html.h"
+#include "cli/report_run.h"
+#include "cli/run_sequence.h"
+#include "core/errors.h"
+#include "datasets/io/text_file.h"
+
+namespace rpt::cli {
+namespace {
+
+struct ReportArgs {
+  std::string run_dir;
+  std::string out;  // default RUN_DIR/report.html
+  ReportDataOptions data;
+};
+
+void RunReport(const ReportArgs& args) {
+  const RunFolder run = ReadRunFolder(args.run_dir);
+  Config config;
+  LoadConfigFile(run.dir / "config.json", &config);
+  std::string why_no_input;
+  const std::optional<std::vector<Sequence>> sequences = ReloadRecordedInput(run, &why_no_input);
+  metrics::EvalOptions eval_options = config.metrics;
+  if (sequences) eval_options = EvalOptionsFor(*sequences, config.metrics);
+  std::vector<std::string> warnings;
+  const nlohmann::ordered_json data = BuildReportData(run, sequences ? &*sequences : nullptr, why_no_input,
+                                                      eval_options, args.data, &warnings);
+  const std::filesystem::path out = args.out.empty() ? run.dir / "report.html" : std::filesystem::path(args.out);
+  const std::string page = ReportHtml(data);
+  io::WriteTextFile(out, page);
+  int scenes = data.contains("scenes") ? static_cast<int>(data["scenes"].size()) : 0;
+  std::printf("report in %s (%.1f MB, %d frame(s) with 3D scene and camera views)\n", out.c_str(),
+              page.size() / 1e6, scenes);
+  std::fflush(stdout);
+  for (const std::string& line : warnings) std::fprintf(stderr, "warning: %s\n", line.c_str());
+}
+
+}  // namespace
+
+void RegisterReportCommand(CLI::App& app) {
+  auto args = std::make_shared<ReportArgs>();
+  CLI::App* command = app.add_subcommand(
+      "report", "Write one self-contained report.html (plots, 3D viewer, camera overlays) for an `rpt eval` folder");
+  command->add_option("RUN_DIR", args->run_dir, "output folder of `rpt eval`")->required();
+  command->add_option("--out", args->out, "the page to write (default RUN_DIR/report.html)");
+  command->add_option("--max-frames", args->data.max_scene_frames,
+                      "frames that carry a 3D scene and camera views, evenly spaced over the run (bounds the size)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100000));
+  command->callback([args] { RunReport(*args); });
+}
+
+}  // namespace rpt::cli

@@ -1,0 +1,425 @@
+// rpt report: draws the page from the inline JSON block #rpt-data (written by cli/report_data.cc).
+// Plots with Chart.js, the 3D viewer with three.js (OrbitControls), the camera views on 2D canvases.
+// For tests (tests/report/), body carries data-rpt-ready, data-rpt-plots, data-rpt-skeletons,
+// data-rpt-gt-skeletons, data-rpt-nonblank-pixels and data-rpt-camera-views once the first frame is drawn.
+(function () {
+  'use strict';
+  const data = JSON.parse(document.getElementById('rpt-data').textContent);
+  const body = document.body;
+  const PALETTE = ['#e6194b', '#3cb44b', '#4363d8', '#f58231', '#911eb4', '#42d4f4', '#f032e6', '#bfef45',
+                   '#fabed4', '#469990', '#dcbeff', '#9a6324', '#fffac8', '#aaffc3', '#ffd8b1'];
+  const GT_COLOUR = '#b8c4cf', MISSED_COLOUR = '#ff2d2d', DETECTION_COLOUR = '#9aa3ad', CAMERA_COLOUR = '#7fa7d1';
+  const trackColour = (id) => (id >= 0 ? PALETTE[id % PALETTE.length] : '#f58231');
+  const fmt = (v, digits) => (v === null || v === undefined || Number.isNaN(v) ? '-' : Number(v).toFixed(digits));
+  const el = (id) => document.getElementById(id);
+
+  // ---- header, summary, warnings, run info ----
+  el('title').textContent = data.title;
+  const run = data.run || {};
+  el('subtitle').textContent = [run.date_utc, run.git_revision && 'revision ' + run.git_revision, run.command]
+      .filter(Boolean).join(' \u00b7 ');
+
+  const COLUMNS = [['pcp', 'PCP', '%', 1], ['pck100', 'PCK@100', '%', 1], ['pck500', 'PCK@500', '%', 1],
+                   ['mpjpe_mm', 'MPJPE', 'mm', 1], ['recall100', 'Recall@100', '%', 1],
+                   ['recall500', 'Recall@500', '%', 1], ['invalid', 'Invalid', '%', 1], ['f1', 'F1', '%', 1],
+                   ['fps', 'FPS', '1/s', 0], ['frames', 'Frames', '', 0]];
+  (function summary() {
+    const table = el('summary-table');
+    let html = '<thead><tr><th>run</th>' + COLUMNS.map((c) => `<th>${c[1]}${c[2] ? ' (' + c[2] + ')' : ''}</th>`).join('') + '</tr></thead><tbody>';
+    const row = (label, values, cls) => `<tr class="${cls}"><td>${label}</td>` +
+        COLUMNS.map((c) => `<td>${values[c[0]] === undefined ? '' : fmt(values[c[0]], c[3])}</td>`).join('') + '</tr>';
+    html += row('this run (rpt)', data.summary || {}, 'ours');
+    if (data.paper) html += row(data.paper.label, data.paper, 'paper');
+    table.innerHTML = html + '</tbody>';
+    el('summary-note').textContent = data.paper
+        ? 'Paper row: Bermuth et al., CVPR 2026 (their 2D network and protocol, FPS on their machine; results/paper.json).'
+        : 'The paper has no row for this dataset.';
+    const legacy = (data.summary || {}).legacy_pcp;
+    if (legacy !== undefined && legacy !== null) el('summary-note').textContent += ' Legacy PCP (actors 1-3): ' + fmt(legacy, 1) + ' %.';
+    const list = el('warnings');
+    const warnings = (data.warnings || []).concat((data.summary || {}).warnings || []);
+    for (const w of warnings) {
+      const li = document.createElement('li');
+      li.textContent = typeof w === 'string' ? w : JSON.stringify(w);
+      list.appendChild(li);
+    }
+  })();
+
+  (function runInfo() {
+    const rows = [['command', run.command], ['date (UTC)', run.date_utc], ['git revision', run.git_revision],
+                  ['machine', (run.cpu || '') + (run.hardware_threads ? ', ' + run.hardware_threads + ' hardware threads' : '')],
+                  ['threads', run.threads], ['build', (run.compiler || '') + ' ' + (run.build_type || '')],
+                  ['input corrections', (run.input_warnings || []).join('; ') || 'none'],
+                  ['frames with a 3D scene', data.scenes ? data.scenes.length + ' (at most ' + data.max_scene_frames + ', evenly spaced)' : 'none']];
+    el('run-table').innerHTML = rows.map((r) => `<tr><th>${r[0]}</th><td></td></tr>`).join('');
+    el('run-table').querySelectorAll('td').forEach((td, i) => { td.textContent = rows[i][1] === undefined ? '' : String(rows[i][1]); });
+    el('config').textContent = JSON.stringify(data.config, null, 2);
+  })();
+
+  // ---- plots ----
+  let plots = 0;
+  Chart.defaults.animation = false;
+  Chart.defaults.maintainAspectRatio = false;
+  Chart.defaults.font.size = 11;
+  function plot(id, config) {
+    new Chart(el(id), config);
+    plots += 1;
+  }
+  const joints = data.per_joint || [];
+  plot('plot-joints', {
+    type: 'bar',
+    data: { labels: joints.map((j) => j.joint),
+            datasets: [{ label: 'mean error (mm)', data: joints.map((j) => j.mean_error_mm), backgroundColor: '#4f86c6' }] },
+    options: { plugins: { legend: { display: false } }, scales: { y: { beginAtZero: true, title: { display: true, text: 'mm' } } } },
+  });
+  const curve = data.recall_curve || { threshold_mm: [], recall: [] };
+  if (data.input_loaded && !curve.recall.length) {
+    el('plot-recall').closest('figure').querySelector('figcaption').textContent +=
+        ': not computed (the curve redoes the greedy matching; this run used metrics.matching = hungarian)';
+  }
+  const recallPoints = curve.threshold_mm.map((t, i) => ({ x: t, y: curve.recall[i] }));
+  // The paper's two recall points, for reference.
+  const paperPoints = data.paper ? [{ x: 100, y: data.paper.recall100 }, { x: 500, y: data.paper.recall500 }] : [];
+  plot('plot-recall', {
+    type: 'scatter',
+    data: { datasets: [{ label: 'this run', data: recallPoints, showLine: true, borderColor: '#2f6fb0', pointRadius: 0 }]
+        .concat(data.paper ? [{ label: 'paper', data: paperPoints, pointRadius: 5, pointStyle: 'rectRot', backgroundColor: '#c0392b' }] : []) },
+    options: { scales: { x: { min: 0, max: 500, title: { display: true, text: 'threshold (mm)' } },
+                         y: { min: 0, max: 100, title: { display: true, text: 'recall (%)' } } } },
+  });
+  const steps = data.steps || [];
+  plot('plot-step-times', {
+    type: 'bar',
+    data: { labels: steps.map((s) => s.step), datasets: [{ data: steps.map((s) => s.time_us_median), backgroundColor: '#6aa84f' }] },
+    options: { indexAxis: 'y', plugins: { legend: { display: false } }, scales: { x: { title: { display: true, text: 'us' } } } },
+  });
+  plot('plot-step-counts', {
+    type: 'bar',
+    data: { labels: steps.map((s) => s.step), datasets: [{ data: steps.map((s) => s.count_per_frame), backgroundColor: '#b07aa1' }] },
+    options: { indexAxis: 'y', plugins: { legend: { display: false } }, scales: { x: { title: { display: true, text: 'items per frame' } } } },
+  });
+
+  const sequences = data.sequences || [];
+  const scenes = data.scenes || [];
+  let framesChart = null;
+  (function framePlot() {
+    const select = el('frames-sequence');
+    sequences.forEach((s, i) => {
+      const option = document.createElement('option');
+      option.value = i;
+      option.textContent = s.name + ' (' + s.frame_ids.length + ' frames)';
+      select.appendChild(option);
+    });
+    select.hidden = sequences.length < 2;
+    const draw = (s) => {
+      const seq = sequences[s];
+      if (!seq) return;
+      const points = seq.mpjpe_mm.map((v, f) => ({ x: f, y: v }));
+      const invalid = seq.num_invalid.map((v, f) => ({ x: f, y: v }));
+      const missed = seq.num_gt.map((v, f) => ({ x: f, y: v - seq.num_matched[f] }));
+      if (framesChart) framesChart.destroy();
+      framesChart = new Chart(el('plot-frames'), {
+        type: 'scatter',
+        data: { datasets: [
+          { label: 'MPJPE (mm)', data: points, showLine: true, borderColor: '#2f6fb0', backgroundColor: '#2f6fb0', pointRadius: 1.5, borderWidth: 1, yAxisID: 'y', spanGaps: false },
+          { label: 'missed GT', data: missed, showLine: true, stepped: true, borderColor: '#ff2d2d', backgroundColor: '#ff2d2d', pointRadius: 0, borderWidth: 1, yAxisID: 'count' },
+          { label: 'invalid predictions', data: invalid, showLine: true, stepped: true, borderColor: '#f58231', backgroundColor: '#f58231', pointRadius: 0, borderWidth: 1, yAxisID: 'count' },
+          { label: 'selected frame', data: [], pointRadius: 6, pointStyle: 'triangle', backgroundColor: '#000', yAxisID: 'y' },
+        ] },
+        options: {
+          scales: { x: { title: { display: true, text: 'frame' } }, y: { beginAtZero: true, title: { display: true, text: 'mm' } },
+                    count: { position: 'right', beginAtZero: true, grid: { drawOnChartArea: false }, title: { display: true, text: 'persons' } } },
+          onClick: (event) => {
+            const hits = framesChart.getElementsAtEventForMode(event, 'nearest', { axis: 'x', intersect: false }, true);
+            if (hits.length) openFrame(s, hits[0].index);
+          },
+        },
+      });
+      framesChart.rptSequence = s;
+    };
+    select.addEventListener('change', () => { draw(Number(select.value)); markFrame(); });
+    if (sequences.length) { draw(0); plots += 1; }
+  })();
+
+  // ---- frame selection ----
+  const slider = el('frame-slider');
+  slider.max = Math.max(0, scenes.length - 1);
+  let current = 0;
+  function openFrame(s, f) {
+    // The nearest frame that carries a scene (all of them unless the run was sampled).
+    let best = -1, bestDistance = Infinity;
+    scenes.forEach((scene, i) => {
+      if (scene.sequence !== s) return;
+      const d = Math.abs(scene.frame - f);
+      if (d < bestDistance) { best = i; bestDistance = d; }
+    });
+    if (best >= 0) showScene(best);
+    el('viewer').scrollIntoView({ behavior: 'auto' });
+  }
+  function markFrame() {
+    if (!framesChart || !scenes.length) return;
+    const scene = scenes[current];
+    const set = framesChart.data.datasets[3];
+    const seq = sequences[scene.sequence];
+    set.data = scene.sequence === framesChart.rptSequence ? [{ x: scene.frame, y: seq.mpjpe_mm[scene.frame] === null ? 0 : seq.mpjpe_mm[scene.frame] }] : [];
+    framesChart.update('none');
+  }
+  el('prev').addEventListener('click', () => showScene(Math.max(0, current - 1)));
+  el('next').addEventListener('click', () => showScene(Math.min(scenes.length - 1, current + 1)));
+  slider.addEventListener('input', () => showScene(Number(slider.value)));
+  let timer = null;
+  el('play').addEventListener('click', () => {
+    if (timer) { clearInterval(timer); timer = null; el('play').innerHTML = '&#9654;'; return; }
+    el('play').innerHTML = '&#10074;&#10074;';
+    timer = setInterval(() => showScene((current + 1) % Math.max(1, scenes.length)), 200);
+  });
+
+  // ---- 3D viewer ----
+  const view = el('view3d');
+  let renderer = null, scene3d = null, camera3d = null, controls = null, frameGroup = null, cameraGroup = null, cameraSequence = -1;
+  const upOf = (s) => new THREE.Vector3().fromArray((sequences[s] && sequences[s].up) || [0, 0, 1]);
+  function initViewer() {
+    renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+    renderer.setPixelRatio(window.devicePixelRatio || 1);
+    renderer.setSize(view.clientWidth, view.clientHeight);
+    renderer.setClearColor(0x10161d);
+    view.appendChild(renderer.domElement);
+    scene3d = new THREE.Scene();
+    camera3d = new THREE.PerspectiveCamera(45, view.clientWidth / view.clientHeight, 0.05, 500);
+    controls = new THREE.OrbitControls(camera3d, renderer.domElement);
+    controls.addEventListener('change', render);
+    window.addEventListener('resize', () => {
+      renderer.setSize(view.clientWidth, view.clientHeight);
+      camera3d.aspect = view.clientWidth / view.clientHeight;
+      camera3d.updateProjectionMatrix();
+      render();
+    });
+  }
+  function render() { if (renderer) renderer.render(scene3d, camera3d); }
+
+  function segmentsGeometry(points, edges) {
+    const positions = [];
+    for (const [a, b] of edges) {
+      if (points[a] && points[b]) positions.push(...points[a], ...points[b]);
+    }
+    const geometry = new THREE.BufferGeometry();
+    geometry.setAttribute('position', new THREE.Float32BufferAttribute(positions, 3));
+    return geometry;
+  }
+  function pointsGeometry(points) {
+    const positions = [];
+    for (const p of points) if (p) positions.push(...p);
+    const geometry = new THREE.BufferGeometry();
+    geometry.setAttribute('position', new THREE.Float32BufferAttribute(positions, 3));
+    return geometry;
+  }
+  function skeleton(points, edges, colour, dashed, size) {
+    const group = new THREE.Group();
+    const material = dashed ? new THREE.LineDashedMaterial({ color: colour, dashSize: 0.05, gapSize: 0.04 })
+                            : new THREE.LineBasicMaterial({ color: colour });
+    const lines = new THREE.LineSegments(segmentsGeometry(points, edges), material);
+    if (dashed) lines.computeLineDistances();
+    group.add(lines);
+    group.add(new THREE.Points(pointsGeometry(points), new THREE.PointsMaterial({ color: colour, size: size, sizeAttenuation: true })));
+    return group;
+  }
+  function dispose(group) {
+    if (!group) return;
+    group.traverse((o) => { if (o.geometry) o.geometry.dispose(); if (o.material) o.material.dispose(); });
+    scene3d.remove(group);
+  }
+  function placeCameras(s) {
+    dispose(cameraGroup);
+    cameraGroup = new THREE.Group();
+    const seq = sequences[s];
+    const material = new THREE.LineBasicMaterial({ color: CAMERA_COLOUR });
+    const centers = [];
+    for (const cam of seq.cameras) {
+      const c = cam.center, k = cam.corners, positions = [];
+      for (let i = 0; i < 4; i++) positions.push(...c, ...k[i], ...k[i], ...k[(i + 1) % 4]);
+      const geometry = new THREE.BufferGeometry();
+      geometry.setAttribute('position', new THREE.Float32BufferAttribute(positions, 3));
+      cameraGroup.add(new THREE.LineSegments(geometry, material));
+      centers.push(new THREE.Vector3().fromArray(c));
+    }
+    // Floor grid through the lowest GT or predicted joint of the sequence's scenes, normal to the up direction.
+    const up = upOf(s);
+    const target = new THREE.Vector3();
+    let count = 0, floor = Infinity;
+    for (const sc of scenes) {
+      if (sc.sequence !== s) continue;
+      for (const person of sc.gt.concat(sc.predictions)) {
+        for (const p of person.joints) {
+          if (!p) continue;
+          const v = new THREE.Vector3().fromArray(p);
+          target.add(v); count += 1; floor = Math.min(floor, v.dot(up));
+        }
+      }
+    }
+    const cameraMean = centers.reduce((a, b) => a.add(b), new THREE.Vector3()).multiplyScalar(1 / Math.max(1, centers.length));
+    if (count) target.multiplyScalar(1 / count); else target.copy(cameraMean);
+    if (!Number.isFinite(floor)) floor = target.dot(up) - 1;
+    const spread = centers.reduce((m, c) => Math.max(m, c.distanceTo(target)), 2);
+    const grid = new THREE.GridHelper(Math.ceil(spread * 2), Math.ceil(spread * 2), 0x3a4654, 0x26303b);
+    grid.quaternion.setFromUnitVectors(new THREE.Vector3(0, 1, 0), up);
+    grid.position.copy(target.clone().sub(up.clone().multiplyScalar(target.dot(up) - floor)));
+    cameraGroup.add(grid);
+    scene3d.add(cameraGroup);
+    camera3d.up.copy(up);
+    const away = cameraMean.clone().sub(target);
+    away.sub(up.clone().multiplyScalar(away.dot(up)));
+    if (away.length() < 1e-3) away.set(1, 0, 0).sub(up.clone().multiplyScalar(up.x));
+    // Close enough that the people fill the view; the cameras may lie outside it (zoom out to see them).
+    let peopleRadius = 1;
+    for (const sc of scenes) {
+      if (sc.sequence !== s) continue;
+      for (const person of sc.gt.concat(sc.predictions)) {
+        for (const p of person.joints) if (p) peopleRadius = Math.max(peopleRadius, new THREE.Vector3().fromArray(p).distanceTo(target));
+      }
+    }
+    const distance = Math.min(spread * 1.1, Math.max(3, peopleRadius * 2.2));
+    away.setLength(distance);
+    camera3d.position.copy(target).add(away).add(up.clone().multiplyScalar(distance * 0.7));
+    controls.target.copy(target);
+    controls.update();
+    cameraSequence = s;
+  }
+
+  // ---- camera views ----
+  const cameraCanvases = [];
+  function cameraViews(s) {
+    const box = el('cameras');
+    box.innerHTML = '';
+    cameraCanvases.length = 0;
+    for (const cam of sequences[s].cameras) {
+      const figure = document.createElement('figure');
+      const caption = document.createElement('figcaption');
+      const canvas = document.createElement('canvas');
+      const scale = Math.min(1, 720 / Math.max(1, cam.width));
+      canvas.width = Math.max(1, Math.round(cam.width * scale));
+      canvas.height = Math.max(1, Math.round(cam.height * scale));
+      canvas.rptScale = scale;
+      figure.appendChild(caption);
+      figure.appendChild(canvas);
+      box.appendChild(figure);
+      cameraCanvases.push({ canvas, caption, cam });
+    }
+  }
+  function drawPerson2D(ctx, uv, edges, colour, scale, width, dashed) {
+    ctx.strokeStyle = colour; ctx.fillStyle = colour; ctx.lineWidth = width;
+    ctx.setLineDash(dashed ? [5, 4] : []);
+    ctx.beginPath();
+    for (const [a, b] of edges) {
+      if (!uv[a] || !uv[b]) continue;
+      ctx.moveTo(uv[a][0] * scale, uv[a][1] * scale);
+      ctx.lineTo(uv[b][0] * scale, uv[b][1] * scale);
+    }
+    ctx.stroke();
+    ctx.setLineDash([]);
+    for (const p of uv) {
+      if (!p) continue;
+      ctx.beginPath(); ctx.arc(p[0] * scale, p[1] * scale, width + 0.8, 0, 2 * Math.PI); ctx.fill();
+    }
+  }
+  function drawViews(sc) {
+    const seq = sequences[sc.sequence];
+    let drawn = 0;
+    cameraCanvases.forEach(({ canvas, caption, cam }, c) => {
+      const ctx = canvas.getContext('2d');
+      const scale = canvas.rptScale;
+      ctx.fillStyle = '#1b2129'; ctx.fillRect(0, 0, canvas.width, canvas.height);
+      const v = sc.views[c] || { detections: [], predictions: [], gt: [] };
+      for (const gt of v.gt) drawPerson2D(ctx, gt, seq.gt_edges, GT_COLOUR, scale, 1, true);
+      for (const det of v.detections) drawPerson2D(ctx, det, seq.detection_edges, DETECTION_COLOUR, scale, 1.5, false);
+      const errors = [];
+      v.predictions.forEach((p, i) => {
+        const person = sc.predictions[i];
+        drawPerson2D(ctx, p.uv, data.prediction_edges, trackColour(p.track_id), scale, 2, person && person.invalid);
+        if (p.mean_error_px !== null) {
+          errors.push(p.mean_error_px);
+          const anchor = p.uv.find((q) => q);
+          if (anchor) {
+            ctx.font = '12px system-ui, sans-serif'; ctx.fillStyle = '#fff';
+            ctx.fillText(fmt(p.mean_error_px, 1) + ' px', anchor[0] * scale + 6, anchor[1] * scale - 6);
+          }
+        }
+      });
+      const mean = errors.length ? errors.reduce((a, b) => a + b, 0) / errors.length : null;
+      caption.textContent = `${cam.name} (${cam.width}x${cam.height}): ${v.detections.length} detection(s), ` +
+          `${v.predictions.filter((p) => p.detection >= 0).length} of ${v.predictions.length} prediction(s) matched, ` +
+          `mean reprojection error ${fmt(mean, 1)} px`;
+      drawn += 1;
+    });
+    return drawn;
+  }
+
+  // ---- one frame ----
+  function countNonBlank() {
+    const gl = renderer.getContext();
+    const w = gl.drawingBufferWidth, h = gl.drawingBufferHeight;
+    const pixels = new Uint8Array(w * h * 4);
+    gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
+    let count = 0;
+    for (let i = 0; i < pixels.length; i += 4) {
+      if (Math.abs(pixels[i] - 0x10) + Math.abs(pixels[i + 1] - 0x16) + Math.abs(pixels[i + 2] - 0x1d) > 24) count += 1;
+    }
+    return count;
+  }
+  function showScene(i) {
+    if (!scenes.length) return;
+    current = i;
+    slider.value = i;
+    const sc = scenes[i];
+    const seq = sequences[sc.sequence];
+    if (cameraSequence !== sc.sequence) { placeCameras(sc.sequence); cameraViews(sc.sequence); }
+    dispose(frameGroup);
+    frameGroup = new THREE.Group();
+    let skeletons = 0, gtSkeletons = 0;
+    for (const g of sc.gt) {
+      if (g.state < 0) continue;
+      frameGroup.add(skeleton(g.joints, seq.gt_edges, g.state === 1 ? GT_COLOUR : MISSED_COLOUR, false, g.state === 1 ? 0.04 : 0.08));
+      gtSkeletons += 1;
+    }
+    for (const p of sc.predictions) {
+      frameGroup.add(skeleton(p.joints, data.prediction_edges, trackColour(p.track_id), p.invalid, 0.06));
+      skeletons += 1;
+    }
+    scene3d.add(frameGroup);
+    render();
+    const matched = sc.gt.filter((g) => g.state === 1).length, kept = sc.gt.filter((g) => g.state >= 0).length;
+    const invalid = sc.predictions.filter((p) => p.invalid).length;
+    const frameError = seq.mpjpe_mm[sc.frame];
+    el('frame-label').textContent = `${seq.name} \u00b7 frame ${sc.frame + 1}/${seq.frame_ids.length} \u00b7 ${sc.id}`;
+    el('frame-stats').textContent = `${sc.predictions.length} prediction(s), ${invalid} invalid; ${kept} GT person(s), ` +
+        `${kept - matched} missed; frame MPJPE ${fmt(frameError, 1)} mm` +
+        (scenes.length < totalFrames() ? ` (the report carries ${scenes.length} of ${totalFrames()} frames, evenly spaced)` : '');
+    const views = drawViews(sc);
+    markFrame();
+    body.dataset.rptSkeletons = String(skeletons);
+    body.dataset.rptGtSkeletons = String(gtSkeletons);
+    body.dataset.rptCameraViews = String(views);
+    body.dataset.rptNonblankPixels = String(countNonBlank());
+    body.dataset.rptFrame = sc.id;
+  }
+  const totalFrames = () => sequences.reduce((n, s) => n + s.frame_ids.length, 0);
+
+  body.dataset.rptPlots = String(plots);
+  if (!data.input_loaded || !scenes.length) {
+    el('viewer').querySelector('h2').textContent = 'Frames: not available';
+    el('view3d').hidden = true;
+    el('frame-stats').textContent = 'The run\'s input could not be re-loaded, so the report has no frames (see the warnings above).';
+  } else {
+    initViewer();
+    // ?scene=K opens the K-th frame that carries a scene (0-based) instead of the first.
+    const wanted = Number(new URLSearchParams(window.location.search).get('scene'));
+    showScene(Number.isInteger(wanted) && wanted >= 0 && wanted < scenes.length ? wanted : 0);
+  }
+  // #only-<section>[+<section>...]: those sections alone (for screenshots of one part, docs/report.md).
+  const only = /^#only-([\w+-]+)$/.exec(window.location.hash);
+  if (only) {
+    const shown = only[1].split('+');
+    document.querySelectorAll('main > section').forEach((section) => { section.hidden = !shown.includes(section.id); });
+    window.scrollTo(0, 0);
+  }
+  body.dataset.rptReady = '1';
+})();

@@ -1,0 +1,127 @@
+// SPDX-License-Identifier: MIT
+// The report in a real browser (headless Chromium; skipped when it is absent): no error on the
+// console, the 3D viewer drew the expected skeletons on a non-blank canvas, the five plots and one
+// view per camera exist; screenshots go to RPT_SCREENSHOT_DIR (or $RPT_REPORT_SCREENSHOTS), for
+// docs/report.md. A small synthetic run always; the Shelf, Panoptic and MVOR fixtures when
+// ../shared/data has them.
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "tests/report/report_test_util.h"
+#include "tests/test_data.h"
+
+namespace rpt::test {
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+
+fs::path ScreenshotDir() {
+  if (const char* env = std::getenv("RPT_REPORT_SCREENSHOTS"); env != nullptr && *env != '\0') return env;
+  return RPT_SCREENSHOT_DIR;
+}
+
+#define RPT_REQUIRE_CHROMIUM()                                                                       \
+  do {                                                                                               \
+    if (ChromiumBinary().empty()) GTEST_SKIP() << "chromium not installed (scripts/install_deps.sh)"; \
+  } while (0)
+
+// Checks the page of `dir` in the browser and saves its screenshots as report_<name>_*.png.
+void CheckInBrowser(const fs::path& dir, const std::string& name) {
+  const fs::path page = dir / "report.html";
+  const Json data = ReportData(ReadAll(page));
+  ASSERT_TRUE(data.is_object());
+  ASSERT_TRUE(data["input_loaded"].get<bool>());
+  // The page opens on the frame with the most predictions (?scene=K), so that the check counts skeletons.
+  size_t scene = 0;
+  for (size_t k = 0; k < data["scenes"].size(); ++k) {
+    if (data["scenes"][k]["predictions"].size() > data["scenes"][scene]["predictions"].size()) scene = k;
+  }
+  const Json& first = data["scenes"][scene];
+  ASSERT_GT(first["predictions"].size(), 0u);
+  const size_t cameras = data["sequences"][first["sequence"].get<int>()]["cameras"].size();
+  size_t gt_evaluated = 0;
+  for (const Json& gt : first["gt"]) gt_evaluated += gt["state"].get<int>() >= 0 ? 1 : 0;
+  const std::string query = "?scene=" + std::to_string(scene);
+
+  const std::string dom = DumpDom(page, query);
+  ASSERT_FALSE(dom.empty()) << "chromium printed no DOM";
+  const size_t errors_at = dom.find("id=\"rpt-errors\"");
+  EXPECT_EQ(BodyAttribute(dom, "data-rpt-errors"), "0")
+      << "console errors: " << dom.substr(errors_at, dom.find("</pre>", errors_at) - errors_at);
+  EXPECT_EQ(BodyAttribute(dom, "data-rpt-ready"), "1");
+  EXPECT_EQ(BodyAttribute(dom, "data-rpt-plots"), "5") << "joints, recall, frames, step times, step counts";
+  EXPECT_EQ(BodyAttribute(dom, "data-rpt-skeletons"), std::to_string(first["predictions"].size()));
+  EXPECT_EQ(BodyAttribute(dom, "data-rpt-gt-skeletons"), std::to_string(gt_evaluated));
+  EXPECT_EQ(BodyAttribute(dom, "data-rpt-camera-views"), std::to_string(cameras));
+  EXPECT_EQ(BodyAttribute(dom, "data-rpt-frame"), first["id"].get<std::string>());
+  const std::string nonblank = BodyAttribute(dom, "data-rpt-nonblank-pixels");
+  ASSERT_FALSE(nonblank.empty()) << "the 3D viewer did not draw";
+  EXPECT_GT(std::stol(nonblank), 2000) << "the 3D canvas is blank";
+  EXPECT_EQ(dom.find("<canvas id=\"plot-frames\"") == std::string::npos, false);
+
+  // A blank page compresses to about 6 kB; these hold tables, plots, skeletons and camera views.
+  const fs::path plots = ScreenshotDir() / ("report_" + name + "_plots.png");
+  const fs::path viewer = ScreenshotDir() / ("report_" + name + "_viewer.png");
+  ASSERT_TRUE(Screenshot(page, query + "#only-summary+plots", plots, 1280, 1000));
+  ASSERT_TRUE(Screenshot(page, query + "#only-viewer", viewer, 1280, 1100));
+  EXPECT_GT(fs::file_size(plots), 40000u);
+  EXPECT_GT(fs::file_size(viewer), 40000u);
+}
+
+TEST(ReportBrowser, SyntheticRun) {
+  RPT_REQUIRE_CHROMIUM();
+  const fs::path dir = TempDir("report_browser_synthetic");
+  ASSERT_TRUE(EvalAndReport("--dataset synthetic --param frames=60 --param people=3 --param cameras=4", dir));
+  CheckInBrowser(dir, "synthetic");
+}
+
+TEST(ReportBrowser, ShelfFixture) {
+  RPT_REQUIRE_CHROMIUM();
+  RPT_REQUIRE_SHARED_DATA("shelf/4d_association");
+  const fs::path dir = TempDir("report_browser_shelf");
+  ASSERT_TRUE(EvalAndReport("--dataset shelf-4da --root " + SharedData("shelf/4d_association").string(), dir,
+                            "--max-frames 60"));
+  CheckInBrowser(dir, "shelf");
+}
+
+TEST(ReportBrowser, PanopticFixture) {
+  RPT_REQUIRE_CHROMIUM();
+  RPT_REQUIRE_SHARED_DATA("panoptic/160906_band1");
+  const fs::path dir = TempDir("report_browser_panoptic");
+  ASSERT_TRUE(EvalAndReport("--dataset panoptic --root " + SharedData("panoptic").string() +
+                                " --param sequences=160906_band1 --param every=1 --simulate",
+                            dir));
+  CheckInBrowser(dir, "panoptic");
+}
+
+TEST(ReportBrowser, MvorFixture) {
+  RPT_REQUIRE_CHROMIUM();
+  RPT_REQUIRE_SHARED_DATA("mvor/camma_mvor_2018.json");
+  const fs::path dir = TempDir("report_browser_mvor");
+  ASSERT_TRUE(EvalAndReport("--dataset mvor --root " + SharedData("mvor").string(), dir, "--max-frames 60"));
+  CheckInBrowser(dir, "mvor");
+}
+
+TEST(ReportBrowser, RunWhoseInputIsGone) {
+  // The recorded tables only: the page still loads without errors, with the plots it has data for.
+  RPT_REQUIRE_CHROMIUM();
+  const fs::path dir = TempDir("report_browser_no_input");
+  ASSERT_TRUE(EvalAndReport("--dataset synthetic --param frames=5", dir));
+  Json run = Json::parse(ReadAll(dir / "run.json"));
+  run["command"] = "rpt eval --dataset shelf --root " + (dir / "gone").string();
+  std::ofstream(dir / "run.json") << run.dump(2);
+  const CommandResult r = RunRpt("report " + dir.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string dom = DumpDom(dir / "report.html");
+  ASSERT_FALSE(dom.empty()) << "chromium printed no DOM";
+  EXPECT_EQ(BodyAttribute(dom, "data-rpt-errors"), "0") << dom.substr(dom.find("id=\"rpt-errors\""), 2000);
+  EXPECT_EQ(BodyAttribute(dom, "data-rpt-ready"), "1");
+  EXPECT_EQ(BodyAttribute(dom, "data-rpt-plots"), "4") << "joints, recall, step times, step counts; no frames";
+  EXPECT_EQ(BodyAttribute(dom, "data-rpt-skeletons"), "");
+  EXPECT_NE(dom.find("Frames: not available"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace rpt::test

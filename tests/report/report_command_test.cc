@@ -1,0 +1,112 @@
+// SPDX-License-Identifier: MIT
+// `rpt report` without a browser: the page is self-contained, carries the run's frames (sampled to
+// --max-frames), degrades with a warning when the run's input is gone, and bad input exits 2.
+#include <gtest/gtest.h>
+
+#include <stdlib.h>
+
+#include <fstream>
+#include <regex>
+
+#include "tests/report/report_test_util.h"
+
+namespace rpt::test {
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+
+const char* kSyntheticRun = "--dataset synthetic --param frames=40 --param people=3 --param cameras=4";
+
+TEST(ReportCommand, SelfContainedPageWithSampledFrames) {
+  const fs::path dir = TempDir("report_sampled");
+  ASSERT_TRUE(EvalAndReport(kSyntheticRun, dir, "--max-frames 10"));
+  const std::string html = ReadAll(dir / "report.html");
+  // Opens offline: no external script, style sheet or image.
+  EXPECT_FALSE(std::regex_search(html, std::regex(R"((src|href)\s*=\s*["']?(https?:)?//)", std::regex::icase)));
+  EXPECT_EQ(html.find("<link"), std::string::npos);
+  EXPECT_EQ(html.find("<script src"), std::string::npos);
+  EXPECT_NE(html.find("Chart.js v3"), std::string::npos) << "Chart.js inlined";
+  EXPECT_NE(html.find("OrbitControls"), std::string::npos) << "three.js controls inlined";
+
+  const Json data = ReportData(html);
+  ASSERT_TRUE(data.is_object());
+  EXPECT_EQ(data["dataset"], "synthetic");
+  EXPECT_TRUE(data["paper"].is_null()) << "the paper has no synthetic row";
+  EXPECT_TRUE(data["input_loaded"].get<bool>());
+  ASSERT_EQ(data["sequences"].size(), 1u);
+  EXPECT_EQ(data["sequences"][0]["mpjpe_mm"].size(), 40u) << "the error plot has every frame";
+  EXPECT_EQ(data["sequences"][0]["cameras"].size(), 4u);
+  ASSERT_EQ(data["scenes"].size(), 10u) << "--max-frames bounds the frames with a scene";
+  EXPECT_EQ(data["scenes"][0]["frame"], 0);
+  EXPECT_EQ(data["scenes"][1]["frame"], 4) << "evenly spaced";
+  EXPECT_EQ(data["scenes"][0]["views"].size(), 4u);
+  // The scene's predictions are the recorded ones.
+  const Json predictions = Json::parse(ReadAll(dir / "predictions.json"));
+  EXPECT_EQ(data["scenes"][0]["predictions"].size(), predictions["frames"][0]["persons"].size());
+  EXPECT_EQ(data["scenes"][0]["views"][0]["predictions"].size(), predictions["frames"][0]["persons"].size());
+  // Per-frame matches add up to the summary's.
+  const Json summary = Json::parse(ReadAll(dir / "summary.json"));
+  long matched = 0;
+  for (const Json& m : data["sequences"][0]["num_matched"]) matched += m.get<long>();
+  EXPECT_EQ(matched, summary["matches"].get<long>());
+  EXPECT_EQ(data["per_joint"].size(), 13u);
+  EXPECT_FALSE(data["recall_curve"]["recall"].empty());
+}
+
+TEST(ReportCommand, PaperRowForKnownDatasets) {
+  // The page reads the paper's numbers from results/paper.json (embedded); a run of a dataset the paper
+  // evaluated shows them. Rewriting run.json's dataset is enough: the input then fails to re-load.
+  const fs::path dir = TempDir("report_paper");
+  ASSERT_TRUE(EvalAndReport("--dataset synthetic --param frames=3", dir));
+  Json run = Json::parse(ReadAll(dir / "run.json"));
+  run["command"] = "rpt eval --dataset panoptic --root " + (dir / "no-such-folder").string();
+  std::ofstream(dir / "run.json") << run.dump(2);
+  const CommandResult r = RunRpt("report " + dir.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("warning: the run's input could not be re-loaded"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("no-such-folder"), std::string::npos) << "says why: " << r.err;
+  const Json data = ReportData(ReadAll(dir / "report.html"));
+  EXPECT_FALSE(data["input_loaded"].get<bool>());
+  EXPECT_FALSE(data.contains("scenes"));
+  ASSERT_TRUE(data["paper"].is_object());
+  EXPECT_EQ(data["paper"]["mpjpe_mm"], 30.6);
+  EXPECT_EQ(data["paper"]["recall500"], 99.8);
+}
+
+TEST(ReportCommand, BadInputExitsTwoNamingTheFile) {
+  const fs::path dir = TempDir("report_bad");
+  CommandResult r = RunRpt("report " + (dir / "missing").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("missing: not a folder"), std::string::npos) << r.err;
+
+  r = RunRpt("report " + dir.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("summary.json: file not found"), std::string::npos) << r.err;
+
+  ASSERT_TRUE(EvalAndReport("--dataset synthetic --param frames=3", dir));
+  std::ofstream(dir / "predictions.json") << R"({"joints": ["nose"], "frames": [{"id": "a", "persons": [[[1, 2]]], "track_ids": [0]}]})";
+  r = RunRpt("report " + dir.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("predictions.json: /frames/0/persons/0"), std::string::npos) << r.err;
+
+  std::ofstream(dir / "per_joint.csv") << "joint,mean_error_mm,pck100_pct,count,num_gt\nnose,12.5,x,3,4\n";
+  r = RunRpt("report " + dir.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("per_joint.csv:2: 'x' is not a number"), std::string::npos) << r.err;
+}
+
+TEST(ReportCommand, MissingJavascriptLibraryNamesThePackage) {
+  const fs::path dir = TempDir("report_nolib");
+  const CommandResult eval = RunRpt("eval --dataset synthetic --param frames=3 --quiet --out " + dir.string());
+  ASSERT_EQ(eval.exit_code, 0) << eval.err;
+  ::setenv("RPT_JAVASCRIPT_DIR", (dir / "none").c_str(), 1);  // the child inherits it
+  const CommandResult r = RunRpt("report " + dir.string());
+  ::unsetenv("RPT_JAVASCRIPT_DIR");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("three/three.min.js: not found"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("libjs-three"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace rpt::test
