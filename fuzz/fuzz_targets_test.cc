@@ -37,11 +37,6 @@ TEST(FuzzTargets, EveryTargetHasSeedsAndEverySeedIsAccepted) {
   EXPECT_EQ(FindFuzzTarget("no such format"), nullptr);
 }
 
-// Formats whose hardening is on another branch (issue 10, finding 3: HDF5, branch s10-bounds):
-// until that is merged some corrupt HDF5 caches end in std::bad_alloc ("internal error", exit 1)
-// instead of an input error. They are left out of the loop below and have their own DISABLED_
-// tests at the end; drop the name here and the DISABLED_ prefixes with that merge.
-const std::set<std::string> kHardenedElsewhere = {"hdf5"};
 
 // Runs every seed of `target` cut at 24 places and with one byte changed at 24 places: the
 // reader accepts or refuses with an input error; anything else (another exception) fails here,
@@ -70,7 +65,7 @@ void CheckCutAndFlippedSeeds(const FuzzTarget& target, long* runs, long* refused
 TEST(FuzzTargets, CutAndFlippedSeedsEndInInputErrorsOnly) {
   long runs = 0, refused = 0;
   for (const FuzzTarget& target : FuzzTargets()) {
-    if (!kHardenedElsewhere.count(target.name)) CheckCutAndFlippedSeeds(target, &runs, &refused);
+    CheckCutAndFlippedSeeds(target, &runs, &refused);
   }
   // Cutting a file anywhere but at its end leaves nothing a reader should accept most of the time.
   EXPECT_GT(refused, runs / 2);
@@ -81,7 +76,7 @@ TEST(FuzzTargets, CutAndFlippedSeedsEndInInputErrorsOnly) {
 
 // Found by CutAndFlippedSeedsEndInInputErrorsOnly: the sequences cache with byte size * 14 / 24
 // xor 0x63 (inside a dataset's header) made ReadSequencesHdf5 throw std::bad_alloc.
-TEST(FuzzRegressions, DISABLED_Hdf5SequencesCacheWithAFlippedByteIsAnInputError) {
+TEST(FuzzRegressions, Hdf5SequencesCacheWithAFlippedByteIsAnInputError) {
   const auto& seeds = Seeds().at("hdf5");
   const auto it = std::find_if(seeds.begin(), seeds.end(), [](const auto& seed) { return seed.first == "sequences.h5"; });
   ASSERT_NE(it, seeds.end());
@@ -92,7 +87,7 @@ TEST(FuzzRegressions, DISABLED_Hdf5SequencesCacheWithAFlippedByteIsAnInputError)
   EXPECT_FALSE(accepted);
 }
 
-TEST(FuzzRegressions, DISABLED_Hdf5CutAndFlippedSeedsEndInInputErrorsOnly) {
+TEST(FuzzRegressions, Hdf5CutAndFlippedSeedsEndInInputErrorsOnly) {
   long runs = 0, refused = 0;
   CheckCutAndFlippedSeeds(*FindFuzzTarget("hdf5"), &runs, &refused);
   EXPECT_GT(refused, runs / 2);

@@ -124,7 +124,7 @@ TEST(Config, DumpReadsBackIdenticallyWithEveryKindOfValue) {
   ApplyConfigOverride("triangulate.core_joints=[\"hip_left\", \"hip_right\", \"knee_left\"]", &changed);
   ApplyConfigOverride("room_check.size_m=[8, 8, 3]", &changed);
   ApplyConfigOverride("room_check.center_m=1.5,-2,0", &changed);
-  ApplyConfigOverride("merge.top_k=-1", &changed);
+  ApplyConfigOverride("merge.top_k=7", &changed);
   ApplyConfigOverride("score.scale_factor=4.25", &changed);
   ApplyConfigOverride("smooth.mode=offline", &changed);
   ApplyConfigOverride("metrics.legacy_pcp=campus", &changed);
