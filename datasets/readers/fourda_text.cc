@@ -46,7 +46,7 @@ void ParseDetectionFrame(io::TextTokens& tokens, std::int64_t frame, InputWarnin
   }
   out->pafs.resize(skeleton.limbs.size());
   for (size_t k = 0; k < skeleton.limbs.size(); ++k) {
-    const auto [a, b] = skeleton.limbs[k];
+    const int a = skeleton.limbs[k].first, b = skeleton.limbs[k].second;  // lambdas capture them (clang 14)
     const Eigen::Index rows = out->joints[static_cast<size_t>(a)].cols();
     const Eigen::Index cols = out->joints[static_cast<size_t>(b)].cols();
     const auto where = [&] {
