@@ -66,6 +66,12 @@ DatasetRequest RequestOf(const InputArgs& args) {
   return request;
 }
 
+std::string NoDetectionsMessage(const std::string& sequence) {
+  return "sequence '" + sequence +
+         "' has no 2D detections: pass --detections FILE, --simulate, or the dataset's own cache "
+         "(e.g. --param detections=voxelpose)";
+}
+
 SimulationOptions SimulationOf(const InputArgs& args) {
   SimulationOptions simulation;
   simulation.seed = args.seed;
@@ -112,9 +118,7 @@ std::vector<Sequence> LoadInput(const InputArgs& args, bool require_detections, 
     bool any = false;
     for (const SequenceFrame& f : s.frames) any |= !f.views.empty();
     if (!any) {
-      throw InputError("sequence '" + s.name +
-                       "' has no 2D detections: pass --detections FILE, --simulate, or the dataset's own cache "
-                       "(e.g. --param detections=voxelpose)");
+      throw InputError(NoDetectionsMessage(s.name));
     }
   }
   return sequences;
@@ -134,6 +138,11 @@ std::vector<std::unique_ptr<FrameSource>> OpenInput(const InputArgs& args, bool 
   if (args.simulate) {
     for (auto& source : sources) {
       source = std::make_unique<SimulatedDetectionsSource>(std::move(source), SimulationOf(args));
+    }
+  }
+  for (const auto& source : sources) {
+    if (require_detections && source->header().detection_joints.empty()) {  // a reader without its own
+      throw InputError(NoDetectionsMessage(source->header().name));
     }
   }
   // What the sources found unusable so far (e.g. files not matching the reader's pattern); the

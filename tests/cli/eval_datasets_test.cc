@@ -88,6 +88,19 @@ TEST(EvalDatasets, PanopticFixtureWithSimulatedDetections) {
   fs::remove_all(out);
 }
 
+// A streamed dataset without detections of its own (Panoptic) is refused before anything runs,
+// as when it is loaded whole.
+TEST(EvalDatasets, StreamedDatasetWithoutDetectionsIsRefused) {
+  RPT_REQUIRE_SHARED_DATA("panoptic/160906_band1");
+  const fs::path out = test::TempDir("no-detections");
+  const test::CommandResult r = test::RunRpt("eval --dataset panoptic --root " + test::SharedData("panoptic").string() +
+                                             " --param sequences=160906_band1 --quiet --out " + out.string());
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("sequence 'panoptic/160906_band1' has no 2D detections"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out / "summary.json"));
+  fs::remove_all(out);
+}
+
 TEST(EvalDatasets, ParallelSequencesGiveTheSameMetricsAsOneThread) {
   RPT_REQUIRE_SHARED_DATA("panoptic/160906_band2");
   const fs::path out = test::TempDir("threads");
