@@ -11,6 +11,7 @@
 #include <initializer_list>
 #include <set>
 
+#include "core/errors.h"
 #include "fuzz/fuzz_seeds.h"
 
 namespace rpt::fuzz {
@@ -91,6 +92,22 @@ TEST(FuzzRegressions, Hdf5CutAndFlippedSeedsEndInInputErrorsOnly) {
   long runs = 0, refused = 0;
   CheckCutAndFlippedSeeds(*FindFuzzTarget("hdf5"), &runs, &refused);
   EXPECT_GT(refused, runs / 2);
+}
+
+// Found by review while adding the egohumans_images target: an exo camera whose only image is
+// cam01/-2147483648.jpg made ReadEgohumans read through a null pointer (the time-stamp distance
+// overflowed int and no image was taken as the nearest). Time stamps count from 1: a negative one
+// is refused naming images.txt and the line.
+TEST(FuzzRegressions, EgohumansNegativeImageTimeStampIsAnInputError) {
+  const std::string images = "1 0.7071068 -0.7071068 0 0 0.2 1.5 4 1 cam01/-2147483648.jpg\n\n"
+                             "3 0.5 -0.5 0.5 -0.5 -0.3 1.4 4.2 2 cam02/00003.jpg\n\n";
+  std::string message;
+  try {
+    FindFuzzTarget("egohumans_images")->read(Bytes(images.begin(), images.end()));
+  } catch (const InputError& e) {
+    message = e.what();
+  }
+  EXPECT_THAT(message, ::testing::HasSubstr("images.txt:1: image name 'cam01/-2147483648.jpg' is not <camera>/<time stamp>.jpg"));
 }
 
 }  // namespace
