@@ -110,5 +110,28 @@ TEST(FuzzRegressions, EgohumansNegativeImageTimeStampIsAnInputError) {
   EXPECT_THAT(message, ::testing::HasSubstr("images.txt:1: image name 'cam01/-2147483648.jpg' is not <camera>/<time stamp>.jpg"));
 }
 
+// Found by review while adding the h3wb_npz target: a frame_id of 9223372036854775807 (int64) is
+// 2^63 as a double, and its conversion back to long long was undefined behaviour (here it gave the
+// frame id "h3wb_S8_Directions-1_-000000" at -1.8e17 s). Frame ids beyond 2^53 are refused, naming
+// the key.
+TEST(FuzzRegressions, H3wbNpzFrameIdBeyondTwoToThe53IsAnInputError) {
+  Bytes bytes = Seeds().at("h3wb_npz").front().second;
+  // The seed's frame_id array (int64 7) as pickled: SHORT_BINBYTES of 8 bytes.
+  const Bytes seven = {'C', 8, 7, 0, 0, 0, 0, 0, 0, 0};
+  const auto at = std::search(bytes.begin(), bytes.end(), seven.begin(), seven.end());
+  ASSERT_NE(at, bytes.end());
+  ASSERT_EQ(std::search(at + 1, bytes.end(), seven.begin(), seven.end()), bytes.end());
+  std::fill(at + 2, at + 9, 0xff);
+  at[9] = 0x7f;
+  std::string message;
+  try {
+    FindFuzzTarget("h3wb_npz")->read(bytes);
+  } catch (const InputError& e) {
+    message = e.what();
+  }
+  EXPECT_THAT(message, ::testing::HasSubstr("h3wb_train.npz[train_data.npy]: key 'S8'['Directions 1'].frame_id: element 0 is "
+                                            "9.2233720368547758e+18, out of range (|frame_id| <= 2^53)"));
+}
+
 }  // namespace
 }  // namespace rpt::fuzz
