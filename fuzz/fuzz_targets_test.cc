@@ -10,8 +10,10 @@
 #include <algorithm>
 #include <initializer_list>
 #include <set>
+#include <sstream>
 
 #include "core/errors.h"
+#include "datasets/readers/colmap_text.h"
 #include "fuzz/fuzz_seeds.h"
 
 namespace rpt::fuzz {
@@ -131,6 +133,23 @@ TEST(FuzzRegressions, H3wbNpzFrameIdBeyondTwoToThe53IsAnInputError) {
   }
   EXPECT_THAT(message, ::testing::HasSubstr("h3wb_train.npz[train_data.npy]: key 'S8'['Directions 1'].frame_id: element 0 is "
                                             "9.2233720368547758e+18, out of range (|frame_id| <= 2^53)"));
+}
+
+// Found by random mutations of the egohumans_images seed (the colmap_images target reaches it too):
+// an image line whose CAMERA_ID and NAME were separated by a form feed made ParseColmapImagesText
+// throw std::out_of_range. The fields were split at any white space, the NAME looked for after
+// spaces and tabs only; both use the same white space now.
+TEST(FuzzRegressions, ColmapImageNameAfterAFormFeedIsRead) {
+  const std::string text = "4\v1 0 0 0 0 0 0 3\faria01/00001.jpg\f\n\n";
+  bool accepted = false;
+  EXPECT_NO_THROW(accepted = RunFuzzTarget(*FindFuzzTarget("colmap_images"), Bytes(text.begin(), text.end())));
+  EXPECT_TRUE(accepted);
+  std::istringstream in(text);
+  const std::vector<ColmapImage> images = ParseColmapImagesText(in, "images.txt");
+  ASSERT_EQ(images.size(), 1u);
+  EXPECT_EQ(images[0].image_id, 4);
+  EXPECT_EQ(images[0].camera_id, 3);
+  EXPECT_EQ(images[0].name, "aria01/00001.jpg");
 }
 
 }  // namespace
