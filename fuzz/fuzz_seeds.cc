@@ -2,6 +2,8 @@
 #include "fuzz/fuzz_seeds.h"
 
 #include <Eigen/Geometry>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <string>
 
@@ -10,6 +12,7 @@
 #include "datasets/readers/generic_detections.h"
 #include "datasets/readers/generic_labels.h"
 #include "datasets/readers/hdf5_cache.h"
+#include "datasets/readers/human36m.h"
 #include "fuzz/fuzz_targets.h"
 #include "tests/datasets/io_test_util.h"
 #include "tests/datasets/readers_generic_test_util.h"
@@ -124,6 +127,144 @@ std::string MvorAnnotations() {
  "annotations": [{"image_id": 10010000005, "person_id": 4, "bbox": [10, 20, 100, 200], "keypoints": [)" + Keypoints(10, 50) + "]}]}";
 }
 
+// ---------------------------------------------------------------------------------------
+// H3WB
+
+// 133 whole-body joints (metres, Human3.6M world, z up) of a person standing near the origin.
+Eigen::Matrix3Xd WholeBody() {
+  Eigen::Matrix3Xd X(3, 133);
+  for (int j = 0; j < 133; ++j) X.col(j) << 0.3 * std::sin(0.37 * j), 0.2 * std::cos(0.11 * j), 0.012 * j + 0.05;
+  return X;
+}
+
+std::string Rounded(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof(buf), "%.0f", v);
+  return std::string(buf) == "-0" ? "0" : buf;
+}
+
+// One H3WB json sample seen by `camera`: keypoints_3d in camera coordinates (whole mm, so two views
+// still agree within the reader's 1 cm), optionally keypoints_2d (whole pixels) and image_path.
+std::string H3wbJsonSample(const Camera& camera, bool with_2d, const std::string& image_path) {
+  const Eigen::Matrix3Xd X = WholeBody();
+  std::string kp3, kp2;
+  for (int j = 0; j < 133; ++j) {
+    const Eigen::Vector3d x_mm = (camera.R * X.col(j) + camera.t) * 1000.0;
+    Eigen::Vector2d uv;
+    camera.Project(X.col(j), &uv);
+    const std::string key = (j ? ",\"" : "\"") + std::to_string(j) + "\":";
+    kp3 += key + "{\"x\":" + Rounded(x_mm.x()) + ",\"y\":" + Rounded(x_mm.y()) + ",\"z\":" + Rounded(x_mm.z()) + "}";
+    kp2 += key + "{\"x\":" + Rounded(uv.x()) + ",\"y\":" + Rounded(uv.y()) + "}";
+  }
+  std::string out = "{";
+  if (!image_path.empty()) out += "\"image_path\":\"" + image_path + "\",";
+  if (with_2d) out += "\"keypoints_2d\":{" + kp2 + "},";
+  return out + "\"keypoints_3d\":{" + kp3 + "}}";
+}
+
+// The cameras of S8 in the h3wb_json target's fixed metadata.xml.
+std::vector<Camera> H3wbJsonCameras() {
+  test::TempDir dir;
+  test::WriteText(dir.path() / "metadata.xml", H36mMetadataXmlText());
+  return ReadHuman36mCameras(dir.path() / "metadata.xml", "S8");
+}
+
+// The two members of a small h3wb_train.npz, train_data.npy then metadata.npy (the h3wb_npz
+// target's input): S8 "Directions 1", one frame (frame_id 7) seen by camera 54138969, float32 as
+// in the real file.
+Bytes H3wbNpzMembers() {
+  const test::H36mCalib k = test::SyntheticH36mCalibs(8)[0];
+  const Eigen::Matrix3d R = k.R();
+  const Eigen::Vector3d center_m = k.center_mm / 1000.0;
+  const Eigen::Matrix3Xd X = WholeBody();
+  std::vector<double> global, camera_3d, pose_2d;
+  Camera camera = Camera::FromCenter(R, center_m);
+  camera.K << k.fx, 0, k.cx, 0, k.fy, k.cy, 0, 0, 1;
+  for (int j = 0; j < 133; ++j) {
+    for (int d = 0; d < 3; ++d) global.push_back(1000.0 * X(d, j));
+    const Eigen::Vector3d x_mm = 1000.0 * R * (X.col(j) - center_m);
+    camera_3d.insert(camera_3d.end(), {x_mm.x(), x_mm.y(), x_mm.z()});
+    Eigen::Vector2d uv;
+    camera.Project(X.col(j), &uv);
+    pose_2d.insert(pose_2d.end(), {uv.x(), uv.y()});
+  }
+  const std::string id = Human36mCameraIds()[0];
+  const test::Obj action = test::PyDict({
+      {test::PyStr("global_3d"), test::PyArray({1, 133, 3}, global, "f4")},
+      {test::PyStr("frame_id"), test::PyArray({1}, {7}, "i8")},
+      {test::PyStr(id), test::PyDict({{test::PyStr("camera_3d"), test::PyArray({1, 133, 3}, camera_3d, "f4")},
+                                      {test::PyStr("pose_2d"), test::PyArray({1, 133, 2}, pose_2d, "f4")}})},
+  });
+  const test::Obj train = test::PyDict({{test::PyStr("S8"), test::PyDict({{test::PyStr("Directions 1"), action}})}});
+  // K divided by 1000, R world -> camera, T = -R C in metres, Distortion k1 k2 p1 p2 k3.
+  const Eigen::Matrix3d Rt = R.transpose();  // column-major storage of R^T = row-major values of R
+  const Eigen::Vector3d T = -R * center_m;
+  const test::Obj metadata = test::PyDict({{test::PyStr("S8"), test::PyDict({{test::PyStr(id), test::PyDict({
+      {test::PyStr("K"), test::PyArray({1, 3, 3}, {k.fx / 1000, 0, k.cx / 1000, 0, k.fy / 1000, k.cy / 1000, 0, 0, 0.001}, "f4")},
+      {test::PyStr("R"), test::PyArray({1, 3, 3}, std::vector<double>(Rt.data(), Rt.data() + 9), "f4")},
+      {test::PyStr("T"), test::PyArray({1, 1, 3}, {T.x(), T.y(), T.z()}, "f4")},
+      {test::PyStr("Distortion"), test::PyArray({1, 5}, {k.k1, k.k2, k.p1, k.p2, k.k3}, "f4")}})}})}});
+  Bytes out = test::NpyOfObject(train);
+  test::Append(out, test::NpyOfObject(metadata));
+  return out;
+}
+
+// ---------------------------------------------------------------------------------------
+// EgoHumans
+
+std::vector<double> Flat(const Eigen::Matrix4d& m) {
+  std::vector<double> values;
+  for (int r = 0; r < 4; ++r) {
+    for (int c = 0; c < 4; ++c) values.push_back(m(r, c));
+  }
+  return values;
+}
+
+// colmap_from_aria_transforms.pkl as EgoHumans writes it: aria name -> 4x4 float64 ndarray
+// (aria01 a similarity with scale 1.7).
+Bytes EgohumansTransforms() {
+  Eigen::Matrix4d anchor = Eigen::Matrix4d::Identity();
+  anchor.topLeftCorner<3, 3>() = 1.7 * Eigen::AngleAxisd(0.4, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  anchor.topRightCorner<3, 1>() << 0.3, -0.2, 1.1;
+  Eigen::Matrix4d other = Eigen::Matrix4d::Identity();
+  other.topRightCorner<3, 1>() << 5, 5, 5;
+  return test::PickleOf(test::PyDict({{test::PyStr("aria01"), test::PyArray({4, 4}, Flat(anchor))},
+                                      {test::PyStr("aria02"), test::PyArray({4, 4}, Flat(other))}}));
+}
+
+// A manual exo calibration camXX.npy: 4x4 float64, COLMAP -> camera (rigid).
+Bytes EgohumansManualCamera() {
+  Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
+  m.topLeftCorner<3, 3>() = Eigen::AngleAxisd(-1.2, Eigen::Vector3d(1, 0.2, 0).normalized()).toRotationMatrix();
+  m.topRightCorner<3, 1>() << 0.4, 1.2, 3.9;
+  return test::NpyBytes("{'descr': '<f8', 'fortran_order': False, 'shape': (4, 4), }", test::RawOf(Flat(m)));
+}
+
+// processed_data/poses3d/00001.npy: {aria01: (17, 4), aria02: (17, 4) with joints 5 and 6 not valid}.
+Bytes EgohumansGt() {
+  std::vector<std::pair<test::Obj, test::Obj>> people;
+  for (int p = 0; p < 2; ++p) {
+    std::vector<double> values;
+    for (int j = 0; j < 17; ++j) {
+      const bool valid = !(p == 1 && (j == 5 || j == 6));
+      for (double v : {0.8 * p - 0.4 + 0.1 * std::sin(j), 0.5 * p + 0.08 * std::cos(1.3 * j), 1.7 - 0.09 * j}) values.push_back(valid ? v : 0.0);
+      values.push_back(valid ? 1.0 : 0.0);
+    }
+    people.emplace_back(test::PyStr("aria0" + std::to_string(p + 1)), test::PyArray({17, 4}, values));
+  }
+  return test::NpyOfObject(test::PyDict(people));
+}
+
+// processed_data/poses2d/cam01/rgb/00001.npy: one detected person (keypoints (133, 3) float32,
+// the face and hands with score 0).
+Bytes EgohumansPoses2d() {
+  std::vector<double> keypoints;
+  for (int j = 0; j < 133; ++j) keypoints.insert(keypoints.end(), {1800.0 + 7 * j, 900.0 + 3 * (j % 17), j < 23 ? 0.9 : 0.0});
+  return test::NpyOfObjectList({test::PyDict({{test::PyStr("human_name"), test::PyStr("aria01")},
+                                              {test::PyStr("bbox"), test::PyArray({5}, {1700, 850, 2800, 1400, 0.99})},
+                                              {test::PyStr("keypoints"), test::PyArray({133, 3}, keypoints, "f4")}})});
+}
+
 }  // namespace
 
 std::map<std::string, std::vector<std::pair<std::string, Bytes>>> MakeFuzzSeeds() {
@@ -171,6 +312,23 @@ std::map<std::string, std::vector<std::pair<std::string, Bytes>>> MakeFuzzSeeds(
   seeds["panoptic_bodies"] = {{"body3DScene.json", Of(PanopticBodiesText())}};
   seeds["mvor"] = {{"camma_mvor_2018.json", Of(MvorAnnotations())}};
   seeds["h36m_metadata_xml"] = {{"metadata.xml", Of(test::MetadataXml(test::W0(test::SyntheticH36mCalibs)))}};
+  const std::vector<Camera> h3wb_cameras = H3wbJsonCameras();
+  // Two views (ids 0 and 1 = cameras 54138969, 55011271) of one frame: the reader finds the subject
+  // whose cameras make them agree. One view found by its image path, with its 2D keypoints.
+  seeds["h3wb_json"] = {
+      {"2Dto3D_two_views.json", Of("{\"0\":" + H3wbJsonSample(h3wb_cameras[0], false, "") + ",\n\"1\":" +
+                                   H3wbJsonSample(h3wb_cameras[1], false, "") + "}\n")},
+      {"RGBto3D_image_path.json",
+       Of("{\"12\":" + H3wbJsonSample(h3wb_cameras[2], true, "Human36m/S8/Images/Directions 1.58860488/frame_0005.jpg") + "}\n")}};
+  seeds["h3wb_npz"] = {{"train_data_metadata.npy", H3wbNpzMembers()}};
+  seeds["egohumans_cameras"] = {
+      {"cameras.txt", Of(EgohumansCamerasText())},
+      {"radial.txt", Of("1 OPENCV 3840 2160 1750 1752 1920 1080 0.05 -0.01 0.001 0.002\n2 SIMPLE_RADIAL 1920 1080 1000 960 540 0.01\n")}};
+  seeds["egohumans_images"] = {{"images.txt", Of(EgohumansImagesText())}};
+  seeds["egohumans_transforms"] = {{"colmap_from_aria_transforms.pkl", EgohumansTransforms()}};
+  seeds["egohumans_camera_npy"] = {{"cam02.npy", EgohumansManualCamera()}};
+  seeds["egohumans_gt"] = {{"00001.npy", EgohumansGt()}};
+  seeds["egohumans_poses2d"] = {{"00001.npy", EgohumansPoses2d()}, {"nobody.npy", test::NpyOfObjectList({})}};
   return seeds;
 }
 

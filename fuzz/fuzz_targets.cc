@@ -2,7 +2,12 @@
 #include "fuzz/fuzz_targets.h"
 
 #include <unistd.h>
+#include <zlib.h>
 
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <bit>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -18,10 +23,12 @@
 #include "datasets/io/pickle.h"
 #include "datasets/readers/coco_detections.h"
 #include "datasets/readers/colmap_text.h"
+#include "datasets/readers/egohumans.h"
 #include "datasets/readers/fourda_calibration.h"
 #include "datasets/readers/fourda_text.h"
 #include "datasets/readers/generic_detections.h"
 #include "datasets/readers/generic_labels.h"
+#include "datasets/readers/h3wb.h"
 #include "datasets/readers/hdf5_cache.h"
 #include "datasets/readers/human36m.h"
 #include "datasets/readers/mvor.h"
@@ -94,7 +101,228 @@ std::string PanopticBodiesText() {
   return R"({"version": 0.7, "univTime": 1.5, "fpsType": "hd_29_97", "bodies": [{"id": 3, "joints19": [)" + joints + "]}]}";
 }
 
+// Four cameras at the corners of a 3.6 x 10 m room, 1.5 m high, looking at a point 0.9 m above
+// the origin. Each subject's cameras are moved by 25 mm x subject x (camera - 1.5) along x, so the
+// views of one frame agree (within the readers' 1 cm) for one subject's cameras only.
+std::string H36mMetadataXmlText() {
+  static const std::string text = [] {
+    const double corners[4][2] = {{1.8, 5.0}, {1.8, -5.1}, {-1.8, 5.2}, {-1.8, -3.7}};
+    std::vector<double> w0(300, 0.0);
+    for (int s = 1; s <= 11; ++s) {
+      for (int c = 0; c < 4; ++c) {
+        const Eigen::Vector3d center(corners[c][0] + 0.025 * s * (c - 1.5), corners[c][1], 1.5);
+        // world -> camera rotation looking at the target (x right, y down, z forward; world z up)
+        const Eigen::Vector3d z = (Eigen::Vector3d(0, 0, 0.9) - center).normalized();
+        const Eigen::Vector3d x = z.cross(Eigen::Vector3d::UnitZ()).normalized();
+        const Eigen::Vector3d y = z.cross(x);
+        Eigen::Matrix3d R;
+        R << x.transpose(), y.transpose(), z.transpose();
+        // metadata.xml angles: R = Rx(a) Ry(b) Rz(c)
+        const double angles[3] = {std::atan2(-R(1, 2), R(2, 2)), std::asin(std::clamp(R(0, 2), -1.0, 1.0)),
+                                  std::atan2(-R(0, 1), R(0, 0))};
+        const std::size_t o = static_cast<std::size_t>(6 * (c * 11 + (s - 1)));
+        for (int i = 0; i < 3; ++i) w0[o + static_cast<std::size_t>(i)] = angles[i];
+        for (int i = 0; i < 3; ++i) w0[o + 3 + static_cast<std::size_t>(i)] = 1000.0 * center[i];
+      }
+    }
+    for (int c = 0; c < 4; ++c) {
+      const double intrinsics[9] = {1145.0 + c, 1144.0 + c, 512.5 - c, 515.5 + c, -0.2, 0.25, -0.003, -0.0014, -0.001};
+      for (int i = 0; i < 9; ++i) w0[static_cast<std::size_t>(264 + 9 * c + i)] = intrinsics[i];
+    }
+    std::string out = "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<metadata>\n  <w0>[";
+    char number[32];
+    for (std::size_t i = 0; i < w0.size(); ++i) {
+      std::snprintf(number, sizeof(number), "%.17g", w0[i]);
+      out += (i ? " " : "") + std::string(number);
+    }
+    return out + "]</w0>\n</metadata>\n";
+  }();
+  return text;
+}
+
+// Exo cameras 1 (fisheye, as EgoHumans' GoPros) and 2 (pinhole) and an Aria camera (1408 x 1408,
+// not an exo camera).
+std::string EgohumansCamerasText() {
+  return "# Camera list with one line of data per camera:\n#   CAMERA_ID, MODEL, WIDTH, HEIGHT, PARAMS[]\n"
+         "1 OPENCV_FISHEYE 3840 2160 1750 1752 1920 1080 0.05 -0.01 0.002 -0.0003\n"
+         "2 PINHOLE 1920 1080 1000 1001 960 540\n"
+         "3 FOV 1408 1408 600 600 704 704 0.9\n";
+}
+
+// Images of cam01 at time stamps 1 and 50 (the one nearest the first GT time stamp, 1, is used),
+// cam02 at 3, and the Aria camera.
+std::string EgohumansImagesText() {
+  return "# Image list with two lines of data per image:\n#   IMAGE_ID, QW, QX, QY, QZ, TX, TY, TZ, CAMERA_ID, NAME\n"
+         "1 0.7071068 -0.7071068 0 0 0.2 1.5 4 1 cam01/00001.jpg\n100.5 200.5 12 300 400 -1\n"
+         "2 0.7071068 -0.7071068 0 0 0.7 1.6 3.8 1 cam01/00050.jpg\n\n"
+         "3 0.5 -0.5 0.5 -0.5 -0.3 1.4 4.2 2 cam02/00003.jpg\n\n"
+         "4 1 0 0 0 0 0 0 3 aria01/00001.jpg\n\n";
+}
+
 namespace {
+
+// Pickle (protocol 2) of a dict str -> rows of floats (nested lists), what the EgoHumans readers
+// accept in place of numpy arrays.
+std::string PickleOfMatrices(const std::vector<std::pair<std::string, std::vector<std::vector<double>>>>& entries) {
+  std::string out = "\x80\x02}(";  // PROTO 2, EMPTY_DICT, MARK
+  auto le32 = [&](std::size_t v) {
+    for (int i = 0; i < 4; ++i) out += static_cast<char>((v >> (8 * i)) & 0xff);
+  };
+  for (const auto& [key, rows] : entries) {
+    out += 'X';  // BINUNICODE
+    le32(key.size());
+    out += key;
+    out += "](";  // EMPTY_LIST, MARK
+    for (const std::vector<double>& row : rows) {
+      out += "](";
+      for (const double v : row) {
+        out += 'G';  // BINFLOAT, big endian
+        const auto bits = std::bit_cast<std::uint64_t>(v);
+        for (int i = 7; i >= 0; --i) out += static_cast<char>((bits >> (8 * i)) & 0xff);
+      }
+      out += 'e';  // APPENDS
+    }
+    out += 'e';
+  }
+  return out + "u.";  // SETITEMS, STOP
+}
+
+// np.save of an object: the NPY header of a 0-d object array, then the pickle of the object
+// (np.load(allow_pickle=True) returns it as it is).
+std::string ObjectNpy(const std::string& pickle) {
+  std::string header = "{'descr': '|O', 'fortran_order': False, 'shape': (), }";
+  while ((10 + header.size() + 1) % 64 != 0) header += ' ';
+  header += '\n';
+  std::string out = "\x93NUMPY\x01";
+  out += '\0';
+  out += static_cast<char>(header.size() & 0xff);
+  out += static_cast<char>(header.size() >> 8);
+  return out + header + pickle;
+}
+
+// colmap_from_aria_transforms.pkl: aria01 -> COLMAP a similarity (scale 1.5), aria02 a shift.
+const std::string& EgohumansTransformsPickle() {
+  static const std::string pickle =
+      PickleOfMatrices({{"aria01", {{0, -1.5, 0, 0.3}, {1.5, 0, 0, -0.2}, {0, 0, 1.5, 1.1}, {0, 0, 0, 1}}},
+                        {"aria02", {{1, 0, 0, 5}, {0, 1, 0, 5}, {0, 0, 1, 5}, {0, 0, 0, 1}}}});
+  return pickle;
+}
+
+// processed_data/poses3d/00001.npy: aria01 standing near the origin (all 17 joints valid).
+const std::string& EgohumansGtNpy() {
+  static const std::string npy = [] {
+    std::vector<std::vector<double>> joints;
+    for (int j = 0; j < 17; ++j) joints.push_back({0.05 * std::sin(j), 0.04 * std::cos(j), 1.7 - 0.09 * j, 1.0});
+    return ObjectNpy(PickleOfMatrices({{"aria01", joints}}));
+  }();
+  return npy;
+}
+
+// The EgoHumans files a target can fuzz; the others are the fixed companions above.
+enum class EgoFile { kCameras, kImages, kTransforms, kManualCamera, kGt, kPoses2d };
+
+// A sequence egohumans/01_tagging/001_tagging with one GT time stamp (00001), `bytes` as the file
+// `fuzzed` and the companions as the others; the 2D cache is read (of cam01 only) when it is
+// the fuzzed file.
+void ReadEgohumansWith(EgoFile fuzzed, std::span<const std::uint8_t> bytes) {
+  const fs::path root = ScratchDir() / "egohumans";
+  fs::remove_all(root);
+  const std::string seq = "egohumans/01_tagging/001_tagging/";
+  const std::string work = seq + "colmap/workplace/";
+  auto write = [&](EgoFile file, const std::string& relative, const std::string& companion) {
+    if (file == fuzzed) {
+      WriteScratch(relative, bytes);
+    } else {
+      WriteScratch(relative, companion);
+    }
+  };
+  write(EgoFile::kCameras, work + "cameras.txt", EgohumansCamerasText());
+  write(EgoFile::kImages, work + "images.txt", EgohumansImagesText());
+  write(EgoFile::kTransforms, work + "colmap_from_aria_transforms.pkl", EgohumansTransformsPickle());
+  write(EgoFile::kGt, seq + "processed_data/poses3d/00001.npy", EgohumansGtNpy());
+  std::map<std::string, std::string> params;
+  if (fuzzed == EgoFile::kManualCamera) WriteScratch(work + "cam02.npy", bytes);
+  if (fuzzed == EgoFile::kPoses2d) {
+    WriteScratch(seq + "processed_data/poses2d/cam01/rgb/00001.npy", bytes);
+    params = {{"cameras", "cam01"}, {"detections", "cache"}};
+  }
+  ReadEgohumans(DatasetRequest{"egohumans", root, params});
+}
+
+// H3WB npz: the input holds train_data.npy and then metadata.npy; they are split at the second
+// NPY magic and stored (uncompressed, with their CRC-32) into h3wb_train.npz as np.savez does,
+// so that changed bytes reach the object trees instead of failing the CRC check.
+std::string StoredZip(const std::vector<std::pair<std::string, std::string>>& members) {
+  std::string out, central;
+  auto le = [](std::string& to, std::uint64_t v, int n) {
+    for (int i = 0; i < n; ++i) to += static_cast<char>((v >> (8 * i)) & 0xff);
+  };
+  for (const auto& [name, data] : members) {
+    const auto crc = static_cast<std::uint32_t>(
+        crc32(0L, reinterpret_cast<const Bytef*>(data.data()), static_cast<uInt>(data.size())));
+    const std::size_t offset = out.size();
+    le(out, 0x04034b50, 4);
+    le(out, 20, 2);  // version needed
+    le(out, 0, 2);   // flags
+    le(out, 0, 2);   // stored
+    le(out, 0, 4);   // time, date
+    le(out, crc, 4);
+    le(out, data.size(), 4);
+    le(out, data.size(), 4);
+    le(out, name.size(), 2);
+    le(out, 0, 2);  // extra
+    out += name;
+    out += data;
+    le(central, 0x02014b50, 4);
+    le(central, 20, 2);
+    le(central, 20, 2);
+    le(central, 0, 2);
+    le(central, 0, 2);
+    le(central, 0, 4);
+    le(central, crc, 4);
+    le(central, data.size(), 4);
+    le(central, data.size(), 4);
+    le(central, name.size(), 2);
+    le(central, 0, 2);  // extra
+    le(central, 0, 2);  // comment
+    le(central, 0, 2);  // disk
+    le(central, 0, 2);  // internal attributes
+    le(central, 0, 4);  // external attributes
+    le(central, offset, 4);
+    central += name;
+  }
+  const std::size_t central_offset = out.size();
+  out += central;
+  le(out, 0x06054b50, 4);
+  le(out, 0, 2);
+  le(out, 0, 2);
+  le(out, members.size(), 2);
+  le(out, members.size(), 2);
+  le(out, central.size(), 4);
+  le(out, central_offset, 4);
+  le(out, 0, 2);  // comment
+  return out;
+}
+
+void ReadH3wbNpz(std::span<const std::uint8_t> bytes) {
+  const std::string text = Text(bytes);
+  const std::size_t split = text.find("\x93NUMPY", 1);
+  std::vector<std::pair<std::string, std::string>> members = {{"train_data.npy", text.substr(0, split)}};
+  if (split != std::string::npos) members.emplace_back("metadata.npy", text.substr(split));
+  const fs::path path = WriteScratch("h3wb_npz/h3wb_train.npz", StoredZip(members));
+  ReadH3wb(DatasetRequest{"h3wb", path, {{"subjects", "S8"}, {"detections", "annotations"}}});
+}
+
+// H3WB json: the input as 2Dto3D_train.json next to the fixed metadata.xml above; subject S8,
+// the stored 2D read too.
+void ReadH3wbJson(std::span<const std::uint8_t> bytes) {
+  const fs::path root = ScratchDir() / "h3wb_json";
+  fs::remove_all(root);
+  WriteScratch("h3wb_json/metadata.xml", H36mMetadataXmlText());
+  WriteScratch("h3wb_json/2Dto3D_train.json", bytes);
+  ReadH3wb(DatasetRequest{"h3wb", root,
+                          {{"file", "2Dto3D_train.json"}, {"cameras_file", "metadata.xml"}, {"subjects", "S8"}, {"detections", "annotations"}}});
+}
 
 void ReadPanopticWith(const std::string& calibration, const std::string& bodies) {
   const fs::path root = ScratchDir() / "panoptic";
@@ -190,6 +418,21 @@ std::vector<FuzzTarget> MakeTargets() {
        }},
       {"h36m_metadata_xml", "Human3.6M metadata.xml cameras",
        [](B b) { ReadHuman36mCameras(WriteScratch("metadata.xml", b), "S1", DistortionModel::kOpenCV, nullptr); }},
+      {"h3wb_json", "H3WB 2Dto3D_*.json / RGBto3D_*.json (cameras from a fixed metadata.xml)", ReadH3wbJson},
+      {"h3wb_npz", "H3WB h3wb_train.npz new format: its members train_data.npy then metadata.npy (the target stores them into the npz)",
+       ReadH3wbNpz},
+      {"egohumans_cameras", "EgoHumans colmap/workplace/cameras.txt (exo cameras: size, model, naming by image)",
+       [](B b) { ReadEgohumansWith(EgoFile::kCameras, b); }},
+      {"egohumans_images", "EgoHumans colmap/workplace/images.txt (exo poses: camXX/<time stamp>.jpg nearest the GT)",
+       [](B b) { ReadEgohumansWith(EgoFile::kImages, b); }},
+      {"egohumans_transforms", "EgoHumans colmap_from_aria_transforms.pkl (aria -> COLMAP similarities)",
+       [](B b) { ReadEgohumansWith(EgoFile::kTransforms, b); }},
+      {"egohumans_camera_npy", "EgoHumans manual exo calibration camXX.npy (4x4 COLMAP -> camera)",
+       [](B b) { ReadEgohumansWith(EgoFile::kManualCamera, b); }},
+      {"egohumans_gt", "EgoHumans processed_data/poses3d/<time stamp>.npy (aria name -> (17, 4))",
+       [](B b) { ReadEgohumansWith(EgoFile::kGt, b); }},
+      {"egohumans_poses2d", "EgoHumans 2D cache processed_data/poses2d/<cam>/rgb/<time stamp>.npy (list of dicts, keypoints (133, 3))",
+       [](B b) { ReadEgohumansWith(EgoFile::kPoses2d, b); }},
   };
 }
 

@@ -35,4 +35,12 @@ bool RunFuzzTarget(const FuzzTarget& target, std::span<const std::uint8_t> bytes
 std::string PanopticCalibrationText();
 std::string PanopticBodiesText();
 
+// The fixed companion of the h3wb_json target: a Human3.6M metadata.xml (its cameras differ per
+// subject, so the views of a frame agree for one subject only).
+std::string H36mMetadataXmlText();
+// The fixed COLMAP files of the EgoHumans targets (each target fuzzes one file of the sequence and
+// keeps the others): exo cameras cam01 (fisheye) and cam02 (pinhole) and an Aria camera.
+std::string EgohumansCamerasText();
+std::string EgohumansImagesText();
+
 }  // namespace rpt::fuzz

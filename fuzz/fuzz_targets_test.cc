@@ -10,7 +10,10 @@
 #include <algorithm>
 #include <initializer_list>
 #include <set>
+#include <sstream>
 
+#include "core/errors.h"
+#include "datasets/readers/colmap_text.h"
 #include "fuzz/fuzz_seeds.h"
 
 namespace rpt::fuzz {
@@ -91,6 +94,62 @@ TEST(FuzzRegressions, Hdf5CutAndFlippedSeedsEndInInputErrorsOnly) {
   long runs = 0, refused = 0;
   CheckCutAndFlippedSeeds(*FindFuzzTarget("hdf5"), &runs, &refused);
   EXPECT_GT(refused, runs / 2);
+}
+
+// Found by review while adding the egohumans_images target: an exo camera whose only image is
+// cam01/-2147483648.jpg made ReadEgohumans read through a null pointer (the time-stamp distance
+// overflowed int and no image was taken as the nearest). Time stamps count from 1: a negative one
+// is refused naming images.txt and the line.
+TEST(FuzzRegressions, EgohumansNegativeImageTimeStampIsAnInputError) {
+  const std::string images = "1 0.7071068 -0.7071068 0 0 0.2 1.5 4 1 cam01/-2147483648.jpg\n\n"
+                             "3 0.5 -0.5 0.5 -0.5 -0.3 1.4 4.2 2 cam02/00003.jpg\n\n";
+  std::string message;
+  try {
+    FindFuzzTarget("egohumans_images")->read(Bytes(images.begin(), images.end()));
+  } catch (const InputError& e) {
+    message = e.what();
+  }
+  EXPECT_THAT(message, ::testing::HasSubstr("images.txt:1: image name 'cam01/-2147483648.jpg' is not <camera>/<time stamp>.jpg"));
+}
+
+// Found by review while adding the h3wb_npz target: a frame_id of 9223372036854775807 (int64) is
+// 2^63 as a double, and its conversion back to long long was undefined behaviour (here it gave the
+// frame id "h3wb_S8_Directions-1_-000000" at -1.8e17 s). Frame ids beyond 2^53 are refused, naming
+// the key.
+TEST(FuzzRegressions, H3wbNpzFrameIdBeyondTwoToThe53IsAnInputError) {
+  Bytes bytes = Seeds().at("h3wb_npz").front().second;
+  // The seed's frame_id array (int64 7) as pickled: SHORT_BINBYTES of 8 bytes.
+  const Bytes seven = {'C', 8, 7, 0, 0, 0, 0, 0, 0, 0};
+  const auto at = std::search(bytes.begin(), bytes.end(), seven.begin(), seven.end());
+  ASSERT_NE(at, bytes.end());
+  ASSERT_EQ(std::search(at + 1, bytes.end(), seven.begin(), seven.end()), bytes.end());
+  std::fill(at + 2, at + 9, 0xff);
+  at[9] = 0x7f;
+  std::string message;
+  try {
+    FindFuzzTarget("h3wb_npz")->read(bytes);
+  } catch (const InputError& e) {
+    message = e.what();
+  }
+  EXPECT_THAT(message, ::testing::HasSubstr("h3wb_train.npz[train_data.npy]: key 'S8'['Directions 1'].frame_id: element 0 is "
+                                            "9.2233720368547758e+18, out of range (|frame_id| <= 2^53)"));
+}
+
+// Found by random mutations of the egohumans_images seed (the colmap_images target reaches it too):
+// an image line whose CAMERA_ID and NAME were separated by a form feed made ParseColmapImagesText
+// throw std::out_of_range. The fields were split at any white space, the NAME looked for after
+// spaces and tabs only; both use the same white space now.
+TEST(FuzzRegressions, ColmapImageNameAfterAFormFeedIsRead) {
+  const std::string text = "4\v1 0 0 0 0 0 0 3\faria01/00001.jpg\f\n\n";
+  bool accepted = false;
+  EXPECT_NO_THROW(accepted = RunFuzzTarget(*FindFuzzTarget("colmap_images"), Bytes(text.begin(), text.end())));
+  EXPECT_TRUE(accepted);
+  std::istringstream in(text);
+  const std::vector<ColmapImage> images = ParseColmapImagesText(in, "images.txt");
+  ASSERT_EQ(images.size(), 1u);
+  EXPECT_EQ(images[0].image_id, 4);
+  EXPECT_EQ(images[0].camera_id, 3);
+  EXPECT_EQ(images[0].name, "aria01/00001.jpg");
 }
 
 }  // namespace

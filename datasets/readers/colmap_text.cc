@@ -14,6 +14,10 @@
 namespace rpt {
 namespace {
 
+// White space as the tokens are split (std::isspace in the classic locale); the NAME of an image
+// line is found after the same characters, so the two cannot disagree on where fields end.
+constexpr const char* kSpace = " \t\n\v\f\r";
+
 // Whitespace-separated tokens of a line.
 std::vector<std::string> Tokens(const std::string& line) {
   std::vector<std::string> out;
@@ -25,9 +29,9 @@ std::vector<std::string> Tokens(const std::string& line) {
 }
 
 std::string Trim(const std::string& line) {
-  const std::size_t first = line.find_first_not_of(" \t\r\n");
+  const std::size_t first = line.find_first_not_of(kSpace);
   if (first == std::string::npos) return {};
-  const std::size_t last = line.find_last_not_of(" \t\r\n");
+  const std::size_t last = line.find_last_not_of(kSpace);
   return line.substr(first, last - first + 1);
 }
 
@@ -128,8 +132,8 @@ std::vector<ColmapImage> ParseColmapImagesText(std::istream& in, const std::stri
     // NAME is the rest of the line (COLMAP allows spaces in image names).
     std::size_t pos = 0;
     for (int i = 0; i < 9; ++i) {
-      pos = line.find_first_not_of(" \t", pos);
-      pos = line.find_first_of(" \t", pos);
+      pos = line.find_first_not_of(kSpace, pos);
+      pos = line.find_first_of(kSpace, pos);
     }
     image.name = Trim(line.substr(pos));
     image.qvec_wxyz = AcceptQuaternion(image.qvec_wxyz, source, where, warnings);

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <limits>
 #include <map>
@@ -112,11 +113,12 @@ std::vector<SequenceDir> FindSequences(const Options& options) {
   return out;
 }
 
-// Time stamp from "camXX/00017.jpg" or "00017.npy" (the digits of the file stem).
+// Time stamp from "camXX/00017.jpg" or "00017.npy" (the digits of the file stem); nullopt when the
+// stem is not a non-negative integer.
 std::optional<int> TimeStampOf(const std::string& file_name) {
   const std::string stem = fs::path(file_name).stem().string();
   int value = 0;
-  if (!io::ParseInteger(stem, &value)) return std::nullopt;
+  if (!io::ParseInteger(stem, &value) || value < 0) return std::nullopt;  // time stamps count from 1
   return value;
 }
 
@@ -187,7 +189,9 @@ std::vector<Camera> ReadExoCameras(const Options& options, const SequenceDir& di
       where = pose_file = PathName(manual);
     } else {
       const ColmapImage* best = nullptr;
-      int best_distance = std::numeric_limits<int>::max();
+      // In 64 bits: a distance of INT_MAX (GT time stamp 0, only cam01/2147483647.jpg; before the
+      // negative ones were refused, cam01/-2147483648.jpg overflowed) used to leave `best` unset.
+      long long best_distance = std::numeric_limits<long long>::max();
       for (const ColmapImage& image : images) {
         if (image.name.substr(0, image.name.find('/')) != name) continue;
         const auto stamp = TimeStampOf(image.name);
@@ -195,7 +199,7 @@ std::vector<Camera> ReadExoCameras(const Options& options, const SequenceDir& di
           throw InputError(PathName(images_path) + ":" + std::to_string(image.line) + ": image name '" + image.name +
                            "' is not <camera>/<time stamp>.jpg");
         }
-        const int distance = std::abs(*stamp - reference_time_stamp);
+        const long long distance = std::llabs(static_cast<long long>(*stamp) - reference_time_stamp);
         if (distance < best_distance) best = &image, best_distance = distance;
       }
       cam_from_colmap.topLeftCorner<3, 3>() = ColmapQuaternionToRotation(best->qvec_wxyz);

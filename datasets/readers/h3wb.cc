@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <limits>
 #include <map>
 #include <optional>
@@ -116,6 +117,9 @@ std::string FrameId(const Clip& clip, long long number) {
 // ---------------------------------------------------------------------------------------
 // npz "new format"
 
+// Largest |frame_id| taken: 2^53 (up to it a double holds every integer exactly).
+constexpr double kMaxFrameId = 9007199254740992.0;
+
 // Values (row-major N x 133 x dims) of an array shaped (N, [1, ...,] 133, dims).
 std::vector<double> PoseArray(const io::PyView& view, std::int64_t expected_rows, std::int64_t dims, std::int64_t* rows) {
   const auto shape = view.Shape();
@@ -201,6 +205,13 @@ std::vector<Clip> ReadNpzClips(const Options& options, bool want_2d) {
       for (std::size_t i = 0; i < order.size(); ++i) {
         if (frame_ids[i] != std::floor(frame_ids[i])) {
           act.Key("frame_id").Fail("element " + std::to_string(i) + " is not an integer");
+        }
+        // Beyond 2^53 a double no longer holds every integer, and converting one beyond the range of
+        // long long (e.g. an int64 9223372036854775807 read as a double) is undefined behaviour.
+        if (std::abs(frame_ids[i]) > kMaxFrameId) {
+          std::ostringstream value;
+          value << std::setprecision(17) << frame_ids[i];
+          act.Key("frame_id").Fail("element " + std::to_string(i) + " is " + value.str() + ", out of range (|frame_id| <= 2^53)");
         }
         order[i] = i;
       }

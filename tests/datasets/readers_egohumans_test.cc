@@ -6,6 +6,8 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <fstream>
+#include <iterator>
 #include <map>
 
 #include "core/errors.h"
@@ -385,6 +387,28 @@ TEST(EgohumansReader, GroundTruthEntriesNotNamedByTimeStampAreCounted) {
   test::ExpectOneWarning(seq.warnings, gt_dir.string(),
                          "entries not named <time stamp>.npy ignored (e.g. '00009_old.npy')", 2);
   EXPECT_EQ(seq.warnings.items()[0].kind, InputWarningKind::kUnused);
+}
+
+// The exo pose comes from the camera's image nearest in time to the first GT time stamp. A GT time
+// stamp 0 and an only image cam02/2147483647.jpg are INT_MAX apart: that distance used to leave the
+// nearest image unset (a null pointer read); it is computed in 64 bits now.
+TEST(EgohumansReader, ImageTimeStampsAnIntApartFromTheGtStillGiveThePose) {
+  test::TempDir dir;
+  const fs::path seq = WriteTree(dir.path());
+  const fs::path gt_dir = seq / "processed_data" / "poses3d";
+  fs::copy_file(gt_dir / "00001.npy", gt_dir / "00000.npy");
+  const fs::path images = seq / "colmap" / "workplace" / "images.txt";
+  std::ifstream in(images);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t at = text.find("cam02/00003.jpg");
+  ASSERT_NE(at, std::string::npos);
+  test::WriteText(images, text.replace(at, 15, "cam02/2147483647.jpg"));
+  const Sequence sequence = ReadEgohumans(Request(dir.path(), {{"max_frames", "1"}}))[0];
+  ASSERT_EQ(sequence.frames.size(), 1u);
+  EXPECT_EQ(sequence.frames[0].id, "egohumans_01_tagging_001_tagging_00000");
+  ASSERT_EQ(sequence.cameras.size(), 3u);
+  EXPECT_EQ(sequence.cameras[1].name, "cam02");
+  EXPECT_LT((sequence.cameras[1].Center() - Exos()[1].center).norm(), 1e-9);
 }
 
 TEST(EgohumansReader, MalformedInputsNameFileAndPlace) {
