@@ -9,3 +9,22 @@ function(rpt_set_compile_options target)
     target_compile_options(${target} PRIVATE -march=native)
   endif()
 endfunction()
+
+# Precompiled headers: the heavy third-party and standard headers most files of a target include
+# (Eigen, nlohmann/json, CLI11, GoogleTest), parsed once per target instead of once per file. A
+# file compiles in about half the CPU time with them (CONTRIBUTING.md); project headers are
+# never precompiled, so editing them rebuilds exactly what it did before. -DRPT_PRECOMPILED_HEADERS=OFF
+# turns them off (e.g. to check that every file includes what it uses).
+set(RPT_PCH_STD <algorithm> <array> <cmath> <cstdint> <cstdio> <filesystem> <functional> <limits> <map>
+    <memory> <optional> <span> <sstream> <stdexcept> <string> <string_view> <utility> <vector>)
+set(RPT_PCH_EIGEN <Eigen/Core> <Eigen/Geometry>)
+set(RPT_PCH_JSON <nlohmann/json.hpp>)
+set(RPT_PCH_TEST <gtest/gtest.h> <gmock/gmock.h>)
+set(RPT_PCH_CLI <CLI/CLI.hpp>)
+
+# rpt_precompile_headers(target HEADER...): precompiles HEADER... for the files of `target`.
+function(rpt_precompile_headers target)
+  if(RPT_PRECOMPILED_HEADERS)
+    target_precompile_headers(${target} PRIVATE ${ARGN})
+  endif()
+endfunction()
