@@ -5,19 +5,24 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/printable_text.h"
+
 namespace rpt {
 
 // Bad input data: missing file, malformed content, wrong shape, NaN, unknown name.
-// The message names the file and the place (line, key, dataset path) where possible.
+// The message names the file and the place (line, key, dataset path) where possible. Bytes of the
+// message that would not print (values quoted from a damaged file) are escaped as \xNN.
 class InputError : public std::runtime_error {
  public:
-  using std::runtime_error::runtime_error;
+  explicit InputError(const std::string& message) : std::runtime_error(PrintableText(message)) {}
+  explicit InputError(const char* message) : InputError(std::string(message)) {}
 };
 
 // Bad configuration: unknown option, out-of-range value, inconsistent settings.
 class ConfigError : public std::runtime_error {
  public:
-  using std::runtime_error::runtime_error;
+  explicit ConfigError(const std::string& message) : std::runtime_error(PrintableText(message)) {}
+  explicit ConfigError(const char* message) : ConfigError(std::string(message)) {}
 };
 
 }  // namespace rpt

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/errors.h"
+#include "core/printable_text.h"
 
 namespace rpt {
 
@@ -14,7 +15,7 @@ std::string InputWarning::Line() const {
   std::ostringstream s;
   s << source << ": " << count << " " << what;
   if (!measure.empty()) s << " (" << measure << " = " << worst << ")";
-  return s.str();
+  return PrintableText(s.str());
 }
 
 void InputWarnings::Add(const std::string& source, std::string_view what, std::string_view measure, double value) {
