@@ -18,6 +18,7 @@
 #include "cli/run_info.h"
 #include "core/errors.h"
 #include "datasets/io/inflate_budget.h"
+#include "datasets/readers/hdf5_cache.h"
 #include "git_revision.h"
 
 namespace {
@@ -66,6 +67,7 @@ void PrintOptionSuggestions(CLI::App& app) {
 
 int main(int argc, char** argv) {
   rpt::cli::InstallInterruptHandler();  // before any other thread starts
+  rpt::SkipHdf5CleanupAtExit();          // before any other HDF5 call
   CLI::App app{"rpt: RapidPoseTriangulation, learning-free multi-view multi-person 3D pose triangulation"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("rpt ") + RPT_VERSION + " (git " + RPT_GIT_REVISION + ")",

@@ -215,6 +215,20 @@ TEST(AtomicOutputs, InterruptedEvalRemovesItsTemporariesAndExits130) {
   fs::remove_all(root);
 }
 
+// An HDF5 write that fails (here at a file size limit of 32 KiB, SIGXFSZ ignored so that write()
+// fails with EFBIG) exits 2 naming the file and leaves neither it nor a temporary. HDF5 1.10
+// used to crash in its clean-up at exit after such a failure (signal 11 after the error message).
+TEST(AtomicOutputs, Hdf5WriteFailureExits2WithoutACrash) {
+  const fs::path root = test::TempDir("atomic_hdf5_write_failure");
+  const test::CommandResult r = test::RunRpt(
+      "convert --dataset synthetic --param frames=50 --out " + (root / "cache.h5").string(), "trap '' XFSZ; ulimit -f 64; ");
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("error: " + (root / "cache.h5").string()), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("write failed"), std::string::npos) << r.err;
+  EXPECT_TRUE(fs::is_empty(root));
+  fs::remove_all(root);
+}
+
 // A write failure (here a folder where predictions.json goes) exits 2 naming the file, and the
 // old run stays as it was.
 TEST(AtomicOutputs, WriteFailureExits2NamingTheFileAndKeepsTheOldRun) {
