@@ -173,7 +173,7 @@ void RunBench(const BenchArgs& args) {
     if (!args.json) std::fprintf(stderr, "benchmarking %s ...\n", scene.name.c_str());
     results.push_back(BenchScene(scene, args, config));
   }
-  const RunInfo info = CollectRunInfo(1, CurrentCommandLine());
+  const RunInfo info = CollectRunInfo(1);
   if (args.json) {
     Json j;
     j["run"] = RunInfoJson(info);

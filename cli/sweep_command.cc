@@ -259,7 +259,7 @@ void RunSweep(const SweepArgs& args) {
   Json file;
   file["total"] = all.size();
   file["shard"] = args.shard;
-  RunInfo info = CollectRunInfo(threads, CurrentCommandLine());
+  RunInfo info = CollectRunInfo(threads);
   info.input_warnings = InputWarningLines(warnings);
   file["run"] = RunInfoJson(info);
   file["base"] = base;
