@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
-#include <unistd.h>
 #include <cstdio>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -23,6 +22,7 @@
 #include "core/pipeline/room_check.h"
 #include "core/pipeline/triangulator.h"
 #include "datasets/detections.h"
+#include "datasets/io/staged_output.h"
 #include "datasets/readers/hdf5_cache.h"
 #include "datasets/synthetic/detector_options.h"
 #include "metrics/accumulator.h"
@@ -107,8 +107,9 @@ void RunIoBench(const BenchArgs& args) {
     for (const Poses2D& v : source.views) persons += v.num_persons();
     detections.frames.push_back(std::move(frame));
   }
-  const std::filesystem::path path =
-      std::filesystem::temp_directory_path() / ("rpt_bench_io_" + std::to_string(::getpid()) + ".h5");
+  // Removed on every way out: return, exception (the destructor) and Ctrl-C (the interrupt handler).
+  const io::ScratchFile scratch(std::filesystem::temp_directory_path() / "rpt_bench_io.h5");
+  const std::filesystem::path& path = scratch.path();
   const auto write_start = std::chrono::steady_clock::now();
   WriteDetectionsHdf5(path, detections);
   const double write_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - write_start).count();
@@ -121,7 +122,6 @@ void RunIoBench(const BenchArgs& args) {
     frames_read = loaded.frames.size();
   }
   const auto size = std::filesystem::file_size(path);
-  std::filesystem::remove(path);
   if (frames_read != detections.frames.size()) throw InputError(path.string() + ": read back a different frame count");
   const double read_s = metrics::Median(reads);
   if (args.json) {
@@ -173,7 +173,7 @@ void RunBench(const BenchArgs& args) {
     if (!args.json) std::fprintf(stderr, "benchmarking %s ...\n", scene.name.c_str());
     results.push_back(BenchScene(scene, args, config));
   }
-  const RunInfo info = CollectRunInfo(1, CurrentCommandLine());
+  const RunInfo info = CollectRunInfo(1);
   if (args.json) {
     Json j;
     j["run"] = RunInfoJson(info);

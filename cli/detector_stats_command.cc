@@ -22,6 +22,7 @@
 #include "cli/load_input.h"
 #include "core/errors.h"
 #include "core/text.h"
+#include "datasets/detections.h"
 #include "datasets/detector_stats/statistics.h"
 #include "datasets/synthetic/detector_options.h"
 
@@ -92,13 +93,15 @@ void RunComparison(const DetectorStatsArgs& args) {
   columns.push_back({InputColumnName(args.input), ComputeStats(sequences, args)});
   inputs.push_back(args.input);
   for (const std::string& profile : args.compare) {
-    std::vector<Sequence> simulated = sequences;  // same GT and cameras
-    SimulateInputDetections(profile, args.input.seed, &simulated);
-    columns.push_back({profile, ComputeStats(simulated, args)});
+    // The input as `--simulate --detector PROFILE` would give it (--simulate-perfect is refused
+    // above): simulated and described from the same options.
     InputArgs described = args.input;
     described.simulate = true;
     described.detector = profile;
     described.detections.clear();
+    std::vector<Sequence> simulated = sequences;  // same GT and cameras
+    for (Sequence& s : simulated) SimulateDetections(SimulationOf(described), &s);
+    columns.push_back({profile, ComputeStats(simulated, args)});
     inputs.push_back(described);
   }
   if (args.json) {

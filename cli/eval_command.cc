@@ -48,7 +48,7 @@ void RunEval(const EvalArgs& args) {
   warnings.Merge(streamed.warnings);
   const RunResult& run = streamed.run;
   const std::vector<Sequence>& sequences = streamed.sequences;
-  RunInfo info = CollectRunInfo(run.threads, CurrentCommandLine());
+  RunInfo info = CollectRunInfo(run.threads);
   info.input_warnings = InputWarningLines(warnings);
   const std::string out_dir =
       !args.out.empty() ? args.out : "out/eval-" + (args.input.dataset.empty() ? "labels" : args.input.dataset);

@@ -72,14 +72,14 @@ std::string NoDetectionsMessage(const std::string& sequence) {
          "(e.g. --param detections=voxelpose)";
 }
 
+}  // namespace
+
 SimulationOptions SimulationOf(const InputArgs& args) {
   SimulationOptions simulation;
   simulation.seed = args.seed;
   simulation.detector = args.simulate_perfect ? "perfect" : args.detector.empty() ? "realistic" : args.detector;
   return simulation;
 }
-
-}  // namespace
 
 std::vector<Sequence> LoadInput(const InputArgs& args, bool require_detections, InputWarnings* warnings) {
   CheckInputArgs(args);
@@ -149,13 +149,6 @@ std::vector<std::unique_ptr<FrameSource>> OpenInput(const InputArgs& args, bool 
   // rest is known once they are exhausted: the consumer checks their warnings again then.
   for (const auto& source : sources) CheckStrict(args.strict, source->warnings());
   return sources;
-}
-
-void SimulateInputDetections(const std::string& profile, uint64_t seed, std::vector<Sequence>* sequences) {
-  SimulationOptions simulation;
-  simulation.seed = seed;
-  simulation.detector = profile;
-  for (Sequence& s : *sequences) SimulateDetections(simulation, &s);
 }
 
 void CheckStrict(bool strict, const InputWarnings& warnings) {

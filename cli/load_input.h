@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "datasets/detections.h"
 #include "datasets/frame_source.h"
 #include "datasets/sequence.h"
 
@@ -45,10 +46,10 @@ std::vector<Sequence> LoadInput(const InputArgs& args, bool require_detections, 
 std::vector<std::unique_ptr<FrameSource>> OpenInput(const InputArgs& args, bool require_detections,
                                                     InputWarnings* warnings);
 
-// Replaces the 2D detections (and the 2D labels) of every sequence by those of the simulated
-// detector `profile` (synthetic::DetectorProfileNames()), drawn from its GT and cameras: what
-// LoadInput does for --simulate --detector PROFILE --seed SEED.
-void SimulateInputDetections(const std::string& profile, uint64_t seed, std::vector<Sequence>* sequences);
+// The simulated detector of the input options: --detector PROFILE (--simulate-perfect: "perfect";
+// neither: "realistic") with --seed. LoadInput and OpenInput simulate --simulate with it
+// (SimulateDetections, SimulatedDetectionsSource); so does detector-stats --compare, per profile.
+SimulationOptions SimulationOf(const InputArgs& args);
 
 // With `strict` (--strict), throws InputError listing every entry of `warnings` that reports
 // unused input (InputWarningKind::kUnused), one "warning: <line>" per line; corrections within

@@ -18,6 +18,7 @@
 #include "cli/run_info.h"
 #include "core/errors.h"
 #include "datasets/io/inflate_budget.h"
+#include "datasets/readers/hdf5_cache.h"
 #include "git_revision.h"
 
 namespace {
@@ -66,6 +67,7 @@ void PrintOptionSuggestions(CLI::App& app) {
 
 int main(int argc, char** argv) {
   rpt::cli::InstallInterruptHandler();  // before any other thread starts
+  rpt::SkipHdf5CleanupAtExit();          // before any other HDF5 call
   CLI::App app{"rpt: RapidPoseTriangulation, learning-free multi-view multi-person 3D pose triangulation"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("rpt ") + RPT_VERSION + " (git " + RPT_GIT_REVISION + ")",
@@ -77,7 +79,7 @@ int main(int argc, char** argv) {
          "limit on the data decompressed from one input file (MAT, NPZ, compressed HDF5), in MiB "
          "(default: 64 x the file size, at least 64, at most 4096)")
       ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 24));
-  rpt::cli::SetCommandLine(rpt::cli::CommandLine(argc, argv));
+  rpt::cli::SetCommand(argc, argv);
   rpt::cli::RegisterDemoCommand(app);
   rpt::cli::RegisterEvalCommand(app);
   rpt::cli::RegisterInspectCommand(app);

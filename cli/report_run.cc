@@ -90,8 +90,25 @@ RecordedPredictions ReadPredictions(const std::filesystem::path& path) {
   return out;
 }
 
-// The recorded command line split into words (eval writes it joined by single spaces).
-std::vector<std::string> RecordedWords(const RunFolder& run) {
+// The recorded command's words: "argv" (the argument vector) when run.json has it, else "command"
+// split at spaces (run.json files written before "argv": a path with a space is cut there). An
+// "argv" that is not a list of strings gives no words and says why in *problem.
+std::vector<std::string> RecordedWords(const RunFolder& run, std::string* problem = nullptr) {
+  const auto argv = run.run_info.find("argv");
+  if (argv != run.run_info.end()) {
+    std::vector<std::string> words;
+    for (size_t i = 0; argv->is_array() && i < argv->size(); ++i) {
+      if (!(*argv)[i].is_string()) break;
+      words.push_back((*argv)[i].get<std::string>());
+    }
+    if (argv->is_array() && words.size() == argv->size()) return words;
+    if (problem) {
+      *problem = (run.dir / "run.json").string() + ": /argv: expected a list of strings, got " +
+                 (argv->is_array() ? "a list holding a " + std::string((*argv)[words.size()].type_name())
+                                   : std::string(argv->type_name()));
+    }
+    return {};
+  }
   const auto it = run.run_info.find("command");
   if (it == run.run_info.end() || !it->is_string()) return {};
   std::vector<std::string> words;
@@ -127,7 +144,12 @@ std::string RecordedDataset(const RunFolder& run) {
 }
 
 std::optional<std::vector<Sequence>> ReloadRecordedInput(const RunFolder& run, std::string* why) {
-  const std::vector<std::string> words = RecordedWords(run);
+  std::string problem;
+  const std::vector<std::string> words = RecordedWords(run, &problem);
+  if (!problem.empty()) {
+    *why = problem;
+    return std::nullopt;
+  }
   if (words.size() < 2 || words[1] != "eval") {
     *why = "run.json does not record an `rpt eval` command";
     return std::nullopt;

@@ -40,7 +40,8 @@ RunFolder ReadRunFolder(const std::filesystem::path& dir);
 std::string RecordedDataset(const RunFolder& run);
 
 // Re-loads the input of the recorded `rpt eval` command (its input options only; the configuration
-// is the recorded config.json) with LoadInput. When it cannot (not an eval command, files moved),
+// is the recorded config.json) with LoadInput. The command is run.json's "argv" (the argument
+// vector: paths with spaces stay whole), or for older run.json files "command" split at spaces. When it cannot (not an eval command, files moved),
 // returns nullopt and sets *why to a one-line reason.
 std::optional<std::vector<Sequence>> ReloadRecordedInput(const RunFolder& run, std::string* why);
 

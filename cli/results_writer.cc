@@ -283,6 +283,7 @@ Json RunInfoJson(const RunInfo& info) {
   j["git_revision"] = info.git_revision;
   j["date_utc"] = info.date_utc;
   j["command"] = info.command_line;
+  j["argv"] = info.command_args;
   j["cpu"] = info.cpu;
   j["hardware_threads"] = info.hardware_threads;
   j["threads"] = info.threads;

@@ -61,8 +61,9 @@ void WriteEvalOutputs(const std::filesystem::path& dir, const std::vector<Sequen
                       const Config& config, const RunInfo& info,
                       const nlohmann::ordered_json& extra_summary = nlohmann::ordered_json::object());
 
-// run.json: run id, git revision, date, command, machine, threads, build, and "input_warnings" (the
-// readers' correction lines, [] when none).
+// run.json: run id, git revision, date, command ("command": one line for people; "argv": the
+// argument vector, which keeps paths with spaces whole), machine, threads, build, and
+// "input_warnings" (the readers' correction lines, [] when none).
 nlohmann::ordered_json RunInfoJson(const RunInfo& info);
 
 }  // namespace rpt::cli

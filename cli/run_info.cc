@@ -26,14 +26,19 @@ std::string CpuModel() {
   return "unknown";
 }
 
-std::string& StoredCommandLine() {
-  static std::string command_line;
-  return command_line;
+struct StoredCommand {
+  std::string line;
+  std::vector<std::string> args;
+};
+
+StoredCommand& Stored() {
+  static StoredCommand command;
+  return command;
 }
 
 }  // namespace
 
-RunInfo CollectRunInfo(int threads, const std::string& command_line) {
+RunInfo CollectRunInfo(int threads) {
   RunInfo info;
   info.git_revision = RPT_GIT_REVISION;
   info.cpu = CpuModel();
@@ -45,7 +50,8 @@ RunInfo CollectRunInfo(int threads, const std::string& command_line) {
   info.compiler = "g++ " __VERSION__;
 #endif
   info.build_type = RPT_BUILD_TYPE;
-  info.command_line = command_line;
+  info.command_line = CurrentCommandLine();
+  info.command_args = CurrentCommandArgs();
   char date[32];
   const std::time_t now = std::time(nullptr);
   std::strftime(date, sizeof(date), "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
@@ -64,7 +70,12 @@ std::string CommandLine(int argc, char** argv) {
   return out;
 }
 
-void SetCommandLine(const std::string& command_line) { StoredCommandLine() = command_line; }
-const std::string& CurrentCommandLine() { return StoredCommandLine(); }
+void SetCommand(int argc, char** argv) {
+  Stored().line = CommandLine(argc, argv);
+  Stored().args = {"rpt"};
+  for (int i = 1; i < argc; ++i) Stored().args.emplace_back(argv[i]);
+}
+const std::string& CurrentCommandLine() { return Stored().line; }
+const std::vector<std::string>& CurrentCommandArgs() { return Stored().args; }
 
 }  // namespace rpt::cli

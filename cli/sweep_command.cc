@@ -4,11 +4,14 @@
 // (sweep.html: cli/sweep_html.h).
 // `--shard k/N` runs every N-th configuration starting at k (1-based) so a sweep can be split
 // across machines; `rpt merge` joins the shard files (docs/sweeps.md shows a Slurm array job).
+#include <algorithm>
 #include <atomic>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <mutex>
 #include <optional>
@@ -57,19 +60,32 @@ struct SweepArgs {
 };
 
 
+// The --list file: a list of {"name", "set"} or {"configurations": [...]}; every wrong type is an
+// InputError naming the file and the JSON pointer.
 std::vector<Variant> ReadList(const std::string& path) {
   const nlohmann::json root = io::LoadJsonFile(path);
-  const nlohmann::json& items = root.is_object() ? root.value("configurations", nlohmann::json()) : root;
-  if (!items.is_array()) throw InputError(path + ": expected a list or {\"configurations\": [...]}");
+  const std::string list_pointer = root.is_object() ? "/configurations" : "";
+  const nlohmann::json* items = io::JsonFind(root, list_pointer);
+  if (!items || !items->is_array()) {
+    throw InputError(path + ": " + (list_pointer.empty() ? "/" : list_pointer) +
+                     ": expected a list of {\"name\", \"set\"} or {\"configurations\": [...]}, got " +
+                     (items ? items->type_name() : "nothing"));
+  }
   std::vector<Variant> variants;
-  for (size_t i = 0; i < items.size(); ++i) {
-    const std::string where = path + ": /configurations/" + std::to_string(i);
-    if (!items[i].is_object()) throw InputError(where + ": expected {\"name\", \"set\"}");
+  for (size_t i = 0; i < items->size(); ++i) {
+    const std::string pointer = io::JsonPointerJoin(list_pointer, i);
+    const nlohmann::json& item = (*items)[i];
+    if (!item.is_object()) {
+      throw InputError(path + ": " + pointer + ": expected {\"name\", \"set\"}, got " + item.type_name());
+    }
     Variant v;
-    v.name = items[i].value("name", "config " + std::to_string(i));
-    const nlohmann::json set = items[i].value("set", nlohmann::json::object());  // items() must not outlive it
-    for (const auto& [key, value] : set.items()) {
-      v.overrides.emplace_back(key, JsonValueText(value));
+    v.name = item.contains("name") ? io::JsonString(root, pointer + "/name", path) : "config " + std::to_string(i);
+    if (item.contains("set")) {
+      const nlohmann::json& set = item["set"];
+      if (!set.is_object()) {
+        throw InputError(path + ": " + pointer + "/set: expected an object {option: value}, got " + set.type_name());
+      }
+      for (const auto& [key, value] : set.items()) v.overrides.emplace_back(key, JsonValueText(value));
     }
     variants.push_back(v);
   }
@@ -243,7 +259,7 @@ void RunSweep(const SweepArgs& args) {
   Json file;
   file["total"] = all.size();
   file["shard"] = args.shard;
-  RunInfo info = CollectRunInfo(threads, CurrentCommandLine());
+  RunInfo info = CollectRunInfo(threads);
   info.input_warnings = InputWarningLines(warnings);
   file["run"] = RunInfoJson(info);
   file["base"] = base;
@@ -259,31 +275,85 @@ void RunSweep(const SweepArgs& args) {
               stem.c_str());
 }
 
+[[noreturn]] void FailAt(const std::string& source, const std::string& pointer, const std::string& what) {
+  throw InputError(source + ": " + pointer + ": " + what);
+}
+
+// The value at `pointer` when it is an object, else an InputError naming file and pointer.
+const nlohmann::json& ObjectAt(const nlohmann::json& root, const std::string& pointer, const std::string& source,
+                               const std::string& what) {
+  const nlohmann::json& j = io::JsonAt(root, pointer, source);
+  if (!j.is_object()) FailAt(source, pointer, "expected " + what + ", got " + j.type_name());
+  return j;
+}
+
+// A row of a shard file, checked field by field as the tables and sweep.html read it: index in
+// [0, total), name, set (optional object), default (optional boolean), summary (an object whose
+// table columns are numbers or null). A damaged or hand-edited file is an InputError naming the
+// file and the JSON pointer, not an "internal error" from deep inside nlohmann.
+Json CheckedShardRow(const nlohmann::json& shard, const std::string& pointer, const std::string& source,
+                     std::int64_t total, int* index) {
+  ObjectAt(shard, pointer, source, "a row {\"index\", \"name\", \"set\", \"summary\"}");
+  *index = static_cast<int>(io::JsonIntIn(shard, pointer + "/index", source, 0, total - 1));
+  io::JsonString(shard, pointer + "/name", source);
+  if (io::JsonFind(shard, pointer + "/set")) ObjectAt(shard, pointer + "/set", source, "an object {option: value}");
+  if (io::JsonFind(shard, pointer + "/default")) io::JsonBool(shard, pointer + "/default", source);
+  const nlohmann::json& summary = ObjectAt(shard, pointer + "/summary", source, "an object of metrics");
+  for (const auto& [key, value] : summary.items()) {
+    const bool column = key.rfind("legacy_pcp", 0) == 0 ||
+                        std::any_of(SummaryColumns().begin(), SummaryColumns().end(),
+                                    [&key = key](const SummaryColumn& c) { return c.key == key; });
+    if (column && !value.is_number() && !value.is_null()) {
+      FailAt(source, io::JsonPointerJoin(pointer + "/summary", key),
+             std::string("expected a number or null, got ") + value.type_name());
+    }
+  }
+  return Json::parse(io::JsonAt(shard, pointer, source).dump());
+}
+
 void RunMerge(const std::vector<std::string>& inputs, const std::string& out) {
   std::map<int, Json> by_index;
   Json base = Json::object();
-  size_t total = 0;
+  std::int64_t total = -1;
   for (const std::string& path : inputs) {
     const nlohmann::json shard = io::LoadJsonFile(path);
-    if (!shard.contains("rows") || !shard.contains("total")) throw InputError(path + ": not a sweep shard file");
-    if (total != 0 && shard["total"].get<size_t>() != total) {
-      throw InputError(path + ": belongs to a sweep of " + std::to_string(shard["total"].get<size_t>()) +
+    if (!shard.is_object() || !shard.contains("rows") || !shard.contains("total")) {
+      throw InputError(path + ": not a sweep shard file (expected an object with \"total\" and \"rows\")");
+    }
+    // Configuration indices are ints; the bound also keeps the check for missing ones short.
+    const std::int64_t shard_total = io::JsonIntIn(shard, "/total", path, 0, std::numeric_limits<int>::max());
+    if (total >= 0 && shard_total != total) {
+      throw InputError(path + ": belongs to a sweep of " + std::to_string(shard_total) +
                        " configurations, the others to " + std::to_string(total));
     }
-    total = shard["total"].get<size_t>();
-    if (shard.contains("base")) base.update(Json::parse(shard["base"].dump()));
-    for (const auto& row : shard["rows"]) {
-      const int index = row["index"].get<int>();
-      if (!by_index.emplace(index, Json::parse(row.dump())).second) {
+    total = shard_total;
+    if (shard.contains("base")) {
+      base.update(Json::parse(ObjectAt(shard, "/base", path, "an object {option: base value}").dump()));
+    }
+    const nlohmann::json& rows = io::JsonAt(shard, "/rows", path);
+    if (!rows.is_array()) FailAt(path, "/rows", std::string("expected a list of rows, got ") + rows.type_name());
+    for (size_t i = 0; i < rows.size(); ++i) {
+      int index = 0;
+      Json row = CheckedShardRow(shard, io::JsonPointerJoin("/rows", i), path, total, &index);
+      if (!by_index.emplace(index, std::move(row)).second) {
         throw InputError(path + ": configuration " + std::to_string(index) + " appears in two shard files");
       }
     }
   }
-  std::string missing;
-  for (size_t i = 0; i < total; ++i) {
-    if (!by_index.count(static_cast<int>(i))) AppendItem(&missing, std::to_string(i));
+  // Every index is in [0, total): the missing ones are total - found; the first 20 are named.
+  const std::int64_t missing_count = total - static_cast<std::int64_t>(by_index.size());
+  if (missing_count > 0) {
+    std::string missing;
+    int named = 0;
+    for (int i = 0; i < total && named < 20; ++i) {
+      if (!by_index.count(i)) {
+        AppendItem(&missing, std::to_string(i));
+        ++named;
+      }
+    }
+    if (missing_count > named) missing += ", ... (" + std::to_string(missing_count) + " in all)";
+    throw InputError("merge: configurations missing (shard files absent?): " + missing);
   }
-  if (!missing.empty()) throw InputError("merge: configurations missing (shard files absent?): " + missing);
   Json rows = Json::array();
   for (auto& [index, row] : by_index) rows.push_back(row);
   Json file;
@@ -292,7 +362,7 @@ void RunMerge(const std::vector<std::string>& inputs, const std::string& out) {
   file["base"] = base;
   file["rows"] = rows;
   WriteSweepFiles(out, file, "sweep", /*whole_folder=*/true);
-  std::printf("merged %zu configurations from %zu shard files into %s/sweep.{json,csv,md,html}\n", total, inputs.size(),
+  std::printf("merged %zu configurations from %zu shard files into %s/sweep.{json,csv,md,html}\n", by_index.size(), inputs.size(),
               out.c_str());
 }
 

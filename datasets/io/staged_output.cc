@@ -77,6 +77,29 @@ bool ExchangePaths(const fs::path& a, const fs::path& b) {
 #endif
 }
 
+// Creates `<target>.tmp-<pid>-<n>` (a name not yet taken), registers it, stores its name in
+// `created` and returns it open for writing; throws InputError naming `target` when it cannot.
+int CreateRegisteredFile(const fs::path& target, fs::path* created) {
+  Registry& registry = TheRegistry();
+  std::lock_guard<std::mutex> lock(registry.mutex);
+  for (;;) {
+    *created = NextTemporaryName(registry, target);
+    const int fd = ::open(created->c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd < 0 && errno == EEXIST) continue;
+    if (fd < 0) throw InputError(target.string() + ": cannot open for writing (" + ErrnoText() + ")");
+    registry.paths.push_back(*created);
+    return fd;
+  }
+}
+
+void RemoveRegisteredFile(const fs::path& path) {
+  Registry& registry = TheRegistry();
+  std::lock_guard<std::mutex> lock(registry.mutex);
+  std::error_code ec;
+  fs::remove(path, ec);
+  Unregister(registry, path);
+}
+
 }  // namespace
 
 StagedFile::StagedFile(const fs::path& target) : target_(target) {
@@ -91,28 +114,14 @@ StagedFile::StagedFile(const fs::path& target) : target_(target) {
     temporary_ = target_;
     return;
   }
-  Registry& registry = TheRegistry();
-  std::lock_guard<std::mutex> lock(registry.mutex);
-  for (;;) {
-    temporary_ = NextTemporaryName(registry, target_);
-    const int fd = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-    if (fd < 0 && errno == EEXIST) continue;
-    if (fd < 0) throw InputError(target_.string() + ": cannot open for writing (" + ErrnoText() + ")");
-    if (fs::exists(status)) ::fchmod(fd, static_cast<mode_t>(status.permissions()) & 07777);  // keep the old mode
-    ::close(fd);
-    break;
-  }
-  registry.paths.push_back(temporary_);
+  const int fd = CreateRegisteredFile(target_, &temporary_);
+  if (fs::exists(status)) ::fchmod(fd, static_cast<mode_t>(status.permissions()) & 07777);  // keep the old mode
+  ::close(fd);
   pending_ = true;
 }
 
 StagedFile::~StagedFile() {
-  if (!pending_) return;
-  Registry& registry = TheRegistry();
-  std::lock_guard<std::mutex> lock(registry.mutex);
-  std::error_code ec;
-  fs::remove(temporary_, ec);
-  Unregister(registry, temporary_);
+  if (pending_) RemoveRegisteredFile(temporary_);
 }
 
 void StagedFile::Commit() {
@@ -225,6 +234,10 @@ std::string StagedFolder::NamedAsTarget(std::string message) const {
   }
   return message;
 }
+
+ScratchFile::ScratchFile(const fs::path& name_like) { ::close(CreateRegisteredFile(name_like, &path_)); }
+
+ScratchFile::~ScratchFile() { RemoveRegisteredFile(path_); }
 
 int RemoveTemporariesForExit() {
   Registry& registry = TheRegistry();

@@ -61,6 +61,23 @@ class StagedFolder {
   bool pending_ = false;
 };
 
+// A file the process writes for its own use and never keeps (rpt bench's HDF5 round trip): created
+// empty and registered as `<name_like>.tmp-<pid>-<n>` (so Ctrl-C removes it like the temporaries
+// above) and removed by the destructor on every other way out, an exception included.
+class ScratchFile {
+ public:
+  // Creates the (empty) file; throws InputError naming it when it cannot.
+  explicit ScratchFile(const std::filesystem::path& name_like);
+  ~ScratchFile();
+  ScratchFile(const ScratchFile&) = delete;
+  ScratchFile& operator=(const ScratchFile&) = delete;
+
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+};
+
 // Removes every registered temporary (files and folders) and returns how many it removed. Keeps
 // the registry locked for good, so no thread creates or commits a temporary afterwards: call it
 // only right before the process exits.

@@ -58,6 +58,8 @@ std::vector<long long> Shape(std::initializer_list<long long> dims) { return dim
 
 }  // namespace
 
+void SkipHdf5CleanupAtExit() { H5dont_atexit(); }
+
 // -----------------------------------------------------------------------------------------------
 // Detections
 

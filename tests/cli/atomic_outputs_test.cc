@@ -31,9 +31,11 @@ namespace fs = std::filesystem;
 using Json = nlohmann::json;
 using Clock = std::chrono::steady_clock;
 
-// Starts `rpt eval` on a synthetic scene of `frames` frames into `out` (output discarded).
-pid_t StartEval(int frames, const fs::path& out) {
-  const std::string frames_param = "frames=" + std::to_string(frames);
+// Starts `rpt ARGS...` with its output discarded and, when `tmpdir` is not empty, TMPDIR=tmpdir.
+pid_t StartRpt(const std::vector<std::string>& args, const fs::path& tmpdir = {}) {
+  std::vector<char*> argv{const_cast<char*>(RPT_BINARY)};
+  for (const std::string& arg : args) argv.push_back(const_cast<char*>(arg.c_str()));
+  argv.push_back(nullptr);
   const pid_t child = ::fork();
   if (child == 0) {
     // As started from a terminal: the signals at their defaults (a test runner may ignore SIGINT).
@@ -43,11 +45,17 @@ pid_t StartEval(int frames, const fs::path& out) {
     ::sigprocmask(SIG_SETMASK, &none, nullptr);
     ::freopen("/dev/null", "w", stdout);
     ::freopen("/dev/null", "w", stderr);
-    ::execl(RPT_BINARY, RPT_BINARY, "eval", "--dataset", "synthetic", "--param", frames_param.c_str(), "--param",
-            "people=6", "--threads", "1", "--quiet", "--out", out.c_str(), static_cast<char*>(nullptr));
+    if (!tmpdir.empty()) ::setenv("TMPDIR", tmpdir.c_str(), 1);
+    ::execv(RPT_BINARY, argv.data());
     ::_exit(127);
   }
   return child;
+}
+
+// Starts `rpt eval` on a synthetic scene of `frames` frames into `out` (output discarded).
+pid_t StartEval(int frames, const fs::path& out) {
+  return StartRpt({"eval", "--dataset", "synthetic", "--param", "frames=" + std::to_string(frames), "--param",
+                   "people=6", "--threads", "1", "--quiet", "--out", out.string()});
 }
 
 // The exit code, or 1000 + the signal number when a signal ended the process unhandled.
@@ -212,6 +220,44 @@ TEST(AtomicOutputs, InterruptedEvalRemovesItsTemporariesAndExits130) {
     EXPECT_TRUE(Temporaries(root).empty());
     EXPECT_EQ(CheckCompleteRun(out).run_id, before.run_id);
   }
+  fs::remove_all(root);
+}
+
+// `rpt bench --io` interrupted while its scratch HDF5 file (in TMPDIR) exists: exit 130 and the
+// file removed with the other temporaries (it used to stay behind).
+TEST(AtomicOutputs, InterruptedBenchIoRemovesItsScratchFile) {
+  const fs::path tmp = test::TempDir("bench_interrupt");
+  for (const int signal_number : {SIGINT, SIGTERM}) {
+    SCOPED_TRACE("signal " + std::to_string(signal_number));
+    const pid_t child = StartRpt({"bench", "--io", "--io-frames", "10000"}, tmp);
+    ASSERT_TRUE(WaitUntilHandling(child));
+    // Any file in TMPDIR, whatever its name: the scratch file exists.
+    bool exited = false;
+    const auto deadline = Clock::now() + std::chrono::seconds(60);
+    while (fs::is_empty(tmp) && Clock::now() < deadline) {
+      int status = 0;
+      if ((exited = ::waitpid(child, &status, WNOHANG) == child)) break;
+      std::this_thread::sleep_for(std::chrono::microseconds(200));
+    }
+    ASSERT_FALSE(exited) << "the run ended before it wrote its file";
+    ::kill(child, signal_number);
+    EXPECT_EQ(Wait(child), 128 + signal_number);
+    EXPECT_TRUE(fs::is_empty(tmp)) << "scratch file left in " << tmp;
+  }
+  fs::remove_all(tmp);
+}
+
+// An HDF5 write that fails (here at a file size limit of 32 KiB, SIGXFSZ ignored so that write()
+// fails with EFBIG) exits 2 naming the file and leaves neither it nor a temporary. HDF5 1.10
+// used to crash in its clean-up at exit after such a failure (signal 11 after the error message).
+TEST(AtomicOutputs, Hdf5WriteFailureExits2WithoutACrash) {
+  const fs::path root = test::TempDir("atomic_hdf5_write_failure");
+  const test::CommandResult r = test::RunRpt(
+      "convert --dataset synthetic --param frames=50 --out " + (root / "cache.h5").string(), "trap '' XFSZ; ulimit -f 64; ");
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("error: " + (root / "cache.h5").string()), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("write failed"), std::string::npos) << r.err;
+  EXPECT_TRUE(fs::is_empty(root));
   fs::remove_all(root);
 }
 

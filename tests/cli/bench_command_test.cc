@@ -3,7 +3,9 @@
 // live in results/bench.md, not in tests).
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "core/pipeline/frame_stats.h"
 #include "tests/cli/cli_test_util.h"
@@ -36,6 +38,22 @@ TEST(BenchCommand, HdfCacheRoundTripTiming) {
   EXPECT_EQ(j["views"], 5);
   EXPECT_GT(j["read_s_median"].get<double>(), 0.0);
   EXPECT_GT(j["persons"].get<long>(), 200);
+}
+
+// The --io round trip's scratch HDF5 file (in TMPDIR) is removed when an exception ends the run:
+// here the write fails at a file size limit of 32 KiB (SIGXFSZ ignored, so write() fails with
+// EFBIG). It used to stay behind, and HDF5's clean-up at exit then crashed (signal 11, not exit 2).
+// The Ctrl-C path: AtomicOutputs.InterruptedBenchIoRemovesItsScratchFile.
+TEST(BenchCommand, IoScratchFileIsRemovedWhenTheWriteFails) {
+  const std::filesystem::path tmp = test::TempDir("bench_scratch");
+  const test::CommandResult r =
+      test::RunRpt("bench --io --io-frames 2000 --json", "trap '' XFSZ; ulimit -f 64; TMPDIR=" + tmp.string() + " ");
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("error: " + (tmp / "rpt_bench_io.h5").string()), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("write failed"), std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  EXPECT_TRUE(std::filesystem::is_empty(tmp)) << "scratch file left in " << tmp;
+  std::filesystem::remove_all(tmp);
 }
 
 }  // namespace

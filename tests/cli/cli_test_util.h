@@ -36,12 +36,13 @@ inline std::filesystem::path TempDir(const std::string& name) {
   return dir;
 }
 
-// `args` is appended to the binary path as-is (shell syntax).
-inline CommandResult RunRpt(const std::string& args) {
+// `args` is appended to the binary path as-is (shell syntax); `shell_prefix` comes before it
+// (shell commands and variable assignments, e.g. "ulimit -f 64; TMPDIR=/x ").
+inline CommandResult RunRpt(const std::string& args, const std::string& shell_prefix = "") {
   const auto dir = std::filesystem::temp_directory_path();
   const auto out = dir / ("rpt_test_out_" + std::to_string(::getpid()));
   const auto err = dir / ("rpt_test_err_" + std::to_string(::getpid()));
-  const std::string command = std::string(RPT_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string();
+  const std::string command = shell_prefix + std::string(RPT_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string();
   const int status = std::system(command.c_str());
   CommandResult result;
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

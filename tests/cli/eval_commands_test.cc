@@ -4,7 +4,10 @@
 
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
 
 #include "tests/cli/cli_test_util.h"
 
@@ -116,6 +119,97 @@ TEST(SweepCommand, ShardsMergeIntoTheFullTable) {
     EXPECT_EQ(joined["rows"][i]["summary"]["mpjpe_mm"], whole["rows"][i]["summary"]["mpjpe_mm"]);
   }
   fs::remove_all(out);
+}
+
+// A shard file damaged or edited by hand (wrong types, missing keys, truncated) makes `rpt merge`
+// exit 2 with one message naming the file and the JSON pointer. Before, the unchecked reads gave
+// "internal error" (exit 1), or took a row with an index beyond the sweep into the table.
+TEST(SweepCommand, DamagedShardFileIsAnErrorNamingFileAndPointer) {
+  const fs::path out = test::TempDir("damaged_shard");
+  const test::CommandResult sweep = test::RunRpt("sweep --dataset synthetic --param frames=5 --grid "
+                                                 "filter.min_match_score=0.8,0.9 --out " + (out / "sweep").string());
+  ASSERT_EQ(sweep.exit_code, 0) << sweep.err;
+  const std::string text = test::ReadAll(out / "sweep" / "sweep.json");
+  const nlohmann::json good = nlohmann::json::parse(text);
+  ASSERT_EQ(good["rows"].size(), 2u);
+  const fs::path shard = out / "shard.json";
+  auto merge = [&] { return test::RunRpt("merge " + shard.string() + " --out " + (out / "merged").string()); };
+  std::ofstream(shard) << text;
+  const test::CommandResult intact = merge();
+  ASSERT_EQ(intact.exit_code, 0) << intact.err;
+
+  using Edit = std::function<void(nlohmann::json&)>;
+  struct Case {
+    Edit edit;
+    std::string expected;  // after "error: <file>: "
+  };
+  const std::vector<Case> cases = {
+      {[](nlohmann::json& j) { j["rows"][0]["index"] = "0"; }, "/rows/0/index: expected an integer, got string"},
+      {[](nlohmann::json& j) { j["rows"][1]["index"] = 7; }, "/rows/1/index: 7 is not an integer in [0, 1]"},
+      {[](nlohmann::json& j) { j["rows"][0].erase("index"); }, "/rows/0/index: missing"},
+      {[](nlohmann::json& j) { j["rows"][0]["name"] = 5; }, "/rows/0/name: expected a string, got number"},
+      {[](nlohmann::json& j) { j["rows"][1].erase("summary"); }, "/rows/1/summary: missing"},
+      {[](nlohmann::json& j) { j["rows"][0]["summary"] = "good"; }, "/rows/0/summary: expected an object of metrics"},
+      {[](nlohmann::json& j) { j["rows"][0]["summary"]["mpjpe_mm"] = "12.5"; },
+       "/rows/0/summary/mpjpe_mm: expected a number or null, got string"},
+      {[](nlohmann::json& j) { j["rows"][0]["default"] = "yes"; }, "/rows/0/default: expected true or false, got string"},
+      {[](nlohmann::json& j) { j["rows"][0]["set"] = nlohmann::json::array({1}); },
+       "/rows/0/set: expected an object {option: value}, got array"},
+      {[](nlohmann::json& j) { j["rows"][0] = 3; }, "/rows/0: expected a row"},
+      {[](nlohmann::json& j) { j["rows"] = nlohmann::json::object(); }, "/rows: expected a list of rows, got object"},
+      {[](nlohmann::json& j) { j["total"] = "2"; }, "/total: expected an integer, got string"},
+      {[](nlohmann::json& j) { j["total"] = -2; }, "/total: -2 is not an integer in [0, 2147483647]"},
+      {[](nlohmann::json& j) { j["base"] = nlohmann::json::array(); }, "/base: expected an object {option: base value}"},
+      {[](nlohmann::json& j) { j.erase("rows"); }, "not a sweep shard file"},
+      {[](nlohmann::json& j) { j = nlohmann::json::array({j}); }, "not a sweep shard file"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.expected);
+    nlohmann::json damaged = good;
+    c.edit(damaged);
+    std::ofstream(shard) << damaged.dump(2);
+    const test::CommandResult r = merge();
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find("error: " + shard.string() + ": " + c.expected), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
+  }
+  // Truncated (a copy cut off while written): the parse error names file, line and column.
+  std::ofstream(shard, std::ios::trunc) << text.substr(0, text.size() / 2);
+  const test::CommandResult truncated = merge();
+  EXPECT_EQ(truncated.exit_code, 2) << truncated.err;
+  EXPECT_NE(truncated.err.find("error: " + shard.string() + ":"), std::string::npos) << truncated.err;
+  EXPECT_NE(truncated.err.find("JSON parse error"), std::string::npos) << truncated.err;
+  // The merged output of the intact file is still the one in place.
+  EXPECT_EQ(nlohmann::json::parse(test::ReadAll(out / "merged" / "sweep.json"))["rows"].size(), 2u);
+  fs::remove_all(out);
+}
+
+// The same for the --list file of `rpt sweep` (a name that is not a string used to be an
+// "internal error"; a "set" that is a list was read as options "0", "1", ...).
+TEST(SweepCommand, DamagedListFileIsAnErrorNamingFileAndPointer) {
+  const fs::path dir = test::TempDir("damaged_list");
+  const fs::path list = dir / "list.json";
+  struct Case {
+    std::string text;
+    std::string expected;
+  };
+  const std::vector<Case> cases = {
+      {R"([{"name": 5, "set": {}}])", "/0/name: expected a string, got number"},
+      {R"({"configurations": [{"name": "a"}, {"name": "b", "set": [1]}]})",
+       "/configurations/1/set: expected an object {option: value}, got array"},
+      {R"({"configurations": [{"name": "a"}, 7]})", "/configurations/1: expected {\"name\", \"set\"}, got number"},
+      {R"({"configurations": {"name": "a"}})", "/configurations: expected a list of"},
+      {R"({"configs": []})", "/configurations: expected a list of"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.text);
+    std::ofstream(list, std::ios::trunc) << c.text;
+    const test::CommandResult r = test::RunRpt("sweep --dataset synthetic --param frames=2 --list " + list.string() +
+                                               " --out " + (dir / "out").string());
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find("error: " + list.string() + ": " + c.expected), std::string::npos) << r.err;
+  }
+  fs::remove_all(dir);
 }
 
 }  // namespace

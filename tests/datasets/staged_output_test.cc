@@ -167,6 +167,38 @@ TEST(StagedFolder, AFileInTheWayIsAnErrorNamingIt) {
   fs::remove_all(root);
 }
 
+TEST(ScratchFile, IsRemovedWhenAnExceptionLeavesItsScope) {
+  const fs::path dir = FreshDir("scratch");
+  fs::path path;
+  EXPECT_THROW(
+      {
+        ScratchFile scratch(dir / "bench.h5");
+        path = scratch.path();
+        EXPECT_EQ(path.parent_path(), dir);
+        EXPECT_EQ(path.filename().string().rfind("bench.h5.tmp-" + std::to_string(::getpid()) + "-", 0), 0u) << path;
+        EXPECT_TRUE(fs::is_regular_file(path));
+        std::ofstream(path) << "half";
+        ScratchFile second(dir / "bench.h5");  // a name of its own
+        EXPECT_NE(second.path(), path);
+        throw InputError("write failed");
+      },
+      InputError);
+  EXPECT_FALSE(path.empty());
+  EXPECT_TRUE(Entries(dir).empty());
+  fs::remove_all(dir);
+}
+
+TEST(ScratchFile, AMissingFolderIsAnErrorNamingIt) {
+  const fs::path dir = FreshDir("scratch_missing");
+  try {
+    ScratchFile scratch(dir / "absent" / "bench.h5");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find((dir / "absent" / "bench.h5").string()), std::string::npos) << e.what();
+  }
+  fs::remove_all(dir);
+}
+
 TEST(RemoveTemporariesForExit, RemovesWhatIsBeingWritten) {
   // Run in a child: the registry stays locked afterwards, as in the process that exits.
   const fs::path root = FreshDir("exit");
@@ -179,12 +211,14 @@ TEST(RemoveTemporariesForExit, RemovesWhatIsBeingWritten) {
     std::ofstream(file.path()) << "half";
     StagedFolder folder(root / "run");
     std::ofstream(folder.path() / "summary.json") << "half";
+    ScratchFile scratch(root / "scratch.h5");
+    std::ofstream(scratch.path()) << "half";
     ::_exit(RemoveTemporariesForExit());
   }
   int status = 0;
   ASSERT_EQ(::waitpid(child, &status, 0), child);
   ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 2);  // the file's and the folder's temporaries
+  EXPECT_EQ(WEXITSTATUS(status), 3);  // the file's and the folder's temporaries, the scratch file
   EXPECT_EQ(Entries(root), (std::vector<std::string>{"kept.txt", "run"}));
   EXPECT_EQ(Read(root / "kept.txt"), "old");
   EXPECT_TRUE(fs::is_empty(root / "run"));

@@ -111,6 +111,7 @@ TEST(ReportBrowser, RunWhoseInputIsGone) {
   ASSERT_TRUE(EvalAndReport("--dataset synthetic --param frames=5", dir));
   Json run = Json::parse(ReadAll(dir / "run.json"));
   run["command"] = "rpt eval --dataset shelf --root " + (dir / "gone").string();
+  run["argv"] = Json::array({"rpt", "eval", "--dataset", "shelf", "--root", (dir / "gone").string()});
   std::ofstream(dir / "run.json") << run.dump(2);
   const CommandResult r = RunRpt("report " + dir.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;

@@ -5,6 +5,7 @@
 
 #include <stdlib.h>
 
+#include <algorithm>
 #include <fstream>
 #include <regex>
 
@@ -60,6 +61,7 @@ TEST(ReportCommand, PaperRowForKnownDatasets) {
   const fs::path dir = TempDir("report_paper");
   ASSERT_TRUE(EvalAndReport("--dataset synthetic --param frames=3", dir));
   Json run = Json::parse(ReadAll(dir / "run.json"));
+  run.erase("argv");  // as written before "argv" was recorded: "command" is read
   run["command"] = "rpt eval --dataset panoptic --root " + (dir / "no-such-folder").string();
   std::ofstream(dir / "run.json") << run.dump(2);
   const CommandResult r = RunRpt("report " + dir.string());
@@ -72,6 +74,53 @@ TEST(ReportCommand, PaperRowForKnownDatasets) {
   ASSERT_TRUE(data["paper"].is_object());
   EXPECT_EQ(data["paper"]["mpjpe_mm"], 30.6);
   EXPECT_EQ(data["paper"]["recall500"], 99.8);
+}
+
+// Input paths with a space: run.json records the argument vector ("argv") beside the command line,
+// and `rpt report` re-loads the input from it. Before, it split the one-string "command" at spaces,
+// so such a path did not re-load; it still does so for a run.json without "argv" (older rpt).
+TEST(ReportCommand, ReloadsInputWhosePathHoldsASpace) {
+  const fs::path dir = TempDir("report_space");
+  const fs::path cache = dir / "my data" / "cache.h5";
+  fs::create_directories(cache.parent_path());
+  const CommandResult convert =
+      RunRpt("convert --dataset synthetic --param frames=6 --param cameras=3 --out '" + cache.string() + "'");
+  ASSERT_EQ(convert.exit_code, 0) << convert.err;
+  const fs::path out = dir / "run";
+  ASSERT_TRUE(EvalAndReport("--labels '" + cache.string() + "' --detections '" + cache.string() + "'", out));
+  Json run = Json::parse(ReadAll(out / "run.json"));
+  ASSERT_TRUE(run["argv"].is_array()) << run.dump(2);
+  EXPECT_EQ(run["argv"][0], "rpt");
+  EXPECT_EQ(run["argv"][1], "eval");
+  EXPECT_NE(std::find(run["argv"].begin(), run["argv"].end(), Json(cache.string())), run["argv"].end())
+      << "the path is one argument: " << run["argv"].dump();
+  EXPECT_EQ(run["command"], "rpt eval --labels " + cache.string() + " --detections " + cache.string() +
+                                " --quiet --out " + out.string());
+  CommandResult r = RunRpt("report " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err.find("could not be re-loaded"), std::string::npos) << r.err;
+  Json data = ReportData(ReadAll(out / "report.html"));
+  EXPECT_TRUE(data["input_loaded"].get<bool>());
+  ASSERT_EQ(data["sequences"].size(), 1u);
+  EXPECT_EQ(data["sequences"][0]["cameras"].size(), 3u);
+
+  // A run.json without "argv": the command line is split at spaces, the cut path does not load,
+  // and the page is written without the input, with the warning.
+  run.erase("argv");
+  std::ofstream(out / "run.json") << run.dump(2);
+  r = RunRpt("report " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("warning: the run's input could not be re-loaded"), std::string::npos) << r.err;
+  EXPECT_FALSE(ReportData(ReadAll(out / "report.html"))["input_loaded"].get<bool>());
+
+  // A damaged "argv" is named in the warning, not guessed around.
+  run["argv"] = Json::array({"rpt", "eval", 7});
+  std::ofstream(out / "run.json", std::ios::trunc) << run.dump(2);
+  r = RunRpt("report " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find((out / "run.json").string() + ": /argv: expected a list of strings"), std::string::npos)
+      << r.err;
+  fs::remove_all(dir);
 }
 
 TEST(ReportCommand, BadInputExitsTwoNamingTheFile) {
