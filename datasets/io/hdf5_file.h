@@ -22,13 +22,15 @@
 
 namespace rpt::io {
 
-// HDF5 1.10 (Debian 12) leaks the object header it allocated when a damaged header claims to run
-// past the end of the file (upstream HDFGroup/hdf5 issue #3790, fixed in 1.14.5); its library
-// shutdown at exit then never finishes and prints "HDF5: infinite loop closing library" after our
-// error message. rpt skips that shutdown: H5dont_atexit() before HDF5's first call. Our own
-// handles are all closed by their RAII owners (tests check H5Fget_obj_count), and the operating
-// system frees the rest at exit.
-inline void SkipHdf5ShutdownAtExit() {
+// Keeps HDF5 from running its library shutdown at process exit (H5dont_atexit); effective only
+// before HDF5's first call, so main() calls it first (rpt::SkipHdf5CleanupAtExit, hdf5_cache.h)
+// and every Hdf5Quiet guard calls it too (tests, fuzzers). HDF5 1.10 (Debian 12) misbehaves in that
+// shutdown after errors: it crashed (SIGSEGV in H5F__close_cb, fixed in 1.14) when closing a file
+// had failed, as on a full disk; and it leaks the object header of a damaged header that runs past
+// the end of the file (upstream HDFGroup/hdf5 #3790, fixed in 1.14.5), after which the shutdown
+// printed "HDF5: infinite loop closing library" below our error line. Every file rpt opens is
+// closed by its RAII owner (tests check H5Fget_obj_count); the operating system frees the rest.
+inline void SkipHdf5CleanupAtExit() {
   static const bool skipped = (H5dont_atexit(), true);
   (void)skipped;
 }
@@ -38,7 +40,7 @@ inline void SkipHdf5ShutdownAtExit() {
 class Hdf5Quiet {
  public:
   Hdf5Quiet() {
-    SkipHdf5ShutdownAtExit();
+    SkipHdf5CleanupAtExit();
     H5Eget_auto2(H5E_DEFAULT, &func_, &data_);
     H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   }

@@ -58,7 +58,7 @@ std::vector<long long> Shape(std::initializer_list<long long> dims) { return dim
 
 }  // namespace
 
-void SkipHdf5CleanupAtExit() { H5dont_atexit(); }
+void SkipHdf5CleanupAtExit() { io::SkipHdf5CleanupAtExit(); }
 
 // -----------------------------------------------------------------------------------------------
 // Detections

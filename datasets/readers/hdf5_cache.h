@@ -61,11 +61,12 @@ struct Hdf5CacheContents {
 Hdf5CacheContents ProbeHdf5Cache(const std::filesystem::path& path);
 
 // Keeps the HDF5 library from running its clean-up at process exit; call first thing in main(),
-// before any other HDF5 call. HDF5 1.10 crashes in that clean-up (segmentation fault in
-// H5F__close_cb, the CVE-2020-10812 family, fixed in 1.14) when closing a file failed earlier, as
-// it does when a write fails (full disk, file size limit): rpt printed its error and then died
-// with signal 11 instead of exiting with 2. Every file rpt opens is closed by its owner (RAII), so
-// the clean-up has nothing else to do.
+// before any other HDF5 call (the readers call it too, for programs that do not). HDF5 1.10
+// crashes in that clean-up (segmentation fault in H5F__close_cb, fixed in 1.14) when closing a
+// file failed earlier, as it does when a write fails (full disk, file size limit), and prints
+// "HDF5: infinite loop closing library" after reading some damaged files (its own leak, upstream
+// issue #3790). Every file rpt opens is closed by its owner (RAII), so the clean-up has nothing
+// else to do.
 void SkipHdf5CleanupAtExit();
 
 }  // namespace rpt
