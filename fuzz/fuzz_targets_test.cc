@@ -41,6 +41,17 @@ TEST(FuzzTargets, EveryTargetHasSeedsAndEverySeedIsAccepted) {
 }
 
 
+// scripts/fuzz.sh takes its list of formats from RPT_FUZZ_TARGETS in fuzz/CMakeLists.txt: a target
+// missing there would never be fuzzed.
+TEST(FuzzTargets, TheCMakeListNamesEveryTarget) {
+  std::set<std::string> listed;
+  std::istringstream in(RPT_FUZZ_TARGET_LIST);
+  for (std::string name; in >> name;) EXPECT_TRUE(listed.insert(name).second) << "listed twice: " << name;
+  std::set<std::string> targets;
+  for (const FuzzTarget& target : FuzzTargets()) targets.insert(target.name);
+  EXPECT_EQ(listed, targets);
+}
+
 // Runs every seed of `target` cut at 24 places and with one byte changed at 24 places: the
 // reader accepts or refuses with an input error; anything else (another exception) fails here,
 // a crash aborts. Adds to the counts of runs and of refused inputs.
@@ -150,6 +161,14 @@ TEST(FuzzRegressions, ColmapImageNameAfterAFormFeedIsRead) {
   EXPECT_EQ(images[0].image_id, 4);
   EXPECT_EQ(images[0].camera_id, 3);
   EXPECT_EQ(images[0].name, "aria01/00001.jpg");
+}
+
+// The coverage-guided run of `colmap_images` (scripts/fuzz.sh, before the fix above) found the
+// same std::out_of_range with carriage returns (the crash input, verbatim): the fields were split
+// at "\r" but the NAME was looked for after spaces and tabs only.
+TEST(FuzzRegressions, ColmapImageLineEndingInCarriageReturnsIsAnInputErrorOrRead) {
+  const std::string text = "# Im\xf8ge list\n1 1 0 0 000068 0 0.068 0 -1\r\r\r\r\r\r\r\ra\n\n";
+  EXPECT_NO_THROW(RunFuzzTarget(*FindFuzzTarget("colmap_images"), Bytes(text.begin(), text.end())));
 }
 
 }  // namespace
