@@ -17,6 +17,10 @@ std::atomic<long> g_allocations{0};
 thread_local bool g_counting = false;
 }  // namespace
 
+// These replacements pair operator new with std::malloc and operator delete with std::free, as
+// they should; GCC, once it inlines them (-O1 and above), reports every delete as mismatched.
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+
 void* operator new(std::size_t size) {
   if (g_counting) g_allocations.fetch_add(1, std::memory_order_relaxed);
   if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
