@@ -18,7 +18,9 @@ shift || true
 BUILD_DIR="${RPT_FUZZ_BUILD_DIR:-build-asan}"
 NICE="nice -n ${RPT_FUZZ_NICE:-19}"
 
-cmake --preset asan -B "$BUILD_DIR" >/dev/null
+# Configured once with the "asan" preset; a build folder configured otherwise (scripts/ci_sanitizers.sh
+# builds at -O0) keeps its settings.
+if [ ! -f "$BUILD_DIR/CMakeCache.txt" ]; then cmake --preset asan -B "$BUILD_DIR" >/dev/null; fi
 mapfile -t ALL < <(sed -n '/^set(RPT_FUZZ_TARGETS/,/)/p' fuzz/CMakeLists.txt | tr ' ()' '\n\n\n' | grep -v -e '^$' -e '^set$' -e '^RPT_FUZZ_TARGETS$')
 FORMATS=("$@")
 if [ ${#FORMATS[@]} -eq 0 ]; then FORMATS=("${ALL[@]}"); fi
