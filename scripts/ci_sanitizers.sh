@@ -20,7 +20,7 @@ cmake --preset asan -B "$BUILD_DIR" -DCMAKE_CXX_FLAGS_DEBUG="-O0 -g1" -DCMAKE_C_
 cmake --build "$BUILD_DIR" -j"$(nproc)" --target "${TESTS[@]}" rpt_fuzz rpt_fuzz_seeds >/dev/null
 step "sanitized build of ${TESTS[*]} and the fuzzer" "$t"
 t=$(date +%s)
-export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:suppressions=$PWD/fuzz/asan_suppressions.txt" UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1" UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 export LSAN_OPTIONS="suppressions=$PWD/fuzz/lsan_suppressions.txt:print_suppressions=0"
 for test in "${TESTS[@]}"; do
   exe=$(find -H "$BUILD_DIR" -name "$test" -type f -perm -u+x | head -1)

@@ -8,7 +8,7 @@
 # one log per format in <build>/logs/, and prints one line per format: inputs run, seconds of wall
 # clock and of CPU, coverage, result. Exits 1 when any format crashed, leaked, hit a sanitizer
 # report, a timeout (10 s per input) or the memory limit (2 GB). Bugs inside libraries we use are
-# suppressed only as listed, with their upstream reports, in fuzz/{asan,lsan}_suppressions.txt.
+# suppressed only as listed, with their upstream reports, in fuzz/lsan_suppressions.txt.
 # Environment: RPT_FUZZ_BUILD_DIR (default build-asan), RPT_FUZZ_JOBS (build jobs, default nproc),
 # RPT_FUZZ_NICE (default 19), RPT_FUZZ_PARALLEL (formats fuzzed at once, one core each; default 1).
 set -euo pipefail
@@ -36,7 +36,7 @@ fuzz_one() {
   mkdir -p "$corpus/found" "$corpus/seeds" "$BUILD_DIR/artifacts/$f"
   cp "$BUILD_DIR/corpus-seeds/$f/"* "$corpus/seeds/"
   start=$(date +%s)
-  RPT_FUZZ_TARGET="$f" ASAN_OPTIONS="detect_leaks=1:allocator_may_return_null=1:suppressions=$PWD/fuzz/asan_suppressions.txt" UBSAN_OPTIONS="print_stacktrace=1" \
+  RPT_FUZZ_TARGET="$f" ASAN_OPTIONS="detect_leaks=1:allocator_may_return_null=1" UBSAN_OPTIONS="print_stacktrace=1" \
     LSAN_OPTIONS="suppressions=$PWD/fuzz/lsan_suppressions.txt:print_suppressions=0" \
     $NICE /usr/bin/time -f "%U %S" -o "$log.cpu" "$BUILD_DIR/fuzz/rpt_fuzz" -max_total_time="$SECONDS_PER_FORMAT" \
     -timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=2048 -max_len=65536 -print_final_stats=1 \

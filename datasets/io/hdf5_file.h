@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "datasets/io/hdf5_preflight.h"
 #include "datasets/io/inflate_budget.h"
 
 namespace rpt::io {
@@ -96,6 +97,8 @@ class Hdf5Writer {
   Hdf5Writer(const std::filesystem::path& path, bool add_to_existing) : source_(path.string()) {
     if (add_to_existing) {
       if (H5Fis_hdf5(path.c_str()) <= 0) Fail("", "cannot add to it: not an existing HDF5 file");
+      std::error_code ec;
+      PreflightHdf5(source_, path, InflateLimitFor(std::filesystem::file_size(path, ec)));
       file_ = Hdf5Id(H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), H5Fclose);
     } else {
       file_ = Hdf5Id(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
@@ -217,6 +220,8 @@ class Hdf5Reader {
     if (is_hdf5 <= 0) {
       throw InputError(source_ + ": byte 0: not an HDF5 file (no HDF5 signature at offset 0, 512, 1024, ...)");
     }
+    // A damaged file can crash the library itself: walk it in a child process first.
+    PreflightHdf5(source_, path, budget_.limit());
     // Strong close degree: closing the file closes every object still open in it, so an error
     // path cannot leave objects behind for the library's shutdown ("infinite loop closing library").
     Hdf5Id access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);

@@ -6,8 +6,10 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <hdf5.h>
+#include <sys/wait.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -15,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "datasets/io/hdf5_preflight.h"
 #include "datasets/io/inflate_budget.h"
 #include "datasets/readers/hdf5_cache.h"
 #include "tests/datasets/io_test_util.h"
@@ -23,6 +26,7 @@
 namespace rpt {
 namespace {
 
+using ::testing::AllOf;
 using ::testing::HasSubstr;
 using test::ByteVec;
 
@@ -39,10 +43,20 @@ ByteVec ValidCache(const test::TempDir& dir) {
   return ReadBytes(path);
 }
 
+// Sets io::SetHdf5Preflight for a scope; back on (rpt's default) after it.
+struct PreflightSetting {
+  explicit PreflightSetting(bool enabled) { io::SetHdf5Preflight(enabled); }
+  ~PreflightSetting() { io::SetHdf5Preflight(true); }
+};
+
 // Reads `bytes` as a cache every way the CLI does. Returns "" when every read succeeded or failed
-// with an InputError naming the file; otherwise what went wrong.
-std::string ReadEveryWay(const test::TempDir& dir, const ByteVec& bytes, const std::string& variant) {
+// with an InputError naming the file; otherwise what went wrong. `preflight`: walk the file in a
+// child process first (io::PreflightHdf5, as rpt does); off, the readers' own checks are tested
+// alone, as a crash then ends this test's process.
+std::string ReadEveryWay(const test::TempDir& dir, const ByteVec& bytes, const std::string& variant,
+                         bool preflight = false) {
   const auto path = dir.Write("damaged.h5", bytes);
+  const PreflightSetting setting(preflight);
   const std::vector<std::function<void()>> reads = {[&] { ProbeHdf5Cache(path); }, [&] { ReadDetectionsHdf5(path); },
                                                     [&] { ReadSequencesHdf5(path); }};
   for (const auto& read : reads) {
@@ -201,6 +215,69 @@ TEST(Hdf5CacheCorruption, DatasetsExpandingBeyondTheBudgetAreRefusedBeforeReadin
   io::SetInflateLimitMb(0);
   ASSERT_EQ(read.frames.size(), 1u);
   EXPECT_EQ(read.frames[0].views[0].num_persons(), static_cast<int>(persons));
+}
+
+// The cache with its root group's local heap address (in the symbol table message of the root
+// group's object header, HDF5 format version 0 as HDF5 1.10 writes it) replaced by `address`. The
+// root object header's address is in the superblock's root symbol table entry (byte 64); a
+// version 1 object header has 16 bytes before its messages, each message 8 bytes before its data;
+// the symbol table message (type 0x11) holds the B-tree address, then the local heap address.
+ByteVec WithRootLocalHeapAt(ByteVec bytes, std::uint64_t address) {
+  const auto u64 = [&](std::size_t at) {
+    std::uint64_t value = 0;
+    for (int i = 7; i >= 0; --i) value = value << 8 | bytes.at(at + static_cast<std::size_t>(i));
+    return value;
+  };
+  EXPECT_EQ(bytes.at(8), 0) << "superblock version 0 expected";
+  EXPECT_EQ(bytes.at(13), 8) << "8-byte addresses expected";
+  const std::size_t header = static_cast<std::size_t>(u64(64));
+  EXPECT_EQ(bytes.at(header), 1) << "object header version 1 expected";
+  const int messages = bytes.at(header + 2) | bytes.at(header + 3) << 8;
+  std::size_t at = header + 16;
+  for (int m = 0; m < messages; ++m) {
+    const int type = bytes.at(at) | bytes.at(at + 1) << 8;
+    const std::size_t size = bytes.at(at + 2) | bytes.at(at + 3) << 8;
+    if (type == 0x11) {
+      const ByteVec value = U64(address);
+      std::copy(value.begin(), value.end(), bytes.begin() + static_cast<std::ptrdiff_t>(at + 8 + 8));
+      return bytes;
+    }
+    at += 8 + size;
+  }
+  ADD_FAILURE() << "no symbol table message in the root group's object header";
+  return bytes;
+}
+
+// Found by fuzzing (issue 10): HDF5 1.10.8 follows a root group local heap address of all ones
+// (HDF5's "undefined address") and crashes (SIGSEGV, memcpy from address 0 in H5F__accum_read
+// below H5G__stab_lookup) on the first lookup, before any check of rpt's could run. The file is
+// walked in a child process first (io::PreflightHdf5): the crash stays there and the reader
+// reports the file as damaged. Before, this test's process died.
+TEST(Hdf5CacheCorruption, UndefinedRootLocalHeapIsAnInputErrorNotACrash) {
+  test::TempDir dir;
+  const ByteVec valid = ValidCache(dir);
+  const ByteVec damaged = WithRootLocalHeapAt(valid, 0xffffffffffffffff);
+  ASSERT_NE(damaged, valid);
+  EXPECT_EQ(ReadEveryWay(dir, damaged, "root local heap at the undefined address", /*preflight=*/true), "");
+  const auto path = dir.Write("undefined_heap.h5", damaged);
+  EXPECT_THAT(test::InputErrorOf([&] { ProbeHdf5Cache(path); }),
+              AllOf(HasSubstr(path.string() + ": the HDF5 library"), HasSubstr("the file is damaged; rpt did not read it")));
+  // Other addresses past the end of the file are errors HDF5 reports itself.
+  EXPECT_EQ(ReadEveryWay(dir, WithRootLocalHeapAt(valid, std::uint64_t{1} << 40), "root local heap past the end"), "");
+  EXPECT_EQ(ReadEveryWay(dir, WithRootLocalHeapAt(valid, std::uint64_t{1} << 40), "root local heap past the end", true), "");
+}
+
+// The walk is bounded in time: a child that does not finish is killed, reaped, and the file
+// refused (here with a limit of 0 ms, which no walk meets). A valid file's walk finishes.
+TEST(Hdf5Preflight, AChildThatDoesNotFinishInTimeIsKilledAndTheFileRefused) {
+  test::TempDir dir;
+  const auto path = dir.Write("valid.h5", ValidCache(dir));
+  EXPECT_TRUE(io::WalkHdf5Metadata(path, io::InflateLimitFor(std::filesystem::file_size(path))));
+  EXPECT_THAT(test::InputErrorOf([&] { io::PreflightHdf5(path.string(), path, 1 << 20, std::chrono::milliseconds(0)); }),
+              HasSubstr(path.string() + ": the HDF5 library did not finish walking the file's metadata within 0 ms"));
+  io::PreflightHdf5(path.string(), path, 1 << 20);  // finishes: no exception
+  // No child is left behind: every one was reaped.
+  EXPECT_EQ(waitpid(-1, nullptr, WNOHANG), -1);
 }
 
 }  // namespace

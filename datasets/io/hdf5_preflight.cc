@@ -1,0 +1,267 @@
+// SPDX-License-Identifier: MIT
+#include "datasets/io/hdf5_preflight.h"
+
+#include <hdf5.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cerrno>
+#include <csignal>
+#include <cstring>
+#include <vector>
+
+#include "core/errors.h"
+#include "datasets/io/hdf5_file.h"
+
+#if defined(__linux__) || defined(__FreeBSD__)
+#include <fcntl.h>
+#include <poll.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#define RPT_HDF5_PREFLIGHT_FORK 1
+#endif
+
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_UNDEFINED__)
+#define RPT_SANITIZED 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(undefined_behavior_sanitizer)
+#define RPT_SANITIZED 1
+#endif
+#endif
+#ifdef RPT_SANITIZED
+#include <sanitizer/common_interface_defs.h>
+#endif
+
+namespace rpt::io {
+namespace {
+
+// The child's exit codes that let the reader go on: the walk reached every object, or the library
+// (or the walk itself, out of memory say) reported an error, which the reader will report with
+// the object's path. Any other ending is a crash, a sanitizer report or a kill.
+constexpr int kWalked = 0;
+constexpr int kReportedError = 3;
+constexpr int kWalkFailed = 4;
+
+// More objects than any rpt cache holds; a file with more is walked only this far.
+constexpr std::size_t kMaxObjects = 100000;
+constexpr std::size_t kMaxAttributeElements = std::size_t{1} << 16;
+
+std::atomic<bool> preflight_enabled{true};
+
+struct Walk {
+  hid_t file = H5I_INVALID_HID;
+  std::uint64_t inflate_limit = 0;
+  std::size_t objects = 0;
+  bool clean = true;
+};
+
+// Reads `count` elements of `type` through `read` into a buffer and gives back what variable-length
+// data the library allocated. Returns false when the library reported an error.
+template <typename Read>
+bool ReadAndReclaim(hid_t type, hid_t space, hsize_t count, Read read) {
+  const htri_t variable_string = H5Tis_variable_str(type);
+  const htri_t variable = H5Tdetect_class(type, H5T_VLEN);
+  if (variable_string < 0 || variable < 0) return false;
+  Hdf5Id memory_type(variable_string > 0 ? H5Tcopy(H5T_C_S1) : H5Tcopy(type), H5Tclose);
+  if (!memory_type.valid()) return false;
+  if (variable_string > 0 && H5Tset_size(memory_type.get(), H5T_VARIABLE) < 0) return false;
+  const std::size_t element = H5Tget_size(memory_type.get());
+  if (element == 0) return false;
+  std::vector<unsigned char> buffer(count * element + 1, 0);
+  const bool ok = read(memory_type.get(), buffer.data()) >= 0;
+  if (variable_string > 0 || variable > 0) H5Dvlen_reclaim(memory_type.get(), space, H5P_DEFAULT, buffer.data());
+  return ok;
+}
+
+herr_t VisitAttribute(hid_t object, const char* name, const H5A_info_t*, void* data) {
+  auto* walk = static_cast<Walk*>(data);
+  Hdf5Id attribute(H5Aopen(object, name, H5P_DEFAULT), H5Aclose);
+  Hdf5Id type(attribute.valid() ? H5Aget_type(attribute.get()) : H5I_INVALID_HID, H5Tclose);
+  Hdf5Id space(attribute.valid() ? H5Aget_space(attribute.get()) : H5I_INVALID_HID, H5Sclose);
+  const hssize_t points = space.valid() ? H5Sget_simple_extent_npoints(space.get()) : -1;
+  if (!type.valid() || points < 0) {
+    walk->clean = false;
+    return 0;
+  }
+  if (points == 0 || static_cast<std::size_t>(points) > kMaxAttributeElements) return 0;
+  const hid_t attribute_id = attribute.get();
+  if (!ReadAndReclaim(type.get(), space.get(), static_cast<hsize_t>(points),
+                      [attribute_id](hid_t memory_type, void* buffer) { return H5Aread(attribute_id, memory_type, buffer); })) {
+    walk->clean = false;
+  }
+  return 0;
+}
+
+// The data of a dataset whose reading goes through more of the library than one bounded copy from
+// the file: chunked or compact layouts, filters, variable-length types.
+void VisitDataset(hid_t dataset, Walk* walk) {
+  Hdf5Id type(H5Dget_type(dataset), H5Tclose);
+  Hdf5Id space(H5Dget_space(dataset), H5Sclose);
+  Hdf5Id create(H5Dget_create_plist(dataset), H5Pclose);
+  if (!type.valid() || !space.valid() || !create.valid()) {
+    walk->clean = false;
+    return;
+  }
+  const H5D_layout_t layout = H5Pget_layout(create.get());
+  const htri_t variable = H5Tdetect_class(type.get(), H5T_VLEN);
+  const htri_t variable_string = H5Tis_variable_str(type.get());
+  if (layout < 0 || variable < 0 || variable_string < 0) {
+    walk->clean = false;
+    return;
+  }
+  H5Dget_storage_size(dataset);
+  if (layout == H5D_CONTIGUOUS && variable == 0 && variable_string == 0) return;
+  const hssize_t points = H5Sget_simple_extent_npoints(space.get());
+  const std::size_t element = variable_string > 0 ? sizeof(char*) : H5Tget_size(type.get());
+  hsize_t bytes = 0;
+  if (points <= 0 || element == 0 || __builtin_mul_overflow(static_cast<hsize_t>(points), element, &bytes) ||
+      bytes > walk->inflate_limit) {
+    return;  // empty, or more than the reader would accept: it refuses before reading
+  }
+  if (!ReadAndReclaim(type.get(), space.get(), static_cast<hsize_t>(points), [dataset](hid_t memory_type, void* buffer) {
+        return H5Dread(dataset, memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, buffer);
+      })) {
+    walk->clean = false;
+  }
+}
+
+herr_t VisitObject(hid_t root, const char* name, const H5O_info_t* info, void* data) {
+  auto* walk = static_cast<Walk*>(data);
+  if (++walk->objects > kMaxObjects) return 1;
+  // Look the object up by name too: the readers reach objects that way (H5G__stab_lookup), the
+  // visit by iterating the groups.
+  if (std::strcmp(name, ".") != 0 && H5Lexists(root, name, H5P_DEFAULT) <= 0) walk->clean = false;
+  Hdf5Id object(H5Oopen(root, name, H5P_DEFAULT), H5Oclose);
+  if (!object.valid()) {
+    walk->clean = false;
+    return 0;
+  }
+  hsize_t index = 0;
+  if (info->num_attrs > 0 && H5Aiterate2(object.get(), H5_INDEX_NAME, H5_ITER_NATIVE, &index, VisitAttribute, walk) < 0) {
+    walk->clean = false;
+  }
+  if (info->type == H5O_TYPE_DATASET) VisitDataset(object.get(), walk);
+  return 0;
+}
+
+#ifdef RPT_HDF5_PREFLIGHT_FORK
+[[noreturn]] void RunChild(const std::filesystem::path& path, std::uint64_t inflate_limit) {
+  // Silent, and killed by what would kill it: no handler of the parent's (interrupt clean-up,
+  // a fuzzer's crash report) runs here.
+  const int null = open("/dev/null", O_WRONLY);
+  if (null >= 0) {
+    dup2(null, STDOUT_FILENO);
+    dup2(null, STDERR_FILENO);
+  }
+  for (const int signal : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT, SIGINT, SIGTERM, SIGHUP, SIGPIPE}) {
+    std::signal(signal, SIG_DFL);
+  }
+#ifdef RPT_SANITIZED
+  __sanitizer_set_death_callback(nullptr);
+#endif
+  int code = kWalkFailed;
+  try {
+    code = WalkHdf5Metadata(path, inflate_limit) ? kWalked : kReportedError;
+  } catch (...) {
+    code = kWalkFailed;
+  }
+  _exit(code);
+}
+
+std::string SignalName(int signal) {
+  const char* name = strsignal(signal);
+  return "signal " + std::to_string(signal) + (name ? std::string(", ") + name : std::string());
+}
+
+std::string LibraryVersion() {
+  unsigned major = 0, minor = 0, release = 0;
+  H5get_libversion(&major, &minor, &release);
+  return std::to_string(major) + "." + std::to_string(minor) + "." + std::to_string(release);
+}
+#endif
+
+}  // namespace
+
+void SetHdf5Preflight(bool enabled) { preflight_enabled = enabled; }
+bool Hdf5PreflightEnabled() { return preflight_enabled; }
+
+bool WalkHdf5Metadata(const std::filesystem::path& path, std::uint64_t inflate_limit) {
+  const Hdf5Quiet quiet;
+  Hdf5Id access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+  if (!access.valid() || H5Pset_fclose_degree(access.get(), H5F_CLOSE_STRONG) < 0) return false;
+  if (H5Fis_hdf5(path.c_str()) <= 0) return false;
+  Hdf5Id file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, access.get()), H5Fclose);
+  if (!file.valid()) return false;
+  Walk walk;
+  walk.file = file.get();
+  walk.inflate_limit = inflate_limit;
+#if H5_VERSION_GE(1, 12, 0)
+  const herr_t visited = H5Ovisit3(file.get(), H5_INDEX_NAME, H5_ITER_NATIVE, VisitObject, &walk, H5O_INFO_BASIC | H5O_INFO_NUM_ATTRS);
+#else
+  const herr_t visited = H5Ovisit2(file.get(), H5_INDEX_NAME, H5_ITER_NATIVE, VisitObject, &walk, H5O_INFO_BASIC | H5O_INFO_NUM_ATTRS);
+#endif
+  if (visited < 0) {
+    return false;
+  }
+  return walk.clean;
+}
+
+void PreflightHdf5(const std::string& source, const std::filesystem::path& path, std::uint64_t inflate_limit,
+                   std::chrono::milliseconds limit) {
+#ifdef RPT_HDF5_PREFLIGHT_FORK
+  if (!preflight_enabled) return;
+  // The child holds the write end of a pipe until it ends: the parent waits on the pipe, which
+  // poll() can bound in time, then reaps the child.
+  int pipe_ends[2];
+  if (pipe2(pipe_ends, O_CLOEXEC) != 0) return;  // no pipe (descriptor limit): read without the walk
+  const pid_t child = fork();
+  if (child < 0) {  // no child to walk in (process limit, memory): read without the walk
+    close(pipe_ends[0]);
+    close(pipe_ends[1]);
+    return;
+  }
+  if (child == 0) {
+    close(pipe_ends[0]);
+    RunChild(path, inflate_limit);
+  }
+  close(pipe_ends[1]);
+  const auto deadline = std::chrono::steady_clock::now() + limit;
+  bool ended = false;
+  while (!ended) {
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+    if (left.count() <= 0) break;
+    pollfd wait_for_end{pipe_ends[0], POLLIN, 0};
+    const int ready = poll(&wait_for_end, 1, static_cast<int>(std::min<long long>(left.count(), 1 << 30)));
+    if (ready < 0 && errno != EINTR) {
+      ended = true;  // cannot wait with a limit: wait for the child without one
+      break;
+    }
+    char byte;
+    ended = ready > 0 && read(pipe_ends[0], &byte, 1) <= 0;  // end of file: the child has ended
+  }
+  close(pipe_ends[0]);
+  if (!ended) kill(child, SIGKILL);
+  int status = 0;
+  while (waitpid(child, &status, 0) < 0) {
+    if (errno != EINTR) return;  // the child was reaped elsewhere (SIGCHLD ignored): no verdict
+  }
+  if (!ended) {
+    throw InputError(source + ": the HDF5 library did not finish walking the file's metadata within " +
+                     (limit.count() >= 1000 && limit.count() % 1000 == 0 ? std::to_string(limit.count() / 1000) + " s"
+                                                : std::to_string(limit.count()) + " ms") +
+                     ": the file is damaged (a loop in its structures?) or on a stalled disk; rpt did not read it");
+  }
+  if (WIFEXITED(status)) {
+    const int code = WEXITSTATUS(status);
+    if (code == kWalked || code == kReportedError || code == kWalkFailed) return;
+  }
+  const std::string how = WIFSIGNALED(status) ? "crashed (" + SignalName(WTERMSIG(status)) + ")"
+                                              : "failed (exit code " + std::to_string(WEXITSTATUS(status)) + ")";
+  throw InputError(source + ": the HDF5 library (" + LibraryVersion() + ") " + how +
+                   " walking the file's groups and attributes: the file is damaged; rpt did not read it");
+#else
+  (void)source, (void)path, (void)inflate_limit, (void)limit;
+#endif
+}
+
+}  // namespace rpt::io
