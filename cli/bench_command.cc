@@ -118,6 +118,7 @@ void RunIoBench(const BenchArgs& args) {
   std::vector<double> reads;
   size_t frames_read = 0;
   for (int i = 0; i < 5; ++i) {
+    io::ForgetPassedHdf5Files();  // every read as the first of the file: with its walk
     const auto start = std::chrono::steady_clock::now();
     const Detections loaded = ReadDetectionsHdf5(path);
     reads.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
@@ -126,6 +127,7 @@ void RunIoBench(const BenchArgs& args) {
   // The walk every read starts with (a child process checks the file's metadata first), alone.
   std::vector<double> walks;
   for (int i = 0; i < 5; ++i) {
+    io::ForgetPassedHdf5Files();
     const auto start = std::chrono::steady_clock::now();
     io::PreflightHdf5(path.string(), path, io::InflateLimitFor(std::filesystem::file_size(path)));
     walks.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());

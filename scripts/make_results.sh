@@ -39,6 +39,13 @@ real() {  # name, then rpt eval arguments
   echo "wrote $dir"
 }
 ours() { sed -n 3p "$OUT/real/$1/summary.md" | sed "s#^| [^|]*|#| $2 |#"; }
+# The paper's row for an rpt dataset name, from results/paper.json (the one copy of those numbers).
+paper() {
+  python3 -c 'import json, sys
+d = json.load(open("results/paper.json"))
+r = d["datasets"][sys.argv[1]]
+print("| " + r["label"] + " | " + " | ".join(str(r[c]) for c in d["columns"]) + " | |")' "$1"
+}
 
 real_results() {
   sweep real/ablations-mvor --dataset mvor --root "$SHARED/mvor" --list results/ablations.json
@@ -69,20 +76,20 @@ real_results() {
     echo '|---|---|---|---|---|---|---|---|---|---|---|'
     ours mvor-openpose "MVOR, shipped OpenPose, 8 arm/torso joints (rpt)"
     ours mvor-openpose-paper "MVOR, shipped OpenPose, + head as nose (rpt)"
-    echo '| MVOR, paper (stronger 2D network) | 59.0 | 44.6 | 76.7 | 120 | 39.9 | 77.9 | 22.1 | 77.9 | 121 | |'
+    paper mvor
     ours shelf4da-openpose "Shelf, 4D-Association OpenPose and GT (rpt)"
-    echo '| Shelf, paper (its own 2D network, original GT) | 99.2 | 94.4 | 100 | 47.5 | 98.7 | 100 | 41.3 | 74.0 | 66.6 | |'
+    paper shelf-4da
     echo
     echo "## Real cameras and GT, simulated detector (realistic profile)"
     echo
     echo "$head"
     echo '|---|---|---|---|---|---|---|---|---|---|---|'
     ours shelf-simulated "Shelf fixture, 3 frames (rpt)"
-    echo '| Shelf, paper | 99.2 | 94.4 | 100 | 47.5 | 98.7 | 100 | 41.3 | 74.0 | 66.6 | |'
+    paper shelf
     ours campus-simulated "Campus fixture, 3 frames (rpt)"
-    echo '| Campus, paper | 95.2 | 79.9 | 100 | 75.2 | 93.9 | 100 | 15.9 | 91.4 | 142 | |'
+    paper campus
     ours panoptic-simulated "Panoptic fixture, 40 frames (rpt)"
-    echo '| Panoptic, paper | 99.1 | 96.5 | 99.8 | 30.6 | 99.3 | 99.8 | 1.8 | 99.0 | 57.5 | |'
+    paper panoptic
   } > "$OUT/real/README.md"
   echo "wrote $OUT/real/README.md"
 }

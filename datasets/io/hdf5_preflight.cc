@@ -8,6 +8,13 @@
 #include <cerrno>
 #include <csignal>
 #include <cstring>
+#include <fstream>
+#include <functional>
+#include <mutex>
+#include <optional>
+#include <set>
+#include <string>
+#include <tuple>
 #include <vector>
 
 #include "core/errors.h"
@@ -145,6 +152,36 @@ herr_t VisitObject(hid_t root, const char* name, const H5O_info_t* info, void* d
 }
 
 #ifdef RPT_HDF5_PREFLIGHT_FORK
+// Files that passed, remembered by their bytes (small files only): the readers open a cache up to
+// three times (probe, labels, detections) and a fuzzer reads thousands of small files, while a
+// larger file's walk costs little beside reading it. The bytes, not the name and time stamp: a
+// file rewritten within the same clock tick keeps its size and time stamp.
+constexpr std::uintmax_t kRememberedFileBytes = std::uintmax_t{1} << 20;
+constexpr std::size_t kRememberedFiles = 4096;
+
+struct Passed {
+  std::mutex mutex;
+  std::set<std::tuple<std::size_t, std::uintmax_t, std::uint64_t>> files;  // hash, size, inflate limit
+};
+Passed& PassedFiles() {
+  static Passed passed;
+  return passed;
+}
+
+// The key of a small file's bytes and the walk's limit; nullopt for larger or unreadable files.
+std::optional<std::tuple<std::size_t, std::uintmax_t, std::uint64_t>> PassKey(const std::filesystem::path& path,
+                                                                              std::uint64_t inflate_limit) {
+  std::error_code ec;
+  const std::uintmax_t size = std::filesystem::file_size(path, ec);
+  if (ec || size > kRememberedFileBytes) return std::nullopt;
+  std::ifstream in(path, std::ios::binary);
+  std::string bytes(static_cast<std::size_t>(size), '\0');
+  if (!in.read(bytes.data(), static_cast<std::streamsize>(size)) || in.peek() != std::ifstream::traits_type::eof()) {
+    return std::nullopt;  // shorter or longer than its size a moment ago: being written
+  }
+  return std::make_tuple(std::hash<std::string>{}(bytes), size, inflate_limit);
+}
+
 [[noreturn]] void RunChild(const std::filesystem::path& path, std::uint64_t inflate_limit) {
   // Silent, and killed by what would kill it: no handler of the parent's (interrupt clean-up,
   // a fuzzer's crash report) runs here.
@@ -183,6 +220,13 @@ std::string LibraryVersion() {
 }  // namespace
 
 void SetHdf5Preflight(bool enabled) { preflight_enabled = enabled; }
+
+void ForgetPassedHdf5Files() {
+#ifdef RPT_HDF5_PREFLIGHT_FORK
+  const std::lock_guard<std::mutex> lock(PassedFiles().mutex);
+  PassedFiles().files.clear();
+#endif
+}
 bool Hdf5PreflightEnabled() { return preflight_enabled; }
 
 bool WalkHdf5Metadata(const std::filesystem::path& path, std::uint64_t inflate_limit) {
@@ -210,6 +254,11 @@ void PreflightHdf5(const std::string& source, const std::filesystem::path& path,
                    std::chrono::milliseconds limit) {
 #ifdef RPT_HDF5_PREFLIGHT_FORK
   if (!preflight_enabled) return;
+  const auto key = PassKey(path, inflate_limit);
+  if (key) {
+    const std::lock_guard<std::mutex> lock(PassedFiles().mutex);
+    if (PassedFiles().files.count(*key)) return;
+  }
   // The child holds the write end of a pipe until it ends: the parent waits on the pipe, which
   // poll() can bound in time, then reaps the child.
   int pipe_ends[2];
@@ -253,7 +302,14 @@ void PreflightHdf5(const std::string& source, const std::filesystem::path& path,
   }
   if (WIFEXITED(status)) {
     const int code = WEXITSTATUS(status);
-    if (code == kWalked || code == kReportedError || code == kWalkFailed) return;
+    if (code == kWalked || code == kReportedError || code == kWalkFailed) {
+      if (key) {
+        const std::lock_guard<std::mutex> lock(PassedFiles().mutex);
+        if (PassedFiles().files.size() >= kRememberedFiles) PassedFiles().files.clear();
+        PassedFiles().files.insert(*key);
+      }
+      return;
+    }
   }
   const std::string how = WIFSIGNALED(status) ? "crashed (" + SignalName(WTERMSIG(status)) + ")"
                                               : "failed (exit code " + std::to_string(WEXITSTATUS(status)) + ")";

@@ -14,9 +14,10 @@
 // reader go on, which then reports any error with the object's path.
 //
 // The walk costs a fork and the metadata reads; `rpt bench --io` times it beside the read it
-// precedes (docs/robustness.md). It runs each time a reader opens a file (no cache of verdicts: a
-// file rewritten within the same clock tick keeps its size and time stamp). Where fork() is not
-// available or fails, it is skipped and the file is read as before.
+// precedes (docs/robustness.md). A file of at most 1 MiB that passed is remembered by its bytes
+// and not walked again; larger files are walked each time a reader opens them (a file rewritten
+// within the same clock tick keeps its size and time stamp, so those are no key). Where fork() is
+// not available or fails, the walk is skipped and the file is read as before.
 #pragma once
 
 #include <chrono>
@@ -32,6 +33,8 @@ inline constexpr std::chrono::seconds kHdf5PreflightLimit{60};
 // without the walk behind them (process-wide).
 void SetHdf5Preflight(bool enabled);
 bool Hdf5PreflightEnabled();
+// Forgets the small files that passed, so the next open walks again (`rpt bench --io` times walks).
+void ForgetPassedHdf5Files();
 
 // Throws InputError "<source>: the HDF5 library crashed (signal N) walking the file's metadata:
 // the file is damaged" (or "did not finish ... within 60 s"). `inflate_limit`: the most data the

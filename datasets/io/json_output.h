@@ -7,25 +7,18 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "core/utf8.h"
+
 namespace rpt::io {
 
 namespace json_output_internal {
 template <class Json>
-bool IsValidUtf8(const std::string& text) {
-  try {
-    (void)Json(text).dump();
-    return true;
-  } catch (const nlohmann::json::type_error&) {
-    return false;
-  }
-}
-template <class Json>
 int CountInvalidStrings(const Json& value) {
-  if (value.is_string()) return IsValidUtf8<Json>(value.template get_ref<const std::string&>()) ? 0 : 1;
+  if (value.is_string()) return IsValidUtf8(value.template get_ref<const std::string&>()) ? 0 : 1;
   int count = 0;
   if (value.is_object()) {
     for (auto it = value.begin(); it != value.end(); ++it) {
-      count += (IsValidUtf8<Json>(it.key()) ? 0 : 1) + CountInvalidStrings(it.value());
+      count += (IsValidUtf8(it.key()) ? 0 : 1) + CountInvalidStrings(it.value());
     }
   } else if (value.is_array()) {
     for (const Json& item : value) count += CountInvalidStrings(item);
@@ -49,7 +42,7 @@ std::string DumpJson(const Json& value, int indent = -1, int* replaced = nullptr
 // `text` with bytes that are not valid UTF-8 replaced by U+FFFD, for other text formats (XML);
 // adds 1 to `*replaced` (when given) when it had to.
 inline std::string ValidUtf8(const std::string& text, int* replaced = nullptr) {
-  if (json_output_internal::IsValidUtf8<nlohmann::json>(text)) return text;
+  if (IsValidUtf8(text)) return text;
   if (replaced != nullptr) ++*replaced;
   return nlohmann::json::parse(nlohmann::json(text).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace))
       .get<std::string>();

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "core/errors.h"
+#include "core/utf8.h"
 
 namespace rpt {
 namespace {
@@ -25,6 +26,19 @@ TEST(PrintableText, InvalidBytesAndControlCharactersAreEscaped) {
   EXPECT_EQ(PrintableText("\xf4\x90\x80\x80"), "\\xf4\\x90\\x80\\x80") << "beyond U+10FFFF";
   EXPECT_EQ(PrintableText("cut \xe2\x82"), "cut \\xe2\\x82") << "sequence cut short";
   EXPECT_EQ(PrintableText("\x80\xe2\x82\xac"), "\\x80\xe2\x82\xac") << "stray continuation, then a valid euro sign";
+}
+
+// The same check decides which strings the JSON and XML writers replace; it must agree with the
+// escaping above.
+TEST(PrintableText, IsValidUtf8AgreesWithTheEscaping) {
+  for (const std::string text : {"", "plain", "Z\xc3\xbcrich \xe2\x9c\x93 \xf0\x9f\x98\x80", "tab\tnewline\n"}) {
+    EXPECT_TRUE(IsValidUtf8(text)) << text;
+  }
+  for (const std::string text : {"\xffpt", "\xc0\xaf", "\xed\xa0\x80", "\xf4\x90\x80\x80", "cut \xe2\x82", "\x80"}) {
+    EXPECT_FALSE(IsValidUtf8(text)) << PrintableText(text);
+  }
+  // Control characters are valid UTF-8 (the writers escape them their own way).
+  EXPECT_TRUE(IsValidUtf8("bell\x07"));
 }
 
 TEST(PrintableText, ErrorMessagesArePrintable) {

@@ -280,5 +280,21 @@ TEST(Hdf5Preflight, AChildThatDoesNotFinishInTimeIsKilledAndTheFileRefused) {
   EXPECT_EQ(waitpid(-1, nullptr, WNOHANG), -1);
 }
 
+// A small file that passed is remembered by its bytes: opened again, it is not walked (a limit of
+// 0 ms passes); the same name and size with other bytes, written within the same clock tick, is
+// walked again (and the 0 ms limit refuses it).
+TEST(Hdf5Preflight, SmallFilesThatPassedAreRememberedByTheirBytes) {
+  test::TempDir dir;
+  ByteVec bytes = ValidCache(dir);
+  const auto path = dir.Write("remembered.h5", bytes);
+  io::PreflightHdf5(path.string(), path, 1 << 21);
+  EXPECT_NO_THROW(io::PreflightHdf5(path.string(), path, 1 << 21, std::chrono::milliseconds(0)));
+  bytes.back() ^= 0xff;
+  dir.Write("remembered.h5", bytes);
+  EXPECT_THAT(test::InputErrorOf([&] { io::PreflightHdf5(path.string(), path, 1 << 21, std::chrono::milliseconds(0)); }),
+              HasSubstr("did not finish"));
+  io::ForgetPassedHdf5Files();
+}
+
 }  // namespace
 }  // namespace rpt
