@@ -18,9 +18,9 @@
 #include "cli/results_writer.h"
 #include "cli/run_info.h"
 #include "core/errors.h"
-#include "core/text.h"
 #include "core/pipeline/room_check.h"
 #include "core/pipeline/triangulator.h"
+#include "core/text.h"
 #include "datasets/detections.h"
 #include "datasets/io/hdf5_preflight.h"
 #include "datasets/io/inflate_budget.h"
@@ -149,10 +149,11 @@ void RunIoBench(const BenchArgs& args) {
     std::cout << j.dump(2) << "\n";
     return;
   }
-  std::printf("HDF5 detection cache: %d frames x %zu views, %ld persons, %.1f MB; write %.3f s; read %.3f s (median of 5)"
-              " = %.0f frames/s; of each read, the metadata walk in a child process %.1f ms (median of 5)\n",
-              args.io_frames, sequence.cameras.size(), persons, static_cast<double>(size) / 1e6, write_s, read_s,
-              args.io_frames / read_s, walk_s * 1e3);
+  std::printf(
+      "HDF5 detection cache: %d frames x %zu views, %ld persons, %.1f MB; write %.3f s; read %.3f s (median of 5)"
+      " = %.0f frames/s; of each read, the metadata walk in a child process %.1f ms (median of 5)\n",
+      args.io_frames, sequence.cameras.size(), persons, static_cast<double>(size) / 1e6, write_s, read_s,
+      args.io_frames / read_s, walk_s * 1e3);
 }
 
 void RunBench(const BenchArgs& args) {

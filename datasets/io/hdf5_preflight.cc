@@ -56,16 +56,16 @@ constexpr std::size_t kMaxAttributeElements = std::size_t{1} << 16;
 std::atomic<bool> preflight_enabled{true};
 
 struct Walk {
-  hid_t file = H5I_INVALID_HID;
   std::uint64_t inflate_limit = 0;
   std::size_t objects = 0;
   bool clean = true;
 };
 
 // Reads `count` elements of `type` through `read` into a buffer and gives back what variable-length
-// data the library allocated. Returns false when the library reported an error.
+// data the library allocated. Returns false when the library reported an error; reads nothing
+// when the buffer would exceed `max_bytes` (a damaged size; the reader refuses it before reading).
 template <typename Read>
-bool ReadAndReclaim(hid_t type, hid_t space, hsize_t count, Read read) {
+bool ReadAndReclaim(hid_t type, hid_t space, hsize_t count, std::uint64_t max_bytes, Read read) {
   const htri_t variable_string = H5Tis_variable_str(type);
   const htri_t variable = H5Tdetect_class(type, H5T_VLEN);
   if (variable_string < 0 || variable < 0) return false;
@@ -74,7 +74,9 @@ bool ReadAndReclaim(hid_t type, hid_t space, hsize_t count, Read read) {
   if (variable_string > 0 && H5Tset_size(memory_type.get(), H5T_VARIABLE) < 0) return false;
   const std::size_t element = H5Tget_size(memory_type.get());
   if (element == 0) return false;
-  std::vector<unsigned char> buffer(count * element + 1, 0);
+  hsize_t bytes = 0;
+  if (__builtin_mul_overflow(count, element, &bytes) || bytes > max_bytes) return true;
+  std::vector<unsigned char> buffer(bytes + 1, 0);
   const bool ok = read(memory_type.get(), buffer.data()) >= 0;
   if (variable_string > 0 || variable > 0) H5Dvlen_reclaim(memory_type.get(), space, H5P_DEFAULT, buffer.data());
   return ok;
@@ -92,8 +94,9 @@ herr_t VisitAttribute(hid_t object, const char* name, const H5A_info_t*, void* d
   }
   if (points == 0 || static_cast<std::size_t>(points) > kMaxAttributeElements) return 0;
   const hid_t attribute_id = attribute.get();
-  if (!ReadAndReclaim(type.get(), space.get(), static_cast<hsize_t>(points),
-                      [attribute_id](hid_t memory_type, void* buffer) { return H5Aread(attribute_id, memory_type, buffer); })) {
+  if (!ReadAndReclaim(
+          type.get(), space.get(), static_cast<hsize_t>(points), walk->inflate_limit,
+          [attribute_id](hid_t memory_type, void* buffer) { return H5Aread(attribute_id, memory_type, buffer); })) {
     walk->clean = false;
   }
   return 0;
@@ -125,9 +128,10 @@ void VisitDataset(hid_t dataset, Walk* walk) {
       bytes > walk->inflate_limit) {
     return;  // empty, or more than the reader would accept: it refuses before reading
   }
-  if (!ReadAndReclaim(type.get(), space.get(), static_cast<hsize_t>(points), [dataset](hid_t memory_type, void* buffer) {
-        return H5Dread(dataset, memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, buffer);
-      })) {
+  if (!ReadAndReclaim(type.get(), space.get(), static_cast<hsize_t>(points), walk->inflate_limit,
+                      [dataset](hid_t memory_type, void* buffer) {
+                        return H5Dread(dataset, memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, buffer);
+                      })) {
     walk->clean = false;
   }
 }
@@ -144,7 +148,8 @@ herr_t VisitObject(hid_t root, const char* name, const H5O_info_t* info, void* d
     return 0;
   }
   hsize_t index = 0;
-  if (info->num_attrs > 0 && H5Aiterate2(object.get(), H5_INDEX_NAME, H5_ITER_NATIVE, &index, VisitAttribute, walk) < 0) {
+  if (info->num_attrs > 0 &&
+      H5Aiterate2(object.get(), H5_INDEX_NAME, H5_ITER_NATIVE, &index, VisitAttribute, walk) < 0) {
     walk->clean = false;
   }
   if (info->type == H5O_TYPE_DATASET) VisitDataset(object.get(), walk);
@@ -237,12 +242,13 @@ bool WalkHdf5Metadata(const std::filesystem::path& path, std::uint64_t inflate_l
   Hdf5Id file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, access.get()), H5Fclose);
   if (!file.valid()) return false;
   Walk walk;
-  walk.file = file.get();
   walk.inflate_limit = inflate_limit;
 #if H5_VERSION_GE(1, 12, 0)
-  const herr_t visited = H5Ovisit3(file.get(), H5_INDEX_NAME, H5_ITER_NATIVE, VisitObject, &walk, H5O_INFO_BASIC | H5O_INFO_NUM_ATTRS);
+  const herr_t visited =
+      H5Ovisit3(file.get(), H5_INDEX_NAME, H5_ITER_NATIVE, VisitObject, &walk, H5O_INFO_BASIC | H5O_INFO_NUM_ATTRS);
 #else
-  const herr_t visited = H5Ovisit2(file.get(), H5_INDEX_NAME, H5_ITER_NATIVE, VisitObject, &walk, H5O_INFO_BASIC | H5O_INFO_NUM_ATTRS);
+  const herr_t visited =
+      H5Ovisit2(file.get(), H5_INDEX_NAME, H5_ITER_NATIVE, VisitObject, &walk, H5O_INFO_BASIC | H5O_INFO_NUM_ATTRS);
 #endif
   if (visited < 0) {
     return false;
@@ -277,7 +283,8 @@ void PreflightHdf5(const std::string& source, const std::filesystem::path& path,
   const auto deadline = std::chrono::steady_clock::now() + limit;
   bool ended = false;
   while (!ended) {
-    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+    const auto left =
+        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
     if (left.count() <= 0) break;
     pollfd wait_for_end{pipe_ends[0], POLLIN, 0};
     const int ready = poll(&wait_for_end, 1, static_cast<int>(std::min<long long>(left.count(), 1 << 30)));
@@ -297,7 +304,7 @@ void PreflightHdf5(const std::string& source, const std::filesystem::path& path,
   if (!ended) {
     throw InputError(source + ": the HDF5 library did not finish walking the file's metadata within " +
                      (limit.count() >= 1000 && limit.count() % 1000 == 0 ? std::to_string(limit.count() / 1000) + " s"
-                                                : std::to_string(limit.count()) + " ms") +
+                                                                         : std::to_string(limit.count()) + " ms") +
                      ": the file is damaged (a loop in its structures?) or on a stalled disk; rpt did not read it");
   }
   if (WIFEXITED(status)) {

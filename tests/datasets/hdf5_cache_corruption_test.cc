@@ -26,9 +26,9 @@
 namespace rpt {
 namespace {
 
+using test::ByteVec;
 using ::testing::AllOf;
 using ::testing::HasSubstr;
-using test::ByteVec;
 
 ByteVec ReadBytes(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
@@ -260,11 +260,13 @@ TEST(Hdf5CacheCorruption, UndefinedRootLocalHeapIsAnInputErrorNotACrash) {
   ASSERT_NE(damaged, valid);
   EXPECT_EQ(ReadEveryWay(dir, damaged, "root local heap at the undefined address", /*preflight=*/true), "");
   const auto path = dir.Write("undefined_heap.h5", damaged);
-  EXPECT_THAT(test::InputErrorOf([&] { ProbeHdf5Cache(path); }),
-              AllOf(HasSubstr(path.string() + ": the HDF5 library"), HasSubstr("the file is damaged; rpt did not read it")));
+  EXPECT_THAT(
+      test::InputErrorOf([&] { ProbeHdf5Cache(path); }),
+      AllOf(HasSubstr(path.string() + ": the HDF5 library"), HasSubstr("the file is damaged; rpt did not read it")));
   // Other addresses past the end of the file are errors HDF5 reports itself.
   EXPECT_EQ(ReadEveryWay(dir, WithRootLocalHeapAt(valid, std::uint64_t{1} << 40), "root local heap past the end"), "");
-  EXPECT_EQ(ReadEveryWay(dir, WithRootLocalHeapAt(valid, std::uint64_t{1} << 40), "root local heap past the end", true), "");
+  EXPECT_EQ(ReadEveryWay(dir, WithRootLocalHeapAt(valid, std::uint64_t{1} << 40), "root local heap past the end", true),
+            "");
 }
 
 // The walk is bounded in time: a child that does not finish is killed, reaped, and the file
@@ -273,8 +275,9 @@ TEST(Hdf5Preflight, AChildThatDoesNotFinishInTimeIsKilledAndTheFileRefused) {
   test::TempDir dir;
   const auto path = dir.Write("valid.h5", ValidCache(dir));
   EXPECT_TRUE(io::WalkHdf5Metadata(path, io::InflateLimitFor(std::filesystem::file_size(path))));
-  EXPECT_THAT(test::InputErrorOf([&] { io::PreflightHdf5(path.string(), path, 1 << 20, std::chrono::milliseconds(0)); }),
-              HasSubstr(path.string() + ": the HDF5 library did not finish walking the file's metadata within 0 ms"));
+  EXPECT_THAT(
+      test::InputErrorOf([&] { io::PreflightHdf5(path.string(), path, 1 << 20, std::chrono::milliseconds(0)); }),
+      HasSubstr(path.string() + ": the HDF5 library did not finish walking the file's metadata within 0 ms"));
   io::PreflightHdf5(path.string(), path, 1 << 20);  // finishes: no exception
   // No child is left behind: every one was reaped.
   EXPECT_EQ(waitpid(-1, nullptr, WNOHANG), -1);
@@ -291,8 +294,9 @@ TEST(Hdf5Preflight, SmallFilesThatPassedAreRememberedByTheirBytes) {
   EXPECT_NO_THROW(io::PreflightHdf5(path.string(), path, 1 << 21, std::chrono::milliseconds(0)));
   bytes.back() ^= 0xff;
   dir.Write("remembered.h5", bytes);
-  EXPECT_THAT(test::InputErrorOf([&] { io::PreflightHdf5(path.string(), path, 1 << 21, std::chrono::milliseconds(0)); }),
-              HasSubstr("did not finish"));
+  EXPECT_THAT(
+      test::InputErrorOf([&] { io::PreflightHdf5(path.string(), path, 1 << 21, std::chrono::milliseconds(0)); }),
+      HasSubstr("did not finish"));
   io::ForgetPassedHdf5Files();
 }
 
