@@ -13,7 +13,7 @@
 #include <string>
 
 #include "bench/bench_scenes.h"
-#include "core/pipeline/room_check.h"
+#include "engine/run.h"
 #include "core/pipeline/triangulator.h"
 
 namespace rpt::bench {
@@ -31,9 +31,8 @@ Prepared& Get(const BenchScene& scene) {
   if (it == cache.end()) {
     Prepared p;
     p.sequence = MakeBenchSequence(scene);
-    TriangulatorOptions options;
-    UseDatasetRoomIfUnset(p.sequence.room.center_m, p.sequence.room.size_m, &options.room_check);
-    p.triangulator = std::make_unique<Triangulator>(p.sequence.cameras, p.sequence.detection_joints, options);
+    p.triangulator = std::make_unique<Triangulator>(p.sequence.cameras, p.sequence.detection_joints,
+                                                    engine::TriangulatorOptionsFor({}, p.sequence));
     it = cache.emplace(scene.name, std::move(p)).first;
   }
   return it->second;

@@ -14,11 +14,11 @@
 #include "bench/bench_scenes.h"
 #include "cli/commands.h"
 #include "cli/config_args.h"
-#include "cli/report.h"
-#include "cli/results_writer.h"
-#include "cli/run_info.h"
+#include "engine/outputs/step_tables.h"
+#include "engine/outputs/results_writer.h"
+#include "engine/outputs/run_info.h"
+#include "engine/run.h"
 #include "core/errors.h"
-#include "core/pipeline/room_check.h"
 #include "core/pipeline/triangulator.h"
 #include "core/text.h"
 #include "datasets/detections.h"
@@ -57,11 +57,10 @@ struct SceneResult {
   metrics::MetricsResult baseline_metrics;
 };
 
-SceneResult BenchScene(const bench::BenchScene& scene, const BenchArgs& args, const Config& config) {
+SceneResult BenchScene(const bench::BenchScene& scene, const BenchArgs& args, const engine::Config& config) {
   const Sequence sequence = bench::MakeBenchSequence(scene, 1, args.detector);
-  TriangulatorOptions options = config.triangulator;
-  UseDatasetRoomIfUnset(sequence.room.center_m, sequence.room.size_m, &options.room_check);
-  Triangulator triangulator(sequence.cameras, sequence.detection_joints, options);
+  Triangulator triangulator(sequence.cameras, sequence.detection_joints,
+                            engine::TriangulatorOptionsFor(config.triangulator, sequence));
   SceneResult result{scene, {}, {}, 0, {}};
   Poses3D persons;
   FrameStats stats;
@@ -161,7 +160,7 @@ void RunBench(const BenchArgs& args) {
     RunIoBench(args);
     return;
   }
-  const Config config = ResolveConfig(args.config);
+  const engine::Config config = ResolveConfig(args.config);
   std::vector<bench::BenchScene> scenes;
   const std::vector<bench::BenchScene> all = [&] {
     std::vector<bench::BenchScene> list = bench::StandardScenes();
@@ -187,10 +186,10 @@ void RunBench(const BenchArgs& args) {
     if (!args.json) std::fprintf(stderr, "benchmarking %s ...\n", scene.name.c_str());
     results.push_back(BenchScene(scene, args, config));
   }
-  const RunInfo info = CollectRunInfo(1);
+  const engine::RunInfo info = engine::CollectRunInfo(1);
   if (args.json) {
     Json j;
-    j["run"] = RunInfoJson(info);
+    j["run"] = engine::RunInfoJson(info);
     j["repeat"] = args.repeat;
     j["scenes"] = Json::array();
     for (const SceneResult& r : results) {
@@ -201,7 +200,7 @@ void RunBench(const BenchArgs& args) {
       s["frame_time_us_median"] = r.timing.frame_us_median;
       s["frame_time_us_mean"] = r.timing.frame_us_mean;
       s["frame_time_us_p90"] = r.timing.frame_us_p90;
-      s["step_time_us_median"] = StepTimesJson(r.timing);
+      s["step_time_us_median"] = engine::StepTimesJson(r.timing);
       s["mpjpe_mm"] = r.metrics.mpjpe_mm;
       s["recall500"] = r.metrics.recall_500;
       s["invalid"] = r.metrics.invalid;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// `rpt check --thresholds FILE`: validates the whole thresholds file (cli/thresholds_file.h; exit 2
+// `rpt check --thresholds FILE`: validates the whole thresholds file (engine/thresholds_file.h; exit 2
 // naming the file and JSON path when it is invalid), then re-runs every evaluation listed and exits 1
 // when a metric falls below its floor ("min") or rises above its ceiling ("max"), printing expected
 // vs achieved. An evaluation that fails to run is named in the table and the others still run (exit
@@ -12,11 +12,12 @@
 #include <iostream>
 
 #include "cli/commands.h"
-#include "cli/junit_xml.h"
-#include "cli/load_input.h"
-#include "cli/results_writer.h"
-#include "cli/run_sequence.h"
-#include "cli/thresholds_file.h"
+#include "engine/outputs/junit_xml.h"
+#include "cli/input_options.h"
+#include "engine/input.h"
+#include "engine/outputs/results_writer.h"
+#include "engine/run.h"
+#include "engine/thresholds_file.h"
 #include "core/errors.h"
 
 namespace rpt::cli {
@@ -30,11 +31,11 @@ struct CheckArgs {
   std::string only;
   bool json = false;
   bool fail_on_skip = false;
-  bool strict = false;  // input not used fails the evaluation (CheckStrict)
+  bool strict = false;  // input not used fails the evaluation (engine::CheckStrict)
   std::string junit;
 };
 
-std::string CheckName(const ThresholdCheck& check) {
+std::string CheckName(const engine::ThresholdCheck& check) {
   char limit[32];
   std::snprintf(limit, sizeof(limit), "%g", check.limit);
   return check.metric + " " + check.bound + " " + limit;
@@ -43,7 +44,7 @@ std::string CheckName(const ThresholdCheck& check) {
 // Per evaluation outcome: every check passes, fails, errors or is skipped.
 class CheckReport {
  public:
-  void Checked(const ThresholdEvaluation& e, const ThresholdCheck& check, double achieved, bool pass) {
+  void Checked(const engine::ThresholdEvaluation& e, const engine::ThresholdCheck& check, double achieved, bool pass) {
     ++checked_;
     failures_ += pass ? 0 : 1;
     std::printf("%-40s %-22s %6s %10.2f %10.2f  %s\n", e.name.c_str(), check.metric.c_str(), check.bound.c_str(),
@@ -54,24 +55,24 @@ class CheckReport {
     char message[128];
     std::snprintf(message, sizeof(message), "expected %s %g, achieved %.4g", check.bound == "min" ? ">=" : "<=",
                   check.limit, achieved);
-    cases_.push_back({e.name, CheckName(check), pass ? JunitCase::Outcome::kPass : JunitCase::Outcome::kFailure,
+    cases_.push_back({e.name, CheckName(check), pass ? engine::JunitCase::Outcome::kPass : engine::JunitCase::Outcome::kFailure,
                       pass ? "" : message});
   }
 
-  void Skipped(const ThresholdEvaluation& e, bool as_failure) {
+  void Skipped(const engine::ThresholdEvaluation& e, bool as_failure) {
     ++skipped_;
     const std::string why = e.required_path + " absent";
     std::printf("%-40s %-22s %6s %10s %10s  %s (%s)\n", e.name.c_str(), "-", "-", "-", "-",
                 as_failure ? "SKIPPED, failing" : "skipped", why.c_str());
-    AddCases(e, as_failure ? JunitCase::Outcome::kFailure : JunitCase::Outcome::kSkipped,
+    AddCases(e, as_failure ? engine::JunitCase::Outcome::kFailure : engine::JunitCase::Outcome::kSkipped,
              as_failure ? "skipped (" + why + "), --fail-on-skip" : "skipped (" + why + ")");
   }
 
-  void Errored(const ThresholdEvaluation& e, const std::string& what) {
+  void Errored(const engine::ThresholdEvaluation& e, const std::string& what) {
     ++errored_;
     std::printf("%-40s %-22s %6s %10s %10s  ERROR: %s\n", e.name.c_str(), "-", "-", "-", "-", what.c_str());
     json_.push_back({{"evaluation", e.name}, {"error", what}, {"pass", false}});
-    AddCases(e, JunitCase::Outcome::kError, what);
+    AddCases(e, engine::JunitCase::Outcome::kError, what);
   }
 
   void PrintTotals() const {
@@ -84,34 +85,33 @@ class CheckReport {
     return failures_ > 0 || errored_ > 0 || (fail_on_skip && skipped_ > 0) ? 1 : 0;
   }
   const Json& json() const { return json_; }
-  const std::vector<JunitCase>& cases() const { return cases_; }
+  const std::vector<engine::JunitCase>& cases() const { return cases_; }
 
  private:
   // One case per check of an evaluation that did not produce numbers (one for the evaluation when it has none).
-  void AddCases(const ThresholdEvaluation& e, JunitCase::Outcome outcome, const std::string& message) {
+  void AddCases(const engine::ThresholdEvaluation& e, engine::JunitCase::Outcome outcome, const std::string& message) {
     if (e.checks.empty()) cases_.push_back({e.name, "evaluation", outcome, message});
-    for (const ThresholdCheck& check : e.checks) cases_.push_back({e.name, CheckName(check), outcome, message});
+    for (const engine::ThresholdCheck& check : e.checks) cases_.push_back({e.name, CheckName(check), outcome, message});
   }
 
   int checked_ = 0, failures_ = 0, skipped_ = 0, errored_ = 0;
   Json json_ = Json::array();
-  std::vector<JunitCase> cases_;
+  std::vector<engine::JunitCase> cases_;
 };
 
 // Runs one evaluation and checks its bounds; throws what the readers or the pipeline throw.
-void RunEvaluation(const ThresholdEvaluation& e, bool strict, InputWarnings* warnings, CheckReport* report) {
-  RunOptions options;
+void RunEvaluation(const engine::ThresholdEvaluation& e, bool strict, InputWarnings* warnings, CheckReport* report) {
+  engine::RunOptions options;
   options.triangulator = e.config.triangulator;
   options.eval = e.config.metrics;
-  options.progress = false;
   options.threads = 1;  // timings comparable across machines with different core counts
-  InputWarnings loaded;
-  InputArgs input = e.input;
+  engine::InputSpec input = e.input;
   input.strict = strict;
-  const RunResult run = RunSequences(LoadInput(input, true, &loaded), options);
-  warnings->MergeRepeated(loaded);
-  const nlohmann::ordered_json summary = SummaryJson(run);
-  for (const ThresholdCheck& check : e.checks) {
+  engine::Input opened = engine::OpenInput(input);
+  const engine::RunResult run = engine::Run(opened, options);
+  warnings->MergeRepeated(run.warnings);
+  const nlohmann::ordered_json summary = engine::SummaryJson(run);
+  for (const engine::ThresholdCheck& check : e.checks) {
     // A metric the run does not report (e.g. legacy_pcp without metrics.legacy_pcp) fails its check.
     const bool is_null = !summary.contains(check.metric) || summary[check.metric].is_null();
     const double achieved = is_null ? std::nan("") : summary[check.metric].get<double>();
@@ -122,12 +122,12 @@ void RunEvaluation(const ThresholdEvaluation& e, bool strict, InputWarnings* war
 
 // Exit status of the check (0 all pass, 1 a check failed, an evaluation failed or, with --fail-on-skip, was skipped).
 int RunCheck(const CheckArgs& args) {
-  const ThresholdsFile file = ReadThresholdsFile(args.thresholds);
+  const engine::ThresholdsFile file = engine::ReadThresholdsFile(args.thresholds);
   CheckReport report;
   // Evaluations often read the same files: one line per file and kind for the whole check.
   InputWarnings warnings;
   std::printf("%-40s %-22s %6s %10s %10s  %s\n", "evaluation", "metric", "bound", "expected", "achieved", "status");
-  for (const ThresholdEvaluation& e : file.evaluations) {
+  for (const engine::ThresholdEvaluation& e : file.evaluations) {
     if (!args.only.empty() && e.name.find(args.only) == std::string::npos) continue;
     if (!e.required_path.empty() && !fs::exists(e.required_path)) {
       report.Skipped(e, args.fail_on_skip);
@@ -144,7 +144,7 @@ int RunCheck(const CheckArgs& args) {
   PrintInputWarnings(warnings);
   report.PrintTotals();
   if (args.json) std::cout << report.json().dump(2) << "\n";
-  if (!args.junit.empty()) WriteJunitXml(args.junit, "rpt check " + args.thresholds, report.cases());
+  if (!args.junit.empty()) engine::WriteJunitXml(args.junit, "rpt check " + args.thresholds, report.cases());
   return report.ExitCode(args.fail_on_skip);
 }
 
@@ -161,7 +161,7 @@ void RegisterCheckCommand(CLI::App& app, int* exit_code) {
   command->add_flag("--strict", args->strict,
                     "an evaluation whose input is not all used (entries skipped, frames matching nothing) fails");
   command->add_option("--junit", args->junit, "also write the checks as JUnit XML to this file (one testcase per check)");
-  command->footer(ThresholdsSchemaText());
+  command->footer(engine::ThresholdsSchemaText());
   command->callback([args, exit_code] { *exit_code = RunCheck(*args); });
 }
 

@@ -15,12 +15,9 @@ void AddConfigOptions(CLI::App* command, ConfigArgs* args) {
       ->take_all();
 }
 
-Config ResolveConfig(const ConfigArgs& args) {
-  Config config;
-  if (!args.config_file.empty()) LoadConfigFile(args.config_file, &config);
-  for (const std::string& assignment : args.overrides) ApplyConfigOverride(assignment, &config);
-  CheckConfig(config);
-  for (const std::string& warning : ConfigWarnings(config)) std::cerr << "warning: " << warning << "\n";
+engine::Config ResolveConfig(const ConfigArgs& args) {
+  const engine::Config config = engine::ResolveConfig(args.config_file, args.overrides);
+  for (const std::string& warning : engine::ConfigWarnings(config)) std::cerr << "warning: " << warning << "\n";
   return config;
 }
 

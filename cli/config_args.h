@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "cli/config.h"
+#include "engine/config.h"
 
 namespace rpt::cli {
 
@@ -16,8 +16,8 @@ struct ConfigArgs {
 };
 
 void AddConfigOptions(CLI::App* command, ConfigArgs* args);
-// Defaults, then the file, then the overrides in order; checked (throws ConfigError). Settings
-// without effect are printed to stderr as "warning: ...".
-Config ResolveConfig(const ConfigArgs& args);
+// engine::ResolveConfig of the options; settings without effect are printed to stderr as
+// "warning: ...".
+engine::Config ResolveConfig(const ConfigArgs& args);
 
 }  // namespace rpt::cli

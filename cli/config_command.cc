@@ -33,11 +33,11 @@ void RegisterConfigCommand(CLI::App& app) {
   AddConfigOptions(command, &options->config);
   command->callback([options] {
     if (options->markdown) {
-      std::cout << ConfigMarkdown();
+      std::cout << engine::ConfigMarkdown();
       return;
     }
-    const Config config = ResolveConfig(options->config);
-    std::cout << DumpConfig(config, options->comments);
+    const engine::Config config = ResolveConfig(options->config);
+    std::cout << engine::DumpConfig(config, options->comments);
   });
 }
 

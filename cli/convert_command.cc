@@ -8,7 +8,8 @@
 #include <filesystem>
 
 #include "cli/commands.h"
-#include "cli/load_input.h"
+#include "cli/input_options.h"
+#include "engine/input.h"
 #include "core/errors.h"
 #include "datasets/io/staged_output.h"
 #include "datasets/readers/detections_file.h"
@@ -20,7 +21,7 @@ namespace rpt::cli {
 namespace {
 
 struct ConvertArgs {
-  InputArgs input;
+  engine::InputSpec input;
   std::string out;             // HDF5 cache
   std::string labels_out;      // generic labels JSON
   std::string detections_out;  // generic detections JSON
@@ -60,11 +61,11 @@ void RunConvert(const ConvertArgs& args) {
   // Corrected values (scores clamped to 1, rotations re-orthonormalised) are what gets written.
   InputWarnings warnings;
   const std::vector<Sequence> sequences =
-      detections_only ? std::vector<Sequence>{} : LoadInput(args.input, /*require_detections=*/false, &warnings);
+      detections_only ? std::vector<Sequence>{} : engine::LoadInput(args.input, {.detections = false}, &warnings);
   const Detections detections =
       detections_only ? ReadDetectionsFile(args.input.detections, DetectionsFileOptions{}) : CollectDetections(sequences);
   warnings.Merge(detections.warnings);  // empty unless read directly above
-  CheckStrict(args.input.strict, warnings);  // LoadInput checked its own; this covers the direct read
+  engine::CheckStrict(args.input.strict, warnings);  // engine::LoadInput checked its own; this covers the direct read
   PrintInputWarnings(warnings);
   if (!args.out.empty() && (!sequences.empty() || !detections.frames.empty())) {
     // Written beside the cache and renamed over it when complete: an interrupted or failed

@@ -7,9 +7,10 @@
 
 #include "cli/commands.h"
 #include "cli/config_args.h"
-#include "cli/report.h"
-#include "cli/results_writer.h"
-#include "cli/run_sequence.h"
+#include "cli/progress.h"
+#include "engine/outputs/step_tables.h"
+#include "engine/outputs/results_writer.h"
+#include "engine/run.h"
 #include "core/errors.h"
 #include "core/text.h"
 #include "datasets/readers/synthetic_dataset.h"
@@ -47,14 +48,15 @@ void RunDemo(DemoOptions o) {
   EnumFromName(o.distortion, &params.distortion);
   params.noise = o.detector;
   params.seed = o.seed;
-  std::vector<Sequence> sequences = MakeSyntheticDataset(params);
-  sequences.front().name = "demo";
-  const Config config = ResolveConfig(o.config);
-  RunOptions run_options;
+  std::vector<std::unique_ptr<FrameSource>> sources;
+  sources.push_back(StreamSynthetic(params));
+  const engine::Config config = ResolveConfig(o.config);
+  engine::RunOptions run_options;
   run_options.triangulator = config.triangulator;
   run_options.eval = config.metrics;
-  run_options.progress = !o.json;
-  const RunResult run = RunSequences(sequences, run_options);
+  Progress progress("demo", o.frames, !o.json);
+  run_options.progress = ReportTo(&progress);
+  const engine::RunResult run = engine::Run(std::move(sources), run_options);
   const metrics::MetricsResult& m = run.metrics;
 
   if (o.json) {
@@ -62,19 +64,19 @@ void RunDemo(DemoOptions o) {
     j["cameras"] = o.cameras;
     j["people"] = o.people;
     j["joints"] = o.joints;
-    j["output_joints"] = run.sequences[0].output_joints.size();
+    j["output_joints"] = run.sequences.front().output_joints.size();
     j["detector"] = o.detector;
     j["distortion"] = o.distortion;
     j["seed"] = o.seed;
     j["persons_present"] = run.gt_persons;
     j["persons_found"] = run.output_persons;
     j["persons_matched"] = m.num_matches;
-    j.update(SummaryJson(run));
+    j.update(engine::SummaryJson(run));
     std::cout << j.dump(2) << "\n";
     return;
   }
   std::printf("rpt demo: %d cameras, %d people, %d frames, %s joints (%zu out), %s detector, %s lens, seed %llu\n",
-              o.cameras, o.people, o.frames, o.joints.c_str(), run.sequences[0].output_joints.size(), o.detector.c_str(),
+              o.cameras, o.people, o.frames, o.joints.c_str(), run.sequences.front().output_joints.size(), o.detector.c_str(),
               o.distortion.c_str(), static_cast<unsigned long long>(o.seed));
   std::printf("persons present %ld, found %ld, matched %d (recall@500 %.1f %%, invalid %.1f %%)\n", run.gt_persons,
               run.output_persons, m.num_matches, m.recall_500, m.invalid);
@@ -85,7 +87,7 @@ void RunDemo(DemoOptions o) {
   }
   std::printf("time per frame: median %.1f us, mean %.1f us (%.0f FPS, 2D to 3D, one thread)\n",
               run.timing.frame_us_median, run.timing.frame_us_mean, run.timing.fps);
-  PrintStepTimes(std::cout, run.timing, &run.counts);
+  engine::PrintStepTimes(std::cout, run.timing, &run.counts);
 }
 
 }  // namespace

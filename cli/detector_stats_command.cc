@@ -16,10 +16,11 @@
 #include <vector>
 
 #include "cli/commands.h"
-#include "cli/detector_stats_comparison.h"
-#include "cli/detector_stats_json.h"
-#include "cli/detector_stats_markdown.h"
-#include "cli/load_input.h"
+#include "engine/detector_stats_comparison.h"
+#include "engine/outputs/detector_stats_json.h"
+#include "engine/outputs/detector_stats_markdown.h"
+#include "cli/input_options.h"
+#include "engine/input.h"
 #include "core/errors.h"
 #include "core/text.h"
 #include "datasets/detections.h"
@@ -33,7 +34,7 @@ using Json = nlohmann::ordered_json;
 using detector_stats::DetectorStats;
 
 struct DetectorStatsArgs {
-  InputArgs input;
+  engine::InputSpec input;
   std::string joints;  // comma-separated
   double gate = 0.5;
   int min_joints_in_image = 2;
@@ -41,7 +42,7 @@ struct DetectorStatsArgs {
   std::vector<std::string> compare;  // simulated profiles to put next to the input's detections
 };
 
-std::string Describe(const InputArgs& input) {
+std::string Describe(const engine::InputSpec& input) {
   std::string text = !input.dataset.empty() ? "dataset " + input.dataset : "labels " + input.labels;
   for (const std::string& param : input.params) text += " " + param;
   if (input.simulate) {
@@ -69,7 +70,7 @@ DetectorStats ComputeStats(const std::vector<Sequence>& sequences, const Detecto
 }
 
 // The input's own name for the column header: the dataset, else the labels file.
-std::string InputColumnName(const InputArgs& input) {
+std::string InputColumnName(const engine::InputSpec& input) {
   if (!input.dataset.empty()) return "input: " + input.dataset;
   return "input: " + std::filesystem::path(input.labels).filename().string();
 }
@@ -86,21 +87,21 @@ void RunComparison(const DetectorStatsArgs& args) {
     }
   }
   InputWarnings input_warnings;
-  const std::vector<Sequence> sequences = LoadInput(args.input, /*require_detections=*/true, &input_warnings);
+  const std::vector<Sequence> sequences = engine::LoadInput(args.input, {}, &input_warnings);
   PrintInputWarnings(input_warnings);
-  std::vector<DetectorStatsColumn> columns;
-  std::vector<InputArgs> inputs;
+  std::vector<engine::DetectorStatsColumn> columns;
+  std::vector<engine::InputSpec> inputs;
   columns.push_back({InputColumnName(args.input), ComputeStats(sequences, args)});
   inputs.push_back(args.input);
   for (const std::string& profile : args.compare) {
     // The input as `--simulate --detector PROFILE` would give it (--simulate-perfect is refused
     // above): simulated and described from the same options.
-    InputArgs described = args.input;
+    engine::InputSpec described = args.input;
     described.simulate = true;
     described.detector = profile;
     described.detections.clear();
     std::vector<Sequence> simulated = sequences;  // same GT and cameras
-    for (Sequence& s : simulated) SimulateDetections(SimulationOf(described), &s);
+    for (Sequence& s : simulated) SimulateDetections(engine::SimulationOf(described), &s);
     columns.push_back({profile, ComputeStats(simulated, args)});
     inputs.push_back(described);
   }
@@ -109,13 +110,13 @@ void RunComparison(const DetectorStatsArgs& args) {
     for (size_t c = 0; c < columns.size(); ++c) {
       Json entry;
       entry["input"] = Describe(inputs[c]);
-      entry.update(DetectorStatsJson(columns[c].stats));
+      entry.update(engine::DetectorStatsJson(columns[c].stats));
       j[c == 0 ? std::string("input") : args.compare[c - 1]] = std::move(entry);
     }
     std::cout << j.dump(2) << "\n";
     return;
   }
-  PrintDetectorStatsComparison(columns, Describe(args.input), args.input.seed);
+  engine::PrintDetectorStatsComparison(columns, Describe(args.input), args.input.seed);
 }
 
 void RunDetectorStats(const DetectorStatsArgs& args) {
@@ -124,17 +125,17 @@ void RunDetectorStats(const DetectorStatsArgs& args) {
     return;
   }
   InputWarnings input_warnings;
-  const std::vector<Sequence> sequences = LoadInput(args.input, /*require_detections=*/true, &input_warnings);
+  const std::vector<Sequence> sequences = engine::LoadInput(args.input, {}, &input_warnings);
   PrintInputWarnings(input_warnings);
   const DetectorStats stats = ComputeStats(sequences, args);
   if (args.json) {
     Json j;
     j["input"] = Describe(args.input);
-    j.update(DetectorStatsJson(stats));
+    j.update(engine::DetectorStatsJson(stats));
     std::cout << j.dump(2) << "\n";
     return;
   }
-  PrintDetectorStatsMarkdown(stats, Describe(args.input));
+  engine::PrintDetectorStatsMarkdown(stats, Describe(args.input));
 }
 
 }  // namespace

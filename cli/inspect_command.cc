@@ -3,7 +3,7 @@
 // distance between the projected ground truth and the nearest 2D detection (pixels and relative
 // to the person's box), and whether detections fit the GT of another frame better. A wrong axis,
 // unit, distortion or camera order shows at once as hundreds of pixels. The same checks give
-// eval's warnings (datasets/detection_checks.h), printed here too.
+// eval's warnings (engine/detection_checks.h), printed here too.
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
@@ -11,15 +11,16 @@
 #include <vector>
 
 #include "cli/commands.h"
-#include "cli/diagnostics.h"
-#include "cli/load_input.h"
-#include "datasets/detection_checks.h"
+#include "engine/diagnostics.h"
+#include "cli/input_options.h"
+#include "engine/input.h"
+#include "engine/detection_checks.h"
 
 namespace rpt::cli {
 namespace {
 
 struct InspectArgs {
-  InputArgs input;
+  engine::InputSpec input;
   bool json = false;
 };
 
@@ -27,7 +28,7 @@ void PrintReport(const nlohmann::ordered_json& report, const std::vector<std::st
 
 void RunInspect(const InspectArgs& args) {
   InputWarnings input_warnings;
-  const std::vector<Sequence> sequences = LoadInput(args.input, /*require_detections=*/false, &input_warnings);
+  const std::vector<Sequence> sequences = engine::LoadInput(args.input, {.detections = false}, &input_warnings);
   PrintInputWarnings(input_warnings);
   nlohmann::ordered_json report = nlohmann::ordered_json::array();
   std::vector<std::string> shift_lines;
@@ -41,10 +42,10 @@ void RunInspect(const InspectArgs& args) {
           std::any_of(f.views.begin(), f.views.end(), [](const Poses2D& view) { return view.num_persons() > 0; });
     }
     // All frames are measured: inspect is run on purpose, eval samples.
-    DetectionCheckOptions check_options;
+    engine::DetectionCheckOptions check_options;
     check_options.max_frames = 0;
     check_options.shift_frames = 0;
-    const SequenceCheck check = CheckDetections(s, check_options);
+    const engine::SequenceCheck check = engine::CheckDetections(s, check_options);
     nlohmann::ordered_json seq;
     seq["sequence"] = s.name;
     seq["frames"] = s.frames.size();
@@ -57,7 +58,7 @@ void RunInspect(const InspectArgs& args) {
     seq["cameras"] = nlohmann::ordered_json::array();
     for (size_t c = 0; c < s.cameras.size(); ++c) {
       const Camera& camera = s.cameras[c];
-      const CameraCheck& measured = check.cameras[c];
+      const engine::CameraCheck& measured = check.cameras[c];
       const Eigen::Vector3d center = camera.Center();
       nlohmann::ordered_json cam;
       cam["name"] = camera.name;
@@ -65,13 +66,13 @@ void RunInspect(const InspectArgs& args) {
       cam["image"] = {camera.width, camera.height};
       cam["model"] = DistortionModelName(camera.model);
       cam["focal_px"] = {camera.K(0, 0), camera.K(1, 1)};
-      cam.update(CameraCheckJson(measured));
+      cam.update(engine::CameraCheckJson(measured));
       seq["cameras"].push_back(cam);
     }
-    seq["frame_shift"] = ShiftCheckJson(check.shift);
-    shift_lines.push_back(ShiftLine(check.shift));
+    seq["frame_shift"] = engine::ShiftCheckJson(check.shift);
+    shift_lines.push_back(engine::ShiftLine(check.shift));
     seq["warnings"] = nlohmann::ordered_json::array();
-    for (const CheckWarning& w : DetectionWarnings(check)) {
+    for (const engine::CheckWarning& w : engine::DetectionWarnings(check)) {
       seq["warnings"].push_back({{"code", w.code}, {"message", w.message}});
       warnings.push_back(w.message);
     }

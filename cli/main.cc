@@ -15,7 +15,7 @@
 #include "core/closest_name.h"
 #include "cli/commands.h"
 #include "cli/interrupt.h"
-#include "cli/run_info.h"
+#include "engine/outputs/run_info.h"
 #include "core/errors.h"
 #include "datasets/io/inflate_budget.h"
 #include "datasets/readers/hdf5_cache.h"
@@ -79,7 +79,7 @@ int main(int argc, char** argv) {
          "limit on the data decompressed from one input file (MAT, NPZ, compressed HDF5), in MiB "
          "(default: 64 x the file size, at least 64, at most 4096)")
       ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 24));
-  rpt::cli::SetCommand(argc, argv);
+  rpt::engine::SetCommand(argc, argv);
   rpt::cli::RegisterDemoCommand(app);
   rpt::cli::RegisterEvalCommand(app);
   rpt::cli::RegisterInspectCommand(app);

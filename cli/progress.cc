@@ -51,4 +51,18 @@ void Progress::Update(long done) {
   std::fflush(stderr);
 }
 
+std::unique_ptr<Progress> ProgressOf(engine::Input& input, bool enabled) {
+  long total = 0;
+  for (int i = 0; i < input.size(); ++i) {
+    const long n = input.source(i).num_frames();
+    total = n < 0 || total < 0 ? -1 : total + n;
+  }
+  return std::make_unique<Progress>(input.size() == 1 ? input.header(0).name : "triangulating",
+                                    input.size() == 0 ? 0 : total, enabled);
+}
+
+std::function<void(long)> ReportTo(Progress* progress) {
+  return [progress](long done) { progress->Update(done); };
+}
+
 }  // namespace rpt::cli

@@ -4,7 +4,11 @@
 #pragma once
 
 #include <chrono>
+#include <functional>
+#include <memory>
 #include <string>
+
+#include "engine/input.h"
 
 namespace rpt::cli {
 
@@ -24,5 +28,10 @@ class Progress {
   int last_decile_ = -1;
   std::chrono::steady_clock::time_point start_, last_draw_;
 };
+
+// A progress display for the frames of `input` (labelled with the sequence's name when there is
+// one, else "triangulating"), and the callback a run reports to (engine::RunOptions::progress).
+std::unique_ptr<Progress> ProgressOf(engine::Input& input, bool enabled);
+std::function<void(long)> ReportTo(Progress* progress);
 
 }  // namespace rpt::cli

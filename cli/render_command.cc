@@ -3,7 +3,7 @@
 // frame, as PNG files and/or MP4 videos, for papers and slides. Takes the same input options as
 // `rpt eval` and runs the triangulator with the same --config/--set (so it draws what eval
 // evaluates: pass a run folder's config.json to redraw that run), then projects each frame's
-// result into the selected cameras (cli/reprojection.h) and draws it (cli/render_overlay.h) on
+// result into the selected cameras (engine/reprojection.h) and draws it (engine/render/render_overlay.h) on
 // the camera's image (--images) or on a white canvas of the image size.
 #include <cmath>
 #include <cstdio>
@@ -16,12 +16,13 @@
 
 #include "cli/commands.h"
 #include "cli/config_args.h"
-#include "cli/load_input.h"
-#include "cli/render_overlay.h"
-#include "cli/render_selection.h"
-#include "cli/render_video.h"
-#include "cli/reprojection.h"
-#include "cli/run_sequence.h"
+#include "cli/input_options.h"
+#include "engine/input.h"
+#include "engine/render/render_overlay.h"
+#include "engine/render/render_selection.h"
+#include "engine/render/render_video.h"
+#include "engine/reprojection.h"
+#include "engine/run.h"
 #include "core/closest_name.h"
 #include "core/errors.h"
 #include "core/text.h"
@@ -30,7 +31,7 @@ namespace rpt::cli {
 namespace {
 
 struct RenderArgs {
-  InputArgs input;
+  engine::InputSpec input;
   ConfigArgs config;
   std::string out;
   std::string frames = "0";
@@ -54,12 +55,12 @@ struct ImageProblems {
 // canvas when there is no template or the file cannot be read.
 cv::Mat Background(const RenderArgs& args, const Camera& camera, int camera_idx, const SequenceFrame& frame,
                    long frame_idx, ImageProblems* problems) {
-  if (args.images.empty()) return BlankCanvas(camera);
-  const std::string path = ImagePath(args.images, camera.name, camera_idx, frame.id, frame_idx);
+  if (args.images.empty()) return engine::BlankCanvas(camera);
+  const std::string path = engine::ImagePath(args.images, camera.name, camera_idx, frame.id, frame_idx);
   cv::Mat image = cv::imread(path, cv::IMREAD_COLOR);
   if (image.empty()) {
     if (problems->missing++ == 0) problems->first_missing = path;
-    return BlankCanvas(camera);
+    return engine::BlankCanvas(camera);
   }
   if (image.cols != camera.width || image.rows != camera.height) {
     if (problems->resized++ == 0) {
@@ -100,52 +101,53 @@ struct ErrorSum {
 };
 
 void RunRender(const RenderArgs& args) {
-  if (!args.images.empty()) ImagePath(args.images, "", 0, "", 0);  // a bad template fails before any work
-  const Config config = ResolveConfig(args.config);
+  if (!args.images.empty()) engine::ImagePath(args.images, "", 0, "", 0);  // a bad template fails before any work
+  const engine::Config config = ResolveConfig(args.config);
   InputWarnings warnings;
-  const std::vector<Sequence> sequences = LoadInput(args.input, /*require_detections=*/true, &warnings);
+  const std::vector<Sequence> sequences = engine::LoadInput(args.input, {}, &warnings);
   PrintInputWarnings(warnings);
   const std::filesystem::path out_dir =
       !args.out.empty() ? args.out : "out/render-" + (args.input.dataset.empty() ? "labels" : args.input.dataset);
   const bool png = args.format != "mp4", mp4 = args.format != "png";
-  RunOptions options;
+  engine::RunOptions options;
   options.triangulator = config.triangulator;
-  options.eval = config.metrics;
-  options.progress = false;
+  options.eval.reset();
   ImageProblems problems;
   long pngs = 0;
   std::vector<std::string> videos;
   for (const Sequence* sequence : SelectSequences(sequences, args.sequences)) {
-    const FrameRange range = ParseFrameRange(args.frames, static_cast<long>(sequence->frames.size()), sequence->name);
-    const std::vector<int> cameras = SelectCameras(args.cameras, sequence->cameras, sequence->name);
-    const std::filesystem::path sequence_dir = out_dir / FileNameOf(sequence->name);
+    const engine::FrameRange range = engine::ParseFrameRange(args.frames, static_cast<long>(sequence->frames.size()), sequence->name);
+    const std::vector<int> cameras = engine::SelectCameras(args.cameras, sequence->cameras, sequence->name);
+    const std::filesystem::path sequence_dir = out_dir / engine::FileNameOf(sequence->name);
     std::error_code ec;
     for (const int c : cameras) {
-      std::filesystem::create_directories(png ? sequence_dir / FileNameOf(sequence->cameras[c].name) : sequence_dir,
+      std::filesystem::create_directories(png ? sequence_dir / engine::FileNameOf(sequence->cameras[c].name) : sequence_dir,
                                           ec);
       if (ec) throw InputError(sequence_dir.string() + ": cannot create output folder: " + ec.message());
     }
-    std::map<int, std::unique_ptr<Mp4Writer>> writers;
+    std::map<int, std::unique_ptr<engine::Mp4Writer>> writers;
     if (mp4) {
       const double fps = args.fps > 0 ? args.fps : (sequence->fps > 0 ? sequence->fps : 10.0);
       for (const int c : cameras) {
         const Camera& camera = sequence->cameras[c];
-        const std::filesystem::path path = sequence_dir / (FileNameOf(camera.name) + ".mp4");
-        writers[c] = std::make_unique<Mp4Writer>(path, cv::Size(camera.width, camera.height), fps);
+        const std::filesystem::path path = sequence_dir / (engine::FileNameOf(camera.name) + ".mp4");
+        writers[c] = std::make_unique<engine::Mp4Writer>(path, cv::Size(camera.width, camera.height), fps);
       }
     }
     // The whole sequence, as eval runs it (tracking and smoothing see every frame).
-    const TriangulatedSequence run = TriangulateSequence(*sequence, options);
+    engine::PredictionsCollector collected(1);
+    engine::Run(std::span<const Sequence>(sequence, 1), options, &collected);
+    const engine::PredictionsCollector::Sequence& run = collected.sequences().front();
     std::map<int, ErrorSum> errors;
     for (long f = range.first; f < range.end; ++f) {
       const SequenceFrame& frame = sequence->frames[f];
-      const std::vector<ViewReprojection> views = ReprojectFrame(
-          sequence->cameras, frame.views, sequence->detection_joints, {&run.predictions[f], &run.output_joints},
-          args.gt ? PersonsWithJoints{&frame.gt, &sequence->gt_joints} : PersonsWithJoints{});
+      const std::vector<engine::ViewReprojection> views = engine::ReprojectFrame(
+          sequence->cameras, frame.views, sequence->detection_joints, {&run.persons[f], &run.output_joints},
+          args.gt ? engine::PersonsWithJoints{&frame.gt, &sequence->gt_joints} : engine::PersonsWithJoints{});
       for (const int c : cameras) {
         const Camera& camera = sequence->cameras[c];
         cv::Mat canvas = Background(args, camera, c, frame, f, &problems);
-        OverlayInput overlay;
+        engine::OverlayInput overlay;
         overlay.camera = &camera;
         overlay.detections = c < static_cast<int>(frame.views.size()) ? &frame.views[c] : nullptr;
         overlay.detection_joints = &sequence->detection_joints;
@@ -153,13 +155,13 @@ void RunRender(const RenderArgs& args) {
         overlay.prediction_joints = &run.output_joints;
         overlay.gt_joints = args.gt ? &sequence->gt_joints : nullptr;
         overlay.title = sequence->name + "  " + camera.name + "  frame " + frame.id;
-        DrawOverlay(overlay, &canvas);
-        for (const ReprojectedPerson& p : views[c].predictions) {
+        engine::DrawOverlay(overlay, &canvas);
+        for (const engine::ReprojectedPerson& p : views[c].predictions) {
           if (p.num_measured > 0)
             errors[c].sum_px += p.mean_error_px * p.num_measured, errors[c].joints += p.num_measured;
         }
         if (png) {
-          const std::filesystem::path path = sequence_dir / FileNameOf(camera.name) / (FileNameOf(frame.id) + ".png");
+          const std::filesystem::path path = sequence_dir / engine::FileNameOf(camera.name) / (engine::FileNameOf(frame.id) + ".png");
           if (!cv::imwrite(path.string(), canvas)) throw InputError(path.string() + ": cannot write the PNG");
           ++pngs;
         }
@@ -167,7 +169,7 @@ void RunRender(const RenderArgs& args) {
       }
     }
     for (const auto& [c, writer] : writers) {
-      videos.push_back((sequence_dir / (FileNameOf(sequence->cameras[c].name) + ".mp4")).string() + " (" +
+      videos.push_back((sequence_dir / (engine::FileNameOf(sequence->cameras[c].name) + ".mp4")).string() + " (" +
                        std::to_string(writer->frames()) + " frames, " + writer->codec() + ")");
     }
     std::printf("%s: frames %ld to %ld, mean reprojection error of the 3D result against the matched detections:\n",

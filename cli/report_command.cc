@@ -7,11 +7,12 @@
 #include <iostream>
 
 #include "cli/commands.h"
-#include "cli/config.h"
-#include "cli/report_data.h"
-#include "cli/report_html.h"
-#include "cli/report_run.h"
-#include "cli/run_sequence.h"
+#include "engine/config.h"
+#include "engine/report/report_data.h"
+#include "engine/report/report_html.h"
+#include "engine/report/report_run.h"
+#include "cli/recorded_input.h"
+#include "engine/run.h"
 #include "core/errors.h"
 #include "datasets/io/text_file.h"
 
@@ -21,22 +22,26 @@ namespace {
 struct ReportArgs {
   std::string run_dir;
   std::string out;  // default RUN_DIR/report.html
-  ReportDataOptions data;
+  engine::ReportDataOptions data;
 };
 
 void RunReport(const ReportArgs& args) {
-  const RunFolder run = ReadRunFolder(args.run_dir);
-  Config config;
-  LoadConfigFile(run.dir / "config.json", &config);
+  const engine::RecordedRun run = engine::ReadRecordedRun(args.run_dir);
+  engine::Config config;
+  engine::LoadConfigFile(run.dir / "config.json", &config);
   std::string why_no_input;
   const std::optional<std::vector<Sequence>> sequences = ReloadRecordedInput(run, &why_no_input);
   metrics::EvalOptions eval_options = config.metrics;
-  if (sequences) eval_options = EvalOptionsFor(*sequences, config.metrics);
+  if (sequences) {
+    std::vector<const SequenceHeader*> headers;
+    for (const Sequence& s : *sequences) headers.push_back(&s);
+    eval_options = engine::EvalOptionsFor(config.metrics, headers);
+  }
   std::vector<std::string> warnings;
-  const nlohmann::ordered_json data = BuildReportData(run, sequences ? &*sequences : nullptr, why_no_input,
+  const nlohmann::ordered_json data = engine::BuildReportData(run, sequences ? &*sequences : nullptr, why_no_input,
                                                       eval_options, args.data, &warnings);
   const std::filesystem::path out = args.out.empty() ? run.dir / "report.html" : std::filesystem::path(args.out);
-  const std::string page = ReportHtml(data);
+  const std::string page = engine::ReportHtml(data);
   io::WriteTextFile(out, page);
   int scenes = data.contains("scenes") ? static_cast<int>(data["scenes"].size()) : 0;
   std::printf("report in %s (%.1f MB, %d frame(s) with 3D scene and camera views)\n", out.c_str(),

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // `rpt sweep`: one evaluation per configuration (a list, or the grid of --grid options), run in
 // parallel across configurations with OpenMP, one row per configuration in sweep.{csv,md,json,html}
-// (sweep.html: cli/sweep_html.h).
+// (sweep.html: engine/outputs/sweep_html.h).
 // `--shard k/N` runs every N-th configuration starting at k (1-based) so a sweep can be split
 // across machines; `rpt merge` joins the shard files (docs/sweeps.md shows a Slurm array job).
 #include <algorithm>
@@ -22,14 +22,16 @@
 
 #include "cli/commands.h"
 #include "cli/config_args.h"
-#include "cli/json_text.h"
-#include "cli/load_input.h"
+#include "engine/json_text.h"
+#include "cli/input_options.h"
+#include "engine/input.h"
 #include "cli/progress.h"
-#include "cli/results_writer.h"
-#include "cli/run_info.h"
-#include "cli/run_sequence.h"
-#include "cli/sweep_html.h"
-#include "cli/thread_count.h"
+#include "engine/outputs/results_writer.h"
+#include "engine/outputs/run_info.h"
+#include "engine/run.h"
+#include "engine/outputs/sweep_html.h"
+#include "cli/threads_option.h"
+#include "engine/thread_count.h"
 #include "core/errors.h"
 #include "core/text.h"
 #include "datasets/dataset_request.h"
@@ -50,7 +52,7 @@ struct Variant {
 };
 
 struct SweepArgs {
-  InputArgs input;
+  engine::InputSpec input;
   ConfigArgs config;
   std::vector<std::string> grid;  // key=v1,v2,...
   std::string list;               // JSON file
@@ -85,7 +87,7 @@ std::vector<Variant> ReadList(const std::string& path) {
       if (!set.is_object()) {
         throw InputError(path + ": " + pointer + "/set: expected an object {option: value}, got " + set.type_name());
       }
-      for (const auto& [key, value] : set.items()) v.overrides.emplace_back(key, JsonValueText(value));
+      for (const auto& [key, value] : set.items()) v.overrides.emplace_back(key, engine::JsonValueText(value));
     }
     variants.push_back(v);
   }
@@ -129,8 +131,8 @@ std::pair<int, int> ParseShard(const std::string& text) {
 void WriteTables(const fs::path& dir, const Json& rows, const std::string& stem) {
   std::vector<std::pair<std::string, Json>> table;
   for (const Json& row : rows) table.emplace_back(row["name"].get<std::string>(), row["summary"]);
-  io::WriteTextFile(dir / (stem + ".csv"), SummaryCsv(table));
-  io::WriteTextFile(dir / (stem + ".md"), SummaryMarkdown(table));
+  io::WriteTextFile(dir / (stem + ".csv"), engine::SummaryCsv(table));
+  io::WriteTextFile(dir / (stem + ".md"), engine::SummaryMarkdown(table));
 }
 
 // <stem>.{csv,md,json} into `out`, each file atomic, the JSON (the data the tables show) last. With
@@ -147,7 +149,7 @@ void WriteSweepFiles(const fs::path& out, const Json& file, const std::string& s
   int replaced = 0;
   try {
     WriteTables(dir, file["rows"], stem);
-    io::WriteTextFile(dir / (stem + ".html"), SweepHtml(file));
+    io::WriteTextFile(dir / (stem + ".html"), engine::SweepHtml(file));
     io::WriteTextFile(dir / (stem + ".json"), io::DumpJson(file, 2, &replaced) + "\n");  // last
     if (folder) folder->Commit();
   } catch (const InputError& e) {
@@ -169,15 +171,15 @@ void RunSweep(const SweepArgs& args) {
   // Resolve every configuration before running anything: a typo fails fast. Axes named
   // "param.<key>" are dataset parameters (e.g. param.cameras=3,5,10): those configurations load
   // their own input.
-  std::vector<Config> configs;
-  std::vector<InputArgs> inputs;
+  std::vector<engine::Config> configs;
+  std::vector<engine::InputSpec> inputs;
   std::vector<bool> is_default;  // the configuration is the base one (sweep.html's deltas are against it)
   bool per_config_input = false;
-  const Config base_options = ResolveConfig(args.config);
-  const std::string base_config = DumpConfig(base_options, false);
+  const engine::Config base_options = ResolveConfig(args.config);
+  const std::string base_config = engine::DumpConfig(base_options, false);
   for (int i : mine) {
     ConfigArgs config_args = args.config;
-    InputArgs input = args.input;
+    engine::InputSpec input = args.input;
     for (const auto& [key, value] : all[i].overrides) {
       if (key.rfind("param.", 0) == 0) {
         input.params.push_back(key.substr(6) + "=" + value);
@@ -188,13 +190,13 @@ void RunSweep(const SweepArgs& args) {
     }
     configs.push_back(ResolveConfig(config_args));
     inputs.push_back(input);
-    is_default.push_back(input.params == args.input.params && DumpConfig(configs.back(), false) == base_config);
+    is_default.push_back(input.params == args.input.params && engine::DumpConfig(configs.back(), false) == base_config);
   }
   // One warning line per file and kind, not one per configuration: configurations that load their
   // own input read the same files again (MergeRepeated).
   InputWarnings warnings;
   const std::vector<Sequence> shared_input =
-      per_config_input ? std::vector<Sequence>{} : LoadInput(args.input, true, &warnings);
+      per_config_input ? std::vector<Sequence>{} : engine::LoadInput(args.input, {}, &warnings);
   if (!per_config_input) PrintInputWarnings(warnings);
   std::vector<InputWarnings> config_warnings(mine.size());
 
@@ -206,20 +208,25 @@ void RunSweep(const SweepArgs& args) {
   progress.emplace("sweep", static_cast<long>(mine.size()));
   const int count = static_cast<int>(mine.size());
 #ifdef _OPENMP
-  const int threads = ClampThreads(args.threads, count);
+  const int threads = engine::ClampThreads(args.threads, count);
 #pragma omp parallel for schedule(dynamic) num_threads(threads)
 #else
   const int threads = 1;
 #endif
   for (int c = 0; c < count; ++c) {
     try {
-      RunOptions options;
+      engine::RunOptions options;
       options.triangulator = configs[c].triangulator;
       options.eval = configs[c].metrics;
-      options.progress = false;
       options.threads = 1;
-      summaries[c] = SummaryJson(
-          RunSequences(per_config_input ? LoadInput(inputs[c], true, &config_warnings[c]) : shared_input, options));
+      if (per_config_input) {
+        engine::Input input = engine::OpenInput(inputs[c]);
+        const engine::RunResult run = engine::Run(input, options);
+        config_warnings[c] = run.warnings;
+        summaries[c] = engine::SummaryJson(run);
+      } else {
+        summaries[c] = engine::SummaryJson(engine::Run(shared_input, options));
+      }
     } catch (...) {
       std::lock_guard<std::mutex> lock(error_mutex);
       if (!error) error = std::current_exception();
@@ -253,20 +260,20 @@ void RunSweep(const SweepArgs& args) {
   Json base = Json::object();
   for (const Variant& v : all) {
     for (const auto& [key, value] : v.overrides) {
-      if (key.rfind("param.", 0) != 0 && !base.contains(key)) base[key] = GetConfigOption(base_options, key);
+      if (key.rfind("param.", 0) != 0 && !base.contains(key)) base[key] = engine::GetConfigOption(base_options, key);
     }
   }
   Json file;
   file["total"] = all.size();
   file["shard"] = args.shard;
-  RunInfo info = CollectRunInfo(threads);
-  info.input_warnings = InputWarningLines(warnings);
-  file["run"] = RunInfoJson(info);
+  engine::RunInfo info = engine::CollectRunInfo(threads);
+  info.input_warnings = engine::InputWarningLines(warnings);
+  file["run"] = engine::RunInfoJson(info);
   file["base"] = base;
   file["rows"] = rows;
   const std::string stem = shards == 1 ? "sweep" : "sweep-shard-" + std::to_string(shard) + "-of-" + std::to_string(shards);
   WriteSweepFiles(args.out, file, stem, /*whole_folder=*/shards == 1);
-  std::cout << SummaryMarkdown([&] {
+  std::cout << engine::SummaryMarkdown([&] {
     std::vector<std::pair<std::string, Json>> table;
     for (const Json& row : rows) table.emplace_back(row["name"].get<std::string>(), row["summary"]);
     return table;
@@ -301,8 +308,8 @@ Json CheckedShardRow(const nlohmann::json& shard, const std::string& pointer, co
   const nlohmann::json& summary = ObjectAt(shard, pointer + "/summary", source, "an object of metrics");
   for (const auto& [key, value] : summary.items()) {
     const bool column = key.rfind("legacy_pcp", 0) == 0 ||
-                        std::any_of(SummaryColumns().begin(), SummaryColumns().end(),
-                                    [&key = key](const SummaryColumn& c) { return c.key == key; });
+                        std::any_of(engine::SummaryColumns().begin(), engine::SummaryColumns().end(),
+                                    [&key = key](const engine::SummaryColumn& c) { return c.key == key; });
     if (column && !value.is_number() && !value.is_null()) {
       FailAt(source, io::JsonPointerJoin(pointer + "/summary", key),
              std::string("expected a number or null, got ") + value.type_name());

@@ -2,7 +2,7 @@
 // Offline (two-sided) temporal smoothing of a whole triangulated sequence, smooth.mode = offline.
 //
 // Not a step of Triangulator::Process, which only sees the past: this runs after a sequence has
-// been triangulated (cli/run_sequence.cc does it for rpt eval, sweep, check, demo and bench), and
+// been triangulated (engine/run.cc does it for rpt eval, sweep, check, demo and bench), and
 // uses the frames on both sides of each one, so it adds no lag. It cannot be used online.
 //
 // Method: per track and joint, a local polynomial fit in time with Gaussian weights (a

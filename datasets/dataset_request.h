@@ -6,7 +6,7 @@
 //   std::vector<Sequence> Read<Name>(const DatasetRequest& request);
 // and, where the format can be walked frame by frame, a third:
 //   std::vector<std::unique_ptr<FrameSource>> Stream<Name>Dataset(const DatasetRequest& request);
-// registered beside the other two (datasets/registry.cc). A FrameSource (datasets/frame_source.h)
+// registered beside the other two (engine/dataset_registry.cc). A FrameSource (datasets/frame_source.h)
 // announces the SequenceHeader (name, cameras, joint names, room, fps) and then hands out one
 // frame per Next() into the caller's buffer: memory flat in the number of frames. Read<Name> of a
 // streaming reader is the same frames materialised (Materialize), so both give the same numbers.

@@ -83,7 +83,7 @@ AttachReport AttachDetections(const Detections& detections, const std::string& s
                         "detection frames whose id is no frame of the input, ignored (first '" + first_unused + "')",
                         report.unused_frames);
     warnings->AddUnused(
-        source, "frames of the input absent from it, evaluated without detections (first '" + first_without + "')",
+        source, "frames of the input absent from it, triangulated without detections (first '" + first_without + "')",
         report.frames_without);
   }
   return report;

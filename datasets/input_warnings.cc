@@ -55,6 +55,16 @@ void InputWarnings::Merge(const InputWarnings& other) {
   }
 }
 
+InputWarnings InputWarnings::Except(const InputWarnings& shown) const {
+  InputWarnings rest;
+  for (const InputWarning& w : items_) {
+    bool same = false;
+    for (const InputWarning& s : shown.items_) same = same || (s.source == w.source && s.what == w.what && s.count == w.count);
+    if (!same) rest.items_.push_back(w);
+  }
+  return rest;
+}
+
 void InputWarnings::MergeRepeated(const InputWarnings& other) {
   for (const InputWarning& o : other.items_) {
     bool merged = false;

@@ -59,6 +59,9 @@ class InputWarnings {
   // more, e.g. by another configuration of a sweep): per (source, what) the larger count and
   // the larger worst value are kept instead of adding.
   void MergeRepeated(const InputWarnings& other);
+  // The entries that `shown` does not hold with the same count (new, or grown since it was taken):
+  // what is left to print after `shown` was printed.
+  InputWarnings Except(const InputWarnings& shown) const;
   const std::vector<InputWarning>& items() const { return items_; }
   bool empty() const { return items_.empty(); }
   long total() const;

@@ -54,6 +54,11 @@ class MetricsAccumulator {
            const JointNames& pred_names,
            std::span<const double> pred_scores = {});
 
+  // Appends the frames of `other` (same options, e.g. another sequence run on another thread), as if
+  // they had been added here after the frames so far. Throws rpt::InputError when a frame id of
+  // `other` was already added here.
+  void Merge(const MetricsAccumulator& other);
+
   // Computes all metrics from the frames added so far (can be called repeatedly).
   MetricsResult Finalize() const;
 

@@ -1,4 +1,4 @@
-// rpt report: draws the page from the inline JSON block #rpt-data (written by cli/report_data.cc).
+// rpt report: draws the page from the inline JSON block #rpt-data (written by engine/report/report_data.cc).
 // Plots with Chart.js, the 3D viewer with three.js (OrbitControls), the camera views on 2D canvases.
 // For tests (tests/report/), body carries data-rpt-ready, data-rpt-plots, data-rpt-skeletons,
 // data-rpt-gt-skeletons, data-rpt-nonblank-pixels and data-rpt-camera-views once the first frame is drawn.

@@ -10,7 +10,7 @@ $SUDO apt-get install -y -qq --no-install-recommends \
   libeigen3-dev libopencv-dev nlohmann-json3-dev libcli11-dev libhdf5-dev zlib1g-dev \
   libgtest-dev libgmock-dev libbenchmark-dev \
   clang libclang-rt-14-dev >/dev/null
-# rpt report: three.js and Chart.js, inlined into report.html at run time (cli/report_html.h), and
+# rpt report: three.js and Chart.js, inlined into report.html at run time (engine/outputs/step_tables.html.h), and
 # Chromium for the report's browser test (tests/report/; skipped without it).
 $SUDO apt-get install -y -qq --no-install-recommends libjs-three libjs-chart.js chromium >/dev/null
 echo "dependencies installed"

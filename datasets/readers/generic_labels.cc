@@ -15,6 +15,7 @@
 #include "datasets/camera_plausibility.h"
 #include "datasets/io/json_file.h"
 #include "datasets/io/text_file.h"
+#include "datasets/readers/detections_file.h"
 #include "datasets/readers/generic_common.h"
 #include "datasets/readers/generic_internal.h"
 
@@ -475,7 +476,7 @@ DatasetInfo GenericInfo() {
 }
 
 std::vector<Sequence> ReadGeneric(const DatasetRequest& request) {
-  return ReadLabels(request.root, ParseDatasetParams<LabelsOptions>("generic", request));
+  return ReadLabelsFile(request.root, ParseDatasetParams<LabelsOptions>("generic", request));  // JSON or the HDF5 cache
 }
 
 }  // namespace rpt

@@ -19,8 +19,8 @@
 #include <thread>
 #include <vector>
 
-#include "cli/junit_xml.h"
-#include "cli/results_writer.h"
+#include "engine/outputs/junit_xml.h"
+#include "engine/outputs/results_writer.h"
 #include "datasets/readers/hdf5_cache.h"
 #include "tests/cli/cli_test_util.h"
 
@@ -105,7 +105,7 @@ bool WaitUntilHandling(pid_t child) {
   return false;
 }
 
-struct RunFolder {
+struct RecordedRunFiles {
   std::string run_id;
   long frames = 0;
 };
@@ -113,8 +113,8 @@ struct RunFolder {
 // Checks that `out` holds one complete run: every file there and parsing, the same run id in
 // run.json, summary.json and predictions.json, the same frame count in summary.json,
 // summary.csv and predictions.json.
-RunFolder CheckCompleteRun(const fs::path& out) {
-  RunFolder folder;
+RecordedRunFiles CheckCompleteRun(const fs::path& out) {
+  RecordedRunFiles folder;
   for (const char* name : {"summary.json", "summary.csv", "summary.md", "per_joint.csv", "steps.csv", "config.json",
                            "run.json", "predictions.json"}) {
     EXPECT_TRUE(fs::exists(out / name)) << name;
@@ -154,7 +154,7 @@ TEST(AtomicOutputs, EvalKilledAtRandomPointsLeavesTheOldOrTheNewRun) {
   const auto start = Clock::now();
   ASSERT_EQ(Wait(StartEval(150, out)), 0);
   const double full_s = std::chrono::duration<double>(Clock::now() - start).count();
-  RunFolder previous = CheckCompleteRun(out);
+  RecordedRunFiles previous = CheckCompleteRun(out);
   ASSERT_EQ(previous.frames, 150);
 
   const unsigned seed = std::random_device{}();
@@ -176,7 +176,7 @@ TEST(AtomicOutputs, EvalKilledAtRandomPointsLeavesTheOldOrTheNewRun) {
     ::kill(child, SIGKILL);
     if (!reaped) Wait(child);
     SCOPED_TRACE("attempt " + std::to_string(attempt));
-    const RunFolder now = CheckCompleteRun(out);
+    const RecordedRunFiles now = CheckCompleteRun(out);
     if (now.run_id == previous.run_id) {
       EXPECT_EQ(now.frames, previous.frames);
       ++old_seen;
@@ -201,7 +201,7 @@ TEST(AtomicOutputs, InterruptedEvalRemovesItsTemporariesAndExits130) {
   const fs::path root = test::TempDir("atomic_interrupt");
   const fs::path out = root / "out";
   ASSERT_EQ(Wait(StartEval(150, out)), 0);
-  const RunFolder before = CheckCompleteRun(out);
+  const RecordedRunFiles before = CheckCompleteRun(out);
   struct Case {
     int signal_number;
     bool while_writing;
@@ -315,34 +315,6 @@ TEST(AtomicOutputs, InvalidUtf8FrameIdIsReplacedWithAWarning) {
   fs::remove_all(root);
 }
 
-// Joint names and frame ids are escaped in predictions.json (a quote once gave invalid JSON).
-TEST(AtomicOutputs, PredictionsEscapeJointNamesAndFrameIds) {
-  const fs::path root = test::TempDir("atomic_escape");
-  std::vector<Sequence> sequences(1);
-  sequences[0].frames.resize(1);
-  sequences[0].frames[0].id = "say \"cheese\"\\";
-  cli::RunResult run;
-  run.sequences.resize(1);
-  run.sequences[0].output_joints = {"left \"wrist\"", "tab\there"};
-  Poses3D persons;
-  persons.Clear(2);
-  auto person = persons.AddPerson(7);
-  person.col(0) << 1, 2, 3, 0.5;
-  person.col(1) << 4, 5, 6, std::numeric_limits<double>::quiet_NaN();
-  run.sequences[0].predictions = {persons};
-  int replaced = 0;
-  cli::WritePredictions(root / "predictions.json", sequences, run, "id-1", &replaced);
-  EXPECT_EQ(replaced, 0);
-  const Json predictions = Json::parse(test::ReadAll(root / "predictions.json"));
-  EXPECT_EQ(predictions["run_id"], "id-1");
-  EXPECT_EQ(predictions["joints"], Json({"left \"wrist\"", "tab\there"}));
-  EXPECT_EQ(predictions["frames"][0]["id"], "say \"cheese\"\\");
-  EXPECT_EQ(predictions["frames"][0]["persons"][0][0], Json({1.0, 2.0, 3.0, 0.5}));
-  EXPECT_TRUE(predictions["frames"][0]["persons"][0][1][3].is_null());  // NaN score
-  EXPECT_EQ(predictions["frames"][0]["track_ids"], Json({7}));
-  fs::remove_all(root);
-}
-
 // What a command prints is checked too: stdout on a full disk is exit 2, not 0 with the text lost.
 TEST(AtomicOutputs, FullStandardOutputIsAnError) {
   if (!fs::exists("/dev/full")) GTEST_SKIP() << "/dev/full is absent";
@@ -352,8 +324,8 @@ TEST(AtomicOutputs, FullStandardOutputIsAnError) {
 }
 
 TEST(AtomicOutputs, JunitXmlReplacesInvalidUtf8) {
-  EXPECT_EQ(cli::XmlEscape("a\xff<b"), "a\xef\xbf\xbd&lt;b");
-  EXPECT_EQ(cli::XmlEscape("caf\xc3\xa9"), "caf\xc3\xa9");  // valid UTF-8 untouched
+  EXPECT_EQ(engine::XmlEscape("a\xff<b"), "a\xef\xbf\xbd&lt;b");
+  EXPECT_EQ(engine::XmlEscape("caf\xc3\xa9"), "caf\xc3\xa9");  // valid UTF-8 untouched
 }
 
 }  // namespace

@@ -7,7 +7,7 @@
 #include <fstream>
 #include <string>
 
-#include "cli/junit_xml.h"
+#include "engine/outputs/junit_xml.h"
 #include "tests/cli/cli_test_util.h"
 #include "tests/cli/xml_check.h"
 
@@ -135,7 +135,7 @@ TEST_F(CheckCommandTest, JunitHasOneWellFormedTestcasePerCheck) {
 }
 
 TEST(JunitXml, EscapesMarkupAndDropsCharactersXmlForbids) {
-  const std::string xml = cli::JunitXml("suite & <co>", {{"a\x01 \"b\"", "c 'd' </testcase>", cli::JunitCase::Outcome::kFailure,
+  const std::string xml = engine::JunitXml("suite & <co>", {{"a\x01 \"b\"", "c 'd' </testcase>", engine::JunitCase::Outcome::kFailure,
                                                           "x < y && \x1f z > w"}});
   const test::XmlElement root = test::XmlReader::Parse(xml);
   EXPECT_EQ(root.attributes.at("name"), "suite & <co>");

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "cli/config.h"
+#include "engine/config.h"
 
 #include <gtest/gtest.h>
 
@@ -21,10 +21,10 @@ std::filesystem::path WriteTemp(const std::string& name, const std::string& text
 }
 
 // The ConfigError of applying `assignment` to `config` and checking it, or "no error".
-std::string ErrorOf(const std::string& assignment, Config* config) {
+std::string ErrorOf(const std::string& assignment, engine::Config* config) {
   try {
-    ApplyConfigOverride(assignment, config);
-    CheckConfig(*config);
+    engine::ApplyConfigOverride(assignment, config);
+    engine::CheckConfig(*config);
   } catch (const ConfigError& e) {
     return e.what();
   }
@@ -32,14 +32,14 @@ std::string ErrorOf(const std::string& assignment, Config* config) {
 }
 
 TEST(Config, SetReachesTriangulatorAndMetricOptions) {
-  Config c;
-  ApplyConfigOverride("prefilter.enabled=false", &c);
-  ApplyConfigOverride("merge.top_k=0", &c);
-  ApplyConfigOverride("score.mode=triangulation", &c);
-  ApplyConfigOverride("triangulate.core_joints=shoulder_left, hip_left ,knee_left", &c);
-  ApplyConfigOverride("room_check.size_m=8,8,3", &c);
-  ApplyConfigOverride("metrics.matching=hungarian", &c);
-  ApplyConfigOverride("metrics.evaluated_joints=nose,wrist_left", &c);
+  engine::Config c;
+  engine::ApplyConfigOverride("prefilter.enabled=false", &c);
+  engine::ApplyConfigOverride("merge.top_k=0", &c);
+  engine::ApplyConfigOverride("score.mode=triangulation", &c);
+  engine::ApplyConfigOverride("triangulate.core_joints=shoulder_left, hip_left ,knee_left", &c);
+  engine::ApplyConfigOverride("room_check.size_m=8,8,3", &c);
+  engine::ApplyConfigOverride("metrics.matching=hungarian", &c);
+  engine::ApplyConfigOverride("metrics.evaluated_joints=nose,wrist_left", &c);
   EXPECT_FALSE(c.triangulator.prefilter.enabled);
   EXPECT_EQ(c.triangulator.merge.top_k, 0);
   EXPECT_EQ(c.triangulator.score.mode, ScoreMode::kTriangulationOnly);
@@ -50,25 +50,25 @@ TEST(Config, SetReachesTriangulatorAndMetricOptions) {
 }
 
 TEST(Config, EveryOptionRoundTripsThroughTextAndJson) {
-  const Config defaults;
-  for (const ConfigOptionInfo& option : ConfigOptions()) {
-    Config c;
-    SetConfigOption(option.key, GetConfigOption(defaults, option.key), "test", &c);
-    EXPECT_EQ(GetConfigOption(c, option.key), GetConfigOption(defaults, option.key)) << option.key;
+  const engine::Config defaults;
+  for (const engine::ConfigOptionInfo& option : engine::ConfigOptions()) {
+    engine::Config c;
+    engine::SetConfigOption(option.key, engine::GetConfigOption(defaults, option.key), "test", &c);
+    EXPECT_EQ(engine::GetConfigOption(c, option.key), engine::GetConfigOption(defaults, option.key)) << option.key;
   }
-  Config changed;
-  ApplyConfigOverride("group.min_group_size=3", &changed);
-  ApplyConfigOverride("metrics.alignment=pelvis", &changed);
-  const auto path = WriteTemp("rpt_config_roundtrip.json", DumpConfig(changed, /*with_comments=*/false));
-  Config loaded;
-  LoadConfigFile(path, &loaded);
+  engine::Config changed;
+  engine::ApplyConfigOverride("group.min_group_size=3", &changed);
+  engine::ApplyConfigOverride("metrics.alignment=pelvis", &changed);
+  const auto path = WriteTemp("rpt_config_roundtrip.json", engine::DumpConfig(changed, /*with_comments=*/false));
+  engine::Config loaded;
+  engine::LoadConfigFile(path, &loaded);
   EXPECT_EQ(loaded.triangulator.group.min_group_size, 3);
   EXPECT_EQ(loaded.metrics.alignment, metrics::Alignment::kPelvis);
-  EXPECT_EQ(DumpConfig(loaded, false), DumpConfig(changed, false));
+  EXPECT_EQ(engine::DumpConfig(loaded, false), engine::DumpConfig(changed, false));
 }
 
 TEST(Config, UnknownKeysAndBadValuesAreErrorsNamingThePlace) {
-  Config c;
+  engine::Config c;
   auto message = [&c](const std::string& assignment) { return ErrorOf(assignment, &c); };
   EXPECT_NE(message("prefilter.enabld=true").find("unknown option 'prefilter.enabld'"), std::string::npos);
   EXPECT_NE(message("filter.nothing=1").find("filter"), std::string::npos);
@@ -77,12 +77,12 @@ TEST(Config, UnknownKeysAndBadValuesAreErrorsNamingThePlace) {
   EXPECT_NE(message("triangulate.method=svd").find("midpoint|dlt"), std::string::npos);
   EXPECT_NE(message("room_check.size_m=1,2").find("[x, y, z]"), std::string::npos);
   EXPECT_NE(message("no_equals_sign").find("section.key=value"), std::string::npos);
-  c = Config{};
+  c = engine::Config{};
   EXPECT_NE(message("filter.min_match_score=1.5").find("filter.min_match_score"), std::string::npos);
 
   const auto unknown = WriteTemp("rpt_config_unknown.json", R"({"merge": {"top_k": 2, "topk": 3}})");
   try {
-    LoadConfigFile(unknown, &c);
+    engine::LoadConfigFile(unknown, &c);
     FAIL();
   } catch (const ConfigError& e) {
     EXPECT_NE(std::string(e.what()).find("rpt_config_unknown.json"), std::string::npos);
@@ -90,12 +90,12 @@ TEST(Config, UnknownKeysAndBadValuesAreErrorsNamingThePlace) {
   }
   const auto wrong_type = WriteTemp("rpt_config_type.json", R"({"track": {"enabled": "yes"}})");
   try {
-    LoadConfigFile(wrong_type, &c);
+    engine::LoadConfigFile(wrong_type, &c);
     FAIL();
   } catch (const ConfigError& e) {
     EXPECT_NE(std::string(e.what()).find("/track/enabled"), std::string::npos);
   }
-  EXPECT_THROW(LoadConfigFile("/nonexistent/rpt.json", &c), InputError);
+  EXPECT_THROW(engine::LoadConfigFile("/nonexistent/rpt.json", &c), InputError);
 }
 
 TEST(ConfigCommand, DumpIsLoadableAndOverridesApply) {
@@ -103,10 +103,10 @@ TEST(ConfigCommand, DumpIsLoadableAndOverridesApply) {
   ASSERT_EQ(dump.exit_code, 0) << dump.err;
   EXPECT_TRUE(nlohmann::json::accept(dump.out)) << dump.out;
   const auto path = WriteTemp("rpt_config_dump.json", dump.out);
-  Config c;
-  LoadConfigFile(path, &c);
+  engine::Config c;
+  engine::LoadConfigFile(path, &c);
   EXPECT_FALSE(c.triangulator.track.enabled);
-  EXPECT_EQ(DumpConfig(c, false), dump.out);  // reads back identically
+  EXPECT_EQ(engine::DumpConfig(c, false), dump.out);  // reads back identically
   // --json is the default (kept for older scripts).
   EXPECT_EQ(test::RunRpt("config --dump --json --set track.enabled=false").out, dump.out);
   const test::CommandResult commented = test::RunRpt("config --dump --comments");
@@ -119,24 +119,24 @@ TEST(ConfigCommand, DumpIsLoadableAndOverridesApply) {
 }
 
 TEST(Config, DumpReadsBackIdenticallyWithEveryKindOfValue) {
-  Config changed;
-  ApplyConfigOverride("triangulate.method=dlt", &changed);
-  ApplyConfigOverride("triangulate.core_joints=[\"hip_left\", \"hip_right\", \"knee_left\"]", &changed);
-  ApplyConfigOverride("room_check.size_m=[8, 8, 3]", &changed);
-  ApplyConfigOverride("room_check.center_m=1.5,-2,0", &changed);
-  ApplyConfigOverride("merge.top_k=7", &changed);
-  ApplyConfigOverride("score.scale_factor=4.25", &changed);
-  ApplyConfigOverride("smooth.mode=offline", &changed);
-  ApplyConfigOverride("metrics.legacy_pcp=campus", &changed);
-  ApplyConfigOverride("metrics.legacy_pcp_alpha=0.4", &changed);
-  ApplyConfigOverride("metrics.count_preds_without_gt=false", &changed);
-  const std::string dump = DumpConfig(changed, /*with_comments=*/false);
+  engine::Config changed;
+  engine::ApplyConfigOverride("triangulate.method=dlt", &changed);
+  engine::ApplyConfigOverride("triangulate.core_joints=[\"hip_left\", \"hip_right\", \"knee_left\"]", &changed);
+  engine::ApplyConfigOverride("room_check.size_m=[8, 8, 3]", &changed);
+  engine::ApplyConfigOverride("room_check.center_m=1.5,-2,0", &changed);
+  engine::ApplyConfigOverride("merge.top_k=7", &changed);
+  engine::ApplyConfigOverride("score.scale_factor=4.25", &changed);
+  engine::ApplyConfigOverride("smooth.mode=offline", &changed);
+  engine::ApplyConfigOverride("metrics.legacy_pcp=campus", &changed);
+  engine::ApplyConfigOverride("metrics.legacy_pcp_alpha=0.4", &changed);
+  engine::ApplyConfigOverride("metrics.count_preds_without_gt=false", &changed);
+  const std::string dump = engine::DumpConfig(changed, /*with_comments=*/false);
   const nlohmann::json parsed = nlohmann::json::parse(dump);
   EXPECT_EQ(parsed["room_check"]["size_m"], nlohmann::json::array({8.0, 8.0, 3.0}));
   EXPECT_EQ(parsed["metrics"]["legacy_pcp_alpha"], 0.4);
-  Config loaded;
-  LoadConfigFile(WriteTemp("rpt_config_every_kind.json", dump), &loaded);
-  EXPECT_EQ(DumpConfig(loaded, false), dump);
+  engine::Config loaded;
+  engine::LoadConfigFile(WriteTemp("rpt_config_every_kind.json", dump), &loaded);
+  EXPECT_EQ(engine::DumpConfig(loaded, false), dump);
   EXPECT_EQ(loaded.triangulator.triangulate.core_joints, (JointNames{"hip_left", "hip_right", "knee_left"}));
   EXPECT_EQ(loaded.triangulator.room_check.center_m, Eigen::Vector3d(1.5, -2, 0));
   EXPECT_EQ(loaded.metrics.legacy_pcp, metrics::LegacyPcpLayout::kCampus);
@@ -148,19 +148,19 @@ TEST(Config, DumpReadsBackIdenticallyWithEveryKindOfValue) {
     for (const auto& [name, value] : values.items()) dumped_keys.push_back(section + "." + name);
   }
   std::vector<std::string> keys;
-  for (const ConfigOptionInfo& option : ConfigOptions()) keys.push_back(option.key);
+  for (const engine::ConfigOptionInfo& option : engine::ConfigOptions()) keys.push_back(option.key);
   EXPECT_EQ(dumped_keys, keys);
 }
 
 TEST(Config, ListValuesAcceptJsonAndCommaLists) {
-  Config c;
-  ApplyConfigOverride("metrics.evaluated_joints=[\"nose\",\"wrist_left\"]", &c);
+  engine::Config c;
+  engine::ApplyConfigOverride("metrics.evaluated_joints=[\"nose\",\"wrist_left\"]", &c);
   EXPECT_EQ(c.metrics.evaluated_joints, (JointNames{"nose", "wrist_left"}));
-  ApplyConfigOverride("metrics.evaluated_joints=nose, wrist_right", &c);
+  engine::ApplyConfigOverride("metrics.evaluated_joints=nose, wrist_right", &c);
   EXPECT_EQ(c.metrics.evaluated_joints, (JointNames{"nose", "wrist_right"}));
-  ApplyConfigOverride("metrics.evaluated_joints=[]", &c);
+  engine::ApplyConfigOverride("metrics.evaluated_joints=[]", &c);
   EXPECT_TRUE(c.metrics.evaluated_joints.empty());
-  ApplyConfigOverride("room_check.size_m=[1,2,3]", &c);
+  engine::ApplyConfigOverride("room_check.size_m=[1,2,3]", &c);
   EXPECT_EQ(c.triangulator.room_check.size_m, Eigen::Vector3d(1, 2, 3));
   auto message = [&c](const std::string& assignment) { return ErrorOf(assignment, &c); };
   // The old trap: a JSON list was taken as the joint names '["a"' and '"b"]'.
@@ -170,7 +170,7 @@ TEST(Config, ListValuesAcceptJsonAndCommaLists) {
 }
 
 TEST(Config, TyposGetADidYouMean) {
-  Config c;
+  engine::Config c;
   auto message = [&c](const std::string& assignment) { return ErrorOf(assignment, &c); };
   EXPECT_NE(message("score.scale_facter=4").find("did you mean 'score.scale_factor'?"), std::string::npos);
   EXPECT_NE(message("sore.scale_factor=4").find("did you mean 'score.scale_factor'?"), std::string::npos);
@@ -182,7 +182,7 @@ TEST(Config, TyposGetADidYouMean) {
 
   const auto key_typo = WriteTemp("rpt_config_key_typo.json", R"({"merge": {"top_k": 2, "topk": 3}})");
   try {
-    LoadConfigFile(key_typo, &c);
+    engine::LoadConfigFile(key_typo, &c);
     FAIL();
   } catch (const ConfigError& e) {
     EXPECT_NE(std::string(e.what()).find("rpt_config_key_typo.json"), std::string::npos) << e.what();
@@ -190,7 +190,7 @@ TEST(Config, TyposGetADidYouMean) {
   }
   const auto section_typo = WriteTemp("rpt_config_section_typo.json", R"({"mege": {"top_k": 2}})");
   try {
-    LoadConfigFile(section_typo, &c);
+    engine::LoadConfigFile(section_typo, &c);
     FAIL();
   } catch (const ConfigError& e) {
     EXPECT_NE(std::string(e.what()).find("rpt_config_section_typo.json"), std::string::npos) << e.what();
@@ -207,7 +207,7 @@ TEST(Config, TyposGetADidYouMean) {
 
 TEST(Config, ChecksNameSectionAndKeyWithRangesFromTheMetadata) {
   auto problem = [](const std::string& assignment) {
-    Config c;
+    engine::Config c;
     return ErrorOf(assignment, &c);
   };
   EXPECT_EQ(problem("filter.min_match_score=1.5"), "filter.min_match_score: 1.5 is outside [0, 1]");
@@ -233,24 +233,24 @@ TEST(Config, ChecksNameSectionAndKeyWithRangesFromTheMetadata) {
   EXPECT_EQ(problem("metrics.legacy_pcp_actors=1000000000"),
             "metrics.legacy_pcp_actors: 1000000000 is outside [1, 10000]");
   // Every option is described.
-  for (const ConfigOptionInfo& option : ConfigOptions()) {
+  for (const engine::ConfigOptionInfo& option : engine::ConfigOptions()) {
     EXPECT_FALSE(option.spec.help.empty()) << option.key;
     EXPECT_FALSE(option.type.empty()) << option.key;
   }
 }
 
 TEST(Config, SettingsWithoutEffectAreWarnings) {
-  Config c;
-  EXPECT_TRUE(ConfigWarnings(c).empty());
-  ApplyConfigOverride("track.enabled=false", &c);
-  ApplyConfigOverride("bone_lengths.enabled=true", &c);
-  ApplyConfigOverride("smooth.mode=causal", &c);
-  const std::vector<std::string> warnings = ConfigWarnings(c);
+  engine::Config c;
+  EXPECT_TRUE(engine::ConfigWarnings(c).empty());
+  engine::ApplyConfigOverride("track.enabled=false", &c);
+  engine::ApplyConfigOverride("bone_lengths.enabled=true", &c);
+  engine::ApplyConfigOverride("smooth.mode=causal", &c);
+  const std::vector<std::string> warnings = engine::ConfigWarnings(c);
   ASSERT_EQ(warnings.size(), 3u);
   EXPECT_EQ(warnings[0], "clip_speed.enabled=true has no effect with track.enabled=false (it needs track ids)");
   EXPECT_NE(warnings[1].find("bone_lengths.enabled=true"), std::string::npos);
   EXPECT_NE(warnings[2].find("smooth.mode=causal"), std::string::npos);
-  EXPECT_NO_THROW(CheckConfig(c));  // not an error
+  EXPECT_NO_THROW(engine::CheckConfig(c));  // not an error
   const test::CommandResult r = test::RunRpt("demo --frames 3 --set track.enabled=false");
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("warning: clip_speed.enabled=true has no effect with track.enabled=false"), std::string::npos)
@@ -260,12 +260,12 @@ TEST(Config, SettingsWithoutEffectAreWarnings) {
 
 TEST(Config, DocsOptionTablesAreGeneratedFromTheMetadata) {
   const std::filesystem::path docs = std::filesystem::path(RPT_SOURCE_DIR) / "docs" / "options.md";
-  EXPECT_EQ(test::ReadAll(docs), ConfigMarkdown())
+  EXPECT_EQ(test::ReadAll(docs), engine::ConfigMarkdown())
       << "docs/options.md differs from the options' metadata; regenerate it with "
          "`./build/rpt config --markdown > docs/options.md`";
   const test::CommandResult r = test::RunRpt("config --markdown");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_EQ(r.out, ConfigMarkdown());
+  EXPECT_EQ(r.out, engine::ConfigMarkdown());
   EXPECT_NE(r.out.find("| `prefilter.max_pairs_per_person` | 30 | int |"), std::string::npos);
   EXPECT_NE(r.out.find("| `metrics.matching` | greedy | greedy \\| hungarian |"), std::string::npos);
 }

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // `rpt render` on a generated scene: PNGs of the camera's size with the reprojected joints drawn
 // where the cameras see them, MP4 videos that read back with the right frame count, and its errors.
-// Also the selection helpers (cli/render_selection.h).
+// Also the selection helpers (engine/render/render_selection.h).
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -10,10 +10,11 @@
 #include <string>
 #include <vector>
 
-#include "cli/load_input.h"
-#include "cli/render_overlay.h"
-#include "cli/render_selection.h"
-#include "cli/run_sequence.h"
+#include "engine/input.h"
+#include "engine/render/render_overlay.h"
+#include "engine/render/render_selection.h"
+#include "engine/frame_sink.h"
+#include "engine/run.h"
 #include "core/errors.h"
 #include "tests/cli/cli_test_util.h"
 #include "tests/error_message.h"
@@ -26,8 +27,8 @@ namespace fs = std::filesystem;
 const char* const kScene =
     "--dataset synthetic --param frames=4 --param cameras=2 --param people=2 --param noise=clean";
 
-InputArgs SceneInput() {
-  InputArgs input;
+engine::InputSpec SceneInput() {
+  engine::InputSpec input;
   input.dataset = "synthetic";
   input.params = {"frames=4", "cameras=2", "people=2", "noise=clean"};
   return input;
@@ -44,26 +45,26 @@ TEST(RenderCommand, PngsOfTheImageSizeWithTheReprojectedJointsDrawn) {
 
   // The same scene and triangulation in process: where the 3D result lands in each camera.
   InputWarnings warnings;
-  const std::vector<Sequence> sequences = LoadInput(SceneInput(), true, &warnings);
+  const std::vector<Sequence> sequences = engine::LoadInput(SceneInput(), {}, &warnings);
   ASSERT_EQ(sequences.size(), 1u);
   const Sequence& sequence = sequences[0];
-  RunOptions options;
-  options.progress = false;
-  const TriangulatedSequence run = TriangulateSequence(sequence, options);
+  engine::PredictionsCollector collected(1);
+  engine::Run(std::span<const Sequence>(sequences), engine::RunOptions{}, &collected);
+  const engine::PredictionsCollector::Sequence& run = collected.sequences().front();
   long checked = 0, in_colour = 0;
   for (int f = 1; f < 3; ++f) {
     for (const Camera& camera : sequence.cameras) {
       const fs::path path =
-          out / FileNameOf(sequence.name) / FileNameOf(camera.name) / (FileNameOf(sequence.frames[f].id) + ".png");
+          out / engine::FileNameOf(sequence.name) / engine::FileNameOf(camera.name) / (engine::FileNameOf(sequence.frames[f].id) + ".png");
       const cv::Mat image = cv::imread(path.string(), cv::IMREAD_COLOR);
       ASSERT_FALSE(image.empty()) << path;
       EXPECT_EQ(image.cols, camera.width);
       EXPECT_EQ(image.rows, camera.height);
       EXPECT_TRUE(IsWhite(image.at<cv::Vec3b>(image.rows - 2, image.cols - 2))) << "blank canvas: " << path;
-      const Poses3D& persons = run.predictions[f];
+      const Poses3D& persons = run.persons[f];
       ASSERT_GT(persons.num_persons(), 0);
       for (int p = 0; p < persons.num_persons(); ++p) {
-        const cv::Scalar colour = PersonColour(persons.track_ids[p], p);
+        const cv::Scalar colour = engine::PersonColour(persons.track_ids[p], p);
         for (int j = 0; j < persons.num_joints; ++j) {
           if (!(persons.Person(p)(3, j) > 0)) continue;
           Eigen::Vector2d uv;
@@ -93,14 +94,14 @@ TEST(RenderCommand, Mp4ReadsBackWithOneFramePerRenderedFrame) {
       test::RunRpt(std::string("render ") + kScene + " --frames : --format mp4 --cameras 1 --out " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   InputWarnings warnings;
-  const std::vector<Sequence> sequences = LoadInput(SceneInput(), true, &warnings);
+  const std::vector<Sequence> sequences = engine::LoadInput(SceneInput(), {}, &warnings);
   const Camera& camera = sequences[0].cameras[1];
-  const fs::path video = out / FileNameOf(sequences[0].name) / (FileNameOf(camera.name) + ".mp4");
+  const fs::path video = out / engine::FileNameOf(sequences[0].name) / (engine::FileNameOf(camera.name) + ".mp4");
   // H.264 where the OpenCV build encodes it (Debian 12's does), else MPEG-4 Part 2 (docs/render.md).
   EXPECT_TRUE(r.out.find(video.string() + " (4 frames, avc1)") != std::string::npos ||
               r.out.find(video.string() + " (4 frames, mp4v)") != std::string::npos)
       << r.out;
-  EXPECT_FALSE(fs::exists(out / FileNameOf(sequences[0].name) / (FileNameOf(sequences[0].cameras[0].name) + ".mp4")))
+  EXPECT_FALSE(fs::exists(out / engine::FileNameOf(sequences[0].name) / (engine::FileNameOf(sequences[0].cameras[0].name) + ".mp4")))
       << "only the selected camera";
   cv::VideoCapture capture(video.string());
   ASSERT_TRUE(capture.isOpened()) << video;
@@ -113,7 +114,7 @@ TEST(RenderCommand, Mp4ReadsBackWithOneFramePerRenderedFrame) {
     EXPECT_EQ(frame.rows, camera.height);
   }
   EXPECT_EQ(decoded, 4);
-  EXPECT_FALSE(fs::exists(out / FileNameOf(sequences[0].name) / FileNameOf(camera.name)))
+  EXPECT_FALSE(fs::exists(out / engine::FileNameOf(sequences[0].name) / engine::FileNameOf(camera.name)))
       << "no PNGs with --format mp4";
   fs::remove_all(out);
 }
@@ -121,7 +122,7 @@ TEST(RenderCommand, Mp4ReadsBackWithOneFramePerRenderedFrame) {
 TEST(RenderCommand, DrawsOnTheImagesOfTheTemplateAndWarnsAboutMissingOnes) {
   const fs::path out = test::TempDir("render_images");
   InputWarnings warnings;
-  const std::vector<Sequence> sequences = LoadInput(SceneInput(), true, &warnings);
+  const std::vector<Sequence> sequences = engine::LoadInput(SceneInput(), {}, &warnings);
   const Camera& camera = sequences[0].cameras[0];
   // A solid blue image for camera 0, frame 0 only; camera 1's is missing.
   const cv::Mat blue(camera.height, camera.width, CV_8UC3, cv::Scalar(200, 0, 0));
@@ -132,12 +133,12 @@ TEST(RenderCommand, DrawsOnTheImagesOfTheTemplateAndWarnsAboutMissingOnes) {
   EXPECT_NE(r.err.find("warning: --images: 1 image(s) could not be read (first: " + out.string() + "/cam1_"),
             std::string::npos)
       << r.err;
-  const fs::path dir = out / FileNameOf(sequences[0].name);
-  const cv::Mat drawn = cv::imread((dir / FileNameOf(camera.name) / (sequences[0].frames[0].id + ".png")).string());
+  const fs::path dir = out / engine::FileNameOf(sequences[0].name);
+  const cv::Mat drawn = cv::imread((dir / engine::FileNameOf(camera.name) / (sequences[0].frames[0].id + ".png")).string());
   ASSERT_FALSE(drawn.empty());
   EXPECT_EQ(drawn.at<cv::Vec3b>(drawn.rows - 2, drawn.cols - 2), cv::Vec3b(200, 0, 0));
   const cv::Mat blank =
-      cv::imread((dir / FileNameOf(sequences[0].cameras[1].name) / (sequences[0].frames[0].id + ".png")).string());
+      cv::imread((dir / engine::FileNameOf(sequences[0].cameras[1].name) / (sequences[0].frames[0].id + ".png")).string());
   ASSERT_FALSE(blank.empty());
   EXPECT_TRUE(IsWhite(blank.at<cv::Vec3b>(blank.rows - 2, blank.cols - 2)));
   fs::remove_all(out);
@@ -168,7 +169,7 @@ TEST(RenderCommand, BadSelectionsExitTwoNamingTheOption) {
 
 TEST(RenderSelection, FrameRanges) {
   const auto range = [](const std::string& text) {
-    const FrameRange r = ParseFrameRange(text, 10, "s");
+    const engine::FrameRange r = engine::ParseFrameRange(text, 10, "s");
     return std::make_pair(r.first, r.end);
   };
   EXPECT_EQ(range("3"), std::make_pair(3L, 4L));
@@ -187,23 +188,23 @@ TEST(RenderSelection, CamerasByNameOrIndex) {
   cameras[0].name = "left";
   cameras[1].name = "2";  // a name that looks like an index wins over the index
   cameras[2].name = "right";
-  EXPECT_EQ(SelectCameras({}, cameras, "s"), (std::vector<int>{0, 1, 2}));
-  EXPECT_EQ(SelectCameras({"right", "0"}, cameras, "s"), (std::vector<int>{2, 0}));
-  EXPECT_EQ(SelectCameras({"2"}, cameras, "s"), (std::vector<int>{1}));
-  EXPECT_EQ(test::ErrorMessage<ConfigError>([&] { SelectCameras({"rigth"}, cameras, "s"); }),
+  EXPECT_EQ(engine::SelectCameras({}, cameras, "s"), (std::vector<int>{0, 1, 2}));
+  EXPECT_EQ(engine::SelectCameras({"right", "0"}, cameras, "s"), (std::vector<int>{2, 0}));
+  EXPECT_EQ(engine::SelectCameras({"2"}, cameras, "s"), (std::vector<int>{1}));
+  EXPECT_EQ(test::ErrorMessage<ConfigError>([&] { engine::SelectCameras({"rigth"}, cameras, "s"); }),
             "--cameras: sequence 's' has no camera 'rigth'; did you mean 'right'? (cameras: left, 2, right, or their "
             "indices 0 to 2)");
 }
 
 TEST(RenderSelection, ImagePathTemplates) {
-  EXPECT_EQ(ImagePath("Shelf/Camera{camera_idx}/img_{frame}.png", "Camera3", 3, "shelf_000300", 0),
+  EXPECT_EQ(engine::ImagePath("Shelf/Camera{camera_idx}/img_{frame}.png", "Camera3", 3, "shelf_000300", 0),
             "Shelf/Camera3/img_000300.png");
-  EXPECT_EQ(ImagePath("{camera}/{frame_idx:6}.jpg", "00_03", 2, "x", 17), "00_03/000017.jpg");
-  EXPECT_EQ(ImagePath("c{camera_idx:2}_{frame_id}_{frame}", "a", 4, "noDigits", 0), "c04_noDigits_noDigits");
-  EXPECT_THROW(ImagePath("{frame", "a", 0, "f", 0), ConfigError);
-  EXPECT_THROW(ImagePath("{camera:3}", "a", 0, "f", 0), ConfigError);
-  EXPECT_EQ(FileNameOf("panoptic/160906 band1"), "panoptic_160906_band1");
-  EXPECT_EQ(FileNameOf(".."), "_");
+  EXPECT_EQ(engine::ImagePath("{camera}/{frame_idx:6}.jpg", "00_03", 2, "x", 17), "00_03/000017.jpg");
+  EXPECT_EQ(engine::ImagePath("c{camera_idx:2}_{frame_id}_{frame}", "a", 4, "noDigits", 0), "c04_noDigits_noDigits");
+  EXPECT_THROW(engine::ImagePath("{frame", "a", 0, "f", 0), ConfigError);
+  EXPECT_THROW(engine::ImagePath("{camera:3}", "a", 0, "f", 0), ConfigError);
+  EXPECT_EQ(engine::FileNameOf("panoptic/160906 band1"), "panoptic_160906_band1");
+  EXPECT_EQ(engine::FileNameOf(".."), "_");
 }
 
 }  // namespace

@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <thread>
 
-#include "cli/thread_count.h"
+#include "engine/thread_count.h"
 #include "core/errors.h"
 #include "tests/cli/cli_test_util.h"
 
@@ -18,13 +18,13 @@ namespace fs = std::filesystem;
 
 TEST(ClampThreads, AtMostTheHardwareAndTheWork) {
   const int hardware = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-  EXPECT_EQ(cli::ClampThreads(100000, 1000000), hardware);
-  EXPECT_EQ(cli::ClampThreads(100000, 1), 1);
-  EXPECT_EQ(cli::ClampThreads(1, 50), 1);
-  EXPECT_EQ(cli::ClampThreads(0, 0), 1) << "no work still runs the (empty) loop on one thread";
-  EXPECT_GE(cli::ClampThreads(0, 1000000), 1);
-  EXPECT_LE(cli::ClampThreads(0, 1000000), hardware);
-  EXPECT_THROW(cli::ClampThreads(-4, 10), ConfigError);
+  EXPECT_EQ(engine::ClampThreads(100000, 1000000), hardware);
+  EXPECT_EQ(engine::ClampThreads(100000, 1), 1);
+  EXPECT_EQ(engine::ClampThreads(1, 50), 1);
+  EXPECT_EQ(engine::ClampThreads(0, 0), 1) << "no work still runs the (empty) loop on one thread";
+  EXPECT_GE(engine::ClampThreads(0, 1000000), 1);
+  EXPECT_LE(engine::ClampThreads(0, 1000000), hardware);
+  EXPECT_THROW(engine::ClampThreads(-4, 10), ConfigError);
 }
 
 // `--threads 100000` segfaulted in libgomp; `--threads -4` was accepted.

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
-// sweep.html (cli/sweep_html.h): well-formed, one row per configuration, a column per varied
+// sweep.html (engine/outputs/sweep_html.h): well-formed, one row per configuration, a column per varied
 // option, deltas against the default configuration worked out by hand, one bar per row per chart;
 // and `rpt sweep` / `rpt merge` write it.
-#include "cli/sweep_html.h"
+#include "engine/outputs/sweep_html.h"
 
 #include <gtest/gtest.h>
 
@@ -78,9 +78,9 @@ TEST(SweepHtml, RowsOptionsAndDeltasAgainstTheDefault) {
       Row("triangulation only", {{"score.mode", "triangulation"}}, false,
           {{"pcp", nullptr}, {"mpjpe_mm", 49.0}, {"invalid", 12.0}, {"frame_time_us_median", 90.0}}),
   };
-  EXPECT_EQ(FindSweepBaseline(sweep["rows"]).row, 1u);
-  EXPECT_TRUE(FindSweepBaseline(sweep["rows"]).is_default);
-  const std::string page = SweepHtml(sweep);
+  EXPECT_EQ(engine::FindSweepBaseline(sweep["rows"]).row, 1u);
+  EXPECT_TRUE(engine::FindSweepBaseline(sweep["rows"]).is_default);
+  const std::string page = engine::SweepHtml(sweep);
   const XmlElement html = test::XmlReader::Parse(page, test::Markup::kDocument);  // throws when malformed
   EXPECT_EQ(html.name, "html");
 
@@ -141,9 +141,9 @@ TEST(SweepHtml, WithoutADefaultRowDeltasAreAgainstTheFirst) {
   nlohmann::ordered_json sweep;
   sweep["rows"] = {Row("a", {{"param.cameras", "3"}}, false, {{"pcp", 50.0}}),
                    Row("b", {{"param.cameras", "5"}}, false, {{"pcp", 75.0}})};
-  EXPECT_EQ(FindSweepBaseline(sweep["rows"]).row, 0u);
-  EXPECT_FALSE(FindSweepBaseline(sweep["rows"]).is_default);
-  const XmlElement html = test::XmlReader::Parse(SweepHtml(sweep), test::Markup::kDocument);
+  EXPECT_EQ(engine::FindSweepBaseline(sweep["rows"]).row, 0u);
+  EXPECT_FALSE(engine::FindSweepBaseline(sweep["rows"]).is_default);
+  const XmlElement html = test::XmlReader::Parse(engine::SweepHtml(sweep), test::Markup::kDocument);
   const std::vector<const XmlElement*> rows = TableRows(html);
   ASSERT_EQ(rows.size(), 2u);
   EXPECT_EQ(Attribute(MetricCell(*rows[1], "pcp")->children.at(0), "data-delta"), "25.0000");

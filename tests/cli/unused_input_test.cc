@@ -37,7 +37,7 @@ bool Contains(const std::string& text, const std::string& part) { return text.fi
 
 // Labels of two scenes ("a", "b"; 8 frames each, 4 cameras, perfect detections) and one
 // detections file (generic JSON) for both, as JSON to edit.
-struct Input {
+struct TestInput {
   fs::path dir, labels, detections;
   nlohmann::json detections_json;
 
@@ -52,8 +52,8 @@ struct Input {
   }
 };
 
-Input WriteInput(const std::string& name) {
-  Input input;
+TestInput WriteInput(const std::string& name) {
+  TestInput input;
   input.dir = test::TempDir(name);
   input.labels = input.dir / "labels.json";
   input.detections = input.dir / "detections.json";
@@ -81,7 +81,7 @@ Input WriteInput(const std::string& name) {
 }
 
 TEST(UnusedInput, AnUnknownCameraInOneSceneOfSeveralIsAnErrorAsForOneScene) {
-  Input input = WriteInput("unused_camera");
+  TestInput input = WriteInput("unused_camera");
   const std::string camera = input.Frame("b_000003")["views"][1]["camera"];
   input.Frame("b_000003")["views"][1]["camera"] = "cam_typo";
   input.WriteDetections();
@@ -98,7 +98,7 @@ TEST(UnusedInput, AnUnknownCameraInOneSceneOfSeveralIsAnErrorAsForOneScene) {
 }
 
 TEST(UnusedInput, UnmatchedFramesAreCountedWarningsInStderrAndRunJson) {
-  Input input = WriteInput("unused_frames");
+  TestInput input = WriteInput("unused_frames");
   nlohmann::json& frames = input.detections_json["frames"];
   // Two detection frames whose ids are no label (a typo'd scene), and label a_000005 dropped.
   nlohmann::json stray = input.Frame("a_000001");
@@ -117,7 +117,7 @@ TEST(UnusedInput, UnmatchedFramesAreCountedWarningsInStderrAndRunJson) {
       "warning: " + input.detections.string() +
           ": 2 detection frames whose id is no frame of the input, ignored (first 'c_000001')",
       "warning: " + input.detections.string() +
-          ": 1 frames of the input absent from it, evaluated without detections (first 'a_000005')"};
+          ": 1 frames of the input absent from it, triangulated without detections (first 'a_000005')"};
   EXPECT_EQ(WarningLines(r.err), expected) << r.err;
   const nlohmann::json run = nlohmann::json::parse(test::ReadAll(out / "run.json"));
   ASSERT_EQ(run["input_warnings"].size(), 2u) << run.dump();
@@ -138,7 +138,7 @@ TEST(UnusedInput, UnmatchedFramesAreCountedWarningsInStderrAndRunJson) {
 }
 
 TEST(UnusedInput, StrictAcceptsCorrectionsAndCompleteInput) {
-  Input input = WriteInput("unused_strict_ok");
+  TestInput input = WriteInput("unused_strict_ok");
   // A score of 1.01 is corrected (clamped to 1) and reported, but nothing is unused.
   input.Frame("a_000002")["views"][0]["poses"][0][0][2] = 1.01;
   input.WriteDetections();
@@ -152,7 +152,7 @@ TEST(UnusedInput, StrictAcceptsCorrectionsAndCompleteInput) {
 }
 
 TEST(UnusedInput, StrictOnCheckAndSweep) {
-  Input input = WriteInput("unused_check");
+  TestInput input = WriteInput("unused_check");
   nlohmann::json stray = input.Frame("a_000001");
   stray["id"] = "c_000001";
   input.detections_json["frames"].push_back(stray);
@@ -179,7 +179,7 @@ TEST(UnusedInput, StrictOnCheckAndSweep) {
 }
 
 TEST(UnusedInput, InspectAndConvertCountFramesWithAtLeastOneDetection) {
-  Input input = WriteInput("unused_counts");
+  TestInput input = WriteInput("unused_counts");
   // a_000002: listed, but no camera detected anyone; a_000004: absent from the file.
   for (nlohmann::json& view : input.Frame("a_000002")["views"]) view["poses"] = nlohmann::json::array();
   nlohmann::json& frames = input.detections_json["frames"];

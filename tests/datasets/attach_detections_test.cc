@@ -79,7 +79,7 @@ TEST(AttachDetections, UnmatchedFramesAreCountedWithTheFirstId) {
   EXPECT_EQ(warnings.items()[0].Line(),
             "d.json: 2 detection frames whose id is no frame of the input, ignored (first 'c_000007')");
   EXPECT_EQ(warnings.items()[1].Line(),
-            "d.json: 2 frames of the input absent from it, evaluated without detections (first 'a_000001')");
+            "d.json: 2 frames of the input absent from it, triangulated without detections (first 'a_000001')");
   EXPECT_EQ(warnings.Unused().size(), 2u);
 }
 

@@ -11,7 +11,6 @@
 
 #include "core/errors.h"
 #include "datasets/readers/synthetic_dataset.h"
-#include "datasets/registry.h"
 #include "tests/error_message.h"
 
 namespace rpt {
@@ -127,24 +126,6 @@ TEST(DatasetParams, DescriptionCarriesDefaultsAndTypes) {
   EXPECT_EQ(params[7].type, "red | green");
 }
 
-// Every reader's listed defaults are values its own parser accepts, and they parse back to the
-// same text (one source of truth: the struct initialisers).
-TEST(DatasetParams, EveryReaderListsParsableDefaults) {
-  for (const DatasetEntry& entry : DatasetRegistry()) {
-    ASSERT_FALSE(entry.info.params.empty()) << entry.info.name;
-    for (const DatasetParam& p : entry.info.params) {
-      EXPECT_FALSE(p.help.empty()) << entry.info.name << " " << p.name;
-      EXPECT_FALSE(p.type.empty()) << entry.info.name << " " << p.name;
-    }
-  }
-  // The synthetic reader takes its listed defaults back (the others need files on disk).
-  std::map<std::string, std::string> given;
-  for (const DatasetParam& p : SyntheticInfo().params) given[p.name] = p.default_value;
-  given["frames"] = "2";
-  DatasetRequest request = Request(given);
-  EXPECT_EQ(ReadSynthetic(request).front().frames.size(), 2u);
-}
-
 // `rpt demo --seed` takes any uint64; so does the synthetic reader (it used to stop at 2^31 - 1).
 TEST(DatasetParams, SyntheticSeedTakesTheFullRange) {
   const DatasetRequest request = Request({{"frames", "1"}, {"seed", "3000000000"}});
@@ -154,23 +135,6 @@ TEST(DatasetParams, SyntheticSeedTakesTheFullRange) {
               HasSubstr("synthetic: param noise: 'noisy' is not one of"));
   EXPECT_THAT(test::ErrorMessage<ConfigError>([] { ReadSynthetic(Request({{"camras", "3"}})); }),
               HasSubstr("did you mean 'cameras'?"));
-}
-
-// docs/datasets.md shows the tables DatasetParamsMarkdown() generates from the readers' visits.
-TEST(DatasetParams, DocsTablesMatchTheReaders) {
-  std::ifstream file(std::string(RPT_SOURCE_DIR) + "/docs/datasets.md");
-  ASSERT_TRUE(file.good());
-  std::stringstream text;
-  text << file.rdbuf();
-  const std::string docs = text.str();
-  const std::string begin = "<!-- dataset-params:begin -->\n";
-  const std::string end = "<!-- dataset-params:end -->";
-  const size_t a = docs.find(begin);
-  const size_t b = docs.find(end);
-  ASSERT_NE(a, std::string::npos);
-  ASSERT_NE(b, std::string::npos);
-  EXPECT_EQ(docs.substr(a + begin.size(), b - a - begin.size()), DatasetParamsMarkdown())
-      << "regenerate the tables in docs/datasets.md (rpt datasets --markdown)";
 }
 
 }  // namespace

@@ -11,7 +11,6 @@
 
 #include "datasets/frame_source.h"
 #include "datasets/readers/synthetic_dataset.h"
-#include "datasets/registry.h"
 #include "datasets/synthetic/detector_options.h"
 #include "datasets/synthetic/scene.h"
 #include "datasets/synthetic/synthetic_sequence.h"
@@ -86,20 +85,6 @@ TEST(SyntheticSourceTest, StreamedFramesEqualTheMaterialisedSequence) {
     ++count;
   }
   EXPECT_EQ(count, whole.frames.size());
-}
-
-TEST(SyntheticSourceTest, DatasetStreamsAndReadsTheSameFrames) {
-  DatasetRequest request;
-  request.dataset = "synthetic";
-  request.params = {{"frames", "40"}, {"people", "2"}, {"cameras", "3"}, {"seed", "5"}};
-  const std::vector<Sequence> read = ReadDataset(request);
-  std::vector<std::unique_ptr<FrameSource>> sources = StreamDataset(request);
-  ASSERT_EQ(read.size(), 1u);
-  ASSERT_EQ(sources.size(), 1u);
-  const Sequence streamed = Materialize(*sources[0]);
-  EXPECT_EQ(streamed.name, read[0].name);
-  ASSERT_EQ(streamed.frames.size(), read[0].frames.size());
-  for (size_t f = 0; f < streamed.frames.size(); ++f) ExpectSameFrame(streamed.frames[f], read[0].frames[f]);
 }
 
 TEST(SequenceSourceTest, DeliversFramesInOrderAndFreesThem) {

@@ -16,7 +16,6 @@
 
 #include "core/errors.h"
 #include "datasets/readers/mvor.h"
-#include "datasets/registry.h"
 #include "tests/datasets/io_test_util.h"
 #include "tests/error_message.h"
 #include "tests/test_data.h"
@@ -269,12 +268,6 @@ TEST(MvorReader, BadParamsAndFilesAreNamed) {
   WriteJson(dir.path() / "camma_mvor_2018.json", bad);
   EXPECT_THAT(test::InputErrorOf([&] { ReadMvor(Request(dir.path(), {{"detections", "none"}})); }),
               HasSubstr("/multiview_images/0/images/2: day or frame number differs"));
-}
-
-TEST(MvorReader, IsRegistered) {
-  bool found = false;
-  for (const DatasetEntry& e : DatasetRegistry()) found |= e.info.name == "mvor";
-  EXPECT_TRUE(found);
 }
 
 }  // namespace

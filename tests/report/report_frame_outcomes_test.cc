@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // EvaluateFrameOutcomes: per-frame matches, misses and invalid predictions worked out by hand, and
 // per-frame numbers that add up to the run's metrics.
-#include "cli/report_frame_outcomes.h"
+#include "engine/report/report_frame_outcomes.h"
 
 #include <gtest/gtest.h>
 
@@ -40,9 +40,9 @@ TEST(ReportFrameOutcomes, MatchedMissedAndInvalidByHand) {
   AddPerson(&predictions, 0.05, 0, 7);
   AddPerson(&predictions, 1.5, 2.0, 8);
   metrics::EvalOptions options;  // greedy matching at 500 mm
-  const RunOutcomes out = EvaluateFrameOutcomes(sequences, {{predictions}}, CocoBodyJoints(), options);
+  const engine::RunOutcomes out = engine::EvaluateFrameOutcomes(sequences, {{predictions}}, CocoBodyJoints(), options);
   ASSERT_EQ(out.frames.size(), 1u);
-  const FrameOutcome& frame = out.frames[0][0];
+  const engine::FrameOutcome& frame = out.frames[0][0];
   EXPECT_EQ(frame.num_gt, 2);
   EXPECT_EQ(frame.num_matched, 1);
   EXPECT_EQ(frame.num_invalid, 1);
@@ -66,8 +66,8 @@ TEST(ReportFrameOutcomes, GtWithoutValidJointsIsNotEvaluated) {
   for (int j = 0; j < gt.num_joints; ++j) gt.Person(1)(3, j) = 0.0;  // second GT: nothing visible
   Poses3D predictions;
   predictions.Clear(static_cast<int>(CocoBodyJoints().size()));
-  const RunOutcomes out = EvaluateFrameOutcomes(sequences, {{predictions}}, CocoBodyJoints(), {});
-  const FrameOutcome& frame = out.frames[0][0];
+  const engine::RunOutcomes out = engine::EvaluateFrameOutcomes(sequences, {{predictions}}, CocoBodyJoints(), {});
+  const engine::FrameOutcome& frame = out.frames[0][0];
   EXPECT_EQ(frame.gt_state, (std::vector<int>{0, -1}));
   EXPECT_EQ(frame.num_gt, 1);
   EXPECT_TRUE(std::isnan(frame.mpjpe_mm));
@@ -86,9 +86,9 @@ TEST(ReportFrameOutcomes, FramesAddUpToTheRun) {
     predictions[f].Clear(static_cast<int>(CocoBodyJoints().size()));
     for (int p = 0; p < f; ++p) AddPerson(&predictions[f], 2.0 * p + 0.02 * f, 0.6 * p);
   }
-  const RunOutcomes out = EvaluateFrameOutcomes({sequence}, {predictions}, CocoBodyJoints(), {});
+  const engine::RunOutcomes out = engine::EvaluateFrameOutcomes({sequence}, {predictions}, CocoBodyJoints(), {});
   int matched = 0, invalid = 0, gt = 0;
-  for (const FrameOutcome& frame : out.frames[0]) {
+  for (const engine::FrameOutcome& frame : out.frames[0]) {
     matched += frame.num_matched;
     invalid += frame.num_invalid;
     gt += frame.num_gt;

@@ -1,0 +1,19 @@
+// SPDX-License-Identifier: MIT
+// The input options shared by the commands that read a dataset (--dataset, --root, --param,
+// --labels, --detections, --simulate, ...; engine/input.h opens what they name) and how the
+// input's warnings are printed.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include "datasets/input_warnings.h"
+#include "engine/input.h"
+
+namespace rpt::cli {
+
+void AddInputOptions(CLI::App* command, engine::InputSpec* spec);
+
+// Prints every entry as "warning: <line>" on stderr.
+void PrintInputWarnings(const InputWarnings& warnings);
+
+}  // namespace rpt::cli

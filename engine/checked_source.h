@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: MIT
+// The one validation of an input: a source whose header is checked when it is wrapped and each
+// frame as it is pulled (ValidateSequenceHeader, ValidateFrame: camera validity, joint counts,
+// finite coordinates, scores in [0, 1]; datasets/sequence.h), plus repeated frame ids. Readers
+// correct real-world imprecision first, so a reader's frames pass; what does not is an InputError
+// naming the sequence, the frame and the view.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <unordered_set>
+
+#include "datasets/frame_source.h"
+
+namespace rpt::engine {
+
+class CheckedSource final : public FrameSource {
+ public:
+  // Throws InputError when the header (cameras) is invalid.
+  explicit CheckedSource(std::unique_ptr<FrameSource> frames);
+
+  const SequenceHeader& header() const override { return frames_->header(); }
+  long num_frames() const override { return frames_->num_frames(); }
+  bool Next(SequenceFrame* frame) override;
+  const InputWarnings& warnings() const override { return frames_->warnings(); }
+
+ private:
+  std::unique_ptr<FrameSource> frames_;
+  // Hashes of the frame ids seen (8 bytes a frame instead of the ids themselves).
+  std::unordered_set<std::uint64_t> id_hashes_;
+};
+
+}  // namespace rpt::engine

@@ -1,0 +1,191 @@
+// SPDX-License-Identifier: MIT
+#include "engine/diagnostics.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <utility>
+
+namespace rpt::engine {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+Json OrNull(double value) { return std::isfinite(value) ? Json(value) : Json(nullptr); }
+
+// The first step after which no item is left in any frame, or -1.
+int FirstEmptyStep(const metrics::StepCountSummary& counts) {
+  for (int s = 0; s <= static_cast<int>(Step::kPostprocess); ++s) {
+    if (counts.count_per_frame[s] == 0) return s;
+  }
+  return -1;
+}
+
+}  // namespace
+
+std::vector<CheckWarning> ResultWarnings(const RunResult& run) {
+  std::vector<CheckWarning> warnings;
+  const long frames_with_gt = run.frames_with_gt;
+  const long without_prediction = run.frames_with_gt_without_prediction;
+  char text[400];
+  if (run.output_persons == 0) {
+    std::snprintf(text, sizeof(text), "no predictions at all: nobody was triangulated in %ld frames with %ld GT persons",
+                  run.frames, run.gt_persons);
+    std::string message = text;
+    const int empty = FirstEmptyStep(run.counts);
+    if (empty >= 0) {
+      message += "; nothing is left after step '" + std::string(kSteps[empty].key) + "' (see the count / frame column)";
+    }
+    warnings.push_back({"no_predictions", message});
+    return warnings;  // the other result warnings would only repeat it
+  }
+  if (frames_with_gt > 0 && without_prediction >= kMaxShareFramesWithoutPrediction * frames_with_gt) {
+    std::snprintf(text, sizeof(text), "%ld of %ld frames with GT persons (%.0f %%) have no prediction", without_prediction,
+                  frames_with_gt, 100.0 * without_prediction / frames_with_gt);
+    warnings.push_back({"frames_without_predictions", text});
+  }
+  const double recall = run.metrics.recall_500;
+  if (std::isfinite(recall) && recall < kMinRecall500) {
+    std::snprintf(text, sizeof(text),
+                  "very low recall: Recall@500 is %.1f %% (below %.0f %%): most GT persons have no prediction within "
+                  "500 mm",
+                  recall, kMinRecall500);
+    warnings.push_back({"low_recall", text});
+  }
+  return warnings;
+}
+
+EvalDiagnostics Diagnose(const RunResult& run) {
+  EvalDiagnostics diagnostics;
+  for (const SequenceResult& sequence : run.sequences) {
+    if (sequence.check) diagnostics.checks.push_back(*sequence.check);
+  }
+  for (const SequenceCheck& check : diagnostics.checks) {
+    for (CheckWarning& w : DetectionWarnings(check)) diagnostics.warnings.push_back(std::move(w));
+  }
+  for (CheckWarning& w : ResultWarnings(run)) diagnostics.warnings.push_back(std::move(w));
+  return diagnostics;
+}
+
+Json CameraCheckJson(const CameraCheck& camera) {
+  Json j;
+  j["name"] = camera.name;
+  j["detections"] = camera.detections;
+  j["frames_gt_in_view"] = camera.frames_gt_in_view;
+  j["empty_frames_gt_in_view"] = camera.empty_frames_gt_in_view;
+  j["gt_persons_compared"] = camera.gt_compared;
+  j["gt_to_detection_px_median"] = OrNull(camera.px_median);
+  j["gt_to_detection_rel_median"] = OrNull(camera.rel_median);
+  return j;
+}
+
+Json ShiftCheckJson(const ShiftCheck& shift) {
+  Json j;
+  j["tested"] = shift.tested;
+  if (!shift.reason.empty()) j["reason"] = shift.reason;
+  if (shift.comparisons == 0) return j;
+  j["frames"] = shift.frames;
+  j["comparisons"] = shift.comparisons;
+  j["best_shift"] = shift.best_shift;
+  j["rel_median_at_0"] = OrNull(shift.RelAt(0));
+  j["rel_median_at_best"] = OrNull(shift.RelAt(shift.best_shift));
+  j["win_share"] = shift.win_share;
+  j["motion_rel"] = OrNull(shift.motion_rel);
+  return j;
+}
+
+Json DiagnosticsJson(const EvalDiagnostics& diagnostics) {
+  Json j;
+  j["warnings"] = Json::array();
+  for (const CheckWarning& w : diagnostics.warnings) j["warnings"].push_back({{"code", w.code}, {"message", w.message}});
+  j["data_checks"] = Json::array();
+  for (const SequenceCheck& check : diagnostics.checks) {
+    Json seq;
+    seq["sequence"] = check.sequence;
+    seq["measured_frames"] = check.measured_frames;
+    seq["frames_with_gt"] = check.frames_with_gt;
+    seq["frames_with_gt_without_detections"] = check.frames_with_gt_no_input;
+    seq["cameras"] = Json::array();
+    for (const CameraCheck& camera : check.cameras) seq["cameras"].push_back(CameraCheckJson(camera));
+    seq["frame_shift"] = ShiftCheckJson(check.shift);
+    j["data_checks"].push_back(seq);
+  }
+  return j;
+}
+
+std::string ShiftLine(const ShiftCheck& shift) {
+  char line[400];
+  const char* what = "frame shift (detections of frame f vs GT of frame f+k)";
+  if (!shift.tested) {
+    std::snprintf(line, sizeof(line), "%s: not tested, %s", what, shift.reason.c_str());
+  } else if (LooksShifted(shift)) {
+    std::snprintf(line, sizeof(line),
+                  "%s: k = %+d fits best, median %.3f vs %.3f at k = 0 of the box diagonal (closer in %.0f %% of %ld "
+                  "comparisons)",
+                  what, shift.best_shift, shift.RelAt(shift.best_shift), shift.RelAt(0), 100 * shift.win_share,
+                  shift.comparisons);
+  } else {
+    std::snprintf(line, sizeof(line),
+                  "%s: none, median %.3f of the box diagonal at k = 0, %.3f at the best other k = %+d (closer in %.0f %% "
+                  "of %ld comparisons)",
+                  what, shift.RelAt(0), shift.RelAt(shift.best_shift), shift.best_shift, 100 * shift.win_share,
+                  shift.comparisons);
+  }
+  return line;
+}
+
+void PrintCheckSummary(std::ostream& out, const EvalDiagnostics& diagnostics) {
+  double lo = INFINITY, hi = -INFINITY;
+  int cameras = 0;
+  for (const SequenceCheck& check : diagnostics.checks) {
+    for (const CameraCheck& camera : check.cameras) {
+      if (!std::isfinite(camera.rel_median)) continue;
+      lo = std::min(lo, camera.rel_median);
+      hi = std::max(hi, camera.rel_median);
+      ++cameras;
+    }
+  }
+  char line[320];
+  if (cameras > 0) {
+    char range[64];
+    std::snprintf(range, sizeof(range), hi - lo < 0.0005 ? "%.3f" : "%.3f to %.3f", lo, hi);
+    std::snprintf(line, sizeof(line),
+                  "projected GT to nearest detection: median %s of the person's box diagonal (%d camera(s); warning "
+                  "from %.2f)\n",
+                  range, cameras, kFarRelDistance);
+  } else {
+    std::snprintf(line, sizeof(line), "projected GT to nearest detection: nothing to compare\n");
+  }
+  out << line;
+  const size_t n = diagnostics.checks.size();
+  if (n == 1) {
+    out << ShiftLine(diagnostics.checks.front().shift) << "\n";
+    return;
+  }
+  if (n == 0) return;
+  int tested = 0, shifted = 0;
+  const SequenceCheck* untested = nullptr;
+  bool same_reason = true;
+  for (const SequenceCheck& check : diagnostics.checks) {
+    tested += check.shift.tested ? 1 : 0;
+    shifted += LooksShifted(check.shift) ? 1 : 0;
+    if (check.shift.tested) continue;
+    if (untested == nullptr) untested = &check;
+    same_reason &= check.shift.reason == untested->shift.reason;
+  }
+  out << "frame shift (detections of frame f vs GT of frame f+k): ";
+  if (tested == 0 && same_reason) {
+    out << "not tested, " << untested->shift.reason << "\n";
+    return;
+  }
+  out << "tested in " << tested << " of " << n << " sequences, " << shifted << " shifted";
+  if (untested != nullptr) out << "; not tested in " << untested->sequence << " (" << untested->shift.reason << ")";
+  out << "\n";
+}
+
+void PrintWarnings(std::ostream& err, const EvalDiagnostics& diagnostics) {
+  for (const CheckWarning& w : diagnostics.warnings) err << "warning: " << w.message << "\n";
+}
+
+}  // namespace rpt::engine

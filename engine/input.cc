@@ -1,0 +1,160 @@
+// SPDX-License-Identifier: MIT
+#include "engine/input.h"
+
+#include <utility>
+
+#include "core/errors.h"
+#include "datasets/readers/detections_file.h"
+#include "datasets/simulated_source.h"
+#include "engine/attached_detections.h"
+#include "engine/checked_source.h"
+#include "engine/dataset_registry.h"
+
+namespace rpt::engine {
+namespace {
+
+// Throws ConfigError on contradicting input options.
+void CheckInputSpec(const InputSpec& spec) {
+  if (spec.dataset.empty() == spec.labels.empty()) {
+    throw ConfigError("give either --dataset NAME (with --root DIR) or --labels FILE");
+  }
+  if (spec.simulate && !spec.detections.empty()) throw ConfigError("--simulate and --detections exclude each other");
+  if (!spec.simulate && (!spec.detector.empty() || spec.simulate_perfect)) {
+    throw ConfigError(std::string(spec.simulate_perfect ? "--simulate-perfect" : "--detector") +
+                      " needs --simulate (the synthetic dataset takes --param noise=PROFILE)");
+  }
+  if (spec.simulate_perfect && !spec.detector.empty() && spec.detector != "perfect") {
+    throw ConfigError("--simulate-perfect (deprecated) contradicts --detector " + spec.detector);
+  }
+}
+
+// The reader request: --labels FILE is the generic labels reader with the file as its root, so
+// --param reaches it like any reader's.
+DatasetRequest RequestOf(const InputSpec& spec) {
+  DatasetRequest request;
+  request.dataset = spec.labels.empty() ? spec.dataset : "generic";
+  request.root = spec.labels.empty() ? spec.root : spec.labels;
+  for (const std::string& assignment : spec.params) {
+    const size_t eq = assignment.find('=');
+    if (eq == std::string::npos || eq == 0) throw ConfigError("--param " + assignment + ": expected key=value");
+    request.params[assignment.substr(0, eq)] = assignment.substr(eq + 1);
+  }
+  return request;
+}
+
+std::string NoDetectionsMessage(const std::string& sequence) {
+  return "sequence '" + sequence +
+         "' has no 2D detections: pass --detections FILE, --simulate, or the dataset's own cache "
+         "(e.g. --param detections=voxelpose)";
+}
+
+}  // namespace
+
+Input::Input(std::vector<std::unique_ptr<FrameSource>> sources, InputWarnings opened, bool strict,
+             std::shared_ptr<AttachedDetections> attached)
+    : sources_(std::move(sources)),
+      finished_(sources_.size()),
+      done_(sources_.size(), false),
+      opened_(std::move(opened)),
+      strict_(strict),
+      attached_(std::move(attached)) {
+  headers_.reserve(sources_.size());
+  for (const auto& source : sources_) headers_.push_back(source->header());
+}
+
+Input::~Input() = default;
+Input::Input(Input&&) noexcept = default;
+Input& Input::operator=(Input&&) noexcept = default;
+
+void Input::Finished(int i) {
+  if (done_[i]) return;
+  finished_[i] = sources_[i]->warnings();
+  done_[i] = true;
+  sources_[i].reset();  // whatever the reader still holds
+}
+
+InputWarnings Input::Warnings() const {
+  // The readers' first (sequence order), then the detections file's, then what the file and the
+  // sequences did not use of each other.
+  InputWarnings all;
+  bool every_done = true;
+  for (size_t i = 0; i < sources_.size(); ++i) {
+    all.Merge(done_[i] ? finished_[i] : sources_[i]->warnings());
+    every_done = every_done && done_[i];
+  }
+  all.Merge(opened_);
+  if (attached_ && every_done) all.Merge(attached_->Unused());
+  return all;
+}
+
+void Input::CheckStrict() const { engine::CheckStrict(strict_, Warnings()); }
+
+std::vector<Sequence> Input::Materialize() {
+  std::vector<Sequence> sequences;
+  sequences.reserve(sources_.size());
+  for (int i = 0; i < size(); ++i) {
+    sequences.push_back(rpt::Materialize(*sources_[i]));
+    sequences.back().warnings = {};  // in Warnings(): not twice
+    Finished(i);
+  }
+  CheckStrict();
+  return sequences;
+}
+
+Input OpenInput(const InputSpec& spec, const InputNeeds& needs) {
+  CheckInputSpec(spec);
+  std::vector<std::unique_ptr<FrameSource>> sources = OpenDataset(RequestOf(spec));
+  InputWarnings opened;
+  std::shared_ptr<AttachedDetections> attached;
+  if (spec.simulate) {
+    for (auto& source : sources) {
+      source = std::make_unique<SimulatedDetectionsSource>(std::move(source), SimulationOf(spec));
+    }
+  } else if (!spec.detections.empty()) {
+    // One file for all sequences: each frame goes to the sequence that holds its id.
+    attached = std::make_shared<AttachedDetections>(ReadDetectionsFile(spec.detections), spec.detections);
+    opened.Merge(attached->file_warnings());  // once, however many sequences use it
+    for (auto& source : sources) source = attached->Wrap(std::move(source));
+  }
+  for (auto& source : sources) {
+    if (needs.detections && source->header().detection_joints.empty()) {
+      throw InputError(NoDetectionsMessage(source->header().name));
+    }
+    source = std::make_unique<CheckedSource>(std::move(source));
+  }
+  Input input(std::move(sources), std::move(opened), spec.strict, std::move(attached));
+  // What the readers found unusable while opening (e.g. files not matching the reader's pattern);
+  // the rest is known once the sources are exhausted (the run loop checks again then).
+  input.CheckStrict();
+  return input;
+}
+
+std::vector<Sequence> LoadInput(const InputSpec& spec, const InputNeeds& needs, InputWarnings* warnings) {
+  Input input = OpenInput(spec, needs);
+  std::vector<Sequence> sequences = input.Materialize();
+  warnings->Merge(input.Warnings());
+  return sequences;
+}
+
+SimulationOptions SimulationOf(const InputSpec& spec) {
+  SimulationOptions simulation;
+  simulation.seed = spec.seed;
+  simulation.detector = spec.simulate_perfect ? "perfect" : spec.detector.empty() ? "realistic" : spec.detector;
+  return simulation;
+}
+
+void CheckStrict(bool strict, const InputWarnings& warnings) {
+  const std::vector<InputWarning> unused = warnings.Unused();
+  if (!strict || unused.empty()) return;
+  std::string message = "--strict: part of the input is not used (" + std::to_string(unused.size()) + " warning(s)):";
+  for (const InputWarning& w : unused) message += "\n  warning: " + w.Line();
+  throw InputError(message);
+}
+
+std::vector<std::string> InputWarningLines(const InputWarnings& warnings) {
+  std::vector<std::string> lines;
+  for (const InputWarning& w : warnings.items()) lines.push_back(w.Line());
+  return lines;
+}
+
+}  // namespace rpt::engine

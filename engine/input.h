@@ -1,0 +1,95 @@
+// SPDX-License-Identifier: MIT
+// Opening an input: the one place where what the user named (a dataset, a labels file, a
+// detections file, simulated detections) becomes frame sources (datasets/frame_source.h), each
+// wrapped once: detections attached (engine/attached_detections.h) or simulated, then every
+// frame validated (engine/checked_source.h). Every command and entry point opens its input here.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "datasets/detections.h"
+#include "datasets/frame_source.h"
+#include "datasets/input_warnings.h"
+#include "datasets/sequence.h"
+
+namespace rpt::engine {
+
+class AttachedDetections;
+
+// What to read (the input options of every command that reads a dataset).
+struct InputSpec {
+  std::string dataset;              // dataset reader (engine/dataset_registry.h)
+  std::string root;                 // its folder (or file)
+  std::vector<std::string> params;  // key=value parameters of the reader (with `labels`: of the labels reader)
+  std::string labels;               // generic labels file (JSON or HDF5 cache) instead of a dataset
+  std::string detections;           // detections file or folder (ReadDetectionsFile)
+  bool simulate = false;            // simulated detections from the ground truth
+  bool simulate_perfect = false;    // deprecated alias of detector = "perfect"
+  std::string detector;             // simulated detector profile; empty = realistic
+  uint64_t seed = 1;                // of the simulated detector
+  bool strict = false;              // unused input is an error (CheckStrict)
+};
+
+// What a command needs of its input.
+struct InputNeeds {
+  bool detections = true;  // a sequence without any 2D detection is an InputError explaining the options
+};
+
+// An opened input: one source per sequence. The run loop (engine/run.h) pulls them and calls
+// Finished(i) when source i is exhausted; Warnings() is complete once every source is.
+class Input {
+ public:
+  Input(std::vector<std::unique_ptr<FrameSource>> sources, InputWarnings opened, bool strict,
+        std::shared_ptr<AttachedDetections> attached = nullptr);
+  ~Input();
+  Input(Input&&) noexcept;
+  Input& operator=(Input&&) noexcept;
+
+  int size() const { return static_cast<int>(sources_.size()); }
+  FrameSource& source(int i) { return *sources_[i]; }
+  const SequenceHeader& header(int i) const { return headers_[i]; }
+  // Source i is exhausted: its warnings are kept and the reader's memory freed.
+  void Finished(int i);
+  // The corrections and unused input reported so far: the files read up front, the finished
+  // sources and, once every source has finished, the detection frames no sequence used.
+  InputWarnings Warnings() const;
+  // With --strict: throws InputError listing every unused-input warning reported so far.
+  void CheckStrict() const;
+  // Every sequence in memory (for the commands that need whole sequences: inspect, render,
+  // report, detector-stats, convert); each frame validated once, like a run's.
+  std::vector<Sequence> Materialize();
+
+ private:
+  std::vector<std::unique_ptr<FrameSource>> sources_;
+  std::vector<SequenceHeader> headers_;
+  std::vector<InputWarnings> finished_;
+  std::vector<bool> done_;
+  InputWarnings opened_;
+  bool strict_ = false;
+  std::shared_ptr<AttachedDetections> attached_;
+};
+
+// Opens the input `spec` names. Throws ConfigError for contradicting options and InputError for
+// what cannot be read (naming the file and the place); with spec.strict, unused input found while
+// opening throws too.
+Input OpenInput(const InputSpec& spec, const InputNeeds& needs = {});
+
+// Opens and materialises (Input::Materialize), with --strict applied to the whole input.
+std::vector<Sequence> LoadInput(const InputSpec& spec, const InputNeeds& needs, InputWarnings* warnings);
+
+// The simulated detector of the input options: --detector PROFILE (--simulate-perfect: "perfect";
+// neither: "realistic") with --seed (also what detector-stats --compare simulates with).
+SimulationOptions SimulationOf(const InputSpec& spec);
+
+// With `strict`, throws InputError listing every entry of `warnings` that reports unused input
+// (InputWarningKind::kUnused), one "warning: <line>" per line; corrections within the tolerances
+// are accepted.
+void CheckStrict(bool strict, const InputWarnings& warnings);
+
+// The lines of `warnings` (InputWarning::Line()), e.g. for run.json.
+std::vector<std::string> InputWarningLines(const InputWarnings& warnings);
+
+}  // namespace rpt::engine

@@ -1,0 +1,126 @@
+// SPDX-License-Identifier: MIT
+#include "engine/outputs/predictions_writer.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <nlohmann/json.hpp>
+
+#include "core/errors.h"
+#include "datasets/io/json_output.h"
+#include "datasets/io/text_file.h"
+
+namespace rpt::engine {
+namespace {
+
+using Json = nlohmann::json;
+
+void WriteNumber(std::ostream& out, double value, int decimals) {
+  if (!std::isfinite(value)) {
+    out << "null";
+    return;
+  }
+  char number[64];
+  std::snprintf(number, sizeof(number), "%.*f", decimals, value);
+  out << number;
+}
+
+}  // namespace
+
+// One sequence's frames, as the JSON text of the "frames" list (without the brackets).
+struct PredictionsWriter::Part {
+  std::filesystem::path path;
+  std::ofstream out;
+  JointNames joints;
+  long frames = 0;
+  int replaced = 0;  // strings with invalid UTF-8
+  bool begun = false;
+};
+
+PredictionsWriter::PredictionsWriter(std::filesystem::path path, std::string run_id, int num_sequences)
+    : path_(std::move(path)), run_id_(std::move(run_id)) {
+  parts_.resize(static_cast<size_t>(num_sequences));
+}
+
+PredictionsWriter::~PredictionsWriter() {
+  for (const auto& part : parts_) {
+    if (part == nullptr) continue;
+    part->out.close();
+    std::error_code ec;
+    std::filesystem::remove(part->path, ec);
+  }
+}
+
+void PredictionsWriter::BeginSequence(int sequence, const SequenceHeader&, const JointNames& output_joints) {
+  auto part = std::make_unique<Part>();
+  part->path = path_;
+  part->path += ".part-" + std::to_string(sequence);
+  part->out.open(part->path, std::ios::binary | std::ios::trunc);
+  if (!part->out) throw InputError(part->path.string() + ": cannot open for writing: " + std::strerror(errno));
+  part->joints = output_joints;
+  part->begun = true;
+  parts_[sequence] = std::move(part);
+}
+
+void PredictionsWriter::Frame(const FrameOutput& frame) {
+  Part& part = *parts_[frame.sequence];
+  std::ostream& out = part.out;
+  const Poses3D& persons = *frame.persons;
+  out << (part.frames++ == 0 ? "" : ",") << "\n{\"id\": " << io::DumpJson(Json(frame.input->id), -1, &part.replaced)
+      << ", \"persons\": [";
+  for (int p = 0; p < persons.num_persons(); ++p) {
+    const auto person = persons.Person(p);
+    out << (p ? ", [" : "[");
+    for (int j = 0; j < persons.num_joints; ++j) {
+      out << (j ? ", [" : "[");
+      for (int row = 0; row < 4; ++row) {
+        if (row) out << ", ";
+        WriteNumber(out, person(row, j), row < 3 ? 6 : 4);
+      }
+      out << "]";
+    }
+    out << "]";
+  }
+  out << "], \"track_ids\": [";
+  for (int p = 0; p < persons.num_persons(); ++p) out << (p ? ", " : "") << persons.track_ids[p];
+  out << "]}";
+}
+
+void PredictionsWriter::EndSequence(int sequence) {
+  Part& part = *parts_[sequence];
+  part.out.flush();
+  if (!part.out) throw InputError(part.path.string() + ": write failed: " + std::strerror(errno));
+  part.out.close();
+}
+
+int PredictionsWriter::Finish() {
+  int replaced = 0;
+  JointNames joints;
+  for (const auto& part : parts_) {
+    if (part != nullptr && joints.empty()) joints = part->joints;
+  }
+  io::WriteTextFile(path_, [&](std::ostream& out) {
+    out << "{\"run_id\": " << io::DumpJson(Json(run_id_), -1, &replaced)
+        << ", \"joints\": " << io::DumpJson(Json(joints), -1, &replaced) << ",\n\"frames\": [";
+    bool first = true;
+    for (const auto& part : parts_) {
+      if (part == nullptr || part->frames == 0) continue;
+      std::ifstream in(part->path, std::ios::binary);
+      if (!in) throw InputError(part->path.string() + ": cannot read back: " + std::strerror(errno));
+      if (!first) out << ",";
+      first = false;
+      out << in.rdbuf();
+      replaced += part->replaced;
+    }
+    out << "\n]}\n";
+  });
+  for (auto& part : parts_) {
+    if (part == nullptr) continue;
+    std::error_code ec;
+    std::filesystem::remove(part->path, ec);
+    part.reset();
+  }
+  return replaced;
+}
+
+}  // namespace rpt::engine

@@ -1,0 +1,326 @@
+// SPDX-License-Identifier: MIT
+#include "engine/outputs/results_writer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <sstream>
+
+#include "engine/outputs/step_tables.h"
+#include "core/errors.h"
+#include "core/text.h"
+#include "datasets/io/json_output.h"
+#include "datasets/io/staged_output.h"
+#include "datasets/io/text_file.h"
+
+namespace rpt::engine {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+Json Number(double value) { return std::isfinite(value) ? Json(value) : Json(nullptr); }
+
+std::string Cell(const Json& value, int decimals = 1) {
+  if (value.is_null()) return "-";
+  if (value.is_number_integer()) return std::to_string(value.get<long>());
+  if (value.is_number()) {
+    char text[64];
+    std::snprintf(text, sizeof(text), "%.*f", decimals, value.get<double>());
+    return text;
+  }
+  return value.is_string() ? value.get<std::string>() : value.dump();
+}
+
+// "legacy_pcp_actor1" for actor id 0: the papers number Shelf/Campus actors from 1.
+std::string LegacyPcpActorKey(int actor_id) { return "legacy_pcp_actor" + std::to_string(actor_id + 1); }
+
+// The legacy PCP keys of any row: "legacy_pcp", then the per-actor keys from actor 1 to the
+// highest any row reports; empty when no row has a legacy PCP.
+std::vector<std::string> LegacyPcpKeys(const std::vector<std::pair<std::string, Json>>& rows) {
+  std::vector<int> actors;
+  bool any = false;
+  const std::string prefix = "legacy_pcp_actor";
+  for (const auto& [label, j] : rows) {
+    any |= j.contains("legacy_pcp");
+    for (const auto& [key, value] : j.items()) {
+      if (key.rfind(prefix, 0) != 0) continue;
+      const int actor = std::atoi(key.c_str() + prefix.size()) - 1;
+      if (std::find(actors.begin(), actors.end(), actor) == actors.end()) actors.push_back(actor);
+    }
+  }
+  std::vector<std::string> keys;
+  if (!any) return keys;
+  keys.push_back("legacy_pcp");
+  // Actors 1 to the highest reported: an actor without GT in the frames evaluated shows "-".
+  const int last = actors.empty() ? -1 : *std::max_element(actors.begin(), actors.end());
+  for (int actor = 0; actor <= last; ++actor) keys.push_back(LegacyPcpActorKey(actor));
+  return keys;
+}
+
+}  // namespace
+
+std::string CsvField(const std::string& text) {
+  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (const char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
+const std::vector<SummaryColumn>& SummaryColumns() {
+  static const std::vector<SummaryColumn> columns = {
+      {"pcp", "%", "PCP"},
+      {"pck100", "%", "PCK@100"},
+      {"pck500", "%", "PCK@500"},
+      {"mpjpe_mm", "mm", "MPJPE"},
+      {"recall100", "%", "Recall@100"},
+      {"recall500", "%", "Recall@500"},
+      {"invalid", "%", "Invalid"},
+      {"f1", "%", "F1"},
+      {"fps", "1/s", "FPS"},
+      {"frame_time_us_median", "us", "Time/frame"},
+      {"frames", "count", "Frames"},
+      {"eval_frames_per_s", "1/s", "Eval throughput"},
+      {"gt_persons", "count", "GT persons"},
+      {"predictions", "count", "Predictions"},
+      {"matches", "count", "Matches"},
+      {"ap25", "%", "AP@25"},
+      {"ap50", "%", "AP@50"},
+      {"ap75", "%", "AP@75"},
+      {"ap100", "%", "AP@100"},
+      {"ap125", "%", "AP@125"},
+      {"ap150", "%", "AP@150"},
+  };
+  return columns;
+}
+
+namespace {
+
+// The metric columns of one result (SummaryColumns' keys that the metrics give) into *j.
+void AddMetricColumns(const metrics::MetricsResult& m, Json* j) {
+  (*j)["pcp"] = Number(m.pcp);
+  (*j)["pck100"] = Number(m.pck_100);
+  (*j)["pck500"] = Number(m.pck_500);
+  (*j)["mpjpe_mm"] = Number(m.mpjpe_mm);
+  (*j)["recall100"] = Number(m.recall_100);
+  (*j)["recall500"] = Number(m.recall_500);
+  (*j)["invalid"] = Number(m.invalid);
+  (*j)["f1"] = Number(m.f1);
+}
+
+void AddCountColumns(const metrics::MetricsResult& m, Json* j) {
+  (*j)["gt_persons"] = m.num_gt_persons;
+  (*j)["predictions"] = m.num_predictions;
+  (*j)["matches"] = m.num_matches;
+  for (size_t i = 0; i < metrics::kApThresholdsMm.size(); ++i) {
+    (*j)["ap" + std::to_string(static_cast<int>(metrics::kApThresholdsMm[i]))] = Number(m.ap[i]);
+  }
+  if (!m.wholebody.empty()) {
+    Json groups;
+    for (const auto& g : m.wholebody) groups[g.name] = Number(g.mpjpe_mm);
+    (*j)["wholebody_mpjpe_mm"] = groups;
+  }
+  if (m.legacy_pcp) {
+    (*j)["legacy_pcp"] = Number(m.legacy_pcp->average_pcp);
+    // Per actor the average is over (metrics.legacy_pcp_actors), numbered from 1 as in the papers.
+    for (const auto& actor : m.legacy_pcp->actors) {
+      if (actor.averaged) (*j)[LegacyPcpActorKey(actor.actor_id)] = Number(actor.pcp);
+    }
+  }
+}
+
+}  // namespace
+
+Json SequenceSummaryJson(const SequenceResult& sequence) {
+  Json j;
+  j["sequence"] = sequence.name;
+  AddMetricColumns(sequence.metrics, &j);
+  j["fps"] = Number(sequence.timing.fps);
+  j["frame_time_us_median"] = Number(sequence.timing.frame_us_median);
+  j["frames"] = sequence.frames;
+  AddCountColumns(sequence.metrics, &j);
+  return j;
+}
+
+Json SummaryJson(const RunResult& run) {
+  const metrics::MetricsResult& m = run.metrics;
+  Json j;
+  AddMetricColumns(m, &j);
+  j["fps"] = Number(run.timing.fps);
+  j["frame_time_us_median"] = Number(run.timing.frame_us_median);
+  j["frames"] = run.frames;
+  j["eval_frames_per_s"] = Number(run.wall_seconds > 0 ? run.frames / run.wall_seconds : 0.0);
+  AddCountColumns(m, &j);
+  j["step_time_us_median"] = StepTimesJson(run.timing);
+  j["step_count_per_frame"] = StepCountsJson(run.counts);
+  j["counter_per_frame"] = CountersJson(run.counts);
+  j["detection_noise_m"] = run.counts.noise_frames > 0 ? Json(run.counts.noise_m_median) : Json(nullptr);
+  if (run.sequences.size() > 1) {
+    j["per_sequence"] = Json::array();
+    for (const SequenceResult& sequence : run.sequences) j["per_sequence"].push_back(SequenceSummaryJson(sequence));
+  }
+  Json units;
+  for (const SummaryColumn& c : SummaryColumns()) units[c.key] = c.unit;
+  for (const std::string& key : LegacyPcpKeys({{"", j}})) {
+    if (j.contains(key)) units[key] = "%";
+  }
+  j["units"] = units;
+  return j;
+}
+
+std::string SummaryCsv(const std::vector<std::pair<std::string, Json>>& rows) {
+  std::ostringstream out;
+  const std::vector<std::string> legacy = LegacyPcpKeys(rows);  // after the fixed columns, when any row has them
+  out << "run";
+  for (const SummaryColumn& c : SummaryColumns()) out << "," << c.key;
+  for (const std::string& key : legacy) out << "," << key;
+  out << "\n";
+  for (const auto& [label, j] : rows) {
+    out << CsvField(label);
+    for (const SummaryColumn& c : SummaryColumns()) out << "," << (j.contains(c.key) ? Cell(j[c.key], 4) : "");
+    for (const std::string& key : legacy) out << "," << (j.contains(key) ? Cell(j[key], 4) : "");
+    out << "\n";
+  }
+  return out.str();
+}
+
+std::string SummaryMarkdown(const std::vector<std::pair<std::string, Json>>& rows) {
+  static const std::vector<std::string> keys = {"pcp",       "pck100",    "pck500",  "mpjpe_mm", "recall100",
+                                                "recall500", "invalid",   "f1",      "fps",      "frames"};
+  std::ostringstream out;
+  out << "| run |";
+  for (const std::string& key : keys) {
+    for (const SummaryColumn& c : SummaryColumns()) {
+      if (c.key == key) out << " " << c.title << " (" << c.unit << ") |";
+    }
+  }
+  out << "\n|---|";
+  for (size_t i = 0; i < keys.size(); ++i) out << "---|";
+  out << "\n";
+  for (const auto& [label, j] : rows) {
+    out << "| " << label << " |";
+    for (const std::string& key : keys) out << " " << (j.contains(key) ? Cell(j[key], key == "fps" ? 0 : 1) : "-") << " |";
+    out << "\n";
+  }
+  // The legacy Shelf/Campus PCP as the papers report it: per actor, then their average.
+  std::vector<std::string> legacy = LegacyPcpKeys(rows);
+  if (legacy.empty()) return out.str();
+  std::rotate(legacy.begin(), legacy.begin() + 1, legacy.end());  // the average last
+  out << "\nLegacy Shelf/Campus PCP (%, `metrics.legacy_pcp`):\n\n| run |";
+  for (const std::string& key : legacy) {
+    out << (key == "legacy_pcp" ? std::string(" Average |") : " Actor " + key.substr(key.rfind('r') + 1) + " |");
+  }
+  out << "\n|---|";
+  for (size_t i = 0; i < legacy.size(); ++i) out << "---|";
+  out << "\n";
+  for (const auto& [label, j] : rows) {
+    out << "| " << label << " |";
+    for (const std::string& key : legacy) out << " " << (j.contains(key) ? Cell(j[key], 1) : "-") << " |";
+    out << "\n";
+  }
+  return out.str();
+}
+
+std::string PaperRow(const RunResult& run) {
+  const Json j = SummaryJson(run);
+  char line[512];
+  std::snprintf(line, sizeof(line),
+                "PCP %s | PCK@100/500 %s / %s | MPJPE %s mm | Recall@100/500 %s / %s | Invalid %s | F1 %s | FPS %s",
+                Cell(j["pcp"]).c_str(), Cell(j["pck100"]).c_str(), Cell(j["pck500"]).c_str(),
+                Cell(j["mpjpe_mm"]).c_str(), Cell(j["recall100"]).c_str(), Cell(j["recall500"]).c_str(),
+                Cell(j["invalid"]).c_str(), Cell(j["f1"]).c_str(), Cell(j["fps"], 0).c_str());
+  return line;
+}
+
+Json RunInfoJson(const RunInfo& info) {
+  Json j;
+  j["run_id"] = info.run_id;
+  j["git_revision"] = info.git_revision;
+  j["date_utc"] = info.date_utc;
+  j["command"] = info.command_line;
+  j["argv"] = info.command_args;
+  j["cpu"] = info.cpu;
+  j["hardware_threads"] = info.hardware_threads;
+  j["threads"] = info.threads;
+  j["compiler"] = info.compiler;
+  j["build_type"] = info.build_type;
+  j["input_warnings"] = info.input_warnings;
+  return j;
+}
+
+namespace {
+
+// The files of one run into `staging`, run.json last.
+void WriteRunFiles(const std::filesystem::path& staging, const RunResult& run, const Config& config,
+                   const RunInfo& info, const Json& extra_summary, std::vector<std::pair<std::string, int>>* replaced) {
+  const auto write_json = [&](const std::string& name, const Json& value) {
+    int count = 0;
+    const std::string text = io::DumpJson(value, 2, &count) + "\n";
+    io::WriteTextFile(staging / name, text);
+    if (count > 0) replaced->emplace_back(name, count);
+  };
+  Json summary;
+  summary["run_id"] = info.run_id;
+  summary.update(SummaryJson(run));
+  summary.update(extra_summary);
+  write_json("summary.json", summary);
+  std::string label;
+  for (const SequenceResult& s : run.sequences) AppendItem(&label, s.name, "+");
+  if (run.sequences.size() > 3) {
+    label = run.sequences.front().name + "+" + std::to_string(run.sequences.size() - 1) + " more";
+  }
+  // The whole run first, then (with several sequences) one row per sequence.
+  std::vector<std::pair<std::string, Json>> rows = {{label, summary}};
+  if (run.sequences.size() > 1) {
+    for (const SequenceResult& sequence : run.sequences) rows.emplace_back(sequence.name, SequenceSummaryJson(sequence));
+  }
+  io::WriteTextFile(staging / "summary.csv", SummaryCsv(rows));
+  io::WriteTextFile(staging / "summary.md", SummaryMarkdown(rows) + "\nRevision " + info.git_revision + ", " + info.cpu +
+                                                ", " + std::to_string(info.threads) + " thread(s). Command: `" +
+                                                info.command_line + "`\n");
+  std::ostringstream joints;
+  joints << "joint,mean_error_mm,pck100_pct,count,num_gt\n";
+  for (const auto& row : run.metrics.joints) {
+    joints << CsvField(row.name) << "," << Cell(Number(row.mean_error_mm), 2) << "," << Cell(Number(row.pck_100), 2) << ","
+           << row.count << "," << row.num_gt << "\n";
+  }
+  io::WriteTextFile(staging / "per_joint.csv", joints.str());
+  io::WriteTextFile(staging / "steps.csv", StepsCsv(run.timing, run.counts));
+  io::WriteTextFile(staging / "config.json", DumpConfig(config, /*with_comments=*/false));
+  write_json("run.json", RunInfoJson(info));  // last: the marker of a complete run
+}
+
+}  // namespace
+
+RunFolder::RunFolder(const std::filesystem::path& dir, const std::string& run_id, int num_sequences)
+    : dir_(dir), folder_(std::make_unique<io::StagedFolder>(dir)) {
+  // When the folder must be replaced in place, the old run marker goes first, so a reader never
+  // takes a mixed folder for a complete run.
+  if (folder_->in_place()) {
+    std::error_code ec;
+    std::filesystem::remove(folder_->path() / "run.json", ec);
+    if (ec) throw InputError((dir / "run.json").string() + ": cannot remove the old run marker: " + ec.message());
+  }
+  predictions_ = std::make_unique<PredictionsWriter>(folder_->path() / "predictions.json", run_id, num_sequences);
+}
+
+RunFolder::~RunFolder() = default;
+
+FrameSink* RunFolder::sink() { return predictions_.get(); }
+
+void RunFolder::Finish(const RunResult& run, const Config& config, const RunInfo& info, const Json& extra_summary) {
+  std::vector<std::pair<std::string, int>> replaced;  // file, strings with invalid UTF-8
+  try {
+    if (const int count = predictions_->Finish(); count > 0) replaced.emplace_back("predictions.json", count);
+    WriteRunFiles(folder_->path(), run, config, info, extra_summary, &replaced);
+    folder_->Commit();
+  } catch (const InputError& e) {
+    throw InputError(folder_->NamedAsTarget(e.what()));
+  }
+  for (const auto& [name, count] : replaced) {
+    std::fprintf(stderr, "warning: %s: %d string(s) not valid UTF-8 (frame ids, names); invalid bytes written as U+FFFD\n",
+                 (dir_ / name).string().c_str(), count);
+  }
+}
+
+}  // namespace rpt::engine

@@ -1,0 +1,84 @@
+// SPDX-License-Identifier: MIT
+// Result files of an evaluation: summary.{json,csv,md} with fixed columns and units (the whole
+// run, then one row per sequence when there are several),
+// per_joint.csv, steps.csv (time and items per step), the resolved config.json, run.json (revision, machine, threads) and
+// predictions.json (3D persons of every frame).
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "engine/config.h"
+#include "engine/outputs/run_info.h"
+#include "datasets/io/staged_output.h"
+#include "engine/frame_sink.h"
+#include "engine/outputs/predictions_writer.h"
+#include "engine/run.h"
+
+namespace rpt::engine {
+
+// A result column: JSON key, unit and how to read it from a run.
+struct SummaryColumn {
+  std::string key;   // JSON key and CSV header, e.g. "mpjpe_mm"
+  std::string unit;  // "%", "mm", "1/s", "us", "count"
+  std::string title; // paper-style column title
+};
+const std::vector<SummaryColumn>& SummaryColumns();
+
+// The summary of a run as one JSON object with SummaryColumns() keys (NaN -> null), plus
+// "wholebody_mpjpe_mm" and "legacy_pcp" (the average over the actors) with "legacy_pcp_actor1",
+// "legacy_pcp_actor2", ... (one per averaged actor) when available, "step_time_us_median",
+// "step_count_per_frame", "counter_per_frame" and "detection_noise_m" (null when not estimated),
+// and with several sequences "per_sequence": one SequenceSummaryJson per sequence.
+nlohmann::ordered_json SummaryJson(const RunResult& run);
+// One sequence of a run: "sequence" (its name) and the SummaryColumns() keys it has on its own
+// (everything but the run's wall-clock throughput), plus "wholebody_mpjpe_mm" / "legacy_pcp".
+nlohmann::ordered_json SequenceSummaryJson(const SequenceResult& sequence);
+
+// CSV / Markdown tables with one row per (label, summary). When a row has a legacy PCP, the CSV
+// gains the columns legacy_pcp, legacy_pcp_actor1, ... after the fixed ones, and the Markdown a
+// second table in the papers' layout: Actor 1 | Actor 2 | ... | Average.
+// A CSV field (RFC 4180): quoted, with inner quotes doubled, when it holds a comma, quote or line break.
+std::string CsvField(const std::string& text);
+std::string SummaryCsv(const std::vector<std::pair<std::string, nlohmann::ordered_json>>& rows);
+std::string SummaryMarkdown(const std::vector<std::pair<std::string, nlohmann::ordered_json>>& rows);
+
+// The paper-style row printed on the terminal: PCP | PCK@100/500 | MPJPE | Recall@100/500 | Invalid | F1 | FPS.
+std::string PaperRow(const RunResult& run);
+
+// The output folder of a run (`rpt eval`): built beside the target and swapped in whole when
+// complete (io::StagedFolder), so `dir` holds either its old contents or the complete new run.
+// predictions.json streams in while the run goes (sink()); Finish() writes summary.{json,csv,md}
+// (`extra_summary`, e.g. eval's warnings and data checks, merged into summary.json),
+// per_joint.csv, steps.csv, config.json and run.json (last: the marker of a complete run; summary,
+// predictions and run carry the same "run_id"), then swaps the folder in. Strings that are not
+// valid UTF-8 are written as U+FFFD with one "warning: <file>: ..." line on stderr per file.
+// Throws InputError naming the file when anything cannot be written; `dir` is then left as it
+// was, and so it is when the run fails before Finish (the destructor removes the temporary).
+class RunFolder {
+ public:
+  RunFolder(const std::filesystem::path& dir, const std::string& run_id, int num_sequences);
+  ~RunFolder();
+  RunFolder(const RunFolder&) = delete;
+  RunFolder& operator=(const RunFolder&) = delete;
+
+  // Writes predictions.json (engine/outputs/predictions_writer.h).
+  FrameSink* sink();
+  void Finish(const RunResult& run, const Config& config, const RunInfo& info,
+              const nlohmann::ordered_json& extra_summary = nlohmann::ordered_json::object());
+
+ private:
+  std::filesystem::path dir_;
+  std::unique_ptr<io::StagedFolder> folder_;
+  std::unique_ptr<PredictionsWriter> predictions_;
+};
+
+// run.json: run id, git revision, date, command ("command": one line for people; "argv": the
+// argument vector, which keeps paths with spaces whole), machine, threads, build, and
+// "input_warnings" (the readers' correction lines, [] when none).
+nlohmann::ordered_json RunInfoJson(const RunInfo& info);
+
+}  // namespace rpt::engine

@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: MIT
+// Where and how a result was produced: git revision, machine, compiler, threads, command line.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace rpt::engine {
+
+struct RunInfo {
+  std::string git_revision;
+  std::string cpu;        // /proc/cpuinfo model name
+  int hardware_threads = 0;
+  int threads = 0;        // threads used by the run
+  std::string compiler;
+  std::string build_type;
+  std::string command_line;               // for people: "rpt" and the arguments joined by spaces
+  std::vector<std::string> command_args;  // the same as the argument vector ("rpt" first), for programs
+  std::string date_utc;
+  std::string run_id;  // unique per run ("<date>-<pid>-<random>"); every JSON output of the run carries it
+  std::vector<std::string> input_warnings;  // corrections the readers applied, one line per file and kind
+};
+
+// The run's machine, build and time, and the command stored by SetCommand.
+RunInfo CollectRunInfo(int threads);
+
+// The process command ("rpt eval --dataset ..."), for records: call SetCommand once in main().
+// The joined line is for people; a word with a space in it (a path) cannot be told apart there, so
+// programs (rpt report) read the argument vector.
+std::string CommandLine(int argc, char** argv);
+void SetCommand(int argc, char** argv);
+const std::string& CurrentCommandLine();
+const std::vector<std::string>& CurrentCommandArgs();
+
+}  // namespace rpt::engine

@@ -1,0 +1,243 @@
+// SPDX-License-Identifier: MIT
+#include "engine/outputs/sweep_html.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+#include <vector>
+
+#include "engine/json_text.h"
+#include "engine/outputs/results_writer.h"
+
+namespace rpt::engine {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+// A headline metric and which way is better.
+struct Headline {
+  std::string key;
+  bool higher_is_better;
+};
+const std::vector<Headline>& Headlines() {
+  static const std::vector<Headline> headlines = {
+      {"pcp", true},
+      {"mpjpe_mm", false},
+      {"recall100", true},
+      {"recall500", true},
+      {"invalid", false},
+      {"f1", true},
+      {"frame_time_us_median", false},
+      {"legacy_pcp", true},
+  };
+  return headlines;
+}
+
+// Title and unit of a summary key (SummaryColumns(), the one source of both).
+std::string TitleOf(const std::string& key) {
+  for (const SummaryColumn& c : SummaryColumns()) {
+    if (c.key == key) return c.title + " (" + c.unit + ")";
+  }
+  return key == "legacy_pcp" ? "Legacy PCP (%)" : key;
+}
+
+std::string Escape(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&apos;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
+}
+
+std::string Fixed(double value, int decimals) {
+  char text[64];
+  std::snprintf(text, sizeof(text), "%.*f", decimals, value);
+  return text;
+}
+
+int DecimalsOf(const std::string& key) { return key == "frame_time_us_median" ? 0 : 1; }
+
+// The metric of a row, or NaN when the row does not report it.
+double Value(const Json& row, const std::string& key) {
+  const Json& summary = row.at("summary");
+  if (!summary.contains(key) || !summary[key].is_number()) return std::nan("");
+  return summary[key].get<double>();
+}
+
+// "better", "worse" or "same" for `delta` at the display precision.
+std::string Verdict(double delta, const Headline& metric) {
+  if (!(std::fabs(delta) >= 0.5 * std::pow(10.0, -DecimalsOf(metric.key)))) return "same";
+  return (delta > 0) == metric.higher_is_better ? "better" : "worse";
+}
+
+std::string DeltaText(double delta, const std::string& key) {
+  const std::string text = Fixed(std::fabs(delta), DecimalsOf(key));
+  if (text == Fixed(0.0, DecimalsOf(key))) return "\u00b1" + text;  // plus-minus sign
+  return (delta > 0 ? "+" : "\u2212") + text;                       // minus sign
+}
+
+// One horizontal bar per row, scaled from 0 to the largest value; a dashed line at the baseline.
+std::string BarChart(const Json& rows, const Headline& metric, size_t baseline) {
+  constexpr int kLabelWidth = 330, kBarWidth = 260, kRowHeight = 18, kTextWidth = 70;
+  double max_value = 0;
+  for (const Json& row : rows) {
+    const double v = Value(row, metric.key);
+    if (std::isfinite(v)) max_value = std::max(max_value, v);
+  }
+  if (!(max_value > 0)) max_value = 1;
+  const int width = kLabelWidth + kBarWidth + kTextWidth;
+  const int height = static_cast<int>(rows.size()) * kRowHeight + 6;
+  std::ostringstream svg;
+  svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"chart\" data-metric=\"" << metric.key << "\" width=\""
+      << width << "\" height=\"" << height << "\" viewBox=\"0 0 " << width << " " << height << "\">\n";
+  const double base_value = Value(rows[baseline], metric.key);
+  for (size_t i = 0; i < rows.size(); ++i) {
+    const Json& row = rows[i];
+    const std::string name = row.at("name").get<std::string>();
+    const std::string shown = name.size() > 48 ? name.substr(0, 47) + "..." : name;
+    const int y = static_cast<int>(i) * kRowHeight + 3;
+    const double v = Value(row, metric.key);
+    const std::string verdict = i == baseline ? "baseline" : Verdict(v - base_value, metric);
+    svg << "<g class=\"bar " << verdict << "\"><title>" << Escape(name) << ": "
+        << (std::isfinite(v) ? Fixed(v, DecimalsOf(metric.key)) : "-") << "</title>";
+    svg << "<text x=\"" << kLabelWidth - 6 << "\" y=\"" << y + 12 << "\" text-anchor=\"end\">" << Escape(shown)
+        << "</text>";
+    if (std::isfinite(v)) {
+      const double w = std::max(0.0, v) / max_value * kBarWidth;
+      svg << "<rect x=\"" << kLabelWidth << "\" y=\"" << y + 2 << "\" width=\"" << Fixed(w, 1) << "\" height=\""
+          << kRowHeight - 5 << "\"/>";
+      svg << "<text x=\"" << Fixed(kLabelWidth + w + 4, 1) << "\" y=\"" << y + 12 << "\">"
+          << Fixed(v, DecimalsOf(metric.key)) << "</text>";
+    } else {
+      svg << "<text x=\"" << kLabelWidth + 4 << "\" y=\"" << y + 12 << "\">-</text>";
+    }
+    svg << "</g>\n";
+  }
+  if (std::isfinite(base_value)) {
+    const std::string x = Fixed(kLabelWidth + std::max(0.0, base_value) / max_value * kBarWidth, 1);
+    svg << "<line class=\"baseline-mark\" x1=\"" << x << "\" y1=\"0\" x2=\"" << x << "\" y2=\"" << height << "\"/>\n";
+  }
+  svg << "</svg>";
+  return svg.str();
+}
+
+}  // namespace
+
+SweepBaseline FindSweepBaseline(const Json& rows) {
+  for (size_t i = 0; i < rows.size(); ++i) {
+    if (rows[i].value("default", false)) return {i, true};
+  }
+  return {0, false};
+}
+
+std::string SweepHtml(const Json& sweep) {
+  const Json& rows = sweep.at("rows");
+  const SweepBaseline baseline = FindSweepBaseline(rows);
+  // The varied options, in order of first appearance.
+  std::vector<std::string> options;
+  for (const Json& row : rows) {
+    const Json set = row.value("set", Json::object());  // items() must not outlive it
+    for (const auto& [key, value] : set.items()) {
+      if (std::find(options.begin(), options.end(), key) == options.end()) options.push_back(key);
+    }
+  }
+  std::vector<Headline> metrics;
+  for (const Headline& h : Headlines()) {
+    bool reported = false;
+    for (const Json& row : rows) reported |= row.at("summary").contains(h.key);
+    if (reported) metrics.push_back(h);
+  }
+  const Json base = sweep.value("base", Json::object());
+  std::ostringstream html;
+  html << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\"/>\n<title>rpt sweep: " << rows.size()
+       << " configurations</title>\n<style>\n"
+          "body { font-family: sans-serif; margin: 2em; color: #222; }\n"
+          "table { border-collapse: collapse; font-size: 14px; }\n"
+          "th, td { padding: 3px 8px; border-bottom: 1px solid #ddd; text-align: right; white-space: nowrap; }\n"
+          "th { background: #f0f0f0; }\n"
+          ".name { text-align: left; white-space: normal; max-width: 28em; }\n"
+          ".option { text-align: left; }\n"
+          ".inherited { color: #999; }\n"
+          "tr.baseline td { background: #eef3fa; font-weight: bold; }\n"
+          ".better { color: #1a7f37; } .worse { color: #c62828; } .same { color: #888; }\n"
+          ".charts { display: flex; flex-wrap: wrap; gap: 2em; }\n"
+          "figure { margin: 0; } figcaption { font-weight: bold; margin-bottom: 4px; }\n"
+          "svg.chart text { font-size: 11px; fill: #222; }\n"
+          "g.bar rect { fill: #9e9e9e; } g.better rect { fill: #4caf50; } g.worse rect { fill: #e57373; }\n"
+          "g.baseline rect { fill: #1f77b4; }\n"
+          "line.baseline-mark { stroke: #1f77b4; stroke-dasharray: 4 3; }\n"
+          "</style>\n</head>\n<body>\n<h1>rpt sweep</h1>\n";
+  html << "<p>" << rows.size() << " configuration(s). Deltas against <b>"
+       << Escape(rows.empty() ? "" : rows[baseline.row].at("name").get<std::string>()) << "</b>";
+  html << (baseline.is_default ? " (the default configuration: no override changes an option)"
+                               : " (the first row: no configuration equals the default)")
+       << "; green is better, red is worse. Grey option values are inherited from the base configuration.</p>\n";
+  if (sweep.contains("run") && sweep["run"].contains("command")) {
+    html << "<p>Command: <code>" << Escape(JsonValueText(sweep["run"]["command"])) << "</code></p>\n";
+  }
+  html << "<table id=\"sweep\">\n<thead>\n<tr><th class=\"name\">configuration</th>";
+  for (const std::string& option : options) html << "<th class=\"option\">" << Escape(option) << "</th>";
+  for (const Headline& h : metrics) html << "<th>" << Escape(TitleOf(h.key)) << "</th>";
+  html << "</tr>\n</thead>\n<tbody>\n";
+  for (size_t i = 0; i < rows.size(); ++i) {
+    const Json& row = rows[i];
+    html << "<tr data-row=\"" << i << "\"" << (i == baseline.row ? " class=\"baseline\"" : "") << ">";
+    html << "<td class=\"name\">" << Escape(row.at("name").get<std::string>()) << "</td>";
+    const Json set = row.value("set", Json::object());
+    for (const std::string& option : options) {
+      if (set.contains(option)) {
+        html << "<td class=\"option\">" << Escape(JsonValueText(set[option])) << "</td>";
+      } else {
+        html << "<td class=\"option inherited\">" << (base.contains(option) ? Escape(JsonValueText(base[option])) : "")
+             << "</td>";
+      }
+    }
+    for (const Headline& h : metrics) {
+      const double v = Value(row, h.key);
+      html << "<td data-metric=\"" << h.key << "\">";
+      if (!std::isfinite(v)) {
+        html << "-</td>";
+        continue;
+      }
+      html << Fixed(v, DecimalsOf(h.key));
+      const double base_value = Value(rows[baseline.row], h.key);
+      if (i != baseline.row && std::isfinite(base_value)) {
+        const double delta = v - base_value;
+        html << " <span class=\"delta " << Verdict(delta, h) << "\" data-delta=\"" << Fixed(delta, 4) << "\">"
+             << DeltaText(delta, h.key) << "</span>";
+      }
+      html << "</td>";
+    }
+    html << "</tr>\n";
+  }
+  html << "</tbody>\n</table>\n<h2>Headline metrics</h2>\n<div class=\"charts\">\n";
+  for (const Headline& h : metrics) {
+    if (rows.empty()) break;
+    html << "<figure>\n<figcaption>" << Escape(TitleOf(h.key)) << ", "
+         << (h.higher_is_better ? "higher is better" : "lower is better") << "</figcaption>\n"
+         << BarChart(rows, h, baseline.row) << "\n</figure>\n";
+  }
+  html << "</div>\n</body>\n</html>\n";
+  return html.str();
+}
+
+}  // namespace rpt::engine

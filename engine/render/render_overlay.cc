@@ -1,0 +1,237 @@
+// SPDX-License-Identifier: MIT
+#include "engine/render/render_overlay.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <opencv2/imgproc.hpp>
+#include <utility>
+
+namespace rpt::engine {
+namespace {
+
+const cv::Scalar kGrey(150, 150, 150);
+const cv::Scalar kBlack(0, 0, 0);
+const cv::Scalar kWhite(255, 255, 255);
+constexpr int kShift = 4;  // sub-pixel bits of the drawing coordinates
+constexpr double kSubpixel = 1 << kShift;
+
+// Tableau 10 without its grey (grey marks unmatched detections), BGR.
+const cv::Scalar kPalette[] = {{180, 119, 31}, {14, 127, 255},  {44, 160, 44},  {40, 39, 214}, {189, 103, 148},
+                               {75, 86, 140},  {194, 119, 227}, {34, 189, 188}, {207, 190, 23}};
+constexpr int kPaletteSize = sizeof(kPalette) / sizeof(kPalette[0]);
+
+// Line widths and sizes grow with the image so that an HD frame reads like a VGA one.
+struct Style {
+  explicit Style(const cv::Mat& canvas) : scale(std::max(1.0, std::min(canvas.cols, canvas.rows) / 480.0)) {}
+  int Px(double size) const { return std::max(1, static_cast<int>(std::lround(size * scale))); }
+  double scale;
+};
+
+// The limbs (pairs of joint indices) of core/joints.h that exist in `names`.
+std::vector<std::pair<int, int>> LimbIndices(const JointNames& names) {
+  std::vector<std::pair<int, int>> out;
+  for (const LimbSpec& limb : LimbsFor(names)) {
+    const int a = FindJoint(names, limb.a), b = FindJoint(names, limb.b);
+    if (a >= 0 && b >= 0) out.emplace_back(a, b);
+  }
+  return out;
+}
+
+// Pixels far outside the image are not drawn (OpenCV's fixed-point coordinates would overflow).
+bool Drawable(const Eigen::Vector2d& uv, const cv::Mat& canvas) {
+  const double margin = 4.0 * std::max(canvas.cols, canvas.rows);
+  return uv.allFinite() && uv.x() > -margin && uv.y() > -margin && uv.x() < canvas.cols + margin &&
+         uv.y() < canvas.rows + margin;
+}
+
+cv::Point Fixed(const Eigen::Vector2d& uv) {
+  return cv::Point(static_cast<int>(std::lround(uv.x() * kSubpixel)),
+                   static_cast<int>(std::lround(uv.y() * kSubpixel)));
+}
+
+bool Projected(JointReprojection status) {
+  return status == JointReprojection::kMeasured || status == JointReprojection::kNotDetected;
+}
+
+void DrawLine(cv::Mat* canvas, const Eigen::Vector2d& a, const Eigen::Vector2d& b, const cv::Scalar& colour,
+              int thickness) {
+  if (Drawable(a, *canvas) && Drawable(b, *canvas)) {
+    cv::line(*canvas, Fixed(a), Fixed(b), colour, thickness, cv::LINE_AA, kShift);
+  }
+}
+
+void DrawDetection(const Poses2D& view, int d, const JointNames& joints, const std::vector<std::pair<int, int>>& limbs,
+                   const cv::Scalar& colour, const Style& style, cv::Mat* canvas) {
+  const auto person = view.Person(d);
+  for (const auto& [a, b] : limbs) {
+    if (person(2, a) > 0 && person(2, b) > 0) {
+      DrawLine(canvas, person.col(a).head<2>(), person.col(b).head<2>(), colour, style.Px(1));
+    }
+  }
+  for (int j = 0; j < static_cast<int>(joints.size()) && j < view.num_joints; ++j) {
+    const Eigen::Vector2d uv = person.col(j).head<2>();
+    if (!(person(2, j) > 0) || !Drawable(uv, *canvas)) continue;
+    cv::drawMarker(*canvas, cv::Point(static_cast<int>(std::lround(uv.x())), static_cast<int>(std::lround(uv.y()))),
+                   colour, cv::MARKER_TILTED_CROSS, style.Px(7), style.Px(1), cv::LINE_AA);
+  }
+}
+
+// The reprojected person's limbs and joints; GT (`gt`) thin and black with squares.
+void DrawReprojected(const ReprojectedPerson& person, const std::vector<std::pair<int, int>>& limbs,
+                     const cv::Scalar& colour, bool gt, const Style& style, cv::Mat* canvas) {
+  for (const auto& [a, b] : limbs) {
+    if (Projected(person.status[a]) && Projected(person.status[b])) {
+      DrawLine(canvas, person.uv_px.col(a), person.uv_px.col(b), colour, style.Px(gt ? 1 : 2.5));
+    }
+  }
+  for (size_t j = 0; j < person.status.size(); ++j) {
+    const Eigen::Vector2d uv = person.uv_px.col(j);
+    if (!Projected(person.status[j]) || !Drawable(uv, *canvas)) continue;
+    if (gt) {
+      const int half = style.Px(2.5);
+      const cv::Point c(static_cast<int>(std::lround(uv.x())), static_cast<int>(std::lround(uv.y())));
+      cv::rectangle(*canvas, c - cv::Point(half, half), c + cv::Point(half, half), colour, cv::FILLED);
+    } else {
+      cv::circle(*canvas, Fixed(uv), static_cast<int>(std::lround(style.Px(4) * kSubpixel)), colour, cv::FILLED,
+                 cv::LINE_AA, kShift);
+    }
+  }
+}
+
+// Per measured joint, a thin line from the detection to the projection.
+void DrawErrors(const ReprojectedPerson& person, const Poses2D& view, const JointNames& prediction_joints,
+                const JointNames& detection_joints, const cv::Scalar& colour, const Style& style, cv::Mat* canvas) {
+  if (person.detection_idx < 0) return;
+  const auto detection = view.Person(person.detection_idx);
+  for (size_t j = 0; j < person.status.size() && j < prediction_joints.size(); ++j) {
+    if (person.status[j] != JointReprojection::kMeasured) continue;
+    const int d = FindJoint(detection_joints, prediction_joints[j]);
+    if (d >= 0) DrawLine(canvas, detection.col(d).head<2>(), person.uv_px.col(j), colour, style.Px(1));
+  }
+}
+
+void PutText(cv::Mat* canvas, const std::string& text, cv::Point origin, const cv::Scalar& colour, const Style& style) {
+  const double font_scale = 0.45 * style.scale;
+  cv::putText(*canvas, text, origin, cv::FONT_HERSHEY_SIMPLEX, font_scale, kWhite, style.Px(3), cv::LINE_AA);
+  cv::putText(*canvas, text, origin, cv::FONT_HERSHEY_SIMPLEX, font_scale, colour, style.Px(1), cv::LINE_AA);
+}
+
+// "track 3: 4.2 px" above the person's highest projected joint.
+void DrawLabel(const ReprojectedPerson& person, const cv::Scalar& colour, const Style& style, cv::Mat* canvas) {
+  int top = -1;
+  for (size_t j = 0; j < person.status.size(); ++j) {
+    if (!Projected(person.status[j]) || !Drawable(person.uv_px.col(j), *canvas)) continue;
+    if (top < 0 || person.uv_px(1, j) < person.uv_px(1, top)) top = static_cast<int>(j);
+  }
+  if (top < 0) return;
+  char text[96];
+  const std::string who =
+      person.track_id >= 0 ? "track " + std::to_string(person.track_id) : "person " + std::to_string(person.person_idx);
+  if (person.num_measured > 0) {
+    std::snprintf(text, sizeof(text), "%s: %.1f px", who.c_str(), person.mean_error_px);
+  } else {
+    std::snprintf(text, sizeof(text), "%s: no detection", who.c_str());
+  }
+  const cv::Point origin(static_cast<int>(person.uv_px(0, top)) - style.Px(20),
+                         static_cast<int>(person.uv_px(1, top)) - style.Px(10));
+  PutText(canvas, text, origin, colour, style);
+}
+
+void DrawLegend(const OverlayInput& input, const Style& style, cv::Mat* canvas) {
+  double sum = 0;
+  long count = 0;
+  for (const ReprojectedPerson& p : input.reprojection->predictions) {
+    for (size_t j = 0; j < p.error_px.size(); ++j) {
+      if (p.status[j] == JointReprojection::kMeasured) sum += p.error_px[j], ++count;
+    }
+  }
+  char error[96];
+  if (count > 0) {
+    std::snprintf(error, sizeof(error), "reprojection error %.1f px (mean, %ld joints)", sum / count, count);
+  } else {
+    std::snprintf(error, sizeof(error), "no joint matched a detection");
+  }
+  struct Line {
+    std::string text;
+    int glyph;  // 0 none, 1 reprojection, 2 detection, 3 GT
+  };
+  std::vector<Line> lines = {
+      {input.title, 0}, {"reprojected 3D (colour = track)", 1}, {"2D detection (grey: unmatched)", 2}};
+  if (input.gt_joints != nullptr) lines.push_back({"reprojected ground truth", 3});
+  lines.push_back({error, 0});
+  const int line_height = style.Px(18), glyph_width = style.Px(30), pad = style.Px(6);
+  int text_width = 0;
+  for (const Line& line : lines) {
+    int baseline = 0;
+    const cv::Size size =
+        cv::getTextSize(line.text, cv::FONT_HERSHEY_SIMPLEX, 0.45 * style.scale, style.Px(1), &baseline);
+    text_width = std::max(text_width, size.width + (line.glyph ? glyph_width + pad : 0));
+  }
+  const cv::Rect box = cv::Rect(0, 0, text_width + 2 * pad, static_cast<int>(lines.size()) * line_height + 2 * pad) &
+                       cv::Rect(0, 0, canvas->cols, canvas->rows);
+  cv::Mat region = (*canvas)(box);
+  cv::addWeighted(region, 0.3, cv::Mat(region.size(), region.type(), kWhite), 0.7, 0, region);
+  const cv::Scalar sample = PersonColour(0, 0);
+  for (size_t i = 0; i < lines.size(); ++i) {
+    const int y = pad + static_cast<int>(i + 1) * line_height - style.Px(5);
+    int x = pad;
+    const Eigen::Vector2d a(x, y - style.Px(4)), b(x + glyph_width - pad, y - style.Px(4));
+    if (lines[i].glyph == 1) {
+      DrawLine(canvas, a, b, sample, style.Px(2.5));
+      cv::circle(*canvas, cv::Point(static_cast<int>(b.x()), static_cast<int>(b.y())), style.Px(4), sample, cv::FILLED,
+                 cv::LINE_AA);
+    } else if (lines[i].glyph == 2) {
+      DrawLine(canvas, a, b, kGrey, style.Px(1));
+      cv::drawMarker(*canvas, cv::Point(static_cast<int>(b.x()), static_cast<int>(b.y())), kGrey,
+                     cv::MARKER_TILTED_CROSS, style.Px(7), style.Px(1), cv::LINE_AA);
+    } else if (lines[i].glyph == 3) {
+      DrawLine(canvas, a, b, kBlack, style.Px(1));
+    }
+    if (lines[i].glyph) x += glyph_width + pad;
+    cv::putText(*canvas, lines[i].text, cv::Point(x, y), cv::FONT_HERSHEY_SIMPLEX, 0.45 * style.scale, kBlack,
+                style.Px(1), cv::LINE_AA);
+  }
+}
+
+}  // namespace
+
+cv::Scalar PersonColour(int track_id, int person_idx) {
+  const int key = track_id >= 0 ? track_id : person_idx;
+  return kPalette[((key % kPaletteSize) + kPaletteSize) % kPaletteSize];
+}
+
+cv::Mat BlankCanvas(const Camera& camera) { return cv::Mat(camera.height, camera.width, CV_8UC3, kWhite); }
+
+void DrawOverlay(const OverlayInput& input, cv::Mat* canvas) {
+  const Style style(*canvas);
+  const ViewReprojection& reprojection = *input.reprojection;
+  if (input.gt_joints != nullptr) {
+    const auto limbs = LimbIndices(*input.gt_joints);
+    for (const ReprojectedPerson& p : reprojection.gt) DrawReprojected(p, limbs, kBlack, /*gt=*/true, style, canvas);
+  }
+  if (input.detections != nullptr && input.detection_joints != nullptr) {
+    const auto limbs = LimbIndices(*input.detection_joints);
+    for (int d = 0; d < input.detections->num_persons(); ++d) {
+      const int p = d < static_cast<int>(reprojection.prediction_of_detection.size())
+                        ? reprojection.prediction_of_detection[d]
+                        : -1;
+      const cv::Scalar colour = p >= 0 ? PersonColour(reprojection.predictions[p].track_id, p) : kGrey;
+      DrawDetection(*input.detections, d, *input.detection_joints, limbs, colour, style, canvas);
+    }
+    for (const ReprojectedPerson& p : reprojection.predictions) {
+      DrawErrors(p, *input.detections, *input.prediction_joints, *input.detection_joints,
+                 PersonColour(p.track_id, p.person_idx), style, canvas);
+    }
+  }
+  const auto limbs = LimbIndices(*input.prediction_joints);
+  for (const ReprojectedPerson& p : reprojection.predictions) {
+    DrawReprojected(p, limbs, PersonColour(p.track_id, p.person_idx), /*gt=*/false, style, canvas);
+  }
+  for (const ReprojectedPerson& p : reprojection.predictions) {
+    DrawLabel(p, PersonColour(p.track_id, p.person_idx), style, canvas);
+  }
+  DrawLegend(input, style, canvas);
+}
+
+}  // namespace rpt::engine

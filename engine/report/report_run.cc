@@ -1,0 +1,170 @@
+// SPDX-License-Identifier: MIT
+#include "engine/report/report_run.h"
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+
+#include "core/errors.h"
+#include "datasets/io/json_file.h"
+
+namespace rpt::engine {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+Json LoadOrdered(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path.string() + ": file not found (is this an `rpt eval` output folder?)");
+  std::stringstream text;
+  text << in.rdbuf();
+  try {
+    return Json::parse(text.str());  // ordered: the report lists steps and options in the run's order
+  } catch (const nlohmann::json::parse_error& e) {
+    throw InputError(path.string() + ": JSON parse error at byte " + std::to_string(e.byte) + ": " + e.what());
+  }
+}
+
+// per_joint.csv: joint,mean_error_mm,pck100_pct,count,num_gt ("-" = no value).
+Json ReadPerJoint(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path.string() + ": file not found");
+  Json rows = Json::array();
+  std::string line;
+  int line_number = 0;
+  while (std::getline(in, line)) {
+    ++line_number;
+    if (line_number == 1 || line.empty()) continue;
+    std::vector<std::string> fields;
+    std::stringstream s(line);
+    std::string field;
+    while (std::getline(s, field, ',')) fields.push_back(field);
+    if (fields.size() != 5) {
+      throw InputError(path.string() + ":" + std::to_string(line_number) + ": expected 5 fields, found " +
+                       std::to_string(fields.size()));
+    }
+    auto number = [&](const std::string& text) -> Json {
+      if (text == "-" || text.empty()) return nullptr;
+      try {
+        return std::stod(text);
+      } catch (const std::exception&) {
+        throw InputError(path.string() + ":" + std::to_string(line_number) + ": '" + text + "' is not a number");
+      }
+    };
+    rows.push_back({{"joint", fields[0]}, {"mean_error_mm", number(fields[1])}, {"pck100", number(fields[2])},
+                    {"count", number(fields[3])}});
+  }
+  return rows;
+}
+
+RecordedPredictions ReadPredictions(const std::filesystem::path& path) {
+  const nlohmann::json root = io::LoadJsonFile(path);
+  const std::string source = path.string();
+  RecordedPredictions out;
+  for (const auto& name : io::JsonAt(root, "/joints", source)) {
+    if (!name.is_string()) throw InputError(source + ": /joints: expected strings");
+    out.joints.push_back(name.get<std::string>());
+  }
+  const nlohmann::json& frames = io::JsonAt(root, "/frames", source);
+  if (!frames.is_array()) throw InputError(source + ": /frames: expected an array");
+  const int num_joints = static_cast<int>(out.joints.size());
+  for (size_t f = 0; f < frames.size(); ++f) {
+    const std::string pointer = "/frames/" + std::to_string(f);
+    const nlohmann::json& id = io::JsonAt(root, pointer + "/id", source);
+    out.frame_ids.push_back(id.is_string() ? id.get<std::string>() : id.dump());
+    const nlohmann::json& persons = io::JsonAt(root, pointer + "/persons", source);
+    const std::vector<double> track_ids = io::JsonNumbers(root, pointer + "/track_ids", source, persons.size());
+    Poses3D poses;
+    poses.Clear(num_joints);
+    for (size_t p = 0; p < persons.size(); ++p) {
+      const std::vector<double> values =
+          io::JsonMatrix(root, pointer + "/persons/" + std::to_string(p), source, num_joints, 4);
+      auto person = poses.AddPerson(static_cast<int>(track_ids[p]));
+      for (int j = 0; j < num_joints; ++j) {
+        for (int k = 0; k < 4; ++k) person(k, j) = values[4 * j + k];
+      }
+    }
+    out.frames.push_back(std::move(poses));
+  }
+  return out;
+}
+
+}  // namespace
+
+// The recorded command's words: "argv" (the argument vector) when run.json has it, else "command"
+// split at spaces (run.json files written before "argv": a path with a space is cut there). An
+// "argv" that is not a list of strings gives no words and says why in *problem.
+std::vector<std::string> RecordedWords(const RecordedRun& run, std::string* problem) {
+  const auto argv = run.run_info.find("argv");
+  if (argv != run.run_info.end()) {
+    std::vector<std::string> words;
+    for (size_t i = 0; argv->is_array() && i < argv->size(); ++i) {
+      if (!(*argv)[i].is_string()) break;
+      words.push_back((*argv)[i].get<std::string>());
+    }
+    if (argv->is_array() && words.size() == argv->size()) return words;
+    if (problem) {
+      *problem = (run.dir / "run.json").string() + ": /argv: expected a list of strings, got " +
+                 (argv->is_array() ? "a list holding a " + std::string((*argv)[words.size()].type_name())
+                                   : std::string(argv->type_name()));
+    }
+    return {};
+  }
+  const auto it = run.run_info.find("command");
+  if (it == run.run_info.end() || !it->is_string()) return {};
+  std::vector<std::string> words;
+  std::stringstream s(it->get<std::string>());
+  std::string word;
+  while (s >> word) words.push_back(word);
+  return words;
+}
+
+
+RecordedRun ReadRecordedRun(const std::filesystem::path& dir) {
+  if (!std::filesystem::is_directory(dir)) throw InputError(dir.string() + ": not a folder");
+  RecordedRun run;
+  run.dir = dir;
+  run.summary = LoadOrdered(dir / "summary.json");
+  run.config = LoadOrdered(dir / "config.json");
+  run.run_info = LoadOrdered(dir / "run.json");
+  run.per_joint = ReadPerJoint(dir / "per_joint.csv");
+  run.predictions = ReadPredictions(dir / "predictions.json");
+  return run;
+}
+
+std::string RecordedDataset(const RecordedRun& run) {
+  const std::vector<std::string> words = RecordedWords(run);
+  for (size_t i = 0; i + 1 < words.size(); ++i) {
+    if (words[i] == "--dataset") return words[i + 1];
+  }
+  for (const std::string& word : words) {
+    if (word.rfind("--dataset=", 0) == 0) return word.substr(10);
+  }
+  return "";
+}
+
+bool SplitPredictions(const RecordedPredictions& predictions, const std::vector<Sequence>& sequences,
+                      std::vector<std::vector<Poses3D>>* per_sequence, std::string* why) {
+  size_t total = 0;
+  for (const Sequence& s : sequences) total += s.frames.size();
+  if (total != predictions.frames.size()) {
+    *why = "predictions.json has " + std::to_string(predictions.frames.size()) + " frames, the input " +
+           std::to_string(total);
+    return false;
+  }
+  per_sequence->assign(sequences.size(), {});
+  size_t k = 0;
+  for (size_t s = 0; s < sequences.size(); ++s) {
+    for (const SequenceFrame& frame : sequences[s].frames) {
+      if (frame.id != predictions.frame_ids[k]) {
+        *why = "frame " + std::to_string(k) + " of predictions.json is '" + predictions.frame_ids[k] +
+               "', the input's is '" + frame.id + "'";
+        return false;
+      }
+      (*per_sequence)[s].push_back(predictions.frames[k++]);
+    }
+  }
+  return true;
+}
+
+}  // namespace rpt::engine

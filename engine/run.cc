@@ -1,0 +1,212 @@
+// SPDX-License-Identifier: MIT
+#include "engine/run.h"
+
+#include <atomic>
+#include <chrono>
+#include <exception>
+#include <mutex>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include "core/errors.h"
+#include "core/pipeline/room_check.h"
+#include "core/pipeline/triangulator.h"
+#include "core/smooth_offline.h"
+#include "engine/checked_source.h"
+#include "engine/input.h"
+#include "engine/thread_count.h"
+#include "metrics/accumulator.h"
+
+namespace rpt::engine {
+namespace {
+
+// One sequence's running totals.
+struct SequenceRun {
+  SequenceResult result;
+  std::optional<metrics::MetricsAccumulator> metrics;
+  metrics::TimingAccumulator timing;
+  metrics::StepCountAccumulator counts;
+  long gt_persons = 0, output_persons = 0, frames_with_gt = 0, frames_with_gt_without_prediction = 0;
+};
+
+// What is measured of one triangulated frame, and the frame handed to the sink.
+void Emit(int index, const SequenceFrame& frame, const Poses3D& persons, const FrameStats& stats,
+          const SequenceHeader& header, const JointNames& output_joints, SequenceRun* run,
+          std::optional<DetectionChecker>* checker, FrameSink* sink) {
+  run->timing.Add(stats);
+  run->counts.Add(stats);
+  ++run->result.frames;
+  run->gt_persons += frame.gt.num_persons();
+  run->output_persons += persons.num_persons();
+  if (frame.gt.num_persons() > 0) {
+    ++run->frames_with_gt;
+    if (persons.num_persons() == 0) ++run->frames_with_gt_without_prediction;
+  }
+  if (run->metrics) run->metrics->Add(frame.id, frame.gt, header.gt_joints, persons, output_joints);
+  if (*checker) (*checker)->Add(frame);
+  if (sink != nullptr) sink->Frame(FrameOutput{index, &frame, &persons, &stats});
+}
+
+// Triangulates the frames of `source` (sequence `index`) as they are pulled: one input frame is
+// alive at a time (a few more with offline smoothing, which looks smooth.offline_sigma_s x 3 ahead).
+void RunSequence(int index, FrameSource& source, const RunOptions& options, const metrics::EvalOptions* eval,
+                 FrameSink* sink, std::atomic<long>* frames_done, bool report_progress, SequenceRun* run) {
+  const SequenceHeader& header = source.header();
+  const TriangulatorOptions tri_options = TriangulatorOptionsFor(options.triangulator, header);
+  Triangulator triangulator(header.cameras, header.detection_joints, tri_options);
+  const JointNames& output_joints = triangulator.output_joints();
+  run->result.name = header.name;
+  run->result.cameras = static_cast<int>(header.cameras.size());
+  run->result.output_joints = output_joints;
+  run->timing = metrics::TimingAccumulator(options.warmup_frames);
+  if (eval != nullptr) run->metrics.emplace(*eval);
+  std::optional<DetectionChecker> checker;
+  if (options.checks) checker.emplace(header, source.num_frames(), *options.checks);
+  if (sink != nullptr) sink->BeginSequence(index, header, output_joints);
+
+  const std::vector<Poses2D> no_views(header.cameras.size());
+  SequenceFrame frame;
+  Poses3D persons;
+  FrameStats stats;
+  while (source.Next(&frame)) {
+    try {
+      triangulator.Process(frame.views.empty() ? no_views : frame.views, frame.timestamp_s, &persons, &stats);
+    } catch (const InputError& e) {  // e.g. more persons in a view than triangulate.max_persons_per_view
+      throw InputError(header.name + ": frame '" + frame.id + "': " + e.what());
+    }
+    Emit(index, frame, persons, stats, header, output_joints, run, &checker, sink);
+    const long done = ++*frames_done;
+    if (report_progress && options.progress) options.progress(done);
+  }
+  if (checker) run->result.check = checker->Finish();
+  run->result.timing = run->timing.Finalize();
+  if (run->metrics) run->result.metrics = run->metrics->Finalize();
+  if (sink != nullptr) sink->EndSequence(index);
+}
+
+// Runs body(i, report_progress) for i in 0..count-1 on up to `threads` threads, report_progress
+// true on one thread only; the first exception is rethrown once all finished (exceptions must not
+// cross the OpenMP region). Returns the threads used.
+int ForEachSequence(int count, int threads, const std::function<void(int, bool)>& body) {
+  std::exception_ptr error;
+  std::mutex error_mutex;
+  int used = 1;
+#ifdef _OPENMP
+  const int team = ClampThreads(threads, count);  // at most the cores and the work
+  used = team;
+#pragma omp parallel for schedule(dynamic) num_threads(team)
+#endif
+  for (int i = 0; i < count; ++i) {
+    try {
+#ifdef _OPENMP
+      body(i, omp_get_thread_num() == 0);
+#else
+      body(i, true);
+#endif
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(error_mutex);
+      if (!error) error = std::current_exception();
+    }
+  }
+  if (error) std::rethrow_exception(error);
+  return used;
+}
+
+// A loaded sequence as a source, without taking it: each frame is copied out when pulled.
+class SequenceView final : public FrameSource {
+ public:
+  explicit SequenceView(const Sequence& sequence) : sequence_(sequence) {}
+  const SequenceHeader& header() const override { return sequence_; }
+  long num_frames() const override { return static_cast<long>(sequence_.frames.size()); }
+  bool Next(SequenceFrame* frame) override {
+    if (next_ >= sequence_.frames.size()) return false;
+    *frame = sequence_.frames[next_++];
+    return true;
+  }
+  const InputWarnings& warnings() const override { return sequence_.warnings; }
+
+ private:
+  const Sequence& sequence_;
+  size_t next_ = 0;
+};
+
+}  // namespace
+
+TriangulatorOptions TriangulatorOptionsFor(const TriangulatorOptions& options, const SequenceHeader& header) {
+  TriangulatorOptions resolved = options;
+  UseDatasetRoomIfUnset(header.room.center_m, header.room.size_m, &resolved.room_check);
+  return resolved;
+}
+
+metrics::EvalOptions EvalOptionsFor(const metrics::EvalOptions& options,
+                                    std::span<const SequenceHeader* const> headers) {
+  metrics::EvalOptions resolved = options;
+  if (!resolved.evaluated_joints.empty() || headers.empty()) return resolved;
+  resolved.evaluated_joints = headers.front()->evaluated_joints;
+  for (const SequenceHeader* h : headers) {
+    if (h->evaluated_joints != resolved.evaluated_joints) {
+      throw ConfigError("sequences '" + headers.front()->name + "' and '" + h->name +
+                        "' evaluate different joints; set metrics.evaluated_joints");
+    }
+  }
+  return resolved;
+}
+
+RunResult Run(Input& input, const RunOptions& options, FrameSink* sink) {
+  const auto start = std::chrono::steady_clock::now();
+  const int count = input.size();
+  std::vector<const SequenceHeader*> headers;
+  for (int i = 0; i < count; ++i) headers.push_back(&input.header(i));
+  std::optional<metrics::EvalOptions> eval;
+  if (options.eval) eval = EvalOptionsFor(*options.eval, headers);
+  // One accumulator for the whole run, fed in sequence order once the sequences are done (its
+  // records do not depend on the thread count); each sequence also has its own.
+  std::vector<SequenceRun> runs(static_cast<size_t>(count));
+  std::atomic<long> frames_done{0};
+  RunResult result;
+  result.threads = ForEachSequence(count, options.threads, [&](int i, bool report_progress) {
+    RunSequence(i, input.source(i), options, eval ? &*eval : nullptr, sink, &frames_done, report_progress, &runs[i]);
+    input.Finished(i);
+  });
+  result.warnings = input.Warnings();
+  input.CheckStrict();
+
+  result.evaluated = eval.has_value();
+  std::optional<metrics::MetricsAccumulator> all;
+  if (eval) all.emplace(*eval);
+  metrics::TimingAccumulator timing;
+  metrics::StepCountAccumulator counts;
+  for (SequenceRun& run : runs) {
+    if (all) all->Merge(*run.metrics);
+    timing.Merge(run.timing);
+    counts.Merge(run.counts);
+    result.frames += run.result.frames;
+    result.gt_persons += run.gt_persons;
+    result.output_persons += run.output_persons;
+    result.frames_with_gt += run.frames_with_gt;
+    result.frames_with_gt_without_prediction += run.frames_with_gt_without_prediction;
+    result.sequences.push_back(std::move(run.result));
+  }
+  if (all) result.metrics = all->Finalize();
+  result.timing = timing.Finalize();
+  result.counts = counts.Finalize();
+  result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+RunResult Run(std::vector<std::unique_ptr<FrameSource>> sources, const RunOptions& options, FrameSink* sink) {
+  for (auto& source : sources) source = std::make_unique<CheckedSource>(std::move(source));
+  Input input(std::move(sources), {}, /*strict=*/false);
+  return Run(input, options, sink);
+}
+
+RunResult Run(std::span<const Sequence> sequences, const RunOptions& options, FrameSink* sink) {
+  std::vector<std::unique_ptr<FrameSource>> views;
+  for (const Sequence& sequence : sequences) views.push_back(std::make_unique<SequenceView>(sequence));
+  Input input(std::move(views), {}, /*strict=*/false);
+  return Run(input, options, sink);
+}
+
+}  // namespace rpt::engine

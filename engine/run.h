@@ -1,0 +1,101 @@
+// SPDX-License-Identifier: MIT
+// The run loop every entry point shares (rpt eval, triangulate, demo, check, sweep, render,
+// report, the live input and the Python module): frame sources in, per-frame results out.
+//
+//   Input input = OpenInput(spec, needs, &warnings);        // engine/input.h
+//   PredictionsWriter writer(...);                          // any FrameSink (engine/frame_sink.h)
+//   RunResult run = Run(input, options, &writer);
+//
+// Each source (one sequence) is pulled frame by frame; each frame is triangulated, measured
+// (metrics and input checks, when asked) and handed to the sink, then dropped: memory does not
+// grow with the number of frames beyond what the metrics keep per person (metrics/accumulator.h).
+// Independent sequences run in parallel (OpenMP, one Triangulator per sequence); the totals are
+// merged in sequence order, so no number depends on the thread count.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "core/pipeline/options.h"
+#include "datasets/frame_source.h"
+#include "datasets/input_warnings.h"
+#include "datasets/sequence.h"
+#include "engine/detection_checks.h"
+#include "engine/frame_sink.h"
+#include "metrics/eval_options.h"
+#include "metrics/metrics_result.h"
+#include "metrics/step_counts.h"
+#include "metrics/timing.h"
+
+namespace rpt::engine {
+
+class Input;
+
+struct RunOptions {
+  // The sequence's room is used unless room_check.size_m is set (TriangulatorOptionsFor).
+  TriangulatorOptions triangulator;
+  // Metrics against the frames' ground truth; empty: none (input without GT).
+  std::optional<metrics::EvalOptions> eval = metrics::EvalOptions{};
+  // Input checks (detections against GT and cameras, engine/detection_checks.h); empty: none.
+  std::optional<DetectionCheckOptions> checks;
+  int warmup_frames = 0;  // frames per sequence excluded from timing
+  int threads = 0;        // sequences in parallel; 0 = automatic (at most the cores and the sequences)
+  // Called with the frames done so far (all sequences), from one thread; may be empty.
+  std::function<void(long frames_done)> progress;
+};
+
+// One sequence of a run.
+struct SequenceResult {
+  std::string name;
+  long frames = 0;
+  int cameras = 0;
+  JointNames output_joints;
+  metrics::MetricsResult metrics;         // when RunOptions::eval is set
+  metrics::TimingSummary timing;
+  std::optional<SequenceCheck> check;     // when RunOptions::checks is set
+};
+
+struct RunResult {
+  bool evaluated = false;           // metrics were computed (RunOptions::eval)
+  metrics::MetricsResult metrics;   // over all sequences
+  metrics::TimingSummary timing;    // over all frames of all sequences
+  metrics::StepCountSummary counts; // items per step per frame, over all frames
+  long frames = 0;
+  double wall_seconds = 0;          // the whole run, steady clock
+  int threads = 1;                  // threads used for the sequences
+  long gt_persons = 0;              // GT person-frames
+  long output_persons = 0;          // triangulated person-frames
+  long frames_with_gt = 0;          // frames with at least one GT person
+  long frames_with_gt_without_prediction = 0;  // of those: nobody triangulated
+  std::vector<SequenceResult> sequences;       // in input order
+  InputWarnings warnings;           // the input's corrections and unused input (complete)
+};
+
+// The triangulator options for one sequence: its room unless room_check.size_m is set (the one
+// place where the dataset's room becomes the room check's box).
+TriangulatorOptions TriangulatorOptionsFor(const TriangulatorOptions& options, const SequenceHeader& header);
+
+// The evaluation options for the sequences of `headers`: metrics.evaluated_joints when set, else
+// the joints their dataset evaluates (SequenceHeader::evaluated_joints; empty = the paper's 13).
+// Throws ConfigError when the sequences disagree.
+metrics::EvalOptions EvalOptionsFor(const metrics::EvalOptions& options,
+                                    std::span<const SequenceHeader* const> headers);
+
+// Runs every source of `input` (engine/input.h) and returns the totals; `sink` (may be null)
+// gets every frame. Throws ConfigError / InputError (naming the sequence and the frame); with
+// --strict, unused input throws once the sources are exhausted.
+RunResult Run(Input& input, const RunOptions& options, FrameSink* sink = nullptr);
+
+// The same on sources that are not an opened input (generated scenes, in-memory sequences):
+// `sources` are validated frame by frame like an opened input's.
+RunResult Run(std::vector<std::unique_ptr<FrameSource>> sources, const RunOptions& options, FrameSink* sink = nullptr);
+
+// The same on sequences in memory that were loaded (and so validated) by LoadInput: a sweep runs
+// one loaded input under many configurations. Each frame is copied out as it is pulled.
+RunResult Run(std::span<const Sequence> sequences, const RunOptions& options, FrameSink* sink = nullptr);
+
+}  // namespace rpt::engine

@@ -1,0 +1,218 @@
+// SPDX-License-Identifier: MIT
+// The run loop (engine/run.h): frames pulled from frame sources give the numbers of the same
+// frames in memory, whatever the thread count, while one input frame is alive at a time; sinks
+// see every frame in order; the input checks stream.
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <vector>
+
+#include "datasets/frame_source.h"
+#include "datasets/readers/synthetic_dataset.h"
+#include "datasets/simulated_source.h"
+#include "engine/detection_checks.h"
+#include "engine/frame_sink.h"
+#include "engine/run.h"
+#include "tests/counting_source.h"
+
+namespace rpt::engine {
+namespace {
+
+SyntheticParams Scene(int frames, uint64_t seed = 3) {
+  SyntheticParams params;
+  params.cameras = 4;
+  params.people = 2;
+  params.frames = frames;
+  params.seed = seed;
+  return params;
+}
+
+// Two sequences: the synthetic scene and another one renamed so that their frame ids differ.
+std::vector<Sequence> TwoSequences() {
+  std::vector<Sequence> whole = MakeSyntheticDataset(Scene(90));
+  whole.push_back(MakeSyntheticDataset(Scene(60, 4))[0]);
+  whole[1].name = "other";
+  for (SequenceFrame& frame : whole[1].frames) frame.id = "other_" + frame.id;
+  return whole;
+}
+
+void ExpectSamePredictions(const PredictionsCollector& a, const PredictionsCollector& b) {
+  ASSERT_EQ(a.sequences().size(), b.sequences().size());
+  for (size_t s = 0; s < a.sequences().size(); ++s) {
+    const auto& x = a.sequences()[s];
+    const auto& y = b.sequences()[s];
+    EXPECT_EQ(x.name, y.name);
+    EXPECT_EQ(x.output_joints, y.output_joints);
+    EXPECT_EQ(x.frame_ids, y.frame_ids);
+    ASSERT_EQ(x.persons.size(), y.persons.size());
+    for (size_t f = 0; f < x.persons.size(); ++f) {
+      EXPECT_EQ(x.persons[f].data, y.persons[f].data) << x.name << " frame " << f;
+      EXPECT_EQ(x.persons[f].track_ids, y.persons[f].track_ids) << x.name << " frame " << f;
+    }
+  }
+}
+
+// Everything eval reports from a run, for comparisons.
+void ExpectSameRun(const RunResult& a, const RunResult& b) {
+  EXPECT_EQ(a.frames, b.frames);
+  EXPECT_EQ(a.gt_persons, b.gt_persons);
+  EXPECT_EQ(a.output_persons, b.output_persons);
+  EXPECT_EQ(a.frames_with_gt, b.frames_with_gt);
+  EXPECT_EQ(a.frames_with_gt_without_prediction, b.frames_with_gt_without_prediction);
+  EXPECT_EQ(a.metrics.mpjpe_mm, b.metrics.mpjpe_mm);
+  EXPECT_EQ(a.metrics.pcp, b.metrics.pcp);
+  EXPECT_EQ(a.metrics.recall_500, b.metrics.recall_500);
+  EXPECT_EQ(a.metrics.num_predictions, b.metrics.num_predictions);
+  EXPECT_EQ(a.metrics.ap, b.metrics.ap);
+  EXPECT_EQ(a.counts.count_per_frame, b.counts.count_per_frame);
+  ASSERT_EQ(a.sequences.size(), b.sequences.size());
+  for (size_t i = 0; i < a.sequences.size(); ++i) {
+    EXPECT_EQ(a.sequences[i].name, b.sequences[i].name);
+    EXPECT_EQ(a.sequences[i].frames, b.sequences[i].frames);
+    EXPECT_EQ(a.sequences[i].metrics.mpjpe_mm, b.sequences[i].metrics.mpjpe_mm);
+  }
+}
+
+TEST(RunTest, StreamedFramesGiveTheNumbersOfTheSequencesInMemory) {
+  const std::vector<Sequence> whole = TwoSequences();
+  RunOptions options;
+  options.threads = 1;
+  PredictionsCollector expected_predictions(2);
+  const RunResult expected = engine::Run(std::span<const Sequence>(whole), options, &expected_predictions);
+
+  options.threads = 2;
+  std::vector<std::unique_ptr<FrameSource>> sources;
+  sources.push_back(std::make_unique<CountingSource>(StreamSynthetic(Scene(90))));
+  sources.push_back(std::make_unique<SequenceSource>(whole[1]));
+  PredictionsCollector streamed_predictions(2);
+  const RunResult streamed = engine::Run(std::move(sources), options, &streamed_predictions);
+  ExpectSameRun(streamed, expected);
+  ExpectSamePredictions(streamed_predictions, expected_predictions);
+  ASSERT_EQ(streamed.sequences.size(), 2u) << "one result per sequence";
+  EXPECT_EQ(streamed.sequences[0].frames, 90);
+  EXPECT_EQ(streamed.sequences[1].name, "other");
+  EXPECT_NE(streamed.sequences[0].metrics.mpjpe_mm, streamed.sequences[1].metrics.mpjpe_mm);
+  EXPECT_GT(streamed.metrics.recall_500, 90.0) << "a clean scene is recovered";
+}
+
+TEST(RunTest, TheTotalsDoNotDependOnTheThreadCount) {
+  const std::vector<Sequence> whole = TwoSequences();
+  RunOptions options;
+  options.threads = 1;
+  const RunResult one = engine::Run(std::span<const Sequence>(whole), options);
+  options.threads = 2;
+  const RunResult two = engine::Run(std::span<const Sequence>(whole), options);
+  ExpectSameRun(one, two);
+}
+
+TEST(RunTest, InputChecksStreamWithTheFrames) {
+  const std::vector<Sequence> whole = TwoSequences();
+  RunOptions options;
+  options.checks = DetectionCheckOptions{};
+  const RunResult run = engine::Run(std::span<const Sequence>(whole), options);
+  const std::vector<SequenceCheck> expected = CheckDetections(whole);
+  ASSERT_EQ(run.sequences.size(), 2u);
+  for (size_t i = 0; i < 2; ++i) {
+    ASSERT_TRUE(run.sequences[i].check.has_value());
+    const SequenceCheck& check = *run.sequences[i].check;
+    EXPECT_EQ(check.frames, expected[i].frames);
+    EXPECT_EQ(check.measured_frames, expected[i].measured_frames);
+    EXPECT_EQ(check.shift.rel_median, expected[i].shift.rel_median);
+    EXPECT_EQ(check.cameras[0].px_median, expected[i].cameras[0].px_median);
+  }
+}
+
+TEST(RunTest, HoldsOneInputFramePerSequenceWhateverTheLength) {
+  for (const int frames : {10, 3000}) {
+    CountingSource::Counts counts;  // the run frees each source once exhausted
+    std::vector<std::unique_ptr<FrameSource>> sources;
+    sources.push_back(std::make_unique<CountingSource>(StreamSynthetic(Scene(frames)), &counts));
+    RunOptions options;
+    options.checks = DetectionCheckOptions{};
+    const RunResult run = engine::Run(std::move(sources), options);
+    EXPECT_EQ(run.frames, frames);
+    EXPECT_EQ(counts.delivered, frames);
+    EXPECT_EQ(counts.frames_alive_peak, 1u) << "one input frame alive, " << frames << " frames";
+    if (frames == 3000) EXPECT_EQ(run.sequences[0].check->measured_frames, 200) << "bounded sample of the checks";
+  }
+}
+
+TEST(RunTest, WithoutMetricsNoGroundTruthIsNeeded) {
+  std::vector<Sequence> whole = MakeSyntheticDataset(Scene(30));
+  for (SequenceFrame& frame : whole[0].frames) frame.gt.Clear(frame.gt.num_joints);
+  RunOptions options;
+  options.eval.reset();
+  PredictionsCollector predictions(1);
+  const RunResult run = engine::Run(std::span<const Sequence>(whole), options, &predictions);
+  EXPECT_FALSE(run.evaluated);
+  EXPECT_EQ(run.frames, 30);
+  EXPECT_EQ(run.gt_persons, 0);
+  EXPECT_GT(run.output_persons, 30) << "two people, triangulated without GT";
+  EXPECT_EQ(predictions.sequences()[0].persons.size(), 30u);
+}
+
+// A sink that records the order of the calls it gets.
+class OrderSink final : public FrameSink {
+ public:
+  void BeginSequence(int sequence, const SequenceHeader& header, const JointNames& joints) override {
+    calls.push_back("begin " + std::to_string(sequence) + " " + header.name + " " + std::to_string(joints.size()));
+  }
+  void Frame(const FrameOutput& frame) override {
+    if (frame.input->id.size() > 0 && frames++ < 2) calls.push_back("frame " + frame.input->id);
+    EXPECT_NE(frame.stats, nullptr);
+  }
+  void EndSequence(int sequence) override { calls.push_back("end " + std::to_string(sequence)); }
+  std::vector<std::string> calls;
+  int frames = 0;
+};
+
+TEST(RunTest, ASinkSeesTheSequenceBeginItsFramesInOrderThenTheEnd) {
+  const std::vector<Sequence> whole = MakeSyntheticDataset(Scene(5));
+  OrderSink sink;
+  RunOptions options;
+  engine::Run(std::span<const Sequence>(whole), options, &sink);
+  ASSERT_EQ(sink.calls.size(), 4u);
+  EXPECT_EQ(sink.calls[0], "begin 0 " + whole[0].name + " 20") << "17 COCO joints and 3 derived ones";
+  EXPECT_EQ(sink.calls[1], "frame " + whole[0].frames[0].id);
+  EXPECT_EQ(sink.calls[2], "frame " + whole[0].frames[1].id);
+  EXPECT_EQ(sink.calls[3], "end 0");
+  EXPECT_EQ(sink.frames, 5);
+}
+
+TEST(RunTest, TheSequencesRoomBecomesTheRoomCheckUnlessOneIsSet) {
+  SequenceHeader header;
+  header.room.center_m = Eigen::Vector3d(1, 2, 1);
+  header.room.size_m = Eigen::Vector3d(8, 6, 2);
+  TriangulatorOptions options;
+  const TriangulatorOptions from_dataset = TriangulatorOptionsFor(options, header);
+  EXPECT_EQ(from_dataset.room_check.center_m, header.room.center_m);
+  EXPECT_EQ(from_dataset.room_check.size_m, header.room.size_m);
+  options.room_check.size_m = Eigen::Vector3d(3, 3, 3);
+  const TriangulatorOptions set = TriangulatorOptionsFor(options, header);
+  EXPECT_EQ(set.room_check.size_m, Eigen::Vector3d(3, 3, 3));
+  EXPECT_EQ(set.room_check.center_m, Eigen::Vector3d::Zero());
+}
+
+TEST(SimulatedDetectionsSourceTest, SameDetectionsAsSimulatingTheWholeSequence) {
+  SyntheticParams params = Scene(40);
+  params.noise = "perfect";
+  std::vector<Sequence> whole = MakeSyntheticDataset(params);
+  SimulationOptions simulation;
+  simulation.seed = 11;
+  simulation.detector = "hard";
+  SimulateDetections(simulation, &whole[0]);
+  SimulatedDetectionsSource source(StreamSynthetic(params), simulation);
+  EXPECT_EQ(source.header().detection_joints, whole[0].detection_joints);
+  const Sequence streamed = Materialize(source);
+  ASSERT_EQ(streamed.frames.size(), whole[0].frames.size());
+  for (size_t f = 0; f < streamed.frames.size(); ++f) {
+    ASSERT_EQ(streamed.frames[f].views.size(), whole[0].frames[f].views.size());
+    for (size_t c = 0; c < streamed.frames[f].views.size(); ++c) {
+      EXPECT_EQ(streamed.frames[f].views[c].data, whole[0].frames[f].views[c].data) << "frame " << f;
+    }
+    EXPECT_EQ(streamed.frames[f].labels_2d.size(), whole[0].frames[f].labels_2d.size());
+  }
+}
+
+}  // namespace
+}  // namespace rpt::engine
