@@ -173,6 +173,18 @@ void LegacyPcpEvaluator::AddFrame(std::span<const LegacyActor> gt, std::span<con
   }
 }
 
+void LegacyPcpEvaluator::Merge(const LegacyPcpEvaluator& other) {
+  for (const auto& [actor_id, counts] : other.actors_) {
+    ActorCounts& mine = actors_[actor_id];
+    mine.num_frames += counts.num_frames;
+    for (int k = 0; k < kNumLegacyParts; ++k) mine.correct[k] += counts.correct[k];
+  }
+  num_frames_ += other.num_frames_;
+  num_skipped_frames_ += other.num_skipped_frames_;
+  num_actor_frames_ += other.num_actor_frames_;
+  num_recalled_ += other.num_recalled_;
+}
+
 LegacyPcpResult LegacyPcpEvaluator::Finalize() const {
   LegacyPcpResult result;
   result.num_frames = num_frames_;

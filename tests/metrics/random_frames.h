@@ -64,7 +64,10 @@ class RandomFrames {
       const bool dropped = Chance(0.05);  // no valid joint at all
       for (int j = 0; j < num_joints + 2; ++j) {
         person(3, j) = dropped || Chance(0.1) ? 0.05 : 1.0;
-        if (Chance(0.03)) person.block<3, 1>(0, j).setConstant(std::numeric_limits<double>::quiet_NaN());
+        if (!Chance(0.03)) continue;
+        // NaN joints; a hip's with an invalid score, else pelvis-aligned errors are all NaN and MPJPE +inf.
+        person.block<3, 1>(0, j).setConstant(std::numeric_limits<double>::quiet_NaN());
+        if (j == kHipLeft || j == kHipRight) person(3, j) = 0.05;
       }
       const int track_id = Int(-1, 4);
       frame.gt.AddPerson(track_id) = person;
@@ -80,7 +83,9 @@ class RandomFrames {
       for (int j = 0; j < num_joints; ++j) {
         person.block<3, 1>(0, j) = gt_xyz[g].col(j) + offset + Eigen::Vector3d(Normal(0.02), Normal(0.02), Normal(0.02));
         person(3, j) = Chance(0.08) ? 0.0 : joint_score;
-        if (Chance(0.01)) person.block<3, 1>(0, j).setConstant(std::numeric_limits<double>::quiet_NaN());
+        if (Chance(0.01) && j != kHipLeft && j != kHipRight) {
+          person.block<3, 1>(0, j).setConstant(std::numeric_limits<double>::quiet_NaN());
+        }
       }
       preds.push_back(person);
       if (Chance(0.15)) preds.push_back(person);
@@ -124,6 +129,7 @@ class RandomFrames {
   }
   double JointScore() { return std::vector<double>{0.3, 0.6, 0.9}[Int(0, 2)]; }
 
+  static constexpr int kHipLeft = 11, kHipRight = 12;  // CocoBodyJoints() order, also the whole-body's
   std::mt19937_64 rng_;
   bool person_scores_;
   int index_ = 0;

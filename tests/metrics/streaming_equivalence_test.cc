@@ -1,14 +1,17 @@
 // SPDX-License-Identifier: MIT
 // MetricsAccumulator gives, bit for bit, the numbers of the pre-streaming accumulator (the frozen
 // oracle in reference_metrics.cc) on randomised frames, for every combination of the options that
-// change how records are matched or reduced.
+// change how records are matched or reduced; and each frame's matches (LastFrame()) are the
+// frame's part of the whole run's matching.
 #include <gtest/gtest.h>
 
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "metrics/accumulator.h"
 #include "tests/metrics/random_frames.h"
@@ -84,6 +87,33 @@ void ExpectIdentical(const MetricsResult& a, const MetricsResult& b, const std::
   }
 }
 
+// Per prediction of the frame added last: matched at the gate (to which kept GT) and the error to
+// its nearest GT, in the reference's terms.
+reference::ReferenceAccumulator::FrameMatches Matches(const FrameRecords& frame) {
+  reference::ReferenceAccumulator::FrameMatches matches;
+  matches.pred_matched.assign(frame.num_predictions, false);
+  matches.pred_matched_gt.assign(frame.num_predictions, -1);
+  matches.pred_error_mm.assign(frame.num_predictions, std::numeric_limits<double>::infinity());
+  for (const PairRecord& pair : frame.pairs) {
+    if (pair.flags & kNearest) matches.pred_error_mm[pair.pred_idx] = pair.error_mm;
+    if (!(pair.flags & kMatch)) continue;
+    matches.pred_matched[pair.pred_idx] = true;
+    matches.pred_matched_gt[pair.pred_idx] = pair.gt_idx;
+  }
+  return matches;
+}
+
+void ExpectSameMatches(const std::vector<reference::ReferenceAccumulator::FrameMatches>& frames,
+                       const std::vector<reference::ReferenceAccumulator::FrameMatches>& expected,
+                       const std::string& context) {
+  ASSERT_EQ(frames.size(), expected.size()) << context;
+  for (size_t f = 0; f < frames.size(); ++f) {
+    EXPECT_EQ(frames[f].pred_matched, expected[f].pred_matched) << context << ", frame " << f;
+    EXPECT_EQ(frames[f].pred_matched_gt, expected[f].pred_matched_gt) << context << ", frame " << f;
+    EXPECT_EQ(frames[f].pred_error_mm, expected[f].pred_error_mm) << context << ", frame " << f;
+  }
+}
+
 // Every combination of the switches that change matching or reduction, plus the kind of data.
 struct Combination {
   EvalOptions options;
@@ -126,12 +156,16 @@ TEST(StreamingEquivalence, EveryOptionCombinationMatchesThePreStreamingAccumulat
     test::RandomFrames frames(1000 + seed++, c.wholebody_data, c.person_scores);
     MetricsAccumulator accumulator(c.options);
     reference::ReferenceAccumulator reference(c.options);
+    std::vector<reference::ReferenceAccumulator::FrameMatches> last_frames;
     for (int f = 0; f < 24; ++f) {
       const test::RandomFrame frame = frames.Next();
       accumulator.Add(frame.id, frame.gt, *frame.gt_names, frame.pred, *frame.pred_names, frame.scores);
       reference.Add(frame.id, frame.gt, *frame.gt_names, frame.pred, *frame.pred_names, frame.scores);
+      last_frames.push_back(Matches(accumulator.LastFrame()));
     }
     ExpectIdentical(accumulator.Finalize(), reference.Finalize(), c.name);
+    // Each frame's matches as Add() resolved them are the frame's part of the run's matching.
+    ExpectSameMatches(last_frames, reference.PerFrameMatches(), c.name);
     if (HasFailure()) return;  // one combination's diagnostics are enough
   }
 }
@@ -145,14 +179,17 @@ TEST(StreamingEquivalence, ThousandsOfFramesWithTiedScoresMatchBitForBit) {
     test::RandomFrames frames(7, /*wholebody=*/false, /*person_scores=*/true);
     MetricsAccumulator accumulator(options);
     reference::ReferenceAccumulator reference(options);
+    std::vector<reference::ReferenceAccumulator::FrameMatches> last_frames;
     for (int f = 0; f < 3000; ++f) {
       const test::RandomFrame frame = frames.Next();
       accumulator.Add(frame.id, frame.gt, *frame.gt_names, frame.pred, *frame.pred_names, frame.scores);
       reference.Add(frame.id, frame.gt, *frame.gt_names, frame.pred, *frame.pred_names, frame.scores);
+      last_frames.push_back(Matches(accumulator.LastFrame()));
       if (f == 100) ExpectIdentical(accumulator.Finalize(), reference.Finalize(), "after 101 frames");
     }
     const MetricsResult result = accumulator.Finalize();
     ExpectIdentical(result, reference.Finalize(), "3000 frames");
+    ExpectSameMatches(last_frames, reference.PerFrameMatches(), "3000 frames");
     // The data exercise what they should: matches and misses, duplicates, frames without GT.
     EXPECT_GT(result.num_matches, 1000);
     EXPECT_GT(result.num_predictions, result.num_matches + 500);
