@@ -2,11 +2,14 @@
 // The accumulators' memory is flat in frames: feeding 3 800 more frames grows the live heap (counted
 // by a replaced global operator new) by less than 16 bytes per frame, plus, for the metrics, the
 // 24-byte entry that average precision keeps per counted prediction (its score, error and
-// true-positive flags; AP ranks all of them at the end).
+// true-positive flags; AP ranks all of them at the end). Eigen's dynamic arrays are allocated with
+// malloc, not counted here: the accumulators keep none beyond the frame being added.
 #include <gtest/gtest.h>
 
 #include <atomic>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <new>

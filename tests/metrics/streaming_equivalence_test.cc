@@ -5,6 +5,7 @@
 // frame's part of the whole run's matching.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
