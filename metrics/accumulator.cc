@@ -7,7 +7,7 @@
 #include <utility>
 
 #include "core/errors.h"
-#include "metrics/reducers/reducers.h"
+#include "metrics/matching.h"
 
 namespace rpt::metrics {
 namespace {
@@ -44,16 +44,10 @@ const std::vector<WholeBodyGroup>& WholeBodyGroups() {
   return groups;
 }
 
-MetricsAccumulator::MetricsAccumulator(const EvalOptions& options) : options_(options) {
-  options_.Check();
+MetricsAccumulator::MetricsAccumulator(const EvalOptions& options)
+    : options_((options.Check(), options)), totals_(options_) {
   evaluated_ = options_.EvaluatedJoints();
   pcp_layout_ = MakeGenericPcpLayout(evaluated_);
-  records_.evaluated = evaluated_;
-  records_.gt_valid_per_joint.assign(evaluated_.size(), 0);
-  records_.pcp_total.assign(pcp_layout_.parts.size(), 0);
-  records_.pcp_correct_nearest.assign(pcp_layout_.parts.size(), 0);
-  records_.group_num_joints.assign(WholeBodyGroups().size(), 0);
-  if (options_.legacy_pcp != LegacyPcpLayout::kNone) records_.legacy.emplace(options_);
 }
 
 void MetricsAccumulator::UpdateLayout(const JointNames& gt_names, const JointNames& pred_names) {
@@ -99,7 +93,7 @@ void MetricsAccumulator::UpdateLayout(const JointNames& gt_names, const JointNam
     }
   }
 
-  if (records_.legacy) {
+  if (options_.legacy_pcp != LegacyPcpLayout::kNone) {
     const JointNames& shelf = options_.legacy_pcp_gt_joints.empty() ? Shelf14Joints() : options_.legacy_pcp_gt_joints;
     if (!gt_names.empty()) layout.gt_legacy = MapJointNames(shelf, gt_names, "ground-truth (legacy PCP, Shelf14)");
     if (!pred_names.empty()) {
@@ -110,23 +104,18 @@ void MetricsAccumulator::UpdateLayout(const JointNames& gt_names, const JointNam
   layout_ = std::move(layout);
   layout_valid_ = true;
   // Only report group sizes for lists that actually carry persons' joints.
+  group_num_joints_.clear();
   if (options_.wholebody_groups && !gt_names.empty() && !pred_names.empty()) {
-    for (size_t k = 0; k < WholeBodyGroups().size(); ++k) {
-      records_.group_num_joints[k] = static_cast<int>(layout_.gt_group[k].size());
-    }
+    for (const std::vector<int>& group : layout_.gt_group) group_num_joints_.push_back(static_cast<int>(group.size()));
   }
 }
 
-PairRecord MetricsAccumulator::MakePair(const Poses3D& gt,
-                                                            int gt_idx,
-                                                            const EvalPerson& gt_person,
-                                                            const Poses3D& predictions,
-                                                            int pred_idx,
-                                                            const EvalPerson& pred_person,
-                                                            double error_mm,
-                                                            double score) const {
+PairRecord MetricsAccumulator::MakePair(const Poses3D& gt, int gt_idx, const EvalPerson& gt_person,
+                                        const Poses3D& predictions, int pred_idx, const EvalPerson& pred_person,
+                                        double error_mm, double score) const {
   PairRecord record;
-  record.match = MatchRecord{-1, error_mm, score};
+  record.error_mm = error_mm;
+  record.score = score;
   record.joint_errors = JointErrors(gt_person, pred_person);
 
   // Offsets subtracted before the reported errors: zero, or each person's own pelvis.
@@ -176,8 +165,7 @@ PairRecord MetricsAccumulator::MakePair(const Poses3D& gt,
   return record;
 }
 
-void MetricsAccumulator::AddLegacyFrame(const Poses3D& gt, const Poses3D& predictions) {
-  std::vector<LegacyActor> actors;
+void MetricsAccumulator::CollectLegacyInputs(const Poses3D& gt, const Poses3D& predictions) {
   for (int g = 0; g < gt.num_persons(); ++g) {
     LegacyActor actor;
     // The actor id is the GT track id (actorsGT.mat actor index); untracked GT falls back to the order.
@@ -185,17 +173,15 @@ void MetricsAccumulator::AddLegacyFrame(const Poses3D& gt, const Poses3D& predic
     // Shelf/Campus GT is complete: scores are ignored, as in VoxelPose.
     const auto joints = gt.Person(g);
     for (int j = 0; j < 14; ++j) actor.joints_mm.col(j) = 1000.0 * joints.col(layout_.gt_legacy[j]).head<3>();
-    actors.push_back(actor);
+    frame_.legacy_actors.push_back(actor);
   }
-  std::vector<Shelf14> preds;
   for (int p = 0; p < predictions.num_persons(); ++p) {
     Coco17 coco;
     for (int j = 0; j < 17; ++j) {
       coco.col(j) = JointMmOrNaN(predictions, p, layout_.pred_legacy[j], options_.min_pred_score);
     }
-    preds.push_back(CocoToShelf14(coco, options_.legacy_pcp));
+    frame_.legacy_predictions.push_back(CocoToShelf14(coco, options_.legacy_pcp));
   }
-  records_.legacy->AddFrame(actors, preds);
 }
 
 void MetricsAccumulator::Add(std::string_view frame_id,
@@ -210,24 +196,30 @@ void MetricsAccumulator::Add(std::string_view frame_id,
     throw InputError("metrics: frame '" + std::string(frame_id) + "': " + std::to_string(pred_scores.size()) +
                      " person scores for " + std::to_string(predictions.num_persons()) + " predictions");
   }
-  if (!frame_ids_.insert(std::string(frame_id)).second) {
+  if (!frame_ids_.Insert(frame_id)) {
     throw InputError("metrics: frame '" + std::string(frame_id) + "' was added twice");
   }
   UpdateLayout(gt_names, pred_names);
-  ++records_.num_frames;
+
+  FrameRecords& frame = frame_;
+  frame.kept_gt_idx.clear();
+  frame.gt.clear();
+  frame.num_dropped_gt = 0;
+  frame.pairs.clear();
+  frame.pcp_nearest.clear();
+  frame.group_num_joints = group_num_joints_;
+  frame.legacy_actors.clear();
+  frame.legacy_predictions.clear();
 
   // Kept GT persons: at least one valid evaluated joint.
-  std::vector<EvalPerson> gt_persons;
-  std::vector<int> gt_source;  // index in `gt` of each kept person
   for (int g = 0; g < gt.num_persons(); ++g) {
     EvalPerson person = ExtractPerson(gt, g, layout_.gt_eval, options_.min_gt_score);
     if (!person.valid.any()) {
-      ++records_.num_dropped_gt;
+      ++frame.num_dropped_gt;
       continue;
     }
-    for (Eigen::Index j = 0; j < person.valid.size(); ++j) records_.gt_valid_per_joint[j] += person.valid(j) ? 1 : 0;
-    gt_persons.push_back(std::move(person));
-    gt_source.push_back(g);
+    frame.gt.push_back(std::move(person));
+    frame.kept_gt_idx.push_back(g);
   }
   std::vector<EvalPerson> pred_persons;
   std::vector<double> scores;
@@ -236,37 +228,31 @@ void MetricsAccumulator::Add(std::string_view frame_id,
     scores.push_back(pred_scores.empty() ? pred_persons.back().mean_score : pred_scores[p]);
   }
 
-  const int num_gt = static_cast<int>(gt_persons.size());
+  const int num_gt = static_cast<int>(frame.gt.size());
   const int num_pred = static_cast<int>(pred_persons.size());
-  const int gt_id_base = records_.num_gt;
-  records_.num_gt += num_gt;
-  if (num_gt > 0) ++records_.num_frames_with_gt;
-  const bool counted = num_gt > 0 || options_.count_preds_without_gt;
-  records_.num_pred_total += num_pred;
-  if (counted) records_.num_pred_counted += num_pred;
+  frame.num_predictions = num_pred;
+  frame.counted = num_gt > 0 || options_.count_preds_without_gt;
 
   Eigen::MatrixXd cost(num_pred, num_gt);
   for (int p = 0; p < num_pred; ++p) {
-    for (int g = 0; g < num_gt; ++g) cost(p, g) = PersonMpjpe(gt_persons[g], pred_persons[p]);
+    for (int g = 0; g < num_gt; ++g) cost(p, g) = PersonMpjpe(frame.gt[g], pred_persons[p]);
   }
 
-  // Candidate pairs of this frame; (pred, gt) -> index in records_.pairs.
-  std::vector<PairRecord>& pairs = records_.pairs;
-  const size_t first_record = pairs.size();
+  // Candidate pairs of this frame: first each prediction's nearest GT, then the Hungarian pairs.
+  std::vector<PairRecord>& pairs = frame.pairs;
   auto find_or_add = [&](int p, int g) -> PairRecord& {
-    for (size_t r = first_record; r < pairs.size(); ++r) {
-      if (pairs[r].pred_idx == p && pairs[r].gt_idx == g) return pairs[r];
+    for (PairRecord& pair : pairs) {
+      if (pair.pred_idx == p && pair.gt_idx == g) return pair;
     }
     PairRecord record;
     if (g >= 0) {
-      record = MakePair(gt, gt_source[g], gt_persons[g], predictions, p, pred_persons[p], cost(p, g), scores[p]);
-      record.match.gt_id = gt_id_base + g;
+      record = MakePair(gt, frame.kept_gt_idx[g], frame.gt[g], predictions, p, pred_persons[p], cost(p, g), scores[p]);
     } else {
-      record.match = MatchRecord{-1, kInf, scores[p]};
+      record.error_mm = kInf;
+      record.score = scores[p];
     }
     record.pred_idx = p;
     record.gt_idx = g;
-    record.counted = counted;
     pairs.push_back(std::move(record));
     return pairs.back();
   };
@@ -274,13 +260,23 @@ void MetricsAccumulator::Add(std::string_view frame_id,
   const std::vector<int> nearest = NearestGt(cost);
   for (int p = 0; p < num_pred; ++p) find_or_add(p, nearest[p]).flags |= kNearest;
 
+  const std::pair<double, std::uint8_t> gates[] = {
+      {options_.match_threshold_mm, kMatch}, {100.0, kMatch100}, {500.0, kMatch500}};
   if (options_.matching == MatchingMode::kHungarian) {
-    const std::pair<double, std::uint8_t> gates[] = {
-        {options_.match_threshold_mm, kHungarianMatch}, {100.0, kHungarian100}, {500.0, kHungarian500}};
     for (const auto& [gate, flag] : gates) {
       const std::vector<int> assignment = HungarianMatch(cost, gate);
       for (int p = 0; p < num_pred; ++p) {
         if (assignment[p] >= 0) find_or_add(p, assignment[p]).flags |= flag;
+      }
+    }
+  } else {
+    // Greedy matching of the frame's nearest-GT pairs (pairs[p] for prediction p): the frame's part
+    // of the greedy matching over the whole run (eval_records.h).
+    const std::vector<MatchRecord> nearest_records = NearestMatchRecords(frame);
+    for (const auto& [gate, flag] : gates) {
+      const std::vector<bool> is_match = GreedyMatch(nearest_records, gate);
+      for (int p = 0; p < num_pred; ++p) {
+        if (is_match[p]) pairs[p].flags |= flag;
       }
     }
   }
@@ -289,15 +285,25 @@ void MetricsAccumulator::Add(std::string_view frame_id,
   const std::vector<int> nearest_pred = NearestPrediction(cost);
   for (int g = 0; g < num_gt; ++g) {
     const EvalPerson* pred = nearest_pred[g] >= 0 ? &pred_persons[nearest_pred[g]] : nullptr;
-    const std::vector<PartOutcome> outcomes = EvaluateGenericPcp(pcp_layout_, gt_persons[g], pred, options_.pcp_alpha);
-    for (size_t k = 0; k < outcomes.size(); ++k) {
-      if (outcomes[k] == PartOutcome::kNotEvaluated) continue;
-      ++records_.pcp_total[k];
-      if (outcomes[k] == PartOutcome::kCorrect) ++records_.pcp_correct_nearest[k];
-    }
+    frame.pcp_nearest.push_back(EvaluateGenericPcp(pcp_layout_, frame.gt[g], pred, options_.pcp_alpha));
   }
 
-  if (records_.legacy) AddLegacyFrame(gt, predictions);
+  if (options_.legacy_pcp != LegacyPcpLayout::kNone) CollectLegacyInputs(gt, predictions);
+  totals_.Fold(frame);
+}
+
+void MetricsAccumulator::Merge(const MetricsAccumulator& other) {
+  const std::string different = FirstDifferentOption(options_, other.options_);
+  if (!different.empty()) {
+    throw ConfigError("metrics: cannot merge accumulators whose option '" + different + "' differs");
+  }
+  const long shared = frame_ids_.CountShared(other.frame_ids_);
+  if (shared > 0) {
+    throw InputError("metrics: cannot merge accumulators: " + std::to_string(shared) +
+                     " frame id(s) were added to both");
+  }
+  frame_ids_.Merge(other.frame_ids_);
+  totals_.Merge(other.totals_);
 }
 
 void MetricsAccumulator::Merge(const MetricsAccumulator& other) {
@@ -332,8 +338,7 @@ void MetricsAccumulator::Merge(const MetricsAccumulator& other) {
 
 MetricsResult MetricsAccumulator::Finalize() const {
   MetricsResult result;
-  const MatchSets matches = SelectMatches(records_, options_);
-  for (const MetricReducer reduce : MetricReducers()) reduce(records_, matches, options_, &result);
+  for (const MetricReducer reduce : MetricReducers()) reduce(totals_, options_, &result);
   return result;
 }
 

@@ -5,8 +5,11 @@
 // of the GT and of the predictions; joints are matched by NAME, so any prediction joint order works.
 // Outputs are millimetres and percentages. Definitions: docs/metrics.md.
 //
-// Add() collects records (metrics/eval_records.h); Finalize() runs every metric family over them
-// (metrics/reducers/, one pure function per family).
+// Add() collects the frame's records (metrics/eval_records.h), resolves its matches and folds it
+// into each metric family's running totals; Finalize() reduces the totals (metrics/reducers/, one
+// file per family). Memory does not grow with frames, except for 8 bytes per frame (a hash of its
+// id, to refuse a repeated one) and 24 bytes per counted prediction (average precision ranks all
+// predictions of the run by score at the end).
 //
 // Example:
 //   MetricsAccumulator accumulator(options);
@@ -21,17 +24,17 @@
 #include <span>
 #include <string>
 #include <string_view>
-#include <unordered_set>
 #include <vector>
 
 #include "core/joints.h"
 #include "core/poses.h"
 #include "metrics/eval_options.h"
 #include "metrics/eval_records.h"
-#include "metrics/matching.h"
+#include "metrics/frame_id_set.h"
 #include "metrics/metrics_result.h"
 #include "metrics/pcp.h"
 #include "metrics/person_error.h"
+#include "metrics/reducers/reducers.h"
 
 namespace rpt::metrics {
 
@@ -54,16 +57,19 @@ class MetricsAccumulator {
            const JointNames& pred_names,
            std::span<const double> pred_scores = {});
 
-  // Appends the frames of `other` (same options, e.g. another sequence run on another thread), as if
-  // they had been added here after the frames so far. Throws rpt::InputError when a frame id of
-  // `other` was already added here.
+  // Adds the frames of `other` (e.g. another sequence evaluated on another thread): the result is
+  // the one of adding its frames here after this one's, with the sums of the means (MPJPE, per-joint
+  // and whole-body errors) added as one term each, so equal up to rounding (relative 1e-15).
+  // Throws rpt::ConfigError when the options differ, rpt::InputError (and merges nothing) when a
+  // frame id was added to both.
   void Merge(const MetricsAccumulator& other);
 
   // Computes all metrics from the frames added so far (can be called repeatedly).
   MetricsResult Finalize() const;
 
-  // What Finalize() reduces: the records collected so far.
-  const EvalRecords& records() const { return records_; }
+  // The records of the frame added last (its pairs with their errors and match flags, its kept GT
+  // persons), e.g. to show each frame's matches; replaced by the next Add().
+  const FrameRecords& LastFrame() const { return frame_; }
 
  private:
   // Joint index tables for one pair of joint lists (cached while the names do not change).
@@ -76,7 +82,7 @@ class MetricsAccumulator {
   };
 
   void UpdateLayout(const JointNames& gt_names, const JointNames& pred_names);
-  void AddLegacyFrame(const Poses3D& gt, const Poses3D& predictions);
+  void CollectLegacyInputs(const Poses3D& gt, const Poses3D& predictions);
   PairRecord MakePair(const Poses3D& gt,
                       int gt_idx,
                       const EvalPerson& gt_person,
@@ -91,9 +97,11 @@ class MetricsAccumulator {
   GenericPcpLayout pcp_layout_;
   Layout layout_;
   bool layout_valid_ = false;
-  std::unordered_set<std::string> frame_ids_;
+  std::vector<int> group_num_joints_;  // of the layout's joint lists; empty when one is empty
+  FrameIdSet frame_ids_;
 
-  EvalRecords records_;
+  FrameRecords frame_;   // the frame being (or last) added
+  MetricTotals totals_;  // every frame so far, folded
 };
 
 }  // namespace rpt::metrics

@@ -8,26 +8,33 @@
 namespace rpt::metrics {
 
 double AveragePrecision(std::span<const MatchRecord> records, int num_gt, double threshold_mm) {
-  if (num_gt <= 0) return std::numeric_limits<double>::quiet_NaN();
-  if (records.empty()) return 0.0;
   const std::vector<int> order = RankRecords(records);
   const std::vector<bool> is_tp = GreedyMatch(records, threshold_mm);
+  std::vector<bool> ranked_is_tp(order.size());
+  for (size_t i = 0; i < order.size(); ++i) ranked_is_tp[i] = is_tp[order[i]];
+  return RankedAveragePrecision(ranked_is_tp, num_gt);
+}
 
-  const size_t n = order.size();
-  std::vector<double> recall(n), precision(n);
+double RankedAveragePrecision(const std::vector<bool>& ranked_is_tp, int num_gt) {
+  if (num_gt <= 0) return std::numeric_limits<double>::quiet_NaN();
+  if (ranked_is_tp.empty()) return 0.0;
+  const size_t n = ranked_is_tp.size();
+  std::vector<double> precision(n);
   int tp = 0;
   for (size_t i = 0; i < n; ++i) {
-    tp += is_tp[order[i]] ? 1 : 0;
-    recall[i] = static_cast<double>(tp) / num_gt;
+    tp += ranked_is_tp[i] ? 1 : 0;
     precision[i] = static_cast<double>(tp) / static_cast<double>(i + 1);
   }
   for (size_t i = n - 1; i-- > 0;) precision[i] = std::max(precision[i], precision[i + 1]);
 
   double ap = 0.0;
   double previous_recall = 0.0;
+  tp = 0;
   for (size_t i = 0; i < n; ++i) {
-    ap += (recall[i] - previous_recall) * precision[i];
-    previous_recall = recall[i];
+    tp += ranked_is_tp[i] ? 1 : 0;
+    const double recall = static_cast<double>(tp) / num_gt;
+    ap += (recall - previous_recall) * precision[i];
+    previous_recall = recall;
   }
   return ap;
 }

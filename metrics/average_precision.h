@@ -3,6 +3,7 @@
 #pragma once
 
 #include <span>
+#include <vector>
 
 #include "metrics/matching.h"
 
@@ -17,5 +18,8 @@ namespace rpt::metrics {
 // area under the step curve. VoxelPose adds 1e-5 to both denominators; we do not (exact values).
 // Returns NaN when num_gt == 0 and 0 when there are no records.
 double AveragePrecision(std::span<const MatchRecord> records, int num_gt, double threshold_mm);
+
+// The same AP from the records' true-positive flags, already in RankRecords() order.
+double RankedAveragePrecision(const std::vector<bool>& ranked_is_tp, int num_gt);
 
 }  // namespace rpt::metrics

@@ -3,6 +3,9 @@
 
 #include <set>
 #include <string>
+#include <string_view>
+#include <type_traits>
+#include <vector>
 
 #include "core/errors.h"
 #include "core/options_check.h"
@@ -27,6 +30,21 @@ void EvalOptions::Check() const {
                     "legacy_pcp_gt_joints");
   }
   if (!checker.error().empty()) throw ConfigError(checker.error());
+}
+
+std::string FirstDifferentOption(const EvalOptions& a, const EvalOptions& b) {
+  // VisitFields visits both in the same order: remember a's fields, compare b's to them.
+  std::vector<const void*> fields_of_a;
+  auto collect = [&](std::string_view, const auto& value, const OptionSpec&) { fields_of_a.push_back(&value); };
+  VisitFields(collect, a);
+  size_t i = 0;
+  std::string first;
+  auto compare = [&](std::string_view key, const auto& value, const OptionSpec&) {
+    const auto& value_of_a = *static_cast<const std::remove_cvref_t<decltype(value)>*>(fields_of_a[i++]);
+    if (first.empty() && !(value_of_a == value)) first = key;
+  };
+  VisitFields(compare, b);
+  return first;
 }
 
 }  // namespace rpt::metrics

@@ -129,6 +129,9 @@ struct EvalOptions {
   const JointNames& EvaluatedJoints() const;
 };
 
+// The key of the first field (VisitFields order) in which `a` and `b` differ; empty when they are equal.
+std::string FirstDifferentOption(const EvalOptions& a, const EvalOptions& b);
+
 template <class Visitor, OptionsOf<EvalOptions> Self>
 void VisitFields(Visitor& v, Self& o) {
   v("evaluated_joints", o.evaluated_joints,

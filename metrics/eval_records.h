@@ -1,38 +1,42 @@
 // SPDX-License-Identifier: MIT
-// EvalRecords: what MetricsAccumulator collects frame by frame (candidate prediction/GT pairs with
-// their errors, GT and prediction counts, per-joint and per-part totals), and MatchSets: which of
-// those pairs are matches at the gate, at 100 mm and at 500 mm. Every metric is a pure function of
-// the two (metrics/reducers/).
+// FrameRecords: what MetricsAccumulator::Add collects about one frame (the kept GT persons, the
+// candidate prediction/GT pairs with their errors and match flags, the inputs of both PCPs). Every
+// metric family folds a frame's records into its running totals (metrics/reducers/) as soon as the
+// frame is added, so nothing is kept per frame and an evaluation's memory does not grow with it.
+//
+// Matching is resolved per frame. Hungarian matching is per frame by definition. Greedy matching
+// (VoxelPose) ranks the nearest-GT pairs of the whole run by score, but a pair only competes with
+// pairs of the same GT person, i.e. of the same frame, and the run's ranking orders a frame's pairs
+// as the frame's own ranking does (RankRecords: a stable sort): greedy matching of a frame's pairs
+// alone gives the frame's part of the run's greedy matching.
 #pragma once
 
 #include <Eigen/Core>
 #include <cstdint>
-#include <optional>
 #include <vector>
 
-#include "core/joints.h"
-#include "metrics/eval_options.h"
 #include "metrics/matching.h"
 #include "metrics/pcp.h"
+#include "metrics/person_error.h"
 
 namespace rpt::metrics {
 
 // Flags of a pair record.
 enum PairFlag : std::uint8_t {
-  kNearest = 1,         // the prediction's nearest GT (greedy matching, AP)
-  kHungarianMatch = 2,  // Hungarian pair at match_threshold_mm
-  kHungarian100 = 4,    // Hungarian pair at 100 mm
-  kHungarian500 = 8,    // Hungarian pair at 500 mm
+  kNearest = 1,   // the prediction's nearest GT (greedy matching, AP)
+  kMatch = 2,     // a match at match_threshold_mm (following EvalOptions::matching)
+  kMatch100 = 4,  // a match at 100 mm (Recall@100)
+  kMatch500 = 8,  // a match at 500 mm (Recall@500)
 };
 
-// One candidate (prediction, GT) pair: a prediction's nearest GT or a Hungarian pair. A prediction
-// of a frame without GT has one record with gt_idx -1 and an infinite error.
+// One candidate (prediction, GT) pair of a frame: a prediction's nearest GT or a Hungarian pair. A
+// prediction of a frame without GT has one record with gt_idx -1 and an infinite error.
 struct PairRecord {
-  MatchRecord match;                   // gt_id, error (absolute MPJPE), score
+  int pred_idx = -1;                   // prediction index within the frame
+  int gt_idx = -1;                     // kept-GT index within the frame (-1 = none)
+  double error_mm = 0.0;               // MPJPE(p, g), absolute; +inf without GT
+  double score = 0.0;                  // person score of the prediction (higher = more confident)
   std::uint8_t flags = 0;              // PairFlag bits
-  int pred_idx = -1;                   // prediction index within its frame
-  int gt_idx = -1;                     // kept-GT index within its frame (-1 = none)
-  bool counted = true;                 // prediction counts for Invalid / AP
   double report_error_mm = 0.0;        // MPJPE used for reporting (aligned if set; NaN = unaligned)
   Eigen::ArrayXd joint_errors;         // absolute, evaluated joints (NaN GT-invalid, +inf missing)
   Eigen::ArrayXd report_joint_errors;  // aligned if set
@@ -40,30 +44,27 @@ struct PairRecord {
   std::vector<PartOutcome> pcp;        // generic PCP outcomes of this pair
 };
 
-struct EvalRecords {
-  JointNames evaluated;            // evaluated joints, in EvalOptions order
-  std::vector<PairRecord> pairs;   // in the order frames were added
-  int num_frames = 0;
-  int num_frames_with_gt = 0;
-  int num_gt = 0;                  // kept GT persons
-  int num_dropped_gt = 0;          // GT persons without a valid evaluated joint
-  int num_pred_counted = 0;        // predictions counted for Invalid / AP
-  int num_pred_total = 0;
-  std::vector<int> gt_valid_per_joint;   // GT-valid count per evaluated joint over all kept GT
-  std::vector<int> pcp_total;            // evaluable generic PCP parts over all kept GT
-  std::vector<int> pcp_correct_nearest;  // correct parts against each GT's nearest prediction
-  std::vector<int> group_num_joints;     // joints of each whole-body group present in both lists
-  std::optional<LegacyPcpEvaluator> legacy;  // legacy PCP counts, when legacy_pcp != kNone
+struct FrameRecords {
+  std::vector<int> kept_gt_idx;  // per kept GT person (a valid evaluated joint): its index in the frame's GT
+  std::vector<EvalPerson> gt;    // the kept GT persons, evaluated joints
+  int num_dropped_gt = 0;        // GT persons without a valid evaluated joint
+  int num_predictions = 0;
+  bool counted = true;  // the predictions count for Invalid / AP (kept GT, or count_preds_without_gt)
+  // pairs[p] for p < num_predictions is prediction p's nearest-GT pair (kNearest); Hungarian pairs
+  // that are not also nearest pairs follow. The kMatch* flags are resolved.
+  std::vector<PairRecord> pairs;
+  // Generic PCP of each kept GT person against its nearest prediction (no gate; no prediction: wrong).
+  std::vector<std::vector<PartOutcome>> pcp_nearest;
+  // Joints of each whole-body group present in both joint lists; empty when the groups are off or
+  // a joint list is empty (a frame without persons may omit it).
+  std::vector<int> group_num_joints;
+  // Legacy PCP inputs (when legacy_pcp != kNone): the GT actors and all predictions in Shelf14 layout.
+  std::vector<LegacyActor> legacy_actors;
+  std::vector<Shelf14> legacy_predictions;
 };
 
-// One flag per pair: matched at match_threshold_mm, at 100 mm, at 500 mm (greedy by score over the
-// nearest-GT pairs, or the Hungarian flags, following EvalOptions::matching).
-struct MatchSets {
-  std::vector<bool> at_gate, at_100, at_500;
-};
-MatchSets SelectMatches(const EvalRecords& records, const EvalOptions& options);
-
-// Number of true flags.
-int CountMatches(const std::vector<bool>& matched);
+// The frame's nearest-GT pairs as MatchRecords (gt_id = kept-GT index), prediction order: the input
+// of greedy matching and AP.
+std::vector<MatchRecord> NearestMatchRecords(const FrameRecords& frame);
 
 }  // namespace rpt::metrics

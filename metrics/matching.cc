@@ -87,8 +87,7 @@ std::vector<int> RankRecords(std::span<const MatchRecord> records) {
   std::vector<int> order(records.size());
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-    if (records[a].score != records[b].score) return records[a].score > records[b].score;
-    return records[a].error_mm < records[b].error_mm;
+    return RanksBefore(records[a].score, records[a].error_mm, records[b].score, records[b].error_mm);
   });
   return order;
 }

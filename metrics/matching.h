@@ -32,6 +32,13 @@ struct MatchRecord {
 // error ascending (the fallback when predictions carry equal or no scores), then input order.
 std::vector<int> RankRecords(std::span<const MatchRecord> records);
 
+// The rule of RankRecords() for two records: true when (score_a, error_a) is visited before
+// (score_b, error_b) regardless of their input order.
+inline bool RanksBefore(double score_a, double error_a_mm, double score_b, double error_b_mm) {
+  if (score_a != score_b) return score_a > score_b;
+  return error_a_mm < error_b_mm;
+}
+
 // Score-ranked greedy matching (VoxelPose _eval_list_to_ap / _eval_list_to_mpjpe): visiting records in
 // RankRecords() order, record r is a true positive iff error_mm < threshold_mm (strict) and its GT has
 // no true positive yet. A record is never re-assigned to another GT. Returns one flag per record.

@@ -175,9 +175,9 @@ void LegacyPcpEvaluator::AddFrame(std::span<const LegacyActor> gt, std::span<con
 
 void LegacyPcpEvaluator::Merge(const LegacyPcpEvaluator& other) {
   for (const auto& [actor_id, counts] : other.actors_) {
-    ActorCounts& into = actors_[actor_id];
-    into.num_frames += counts.num_frames;
-    for (size_t k = 0; k < counts.correct.size(); ++k) into.correct[k] += counts.correct[k];
+    ActorCounts& mine = actors_[actor_id];
+    mine.num_frames += counts.num_frames;
+    for (int k = 0; k < kNumLegacyParts; ++k) mine.correct[k] += counts.correct[k];
   }
   num_frames_ += other.num_frames_;
   num_skipped_frames_ += other.num_skipped_frames_;

@@ -139,7 +139,7 @@ class LegacyPcpEvaluator {
   // (argmin, no threshold; a prediction may serve several actors; missing joints count +inf).
   void AddFrame(std::span<const LegacyActor> gt, std::span<const Shelf14> preds);
 
-  // Adds the frames of `other` (same options).
+  // Adds the frames of `other` (same options), as if they had been added here.
   void Merge(const LegacyPcpEvaluator& other);
 
   LegacyPcpResult Finalize() const;

@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "metrics/step_counts.h"
 
-#include "metrics/timing.h"
-
 namespace rpt::metrics {
 
 std::array<int, kNumCounters> Counters(const FrameStats& stats) {
@@ -16,14 +14,14 @@ void StepCountAccumulator::Add(const FrameStats& stats) {
   for (int s = 0; s < kNumSteps; ++s) count_sum_[s] += stats.count[s];
   const std::array<int, kNumCounters> counters = Counters(stats);
   for (int c = 0; c < kNumCounters; ++c) counter_sum_[c] += counters[c];
-  if (stats.noise_m > 0) noise_m_.push_back(stats.noise_m);
+  if (stats.noise_m > 0) noise_m_.Add(stats.noise_m);
 }
 
 void StepCountAccumulator::Merge(const StepCountAccumulator& other) {
   frames_ += other.frames_;
   for (int s = 0; s < kNumSteps; ++s) count_sum_[s] += other.count_sum_[s];
   for (int c = 0; c < kNumCounters; ++c) counter_sum_[c] += other.counter_sum_[c];
-  noise_m_.insert(noise_m_.end(), other.noise_m_.begin(), other.noise_m_.end());
+  noise_m_.Merge(other.noise_m_);
 }
 
 StepCountSummary StepCountAccumulator::Finalize() const {
@@ -32,8 +30,8 @@ StepCountSummary StepCountAccumulator::Finalize() const {
   if (frames_ == 0) return summary;
   for (int s = 0; s < kNumSteps; ++s) summary.count_per_frame[s] = count_sum_[s] / frames_;
   for (int c = 0; c < kNumCounters; ++c) summary.counter_per_frame[c] = counter_sum_[c] / frames_;
-  summary.noise_frames = static_cast<long>(noise_m_.size());
-  summary.noise_m_median = Median(noise_m_);
+  summary.noise_frames = noise_m_.count();
+  summary.noise_m_median = noise_m_.Median();
   return summary;
 }
 

@@ -2,9 +2,15 @@
 #include "metrics/timing.h"
 
 #include <algorithm>
-#include <numeric>
 
 namespace rpt::metrics {
+namespace {
+
+// The range of the time histograms: [0.01 us, 100 s).
+constexpr double kMinTimeUs = 0.01;
+constexpr int kTimeDecades = 10;
+
+}  // namespace
 
 double Median(std::vector<double> values) {
   if (values.empty()) return 0;
@@ -16,38 +22,41 @@ double Median(std::vector<double> values) {
   return 0.5 * (lower + upper);
 }
 
-namespace {
-double Mean(const std::vector<double>& values) {
-  return values.empty() ? 0 : std::accumulate(values.begin(), values.end(), 0.0) / values.size();
-}
-}  // namespace
+TimingAccumulator::TimingAccumulator(int warmup_frames)
+    : warmup_frames_(warmup_frames),
+      frame_us_(kMinTimeUs, kTimeDecades),
+      step_us_(kNumSteps, LogHistogram(kMinTimeUs, kTimeDecades)) {}
 
 void TimingAccumulator::Add(const FrameStats& stats) {
   if (seen_++ < warmup_frames_) return;
-  frame_us_.push_back(stats.total_us);
-  for (int s = 0; s < kNumSteps; ++s) step_us_[s].push_back(stats.time_us[s]);
+  frame_us_sum_ += stats.total_us;
+  frame_us_.Add(stats.total_us);
+  for (int s = 0; s < kNumSteps; ++s) {
+    step_us_sum_[s] += stats.time_us[s];
+    step_us_[s].Add(stats.time_us[s]);
+  }
 }
 
 void TimingAccumulator::Merge(const TimingAccumulator& other) {
-  frame_us_.insert(frame_us_.end(), other.frame_us_.begin(), other.frame_us_.end());
+  frame_us_sum_ += other.frame_us_sum_;
+  frame_us_.Merge(other.frame_us_);
   for (int s = 0; s < kNumSteps; ++s) {
-    step_us_[s].insert(step_us_[s].end(), other.step_us_[s].begin(), other.step_us_[s].end());
+    step_us_sum_[s] += other.step_us_sum_[s];
+    step_us_[s].Merge(other.step_us_[s]);
   }
 }
 
 TimingSummary TimingAccumulator::Finalize() const {
   TimingSummary summary;
-  summary.frames = static_cast<int>(frame_us_.size());
-  if (frame_us_.empty()) return summary;
-  summary.frame_us_median = Median(frame_us_);
-  summary.frame_us_mean = Mean(frame_us_);
-  std::vector<double> sorted = frame_us_;
-  std::sort(sorted.begin(), sorted.end());
-  summary.frame_us_p90 = sorted[std::min(sorted.size() - 1, static_cast<size_t>(0.9 * sorted.size()))];
+  summary.frames = static_cast<int>(frame_us_.count());
+  if (summary.frames == 0) return summary;
+  summary.frame_us_median = frame_us_.Median();
+  summary.frame_us_mean = frame_us_sum_ / summary.frames;
+  summary.frame_us_p90 = frame_us_.Quantile(0.9);
   summary.fps = summary.frame_us_mean > 0 ? 1e6 / summary.frame_us_mean : 0;
   for (int s = 0; s < kNumSteps; ++s) {
-    summary.step_us_median[s] = Median(step_us_[s]);
-    summary.step_us_mean[s] = Mean(step_us_[s]);
+    summary.step_us_median[s] = step_us_[s].Median();
+    summary.step_us_mean[s] = step_us_sum_[s] / summary.frames;
   }
   return summary;
 }

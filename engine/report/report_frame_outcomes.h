@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // Per-frame outcomes of an evaluation for the HTML report: which GT persons were missed, which
 // predictions are invalid, each frame's MPJPE, and recall as a function of the distance threshold.
-// Everything comes from the metrics code (MetricsAccumulator records and SelectMatches), so the
-// report's per-frame numbers follow the run's matching rule and add up to its summary.
+// Everything comes from the metrics code (each frame's pairs and matches as MetricsAccumulator::Add
+// resolved them, LastFrame()), so the report's per-frame numbers follow the run's matching rule and
+// add up to its summary.
 #pragma once
 
 #include <string>

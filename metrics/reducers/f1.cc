@@ -4,10 +4,10 @@
 
 namespace rpt::metrics {
 
-void ReduceF1(const EvalRecords& records, const MatchSets& matches, const EvalOptions&, MetricsResult* result) {
-  const int tp = CountMatches(matches.at_gate);
-  const int fp = records.num_pred_counted - tp;
-  const int fn = records.num_gt - tp;
+void ReduceF1(const MetricTotals& totals, const EvalOptions&, MetricsResult* result) {
+  const int tp = totals.counts.num_matches;
+  const int fp = totals.counts.num_pred_counted - tp;
+  const int fn = totals.counts.num_gt - tp;
   result->f1 = Percent(2.0 * tp, 2.0 * tp + fp + fn);
 }
 

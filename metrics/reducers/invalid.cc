@@ -4,9 +4,9 @@
 
 namespace rpt::metrics {
 
-void ReduceInvalid(const EvalRecords& records, const MatchSets& matches, const EvalOptions&, MetricsResult* result) {
-  const int false_positives = records.num_pred_counted - CountMatches(matches.at_gate);
-  result->invalid = Percent(false_positives, records.num_pred_counted);
+void ReduceInvalid(const MetricTotals& totals, const EvalOptions&, MetricsResult* result) {
+  const int false_positives = totals.counts.num_pred_counted - totals.counts.num_matches;
+  result->invalid = Percent(false_positives, totals.counts.num_pred_counted);
 }
 
 }  // namespace rpt::metrics

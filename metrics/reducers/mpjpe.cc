@@ -5,22 +5,28 @@
 
 namespace rpt::metrics {
 
-void ReduceMpjpe(const EvalRecords& records, const MatchSets& matches, const EvalOptions&, MetricsResult* result) {
-  double sum = 0.0;
-  int count = 0;
-  int unaligned = 0;
-  for (size_t r = 0; r < records.pairs.size(); ++r) {
-    if (!matches.at_gate[r]) continue;
-    const double error = records.pairs[r].report_error_mm;
-    if (std::isnan(error)) {
-      ++unaligned;
+void MpjpeTotals::Fold(const FrameRecords& frame) {
+  for (const PairRecord& pair : frame.pairs) {
+    if (!(pair.flags & kMatch)) continue;
+    if (std::isnan(pair.report_error_mm)) {
+      ++num_unaligned;
     } else {
-      sum += error;
+      sum_mm += pair.report_error_mm;
       ++count;
     }
   }
-  result->mpjpe_mm = count > 0 ? sum / count : kNaN;
-  result->num_unaligned_matches = unaligned;
+}
+
+void MpjpeTotals::Merge(const MpjpeTotals& other) {
+  sum_mm += other.sum_mm;
+  count += other.count;
+  num_unaligned += other.num_unaligned;
+}
+
+void ReduceMpjpe(const MetricTotals& totals, const EvalOptions&, MetricsResult* result) {
+  const MpjpeTotals& mpjpe = totals.mpjpe;
+  result->mpjpe_mm = mpjpe.count > 0 ? mpjpe.sum_mm / mpjpe.count : kNaN;
+  result->num_unaligned_matches = mpjpe.num_unaligned;
 }
 
 }  // namespace rpt::metrics

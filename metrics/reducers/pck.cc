@@ -6,14 +6,10 @@
 
 namespace rpt::metrics {
 
-void ReducePck(const EvalRecords& records, const MatchSets& matches, const EvalOptions& options,
-               MetricsResult* result) {
-  int hits_100 = 0, hits_500 = 0, matched_valid = 0, missing = 0;
-  for (size_t r = 0; r < records.pairs.size(); ++r) {
-    if (!matches.at_gate[r]) continue;
-    const Eigen::ArrayXd& errors = records.pairs[r].joint_errors;
-    for (Eigen::Index j = 0; j < errors.size(); ++j) {
-      const double e = errors(j);
+void PckTotals::Fold(const FrameRecords& frame) {
+  for (const PairRecord& pair : frame.pairs) {
+    if (!(pair.flags & kMatch)) continue;
+    for (const double e : pair.joint_errors) {
       if (std::isnan(e)) continue;  // GT-invalid
       ++matched_valid;
       if (std::isinf(e)) ++missing;
@@ -21,12 +17,23 @@ void ReducePck(const EvalRecords& records, const MatchSets& matches, const EvalO
       if (e < 500.0) ++hits_500;
     }
   }
+}
+
+void PckTotals::Merge(const PckTotals& other) {
+  hits_100 += other.hits_100;
+  hits_500 += other.hits_500;
+  matched_valid += other.matched_valid;
+  missing += other.missing;
+}
+
+void ReducePck(const MetricTotals& totals, const EvalOptions& options, MetricsResult* result) {
   int all_valid = 0;
-  for (const int n : records.gt_valid_per_joint) all_valid += n;
-  const int denominator = options.pck_denominator == PckDenominator::kAllGt ? all_valid : matched_valid;
-  result->pck_100 = Percent(hits_100, denominator);
-  result->pck_500 = Percent(hits_500, denominator);
-  result->num_missing_pred_joints = missing;
+  for (const int n : totals.counts.gt_valid_per_joint) all_valid += n;
+  const PckTotals& pck = totals.pck;
+  const int denominator = options.pck_denominator == PckDenominator::kAllGt ? all_valid : pck.matched_valid;
+  result->pck_100 = Percent(pck.hits_100, denominator);
+  result->pck_500 = Percent(pck.hits_500, denominator);
+  result->num_missing_pred_joints = pck.missing;
 }
 
 }  // namespace rpt::metrics

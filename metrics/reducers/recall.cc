@@ -4,9 +4,21 @@
 
 namespace rpt::metrics {
 
-void ReduceRecall(const EvalRecords& records, const MatchSets& matches, const EvalOptions&, MetricsResult* result) {
-  result->recall_100 = Percent(CountMatches(matches.at_100), records.num_gt);
-  result->recall_500 = Percent(CountMatches(matches.at_500), records.num_gt);
+void RecallTotals::Fold(const FrameRecords& frame) {
+  for (const PairRecord& pair : frame.pairs) {
+    num_matches_100 += (pair.flags & kMatch100) ? 1 : 0;
+    num_matches_500 += (pair.flags & kMatch500) ? 1 : 0;
+  }
+}
+
+void RecallTotals::Merge(const RecallTotals& other) {
+  num_matches_100 += other.num_matches_100;
+  num_matches_500 += other.num_matches_500;
+}
+
+void ReduceRecall(const MetricTotals& totals, const EvalOptions&, MetricsResult* result) {
+  result->recall_100 = Percent(totals.recall.num_matches_100, totals.counts.num_gt);
+  result->recall_500 = Percent(totals.recall.num_matches_500, totals.counts.num_gt);
 }
 
 }  // namespace rpt::metrics

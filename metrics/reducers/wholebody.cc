@@ -5,28 +5,36 @@
 
 namespace rpt::metrics {
 
-void ReduceWholeBody(const EvalRecords& records, const MatchSets& matches, const EvalOptions& options,
-                     MetricsResult* result) {
-  result->wholebody.clear();
-  if (!options.wholebody_groups) return;
-  const size_t num_groups = WholeBodyGroups().size();
-  std::vector<double> sum(num_groups, 0.0);
-  std::vector<int> count(num_groups, 0);
-  for (size_t r = 0; r < records.pairs.size(); ++r) {
-    if (!matches.at_gate[r]) continue;
-    const std::vector<double>& errors = records.pairs[r].group_errors;
-    for (size_t k = 0; k < errors.size(); ++k) {
-      if (std::isnan(errors[k])) continue;
-      sum[k] += errors[k];
+void WholeBodyTotals::Fold(const FrameRecords& frame) {
+  if (!frame.group_num_joints.empty()) group_num_joints = frame.group_num_joints;
+  for (const PairRecord& pair : frame.pairs) {
+    if (!(pair.flags & kMatch)) continue;
+    for (size_t k = 0; k < pair.group_errors.size(); ++k) {
+      if (std::isnan(pair.group_errors[k])) continue;
+      sum_mm[k] += pair.group_errors[k];
       ++count[k];
     }
   }
-  for (size_t k = 0; k < num_groups; ++k) {
+}
+
+void WholeBodyTotals::Merge(const WholeBodyTotals& other) {
+  for (size_t k = 0; k < sum_mm.size(); ++k) {
+    sum_mm[k] += other.sum_mm[k];
+    count[k] += other.count[k];
+  }
+  if (!other.group_num_joints.empty()) group_num_joints = other.group_num_joints;
+}
+
+void ReduceWholeBody(const MetricTotals& totals, const EvalOptions& options, MetricsResult* result) {
+  result->wholebody.clear();
+  if (!options.wholebody_groups) return;
+  const WholeBodyTotals& wholebody = totals.wholebody;
+  for (size_t k = 0; k < WholeBodyGroups().size(); ++k) {
     GroupResult group;
     group.name = WholeBodyGroups()[k].name;
-    group.num_persons = count[k];
-    group.num_joints = records.group_num_joints[k];
-    group.mpjpe_mm = count[k] > 0 ? sum[k] / count[k] : kNaN;
+    group.num_persons = wholebody.count[k];
+    group.num_joints = wholebody.group_num_joints.empty() ? 0 : wholebody.group_num_joints[k];
+    group.mpjpe_mm = wholebody.count[k] > 0 ? wholebody.sum_mm[k] / wholebody.count[k] : kNaN;
     result->wholebody.push_back(group);
   }
 }

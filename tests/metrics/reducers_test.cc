@@ -1,50 +1,61 @@
 // SPDX-License-Identifier: MIT
-// The metric reducers are pure functions of hand-made records (no accumulator involved).
+// The metric families folded over hand-made frame records and reduced (no accumulator involved).
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "metrics/reducers/reducers.h"
 
 namespace rpt::metrics {
 namespace {
 
-// Two GT persons, three counted predictions: a 40 mm match, a 300 mm near miss, and one without GT.
-EvalRecords ThreePredictions() {
-  EvalRecords records;
-  records.evaluated = {"a", "b"};
-  records.num_frames = 2;
-  records.num_frames_with_gt = 1;
-  records.num_gt = 2;
-  records.num_pred_counted = 3;
-  records.num_pred_total = 3;
-  records.gt_valid_per_joint = {2, 2};
-  auto pair = [](int gt_id, double error, double score, Eigen::ArrayXd joints) {
+// Two frames: the first with two GT persons and two predictions, a 40 mm match and a 300 mm match
+// (not one at 100 mm); the second without GT and one prediction. All predictions are counted.
+std::vector<FrameRecords> ThreePredictions() {
+  auto pair = [](int pred_idx, int gt_idx, double error, double score, std::uint8_t flags, Eigen::ArrayXd joints) {
     PairRecord record;
-    record.match = MatchRecord{gt_id, error, score};
-    record.flags = kNearest;
+    record.pred_idx = pred_idx;
+    record.gt_idx = gt_idx;
+    record.error_mm = error;
+    record.score = score;
+    record.flags = flags;
     record.report_error_mm = error;
     record.joint_errors = joints;
     record.report_joint_errors = joints;
     return record;
   };
-  records.pairs.push_back(pair(0, 40.0, 0.9, (Eigen::ArrayXd(2) << 30.0, 50.0).finished()));
-  records.pairs.push_back(pair(1, 300.0, 0.8, (Eigen::ArrayXd(2) << 200.0, 400.0).finished()));
-  records.pairs.push_back(pair(-1, INFINITY, 0.7, Eigen::ArrayXd()));
-  return records;
+  FrameRecords with_gt;
+  EvalPerson person;
+  person.xyz_mm.setZero(3, 2);
+  person.valid.setConstant(2, true);
+  with_gt.gt = {person, person};
+  with_gt.kept_gt_idx = {0, 1};
+  with_gt.num_predictions = 2;
+  with_gt.pairs.push_back(
+      pair(0, 0, 40.0, 0.9, kNearest | kMatch | kMatch100 | kMatch500, (Eigen::ArrayXd(2) << 30.0, 50.0).finished()));
+  with_gt.pairs.push_back(
+      pair(1, 1, 300.0, 0.8, kNearest | kMatch | kMatch500, (Eigen::ArrayXd(2) << 200.0, 400.0).finished()));
+  FrameRecords without_gt;
+  without_gt.num_predictions = 1;
+  without_gt.pairs.push_back(pair(0, -1, INFINITY, 0.7, kNearest, Eigen::ArrayXd()));
+  return {with_gt, without_gt};
 }
 
-TEST(MetricReducers, RecallInvalidF1AndMpjpeFromRecords) {
-  const EvalRecords records = ThreePredictions();
-  EvalOptions options;
-  options.match_threshold_mm = 500.0;
-  const MatchSets matches = SelectMatches(records, options);
-  ASSERT_EQ(matches.at_gate, (std::vector<bool>{true, true, false}));
-  EXPECT_EQ(matches.at_100, (std::vector<bool>{true, false, false}));
+MetricsResult Reduce(const MetricTotals& totals, const EvalOptions& options) {
   MetricsResult result;
   for (const MetricReducer reduce : {ReduceRecall, ReduceInvalid, ReduceF1, ReduceMpjpe, ReducePck, ReduceCounts}) {
-    reduce(records, matches, options, &result);
+    reduce(totals, options, &result);
   }
+  return result;
+}
+
+TEST(MetricReducers, RecallInvalidF1AndMpjpeFromFoldedFrames) {
+  EvalOptions options;
+  options.evaluated_joints = {"a", "b"};
+  MetricTotals totals(options);
+  for (const FrameRecords& frame : ThreePredictions()) totals.Fold(frame);
+  const MetricsResult result = Reduce(totals, options);
   EXPECT_DOUBLE_EQ(result.recall_100, 50.0);
   EXPECT_DOUBLE_EQ(result.recall_500, 100.0);
   EXPECT_DOUBLE_EQ(result.invalid, 100.0 / 3.0);
@@ -54,6 +65,21 @@ TEST(MetricReducers, RecallInvalidF1AndMpjpeFromRecords) {
   EXPECT_DOUBLE_EQ(result.pck_500, 100.0);
   EXPECT_EQ(result.num_matches, 2);
   EXPECT_EQ(result.num_gt_persons, 2);
+  EXPECT_EQ(result.num_frames, 2);
+  EXPECT_EQ(result.num_frames_with_gt, 1);
+
+  // Folding the frames into two totals and merging them gives the same numbers.
+  MetricTotals first(options), second(options);
+  first.Fold(ThreePredictions()[0]);
+  second.Fold(ThreePredictions()[1]);
+  first.Merge(second);
+  const MetricsResult merged = Reduce(first, options);
+  EXPECT_EQ(merged.recall_100, result.recall_100);
+  EXPECT_EQ(merged.invalid, result.invalid);
+  EXPECT_EQ(merged.f1, result.f1);
+  EXPECT_EQ(merged.mpjpe_mm, result.mpjpe_mm);
+  EXPECT_EQ(merged.pck_100, result.pck_100);
+  EXPECT_EQ(merged.num_frames, 2);
 }
 
 TEST(MetricReducers, EveryReducerIsListedOnce) {
