@@ -31,6 +31,7 @@
 #include "cli/sweep_html.h"
 #include "cli/thread_count.h"
 #include "core/errors.h"
+#include "core/option_codec.h"
 #include "core/text.h"
 #include "datasets/dataset_request.h"
 #include "datasets/io/json_file.h"

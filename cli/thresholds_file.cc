@@ -5,12 +5,13 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
-#include "core/closest_name.h"
 #include "cli/config_args.h"
 #include "cli/json_text.h"
 #include "cli/results_writer.h"
+#include "core/closest_name.h"
 #include "core/errors.h"
 #include "core/text.h"
+#include "datasets/dataset_params.h"
 #include "datasets/io/json_file.h"
 #include "datasets/registry.h"
 
@@ -126,9 +127,8 @@ ThresholdEvaluation ReadEvaluation(const Validator& v, const Json& e, const std:
   const std::vector<std::string> param_names = DatasetParamNames(input.dataset);
   for (const auto& [key, value] : v.Object(e, "params", where).items()) {
     if (!input.dataset.empty() && std::find(param_names.begin(), param_names.end(), key) == param_names.end()) {
-      v.Fail(io::JsonPointerJoin(where + "/params", key), "dataset '" + input.dataset + "' has no parameter '" + key +
-                                                              "'" + DidYouMean(key, param_names) +
-                                                              " (valid: " + Join(param_names) + ")");
+      v.Fail(io::JsonPointerJoin(where + "/params", key),
+             dataset_params::UnknownParamProblem(input.dataset, key, param_names));
     }
     if (!value.is_primitive() || value.is_null()) {
       v.Fail(io::JsonPointerJoin(where + "/params", key), "expected a string, number or boolean, got " +

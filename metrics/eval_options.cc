@@ -4,7 +4,6 @@
 #include <set>
 #include <string>
 
-#include "core/errors.h"
 #include "core/options_check.h"
 
 namespace rpt::metrics {
@@ -13,7 +12,7 @@ const JointNames& EvalOptions::EvaluatedJoints() const {
   return evaluated_joints.empty() ? EvaluationJoints13() : evaluated_joints;
 }
 
-void EvalOptions::Check() const {
+std::string EvalOptions::Check() const {
   OptionsChecker checker("metrics");
   VisitFields(checker, *this);
   std::set<std::string> seen;
@@ -26,7 +25,7 @@ void EvalOptions::Check() const {
                         std::to_string(legacy_pcp_gt_joints.size()),
                     "legacy_pcp_gt_joints");
   }
-  if (!checker.error().empty()) throw ConfigError(checker.error());
+  return checker.error();
 }
 
 }  // namespace rpt::metrics
