@@ -33,6 +33,7 @@
 #include "cli/threads_option.h"
 #include "engine/thread_count.h"
 #include "core/errors.h"
+#include "core/option_codec.h"
 #include "core/text.h"
 #include "datasets/dataset_request.h"
 #include "datasets/io/json_file.h"

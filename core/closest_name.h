@@ -49,4 +49,12 @@ inline std::string DidYouMean(std::string_view name, const std::vector<std::stri
   return closest.empty() ? std::string() : " (did you mean '" + closest + "'?)";
 }
 
+// "unknown <noun> '<name>' (did you mean 'x'?) (<known>)": the one message for an unknown option
+// key, section or dataset parameter; `known` says what there is ("filter has: min_match_score").
+inline std::string UnknownNameProblem(std::string_view noun, std::string_view name,
+                                      const std::vector<std::string>& candidates, std::string_view known) {
+  return "unknown " + std::string(noun) + " '" + std::string(name) + "'" + DidYouMean(name, candidates) + " (" +
+         std::string(known) + ")";
+}
+
 }  // namespace rpt

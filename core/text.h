@@ -14,6 +14,14 @@ inline void AppendItem(std::string* list, std::string_view item, std::string_vie
   list->append(item);
 }
 
+// `text` without leading and trailing blanks (spaces, tabs, line breaks).
+inline std::string_view TrimBlanks(std::string_view text) {
+  constexpr std::string_view kBlanks = " \t\r\n";
+  const size_t first = text.find_first_not_of(kBlanks);
+  if (first == std::string_view::npos) return {};
+  return text.substr(first, text.find_last_not_of(kBlanks) - first + 1);
+}
+
 // "a, b, c".
 inline std::string Join(const std::vector<std::string>& items, std::string_view separator = ", ") {
   std::string out;

@@ -5,6 +5,7 @@
 #include <charconv>
 
 #include "core/errors.h"
+#include "core/option_codec.h"
 #include "datasets/io/number_text.h"
 
 namespace rpt {
@@ -19,20 +20,6 @@ int ParseInt(std::string_view text, const std::string& what) {
 }
 
 }  // namespace
-
-std::vector<std::string> SplitList(const std::string& text) {
-  std::vector<std::string> out;
-  size_t start = 0;
-  while (start <= text.size()) {
-    const size_t end = std::min(text.find(',', start), text.size());
-    std::string item = text.substr(start, end - start);
-    item.erase(0, item.find_first_not_of(" \t"));
-    item.erase(item.find_last_not_of(" \t") + 1);
-    if (!item.empty()) out.push_back(item);
-    start = end + 1;
-  }
-  return out;
-}
 
 std::vector<int> ParseFrameRanges(const std::string& text, const std::string& what) {
   std::vector<int> frames;

@@ -50,8 +50,6 @@ struct DatasetRequest {
   std::map<std::string, std::string> params;  // key=value from the command line (parsed by the reader)
 };
 
-// Parses "a,b,c" into {"a","b","c"} (empty items dropped).
-std::vector<std::string> SplitList(const std::string& text);
 // Parses frame selections like "300-600", "350-470,650-750", "0-3199:12" (every 12th) into a
 // sorted list of frame numbers. Throws ConfigError naming `what` on malformed text.
 std::vector<int> ParseFrameRanges(const std::string& text, const std::string& what);

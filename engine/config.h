@@ -31,26 +31,27 @@ void VisitSections(Visitor& v, Self& config) {
 
 struct ConfigOptionInfo {
   std::string key;            // "section.name"
-  std::string type;           // bool, int, number, one of a|b|c, list of joint names, [x, y, z]
-  std::string default_value;  // as JSON
+  std::string type;           // what a value must be (OptionTypeText): "number in [0, 1]", "a | b", ...
+  std::string default_value;  // as --set text (FormatOption)
   OptionSpec spec;            // help, unit, range
 };
 // Every option, in dump order.
 std::vector<ConfigOptionInfo> ConfigOptions();
 
-// Sets one option from text (`--set key=value`): booleans true/false, numbers, enumeration names;
-// lists as JSON (["a", "b"]) or comma lists (a,b); 3-vectors as [x, y, z] or x,y,z.
-// `where` names the source in error messages.
+// Sets one option from text (`--set key=value`) by the rules of core/option_codec.h; a bad value
+// throws ConfigError "<where>: <key>: '<value>' is not ...", an unknown key one with "did you mean".
 void SetConfigOption(const std::string& key, const std::string& value, const std::string& where, Config* config);
 // Parses "key=value" and calls SetConfigOption.
 void ApplyConfigOverride(const std::string& assignment, Config* config);
 // Current value of an option as text (same syntax SetConfigOption accepts).
 std::string GetConfigOption(const Config& config, const std::string& key);
 
-// Applies a JSON config file {"section": {"key": value, ...}, ...} on top of `config`.
+// Applies a JSON config file {"section": {"key": value, ...}, ...} on top of `config`: each value
+// goes through SetConfigOption as its text (a JSON string as is, others as JSON writes them), with
+// the file and the JSON pointer as `where`; then CheckConfig.
 void LoadConfigFile(const std::filesystem::path& path, Config* config);
 // The configuration as JSON text that LoadConfigFile reads back. With comments, each option gets a
-// trailing "// type, unit, range: help" and the text is documentation, no longer JSON.
+// trailing "// value, unit: help" and the text is documentation, no longer JSON.
 std::string DumpConfig(const Config& config, bool with_comments);
 // docs/options.md: every option's default, type, unit, range and help as Markdown tables.
 std::string ConfigMarkdown();
@@ -60,7 +61,7 @@ std::string ConfigMarkdown();
 // ConfigWarnings.
 Config ResolveConfig(const std::filesystem::path& file, const std::vector<std::string>& overrides);
 
-// Runs the options' own checks; throws ConfigError "section.key: problem".
+// Runs the options' Check(); throws ConfigError "section.key: problem".
 void CheckConfig(const Config& config);
 // Valid settings without effect (TriangulatorOptions::Warnings), one line each.
 std::vector<std::string> ConfigWarnings(const Config& config);

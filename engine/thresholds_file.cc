@@ -10,6 +10,7 @@
 #include "engine/outputs/results_writer.h"
 #include "core/errors.h"
 #include "core/text.h"
+#include "datasets/dataset_params.h"
 #include "datasets/io/json_file.h"
 #include "engine/dataset_registry.h"
 
@@ -125,9 +126,8 @@ ThresholdEvaluation ReadEvaluation(const Validator& v, const Json& e, const std:
   const std::vector<std::string> param_names = DatasetParamNames(input.dataset);
   for (const auto& [key, value] : v.Object(e, "params", where).items()) {
     if (!input.dataset.empty() && std::find(param_names.begin(), param_names.end(), key) == param_names.end()) {
-      v.Fail(io::JsonPointerJoin(where + "/params", key), "dataset '" + input.dataset + "' has no parameter '" + key +
-                                                              "'" + DidYouMean(key, param_names) +
-                                                              " (valid: " + Join(param_names) + ")");
+      v.Fail(io::JsonPointerJoin(where + "/params", key),
+             dataset_params::UnknownParamProblem(input.dataset, key, param_names));
     }
     if (!value.is_primitive() || value.is_null()) {
       v.Fail(io::JsonPointerJoin(where + "/params", key), "expected a string, number or boolean, got " +

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "core/errors.h"
+#include "core/options_check.h"
 #include "metrics/matching.h"
 
 namespace rpt::metrics {
@@ -45,7 +46,7 @@ const std::vector<WholeBodyGroup>& WholeBodyGroups() {
 }
 
 MetricsAccumulator::MetricsAccumulator(const EvalOptions& options)
-    : options_((options.Check(), options)), totals_(options_) {
+    : options_((ThrowIfInvalid(options), options)), totals_(options_) {
   evaluated_ = options_.EvaluatedJoints();
   pcp_layout_ = MakeGenericPcpLayout(evaluated_);
 }

@@ -40,7 +40,7 @@ namespace rpt::metrics {
 
 class MetricsAccumulator {
  public:
-  // Throws rpt::ConfigError when options.Check() fails.
+  // Throws rpt::ConfigError with the problem of options.Check(), if any.
   explicit MetricsAccumulator(const EvalOptions& options = {});
 
   // Adds one frame. gt / predictions hold all persons of the frame (metres). `gt_names` and

@@ -7,7 +7,6 @@
 #include <type_traits>
 #include <vector>
 
-#include "core/errors.h"
 #include "core/options_check.h"
 
 namespace rpt::metrics {
@@ -16,7 +15,7 @@ const JointNames& EvalOptions::EvaluatedJoints() const {
   return evaluated_joints.empty() ? EvaluationJoints13() : evaluated_joints;
 }
 
-void EvalOptions::Check() const {
+std::string EvalOptions::Check() const {
   OptionsChecker checker("metrics");
   VisitFields(checker, *this);
   std::set<std::string> seen;
@@ -29,7 +28,7 @@ void EvalOptions::Check() const {
                         std::to_string(legacy_pcp_gt_joints.size()),
                     "legacy_pcp_gt_joints");
   }
-  if (!checker.error().empty()) throw ConfigError(checker.error());
+  return checker.error();
 }
 
 std::string FirstDifferentOption(const EvalOptions& a, const EvalOptions& b) {

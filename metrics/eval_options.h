@@ -123,8 +123,9 @@ struct EvalOptions {
   // Names of the 14 GT joints in Shelf14 order (empty = Shelf14Joints()); lets a reader keep its own names.
   JointNames legacy_pcp_gt_joints;
 
-  // Throws rpt::ConfigError "metrics.key: problem" for the first invalid value.
-  void Check() const;
+  // Empty when valid; otherwise "metrics.key: problem" for the first invalid value (the
+  // convention of core/options_check.h).
+  std::string Check() const;
   // evaluated_joints, or EvaluationJoints13() when empty.
   const JointNames& EvaluatedJoints() const;
 };

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/errors.h"
+#include "core/options_check.h"
 #include "core/pipeline/choose_core_joints.h"
 #include "core/pipeline/group.h"
 #include "core/pipeline/view_geometry.h"
@@ -39,7 +40,7 @@ std::vector<DerivedJointRule> ResolveDerivedJoints(const JointNames& input_joint
 }  // namespace
 
 TriangulatorModel BuildModel(std::vector<Camera> cameras, JointNames input_joints, TriangulatorOptions options) {
-  if (const std::string error = options.Check(); !error.empty()) throw ConfigError(error);
+  ThrowIfInvalid(options);
   if (cameras.size() < 2) throw ConfigError("the triangulator needs at least 2 cameras, got " + std::to_string(cameras.size()));
   for (const Camera& camera : cameras) {
     if (const std::string error = camera.Validate(); !error.empty()) throw ConfigError(error);

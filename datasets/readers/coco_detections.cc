@@ -8,9 +8,10 @@
 #include <unordered_map>
 
 #include "core/errors.h"
-#include "datasets/io/number_text.h"
+#include "core/options_check.h"
 #include "datasets/input_warnings.h"
 #include "datasets/io/json_file.h"
+#include "datasets/io/number_text.h"
 #include "datasets/readers/generic_detections.h"
 #include "datasets/readers/generic_internal.h"
 
@@ -99,12 +100,18 @@ std::unordered_map<std::int64_t, ViewKey> AnnotationImages(const CocoDetectionsO
 
 }  // namespace
 
+std::string CocoDetectionsOptions::Check() const {
+  OptionsChecker checker("coco");
+  checker("min_score", min_score, OptionSpec{.min = 0});
+  if (mapping == CocoImageMapping::kAnnotationImages && annotation_file.empty()) {
+    checker.Require("the annotation-images mapping needs an annotation file with \"images\"", "annotation_file");
+  }
+  return checker.error();
+}
+
 Detections ReadCocoDetections(const std::filesystem::path& path, const CocoDetectionsOptions& options) {
   const std::string source = Source(path);
-  if (!(options.min_score >= 0)) throw ConfigError("COCO detections: min_score must be >= 0");
-  if (options.mapping == CocoImageMapping::kAnnotationImages && options.annotation_file.empty()) {
-    throw ConfigError("COCO detections: the annotation-images mapping needs an annotation file with \"images\"");
-  }
+  ThrowIfInvalid(options);
   if (options.mapping == CocoImageMapping::kAnnotationImages) {
     const PathMapper check(options.file_name_mapping, "COCO file_name mapping");  // ConfigError before reading files
   }

@@ -37,6 +37,9 @@ struct CocoDetectionsOptions {
   std::string keypoints_key;
   // Detections with "score" below this are dropped (0 keeps all).
   double min_score = 0;
+
+  // "" when valid, else "coco.key: problem" (core/options_check.h).
+  std::string Check() const;
 };
 
 // Joint names are COCO-17 (or COCO-WholeBody for 133 points). Joint scores in (1, 1.5] are

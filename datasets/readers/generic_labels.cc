@@ -11,8 +11,9 @@
 #include <unordered_set>
 
 #include "core/errors.h"
-#include "datasets/input_warnings.h"
+#include "core/options_check.h"
 #include "datasets/camera_plausibility.h"
+#include "datasets/input_warnings.h"
 #include "datasets/io/json_file.h"
 #include "datasets/io/text_file.h"
 #include "datasets/readers/detections_file.h"
@@ -226,8 +227,10 @@ struct SequenceBuild {
 
 }  // namespace
 
+std::string LabelsOptions::Check() const { return CheckOptionRanges("generic", *this); }
+
 std::vector<Sequence> ReadLabels(const std::filesystem::path& path, const LabelsOptions& options) {
-  if (!(options.fps > 0)) throw ConfigError("ReadLabels: fps must be positive");
+  ThrowIfInvalid(options);
   const std::string source = Source(path);
   const json root = io::LoadJsonFile(path);
   if (!root.is_array()) Fail(source, "/", "expected a list of labels, got " + std::string(root.type_name()));

@@ -24,6 +24,9 @@ namespace rpt {
 struct LabelsOptions {
   std::string split;  // keep only labels whose "splits" list contains it; empty = all labels
   double fps = 25;    // for timestamps when labels have no "timestamp" and no "fps"
+
+  // "" or "generic.key: problem", the ranges of VisitFields (core/options_check.h).
+  std::string Check() const;
 };
 
 template <class Visitor, OptionsOf<LabelsOptions> Self>

@@ -96,7 +96,6 @@ Options ParseOptions(const DatasetRequest& request) {
     o.npz = params.format == H3wbFormat::kNpz;
   }
   o.subjects = params.subjects;
-  if (o.subjects.empty()) throw ConfigError("h3wb: param subjects: no subject given");
   o.actions = params.actions;
   o.cameras_file = params.cameras_file;
   o.model = ToDistortionModel(params.distortion);
@@ -287,6 +286,10 @@ Poses2D View2D(const Clip& clip, const ClipFrame& frame, std::size_t c, const st
 }
 
 }  // namespace
+
+std::string H3wbParams::Check() const {
+  return subjects.empty() ? dataset_params::ParamKey("h3wb", "subjects") + ": no subject given" : std::string();
+}
 
 DatasetInfo H3wbInfo() {
   DatasetInfo info;

@@ -63,6 +63,9 @@ struct H3wbParams {
   int every = 1;
   int max_frames = 0;
   H3wbDetections detections = H3wbDetections::kNone;
+
+  // "" or "h3wb.subjects: no subject given" (core/options_check.h).
+  std::string Check() const;
 };
 
 template <class Visitor, OptionsOf<H3wbParams> Self>

@@ -94,7 +94,6 @@ Options ParseOptions(const DatasetRequest& request) {
   Options o;
   o.root = request.root;
   o.subjects = params.subjects;
-  if (o.subjects.empty()) throw ConfigError("human36m: param subjects: no subject given");
   o.actions = params.actions;
   o.exclude = params.exclude;
   o.model = ToDistortionModel(params.distortion);
@@ -402,6 +401,10 @@ DistortionModel ToDistortionModel(H36mLens lens) {
       break;
   }
   return DistortionModel::kH36M;
+}
+
+std::string Human36mParams::Check() const {
+  return subjects.empty() ? dataset_params::ParamKey("human36m", "subjects") + ": no subject given" : std::string();
 }
 
 DatasetInfo Human36mInfo() {

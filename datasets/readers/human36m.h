@@ -65,6 +65,9 @@ struct Human36mParams {
   H36mNoseProxy nose_proxy = H36mNoseProxy::kHead;
   int every = 1;
   int max_frames = 0;
+
+  // "" or "human36m.subjects: no subject given" (core/options_check.h).
+  std::string Check() const;
 };
 
 template <class Visitor, OptionsOf<Human36mParams> Self>

@@ -12,9 +12,10 @@
 #include <unordered_set>
 
 #include "core/errors.h"
-#include "datasets/io/number_text.h"
+#include "core/option_codec.h"
 #include "datasets/detections.h"
 #include "datasets/io/json_file.h"
+#include "datasets/io/number_text.h"
 #include "datasets/readers/coco_detections.h"
 
 namespace rpt {
@@ -160,7 +161,7 @@ DatasetInfo MvorInfo() {
 
 std::vector<Sequence> ReadMvor(const DatasetRequest& request) {
   const MvorParams params = ParseDatasetParams<MvorParams>("mvor", request);
-  const std::vector<int> days = ParseDays(params.days, dataset_params::What("mvor", "days"));
+  const std::vector<int> days = ParseDays(params.days, dataset_params::ParamKey("mvor", "days"));
   const bool with_detections = params.detections == MvorDetections::kOpenPose;
   const bool distortion = params.distortion == MvorDistortion::kFile;
   const bool paper_joints = params.evaluated == MvorEvaluated::kPaper;

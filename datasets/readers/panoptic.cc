@@ -10,10 +10,11 @@
 #include <map>
 
 #include "core/errors.h"
-#include "datasets/io/number_text.h"
-#include "datasets/input_warnings.h"
+#include "core/option_codec.h"
 #include "datasets/camera_plausibility.h"
+#include "datasets/input_warnings.h"
 #include "datasets/io/json_file.h"
+#include "datasets/io/number_text.h"
 
 namespace rpt {
 namespace {
@@ -65,7 +66,9 @@ std::vector<Camera> ReadCameras(const std::filesystem::path& path, const std::st
   }
 
   const std::vector<std::string> names = selection == "hd" ? hd_names : SplitList(selection);
-  if (names.empty()) throw ConfigError("panoptic: param cameras: no cameras selected by '" + selection + "'");
+  if (names.empty()) {
+    throw ConfigError(dataset_params::ParamKey("panoptic", "cameras") + ": no cameras selected by '" + selection + "'");
+  }
   std::vector<Camera> cameras;
   for (const std::string& name : names) {
     const auto it = by_name.find(name);
@@ -239,6 +242,11 @@ Camera ConvertPanopticCamera(const std::string& name, int width, int height, con
   return camera;
 }
 
+std::string PanopticParams::Check() const {
+  return sequences.empty() ? dataset_params::ParamKey("panoptic", "sequences") + ": no sequences selected"
+                           : std::string();
+}
+
 DatasetInfo PanopticInfo() {
   DatasetInfo info;
   info.name = "panoptic";
@@ -252,7 +260,6 @@ DatasetInfo PanopticInfo() {
 
 std::vector<std::unique_ptr<FrameSource>> StreamPanoptic(const DatasetRequest& request) {
   const PanopticParams params = ParseDatasetParams<PanopticParams>("panoptic", request);
-  if (params.sequences.empty()) throw ConfigError("panoptic: param sequences: no sequences selected");
   std::error_code ec;
   if (!std::filesystem::is_directory(request.root, ec)) {
     throw InputError("panoptic: root '" + request.root.string() + "' is not a directory");

@@ -74,6 +74,9 @@ struct PanopticParams {
   int every = 12;
   int max_frames = 0;
   bool skip_empty = true;
+
+  // "" or "panoptic.sequences: no sequences selected" (core/options_check.h).
+  std::string Check() const;
 };
 
 template <class Visitor, OptionsOf<PanopticParams> Self>

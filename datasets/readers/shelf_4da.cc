@@ -25,7 +25,7 @@ constexpr int kHeadBottom = 12;
 constexpr int kHeadTop = 13;
 constexpr int kNose = 15;  // derived, after the file's joints
 
-std::string What(const std::string& key) { return dataset_params::What(kName, key); }
+std::string What(const std::string& key) { return dataset_params::ParamKey(kName, key); }
 
 std::string FrameId(size_t index) {
   char digits[32];

@@ -8,9 +8,10 @@
 #include <filesystem>
 
 #include "core/errors.h"
-#include "datasets/io/number_text.h"
+#include "core/option_codec.h"
 #include "datasets/detections.h"
 #include "datasets/io/mat.h"
+#include "datasets/io/number_text.h"
 #include "datasets/readers/voxelpose_calibration.h"
 #include "datasets/readers/voxelpose_detections.h"
 
@@ -137,7 +138,7 @@ std::vector<int> SelectActors(const std::string& text, size_t num_actors, const 
 
 std::vector<Sequence> ReadShelfCampus(const ShelfCampusSpec& spec, const DatasetRequest& request) {
   const ShelfCampusParams params = ParseDatasetParams(spec.name, request, DefaultParams(spec));
-  const auto what = [&](const std::string& key) { return dataset_params::What(spec.name, key); };
+  const auto what = [&](const std::string& key) { return dataset_params::ParamKey(spec.name, key); };
 
   const std::vector<int> frames = ParseFrameRanges(params.frames, what("frames"));
   const HeadNoseProxy nose_proxy = params.nose_proxy;

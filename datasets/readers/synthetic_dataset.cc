@@ -4,7 +4,8 @@
 #include <algorithm>
 
 #include "core/errors.h"
-#include "core/text.h"
+#include "core/option_codec.h"
+#include "core/options_check.h"
 #include "datasets/synthetic/detector_options.h"
 #include "datasets/synthetic/synthetic_sequence.h"
 
@@ -27,6 +28,16 @@ DistortionModel ToDistortionModel(SyntheticLens lens) {
 
 }  // namespace
 
+std::string SyntheticParams::Check() const {
+  OptionsChecker checker(kName);
+  VisitFields(checker, *this);
+  std::vector<std::string> profiles = synthetic::DetectorProfileNames();
+  profiles.push_back("none");
+  std::size_t index = 0;
+  checker.Require(option_codec::ParseName(noise, profiles, &index), "noise");
+  return checker.error();
+}
+
 DatasetInfo SyntheticInfo() {
   DatasetInfo info;
   info.name = kName;
@@ -41,11 +52,7 @@ std::vector<Sequence> ReadSynthetic(const DatasetRequest& request) {
 }
 
 std::unique_ptr<FrameSource> StreamSynthetic(const SyntheticParams& params) {
-  std::vector<std::string> profiles = synthetic::DetectorProfileNames();
-  profiles.push_back("none");
-  if (std::find(profiles.begin(), profiles.end(), params.noise) == profiles.end()) {
-    throw ConfigError(dataset_params::What(kName, "noise") + ": '" + params.noise + "' is not one of " + Join(profiles));
-  }
+  ThrowIfInvalid(params);
   synthetic::SceneOptions options;
   options.rig.num_cameras = params.cameras;
   options.num_people = params.people;

@@ -44,6 +44,10 @@ struct SyntheticParams {
   SyntheticLens distortion = SyntheticLens::kNone;
   std::string noise = "realistic";  // a synthetic::DetectorProfileNames() entry, or "none" (= perfect)
   std::uint64_t seed = 1;
+
+  // "" when valid, else "synthetic.key: problem": the ranges of VisitFields and a known detector
+  // profile (core/options_check.h).
+  std::string Check() const;
 };
 
 template <class Visitor, OptionsOf<SyntheticParams> Self>

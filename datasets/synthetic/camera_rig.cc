@@ -9,6 +9,7 @@
 #include <string>
 
 #include "core/errors.h"
+#include "core/options_check.h"
 #include "datasets/synthetic/random.h"
 
 namespace rpt::synthetic {
@@ -123,13 +124,35 @@ Eigen::Matrix3d LookAtRotation(const Eigen::Vector3d& center, const Eigen::Vecto
   return roll * rotation;
 }
 
-std::vector<Camera> MakeCameraRig(const RigOptions& options, uint64_t seed) {
-  if (options.num_cameras < 1) throw ConfigError("rig: num_cameras must be >= 1");
-  if (options.image_width <= 0 || options.image_height <= 0) throw ConfigError("rig: image size must be positive");
-  if (!(options.radius_m > 0.0)) throw ConfigError("rig: radius_m must be > 0");
+namespace {
+
+// The field of view a rig uses: the given one, or the lens model's default.
+double FieldOfViewDeg(const RigOptions& options) {
   const bool fisheye = options.distortion == DistortionModel::kFisheye;
-  const double fov_deg = options.horizontal_fov_deg > 0.0 ? options.horizontal_fov_deg : (fisheye ? 120.0 : 80.0);
-  if (fov_deg >= (fisheye ? 179.0 : 170.0)) throw ConfigError("rig: horizontal_fov_deg too large for the lens model");
+  return options.horizontal_fov_deg > 0.0 ? options.horizontal_fov_deg : (fisheye ? 120.0 : 80.0);
+}
+
+}  // namespace
+
+std::string RigOptions::Check() const {
+  OptionsChecker checker("rig");
+  checker("num_cameras", num_cameras, OptionSpec{.min = 1});
+  checker("image_width", image_width, OptionSpec{.min = 1});
+  checker("image_height", image_height, OptionSpec{.min = 1});
+  checker("radius_m", radius_m, OptionSpec{.min = 0, .min_exclusive = true});
+  const bool fisheye = distortion == DistortionModel::kFisheye;
+  if (!(FieldOfViewDeg(*this) < (fisheye ? 179.0 : 170.0))) {
+    std::string problem = "'";
+    problem.append(FormatNumber(horizontal_fov_deg)).append("' is too wide for the lens model (it must be below ");
+    checker.Require(problem.append(fisheye ? "179)" : "170)"), "horizontal_fov_deg");
+  }
+  return checker.error();
+}
+
+std::vector<Camera> MakeCameraRig(const RigOptions& options, uint64_t seed) {
+  ThrowIfInvalid(options);
+  const bool fisheye = options.distortion == DistortionModel::kFisheye;
+  const double fov_deg = FieldOfViewDeg(options);
 
   Rng rng(DeriveSeed(seed, 0x716));
   const bool ring = options.layout == RigLayout::kRing;

@@ -4,6 +4,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "core/camera.h"
@@ -25,12 +26,15 @@ struct RigOptions {
   int image_height = 1080;                 // px, image height
   double horizontal_fov_deg = 0.0;         // degrees across the image width; <= 0: 80 (none/opencv), 120 (fisheye)
   DistortionModel distortion = DistortionModel::kNone;  // lens model; coefficients randomised per camera
+
+  // "" when valid, else "rig.key: problem" (core/options_check.h).
+  std::string Check() const;
 };
 
 // Builds the rig. Deterministic in (options, seed). Every camera has a proper rotation
 // (orthonormal, det +1), K with square pixels and a principal point near the image centre, and
-// distortion coefficients that are monotonic well beyond the image corners. Throws ConfigError on
-// invalid options.
+// distortion coefficients that are monotonic well beyond the image corners. Throws ConfigError with
+// the problem of options.Check().
 std::vector<Camera> MakeCameraRig(const RigOptions& options, uint64_t seed);
 
 // Camera looking from `center` at `target` with world up +z, rolled by `roll_rad` about its

@@ -8,6 +8,8 @@
 #include <string>
 
 #include "core/errors.h"
+#include "core/option_codec.h"
+#include "core/options_check.h"
 #include "datasets/synthetic/person_motion.h"
 #include "datasets/synthetic/random.h"
 
@@ -274,14 +276,18 @@ class Animator {
   Eigen::Matrix3Xd joints_;
 };
 
-void CheckCommon(int num_people, int num_frames, double fps, const Eigen::Vector3d& room_size_m) {
-  if (num_people < 0) throw ConfigError("synthetic scene: num_people must be >= 0");
-  if (num_frames < 0) throw ConfigError("synthetic scene: num_frames must be >= 0");
-  if (!(fps > 0.0)) throw ConfigError("synthetic scene: fps must be > 0");
-  if (!(room_size_m.x() > 2.0 * kWallMargin + 0.2 && room_size_m.y() > 2.0 * kWallMargin + 0.2)) {
-    throw ConfigError("synthetic scene: room must be larger than " + std::to_string(2.0 * kWallMargin + 0.2) + " m");
+// The checks SceneOptions and CrossingOptions share.
+void CheckCommon(int num_people, int num_frames, double fps, const Eigen::Vector3d& room_size_m,
+                 OptionsChecker* checker) {
+  (*checker)("num_people", num_people, OptionSpec{.min = 0});
+  (*checker)("num_frames", num_frames, OptionSpec{.min = 0});
+  (*checker)("fps", fps, OptionSpec{.min = 0, .min_exclusive = true});
+  constexpr double kMinWidth = 2.0 * kWallMargin + 0.2;
+  if (!(room_size_m.x() > kMinWidth && room_size_m.y() > kMinWidth && room_size_m.z() >= 2.2)) {
+    std::string problem = "'";
+    problem.append(FormatOption(room_size_m)).append("' is too small (x and y must be above ");
+    checker->Require(problem.append(FormatNumber(kMinWidth)).append(" m, z at least 2.2 m)"), "room_size_m");
   }
-  if (!(room_size_m.z() >= 2.2)) throw ConfigError("synthetic scene: room must be at least 2.2 m high");
 }
 
 Scene MakeSceneShell(const RigOptions& rig, uint64_t seed, bool whole_body, const Eigen::Vector3d& center,
@@ -319,9 +325,23 @@ struct SceneStream::State {
   std::vector<double> heading, next_heading;
 };
 
+std::string SceneOptions::Check() const {
+  OptionsChecker checker("scene");
+  CheckCommon(num_people, num_frames, fps, room_size_m, &checker);
+  checker("min_separation_m", min_separation_m, OptionSpec{.min = 0});
+  return checker.error().empty() ? rig.Check() : checker.error();
+}
+
+std::string CrossingOptions::Check() const {
+  OptionsChecker checker("crossing");
+  CheckCommon(num_people, num_frames, fps, room_size_m, &checker);
+  checker("lane_spacing_m", lane_spacing_m, OptionSpec{.min = 0});
+  checker("speed_mps", speed_mps, OptionSpec{.min = 0, .min_exclusive = true});
+  return checker.error().empty() ? rig.Check() : checker.error();
+}
+
 SceneStream::SceneStream(const SceneOptions& options) : num_frames_(options.num_frames) {
-  CheckCommon(options.num_people, options.num_frames, options.fps, options.room_size_m);
-  if (!(options.min_separation_m >= 0.0)) throw ConfigError("synthetic scene: min_separation_m must be >= 0");
+  ThrowIfInvalid(options);
   shell_ = MakeSceneShell(options.rig, options.seed, options.whole_body, options.room_center_m, options.room_size_m,
                           options.fps);
   Rng body_rng(DeriveSeed(options.seed, 2));
@@ -366,9 +386,7 @@ Scene GenerateScene(const SceneOptions& options) {
 }
 
 Scene MakeCrossingScene(const CrossingOptions& options) {
-  CheckCommon(options.num_people, options.num_frames, options.fps, options.room_size_m);
-  if (!(options.lane_spacing_m >= 0.0)) throw ConfigError("crossing scene: lane_spacing_m must be >= 0");
-  if (!(options.speed_mps > 0.0)) throw ConfigError("crossing scene: speed_mps must be > 0");
+  ThrowIfInvalid(options);
   Scene scene = MakeSceneShell(options.rig, options.seed, options.whole_body, options.room_center_m,
                                options.room_size_m, options.fps);
   Rng rng(DeriveSeed(options.seed, 5));

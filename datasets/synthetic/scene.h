@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "core/camera.h"
@@ -25,6 +26,9 @@ struct SceneOptions {
   Eigen::Vector3d room_size_m{8.0, 8.0, 3.0};       // m, room box extent; people stay >= 0.65 m from the walls
   double min_separation_m = 0.8;                    // m, minimum horizontal distance between hip centres
   uint64_t seed = 1;                                // seeds the rig, the people and their paths
+
+  // "" when valid, else "scene.key: problem" or the rig's "rig.key: problem" (core/options_check.h).
+  std::string Check() const;
 };
 
 struct Scene {
@@ -39,7 +43,8 @@ struct Scene {
 // People walk between random waypoints inside the room at 0.6-1.5 m/s, steer around each other,
 // wait when blocked and occasionally stand still. Hip centres never come closer than
 // min_separation_m, every joint stays inside the room box. Deterministic in the options.
-// Throws ConfigError on invalid options (e.g. a room too small for the people).
+// Throws ConfigError with the problem of options.Check() (e.g. a room too small to walk in), or
+// when the people do not fit.
 Scene GenerateScene(const SceneOptions& options);
 
 // The scene of GenerateScene frame by frame, with the same numbers: the walk is simulated one
@@ -77,6 +82,9 @@ struct CrossingOptions {
   double lane_spacing_m = 0.6;                      // m, distance between neighbouring lanes = closest approach
   double speed_mps = 1.1;                           // m/s, mean walking speed (+-10% per person)
   uint64_t seed = 1;                                // seeds the rig, the bodies and the lane direction
+
+  // "" when valid, else "crossing.key: problem" or the rig's "rig.key: problem" (core/options_check.h).
+  std::string Check() const;
 };
 
 // People walking towards each other on nearly the same line (parallel lanes lane_spacing_m

@@ -44,20 +44,25 @@ TEST_F(CheckCommandTest, InvalidFilesExitWith2NamingFileAndJsonPathBeforeAnythin
     std::string expected;    // in the message, after "<file>: "
   };
   const Case cases[] = {
-      {R"({"name": "x", "datset": "synthetic"})", "/evaluations/1/datset: unknown key 'datset' (did you mean 'dataset'?)"},
-      {R"({"name": "x", "dataset": "shelff"})", "/evaluations/1/dataset: unknown dataset 'shelff' (did you mean 'shelf'?)"},
+      {R"({"name": "x", "datset": "synthetic"})",
+       "/evaluations/1/datset: unknown key 'datset' (did you mean 'dataset'?)"},
+      {R"({"name": "x", "dataset": "shelff"})",
+       "/evaluations/1/dataset: unknown dataset 'shelff' (did you mean 'shelf'?)"},
       {R"({"name": "x", "dataset": "synthetic", "min": {"recal500": 1}})",
        "/evaluations/1/min/recal500: unknown metric 'recal500' (did you mean 'recall500'?)"},
       {R"({"name": "x", "dataset": "synthetic", "max": {"mpjpe_mm": "30"}})",
        "/evaluations/1/max/mpjpe_mm: expected a number, got string"},
-      {R"({"name": "x", "dataset": "synthetic", "simulate": "yes"})", "/evaluations/1/simulate: expected true or false"},
+      {R"({"name": "x", "dataset": "synthetic", "simulate": "yes"})",
+       "/evaluations/1/simulate: expected true or false"},
       {R"({"name": 3, "dataset": "synthetic"})", "/evaluations/1/name: expected a string"},
       {R"({"dataset": "synthetic"})", "/evaluations/1: missing \"name\""},
       {R"({"name": "x", "dataset": "synthetic", "seed": -1})", "/evaluations/1/seed: expected a non-negative integer"},
       {R"({"name": "x", "dataset": "synthetic", "set": {"merge.no_such_option": 1}})", "/evaluations/1/set: "},
-      {R"({"name": "x", "dataset": "synthetic", "params": {"cameras": [1]}})", "/evaluations/1/params/cameras: expected"},
+      {R"({"name": "x", "dataset": "synthetic", "params": {"cameras": [1]}})",
+       "/evaluations/1/params/cameras: expected"},
       {R"({"name": "x", "dataset": "synthetic", "params": {"camras": 3}})",
-       "/evaluations/1/params/camras: dataset 'synthetic' has no parameter 'camras' (did you mean 'cameras'?)"},
+       "/evaluations/1/params/camras: unknown parameter 'camras' (did you mean 'cameras'?) (synthetic has: cameras, "
+       "people"},
   };
   for (const Case& c : cases) {
     const CheckRun run = RunCheck(dir_, "bad.json", std::string(R"({"evaluations": [)") + kTinyEvaluation + ", " +

@@ -92,6 +92,18 @@ TEST(GenericDetections, MalformedFilesNameFileAndPointer) {
               HasSubstr("single OpenPose file"));
 }
 
+TEST(CocoDetections, OptionsCheckNamesTheKey) {
+  CocoDetectionsOptions options;
+  EXPECT_EQ(options.Check(), "");
+  options.min_score = -1;
+  EXPECT_EQ(test::ConfigErrorOf([&] { ReadCocoDetections("unused.json", options); }),
+            "coco.min_score: '-1.0' is not a number >= 0");
+  options = {};
+  options.mapping = CocoImageMapping::kAnnotationImages;
+  EXPECT_EQ(options.Check(),
+            "coco.annotation_file: the annotation-images mapping needs an annotation file with \"images\"");
+}
+
 TEST(GenericDetections, WriterRefusesNaN) {
   test::TempDir dir;
   Detections detections = test::MakeDetections(2, {"a"}, CocoBodyJoints());

@@ -242,9 +242,14 @@ TEST(GenericLabels, RegistryPairTakesSplitAndFps) {
   EXPECT_EQ(sequences[0].frames.size(), 2u);
   EXPECT_DOUBLE_EQ(sequences[0].frames[1].timestamp_s, 2 / 50.0);
   request.params = {{"fps", "fast"}};
-  EXPECT_THAT(test::ConfigErrorOf([&] { ReadGeneric(request); }), HasSubstr("fps"));
+  EXPECT_EQ(test::ConfigErrorOf([&] { ReadGeneric(request); }),
+            "--param fps=fast: generic.fps: 'fast' is not a number > 0");
   request.params = {{"frames", "1-2"}};
-  EXPECT_THAT(test::ConfigErrorOf([&] { ReadGeneric(request); }), HasSubstr("no parameter 'frames'"));
+  EXPECT_EQ(test::ConfigErrorOf([&] { ReadGeneric(request); }),
+            "--param frames=1-2: unknown parameter 'frames' (generic has: split, fps)");
+  LabelsOptions options;
+  options.fps = 0;
+  EXPECT_EQ(test::ConfigErrorOf([&] { ReadLabels("unused.json", options); }), "generic.fps: '0.0' is not a number > 0");
 }
 
 TEST(GenericCommon, JointNamesAreCheckedWithSuggestions) {

@@ -467,13 +467,17 @@ TEST(PanopticReader, BadParamsAreConfigErrors) {
     params.emplace("sequences", "seqA");
     return test::ErrorMessage<ConfigError>([&] { ReadPanoptic(Request(dir.path(), params)); });
   };
-  EXPECT_THAT(config_error({{"every", "0"}}), HasSubstr("panoptic: param every: '0' is not an integer >= 1"));
+  EXPECT_THAT(config_error({{"every", "0"}}), HasSubstr("--param every=0: panoptic.every: '0' is not an integer >= 1"));
   EXPECT_THAT(config_error({{"max_frames", "-2"}}), HasSubstr("max_frames"));
-  EXPECT_THAT(config_error({{"skip_empty", "maybe"}}), HasSubstr("skip_empty: 'maybe' is not true or false"));
-  EXPECT_THAT(config_error({{"cameras", ","}}), HasSubstr("no cameras selected"));
-  EXPECT_THAT(config_error({{"interval", "3"}}), HasSubstr("no parameter 'interval'"));
+  EXPECT_THAT(config_error({{"skip_empty", "maybe"}}), HasSubstr("panoptic.skip_empty: 'maybe' is not true or false"));
+  EXPECT_THAT(config_error({{"cameras", ","}}), HasSubstr("panoptic.cameras: no cameras selected by ','"));
+  EXPECT_THAT(config_error({{"interval", "3"}}), HasSubstr("unknown parameter 'interval'"));
   EXPECT_EQ(PanopticParams{}.cameras, "00_03,00_06,00_12,00_13,00_23");
   EXPECT_THAT(config_error({{"camera", "00_03"}}), HasSubstr("did you mean 'cameras'?"));
+  EXPECT_EQ(test::ErrorMessage<ConfigError>([&] {
+              ReadPanoptic(Request(dir.path(), {{"sequences", ","}}));
+            }),
+            "panoptic.sequences: no sequences selected");
 }
 
 }  // namespace

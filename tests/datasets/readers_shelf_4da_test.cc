@@ -219,14 +219,18 @@ TEST(Shelf4daReader, ParamsSelectFramesDetectionsNoseAndAssociation) {
 
   EXPECT_THAT(test::InputErrorOf([&] { ReadShelf4da(Request(dir.path(), {{"frames", "0-2"}})); }),
               HasSubstr("gt.txt: frame 2 requested but the file has 2 frames (0-1)"));
-  EXPECT_THAT(test::ConfigErrorOf([&] { ReadShelf4da(Request(dir.path(), {{"detections", "pkl"}})); }),
-              HasSubstr("param detections: 'pkl' is not one of openpose, none"));
+  EXPECT_THAT(test::ConfigErrorOf([&] {
+                ReadShelf4da(Request(dir.path(), {{"detections", "pkl"}}));
+              }),
+              HasSubstr("--param detections=pkl: shelf-4da.detections: 'pkl' is not one of openpose, none"));
   EXPECT_THAT(test::ConfigErrorOf([&] { ReadShelf4da(Request(dir.path(), {{"min_joints", "1"}})); }),
               HasSubstr("is not an integer in [2, 25]"));
   EXPECT_THAT(test::ConfigErrorOf([&] { ReadShelf4da(Request(dir.path(), {{"min_paf_score", "-1"}})); }),
               HasSubstr("is not a number >= 0"));
-  EXPECT_THAT(test::ConfigErrorOf([&] { ReadShelf4da(Request(dir.path(), {{"fps", "30"}})); }),
-              HasSubstr("has no parameter 'fps'"));
+  EXPECT_THAT(test::ConfigErrorOf([&] {
+                ReadShelf4da(Request(dir.path(), {{"fps", "30"}}));
+              }),
+              HasSubstr("unknown parameter 'fps'"));
 }
 
 TEST(Shelf4daReader, MalformedDetectionFilesNameFileLineAndToken) {

@@ -402,13 +402,13 @@ TEST(ShelfReader, BadParamsAreConfigErrors) {
     return test::ErrorMessage<ConfigError>([&] { ReadShelf(Request("shelf", dir.path(), params)); });
   };
   EXPECT_THAT(config_error({{"frames", "0"}, {"nose_proxy", "middle"}}),
-              HasSubstr("nose_proxy: 'middle' is not one of center, top, bottom"));
+              HasSubstr("shelf.nose_proxy: 'middle' is not one of center, top, bottom"));
   EXPECT_THAT(config_error({{"frames", "0"}, {"detections", "openpose"}}),
               HasSubstr("'openpose' is not one of none, voxelpose"));
-  EXPECT_THAT(config_error({{"frames", "0"}, {"fps", "-1"}}), HasSubstr("fps: '-1' is not a positive number"));
+  EXPECT_THAT(config_error({{"frames", "0"}, {"fps", "-1"}}), HasSubstr("fps: '-1' is not a number > 0"));
   EXPECT_THAT(config_error({{"frames", "a-b"}}), HasSubstr("frames"));
-  EXPECT_THAT(config_error({{"frames", "0"}, {"actors", "x"}}), HasSubstr("actors: 'x'"));
-  EXPECT_THAT(config_error({{"frames", "0"}, {"camera", "1"}}), HasSubstr("no parameter 'camera'"));
+  EXPECT_THAT(config_error({{"frames", "0"}, {"actors", "x"}}), HasSubstr("shelf.actors: 'x'"));
+  EXPECT_THAT(config_error({{"frames", "0"}, {"camera", "1"}}), HasSubstr("unknown parameter 'camera'"));
 }
 
 TEST(CampusReader, InfoDefaultsAndGeneratedFiles) {

@@ -15,6 +15,7 @@
 #include "datasets/synthetic/person_motion.h"
 #include "datasets/synthetic/random.h"
 #include "datasets/synthetic/scene.h"
+#include "tests/error_message.h"
 
 namespace rpt::synthetic {
 namespace {
@@ -125,6 +126,38 @@ TEST(SyntheticRigTest, CamerasAreValidAndLookAtTheRoom) {
       }
     }
   }
+}
+
+// Scene, crossing and rig options follow the one Check() convention: "section.key: problem" in the
+// option codec's words, thrown by the functions that use them.
+TEST(SyntheticOptionsTest, CheckNamesTheKey) {
+  EXPECT_EQ(SceneOptions{}.Check(), "");
+  EXPECT_EQ(CrossingOptions{}.Check(), "");
+  SceneOptions scene;
+  scene.num_people = -1;
+  EXPECT_EQ(scene.Check(), "scene.num_people: '-1' is not an integer >= 0");
+  EXPECT_EQ(test::ConfigErrorOf([&] { GenerateScene(scene); }), "scene.num_people: '-1' is not an integer >= 0");
+  scene = {};
+  scene.fps = 0;
+  EXPECT_EQ(scene.Check(), "scene.fps: '0.0' is not a number > 0");
+  scene = {};
+  scene.room_size_m = Eigen::Vector3d(1.5, 8, 3);
+  EXPECT_EQ(scene.Check(),
+            "scene.room_size_m: '1.5,8.0,3.0' is too small (x and y must be above 1.5 m, z at least 2.2 m)");
+  scene = {};
+  scene.rig.num_cameras = 0;
+  EXPECT_EQ(scene.Check(), "rig.num_cameras: '0' is not an integer >= 1");
+  CrossingOptions crossing;
+  crossing.speed_mps = 0;
+  EXPECT_EQ(test::ConfigErrorOf([&] { MakeCrossingScene(crossing); }), "crossing.speed_mps: '0.0' is not a number > 0");
+  RigOptions rig;
+  rig.horizontal_fov_deg = 170;
+  EXPECT_EQ(test::ConfigErrorOf([&] { MakeCameraRig(rig, 1); }),
+            "rig.horizontal_fov_deg: '170.0' is too wide for the lens model (it must be below 170)");
+  rig.distortion = DistortionModel::kFisheye;
+  EXPECT_EQ(rig.Check(), "");
+  rig.radius_m = std::nan("");
+  EXPECT_EQ(rig.Check(), "rig.radius_m: 'nan' is not a number > 0");
 }
 
 TEST(SyntheticRigTest, RingIsEvenlySpacedAndDeterministic) {
