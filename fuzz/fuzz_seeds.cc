@@ -283,6 +283,9 @@ void AddCalibrationSeeds(std::map<std::string, std::vector<std::pair<std::string
       {"ros.yaml", Of("image_width: 1280\nimage_height: 720\ncamera_name: left\ncamera_matrix:\n  rows: 3\n  cols: 3\n"
                       "  data: [1000, 0, 640, 0, 1000, 360, 0, 0, 1]\ndistortion_model: plumb_bob\n"
                       "distortion_coefficients:\n  rows: 1\n  cols: 5\n  data: [-0.1, 0.01, 0.001, 0.002, 0.0]\n")},
+      {"storage.json", Of(R"({"camera_matrix": {"type_id": "opencv-matrix", "rows": 3, "cols": 3, "dt": "d",
+  "data": [1000.0, 0.0, 960.0, 0.0, 1000.0, 540.0, 0.0, 0.0, 1.0]}, "image_width": 1920, "image_height": 1080,
+  "rvec": [1.5707963267948966, 0.0, 0.0], "tvec": [0.0, 1.5, 4.0], "distortion_model": "fisheye", "D": [0.1, 0.0, 0.0, 0.0]})")},
       {"stereo.yml", Of("%YAML:1.0\nM1: [1000, 0, 960, 0, 1000, 540, 0, 0, 1]\nD1: [0.1, 0, 0, 0]\n"
                         "M2: [1000, 0, 960, 0, 1000, 540, 0, 0, 1]\nD2: [0, 0, 0, 0, 0]\nimage_size: [1920, 1080]\n"
                         "R: [0, 0.3, 0]\nT: [-0.5, 0, 0]\n")}};

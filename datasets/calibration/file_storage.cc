@@ -3,10 +3,13 @@
 
 #include <opencv2/core.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iterator>
 #include <sstream>
+#include <stdexcept>
+#include <string>
 
 #include "core/errors.h"
 
@@ -198,6 +201,11 @@ File ReadFile(const std::filesystem::path& path) {
     }
   } catch (const cv::Exception& e) {
     throw InputError(Describe(e, file.source, line_offset));
+  } catch (const std::length_error& e) {
+    // OpenCV 4.6's YAML parser computes a negative key length for some damaged files (e.g.
+    // "   o:3\n   :") and throws this from std::string instead of a parse error.
+    throw InputError(file.source + ": not a readable OpenCV FileStorage file (OpenCV's parser failed: " + e.what() +
+                     ")");
   }
   return file;
 }
