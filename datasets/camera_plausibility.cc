@@ -17,6 +17,32 @@ void CountImplausibleCamera(const Camera& camera, const std::string& source, Inp
   if (!(worst <= kMaxPlausibleDistortion)) {
     warnings->Add(source, "cameras with a distortion coefficient beyond +-100", "max |coefficient|", worst);
   }
+  if (camera.width > 0 && camera.height > 0) {
+    const double offset = std::max(std::abs(camera.K(0, 2) - 0.5 * camera.width) / camera.width,
+                                   std::abs(camera.K(1, 2) - 0.5 * camera.height) / camera.height);
+    if (!(offset <= kMaxPlausiblePrincipalOffset)) {
+      warnings->Add(source, "cameras with the principal point more than a quarter of the image from its centre",
+                    "max offset / image side", offset);
+    }
+  }
+}
+
+void CountImplausibleRig(const std::vector<Camera>& cameras, const std::string& source, InputWarnings* warnings) {
+  if (warnings == nullptr) return;
+  double span = 0;
+  for (std::size_t a = 0; a < cameras.size(); ++a) {
+    for (std::size_t b = a + 1; b < cameras.size(); ++b) {
+      const double distance = (cameras[a].Center() - cameras[b].Center()).stableNorm();
+      if (distance < kMinPlausibleCameraSeparationM) {
+        warnings->Add(source, "camera pairs at the same spot (centres less than 1 cm apart)", "", 0);
+      }
+      span = std::max(span, distance);
+    }
+  }
+  if (!(span <= kMaxPlausibleRigSpanM)) {
+    warnings->Add(source, "camera rigs spanning more than 100 m (millimetres read as metres? check the units)",
+                  "span in m", span);
+  }
 }
 
 }  // namespace rpt

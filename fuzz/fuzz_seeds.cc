@@ -8,12 +8,14 @@
 #include <string>
 
 #include "core/joints.h"
+#include "datasets/calibration/calibration.h"
 #include "datasets/io/binary.h"
 #include "datasets/readers/generic_detections.h"
 #include "datasets/readers/generic_labels.h"
 #include "datasets/readers/hdf5_cache.h"
 #include "datasets/readers/human36m.h"
 #include "fuzz/fuzz_targets.h"
+#include "tests/datasets/calibration_test_util.h"
 #include "tests/datasets/io_test_util.h"
 #include "tests/datasets/readers_generic_test_util.h"
 #include "tests/datasets/readers_h36m_ego_test_util.h"
@@ -265,6 +267,42 @@ Bytes EgohumansPoses2d() {
                                               {test::PyStr("keypoints"), test::PyArray({133, 3}, keypoints, "f4")}})});
 }
 
+// ---------------------------------------------------------------------------------------
+// Calibrations: files of the project's writers and hand-written files of the other tools.
+
+void AddCalibrationSeeds(std::map<std::string, std::vector<std::pair<std::string, Bytes>>>* seeds) {
+  const std::vector<Camera> rig = test::MakeRig(/*with_fisheye=*/false);
+  const std::vector<Camera> fisheye_rig = test::MakeRig(/*with_fisheye=*/true);
+  auto written = [](const std::string& name, const std::vector<Camera>& cameras) {
+    return Written(name, [&](const fs::path& p) { WriteCalibration(p, cameras); });
+  };
+  (*seeds)["calibration_json"] = {{"rig.json", written("rig.json", fisheye_rig)}};
+  (*seeds)["calibration_opencv"] = {
+      {"fisheye.yml", written("c.yml", {fisheye_rig[3]})},
+      {"camera.xml", written("c.xml", {rig[1]})},
+      {"ros.yaml", Of("image_width: 1280\nimage_height: 720\ncamera_name: left\ncamera_matrix:\n  rows: 3\n  cols: 3\n"
+                      "  data: [1000, 0, 640, 0, 1000, 360, 0, 0, 1]\ndistortion_model: plumb_bob\n"
+                      "distortion_coefficients:\n  rows: 1\n  cols: 5\n  data: [-0.1, 0.01, 0.001, 0.002, 0.0]\n")},
+      {"storage.json", Of(R"({"camera_matrix": {"type_id": "opencv-matrix", "rows": 3, "cols": 3, "dt": "d",
+  "data": [1000.0, 0.0, 960.0, 0.0, 1000.0, 540.0, 0.0, 0.0, 1.0]}, "image_width": 1920, "image_height": 1080,
+  "rvec": [1.5707963267948966, 0.0, 0.0], "tvec": [0.0, 1.5, 4.0], "distortion_model": "fisheye", "D": [0.1, 0.0, 0.0, 0.0]})")},
+      {"stereo.yml", Of("%YAML:1.0\nM1: [1000, 0, 960, 0, 1000, 540, 0, 0, 1]\nD1: [0.1, 0, 0, 0]\n"
+                        "M2: [1000, 0, 960, 0, 1000, 540, 0, 0, 1]\nD2: [0, 0, 0, 0, 0]\nimage_size: [1920, 1080]\n"
+                        "R: [0, 0.3, 0]\nT: [-0.5, 0, 0]\n")}};
+  (*seeds)["calibration_easymocap"] = {{"cameras.yml", written("c.yml", rig)}};
+  (*seeds)["calibration_toml"] = {
+      {"rig.toml", written("rig.toml", fisheye_rig)},
+      {"anipose.toml",
+       Of("[cam_0]\nname = \"A\"\nsize = [ 1920, 1080,]\nmatrix = [ [ 1000.0, 0.0, 960.0,], [ 0.0, 1000.0, 540.0,], "
+          "[ 0.0, 0.0, 1.0,],]\ndistortions = [ 0.01, 0.0, 0.0, 0.0, 0.0,]\nrotation = [ 1.5707963267948966, 0.0, "
+          "0.0,]\n"
+          "translation = [ 0.0, 1500.0, 4000.0,]\n\n[metadata]\n")}};
+  (*seeds)["calibration_colmap"] = {
+      {"images.txt",
+       Of("# Image list\n1 0.70710678118654757 0.70710678118654757 0 0 0 1.5 4 1 cam01/00001.jpg\n\n"
+          "2 1 0 0 0 0.5 0 3 2 cam02/00001.jpg\n100 200 -1\n3 0.5 -0.5 0.5 -0.5 -0.3 1.4 4.2 3 cam03.png\n\n")}};
+}
+
 }  // namespace
 
 std::map<std::string, std::vector<std::pair<std::string, Bytes>>> MakeFuzzSeeds() {
@@ -329,6 +367,7 @@ std::map<std::string, std::vector<std::pair<std::string, Bytes>>> MakeFuzzSeeds(
   seeds["egohumans_camera_npy"] = {{"cam02.npy", EgohumansManualCamera()}};
   seeds["egohumans_gt"] = {{"00001.npy", EgohumansGt()}};
   seeds["egohumans_poses2d"] = {{"00001.npy", EgohumansPoses2d()}, {"nobody.npy", test::NpyOfObjectList({})}};
+  AddCalibrationSeeds(&seeds);
   return seeds;
 }
 

@@ -16,6 +16,7 @@
 #include <string>
 
 #include "core/errors.h"
+#include "datasets/calibration/calibration.h"
 #include "datasets/dataset_request.h"
 #include "datasets/input_warnings.h"
 #include "datasets/io/mat.h"
@@ -157,6 +158,12 @@ std::string EgohumansImagesText() {
          "2 0.7071068 -0.7071068 0 0 0.7 1.6 3.8 1 cam01/00050.jpg\n\n"
          "3 0.5 -0.5 0.5 -0.5 -0.3 1.4 4.2 2 cam02/00003.jpg\n\n"
          "4 1 0 0 0 0 0 0 3 aria01/00001.jpg\n\n";
+}
+
+std::string ColmapCalibrationCamerasText() {
+  return "# Camera list\n1 PINHOLE 1920 1080 1000 1000 960 540\n2 OPENCV 1920 1080 1000 1001 950 530 0.1 -0.01 0.001 "
+         "0.002\n"
+         "3 OPENCV_FISHEYE 1920 1080 700 700 960 540 0.05 -0.01 0.002 -0.0003\n";
 }
 
 namespace {
@@ -359,12 +366,20 @@ void ReadHdf5Cache(std::span<const std::uint8_t> bytes) {
   if (contents.detections) ReadDetectionsHdf5(path);
 }
 
+// `bytes` as the file `name` read by ReadCalibration in `format` (warnings counted).
+void ReadCalibrationWith(CalibrationFormat format, const std::string& name, std::span<const std::uint8_t> bytes) {
+  InputWarnings warnings;
+  ReadCalibration(WriteScratch(name, bytes), {.format = format}, &warnings);
+}
+
 std::vector<FuzzTarget> MakeTargets() {
   using B = std::span<const std::uint8_t>;
   return {
       {"labels", "generic JSON labels (rpt / skelda)", [](B b) { ReadLabels(WriteScratch("labels.json", b)); }},
-      {"detections_json", "generic JSON detections", [](B b) { ReadGenericDetections(WriteScratch("detections.json", b)); }},
-      {"coco", "COCO keypoint result list (MVOR image ids)", [](B b) { ReadCocoDetections(WriteScratch("results.json", b)); }},
+      {"detections_json", "generic JSON detections",
+       [](B b) { ReadGenericDetections(WriteScratch("detections.json", b)); }},
+      {"coco", "COCO keypoint result list (MVOR image ids)",
+       [](B b) { ReadCocoDetections(WriteScratch("results.json", b)); }},
       {"openpose", "OpenPose *_keypoints.json (one file of a camera folder)",
        [](B b) {
          fs::remove_all(ScratchDir() / "openpose");
@@ -399,7 +414,8 @@ std::vector<FuzzTarget> MakeTargets() {
          InputWarnings warnings;
          ParseFourDaDetections(Text(b), "detection.txt", &warnings);
        }},
-      {"fourda_skeletons", "4D-Association skeleton text (gt.txt)", [](B b) { ParseFourDaSkeletons(Text(b), "gt.txt"); }},
+      {"fourda_skeletons", "4D-Association skeleton text (gt.txt)",
+       [](B b) { ParseFourDaSkeletons(Text(b), "gt.txt"); }},
       {"fourda_calibration", "4D-Association calibration.json",
        [](B b) {
          InputWarnings warnings;
@@ -419,7 +435,9 @@ std::vector<FuzzTarget> MakeTargets() {
       {"h36m_metadata_xml", "Human3.6M metadata.xml cameras",
        [](B b) { ReadHuman36mCameras(WriteScratch("metadata.xml", b), "S1", DistortionModel::kOpenCV, nullptr); }},
       {"h3wb_json", "H3WB 2Dto3D_*.json / RGBto3D_*.json (cameras from a fixed metadata.xml)", ReadH3wbJson},
-      {"h3wb_npz", "H3WB h3wb_train.npz new format: its members train_data.npy then metadata.npy (the target stores them into the npz)",
+      {"h3wb_npz",
+       "H3WB h3wb_train.npz new format: its members train_data.npy then metadata.npy (the target stores them into the "
+       "npz)",
        ReadH3wbNpz},
       {"egohumans_cameras", "EgoHumans colmap/workplace/cameras.txt (exo cameras: size, model, naming by image)",
        [](B b) { ReadEgohumansWith(EgoFile::kCameras, b); }},
@@ -431,7 +449,23 @@ std::vector<FuzzTarget> MakeTargets() {
        [](B b) { ReadEgohumansWith(EgoFile::kManualCamera, b); }},
       {"egohumans_gt", "EgoHumans processed_data/poses3d/<time stamp>.npy (aria name -> (17, 4))",
        [](B b) { ReadEgohumansWith(EgoFile::kGt, b); }},
-      {"egohumans_poses2d", "EgoHumans 2D cache processed_data/poses2d/<cam>/rgb/<time stamp>.npy (list of dicts, keypoints (133, 3))",
+      {"calibration_json", "our cameras JSON ({\"cameras\": [...]}) through ReadCalibration",
+       [](B b) { ReadCalibrationWith(CalibrationFormat::kJson, "cameras.json", b); }},
+      {"calibration_opencv",
+       "OpenCV FileStorage camera (calibrateCamera / stereo / ROS keys; YAML, XML or JSON by content)",
+       [](B b) { ReadCalibrationWith(CalibrationFormat::kOpenCV, "camera.yml", b); }},
+      {"calibration_easymocap", "EasyMocap cameras (intri.yml and extri.yml keys in one file)",
+       [](B b) { ReadCalibrationWith(CalibrationFormat::kEasyMocap, "cameras.yml", b); }},
+      {"calibration_toml", "Pose2Sim / anipose camera group .toml",
+       [](B b) { ReadCalibrationWith(CalibrationFormat::kToml, "calib.toml", b); }},
+      {"calibration_colmap", "COLMAP images.txt read as a calibration (with a fixed cameras.txt)",
+       [](B b) {
+         fs::remove_all(ScratchDir() / "colmap");
+         WriteScratch("colmap/cameras.txt", ColmapCalibrationCamerasText());
+         ReadCalibrationWith(CalibrationFormat::kColmap, "colmap/images.txt", b);
+       }},
+      {"egohumans_poses2d",
+       "EgoHumans 2D cache processed_data/poses2d/<cam>/rgb/<time stamp>.npy (list of dicts, keypoints (133, 3))",
        [](B b) { ReadEgohumansWith(EgoFile::kPoses2d, b); }},
   };
 }

@@ -42,5 +42,8 @@ std::string H36mMetadataXmlText();
 // keeps the others): exo cameras cam01 (fisheye) and cam02 (pinhole) and an Aria camera.
 std::string EgohumansCamerasText();
 std::string EgohumansImagesText();
+// The fixed cameras.txt of the calibration_colmap target: a pinhole, an OPENCV and a fisheye
+// camera (ids 1, 2, 3).
+std::string ColmapCalibrationCamerasText();
 
 }  // namespace rpt::fuzz

@@ -171,5 +171,15 @@ TEST(FuzzRegressions, ColmapImageLineEndingInCarriageReturnsIsAnInputErrorOrRead
   EXPECT_NO_THROW(RunFuzzTarget(*FindFuzzTarget("colmap_images"), Bytes(text.begin(), text.end())));
 }
 
+// Found by a random-mutation loop over the calibration seeds (a throwaway loop, not part of the
+// suite): OpenCV 4.6's YAML parser threw std::length_error from std::string (a negative key
+// length) for this indented key-less colon; it is an input error naming the file now.
+TEST(FuzzRegressions, OpenCVYamlWithAKeylessColonIsAnInputError) {
+  const std::string text = "   o:3\n   :";
+  bool accepted = true;
+  EXPECT_NO_THROW(accepted = RunFuzzTarget(*FindFuzzTarget("calibration_opencv"), Bytes(text.begin(), text.end())));
+  EXPECT_FALSE(accepted);
+}
+
 }  // namespace
 }  // namespace rpt::fuzz

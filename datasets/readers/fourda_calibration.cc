@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: MIT
 #include "datasets/readers/fourda_calibration.h"
 
-#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "core/errors.h"
+#include "datasets/calibration/rodrigues.h"
 #include "datasets/camera_plausibility.h"
 #include "datasets/io/json_file.h"
 
@@ -23,10 +23,7 @@ Eigen::Matrix3d ReadRotation(const nlohmann::json& root, const std::string& poin
     throw InputError(source + ": " + pointer + ": expected 3 numbers (Rodrigues vector) or 9 (row-major matrix), got " +
                      std::to_string(r.size()));
   }
-  const Eigen::Vector3d rotation_vector(r[0], r[1], r[2]);
-  const double angle = rotation_vector.norm();
-  if (angle == 0.0) return Eigen::Matrix3d::Identity();
-  return Eigen::AngleAxisd(angle, rotation_vector / angle).toRotationMatrix();
+  return RotationFromRodrigues(Eigen::Vector3d(r[0], r[1], r[2]));
 }
 
 int ImageSide(double value, const std::string& where) {

@@ -45,10 +45,10 @@ Eigen::Matrix3d RowMajor3x3(const std::vector<double>& v) {
   return Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(v.data());
 }
 
-// The selected cameras of calibration_<seq>.json, in the order asked for. A near-orthonormal R
-// is replaced by the nearest rotation and counted in `warnings`.
-std::vector<Camera> ReadCameras(const std::filesystem::path& path, const std::string& selection,
-                                InputWarnings* warnings) {
+}  // namespace
+
+std::vector<Camera> ReadPanopticCameras(const std::filesystem::path& path, const std::string& selection,
+                                        InputWarnings* warnings) {
   const nlohmann::json root = io::LoadJsonFile(path);
   const std::string source = path.string();
   const nlohmann::json& list = io::JsonAt(root, "/cameras", source);
@@ -65,7 +65,12 @@ std::vector<Camera> ReadCameras(const std::filesystem::path& path, const std::st
     }
   }
 
-  const std::vector<std::string> names = selection == "hd" ? hd_names : SplitList(selection);
+  std::vector<std::string> names = selection == "hd" ? hd_names : SplitList(selection);
+  if (selection.empty()) {
+    if (list.empty()) throw InputError(source + ": /cameras: the list of cameras is empty");
+    for (size_t i = 0; i < list.size(); ++i)
+      names.push_back(io::JsonString(root, io::JsonPointerJoin("/cameras", i) + "/name", source));
+  }
   if (names.empty()) {
     throw ConfigError(dataset_params::ParamKey("panoptic", "cameras") + ": no cameras selected by '" + selection + "'");
   }
@@ -102,6 +107,8 @@ std::vector<Camera> ReadCameras(const std::filesystem::path& path, const std::st
   }
   return cameras;
 }
+
+namespace {
 
 struct PoseFile {
   std::filesystem::path path;
@@ -169,7 +176,8 @@ class PanopticSource final : public FrameSource {
   PanopticSource(const std::filesystem::path& root, const std::string& name, const PanopticParams& params)
       : name_(name), folder_(root / name), params_(params) {
     header_.name = "panoptic/" + name;
-    header_.cameras = ReadCameras(folder_ / ("calibration_" + name + ".json"), params.cameras, &warnings_);
+    if (params.cameras.empty()) throw ConfigError("panoptic: param cameras: no cameras selected");
+    header_.cameras = ReadPanopticCameras(folder_ / ("calibration_" + name + ".json"), params.cameras, &warnings_);
     header_.gt_joints = PanopticJoints();
     header_.room.center_m = Eigen::Vector3d(0.0, -0.5, 0.8);
     header_.room.size_m = Eigen::Vector3d(8.0, 8.0, 2.0);

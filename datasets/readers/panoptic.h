@@ -27,6 +27,7 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
@@ -51,6 +52,14 @@ Eigen::Vector3d PanopticPointToWorld(const Eigen::Vector3d& point_cm);
 Camera ConvertPanopticCamera(const std::string& name, int width, int height, const Eigen::Matrix3d& K,
                              const std::array<double, 5>& dist_coef, const Eigen::Matrix3d& R_panoptic,
                              const Eigen::Vector3d& t_cm);
+
+// The cameras of a calibration_<seq>.json in rpt's world (ConvertPanopticCamera), in the order
+// asked for: `selection` is a comma-separated list of names, "hd" (every HD camera) or "" (every
+// camera of the file, in file order). An R within 1e-3 of a rotation is replaced by the nearest
+// rotation and counted in `warnings`. Throws InputError naming the file and the JSON pointer, or
+// an unknown camera (listing the HD cameras).
+std::vector<Camera> ReadPanopticCameras(const std::filesystem::path& path, const std::string& selection,
+                                        InputWarnings* warnings);
 
 // The VoxelPose validation sequences and cameras (lib/dataset/panoptic.py).
 inline constexpr const char* kPanopticDefaultSequences = "160906_pizza1,160422_haggling1,160906_ian5,160906_band4";

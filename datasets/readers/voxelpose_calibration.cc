@@ -5,8 +5,9 @@
 #include <string>
 
 #include "core/errors.h"
-#include "datasets/input_warnings.h"
+#include "datasets/calibration/image_size.h"
 #include "datasets/camera_plausibility.h"
+#include "datasets/input_warnings.h"
 #include "datasets/io/json_file.h"
 
 namespace rpt {
@@ -38,8 +39,6 @@ std::vector<Camera> ReadVoxelPoseCalibration(const std::filesystem::path& path, 
     // x_cam = R (X - C): the file's T is the centre C, in millimetres.
     Camera camera = Camera::FromCenter(R, Eigen::Vector3d(center_mm[0], center_mm[1], center_mm[2]) / 1000.0);
     camera.name = id;
-    camera.width = image_width;
-    camera.height = image_height;
     // Read before the comma initialiser: a throw inside one (a missing key) aborts Debug builds
     // (Eigen asserts that every coefficient was given).
     const double fx = io::JsonNumber(root, base + "/fx", source);
@@ -56,6 +55,8 @@ std::vector<Camera> ReadVoxelPoseCalibration(const std::filesystem::path& path, 
     const bool distorted = std::any_of(camera.dist.begin(), camera.dist.end(), [](double c) { return c != 0.0; });
     camera.model = distorted ? DistortionModel::kOpenCV : DistortionModel::kNone;
 
+    // No size given (0): twice the principal point, counted.
+    CompleteImageSize(&camera, image_width, image_height, source, source + ": " + base, warnings);
     if (const std::string error = camera.Validate(); !error.empty()) {
       throw InputError(source + ": " + base + ": " + error);  // error names the camera
     }

@@ -24,7 +24,8 @@ namespace rpt {
 
 // Reads every camera of a VoxelPose calibration json, ordered by id (numerically when all ids
 // are integers, so "10" follows "9"). Each camera is named by its id and gets the given image
-// size (the file does not store one). Distortion: DistortionModel::kOpenCV as above, or kNone
+// size (the file does not store one); a size of 0 is taken as twice the principal point and
+// counted in `warnings` (datasets/calibration/image_size.h). Distortion: DistortionModel::kOpenCV as above, or kNone
 // when all coefficients are zero; "k" and "p" may be absent (= zero).
 //
 // The Shelf file stores R with 6 decimals (|R^T R - I| up to ~1.1e-6, just above

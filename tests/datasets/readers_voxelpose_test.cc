@@ -138,7 +138,7 @@ TEST(VoxelPoseCalibration, RoundedRotationIsReorthonormalisedAndCounted) {
   const auto path = WriteText(dir.path() / "c.json", "{\"0\": " + VoxelPoseCamera(rounded, Eigen::Vector3d(0, 0, 0), "") +
                                                          ", \"1\": " + VoxelPoseCamera(rounded, Eigen::Vector3d(1, 0, 0), "") + "}");
   InputWarnings warnings;
-  const std::vector<Camera> cameras = ReadVoxelPoseCalibration(path, 360, 288, &warnings);
+  const std::vector<Camera> cameras = ReadVoxelPoseCalibration(path, 1032, 776, &warnings);
   ASSERT_EQ(cameras.size(), 2u);
   for (const Camera& camera : cameras) {
     EXPECT_EQ(camera.Validate(), "");
@@ -146,7 +146,7 @@ TEST(VoxelPoseCalibration, RoundedRotationIsReorthonormalisedAndCounted) {
     EXPECT_LT((camera.R - rounded).cwiseAbs().maxCoeff(), 1e-5);
   }
   test::ExpectOneWarning(warnings, path.string(), test::kRotationsFixed, 2);
-  EXPECT_NO_THROW(ReadVoxelPoseCalibration(path, 360, 288)) << "no sink: corrected all the same";
+  EXPECT_NO_THROW(ReadVoxelPoseCalibration(path, 1032, 776)) << "no sink: corrected all the same";
 }
 
 TEST(VoxelPoseCalibration, RotationBeyondTheToleranceNamesFileAndCamera) {
@@ -155,7 +155,7 @@ TEST(VoxelPoseCalibration, RotationBeyondTheToleranceNamesFileAndCamera) {
                               "{\"0\": " + VoxelPoseCamera(SomeRotation(0.4), Eigen::Vector3d(0, 0, 0), "") + ", \"1\": " +
                                   VoxelPoseCamera(test::WrongRotation(SomeRotation(0.4)), Eigen::Vector3d(0, 0, 0), "") + "}");
   InputWarnings warnings;
-  EXPECT_THAT(test::InputErrorOf([&] { ReadVoxelPoseCalibration(path, 360, 288, &warnings); }),
+  EXPECT_THAT(test::InputErrorOf([&] { ReadVoxelPoseCalibration(path, 1032, 776, &warnings); }),
               HasSubstr(path.string() + ": /1/R: R is not a rotation (max |R^T R - I| = 0.010025"));
 }
 

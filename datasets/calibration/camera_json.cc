@@ -1,0 +1,148 @@
+// SPDX-License-Identifier: MIT
+#include "datasets/calibration/camera_json.h"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_set>
+
+#include "core/errors.h"
+#include "datasets/camera_plausibility.h"
+#include "datasets/io/json_file.h"
+
+namespace rpt::camera_json {
+namespace {
+
+using nlohmann::json;
+using ojson = nlohmann::ordered_json;
+
+[[noreturn]] void Fail(const std::string& source, const std::string& pointer, const std::string& what) {
+  throw InputError(source + ": " + pointer + ": " + what);
+}
+
+void CheckFinite(double value, const std::string& source, const std::string& where) {
+  if (!std::isfinite(value)) throw InputError(source + ": cannot write " + where + ": value is not finite");
+}
+
+ojson MatrixJson(const Eigen::Matrix3d& m) {
+  ojson rows = ojson::array();
+  for (int r = 0; r < 3; ++r) rows.push_back({m(r, 0), m(r, 1), m(r, 2)});
+  return rows;
+}
+
+}  // namespace
+
+Camera ParseCamera(const json& root, const std::string& pointer, const std::string& source, InputWarnings* warnings) {
+  const json& j = io::JsonAt(root, pointer, source);
+  if (!j.is_object()) Fail(source, pointer, "expected a camera object, got " + std::string(j.type_name()));
+  std::string type;
+  if (const json* t = io::JsonFind(root, pointer + "/type"); t && !t->is_null()) {
+    type = io::JsonString(root, pointer + "/type", source);
+  }
+  DistortionModel model = DistortionModel::kOpenCV;
+  if (type == "fisheye") {
+    model = DistortionModel::kFisheye;
+  } else if (type == "h36m") {
+    model = DistortionModel::kH36M;
+  } else if (!type.empty() && type != "pinhole" && type != "opencv" && type != "perspective") {
+    Fail(source, pointer + "/type", "unknown camera type '" + type + "' (known: fisheye, pinhole, h36m)");
+  }
+
+  std::vector<double> dc;
+  if (const json* d = io::JsonFind(root, pointer + "/DC"); d && !d->is_null()) {
+    // Accept [k...] and [[k...]] (a 1xN matrix as some exporters write it).
+    std::string dc_pointer = pointer + "/DC";
+    if (d->is_array() && d->size() == 1 && (*d)[0].is_array()) dc_pointer += "/0";
+    dc = io::JsonNumbers(root, dc_pointer, source);
+  }
+  std::array<double, 5> dist{0, 0, 0, 0, 0};
+  if (model == DistortionModel::kFisheye) {
+    if (dc.size() != 4) {
+      Fail(source, pointer + "/DC",
+           "a fisheye camera needs 4 coefficients (k1, k2, k3, k4), got " + std::to_string(dc.size()));
+    }
+  } else if (dc.size() != 5 && dc.size() != 4 && !dc.empty()) {
+    Fail(source, pointer + "/DC", "expected 5 coefficients (k1, k2, p1, p2, k3), got " + std::to_string(dc.size()));
+  }
+  std::copy(dc.begin(), dc.end(), dist.begin());
+  if (model != DistortionModel::kFisheye && std::all_of(dist.begin(), dist.end(), [](double v) { return v == 0; })) {
+    model = DistortionModel::kNone;
+  }
+
+  const std::vector<double> k = io::JsonMatrix(root, pointer + "/K", source, 3, 3);
+  const std::vector<double> r = io::JsonMatrix(root, pointer + "/R", source, 3, 3);
+  const std::vector<double> t = io::JsonMatrix(root, pointer + "/T", source, 3, 1);
+  Eigen::Matrix3d R;
+  Eigen::Matrix3d K;
+  for (int row = 0; row < 3; ++row) {
+    for (int col = 0; col < 3; ++col) {
+      R(row, col) = r[3 * row + col];
+      K(row, col) = k[3 * row + col];
+    }
+  }
+  R = AcceptRotation(R, source, source + ": " + pointer + "/R", warnings);
+  Camera camera = Camera::FromCenter(R, Eigen::Vector3d(t[0], t[1], t[2]));
+  camera.name = io::JsonString(root, pointer + "/name", source);
+  camera.K = K;
+  camera.model = model;
+  camera.dist = dist;
+  const std::int64_t width = io::JsonInt(root, pointer + "/width", source);
+  const std::int64_t height = io::JsonInt(root, pointer + "/height", source);
+  if (width <= 0 || height <= 0 || width > 1'000'000 || height > 1'000'000) {
+    Fail(source, pointer, "image size " + std::to_string(width) + "x" + std::to_string(height) + " is not plausible");
+  }
+  camera.width = static_cast<int>(width);
+  camera.height = static_cast<int>(height);
+  if (const std::string error = camera.Validate(); !error.empty()) Fail(source, pointer, error);
+  return camera;
+}
+
+std::vector<Camera> ParseCameras(const json& root, const std::string& pointer, const std::string& source,
+                                 InputWarnings* warnings) {
+  const json& list = io::JsonAt(root, pointer, source);
+  if (!list.is_array() || list.empty()) Fail(source, pointer, "expected a non-empty list of cameras");
+  std::vector<Camera> cameras;
+  std::unordered_set<std::string> names;
+  for (size_t c = 0; c < list.size(); ++c) {
+    cameras.push_back(ParseCamera(root, io::JsonPointerJoin(pointer, c), source, warnings));
+    CountImplausibleCamera(cameras.back(), source, warnings);
+    if (!names.insert(cameras.back().name).second) {
+      Fail(source, io::JsonPointerJoin(pointer, c) + "/name",
+           "camera name '" + cameras.back().name + "' appears twice");
+    }
+  }
+  return cameras;
+}
+
+ojson CameraJson(const Camera& camera, const std::string& source, const std::string& where) {
+  for (Eigen::Index i = 0; i < 9; ++i) {
+    CheckFinite(camera.K.data()[i], source, where);
+    CheckFinite(camera.R.data()[i], source, where);
+  }
+  const Eigen::Vector3d center = camera.Center();
+  for (int i = 0; i < 3; ++i) CheckFinite(center[i], source, where);
+  for (double d : camera.dist) CheckFinite(d, source, where);
+  ojson j;
+  j["name"] = camera.name;
+  j["K"] = MatrixJson(camera.K);
+  switch (camera.model) {
+    case DistortionModel::kNone:
+      j["DC"] = {0.0, 0.0, 0.0, 0.0, 0.0};
+      break;
+    case DistortionModel::kOpenCV:
+    case DistortionModel::kH36M:
+      j["DC"] = {camera.dist[0], camera.dist[1], camera.dist[2], camera.dist[3], camera.dist[4]};
+      break;
+    case DistortionModel::kFisheye:
+      j["DC"] = {camera.dist[0], camera.dist[1], camera.dist[2], camera.dist[3]};
+      break;
+  }
+  j["R"] = MatrixJson(camera.R);
+  j["T"] = ojson::array({ojson::array({center[0]}), ojson::array({center[1]}), ojson::array({center[2]})});
+  j["width"] = camera.width;
+  j["height"] = camera.height;
+  if (camera.model == DistortionModel::kFisheye) j["type"] = "fisheye";
+  if (camera.model == DistortionModel::kH36M) j["type"] = "h36m";
+  return j;
+}
+
+}  // namespace rpt::camera_json

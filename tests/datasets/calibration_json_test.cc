@@ -1,0 +1,124 @@
+// SPDX-License-Identifier: MIT
+// Our cameras JSON (datasets/calibration/cameras_json.h) through ReadCalibration /
+// WriteCalibration: the hand-built camera, every lens model round-tripped, labels files, the
+// description, format detection and errors with file and place.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "core/errors.h"
+#include "datasets/calibration/calibration.h"
+#include "tests/datasets/calibration_test_util.h"
+#include "tests/datasets/io_test_util.h"
+#include "tests/error_message.h"
+
+namespace rpt {
+namespace {
+
+using test::WriteCalibrationText;
+using ::testing::HasSubstr;
+
+const std::string kHandBuiltCamera = R"({"name": "cam0", "width": 1920, "height": 1080,
+   "K": [[1000, 0, 960], [0, 1000, 540], [0, 0, 1]], "DC": [0, 0, 0, 0, 0],
+   "R": [[1, 0, 0], [0, 0, -1], [0, 1, 0]], "T": [[0.0], [-4.0], [1.5]]})";
+const std::string kHandBuiltJson = "{\"cameras\": [\n  " + kHandBuiltCamera + "]}";
+
+TEST(CalibrationJson, HandBuiltCameraProjectsTheKnownPointToTheKnownPixel) {
+  test::TempDir dir;
+  const auto path = WriteCalibrationText(dir.path() / "cameras.json", kHandBuiltJson);
+  EXPECT_EQ(DetectCalibrationFormat(path), CalibrationFormat::kJson);
+  InputWarnings warnings;
+  const Calibration calibration = ReadCalibration(path, {}, &warnings);
+  ASSERT_EQ(calibration.cameras.size(), 1u);
+  test::ExpectHandBuiltCamera(calibration.cameras[0]);
+  EXPECT_EQ(calibration.cameras[0].name, "cam0");
+  EXPECT_TRUE(warnings.empty());
+  const CalibrationDescription& d = calibration.description;
+  EXPECT_EQ(d.format, CalibrationFormat::kJson);
+  EXPECT_EQ(d.units, LengthUnit::kMetres);
+  EXPECT_FALSE(d.units_assumed);
+  EXPECT_THAT(d.extrinsics, HasSubstr("camera centre T: x_cam = R (X - T)"));
+  const std::vector<std::string> lines = d.Lines();
+  ASSERT_GE(lines.size(), 6u);
+  EXPECT_EQ(lines[0], "format: json, rpt cameras JSON (the camera schema of the generic labels)");
+  EXPECT_EQ(lines[1], "files: " + path.string());
+  EXPECT_EQ(lines[4], "units: metres");
+}
+
+TEST(CalibrationJson, EveryLensModelRoundTripsExactly) {
+  test::TempDir dir;
+  std::vector<Camera> rig = test::MakeRig(/*with_fisheye=*/true);
+  rig.push_back(test::LookingAtRoomCentre("h36m", {0.1, -4.2, 1.8}));
+  rig.back().model = DistortionModel::kH36M;
+  rig.back().dist = {-0.2, 0.24, -0.0016, -0.0007, -0.0028};
+  WriteCalibration(dir.path() / "rig.json", rig);
+  const Calibration back = ReadCalibration(dir.path() / "rig.json");
+  test::ExpectSameProjections(rig, back.cameras);
+  EXPECT_EQ(back.cameras[3].model, DistortionModel::kFisheye);
+  EXPECT_EQ(back.cameras[4].model, DistortionModel::kH36M);
+}
+
+TEST(CalibrationJson, ALabelsFileGivesTheCamerasOfItsFirstLabel) {
+  test::TempDir dir;
+  const auto path =
+      WriteCalibrationText(dir.path() / "labels.json", R"([{"id": "f0", "joints": ["nose"], "cameras": [)" +
+                                                           kHandBuiltCamera + "]}, {\"id\": \"f1\"}]");
+  const Calibration calibration = ReadCalibration(path);
+  ASSERT_EQ(calibration.cameras.size(), 1u);
+  test::ExpectHandBuiltCamera(calibration.cameras[0]);
+  EXPECT_THAT(calibration.description.notes, testing::Contains(HasSubstr("labels file")));
+}
+
+TEST(CalibrationJson, MalformedFilesNameTheFileAndThePlace) {
+  test::TempDir dir;
+  const auto syntax = WriteCalibrationText(dir.path() / "syntax.json", "{\"cameras\": [\n  {\"name\": \"a\",, }]}");
+  EXPECT_THAT(test::InputErrorOf([&] { ReadCalibration(syntax, {.format = CalibrationFormat::kJson}); }),
+              HasSubstr(syntax.string() + ":2:"));
+  std::string no_k = kHandBuiltJson;  // "K" -> "k"
+  no_k.replace(no_k.find("\"K\""), 3, "\"k\"");
+  const auto missing = WriteCalibrationText(dir.path() / "missing.json", no_k);
+  EXPECT_THAT(test::InputErrorOf([&] { ReadCalibration(missing); }),
+              HasSubstr(missing.string() + ": /cameras/0/K: missing"));
+  const std::string twice = "{\"cameras\": [" + kHandBuiltCamera + ", " + kHandBuiltCamera + "]}";
+  const auto duplicate = WriteCalibrationText(dir.path() / "twice.json", twice);
+  EXPECT_THAT(test::InputErrorOf([&] { ReadCalibration(duplicate); }),
+              HasSubstr(duplicate.string() + ": /cameras/1/name: camera name 'cam0' appears twice"));
+  const auto unknown = WriteCalibrationText(dir.path() / "unknown.json", R"({"a": {"b": 1}})");
+  EXPECT_THAT(test::InputErrorOf([&] { ReadCalibration(unknown); }),
+              HasSubstr(unknown.string() + ": cannot tell which calibration JSON"));
+  EXPECT_THAT(test::InputErrorOf([&] { ReadCalibration(dir.path() / "absent.json"); }),
+              HasSubstr((dir.path() / "absent.json").string() + ": file not found"));
+}
+
+TEST(CalibrationJson, OptionsThatDoNotApplyAreConfigErrors) {
+  test::TempDir dir;
+  const auto path = WriteCalibrationText(dir.path() / "cameras.json", kHandBuiltJson);
+  EXPECT_THAT(test::ConfigErrorOf([&] { ReadCalibration(path, {.units = LengthUnit::kMillimetres}); }),
+              HasSubstr("units: json files are in metres"));
+  EXPECT_THAT(test::ConfigErrorOf([&] {
+                WriteCalibration(dir.path() / "out.json", test::MakeRig(true), {.units = LengthUnit::kMillimetres});
+              }),
+              HasSubstr("always in metres"));
+  EXPECT_THAT(test::ConfigErrorOf([&] { WriteCalibration(dir.path() / "out.txt", test::MakeRig(true)); }),
+              HasSubstr("cannot tell the format to write"));
+  EXPECT_THAT(test::ConfigErrorOf([&] {
+                WriteCalibration(dir.path() / "out.json", test::MakeRig(true), {.format = CalibrationFormat::kColmap});
+              }),
+              HasSubstr("colmap is read only"));
+}
+
+TEST(CalibrationJson, CamerasAFormatCannotHoldAreRefusedNamingTheCamera) {
+  test::TempDir dir;
+  std::vector<Camera> rig = test::MakeRig(true);
+  rig[1].name = rig[0].name;
+  EXPECT_THAT(test::InputErrorOf([&] { WriteCalibration(dir.path() / "out.json", rig); }),
+              HasSubstr("camera name 'cam_a' appears twice"));
+  rig = test::MakeRig(true);
+  rig[2].R(0, 0) = 2;
+  EXPECT_THAT(test::InputErrorOf([&] { WriteCalibration(dir.path() / "out.json", rig); }),
+              HasSubstr("out.json: cannot write camera 'cam_c' (opencv): R is not orthonormal"));
+  EXPECT_THAT(test::InputErrorOf([&] { WriteCalibration(dir.path() / "out.json", {}); }),
+              HasSubstr("no cameras to write"));
+}
+
+}  // namespace
+}  // namespace rpt

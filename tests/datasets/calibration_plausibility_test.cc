@@ -1,0 +1,85 @@
+// SPDX-License-Identifier: MIT
+// Implausible cameras and rigs (datasets/camera_plausibility.h) are counted, never refused and
+// never silent: principal points far off-centre, two cameras at one spot, rigs that look like
+// millimetres read as metres; ReadCalibration counts them for every format.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "datasets/calibration/calibration.h"
+#include "datasets/camera_plausibility.h"
+#include "tests/datasets/calibration_test_util.h"
+#include "tests/datasets/io_test_util.h"
+
+namespace rpt {
+namespace {
+
+using ::testing::ElementsAre;
+
+std::vector<std::string> Lines(const InputWarnings& warnings) {
+  std::vector<std::string> lines;
+  for (const InputWarning& w : warnings.items()) lines.push_back(w.Line());
+  return lines;
+}
+
+TEST(CameraPlausibility, APlausibleRigIsNotWarned) {
+  InputWarnings warnings;
+  const std::vector<Camera> rig = test::MakeRig(true);
+  for (const Camera& camera : rig) CountImplausibleCamera(camera, "rig", &warnings);
+  CountImplausibleRig(rig, "rig", &warnings);
+  EXPECT_TRUE(warnings.empty());
+}
+
+TEST(CameraPlausibility, PrincipalPointFarOffCentreIsCounted) {
+  InputWarnings warnings;
+  Camera camera = test::MakeRig(false)[0];
+  camera.K(0, 2) = 0.5 * camera.width + 0.25 * camera.width;  // at the bound: plausible
+  CountImplausibleCamera(camera, "cams", &warnings);
+  EXPECT_TRUE(warnings.empty());
+  camera.K(1, 2) = 1000;  // (1000 - 540) / 1080 = 0.4259...
+  CountImplausibleCamera(camera, "cams", &warnings);
+  camera.K(1, 2) = 0;  // 0.5
+  CountImplausibleCamera(camera, "cams", &warnings);
+  EXPECT_THAT(Lines(warnings),
+              ElementsAre("cams: 2 cameras with the principal point more than a quarter of the image from its centre "
+                          "(max offset / image side = 0.5)"));
+}
+
+TEST(CameraPlausibility, CamerasAtOneSpotAndMillimetreRigsAreCounted) {
+  InputWarnings warnings;
+  std::vector<Camera> rig = test::MakeRig(false);
+  rig[2] = test::LookingAtRoomCentre("cam_c", rig[0].Center() + Eigen::Vector3d(0.006, 0, 0));   // 6 mm from cam_a
+  rig[3] = test::LookingAtRoomCentre("cam_d", rig[0].Center() + Eigen::Vector3d(0, 0.0099, 0));  // 11.6 mm from cam_c
+  CountImplausibleRig(rig, "rig", &warnings);
+  EXPECT_THAT(Lines(warnings), ElementsAre("rig: 2 camera pairs at the same spot (centres less than 1 cm apart)"));
+  // The rig in millimetres read as metres: 8.8 km wide.
+  warnings = {};
+  rig = test::MakeRig(false);
+  for (Camera& camera : rig) camera = test::LookingAtRoomCentre(camera.name, camera.Center() * 1000.0);
+  CountImplausibleRig(rig, "rig", &warnings);
+  ASSERT_EQ(warnings.items().size(), 1u);
+  EXPECT_EQ(warnings.items()[0].what,
+            "camera rigs spanning more than 100 m (millimetres read as metres? check the units)");
+  // The farthest pair: cam_b (-3.2, 3, 2.5) and cam_d (3, -3.3, 2.6), sqrt(6.2^2 + 6.3^2 + 0.1^2) km apart.
+  EXPECT_NEAR(warnings.items()[0].worst, 1000.0 * std::sqrt(6.2 * 6.2 + 6.3 * 6.3 + 0.1 * 0.1), 1e-6);
+}
+
+TEST(CameraPlausibility, ReadCalibrationCountsImplausibleRigsOfEveryFormat) {
+  test::TempDir dir;
+  std::vector<Camera> rig = test::MakeRig(false);
+  rig[1] = test::LookingAtRoomCentre("cam_b", rig[0].Center());
+  rig[2].K(0, 2) = 100;
+  for (const std::string name : {"rig.json", "rig.toml", "rig.yml"}) {
+    WriteCalibration(dir.path() / name, rig);
+    InputWarnings warnings;
+    ReadCalibration(dir.path() / name, {}, &warnings);
+    const std::string source = (dir.path() / name).string();
+    EXPECT_THAT(Lines(warnings),
+                testing::ElementsAre(
+                    source + ": 1 cameras with the principal point more than a quarter of the image from its centre "
+                             "(max offset / image side = 0.447917)",
+                    source + ": 1 camera pairs at the same spot (centres less than 1 cm apart)"));
+  }
+}
+
+}  // namespace
+}  // namespace rpt
