@@ -3,13 +3,13 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <unordered_set>
 
 #include "core/errors.h"
 #include "core/text.h"
 #include "datasets/detections.h"
 #include "datasets/readers/detections_file.h"
 #include "datasets/readers/generic_labels.h"
-#include "datasets/readers/voxelpose_detections.h"
 #include "datasets/registry.h"
 #include "datasets/simulated_source.h"
 #include "datasets/synthetic/detector_options.h"
@@ -86,17 +86,24 @@ std::vector<Sequence> LoadInput(const InputArgs& args, bool require_detections, 
   std::vector<Sequence> sequences;
   InputWarnings detection_warnings;  // of a detections file read once for all sequences
   if (!args.labels.empty()) {
-    sequences = ReadLabelsFile(args.labels, LabelsOptions{});
+    sequences = MaterializeAll(OpenLabelsFile(args.labels, LabelsOptions{}));
   } else {
     sequences = ReadDataset(RequestOf(args));
   }
   if (args.simulate) {
     for (Sequence& s : sequences) SimulateDetections(SimulationOf(args), &s);
   } else if (!args.detections.empty() && std::filesystem::path(args.detections).extension() == ".pkl") {
-    // VoxelPose caches are keyed "<camera>_<frame>": they need the sequence to map keys to ids.
+    // VoxelPose caches are keyed "<camera>_<frame>": they need the sequence's cameras and frame-id
+    // prefix to map keys to ids; they cover every image, so frames not in the sequence are left out.
     for (Sequence& s : sequences) {
-      const std::string prefix = s.frames.empty() ? s.name : s.frames.front().id.substr(0, s.frames.front().id.rfind('_'));
-      const Detections detections = ReadVoxelPoseDetections(args.detections, s, prefix);
+      DetectionsFileOptions options;
+      options.voxelpose.frame_id_prefix =
+          s.frames.empty() ? s.name : s.frames.front().id.substr(0, s.frames.front().id.rfind('_'));
+      for (const Camera& camera : s.cameras) options.voxelpose.cameras.push_back(camera.name);
+      Detections detections = ReadDetectionsFile(args.detections, options);
+      std::unordered_set<std::string> ids;
+      for (const SequenceFrame& frame : s.frames) ids.insert(frame.id);
+      std::erase_if(detections.frames, [&](const FrameDetections& frame) { return !ids.count(frame.frame_id); });
       AttachDetections(detections, args.detections, std::span<Sequence>(&s, 1), &s.warnings);
       s.warnings.Merge(detections.warnings);  // read per sequence: its own frames' corrections
     }
@@ -127,14 +134,14 @@ std::vector<Sequence> LoadInput(const InputArgs& args, bool require_detections, 
 std::vector<std::unique_ptr<FrameSource>> OpenInput(const InputArgs& args, bool require_detections,
                                                     InputWarnings* warnings) {
   CheckInputArgs(args);
-  if (args.dataset.empty() || !args.detections.empty() || !DatasetStreams(args.dataset)) {
+  if (args.dataset.empty() || !args.detections.empty()) {
     std::vector<Sequence> sequences = LoadInput(args, require_detections, warnings);
     for (Sequence& s : sequences) s.warnings = {};  // in `warnings` already: not twice
     return SourcesOf(std::move(sequences));
   }
-  // The reader streams and its detections are its own or simulated frame by frame: nothing is
-  // loaded whole. Streamed frames are validated as they come (cli/run_sequence.h).
-  std::vector<std::unique_ptr<FrameSource>> sources = StreamDataset(RequestOf(args));
+  // Every reader streams; with its own or simulated detections nothing is loaded whole. Streamed
+  // frames are validated as they come (cli/run_sequence.h).
+  std::vector<std::unique_ptr<FrameSource>> sources = OpenDataset(RequestOf(args));
   if (args.simulate) {
     for (auto& source : sources) {
       source = std::make_unique<SimulatedDetectionsSource>(std::move(source), SimulationOf(args));

@@ -39,8 +39,8 @@ void AddInputOptions(CLI::App* command, InputArgs* args);
 std::vector<Sequence> LoadInput(const InputArgs& args, bool require_detections, InputWarnings* warnings);
 
 // The input as frame sources (datasets/frame_source.h), for consumers that stream (rpt eval):
-// a dataset whose reader streams, with its own or simulated detections, is pulled frame by
-// frame and never loaded whole; every other input is LoadInput's sequences behind
+// a dataset with its own or simulated detections is pulled frame by frame and never loaded
+// whole; input with a detections file or a labels file is LoadInput's sequences behind
 // SequenceSource. `warnings` gets what LoadInput gives; a streamed source's own corrections are
 // complete once it is exhausted (FrameSource::warnings).
 std::vector<std::unique_ptr<FrameSource>> OpenInput(const InputArgs& args, bool require_detections,

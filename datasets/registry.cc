@@ -17,16 +17,16 @@ namespace rpt {
 
 const std::vector<DatasetEntry>& DatasetRegistry() {
   static const std::vector<DatasetEntry> entries = {
-      {ShelfInfo(), ReadShelf},
-      {Shelf4daInfo(), ReadShelf4da},
-      {CampusInfo(), ReadCampus},
-      {PanopticInfo(), ReadPanoptic, StreamPanoptic},
-      {Human36mInfo(), ReadHuman36m},
-      {H3wbInfo(), ReadH3wb},
-      {EgohumansInfo(), ReadEgohumans},
-      {MvorInfo(), ReadMvor},
-      {GenericInfo(), ReadGeneric},
-      {SyntheticInfo(), ReadSynthetic, StreamSyntheticDataset},
+      {ShelfInfo(), OpenShelf},          // readers/shelf_campus.h
+      {Shelf4daInfo(), OpenShelf4da},    // readers/shelf_4da.h
+      {CampusInfo(), OpenCampus},        // readers/shelf_campus.h
+      {PanopticInfo(), OpenPanoptic},    // readers/panoptic.h
+      {Human36mInfo(), OpenHuman36m},    // readers/human36m.h
+      {H3wbInfo(), OpenH3wb},            // readers/h3wb.h
+      {EgohumansInfo(), OpenEgohumans},  // readers/egohumans.h
+      {MvorInfo(), OpenMvor},            // readers/mvor.h
+      {GenericInfo(), OpenGeneric},      // readers/generic_labels.h
+      {SyntheticInfo(), OpenSynthetic},  // readers/synthetic_dataset.h
   };
   return entries;
 }
@@ -62,18 +62,10 @@ const DatasetEntry& FindDataset(const std::string& name) {
 
 }  // namespace
 
-std::vector<Sequence> ReadDataset(const DatasetRequest& request) { return FindDataset(request.dataset).read(request); }
-
-std::vector<std::unique_ptr<FrameSource>> StreamDataset(const DatasetRequest& request) {
-  const DatasetEntry& entry = FindDataset(request.dataset);
-  return entry.stream ? entry.stream(request) : SourcesOf(entry.read(request));
+std::vector<std::unique_ptr<FrameSource>> OpenDataset(const DatasetRequest& request) {
+  return FindDataset(request.dataset).open(request);
 }
 
-bool DatasetStreams(const std::string& dataset) {
-  for (const DatasetEntry& entry : DatasetRegistry()) {
-    if (entry.info.name == dataset) return static_cast<bool>(entry.stream);
-  }
-  return false;
-}
+std::vector<Sequence> ReadDataset(const DatasetRequest& request) { return MaterializeAll(OpenDataset(request)); }
 
 }  // namespace rpt

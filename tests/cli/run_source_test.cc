@@ -31,7 +31,7 @@ TEST(TriangulateSourceTest, SamePredictionsAsTheMaterialisedSequence) {
   options.progress = false;
   const std::vector<Sequence> whole = MakeSyntheticDataset(Scene(150));
   const TriangulatedSequence expected = TriangulateSequence(whole[0], options);
-  std::unique_ptr<FrameSource> source = StreamSynthetic(Scene(150));
+  std::unique_ptr<FrameSource> source = OpenSyntheticSequence(Scene(150));
   long visited = 0;
   const TriangulatedSequence streamed =
       TriangulateSource(*source, options, [&](const SequenceFrame& frame, const Poses3D&) {
@@ -52,7 +52,7 @@ TEST(TriangulateSourceTest, HoldsOneInputFrameWhateverTheLength) {
   RunOptions options;
   options.progress = false;
   for (const int frames : {10, 5000}) {
-    CountingSource source(StreamSynthetic(Scene(frames)));
+    CountingSource source(OpenSyntheticSequence(Scene(frames)));
     const TriangulatedSequence run = TriangulateSource(source, options);
     EXPECT_EQ(source.delivered(), frames);
     EXPECT_EQ(static_cast<int>(run.predictions.size()), frames);
@@ -99,7 +99,7 @@ TEST(RunSourcesTest, SameNumbersAndChecksAsTheMaterialisedSequences) {
   const std::vector<SequenceCheck> expected_checks = CheckDetections(whole);
 
   std::vector<std::unique_ptr<FrameSource>> sources;
-  sources.push_back(std::make_unique<CountingSource>(StreamSynthetic(Scene(90))));
+  sources.push_back(std::make_unique<CountingSource>(OpenSyntheticSequence(Scene(90))));
   sources.push_back(std::make_unique<SequenceSource>(whole[1]));
   const StreamedRun streamed = RunSources(std::move(sources), options);
   ExpectSameRun(streamed.run, expected);
@@ -124,7 +124,7 @@ TEST(RunSourcesTest, HoldsOneInputFramePerSequenceWhateverTheLength) {
   options.progress = false;
   CountingSource::Counts counts;  // RunSources frees each source once exhausted
   std::vector<std::unique_ptr<FrameSource>> sources;
-  sources.push_back(std::make_unique<CountingSource>(StreamSynthetic(Scene(3000)), &counts));
+  sources.push_back(std::make_unique<CountingSource>(OpenSyntheticSequence(Scene(3000)), &counts));
   const StreamedRun run = RunSources(std::move(sources), options);
   EXPECT_EQ(run.run.frames, 3000);
   EXPECT_EQ(counts.delivered, 3000);
@@ -140,7 +140,7 @@ TEST(SimulatedDetectionsSourceTest, SameDetectionsAsSimulatingTheWholeSequence) 
   simulation.seed = 11;
   simulation.detector = "hard";
   SimulateDetections(simulation, &whole[0]);
-  SimulatedDetectionsSource source(StreamSynthetic(params), simulation);
+  SimulatedDetectionsSource source(OpenSyntheticSequence(params), simulation);
   EXPECT_EQ(source.header().detection_joints, whole[0].detection_joints);
   const Sequence streamed = Materialize(source);
   ASSERT_EQ(streamed.frames.size(), whole[0].frames.size());

@@ -142,17 +142,21 @@ TEST(DatasetParams, EveryReaderListsParsableDefaults) {
   for (const DatasetParam& p : SyntheticInfo().params) given[p.name] = p.default_value;
   given["frames"] = "2";
   DatasetRequest request = Request(given);
-  EXPECT_EQ(ReadSynthetic(request).front().frames.size(), 2u);
+  EXPECT_EQ(MaterializeAll(OpenSynthetic(request)).front().frames.size(), 2u);
 }
 
 // `rpt demo --seed` takes any uint64; so does the synthetic reader (it used to stop at 2^31 - 1).
 TEST(DatasetParams, SyntheticSeedTakesTheFullRange) {
   const DatasetRequest request = Request({{"frames", "1"}, {"seed", "3000000000"}});
   EXPECT_EQ(ParseDatasetParams<SyntheticParams>("synthetic", request).seed, 3000000000ULL);
-  EXPECT_EQ(ReadSynthetic(request).front().frames.size(), 1u);
-  EXPECT_THAT(test::ErrorMessage<ConfigError>([] { ReadSynthetic(Request({{"noise", "noisy"}})); }),
+  EXPECT_EQ(MaterializeAll(OpenSynthetic(request)).front().frames.size(), 1u);
+  EXPECT_THAT(test::ErrorMessage<ConfigError>([] {
+                MaterializeAll(OpenSynthetic(Request({{"noise", "noisy"}})));
+              }),
               HasSubstr("synthetic: param noise: 'noisy' is not one of"));
-  EXPECT_THAT(test::ErrorMessage<ConfigError>([] { ReadSynthetic(Request({{"camras", "3"}})); }),
+  EXPECT_THAT(test::ErrorMessage<ConfigError>([] {
+                MaterializeAll(OpenSynthetic(Request({{"camras", "3"}})));
+              }),
               HasSubstr("did you mean 'cameras'?"));
 }
 
