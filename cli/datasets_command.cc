@@ -4,7 +4,7 @@
 #include <memory>
 
 #include "cli/commands.h"
-#include "engine/dataset_registry.h"
+#include "datasets/registry.h"
 
 namespace rpt::cli {
 
@@ -14,10 +14,10 @@ void RegisterDatasetsCommand(CLI::App& app) {
   command->add_flag("--markdown", *markdown, "print only the parameter tables of docs/datasets.md");
   command->callback([markdown] {
     if (*markdown) {
-      std::printf("%s", engine::DatasetParamsMarkdown().c_str());
+      std::printf("%s", DatasetParamsMarkdown().c_str());
       return;
     }
-    for (const engine::DatasetEntry& entry : engine::DatasetRegistry()) {
+    for (const DatasetEntry& entry : DatasetRegistry()) {
       const DatasetInfo& info = entry.info;
       std::printf("%s: %s\n", info.name.c_str(), info.description.c_str());
       std::printf("  on disk: %s\n", info.layout.c_str());

@@ -49,7 +49,7 @@ void RunDemo(DemoOptions o) {
   params.noise = o.detector;
   params.seed = o.seed;
   std::vector<std::unique_ptr<FrameSource>> sources;
-  sources.push_back(StreamSynthetic(params));
+  sources.push_back(OpenSyntheticSequence(params));
   const engine::Config config = ResolveConfig(o.config);
   engine::RunOptions run_options;
   run_options.triangulator = config.triangulator;

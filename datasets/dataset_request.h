@@ -3,24 +3,33 @@
 //
 // Every reader is a pair of functions (datasets/readers/<name>.h):
 //   DatasetInfo <Name>Info();
-//   std::vector<Sequence> Read<Name>(const DatasetRequest& request);
-// and, where the format can be walked frame by frame, a third:
-//   std::vector<std::unique_ptr<FrameSource>> Stream<Name>Dataset(const DatasetRequest& request);
-// registered beside the other two (engine/dataset_registry.cc). A FrameSource (datasets/frame_source.h)
-// announces the SequenceHeader (name, cameras, joint names, room, fps) and then hands out one
-// frame per Next() into the caller's buffer: memory flat in the number of frames. Read<Name> of a
-// streaming reader is the same frames materialised (Materialize), so both give the same numbers.
-// StreamDataset (registry.h) gives every dataset as sources: the loaded sequences of readers that
-// do not stream go behind SequenceSource. Which readers stream and why the others load whole:
-// docs/datasets.md, "Streaming".
-// and a <Name>Params struct with VisitFields: the reader parses request.params into it once
-// (ParseDatasetParams, datasets/dataset_params.h) and <Name>Info() lists it (DescribeDatasetParams).
-// Read<Name> walks the data once and returns the sequences with their ground truth and, when a
-// detections parameter asks for the dataset's own 2D (e.g. detections=voxelpose, =cache,
-// =annotations), the frames' views filled in the same walk.
+//   std::vector<std::unique_ptr<FrameSource>> Open<Name>(const DatasetRequest& request);
+// registered together (datasets/registry.cc), and a <Name>Params struct with VisitFields: the
+// reader parses request.params into it once (ParseDatasetParams, datasets/dataset_params.h) and
+// <Name>Info() lists it (DescribeDatasetParams).
+// Open<Name> returns one FrameSource (datasets/frame_source.h) per sequence. Everything that is
+// wrong before the first frame is thrown by Open<Name> itself: bad parameters (ConfigError), a
+// missing root, calibration or annotation file, unknown cameras, subjects or sequences, malformed
+// headers (InputError naming the file and the place). Each source then announces the
+// SequenceHeader (name, cameras, joint names, room, fps) and converts one frame per Next() into the
+// caller's buffer, so memory stays flat in the number of frames: formats with a file per frame read
+// it when the frame is pulled; formats with every frame in one file (a .mat, JSON, NumPy or text
+// file) keep that file parsed and convert frame i from it (IndexedFrameSource), never holding the
+// converted frames of a sequence. Reading a whole dataset is its sources materialised
+// (ReadDataset, MaterializeAll). How each reader yields its frames: docs/datasets.md, "Streaming".
+// Readers do not validate (ValidateFrame, datasets/sequence.h): the consumer validates every frame
+// once. They still throw InputError for what they cannot parse and accept, correct and count
+// real-world imprecision (the source's warnings(), datasets/input_warnings.h).
+// When a detections parameter asks for the dataset's own 2D (e.g. detections=voxelpose, =openpose,
+// =cache, =annotations) each frame's views are attached by its source as the frame is converted.
+// With request.ground_truth false a reader that can give frames without its ground-truth files
+// (the frames of its detections or of its `frames` parameter) does so, with no persons and empty
+// gt_joints; one that cannot throws ConfigError saying why.
 // Readers convert everything to metres in a z-up world frame where the dataset allows it, name
 // joints like core/joints.h (nose, shoulder_left, ...; dataset-specific extras such as
-// head_top), and set frame ids "<dataset>[_<sequence>]_<frame number, 6 digits>".
+// head_top), set frame ids "<dataset>[_<sequence>]_<frame number, 6 digits>", and give frame
+// times in seconds from the data (its clock or its frame rate), kUnknownTime (NaN) where the data
+// has none.
 #pragma once
 
 #include <filesystem>
@@ -48,6 +57,9 @@ struct DatasetRequest {
   std::string dataset;
   std::filesystem::path root;
   std::map<std::string, std::string> params;  // key=value from the command line (parsed by the reader)
+  // false: only the detections are wanted; the reader runs without its ground-truth files where it
+  // can (frames without persons), else throws ConfigError.
+  bool ground_truth = true;
 };
 
 // Parses frame selections like "300-600", "350-470,650-750", "0-3199:12" (every 12th) into a

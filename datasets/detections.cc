@@ -34,12 +34,11 @@ AttachReport AttachDetections(const Detections& detections, const std::string& s
     }
   }
   AttachReport report;
-  std::string first_unused;
   std::unordered_set<const SequenceFrame*> attached;
   for (const FrameDetections& found : detections.frames) {
     const auto it = places.find(found.frame_id);
     if (it == places.end()) {
-      if (report.unused_frames++ == 0) first_unused = found.frame_id;
+      if (report.unused_frames++ == 0) report.first_unused_frame = found.frame_id;
       continue;
     }
     for (const Place& place : it->second) {
@@ -60,33 +59,42 @@ AttachReport AttachDetections(const Detections& detections, const std::string& s
     }
   }
 
-  std::string first_without;
   for (const Sequence& sequence : sequences) {
     int with = 0;
     for (const SequenceFrame& frame : sequence.frames) {
       if (attached.count(&frame)) {
         ++with;
       } else if (report.frames_without++ == 0) {
-        first_without = frame.id;
+        report.first_frame_without = frame.id;
       }
     }
     if (with == 0 && !sequence.frames.empty()) {
-      throw InputError(source + ": none of its " + std::to_string(detections.frames.size()) + " frame ids" +
-                       (detections.frames.empty() ? "" : " (e.g. '" + detections.frames.front().frame_id + "')") +
-                       " matches a frame of sequence '" + sequence.name + "' (e.g. '" + sequence.frames.front().id +
-                       "')");
+      throw NoFrameMatchesError(source, detections.frames.size(),
+                                detections.frames.empty() ? "" : detections.frames.front().frame_id, sequence.name,
+                                sequence.frames.front().id);
     }
     report.frames_with_detections += with;
   }
-  if (warnings != nullptr) {
-    warnings->AddUnused(source,
-                        "detection frames whose id is no frame of the input, ignored (first '" + first_unused + "')",
-                        report.unused_frames);
-    warnings->AddUnused(
-        source, "frames of the input absent from it, triangulated without detections (first '" + first_without + "')",
-        report.frames_without);
-  }
+  if (warnings != nullptr) CountUnattachedFrames(report, source, warnings);
   return report;
+}
+
+void CountUnattachedFrames(const AttachReport& report, const std::string& source, InputWarnings* warnings) {
+  warnings->AddUnused(
+      source, "detection frames whose id is no frame of the input, ignored (first '" + report.first_unused_frame + "')",
+      report.unused_frames);
+  warnings->AddUnused(
+      source,
+      "frames of the input absent from it, triangulated without detections (first '" + report.first_frame_without + "')",
+      report.frames_without);
+}
+
+InputError NoFrameMatchesError(const std::string& source, size_t num_detection_frames,
+                               const std::string& first_detection_id, const std::string& sequence_name,
+                               const std::string& first_frame_id) {
+  return InputError(source + ": none of its " + std::to_string(num_detection_frames) + " frame ids" +
+                    (num_detection_frames == 0 ? "" : " (e.g. '" + first_detection_id + "')") +
+                    " matches a frame of sequence '" + sequence_name + "' (e.g. '" + first_frame_id + "')");
 }
 
 JointNames SimulatedDetectionJoints(const SimulationOptions& options, const JointNames& gt_joints) {

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/errors.h"
 #include "core/joints.h"
 #include "core/poses.h"
 #include "datasets/sequence.h"
@@ -31,6 +32,8 @@ struct AttachReport {
   int frames_with_detections = 0;  // input frames listed in the detections (possibly with no person)
   int frames_without = 0;          // input frames absent from the detections (no persons)
   int unused_frames = 0;           // detection frames whose id is no frame of the input (ignored)
+  std::string first_frame_without;  // id of the first of frames_without
+  std::string first_unused_frame;   // id of the first of unused_frames
 };
 
 // Sets every sequence's detection_joints and its frames' views (camera order of the sequence)
@@ -45,6 +48,14 @@ struct AttachReport {
 // Detections may be attached more than once): the caller reports it once.
 AttachReport AttachDetections(const Detections& detections, const std::string& source, std::span<Sequence> sequences,
                               InputWarnings* warnings);
+// Its parts, for readers that attach their own detections frame by frame: the unmatched frames
+// of `report` counted under `source` in `warnings` (the two lines above), and the error when none
+// of a sequence's frames is in the detections (`num_detection_frames` ids, the first
+// `first_detection_id`).
+void CountUnattachedFrames(const AttachReport& report, const std::string& source, InputWarnings* warnings);
+InputError NoFrameMatchesError(const std::string& source, size_t num_detection_frames,
+                               const std::string& first_detection_id, const std::string& sequence_name,
+                               const std::string& first_frame_id);
 
 // Replaces every frame's views by simulated detections of its GT (synthetic detector model,
 // joints mapped by name to `joints`; default: COCO-17, or COCO-WholeBody when the GT has it), and

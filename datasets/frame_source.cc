@@ -5,6 +5,24 @@
 
 namespace rpt {
 
+IndexedFrameSource::IndexedFrameSource(SequenceHeader header, size_t num_frames, ConvertFrame convert,
+                                       InputWarnings warnings)
+    : header_(std::move(header)),
+      num_frames_(num_frames),
+      convert_(std::move(convert)),
+      warnings_(std::move(warnings)) {}
+
+bool IndexedFrameSource::Next(SequenceFrame* frame) {
+  if (next_ >= num_frames_) return false;
+  frame->id.clear();
+  frame->timestamp_s = 0;
+  frame->gt.Clear(0);
+  frame->views.clear();
+  frame->labels_2d.clear();
+  convert_(next_++, frame, &warnings_);
+  return true;
+}
+
 SequenceSource::SequenceSource(Sequence sequence) : sequence_(std::move(sequence)) {}
 
 bool SequenceSource::Next(SequenceFrame* frame) {
@@ -30,6 +48,16 @@ Sequence Materialize(FrameSource& source) {
   while (source.Next(&frame)) sequence.frames.push_back(std::move(frame));
   sequence.warnings = source.warnings();
   return sequence;
+}
+
+std::vector<Sequence> MaterializeAll(std::vector<std::unique_ptr<FrameSource>> sources) {
+  std::vector<Sequence> sequences;
+  sequences.reserve(sources.size());
+  for (std::unique_ptr<FrameSource>& source : sources) {
+    sequences.push_back(Materialize(*source));
+    source.reset();  // its parsed file is no longer needed
+  }
+  return sequences;
 }
 
 }  // namespace rpt

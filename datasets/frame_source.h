@@ -1,15 +1,19 @@
 // SPDX-License-Identifier: MIT
-// The streaming side of the reader contract: a sequence as a header plus frames pulled one by one.
+// The reader contract: a sequence as a header plus frames pulled one by one.
 //
 // A FrameSource announces its SequenceHeader (name, cameras, joint names, room, fps) before the
 // first frame and then hands out the frames in order through Next(). The caller owns the frame
 // buffer and passes the same one every time, so a consumer that does not keep frames holds one
 // frame at a time whatever the length of the sequence (memory flat in the number of frames).
-// Readers of formats that can be walked frame by frame implement FrameSource directly (the
-// synthetic generator: datasets/readers/synthetic_dataset.h); every other reader's materialised
-// Sequence becomes a source through SequenceSource, so every dataset can be consumed the same way.
+// Every dataset reader opens its sequences as sources (datasets/dataset_request.h): formats that
+// can be walked frame by frame read or generate each frame when it is pulled (the synthetic
+// generator, Panoptic's and EgoHumans' file per frame); formats with every frame in one file keep
+// that file parsed and convert one frame per Next (IndexedFrameSource). Reading a whole sequence
+// is its source materialised (Materialize).
 #pragma once
 
+#include <cstddef>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -33,8 +37,31 @@ class FrameSource {
   virtual const InputWarnings& warnings() const = 0;
 };
 
-// A materialised sequence as a FrameSource (the adapter for readers that load whole). Owns the
-// sequence and moves each frame out as it is pulled, so the frames already delivered are freed.
+// A sequence whose frames are all in data the source holds (one .mat, JSON, NumPy or text file
+// for every frame, kept parsed): `convert` writes frame `frame_idx` into a cleared frame (empty id,
+// time 0, no persons, no views, no 2D labels), converting it from that data, and counts the
+// corrections it applies in `warnings`. Frames are converted one per Next, never all at once.
+class IndexedFrameSource final : public FrameSource {
+ public:
+  using ConvertFrame = std::function<void(size_t frame_idx, SequenceFrame* frame, InputWarnings* warnings)>;
+  // `warnings`: the corrections made while opening (cameras, the file's index).
+  IndexedFrameSource(SequenceHeader header, size_t num_frames, ConvertFrame convert, InputWarnings warnings = {});
+
+  const SequenceHeader& header() const override { return header_; }
+  long num_frames() const override { return static_cast<long>(num_frames_); }
+  bool Next(SequenceFrame* frame) override;
+  const InputWarnings& warnings() const override { return warnings_; }
+
+ private:
+  SequenceHeader header_;
+  size_t num_frames_;
+  ConvertFrame convert_;
+  InputWarnings warnings_;
+  size_t next_ = 0;
+};
+
+// A materialised sequence as a FrameSource. Owns the sequence and moves each frame out as it is
+// pulled, so the frames already delivered are freed.
 class SequenceSource final : public FrameSource {
  public:
   explicit SequenceSource(Sequence sequence);
@@ -52,7 +79,10 @@ class SequenceSource final : public FrameSource {
 // Wraps each sequence into a SequenceSource.
 std::vector<std::unique_ptr<FrameSource>> SourcesOf(std::vector<Sequence> sequences);
 
-// Pulls every frame of `source` into a Sequence (what a whole-sequence consumer needs).
+// Pulls every frame of `source` into a Sequence (what a whole-sequence consumer needs), with the
+// source's warnings once it is exhausted.
 Sequence Materialize(FrameSource& source);
+// Every source materialised in turn (the sources of one dataset: its sequences, in order).
+std::vector<Sequence> MaterializeAll(std::vector<std::unique_ptr<FrameSource>> sources);
 
 }  // namespace rpt

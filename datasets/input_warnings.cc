@@ -29,7 +29,7 @@ void InputWarnings::Add(const std::string& source, std::string_view what, std::s
   items_.push_back(InputWarning{source, std::string(what), std::string(measure), 1, value});
 }
 
-void InputWarnings::AddUnused(const std::string& source, std::string_view what, long count) {
+void InputWarnings::AddCount(const std::string& source, std::string_view what, long count, InputWarningKind kind) {
   if (count <= 0) return;
   for (InputWarning& w : items_) {
     if (w.source == source && w.what == what) {
@@ -37,7 +37,15 @@ void InputWarnings::AddUnused(const std::string& source, std::string_view what, 
       return;
     }
   }
-  items_.push_back(InputWarning{source, std::string(what), "", count, 0, InputWarningKind::kUnused});
+  items_.push_back(InputWarning{source, std::string(what), "", count, 0, kind});
+}
+
+void InputWarnings::AddUnused(const std::string& source, std::string_view what, long count) {
+  AddCount(source, what, count, InputWarningKind::kUnused);
+}
+
+void InputWarnings::AddMissing(const std::string& source, std::string_view what, long count) {
+  AddCount(source, what, count, InputWarningKind::kMissing);
 }
 
 void InputWarnings::Merge(const InputWarnings& other) {

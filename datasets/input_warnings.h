@@ -25,10 +25,12 @@ inline constexpr double kRotationRoundOff = 1e-9;
 inline constexpr double kMaxScoreOvershoot = 1.5;
 
 // Corrections change values within the tolerances above and lose nothing; unused input is input
-// the run ignores (what `--strict` refuses, docs/datasets.md "Real-world tolerance").
+// the run ignores (what `--strict` refuses, docs/datasets.md "Real-world tolerance"); missing
+// information is what the input does not say and the run goes without (accepted by --strict).
 enum class InputWarningKind {
   kCorrected,  // e.g. rotations re-orthonormalised, scores clamped to 1
   kUnused,     // e.g. skipped entries, files matching no pattern, unmatched frames, unknown cameras
+  kMissing,    // e.g. frame times unknown
 };
 
 // One kind of correction (or of unused input) in one file.
@@ -53,6 +55,9 @@ class InputWarnings {
   // phrase saying what happens to them, e.g. "entries of another category than person skipped").
   // A count of 0 adds nothing.
   void AddUnused(const std::string& source, std::string_view what, long count = 1);
+  // `count` more items under `source` that lack information the run then goes without, of kind
+  // `what` (e.g. "labels without \"timestamp\" or \"fps\": their times are unknown ..."). 0 adds nothing.
+  void AddMissing(const std::string& source, std::string_view what, long count);
   // Adds the counts of `other` (corrections of other values, e.g. another sequence of the file).
   void Merge(const InputWarnings& other);
   // Folds in `other` when it describes the same corrections seen again (the same files read once
@@ -69,6 +74,8 @@ class InputWarnings {
   std::vector<InputWarning> Unused() const;
 
  private:
+  void AddCount(const std::string& source, std::string_view what, long count, InputWarningKind kind);
+
   std::vector<InputWarning> items_;
 };
 

@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -33,9 +34,13 @@ struct PersonLabel2D {
   std::vector<int8_t> visibility;       // per GT joint (gt_joints order): kLabel*; empty = not labelled
 };
 
+// SequenceFrame::timestamp_s of a frame whose time is unknown: nothing is carried over from the
+// frame before (no tracking, no pre-filter, no speed limit across it).
+inline constexpr double kUnknownTime = std::numeric_limits<double>::quiet_NaN();
+
 struct SequenceFrame {
   std::string id;                // unique label id (e.g. "shelf_000300")
-  double timestamp_s = 0;        // for speed clipping and tracking
+  double timestamp_s = 0;        // for speed clipping and tracking; kUnknownTime (NaN) = unknown
   Poses3D gt;                    // ground truth; joint score = visibility (> 0.1 visible)
   std::vector<Poses2D> views;    // detections per camera (may be empty when not loaded)
   // Per camera, the persons labelled in that image (datasets with 2D labels such as MVOR, and
@@ -53,7 +58,7 @@ struct SequenceHeader {
   JointNames detection_joints;      // joint names of SequenceFrame::views
   JointNames evaluated_joints;      // the dataset's evaluated joints; empty = the paper's 13
   Room room;
-  double fps = 0;
+  double fps = 0;  // 0 = unknown (frames without a rate)
 };
 
 // A sequence with all its frames in memory.
@@ -63,9 +68,10 @@ struct Sequence : SequenceHeader {
 };
 
 // Checks shapes and values (camera validity, joint counts, finite coordinates, scores in [0, 1],
-// unique frame ids). Throws InputError naming `source`, the frame id and the view on failure.
-// Strict on purpose: readers correct real-world imprecision first (rotations re-orthonormalised,
-// scores clamped; datasets/input_warnings.h), so a reader's Sequence always passes.
+// unique frame ids; a time may be unknown, NaN). Throws InputError naming `source`, the frame id
+// and the view on failure. Strict on purpose: readers correct real-world imprecision first
+// (rotations re-orthonormalised, scores clamped; datasets/input_warnings.h) but do not validate:
+// the consumer validates every frame once (datasets/frame_source.h).
 void ValidateSequence(const Sequence& sequence, const std::string& source);
 // Its two parts, for frames that stream (datasets/frame_source.h): the header (cameras), and one
 // frame against its header (repeated frame ids are left to the consumer).

@@ -78,9 +78,10 @@ class AttachedDetections::Source final : public FrameSource {
   bool finished_ = false;
 };
 
-AttachedDetections::AttachedDetections(Detections detections, std::string source)
+AttachedDetections::AttachedDetections(Detections detections, std::string source, bool report_unused_frames)
     : detections_(std::move(detections)),
       source_(std::move(source)),
+      report_unused_frames_(report_unused_frames),
       used_(std::make_unique<std::atomic<bool>[]>(detections_.frames.size())) {
   frame_index_.reserve(detections_.frames.size());
   for (size_t i = 0; i < detections_.frames.size(); ++i) {
@@ -99,7 +100,7 @@ std::unique_ptr<FrameSource> AttachedDetections::Wrap(std::unique_ptr<FrameSourc
 InputWarnings AttachedDetections::Unused() const {
   long unused = 0;
   std::string first;
-  for (size_t i = 0; i < detections_.frames.size(); ++i) {
+  for (size_t i = 0; report_unused_frames_ && i < detections_.frames.size(); ++i) {
     if (used_[i].load(std::memory_order_relaxed)) continue;
     if (unused++ == 0) first = detections_.frames[i].frame_id;
   }

@@ -26,8 +26,9 @@ namespace rpt::engine {
 
 class AttachedDetections {
  public:
-  // `source` names the file in messages.
-  AttachedDetections(Detections detections, std::string source);
+  // `source` names the file in messages. Without `report_unused_frames`, detection frames no
+  // sequence uses are not reported (a VoxelPose cache covers every image of a dataset).
+  AttachedDetections(Detections detections, std::string source, bool report_unused_frames = true);
   ~AttachedDetections();
 
   // `frames` with the detections attached (header: detection_joints = the file's joints).
@@ -44,6 +45,7 @@ class AttachedDetections {
   class Source;
   Detections detections_;
   std::string source_;
+  bool report_unused_frames_;
   std::unordered_map<std::string, int> frame_index_;  // frame id -> index into detections_.frames
   std::unique_ptr<std::atomic<bool>[]> used_;         // per detection frame: attached to some frame
   // Per wrapped sequence (in the order wrapped): its frames absent from the file, and the first.

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "engine/input.h"
 
+#include <filesystem>
 #include <utility>
 
 #include "core/errors.h"
@@ -8,7 +9,7 @@
 #include "datasets/simulated_source.h"
 #include "engine/attached_detections.h"
 #include "engine/checked_source.h"
-#include "engine/dataset_registry.h"
+#include "datasets/registry.h"
 
 namespace rpt::engine {
 namespace {
@@ -42,6 +43,11 @@ DatasetRequest RequestOf(const InputSpec& spec) {
   return request;
 }
 
+bool IsVoxelPoseCache(const std::string& path) {
+  const std::string extension = std::filesystem::path(path).extension().string();
+  return extension == ".pkl" || extension == ".pickle";
+}
+
 std::string NoDetectionsMessage(const std::string& sequence) {
   return "sequence '" + sequence +
          "' has no 2D detections: pass --detections FILE, --simulate, or the dataset's own cache "
@@ -51,13 +57,15 @@ std::string NoDetectionsMessage(const std::string& sequence) {
 }  // namespace
 
 Input::Input(std::vector<std::unique_ptr<FrameSource>> sources, InputWarnings opened, bool strict,
-             std::shared_ptr<AttachedDetections> attached)
+             std::shared_ptr<AttachedDetections> attached,
+             std::vector<std::shared_ptr<AttachedDetections>> per_sequence_files)
     : sources_(std::move(sources)),
       finished_(sources_.size()),
       done_(sources_.size(), false),
       opened_(std::move(opened)),
       strict_(strict),
-      attached_(std::move(attached)) {
+      attached_(std::move(attached)),
+      per_sequence_files_(std::move(per_sequence_files)) {
   headers_.reserve(sources_.size());
   for (const auto& source : sources_) headers_.push_back(source->header());
 }
@@ -83,7 +91,10 @@ InputWarnings Input::Warnings() const {
     every_done = every_done && done_[i];
   }
   all.Merge(opened_);
-  if (attached_ && every_done) all.Merge(attached_->Unused());
+  if (every_done) {
+    if (attached_) all.Merge(attached_->Unused());
+    for (const auto& file : per_sequence_files_) all.Merge(file->Unused());
+  }
   return all;
 }
 
@@ -106,9 +117,24 @@ Input OpenInput(const InputSpec& spec, const InputNeeds& needs) {
   std::vector<std::unique_ptr<FrameSource>> sources = OpenDataset(RequestOf(spec));
   InputWarnings opened;
   std::shared_ptr<AttachedDetections> attached;
+  std::vector<std::shared_ptr<AttachedDetections>> per_sequence_files;
   if (spec.simulate) {
     for (auto& source : sources) {
       source = std::make_unique<SimulatedDetectionsSource>(std::move(source), SimulationOf(spec));
+    }
+  } else if (IsVoxelPoseCache(spec.detections)) {
+    // A VoxelPose cache is keyed "<camera>_<frame>": read per sequence, with its cameras and its
+    // name as the frame-id prefix ("shelf" -> "shelf_000300"); it covers every image, so frames no
+    // sequence uses are not reported.
+    for (auto& source : sources) {
+      DetectionsFileOptions options;
+      options.voxelpose.frame_id_prefix = source->header().name;
+      for (const Camera& camera : source->header().cameras) options.voxelpose.cameras.push_back(camera.name);
+      auto file = std::make_shared<AttachedDetections>(ReadDetectionsFile(spec.detections, options), spec.detections,
+                                                       /*report_unused_frames=*/false);
+      opened.Merge(file->file_warnings());
+      source = file->Wrap(std::move(source));
+      per_sequence_files.push_back(std::move(file));
     }
   } else if (!spec.detections.empty()) {
     // One file for all sequences: each frame goes to the sequence that holds its id.
@@ -122,7 +148,7 @@ Input OpenInput(const InputSpec& spec, const InputNeeds& needs) {
     }
     source = std::make_unique<CheckedSource>(std::move(source));
   }
-  Input input(std::move(sources), std::move(opened), spec.strict, std::move(attached));
+  Input input(std::move(sources), std::move(opened), spec.strict, std::move(attached), std::move(per_sequence_files));
   // What the readers found unusable while opening (e.g. files not matching the reader's pattern);
   // the rest is known once the sources are exhausted (the run loop checks again then).
   input.CheckStrict();

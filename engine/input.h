@@ -21,7 +21,7 @@ class AttachedDetections;
 
 // What to read (the input options of every command that reads a dataset).
 struct InputSpec {
-  std::string dataset;              // dataset reader (engine/dataset_registry.h)
+  std::string dataset;              // dataset reader (datasets/registry.h)
   std::string root;                 // its folder (or file)
   std::vector<std::string> params;  // key=value parameters of the reader (with `labels`: of the labels reader)
   std::string labels;               // generic labels file (JSON or HDF5 cache) instead of a dataset
@@ -42,8 +42,11 @@ struct InputNeeds {
 // Finished(i) when source i is exhausted; Warnings() is complete once every source is.
 class Input {
  public:
+  // `attached`: a detections file shared by the sequences; `per_sequence_files`: one per sequence
+  // (VoxelPose caches). Both are kept for their unused-input counts.
   Input(std::vector<std::unique_ptr<FrameSource>> sources, InputWarnings opened, bool strict,
-        std::shared_ptr<AttachedDetections> attached = nullptr);
+        std::shared_ptr<AttachedDetections> attached = nullptr,
+        std::vector<std::shared_ptr<AttachedDetections>> per_sequence_files = {});
   ~Input();
   Input(Input&&) noexcept;
   Input& operator=(Input&&) noexcept;
@@ -70,6 +73,7 @@ class Input {
   InputWarnings opened_;
   bool strict_ = false;
   std::shared_ptr<AttachedDetections> attached_;
+  std::vector<std::shared_ptr<AttachedDetections>> per_sequence_files_;
 };
 
 // Opens the input `spec` names. Throws ConfigError for contradicting options and InputError for

@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -18,6 +19,7 @@
 #include "core/errors.h"
 #include "datasets/calibration/calibration.h"
 #include "datasets/dataset_request.h"
+#include "datasets/frame_source.h"
 #include "datasets/input_warnings.h"
 #include "datasets/io/mat.h"
 #include "datasets/io/npy.h"
@@ -231,6 +233,11 @@ enum class EgoFile { kCameras, kImages, kTransforms, kManualCamera, kGt, kPoses2
 // A sequence egohumans/01_tagging/001_tagging with one GT time stamp (00001), `bytes` as the file
 // `fuzzed` and the companions as the others; the 2D cache is read (of cam01 only) when it is
 // the fuzzed file.
+// Every frame of every source converted and validated, as a run does.
+void ReadAll(std::vector<std::unique_ptr<FrameSource>> sources) {
+  for (const Sequence& sequence : MaterializeAll(std::move(sources))) ValidateSequence(sequence, sequence.name);
+}
+
 void ReadEgohumansWith(EgoFile fuzzed, std::span<const std::uint8_t> bytes) {
   const fs::path root = ScratchDir() / "egohumans";
   fs::remove_all(root);
@@ -253,7 +260,7 @@ void ReadEgohumansWith(EgoFile fuzzed, std::span<const std::uint8_t> bytes) {
     WriteScratch(seq + "processed_data/poses2d/cam01/rgb/00001.npy", bytes);
     params = {{"cameras", "cam01"}, {"detections", "cache"}};
   }
-  ReadEgohumans(DatasetRequest{"egohumans", root, params});
+  ReadAll(OpenEgohumans(DatasetRequest{"egohumans", root, params}));
 }
 
 // H3WB npz: the input holds train_data.npy and then metadata.npy; they are split at the second
@@ -317,7 +324,7 @@ void ReadH3wbNpz(std::span<const std::uint8_t> bytes) {
   std::vector<std::pair<std::string, std::string>> members = {{"train_data.npy", text.substr(0, split)}};
   if (split != std::string::npos) members.emplace_back("metadata.npy", text.substr(split));
   const fs::path path = WriteScratch("h3wb_npz/h3wb_train.npz", StoredZip(members));
-  ReadH3wb(DatasetRequest{"h3wb", path, {{"subjects", "S8"}, {"detections", "annotations"}}});
+  ReadAll(OpenH3wb(DatasetRequest{"h3wb", path, {{"subjects", "S8"}, {"detections", "annotations"}}}));
 }
 
 // H3WB json: the input as 2Dto3D_train.json next to the fixed metadata.xml above; subject S8,
@@ -327,8 +334,12 @@ void ReadH3wbJson(std::span<const std::uint8_t> bytes) {
   fs::remove_all(root);
   WriteScratch("h3wb_json/metadata.xml", H36mMetadataXmlText());
   WriteScratch("h3wb_json/2Dto3D_train.json", bytes);
-  ReadH3wb(DatasetRequest{"h3wb", root,
-                          {{"file", "2Dto3D_train.json"}, {"cameras_file", "metadata.xml"}, {"subjects", "S8"}, {"detections", "annotations"}}});
+  ReadAll(OpenH3wb(DatasetRequest{"h3wb",
+                                  root,
+                                  {{"file", "2Dto3D_train.json"},
+                                   {"cameras_file", "metadata.xml"},
+                                   {"subjects", "S8"},
+                                   {"detections", "annotations"}}}));
 }
 
 void ReadPanopticWith(const std::string& calibration, const std::string& bodies) {
@@ -336,33 +347,14 @@ void ReadPanopticWith(const std::string& calibration, const std::string& bodies)
   fs::remove_all(root);
   WriteScratch("panoptic/seqA/calibration_seqA.json", calibration);
   WriteScratch("panoptic/seqA/hdPose3d_stage1_coco19/body3DScene_00000010.json", bodies);
-  ReadPanoptic(DatasetRequest{"panoptic", root, {{"sequences", "seqA"}, {"cameras", "00_00"}, {"every", "1"}}});
-}
-
-// Frames shelf_000000..shelf_000003 seen by cameras "0" and "1", for the VoxelPose cache.
-const Sequence& VoxelPoseSequence() {
-  static const Sequence sequence = [] {
-    Sequence s;
-    s.name = "shelf";
-    for (const char* name : {"0", "1"}) {
-      Camera camera;
-      camera.name = name;
-      s.cameras.push_back(camera);
-    }
-    for (int f = 0; f < 4; ++f) {
-      SequenceFrame frame;
-      frame.id = "shelf_00000" + std::to_string(f);
-      s.frames.push_back(frame);
-    }
-    return s;
-  }();
-  return sequence;
+  ReadAll(
+      OpenPanoptic(DatasetRequest{"panoptic", root, {{"sequences", "seqA"}, {"cameras", "00_00"}, {"every", "1"}}}));
 }
 
 void ReadHdf5Cache(std::span<const std::uint8_t> bytes) {
   const fs::path path = WriteScratch("cache.h5", bytes);
   const Hdf5CacheContents contents = ProbeHdf5Cache(path);
-  if (contents.sequences) ReadSequencesHdf5(path);
+  if (contents.sequences) ReadAll(OpenSequencesHdf5(path));
   if (contents.detections) ReadDetectionsHdf5(path);
 }
 
@@ -375,7 +367,8 @@ void ReadCalibrationWith(CalibrationFormat format, const std::string& name, std:
 std::vector<FuzzTarget> MakeTargets() {
   using B = std::span<const std::uint8_t>;
   return {
-      {"labels", "generic JSON labels (rpt / skelda)", [](B b) { ReadLabels(WriteScratch("labels.json", b)); }},
+      {"labels", "generic JSON labels (rpt / skelda)",
+       [](B b) { ReadAll(OpenLabels(WriteScratch("labels.json", b))); }},
       {"detections_json", "generic JSON detections",
        [](B b) { ReadGenericDetections(WriteScratch("detections.json", b)); }},
       {"coco", "COCO keypoint result list (MVOR image ids)",
@@ -392,7 +385,9 @@ std::vector<FuzzTarget> MakeTargets() {
          ReadVoxelPoseCalibration(WriteScratch("calibration.json", b), 1032, 776, &warnings);
        }},
       {"voxelpose_detections", "VoxelPose detection cache (pickle)",
-       [](B b) { ReadVoxelPoseDetections(WriteScratch("pred.pkl", b), VoxelPoseSequence(), "shelf"); }},
+       [](B b) {
+         ReadVoxelPoseDetections(WriteScratch("pred.pkl", b), {{"0", "1"}, "shelf"});
+       }},
       {"pickle", "Python pickle (allow-listed classes)", [](B b) { io::ParsePickle(b, "fuzz.pkl"); }},
       {"npy", "NumPy .npy", [](B b) { io::ParseNpy(b, "fuzz.npy"); }},
       {"npz", "NumPy .npz (ZIP, stored or deflated)", [](B b) { io::ParseNpz(b, "fuzz.npz"); }},
@@ -430,7 +425,7 @@ std::vector<FuzzTarget> MakeTargets() {
          const fs::path root = ScratchDir() / "mvor";
          fs::remove_all(root);
          WriteScratch("mvor/camma_mvor_2018.json", b);
-         ReadMvor(DatasetRequest{"mvor", root, {{"days", "1"}, {"detections", "none"}}});
+         ReadAll(OpenMvor(DatasetRequest{"mvor", root, {{"days", "1"}, {"detections", "none"}}}));
        }},
       {"h36m_metadata_xml", "Human3.6M metadata.xml cameras",
        [](B b) { ReadHuman36mCameras(WriteScratch("metadata.xml", b), "S1", DistortionModel::kOpenCV, nullptr); }},

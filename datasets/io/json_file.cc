@@ -64,6 +64,23 @@ class DomBuilder : public nlohmann::detail::json_sax_dom_parser<nlohmann::json> 
   const std::string& source_;
 };
 
+// DomBuilder's errors without the document.
+class SyntaxChecker : public nlohmann::detail::json_sax_acceptor<nlohmann::json> {
+ public:
+  SyntaxChecker(std::string_view text, const std::string& source) : text_(text), source_(source) {}
+
+  [[noreturn]] bool parse_error(std::size_t position, const std::string& token, const nlohmann::detail::exception& e) {
+    nlohmann::json unused;
+    DomBuilder(unused, text_, source_).parse_error(position, token, e);
+  }
+
+ private:
+  std::string_view text_;
+  const std::string& source_;
+};
+
+bool IsJsonSpace(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
+
 }  // namespace
 
 nlohmann::json ParseJsonText(std::string_view text, const std::string& source) {
@@ -71,6 +88,41 @@ nlohmann::json ParseJsonText(std::string_view text, const std::string& source) {
   DomBuilder builder(root, text, source);
   nlohmann::json::sax_parse(text.begin(), text.end(), &builder);
   return root;
+}
+
+void CheckJsonText(std::string_view text, const std::string& source) {
+  SyntaxChecker checker(text, source);
+  nlohmann::json::sax_parse(text.begin(), text.end(), &checker);
+}
+
+std::optional<std::vector<std::pair<std::size_t, std::size_t>>> JsonArrayElements(std::string_view text) {
+  std::size_t pos = text.substr(0, 3) == "\xEF\xBB\xBF" ? 3 : 0;  // a UTF-8 BOM
+  while (pos < text.size() && IsJsonSpace(text[pos])) ++pos;
+  if (pos >= text.size() || text[pos] != '[') return std::nullopt;
+  std::vector<std::pair<std::size_t, std::size_t>> elements;
+  constexpr std::size_t kNone = std::string_view::npos;
+  std::size_t first = kNone, last = kNone;  // first and last byte of the element being scanned
+  int depth = 0;
+  for (++pos; pos < text.size(); ++pos) {
+    const char c = text[pos];
+    if (IsJsonSpace(c)) continue;
+    if (depth == 0 && (c == ',' || c == ']')) {
+      if (first != kNone) elements.emplace_back(first, last + 1);
+      first = kNone;
+      if (c == ']') break;
+      continue;
+    }
+    if (first == kNone) first = pos;
+    if (c == '"') {
+      for (++pos; pos < text.size() && text[pos] != '"'; ++pos) pos += text[pos] == '\\' ? 1 : 0;
+    } else if (c == '[' || c == '{') {
+      ++depth;
+    } else if (c == ']' || c == '}') {
+      --depth;
+    }
+    last = pos;
+  }
+  return elements;
 }
 
 nlohmann::json LoadJsonFile(const std::filesystem::path& path) {

@@ -14,6 +14,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -26,6 +27,12 @@ inline constexpr std::size_t kAnyCount = std::numeric_limits<std::size_t>::max()
 nlohmann::json LoadJsonFile(const std::filesystem::path& path);
 // Same for text already in memory; `source` names it in messages.
 nlohmann::json ParseJsonText(std::string_view text, const std::string& source);
+// Throws the InputError ParseJsonText would throw for `text`, without building the document.
+void CheckJsonText(std::string_view text, const std::string& source);
+// The byte ranges [first, second) of the elements of the top-level array of `text`, which must be
+// valid JSON (CheckJsonText); nullopt when the top-level value is not an array. Lets a reader keep
+// a long list as its text and parse one element at a time.
+std::optional<std::vector<std::pair<std::size_t, std::size_t>>> JsonArrayElements(std::string_view text);
 
 // "/a/b" + "c" -> "/a/b/c" (escaping '~' and '/'), "/a" + 3 -> "/a/3".
 std::string JsonPointerJoin(std::string_view base, std::string_view token);

@@ -16,7 +16,8 @@ const char* SupportedDetectionFormats() {
   return "  a folder of OpenPose JSON files (<camera>/<video>_<frame>_keypoints.json)\n"
          "  .json with {\"joints\": [...], \"frames\": [...]} (generic detections)\n"
          "  .json with a list of COCO results [{\"image_id\", \"keypoints\", ...}]\n"
-         "  .h5 / .hdf5 detection cache (rpt convert)";
+         "  .h5 / .hdf5 detection cache (rpt convert)\n"
+         "  .pkl VoxelPose 2D cache {\"<camera>_<frame>\": [{\"pred\": 17x3}]} (Shelf, Campus)";
 }
 
 namespace {
@@ -34,13 +35,14 @@ bool IsHdf5Extension(const std::filesystem::path& path) {
 
 }  // namespace
 
-std::vector<Sequence> ReadLabelsFile(const std::filesystem::path& path, const LabelsOptions& options) {
-  if (!IsHdf5Extension(path)) return ReadLabels(path, options);
+std::vector<std::unique_ptr<FrameSource>> OpenLabelsFile(const std::filesystem::path& path,
+                                                         const LabelsOptions& options, bool ground_truth) {
+  if (!IsHdf5Extension(path)) return OpenLabels(path, options, ground_truth);
   if (!options.split.empty()) {
     throw ConfigError(path.string() + ": an HDF5 cache keeps no splits; select the split when converting (split '" +
                       options.split + "' requested)");
   }
-  return ReadSequencesHdf5(path);
+  return OpenSequencesHdf5(path);
 }
 
 Detections ReadDetectionsFile(const std::filesystem::path& path, const DetectionsFileOptions& options) {
@@ -58,11 +60,7 @@ Detections ReadDetectionsFile(const std::filesystem::path& path, const Detection
     throw InputError(source + ":1:1: expected a JSON object (generic detections) or a list (COCO results); supported:\n" +
                      SupportedDetectionFormats());
   }
-  if (extension == ".pkl" || extension == ".pickle") {
-    throw InputError(source + ": VoxelPose pickle caches are not read by this entry point yet (use the dataset's own "
-                              "reader); supported here:\n" +
-                     std::string(SupportedDetectionFormats()));
-  }
+  if (extension == ".pkl" || extension == ".pickle") return ReadVoxelPoseDetections(path, options.voxelpose);
   throw InputError(source + ": unknown detection format '" + extension + "'; supported:\n" + SupportedDetectionFormats());
 }
 

@@ -4,18 +4,24 @@
 #pragma once
 
 #include <filesystem>
+#include <memory>
 #include <vector>
 
 #include "datasets/detections.h"
+#include "datasets/frame_source.h"
 #include "datasets/readers/coco_detections.h"
 #include "datasets/readers/generic_labels.h"
 #include "datasets/readers/openpose_json.h"
+#include "datasets/readers/voxelpose_detections.h"
 
 namespace rpt {
 
 struct DetectionsFileOptions {
   OpenPoseFolderOptions openpose;  // used for folders
   CocoDetectionsOptions coco;      // used for JSON result lists
+  // Used for VoxelPose caches, whose keys "<camera>_<frame>" name neither the sequence nor its
+  // frame ids: the frame-id prefix of the sequence (required) and its camera names.
+  VoxelPoseDetectionsOptions voxelpose;
 };
 
 // Dispatches on what `path` is:
@@ -23,13 +29,17 @@ struct DetectionsFileOptions {
 //   *.h5, *.hdf5           -> HDF5 cache (ReadDetectionsHdf5)
 //   *.json, an object      -> generic detections {"joints", "frames"} (ReadGenericDetections)
 //   *.json, a list         -> COCO-style result list (ReadCocoDetections)
-//   *.pkl                  -> VoxelPose 2D caches: not read here (InputError saying so)
+//   *.pkl, *.pickle        -> VoxelPose 2D cache (ReadVoxelPoseDetections with options.voxelpose;
+//                             ConfigError when it has no frame-id prefix)
 // Throws InputError for a missing path and for anything else, listing the supported formats.
 Detections ReadDetectionsFile(const std::filesystem::path& path, const DetectionsFileOptions& options = {});
 
-// Labels: *.h5 / *.hdf5 -> ReadSequencesHdf5 (options.split must be empty: the cache keeps no
-// splits; options.fps is unused, timestamps are stored), anything else -> ReadLabels (JSON).
-std::vector<Sequence> ReadLabelsFile(const std::filesystem::path& path, const LabelsOptions& options = {});
+// Labels, one source per sequence: *.h5 / *.hdf5 -> OpenSequencesHdf5 (options.split must be empty:
+// the cache keeps no splits; options.fps is unused, timestamps are stored), anything else ->
+// OpenLabels (JSON; without `ground_truth` its persons are not read). The cache's sequences always
+// carry their GT.
+std::vector<std::unique_ptr<FrameSource>> OpenLabelsFile(const std::filesystem::path& path,
+                                                         const LabelsOptions& options = {}, bool ground_truth = true);
 
 // One line per supported format, for help texts and error messages.
 const char* SupportedDetectionFormats();

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <limits>
 #include <map>
+#include <memory>
 #include <optional>
 #include <sstream>
 
@@ -340,32 +341,38 @@ DatasetInfo EgohumansInfo() {
   return info;
 }
 
-std::vector<Sequence> ReadEgohumans(const DatasetRequest& request) {
+std::vector<std::unique_ptr<FrameSource>> OpenEgohumans(const DatasetRequest& request) {
+  if (!request.ground_truth) {
+    throw ConfigError(
+        "egohumans: the frames are the ground-truth time stamps (processed_data/<gt>/%05d.npy): the "
+        "reader cannot run without its ground truth");
+  }
   const Options options = ParseOptions(request);
-  std::vector<Sequence> out;
+  std::vector<std::unique_ptr<FrameSource>> out;
   for (const SequenceDir& dir : FindSequences(options)) {
-    Sequence sequence;
-    const std::vector<int> stamps = SelectedTimeStamps(options, dir, &sequence.warnings);
-    sequence.name = "egohumans/" + dir.big + "/" + dir.seq;
-    sequence.cameras = ReadExoCameras(options, dir, stamps.empty() ? 1 : stamps.front(), &sequence.warnings);
-    sequence.gt_joints = CocoBodyJoints();
-    sequence.fps = options.fps;
-    if (options.detections) sequence.detection_joints = CocoWholeBodyJoints();
-    for (const int stamp : stamps) {
-      SequenceFrame frame;
-      frame.id = FrameId(dir, stamp);
-      frame.timestamp_s = (stamp - 1) / options.fps;
-      frame.gt = ReadGtFrame(dir.path / "processed_data" / options.gt / (h36m_ego::Padded(stamp, 5) + ".npy"));
-      if (options.detections) {
-        for (const Camera& camera : sequence.cameras) {
-          frame.views.push_back(
-              ReadCacheView(CachePath(dir, camera.name, stamp), PathName(CacheDir(dir)), &sequence.warnings));
-        }
+    InputWarnings warnings;
+    const std::vector<int> stamps = SelectedTimeStamps(options, dir, &warnings);
+    SequenceHeader header;
+    header.name = "egohumans/" + dir.big + "/" + dir.seq;
+    header.cameras = ReadExoCameras(options, dir, stamps.empty() ? 1 : stamps.front(), &warnings);
+    header.gt_joints = CocoBodyJoints();
+    header.fps = options.fps;
+    if (options.detections) header.detection_joints = CocoWholeBodyJoints();
+    // One ground-truth file (and one cache file per camera) read per frame pulled.
+    auto convert = [dir, stamps, options, cameras = header.cameras](std::size_t i, SequenceFrame* frame,
+                                                                    InputWarnings* frame_warnings) {
+      const int stamp = stamps[i];
+      frame->id = FrameId(dir, stamp);
+      frame->timestamp_s = (stamp - 1) / options.fps;
+      frame->gt = ReadGtFrame(dir.path / "processed_data" / options.gt / (h36m_ego::Padded(stamp, 5) + ".npy"));
+      if (!options.detections) return;
+      for (const Camera& camera : cameras) {
+        frame->views.push_back(
+            ReadCacheView(CachePath(dir, camera.name, stamp), PathName(CacheDir(dir)), frame_warnings));
       }
-      sequence.frames.push_back(std::move(frame));
-    }
-    ValidateSequence(sequence, PathName(dir.path));
-    out.push_back(std::move(sequence));
+    };
+    out.push_back(std::make_unique<IndexedFrameSource>(std::move(header), stamps.size(), std::move(convert),
+                                                       std::move(warnings)));
   }
   return out;
 }

@@ -20,11 +20,13 @@
 // "egohumans/<big_seq>/<seq>". Timestamps: (time stamp - 1) / fps.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "datasets/dataset_params.h"
 #include "datasets/detections.h"
+#include "datasets/frame_source.h"
 #include "datasets/sequence.h"
 
 namespace rpt {
@@ -66,10 +68,13 @@ void VisitFields(Visitor& v, Self& o) {
 }
 
 DatasetInfo EgohumansInfo();
-// One walk over the selected sequences: cameras, GT and, with param detections=cache, the 2D cache
+// One source per selected sequence: cameras and the ground-truth time stamps are read when it
+// opens; per frame pulled, its GT file and, with param detections=cache, the 2D cache
 // processed_data/poses2d/<cam>/rgb/%05d.npy (CocoWholeBodyJoints()). Cache scores in (1, 1.5] are
-// clamped to 1 and counted in Sequence::warnings (one line per sequence's poses2d folder); negative
-// scores or scores above 1.5 are errors naming the file and joint.
-std::vector<Sequence> ReadEgohumans(const DatasetRequest& request);
+// clamped to 1 and counted in the source's warnings (one line per sequence's poses2d folder);
+// negative scores or scores above 1.5 are errors naming the file and joint. The frames are the
+// ground-truth time stamps: without the ground truth (DatasetRequest::ground_truth false) a
+// ConfigError.
+std::vector<std::unique_ptr<FrameSource>> OpenEgohumans(const DatasetRequest& request);
 
 }  // namespace rpt

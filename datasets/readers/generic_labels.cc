@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <memory>
 #include <optional>
 #include <unordered_map>
 #include <unordered_set>
@@ -14,6 +15,7 @@
 #include "core/options_check.h"
 #include "datasets/calibration/camera_json.h"
 #include "datasets/input_warnings.h"
+#include "datasets/io/binary.h"
 #include "datasets/io/json_file.h"
 #include "datasets/io/text_file.h"
 #include "datasets/readers/detections_file.h"
@@ -26,6 +28,12 @@ namespace {
 using nlohmann::json;
 using generic_internal::IdString;
 using generic_internal::Source;
+
+// The one warning of a file whose labels have neither "timestamp" nor "fps" (count = the labels).
+constexpr const char* kUnknownTimesWarning =
+    "labels without \"timestamp\" or \"fps\": their times are unknown, so nothing is carried from one frame to the "
+    "next (no tracking, no speed limits); give each label a \"timestamp\", each scene an \"fps\", or the frame rate "
+    "as --param fps=N";
 
 [[noreturn]] void Fail(const std::string& source, const std::string& pointer, const std::string& what) {
   throw InputError(source + ": " + pointer + ": " + what);
@@ -131,40 +139,101 @@ bool InSplit(const json& root, const std::string& pointer, const std::string& so
   return std::any_of(splits->begin(), splits->end(), [&](const json& s) { return s.get<std::string>() == split; });
 }
 
+// One label of a sequence: where it is in the file's text and its time (when known at opening).
+struct LabelRef {
+  std::size_t begin = 0;  // byte range of the label in the text
+  std::size_t end = 0;
+  std::size_t index = 0;  // position in the file's list (its JSON pointer "/<index>")
+  double timestamp_s = 0;
+};
+
+// What the opening pass learns about one sequence ("scene"/"seq" group).
 struct SequenceBuild {
-  Sequence sequence;
+  SequenceHeader header;
+  InputWarnings warnings;
   std::string first_label_id;
   json first_cameras;  // raw JSON of the first label's cameras (fast equality check)
   json first_joints;
   int label_count = 0;                 // labels of this group seen so far (incl. other splits)
-  std::vector<int> frame_index;        // per kept frame: its index among all labels of the group
+  std::vector<LabelRef> labels;        // the kept labels
+  std::vector<int> frame_index;        // per kept label: its index among all labels of the group
   std::vector<bool> has_timestamp;
   std::optional<double> fps;
   bool room_set = false;
 };
 
+// The file's text, which every sequence of the file converts its labels from.
+struct LabelsText {
+  std::string source;
+  std::vector<std::uint8_t> bytes;
+  std::string_view text() const { return {reinterpret_cast<const char*>(bytes.data()), bytes.size()}; }
+  // Label `ref` as the document {"<index>": label}, so that the JSON pointers of messages are
+  // those of the whole file ("/<index>/bodies3D/...").
+  json Parse(const LabelRef& ref) const {
+    json root = json::object();
+    root[std::to_string(ref.index)] = io::ParseJsonText(text().substr(ref.begin, ref.end - ref.begin), source);
+    return root;
+  }
+};
+
+// The ground truth (and track ids) of one label.
+void ConvertLabel(const json& root, const std::string& pointer, const std::string& source, int num_joints,
+                  Poses3D* gt) {
+  ParseBodies(root, pointer + "/bodies3D", source, num_joints, gt);
+  if (const json* ids = io::JsonFind(root, pointer + "/bodyids"); ids && !ids->is_null()) {
+    if (!ids->is_array() || static_cast<int>(ids->size()) != gt->num_persons()) {
+      Fail(source, pointer + "/bodyids",
+           "expected one id per person of bodies3D (" + std::to_string(gt->num_persons()) + ")");
+    }
+    for (size_t p = 0; p < ids->size(); ++p) {
+      const std::string id_pointer = io::JsonPointerJoin(pointer + "/bodyids", p);
+      const int body_id =
+          static_cast<int>(io::JsonIntIn(root, id_pointer, source, -1, std::numeric_limits<int>::max()));
+      // Ids name persons across frames (tracking metrics): two persons of one frame cannot share one.
+      for (size_t q = 0; q < p && body_id >= 0; ++q) {
+        if (gt->track_ids[q] == body_id) {
+          Fail(source, id_pointer,
+               "body id " + std::to_string(body_id) + " is also the id of person " + std::to_string(q));
+        }
+      }
+      gt->track_ids[p] = body_id;
+    }
+  }
+}
+
 }  // namespace
 
 std::string LabelsOptions::Check() const { return CheckOptionRanges("generic", *this); }
 
-std::vector<Sequence> ReadLabels(const std::filesystem::path& path, const LabelsOptions& options) {
+std::vector<std::unique_ptr<FrameSource>> OpenLabels(const std::filesystem::path& path, const LabelsOptions& options,
+                                                     bool ground_truth) {
   ThrowIfInvalid(options);
-  const std::string source = Source(path);
-  const json root = io::LoadJsonFile(path);
-  if (!root.is_array()) Fail(source, "/", "expected a list of labels, got " + std::string(root.type_name()));
+  auto file = std::make_shared<LabelsText>();
+  file->source = Source(path);
+  file->bytes = io::detail::ReadFileBytes(path);
+  const std::string& source = file->source;
+  io::CheckJsonText(file->text(), source);
+  const auto elements = io::JsonArrayElements(file->text());
+  if (!elements)
+    Fail(source, "/",
+         "expected a list of labels, got " + std::string(io::ParseJsonText(file->text(), source).type_name()));
 
+  // The opening pass: every label is parsed once for what the sequences' headers and times need
+  // (groups, ids, cameras, joints, times, rooms); its persons are converted when it is pulled.
   std::vector<SequenceBuild> builds;
   std::map<std::string, size_t> build_of_key;
   std::unordered_map<std::string, size_t> label_of_id;
-  for (size_t i = 0; i < root.size(); ++i) {
+  for (size_t i = 0; i < elements->size(); ++i) {
+    const LabelRef ref{(*elements)[i].first, (*elements)[i].second, i};
+    const json root = file->Parse(ref);
     const std::string pointer = "/" + std::to_string(i);
-    const json& label = root[i];
+    const json& label = root.begin().value();
     if (!label.is_object()) Fail(source, pointer, "expected a label object, got " + std::string(label.type_name()));
     const std::string key = GroupKey(label);
     auto [it, inserted] = build_of_key.emplace(key, builds.size());
     if (inserted) {
       builds.emplace_back();
-      builds.back().sequence.name = key.empty() ? path.stem().string() : key;
+      builds.back().header.name = key.empty() ? path.stem().string() : key;
     }
     SequenceBuild& build = builds[it->second];
     const int index_in_group = build.label_count++;
@@ -174,65 +243,51 @@ std::vector<Sequence> ReadLabels(const std::filesystem::path& path, const Labels
     if (const auto [seen, fresh] = label_of_id.emplace(id, i); !fresh) {
       Fail(source, pointer + "/id", "id '" + id + "' is also used by label " + std::to_string(seen->second));
     }
-    Sequence& sequence = build.sequence;
+    SequenceHeader& header = build.header;
     const json& cameras = io::JsonAt(root, pointer + "/cameras", source);
-    const json& joints = io::JsonAt(root, pointer + "/joints", source);
     if (build.first_label_id.empty()) {
       build.first_label_id = id;
-      sequence.cameras = camera_json::ParseCameras(root, pointer + "/cameras", source, &sequence.warnings);
-      sequence.gt_joints = ParseJointNames(root, pointer + "/joints", source);
+      header.cameras = camera_json::ParseCameras(root, pointer + "/cameras", source, &build.warnings);
       build.first_cameras = cameras;
-      build.first_joints = joints;
+      if (ground_truth) {
+        header.gt_joints = ParseJointNames(root, pointer + "/joints", source);
+        build.first_joints = io::JsonAt(root, pointer + "/joints", source);
+      }
     } else {
       if (cameras != build.first_cameras) {
         // Only compared with the first label's cameras (which were counted), so not counted again.
         const std::string difference =
-            CameraDifference(sequence.cameras, camera_json::ParseCameras(root, pointer + "/cameras", source, nullptr));
+            CameraDifference(header.cameras, camera_json::ParseCameras(root, pointer + "/cameras", source, nullptr));
         if (!difference.empty()) {
           throw InputError(source + ": labels '" + build.first_label_id + "' and '" + id + "' (" + pointer +
-                           ") of sequence '" + sequence.name + "' have different cameras (" + difference +
+                           ") of sequence '" + header.name + "' have different cameras (" + difference +
                            "); give them different \"scene\" values");
         }
       }
-      if (joints != build.first_joints && ParseJointNames(root, pointer + "/joints", source) != sequence.gt_joints) {
-        throw InputError(source + ": labels '" + build.first_label_id + "' and '" + id + "' (" + pointer +
-                         ") of sequence '" + sequence.name + "' have different \"joints\"");
+      if (ground_truth) {
+        const json& joints = io::JsonAt(root, pointer + "/joints", source);
+        if (joints != build.first_joints && ParseJointNames(root, pointer + "/joints", source) != header.gt_joints) {
+          throw InputError(source + ": labels '" + build.first_label_id + "' and '" + id + "' (" + pointer +
+                           ") of sequence '" + header.name + "' have different \"joints\"");
+        }
       }
     }
 
-    SequenceFrame& frame = sequence.frames.emplace_back();
-    frame.id = id;
-    ParseBodies(root, pointer + "/bodies3D", source, static_cast<int>(sequence.gt_joints.size()), &frame.gt);
-    if (const json* ids = io::JsonFind(root, pointer + "/bodyids"); ids && !ids->is_null()) {
-      if (!ids->is_array() || static_cast<int>(ids->size()) != frame.gt.num_persons()) {
-        Fail(source, pointer + "/bodyids", "expected one id per person of bodies3D (" +
-                                               std::to_string(frame.gt.num_persons()) + ")");
-      }
-      for (size_t p = 0; p < ids->size(); ++p) {
-        const std::string id_pointer = io::JsonPointerJoin(pointer + "/bodyids", p);
-        const int body_id = static_cast<int>(io::JsonIntIn(root, id_pointer, source, -1, std::numeric_limits<int>::max()));
-        // Ids name persons across frames (tracking metrics): two persons of one frame cannot share one.
-        for (size_t q = 0; q < p && body_id >= 0; ++q) {
-          if (frame.gt.track_ids[q] == body_id) {
-            Fail(source, id_pointer, "body id " + std::to_string(body_id) + " is also the id of person " + std::to_string(q));
-          }
-        }
-        frame.gt.track_ids[p] = body_id;
-      }
-    }
+    LabelRef& kept = build.labels.emplace_back(ref);
     const json* timestamp = io::JsonFind(root, pointer + "/timestamp");
     build.has_timestamp.push_back(timestamp && !timestamp->is_null());
     if (build.has_timestamp.back()) {
-      frame.timestamp_s = io::JsonNumber(root, pointer + "/timestamp", source);
-      if (!std::isfinite(frame.timestamp_s)) Fail(source, pointer + "/timestamp", "not finite");
+      kept.timestamp_s = io::JsonNumber(root, pointer + "/timestamp", source);
+      if (!std::isfinite(kept.timestamp_s)) Fail(source, pointer + "/timestamp", "not finite");
       // Tracking and smoothing take the time between frames from here: it must move forward.
-      if (sequence.frames.size() >= 2 && build.has_timestamp[build.has_timestamp.size() - 2]) {
-        const double previous = sequence.frames[sequence.frames.size() - 2].timestamp_s;
-        if (!(frame.timestamp_s > previous)) {
+      if (build.labels.size() >= 2 && build.has_timestamp[build.has_timestamp.size() - 2]) {
+        const LabelRef& previous = build.labels[build.labels.size() - 2];
+        if (!(kept.timestamp_s > previous.timestamp_s)) {
           Fail(source, pointer + "/timestamp",
-               "timestamp " + json(frame.timestamp_s).dump() + " does not increase (the previous label of sequence '" +
-                   sequence.name + "', '" + sequence.frames[sequence.frames.size() - 2].id + "', has " +
-                   json(previous).dump() + ")");
+               "timestamp " + json(kept.timestamp_s).dump() + " does not increase (the previous label of sequence '" +
+                   header.name + "', '" +
+                   IdString(file->Parse(previous), "/" + std::to_string(previous.index) + "/id", source) + "', has " +
+                   json(previous.timestamp_s).dump() + ")");
         }
       }
     }
@@ -247,39 +302,58 @@ std::vector<Sequence> ReadLabels(const std::filesystem::path& path, const Labels
       const json* center = io::JsonFind(root, pointer + "/room_center");
       if (size && !size->is_null()) {
         const auto v = io::JsonMatrix(root, pointer + "/room_size", source, 3, 1);
-        sequence.room.size_m = Eigen::Vector3d(v[0], v[1], v[2]);
+        header.room.size_m = Eigen::Vector3d(v[0], v[1], v[2]);
         build.room_set = true;
       }
       if (center && !center->is_null()) {
         const auto v = io::JsonMatrix(root, pointer + "/room_center", source, 3, 1);
-        sequence.room.center_m = Eigen::Vector3d(v[0], v[1], v[2]);
+        header.room.center_m = Eigen::Vector3d(v[0], v[1], v[2]);
         build.room_set = true;
       }
     }
   }
 
-  std::vector<Sequence> sequences;
+  std::vector<std::unique_ptr<FrameSource>> sources;
   for (SequenceBuild& build : builds) {
-    if (build.sequence.frames.empty()) continue;  // all its labels belong to other splits
-    Sequence& sequence = build.sequence;
-    sequence.fps = build.fps.value_or(options.fps);
+    if (build.labels.empty()) continue;  // all its labels belong to other splits
+    SequenceHeader& header = build.header;
     const bool all = std::all_of(build.has_timestamp.begin(), build.has_timestamp.end(), [](bool b) { return b; });
     const bool none = std::none_of(build.has_timestamp.begin(), build.has_timestamp.end(), [](bool b) { return b; });
     if (!all && !none) {
       const size_t f = std::find(build.has_timestamp.begin(), build.has_timestamp.end(), false) - build.has_timestamp.begin();
-      throw InputError(source + ": label '" + sequence.frames[f].id + "' of sequence '" + sequence.name +
-                       "' has no \"timestamp\" while others have one");
+      const LabelRef& label = build.labels[f];
+      throw InputError(source + ": label '" +
+                       IdString(file->Parse(label), "/" + std::to_string(label.index) + "/id", source) +
+                       "' of sequence '" + header.name + "' has no \"timestamp\" while others have one");
     }
+    header.fps = build.fps.value_or(options.fps);
     if (none) {
-      for (size_t f = 0; f < sequence.frames.size(); ++f) sequence.frames[f].timestamp_s = build.frame_index[f] / sequence.fps;
+      // Without "timestamp" the frame rate gives the times; without a rate they are unknown (NaN:
+      // nothing is carried from one frame to the next), which one warning per file says.
+      for (size_t f = 0; f < build.labels.size(); ++f) {
+        build.labels[f].timestamp_s = header.fps > 0 ? build.frame_index[f] / header.fps : kUnknownTime;
+      }
+      if (!(header.fps > 0)) {
+        build.warnings.AddMissing(source, kUnknownTimesWarning, static_cast<long>(build.labels.size()));
+      }
     }
-    ValidateSequence(sequence, source + " (sequence '" + sequence.name + "')");
-    sequences.push_back(std::move(sequence));
+    const size_t count = build.labels.size();
+    auto convert = [file, labels = std::move(build.labels), num_joints = static_cast<int>(header.gt_joints.size()),
+                    ground_truth](size_t i, SequenceFrame* frame, InputWarnings*) {
+      const LabelRef& ref = labels[i];
+      const json root = file->Parse(ref);
+      const std::string pointer = "/" + std::to_string(ref.index);
+      frame->id = IdString(root, pointer + "/id", file->source);
+      frame->timestamp_s = ref.timestamp_s;
+      if (ground_truth) ConvertLabel(root, pointer, file->source, num_joints, &frame->gt);
+    };
+    sources.push_back(
+        std::make_unique<IndexedFrameSource>(std::move(header), count, std::move(convert), std::move(build.warnings)));
   }
-  if (sequences.empty()) {
+  if (sources.empty()) {
     throw InputError(source + ": no labels" + (options.split.empty() ? std::string() : " in split '" + options.split + "'"));
   }
-  return sequences;
+  return sources;
 }
 
 namespace {
@@ -314,8 +388,12 @@ int WriteLabels(const std::filesystem::path& path, const std::vector<Sequence>& 
       ojson label;
       label["id"] = frame.id;
       label["scene"] = sequence.name;
-      label["timestamp"] = frame.timestamp_s;
-      CheckFinite(frame.timestamp_s, source, where);
+      if (std::isnan(frame.timestamp_s)) {
+        label["timestamp"] = nullptr;  // unknown (read back as a label without time)
+      } else {
+        CheckFinite(frame.timestamp_s, source, where);
+        label["timestamp"] = frame.timestamp_s;
+      }
       if (sequence.fps > 0) label["fps"] = sequence.fps;
       label["joints"] = joints;
       label["cameras"] = cameras;
@@ -359,8 +437,9 @@ DatasetInfo GenericInfo() {
   return info;
 }
 
-std::vector<Sequence> ReadGeneric(const DatasetRequest& request) {
-  return ReadLabelsFile(request.root, ParseDatasetParams<LabelsOptions>("generic", request));  // JSON or the HDF5 cache
+std::vector<std::unique_ptr<FrameSource>> OpenGeneric(const DatasetRequest& request) {
+  // JSON labels or the HDF5 cache.
+  return OpenLabelsFile(request.root, ParseDatasetParams<LabelsOptions>("generic", request), request.ground_truth);
 }
 
 }  // namespace rpt

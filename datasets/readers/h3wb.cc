@@ -10,6 +10,7 @@
 #include <iomanip>
 #include <limits>
 #include <map>
+#include <memory>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -119,8 +120,33 @@ std::string FrameId(const Clip& clip, long long number) {
 // Largest |frame_id| taken: 2^53 (up to it a double holds every integer exactly).
 constexpr double kMaxFrameId = 9007199254740992.0;
 
-// Values (row-major N x 133 x dims) of an array shaped (N, [1, ...,] 133, dims).
-std::vector<double> PoseArray(const io::PyView& view, std::int64_t expected_rows, std::int64_t dims, std::int64_t* rows) {
+// The numbers of a pose array shaped (N, [1, ...,] 133, dims), row-major, read one at a time from
+// the array as the file stores it (a nested list is copied once).
+class PoseValues {
+ public:
+  PoseValues() = default;
+  explicit PoseValues(const io::PyView& view) : view_(view) {
+    if (view.IsArray() && view.AsArray().dtype.IsRealNumeric()) {
+      array_ = &view.AsArray();
+    } else {
+      copy_ = view.ToDoubles();
+    }
+  }
+  bool empty() const { return array_ == nullptr && copy_.empty(); }
+  const io::PyView& view() const { return view_; }
+  double operator[](std::size_t index) const {
+    return array_ != nullptr ? array_->ElementAsDouble(array_->StorageIndex(index)) : copy_[index];
+  }
+
+ private:
+  io::PyView view_;
+  const io::NdArray* array_ = nullptr;  // in view_
+  std::vector<double> copy_;
+};
+
+// The pose array `view` after checking its shape (N, [1, ...,] 133, dims) and N = expected_rows
+// (when >= 0); *rows = N.
+PoseValues PoseArray(const io::PyView& view, std::int64_t expected_rows, std::int64_t dims, std::int64_t* rows) {
   const auto shape = view.Shape();
   bool ok = shape.size() >= 3 && shape[shape.size() - 2] == kJoints && shape.back() == dims;
   for (std::size_t i = 1; ok && i + 2 < shape.size(); ++i) ok = shape[i] == 1;
@@ -129,7 +155,7 @@ std::vector<double> PoseArray(const io::PyView& view, std::int64_t expected_rows
     view.Fail("has " + std::to_string(shape[0]) + " rows, global_3d has " + std::to_string(expected_rows));
   }
   *rows = shape[0];
-  return view.ToDoubles();
+  return PoseValues(view);
 }
 
 Camera NpzCamera(const io::PyView& entry, const std::string& id, DistortionModel model, InputWarnings* warnings) {
@@ -188,16 +214,14 @@ std::vector<Clip> ReadNpzClips(const Options& options, bool want_2d) {
       clip.source = source;
       clip.warnings = std::exchange(camera_warnings, InputWarnings{});
       std::int64_t n = 0;
-      const auto global = PoseArray(act.Key("global_3d"), -1, 3, &n);
+      PoseValues global = PoseArray(act.Key("global_3d"), -1, 3, &n);
       const auto frame_ids = h36m_ego::FiniteNumbers(act.Key("frame_id"), static_cast<std::size_t>(n));
-      std::vector<std::vector<double>> camera_3d(cameras.size()), pose_2d(cameras.size());
-      std::vector<io::PyView> camera_3d_views(cameras.size());
+      std::vector<PoseValues> camera_3d(cameras.size()), pose_2d(cameras.size());
       for (std::size_t c = 0; c < cameras.size(); ++c) {
         const auto entry = act.Find(cameras[c].name);
         if (!entry) continue;
         std::int64_t rows = 0;
-        camera_3d_views[c] = entry->Key("camera_3d");
-        camera_3d[c] = PoseArray(camera_3d_views[c], n, 3, &rows);
+        camera_3d[c] = PoseArray(entry->Key("camera_3d"), n, 3, &rows);
         if (want_2d && entry->Has("pose_2d")) pose_2d[c] = PoseArray(entry->Key("pose_2d"), n, 2, &rows);
       }
       std::vector<std::size_t> order(static_cast<std::size_t>(n));
@@ -215,52 +239,63 @@ std::vector<Clip> ReadNpzClips(const Options& options, bool want_2d) {
         order[i] = i;
       }
       std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return frame_ids[a] < frame_ids[b]; });
+      std::vector<std::size_t> selected_rows;
       for (const std::size_t k : h36m_ego::SelectFrames(order.size(), options.every, options.max_frames)) {
-        const std::size_t row = order[k];
-        ClipFrame frame;
-        frame.number = static_cast<long long>(frame_ids[row]);
-        frame.world_m.resize(3, kJoints);
+        selected_rows.push_back(order[k]);
+        clip.numbers.push_back(static_cast<long long>(frame_ids[order[k]]));
+      }
+      clip.convert = [global = std::move(global), camera_3d = std::move(camera_3d), pose_2d = std::move(pose_2d),
+                      selected_rows, numbers = clip.numbers, cameras, source, subject, key = key.AsStr(),
+                      global_to_m = options.global_to_m, global_units = options.global_units,
+                      want_2d](std::size_t i, Eigen::Matrix3Xd* world_m,
+                               std::vector<std::optional<Eigen::Matrix2Xd>>* views_2d) {
+        const std::size_t row = selected_rows[i];
+        world_m->resize(3, kJoints);
         for (int j = 0; j < kJoints; ++j) {
-          for (int d = 0; d < 3; ++d) frame.world_m(d, j) = global[(row * kJoints + static_cast<std::size_t>(j)) * 3 + static_cast<std::size_t>(d)];
+          for (int d = 0; d < 3; ++d)
+            (*world_m)(d, j) = global[(row * kJoints + static_cast<std::size_t>(j)) * 3 + static_cast<std::size_t>(d)];
         }
-        if (!frame.world_m.allFinite()) act.Key("global_3d").Fail("row " + std::to_string(row) + ": NaN or infinite coordinate");
-        const Eigen::Matrix3Xd global_raw = frame.world_m;
-        frame.world_m *= options.global_to_m;
-        frame.pose_2d.resize(cameras.size());
+        if (!world_m->allFinite()) global.view().Fail("row " + std::to_string(row) + ": NaN or infinite coordinate");
+        const Eigen::Matrix3Xd global_raw = *world_m;
+        *world_m *= global_to_m;
+        views_2d->assign(cameras.size(), std::nullopt);
         for (std::size_t c = 0; c < cameras.size(); ++c) {
           if (camera_3d[c].empty()) continue;
           // global_3d and camera_3d must describe the same pose: R X + t = camera_3d / 1000.
           double deviation = 0, deviation_other_units = 0;
           for (int j = 0; j < kJoints; ++j) {
-            const double* p = &camera_3d[c][(row * kJoints + static_cast<std::size_t>(j)) * 3];
-            const Eigen::Vector3d x_cam_m(p[0] / 1000.0, p[1] / 1000.0, p[2] / 1000.0);
-            if (!x_cam_m.allFinite()) camera_3d_views[c].Fail("row " + std::to_string(row) + ": NaN or infinite coordinate");
+            const std::size_t at = (row * kJoints + static_cast<std::size_t>(j)) * 3;
+            const Eigen::Vector3d x_cam_m(camera_3d[c][at] / 1000.0, camera_3d[c][at + 1] / 1000.0,
+                                          camera_3d[c][at + 2] / 1000.0);
+            if (!x_cam_m.allFinite())
+              camera_3d[c].view().Fail("row " + std::to_string(row) + ": NaN or infinite coordinate");
             const Camera& cam = cameras[c];
-            deviation = std::max(deviation, (cam.R * frame.world_m.col(j) + cam.t - x_cam_m).norm());
-            const double other_scale = options.global_to_m == 1.0 ? 0.001 : 1.0;
+            deviation = std::max(deviation, (cam.R * world_m->col(j) + cam.t - x_cam_m).norm());
+            const double other_scale = global_to_m == 1.0 ? 0.001 : 1.0;
             deviation_other_units = std::max(deviation_other_units, (cam.R * global_raw.col(j) * other_scale + cam.t - x_cam_m).norm());
           }
           if (!(deviation <= h36m_ego::kViewAgreementToleranceM)) {
             std::ostringstream msg;
-            msg << source << ": " << subject << "/" << key.AsStr() << " frame_id " << frame.number << ": global_3d (read as "
-                << options.global_units << ") and camera " << cameras[c].name << "'s camera_3d differ by " << deviation * 1000.0
+            msg << source << ": " << subject << "/" << key << " frame_id " << numbers[i] << ": global_3d (read as "
+                << global_units << ") and camera " << cameras[c].name << "'s camera_3d differ by " << deviation * 1000.0
                 << " mm";
             if (deviation_other_units <= h36m_ego::kViewAgreementToleranceM) {
-              msg << "; global_3d looks like " << (options.global_units == "mm" ? "metres: pass --param global_units=m" : "millimetres: pass --param global_units=mm");
+              msg << "; global_3d looks like "
+                  << (global_units == "mm" ? "metres: pass --param global_units=m"
+                                           : "millimetres: pass --param global_units=mm");
             }
             throw InputError(msg.str());
           }
           if (want_2d && !pose_2d[c].empty()) {
             Eigen::Matrix2Xd uv(2, kJoints);
             for (int j = 0; j < kJoints; ++j) {
-              const double* p = &pose_2d[c][(row * kJoints + static_cast<std::size_t>(j)) * 2];
-              uv.col(j) << p[0], p[1];
+              const std::size_t at = (row * kJoints + static_cast<std::size_t>(j)) * 2;
+              uv.col(j) << pose_2d[c][at], pose_2d[c][at + 1];
             }
-            frame.pose_2d[c] = uv;
+            (*views_2d)[c] = uv;
           }
         }
-        clip.frames.push_back(std::move(frame));
-      }
+      };
       out.push_back(std::move(clip));
     }
     if (!any) actions->Fail("no action selected for subject " + subject);
@@ -273,11 +308,12 @@ std::vector<Clip> ReadClips(const Options& options, bool want_2d) {
 }
 
 // The stored 2D of camera c as one person with score 1 (no person when the view has none).
-Poses2D View2D(const Clip& clip, const ClipFrame& frame, std::size_t c, const std::string& frame_id) {
+Poses2D View2D(const Clip& clip, const std::optional<Eigen::Matrix2Xd>& pose_2d, std::size_t c,
+               const std::string& frame_id) {
   Poses2D view;
   view.Clear(kJoints);
-  if (!frame.pose_2d[c]) return view;
-  const Eigen::Matrix2Xd& uv = *frame.pose_2d[c];
+  if (!pose_2d) return view;
+  const Eigen::Matrix2Xd& uv = *pose_2d;
   if (!uv.allFinite()) throw InputError(clip.source + ": frame " + frame_id + " camera " + clip.cameras[c].name + ": NaN in the 2D pose");
   auto person = view.AddPerson();
   person.topRows<2>() = uv;
@@ -304,32 +340,51 @@ DatasetInfo H3wbInfo() {
   return info;
 }
 
-std::vector<Sequence> ReadH3wb(const DatasetRequest& request) {
+std::vector<std::unique_ptr<FrameSource>> OpenH3wb(const DatasetRequest& request) {
+  if (!request.ground_truth) {
+    throw ConfigError(
+        "h3wb: frames and views are assembled from the 3D annotations (the stored 2D is in the same "
+        "file): the reader cannot run without its ground truth");
+  }
   const Options options = ParseOptions(request);
-  std::vector<Sequence> out;
+  std::vector<std::unique_ptr<FrameSource>> out;
   for (Clip& clip : ReadClips(options, options.detections)) {
-    Sequence sequence;
-    sequence.name = "h3wb/" + clip.subject + "/" + clip.action;
-    sequence.cameras = clip.cameras;
-    sequence.gt_joints = CocoWholeBodyJoints();
-    if (options.detections) sequence.detection_joints = CocoWholeBodyJoints();
-    sequence.fps = kFps;
-    for (const ClipFrame& f : clip.frames) {
-      SequenceFrame frame;
-      frame.id = FrameId(clip, f.number);
-      if (options.detections) {
-        for (std::size_t c = 0; c < clip.cameras.size(); ++c) frame.views.push_back(View2D(clip, f, c, frame.id));
-      }
-      frame.timestamp_s = static_cast<double>(clip.sample_ids ? f.number / 4 : f.number) / kFps;
-      frame.gt.Clear(kJoints);
-      auto person = frame.gt.AddPerson(0);
-      person.topRows<3>() = f.world_m;
-      person.row(3).setOnes();
-      sequence.frames.push_back(std::move(frame));
+    SequenceHeader header;
+    header.name = "h3wb/" + clip.subject + "/" + clip.action;
+    header.cameras = clip.cameras;
+    header.gt_joints = CocoWholeBodyJoints();
+    if (options.detections) header.detection_joints = CocoWholeBodyJoints();
+    // Frames grouped by sample id are samples of the videos in no known order: their times are
+    // unknown (counted), not sample id / 4 / 50.
+    header.fps = clip.sample_ids ? 0 : kFps;
+    const std::size_t count = clip.numbers.size();
+    InputWarnings warnings = std::move(clip.warnings);
+    if (clip.sample_ids) {
+      warnings.AddMissing(clip.source,
+                          "frames grouped by sample id (no image paths): their times are unknown, so nothing is "
+                          "carried from one frame to the next",
+                          static_cast<long>(count));
     }
-    sequence.warnings = std::move(clip.warnings);
-    ValidateSequence(sequence, clip.source);
-    out.push_back(std::move(sequence));
+    auto shared_clip = std::make_shared<const Clip>(std::move(clip));
+    auto convert = [shared_clip, detections = options.detections](std::size_t i, SequenceFrame* frame, InputWarnings*) {
+      const Clip& clip = *shared_clip;
+      Eigen::Matrix3Xd world_m;
+      std::vector<std::optional<Eigen::Matrix2Xd>> pose_2d;
+      clip.convert(i, &world_m, &pose_2d);
+      const long long number = clip.numbers[i];
+      frame->id = FrameId(clip, number);
+      if (detections) {
+        for (std::size_t c = 0; c < clip.cameras.size(); ++c)
+          frame->views.push_back(View2D(clip, pose_2d[c], c, frame->id));
+      }
+      frame->timestamp_s = clip.sample_ids ? kUnknownTime : static_cast<double>(number) / kFps;
+      frame->gt.Clear(kJoints);
+      auto person = frame->gt.AddPerson(0);
+      person.topRows<3>() = world_m;
+      person.row(3).setOnes();
+    };
+    out.push_back(
+        std::make_unique<IndexedFrameSource>(std::move(header), count, std::move(convert), std::move(warnings)));
   }
   return out;
 }

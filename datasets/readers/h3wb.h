@@ -21,14 +21,18 @@
 // Frame ids: "h3wb_<subject>_<action>_<frame>" (frame = npz frame_id or the image's frame number,
 // 6 digits; action sanitised: "Directions 1" -> "Directions-1"); for json without image paths
 // "h3wb_<subject>_sample_<first sample id of the frame, 6 digits>" in sequence "h3wb/<subject>/json".
+// Times: frame number / 50 s; frames grouped by sample id have unknown times (NaN, fps 0, counted in
+// one warning per file: the samples are in no known order).
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "datasets/dataset_params.h"
-#include "datasets/readers/human36m.h"
 #include "datasets/detections.h"
+#include "datasets/frame_source.h"
+#include "datasets/readers/human36m.h"
 #include "datasets/sequence.h"
 
 namespace rpt {
@@ -85,9 +89,12 @@ void VisitFields(Visitor& v, Self& o) {
 }
 
 DatasetInfo H3wbInfo();
-// One walk over the annotations: the GT and, with param detections=annotations, the stored 2D
-// keypoints (npz pose_2d, json keypoints_2d) as one person per view with score 1
-// (CocoWholeBodyJoints(); a view without stored 2D has no person).
-std::vector<Sequence> ReadH3wb(const DatasetRequest& request);
+// One source per subject and action. The annotation file is parsed when they open (json: its views
+// grouped into frames, subjects identified); each frame's GT and, with param
+// detections=annotations, its stored 2D keypoints (npz pose_2d, json keypoints_2d) as one person per
+// view with score 1 (CocoWholeBodyJoints(); a view without stored 2D has no person) are converted
+// when it is pulled, the views' agreement checked then. The frames are assembled from the ground
+// truth: without it (DatasetRequest::ground_truth false) a ConfigError.
+std::vector<std::unique_ptr<FrameSource>> OpenH3wb(const DatasetRequest& request);
 
 }  // namespace rpt

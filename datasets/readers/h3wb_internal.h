@@ -4,7 +4,9 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -36,20 +38,21 @@ struct Options {
   bool detections = false;  // attach the stored 2D as detections
 };
 
-struct ClipFrame {
-  long long number = 0;         // frame number (or first sample id)
-  Eigen::Matrix3Xd world_m;     // 3 x 133
-  std::vector<std::optional<Eigen::Matrix2Xd>> pose_2d;  // per clip camera
-};
-
+// One sequence of the annotation file: its selected frames are converted one at a time from the
+// parsed file (`convert` holds it).
 struct Clip {
   std::string subject;
   std::string action;  // sanitised; "json" for id-grouped json frames
   bool sample_ids = false;  // frame numbers are sample ids (json without image paths)
   std::vector<Camera> cameras;
-  std::vector<ClipFrame> frames;
+  std::vector<long long> numbers;  // per selected frame: its frame number (or first sample id), ascending
   std::string source;
   InputWarnings warnings;  // corrections of the cameras (carried by the subject's first clip)
+  // Selected frame `i`: the GT pose in world metres (3 x 133) and, when 2D was asked for, per clip
+  // camera the stored 2D pose (nullopt where the view has none). Throws InputError for
+  // non-finite values and views that disagree.
+  std::function<void(std::size_t i, Eigen::Matrix3Xd* world_m, std::vector<std::optional<Eigen::Matrix2Xd>>* pose_2d)>
+      convert;
 };
 
 // `action` (sanitised) is selected by `filters` (empty = all): "Directions" selects "Directions-1".

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <limits>
 #include <map>
+#include <memory>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -309,7 +310,9 @@ double ViewDisagreement(const JsonGroup& group, const std::vector<Camera>& camer
 
 std::vector<Clip> ReadJsonClips(const Options& options, bool want_2d) {
   const std::string source = PathName(options.file);
-  const std::vector<JsonSample> samples = ReadJsonSamples(options.file, want_2d);
+  // The parsed samples stay for the clips' frames, converted when they are pulled.
+  const auto samples_ptr = std::make_shared<const std::vector<JsonSample>>(ReadJsonSamples(options.file, want_2d));
+  const std::vector<JsonSample>& samples = *samples_ptr;
   if (samples.empty()) throw InputError(source + ": no samples");
   const bool by_path = std::all_of(samples.begin(), samples.end(), [](const JsonSample& s) { return s.path.has_value(); });
   if (!by_path && !options.actions.empty()) {
@@ -380,30 +383,23 @@ std::vector<Clip> ReadJsonClips(const Options& options, bool want_2d) {
     group.views.emplace_back(camera, &s);
   }
 
+  // Per clip, its frames (groups) in frame-number order (the groups' map order).
   std::map<std::pair<std::string, std::string>, Clip> clips;
+  std::map<std::pair<std::string, std::string>, std::vector<const JsonGroup*>> clip_groups;
   std::set<std::string> seen_subjects;
   if (by_path) {
     for (const JsonSample& s : samples) seen_subjects.insert(s.path->subject);
   }
   for (auto& [key, group] : groups) {
     std::sort(group.views.begin(), group.views.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-    Eigen::Matrix3Xd world_m;
     if (!group.subject.empty()) {
-      const std::vector<Camera>& cameras = *cameras_of(group.subject, true);
-      const double disagreement = ViewDisagreement(group, cameras, &world_m);
-      if (!(disagreement <= h36m_ego::kViewAgreementToleranceM)) {
-        std::ostringstream msg;
-        msg << source << ": " << GroupName(group) << " (" << group.subject << " " << group.action << " frame " << group.number
-            << "): the views disagree by " << disagreement * 1000.0 << " mm in world coordinates (cameras from "
-            << cameras_file.string() << ")";
-        throw InputError(msg.str());
-      }
+      cameras_of(group.subject, true);  // the views must agree: checked when the frame is converted
     } else if (group.views.size() == 1) {
       if (options.subjects.size() != 1) {
         throw InputError(source + ": " + GroupName(group) + ": a single view cannot tell its subject; select exactly one subject");
       }
       group.subject = options.subjects.front();
-      ViewDisagreement(group, *cameras_of(group.subject, true), &world_m);
+      cameras_of(group.subject, true);
     } else {
       // Subject = the one whose cameras make the views agree.
       double best = std::numeric_limits<double>::infinity();
@@ -411,9 +407,8 @@ std::vector<Clip> ReadJsonClips(const Options& options, bool want_2d) {
       for (const std::string& subject : kCandidateSubjects) {
         const std::vector<Camera>* cameras = cameras_of(subject, false);
         if (!cameras) continue;
-        Eigen::Matrix3Xd candidate;
-        const double d = ViewDisagreement(group, *cameras, &candidate);
-        if (d < best) best = d, best_subject = subject, world_m = candidate;
+        const double d = ViewDisagreement(group, *cameras, nullptr);
+        if (d < best) best = d, best_subject = subject;
       }
       if (!(best <= h36m_ego::kViewAgreementToleranceM)) {
         std::ostringstream msg;
@@ -435,26 +430,40 @@ std::vector<Clip> ReadJsonClips(const Options& options, bool want_2d) {
       clip.source = source;
       clip.warnings = std::exchange(camera_warnings[group.subject], InputWarnings{});
     }
-    ClipFrame frame;
-    frame.number = group.number;
-    frame.world_m = world_m;
-    frame.pose_2d.resize(clip.cameras.size());
-    for (const auto& [c, s] : group.views) frame.pose_2d[static_cast<std::size_t>(c)] = s->pose_2d;
-    clip.frames.push_back(std::move(frame));
+    clip_groups[{group.subject, group.action}].push_back(&group);
   }
 
+  auto shared_groups =
+      std::make_shared<const decltype(groups)>(std::move(groups));  // the JsonGroups stay where they are
   std::vector<Clip> out;
   for (const std::string& subject : options.subjects) {
     bool any = false;
     for (auto& [key, clip] : clips) {
       if (key.first != subject) continue;
       any = true;
-      std::stable_sort(clip.frames.begin(), clip.frames.end(), [](const ClipFrame& a, const ClipFrame& b) { return a.number < b.number; });
-      std::vector<ClipFrame> kept;
-      for (const std::size_t k : h36m_ego::SelectFrames(clip.frames.size(), options.every, options.max_frames)) {
-        kept.push_back(std::move(clip.frames[k]));
+      std::vector<const JsonGroup*>& frames = clip_groups[key];
+      std::stable_sort(frames.begin(), frames.end(),
+                       [](const JsonGroup* a, const JsonGroup* b) { return a->number < b->number; });
+      std::vector<const JsonGroup*> kept;
+      for (const std::size_t k : h36m_ego::SelectFrames(frames.size(), options.every, options.max_frames)) {
+        kept.push_back(frames[k]);
+        clip.numbers.push_back(frames[k]->number);
       }
-      clip.frames = std::move(kept);
+      clip.convert = [samples_ptr, shared_groups, kept, cameras = clip.cameras, source,
+                      cameras_file = cameras_file.string()](std::size_t i, Eigen::Matrix3Xd* world_m,
+                                                            std::vector<std::optional<Eigen::Matrix2Xd>>* pose_2d) {
+        const JsonGroup& group = *kept[i];
+        const double disagreement = ViewDisagreement(group, cameras, world_m);
+        if (!(disagreement <= h36m_ego::kViewAgreementToleranceM)) {
+          std::ostringstream msg;
+          msg << source << ": " << GroupName(group) << " (" << group.subject << " " << group.action << " frame "
+              << group.number << "): the views disagree by " << disagreement * 1000.0
+              << " mm in world coordinates (cameras from " << cameras_file << ")";
+          throw InputError(msg.str());
+        }
+        pose_2d->assign(cameras.size(), std::nullopt);
+        for (const auto& [c, s] : group.views) (*pose_2d)[static_cast<std::size_t>(c)] = s->pose_2d;
+      };
       out.push_back(std::move(clip));
     }
     if (!any && seen_subjects.count(subject)) throw InputError(source + ": no frames of subject " + subject + " with the selected actions");

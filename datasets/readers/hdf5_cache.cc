@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <memory>
 #include <numeric>
 #include <sstream>
 #include <unordered_map>
@@ -313,7 +314,7 @@ void WriteSequencesHdf5(const std::filesystem::path& path, const std::vector<Seq
   writer.Close();
 }
 
-std::vector<Sequence> ReadSequencesHdf5(const std::filesystem::path& path) {
+std::vector<std::unique_ptr<FrameSource>> OpenSequencesHdf5(const std::filesystem::path& path) {
   const Hdf5Quiet quiet;
   const Hdf5Reader reader(path);
   if (!reader.Exists("/sequences")) {
@@ -325,11 +326,12 @@ std::vector<Sequence> ReadSequencesHdf5(const std::filesystem::path& path) {
   const double count = reader.NumberAttribute(root.get(), "/sequences", "count");
   if (!(count >= 0) || count != std::floor(count) || count > 1e7) reader.Fail("/sequences", "bad attribute count");
 
-  std::vector<Sequence> sequences;
+  std::vector<std::unique_ptr<FrameSource>> sources;
   for (int s = 0; s < static_cast<int>(count); ++s) {
     const std::string name = "/sequences/" + std::to_string(s);
     Hdf5Id group = reader.OpenGroup(name, "sequence " + std::to_string(s) + " of " + std::to_string(static_cast<int>(count)));
-    Sequence& sequence = sequences.emplace_back();
+    SequenceHeader sequence;
+    InputWarnings warnings;
     sequence.name = reader.StringAttribute(group.get(), name, "name");
     sequence.fps = reader.NumberAttribute(group.get(), name, "fps");
     if (!std::isfinite(sequence.fps) || sequence.fps < 0) reader.Fail(name, "attribute fps is not a non-negative number");
@@ -370,35 +372,57 @@ std::vector<Sequence> ReadSequencesHdf5(const std::filesystem::path& path) {
         }
         camera.t[r] = t[3 * c + r];
       }
-      camera.R = AcceptRotation(camera.R, reader.source(),
-                                reader.source() + ": " + name + "/camera_R: camera " + std::to_string(c) + " ('" +
-                                    camera.name + "')",
-                                &sequence.warnings);
+      camera.R = AcceptRotation(
+          camera.R, reader.source(),
+          reader.source() + ": " + name + "/camera_R: camera " + std::to_string(c) + " ('" + camera.name + "')",
+          &warnings);
       std::copy(dist.begin() + 5 * c, dist.begin() + 5 * c + 5, camera.dist.begin());
     }
 
     sequence.gt_joints = reader.Strings(name + "/gt_joints");
     CheckJointNames(sequence.gt_joints, reader.source() + ": " + name + "/gt_joints");
     const long long J = static_cast<long long>(sequence.gt_joints.size());
-    const std::vector<std::string> frame_ids = reader.Strings(name + "/frame_ids");
+    std::vector<std::string> frame_ids = reader.Strings(name + "/frame_ids");
     const long long F = static_cast<long long>(frame_ids.size());
-    const auto timestamps = reader.Doubles(name + "/timestamps", Shape({F}));
-    const auto offsets = reader.Int64s(name + "/gt_offsets", Shape({F + 1}), "frames + 1");
-    const auto poses = reader.Doubles(name + "/gt_poses", Shape({-1, J, 4}), "persons x joints x [x, y, z, score]");
-    const long long P = static_cast<long long>(J > 0 ? poses.size() / (4 * J) : 0);
-    CheckOffsets(reader, offsets, name + "/gt_offsets", name + "/gt_poses", P);
-    const auto track_ids = reader.Numbers<std::int32_t>(name + "/gt_track_ids", H5T_NATIVE_INT32, Shape({P}));
-    for (long long f = 0; f < F; ++f) {
-      SequenceFrame& frame = sequence.frames.emplace_back();
-      frame.id = frame_ids[f];
-      frame.timestamp_s = timestamps[f];
-      frame.gt.Clear(static_cast<int>(J));
-      frame.gt.data.assign(poses.begin() + offsets[f] * 4 * J, poses.begin() + offsets[f + 1] * 4 * J);
-      frame.gt.track_ids.assign(track_ids.begin() + offsets[f], track_ids.begin() + offsets[f + 1]);
+    // NaN = unknown time (labels without times); infinities are errors.
+    auto timestamps = reader.Numbers<double>(name + "/timestamps", H5T_NATIVE_DOUBLE, Shape({F}));
+    long unknown_times = 0;
+    for (size_t f = 0; f < timestamps.size(); ++f) {
+      if (std::isinf(timestamps[f])) reader.Fail(name + "/timestamps", "element " + std::to_string(f) + " is infinite");
+      unknown_times += std::isnan(timestamps[f]) ? 1 : 0;
     }
-    ValidateSequence(sequence, reader.source() + ": " + name);
+    warnings.AddMissing(reader.source(),
+                        "frames with unknown times (NaN timestamps, e.g. of labels without times): nothing is carried "
+                        "from one frame to the next; convert labels that have times to give them",
+                        unknown_times);
+    // The arrays stay as read; each frame is cut out of them when it is pulled.
+    struct Arrays {
+      std::vector<std::string> frame_ids;
+      std::vector<double> timestamps;
+      std::vector<std::int64_t> offsets;
+      std::vector<double> poses;
+      std::vector<std::int32_t> track_ids;
+    };
+    auto arrays = std::make_shared<Arrays>();
+    arrays->frame_ids = std::move(frame_ids);
+    arrays->timestamps = std::move(timestamps);
+    arrays->offsets = reader.Int64s(name + "/gt_offsets", Shape({F + 1}), "frames + 1");
+    arrays->poses = reader.Doubles(name + "/gt_poses", Shape({-1, J, 4}), "persons x joints x [x, y, z, score]");
+    const long long P = static_cast<long long>(J > 0 ? arrays->poses.size() / (4 * J) : 0);
+    CheckOffsets(reader, arrays->offsets, name + "/gt_offsets", name + "/gt_poses", P);
+    arrays->track_ids = reader.Numbers<std::int32_t>(name + "/gt_track_ids", H5T_NATIVE_INT32, Shape({P}));
+    auto convert = [arrays, J](size_t f, SequenceFrame* frame, InputWarnings*) {
+      const Arrays& a = *arrays;
+      frame->id = a.frame_ids[f];
+      frame->timestamp_s = a.timestamps[f];
+      frame->gt.Clear(static_cast<int>(J));
+      frame->gt.data.assign(a.poses.begin() + a.offsets[f] * 4 * J, a.poses.begin() + a.offsets[f + 1] * 4 * J);
+      frame->gt.track_ids.assign(a.track_ids.begin() + a.offsets[f], a.track_ids.begin() + a.offsets[f + 1]);
+    };
+    sources.push_back(std::make_unique<IndexedFrameSource>(std::move(sequence), static_cast<size_t>(F),
+                                                           std::move(convert), std::move(warnings)));
   }
-  return sequences;
+  return sources;
 }
 
 Hdf5CacheContents ProbeHdf5Cache(const std::filesystem::path& path) {

@@ -23,9 +23,11 @@
 #pragma once
 
 #include <filesystem>
+#include <memory>
 #include <vector>
 
 #include "datasets/detections.h"
+#include "datasets/frame_source.h"
 #include "datasets/sequence.h"
 
 namespace rpt {
@@ -46,12 +48,15 @@ void WriteDetectionsHdf5(const std::filesystem::path& path, const Detections& de
 // Detections::warnings.
 Detections ReadDetectionsHdf5(const std::filesystem::path& path);
 
-// Sequences (cameras + ground truth). Same error behaviour as above; camera_R within 1e-3 of a
-// rotation is replaced by the nearest rotation and counted in Sequence::warnings (AcceptRotation),
-// farther is an error; read sequences are checked with ValidateSequence.
+// Sequences (cameras + ground truth). The writer checks them (ValidateSequence) first. The reader
+// opens one source per sequence: the arrays are read and checked when it opens, each frame cut out
+// of them when it is pulled. Same error behaviour as above; camera_R within 1e-3 of a rotation is
+// replaced by the nearest rotation and counted in the source's warnings (AcceptRotation), farther
+// is an error. A NaN timestamp is an unknown time (written for labels without times), counted in
+// one warning per file (InputWarningKind::kMissing); an infinite one is an error.
 void WriteSequencesHdf5(const std::filesystem::path& path, const std::vector<Sequence>& sequences,
                         const Hdf5WriteOptions& options = {});
-std::vector<Sequence> ReadSequencesHdf5(const std::filesystem::path& path);
+std::vector<std::unique_ptr<FrameSource>> OpenSequencesHdf5(const std::filesystem::path& path);
 
 // What a cache file holds. Throws InputError when the file is missing or not HDF5.
 struct Hdf5CacheContents {

@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <memory>
 #include <optional>
 #include <sstream>
 #include <utility>
@@ -155,26 +156,24 @@ Options ParseOptions(const DatasetRequest& request) {
   return o;
 }
 
-Sequence NewSequence(const std::string& subject, const std::string& action, std::vector<Camera> cameras) {
-  Sequence sequence;
-  sequence.name = "human36m/" + subject + "/" + action;
-  sequence.cameras = std::move(cameras);
-  sequence.gt_joints = Human36mJoints();
-  sequence.fps = kFps;
-  return sequence;
+SequenceHeader NewHeader(const std::string& subject, const std::string& action, std::vector<Camera> cameras) {
+  SequenceHeader header;
+  header.name = "human36m/" + subject + "/" + action;
+  header.cameras = std::move(cameras);
+  header.gt_joints = Human36mJoints();
+  header.fps = kFps;
+  return header;
 }
 
-// Appends a frame with one person whose first 17 joints are `joints_m` (metres, world).
-void AddFrame(const Options& options, const std::string& subject, const std::string& action, long long frame_idx,
-              const Eigen::Matrix<double, 3, 17>& joints_m, Sequence* sequence) {
-  SequenceFrame frame;
-  frame.id = "human36m_" + subject + "_" + action + "_" + h36m_ego::Padded(frame_idx, 6);
-  frame.timestamp_s = static_cast<double>(frame_idx) / kFps;
-  frame.gt.Clear(kNumJoints);
-  auto person = frame.gt.AddPerson(0);
+// The frame with one person whose first 17 joints are `joints_m` (metres, world).
+void FillFrame(bool nose_from_head, const std::string& subject, const std::string& action, long long frame_idx,
+               const Eigen::Matrix<double, 3, 17>& joints_m, SequenceFrame* frame) {
+  frame->id = "human36m_" + subject + "_" + action + "_" + h36m_ego::Padded(frame_idx, 6);
+  frame->timestamp_s = static_cast<double>(frame_idx) / kFps;
+  frame->gt.Clear(kNumJoints);
+  auto person = frame->gt.AddPerson(0);
   for (int j = 0; j < 17; ++j) person.col(j) << joints_m.col(j), 1.0;
-  person.col(kNoseIndex) = person.col(options.nose_from_head ? kHeadIndex : kNeckNoseIndex);
-  sequence->frames.push_back(std::move(frame));
+  person.col(kNoseIndex) = person.col(nose_from_head ? kHeadIndex : kNeckNoseIndex);
 }
 
 // The cameras of `subject`; their corrections go to `warnings`, which the subject's first sequence
@@ -257,8 +256,34 @@ std::vector<std::string> SortedActionDirs(const std::filesystem::path& subject_d
   return out;
 }
 
-std::vector<Sequence> ReadFromAnnot(const Options& options) {
-  std::vector<Sequence> out;
+// The world pose of one annot.h5 frame: from the first camera (id order); every other camera must
+// agree with it.
+Eigen::Matrix<double, 3, 17> AnnotFrameToWorld(const AnnotRows& rows, long long frame,
+                                               const std::vector<Camera>& cameras, const std::string& source) {
+  const auto& entries = rows.by_frame.at(frame);
+  const int ref_camera = entries.front().first;
+  const auto world =
+      AnnotRowToWorld(rows, entries.front().second, cameras[static_cast<std::size_t>(ref_camera)], source);
+  for (std::size_t e = 1; e < entries.size(); ++e) {
+    const auto other =
+        AnnotRowToWorld(rows, entries[e].second, cameras[static_cast<std::size_t>(entries[e].first)], source);
+    const double deviation = (other - world).colwise().norm().maxCoeff();
+    if (!(deviation <= h36m_ego::kViewAgreementToleranceM)) {
+      std::ostringstream msg;
+      msg << source << ": frame " << frame << ": camera "
+          << Human36mCameraIds()[static_cast<std::size_t>(entries[e].first)] << " puts the pose " << deviation * 1000.0
+          << " mm away from camera " << Human36mCameraIds()[static_cast<std::size_t>(ref_camera)]
+          << " after conversion to world coordinates (wrong cameras file or subject?)";
+      throw InputError(msg.str());
+    }
+  }
+  return world;
+}
+
+// One source per selected action directory; its annot.h5 is read when the source is opened and
+// converted one frame per Next.
+std::vector<std::unique_ptr<FrameSource>> OpenFromAnnot(const Options& options) {
+  std::vector<std::unique_ptr<FrameSource>> out;
   for (const std::string& subject : options.subjects) {
     const std::filesystem::path subject_dir = options.root / "processed" / subject;
     if (!std::filesystem::is_directory(subject_dir)) throw InputError(PathName(subject_dir) + ": unknown subject (no such directory)");
@@ -269,33 +294,21 @@ std::vector<Sequence> ReadFromAnnot(const Options& options) {
       if (!ActionSelected(options, subject, action)) continue;
       any = true;
       const std::filesystem::path path = subject_dir / action / "annot.h5";
-      const std::string source = PathName(path);
-      const AnnotRows rows = ReadAnnot(path);
-      Sequence sequence = NewSequence(subject, action, cameras);
-      sequence.warnings = std::exchange(camera_warnings, InputWarnings{});
+      auto rows = std::make_shared<const AnnotRows>(ReadAnnot(path));
       std::vector<long long> frames;
-      for (const auto& [f, entries] : rows.by_frame) frames.push_back(f);
+      for (const auto& [f, entries] : rows->by_frame) frames.push_back(f);
+      std::vector<long long> selected;
       for (const std::size_t k : h36m_ego::SelectFrames(frames.size(), options.every, options.max_frames)) {
-        const auto& entries = rows.by_frame.at(frames[k]);
-        // The GT comes from the first camera (id order); every other camera must agree with it.
-        const int ref_camera = entries.front().first;
-        const auto world = AnnotRowToWorld(rows, entries.front().second, cameras[static_cast<std::size_t>(ref_camera)], source);
-        for (std::size_t e = 1; e < entries.size(); ++e) {
-          const auto other = AnnotRowToWorld(rows, entries[e].second, cameras[static_cast<std::size_t>(entries[e].first)], source);
-          const double deviation = (other - world).colwise().norm().maxCoeff();
-          if (!(deviation <= h36m_ego::kViewAgreementToleranceM)) {
-            std::ostringstream msg;
-            msg << source << ": frame " << frames[k] << ": camera " << Human36mCameraIds()[static_cast<std::size_t>(entries[e].first)]
-                << " puts the pose " << deviation * 1000.0 << " mm away from camera "
-                << Human36mCameraIds()[static_cast<std::size_t>(ref_camera)]
-                << " after conversion to world coordinates (wrong cameras file or subject?)";
-            throw InputError(msg.str());
-          }
-        }
-        AddFrame(options, subject, action, frames[k] - 1, world, &sequence);
+        selected.push_back(frames[k]);
       }
-      ValidateSequence(sequence, source);
-      out.push_back(std::move(sequence));
+      auto convert = [rows, selected, cameras, source = PathName(path), nose_from_head = options.nose_from_head,
+                      subject, action](std::size_t i, SequenceFrame* frame, InputWarnings*) {
+        FillFrame(nose_from_head, subject, action, selected[i] - 1,
+                  AnnotFrameToWorld(*rows, selected[i], cameras, source), frame);
+      };
+      const std::size_t count = selected.size();
+      out.push_back(std::make_unique<IndexedFrameSource>(NewHeader(subject, action, cameras), count, std::move(convert),
+                                                         std::exchange(camera_warnings, InputWarnings{})));
     }
     if (!any) throw InputError(PathName(subject_dir) + ": no selected action directory with an annot.h5");
   }
@@ -305,7 +318,8 @@ std::vector<Sequence> ReadFromAnnot(const Options& options) {
 // ---------------------------------------------------------------------------------------
 // learnable-triangulation labels npy
 
-std::vector<Sequence> ReadFromLabels(const Options& options) {
+// The labels npy is read once for every sequence; each source converts its rows one frame per Next.
+std::vector<std::unique_ptr<FrameSource>> OpenFromLabels(const Options& options) {
   const std::string source = PathName(options.labels_file);
   const io::PyView labels = io::ReadNpy(options.labels_file);
   if (!labels.IsDict()) labels.Fail("expected the dict written by generate-labels-npy-multiview.py");
@@ -321,7 +335,7 @@ std::vector<Sequence> ReadFromLabels(const Options& options) {
   const io::PyView keypoints_view = table.Field("keypoints");
   const auto keypoints_shape = keypoints_view.Shape();
   if (keypoints_shape != std::vector<std::int64_t>{n, 17, 3}) keypoints_view.Fail("expected 17 x 3 keypoints per row");
-  const io::NdArray& keypoints = keypoints_view.AsArray();
+  keypoints_view.AsArray();  // an ndarray (else InputError), read per frame below
 
   // (subject index, action index) -> (frame index, table row)
   std::map<std::pair<int, int>, std::vector<std::pair<long long, std::size_t>>> groups;
@@ -337,7 +351,7 @@ std::vector<Sequence> ReadFromLabels(const Options& options) {
     groups[{static_cast<int>(s), static_cast<int>(a)}].emplace_back(static_cast<long long>(f), r);
   }
 
-  std::vector<Sequence> out;
+  std::vector<std::unique_ptr<FrameSource>> out;
   for (const std::string& subject : options.subjects) {
     std::size_t s = subject_names.Size();
     std::string known;
@@ -357,24 +371,30 @@ std::vector<Sequence> ReadFromLabels(const Options& options) {
       any = true;
       auto& rows = it->second;
       std::stable_sort(rows.begin(), rows.end());
-      Sequence sequence = NewSequence(subject, action, cameras);
-      sequence.warnings = std::exchange(camera_warnings, InputWarnings{});
+      std::vector<std::pair<long long, std::size_t>> selected;  // (frame index, table row)
       for (const std::size_t k : h36m_ego::SelectFrames(rows.size(), options.every, options.max_frames)) {
-        const std::size_t row = rows[k].second;
+        selected.push_back(rows[k]);
+      }
+      auto convert = [keypoints_view, selected, nose_from_head = options.nose_from_head, subject, action](
+                         std::size_t i, SequenceFrame* frame, InputWarnings*) {
+        const io::NdArray& keypoints = keypoints_view.AsArray();
+        const std::size_t row = selected[i].second;
         Eigen::Matrix<double, 3, 17> joints_m;
-        for (std::size_t i = 0; i < 17; ++i) {
+        for (std::size_t j = 0; j < 17; ++j) {
           for (std::size_t d = 0; d < 3; ++d) {
-            const double v = keypoints.ElementAsDouble(keypoints.StorageIndex((row * 17 + i) * 3 + d)) / 1000.0;
+            const double v = keypoints.ElementAsDouble(keypoints.StorageIndex((row * 17 + j) * 3 + d)) / 1000.0;
             if (!std::isfinite(v)) {
-              keypoints_view.Fail("row " + std::to_string(row) + " joint " + std::to_string(i) + ": NaN or infinite coordinate");
+              keypoints_view.Fail("row " + std::to_string(row) + " joint " + std::to_string(j) +
+                                  ": NaN or infinite coordinate");
             }
-            joints_m(static_cast<Eigen::Index>(d), kLearnableTriToJoint[i]) = v;
+            joints_m(static_cast<Eigen::Index>(d), kLearnableTriToJoint[j]) = v;
           }
         }
-        AddFrame(options, subject, action, rows[k].first, joints_m, &sequence);
-      }
-      ValidateSequence(sequence, source);
-      out.push_back(std::move(sequence));
+        FillFrame(nose_from_head, subject, action, selected[i].first, joints_m, frame);
+      };
+      const std::size_t count = selected.size();
+      out.push_back(std::make_unique<IndexedFrameSource>(NewHeader(subject, action, cameras), count, std::move(convert),
+                                                         std::exchange(camera_warnings, InputWarnings{})));
     }
     if (!any) throw InputError(source + ": no labels for subject " + subject + " with the selected actions");
   }
@@ -419,9 +439,14 @@ DatasetInfo Human36mInfo() {
   return info;
 }
 
-std::vector<Sequence> ReadHuman36m(const DatasetRequest& request) {
+std::vector<std::unique_ptr<FrameSource>> OpenHuman36m(const DatasetRequest& request) {
+  if (!request.ground_truth) {
+    throw ConfigError(
+        "human36m: the frames are the ground-truth labels (annot.h5 or the labels npy) and the reader "
+        "has no 2D detections of its own: it cannot run without its ground truth");
+  }
   const Options options = ParseOptions(request);
-  return options.use_npy ? ReadFromLabels(options) : ReadFromAnnot(options);
+  return options.use_npy ? OpenFromLabels(options) : OpenFromAnnot(options);
 }
 
 }  // namespace rpt

@@ -21,12 +21,14 @@
 #pragma once
 
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "core/camera.h"
 #include "core/joints.h"
 #include "datasets/dataset_params.h"
+#include "datasets/frame_source.h"
 #include "datasets/sequence.h"
 
 namespace rpt {
@@ -92,7 +94,10 @@ void VisitFields(Visitor& v, Self& o) {
 }
 
 DatasetInfo Human36mInfo();
-std::vector<Sequence> ReadHuman36m(const DatasetRequest& request);
+// One source per subject and action: cameras and the labels (each annot.h5, or the labels npy once)
+// are read when it opens, each frame converted when it is pulled. The frames are the ground truth:
+// without it (DatasetRequest::ground_truth false) a ConfigError.
+std::vector<std::unique_ptr<FrameSource>> OpenHuman36m(const DatasetRequest& request);
 
 // The four cameras of `subject` ("S1".."S11") in camera-id order, from metadata.xml (*.xml),
 // mmpose cameras.pkl (*.pkl) or the learnable-triangulation labels (*.npy). Distortion

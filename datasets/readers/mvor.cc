@@ -2,13 +2,16 @@
 #include "datasets/readers/mvor.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <limits>
 #include <map>
+#include <memory>
 #include <string>
+#include <unordered_map>
 #include <unordered_set>
 
 #include "core/errors.h"
@@ -159,59 +162,135 @@ DatasetInfo MvorInfo() {
   return info;
 }
 
-std::vector<Sequence> ReadMvor(const DatasetRequest& request) {
+namespace {
+
+// One multi-view frame of the annotation file, indexed when the file is opened and converted when
+// it is pulled.
+struct MvorFrame {
+  std::string id;
+  double timestamp_s = 0;
+  std::vector<size_t> persons;                          // indices into /annotations3D
+  std::array<std::vector<size_t>, kNumCameras> labels;  // per camera, indices into /annotations
+  std::vector<size_t> detections;                       // indices into MvorFiles::detections.frames
+};
+
+// The parsed files every day's source converts its frames from.
+struct MvorFiles {
+  nlohmann::json root;
+  std::string source;
+  Eigen::Matrix4d cam1_to_world = Eigen::Matrix4d::Identity();
+  bool ground_truth = true;
+  Detections detections;  // the selected days' OpenPose detections (empty without)
+  std::map<std::string, int> camera_index;
+};
+
+void ConvertFrame(const MvorFiles& files, const MvorFrame& in, SequenceFrame* frame) {
+  const nlohmann::json& root = files.root;
+  const std::string& source = files.source;
+  const int num_joints = static_cast<int>(MvorJoints().size());
+  const int nose = num_joints - 1;
+  frame->id = in.id;
+  frame->timestamp_s = in.timestamp_s;
+  if (files.ground_truth) {
+    frame->gt.Clear(num_joints);
+    for (const size_t i : in.persons) {
+      const std::string person = io::JsonPointerJoin("/annotations3D", i);
+      const std::vector<double> values = io::JsonNumbers(root, person + "/keypoints3D", source, 4 * kFilePoints);
+      auto out =
+          frame->gt.AddPerson(static_cast<int>(io::JsonIntIn(root, person + "/person_id", source, kMinInt, kMaxInt)));
+      for (int j = 0; j < kFilePoints; ++j) {
+        const Eigen::Vector4d cam1(values[4 * j], values[4 * j + 1], values[4 * j + 2], 1.0);
+        const double flag = values[4 * j + 3];
+        if (!cam1.allFinite() || !std::isfinite(flag)) {
+          throw InputError(source + ": " + person + "/keypoints3D: point " + std::to_string(j) + " is not finite");
+        }
+        out.col(j) << (files.cam1_to_world * cam1).head<3>(), flag > 0 ? 1.0 : 0.0;
+      }
+      out.col(nose) = out.col(0);
+    }
+    frame->labels_2d.resize(kNumCameras);
+    for (int c = 0; c < kNumCameras; ++c) {
+      for (const size_t i : in.labels[static_cast<size_t>(c)]) {
+        const std::string label = io::JsonPointerJoin("/annotations", i);
+        PersonLabel2D out;
+        const int person_id = static_cast<int>(io::JsonIntIn(root, label + "/person_id", source, kMinInt, kMaxInt));
+        for (int p = 0; p < frame->gt.num_persons() && person_id >= 0; ++p) {
+          if (frame->gt.track_ids[p] == person_id) out.gt_person = p;
+        }
+        const std::vector<double> box = io::JsonNumbers(root, label + "/bbox", source, 4);
+        out.box_px << box[0], box[1], box[0] + box[2], box[1] + box[3];
+        const std::vector<double> points = io::JsonNumbers(root, label + "/keypoints", source, 30);
+        out.visibility.assign(num_joints, kLabelAbsent);
+        for (int j = 0; j < 10; ++j) {
+          const double v = points[3 * j + 2];
+          out.visibility[j] = v == 2 ? kLabelVisible : v == 1 ? kLabelOccluded : kLabelAbsent;
+        }
+        out.visibility[nose] = out.visibility[0];
+        frame->labels_2d[c].push_back(std::move(out));
+      }
+    }
+  }
+  if (files.detections.joints.empty()) return;
+  const int detection_joints = static_cast<int>(files.detections.joints.size());
+  frame->views.assign(kNumCameras, Poses2D{});
+  for (Poses2D& view : frame->views) view.Clear(detection_joints);
+  for (const size_t d : in.detections) {
+    const FrameDetections& found = files.detections.frames[d];
+    for (size_t v = 0; v < found.views.size(); ++v)
+      frame->views[files.camera_index.at(found.cameras[v])] = found.views[v];
+  }
+}
+
+}  // namespace
+
+std::vector<std::unique_ptr<FrameSource>> OpenMvor(const DatasetRequest& request) {
   const MvorParams params = ParseDatasetParams<MvorParams>("mvor", request);
   const std::vector<int> days = ParseDays(params.days, dataset_params::ParamKey("mvor", "days"));
   const bool with_detections = params.detections == MvorDetections::kOpenPose;
   const bool distortion = params.distortion == MvorDistortion::kFile;
   const bool paper_joints = params.evaluated == MvorEvaluated::kPaper;
+  if (!request.ground_truth && !with_detections) {
+    throw ConfigError(
+        "mvor: without the ground truth the detections are all there is to read: pass --param "
+        "detections=openpose");
+  }
 
   std::error_code ec;
   if (!std::filesystem::is_directory(request.root, ec)) {
     throw InputError("mvor: root '" + request.root.string() + "' is not a directory");
   }
   const std::filesystem::path path = FindFile(request.root, {std::filesystem::path("annotations") / kAnnotationFile, kAnnotationFile});
-  const nlohmann::json root = io::LoadJsonFile(path);
-  const std::string source = path.string();
+  auto files = std::make_shared<MvorFiles>();
+  files->root = io::LoadJsonFile(path);
+  files->source = path.string();
+  files->ground_truth = request.ground_truth;
+  const nlohmann::json& root = files->root;
+  const std::string& source = files->source;
 
   InputWarnings warnings;
-  Eigen::Matrix4d cam1_to_world;
-  const std::vector<Camera> cameras = ReadCameras(root, source, distortion, &warnings, &cam1_to_world);
+  const std::vector<Camera> cameras = ReadCameras(root, source, distortion, &warnings, &files->cam1_to_world);
+  for (int c = 0; c < kNumCameras; ++c) files->camera_index[cameras[static_cast<size_t>(c)].name] = c;
 
   // 3D persons by their "<id1>_<id2>_<id3>" key.
   std::map<std::string, std::vector<size_t>> persons_of;
-  const nlohmann::json& persons = io::JsonAt(root, "/annotations3D", source);
-  if (!persons.is_array()) throw InputError(source + ": /annotations3D: expected an array");
-  for (size_t i = 0; i < persons.size(); ++i) {
-    persons_of[io::JsonString(root, io::JsonPointerJoin("/annotations3D", i) + "/image_ids", source)].push_back(i);
-  }
-
   // 2D labels by image id: `annotations`, 10 points x [x, y, v] in the order of MvorJoints()
   // (v: 0 not labelled, 1 occluded, 2 visible), person_id -1 for persons labelled by a box only.
   std::map<std::int64_t, std::vector<size_t>> labels_of;
-  if (const nlohmann::json* labels = io::JsonFind(root, "/annotations"); labels != nullptr && labels->is_array()) {
-    for (size_t i = 0; i < labels->size(); ++i) {
-      labels_of[io::JsonInt(root, io::JsonPointerJoin("/annotations", i) + "/image_id", source)].push_back(i);
+  if (request.ground_truth) {
+    const nlohmann::json& persons = io::JsonAt(root, "/annotations3D", source);
+    if (!persons.is_array()) throw InputError(source + ": /annotations3D: expected an array");
+    for (size_t i = 0; i < persons.size(); ++i) {
+      persons_of[io::JsonString(root, io::JsonPointerJoin("/annotations3D", i) + "/image_ids", source)].push_back(i);
+    }
+    if (const nlohmann::json* labels = io::JsonFind(root, "/annotations"); labels != nullptr && labels->is_array()) {
+      for (size_t i = 0; i < labels->size(); ++i) {
+        labels_of[io::JsonInt(root, io::JsonPointerJoin("/annotations", i) + "/image_id", source)].push_back(i);
+      }
     }
   }
 
-  const JointNames& joints = MvorJoints();
-  const int num_joints = static_cast<int>(joints.size());
-  const int nose = num_joints - 1;
-  std::map<int, Sequence> by_day;
-  for (int day : days) {
-    Sequence& s = by_day[day];
-    s.name = "mvor/day" + std::to_string(day);
-    s.cameras = cameras;
-    s.gt_joints = joints;
-    // Encloses every annotated person's centre with room to spare (x -2.0..2.6, y -0.4..3.1 m).
-    s.room.center_m = Eigen::Vector3d(0.3, 1.3, 1.0);
-    s.room.size_m = Eigen::Vector3d(6.0, 5.0, 2.0);
-    s.evaluated_joints = {"shoulder_left", "shoulder_right", "elbow_left", "elbow_right",
-                          "wrist_left",    "wrist_right",    "hip_left",   "hip_right"};
-    if (paper_joints) s.evaluated_joints.insert(s.evaluated_joints.begin(), "nose");
-  }
-
+  std::map<int, std::vector<MvorFrame>> frames_of_day;
+  for (int day : days) frames_of_day[day];
   const nlohmann::json& frames = io::JsonAt(root, "/multiview_images", source);
   if (!frames.is_array()) throw InputError(source + ": /multiview_images: expected an array");
   std::map<int, double> day_start;
@@ -240,51 +319,22 @@ std::vector<Sequence> ReadMvor(const DatasetRequest& request) {
       image_ids.push_back(io::JsonInt(root, image + "/id", source));
       key += (c == 0 ? "" : "_") + std::to_string(image_ids.back());
     }
-    const auto sequence = by_day.find(day);
-    if (sequence == by_day.end()) continue;
+    const auto day_frames = frames_of_day.find(day);
+    if (day_frames == frames_of_day.end()) continue;
     const auto start = day_start.try_emplace(day, time_s).first;
 
-    SequenceFrame frame;
+    MvorFrame& frame = day_frames->second.emplace_back();
     frame.id = FrameId(day, frame_number);
     frame.timestamp_s = time_s - start->second;
-    frame.gt.Clear(num_joints);
-    for (const size_t i : persons_of[key]) {
-      const std::string person = io::JsonPointerJoin("/annotations3D", i);
-      const std::vector<double> values = io::JsonNumbers(root, person + "/keypoints3D", source, 4 * kFilePoints);
-      auto out = frame.gt.AddPerson(static_cast<int>(io::JsonIntIn(root, person + "/person_id", source, kMinInt, kMaxInt)));
-      for (int j = 0; j < kFilePoints; ++j) {
-        const Eigen::Vector4d cam1(values[4 * j], values[4 * j + 1], values[4 * j + 2], 1.0);
-        const double flag = values[4 * j + 3];
-        if (!cam1.allFinite() || !std::isfinite(flag)) {
-          throw InputError(source + ": " + person + "/keypoints3D: point " + std::to_string(j) + " is not finite");
-        }
-        out.col(j) << (cam1_to_world * cam1).head<3>(), flag > 0 ? 1.0 : 0.0;
-      }
-      out.col(nose) = out.col(0);
+    if (const auto persons = persons_of.find(key); persons != persons_of.end()) {
+      frame.persons = std::move(persons->second);
+      persons_of.erase(persons);
     }
-    persons_of.erase(key);
-    frame.labels_2d.resize(kNumCameras);
-    for (int c = 0; c < kNumCameras; ++c) {
-      for (const size_t i : labels_of[image_ids[c]]) {
-        const std::string label = io::JsonPointerJoin("/annotations", i);
-        PersonLabel2D out;
-        const int person_id = static_cast<int>(io::JsonIntIn(root, label + "/person_id", source, kMinInt, kMaxInt));
-        for (int p = 0; p < frame.gt.num_persons() && person_id >= 0; ++p) {
-          if (frame.gt.track_ids[p] == person_id) out.gt_person = p;
-        }
-        const std::vector<double> box = io::JsonNumbers(root, label + "/bbox", source, 4);
-        out.box_px << box[0], box[1], box[0] + box[2], box[1] + box[3];
-        const std::vector<double> points = io::JsonNumbers(root, label + "/keypoints", source, 30);
-        out.visibility.assign(num_joints, kLabelAbsent);
-        for (int j = 0; j < 10; ++j) {
-          const double v = points[3 * j + 2];
-          out.visibility[j] = v == 2 ? kLabelVisible : v == 1 ? kLabelOccluded : kLabelAbsent;
-        }
-        out.visibility[nose] = out.visibility[0];
-        frame.labels_2d[c].push_back(std::move(out));
+    for (int c = 0; c < kNumCameras && request.ground_truth; ++c) {
+      if (const auto labels = labels_of.find(image_ids[c]); labels != labels_of.end()) {
+        frame.labels[static_cast<size_t>(c)] = labels->second;
       }
     }
-    sequence->second.frames.push_back(std::move(frame));
   }
 
   // 3D persons left over belong to days not selected, or to no multi-view frame at all: those of
@@ -301,17 +351,16 @@ std::vector<Sequence> ReadMvor(const DatasetRequest& request) {
   warnings.AddUnused(source, "annotations3D entries whose image_ids are no multi-view frame ignored",
                      unmatched_persons);
 
-  std::vector<Sequence> out;
+  // The days with frames, in order.
+  std::vector<std::pair<int, std::vector<MvorFrame>*>> out;
   const bool days_given = request.params.count("days") > 0;  // an explicit day must have frames
-  for (auto& [day, sequence] : by_day) {
-    if (sequence.frames.empty() && !days_given) continue;  // the default asks for all days there are
-    if (sequence.frames.empty()) throw InputError(source + ": no frames of day " + std::to_string(day));
-    out.push_back(std::move(sequence));
+  for (auto& [day, day_frames] : frames_of_day) {
+    if (day_frames.empty() && !days_given) continue;  // the default asks for all days there are
+    if (day_frames.empty()) throw InputError(source + ": no frames of day " + std::to_string(day));
+    out.emplace_back(day, &day_frames);
   }
-
   if (out.empty()) throw InputError(source + ": no multi-view frames");
-  // Corrections are counted once per file: the first sequence carries them.
-  out.front().warnings = warnings;
+
   if (with_detections) {
     const std::filesystem::path detections_path =
         FindFile(request.root, {std::filesystem::path("detections_results") / kDetectionsFile, kDetectionsFile});
@@ -320,13 +369,19 @@ std::vector<Sequence> ReadMvor(const DatasetRequest& request) {
                        " not found (the OpenPose detections shipped with MVOR); use --param detections=none with "
                        "--detections FILE or --simulate");
     }
-    Detections detections = ReadCocoDetections(detections_path);
+    Detections& detections = files->detections;
+    detections = ReadCocoDetections(detections_path);
+    const std::string detections_source = detections_path.string();
     // The file covers every day: frames of days not selected are left out on purpose (not unused
     // input). A COCO result list has no entry for an image without detections: the loaded frames
     // it lacks get empty views.
+    std::unordered_map<std::string, std::vector<std::pair<int, MvorFrame*>>> places;  // frame id -> (day, frame)
     std::unordered_set<std::string> loaded;
-    for (const Sequence& sequence : out) {
-      for (const SequenceFrame& frame : sequence.frames) loaded.insert(frame.id);
+    for (const auto& [day, day_frames] : out) {
+      for (MvorFrame& frame : *day_frames) {
+        places[frame.id].emplace_back(day, &frame);
+        loaded.insert(frame.id);
+      }
     }
     std::erase_if(detections.frames, [&](const FrameDetections& frame) {
       const bool selected_day = std::any_of(days.begin(), days.end(), [&](int day) {
@@ -336,11 +391,76 @@ std::vector<Sequence> ReadMvor(const DatasetRequest& request) {
     });
     for (const FrameDetections& frame : detections.frames) loaded.erase(frame.frame_id);
     for (const std::string& id : loaded) detections.frames.push_back(FrameDetections{id, {}, {}});
-    AttachDetections(detections, detections_path.string(), out, &out.front().warnings);
-    out.front().warnings.Merge(detections.warnings);
+    // AttachDetections, with the frames' views filled when they are pulled.
+    const int num_joints = static_cast<int>(detections.joints.size());
+    AttachReport report;
+    std::unordered_set<const MvorFrame*> attached;
+    for (size_t d = 0; d < detections.frames.size(); ++d) {
+      const FrameDetections& found = detections.frames[d];
+      const auto it = places.find(found.frame_id);
+      if (it == places.end()) {
+        if (report.unused_frames++ == 0) report.first_unused_frame = found.frame_id;
+        continue;
+      }
+      for (const auto& [day, frame] : it->second) {
+        attached.insert(frame);
+        for (size_t v = 0; v < found.views.size(); ++v) {
+          if (!files->camera_index.count(found.cameras[v])) {
+            throw InputError(detections_source + ": frame '" + found.frame_id + "': camera '" + found.cameras[v] +
+                             "' is not a camera of sequence 'mvor/day" + std::to_string(day) + "'");
+          }
+          if (found.views[v].num_persons() > 0 && found.views[v].num_joints != num_joints) {
+            throw InputError(detections_source + ": frame '" + found.frame_id + "', camera '" + found.cameras[v] +
+                             "': " + std::to_string(found.views[v].num_joints) + " joints, expected " +
+                             std::to_string(num_joints));
+          }
+        }
+        frame->detections.push_back(d);
+      }
+    }
+    for (const auto& [day, day_frames] : out) {
+      int with = 0;
+      for (const MvorFrame& frame : *day_frames) {
+        if (attached.count(&frame)) {
+          ++with;
+        } else if (report.frames_without++ == 0) {
+          report.first_frame_without = frame.id;
+        }
+      }
+      if (with == 0) {
+        throw NoFrameMatchesError(detections_source, detections.frames.size(),
+                                  detections.frames.empty() ? "" : detections.frames.front().frame_id,
+                                  "mvor/day" + std::to_string(day), day_frames->front().id);
+      }
+      report.frames_with_detections += with;
+    }
+    CountUnattachedFrames(report, detections_source, &warnings);
+    warnings.Merge(detections.warnings);
   }
-  for (const Sequence& sequence : out) ValidateSequence(sequence, source);
-  return out;
+
+  std::vector<std::unique_ptr<FrameSource>> sources;
+  for (const auto& [day, day_frames] : out) {
+    SequenceHeader header;
+    header.name = "mvor/day" + std::to_string(day);
+    header.cameras = cameras;
+    if (request.ground_truth) header.gt_joints = MvorJoints();
+    header.detection_joints = files->detections.joints;
+    // Encloses every annotated person's centre with room to spare (x -2.0..2.6, y -0.4..3.1 m).
+    header.room.center_m = Eigen::Vector3d(0.3, 1.3, 1.0);
+    header.room.size_m = Eigen::Vector3d(6.0, 5.0, 2.0);
+    header.evaluated_joints = {"shoulder_left", "shoulder_right", "elbow_left", "elbow_right",
+                               "wrist_left",    "wrist_right",    "hip_left",   "hip_right"};
+    if (paper_joints) header.evaluated_joints.insert(header.evaluated_joints.begin(), "nose");
+    auto frames_of = std::make_shared<const std::vector<MvorFrame>>(std::move(*day_frames));
+    auto convert = [files, frames_of](size_t i, SequenceFrame* frame, InputWarnings*) {
+      ConvertFrame(*files, (*frames_of)[i], frame);
+    };
+    const size_t count = frames_of->size();
+    // Corrections are counted once per file: the first day's source carries them.
+    sources.push_back(std::make_unique<IndexedFrameSource>(std::move(header), count, std::move(convert),
+                                                           sources.empty() ? std::move(warnings) : InputWarnings{}));
+  }
+  return sources;
 }
 
 }  // namespace rpt

@@ -37,11 +37,13 @@
 // frames are about 75 s apart, so nothing carries over from one frame to the next.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "core/joints.h"
 #include "datasets/dataset_params.h"
+#include "datasets/frame_source.h"
 #include "datasets/sequence.h"
 
 namespace rpt {
@@ -90,6 +92,10 @@ void VisitFields(Visitor& v, Self& o) {
 }
 
 DatasetInfo MvorInfo();
-std::vector<Sequence> ReadMvor(const DatasetRequest& request);
+// One source per day. The annotation file (and the detections) are parsed and indexed when they
+// open; each frame's persons, 2D labels and views are converted when it is pulled. Without the
+// ground truth (DatasetRequest::ground_truth false) the annotation file still gives the cameras,
+// frames and times, but no persons and no 2D labels are read (detections=openpose needed).
+std::vector<std::unique_ptr<FrameSource>> OpenMvor(const DatasetRequest& request);
 
 }  // namespace rpt

@@ -185,7 +185,6 @@ class PanopticSource final : public FrameSource {
     files_ = ListPoseFiles(folder_ / kPoseFolder, &warnings_);
   }
 
-  const std::filesystem::path& folder() const { return folder_; }
   const SequenceHeader& header() const override { return header_; }
   long num_frames() const override {
     if (params_.skip_empty) return -1;  // known only once the files are read
@@ -266,7 +265,12 @@ DatasetInfo PanopticInfo() {
   return info;
 }
 
-std::vector<std::unique_ptr<FrameSource>> StreamPanoptic(const DatasetRequest& request) {
+std::vector<std::unique_ptr<FrameSource>> OpenPanoptic(const DatasetRequest& request) {
+  if (!request.ground_truth) {
+    throw ConfigError(
+        "panoptic: the frames are the ground-truth files (hdPose3d_stage1_coco19/body3DScene_*.json) and "
+        "the reader has no 2D detections of its own: it cannot run without its ground truth");
+  }
   const PanopticParams params = ParseDatasetParams<PanopticParams>("panoptic", request);
   std::error_code ec;
   if (!std::filesystem::is_directory(request.root, ec)) {
@@ -284,16 +288,6 @@ std::vector<std::unique_ptr<FrameSource>> StreamPanoptic(const DatasetRequest& r
     sources.push_back(std::make_unique<PanopticSource>(request.root, name, params));
   }
   return sources;
-}
-
-std::vector<Sequence> ReadPanoptic(const DatasetRequest& request) {
-  std::vector<Sequence> sequences;
-  for (const std::unique_ptr<FrameSource>& source : StreamPanoptic(request)) {
-    Sequence sequence = Materialize(*source);
-    ValidateSequence(sequence, static_cast<const PanopticSource&>(*source).folder().string());
-    sequences.push_back(std::move(sequence));
-  }
-  return sequences;
 }
 
 }  // namespace rpt

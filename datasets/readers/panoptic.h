@@ -74,7 +74,7 @@ inline constexpr const char* kPanopticDefaultCameras = "00_03,00_06,00_12,00_13,
 //   skip_empty  true (default, as VoxelPose): drop frames without any GT person (empty "bodies",
 //               or all roots invisible). false: keep them as frames with no persons, which
 //               makes every reconstruction there a false positive.
-// Returns one Sequence per sequence ("panoptic/<seq>"). Throws ConfigError for malformed params
+// One sequence per sequence folder ("panoptic/<seq>"). Throws ConfigError for malformed params
 // and InputError for a missing sequence folder, an unknown camera (listing the available ones)
 // and missing/malformed files (naming the file and the JSON pointer).
 struct PanopticParams {
@@ -99,10 +99,10 @@ void VisitFields(Visitor& v, Self& o) {
 }
 
 DatasetInfo PanopticInfo();
-std::vector<Sequence> ReadPanoptic(const DatasetRequest& request);
-// The same sequences streamed: cameras and the file list are read up front (all errors about
-// folders, calibrations and cameras surface here), one annotation file per frame pulled.
-// ReadPanoptic is these sources materialised.
-std::vector<std::unique_ptr<FrameSource>> StreamPanoptic(const DatasetRequest& request);
+// One source per sequence: cameras and the file list are read when it opens (all errors about
+// folders, calibrations and cameras surface here), one annotation file per frame pulled. The
+// frames are the ground-truth files: without the ground truth (DatasetRequest::ground_truth
+// false) there is nothing to read, a ConfigError.
+std::vector<std::unique_ptr<FrameSource>> OpenPanoptic(const DatasetRequest& request);
 
 }  // namespace rpt

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
+#include <optional>
 
 #include "core/errors.h"
 #include "datasets/readers/fourda_calibration.h"
@@ -130,58 +132,86 @@ DatasetInfo Shelf4daInfo() {
   return info;
 }
 
-std::vector<Sequence> ReadShelf4da(const DatasetRequest& request) {
+std::vector<std::unique_ptr<FrameSource>> OpenShelf4da(const DatasetRequest& request) {
   const Shelf4daParams params = ParseDatasetParams<Shelf4daParams>(kName, request);
   PafAssociationOptions association;
   association.min_paf_score = params.min_paf_score;
   association.min_joints = params.min_joints;
+  const bool with_detections = params.detections == Shelf4daDetections::kOpenPose;
+  if (!request.ground_truth && !with_detections) {
+    throw ConfigError(std::string(kName) +
+                      ": without the ground truth (gt.txt) the frames come from the detections: pass --param "
+                      "detections=openpose");
+  }
   std::error_code ec;
   if (!std::filesystem::is_directory(request.root, ec)) {
     throw InputError(std::string(kName) + ": root '" + request.root.string() + "' is not a directory");
   }
 
-  Sequence sequence;
-  sequence.name = kName;
-  sequence.cameras = ReadFourDaCalibration(request.root / "calibration.json", &sequence.warnings);
-  sequence.gt_joints = Shelf4daJoints();
-  sequence.room = ShelfRoom();
-  sequence.fps = kFps;
+  SequenceHeader header;
+  InputWarnings warnings;
+  header.name = kName;
+  header.cameras = ReadFourDaCalibration(request.root / "calibration.json", &warnings);
+  header.room = ShelfRoom();
+  header.fps = kFps;
 
-  const std::filesystem::path gt_path = request.root / "gt.txt";
-  const std::string gt_source = gt_path.string();
-  const FourDaSkeletons gt = ReadFourDaSkeletons(gt_path);
-  if (gt.num_joints != kFileJoints) {
-    throw InputError(gt_source + ":1: header: " + std::to_string(gt.num_joints) + " joints, expected " +
-                     std::to_string(kFileJoints) + " (SHELF15)");
+  // The parsed files: gt.txt and one detection file per camera, converted one frame per Next.
+  struct Files {
+    std::optional<FourDaSkeletons> gt;
+    std::string gt_source;
+    std::vector<FourDaDetections> detections;  // per camera
+    std::vector<size_t> frames;                // the selected frame indices
+  };
+  auto files = std::make_shared<Files>();
+  std::string count_source;  // the file the frame count comes from
+  size_t num_frames = 0;
+  if (request.ground_truth) {
+    header.gt_joints = Shelf4daJoints();
+    const std::filesystem::path gt_path = request.root / "gt.txt";
+    files->gt_source = gt_path.string();
+    files->gt = ReadFourDaSkeletons(gt_path);
+    if (files->gt->num_joints != kFileJoints) {
+      throw InputError(files->gt_source + ":1: header: " + std::to_string(files->gt->num_joints) +
+                       " joints, expected " + std::to_string(kFileJoints) + " (SHELF15)");
+    }
+    count_source = files->gt_source;
+    num_frames = files->gt->frames.size();
+    files->frames = SelectFrames(params.frames, num_frames, count_source);
   }
-  const std::vector<size_t> frames = SelectFrames(params.frames, gt.frames.size(), gt_source);
-  for (const size_t f : frames) {
-    SequenceFrame& frame = sequence.frames.emplace_back();
-    frame.id = FrameId(f);
-    frame.timestamp_s = static_cast<double>(f) / kFps;
-    ConvertGroundTruth(gt.frames[f], params.nose_proxy, gt_source, f, &frame.gt);
-  }
-
-  if (params.detections == Shelf4daDetections::kOpenPose) {
-    sequence.detection_joints = CocoBodyJoints();
-    for (SequenceFrame& frame : sequence.frames) frame.views.resize(sequence.cameras.size());
-    for (size_t c = 0; c < sequence.cameras.size(); ++c) {
-      const Camera& camera = sequence.cameras[c];
+  if (with_detections) {
+    header.detection_joints = CocoBodyJoints();
+    for (const Camera& camera : header.cameras) {
       const std::filesystem::path path = request.root / "detection" / (camera.name + ".txt");
-      const FourDaDetections detections = ReadFourDaDetections(path, &sequence.warnings);
-      if (detections.frames.size() != gt.frames.size()) {
-        throw InputError(path.string() + ":1: header: " + std::to_string(detections.frames.size()) + " frames, " +
-                         gt_source + " has " + std::to_string(gt.frames.size()));
+      FourDaDetections& detections = files->detections.emplace_back(ReadFourDaDetections(path, &warnings));
+      if (count_source.empty()) {  // without gt.txt: the first detection file counts the frames
+        count_source = path.string();
+        num_frames = detections.frames.size();
       }
-      for (size_t i = 0; i < frames.size(); ++i) {
-        AssembleView(detections.frames[frames[i]], association, camera, &sequence.frames[i].views[c]);
+      if (detections.frames.size() != num_frames) {
+        throw InputError(path.string() + ":1: header: " + std::to_string(detections.frames.size()) + " frames, " +
+                         count_source + " has " + std::to_string(num_frames));
       }
     }
+    if (!request.ground_truth) files->frames = SelectFrames(params.frames, num_frames, count_source);
   }
-  ValidateSequence(sequence, request.root.string());
-  std::vector<Sequence> out;
-  out.push_back(std::move(sequence));
-  return out;
+
+  auto convert = [files, nose_proxy = params.nose_proxy, association, cameras = header.cameras](
+                     size_t i, SequenceFrame* frame, InputWarnings*) {
+    const size_t f = files->frames[i];
+    frame->id = FrameId(f);
+    frame->timestamp_s = static_cast<double>(f) / kFps;
+    if (files->gt) ConvertGroundTruth(files->gt->frames[f], nose_proxy, files->gt_source, f, &frame->gt);
+    if (files->detections.empty()) return;
+    frame->views.resize(cameras.size());
+    for (size_t c = 0; c < cameras.size(); ++c) {
+      AssembleView(files->detections[c].frames[f], association, cameras[c], &frame->views[c]);
+    }
+  };
+  const size_t count = files->frames.size();
+  std::vector<std::unique_ptr<FrameSource>> sources;
+  sources.push_back(
+      std::make_unique<IndexedFrameSource>(std::move(header), count, std::move(convert), std::move(warnings)));
+  return sources;
 }
 
 }  // namespace rpt

@@ -28,11 +28,13 @@
 // x * (width - 1), y * (height - 1), as 4D-Association does.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "core/joints.h"
 #include "datasets/dataset_params.h"
+#include "datasets/frame_source.h"
 #include "datasets/readers/openpose_body25.h"
 #include "datasets/readers/openpose_paf_association.h"
 #include "datasets/readers/shelf_campus.h"
@@ -50,9 +52,10 @@ const JointNames& Shelf4daJoints();
 //   nose_proxy     center (default) | top | bottom, as the Shelf reader.
 //   min_paf_score  PafAssociationOptions::min_paf_score (default 0.05).
 //   min_joints     PafAssociationOptions::min_joints, BODY_25 joints (default 5).
-// Returns one Sequence "shelf-4da". Throws ConfigError for malformed params, InputError for
-// missing or malformed files (naming file, line and token), frames outside the files and
-// detection files whose frame count differs from gt.txt.
+// Throws ConfigError for malformed params (and for detections=none without the ground truth),
+// InputError for missing or malformed files (naming file, line and token), frames outside the
+// files and detection files whose frame count differs from gt.txt (or, without it, from the
+// first detection file).
 enum class Shelf4daDetections { kOpenPose, kNone };
 template <>
 struct EnumNames<Shelf4daDetections> {
@@ -80,6 +83,10 @@ void VisitFields(Visitor& v, Self& o) {
 }
 
 DatasetInfo Shelf4daInfo();
-std::vector<Sequence> ReadShelf4da(const DatasetRequest& request);
+// One source "shelf-4da": calibration.json, gt.txt and the detection files are read when it opens
+// (every file and frame-count error shows there); each frame's persons are converted and its views
+// assembled when it is pulled. Without the ground truth (DatasetRequest::ground_truth false)
+// gt.txt is not read: the frames are those of the detection files, with no persons.
+std::vector<std::unique_ptr<FrameSource>> OpenShelf4da(const DatasetRequest& request);
 
 }  // namespace rpt

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 
 #include "core/errors.h"
 #include "core/option_codec.h"
@@ -136,7 +137,37 @@ std::vector<int> SelectActors(const std::string& text, size_t num_actors, const 
   return actors;
 }
 
-std::vector<Sequence> ReadShelfCampus(const ShelfCampusSpec& spec, const DatasetRequest& request) {
+// The parsed actorsGT.mat and what to take from it.
+struct ShelfCampusGroundTruth {
+  io::MatFile mat;
+  const io::MatValue* actor3d = nullptr;  // in `mat`
+  std::vector<int> actors;
+};
+
+// Frame `f` of actorsGT.mat: the selected actors annotated there, plus the derived nose.
+void ConvertGroundTruth(const ShelfCampusGroundTruth& truth, int f, HeadNoseProxy nose_proxy, Poses3D* gt) {
+  gt->Clear(static_cast<int>(ShelfCampusJoints().size()));
+  for (const int p : truth.actors) {
+    const io::MatValue& pose = truth.actor3d->Cell(static_cast<size_t>(p)).Cell(static_cast<size_t>(f));
+    if (pose.IsEmpty()) continue;  // actor not annotated in this frame
+    const std::vector<double> rows = pose.RowMajor(kFileJoints, 3);
+    if (!std::all_of(rows.begin(), rows.end(), [](double v) { return std::isfinite(v); })) {
+      pose.Fail("contains NaN or infinity");
+    }
+    auto person = gt->AddPerson(p);
+    for (int j = 0; j < kFileJoints; ++j) {
+      person.col(j) << rows[3 * j], rows[3 * j + 1], rows[3 * j + 2], 1.0;
+    }
+    const Eigen::Vector3d bottom = person.col(kHeadBottom).head<3>();
+    const Eigen::Vector3d top = person.col(kHeadTop).head<3>();
+    const Eigen::Vector3d nose = nose_proxy == HeadNoseProxy::kTop      ? top
+                                 : nose_proxy == HeadNoseProxy::kBottom ? bottom
+                                                                        : Eigen::Vector3d(0.5 * (bottom + top));
+    person.col(kFileJoints) << nose, 1.0;
+  }
+}
+
+std::vector<std::unique_ptr<FrameSource>> OpenShelfCampus(const ShelfCampusSpec& spec, const DatasetRequest& request) {
   const ShelfCampusParams params = ParseDatasetParams(spec.name, request, DefaultParams(spec));
   const auto what = [&](const std::string& key) { return dataset_params::ParamKey(spec.name, key); };
 
@@ -146,69 +177,78 @@ std::vector<Sequence> ReadShelfCampus(const ShelfCampusSpec& spec, const Dataset
   if (frames.front() < 0) {
     throw ConfigError(what("frames") + ": frame " + std::to_string(frames.front()) + " is negative");
   }
+  const bool with_detections = params.detections == ShelfCampusDetections::kVoxelPose;
+  if (!request.ground_truth && !with_detections) {
+    throw ConfigError(spec.name +
+                      ": without the ground truth (actorsGT.mat) the frames come from the detections: pass --param "
+                      "detections=voxelpose");
+  }
 
   std::error_code ec;
   if (!std::filesystem::is_directory(request.root, ec)) {
     throw InputError(spec.name + ": root '" + request.root.string() + "' is not a directory");
   }
 
-  Sequence sequence;
-  sequence.name = spec.name;
-  sequence.cameras =
-      ReadVoxelPoseCalibration(request.root / spec.calibration_file, spec.width, spec.height, &sequence.warnings);
-  sequence.gt_joints = ShelfCampusJoints();
-  sequence.room = spec.room;
-  sequence.fps = fps;
+  SequenceHeader header;
+  InputWarnings warnings;
+  header.name = spec.name;
+  header.cameras = ReadVoxelPoseCalibration(request.root / spec.calibration_file, spec.width, spec.height, &warnings);
+  header.room = spec.room;
+  header.fps = fps;
 
-  const std::filesystem::path mat_path = request.root / "actorsGT.mat";
-  const io::MatFile mat = io::ReadMat(mat_path);
-  const io::MatValue& actor3d = mat.Get("actor3D");
-  const size_t num_frames = CountFrames(actor3d);
-  const std::vector<int> actors =
-      SelectActors(params.actors, actor3d.NumElements(), what("actors"), mat_path.string());
-  if (static_cast<size_t>(frames.back()) >= num_frames) {
-    throw InputError(mat_path.string() + ": frame " + std::to_string(frames.back()) + " requested but actor3D has " +
-                     std::to_string(num_frames) + " frames (0-" + std::to_string(num_frames == 0 ? 0 : num_frames - 1) +
-                     "); select frames with --param frames=...");
-  }
-
-  const int num_joints = static_cast<int>(sequence.gt_joints.size());
-  for (const int f : frames) {
-    SequenceFrame frame;
-    frame.id = FrameId(spec.name, f);
-    frame.timestamp_s = f / fps;
-    frame.gt.Clear(num_joints);
-    for (const int p : actors) {
-      const io::MatValue& pose = actor3d.Cell(static_cast<size_t>(p)).Cell(static_cast<size_t>(f));
-      if (pose.IsEmpty()) continue;  // actor not annotated in this frame
-      const std::vector<double> rows = pose.RowMajor(kFileJoints, 3);
-      if (!std::all_of(rows.begin(), rows.end(), [](double v) { return std::isfinite(v); })) {
-        pose.Fail("contains NaN or infinity");
-      }
-      auto person = frame.gt.AddPerson(p);
-      for (int j = 0; j < kFileJoints; ++j) {
-        person.col(j) << rows[3 * j], rows[3 * j + 1], rows[3 * j + 2], 1.0;
-      }
-      const Eigen::Vector3d bottom = person.col(kHeadBottom).head<3>();
-      const Eigen::Vector3d top = person.col(kHeadTop).head<3>();
-      const Eigen::Vector3d nose = nose_proxy == HeadNoseProxy::kTop      ? top
-                                   : nose_proxy == HeadNoseProxy::kBottom ? bottom
-                                                                      : Eigen::Vector3d(0.5 * (bottom + top));
-      person.col(kFileJoints) << nose, 1.0;
+  std::shared_ptr<ShelfCampusGroundTruth> truth;
+  if (request.ground_truth) {
+    header.gt_joints = ShelfCampusJoints();
+    const std::filesystem::path mat_path = request.root / "actorsGT.mat";
+    truth = std::make_shared<ShelfCampusGroundTruth>();
+    truth->mat = io::ReadMat(mat_path);
+    truth->actor3d = &truth->mat.Get("actor3D");
+    const size_t num_frames = CountFrames(*truth->actor3d);
+    truth->actors = SelectActors(params.actors, truth->actor3d->NumElements(), what("actors"), mat_path.string());
+    if (static_cast<size_t>(frames.back()) >= num_frames) {
+      throw InputError(mat_path.string() + ": frame " + std::to_string(frames.back()) + " requested but actor3D has " +
+                       std::to_string(num_frames) + " frames (0-" +
+                       std::to_string(num_frames == 0 ? 0 : num_frames - 1) +
+                       "); select frames with --param frames=...");
     }
-    sequence.frames.push_back(std::move(frame));
   }
 
-  if (params.detections == ShelfCampusDetections::kVoxelPose) {
+  std::shared_ptr<const VoxelPoseDetectionsFile> detections;
+  if (with_detections) {
     const std::filesystem::path pkl = request.root / spec.detections_file;
-    const Detections detections = ReadVoxelPoseDetections(pkl, sequence, spec.name);
-    AttachDetections(detections, pkl.string(), std::span<Sequence>(&sequence, 1), &sequence.warnings);
-    sequence.warnings.Merge(detections.warnings);
+    std::vector<std::string> camera_names;
+    for (const Camera& camera : header.cameras) camera_names.push_back(camera.name);
+    detections = std::make_shared<const VoxelPoseDetectionsFile>(pkl, camera_names);
+    header.detection_joints = CocoBodyJoints();
+    // The frames the cache has no key for are triangulated without detections (AttachDetections'
+    // counts); a cache that has none of them is an error.
+    AttachReport report;
+    for (const int f : frames) {
+      if (detections->HasFrame(f)) {
+        ++report.frames_with_detections;
+      } else if (report.frames_without++ == 0) {
+        report.first_frame_without = FrameId(spec.name, f);
+      }
+    }
+    if (report.frames_with_detections == 0) {
+      throw NoFrameMatchesError(pkl.string(), 0, "", spec.name, FrameId(spec.name, frames.front()));
+    }
+    CountUnattachedFrames(report, pkl.string(), &warnings);
+    warnings.Merge(detections->warnings());
   }
-  ValidateSequence(sequence, request.root.string());
-  std::vector<Sequence> out;
-  out.push_back(std::move(sequence));
-  return out;
+
+  auto convert = [name = spec.name, frames, fps, nose_proxy, truth, detections](size_t i, SequenceFrame* frame,
+                                                                                InputWarnings* frame_warnings) {
+    const int f = frames[i];
+    frame->id = FrameId(name, f);
+    frame->timestamp_s = f / fps;
+    if (truth) ConvertGroundTruth(*truth, f, nose_proxy, &frame->gt);
+    if (detections) detections->ReadFrame(f, &frame->views, frame_warnings);
+  };
+  std::vector<std::unique_ptr<FrameSource>> sources;
+  sources.push_back(
+      std::make_unique<IndexedFrameSource>(std::move(header), frames.size(), std::move(convert), std::move(warnings)));
+  return sources;
 }
 
 }  // namespace
@@ -228,8 +268,12 @@ Room ShelfRoom() {
 }
 
 DatasetInfo ShelfInfo() { return MakeInfo(ShelfSpec()); }
-std::vector<Sequence> ReadShelf(const DatasetRequest& request) { return ReadShelfCampus(ShelfSpec(), request); }
+std::vector<std::unique_ptr<FrameSource>> OpenShelf(const DatasetRequest& request) {
+  return OpenShelfCampus(ShelfSpec(), request);
+}
 DatasetInfo CampusInfo() { return MakeInfo(CampusSpec()); }
-std::vector<Sequence> ReadCampus(const DatasetRequest& request) { return ReadShelfCampus(CampusSpec(), request); }
+std::vector<std::unique_ptr<FrameSource>> OpenCampus(const DatasetRequest& request) {
+  return OpenShelfCampus(CampusSpec(), request);
+}
 
 }  // namespace rpt

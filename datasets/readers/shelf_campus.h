@@ -26,11 +26,13 @@
 // (root) can be, not the head.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "core/joints.h"
 #include "datasets/dataset_params.h"
+#include "datasets/frame_source.h"
 #include "datasets/sequence.h"
 
 namespace rpt {
@@ -51,9 +53,12 @@ Room ShelfRoom();
 //   detections  none (default) | voxelpose: attach the VoxelPose 2D cache from the root.
 //   fps         frame rate for timestamps, default 25 (Campus: the EPFL recording rate; Shelf:
 //               not documented by the authors, 25 assumed).
-// Returns one Sequence ("shelf" / "campus"). Throws ConfigError for malformed params and
-// InputError for missing/malformed files and frames or actors outside actorsGT.mat (naming
-// the frame/actor count).
+// Opens one source ("shelf" / "campus"): the calibration, actorsGT.mat and the cache are read and
+// checked when it opens, and each frame is converted from them when it is pulled. Without the
+// ground truth (DatasetRequest::ground_truth false) actorsGT.mat is not read: the frames are the
+// `frames` selection with the cache's detections and no persons (detections=voxelpose needed).
+// Throws ConfigError for malformed params and InputError for missing/malformed files and frames
+// or actors outside actorsGT.mat (naming the frame/actor count).
 // Which point of the head the GT joint "nose" is (Shelf, Campus and the 4D-Association Shelf
 // annotate head_bottom and head_top only).
 enum class HeadNoseProxy { kCenter, kTop, kBottom };
@@ -89,8 +94,8 @@ void VisitFields(Visitor& v, Self& o) {
 }
 
 DatasetInfo ShelfInfo();
-std::vector<Sequence> ReadShelf(const DatasetRequest& request);
+std::vector<std::unique_ptr<FrameSource>> OpenShelf(const DatasetRequest& request);
 DatasetInfo CampusInfo();
-std::vector<Sequence> ReadCampus(const DatasetRequest& request);
+std::vector<std::unique_ptr<FrameSource>> OpenCampus(const DatasetRequest& request);
 
 }  // namespace rpt

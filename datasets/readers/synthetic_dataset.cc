@@ -2,6 +2,8 @@
 #include "datasets/readers/synthetic_dataset.h"
 
 #include <algorithm>
+#include <memory>
+#include <utility>
 
 #include "core/errors.h"
 #include "core/option_codec.h"
@@ -26,6 +28,29 @@ DistortionModel ToDistortionModel(SyntheticLens lens) {
   return DistortionModel::kNone;
 }
 
+// The generated frames without what they were generated from: no persons, no 2D labels, no GT
+// joints (DatasetRequest::ground_truth false).
+class DetectionsOnlySource final : public FrameSource {
+ public:
+  explicit DetectionsOnlySource(std::unique_ptr<FrameSource> scene)
+      : scene_(std::move(scene)), header_(scene_->header()) {
+    header_.gt_joints.clear();
+  }
+  const SequenceHeader& header() const override { return header_; }
+  long num_frames() const override { return scene_->num_frames(); }
+  bool Next(SequenceFrame* frame) override {
+    if (!scene_->Next(frame)) return false;
+    frame->gt.Clear(0);
+    frame->labels_2d.clear();
+    return true;
+  }
+  const InputWarnings& warnings() const override { return scene_->warnings(); }
+
+ private:
+  std::unique_ptr<FrameSource> scene_;
+  SequenceHeader header_;
+};
+
 }  // namespace
 
 std::string SyntheticParams::Check() const {
@@ -47,11 +72,7 @@ DatasetInfo SyntheticInfo() {
   return info;
 }
 
-std::vector<Sequence> ReadSynthetic(const DatasetRequest& request) {
-  return MakeSyntheticDataset(ParseDatasetParams<SyntheticParams>(kName, request));
-}
-
-std::unique_ptr<FrameSource> StreamSynthetic(const SyntheticParams& params) {
+std::unique_ptr<FrameSource> OpenSyntheticSequence(const SyntheticParams& params) {
   ThrowIfInvalid(params);
   synthetic::SceneOptions options;
   options.rig.num_cameras = params.cameras;
@@ -66,16 +87,17 @@ std::unique_ptr<FrameSource> StreamSynthetic(const SyntheticParams& params) {
                                                       kName);
 }
 
-std::vector<std::unique_ptr<FrameSource>> StreamSyntheticDataset(const DatasetRequest& request) {
+std::vector<std::unique_ptr<FrameSource>> OpenSynthetic(const DatasetRequest& request) {
+  std::unique_ptr<FrameSource> scene = OpenSyntheticSequence(ParseDatasetParams<SyntheticParams>(kName, request));
   std::vector<std::unique_ptr<FrameSource>> sources;
-  sources.push_back(StreamSynthetic(ParseDatasetParams<SyntheticParams>(kName, request)));
+  sources.push_back(request.ground_truth ? std::move(scene) : std::make_unique<DetectionsOnlySource>(std::move(scene)));
   return sources;
 }
 
 std::vector<Sequence> MakeSyntheticDataset(const SyntheticParams& params) {
-  std::vector<Sequence> sequences;
-  sequences.push_back(Materialize(*StreamSynthetic(params)));
-  return sequences;
+  std::vector<std::unique_ptr<FrameSource>> sources;
+  sources.push_back(OpenSyntheticSequence(params));
+  return MaterializeAll(std::move(sources));
 }
 
 }  // namespace rpt

@@ -65,12 +65,13 @@ void VisitFields(Visitor& v, Self& o) {
 }
 
 DatasetInfo SyntheticInfo();
-std::vector<Sequence> ReadSynthetic(const DatasetRequest& request);
-// The same from parsed parameters (what `rpt demo` calls).
+// The one synthetic sequence: frames are generated when pulled (memory flat in the number of
+// frames). Without the ground truth (DatasetRequest::ground_truth false) the frames keep their
+// simulated detections and lose their persons and 2D labels.
+std::vector<std::unique_ptr<FrameSource>> OpenSynthetic(const DatasetRequest& request);
+// The same from parsed parameters (what `rpt demo` passes its options through), with its ground truth.
+std::unique_ptr<FrameSource> OpenSyntheticSequence(const SyntheticParams& params);
+// OpenSyntheticSequence(params) materialised (what `rpt demo` evaluates).
 std::vector<Sequence> MakeSyntheticDataset(const SyntheticParams& params);
-// The one synthetic sequence streamed: frames are generated when pulled (memory flat in the
-// number of frames; the same numbers as MakeSyntheticDataset).
-std::unique_ptr<FrameSource> StreamSynthetic(const SyntheticParams& params);
-std::vector<std::unique_ptr<FrameSource>> StreamSyntheticDataset(const DatasetRequest& request);
 
 }  // namespace rpt

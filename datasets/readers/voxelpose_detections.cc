@@ -2,16 +2,14 @@
 #include "datasets/readers/voxelpose_detections.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <set>
 #include <unordered_map>
 
 #include "core/errors.h"
-#include "datasets/io/number_text.h"
 #include "core/joints.h"
-#include "datasets/input_warnings.h"
+#include "datasets/io/number_text.h"
 #include "datasets/io/pickle.h"
 
 namespace rpt {
@@ -54,66 +52,107 @@ void AddDetection(const io::PyView& detection, Poses2D* view, InputWarnings* war
   }
 }
 
+// The detections of one key's value.
+void ReadView(const io::PyView& value, Poses2D* view, InputWarnings* warnings) {
+  if (!value.IsList() && !value.IsTuple()) {
+    value.Fail(std::string("expected a list of detections, got ") + PyKindName(value.kind()));
+  }
+  view->Clear(kCocoJoints);
+  for (const io::PyView& detection : value.Elements()) AddDetection(detection, view, warnings);
+}
+
 }  // namespace
 
-Detections ReadVoxelPoseDetections(const std::filesystem::path& path, const Sequence& sequence,
-                                   const std::string& dataset_prefix) {
+VoxelPoseDetectionsFile::VoxelPoseDetectionsFile(const std::filesystem::path& path, std::vector<std::string> cameras)
+    : cameras_(std::move(cameras)) {
   const io::PyView root = io::ReadPickle(path);
+  source_ = root.source();
   if (!root.IsDict()) {
     root.Fail(std::string("expected a dict keyed by \"{camera}_{frame}\", got ") + PyKindName(root.kind()));
   }
-
-  std::unordered_map<std::string, size_t> frame_index;
-  for (size_t f = 0; f < sequence.frames.size(); ++f) frame_index[sequence.frames[f].id] = f;
-  std::unordered_map<std::string, size_t> camera_index;
-  for (size_t c = 0; c < sequence.cameras.size(); ++c) camera_index[sequence.cameras[c].name] = c;
-
-  // Per sequence frame, per sequence camera: the view, if the file has its key.
-  std::vector<std::vector<const io::PyView*>> found(sequence.frames.size(),
-                                                    std::vector<const io::PyView*>(sequence.cameras.size(), nullptr));
-  long unknown_camera_keys = 0;
-  std::set<std::string> unknown_cameras;
-  const auto items = root.Items();
-  for (const auto& [key, value] : items) {
+  items_ = root.Items();
+  // Every key is checked, not only those of the frames a reader selects.
+  std::vector<std::pair<std::string, long>> parsed(items_.size());
+  for (size_t i = 0; i < items_.size(); ++i) {
+    const io::PyView& key = items_[i].first;
     if (!key.IsStr()) root.Fail("key " + io::Repr(key.value()) + " is not a string \"{camera}_{frame}\"");
-    std::string camera;
-    long frame = 0;
-    if (!SplitKey(key.AsStr(), &camera, &frame)) {
+    if (!SplitKey(key.AsStr(), &parsed[i].first, &parsed[i].second)) {
       root.Fail("key '" + key.AsStr() + "' is not of the form \"{camera}_{frame}\"");
     }
-    const auto f = frame_index.find(FrameId(dataset_prefix, frame));
-    const auto c = camera_index.find(camera);
-    if (c == camera_index.end()) {  // the whole cache is checked, not only the selected frames
+  }
+  if (cameras_.empty()) {
+    const std::set<std::string> named = [&] {
+      std::set<std::string> names;
+      for (const auto& [camera, frame] : parsed) names.insert(camera);
+      return names;
+    }();
+    cameras_.assign(named.begin(), named.end());
+  }
+  std::unordered_map<std::string, size_t> camera_index;
+  for (size_t c = 0; c < cameras_.size(); ++c) camera_index[cameras_[c]] = c;
+  long unknown_camera_keys = 0;
+  std::set<std::string> unknown_cameras;
+  for (size_t i = 0; i < parsed.size(); ++i) {
+    const auto c = camera_index.find(parsed[i].first);
+    if (c == camera_index.end()) {
       ++unknown_camera_keys;
-      unknown_cameras.insert(camera);
+      unknown_cameras.insert(parsed[i].first);
       continue;
     }
-    if (f == frame_index.end()) continue;  // a frame not selected: the caches cover every image
-    found[f->second][c->second] = &value;
+    std::vector<int>& per_camera = keys_[parsed[i].second];
+    per_camera.resize(cameras_.size(), -1);
+    per_camera[c->second] = static_cast<int>(i);
   }
-
-  Detections detections;
   std::string names;
   for (const std::string& camera : unknown_cameras) names += (names.empty() ? "'" : ", '") + camera + "'";
-  detections.warnings.AddUnused(root.source(), "keys of cameras not in the calibration ignored (cameras " + names + ")",
-                                unknown_camera_keys);
+  warnings_.AddUnused(source_, "keys of cameras not in the calibration ignored (cameras " + names + ")",
+                      unknown_camera_keys);
+}
+
+std::vector<long> VoxelPoseDetectionsFile::frames() const {
+  std::vector<long> out;
+  out.reserve(keys_.size());
+  for (const auto& [frame, items] : keys_) out.push_back(frame);
+  return out;
+}
+
+void VoxelPoseDetectionsFile::ReadFrame(long frame, std::vector<Poses2D>* views, InputWarnings* warnings) const {
+  views->resize(cameras_.size());
+  for (Poses2D& view : *views) view.Clear(kCocoJoints);
+  const auto it = keys_.find(frame);
+  if (it == keys_.end()) return;
+  for (size_t c = 0; c < cameras_.size(); ++c) {
+    if (it->second[c] >= 0) ReadView(items_[static_cast<size_t>(it->second[c])].second, &(*views)[c], warnings);
+  }
+}
+
+void VoxelPoseDetectionsFile::ReadFrame(long frame, std::vector<std::string>* cameras, std::vector<Poses2D>* views,
+                                        InputWarnings* warnings) const {
+  cameras->clear();
+  views->clear();
+  const auto it = keys_.find(frame);
+  if (it == keys_.end()) return;
+  for (size_t c = 0; c < cameras_.size(); ++c) {
+    if (it->second[c] < 0) continue;
+    cameras->push_back(cameras_[c]);
+    ReadView(items_[static_cast<size_t>(it->second[c])].second, &views->emplace_back(), warnings);
+  }
+}
+
+Detections ReadVoxelPoseDetections(const std::filesystem::path& path, const VoxelPoseDetectionsOptions& options) {
+  if (options.frame_id_prefix.empty()) {
+    throw ConfigError(path.string() +
+                      ": a VoxelPose cache is keyed \"{camera}_{frame}\": reading it needs the frame-id "
+                      "prefix of the sequence it belongs to (e.g. 'shelf' for frame ids shelf_000300)");
+  }
+  const VoxelPoseDetectionsFile file(path, options.cameras);
+  Detections detections;
   detections.joints = CocoBodyJoints();
-  for (size_t f = 0; f < found.size(); ++f) {
-    FrameDetections frame;
-    frame.frame_id = sequence.frames[f].id;
-    for (size_t c = 0; c < found[f].size(); ++c) {
-      const io::PyView* value = found[f][c];
-      if (value == nullptr) continue;
-      if (!value->IsList() && !value->IsTuple()) {
-        value->Fail(std::string("expected a list of detections, got ") + PyKindName(value->kind()));
-      }
-      Poses2D view;
-      view.Clear(kCocoJoints);
-      for (const io::PyView& detection : value->Elements()) AddDetection(detection, &view, &detections.warnings);
-      frame.cameras.push_back(sequence.cameras[c].name);
-      frame.views.push_back(std::move(view));
-    }
-    if (!frame.cameras.empty()) detections.frames.push_back(std::move(frame));
+  detections.warnings = file.warnings();
+  for (const long frame : file.frames()) {
+    FrameDetections& out = detections.frames.emplace_back();
+    out.frame_id = FrameId(options.frame_id_prefix, frame);
+    file.ReadFrame(frame, &out.cameras, &out.views, &detections.warnings);
   }
   return detections;
 }

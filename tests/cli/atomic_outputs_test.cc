@@ -291,7 +291,7 @@ TEST(AtomicOutputs, InvalidUtf8FrameIdIsReplacedWithAWarning) {
   const test::CommandResult converted =
       test::RunRpt("convert --dataset synthetic --param frames=5 --out " + (root / "clean.h5").string());
   ASSERT_EQ(converted.exit_code, 0) << converted.err;
-  std::vector<Sequence> sequences = ReadSequencesHdf5(root / "clean.h5");
+  std::vector<Sequence> sequences = MaterializeAll(OpenSequencesHdf5(root / "clean.h5"));
   Detections detections = ReadDetectionsHdf5(root / "clean.h5");
   ASSERT_FALSE(sequences.empty());
   const std::string bad_id = "frame\xff\xfe";

@@ -151,7 +151,7 @@ TEST(InputWarnings, ConvertCarriesTheCorrectedValuesIntoTheCacheAndWarns) {
     }
   }
   EXPECT_GE(ones, 3);
-  EXPECT_TRUE(ReadSequencesHdf5(cache)[0].warnings.empty());
+  EXPECT_TRUE(MaterializeAll(OpenSequencesHdf5(cache))[0].warnings.empty());
   const test::CommandResult again = test::RunRpt("inspect --labels " + cache.string() + " --detections " + cache.string());
   ASSERT_EQ(again.exit_code, 0) << again.err;
   EXPECT_TRUE(WarningLines(again.err).empty()) << again.err;

@@ -18,6 +18,7 @@
 #include "datasets/detector_stats/statistics.h"
 #include "datasets/readers/mvor.h"
 #include "datasets/readers/shelf_4da.h"
+#include "datasets/registry.h"
 #include "datasets/synthetic/camera_rig.h"
 #include "datasets/synthetic/detector_simulator.h"
 #include "datasets/synthetic/scene.h"
@@ -292,7 +293,7 @@ TEST(DetectorModelTest, HardMatchesRealMvorDetections) {
   DatasetRequest request;
   request.dataset = "mvor";
   request.root = test::SharedData("mvor");
-  std::vector<Sequence> sequences = ReadMvor(request);
+  std::vector<Sequence> sequences = ReadDataset(request);
   detector_stats::StatsAccumulator real_stats{detector_stats::StatsOptions{}};
   detector_stats::StatsAccumulator sim_stats{detector_stats::StatsOptions{}};
   for (Sequence& sequence : sequences) {
@@ -356,7 +357,7 @@ TEST(DetectorModelTest, RealisticMatchesRealShelfDetections) {
   DatasetRequest request;
   request.dataset = "shelf-4da";
   request.root = test::SharedData("shelf/4d_association");
-  std::vector<Sequence> sequences = ReadShelf4da(request);
+  std::vector<Sequence> sequences = ReadDataset(request);
   detector_stats::StatsOptions options;
   options.joints = ShelfStatisticJoints();
   detector_stats::StatsAccumulator real_stats(options), sim_stats(options);

@@ -87,6 +87,66 @@ TEST(SyntheticSourceTest, StreamedFramesEqualTheMaterialisedSequence) {
   EXPECT_EQ(count, whole.frames.size());
 }
 
+TEST(SyntheticSourceTest, DatasetStreamsAndReadsTheSameFrames) {
+  DatasetRequest request;
+  request.dataset = "synthetic";
+  request.params = {{"frames", "40"}, {"people", "2"}, {"cameras", "3"}, {"seed", "5"}};
+  const std::vector<Sequence> read = ReadDataset(request);
+  std::vector<std::unique_ptr<FrameSource>> sources = OpenDataset(request);
+  ASSERT_EQ(read.size(), 1u);
+  ASSERT_EQ(sources.size(), 1u);
+  const Sequence streamed = Materialize(*sources[0]);
+  EXPECT_EQ(streamed.name, read[0].name);
+  ASSERT_EQ(streamed.frames.size(), read[0].frames.size());
+  for (size_t f = 0; f < streamed.frames.size(); ++f) ExpectSameFrame(streamed.frames[f], read[0].frames[f]);
+}
+
+// The source of a format read whole: frame i converted when pulled, into a cleared buffer (nothing
+// of the frame before stays), its corrections counted in the source's warnings.
+TEST(IndexedFrameSourceTest, ConvertsFrameIWhenPulledIntoAClearedFrame) {
+  SequenceHeader header;
+  header.name = "seq";
+  header.gt_joints = {"nose"};
+  InputWarnings opening;
+  opening.Add("calibration.json", "rotations re-orthonormalised", "max |R^T R - I|", 1e-6);
+  std::vector<size_t> converted;
+  IndexedFrameSource source(
+      header, 3,
+      [&](size_t i, SequenceFrame* frame, InputWarnings* warnings) {
+        converted.push_back(i);
+        frame->id = "seq_" + std::to_string(i);
+        if (i == 0) {  // only the first frame has persons, views and labels
+          frame->timestamp_s = 0.5;
+          frame->gt.Clear(1);
+          frame->gt.AddPerson(4);
+          frame->views.resize(2);
+          frame->labels_2d.resize(2);
+        }
+        warnings->Add("frames.json", "scores above 1 clamped to 1", "largest", 1.0 + 0.1 * static_cast<double>(i));
+      },
+      opening);
+  EXPECT_EQ(source.header().name, "seq");
+  EXPECT_EQ(source.num_frames(), 3);
+  EXPECT_TRUE(converted.empty());  // nothing converted when opened
+  SequenceFrame frame;
+  ASSERT_TRUE(source.Next(&frame));
+  EXPECT_EQ(converted, (std::vector<size_t>{0}));
+  EXPECT_EQ(frame.gt.num_persons(), 1);
+  ASSERT_TRUE(source.Next(&frame));
+  EXPECT_EQ(frame.id, "seq_1");
+  EXPECT_EQ(frame.timestamp_s, 0);
+  EXPECT_EQ(frame.gt.num_persons(), 0);
+  EXPECT_TRUE(frame.views.empty());
+  EXPECT_TRUE(frame.labels_2d.empty());
+  ASSERT_TRUE(source.Next(&frame));
+  EXPECT_FALSE(source.Next(&frame));
+  EXPECT_FALSE(source.Next(&frame));
+  EXPECT_EQ(converted, (std::vector<size_t>{0, 1, 2}));
+  ASSERT_EQ(source.warnings().items().size(), 2u);
+  EXPECT_EQ(source.warnings().items()[1].count, 3);
+  EXPECT_DOUBLE_EQ(source.warnings().items()[1].worst, 1.2);
+}
+
 TEST(SequenceSourceTest, DeliversFramesInOrderAndFreesThem) {
   Sequence sequence;
   sequence.name = "seq";
@@ -121,7 +181,7 @@ TEST(SyntheticSourceTest, HundredThousandFramesWithOneFrameAlive) {
   params.people = 1;
   params.frames = 100000;
   params.noise = "perfect";
-  CountingSource source(StreamSynthetic(params));
+  CountingSource source(OpenSyntheticSequence(params));
   SequenceFrame frame;
   std::string last_id;
   while (source.Next(&frame)) last_id = frame.id;

@@ -58,7 +58,7 @@ std::string ReadEveryWay(const test::TempDir& dir, const ByteVec& bytes, const s
   const auto path = dir.Write("damaged.h5", bytes);
   const PreflightSetting setting(preflight);
   const std::vector<std::function<void()>> reads = {[&] { ProbeHdf5Cache(path); }, [&] { ReadDetectionsHdf5(path); },
-                                                    [&] { ReadSequencesHdf5(path); }};
+                                                    [&] { MaterializeAll(OpenSequencesHdf5(path)); }};
   for (const auto& read : reads) {
     try {
       read();

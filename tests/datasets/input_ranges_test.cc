@@ -31,7 +31,8 @@ TEST(InputRanges, JsonNumberOverflowIsAParseErrorWithLineAndColumn) {
               HasSubstr("big.json:1:12: JSON parse error: number overflow parsing '-1e400'"));
   test::TempDir dir;
   const auto path = WriteText(dir, "labels.json", "[{\"id\": 1e400}]");
-  EXPECT_THAT(InputErrorOf([&] { ReadLabels(path); }), HasSubstr("labels.json:1:13: JSON parse error: number overflow"));
+  EXPECT_THAT(InputErrorOf([&] { MaterializeAll(OpenLabels(path)); }),
+              HasSubstr("labels.json:1:13: JSON parse error: number overflow"));
   // Ordinary parse errors keep their message.
   EXPECT_THAT(InputErrorOf([] { io::ParseJsonText("[1,]", "x.json"); }), HasSubstr("x.json:1:4: JSON parse error: syntax error"));
 }
@@ -74,22 +75,26 @@ std::string Label(const std::string& id, const std::string& extra, const std::st
 TEST(InputRanges, GenericLabelTimestampsMustIncrease) {
   test::TempDir dir;
   const auto ok = WriteText(dir, "ok.json", "[" + Label("a", R"("timestamp": 1.0)") + "," + Label("b", R"("timestamp": 1.04)") + "]");
-  EXPECT_EQ(ReadLabels(ok)[0].frames.size(), 2u);
+  EXPECT_EQ(MaterializeAll(OpenLabels(ok))[0].frames.size(), 2u);
   const auto decreasing = WriteText(dir, "dec.json", "[" + Label("a", R"("timestamp": 1.0)") + "," + Label("b", R"("timestamp": 0.5)") + "]");
-  EXPECT_THAT(InputErrorOf([&] { ReadLabels(decreasing); }),
-              HasSubstr("dec.json: /1/timestamp: timestamp 0.5 does not increase (the previous label of sequence 'S', 'a', has 1.0)"));
+  EXPECT_THAT(InputErrorOf([&] { MaterializeAll(OpenLabels(decreasing)); }),
+              HasSubstr("dec.json: /1/timestamp: timestamp 0.5 does not increase (the previous label of sequence 'S', "
+                        "'a', has 1.0)"));
   const auto repeated = WriteText(dir, "rep.json", "[" + Label("a", R"("timestamp": 2)") + "," + Label("b", R"("timestamp": 2)") + "]");
-  EXPECT_THAT(InputErrorOf([&] { ReadLabels(repeated); }), HasSubstr("rep.json: /1/timestamp: timestamp 2.0 does not increase"));
+  EXPECT_THAT(InputErrorOf([&] { MaterializeAll(OpenLabels(repeated)); }),
+              HasSubstr("rep.json: /1/timestamp: timestamp 2.0 does not increase"));
 }
 
 TEST(InputRanges, GenericLabelBodyIdsAreUniqueIntsPerFrame) {
   test::TempDir dir;
   const auto ok = WriteText(dir, "ok.json", "[" + Label("a", R"("bodyids": [7, -1])") + "]");
-  EXPECT_EQ(ReadLabels(ok)[0].frames[0].gt.track_ids, (std::vector<int>{7, -1}));
+  EXPECT_EQ(MaterializeAll(OpenLabels(ok))[0].frames[0].gt.track_ids, (std::vector<int>{7, -1}));
   const auto duplicate = WriteText(dir, "dup.json", "[" + Label("a", R"("bodyids": [7, 7])") + "]");
-  EXPECT_THAT(InputErrorOf([&] { ReadLabels(duplicate); }), HasSubstr("dup.json: /0/bodyids/1: body id 7 is also the id of person 0"));
+  EXPECT_THAT(InputErrorOf([&] { MaterializeAll(OpenLabels(duplicate)); }),
+              HasSubstr("dup.json: /0/bodyids/1: body id 7 is also the id of person 0"));
   const auto huge = WriteText(dir, "huge.json", "[" + Label("a", R"("bodyids": [4294967296, 1])") + "]");
-  EXPECT_THAT(InputErrorOf([&] { ReadLabels(huge); }), HasSubstr("huge.json: /0/bodyids/0: 4294967296 is not an integer in [-1, 2147483647]"));
+  EXPECT_THAT(InputErrorOf([&] { MaterializeAll(OpenLabels(huge)); }),
+              HasSubstr("huge.json: /0/bodyids/0: 4294967296 is not an integer in [-1, 2147483647]"));
 }
 
 TEST(InputRanges, GenericLabelSplitsMustBeAListOfNames) {
@@ -97,26 +102,29 @@ TEST(InputRanges, GenericLabelSplitsMustBeAListOfNames) {
   LabelsOptions options;
   options.split = "test";
   const auto string = WriteText(dir, "s.json", "[" + Label("a", R"("splits": "test")") + "]");
-  EXPECT_THAT(InputErrorOf([&] { ReadLabels(string, options); }),
+  EXPECT_THAT(InputErrorOf([&] { MaterializeAll(OpenLabels(string, options)); }),
               HasSubstr("s.json: /0/splits: expected a list of split names (e.g. [\"test\"]), got string"));
   const auto number = WriteText(dir, "n.json", "[" + Label("a", R"("splits": ["test", 3])") + "]");
-  EXPECT_THAT(InputErrorOf([&] { ReadLabels(number, options); }), HasSubstr("n.json: /0/splits/1: expected a split name, got number"));
+  EXPECT_THAT(InputErrorOf([&] { MaterializeAll(OpenLabels(number, options)); }),
+              HasSubstr("n.json: /0/splits/1: expected a split name, got number"));
   const auto list = WriteText(dir, "l.json", "[" + Label("a", R"("splits": ["train", "test"])") + "]");
-  EXPECT_EQ(ReadLabels(list, options)[0].frames.size(), 1u);
+  EXPECT_EQ(MaterializeAll(OpenLabels(list, options))[0].frames.size(), 1u);
 }
 
 TEST(InputRanges, ImplausibleCamerasAreCountedWarnings) {
   test::TempDir dir;
+  LabelsOptions timed;  // times known: the warnings are the cameras' only
+  timed.fps = 25;
   const auto plausible = WriteText(dir, "near.json", "[" + Label("a", "", "0, 900, -3") + "]");
-  EXPECT_TRUE(ReadLabels(plausible)[0].warnings.empty());
+  EXPECT_TRUE(MaterializeAll(OpenLabels(plausible, timed))[0].warnings.empty());
   const auto far = WriteText(dir, "far.json", "[" + Label("a", "", "0, 0, 1e300") + "]");
-  const InputWarnings far_warnings = ReadLabels(far)[0].warnings;
+  const InputWarnings far_warnings = MaterializeAll(OpenLabels(far, timed))[0].warnings;
   ASSERT_EQ(far_warnings.items().size(), 1u);
   EXPECT_EQ(far_warnings.items()[0].Line(), far.string() + ": 1 cameras more than 1 km from the origin (check the units of T) (max |T| in m = 1e+300)");
   const auto km = WriteText(dir, "km.json", "[" + Label("a", "", "0, 1500, 0") + "]");
-  ASSERT_EQ(ReadLabels(km)[0].warnings.items().size(), 1u);
+  ASSERT_EQ(MaterializeAll(OpenLabels(km, timed))[0].warnings.items().size(), 1u);
   const auto distorted = WriteText(dir, "dist.json", "[" + Label("a", "", "0, 0, -3", "1e10, 0, 0, 0, 0") + "]");
-  const InputWarnings dist_warnings = ReadLabels(distorted)[0].warnings;
+  const InputWarnings dist_warnings = MaterializeAll(OpenLabels(distorted, timed))[0].warnings;
   ASSERT_EQ(dist_warnings.items().size(), 1u);
   EXPECT_EQ(dist_warnings.items()[0].Line(), distorted.string() + ": 1 cameras with a distortion coefficient beyond +-100 (max |coefficient| = 1e+10)");
 }

@@ -11,6 +11,8 @@
 #include <map>
 
 #include "core/errors.h"
+#include "datasets/registry.h"
+#include "tests/datasets/reader_stream_test.h"
 #include "tests/datasets/readers_h36m_ego_test_util.h"
 #include "tests/datasets/tolerance_test_util.h"
 
@@ -210,7 +212,7 @@ TEST(EgohumansReader, GtProjectsOntoTheTwoDCache) {
   test::TempDir dir;
   const fs::path data = dir.path() / "data";
   WriteTree(data);
-  const auto sequences = ReadEgohumans(Request(data, {{"detections", "cache"}}));
+  const auto sequences = ReadDataset(Request(data, {{"detections", "cache"}}));
   ASSERT_EQ(sequences.size(), 1u);
   const Sequence& seq = sequences[0];
   EXPECT_EQ(seq.name, "egohumans/01_tagging/001_tagging");
@@ -270,7 +272,7 @@ TEST(EgohumansReader, GtProjectsOntoTheTwoDCache) {
   test::ExpectOneWarning(seq.warnings, cache_dir, test::kScoresClamped, 6 + 6 + 2);
 
   // Without detections=cache the same walk reads no 2D.
-  const Sequence without = ReadEgohumans(Request(data))[0];
+  const Sequence without = ReadDataset(Request(data))[0];
   EXPECT_TRUE(without.frames[0].views.empty());
   EXPECT_EQ(without.frames.size(), seq.frames.size());
 }
@@ -280,39 +282,49 @@ TEST(EgohumansReader, RootLevelsAndParams) {
   const fs::path data = dir.path() / "data";
   const fs::path seq_dir = WriteTree(data);
   // root = one big sequence, or the sequence itself.
-  EXPECT_EQ(ReadEgohumans(Request(data / "01_tagging"))[0].name, "egohumans/01_tagging/001_tagging");
-  const auto single = ReadEgohumans(Request(seq_dir, {{"cameras", "cam02,cam01"}, {"every", "2"}}));
+  EXPECT_EQ(ReadDataset(Request(data / "01_tagging"))[0].name, "egohumans/01_tagging/001_tagging");
+  const auto single = ReadDataset(Request(seq_dir, {{"cameras", "cam02,cam01"}, {"every", "2"}}));
   ASSERT_EQ(single.size(), 1u);
   EXPECT_EQ(single[0].cameras.size(), 2u);
   EXPECT_EQ(single[0].cameras[0].name, "cam01");
   ASSERT_EQ(single[0].frames.size(), 2u);
   EXPECT_EQ(single[0].frames[1].id, "egohumans_01_tagging_001_tagging_00003");
-  EXPECT_EQ(ReadEgohumans(Request(data, {{"max_frames", "1"}}))[0].frames.size(), 1u);
-  EXPECT_EQ(ReadEgohumans(Request(data, {{"gt", "fit_poses3d"}}))[0].frames.size(), 1u);
-  EXPECT_EQ(ReadEgohumans(Request(data, {{"sequences", "001_tagging"}})).size(), 1u);
+  EXPECT_EQ(ReadDataset(Request(data, {{"max_frames", "1"}}))[0].frames.size(), 1u);
+  EXPECT_EQ(ReadDataset(Request(data, {{"gt", "fit_poses3d"}}))[0].frames.size(), 1u);
+  EXPECT_EQ(ReadDataset(Request(data, {{"sequences", "001_tagging"}})).size(), 1u);
   // Another anchor moves the cameras (GT stays in the file's frame).
-  const auto other = ReadEgohumans(Request(data, {{"anchor", "aria02"}}));
+  const auto other = ReadDataset(Request(data, {{"anchor", "aria02"}}));
   EXPECT_GT((other[0].cameras[0].Center() - Exos()[0].center).norm(), 0.1);
 
-  EXPECT_THROW(ReadEgohumans(Request(data, {{"gt", "smpl"}})), ConfigError);
-  EXPECT_THROW(ReadEgohumans(Request(data, {{"detections", "hrnet"}})), ConfigError);
-  EXPECT_THROW(ReadEgohumans(Request(data, {{"fps", "-3"}})), ConfigError);
-  EXPECT_THROW(ReadEgohumans(Request(data, {{"frames", "1-3"}})), ConfigError);
-  EXPECT_THAT(InputErrorOf([&] { ReadEgohumans(Request(data, {{"sequences", "02_lego/001_lego"}})); }),
+  EXPECT_THROW(ReadDataset(Request(data, {{"gt", "smpl"}})), ConfigError);
+  EXPECT_THROW(ReadDataset(Request(data, {{"detections", "hrnet"}})), ConfigError);
+  EXPECT_THROW(ReadDataset(Request(data, {{"fps", "-3"}})), ConfigError);
+  EXPECT_THROW(ReadDataset(Request(data, {{"frames", "1-3"}})), ConfigError);
+  EXPECT_THAT(InputErrorOf([&] {
+                ReadDataset(Request(data, {{"sequences", "02_lego/001_lego"}}));
+              }),
               HasSubstr("unknown sequence '02_lego/001_lego' (found 01_tagging/001_tagging)"));
-  EXPECT_THAT(InputErrorOf([&] { ReadEgohumans(Request(data, {{"cameras", "cam09"}})); }), HasSubstr("cameras.txt: unknown exo camera 'cam09'"));
-  EXPECT_THAT(InputErrorOf([&] { ReadEgohumans(Request(data, {{"anchor", "aria07"}})); }),
+  EXPECT_THAT(InputErrorOf([&] {
+                ReadDataset(Request(data, {{"cameras", "cam09"}}));
+              }),
+              HasSubstr("cameras.txt: unknown exo camera 'cam09'"));
+  EXPECT_THAT(InputErrorOf([&] {
+                ReadDataset(Request(data, {{"anchor", "aria07"}}));
+              }),
               HasSubstr("colmap_from_aria_transforms.pkl: top level: missing key 'aria07'"));
-  EXPECT_THAT(InputErrorOf([&] { ReadEgohumans(Request(data, {{"gt", "refine_poses3d"}})); }),
+  EXPECT_THAT(InputErrorOf([&] {
+                ReadDataset(Request(data, {{"gt", "refine_poses3d"}}));
+              }),
               HasSubstr("refine_poses3d: ground-truth directory not found"));
-  EXPECT_THAT(InputErrorOf([&] { ReadEgohumans(Request(dir.path() / "nothing")); }), HasSubstr("nothing: not a directory"));
+  EXPECT_THAT(InputErrorOf([&] { ReadDataset(Request(dir.path() / "nothing")); }),
+              HasSubstr("nothing: not a directory"));
 }
 
 TEST(EgohumansReader, RoundedQuaternionsAndAnchorAreCorrectedAndCounted) {
   test::TempDir dir;
   const fs::path data = dir.path() / "data";
   const fs::path seq_dir = WriteTree(data, {.quaternion_digits = 6, .anchor_digits = 6});
-  const Sequence seq = ReadEgohumans(Request(data))[0];
+  const Sequence seq = ReadDataset(Request(data))[0];
   for (std::size_t c = 0; c < 3; ++c) {
     EXPECT_LT(test::OrthonormalityError(seq.cameras[c].R), 1e-12);
     EXPECT_LT((seq.cameras[c].Center() - Exos()[c].center).norm(), 1e-4) << seq.cameras[c].name;
@@ -336,22 +348,24 @@ TEST(EgohumansReader, RotationsBeyondTheToleranceNameFileAndLine) {
   {
     test::TempDir dir;
     WriteTree(dir.path(), {.quaternion_scale = 1.01});
-    EXPECT_THAT(InputErrorOf([&] { ReadEgohumans(Request(dir.path())); }),
-                HasSubstr("images.txt:9: quaternion ("));
-    EXPECT_THAT(InputErrorOf([&] { ReadEgohumans(Request(dir.path())); }), HasSubstr(") has norm 1.01, expected a unit quaternion"));
+    EXPECT_THAT(InputErrorOf([&] { ReadDataset(Request(dir.path())); }), HasSubstr("images.txt:9: quaternion ("));
+    EXPECT_THAT(InputErrorOf([&] { ReadDataset(Request(dir.path())); }),
+                HasSubstr(") has norm 1.01, expected a unit quaternion"));
   }
   test::TempDir dir;
   WriteTree(dir.path(), {.anchor_stretch = 1.01});
-  EXPECT_THAT(InputErrorOf([&] { ReadEgohumans(Request(dir.path())); }),
-              HasSubstr("images.txt:5 composed with " +
-                        (dir.path() / "01_tagging" / "001_tagging" / "colmap" / "workplace" / "colmap_from_aria_transforms.pkl").string() +
-                        "['aria01']: camera_from_anchor / scale: R is not a rotation"));
+  EXPECT_THAT(
+      InputErrorOf([&] { ReadDataset(Request(dir.path())); }),
+      HasSubstr("images.txt:5 composed with " +
+                (dir.path() / "01_tagging" / "001_tagging" / "colmap" / "workplace" / "colmap_from_aria_transforms.pkl")
+                    .string() +
+                "['aria01']: camera_from_anchor / scale: R is not a rotation"));
 }
 
 TEST(EgohumansReader, CacheScoresSlightlyAboveOneAreClampedAndCounted) {
   test::TempDir dir;
   const fs::path seq_dir = WriteTree(dir.path(), {.joint0_score = 1.018});
-  const Sequence seq = ReadEgohumans(Request(dir.path(), {{"detections", "cache"}}))[0];
+  const Sequence seq = ReadDataset(Request(dir.path(), {{"detections", "cache"}}))[0];
   for (const SequenceFrame& frame : seq.frames) {
     for (const Poses2D& view : frame.views) {
       for (int p = 0; p < view.num_persons(); ++p) EXPECT_LE(view.Person(p)(2, 0), 1.0);
@@ -369,7 +383,9 @@ TEST(EgohumansReader, CacheScoresNegativeLargeOrNanNameFileAndJoint) {
     const std::string what = std::isnan(score) ? "joint 0: NaN or infinite value"
                              : score > 1      ? "joint 0: score 1.6 outside [0, 1]"
                                               : "joint 0: score -0.1 outside [0, 1]";
-    EXPECT_THAT(InputErrorOf([&] { ReadEgohumans(Request(dir.path(), {{"detections", "cache"}})); }),
+    EXPECT_THAT(InputErrorOf([&] {
+                  ReadDataset(Request(dir.path(), {{"detections", "cache"}}));
+                }),
                 HasSubstr("poses2d/cam01/rgb/00001.npy: [0].keypoints: " + what));
   }
 }
@@ -378,11 +394,11 @@ TEST(EgohumansReader, GroundTruthEntriesNotNamedByTimeStampAreCounted) {
   test::TempDir dir;
   const fs::path seq_dir = WriteTree(dir.path());
   const fs::path gt_dir = seq_dir / "processed_data" / "poses3d";
-  const size_t frames = ReadEgohumans(Request(dir.path()))[0].frames.size();
+  const size_t frames = ReadDataset(Request(dir.path()))[0].frames.size();
   // Before: ignored without a word (a renamed or misnamed frame simply vanished).
   test::WriteText(gt_dir / "00009_old.npy", "x");
   test::WriteText(gt_dir / "notes.txt", "x");
-  const Sequence seq = ReadEgohumans(Request(dir.path()))[0];
+  const Sequence seq = ReadDataset(Request(dir.path()))[0];
   EXPECT_EQ(seq.frames.size(), frames);
   test::ExpectOneWarning(seq.warnings, gt_dir.string(),
                          "entries not named <time stamp>.npy ignored (e.g. '00009_old.npy')", 2);
@@ -403,7 +419,7 @@ TEST(EgohumansReader, ImageTimeStampsAnIntApartFromTheGtStillGiveThePose) {
   const std::size_t at = text.find("cam02/00003.jpg");
   ASSERT_NE(at, std::string::npos);
   test::WriteText(images, text.replace(at, 15, "cam02/2147483647.jpg"));
-  const Sequence sequence = ReadEgohumans(Request(dir.path(), {{"max_frames", "1"}}))[0];
+  const Sequence sequence = ReadDataset(Request(dir.path(), {{"max_frames", "1"}}))[0];
   ASSERT_EQ(sequence.frames.size(), 1u);
   EXPECT_EQ(sequence.frames[0].id, "egohumans_01_tagging_001_tagging_00000");
   ASSERT_EQ(sequence.cameras.size(), 3u);
@@ -415,41 +431,60 @@ TEST(EgohumansReader, MalformedInputsNameFileAndPlace) {
   {
     test::TempDir dir;
     WriteTree(dir.path(), {.nan_in_gt = true});
-    EXPECT_THAT(InputErrorOf([&] { ReadEgohumans(Request(dir.path())); }),
+    EXPECT_THAT(InputErrorOf([&] { ReadDataset(Request(dir.path())); }),
                 HasSubstr("poses3d/00002.npy: key 'aria01': joint 3: NaN or infinite coordinate"));
   }
   {
     test::TempDir dir;
     WriteTree(dir.path(), {.gt_wrong_shape = true});
-    EXPECT_THAT(InputErrorOf([&] { ReadEgohumans(Request(dir.path())); }), HasSubstr("poses3d/00002.npy: key 'aria01': expected shape (17, 4)"));
+    EXPECT_THAT(InputErrorOf([&] { ReadDataset(Request(dir.path())); }),
+                HasSubstr("poses3d/00002.npy: key 'aria01': expected shape (17, 4)"));
   }
   {
     test::TempDir dir;
     WriteTree(dir.path(), {.bad_quaternion = true});
-    EXPECT_THAT(InputErrorOf([&] { ReadEgohumans(Request(dir.path())); }), HasSubstr("images.txt:9: quaternion"));
+    EXPECT_THAT(InputErrorOf([&] { ReadDataset(Request(dir.path())); }), HasSubstr("images.txt:9: quaternion"));
   }
   test::TempDir dir;
   const fs::path seq = WriteTree(dir.path());
   // Truncated GT file.
   const fs::path gt = seq / "processed_data" / "poses3d" / "00003.npy";
   fs::resize_file(gt, fs::file_size(gt) - 20);
-  EXPECT_THAT(InputErrorOf([&] { ReadEgohumans(Request(dir.path())); }), HasSubstr("poses3d/00003.npy"));
-  EXPECT_EQ(ReadEgohumans(Request(dir.path(), {{"max_frames", "2"}}))[0].frames.size(), 2u);
+  EXPECT_THAT(InputErrorOf([&] { ReadDataset(Request(dir.path())); }), HasSubstr("poses3d/00003.npy"));
+  EXPECT_EQ(ReadDataset(Request(dir.path(), {{"max_frames", "2"}}))[0].frames.size(), 2u);
   // Missing / malformed 2D cache.
   fs::remove(seq / "processed_data" / "poses2d" / "cam02" / "rgb" / "00001.npy");
-  EXPECT_THAT(InputErrorOf([&] { ReadEgohumans(Request(dir.path(), {{"detections", "cache"}, {"max_frames", "2"}})); }),
+  EXPECT_THAT(InputErrorOf([&] {
+                ReadDataset(Request(dir.path(), {{"detections", "cache"}, {"max_frames", "2"}}));
+              }),
               HasSubstr("poses2d/cam02/rgb/00001.npy: 2D pose cache file not found"));
   test::WriteBytes(seq / "processed_data" / "poses2d" / "cam02" / "rgb" / "00001.npy",
                    test::NpyOfObjectList({test::PyDict({{test::PyStr("keypoints"), test::PyArray({17, 3}, std::vector<double>(51, 1.0))}})}));
-  EXPECT_THAT(InputErrorOf([&] { ReadEgohumans(Request(dir.path(), {{"detections", "cache"}, {"max_frames", "1"}})); }),
+  EXPECT_THAT(InputErrorOf([&] {
+                ReadDataset(Request(dir.path(), {{"detections", "cache"}, {"max_frames", "1"}}));
+              }),
               HasSubstr("cam02/rgb/00001.npy: [0].keypoints: expected shape (133, 3)"));
   // A malformed 4x4 manual calibration and a missing cameras.txt.
   const fs::path work = seq / "colmap" / "workplace";
   test::WriteBytes(work / "cam03.npy", test::NpyBytes("{'descr': '<f8', 'fortran_order': False, 'shape': (3, 4), }", test::RawOf(std::vector<double>(12, 0.0))));
-  EXPECT_THAT(InputErrorOf([&] { ReadEgohumans(Request(dir.path())); }), HasSubstr("cam03.npy: top level: expected 16 numbers, got shape (3, 4)"));
+  EXPECT_THAT(InputErrorOf([&] { ReadDataset(Request(dir.path())); }),
+              HasSubstr("cam03.npy: top level: expected 16 numbers, got shape (3, 4)"));
   fs::remove(work / "cameras.txt");
-  EXPECT_THAT(InputErrorOf([&] { ReadEgohumans(Request(dir.path())); }), HasSubstr("cameras.txt: file not found"));
+  EXPECT_THAT(InputErrorOf([&] { ReadDataset(Request(dir.path())); }), HasSubstr("cameras.txt: file not found"));
 }
+
+// The reader contract (tests/datasets/reader_stream_test.cc): streamed equals materialised, with the
+// 2D cache (its scores above 1 counted as the frames are pulled).
+using test::ReaderStreamTest;
+INSTANTIATE_TEST_SUITE_P(Egohumans, ReaderStreamTest,
+                         ::testing::Values(test::ReaderFixture{
+                             "WithCache",
+                             {},
+                             [](const fs::path& dir) {
+                               WriteTree(dir / "data");
+                               return OpenDataset(Request(dir / "data", {{"detections", "cache"}}));
+                             }}),
+                         test::ReaderFixtureName);
 
 }  // namespace
 }  // namespace rpt

@@ -555,8 +555,14 @@ TEST(DetectionsFile, DispatchesOnFolderExtensionAndContent) {
   options.openpose.mapping.frame_id = "f{2:3}";
   EXPECT_EQ(ReadDetectionsFile(dir.path() / "openpose", options).frames[0].frame_id, "f001");
 
+  // A VoxelPose cache is read as one (readers_voxelpose_test.cc), given its sequence's frame-id prefix.
   WriteText(dir, "voxelpose.pkl", "x");
-  EXPECT_THAT(InputErrorOf([&] { ReadDetectionsFile(dir.path() / "voxelpose.pkl"); }), HasSubstr("VoxelPose pickle"));
+  EXPECT_THAT(test::ErrorMessage<ConfigError>([&] { ReadDetectionsFile(dir.path() / "voxelpose.pkl"); }),
+              HasSubstr("voxelpose.pkl: a VoxelPose cache is keyed"));
+  DetectionsFileOptions voxelpose;
+  voxelpose.voxelpose.frame_id_prefix = "shelf";
+  EXPECT_THAT(InputErrorOf([&] { ReadDetectionsFile(dir.path() / "voxelpose.pkl", voxelpose); }),
+              HasSubstr("voxelpose.pkl"));
   WriteText(dir, "d.csv", "x");
   const std::string unknown = InputErrorOf([&] { ReadDetectionsFile(dir.path() / "d.csv"); });
   EXPECT_THAT(unknown, HasSubstr("d.csv: unknown detection format '.csv'"));

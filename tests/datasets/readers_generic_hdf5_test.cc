@@ -151,7 +151,7 @@ TEST(Hdf5Cache, SequencesAndDetectionsShareOneFile) {
   const Hdf5CacheContents contents = ProbeHdf5Cache(path);
   EXPECT_TRUE(contents.sequences && contents.detections);
 
-  const std::vector<Sequence> read = ReadSequencesHdf5(path);
+  const std::vector<Sequence> read = MaterializeAll(OpenSequencesHdf5(path));
   ASSERT_EQ(read.size(), 2u);
   for (size_t s = 0; s < 2; ++s) test::ExpectSequencesNear(sequences[s], read[s]);
   EXPECT_EQ(read[1].cameras[1].model, DistortionModel::kH36M);
@@ -159,12 +159,13 @@ TEST(Hdf5Cache, SequencesAndDetectionsShareOneFile) {
   test::ExpectDetectionsNear(detections, ReadDetectionsHdf5(path), 1e-7);
 
   // The command-line entry points dispatch on the extension.
-  test::ExpectSequencesNear(sequences[0], ReadLabelsFile(path)[0]);
+  test::ExpectSequencesNear(sequences[0], MaterializeAll(OpenLabelsFile(path))[0]);
   test::ExpectDetectionsNear(detections, ReadDetectionsFile(path), 1e-7);
-  EXPECT_THAT(test::ConfigErrorOf([&] { ReadLabelsFile(path, {.split = "test"}); }), HasSubstr("keeps no splits"));
+  EXPECT_THAT(test::ConfigErrorOf([&] { MaterializeAll(OpenLabelsFile(path, {.split = "test"})); }),
+              HasSubstr("keeps no splits"));
   const auto json_path = dir.path() / "labels.json";
   WriteLabels(json_path, sequences);
-  test::ExpectSequencesNear(sequences[1], ReadLabelsFile(json_path)[1]);
+  test::ExpectSequencesNear(sequences[1], MaterializeAll(OpenLabelsFile(json_path))[1]);
 
   // The detections attach to the labels by frame id and camera name.
   Sequence sequence = read[0];
@@ -180,7 +181,8 @@ TEST(Hdf5Cache, NotAnHdf5FileNamesFileAndPlace) {
   test::TempDir dir;
   const auto fake = test::WriteText(dir, "fake.h5", "[{\"id\": 1}]");
   EXPECT_THAT(InputErrorOf([&] { ReadDetectionsHdf5(fake); }), HasSubstr("fake.h5: byte 0: not an HDF5 file"));
-  EXPECT_THAT(InputErrorOf([&] { ReadSequencesHdf5(fake); }), HasSubstr("fake.h5: byte 0: not an HDF5 file"));
+  EXPECT_THAT(InputErrorOf([&] { MaterializeAll(OpenSequencesHdf5(fake)); }),
+              HasSubstr("fake.h5: byte 0: not an HDF5 file"));
   EXPECT_THAT(InputErrorOf([&] { ReadDetectionsHdf5(dir.path() / "absent.h5"); }), HasSubstr("absent.h5: file not found"));
   EXPECT_THAT(InputErrorOf([&] { WriteDetectionsHdf5(fake, Detections{CocoBodyJoints(), {}, {}}, {.add_to_existing = true}); }),
               HasSubstr("fake.h5: cannot add to it: not an existing HDF5 file"));
@@ -200,7 +202,7 @@ TEST(Hdf5Cache, CameraRotationsWithSixDigitsAreReorthonormalisedAndCounted) {
     }
     editor.PutDoubles("/sequences/0/camera_R", editor.Dims("/sequences/0/camera_R"), R);
   }
-  const Sequence read = ReadSequencesHdf5(path).at(0);
+  const Sequence read = MaterializeAll(OpenSequencesHdf5(path)).at(0);
   for (int c = 0; c < 3; ++c) {
     EXPECT_LT(test::OrthonormalityError(read.cameras[c].R), 1e-12);
     EXPECT_LT((read.cameras[c].R - sequence.cameras[c].R).cwiseAbs().maxCoeff(), 1e-5);
@@ -214,7 +216,7 @@ TEST(Hdf5Cache, CameraRotationsWithSixDigitsAreReorthonormalisedAndCounted) {
     for (int k = 9; k < 18; ++k) R[k] *= 1.005;  // camera 1: 1e-2 off
     editor.PutDoubles("/sequences/0/camera_R", editor.Dims("/sequences/0/camera_R"), R);
   }
-  EXPECT_THAT(InputErrorOf([&] { ReadSequencesHdf5(path); }),
+  EXPECT_THAT(InputErrorOf([&] { MaterializeAll(OpenSequencesHdf5(path)); }),
               HasSubstr(path.string() + ": /sequences/0/camera_R: camera 1 ('cam_b'): R is not a rotation"));
 }
 
@@ -346,13 +348,14 @@ TEST(Hdf5Cache, SequenceErrorsNameTheDatasetPath) {
     poses[5] = std::numeric_limits<double>::infinity();
     editor.PutDoubles("/sequences/0/gt_poses", editor.Dims("/sequences/0/gt_poses"), poses);
   }
-  EXPECT_THAT(InputErrorOf([&] { ReadSequencesHdf5(path); }), HasSubstr("s.h5: /sequences/0/gt_poses: element 5 is NaN or infinite"));
+  EXPECT_THAT(InputErrorOf([&] { MaterializeAll(OpenSequencesHdf5(path)); }),
+              HasSubstr("s.h5: /sequences/0/gt_poses: element 5 is NaN or infinite"));
   WriteSequencesHdf5(path, {test::MakeLabelSequence("a", 2, "a_")});
   {
     Hdf5Editor editor(path);
     editor.PutDoubles("/sequences/0/camera_K", {2, 3, 3}, std::vector<double>(18, 1.0));
   }
-  EXPECT_THAT(InputErrorOf([&] { ReadSequencesHdf5(path); }),
+  EXPECT_THAT(InputErrorOf([&] { MaterializeAll(OpenSequencesHdf5(path)); }),
               HasSubstr("s.h5: /sequences/0/camera_K: shape [2, 3, 3], expected [3, 3, 3]"));
 }
 

@@ -9,6 +9,8 @@
 
 #include "core/errors.h"
 #include "datasets/readers/human36m.h"
+#include "datasets/registry.h"
+#include "tests/datasets/reader_stream_test.h"
 #include "tests/datasets/readers_h36m_ego_test_util.h"
 #include "tests/datasets/tolerance_test_util.h"
 
@@ -145,7 +147,7 @@ DatasetRequest Request(const fs::path& root, std::map<std::string, std::string> 
 TEST(H3wbReader, NpzRoundTrip) {
   test::TempDir dir;
   WriteNpz(dir.path());
-  const auto sequences = ReadH3wb(Request(dir.path()));  // default subjects: S8
+  const auto sequences = ReadDataset(Request(dir.path()));  // default subjects: S8
   ASSERT_EQ(sequences.size(), 2u);
   const Sequence& seq = sequences[0];
   EXPECT_EQ(seq.name, "h3wb/S8/Directions-1");
@@ -179,7 +181,7 @@ TEST(H3wbReader, NpzRoundTrip) {
 
   // 2D from pose_2d (detections=annotations, read in the same walk as the GT); it matches the
   // projection of the GT with the reader's cameras.
-  const auto with_views = ReadH3wb(Request(dir.path(), {{"actions", "Directions"}, {"detections", "annotations"}}));
+  const auto with_views = ReadDataset(Request(dir.path(), {{"actions", "Directions"}, {"detections", "annotations"}}));
   ASSERT_EQ(with_views.size(), 1u);
   EXPECT_EQ(with_views[0].detection_joints.size(), 133u);
   ASSERT_EQ(with_views[0].frames.size(), 3u);
@@ -197,55 +199,60 @@ TEST(H3wbReader, NpzRoundTrip) {
   }
   EXPECT_LT(worst, 0.01);  // float32 cameras in the file
   for (std::size_t f = 0; f < 3; ++f) EXPECT_EQ(with_views[0].frames[f].gt.data, seq.frames[f].gt.data);
-  EXPECT_THROW(ReadH3wb(Request(dir.path(), {{"detections", "hrnet"}})), ConfigError);
+  EXPECT_THROW(ReadDataset(Request(dir.path(), {{"detections", "hrnet"}})), ConfigError);
 
   // Other subject, params.
-  const auto s5 = ReadH3wb(Request(dir.path() / "h3wb_train.npz", {{"subjects", "S5"}, {"max_frames", "1"}}));
+  const auto s5 = ReadDataset(Request(dir.path() / "h3wb_train.npz", {{"subjects", "S5"}, {"max_frames", "1"}}));
   ASSERT_EQ(s5.size(), 1u);
   EXPECT_EQ(s5[0].frames.size(), 1u);
   EXPECT_EQ(s5[0].frames[0].id, "h3wb_S5_Walking_000001");
-  EXPECT_EQ(ReadH3wb(Request(dir.path(), {{"every", "2"}}))[0].frames.size(), 2u);
-  EXPECT_EQ(ReadH3wb(Request(dir.path(), {{"distortion", "opencv"}}))[0].cameras[0].model, DistortionModel::kOpenCV);
+  EXPECT_EQ(ReadDataset(Request(dir.path(), {{"every", "2"}}))[0].frames.size(), 2u);
+  EXPECT_EQ(ReadDataset(Request(dir.path(), {{"distortion", "opencv"}}))[0].cameras[0].model, DistortionModel::kOpenCV);
 }
 
 TEST(H3wbReader, NpzRotationBeyondTheToleranceNamesFileAndCamera) {
   test::TempDir dir;
   WriteNpz(dir.path(), {.wrong_rotation_camera = 3});
-  EXPECT_THAT(test::InputErrorOf([&] { ReadH3wb(Request(dir.path())); }),
-              HasSubstr("h3wb_train.npz[metadata.npy]: key 'S8'['60457274'].R: R is not a rotation (max |R^T R - I| = 0.0100"));
+  EXPECT_THAT(
+      test::InputErrorOf([&] { ReadDataset(Request(dir.path())); }),
+      HasSubstr("h3wb_train.npz[metadata.npy]: key 'S8'['60457274'].R: R is not a rotation (max |R^T R - I| = 0.0100"));
 }
 
 TEST(H3wbReader, NpzGlobalUnits) {
   test::TempDir dir;
   WriteNpz(dir.path(), {.global_scale = 1.0});
-  const auto metres = ReadH3wb(Request(dir.path(), {{"global_units", "m"}}));
+  const auto metres = ReadDataset(Request(dir.path(), {{"global_units", "m"}}));
   EXPECT_LT((metres[0].frames[2].gt.Person(0).topRows<3>() - WholeBody(10)).cwiseAbs().maxCoeff(), 1e-12);
-  const std::string msg = InputErrorOf([&] { ReadH3wb(Request(dir.path())); });
+  const std::string msg = InputErrorOf([&] { ReadDataset(Request(dir.path())); });
   EXPECT_THAT(msg, HasSubstr("h3wb_train.npz: S8/Directions 1 frame_id 0: global_3d (read as mm) and camera 54138969's camera_3d differ by"));
   EXPECT_THAT(msg, HasSubstr("global_3d looks like metres: pass --param global_units=m"));
-  EXPECT_THROW(ReadH3wb(Request(dir.path(), {{"global_units", "cm"}})), ConfigError);
+  EXPECT_THROW(ReadDataset(Request(dir.path(), {{"global_units", "cm"}})), ConfigError);
 }
 
 TEST(H3wbReader, NpzMalformed) {
   test::TempDir dir;
   const fs::path npz = WriteNpz(dir.path());
-  std::string msg = InputErrorOf([&] { ReadH3wb(Request(dir.path(), {{"subjects", "S9"}})); });
+  std::string msg = InputErrorOf([&] { ReadDataset(Request(dir.path(), {{"subjects", "S9"}})); });
   EXPECT_THAT(msg, HasSubstr("h3wb_train.npz[train_data.npy]: top level: unknown subject 'S9' (file has S8, S5)"));
   WriteNpz(dir.path(), {.nan_in_global = true});
-  EXPECT_THAT(InputErrorOf([&] { ReadH3wb(Request(dir.path())); }),
-              HasSubstr("h3wb_train.npz[train_data.npy]: key 'S8'['Directions 1'].global_3d: row 0: NaN or infinite coordinate"));
+  EXPECT_THAT(
+      InputErrorOf([&] { ReadDataset(Request(dir.path())); }),
+      HasSubstr(
+          "h3wb_train.npz[train_data.npy]: key 'S8'['Directions 1'].global_3d: row 0: NaN or infinite coordinate"));
   WriteNpz(dir.path(), {.camera_3d_2d = true});
-  EXPECT_THAT(InputErrorOf([&] { ReadH3wb(Request(dir.path())); }), HasSubstr(".camera_3d: expected shape (N, 133, 3)"));
+  EXPECT_THAT(InputErrorOf([&] { ReadDataset(Request(dir.path())); }),
+              HasSubstr(".camera_3d: expected shape (N, 133, 3)"));
   WriteNpz(dir.path(), {}, false);
-  EXPECT_THAT(InputErrorOf([&] { ReadH3wb(Request(dir.path())); }), HasSubstr("h3wb_train.npz: no member 'metadata.npy'"));
+  EXPECT_THAT(InputErrorOf([&] { ReadDataset(Request(dir.path())); }),
+              HasSubstr("h3wb_train.npz: no member 'metadata.npy'"));
   const auto bytes = fs::file_size(npz);
   WriteNpz(dir.path());
   fs::resize_file(npz, bytes / 2);
-  EXPECT_THAT(InputErrorOf([&] { ReadH3wb(Request(dir.path())); }), HasSubstr("h3wb_train.npz"));
+  EXPECT_THAT(InputErrorOf([&] { ReadDataset(Request(dir.path())); }), HasSubstr("h3wb_train.npz"));
   fs::remove(npz);
-  EXPECT_THAT(InputErrorOf([&] { ReadH3wb(Request(dir.path())); }), HasSubstr("no H3WB annotation file found"));
-  EXPECT_THROW(ReadH3wb(Request(dir.path(), {{"format", "csv"}})), ConfigError);
-  EXPECT_THROW(ReadH3wb(Request(dir.path(), {{"view", "1"}})), ConfigError);
+  EXPECT_THAT(InputErrorOf([&] { ReadDataset(Request(dir.path())); }), HasSubstr("no H3WB annotation file found"));
+  EXPECT_THROW(ReadDataset(Request(dir.path(), {{"format", "csv"}})), ConfigError);
+  EXPECT_THROW(ReadDataset(Request(dir.path(), {{"view", "1"}})), ConfigError);
 }
 
 // ---------------------------------------------------------------------------------------
@@ -300,7 +307,7 @@ TEST(H3wbReader, JsonByIdsFindsTheSubject) {
   for (int c : {1, 3}) views.push_back({std::to_string(8 + c), 8, c, 3, ""});  // only two views of this frame
   test::WriteText(dir.path() / "2Dto3D_train.json", JsonFile(views));
 
-  const auto sequences = ReadH3wb(Request(dir.path()));
+  const auto sequences = ReadDataset(Request(dir.path()));
   ASSERT_EQ(sequences.size(), 1u);
   const Sequence& seq = sequences[0];
   EXPECT_EQ(seq.name, "h3wb/S8/json");
@@ -310,14 +317,23 @@ TEST(H3wbReader, JsonByIdsFindsTheSubject) {
   EXPECT_LT((seq.frames[0].gt.Person(0).topRows<3>() - WholeBody(7)).cwiseAbs().maxCoeff(), 1e-9);
   EXPECT_LT((seq.frames[1].gt.Person(0).topRows<3>() - WholeBody(3)).cwiseAbs().maxCoeff(), 1e-9);
   EXPECT_LT((seq.cameras[1].R - SubjectCameras(8)[1].R).cwiseAbs().maxCoeff(), 1e-12);
+  // Samples in no known order: no time (and no frame rate), which one warning says.
+  EXPECT_TRUE(std::isnan(seq.frames[0].timestamp_s));
+  EXPECT_TRUE(std::isnan(seq.frames[1].timestamp_s));
+  EXPECT_EQ(seq.fps, 0);
+  ASSERT_EQ(seq.warnings.items().size(), 1u);
+  EXPECT_EQ(seq.warnings.items()[0].kind, InputWarningKind::kMissing);
+  EXPECT_EQ(seq.warnings.items()[0].Line(), (dir.path() / "2Dto3D_train.json").string() +
+                                                ": 2 frames grouped by sample id (no image paths): their times are "
+                                                "unknown, so nothing is carried from one frame to the next");
 
-  const auto s5 = ReadH3wb(Request(dir.path(), {{"subjects", "S5"}}));
+  const auto s5 = ReadDataset(Request(dir.path(), {{"subjects", "S5"}}));
   ASSERT_EQ(s5.size(), 1u);
   EXPECT_EQ(s5[0].frames[0].id, "h3wb_S5_sample_000004");
   EXPECT_LT((s5[0].frames[0].gt.Person(0).topRows<3>() - WholeBody(9)).cwiseAbs().maxCoeff(), 1e-9);
 
   // Frame 3 has two views: the other two cameras get no person.
-  const auto with_views = ReadH3wb(Request(dir.path(), {{"detections", "annotations"}}));
+  const auto with_views = ReadDataset(Request(dir.path(), {{"detections", "annotations"}}));
   ASSERT_EQ(with_views[0].frames.size(), 2u);
   const std::vector<Poses2D>& frame_views = with_views[0].frames[1].views;
   ASSERT_EQ(frame_views.size(), 4u);
@@ -329,9 +345,11 @@ TEST(H3wbReader, JsonByIdsFindsTheSubject) {
   seq.cameras[3].Project(WholeBody(3).col(40), &uv);
   EXPECT_LT((frame_views[3].Person(0).col(40).head<2>() - uv).norm(), 1e-9);
 
-  EXPECT_THAT(InputErrorOf([&] { ReadH3wb(Request(dir.path(), {{"subjects", "S1"}})); }),
+  EXPECT_THAT(InputErrorOf([&] {
+                ReadDataset(Request(dir.path(), {{"subjects", "S1"}}));
+              }),
               HasSubstr("2Dto3D_train.json: unknown subject 'S1' (file has S5, S8)"));
-  EXPECT_THROW(ReadH3wb(Request(dir.path(), {{"actions", "Walking"}})), ConfigError);
+  EXPECT_THROW(ReadDataset(Request(dir.path(), {{"actions", "Walking"}})), ConfigError);
 }
 
 TEST(H3wbReader, JsonByImagePath) {
@@ -348,19 +366,23 @@ TEST(H3wbReader, JsonByImagePath) {
   }
   views.push_back({"7", 5, 0, 2, "Human36m/S5/Images/Eating.54138969/frame_0002.jpg"});
   test::WriteText(dir.path() / "RGBto3D_train.json", JsonFile(views, false));
-  const auto sequences = ReadH3wb(Request(dir.path(), {{"file", "RGBto3D_train.json"}, {"format", "json"}}));
+  const auto sequences = ReadDataset(Request(dir.path(), {{"file", "RGBto3D_train.json"}, {"format", "json"}}));
   ASSERT_EQ(sequences.size(), 1u);
   EXPECT_EQ(sequences[0].name, "h3wb/S8/Directions-1");
   ASSERT_EQ(sequences[0].frames.size(), 2u);
   EXPECT_EQ(sequences[0].frames[0].id, "h3wb_S8_Directions-1_000004");
   EXPECT_EQ(sequences[0].frames[1].id, "h3wb_S8_Directions-1_000012");
   EXPECT_LT((sequences[0].frames[1].gt.Person(0).topRows<3>() - WholeBody(12)).cwiseAbs().maxCoeff(), 1e-9);
-  const auto rgb = ReadH3wb(Request(dir.path(), {{"file", "RGBto3D_train.json"}, {"detections", "annotations"}}));
+  const auto rgb = ReadDataset(Request(dir.path(), {{"file", "RGBto3D_train.json"}, {"detections", "annotations"}}));
   for (const Poses2D& view : rgb[0].frames[0].views) EXPECT_EQ(view.num_persons(), 0);  // no keypoints_2d
-  const auto s5 = ReadH3wb(Request(dir.path(), {{"file", "RGBto3D_train.json"}, {"subjects", "S5"}, {"actions", "Eating"}}));
+  const auto s5 =
+      ReadDataset(Request(dir.path(), {{"file", "RGBto3D_train.json"}, {"subjects", "S5"}, {"actions", "Eating"}}));
   ASSERT_EQ(s5.size(), 1u);
   EXPECT_EQ(s5[0].frames[0].id, "h3wb_S5_Eating_000002");
-  EXPECT_THAT(InputErrorOf([&] { ReadH3wb(Request(dir.path(), {{"file", "RGBto3D_train.json"}, {"subjects", "S5,S8"}, {"actions", "Eating"}})); }),
+  EXPECT_THAT(InputErrorOf([&] {
+                ReadDataset(Request(dir.path(),
+                                    {{"file", "RGBto3D_train.json"}, {"subjects", "S5,S8"}, {"actions", "Eating"}}));
+              }),
               HasSubstr("RGBto3D_train.json: no frames of subject S8 with the selected actions"));
 }
 
@@ -370,35 +392,87 @@ TEST(H3wbReader, JsonMalformed) {
   std::vector<JsonView> views;
   for (int c = 0; c < 4; ++c) views.push_back({std::to_string(c), 8, c, 7, ""});
   test::WriteText(json, JsonFile(views));
-  EXPECT_THAT(InputErrorOf([&] { ReadH3wb(Request(dir.path())); }), HasSubstr("the json format needs Human3.6M cameras"));
+  EXPECT_THAT(InputErrorOf([&] { ReadDataset(Request(dir.path())); }),
+              HasSubstr("the json format needs Human3.6M cameras"));
   WriteMetadata(dir.path());
   // Views in the wrong camera order do not agree for any subject.
   std::swap(views[0].camera, views[1].camera);
   test::WriteText(json, JsonFile(views));
   std::swap(views[0].camera, views[1].camera);
-  std::string msg = InputErrorOf([&] { ReadH3wb(Request(dir.path())); });
+  std::string msg = InputErrorOf([&] { ReadDataset(Request(dir.path())); });
   EXPECT_THAT(msg, HasSubstr("2Dto3D_train.json: samples 0, 1, 2, 3: the views do not agree in world coordinates"));
   EXPECT_THAT(msg, HasSubstr("are ids 4k..4k+3 the four views of one frame?"));
   // Path-grouped views that disagree.
   std::vector<JsonView> bad_paths = {{"0", 8, 0, 7, "S8/Images/Eating.54138969/frame_0007.jpg"},
                                      {"1", 8, 1, 8, "S8/Images/Eating.55011271/frame_0007.jpg"}};
   test::WriteText(json, JsonFile(bad_paths));
-  EXPECT_THAT(InputErrorOf([&] { ReadH3wb(Request(dir.path())); }), HasSubstr("samples 0, 1 (S8 Eating frame 7): the views disagree by"));
+  EXPECT_THAT(InputErrorOf([&] { ReadDataset(Request(dir.path())); }),
+              HasSubstr("samples 0, 1 (S8 Eating frame 7): the views disagree by"));
   test::WriteText(json, "{\"0\": {\"keypoints_2d\": {}}}");
-  EXPECT_THAT(InputErrorOf([&] { ReadH3wb(Request(dir.path())); }), HasSubstr("2Dto3D_train.json: /0/keypoints_3d: missing or not an object"));
+  EXPECT_THAT(InputErrorOf([&] { ReadDataset(Request(dir.path())); }),
+              HasSubstr("2Dto3D_train.json: /0/keypoints_3d: missing or not an object"));
   test::WriteText(json, "{\"0\": {\"keypoints_3d\": {\"0\": {\"x\": 1, \"y\": \"a\", \"z\": 3}}}}");
-  EXPECT_THAT(InputErrorOf([&] { ReadH3wb(Request(dir.path())); }), HasSubstr("2Dto3D_train.json: /0/keypoints_3d/0/y: expected a number"));
+  EXPECT_THAT(InputErrorOf([&] { ReadDataset(Request(dir.path())); }),
+              HasSubstr("2Dto3D_train.json: /0/keypoints_3d/0/y: expected a number"));
   test::WriteText(json, "{\"0\": {\"keypoints_3d\": {\"0\": {\"x\": 1, \"y\": 2, \"z\": 3}}}}");
-  EXPECT_THAT(InputErrorOf([&] { ReadH3wb(Request(dir.path())); }), HasSubstr("/0/keypoints_3d/1: missing joint"));
+  EXPECT_THAT(InputErrorOf([&] { ReadDataset(Request(dir.path())); }), HasSubstr("/0/keypoints_3d/1: missing joint"));
   test::WriteText(json, "{\"abc\": {}}");
-  EXPECT_THAT(InputErrorOf([&] { ReadH3wb(Request(dir.path())); }), HasSubstr("/abc: sample id is not a non-negative integer"));
+  EXPECT_THAT(InputErrorOf([&] { ReadDataset(Request(dir.path())); }),
+              HasSubstr("/abc: sample id is not a non-negative integer"));
   test::WriteText(json, "{\"0\": [1, 2]}");
-  EXPECT_THAT(InputErrorOf([&] { ReadH3wb(Request(dir.path())); }), HasSubstr("2Dto3D_train.json: /0: expected an object"));
+  EXPECT_THAT(InputErrorOf([&] { ReadDataset(Request(dir.path())); }),
+              HasSubstr("2Dto3D_train.json: /0: expected an object"));
   test::WriteText(json, "{\n\"0\": {\"keypoints_3d\": {\"0\": {\"x\": 1,,");
-  EXPECT_THAT(InputErrorOf([&] { ReadH3wb(Request(dir.path())); }), HasSubstr("2Dto3D_train.json:2:37: JSON parse error"));
+  EXPECT_THAT(InputErrorOf([&] { ReadDataset(Request(dir.path())); }),
+              HasSubstr("2Dto3D_train.json:2:37: JSON parse error"));
   test::WriteText(json, "[]");
-  EXPECT_THAT(InputErrorOf([&] { ReadH3wb(Request(dir.path())); }), HasSubstr("2Dto3D_train.json: /: expected an object keyed by sample id"));
+  EXPECT_THAT(InputErrorOf([&] { ReadDataset(Request(dir.path())); }),
+              HasSubstr("2Dto3D_train.json: /: expected an object keyed by sample id"));
 }
+
+// The reader contract (tests/datasets/reader_stream_test.cc): streamed equals materialised, on the
+// npz, the json grouped by image path and the json grouped by sample ids (subjects found by the
+// cameras), with the stored 2D.
+using test::ReaderStreamTest;
+INSTANTIATE_TEST_SUITE_P(
+    H3wb, ReaderStreamTest,
+    ::testing::Values(
+        test::ReaderFixture{"Npz",
+                            {},
+                            [](const fs::path& dir) {
+                              WriteNpz(dir);
+                              return OpenDataset(Request(dir, {{"detections", "annotations"}}));
+                            }},
+        test::ReaderFixture{
+            "JsonByImagePath",
+            {},
+            [](const fs::path& dir) {
+              WriteMetadata(dir);
+              std::vector<JsonView> views;
+              int key = 100;
+              for (int frame : {12, 4, 9}) {
+                for (int c : {3, 1, 0, 2}) {
+                  views.push_back({std::to_string(key--), 8, c, frame,
+                                   "Human36m/S8/Images/Directions 1." +
+                                       Human36mCameraIds()[static_cast<std::size_t>(c)] + "/frame_" + Padded4(frame) +
+                                       ".jpg"});
+                }
+              }
+              test::WriteText(dir / "RGBto3D_train.json", JsonFile(views));
+              return OpenDataset(Request(dir, {{"file", "RGBto3D_train.json"}, {"detections", "annotations"}}));
+            }},
+        test::ReaderFixture{"JsonBySampleIds",
+                            {},
+                            [](const fs::path& dir) {
+                              WriteMetadata(dir);
+                              std::vector<JsonView> views;
+                              for (int c : {2, 0, 3, 1}) views.push_back({std::to_string(c), 8, c, 7, ""});
+                              for (int c = 0; c < 4; ++c) views.push_back({std::to_string(4 + c), 5, c, 9, ""});
+                              for (int c : {1, 3}) views.push_back({std::to_string(8 + c), 8, c, 3, ""});
+                              test::WriteText(dir / "2Dto3D_train.json", JsonFile(views));
+                              return OpenDataset(Request(dir, {{"subjects", "S5,S8"}, {"detections", "annotations"}}));
+                            }}),
+    test::ReaderFixtureName);
 
 }  // namespace
 }  // namespace rpt

@@ -10,6 +10,8 @@
 #include <functional>
 
 #include "core/errors.h"
+#include "datasets/registry.h"
+#include "tests/datasets/reader_stream_test.h"
 #include "tests/datasets/readers_h36m_ego_test_util.h"
 #include "tests/datasets/tolerance_test_util.h"
 #include "tests/test_data.h"
@@ -265,7 +267,7 @@ TEST(Human36mReader, AnnotH5RecoversWorldSkeleton) {
   WriteAnnot(dir.path(), "S9", "Walking-2", calibs, {1, 65}, {1, 2, 3});  // camera 54138969 missing
   std::filesystem::create_directories(dir.path() / "processed" / "S9" / "MySegmentsMat");
 
-  const auto sequences = ReadHuman36m(Request(dir.path(), {{"subjects", "S9"}}));
+  const auto sequences = ReadDataset(Request(dir.path(), {{"subjects", "S9"}}));
   ASSERT_EQ(sequences.size(), 2u);
   const Sequence& seq = sequences[0];
   EXPECT_EQ(seq.name, "human36m/S9/Directions-1");
@@ -298,18 +300,19 @@ TEST(Human36mReader, AnnotH5RecoversWorldSkeleton) {
   EXPECT_LT((sequences[1].frames[1].gt.Person(0).col(0).head<3>() - RawSkeleton(65).col(0)).norm(), kTol);
 
   // nose_proxy, actions, every, max_frames.
-  const auto other = ReadHuman36m(Request(dir.path(), {{"subjects", "S9"},
-                                                       {"actions", "Directions"},
-                                                       {"nose_proxy", "neck_nose"},
-                                                       {"every", "2"},
-                                                       {"max_frames", "5"}}));
+  const auto other = ReadDataset(Request(dir.path(), {{"subjects", "S9"},
+                                                      {"actions", "Directions"},
+                                                      {"nose_proxy", "neck_nose"},
+                                                      {"every", "2"},
+                                                      {"max_frames", "5"}}));
   ASSERT_EQ(other.size(), 1u);
   ASSERT_EQ(other[0].frames.size(), 2u);
   EXPECT_EQ(other[0].frames[1].id, "human36m_S9_Directions-1_000128");
   EXPECT_LT((other[0].frames[0].gt.Person(0).col(17).head<3>() - RawSkeleton(1).col(14)).norm(), kTol);
-  EXPECT_EQ(ReadHuman36m(Request(dir.path(), {{"subjects", "S9"}, {"max_frames", "1"}}))[0].frames.size(), 1u);
-  EXPECT_EQ(ReadHuman36m(Request(dir.path(), {{"subjects", "S9"}, {"exclude", "S9/Walking-2"}})).size(), 1u);
-  EXPECT_EQ(ReadHuman36m(Request(dir.path(), {{"subjects", "S9"}, {"distortion", "none"}}))[0].cameras[0].model, DistortionModel::kNone);
+  EXPECT_EQ(ReadDataset(Request(dir.path(), {{"subjects", "S9"}, {"max_frames", "1"}}))[0].frames.size(), 1u);
+  EXPECT_EQ(ReadDataset(Request(dir.path(), {{"subjects", "S9"}, {"exclude", "S9/Walking-2"}})).size(), 1u);
+  EXPECT_EQ(ReadDataset(Request(dir.path(), {{"subjects", "S9"}, {"distortion", "none"}}))[0].cameras[0].model,
+            DistortionModel::kNone);
 }
 
 TEST(Human36mReader, AnnotH5WithRealPickleCameras) {
@@ -325,14 +328,14 @@ TEST(Human36mReader, AnnotH5WithRealPickleCameras) {
   }
   test::TempDir dir;
   WriteAnnot(dir.path(), "S11", "Phoning-1", calibs, {1, 65});
-  const auto sequences = ReadHuman36m(Request(dir.path(), {{"subjects", "S11"}, {"cameras_file", pkl.string()}}));
+  const auto sequences = ReadDataset(Request(dir.path(), {{"subjects", "S11"}, {"cameras_file", pkl.string()}}));
   ASSERT_EQ(sequences.size(), 1u);
   EXPECT_LT((sequences[0].frames[1].gt.Person(0).col(3).head<3>() - RawSkeleton(65).col(3)).norm(), 1e-9);
   // Wrong subject's cameras: the four views no longer agree in world coordinates.
   const std::string msg = InputErrorOf([&] {
     test::TempDir other;
     WriteAnnot(other.path(), "S9", "Phoning-1", calibs, {1});
-    ReadHuman36m(Request(other.path(), {{"subjects", "S9"}, {"cameras_file", pkl.string()}}));
+    ReadDataset(Request(other.path(), {{"subjects", "S9"}, {"cameras_file", pkl.string()}}));
   });
   EXPECT_THAT(msg, HasSubstr("annot.h5: frame 1: camera"));
   EXPECT_THAT(msg, HasSubstr("wrong cameras file or subject"));
@@ -343,7 +346,7 @@ TEST(Human36mReader, AnnotH5Malformed) {
   WriteSyntheticMetadata(dir.path());
   const auto calibs = test::SyntheticH36mCalibs(9);
   const fs::path annot = dir.path() / "processed" / "S9" / "Directions-1" / "annot.h5";
-  auto read = [&] { ReadHuman36m(Request(dir.path(), {{"subjects", "S9"}})); };
+  auto read = [&] { ReadDataset(Request(dir.path(), {{"subjects", "S9"}})); };
 
   // Wrong shape.
   test::WriteH5(annot, {{"pose/3d", {2, 17, 3}, std::vector<double>(102, 1.0), false},
@@ -378,17 +381,19 @@ TEST(Human36mReader, AnnotH5Malformed) {
   msg = InputErrorOf(read);
   EXPECT_THAT(msg, HasSubstr("annot.h5: frame 1: camera 55011271 puts the pose"));
   // Unknown subject.
-  EXPECT_THAT(InputErrorOf([&] { ReadHuman36m(Request(dir.path(), {{"subjects", "S7"}})); }),
+  EXPECT_THAT(InputErrorOf([&] {
+                ReadDataset(Request(dir.path(), {{"subjects", "S7"}}));
+              }),
               HasSubstr("processed/S7: unknown subject"));
   // No cameras file at all.
   fs::remove(dir.path() / "metadata.xml");
   EXPECT_THAT(InputErrorOf(read), HasSubstr("no camera file found"));
   // Params.
-  EXPECT_THROW(ReadHuman36m(Request(dir.path(), {{"subject", "S9"}})), ConfigError);
-  EXPECT_THROW(ReadHuman36m(Request(dir.path(), {{"every", "0"}})), ConfigError);
-  EXPECT_THROW(ReadHuman36m(Request(dir.path(), {{"distortion", "fisheye"}})), ConfigError);
-  EXPECT_THROW(ReadHuman36m(Request(dir.path(), {{"nose_proxy", "ear"}})), ConfigError);
-  EXPECT_THROW(ReadHuman36m(Request(dir.path(), {{"labels", "cdf"}})), ConfigError);
+  EXPECT_THROW(ReadDataset(Request(dir.path(), {{"subject", "S9"}})), ConfigError);
+  EXPECT_THROW(ReadDataset(Request(dir.path(), {{"every", "0"}})), ConfigError);
+  EXPECT_THROW(ReadDataset(Request(dir.path(), {{"distortion", "fisheye"}})), ConfigError);
+  EXPECT_THROW(ReadDataset(Request(dir.path(), {{"nose_proxy", "ear"}})), ConfigError);
+  EXPECT_THROW(ReadDataset(Request(dir.path(), {{"labels", "cdf"}})), ConfigError);
 }
 
 // ---------------------------------------------------------------------------------------
@@ -463,7 +468,7 @@ TEST(Human36mReader, LearnableTriangulationLabelsRoundTrip) {
   // Image folders under processed/ without annot.h5 do not hide the labels file.
   fs::create_directories(dir.path() / "processed" / "S9" / "Directions-1" / "imageSequence" / "54138969");
   // No metadata.xml / cameras.pkl: the cameras come from the labels file.
-  const auto sequences = ReadHuman36m(Request(dir.path(), {{"subjects", "S9"}}));
+  const auto sequences = ReadDataset(Request(dir.path(), {{"subjects", "S9"}}));
   ASSERT_EQ(sequences.size(), 2u);
   const Sequence& seq = sequences[0];
   EXPECT_EQ(seq.name, "human36m/S9/Directions-1");
@@ -499,38 +504,77 @@ TEST(Human36mReader, LearnableTriangulationLabelsRoundTrip) {
   const auto npy_cameras = ReadHuman36mCameras(labels, "S1");
   EXPECT_LT((npy_cameras[2].R - test::SyntheticH36mCalibs(1)[2].R()).cwiseAbs().maxCoeff(), 1e-6);
   test::WriteText(dir.path() / "metadata.xml", test::MetadataXml(test::W0(test::SyntheticH36mCalibs)));
-  const auto with_xml = ReadHuman36m(Request(dir.path(), {{"subjects", "S1,S9"}, {"labels", "npy"}}));
+  const auto with_xml = ReadDataset(Request(dir.path(), {{"subjects", "S1,S9"}, {"labels", "npy"}}));
   ASSERT_EQ(with_xml.size(), 3u);
   EXPECT_EQ(with_xml[0].name, "human36m/S1/Directions-1");
   ExpectCameraMatches(with_xml[1].cameras[3], calibs[3], 1e-12);
-  EXPECT_EQ(ReadHuman36m(Request(dir.path(), {{"subjects", "S9"}, {"every", "2"}}))[0].frames.size(), 2u);
+  EXPECT_EQ(ReadDataset(Request(dir.path(), {{"subjects", "S9"}, {"every", "2"}}))[0].frames.size(), 2u);
 }
 
 TEST(Human36mReader, LearnableTriangulationLabelsMalformed) {
   test::TempDir dir;
   const fs::path labels = dir.path() / "human36m-multiview-labels-GTbboxes.npy";
   test::WriteBytes(labels, LabelsNpy({"S9"}, {"Directions-1"}, {{0, 0, 1}, {0, 0, 2}}));
-  std::string msg = InputErrorOf([&] { ReadHuman36m(Request(dir.path(), {{"subjects", "S11"}})); });
+  std::string msg = InputErrorOf([&] { ReadDataset(Request(dir.path(), {{"subjects", "S11"}})); });
   EXPECT_THAT(msg, HasSubstr("human36m-multiview-labels-GTbboxes.npy: key 'subject_names': unknown subject 'S11' (file has S9)"));
   test::WriteBytes(labels, LabelsNpy({"S9"}, {"Directions-1"}, {{0, 0, 1}, {0, 0, 2}}, 1));
-  msg = InputErrorOf([&] { ReadHuman36m(Request(dir.path(), {{"subjects", "S9"}})); });
+  msg = InputErrorOf([&] { ReadDataset(Request(dir.path(), {{"subjects", "S9"}})); });
   EXPECT_THAT(msg, HasSubstr("labels-GTbboxes.npy: key 'table'.keypoints: row 1 joint 4: NaN or infinite coordinate"));
   test::WriteBytes(labels, LabelsNpy({"S9"}, {"Directions-1"}, {{0, 3, 1}}));
-  EXPECT_THAT(InputErrorOf([&] { ReadHuman36m(Request(dir.path(), {{"subjects", "S9"}})); }), HasSubstr("key 'table': row 0: action_idx out of range"));
+  EXPECT_THAT(InputErrorOf([&] {
+                ReadDataset(Request(dir.path(), {{"subjects", "S9"}}));
+              }),
+              HasSubstr("key 'table': row 0: action_idx out of range"));
   // Truncated file.
   const test::ByteVec full = LabelsNpy({"S9"}, {"Directions-1"}, {{0, 0, 1}});
   test::WriteBytes(labels, test::ByteVec(full.begin(), full.begin() + static_cast<std::ptrdiff_t>(full.size() / 2)));
-  EXPECT_THAT(InputErrorOf([&] { ReadHuman36m(Request(dir.path(), {{"subjects", "S9"}})); }), HasSubstr("labels-GTbboxes.npy"));
+  EXPECT_THAT(InputErrorOf([&] {
+                ReadDataset(Request(dir.path(), {{"subjects", "S9"}}));
+              }),
+              HasSubstr("labels-GTbboxes.npy"));
   // A camera rotation 1e-2 off is a wrong matrix, not float32 rounding.
   test::WriteBytes(labels, LabelsNpy({"S9"}, {"Directions-1"}, {{0, 0, 1}}, -1, 1));
-  EXPECT_THAT(InputErrorOf([&] { ReadHuman36m(Request(dir.path(), {{"subjects", "S9"}})); }),
-              HasSubstr("labels-GTbboxes.npy: key 'cameras' [S9, 55011271]: R is not a rotation (max |R^T R - I| = 0.0100"));
+  EXPECT_THAT(
+      InputErrorOf([&] {
+        ReadDataset(Request(dir.path(), {{"subjects", "S9"}}));
+      }),
+      HasSubstr("labels-GTbboxes.npy: key 'cameras' [S9, 55011271]: R is not a rotation (max |R^T R - I| = 0.0100"));
   // Nothing at all under root.
   fs::remove(labels);
-  EXPECT_THAT(InputErrorOf([&] { ReadHuman36m(Request(dir.path(), {{"subjects", "S9"}})); }), HasSubstr("no Human3.6M labels found"));
-  EXPECT_THAT(InputErrorOf([&] { ReadHuman36m(Request(dir.path(), {{"subjects", "S9"}, {"labels", "npy"}})); }),
+  EXPECT_THAT(InputErrorOf([&] {
+                ReadDataset(Request(dir.path(), {{"subjects", "S9"}}));
+              }),
+              HasSubstr("no Human3.6M labels found"));
+  EXPECT_THAT(InputErrorOf([&] {
+                ReadDataset(Request(dir.path(), {{"subjects", "S9"}, {"labels", "npy"}}));
+              }),
               HasSubstr("labels file not found"));
 }
+
+// The reader contract (tests/datasets/reader_stream_test.cc): streamed equals materialised, on
+// both label formats.
+using test::ReaderStreamTest;
+INSTANTIATE_TEST_SUITE_P(
+    Human36m, ReaderStreamTest,
+    ::testing::Values(test::ReaderFixture{"AnnotH5",
+                                          {},
+                                          [](const fs::path& dir) {
+                                            WriteSyntheticMetadata(dir);
+                                            const auto calibs = test::SyntheticH36mCalibs(9);
+                                            WriteAnnot(dir, "S9", "Directions-1", calibs, {1, 65, 129});
+                                            WriteAnnot(dir, "S9", "Walking-2", calibs, {1, 65}, {1, 2, 3});
+                                            return OpenDataset(Request(dir, {{"subjects", "S9"}}));
+                                          }},
+                      test::ReaderFixture{"LabelsNpy",
+                                          {},
+                                          [](const fs::path& dir) {
+                                            test::WriteBytes(
+                                                dir / "extra" / "human36m-multiview-labels-GTbboxes.npy",
+                                                LabelsNpy({"S1", "S9"}, {"Directions-1", "Eating-2"},
+                                                          {{1, 0, 10}, {0, 0, 5}, {1, 1, 3}, {1, 0, 2}, {1, 0, 7}}));
+                                            return OpenDataset(Request(dir, {{"subjects", "S1,S9"}}));
+                                          }}),
+    test::ReaderFixtureName);
 
 }  // namespace
 }  // namespace rpt

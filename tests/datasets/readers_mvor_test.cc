@@ -44,7 +44,7 @@ double Median(std::vector<double> v) {
 
 TEST(MvorFixture, FramesPersonsCamerasAndDetections) {
   RPT_REQUIRE_SHARED_DATA("mvor/camma_mvor_2018.json");
-  const std::vector<Sequence> sequences = ReadMvor(Request(test::SharedData("mvor")));
+  const std::vector<Sequence> sequences = ReadDataset(Request(test::SharedData("mvor")));
   ASSERT_EQ(sequences.size(), 4u);
   size_t frames = 0, persons = 0, detections = 0;
   for (const Sequence& s : sequences) {
@@ -91,7 +91,7 @@ TEST(MvorFixture, FramesPersonsCamerasAndDetections) {
 // labels: MVOR's 3D and 2D annotations were made independently (median 7.7 / 8.9 / 7.9 px).
 TEST(MvorFixture, ProjectedGroundTruthLandsOnThe2dLabels) {
   RPT_REQUIRE_SHARED_DATA("mvor/camma_mvor_2018.json");
-  const std::vector<Sequence> sequences = ReadMvor(Request(test::SharedData("mvor"), {{"detections", "none"}}));
+  const std::vector<Sequence> sequences = ReadDataset(Request(test::SharedData("mvor"), {{"detections", "none"}}));
   std::ifstream in(test::SharedData("mvor/camma_mvor_2018.json"));
   const nlohmann::json root = nlohmann::json::parse(in);
   // 2D labels by (frame id, camera, person id): 10 points (head, neck, shoulders, hips, elbows, wrists).
@@ -133,7 +133,7 @@ TEST(MvorFixture, ProjectedGroundTruthLandsOnThe2dLabels) {
 TEST(MvorFixture, ParamsSelectDaysAndJoints) {
   RPT_REQUIRE_SHARED_DATA("mvor/camma_mvor_2018.json");
   const std::vector<Sequence> day3 =
-      ReadMvor(Request(test::SharedData("mvor"), {{"days", "3"}, {"detections", "none"}, {"evaluated", "paper"}}));
+      ReadDataset(Request(test::SharedData("mvor"), {{"days", "3"}, {"detections", "none"}, {"evaluated", "paper"}}));
   ASSERT_EQ(day3.size(), 1u);
   EXPECT_EQ(day3[0].name, "mvor/day3");
   EXPECT_EQ(day3[0].evaluated_joints.front(), "nose");
@@ -210,7 +210,7 @@ void WriteJson(const fs::path& path, const nlohmann::json& json) {
 TEST(MvorReader, ConvertsToTheRoomFrameInMetres) {
   test::TempDir dir;
   WriteJson(dir.path() / "annotations/camma_mvor_2018.json", SmallAnnotations());
-  const std::vector<Sequence> sequences = ReadMvor(Request(dir.path(), {{"detections", "none"}}));
+  const std::vector<Sequence> sequences = ReadDataset(Request(dir.path(), {{"detections", "none"}}));
   ASSERT_EQ(sequences.size(), 1u) << "days without frames are not listed";
   const Sequence& s = sequences[0];
   ASSERT_EQ(s.frames.size(), 2u);
@@ -243,30 +243,38 @@ TEST(MvorReader, DistortionFileAppliesTheNumbersAsK1K2K3P1P2) {
   nlohmann::json json = SmallAnnotations();
   json["cameras_info"]["camParams"]["intrinsics"][0]["distortion"] = {0.1, 0.2, 0.3, 0.4, 0.5};
   WriteJson(dir.path() / "camma_mvor_2018.json", json);
-  const std::vector<Sequence> s = ReadMvor(Request(dir.path(), {{"detections", "none"}, {"distortion", "file"}}));
+  const std::vector<Sequence> s = ReadDataset(Request(dir.path(), {{"detections", "none"}, {"distortion", "file"}}));
   EXPECT_EQ(s[0].cameras[0].model, DistortionModel::kOpenCV);
   EXPECT_EQ(s[0].cameras[0].dist, (std::array<double, 5>{0.1, 0.2, 0.4, 0.5, 0.3}));
 }
 
 TEST(MvorReader, BadParamsAndFilesAreNamed) {
   test::TempDir dir;
-  EXPECT_THAT(test::ConfigErrorOf([&] { ReadMvor(Request(dir.path(), {{"days", "5"}})); }), HasSubstr("days"));
-  EXPECT_THAT(test::ConfigErrorOf([&] { ReadMvor(Request(dir.path(), {{"detections", "alphapose"}})); }),
+  EXPECT_THAT(test::ConfigErrorOf([&] { ReadDataset(Request(dir.path(), {{"days", "5"}})); }), HasSubstr("days"));
+  EXPECT_THAT(test::ConfigErrorOf([&] {
+                ReadDataset(Request(dir.path(), {{"detections", "alphapose"}}));
+              }),
               HasSubstr("not one of openpose, none"));
-  EXPECT_THAT(test::InputErrorOf([&] { ReadMvor(Request(dir.path() / "missing")); }), HasSubstr("not a directory"));
-  EXPECT_THAT(test::InputErrorOf([&] { ReadMvor(Request(dir.path())); }), HasSubstr("camma_mvor_2018.json"));
+  EXPECT_THAT(test::InputErrorOf([&] { ReadDataset(Request(dir.path() / "missing")); }), HasSubstr("not a directory"));
+  EXPECT_THAT(test::InputErrorOf([&] { ReadDataset(Request(dir.path())); }), HasSubstr("camma_mvor_2018.json"));
   WriteJson(dir.path() / "camma_mvor_2018.json", SmallAnnotations());
-  EXPECT_THAT(test::InputErrorOf([&] { ReadMvor(Request(dir.path())); }),
-              HasSubstr("openpose_kps.json not found (the OpenPose detections shipped with MVOR); use --param detections=none"));
+  EXPECT_THAT(
+      test::InputErrorOf([&] { ReadDataset(Request(dir.path())); }),
+      HasSubstr(
+          "openpose_kps.json not found (the OpenPose detections shipped with MVOR); use --param detections=none"));
   nlohmann::json bad = SmallAnnotations();
   bad["cameras_info"]["camParams"]["extrinsics"][1][0] = 1.1;  // not a rotation
   WriteJson(dir.path() / "camma_mvor_2018.json", bad);
-  EXPECT_THAT(test::InputErrorOf([&] { ReadMvor(Request(dir.path(), {{"detections", "none"}})); }),
+  EXPECT_THAT(test::InputErrorOf([&] {
+                ReadDataset(Request(dir.path(), {{"detections", "none"}}));
+              }),
               HasSubstr("/cameras_info/camParams/extrinsics/1: R is not a rotation"));
   bad = SmallAnnotations();
   bad["multiview_images"][0]["images"][2]["file_name"] = "day1/cam3/color/000099.png";
   WriteJson(dir.path() / "camma_mvor_2018.json", bad);
-  EXPECT_THAT(test::InputErrorOf([&] { ReadMvor(Request(dir.path(), {{"detections", "none"}})); }),
+  EXPECT_THAT(test::InputErrorOf([&] {
+                ReadDataset(Request(dir.path(), {{"detections", "none"}}));
+              }),
               HasSubstr("/multiview_images/0/images/2: day or frame number differs"));
 }
 

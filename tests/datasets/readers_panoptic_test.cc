@@ -15,6 +15,7 @@
 #include "core/errors.h"
 #include "datasets/frame_source.h"
 #include "datasets/readers/panoptic.h"
+#include "datasets/registry.h"
 #include "tests/datasets/io_test_util.h"
 #include "tests/error_message.h"
 #include "tests/test_data.h"
@@ -79,7 +80,7 @@ const nlohmann::json* FindCamera(const nlohmann::json& calibration, const std::s
 TEST(PanopticReader, FixtureSequenceCamerasAndFrames) {
   RPT_REQUIRE_SHARED_DATA("panoptic/160906_band1");
   const std::vector<Sequence> sequences =
-      ReadPanoptic(Request(test::SharedData("panoptic"), {{"sequences", "160906_band1"}, {"every", "1"}}));
+      ReadDataset(Request(test::SharedData("panoptic"), {{"sequences", "160906_band1"}, {"every", "1"}}));
   ASSERT_EQ(sequences.size(), 1u);
   const Sequence& band1 = sequences[0];
   EXPECT_EQ(band1.name, "panoptic/160906_band1");
@@ -127,7 +128,7 @@ TEST(PanopticReader, FixtureSequenceCamerasAndFrames) {
 TEST(PanopticReader, ConvertedCamerasReproduceTheOriginalProjection) {
   RPT_REQUIRE_SHARED_DATA("panoptic/160906_band1");
   const Sequence band1 =
-      ReadPanoptic(Request(test::SharedData("panoptic"), {{"sequences", "160906_band1"}, {"max_frames", "1"}}))[0];
+      ReadDataset(Request(test::SharedData("panoptic"), {{"sequences", "160906_band1"}, {"max_frames", "1"}}))[0];
   const nlohmann::json calibration = LoadJson(test::SharedData("panoptic/160906_band1/calibration_160906_band1.json"));
   const nlohmann::json scene =
       LoadJson(test::SharedData("panoptic/160906_band1/hdPose3d_stage1_coco19/body3DScene_00000168.json"));
@@ -159,7 +160,7 @@ TEST(PanopticReader, ConvertedCamerasReproduceTheOriginalProjection) {
 TEST(PanopticReader, VisibleJointsFallInsideTheDefaultCameras) {
   RPT_REQUIRE_SHARED_DATA("panoptic/160906_band1");
   const Sequence band1 =
-      ReadPanoptic(Request(test::SharedData("panoptic"), {{"sequences", "160906_band1"}, {"max_frames", "1"}}))[0];
+      ReadDataset(Request(test::SharedData("panoptic"), {{"sequences", "160906_band1"}, {"max_frames", "1"}}))[0];
   const Poses3D& gt = band1.frames[0].gt;
   ASSERT_EQ(gt.num_persons(), 3);
   for (const Camera& camera : band1.cameras) {
@@ -184,23 +185,22 @@ TEST(PanopticReader, EveryMaxFramesAndAllHdCameras) {
   RPT_REQUIRE_SHARED_DATA("panoptic/160906_band2");
   const std::filesystem::path root = test::SharedData("panoptic");
   const std::string both = "160906_band1,160906_band2";
-  const auto every1 = ReadPanoptic(Request(root, {{"sequences", both}, {"every", "1"}}));
+  const auto every1 = ReadDataset(Request(root, {{"sequences", both}, {"every", "1"}}));
   ASSERT_EQ(every1.size(), 2u);
   EXPECT_EQ(every1[0].frames.size(), 20u);
   EXPECT_EQ(every1[1].frames.size(), 20u);
   EXPECT_EQ(every1[1].frames[0].id, "panoptic_160906_band2_000139");
 
-  const auto every12 = ReadPanoptic(Request(root, {{"sequences", both}}));  // default every=12
+  const auto every12 = ReadDataset(Request(root, {{"sequences", both}}));  // default every=12
   ASSERT_EQ(every12[0].frames.size(), 2u);
   EXPECT_EQ(every12[0].frames[1].id, "panoptic_160906_band1_000180");
   EXPECT_EQ(every12[1].frames[1].id, "panoptic_160906_band2_000151");
 
-  const auto limited =
-      ReadPanoptic(Request(root, {{"sequences", "160906_band2"}, {"every", "3"}, {"max_frames", "4"}}));
+  const auto limited = ReadDataset(Request(root, {{"sequences", "160906_band2"}, {"every", "3"}, {"max_frames", "4"}}));
   ASSERT_EQ(limited[0].frames.size(), 4u);
   EXPECT_EQ(limited[0].frames[3].id, "panoptic_160906_band2_000148");
 
-  const auto hd = ReadPanoptic(Request(root, {{"sequences", "160906_band1"}, {"cameras", "hd"}, {"max_frames", "1"}}));
+  const auto hd = ReadDataset(Request(root, {{"sequences", "160906_band1"}, {"cameras", "hd"}, {"max_frames", "1"}}));
   ASSERT_EQ(hd[0].cameras.size(), 31u);
   for (int c = 0; c < 31; ++c) {
     char name[8];
@@ -211,21 +211,21 @@ TEST(PanopticReader, EveryMaxFramesAndAllHdCameras) {
 
 TEST(PanopticReader, DefaultSequencesAreReportedMissing) {
   RPT_REQUIRE_SHARED_DATA("panoptic");
-  EXPECT_THAT(test::InputErrorOf([] { ReadPanoptic(Request(test::SharedData("panoptic"), {})); }),
+  EXPECT_THAT(test::InputErrorOf([] { ReadDataset(Request(test::SharedData("panoptic"), {})); }),
               HasSubstr("panoptic: sequence '160906_pizza1' not found"));
-  EXPECT_THAT(test::InputErrorOf([] {
-                ReadPanoptic(
-                    Request(test::SharedData("panoptic"), {{"sequences", "160906_band1"}, {"cameras", "00_03,00_99"}}));
-              }),
-              HasSubstr("calibration_160906_band1.json: camera '00_99' not found; HD cameras: 00_00, 00_01, 00_02"));
+  EXPECT_THAT(
+      test::InputErrorOf([] {
+        ReadDataset(Request(test::SharedData("panoptic"), {{"sequences", "160906_band1"}, {"cameras", "00_03,00_99"}}));
+      }),
+      HasSubstr("calibration_160906_band1.json: camera '00_99' not found; HD cameras: 00_00, 00_01, 00_02"));
 }
 
 TEST(PanopticReader, StreamsOneAnnotationFilePerFramePulled) {
   RPT_REQUIRE_SHARED_DATA("panoptic/160906_band1");
   const DatasetRequest request =
       Request(test::SharedData("panoptic"), {{"sequences", "160906_band1,160906_band2"}, {"every", "1"}});
-  const std::vector<Sequence> read = ReadPanoptic(request);
-  std::vector<std::unique_ptr<FrameSource>> sources = StreamPanoptic(request);
+  const std::vector<Sequence> read = ReadDataset(request);
+  std::vector<std::unique_ptr<FrameSource>> sources = OpenPanoptic(request);
   ASSERT_EQ(sources.size(), 2u);
   EXPECT_EQ(sources[0]->num_frames(), -1) << "skip_empty: the count is known once the files are read";
   for (size_t s = 0; s < sources.size(); ++s) {
@@ -240,10 +240,10 @@ TEST(PanopticReader, StreamsOneAnnotationFilePerFramePulled) {
     }
     EXPECT_EQ(f, read[s].frames.size());
   }
-  const std::vector<std::unique_ptr<FrameSource>> counted = StreamPanoptic(
+  const std::vector<std::unique_ptr<FrameSource>> counted = OpenPanoptic(
       Request(test::SharedData("panoptic"), {{"sequences", "160906_band1"}, {"every", "3"}, {"skip_empty", "false"}}));
-  const Sequence all = Materialize(*StreamPanoptic(Request(test::SharedData("panoptic"),
-                                                            {{"sequences", "160906_band1"}, {"every", "3"}, {"skip_empty", "false"}}))[0]);
+  const Sequence all = Materialize(*OpenPanoptic(Request(
+      test::SharedData("panoptic"), {{"sequences", "160906_band1"}, {"every", "3"}, {"skip_empty", "false"}}))[0]);
   EXPECT_EQ(counted[0]->num_frames(), 7) << "20 files, every 3rd: known in advance without skip_empty";
   EXPECT_EQ(static_cast<long>(all.frames.size()), counted[0]->num_frames());
 }
@@ -329,7 +329,7 @@ TEST(PanopticReader, GeneratedFilesMissingJointsEmptyBodiesAndRoots) {
   const std::filesystem::path poses = dir.path() / "seqA" / "hdPose3d_stage1_coco19";
   WriteText(poses / "notes.json", "not a pose file");
   WriteText(poses / "body3DScene_0000001x.json", Scene(""));
-  const Sequence kept = ReadPanoptic(Request(dir.path(), base))[0];  // skip_empty=true
+  const Sequence kept = ReadDataset(Request(dir.path(), base))[0];  // skip_empty=true
   ASSERT_EQ(kept.warnings.items().size(), 1u);
   EXPECT_EQ(
       kept.warnings.items()[0].Line(),
@@ -352,23 +352,23 @@ TEST(PanopticReader, GeneratedFilesMissingJointsEmptyBodiesAndRoots) {
 
   std::map<std::string, std::string> keep_empty = base;
   keep_empty["skip_empty"] = "false";
-  const Sequence all = ReadPanoptic(Request(dir.path(), keep_empty))[0];
+  const Sequence all = ReadDataset(Request(dir.path(), keep_empty))[0];
   ASSERT_EQ(all.frames.size(), 4u);
   EXPECT_EQ(all.frames[1].id, "panoptic_seqA_000011");
   EXPECT_EQ(all.frames[1].gt.num_persons(), 0);
 
   std::map<std::string, std::string> every2 = keep_empty;
   every2["every"] = "2";
-  const Sequence sampled = ReadPanoptic(Request(dir.path(), every2))[0];
+  const Sequence sampled = ReadDataset(Request(dir.path(), every2))[0];
   ASSERT_EQ(sampled.frames.size(), 2u);
   EXPECT_EQ(sampled.frames[1].id, "panoptic_seqA_000012");
 
   // Cameras: "hd" = the two HD ones in file order; a VGA camera by name keeps its resolution.
-  const Sequence hd = ReadPanoptic(Request(dir.path(), {{"sequences", "seqA"}, {"cameras", "hd"}}))[0];
+  const Sequence hd = ReadDataset(Request(dir.path(), {{"sequences", "seqA"}, {"cameras", "hd"}}))[0];
   ASSERT_EQ(hd.cameras.size(), 2u);
   EXPECT_EQ(hd.cameras[0].name, "00_00");
   EXPECT_EQ(hd.cameras[1].name, "00_01");
-  const Sequence vga = ReadPanoptic(Request(dir.path(), {{"sequences", "seqA"}, {"cameras", "01_01"}}))[0];
+  const Sequence vga = ReadDataset(Request(dir.path(), {{"sequences", "seqA"}, {"cameras", "01_01"}}))[0];
   EXPECT_EQ(vga.cameras[0].width, 640);
   EXPECT_EQ(vga.cameras[0].dist, (std::array<double, 5>{-0.2, 0.15, 0.001, -0.0005, 0.02}));
 
@@ -390,46 +390,48 @@ TEST(PanopticReader, MalformedInputNamesFileAndPlace) {
   const std::map<std::string, std::string> base = {{"sequences", "seqA"}, {"cameras", "00_00"}, {"every", "1"}};
 
   EXPECT_THAT(test::InputErrorOf([&] {
-                ReadPanoptic(Request(dir.path(), {{"sequences", "seqA,seqB"}}));
+                ReadDataset(Request(dir.path(), {{"sequences", "seqA,seqB"}}));
               }),
               HasSubstr("panoptic: sequence 'seqB' not found"));
   EXPECT_THAT(
       test::InputErrorOf([&] {
-        ReadPanoptic(Request(dir.path(), {{"sequences", "seqA"}, {"cameras", "00_00,00_07"}}));
+        ReadDataset(Request(dir.path(), {{"sequences", "seqA"}, {"cameras", "00_00,00_07"}}));
       }),
       HasSubstr(
           "calibration_seqA.json: camera '00_07' not found; HD cameras: 00_00, 00_01 (plus 1 VGA/Kinect cameras)"));
 
   // A NaN (not JSON) and a null coordinate.
   WriteText(poses / "body3DScene_00000013.json", Scene("{\"id\": 2, \"joints19\": [NaN, 1, 2, 0.5]}"));
-  EXPECT_THAT(test::InputErrorOf([&] { ReadPanoptic(Request(dir.path(), base)); }), HasSubstr("body3DScene_00000013.json:1:"));
+  EXPECT_THAT(test::InputErrorOf([&] { ReadDataset(Request(dir.path(), base)); }),
+              HasSubstr("body3DScene_00000013.json:1:"));
   std::string with_null = Joints19([](int) { return 0.5; });
   with_null.replace(1, 2, "null");
   WriteText(poses / "body3DScene_00000013.json", Scene("{\"id\": 2, \"joints19\": " + with_null + "}"));
-  EXPECT_THAT(test::InputErrorOf([&] { ReadPanoptic(Request(dir.path(), base)); }),
+  EXPECT_THAT(test::InputErrorOf([&] { ReadDataset(Request(dir.path(), base)); }),
               HasSubstr("body3DScene_00000013.json: /bodies/0/joints19"));
   WriteText(poses / "body3DScene_00000013.json", Scene("{\"id\": 2, \"joints19\": [1, 2, 3, 0.5]}"));
-  EXPECT_THAT(test::InputErrorOf([&] { ReadPanoptic(Request(dir.path(), base)); }),
+  EXPECT_THAT(test::InputErrorOf([&] { ReadDataset(Request(dir.path(), base)); }),
               HasSubstr("body3DScene_00000013.json: /bodies/0/joints19: expected"));
   WriteText(poses / "body3DScene_00000013.json", "{\"bodies\": 3}");
-  EXPECT_THAT(test::InputErrorOf([&] { ReadPanoptic(Request(dir.path(), base)); }),
+  EXPECT_THAT(test::InputErrorOf([&] { ReadDataset(Request(dir.path(), base)); }),
               HasSubstr("body3DScene_00000013.json: /bodies: expected an array"));
 
   // Cameras: missing R, an R 0.44 away from a rotation (beyond the 1e-3 tolerance), missing file.
   WriteSequence(dir.path(), CalibrationJson("none"));
-  EXPECT_THAT(test::InputErrorOf([&] { ReadPanoptic(Request(dir.path(), base)); }),
+  EXPECT_THAT(test::InputErrorOf([&] { ReadDataset(Request(dir.path(), base)); }),
               HasSubstr("calibration_seqA.json: /cameras/0/R: missing"));
   WriteSequence(dir.path(), CalibrationJson("[[1, 0, 0], [0, 1.2, 0], [0, 0, 1]]"));
-  EXPECT_THAT(test::InputErrorOf([&] { ReadPanoptic(Request(dir.path(), base)); }),
-              HasSubstr("calibration_seqA.json: /cameras/0/R (camera '00_00'): R is not a rotation (max |R^T R - I| = 0.44"));
+  EXPECT_THAT(
+      test::InputErrorOf([&] { ReadDataset(Request(dir.path(), base)); }),
+      HasSubstr("calibration_seqA.json: /cameras/0/R (camera '00_00'): R is not a rotation (max |R^T R - I| = 0.44"));
   std::filesystem::remove(dir.path() / "seqA" / "calibration_seqA.json");
-  EXPECT_THAT(test::InputErrorOf([&] { ReadPanoptic(Request(dir.path(), base)); }),
+  EXPECT_THAT(test::InputErrorOf([&] { ReadDataset(Request(dir.path(), base)); }),
               HasSubstr("calibration_seqA.json: file not found"));
 
   // No annotation folder.
   WriteSequence(dir.path());
   std::filesystem::remove_all(poses);
-  EXPECT_THAT(test::InputErrorOf([&] { ReadPanoptic(Request(dir.path(), base)); }),
+  EXPECT_THAT(test::InputErrorOf([&] { ReadDataset(Request(dir.path(), base)); }),
               HasSubstr("hdPose3d_stage1_coco19: annotation folder not found"));
 }
 
@@ -437,7 +439,7 @@ TEST(PanopticReader, RotationsWithSixDigitsAreReorthonormalisedAndCounted) {
   test::TempDir dir;
   WriteSequence(dir.path(), CalibrationJson("", 6));
   const std::map<std::string, std::string> params = {{"sequences", "seqA"}, {"cameras", "00_00,00_01"}, {"every", "1"}};
-  const Sequence sequence = ReadPanoptic(Request(dir.path(), params))[0];
+  const Sequence sequence = ReadDataset(Request(dir.path(), params))[0];
   ASSERT_EQ(sequence.cameras.size(), 2u);
   for (const Camera& camera : sequence.cameras) {
     EXPECT_LT((camera.R.transpose() * camera.R - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff(), 1e-12);
@@ -452,10 +454,10 @@ TEST(PanopticReader, RotationsWithSixDigitsAreReorthonormalisedAndCounted) {
   EXPECT_LT(w.worst, 1e-5);
 
   WriteSequence(dir.path());  // 17 digits: exact to round-off, nothing to report
-  EXPECT_TRUE(ReadPanoptic(Request(dir.path(), params))[0].warnings.empty());
+  EXPECT_TRUE(ReadDataset(Request(dir.path(), params))[0].warnings.empty());
   // 1e-2 off is a wrong matrix, not rounding.
   WriteSequence(dir.path(), CalibrationJson("[[1.005, 0, 0], [0, 1.005, 0], [0, 0, 1.005]]"));
-  EXPECT_THAT(test::InputErrorOf([&] { ReadPanoptic(Request(dir.path(), params)); }),
+  EXPECT_THAT(test::InputErrorOf([&] { ReadDataset(Request(dir.path(), params)); }),
               HasSubstr((dir.path() / "seqA" / "calibration_seqA.json").string() +
                         ": /cameras/0/R (camera '00_00'): R is not a rotation (max |R^T R - I| = 0.010025"));
 }
@@ -465,7 +467,7 @@ TEST(PanopticReader, BadParamsAreConfigErrors) {
   WriteSequence(dir.path());
   const auto config_error = [&](std::map<std::string, std::string> params) {
     params.emplace("sequences", "seqA");
-    return test::ErrorMessage<ConfigError>([&] { ReadPanoptic(Request(dir.path(), params)); });
+    return test::ErrorMessage<ConfigError>([&] { ReadDataset(Request(dir.path(), params)); });
   };
   EXPECT_THAT(config_error({{"every", "0"}}), HasSubstr("--param every=0: panoptic.every: '0' is not an integer >= 1"));
   EXPECT_THAT(config_error({{"max_frames", "-2"}}), HasSubstr("max_frames"));

@@ -24,6 +24,7 @@
 #include "datasets/readers/shelf_4da.h"
 #include "datasets/readers/shelf_campus.h"
 #include "datasets/readers/voxelpose_calibration.h"
+#include "datasets/registry.h"
 #include "tests/datasets/io_test_util.h"
 #include "tests/error_message.h"
 #include "tests/test_data.h"
@@ -155,7 +156,7 @@ void WriteBundle(const fs::path& root) {
 TEST(Shelf4daReader, HandMadeBundleAssemblesTheTwoPersons) {
   const test::TempDir dir;
   WriteBundle(dir.path());
-  const std::vector<Sequence> sequences = ReadShelf4da(Request(dir.path()));
+  const std::vector<Sequence> sequences = ReadDataset(Request(dir.path()));
   ASSERT_EQ(sequences.size(), 1u);
   const Sequence& s = sequences[0];
   EXPECT_EQ(s.name, "shelf-4da");
@@ -205,32 +206,38 @@ TEST(Shelf4daReader, HandMadeBundleAssemblesTheTwoPersons) {
 TEST(Shelf4daReader, ParamsSelectFramesDetectionsNoseAndAssociation) {
   const test::TempDir dir;
   WriteBundle(dir.path());
-  const Sequence one = ReadShelf4da(Request(dir.path(), {{"frames", "1"}, {"detections", "none"}}))[0];
+  const Sequence one = ReadDataset(Request(dir.path(), {{"frames", "1"}, {"detections", "none"}}))[0];
   ASSERT_EQ(one.frames.size(), 1u);
   EXPECT_EQ(one.frames[0].id, "shelf4da_000001");
   EXPECT_TRUE(one.frames[0].views.empty());
   EXPECT_TRUE(one.detection_joints.empty());
 
-  const Sequence top = ReadShelf4da(Request(dir.path(), {{"nose_proxy", "top"}}))[0];
+  const Sequence top = ReadDataset(Request(dir.path(), {{"nose_proxy", "top"}}))[0];
   EXPECT_NEAR(top.frames[0].gt.Person(0)(2, FindJoint(top.gt_joints, "nose")), 1.75, 1e-12);
   // Both persons have 6 BODY_25 joints.
-  EXPECT_EQ(ReadShelf4da(Request(dir.path(), {{"min_joints", "7"}}))[0].frames[0].views[0].num_persons(), 0);
-  EXPECT_EQ(ReadShelf4da(Request(dir.path(), {{"min_paf_score", "0.95"}}))[0].frames[0].views[0].num_persons(), 0);
+  EXPECT_EQ(ReadDataset(Request(dir.path(), {{"min_joints", "7"}}))[0].frames[0].views[0].num_persons(), 0);
+  EXPECT_EQ(ReadDataset(Request(dir.path(), {{"min_paf_score", "0.95"}}))[0].frames[0].views[0].num_persons(), 0);
 
-  EXPECT_THAT(test::InputErrorOf([&] { ReadShelf4da(Request(dir.path(), {{"frames", "0-2"}})); }),
+  EXPECT_THAT(test::InputErrorOf([&] {
+                ReadDataset(Request(dir.path(), {{"frames", "0-2"}}));
+              }),
               HasSubstr("gt.txt: frame 2 requested but the file has 2 frames (0-1)"));
   EXPECT_THAT(test::ConfigErrorOf([&] {
-                ReadShelf4da(Request(dir.path(), {{"detections", "pkl"}}));
+                ReadDataset(Request(dir.path(), {{"detections", "pkl"}}));
               }),
-              HasSubstr("--param detections=pkl: shelf-4da.detections: 'pkl' is not one of openpose, none"));
-  EXPECT_THAT(test::ConfigErrorOf([&] { ReadShelf4da(Request(dir.path(), {{"min_joints", "1"}})); }),
+              HasSubstr("param detections: 'pkl' is not one of openpose, none"));
+  EXPECT_THAT(test::ConfigErrorOf([&] {
+                ReadDataset(Request(dir.path(), {{"min_joints", "1"}}));
+              }),
               HasSubstr("is not an integer in [2, 25]"));
-  EXPECT_THAT(test::ConfigErrorOf([&] { ReadShelf4da(Request(dir.path(), {{"min_paf_score", "-1"}})); }),
+  EXPECT_THAT(test::ConfigErrorOf([&] {
+                ReadDataset(Request(dir.path(), {{"min_paf_score", "-1"}}));
+              }),
               HasSubstr("is not a number >= 0"));
   EXPECT_THAT(test::ConfigErrorOf([&] {
-                ReadShelf4da(Request(dir.path(), {{"fps", "30"}}));
+                ReadDataset(Request(dir.path(), {{"fps", "30"}}));
               }),
-              HasSubstr("unknown parameter 'fps'"));
+              HasSubstr("has no parameter 'fps'"));
 }
 
 TEST(Shelf4daReader, MalformedDetectionFilesNameFileLineAndToken) {
@@ -287,7 +294,7 @@ TEST(Shelf4daReader, MalformedGroundTruthAndCountMismatches) {
   const test::TempDir dir;
   WriteBundle(dir.path());
   const fs::path gt = dir.path() / "gt.txt";
-  const auto error = [&] { return test::InputErrorOf([&] { ReadShelf4da(Request(dir.path())); }); };
+  const auto error = [&] { return test::InputErrorOf([&] { ReadDataset(Request(dir.path())); }); };
 
   // A wrong joint count in the header shifts every matrix: caught by the first validity not in [0, 1].
   WriteText(gt, GtText({{{0, StandingPerson(0, 0)}}, {}}, 15).replace(0, 2, "14"));
@@ -310,7 +317,7 @@ TEST(Shelf4daReader, MalformedGroundTruthAndCountMismatches) {
   WriteText(gt, GtText({{}, {}}));
   fs::remove(dir.path() / "detection" / "0.txt");
   EXPECT_THAT(error(), HasSubstr("0.txt: file not found or unreadable"));
-  EXPECT_EQ(ReadShelf4da(Request(dir.path(), {{"detections", "none"}}))[0].frames.size(), 2u);
+  EXPECT_EQ(ReadDataset(Request(dir.path(), {{"detections", "none"}}))[0].frames.size(), 2u);
 }
 
 TEST(Shelf4daReader, CalibrationVariantsAndErrors) {
@@ -377,7 +384,7 @@ TEST(Shelf4daFixture, HeaderFactsAndSequenceShape) {
     EXPECT_EQ(d.frames.size(), 301u);
   }
 
-  const Sequence s = ReadShelf4da(Request(root))[0];
+  const Sequence s = ReadDataset(Request(root))[0];
   ASSERT_EQ(s.frames.size(), 301u);
   EXPECT_EQ(s.frames.front().id, "shelf4da_000000");
   EXPECT_EQ(s.frames.back().id, "shelf4da_000300");
@@ -396,7 +403,7 @@ TEST(Shelf4daFixture, HeaderFactsAndSequenceShape) {
 
 TEST(Shelf4daFixture, GroundTruthPersonSetsPerFrame) {
   RPT_REQUIRE_SHARED_DATA(std::string(kBundle) + "/gt.txt");
-  const Sequence s = ReadShelf4da(Request(test::SharedData(kBundle), {{"detections", "none"}}))[0];
+  const Sequence s = ReadDataset(Request(test::SharedData(kBundle), {{"detections", "none"}}))[0];
   std::map<std::string, int> frames_per_set;
   long persons = 0;
   for (const SequenceFrame& frame : s.frames) {
@@ -428,7 +435,7 @@ TEST(Shelf4daFixture, DetectionsAreTimeAlignedWithTheGroundTruth) {
   EXPECT_NEAR(neck_x[0], 241.0, 1.0);
   EXPECT_NEAR(neck_x[1], 725.5, 1.0);
 
-  const Sequence s = ReadShelf4da(Request(root, {{"frames", "0"}, {"detections", "none"}}))[0];
+  const Sequence s = ReadDataset(Request(root, {{"frames", "0"}, {"detections", "none"}}))[0];
   const Poses3D& gt = s.frames[0].gt;
   ASSERT_EQ(gt.track_ids, (std::vector<int>{0, 2}));
   const int head_bottom = FindJoint(s.gt_joints, "head_bottom");
@@ -450,8 +457,9 @@ TEST(Shelf4daFixture, GroundTruthIsAVariantOfActorsGt) {
   shelf_request.dataset = "shelf";
   shelf_request.root = test::SharedData("shelf");
   shelf_request.params = {{"frames", "0-2"}};
-  const Sequence shelf = ReadShelf(shelf_request)[0];
-  const Sequence fourda = ReadShelf4da(Request(test::SharedData(kBundle), {{"frames", "0-2"}, {"detections", "none"}}))[0];
+  const Sequence shelf = ReadDataset(shelf_request)[0];
+  const Sequence fourda =
+      ReadDataset(Request(test::SharedData(kBundle), {{"frames", "0-2"}, {"detections", "none"}}))[0];
   for (size_t f = 0; f < 3; ++f) {
     const Poses3D& a = shelf.frames[f].gt;
     const Poses3D& b = fourda.frames[f].gt;
@@ -471,7 +479,7 @@ TEST(Shelf4daFixture, GroundTruthIsAVariantOfActorsGt) {
 TEST(Shelf4daFixture, CalibrationIsVoxelPoseShelfWithRotationsCounted) {
   RPT_REQUIRE_SHARED_DATA(std::string(kBundle) + "/calibration.json");
   RPT_REQUIRE_SHARED_DATA("shelf/calibration_shelf.json");
-  const Sequence s = ReadShelf4da(Request(test::SharedData(kBundle), {{"frames", "0"}, {"detections", "none"}}))[0];
+  const Sequence s = ReadDataset(Request(test::SharedData(kBundle), {{"frames", "0"}, {"detections", "none"}}))[0];
   const std::vector<Camera> voxelpose = ReadVoxelPoseCalibration(test::SharedData("shelf/calibration_shelf.json"), 1032, 776);
   ASSERT_EQ(voxelpose.size(), s.cameras.size());
   for (size_t c = 0; c < voxelpose.size(); ++c) {
@@ -488,7 +496,7 @@ TEST(Shelf4daFixture, CalibrationIsVoxelPoseShelfWithRotationsCounted) {
   EXPECT_LT(rotations->worst, 1e-5);
 
   // Real OpenPose scores slightly above 1 are clamped and counted per file.
-  const Sequence full = ReadShelf4da(Request(test::SharedData(kBundle)))[0];
+  const Sequence full = ReadDataset(Request(test::SharedData(kBundle)))[0];
   const InputWarning* cam1 = FindWarning(full.warnings, "1.txt", "scores above 1 clamped to 1");
   const InputWarning* cam2 = FindWarning(full.warnings, "2.txt", "scores above 1 clamped to 1");
   ASSERT_NE(cam1, nullptr);
@@ -515,7 +523,7 @@ TEST(Shelf4daFixture, CalibrationIsVoxelPoseShelfWithRotationsCounted) {
 TEST(Shelf4daFixture, AssociationFindsTheAnnotatedPersonsWithFewFragments) {
   RPT_REQUIRE_SHARED_DATA(std::string(kBundle) + "/gt.txt");
   const fs::path root = test::SharedData(kBundle);
-  const Sequence s = ReadShelf4da(Request(root))[0];
+  const Sequence s = ReadDataset(Request(root))[0];
   const std::vector<std::string> limb_joints = {"shoulder_left", "shoulder_right", "elbow_left", "elbow_right",
                                                 "wrist_left",    "wrist_right",    "hip_left",   "hip_right",
                                                 "knee_left",     "knee_right",     "ankle_left", "ankle_right"};

@@ -17,6 +17,7 @@
 #include "core/joints.h"
 #include "datasets/io/mat.h"
 #include "datasets/readers/shelf_campus.h"
+#include "datasets/registry.h"
 #include "tests/datasets/io_test_util.h"
 #include "tests/error_message.h"
 #include "tests/test_data.h"
@@ -51,7 +52,7 @@ int PersonWithTrack(const Poses3D& gt, int track) {
 
 TEST(ShelfReader, FixtureCamerasAndGroundTruth) {
   RPT_REQUIRE_SHARED_DATA("shelf/actorsGT.mat");
-  const std::vector<Sequence> sequences = ReadShelf(Request("shelf", test::SharedData("shelf"), {{"frames", "0-2"}}));
+  const std::vector<Sequence> sequences = ReadDataset(Request("shelf", test::SharedData("shelf"), {{"frames", "0-2"}}));
   ASSERT_EQ(sequences.size(), 1u);
   const Sequence& shelf = sequences[0];
   EXPECT_EQ(shelf.name, "shelf");
@@ -97,7 +98,7 @@ TEST(ShelfReader, FixtureCamerasAndGroundTruth) {
 
 TEST(ShelfReader, ProjectionReproducesActor2D) {
   RPT_REQUIRE_SHARED_DATA("shelf/actorsGT.mat");
-  const Sequence shelf = ReadShelf(Request("shelf", test::SharedData("shelf"), {{"frames", "0-2"}}))[0];
+  const Sequence shelf = ReadDataset(Request("shelf", test::SharedData("shelf"), {{"frames", "0-2"}}))[0];
   const io::MatFile mat = io::ReadMat(test::SharedData("shelf/actorsGT.mat"));
   const io::MatValue& views = mat.Get("actor2D").Cell(0).Cell(0);  // actor 0, frame 0
   const Poses3D& gt = shelf.frames[0].gt;
@@ -130,7 +131,7 @@ TEST(ShelfReader, ProjectionReproducesActor2D) {
 TEST(ShelfReader, VoxelPoseDetectionsAttach) {
   RPT_REQUIRE_SHARED_DATA("shelf/pred_shelf_maskrcnn_hrnet_coco.pkl");
   const Sequence shelf =
-      ReadShelf(Request("shelf", test::SharedData("shelf"), {{"frames", "0-2"}, {"detections", "voxelpose"}}))[0];
+      ReadDataset(Request("shelf", test::SharedData("shelf"), {{"frames", "0-2"}, {"detections", "voxelpose"}}))[0];
   EXPECT_EQ(shelf.detection_joints, CocoBodyJoints());
   for (const SequenceFrame& frame : shelf.frames) {
     ASSERT_EQ(frame.views.size(), 5u);
@@ -144,24 +145,24 @@ TEST(ShelfReader, VoxelPoseDetectionsAttach) {
 
 TEST(ShelfReader, DefaultFramesExceedTheFixture) {
   RPT_REQUIRE_SHARED_DATA("shelf/actorsGT.mat");
-  const std::string message = test::InputErrorOf([] { ReadShelf(Request("shelf", test::SharedData("shelf"), {})); });
+  const std::string message = test::InputErrorOf([] { ReadDataset(Request("shelf", test::SharedData("shelf"), {})); });
   EXPECT_THAT(message, HasSubstr("actorsGT.mat: frame 600 requested but actor3D has 3 frames (0-2)"));
 }
 
 TEST(ShelfReader, ActorsAndNoseProxyParams) {
   RPT_REQUIRE_SHARED_DATA("shelf/actorsGT.mat");
-  const Sequence only0 = ReadShelf(
+  const Sequence only0 = ReadDataset(
       Request("shelf", test::SharedData("shelf"), {{"frames", "1"}, {"actors", "0"}, {"nose_proxy", "top"}}))[0];
   ASSERT_EQ(only0.frames.size(), 1u);
   EXPECT_EQ(only0.frames[0].id, "shelf_000001");
   ASSERT_EQ(only0.frames[0].gt.track_ids, (std::vector<int>{0}));
   EXPECT_EQ(Joint(only0.frames[0].gt, 0, 14), Joint(only0.frames[0].gt, 0, 13));
   const Sequence bottom =
-      ReadShelf(Request("shelf", test::SharedData("shelf"), {{"frames", "1"}, {"nose_proxy", "bottom"}}))[0];
+      ReadDataset(Request("shelf", test::SharedData("shelf"), {{"frames", "1"}, {"nose_proxy", "bottom"}}))[0];
   const int actor0 = PersonWithTrack(bottom.frames[0].gt, 0);
   EXPECT_EQ(Joint(bottom.frames[0].gt, actor0, 14), Joint(bottom.frames[0].gt, actor0, 12));
   EXPECT_THAT(test::InputErrorOf([] {
-                ReadShelf(Request("shelf", test::SharedData("shelf"), {{"frames", "0-2"}, {"actors", "0,4"}}));
+                ReadDataset(Request("shelf", test::SharedData("shelf"), {{"frames", "0-2"}, {"actors", "0,4"}}));
               }),
               HasSubstr("actorsGT.mat: actor 4 requested but actor3D has 4 actors (0-3)"));
 }
@@ -169,7 +170,7 @@ TEST(ShelfReader, ActorsAndNoseProxyParams) {
 TEST(CampusReader, FixtureGroundTruthAndProjection) {
   RPT_REQUIRE_SHARED_DATA("campus/actorsGT.mat");
   const std::vector<Sequence> sequences =
-      ReadCampus(Request("campus", test::SharedData("campus"), {{"frames", "0-2"}}));
+      ReadDataset(Request("campus", test::SharedData("campus"), {{"frames", "0-2"}}));
   ASSERT_EQ(sequences.size(), 1u);
   const Sequence& campus = sequences[0];
   EXPECT_EQ(campus.name, "campus");
@@ -198,7 +199,7 @@ TEST(CampusReader, FixtureGroundTruthAndProjection) {
 TEST(CampusReader, EmptyDetectionCacheGivesFramesWithoutPersons) {
   RPT_REQUIRE_SHARED_DATA("campus/pred_campus_maskrcnn_hrnet_coco.pkl");
   const Sequence campus =
-      ReadCampus(Request("campus", test::SharedData("campus"), {{"frames", "0-2"}, {"detections", "voxelpose"}}))[0];
+      ReadDataset(Request("campus", test::SharedData("campus"), {{"frames", "0-2"}, {"detections", "voxelpose"}}))[0];
   EXPECT_EQ(campus.detection_joints, CocoBodyJoints());
   for (const SequenceFrame& frame : campus.frames) {
     ASSERT_EQ(frame.views.size(), 3u);
@@ -291,7 +292,7 @@ TEST(ShelfReader, GeneratedFilesGroundTruth) {
     SCOPED_TRACE(compressed ? "compressed" : "uncompressed");
     test::TempDir dir;
     WriteShelfRoot(dir, ActorsMat(compressed));
-    const Sequence shelf = ReadShelf(Request("shelf", dir.path(), {{"frames", "0-3"}, {"fps", "50"}}))[0];
+    const Sequence shelf = ReadDataset(Request("shelf", dir.path(), {{"frames", "0-3"}, {"fps", "50"}}))[0];
     ASSERT_EQ(shelf.cameras.size(), 3u);
     EXPECT_EQ(shelf.cameras[1].model, DistortionModel::kOpenCV);
     EXPECT_EQ(shelf.cameras[1].dist, (std::array<double, 5>{0.01, 0.002, 0.001, 0.0, 0.0}));
@@ -320,7 +321,7 @@ TEST(ShelfReader, GeneratedFilesGroundTruth) {
 TEST(ShelfReader, RotationsWithSixDigitsAreCountedOnTheSequence) {
   test::TempDir dir;
   WriteShelfRoot(dir, ActorsMat(false), CalibrationJson(true, 6));
-  const Sequence shelf = ReadShelf(Request("shelf", dir.path(), {{"frames", "0-1"}}))[0];
+  const Sequence shelf = ReadDataset(Request("shelf", dir.path(), {{"frames", "0-1"}}))[0];
   for (const Camera& camera : shelf.cameras) {
     EXPECT_LT((camera.R.transpose() * camera.R - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff(), 1e-12);
   }
@@ -328,18 +329,19 @@ TEST(ShelfReader, RotationsWithSixDigitsAreCountedOnTheSequence) {
   EXPECT_EQ(shelf.warnings.items()[0].source, (dir.path() / "calibration_shelf.json").string());
   EXPECT_EQ(shelf.warnings.items()[0].what, "rotations re-orthonormalised");
   EXPECT_EQ(shelf.warnings.items()[0].count, 3);
-  EXPECT_EQ(ReadShelf(Request("shelf", dir.path(), {{"frames", "0"}}))[0].warnings.total(), 3);
+  EXPECT_EQ(ReadDataset(Request("shelf", dir.path(), {{"frames", "0"}}))[0].warnings.total(), 3);
   WriteShelfRoot(dir, ActorsMat(false));
-  EXPECT_TRUE(ReadShelf(Request("shelf", dir.path(), {{"frames", "0"}}))[0].warnings.empty()) << "17 digits: round-off";
+  EXPECT_TRUE(ReadDataset(Request("shelf", dir.path(), {{"frames", "0"}}))[0].warnings.empty())
+      << "17 digits: round-off";
 }
 
 TEST(ShelfReader, ActorSelectionOnGeneratedFiles) {
   test::TempDir dir;
   WriteShelfRoot(dir, ActorsMat(false));
-  const Sequence shelf = ReadShelf(Request("shelf", dir.path(), {{"frames", "1"}, {"actors", "1"}}))[0];
+  const Sequence shelf = ReadDataset(Request("shelf", dir.path(), {{"frames", "1"}, {"actors", "1"}}))[0];
   EXPECT_EQ(shelf.frames[0].gt.track_ids, (std::vector<int>{1}));
   EXPECT_THAT(test::InputErrorOf([&] {
-                ReadShelf(Request("shelf", dir.path(), {{"actors", "2"}, {"frames", "0"}}));
+                ReadDataset(Request("shelf", dir.path(), {{"actors", "2"}, {"frames", "0"}}));
               }),
               HasSubstr("actor 2 requested but actor3D has 2 actors (0-1)"));
 }
@@ -348,23 +350,23 @@ TEST(ShelfReader, MalformedInputNamesFileAndPlace) {
   test::TempDir dir;
   // No files at all: the calibration is read first.
   EXPECT_THAT(test::InputErrorOf([&] {
-                ReadShelf(Request("shelf", dir.path(), {{"frames", "0"}}));
+                ReadDataset(Request("shelf", dir.path(), {{"frames", "0"}}));
               }),
               HasSubstr((dir.path() / "calibration_shelf.json").string() + ": file not found"));
   EXPECT_THAT(test::InputErrorOf([&] {
-                ReadShelf(Request("shelf", dir.path() / "nothing", {{"frames", "0"}}));
+                ReadDataset(Request("shelf", dir.path() / "nothing", {{"frames", "0"}}));
               }),
               HasSubstr("is not a directory"));
 
   WriteShelfRoot(dir, ActorsMat(false), CalibrationJson(/*first_camera_has_R=*/false));
   EXPECT_THAT(test::InputErrorOf([&] {
-                ReadShelf(Request("shelf", dir.path(), {{"frames", "0"}}));
+                ReadDataset(Request("shelf", dir.path(), {{"frames", "0"}}));
               }),
               HasSubstr("calibration_shelf.json: /0/R: missing"));
 
   WriteShelfRoot(dir, ActorsMat(false));
   EXPECT_THAT(test::InputErrorOf([&] {
-                ReadShelf(Request("shelf", dir.path(), {{"frames", "2-4"}}));
+                ReadDataset(Request("shelf", dir.path(), {{"frames", "2-4"}}));
               }),
               HasSubstr("actorsGT.mat: frame 4 requested but actor3D has 4 frames (0-3)"));
 
@@ -373,24 +375,24 @@ TEST(ShelfReader, MalformedInputNamesFileAndPlace) {
   nan_pose[20] = std::numeric_limits<double>::quiet_NaN();
   WriteShelfRoot(dir, ActorsMat(false, m::Matrix(m::kDoubleClass, {14, 3}, "", m::Doubles(nan_pose))));
   EXPECT_THAT(test::InputErrorOf([&] {
-                ReadShelf(Request("shelf", dir.path(), {{"frames", "0-3"}}));
+                ReadDataset(Request("shelf", dir.path(), {{"frames", "0-3"}}));
               }),
               HasSubstr("actorsGT.mat: actor3D{1,2}{2,1}: contains NaN or infinity"));
   WriteShelfRoot(dir,
                  ActorsMat(false, m::Matrix(m::kDoubleClass, {13, 3}, "", m::Doubles(std::vector<double>(39, 1.0)))));
   EXPECT_THAT(test::InputErrorOf([&] {
-                ReadShelf(Request("shelf", dir.path(), {{"frames", "0-3"}}));
+                ReadDataset(Request("shelf", dir.path(), {{"frames", "0-3"}}));
               }),
               HasSubstr("actorsGT.mat: actor3D{1,2}{2,1}: expected a 14x3 numeric matrix, got 13x3 double"));
   // Frames outside the selection are not inspected.
-  EXPECT_NO_THROW(ReadShelf(Request("shelf", dir.path(), {{"frames", "0,2-3"}})));
+  EXPECT_NO_THROW(ReadDataset(Request("shelf", dir.path(), {{"frames", "0,2-3"}})));
 
   // A file without actor3D.
   test::ByteVec other = m::Header();
   test::Append(other, m::Matrix(m::kDoubleClass, {1, 1}, "x", m::Doubles({1})));
   WriteShelfRoot(dir, other);
   EXPECT_THAT(test::InputErrorOf([&] {
-                ReadShelf(Request("shelf", dir.path(), {{"frames", "0"}}));
+                ReadDataset(Request("shelf", dir.path(), {{"frames", "0"}}));
               }),
               HasSubstr("variable 'actor3D' not found"));
 }
@@ -399,7 +401,7 @@ TEST(ShelfReader, BadParamsAreConfigErrors) {
   test::TempDir dir;
   WriteShelfRoot(dir, ActorsMat(false));
   const auto config_error = [&](std::map<std::string, std::string> params) {
-    return test::ErrorMessage<ConfigError>([&] { ReadShelf(Request("shelf", dir.path(), params)); });
+    return test::ErrorMessage<ConfigError>([&] { ReadDataset(Request("shelf", dir.path(), params)); });
   };
   EXPECT_THAT(config_error({{"frames", "0"}, {"nose_proxy", "middle"}}),
               HasSubstr("shelf.nose_proxy: 'middle' is not one of center, top, bottom"));
@@ -423,12 +425,12 @@ TEST(CampusReader, InfoDefaultsAndGeneratedFiles) {
   dir.Write("actorsGT.mat", ActorsMat(false));
   const std::string calibration = CalibrationJson();
   dir.Write("calibration_campus.json", test::ByteVec(calibration.begin(), calibration.end()));
-  const Sequence campus = ReadCampus(Request("campus", dir.path(), {{"frames", "0-3:3"}}))[0];
+  const Sequence campus = ReadDataset(Request("campus", dir.path(), {{"frames", "0-3:3"}}))[0];
   ASSERT_EQ(campus.frames.size(), 2u);
   EXPECT_EQ(campus.frames[1].id, "campus_000003");
   EXPECT_EQ(campus.cameras[0].width, 360);
   EXPECT_THAT(test::InputErrorOf([&] {
-                ReadCampus(Request("campus", dir.path(), {{"frames", "0"}, {"detections", "voxelpose"}}));
+                ReadDataset(Request("campus", dir.path(), {{"frames", "0"}, {"detections", "voxelpose"}}));
               }),
               HasSubstr("pred_campus_maskrcnn_hrnet_coco.pkl: file not found"));
 }

@@ -15,6 +15,7 @@
 
 #include "core/errors.h"
 #include "core/joints.h"
+#include "datasets/readers/detections_file.h"
 #include "datasets/readers/voxelpose_calibration.h"
 #include "datasets/readers/voxelpose_detections.h"
 #include "tests/datasets/io_test_util.h"
@@ -282,35 +283,21 @@ test::ByteVec CachePickle(const std::vector<CacheEntry>& entries) {
   return w.bytes;
 }
 
-Sequence TwoCameraSequence() {
-  Sequence sequence;
-  sequence.name = "shelf";
-  for (const char* name : {"0", "1"}) {
-    Camera camera;
-    camera.name = name;
-    sequence.cameras.push_back(camera);
-  }
-  for (const char* id : {"shelf_000005", "shelf_000006", "shelf_000300"}) {
-    SequenceFrame frame;
-    frame.id = id;
-    sequence.frames.push_back(frame);
-  }
-  return sequence;
-}
+// The cache read for cameras "0" and "1" of a sequence whose frame ids are "shelf_<frame>".
+const VoxelPoseDetectionsOptions kTwoCameras = {{"0", "1"}, "shelf"};
 
 TEST(VoxelPoseDetections, KeysMapToFramesAndCameras) {
   test::TempDir dir;
   const auto path = dir.Write("pred.pkl", CachePickle({
                                               {"0_5", {100, 200}, 1.25},  // above 1: clamped, counted
                                               {"1_5", {}},                // nothing detected
-                                              {"3_5", {10}},              // camera not in the sequence
-                                              {"0_7", {10}},              // frame not in the sequence
+                                              {"3_5", {10}},              // camera not asked for
+                                              {"0_7", {10}},
                                               {"1_300", {50}, 0.4},
                                           }));
-  const Sequence sequence = TwoCameraSequence();
-  const Detections detections = ReadVoxelPoseDetections(path, sequence, "shelf");
+  const Detections detections = ReadVoxelPoseDetections(path, kTwoCameras);
   EXPECT_EQ(detections.joints, CocoBodyJoints());
-  ASSERT_EQ(detections.frames.size(), 2u);
+  ASSERT_EQ(detections.frames.size(), 3u);  // every frame of the file, ascending
 
   const FrameDetections& f5 = detections.frames[0];
   EXPECT_EQ(f5.frame_id, "shelf_000005");
@@ -323,12 +310,14 @@ TEST(VoxelPoseDetections, KeysMapToFramesAndCameras) {
   EXPECT_EQ(f5.views[0].Person(0)(2, 0), 1.0);
   EXPECT_EQ(f5.views[0].Person(0)(2, 1), 0.5);
 
-  const FrameDetections& f300 = detections.frames[1];
+  EXPECT_EQ(detections.frames[1].frame_id, "shelf_000007");
+  EXPECT_EQ(detections.frames[1].cameras, (std::vector<std::string>{"0"}));
+  const FrameDetections& f300 = detections.frames[2];
   EXPECT_EQ(f300.frame_id, "shelf_000300");
   EXPECT_EQ(f300.cameras, (std::vector<std::string>{"1"}));
   EXPECT_DOUBLE_EQ(f300.views[0].Person(0)(2, 0), 0.4);
-  // Two detections of key 0_5 with score 1.25; keys of frames outside the sequence are not read,
-  // the key of camera 3 (not in the sequence) is counted as unused input.
+  // Two detections of key 0_5 with score 1.25; the key of camera 3 (not asked for) is counted as
+  // unused input.
   ASSERT_EQ(detections.warnings.items().size(), 2u);
   EXPECT_EQ(detections.warnings.items()[0].Line(),
             path.string() + ": 1 keys of cameras not in the calibration ignored (cameras '3')");
@@ -336,10 +325,68 @@ TEST(VoxelPoseDetections, KeysMapToFramesAndCameras) {
   EXPECT_EQ(detections.warnings.items()[1].Line(), path.string() + ": 2 scores above 1 clamped to 1 (largest = 1.25)");
 }
 
+// Without camera names every camera of the keys is read (sorted); without a frame-id prefix the
+// keys cannot become frame ids.
+TEST(VoxelPoseDetections, CamerasDefaultToTheFileAndThePrefixIsRequired) {
+  test::TempDir dir;
+  const auto path = dir.Write("pred.pkl", CachePickle({{"1_5", {100}}, {"0_6", {7}}, {"3_5", {10}}}));
+  const Detections detections = ReadVoxelPoseDetections(path, {{}, "campus"});
+  ASSERT_EQ(detections.frames.size(), 2u);
+  EXPECT_EQ(detections.frames[0].frame_id, "campus_000005");
+  EXPECT_EQ(detections.frames[0].cameras, (std::vector<std::string>{"1", "3"}));
+  EXPECT_EQ(detections.frames[1].cameras, (std::vector<std::string>{"0"}));
+  EXPECT_TRUE(detections.warnings.empty());
+  EXPECT_THAT(
+      test::ConfigErrorOf([&] {
+        ReadVoxelPoseDetections(path, {{"0"}, ""});
+      }),
+      HasSubstr("pred.pkl: a VoxelPose cache is keyed \"{camera}_{frame}\": reading it needs the frame-id prefix"));
+}
+
+// The file is parsed once; a frame's views are converted when asked for, so a bad value in a frame
+// that is never asked for is never seen.
+TEST(VoxelPoseDetections, FileConvertsOneFrameWhenAskedFor) {
+  test::TempDir dir;
+  CacheEntry bad{"1_9", {1}};
+  bad.score = std::nan("");
+  const auto path = dir.Write("pred.pkl", CachePickle({{"0_5", {100}, 1.2}, {"1_5", {3}}, bad}));
+  const VoxelPoseDetectionsFile file(path, {"0", "1", "2"});
+  EXPECT_EQ(file.frames(), (std::vector<long>{5, 9}));
+  EXPECT_TRUE(file.HasFrame(9));
+  EXPECT_FALSE(file.HasFrame(6));
+  InputWarnings warnings;
+  std::vector<Poses2D> views;
+  file.ReadFrame(5, &views, &warnings);
+  ASSERT_EQ(views.size(), 3u);
+  EXPECT_EQ(views[0].num_persons(), 1);
+  EXPECT_EQ(views[1].num_persons(), 1);
+  EXPECT_EQ(views[2].num_persons(), 0);
+  EXPECT_EQ(views[2].num_joints, 17);
+  EXPECT_EQ(views[0].Person(0)(2, 0), 1.0);
+  test::ExpectOneWarning(warnings, path.string(), test::kScoresClamped, 1);
+  file.ReadFrame(6, &views, &warnings);  // no key: every view empty
+  for (const Poses2D& view : views) EXPECT_EQ(view.num_persons(), 0);
+  EXPECT_THAT(test::InputErrorOf([&] { file.ReadFrame(9, &views, &warnings); }),
+              HasSubstr(path.string() + ": key '1_9'[0].pred: contains NaN or infinity"));
+}
+
+// ReadDetectionsFile reads a .pkl (the one dispatch on what a detections path is).
+TEST(VoxelPoseDetections, DetectionsFileReadsThePickle) {
+  test::TempDir dir;
+  const auto path = dir.Write("pred.pkl", CachePickle({{"0_5", {100}}, {"1_300", {50}, 0.4}}));
+  DetectionsFileOptions options;
+  options.voxelpose = kTwoCameras;
+  const Detections detections = ReadDetectionsFile(path, options);
+  ASSERT_EQ(detections.frames.size(), 2u);
+  EXPECT_EQ(detections.frames[1].frame_id, "shelf_000300");
+  EXPECT_DOUBLE_EQ(detections.frames[1].views[0].Person(0)(2, 0), 0.4);
+  EXPECT_THAT(test::ConfigErrorOf([&] { ReadDetectionsFile(path); }), HasSubstr("frame-id prefix"));
+}
+
 TEST(VoxelPoseDetections, ScoresSlightlyAboveOneAreClampedAndCounted) {
   test::TempDir dir;
   const auto path = dir.Write("pred.pkl", CachePickle({{"0_5", {100}, 1.008}, {"1_5", {100}, 1.018}, {"0_6", {7}, 1.0}}));
-  const Detections detections = ReadVoxelPoseDetections(path, TwoCameraSequence(), "shelf");
+  const Detections detections = ReadVoxelPoseDetections(path, kTwoCameras);
   ASSERT_EQ(detections.frames.size(), 2u);
   EXPECT_EQ(detections.frames[0].views[0].Person(0)(2, 0), 1.0);
   EXPECT_EQ(detections.frames[0].views[1].Person(0)(2, 0), 1.0);
@@ -350,30 +397,28 @@ TEST(VoxelPoseDetections, ScoresSlightlyAboveOneAreClampedAndCounted) {
 
 TEST(VoxelPoseDetections, NegativeLargeOrNanScoresNameFileAndKey) {
   test::TempDir dir;
-  const Sequence sequence = TwoCameraSequence();
   for (const double score : {1.6, -0.1}) {
     const auto path = dir.Write("bad.pkl", CachePickle({{"0_5", {100}, 0.9}, {"1_6", {100}, score}}));
-    EXPECT_THAT(test::InputErrorOf([&] { ReadVoxelPoseDetections(path, sequence, "shelf"); }),
+    EXPECT_THAT(test::InputErrorOf([&] { ReadVoxelPoseDetections(path, kTwoCameras); }),
                 HasSubstr(path.string() + ": key '1_6'[0].pred: row 0: score " + (score > 0 ? "1.6" : "-0.1") +
                           " outside [0, 1]"));
   }
   const auto nan = dir.Write("nan.pkl", CachePickle({{"1_6", {100}, std::nan("")}}));
-  EXPECT_THAT(test::InputErrorOf([&] { ReadVoxelPoseDetections(nan, sequence, "shelf"); }),
+  EXPECT_THAT(test::InputErrorOf([&] { ReadVoxelPoseDetections(nan, kTwoCameras); }),
               HasSubstr(nan.string() + ": key '1_6'[0].pred: contains NaN or infinity"));
 }
 
 TEST(VoxelPoseDetections, MalformedCacheNamesFileAndKey) {
   test::TempDir dir;
-  const Sequence sequence = TwoCameraSequence();
   const auto bad_key = dir.Write("key.pkl", CachePickle({{"camera0", {1}}}));
-  EXPECT_THAT(test::InputErrorOf([&] { ReadVoxelPoseDetections(bad_key, sequence, "shelf"); }),
+  EXPECT_THAT(test::InputErrorOf([&] { ReadVoxelPoseDetections(bad_key, kTwoCameras); }),
               HasSubstr(bad_key.string() + ": top level: key 'camera0' is not of the form"));
 
   CacheEntry wrong_shape{"0_5", {1}};
   wrong_shape.shape = {16, 3};
   wrong_shape.score = 0.5;
   const auto shape = dir.Write("shape.pkl", CachePickle({wrong_shape}));
-  const std::string message = test::InputErrorOf([&] { ReadVoxelPoseDetections(shape, sequence, "shelf"); });
+  const std::string message = test::InputErrorOf([&] { ReadVoxelPoseDetections(shape, kTwoCameras); });
   EXPECT_THAT(message, HasSubstr(shape.string()));
   EXPECT_THAT(message, HasSubstr("0_5"));
   EXPECT_THAT(message, HasSubstr("pred"));
@@ -381,29 +426,19 @@ TEST(VoxelPoseDetections, MalformedCacheNamesFileAndKey) {
   CacheEntry nan{"1_6", {1}};
   nan.score = std::nan("");
   const auto nan_path = dir.Write("nan.pkl", CachePickle({nan}));
-  EXPECT_THAT(test::InputErrorOf([&] { ReadVoxelPoseDetections(nan_path, sequence, "shelf"); }),
+  EXPECT_THAT(test::InputErrorOf([&] { ReadVoxelPoseDetections(nan_path, kTwoCameras); }),
               HasSubstr("contains NaN or infinity"));
 
-  EXPECT_THAT(test::InputErrorOf([&] { ReadVoxelPoseDetections(dir.path() / "absent.pkl", sequence, "shelf"); }),
+  EXPECT_THAT(test::InputErrorOf([&] { ReadVoxelPoseDetections(dir.path() / "absent.pkl", kTwoCameras); }),
               HasSubstr("absent.pkl: file not found"));
 }
 
 TEST(VoxelPoseDetections, ShelfFixtureKeys) {
   RPT_REQUIRE_SHARED_DATA("shelf/pred_shelf_maskrcnn_hrnet_coco.pkl");
-  Sequence sequence;
-  for (int c = 0; c < 5; ++c) {
-    Camera camera;
-    camera.name = std::to_string(c);
-    sequence.cameras.push_back(camera);
-  }
-  for (const char* id : {"shelf_000000", "shelf_000001", "shelf_000002"}) {
-    SequenceFrame frame;
-    frame.id = id;
-    sequence.frames.push_back(frame);
-  }
-  const Detections detections =
-      ReadVoxelPoseDetections(test::SharedData("shelf/pred_shelf_maskrcnn_hrnet_coco.pkl"), sequence, "shelf");
+  const Detections detections = ReadVoxelPoseDetections(test::SharedData("shelf/pred_shelf_maskrcnn_hrnet_coco.pkl"),
+                                                        {{"0", "1", "2", "3", "4"}, "shelf"});
   ASSERT_EQ(detections.frames.size(), 3u);
+  EXPECT_EQ(detections.frames[2].frame_id, "shelf_000002");
   for (const FrameDetections& frame : detections.frames) {
     ASSERT_EQ(frame.views.size(), 5u);
     for (const Poses2D& view : frame.views) {

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "datasets/detections.h"
-#include "engine/dataset_registry.h"
+#include "datasets/registry.h"
 #include "tests/test_data.h"
 
 namespace rpt::engine {

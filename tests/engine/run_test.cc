@@ -82,7 +82,7 @@ TEST(RunTest, StreamedFramesGiveTheNumbersOfTheSequencesInMemory) {
 
   options.threads = 2;
   std::vector<std::unique_ptr<FrameSource>> sources;
-  sources.push_back(std::make_unique<CountingSource>(StreamSynthetic(Scene(90))));
+  sources.push_back(std::make_unique<CountingSource>(OpenSyntheticSequence(Scene(90))));
   sources.push_back(std::make_unique<SequenceSource>(whole[1]));
   PredictionsCollector streamed_predictions(2);
   const RunResult streamed = engine::Run(std::move(sources), options, &streamed_predictions);
@@ -126,7 +126,7 @@ TEST(RunTest, HoldsOneInputFramePerSequenceWhateverTheLength) {
   for (const int frames : {10, 3000}) {
     CountingSource::Counts counts;  // the run frees each source once exhausted
     std::vector<std::unique_ptr<FrameSource>> sources;
-    sources.push_back(std::make_unique<CountingSource>(StreamSynthetic(Scene(frames)), &counts));
+    sources.push_back(std::make_unique<CountingSource>(OpenSyntheticSequence(Scene(frames)), &counts));
     RunOptions options;
     options.checks = DetectionCheckOptions{};
     const RunResult run = engine::Run(std::move(sources), options);
@@ -201,7 +201,7 @@ TEST(SimulatedDetectionsSourceTest, SameDetectionsAsSimulatingTheWholeSequence) 
   simulation.seed = 11;
   simulation.detector = "hard";
   SimulateDetections(simulation, &whole[0]);
-  SimulatedDetectionsSource source(StreamSynthetic(params), simulation);
+  SimulatedDetectionsSource source(OpenSyntheticSequence(params), simulation);
   EXPECT_EQ(source.header().detection_joints, whole[0].detection_joints);
   const Sequence streamed = Materialize(source);
   ASSERT_EQ(streamed.frames.size(), whole[0].frames.size());

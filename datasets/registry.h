@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// The dataset readers by name (one line per reader in registry.cc).
+// The dataset readers by name (one line per reader in registry.cc), and the one place a dataset
+// request is dispatched to its reader.
 #pragma once
 
 #include <functional>
@@ -11,13 +12,12 @@
 #include "datasets/frame_source.h"
 #include "datasets/sequence.h"
 
-namespace rpt::engine {
+namespace rpt {
 
 struct DatasetEntry {
   DatasetInfo info;
-  std::function<std::vector<Sequence>(const DatasetRequest&)> read;
-  // Readers that stream frame by frame (datasets/frame_source.h); empty: the reader loads whole.
-  std::function<std::vector<std::unique_ptr<FrameSource>>(const DatasetRequest&)> stream = {};
+  // Open<Name> (datasets/dataset_request.h): one frame source per sequence.
+  std::function<std::vector<std::unique_ptr<FrameSource>>(const DatasetRequest&)> open;
 };
 
 const std::vector<DatasetEntry>& DatasetRegistry();
@@ -27,10 +27,12 @@ const std::vector<DatasetEntry>& DatasetRegistry();
 // "<!-- dataset-params:begin -->" and "<!-- dataset-params:end -->" markers.
 std::string DatasetParamsMarkdown();
 
-// The sequences of request.dataset as frame sources (one per sequence). Throws ConfigError for an
-// unknown dataset (listing the known ones) and what the reader throws.
+// The sequences of request.dataset as frame sources, one per sequence, from its reader. Throws
+// ConfigError for an unknown dataset (listing the known ones) and what the reader throws before
+// the first frame (missing files, unknown cameras, bad parameters).
 std::vector<std::unique_ptr<FrameSource>> OpenDataset(const DatasetRequest& request);
-// The same sequences read whole (every source materialised; not validated: OpenInput validates).
+// OpenDataset's sources materialised (MaterializeAll): every frame of every sequence in memory.
+// Frames are not validated here (the consumer validates: datasets/sequence.h).
 std::vector<Sequence> ReadDataset(const DatasetRequest& request);
 
-}  // namespace rpt::engine
+}  // namespace rpt

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "engine/dataset_registry.h"
+#include "datasets/registry.h"
 
 #include "core/errors.h"
 #include "core/text.h"
@@ -13,20 +13,20 @@
 #include "datasets/readers/shelf_campus.h"
 #include "datasets/readers/synthetic_dataset.h"
 
-namespace rpt::engine {
+namespace rpt {
 
 const std::vector<DatasetEntry>& DatasetRegistry() {
   static const std::vector<DatasetEntry> entries = {
-      {ShelfInfo(), ReadShelf},
-      {Shelf4daInfo(), ReadShelf4da},
-      {CampusInfo(), ReadCampus},
-      {PanopticInfo(), ReadPanoptic, StreamPanoptic},
-      {Human36mInfo(), ReadHuman36m},
-      {H3wbInfo(), ReadH3wb},
-      {EgohumansInfo(), ReadEgohumans},
-      {MvorInfo(), ReadMvor},
-      {GenericInfo(), ReadGeneric},
-      {SyntheticInfo(), ReadSynthetic, StreamSyntheticDataset},
+      {ShelfInfo(), OpenShelf},          // readers/shelf_campus.h
+      {Shelf4daInfo(), OpenShelf4da},    // readers/shelf_4da.h
+      {CampusInfo(), OpenCampus},        // readers/shelf_campus.h
+      {PanopticInfo(), OpenPanoptic},    // readers/panoptic.h
+      {Human36mInfo(), OpenHuman36m},    // readers/human36m.h
+      {H3wbInfo(), OpenH3wb},            // readers/h3wb.h
+      {EgohumansInfo(), OpenEgohumans},  // readers/egohumans.h
+      {MvorInfo(), OpenMvor},            // readers/mvor.h
+      {GenericInfo(), OpenGeneric},      // readers/generic_labels.h
+      {SyntheticInfo(), OpenSynthetic},  // readers/synthetic_dataset.h
   };
   return entries;
 }
@@ -63,14 +63,9 @@ const DatasetEntry& FindDataset(const std::string& name) {
 }  // namespace
 
 std::vector<std::unique_ptr<FrameSource>> OpenDataset(const DatasetRequest& request) {
-  const DatasetEntry& entry = FindDataset(request.dataset);
-  return entry.stream ? entry.stream(request) : SourcesOf(entry.read(request));
+  return FindDataset(request.dataset).open(request);
 }
 
-std::vector<Sequence> ReadDataset(const DatasetRequest& request) {
-  std::vector<Sequence> sequences;
-  for (const auto& source : OpenDataset(request)) sequences.push_back(Materialize(*source));
-  return sequences;
-}
+std::vector<Sequence> ReadDataset(const DatasetRequest& request) { return MaterializeAll(OpenDataset(request)); }
 
-}  // namespace rpt::engine
+}  // namespace rpt
