@@ -32,6 +32,14 @@ Poses3D Points(const std::vector<Eigen::Vector3d>& xyz, const std::vector<int>& 
   return persons;
 }
 
+// Step 16 on `frame` at time `t`: the first `num_detected` persons are smoothed.
+int Smooth(const SmoothOptions& options, double t, double unobserved_score, int num_detected, JointFilters* filters,
+           Poses3D* frame) {
+  const steps::SmoothInput input{
+      .timestamp_s = t, .max_gap_s = kMaxGap, .unobserved_score = unobserved_score, .num_detected = num_detected};
+  return steps::Smooth(options, input, filters, frame);
+}
+
 SmoothOptions Causal() {
   SmoothOptions options;
   options.mode = SmoothMode::kCausal;
@@ -67,7 +75,7 @@ TEST(SmoothCausal, ReducesJitterOnAConstantVelocityTrackAsTheAlphaBetaTheoryPred
     options.measurement_noise_m = sigma;
     options.acceleration_m_s2 = acceleration;
     const AlphaBeta theory = SteadyState(sigma, acceleration, dt);
-    TrackSmoother smoother;
+    JointFilters filters;
     std::mt19937_64 rng(7);
     std::normal_distribution<double> noise(0.0, sigma);
     double raw_sq = 0, smooth_sq = 0;
@@ -77,7 +85,7 @@ TEST(SmoothCausal, ReducesJitterOnAConstantVelocityTrackAsTheAlphaBetaTheoryPred
       const Eigen::Vector3d truth = velocity * (f * dt);
       const Eigen::Vector3d observed = truth + Eigen::Vector3d(noise(rng), noise(rng), noise(rng));
       Poses3D frame = Points({observed}, {0});
-      smoother.Apply(options, kMaxGap, 0.0, f * dt, 1, &frame);
+      Smooth(options, f * dt, 0.0, 1, &filters, &frame);
       if (f < 200) continue;  // let the gains settle
       raw_sq += (observed - truth).squaredNorm();
       smooth_sq += (frame.Person(0).col(0).head<3>() - truth).squaredNorm();
@@ -99,12 +107,12 @@ TEST(SmoothCausal, FollowsAStepWithBoundedLagAndOvershoot) {
   // 5th frame on, within 1 % from the 10th.
   const SmoothOptions options = Causal();
   const double dt = 0.04, step = 0.3;
-  TrackSmoother smoother;
+  JointFilters filters;
   std::vector<double> response;
   for (int f = 0; f < 130; ++f) {
     const double x = f < 100 ? 0.0 : step;
     Poses3D frame = Points({Eigen::Vector3d(x, 0, 1)}, {3});
-    smoother.Apply(options, kMaxGap, 0.0, f * dt, 1, &frame);
+    Smooth(options, f * dt, 0.0, 1, &filters, &frame);
     if (f >= 100) response.push_back(frame.Person(0)(0, 0) / step);
   }
   EXPECT_NEAR(response[0], SteadyState(options.measurement_noise_m, options.acceleration_m_s2, dt).alpha, 1e-6);
@@ -121,10 +129,10 @@ TEST(SmoothCausal, FollowsAStepWithBoundedLagAndOvershoot) {
 
 TEST(SmoothCausal, RestartsAfterGapsAndUnknownTimes) {
   const SmoothOptions options = Causal();
-  TrackSmoother smoother;
+  JointFilters filters;
   auto feed = [&](double t, double x) {
     Poses3D frame = Points({Eigen::Vector3d(x, 0, 1)}, {0});
-    smoother.Apply(options, kMaxGap, 0.0, t, 1, &frame);
+    Smooth(options, t, 0.0, 1, &filters, &frame);
     return frame.Person(0)(0, 0);
   };
   for (int f = 0; f < 10; ++f) feed(f * 0.04, 0.0);
@@ -139,10 +147,10 @@ TEST(SmoothCausal, RestartsAfterGapsAndUnknownTimes) {
 TEST(SmoothCausal, MissingFilledAndCoastingJointsAreLeftAloneAndTracksAreSeparate) {
   const SmoothOptions options = Causal();
   const double filled = 0.05;
-  TrackSmoother smoother;
+  JointFilters filters;
   for (int f = 0; f < 10; ++f) {
     Poses3D frame = Points({Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(5, 0, 1)}, {0, 1});
-    smoother.Apply(options, kMaxGap, filled, f * 0.04, 2, &frame);
+    Smooth(options, f * 0.04, filled, 2, &filters, &frame);
   }
   // Track 0's joint is missing, track 1's is filled, and a coasting track 2 follows them: none
   // changes and none updates its filter.
@@ -150,12 +158,12 @@ TEST(SmoothCausal, MissingFilledAndCoastingJointsAreLeftAloneAndTracksAreSeparat
   frame.Person(0)(3, 0) = 0;
   frame.Person(1)(3, 0) = filled;
   const Poses3D before = frame;
-  EXPECT_EQ(smoother.Apply(options, kMaxGap, filled, 0.40, 2, &frame), 0);
+  EXPECT_EQ(Smooth(options, 0.40, filled, 2, &filters, &frame), 0);
   EXPECT_EQ(frame.data, before.data);
   // Next frame: both tracks continue from where they were (not from the ignored values), and a
   // new track starts with its input.
   Poses3D next = Points({Eigen::Vector3d(5, 0, 1), Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(2, 2, 2)}, {1, 0, 4});
-  EXPECT_EQ(smoother.Apply(options, kMaxGap, filled, 0.44, 3, &next), 2);
+  EXPECT_EQ(Smooth(options, 0.44, filled, 3, &filters, &next), 2);
   EXPECT_LT((next.Person(0).col(0).head<3>() - Eigen::Vector3d(5, 0, 1)).norm(), 1e-9) << "track 1 kept its own state";
   EXPECT_LT((next.Person(1).col(0).head<3>() - Eigen::Vector3d(0, 0, 1)).norm(), 1e-9) << "track 0 kept its own state";
   EXPECT_EQ(next.Person(2)(0, 0), 2.0) << "a new track starts with its input";
@@ -291,6 +299,16 @@ Skeleton BodySkeleton() {
   return s;
 }
 
+// Step 15 on `frame`: the first `num_detected` persons are checked.
+int CheckBones(const BoneLengthOptions& options, const Skeleton& s, double unobserved_score, int num_detected,
+               BoneLengthHistory* history, Poses3D* frame, FrameStats* stats) {
+  BoneLengthsScratch scratch;
+  return steps::BoneLengths(
+      options,
+      {.limbs = s.limbs, .neighbour = s.neighbour, .unobserved_score = unobserved_score, .num_detected = num_detected},
+      history, &scratch, frame, stats);
+}
+
 // A person walking along x at 1 m/s with `noise_m` Gaussian noise per joint and axis.
 Poses3D Walker(int f, double noise_m, std::mt19937_64* rng, int id = 0) {
   std::normal_distribution<double> noise(0.0, noise_m);
@@ -310,13 +328,13 @@ TEST(BoneLengths, MarksExactlyTheCorruptedJoint) {
   options.enabled = true;
   for (double filled : {0.0, 0.05}) {
     SCOPED_TRACE(testing::Message() << "filled score " << filled);
-    BoneLengthChecker checker;
+    BoneLengthHistory history;
     std::mt19937_64 rng(5);
     FrameStats stats;
     for (int f = 0; f < 30; ++f) {
       Poses3D frame = Walker(f, 0.01, &rng);
       const Poses3D before = frame;
-      const int checked = checker.Apply(options, s.limbs, s.neighbour, filled, 1, &frame, &stats);
+      const int checked = CheckBones(options, s, filled, 1, &history, &frame, &stats);
       EXPECT_EQ(checked, f < options.min_observations ? 0 : 12) << "12 joints have limbs, checked once known";
       EXPECT_EQ(frame.data, before.data) << "clean frame " << f;
     }
@@ -327,7 +345,7 @@ TEST(BoneLengths, MarksExactlyTheCorruptedJoint) {
     Poses3D frame = Walker(30, 0.01, &rng);
     frame.Person(0).col(wrist).head<3>() += Eigen::Vector3d(0, 0.3, 0);
     Poses3D before = frame;
-    checker.Apply(options, s.limbs, s.neighbour, filled, 1, &frame, &stats);
+    CheckBones(options, s, filled, 1, &history, &frame, &stats);
     EXPECT_EQ(stats.bone_length_corrections, 1);
     for (int j = 0; j < 17; ++j) {
       if (j == wrist) continue;
@@ -346,7 +364,7 @@ TEST(BoneLengths, MarksExactlyTheCorruptedJoint) {
     frame.Person(0).col(elbow).head<3>() += Eigen::Vector3d(0, 0.3, 0);
     before = frame;
     stats.Reset();
-    checker.Apply(options, s.limbs, s.neighbour, filled, 1, &frame, &stats);
+    CheckBones(options, s, filled, 1, &history, &frame, &stats);
     EXPECT_EQ(stats.bone_length_corrections, 1);
     EXPECT_LE(frame.Person(0)(3, elbow), filled);
     EXPECT_EQ(Eigen::Vector4d(frame.Person(0).col(wrist)), Eigen::Vector4d(before.Person(0).col(wrist)));
@@ -359,7 +377,7 @@ TEST(BoneLengths, CleanTracksFilledJointsAndCoastingPersonsAreNeverCorrected) {
   const int elbow = FindJoint(CocoBodyJoints(), "elbow_right");
   BoneLengthOptions options;
   options.enabled = true;
-  BoneLengthChecker checker;
+  BoneLengthHistory history;
   std::mt19937_64 rng(11);
   FrameStats stats;
   for (int f = 0; f < 500; ++f) {
@@ -380,7 +398,7 @@ TEST(BoneLengths, CleanTracksFilledJointsAndCoastingPersonsAreNeverCorrected) {
       coasting.col(wrist).head<3>() += Eigen::Vector3d(1, 0, 0);
     }
     const Poses3D before = frame;
-    checker.Apply(options, s.limbs, s.neighbour, 0.05, 2, &frame, &stats);
+    CheckBones(options, s, 0.05, 2, &history, &frame, &stats);
     EXPECT_EQ(frame.data, before.data) << "frame " << f;
   }
   EXPECT_EQ(stats.bone_length_corrections, 0);
