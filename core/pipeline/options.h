@@ -408,9 +408,10 @@ void VisitFields(Visitor& v, Self& o) {
 //             (white-noise acceleration model; at a fixed frame rate its gains settle to those
 //             of an alpha-beta filter), time-aware (dt from the timestamps), online, no lag on
 //             constant velocity;
-//   offline = after a whole sequence has been triangulated (rpt eval and friends): per track and
-//             joint, a Gaussian-weighted local polynomial fit in time (Savitzky-Golay generalised
-//             to uneven times and missing frames), two-sided, so no lag; not usable online.
+//   offline = after Triangulator::Process, frames held back by their window (OfflineSmoother,
+//             offline_smoother.h): per track and joint, a Gaussian-weighted local polynomial fit
+//             in time (Savitzky-Golay generalised to uneven times and missing frames), two-sided,
+//             so no lag in the positions, but each frame comes out 3 offline_sigma_s late.
 // Neither smooths across a gap of more than track.max_gap_s or an unknown time.
 enum class SmoothMode { kOff, kCausal, kOffline };
 template <>
@@ -434,8 +435,8 @@ struct SmoothOptions {
 template <class Visitor, OptionsOf<SmoothOptions> Self>
 void VisitFields(Visitor& v, Self& o) {
   v("mode", o.mode,
-    OptionSpec{.help = "smoothing of tracked persons: causal (Kalman filter, online) or offline (two-sided, whole "
-                       "sequences; needs track.enabled)"});
+    OptionSpec{.help = "smoothing of tracked persons: causal (Kalman filter, online) or offline (two-sided, frames "
+                       "delayed by 3 offline_sigma_s; needs track.enabled)"});
   v("measurement_noise_m", o.measurement_noise_m,
     OptionSpec{.help = "causal: standard deviation of a triangulated joint's error", .unit = "m", .min = 1e-6,
                .max = 100});

@@ -19,6 +19,8 @@
 // joint whose last update is more than max_gap_s ago or at an unknown time (NaN) starts its filter
 // afresh at the observed position with an unknown velocity: its output is the input. Coasting
 // persons (after the first num_detected) are left as is.
+//
+// smooth.mode = offline is the two-sided form, run after Process: offline_smoother.h.
 #pragma once
 
 #include <Eigen/Core>

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// The optional temporal steps: causal smoothing (step 16), offline smoothing of whole sequences,
-// per-track bone-length consistency (step 15), and that all of them are off by default.
+// The optional temporal steps: causal smoothing (step 16), per-track bone-length consistency
+// (step 15), and that both are off by default. Offline smoothing: offline_smoother_test.cc.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,7 +13,6 @@
 #include "core/pipeline/bone_lengths.h"
 #include "core/pipeline/smooth.h"
 #include "core/pipeline/triangulator.h"
-#include "core/smooth_offline.h"
 #include "datasets/synthetic/detector_simulator.h"
 #include "datasets/synthetic/scene.h"
 #include "tests/pipeline/test_scene.h"
@@ -167,120 +166,6 @@ TEST(SmoothCausal, MissingFilledAndCoastingJointsAreLeftAloneAndTracksAreSeparat
   EXPECT_LT((next.Person(0).col(0).head<3>() - Eigen::Vector3d(5, 0, 1)).norm(), 1e-9) << "track 1 kept its own state";
   EXPECT_LT((next.Person(1).col(0).head<3>() - Eigen::Vector3d(0, 0, 1)).norm(), 1e-9) << "track 0 kept its own state";
   EXPECT_EQ(next.Person(2)(0, 0), 2.0) << "a new track starts with its input";
-}
-
-// --- Offline smoothing --------------------------------------------------------------------------
-
-SmoothOptions Offline(int degree) {
-  SmoothOptions options;
-  options.mode = SmoothMode::kOffline;
-  options.offline_degree = degree;
-  return options;
-}
-
-TEST(SmoothOffline, IsExactOnLinearMotionWithUnevenTimesAndMissingJoints) {
-  for (int degree : {1, 2, 3}) {
-    SCOPED_TRACE(testing::Message() << "degree " << degree);
-    std::vector<Poses3D> frames;
-    std::vector<double> times;
-    auto truth = [](double t) { return Eigen::Vector3d(0.3 + 1.2 * t, -0.5 * t, 1.0 + 0.1 * t); };
-    double t = 0;
-    for (int f = 0; f < 60; ++f) {
-      t += f % 7 == 3 ? 0.08 : 0.04;  // a dropped frame now and then
-      times.push_back(t);
-      frames.push_back(Points({truth(t)}, {0}));
-      if (f % 5 == 2) frames.back().Person(0)(3, 0) = 0;  // joint missing
-    }
-    const std::vector<Poses3D> input = frames;
-    EXPECT_GT(SmoothOffline(Offline(degree), kMaxGap, 0.0, times, {}, &frames), 0);
-    for (size_t f = 0; f < frames.size(); ++f) {
-      if (input[f].Person(0)(3, 0) <= 0) {
-        EXPECT_EQ(frames[f].data, input[f].data) << "missing joints stay as they are";
-        continue;
-      }
-      EXPECT_LT((frames[f].Person(0).col(0).head<3>() - truth(times[f])).norm(), 1e-9) << "frame " << f;
-    }
-  }
-}
-
-TEST(SmoothOffline, ReducesNoise) {
-  std::mt19937_64 rng(3);
-  std::normal_distribution<double> noise(0.0, 0.02);
-  std::vector<Poses3D> frames;
-  std::vector<double> times;
-  std::vector<Eigen::Vector3d> truth;
-  for (int f = 0; f < 500; ++f) {
-    const double t = f * 0.04;
-    truth.emplace_back(std::sin(t), std::cos(0.7 * t), 1.0);  // smooth curved motion, about 1 m/s
-    times.push_back(t);
-    frames.push_back(Points({truth.back() + Eigen::Vector3d(noise(rng), noise(rng), noise(rng))}, {0}));
-  }
-  const std::vector<Poses3D> input = frames;
-  SmoothOffline(Offline(2), kMaxGap, 0.0, times, {}, &frames);
-  double raw = 0, smooth = 0;
-  for (size_t f = 0; f < frames.size(); ++f) {
-    raw += (input[f].Person(0).col(0).head<3>() - truth[f]).squaredNorm();
-    smooth += (frames[f].Person(0).col(0).head<3>() - truth[f]).squaredNorm();
-  }
-  // sigma 0.1 s at 25 fps: about 6 effective frames for a quadratic fit; the error drops to
-  // less than half.
-  EXPECT_LT(std::sqrt(smooth / raw), 0.5);
-}
-
-TEST(SmoothOffline, NeverMixesTracksCrossesGapsOrUsesCoastingAndFilledJoints) {
-  const double filled = 0.05;
-  auto a = [](double t) { return Eigen::Vector3d(t, 0, 1); };          // track 0
-  auto b = [](double t) { return Eigen::Vector3d(3, 2 * t, 1); };      // track 1
-  auto c = [](double t) { return Eigen::Vector3d(-2, -1, 1 + t); };    // track 0 again after the gap
-  std::vector<Poses3D> frames;
-  std::vector<double> times;
-  std::vector<int> detected;
-  for (int f = 0; f < 40; ++f) {
-    const double t = f < 20 ? f * 0.04 : 2.0 + f * 0.04;  // a 1.2 s gap before frame 20
-    times.push_back(f == 30 ? kNaN : t);
-    Eigen::Vector3d first = f < 20 ? a(t) : c(t);
-    if (f % 2 == 0) {
-      frames.push_back(Points({first, b(t)}, {0, 1}));
-    } else {
-      frames.push_back(Points({b(t), first}, {1, 0}));  // order within a frame does not matter
-    }
-    detected.push_back(2);
-    if (f >= 10 && f < 13) {
-      // A coasting copy of a third track with a wild pose.
-      frames.back().AddPerson(7).col(0) << 50, 50, 50, 1;
-    }
-    if (f == 16) {
-      frames.back().Person(0)(3, 0) = filled;  // track 0's joint filled: its position is meaningless
-      frames.back().Person(0).col(0).head<3>() << 9, 9, 9;
-    }
-  }
-  const std::vector<Poses3D> input = frames;
-  SmoothOffline(Offline(2), kMaxGap, filled, times, detected, &frames);
-  for (int f = 0; f < 40; ++f) {
-    SCOPED_TRACE(testing::Message() << "frame " << f);
-    const double t = times[f];
-    for (int p = 0; p < frames[f].num_persons(); ++p) {
-      const auto got = frames[f].Person(p).col(0).head<3>();
-      const int id = frames[f].track_ids[p];
-      if (id == 7 || f == 30 || (f == 16 && id == 0)) {
-        EXPECT_EQ(Eigen::Vector4d(frames[f].Person(p).col(0)), Eigen::Vector4d(input[f].Person(p).col(0)))
-            << "coasting, unknown time or filled: unchanged";
-        continue;
-      }
-      const Eigen::Vector3d expected = id == 1 ? b(t) : f < 20 ? a(t) : c(t);
-      EXPECT_LT((got - expected).norm(), 1e-9) << "track " << id;
-    }
-  }
-}
-
-TEST(SmoothOffline, OffLeavesFramesBitIdentical) {
-  std::vector<Poses3D> frames = {Points({Eigen::Vector3d(0, 0, 1)}, {0}), Points({Eigen::Vector3d(0.1, 0, 1)}, {0}),
-                                 Points({Eigen::Vector3d(0.15, 0, 1)}, {0})};
-  const std::vector<Poses3D> input = frames;
-  EXPECT_EQ(SmoothOffline(SmoothOptions{}, kMaxGap, 0.0, std::vector<double>{0, 0.04, 0.08}, {}, &frames), 0);
-  for (size_t f = 0; f < frames.size(); ++f) EXPECT_EQ(frames[f].data, input[f].data);
-  EXPECT_EQ(SmoothOffline(Causal(), kMaxGap, 0.0, std::vector<double>{0, 0.04, 0.08}, {}, &frames), 0)
-      << "causal smoothing happens inside the triangulator";
 }
 
 // --- Bone lengths -------------------------------------------------------------------------------
