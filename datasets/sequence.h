@@ -12,14 +12,10 @@
 #include "core/camera.h"
 #include "core/joints.h"
 #include "core/poses.h"
+#include "core/room.h"
 #include "datasets/input_warnings.h"
 
 namespace rpt {
-
-struct Room {
-  Eigen::Vector3d center_m = Eigen::Vector3d::Zero();
-  Eigen::Vector3d size_m = Eigen::Vector3d::Zero();  // <= 0 on an axis: unbounded
-};
 
 // How a dataset (or the detector simulator) labels one person in one image. COCO convention for
 // the per-joint flags.

@@ -14,8 +14,8 @@
 // arm, so the wrist is marked. Marked joints are then filled from their neighbour like in
 // post-processing (when it fills), so every output person keeps a complete skeleton.
 //
-// Joints at or below `filled_score` (missing, or filled by post-processing: a filled wrist sits
-// on its elbow) are not observations: their limbs are neither checked nor recorded. Every
+// Joints at or below the unobserved score (missing, or filled by post-processing: a filled wrist
+// sits on its elbow) are not observations: their limbs are neither checked nor recorded. Every
 // observed length is recorded, also those of disagreeing limbs; the median ignores them while they
 // are a minority, and adapts if the first lengths of a track were the wrong ones. Coasting persons
 // (after the first num_detected) and untracked persons are left as is.
@@ -32,34 +32,46 @@
 
 namespace rpt {
 
-class BoneLengthChecker {
- public:
-  void Reset() { tracks_.Clear(); }
-
-  // Checks the first `num_detected` persons of `persons` (the frame's output, coasting persons
-  // last). `limbs` index the persons' joints; `neighbour[j]` is the joint filling j (-1 = none);
-  // `filled_score` is the score post-processing gives filled joints, 0 when it does not fill.
-  // Adds marked joints to stats->bone_length_corrections and their fills to stats->filled_joints.
-  // Returns the number of joints checked (with at least one limb whose running length is known).
-  // Does nothing unless options.enabled.
-  int Apply(const BoneLengthOptions& options, std::span<const ResolvedLimb> limbs, std::span<const int> neighbour,
-            double filled_score, int num_detected, Poses3D* persons, FrameStats* stats);
-
- private:
+// Per track: the lengths of each limb over its last `window` observations, carried from frame to
+// frame in reusable slots (track_states.h).
+struct BoneLengthHistory {
   struct Track {
     std::vector<double> lengths;  // per limb: ring buffer of `window` observed lengths (m)
     std::vector<int> observed;    // per limb: observations recorded so far
   };
-  TrackStates<Track> tracks_;
-  // Per-frame scratch.
-  std::vector<double> length_;     // per limb: this frame's length, < 0 = not observed
-  std::vector<double> expected_;   // per limb: the track's running length, < 0 = not known yet
-  std::vector<char> disagrees_;    // per limb
-  std::vector<char> active_;       // per limb: both joints still unmarked
-  std::vector<int> num_checked_;   // per joint: active checkable limbs
-  std::vector<int> num_bad_;       // per joint: active disagreeing limbs
-  std::vector<char> distal_bad_;   // per joint: distal joint of an active disagreeing limb
-  std::vector<double> median_;     // scratch for the median
+  void Reset() { tracks.Clear(); }
+  TrackStates<Track> tracks;
 };
+
+// Reused per-frame buffers of the step.
+struct BoneLengthsScratch {
+  std::vector<double> length;    // per limb: this frame's length, < 0 = not observed
+  std::vector<double> expected;  // per limb: the track's running length, < 0 = not known yet
+  std::vector<char> disagrees;   // per limb
+  std::vector<char> active;      // per limb: both joints still unmarked
+  std::vector<int> num_checked;  // per joint: active checkable limbs
+  std::vector<int> num_bad;      // per joint: active disagreeing limbs
+  std::vector<char> distal_bad;  // per joint: distal joint of an active disagreeing limb
+  std::vector<double> median;    // scratch for the median
+};
+
+namespace steps {
+
+struct BoneLengthsInput {
+  std::span<const ResolvedLimb> limbs;  // limbs between the persons' joints
+  std::span<const int> neighbour;       // per joint: the joint filling it, -1 = none
+  double unobserved_score;              // joints at or below are not observations; marked joints are
+                                        // filled with this score when > 0 (post-processing's fill)
+  int num_detected;                     // the persons detected this frame (the coasting ones follow them)
+};
+
+// Checks the detected persons of `persons` (the frame's output so far). Adds marked joints to
+// stats->bone_length_corrections and their fills to stats->filled_joints. Returns the number of
+// joints checked (with at least one limb whose running length is known). Does nothing unless
+// options.enabled.
+int BoneLengths(const BoneLengthOptions& options, const BoneLengthsInput& in, BoneLengthHistory* history,
+                BoneLengthsScratch* scratch, Poses3D* persons, FrameStats* stats);
+
+}  // namespace steps
 
 }  // namespace rpt

@@ -3,14 +3,13 @@
 
 namespace rpt {
 
-int steps::ClipSpeed(const ClipSpeedOptions& options, const Tracker& tracker, double timestamp_s, int num_detected,
-                     Poses3D* persons) {
+int steps::ClipSpeed(const ClipSpeedOptions& options, const ClipSpeedInput& in, Poses3D* persons) {
   if (!options.enabled) return 0;
   int clipped = 0;
-  for (int p = 0; p < num_detected; ++p) {
+  for (int p = 0; p < in.num_detected; ++p) {
     double last_time = 0;
-    const double* last = tracker.LastPose(persons->track_ids[p], &last_time);
-    const double dt = timestamp_s - last_time;
+    const double* last = in.tracks.LastPose(persons->track_ids[p], &last_time);
+    const double dt = in.timestamp_s - last_time;
     if (last == nullptr || !(dt > 0)) continue;
     const double max_step = options.max_speed_m_s * dt;
     auto person = persons->Person(p);

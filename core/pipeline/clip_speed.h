@@ -11,10 +11,15 @@ namespace rpt {
 
 namespace steps {
 
-// Clips the first `num_detected` persons against their tracks' last poses. Returns the number
-// of joints clipped.
-int ClipSpeed(const ClipSpeedOptions& options, const Tracker& tracker, double timestamp_s, int num_detected,
-              Poses3D* persons);
+struct ClipSpeedInput {
+  const Tracks& tracks;  // the tracks' last poses and times (remember committed them)
+  double timestamp_s;    // this frame's time
+  int num_detected;      // the persons detected this frame (the coasting ones follow them)
+};
+
+// Clips the detected persons of `persons` (track's output) against their tracks' last poses.
+// Returns the number of joints clipped.
+int ClipSpeed(const ClipSpeedOptions& options, const ClipSpeedInput& in, Poses3D* persons);
 
 }  // namespace steps
 

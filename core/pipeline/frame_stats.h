@@ -10,7 +10,9 @@
 namespace rpt {
 
 struct FrameStats {
-  // Steady-clock time of each step (microseconds) and of the whole frame.
+  // Steady-clock time of each step (microseconds) and of the whole frame. With smooth.mode =
+  // offline, the OfflineSmoother (offline_smoother.h) adds its time for the frame to
+  // time_us[smooth] and total_us when it hands the frame back.
   std::array<double, kNumSteps> time_us{};
   double total_us = 0;
   // Items after each step: kSteps[s].item. The tracking steps (track .. smooth) record 0 here and

@@ -29,8 +29,10 @@ int ResolveMinGroupSize(const GroupOptions& options, int num_cameras) {
   return num_cameras >= 10 ? 2 : 1;  // automatic, see GroupOptions
 }
 
-int steps::Group(const GroupOptions& options, int num_poses, std::span<const int> mirror, Proposals* proposals,
-                 Groups* groups, GroupScratch* scratch, FrameStats* counters) {
+int steps::Group(const GroupOptions& options, const GroupInput& in, GroupScratch* scratch, Proposals* proposals,
+                 Groups* groups, FrameStats* counters) {
+  const int num_poses = in.num_poses;
+  const std::span<const int> mirror = in.mirror;
   counters->small_groups = counters->conflicting_proposals = counters->mirrored_groups = 0;
   int* const conflicting = &counters->conflicting_proposals;
   int* const small_groups = &counters->small_groups;

@@ -46,14 +46,17 @@ int ResolveMinGroupSize(const GroupOptions& options, int num_cameras);
 
 namespace steps {
 
+struct GroupInput {
+  int num_poses;                // bounds the 2D pose indices of the pairs (prepared poses)
+  std::span<const int> mirror;  // per proposal joint slot: the slot of its left/right counterpart (itself when none)
+};
+
 // Sets proposals->group (-1 for proposals in dropped groups) and fills `groups` with the kept
-// groups' members. `options.min_group_size` must be resolved (> 0). `num_poses` bounds the 2D pose
-// indices of the pairs; `mirror[i]` is the proposal joint slot of joint i's left/right counterpart
-// (itself when none). Returns the number of kept groups. Adds to the stats' small_groups (dropped
-// by min_group_size), conflicting_proposals (removed by exclusive_poses) and mirrored_groups
-// (dropped as mirrored duplicates).
-int Group(const GroupOptions& options, int num_poses, std::span<const int> mirror, Proposals* proposals,
-          Groups* groups, GroupScratch* scratch, FrameStats* stats);
+// groups' members. `options.min_group_size` must be resolved (> 0). Returns the number of kept
+// groups. Sets the stats' small_groups (dropped by min_group_size), conflicting_proposals
+// (removed by exclusive_poses) and mirrored_groups (dropped as mirrored duplicates).
+int Group(const GroupOptions& options, const GroupInput& in, GroupScratch* scratch, Proposals* proposals,
+          Groups* groups, FrameStats* stats);
 
 }  // namespace steps
 

@@ -5,8 +5,9 @@
 
 namespace rpt {
 
-int steps::Merge(const MergeOptions& options, const Proposals& proposals, const Groups& groups,
-                 MergeScratch* scratch, Poses3D* persons) {
+int steps::Merge(const MergeOptions& options, const MergeInput& in, MergeScratch* scratch, Poses3D* persons) {
+  const Proposals& proposals = in.proposals;
+  const Groups& groups = in.groups;
   const int n = proposals.num_joints;
   auto& candidates = scratch->candidates;  // (squared distance to the mean, proposal)
   const double max_distance_sq = options.max_distance_m * options.max_distance_m;

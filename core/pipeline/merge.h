@@ -24,11 +24,13 @@ struct MergeScratch {
 
 namespace steps {
 
-// `proposals` hold all joints (num_joints == persons->num_joints); group g's proposals are
-// proposals [groups.begin[g], groups.begin[g+1]). Appends one person per group to `persons`
-// (not cleared). Returns the number of persons added.
-int Merge(const MergeOptions& options, const Proposals& proposals, const Groups& groups,
-          MergeScratch* scratch, Poses3D* persons);
+struct MergeInput {
+  const Proposals& proposals;  // all joints (num_joints == persons->num_joints): triangulate_full's
+  const Groups& groups;        // group g's proposals are proposals [groups.begin[g], groups.begin[g+1])
+};
+
+// Appends one person per group to `persons` (not cleared). Returns the number of persons added.
+int Merge(const MergeOptions& options, const MergeInput& in, MergeScratch* scratch, Poses3D* persons);
 
 }  // namespace steps
 

@@ -62,6 +62,10 @@ TriangulatorModel BuildModel(std::vector<Camera> cameras, JointNames input_joint
   m.derived = ResolveDerivedJoints(m.input_joints, m.output_joints);
 
   m.core_joints = steps::ChooseCoreJoints(m.resolved.triangulate, m.output_joints);
+  if (m.resolved.undistort.min_core_joints > m.num_core_joints()) {
+    throw ConfigError("undistort.min_core_joints (" + std::to_string(m.resolved.undistort.min_core_joints) +
+                      ") exceeds the number of core joints (" + std::to_string(m.num_core_joints()) + ")");
+  }
   JointNames core_names;
   for (int j : m.core_joints) core_names.push_back(m.output_joints[j]);
   for (int j = 0; j < m.num_output_joints(); ++j) {
@@ -72,6 +76,9 @@ TriangulatorModel BuildModel(std::vector<Camera> cameras, JointNames input_joint
   m.core_mirror = MirrorIndices(core_names);
   m.all_limbs = ResolveLimbs(LimbsFor(m.output_joints), m.output_joints);
   m.typical_limbs = ResolveTypicalLimbs(m.output_joints);
+  m.room = Room{m.resolved.room_check.center_m, m.resolved.room_check.size_m};
+  m.max_gap_s = m.resolved.track.max_gap_s;
+  m.unobserved_score = m.resolved.UnobservedScore();
   return m;
 }
 

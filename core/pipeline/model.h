@@ -1,9 +1,13 @@
 // SPDX-License-Identifier: MIT
 // The Triangulator's resolved model: everything fixed when it is built (cameras, view geometry,
-// joints, derived-joint rules, core joints, limbs, neighbours, resolved options). Built once by
-// BuildModel() and read-only afterwards; the steps take the parts they read as const references.
-// The per-frame buffers are in frame_buffers.h, the state carried between frames in
-// temporal_state.h.
+// joints, derived-joint rules, core joints, limbs, neighbours, the scene's room and continuity,
+// resolved options). Built once by BuildModel() and read-only afterwards; the steps get the parts
+// they read through their input structs. The per-frame buffers are in frame_buffers.h, the state
+// carried between frames in temporal_state.h.
+//
+// A step reads its own options section and its inputs, never another step's section: what
+// several steps need that is not any step's choice lives here (the room, the continuity gap, the
+// score that marks filled joints).
 #pragma once
 
 #include <vector>
@@ -14,6 +18,7 @@
 #include "core/pipeline/pipeline_types.h"
 #include "core/pipeline/single_view.h"
 #include "core/pipeline/undistort.h"
+#include "core/room.h"
 
 namespace rpt {
 
@@ -33,6 +38,13 @@ struct TriangulatorModel {
   std::vector<ResolvedLimb> all_limbs;   // indexed by output joint
   std::vector<int> neighbour;          // per output joint, -1 = none
   std::vector<TypicalLimb> typical_limbs;  // single_view: limbs with typical lengths
+
+  // The scene and the frames' continuity.
+  Room room;             // room_check.center_m / size_m (the dataset's room unless the user set them)
+  double max_gap_s = 0;  // track.max_gap_s: frames further apart, or at an unknown time, are not continuous
+  // Joints at or below this score are not observations for the temporal steps (bone_lengths,
+  // smooth): missing ones (0) and those post-processing filled (TriangulatorOptions::UnobservedScore).
+  double unobserved_score = 0;
 
   int num_core_joints() const { return static_cast<int>(core_joints.size()); }
   int num_output_joints() const { return static_cast<int>(output_joints.size()); }

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
 // Options of every pipeline step, one section per step, named like the step (and like the
-// config-file section and the timing output).
+// config-file section and the timing output). A step reads its own section only (the step table
+// binds each step to it, step_functions.h); what several steps need that is no step's choice (the
+// room, the continuity gap, the score of filled joints) is resolved once into the Triangulator's
+// model (model.h) and handed to the steps as input.
 //
 // Beside each struct, VisitFields names every field once with its key, help text, unit and valid
 // range (the convention of core/option_spec.h); the struct's initialisers are the defaults.
@@ -23,6 +26,10 @@ namespace rpt {
 struct UndistortOptions {
   double min_joint_score = 0.1;    // 2D joints with a lower score are treated as missing
   bool add_derived_joints = true;  // append hip_middle, shoulder_middle, head (computed in 2D)
+  // Poses with fewer valid core joints are dropped. With triangulate.min_core_joints (a pair's
+  // proposal needs that many core joints seen in both views) at the same value, such a pose could
+  // not be in any proposal; dropping it here keeps it out of the pairs and the pre-filter.
+  int min_core_joints = 3;
 };
 
 template <class Visitor, OptionsOf<UndistortOptions> Self>
@@ -31,6 +38,10 @@ void VisitFields(Visitor& v, Self& o) {
     OptionSpec{.help = "2D joints with a lower score (or NaN) are missing", .min = 0, .max = 1});
   v("add_derived_joints", o.add_derived_joints,
     OptionSpec{.help = "append hip_middle, shoulder_middle, head (computed in 2D)"});
+  v("min_core_joints", o.min_core_joints,
+    OptionSpec{.help = "2D poses with fewer valid core joints are dropped before pairing (at "
+                       "triangulate.min_core_joints they could form no proposal)",
+               .min = 1, .max = 1000});
 }
 
 // Step 2: keep pairs whose two poses both match the same last-frame person, or neither does.
@@ -78,7 +89,7 @@ struct TriangulateOptions {
   TriangulationMethod method = TriangulationMethod::kMidpoint;
   // Step 3: the joints used for association. Default: shoulders, hips, elbows, wrists, knees, ankles.
   std::vector<std::string> core_joints;  // empty = DefaultCoreJoints()
-  int min_core_joints = 3;               // a pair needs this many core joints seen in both views
+  int min_core_joints = 3;               // a pair needs this many core joints seen in both views (step 4)
   // Association pairs every pose of a view with every pose of the other views: time and memory grow
   // with the square of the persons per view (1600 took 4.7 s and 1 GB for one frame). A frame with
   // more persons in one view is refused (InputError) instead of stalling a run.
@@ -98,11 +109,14 @@ void VisitFields(Visitor& v, Self& o) {
                .min = 1, .max = 100000});
 }
 
-// Step 5: the room is an axis-aligned box. A size component <= 0 leaves that axis unbounded.
+// Step 5 and the room. The room is an axis-aligned box, a property of the scene: center_m and
+// size_m describe it (a size component <= 0 leaves that axis unbounded) and the Triangulator
+// resolves them into its model's Room (core/room.h), which room_check and postprocess.drop_outside_room
+// both use. margin_m is the room check's own tolerance.
 struct RoomCheckOptions {
   Eigen::Vector3d center_m = Eigen::Vector3d::Zero();
   Eigen::Vector3d size_m = Eigen::Vector3d::Zero();
-  double margin_m = 0.5;  // tolerance around the box
+  double margin_m = 0.5;  // proposals this far outside the box are still inside
 };
 
 template <class Visitor, OptionsOf<RoomCheckOptions> Self>
@@ -111,7 +125,8 @@ void VisitFields(Visitor& v, Self& o) {
     OptionSpec{.help = "room centre (used when room_check.size_m is set; else the dataset's room)", .unit = "m"});
   v("size_m", o.size_m,
     OptionSpec{.help = "room size per axis (<= 0: unbounded; all zero: the dataset's room)", .unit = "m"});
-  v("margin_m", o.margin_m, OptionSpec{.help = "tolerance around the room box", .unit = "m", .min = 0, .max = 1e6});
+  v("margin_m", o.margin_m,
+    OptionSpec{.help = "tolerance around the room box for proposals", .unit = "m", .min = 0, .max = 1e6});
 }
 
 enum class ScoreMode { kCombined, kReprojectionOnly, kTriangulationOnly };
@@ -252,6 +267,10 @@ struct SingleViewOptions {
   double score_factor = 0.5;          // joint scores = 2D confidence x this (rank below triangulated persons)
   double duplicate_distance_m = 0.5;  // centre distance under which a lifted person duplicates another
   double max_overlap_iou = 0.3;       // poses overlapping a found person's projection this much are that person
+  // The other views' verdict (view_verdict.h), the rule of verification (step 11b) with its own
+  // values: a pose is not lifted when min_empty_views (and more than one) other views are empty.
+  int min_empty_views = 2;
+  double min_inside_fraction = 0.8;  // a view is empty only if this share of the joints lands in the image
 };
 
 template <class Visitor, OptionsOf<SingleViewOptions> Self>
@@ -270,6 +289,12 @@ void VisitFields(Visitor& v, Self& o) {
   v("max_overlap_iou", o.max_overlap_iou,
     OptionSpec{.help = "poses overlapping a found person's projection this much are that person", .min = 0,
                .max = 1});
+  v("min_empty_views", o.min_empty_views,
+    OptionSpec{.help = "a pose is not lifted when this many other views (and more than one) see nobody there",
+               .min = 1, .max = 1e6});
+  v("min_inside_fraction", o.min_inside_fraction,
+    OptionSpec{.help = "a view is empty only if this share of the lifted joints lands in the image", .min = 0,
+               .max = 1});
 }
 
 // Step 12.
@@ -278,7 +303,8 @@ struct PostprocessOptions {
   int min_valid_joints = 6;         // persons with fewer valid joints are dropped
   double min_extent_m = 0.2;        // drop persons whose bounding box diagonal is smaller
   double max_extent_m = 3.0;        // ... or larger
-  bool drop_outside_room = true;    // drop persons whose centre is outside the room (+ margin)
+  bool drop_outside_room = true;    // drop persons whose centre is outside the room (+ room_margin_m)
+  double room_margin_m = 0.5;       // tolerance around the room box for persons
   bool replace_wrong_joints = true; // joints of implausible limbs take their neighbour's place
   bool fill_missing_joints = true;  // missing joints take their neighbour's position
   double filled_joint_score = 0.05; // score given to filled joints (> 0 so they count as present)
@@ -295,7 +321,9 @@ void VisitFields(Visitor& v, Self& o) {
     OptionSpec{.help = "drop persons whose bounding-box diagonal is larger (>= min_extent_m)", .unit = "m",
                .min = 0, .max = 1e6});
   v("drop_outside_room", o.drop_outside_room,
-    OptionSpec{.help = "drop persons whose centre is outside the room (+ margin)"});
+    OptionSpec{.help = "drop persons whose centre is outside the room (+ room_margin_m)"});
+  v("room_margin_m", o.room_margin_m,
+    OptionSpec{.help = "tolerance around the room box for persons", .unit = "m", .min = 0, .max = 1e6});
   v("replace_wrong_joints", o.replace_wrong_joints,
     OptionSpec{.help = "joints of implausible limbs take their neighbour's place"});
   v("fill_missing_joints", o.fill_missing_joints,
@@ -308,7 +336,9 @@ void VisitFields(Visitor& v, Self& o) {
 struct TrackOptions {
   bool enabled = true;
   // Frames further apart than this, or without a known time (NaN timestamp), are not continuous:
-  // tracks end (nothing coasts), and neither the pre-filter nor speed clipping use the frame before.
+  // tracks end (nothing coasts), neither the pre-filter nor speed clipping use the frame before,
+  // and smoothing restarts. A property of the input rather than of tracking: the Triangulator reads
+  // it into its model (model.h) and judges every frame's continuity with it.
   double max_gap_s = 1.0;
   double max_distance_m = 0.5;  // mean core-joint distance to continue a track
   int max_missing_frames = 3;   // a lost person is still returned (last pose) this many frames
@@ -378,9 +408,10 @@ void VisitFields(Visitor& v, Self& o) {
 //             (white-noise acceleration model; at a fixed frame rate its gains settle to those
 //             of an alpha-beta filter), time-aware (dt from the timestamps), online, no lag on
 //             constant velocity;
-//   offline = after a whole sequence has been triangulated (rpt eval and friends): per track and
-//             joint, a Gaussian-weighted local polynomial fit in time (Savitzky-Golay generalised
-//             to uneven times and missing frames), two-sided, so no lag; not usable online.
+//   offline = after Triangulator::Process, frames held back by their window (OfflineSmoother,
+//             offline_smoother.h): per track and joint, a Gaussian-weighted local polynomial fit
+//             in time (Savitzky-Golay generalised to uneven times and missing frames), two-sided,
+//             so no lag in the positions, but each frame comes out 3 offline_sigma_s late.
 // Neither smooths across a gap of more than track.max_gap_s or an unknown time.
 enum class SmoothMode { kOff, kCausal, kOffline };
 template <>
@@ -404,8 +435,8 @@ struct SmoothOptions {
 template <class Visitor, OptionsOf<SmoothOptions> Self>
 void VisitFields(Visitor& v, Self& o) {
   v("mode", o.mode,
-    OptionSpec{.help = "smoothing of tracked persons: causal (Kalman filter, online) or offline (two-sided, whole "
-                       "sequences; needs track.enabled)"});
+    OptionSpec{.help = "smoothing of tracked persons: causal (Kalman filter, online) or offline (two-sided, frames "
+                       "delayed by 3 offline_sigma_s; needs track.enabled)"});
   v("measurement_noise_m", o.measurement_noise_m,
     OptionSpec{.help = "causal: standard deviation of a triangulated joint's error", .unit = "m", .min = 1e-6,
                .max = 100});

@@ -3,8 +3,6 @@
 
 #include <algorithm>
 
-#include "core/pipeline/room_check.h"
-
 namespace rpt {
 
 int FillMissingJoints(std::span<const int> neighbour, double filled_score, Eigen::Map<Eigen::Matrix4Xd> person) {
@@ -25,8 +23,8 @@ int FillMissingJoints(std::span<const int> neighbour, double filled_score, Eigen
   return filled;
 }
 
-int steps::Postprocess(const PostprocessOptions& options, const RoomCheckOptions& room, std::span<const int> neighbour,
-                       std::span<const ResolvedLimb> limbs, Poses3D* persons, FrameStats* stats) {
+int steps::Postprocess(const PostprocessOptions& options, const PostprocessInput& in, Poses3D* persons,
+                       FrameStats* stats) {
   if (!options.enabled) return persons->num_persons();
   const int n = persons->num_joints;
   int kept = 0;
@@ -34,7 +32,7 @@ int steps::Postprocess(const PostprocessOptions& options, const RoomCheckOptions
     auto person = persons->Person(p);
     int replaced = 0;
     if (options.replace_wrong_joints) {
-      for (const ResolvedLimb& limb : limbs) {
+      for (const ResolvedLimb& limb : in.limbs) {
         if (person(3, limb.a) <= 0 || person(3, limb.b) <= 0) continue;
         const double length_sq = (person.col(limb.a).head<3>() - person.col(limb.b).head<3>()).squaredNorm();
         if (length_sq < limb.min_length_sq() || length_sq > limb.max_length_sq()) {
@@ -57,10 +55,11 @@ int steps::Postprocess(const PostprocessOptions& options, const RoomCheckOptions
     if (valid < options.min_valid_joints || valid == 0) continue;
     const double extent = (hi - lo).norm();
     if (extent < options.min_extent_m || extent > options.max_extent_m) continue;
-    if (options.drop_outside_room && !InsideRoom(center / valid, room)) continue;
+    if (options.drop_outside_room && !in.room.Contains(center / valid, options.room_margin_m)) continue;
     stats->replaced_joints += replaced;
 
-    if (options.fill_missing_joints) stats->filled_joints += FillMissingJoints(neighbour, options.filled_joint_score, person);
+    if (options.fill_missing_joints)
+      stats->filled_joints += FillMissingJoints(in.neighbour, options.filled_joint_score, person);
     if (kept != p) {
       persons->Person(kept) = persons->Person(p);
       persons->track_ids[kept] = persons->track_ids[p];

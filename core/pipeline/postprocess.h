@@ -3,8 +3,9 @@
 //
 // In order: joints of implausible limbs are marked missing (replace_wrong_joints); persons with
 // fewer than min_valid_joints joints, a bounding-box diagonal outside [min_extent_m,
-// max_extent_m], or a centre outside the room are dropped; missing joints take the position of
-// their neighbour joint (fill_missing_joints) with score filled_joint_score.
+// max_extent_m], or a centre outside the room (core/room.h) plus room_margin_m (drop_outside_room) are
+// dropped; missing joints take the position of their neighbour joint (fill_missing_joints) with
+// score filled_joint_score.
 #pragma once
 
 #include <span>
@@ -13,6 +14,7 @@
 #include "core/pipeline/options.h"
 #include "core/pipeline/pipeline_types.h"
 #include "core/poses.h"
+#include "core/room.h"
 
 namespace rpt {
 
@@ -23,10 +25,15 @@ int FillMissingJoints(std::span<const int> neighbour, double filled_score, Eigen
 
 namespace steps {
 
-// `neighbour[j]` is the joint filling j (-1 = none); `limbs` index the persons' joints.
+struct PostprocessInput {
+  std::span<const int> neighbour;       // per joint of the persons: the joint filling it, -1 = none
+  std::span<const ResolvedLimb> limbs;  // limbs between the persons' joints
+  const Room& room;                     // the scene's room (the Triangulator's model)
+};
+
+// Drops and repairs `persons` in place; adds to stats->replaced_joints and stats->filled_joints.
 // Returns the number of persons kept.
-int Postprocess(const PostprocessOptions& options, const RoomCheckOptions& room, std::span<const int> neighbour,
-                std::span<const ResolvedLimb> limbs, Poses3D* persons, FrameStats* stats);
+int Postprocess(const PostprocessOptions& options, const PostprocessInput& in, Poses3D* persons, FrameStats* stats);
 
 }  // namespace steps
 

@@ -100,9 +100,13 @@ int ApplyPairBudget(const PreparedViews& views, std::span<const ViewGeometry> ge
 
 }  // namespace
 
-int steps::Prefilter(const PreparedViews& views, std::span<const ViewGeometry> geometry,
-                     std::span<const int> core_joints, const PreviousPersons& previous, double timestamp_s,
-                     const PrefilterOptions& options, PrefilterScratch* scratch, std::vector<PosePair>* pairs) {
+int steps::Prefilter(const PrefilterOptions& options, const PrefilterInput& in, PrefilterScratch* scratch,
+                     std::vector<PosePair>* pairs) {
+  const PreparedViews& views = in.views;
+  const std::span<const ViewGeometry> geometry = in.geometry;
+  const std::span<const int> core_joints = in.core_joints;
+  const PreviousPersons& previous = in.previous;
+  const double timestamp_s = in.timestamp_s;
   std::vector<int>* match = &scratch->match;
   const int num_previous = previous.size();
   if (!options.enabled || num_previous == 0) return static_cast<int>(pairs->size());

@@ -61,12 +61,18 @@ struct PrefilterScratch {
 
 namespace steps {
 
-// Classifies every pose into scratch->match, then compacts `pairs`.
+struct PrefilterInput {
+  const PreparedViews& views;
+  std::span<const ViewGeometry> geometry;  // per camera
+  std::span<const int> core_joints;        // output-joint indices of the core joints (step 3)
+  const PreviousPersons& previous;         // the last frame's persons (remember)
+  double timestamp_s;                      // this frame's time: the radius grows with the time since `previous`
+};
+
+// Classifies every pose into scratch->match, then compacts `pairs` (make_pairs' output).
 // Returns the number of pairs kept. Does nothing (keeps all) when there are no previous persons.
-// `timestamp_s` is the current frame's time (the radius grows with the time since `previous`).
-int Prefilter(const PreparedViews& views, std::span<const ViewGeometry> geometry,
-              std::span<const int> core_joints, const PreviousPersons& previous, double timestamp_s,
-              const PrefilterOptions& options, PrefilterScratch* scratch, std::vector<PosePair>* pairs);
+int Prefilter(const PrefilterOptions& options, const PrefilterInput& in, PrefilterScratch* scratch,
+              std::vector<PosePair>* pairs);
 
 }  // namespace steps
 

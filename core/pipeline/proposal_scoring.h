@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Scoring kernels of steps 6-7 (score) and 10 (triangulate_full): reproject each proposal into its
-// pair's two views and score every joint.
+// The scoring kernels of steps 6-7 (score.h), shared with step 10 (triangulate_full.h), and the
+// kernel scale that verification (11b) and the single-view step (12b) judge agreement by.
 //
 // Per joint i of a proposal from poses a, b, with ray gap g_i (distance between the two viewing
 // rays, m) and reprojection errors e_a, e_b (px) in the two views:
@@ -14,48 +14,134 @@
 //   s_i = s_rep * s_tri (combined) | s_rep (reprojection only) | s_tri (triangulation only)
 //   c_i = sqrt(conf_a * conf_b) (2D confidence)         joint score = s_i * c_i (or s_i)
 // Implausible limbs (length outside the limb's range) invalidate their distal joint (score 0).
-// Pair score = sum_i w_i s_i / sum_i w_i over the joints seen in both views, with w_i = c_i
-// (use_confidence) or 1, leaving out the trim_fraction of those joints with the lowest s_i;
-// pruned or untriangulatable joints count with s_i = 0.
+// The pair score (step 6-7 only) is in score.h.
 #pragma once
 
+#include <cmath>
 #include <span>
-#include <utility>
-#include <vector>
 
-#include "core/pipeline/noise_scale.h"
+#include "core/fast_math.h"
 #include "core/pipeline/options.h"
 #include "core/pipeline/pipeline_types.h"
 
 namespace rpt {
 
-// Reused buffers of the score step.
-struct ScoreScratch {
-  std::vector<double> residual;       // per proposal and joint (adaptive scale, step 7)
-  std::vector<double> pair_residual;  // per proposal: median joint residual (adaptive scale)
-  std::vector<double> votes;          // per joint of one proposal
-  std::vector<std::pair<double, double>> terms;  // (s_i, w_i) per joint of one proposal
-  std::vector<double> best_residual;  // per pose and view: its best partner's pair residual
-  std::vector<int> best_partner;      // per pose and view: its best partner pose, -1 = none
+// The kernels of one frame: set by the score step once the frame's noise votes are in (the
+// adaptive scale follows the estimate), then read by triangulate_full, verify and single_view.
+struct ScoreKernel {
+  bool use_reprojection = true;  // score.mode
+  bool use_ray_gap = true;
+  bool adaptive = true;        // score.scale: residuals in metres at the joint, else relative to the box
+  bool use_confidence = true;  // score.use_confidence
+  bool prune_limbs = true;     // score.prune_limbs
+  double inv_residual = 0;     // 1 / the residual's scale (1 / S, or 1 / reprojection_scale_rel)
+  double inv_ray_gap = 0;      // 1 / the ray gap's scale (1 / 2S, or 1 / ray_gap_scale_m)
+  double scale_m = 0;          // S in metres (KernelScaleM): verify and single_view compare residuals with it
 };
 
 // The kernel scale in metres: scale_factor x `noise_m` (adaptive), or, for the fixed scale, the
 // ray-gap scale halved (the reprojection error at the person is about half the ray gap).
 double KernelScaleM(const ScoreOptions& options, double noise_m);
 
-// Joint scores and pair scores (steps 6-7). `joints` maps the proposal's joint slots to
-// prepared-pose joint indices; `limbs` are indexed by slot. With the adaptive scale, the frame's
-// mutually best pairs first vote into `noise`, whose estimate then sets the kernels (null: the
-// prior noise_prior_m is used). Returns the number of joints invalidated by limb pruning.
-int ScoreProposals(const PreparedViews& views, std::span<const ViewGeometry> geometry, std::span<const int> joints,
-                   std::span<const ResolvedLimb> limbs, const ScoreOptions& options, NoiseScale* noise,
-                   ScoreScratch* scratch, Proposals* proposals);
+// The kernels of `options` at the detection noise level `noise_m` (used by the adaptive scale).
+ScoreKernel MakeScoreKernel(const ScoreOptions& options, double noise_m);
 
-// Joint scores only (step 10: only step 8 uses pair scores), with kernels set by `noise`'s current
-// estimate; joints already scored by an earlier step for the same pair keep that score. Returns
-// the number of joints invalidated by limb pruning.
-int ScoreJoints(const PreparedViews& views, std::span<const ViewGeometry> geometry, std::span<const int> joints,
-                std::span<const ResolvedLimb> limbs, const ScoreOptions& options, const NoiseScale& noise,
-                ScoreScratch* scratch, Proposals* proposals);
+// Squared reprojection error (px^2) of `point` against keypoint `kp`, and the point's depth in
+// the view (z); a huge error when the point is behind the camera.
+RPT_ALWAYS_INLINE double ReprojectionErrorSq(const ViewGeometry& g, const Eigen::Vector3d& point, const Keypoint& kp,
+                                             double* depth) {
+  const Eigen::Vector3d h = g.P.leftCols<3>() * point + g.P.col(3);
+  *depth = h.z();
+  if (h.z() <= 0) return 1e12;
+  const double inv_z = 1.0 / h.z();
+  const double du = h.x() * inv_z - kp.u, dv = h.y() * inv_z - kp.v;
+  return du * du + dv * dv;
+}
+
+// Residual of joint i of a proposal: the mean reprojection error over both views, in metres at
+// the joint (adaptive: `scale` = 1 / focal length) or relative to the pose's box (fixed:
+// `scale` = 1 / box diagonal); implausibly large when the point is behind a camera.
+RPT_ALWAYS_INLINE double JointResidual(const ViewGeometry& ga, const ViewGeometry& gb, const Eigen::Vector3d& point,
+                                       const Keypoint& ka, const Keypoint& kb, double scale_a, double scale_b,
+                                       bool adaptive) {
+  double za = 1, zb = 1;
+  const double ea = std::sqrt(ReprojectionErrorSq(ga, point, ka, &za));
+  const double eb = std::sqrt(ReprojectionErrorSq(gb, point, kb, &zb));
+  if (za <= 0 || zb <= 0) return 1e6;
+  return adaptive ? 0.5 * (ea * za * scale_a + eb * zb * scale_b) : 0.5 * (ea * scale_a + eb * scale_b);
+}
+
+// What scoring reads of proposal k: the geometry of its two views, its two 2D poses, and the
+// index of its first joint in the per-joint arrays.
+struct ProposalViews {
+  const ViewGeometry& ga;
+  const ViewGeometry& gb;
+  const Keypoint* ka;
+  const Keypoint* kb;
+  size_t base;
+};
+
+RPT_ALWAYS_INLINE ProposalViews ViewsOf(const PreparedViews& views, std::span<const ViewGeometry> geometry,
+                                        const Proposals& proposals, int k) {
+  const PosePair& pair = proposals.pairs[k];
+  return {geometry[views.view_of[pair.a]], geometry[views.view_of[pair.b]], views.Pose(pair.a), views.Pose(pair.b),
+          static_cast<size_t>(k) * proposals.num_joints};
+}
+
+// The geometric joint scores s_i of proposal k (`pv` = ViewsOf(k)), then limb pruning, before
+// the 2D confidence: score[i] = geometric[i] = s_i for every triangulated joint, except joints
+// already scored by an earlier step for the same pair (geometric >= 0), which keep that score.
+// `joints` maps the proposal's joint slots to prepared-pose joints, `limbs` are indexed by slot;
+// `residual` (may be null: computed here) holds the joints' residuals. Returns the joints
+// invalidated by limb pruning.
+RPT_ALWAYS_INLINE int ScoreJointsOfProposal(const ScoreKernel& kernel, const PreparedViews& views,
+                                            const ProposalViews& pv, std::span<const int> joints,
+                                            std::span<const ResolvedLimb> limbs, const double* residual,
+                                            Proposals* proposals, int k) {
+  const int n = proposals->num_joints;
+  const PosePair& pair = proposals->pairs[k];
+  const Eigen::Vector3d* xyz = proposals->xyz.data() + pv.base;
+  const double* gap = proposals->gap.data() + pv.base;
+  double* score = proposals->score.data() + pv.base;
+  double* geometric = proposals->geometric.data() + pv.base;
+  const double scale_a = kernel.adaptive ? 1.0 / pv.ga.focal : 1.0 / views.bbox_diag[pair.a];
+  const double scale_b = kernel.adaptive ? 1.0 / pv.gb.focal : 1.0 / views.bbox_diag[pair.b];
+  for (int i = 0; i < n; ++i) {
+    if (score[i] <= 0) continue;
+    if (geometric[i] >= 0) {  // computed by an earlier step for the same pair (core joints)
+      score[i] = geometric[i];
+      continue;
+    }
+    double exponent = 0;
+    if (kernel.use_ray_gap) {
+      const double r = gap[i] * kernel.inv_ray_gap;
+      exponent = r * r;
+      if (exponent > 30.0) {  // negligible (< e^-30) whatever the reprojection error
+        score[i] = geometric[i] = 0.0;
+        continue;
+      }
+    }
+    if (kernel.use_reprojection) {
+      const double e = residual != nullptr ? residual[i]
+                                           : JointResidual(pv.ga, pv.gb, xyz[i], pv.ka[joints[i]], pv.kb[joints[i]],
+                                                           scale_a, scale_b, kernel.adaptive);
+      const double r = e * kernel.inv_residual;
+      exponent += r * r;
+    }
+    score[i] = geometric[i] = FastExpNeg(exponent);
+  }
+  int pruned = 0;
+  if (kernel.prune_limbs) {
+    for (const ResolvedLimb& limb : limbs) {
+      if (score[limb.a] <= 0 || score[limb.b] <= 0) continue;
+      const double length_sq = (xyz[limb.a] - xyz[limb.b]).squaredNorm();
+      if (length_sq < limb.min_length_sq() || length_sq > limb.max_length_sq()) {
+        score[limb.b] = 0;
+        ++pruned;
+      }
+    }
+  }
+  return pruned;
+}
 
 }  // namespace rpt

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Bookkeeping after the last step (not a paper step): keep this frame's output for the next frame.
 // The pre-filter (step 2) compares the next frame's poses with these persons' core joints, and
-// the tracker stores each track's output pose, which speed clipping (step 14) and coasting refer
+// the tracks store each track's output pose, which speed clipping (step 14) and coasting refer
 // to.
 #pragma once
 
@@ -14,12 +14,19 @@
 namespace rpt {
 namespace steps {
 
-// Stores the core joints of `persons` in `previous`, except the single-view persons
-// [first_lifted, first_lifted + num_lifted) (their depth is a guess), and, when `tracker` is not
-// null, commits the first `num_detected` persons as their tracks' last poses. Returns the number
-// of persons remembered for the pre-filter.
-int Remember(std::span<const int> core_joints, const Poses3D& persons, int first_lifted, int num_lifted,
-             int num_detected, double timestamp_s, PreviousPersons* previous, Tracker* tracker);
+struct RememberInput {
+  std::span<const int> core_joints;  // output-joint indices of the core joints
+  const Poses3D& persons;            // the frame's output
+  int first_lifted;                  // the single-view persons [first_lifted, first_lifted + num_lifted):
+  int num_lifted;                    // their depth is a guess, the pre-filter does not use them
+  int num_detected;                  // the persons detected this frame (the coasting ones follow them)
+  double timestamp_s;                // this frame's time
+};
+
+// Stores the core joints of the persons (but the single-view ones) in `previous` and, when
+// `tracks` is not null (tracking on), commits the detected persons as their tracks' last poses.
+// Returns the number of persons remembered for the pre-filter.
+int Remember(const RememberInput& in, PreviousPersons* previous, Tracks* tracks);
 
 }  // namespace steps
 }  // namespace rpt

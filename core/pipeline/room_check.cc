@@ -1,17 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "core/pipeline/room_check.h"
 
-#include <cmath>
-
 namespace rpt {
-
-bool InsideRoom(const Eigen::Vector3d& point, const RoomCheckOptions& room) {
-  for (int axis = 0; axis < 3; ++axis) {
-    if (room.size_m[axis] <= 0) continue;
-    if (std::abs(point[axis] - room.center_m[axis]) > 0.5 * room.size_m[axis] + room.margin_m) return false;
-  }
-  return true;
-}
 
 void UseDatasetRoomIfUnset(const Eigen::Vector3d& center_m, const Eigen::Vector3d& size_m, RoomCheckOptions* room) {
   if ((room->size_m.array() > 0).any()) return;
@@ -19,9 +9,8 @@ void UseDatasetRoomIfUnset(const Eigen::Vector3d& center_m, const Eigen::Vector3
   room->size_m = size_m;
 }
 
-int steps::RoomCheck(const RoomCheckOptions& room, Proposals* proposals) {
-  const bool bounded = (room.size_m.array() > 0).any();
-  if (!bounded) return proposals->size();
+int steps::RoomCheck(const RoomCheckOptions& options, const Room& room, Proposals* proposals) {
+  if (!room.bounded()) return proposals->size();
   const int n = proposals->num_joints;
   int kept = 0;
   for (int k = 0; k < proposals->size(); ++k) {
@@ -33,7 +22,7 @@ int steps::RoomCheck(const RoomCheckOptions& room, Proposals* proposals) {
       center += proposals->xyz[idx];
       ++valid;
     }
-    if (valid == 0 || !InsideRoom(center / valid, room)) continue;
+    if (valid == 0 || !room.Contains(center / valid, options.margin_m)) continue;
     proposals->Move(k, kept++);
   }
   proposals->Truncate(kept);

@@ -56,11 +56,15 @@ std::vector<TypicalLimb> ResolveTypicalLimbs(const JointNames& joints) {
   return out;
 }
 
-int steps::SingleView(const SingleViewOptions& options, const VerifyOptions& verify, const PreparedViews& views,
-                      std::span<const ViewGeometry> geometry, std::span<const int> core_joints,
-                      std::span<const TypicalLimb> limbs, const Proposals& proposals, const Groups& groups,
-                      double kernel_scale_m, const Poses3D& found, VerifyScratch* verify_scratch,
-                      SingleViewScratch* scratch, Poses3D* lifted, FrameStats* stats) {
+int steps::SingleView(const SingleViewOptions& options, const SingleViewInput& in, SingleViewScratch* scratch,
+                      Poses3D* lifted, FrameStats* stats) {
+  const PreparedViews& views = in.views;
+  const std::span<const ViewGeometry> geometry = in.geometry;
+  const std::span<const int> core_joints = in.core_joints;
+  const Proposals& proposals = in.proposals;
+  const Groups& groups = in.groups;
+  const Poses3D& found = in.found;
+  ViewVerdictScratch* verdict = &scratch->verdict;
   const int num_joints = found.num_joints;
   lifted->Clear(num_joints);
   if (!options.enabled) return 0;
@@ -70,7 +74,7 @@ int steps::SingleView(const SingleViewOptions& options, const VerifyOptions& ver
   for (int m = 0; m < static_cast<int>(groups.members.size()); ++m) {
     scratch->taken[proposals.pairs[m].a] = scratch->taken[proposals.pairs[m].b] = 1;
   }
-  PoseBoxes(views, &verify_scratch->boxes);
+  PoseBoxes(views, &verdict->boxes);
   // Poses overlapping a person already found (in that person's projection) are taken too.
   scratch->centers.clear();
   for (int p = 0; p < found.num_persons(); ++p) {
@@ -79,10 +83,11 @@ int steps::SingleView(const SingleViewOptions& options, const VerifyOptions& ver
     if (Center(person, core_joints, &center)) scratch->centers.push_back(center);
     for (int v = 0; v < num_views; ++v) {
       Eigen::Vector4d box;
-      JudgeView(verify, views, geometry[v], v, core_joints, person, kernel_scale_m, verify_scratch, &box);
+      JudgeView(views, geometry[v], v, core_joints, person, in.kernel.scale_m, options.min_inside_fraction, verdict,
+                &box);
       if (!box.allFinite()) continue;
       for (int g = views.view_begin[v]; g < views.view_begin[v + 1]; ++g) {
-        if (BoxIou(box, verify_scratch->boxes[g]) >= options.max_overlap_iou) scratch->taken[g] = 1;
+        if (BoxIou(box, verdict->boxes[g]) >= options.max_overlap_iou) scratch->taken[g] = 1;
       }
     }
   }
@@ -106,7 +111,7 @@ int steps::SingleView(const SingleViewOptions& options, const VerifyOptions& ver
     const Keypoint* kps = views.Pose(g);
     const ViewGeometry& geo = geometry[views.view_of[g]];
     scratch->depths.clear();
-    for (const TypicalLimb& limb : limbs) {
+    for (const TypicalLimb& limb : in.limbs) {
       const int a = limb.a, b = limb.b;
       if (kps[a].score < options.min_joint_score || kps[b].score < options.min_joint_score) continue;
       const double length = std::hypot(kps[a].x - kps[b].x, kps[a].y - kps[b].y);  // normalised units
@@ -129,10 +134,10 @@ int steps::SingleView(const SingleViewOptions& options, const VerifyOptions& ver
     int empty = 0;
     for (int v = 0; v < num_views; ++v) {
       if (v == views.view_of[g]) continue;
-      empty += JudgeView(verify, views, geometry[v], v, core_joints, scratch->person, kernel_scale_m, verify_scratch,
-                         nullptr) == ViewVerdict::kEmpty;
+      empty += JudgeView(views, geometry[v], v, core_joints, scratch->person, in.kernel.scale_m,
+                         options.min_inside_fraction, verdict, nullptr) == ViewVerdict::kEmpty;
     }
-    if (empty >= verify.min_empty_views && empty > 1) continue;
+    if (empty >= options.min_empty_views && empty > 1) continue;
     lifted->AddPerson() = scratch->person;
     scratch->centers.push_back(center);
   }

@@ -15,8 +15,9 @@
 //   * belongs to no kept group and overlaps no person already found (box IoU < 0.3 in its view),
 //   * has at least min_core_joints core joints with confidence >= min_joint_score, two limbs of
 //     the list above among them,
-//   * is not contradicted by the other views (verify.h: fewer than
-//     verify.min_empty_views empty views, or not more than the one view that sees it),
+//   * is not contradicted by the other views (view_verdict.h, the rule of verification: fewer
+//     than min_empty_views empty views, or not more than the one view that sees it; a view is
+//     empty only if min_inside_fraction of the joints land in its image),
 //   * is at least duplicate_distance_m (centre to centre) from every person found and lifted
 //     before it (poses are taken by decreasing mean confidence).
 #pragma once
@@ -28,7 +29,8 @@
 #include "core/pipeline/frame_stats.h"
 #include "core/pipeline/options.h"
 #include "core/pipeline/pipeline_types.h"
-#include "core/pipeline/verify.h"
+#include "core/pipeline/proposal_scoring.h"
+#include "core/pipeline/view_verdict.h"
 #include "core/poses.h"
 
 namespace rpt {
@@ -42,6 +44,7 @@ struct TypicalLimb {
 std::vector<TypicalLimb> ResolveTypicalLimbs(const JointNames& joints);
 
 struct SingleViewScratch {
+  ViewVerdictScratch verdict;
   std::vector<char> taken;                       // per prepared pose: used by a person already
   std::vector<std::pair<double, int>> order;     // (-mean confidence, pose) of the candidates
   std::vector<double> depths;                    // per limb of one pose
@@ -51,14 +54,21 @@ struct SingleViewScratch {
 
 namespace steps {
 
-// `proposals`/`groups`: the merged groups (step 11) whose poses are taken; `found`: the persons
-// found so far. Fills `lifted` (cleared first) and counts them in stats->single_view_persons.
-// Returns the number lifted.
-int SingleView(const SingleViewOptions& options, const VerifyOptions& verify, const PreparedViews& views,
-               std::span<const ViewGeometry> geometry, std::span<const int> core_joints,
-               std::span<const TypicalLimb> limbs, const Proposals& proposals, const Groups& groups,
-               double kernel_scale_m, const Poses3D& found, VerifyScratch* verify_scratch,
-               SingleViewScratch* scratch, Poses3D* lifted, FrameStats* stats);
+struct SingleViewInput {
+  const PreparedViews& views;
+  std::span<const ViewGeometry> geometry;  // per camera
+  std::span<const int> core_joints;        // output-joint indices of the core joints
+  std::span<const TypicalLimb> limbs;      // the limbs with typical lengths (ResolveTypicalLimbs)
+  const Proposals& proposals;              // triangulate_full's, whose kept groups' poses are taken
+  const Groups& groups;
+  const ScoreKernel& kernel;  // the frame's kernels (step 6-7): agreement scale
+  const Poses3D& found;       // the persons found so far (after post-processing)
+};
+
+// Fills `lifted` (cleared first) and counts them in stats->single_view_persons. Returns the number
+// lifted.
+int SingleView(const SingleViewOptions& options, const SingleViewInput& in, SingleViewScratch* scratch, Poses3D* lifted,
+               FrameStats* stats);
 
 }  // namespace steps
 

@@ -10,28 +10,29 @@ constexpr double kUnknownVelocityVariance = 1e4;
 
 }  // namespace
 
-int TrackSmoother::Apply(const SmoothOptions& options, double max_gap_s, double unobserved_score, double timestamp_s,
-                         int num_detected, Poses3D* persons) {
+int steps::Smooth(const SmoothOptions& options, const SmoothInput& in, JointFilters* state, Poses3D* persons) {
   if (options.mode != SmoothMode::kCausal) return 0;
-  tracks_.BeginFrame(*persons);
+  const double timestamp_s = in.timestamp_s;
+  TrackStates<JointFilters::Track>& tracks = state->tracks;
+  tracks.BeginFrame(*persons);
   const int n = persons->num_joints;
   const double r = options.measurement_noise_m * options.measurement_noise_m;
   const double q = options.acceleration_m_s2 * options.acceleration_m_s2;
   int smoothed = 0;
-  for (int p = 0; p < num_detected; ++p) {
+  for (int p = 0; p < in.num_detected; ++p) {
     const int id = persons->track_ids[p];
     if (id < 0) continue;
     bool created = false;
-    std::vector<JointFilter>& filters = tracks_.Get(id, &created).joints;
-    if (created || static_cast<int>(filters.size()) != n) filters.assign(n, JointFilter{});
+    std::vector<JointFilters::Filter>& filters = tracks.Get(id, &created).joints;
+    if (created || static_cast<int>(filters.size()) != n) filters.assign(n, JointFilters::Filter{});
     auto person = persons->Person(p);
     for (int j = 0; j < n; ++j) {
-      if (!(person(3, j) > unobserved_score)) continue;
-      JointFilter& f = filters[j];
+      if (!(person(3, j) > in.unobserved_score)) continue;
+      JointFilters::Filter& f = filters[j];
       const Eigen::Vector3d z = person.col(j).head<3>();
       const double dt = timestamp_s - f.timestamp_s;  // NaN when either time is unknown
       f.timestamp_s = timestamp_s;
-      if (!f.started || !(dt > 0 && dt <= max_gap_s)) {
+      if (!f.started || !(dt > 0 && dt <= in.max_gap_s)) {
         f.x = z;
         f.v.setZero();
         f.p00 = r;

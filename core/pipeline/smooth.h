@@ -19,6 +19,8 @@
 // joint whose last update is more than max_gap_s ago or at an unknown time (NaN) starts its filter
 // afresh at the observed position with an unknown velocity: its output is the input. Coasting
 // persons (after the first num_detected) are left as is.
+//
+// smooth.mode = offline is the two-sided form, run after Process: offline_smoother.h.
 #pragma once
 
 #include <Eigen/Core>
@@ -30,18 +32,10 @@
 
 namespace rpt {
 
-class TrackSmoother {
- public:
-  void Reset() { tracks_.Clear(); }
-
-  // Smooths the first `num_detected` persons of `persons` (all persons are the frame's output, the
-  // coasting ones last) in place. Returns the number of joints smoothed (filter updated and
-  // applied). Does nothing unless options.mode is kCausal.
-  int Apply(const SmoothOptions& options, double max_gap_s, double unobserved_score, double timestamp_s,
-            int num_detected, Poses3D* persons);
-
- private:
-  struct JointFilter {
+// Per track and joint: the Kalman filter, carried from frame to frame in reusable slots
+// (track_states.h).
+struct JointFilters {
+  struct Filter {
     Eigen::Vector3d x = Eigen::Vector3d::Zero();  // position estimate (m)
     Eigen::Vector3d v = Eigen::Vector3d::Zero();  // velocity estimate (m/s)
     double p00 = 0, p01 = 0, p11 = 0;             // covariance of (position, velocity) per axis
@@ -49,9 +43,26 @@ class TrackSmoother {
     bool started = false;
   };
   struct Track {
-    std::vector<JointFilter> joints;
+    std::vector<Filter> joints;
   };
-  TrackStates<Track> tracks_;
+  void Reset() { tracks.Clear(); }
+  TrackStates<Track> tracks;
 };
+
+namespace steps {
+
+struct SmoothInput {
+  double timestamp_s;       // this frame's time (NaN = unknown)
+  double max_gap_s;         // a joint last updated longer ago restarts its filter (track.max_gap_s)
+  double unobserved_score;  // joints at or below are not observations
+  int num_detected;         // the persons detected this frame (the coasting ones follow them)
+};
+
+// Smooths the detected persons of `persons` (the frame's output so far) in place. Returns the
+// number of joints smoothed (filter updated and applied). Does nothing unless options.mode is
+// kCausal.
+int Smooth(const SmoothOptions& options, const SmoothInput& in, JointFilters* state, Poses3D* persons);
+
+}  // namespace steps
 
 }  // namespace rpt

@@ -5,7 +5,9 @@
 // our own bookkeeping), a title (the heading of the step in docs/algorithm.md), the item counted
 // in FrameStats::count, the options section it reads and its source file. The timing and count
 // rows (metrics/, steps.csv, `rpt bench`) and docs/algorithm.md's step table derive from it;
-// tests/pipeline/step_table_test.cc fails when the docs disagree.
+// step_functions.h binds each key to its function and options member (and does not compile when
+// they disagree with this table); tests/pipeline/step_table_test.cc fails when the docs, the
+// files or the options sections disagree.
 #pragma once
 
 #include <array>

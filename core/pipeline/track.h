@@ -18,37 +18,46 @@
 
 namespace rpt {
 
-class Tracker {
- public:
-  void Reset();
-  // Ends every track (continuity broken: unknown time or a large gap); ids keep counting up.
-  void EndTracks();
-
-  // Sets persons->track_ids and appends coasting persons. `match_joints` are the joints used
-  // for the distance. Returns the number of persons that were detected this frame (the
-  // coasting ones follow them).
-  int Assign(const TrackOptions& options, std::span<const int> match_joints, Poses3D* persons, FrameStats* stats);
-
-  // The stored pose (num_joints x 4, column-major) and time of a track, or nullptr.
-  const double* LastPose(int track_id, double* timestamp_s) const;
-
-  // Stores the poses of the first `num_detected` persons as their tracks' last poses.
-  void Commit(const Poses3D& persons, int num_detected, double timestamp_s);
-
- private:
-  struct Track {
+// The live tracks, carried from frame to frame: step 13 assigns persons to them, speed clipping
+// (step 14) reads their last poses, and remember commits each frame's output to them.
+struct Tracks {
+  struct Slot {
     int id = -1;  // -1 = free slot
     int missing = 0;
     double timestamp_s = 0;
-    std::vector<double> pose;  // num_joints * 4
+    std::vector<double> pose;  // num_joints * 4, the track's last output
   };
-  int FindSlot(int track_id) const;
+  std::vector<Slot> slots;
+  int next_id = 0;
 
-  std::vector<Track> tracks_;
-  int next_id_ = 0;
-  std::vector<std::tuple<double, int, int>> candidates_;  // (distance, person, slot)
-  std::vector<int> person_slot_;
-  std::vector<char> slot_used_;
+  // Forgets every track; ids start again from 0 (a new sequence).
+  void Reset();
+  // Ends every track (continuity broken: unknown time or a large gap); ids keep counting up.
+  void EndTracks();
+  // The slot of track `track_id`, -1 when it has none.
+  int FindSlot(int track_id) const;
+  // The stored pose (num_joints x 4, column-major) and time of a track, or nullptr.
+  const double* LastPose(int track_id, double* timestamp_s) const;
+  // Stores the poses of the first `num_detected` persons as their tracks' last poses.
+  void Commit(const Poses3D& persons, int num_detected, double timestamp_s);
 };
+
+// Reused buffers of the track step.
+struct TrackScratch {
+  std::vector<std::tuple<double, int, int>> candidates;  // (distance, person, slot)
+  std::vector<int> person_slot;
+  std::vector<char> slot_used;
+};
+
+namespace steps {
+
+// Sets persons->track_ids of the frame's persons (post-processing's output) and appends the
+// coasting persons after them. `match_joints` (the core joints) are the joints compared.
+// Counts stats->new_tracks and stats->coasting_tracks. Returns the number of persons (detected
+// and coasting).
+int Track(const TrackOptions& options, std::span<const int> match_joints, Tracks* tracks, TrackScratch* scratch,
+          Poses3D* persons, FrameStats* stats);
+
+}  // namespace steps
 
 }  // namespace rpt

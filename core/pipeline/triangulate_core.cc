@@ -5,12 +5,14 @@
 
 namespace rpt {
 
-int steps::TriangulateCore(const PreparedViews& views, std::span<const ViewGeometry> geometry,
-                           std::span<const PosePair> pairs, std::span<const int> joints, TriangulationMethod method,
-                           int min_joints, Proposals* proposals) {
+int steps::TriangulateCore(const TriangulateOptions& options, const TriangulateCoreInput& in, Proposals* proposals) {
+  const PreparedViews& views = in.views;
+  const std::span<const ViewGeometry> geometry = in.geometry;
+  const std::span<const int> joints = in.joints;
+  const TriangulationMethod method = options.method;
   const int num_joints = static_cast<int>(joints.size());
   proposals->Clear(num_joints);
-  for (const PosePair& pair : pairs) {
+  for (const PosePair& pair : in.pairs) {
     const ViewGeometry& ga = geometry[views.view_of[pair.a]];
     const ViewGeometry& gb = geometry[views.view_of[pair.b]];
     const Keypoint* ka = views.Pose(pair.a);
@@ -26,7 +28,7 @@ int steps::TriangulateCore(const PreparedViews& views, std::span<const ViewGeome
       score[i] = 1.0;
       ++valid;
     }
-    if (valid < min_joints) proposals->Truncate(k);
+    if (valid < options.min_core_joints) proposals->Truncate(k);
   }
   return proposals->size();
 }

@@ -5,7 +5,7 @@
 //
 // A joint is triangulated when both views see it (pair_triangulation.h); the ray gap (distance
 // between the two viewing rays at their closest approach) is recorded for scoring. A pair with
-// fewer than `min_joints` (triangulate.min_core_joints) triangulated joints yields no proposal.
+// fewer than triangulate.min_core_joints triangulated joints yields no proposal.
 #pragma once
 
 #include <span>
@@ -16,11 +16,17 @@
 namespace rpt {
 namespace steps {
 
-// Triangulates `pairs` over `joints` (indices into the prepared poses) into `proposals`
-// (cleared first; proposals->num_joints = joints.size()). Initial joint score is 1 for
-// triangulated joints, 0 otherwise. Returns the number of proposals.
-int TriangulateCore(const PreparedViews& views, std::span<const ViewGeometry> geometry, std::span<const PosePair> pairs,
-                    std::span<const int> joints, TriangulationMethod method, int min_joints, Proposals* proposals);
+struct TriangulateCoreInput {
+  const PreparedViews& views;
+  std::span<const ViewGeometry> geometry;  // per camera
+  std::span<const PosePair> pairs;         // the pairs left by the pre-filter
+  std::span<const int> joints;             // prepared-pose joints to triangulate: the core joints
+};
+
+// Triangulates the pairs over `joints` into `proposals` (cleared first; proposals->num_joints =
+// joints.size()) with triangulate.method. Initial joint score is 1 for triangulated joints, 0
+// otherwise. Returns the number of proposals.
+int TriangulateCore(const TriangulateOptions& options, const TriangulateCoreInput& in, Proposals* proposals);
 
 }  // namespace steps
 }  // namespace rpt

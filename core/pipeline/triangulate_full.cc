@@ -5,15 +5,14 @@
 
 namespace rpt {
 
-int steps::TriangulateFull(const PreparedViews& views, std::span<const ViewGeometry> geometry, const Proposals& core,
-                           std::span<const int> members, std::span<const int> core_joints,
-                           std::span<const int> all_joints, std::span<const ResolvedLimb> limbs,
-                           TriangulationMethod method, const ScoreOptions& score, const NoiseScale& noise,
-                           ScoreScratch* scratch, Proposals* proposals, FrameStats* stats) {
-  const int num_joints = static_cast<int>(all_joints.size());
+int steps::TriangulateFull(const TriangulateOptions& options, const TriangulateFullInput& in, Proposals* proposals,
+                           FrameStats* stats) {
+  const PreparedViews& views = in.views;
+  const Proposals& core = in.core;
+  const int num_joints = static_cast<int>(in.all_joints.size());
   proposals->Clear(num_joints);
   const int num_core = core.num_joints;
-  for (int m : members) {
+  for (int m : in.groups.members) {
     const PosePair& pair = core.pairs[m];
     const int k = proposals->size();
     proposals->Add(pair);
@@ -26,22 +25,32 @@ int steps::TriangulateFull(const PreparedViews& views, std::span<const ViewGeome
     for (int c = 0; c < num_core; ++c) {
       const size_t from = static_cast<size_t>(m) * num_core + c;
       if (core.gap[from] < 0) continue;  // not triangulated
-      const int j = core_joints[c];
+      const int j = in.core_joints[c];
       xyz[j] = core.xyz[from];
       gap[j] = core.gap[from];
       geometric[j] = core.geometric[from];
       joint_score[j] = 1.0;
     }
-    const ViewGeometry& ga = geometry[views.view_of[pair.a]];
-    const ViewGeometry& gb = geometry[views.view_of[pair.b]];
+    const ViewGeometry& ga = in.geometry[views.view_of[pair.a]];
+    const ViewGeometry& gb = in.geometry[views.view_of[pair.b]];
     const Keypoint* ka = views.Pose(pair.a);
     const Keypoint* kb = views.Pose(pair.b);
     for (int j = 0; j < num_joints; ++j) {
       if (joint_score[j] > 0 || geometric[j] >= 0) continue;  // core joint done above
-      if (TriangulateJoint(ga, gb, ka[j], kb[j], method, &xyz[j], &gap[j])) joint_score[j] = 1.0;
+      if (TriangulateJoint(ga, gb, ka[j], kb[j], options.method, &xyz[j], &gap[j])) joint_score[j] = 1.0;
     }
   }
-  stats->pruned_limbs += ScoreJoints(views, geometry, all_joints, limbs, score, noise, scratch, proposals);
+  // Joint scores with the frame's kernels; the joint score gets the 2D confidence.
+  int pruned = 0;
+  for (int k = 0; k < proposals->size(); ++k) {
+    const ProposalViews pv = ViewsOf(views, in.geometry, *proposals, k);
+    pruned += ScoreJointsOfProposal(in.kernel, views, pv, in.all_joints, in.limbs, nullptr, proposals, k);
+    if (!in.kernel.use_confidence) continue;
+    double* score = proposals->score.data() + pv.base;
+    for (int i = 0; i < num_joints; ++i)
+      score[i] *= pv.ka[in.all_joints[i]].sqrt_score * pv.kb[in.all_joints[i]].sqrt_score;
+  }
+  stats->pruned_limbs += pruned;
   return proposals->size();
 }
 

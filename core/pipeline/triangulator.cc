@@ -3,31 +3,38 @@
 
 #include <chrono>
 #include <string>
+#include <utility>
 
 #include "core/errors.h"
-#include "core/pipeline/clip_speed.h"
-#include "core/pipeline/filter.h"
 #include "core/pipeline/frame_buffers.h"
-#include "core/pipeline/make_pairs.h"
 #include "core/pipeline/model.h"
-#include "core/pipeline/postprocess.h"
-#include "core/pipeline/remember.h"
-#include "core/pipeline/room_check.h"
-#include "core/pipeline/score.h"
+#include "core/pipeline/step_functions.h"
 #include "core/pipeline/temporal_state.h"
-#include "core/pipeline/triangulate_core.h"
-#include "core/pipeline/triangulate_full.h"
 
 namespace rpt {
 namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// Accumulates each step's time into its FrameStats slot. Done() closes a step that ran; Skip()
-// one that did not run, whose time and count stay 0 (the skipped moment still counts in total_us).
-class StepTimer {
+// Runs the steps bound in step_functions.h: Run<S> calls step S's function with its options
+// section and records what it returns as its count and the time since the last step as its time,
+// in S's slot of FrameStats. Done() closes a step the Triangulator assembles itself (single_view);
+// Skip() passes a moment that is no step's time (the skipped moment still counts in total_us); a
+// step that does not run keeps time and count 0.
+class StepRunner {
  public:
-  explicit StepTimer(FrameStats* stats) : stats_(stats), start_(Clock::now()), last_(start_) {}
+  StepRunner(const TriangulatorOptions& options, FrameStats* stats)
+      : options_(options), stats_(stats), start_(Clock::now()), last_(start_) {}
+  template <Step S, class... Args>
+  void Run(Args&&... args) {
+    stats_->count[static_cast<int>(S)] = Call<S>(std::forward<Args>(args)...);
+    Done(S);
+  }
+  // Step S's function alone: its result goes to the caller, which closes the step with Done(S).
+  template <Step S, class... Args>
+  int Call(Args&&... args) {
+    return RunStep<S>(options_, std::forward<Args>(args)...);
+  }
   void Done(Step step) {
     const Clock::time_point now = Clock::now();
     stats_->time_us[static_cast<int>(step)] += std::chrono::duration<double, std::micro>(now - last_).count();
@@ -37,6 +44,7 @@ class StepTimer {
   void Finish() { stats_->total_us = std::chrono::duration<double, std::micro>(last_ - start_).count(); }
 
  private:
+  const TriangulatorOptions& options_;
   FrameStats* stats_;
   Clock::time_point start_, last_;
 };
@@ -87,106 +95,112 @@ void Triangulator::Process(std::span<const Poses2D> views, double timestamp_s, P
     }
   }
   stats->Reset();
-  StepTimer timer(stats);
+  StepRunner run(opt, stats);
   // Is this frame continuous with the last one? Unknown times and large gaps break continuity.
   const double elapsed_s = timestamp_s - state.last_timestamp_s;  // NaN when either is unknown
-  const bool continuous = elapsed_s > 0 && elapsed_s <= opt.track.max_gap_s;
+  const bool continuous = elapsed_s > 0 && elapsed_s <= m.max_gap_s;
   state.last_timestamp_s = timestamp_s;
   if (!continuous) state.StartAfresh(m.num_core_joints());
-  auto count = [stats](Step s) -> int& { return stats->count[static_cast<int>(s)]; };
 
-  count(Step::kUndistort) = steps::Undistort(views, m.cameras, m.geometry, m.derived, m.core_joints,
-                                             opt.triangulate.min_core_joints, num_joints, opt.undistort, &buf.prepared);
-  timer.Done(Step::kUndistort);
-
-  count(Step::kMakePairs) = steps::MakePairs(buf.prepared, &buf.pairs);
-  timer.Done(Step::kMakePairs);
-
-  count(Step::kPrefilter) = steps::Prefilter(buf.prepared, m.geometry, m.core_joints, state.previous, timestamp_s,
-                                             opt.prefilter, &buf.prefilter, &buf.pairs);
-  timer.Done(Step::kPrefilter);
-
-  count(Step::kTriangulateCore) = steps::TriangulateCore(buf.prepared, m.geometry, buf.pairs, m.core_joints,
-                                                         opt.triangulate.method, opt.triangulate.min_core_joints,
-                                                         &buf.core);
-  timer.Done(Step::kTriangulateCore);
-
-  count(Step::kRoomCheck) = steps::RoomCheck(opt.room_check, &buf.core);
-  timer.Done(Step::kRoomCheck);
-
-  count(Step::kScore) = steps::Score(buf.prepared, m.geometry, m.core_joints, m.core_limbs, opt.score, &state.noise,
-                                     &buf.score_scratch, &buf.core, stats);
-  timer.Done(Step::kScore);
-
-  count(Step::kFilter) = steps::Filter(opt.filter, &buf.core);
-  timer.Done(Step::kFilter);
-
-  count(Step::kGroup) = steps::Group(opt.group, buf.prepared.num_poses(), m.core_mirror, &buf.core, &buf.groups,
-                                     &buf.group_scratch, stats);
-  timer.Done(Step::kGroup);
-
-  count(Step::kTriangulateFull) =
-      steps::TriangulateFull(buf.prepared, m.geometry, buf.core, buf.groups.members, m.core_joints, m.all_joints,
-                             m.all_limbs, opt.triangulate.method, opt.score, state.noise, &buf.score_scratch,
-                             &buf.full, stats);
-  timer.Done(Step::kTriangulateFull);
-
+  run.Run<Step::kUndistort>(steps::UndistortInput{.views = views,
+                                                  .cameras = m.cameras,
+                                                  .geometry = m.geometry,
+                                                  .derived = m.derived,
+                                                  .core_joints = m.core_joints,
+                                                  .num_output_joints = num_joints},
+                            &buf.prepared);
+  run.Run<Step::kMakePairs>(buf.prepared, &buf.pairs);
+  run.Run<Step::kPrefilter>(steps::PrefilterInput{.views = buf.prepared,
+                                                  .geometry = m.geometry,
+                                                  .core_joints = m.core_joints,
+                                                  .previous = state.previous,
+                                                  .timestamp_s = timestamp_s},
+                            &buf.prefilter, &buf.pairs);
+  run.Run<Step::kTriangulateCore>(
+      steps::TriangulateCoreInput{
+          .views = buf.prepared, .geometry = m.geometry, .pairs = buf.pairs, .joints = m.core_joints},
+      &buf.core);
+  run.Run<Step::kRoomCheck>(m.room, &buf.core);
+  run.Run<Step::kScore>(
+      steps::ScoreInput{
+          .views = buf.prepared, .geometry = m.geometry, .core_joints = m.core_joints, .core_limbs = m.core_limbs},
+      &state.noise, &buf.score_scratch, &buf.core, &buf.kernel, stats);
+  run.Run<Step::kFilter>(&buf.core);
+  run.Run<Step::kGroup>(steps::GroupInput{.num_poses = buf.prepared.num_poses(), .mirror = m.core_mirror},
+                        &buf.group_scratch, &buf.core, &buf.groups, stats);
+  run.Run<Step::kTriangulateFull>(steps::TriangulateFullInput{.views = buf.prepared,
+                                                              .geometry = m.geometry,
+                                                              .core = buf.core,
+                                                              .groups = buf.groups,
+                                                              .core_joints = m.core_joints,
+                                                              .all_joints = m.all_joints,
+                                                              .limbs = m.all_limbs,
+                                                              .kernel = buf.kernel},
+                                  &buf.full, stats);
   persons->Clear(num_joints);
-  count(Step::kMerge) = steps::Merge(opt.merge, buf.full, buf.groups, &buf.merge_scratch, persons);
-  timer.Done(Step::kMerge);
-
-  const double kernel_scale_m = KernelScaleM(opt.score, state.noise.Estimate());
-  count(Step::kVerify) = steps::Verify(opt.verify, buf.prepared, m.geometry, m.core_joints, buf.full, buf.groups,
-                                       kernel_scale_m, &buf.verify_scratch, persons, stats);
-  timer.Done(Step::kVerify);
-
-  count(Step::kPostprocess) =
-      steps::Postprocess(opt.postprocess, opt.room_check, m.neighbour, m.all_limbs, persons, stats);
-  timer.Done(Step::kPostprocess);
+  run.Run<Step::kMerge>(steps::MergeInput{.proposals = buf.full, .groups = buf.groups}, &buf.merge_scratch, persons);
+  run.Run<Step::kVerify>(steps::VerifyInput{.views = buf.prepared,
+                                            .geometry = m.geometry,
+                                            .core_joints = m.core_joints,
+                                            .proposals = buf.full,
+                                            .groups = buf.groups,
+                                            .kernel = buf.kernel},
+                         &buf.verify_scratch, persons, stats);
+  const steps::PostprocessInput postprocess_input{.neighbour = m.neighbour, .limbs = m.all_limbs, .room = m.room};
+  run.Run<Step::kPostprocess>(postprocess_input, persons, stats);
 
   // Step 12b: persons seen by one view only, post-processed like the others and appended. They
   // stay out of the pre-filter's memory: their depth is a guess.
-  int num_lifted = steps::SingleView(opt.single_view, opt.verify, buf.prepared, m.geometry, m.core_joints,
-                                     m.typical_limbs, buf.full, buf.groups, kernel_scale_m, *persons,
-                                     &buf.verify_scratch, &buf.single_view_scratch, &buf.lifted, stats);
+  int num_lifted = run.Call<Step::kSingleView>(steps::SingleViewInput{.views = buf.prepared,
+                                                                      .geometry = m.geometry,
+                                                                      .core_joints = m.core_joints,
+                                                                      .limbs = m.typical_limbs,
+                                                                      .proposals = buf.full,
+                                                                      .groups = buf.groups,
+                                                                      .kernel = buf.kernel,
+                                                                      .found = *persons},
+                                               &buf.single_view_scratch, &buf.lifted, stats);
   if (num_lifted > 0) {
-    num_lifted = steps::Postprocess(opt.postprocess, opt.room_check, m.neighbour, m.all_limbs, &buf.lifted, stats);
+    num_lifted = run.Call<Step::kPostprocess>(postprocess_input, &buf.lifted, stats);
     for (int p = 0; p < num_lifted; ++p) persons->AddPerson() = buf.lifted.Person(p);
   }
   const int first_lifted = persons->num_persons() - num_lifted;
-  count(Step::kSingleView) = persons->num_persons();
-  timer.Done(Step::kSingleView);
+  stats->count[static_cast<int>(Step::kSingleView)] = persons->num_persons();
+  run.Done(Step::kSingleView);
 
   // The temporal steps need track ids: without tracking they do not run (zero time and count).
-  // Joints at or below the filled score are not observations.
   const bool tracking = opt.track.enabled;
-  int num_detected = persons->num_persons();
-  if (tracking) {
-    num_detected = state.tracker.Assign(opt.track, m.core_joints, persons, stats);
-    count(Step::kTrack) = persons->num_persons();
-    timer.Done(Step::kTrack);
-  }
+  const int num_detected = persons->num_persons();  // track appends the coasting persons after them
+  if (tracking) run.Run<Step::kTrack>(m.core_joints, &state.tracks, &buf.track_scratch, persons, stats);
   if (tracking && opt.clip_speed.enabled) {
-    count(Step::kClipSpeed) = steps::ClipSpeed(opt.clip_speed, state.tracker, timestamp_s, num_detected, persons);
-    timer.Done(Step::kClipSpeed);
+    run.Run<Step::kClipSpeed>(
+        steps::ClipSpeedInput{.tracks = state.tracks, .timestamp_s = timestamp_s, .num_detected = num_detected},
+        persons);
   }
-  const double filled_score = opt.UnobservedScore();
   if (tracking && opt.bone_lengths.enabled) {
-    count(Step::kBoneLengths) = state.bone_lengths.Apply(opt.bone_lengths, m.all_limbs, m.neighbour, filled_score,
-                                                         num_detected, persons, stats);
-    timer.Done(Step::kBoneLengths);
+    run.Run<Step::kBoneLengths>(steps::BoneLengthsInput{.limbs = m.all_limbs,
+                                                        .neighbour = m.neighbour,
+                                                        .unobserved_score = m.unobserved_score,
+                                                        .num_detected = num_detected},
+                                &state.bone_lengths, &buf.bone_lengths_scratch, persons, stats);
   }
   if (tracking && opt.smooth.mode == SmoothMode::kCausal) {
-    count(Step::kSmooth) =
-        state.smoother.Apply(opt.smooth, opt.track.max_gap_s, filled_score, timestamp_s, num_detected, persons);
-    timer.Done(Step::kSmooth);
+    run.Run<Step::kSmooth>(steps::SmoothInput{.timestamp_s = timestamp_s,
+                                              .max_gap_s = m.max_gap_s,
+                                              .unobserved_score = m.unobserved_score,
+                                              .num_detected = num_detected},
+                           &state.joint_filters, persons);
   }
-  timer.Skip();  // nothing between the last step that ran and remember is any step's time
+  run.Skip();  // nothing between the last step that ran and remember is any step's time
 
-  count(Step::kRemember) = steps::Remember(m.core_joints, *persons, first_lifted, num_lifted, num_detected,
-                                           timestamp_s, &state.previous, tracking ? &state.tracker : nullptr);
-  timer.Done(Step::kRemember);
-  timer.Finish();
+  run.Run<Step::kRemember>(steps::RememberInput{.core_joints = m.core_joints,
+                                                .persons = *persons,
+                                                .first_lifted = first_lifted,
+                                                .num_lifted = num_lifted,
+                                                .num_detected = num_detected,
+                                                .timestamp_s = timestamp_s},
+                           &state.previous, tracking ? &state.tracks : nullptr);
+  run.Finish();
 }
 
 }  // namespace rpt

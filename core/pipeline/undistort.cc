@@ -20,10 +20,9 @@ void SetFromNormalized(const ViewGeometry& g, double x, double y, double score, 
 
 }  // namespace
 
-int steps::Undistort(std::span<const Poses2D> views, std::span<const Camera> cameras,
-                     std::span<const ViewGeometry> geometry, std::span<const DerivedJointRule> derived,
-                     std::span<const int> core_joints, int min_core_joints, int num_output_joints,
-                     const UndistortOptions& options, PreparedViews* prepared) {
+int steps::Undistort(const UndistortOptions& options, const UndistortInput& in, PreparedViews* prepared) {
+  const std::span<const Poses2D> views = in.views;
+  const int num_output_joints = in.num_output_joints;
   PreparedViews& out = *prepared;
   out.num_joints = num_output_joints;
   out.view_of.clear();
@@ -36,8 +35,8 @@ int steps::Undistort(std::span<const Poses2D> views, std::span<const Camera> cam
   for (int v = 0; v < num_views; ++v) {
     out.view_begin.push_back(out.num_poses());
     const Poses2D& view = views[v];
-    const Camera& camera = cameras[v];
-    const ViewGeometry& g = geometry[v];
+    const Camera& camera = in.cameras[v];
+    const ViewGeometry& g = in.geometry[v];
     const bool distorted = camera.HasDistortion();
     for (int p = 0; p < view.num_persons(); ++p) {
       const auto person = view.Person(p);
@@ -62,7 +61,7 @@ int steps::Undistort(std::span<const Poses2D> views, std::span<const Camera> cam
       }
       for (int j = view.num_joints; j < num_output_joints; ++j) kps[j] = Keypoint{};
       // Derived joints: mean of the sources in normalised coordinates, score = weakest source.
-      for (const DerivedJointRule& rule : derived) {
+      for (const DerivedJointRule& rule : in.derived) {
         for (const std::vector<int>& sources : rule.alternatives) {
           double x = 0, y = 0, score = 1.0;
           bool complete = true;
@@ -83,8 +82,8 @@ int steps::Undistort(std::span<const Poses2D> views, std::span<const Camera> cam
       }
       // Usable only with enough core joints; bounding box over all valid joints.
       int core_valid = 0;
-      for (int c : core_joints) core_valid += kps[c].score > 0 ? 1 : 0;
-      if (core_valid < min_core_joints) {
+      for (int c : in.core_joints) core_valid += kps[c].score > 0 ? 1 : 0;
+      if (core_valid < options.min_core_joints) {
         out.keypoints.resize(base);
         continue;
       }

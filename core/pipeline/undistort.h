@@ -1,12 +1,11 @@
 // SPDX-License-Identifier: MIT
 // Undistortion (before the paper's step 1): turns the raw 2D poses of all views into undistorted
 // keypoints with world rays, adds the derived joints (hip_middle, shoulder_middle, head) and drops
-// poses that cannot be triangulated.
-//
-// The last part applies step 4's rule triangulate.min_core_joints early, and it must stay here: a
-// pair's proposal needs that many core joints seen in both of its views (triangulate_core.h), so
-// a pose that has fewer valid core joints cannot be in any proposal. Dropping it here keeps it out
-// of make_pairs and the pre-filter, whose counts (and the pre-filter's pair budget) depend on it.
+// poses that cannot be triangulated: those with fewer than undistort.min_core_joints valid core
+// joints. A pair's proposal needs triangulate.min_core_joints core joints seen in both of its
+// views (triangulate_core.h), so with the same value (both default to 3) a pose dropped here could
+// not be in any proposal; dropping it here keeps it out of make_pairs and the pre-filter, whose
+// counts (and the pre-filter's pair budget) would otherwise include it.
 #pragma once
 
 #include <span>
@@ -27,11 +26,18 @@ struct DerivedJointRule {
 
 namespace steps {
 
-// views[v] are the detections of cameras[v]. Joints with score < min_joint_score, non-finite
-// coordinates or non-finite scores are treated as missing. Returns the number of usable poses.
-int Undistort(std::span<const Poses2D> views, std::span<const Camera> cameras, std::span<const ViewGeometry> geometry,
-              std::span<const DerivedJointRule> derived, std::span<const int> core_joints, int min_core_joints,
-              int num_output_joints, const UndistortOptions& options, PreparedViews* prepared);
+struct UndistortInput {
+  std::span<const Poses2D> views;  // this frame's 2D poses, views[v] seen by cameras[v]
+  std::span<const Camera> cameras;
+  std::span<const ViewGeometry> geometry;     // per camera
+  std::span<const DerivedJointRule> derived;  // the derived joints to add
+  std::span<const int> core_joints;           // output-joint indices of the core joints (step 3)
+  int num_output_joints = 0;                  // input joints + derived joints
+};
+
+// Joints with score < min_joint_score, non-finite coordinates or non-finite scores are treated as
+// missing. Fills `prepared` (cleared first). Returns the number of usable poses.
+int Undistort(const UndistortOptions& options, const UndistortInput& in, PreparedViews* prepared);
 
 }  // namespace steps
 

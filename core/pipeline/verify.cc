@@ -2,83 +2,15 @@
 #include "core/pipeline/verify.h"
 
 #include <algorithm>
-#include <cmath>
-#include <limits>
-
-#include "core/pipeline/box_iou.h"
 
 namespace rpt {
-namespace {
 
-// Median of values[0..n) (reorders them); +inf for none.
-double Median(double* values, int n) {
-  if (n <= 0) return std::numeric_limits<double>::infinity();
-  std::nth_element(values, values + n / 2, values + n);
-  return values[n / 2];
-}
-
-}  // namespace
-
-void PoseBoxes(const PreparedViews& views, std::vector<Eigen::Vector4d>* boxes) {
-  boxes->resize(views.num_poses());
-  for (int g = 0; g < views.num_poses(); ++g) {
-    Eigen::Vector4d box(std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
-                        -std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity());
-    const Keypoint* kps = views.Pose(g);
-    for (int j = 0; j < views.num_joints; ++j) {
-      if (kps[j].score <= 0) continue;
-      box << std::min(box[0], kps[j].u), std::min(box[1], kps[j].v), std::max(box[2], kps[j].u),
-          std::max(box[3], kps[j].v);
-    }
-    (*boxes)[g] = box;
-  }
-}
-
-ViewVerdict JudgeView(const VerifyOptions& options, const PreparedViews& views, const ViewGeometry& geo, int view,
-                      std::span<const int> core_joints, const Eigen::Ref<const Eigen::Matrix4Xd>& person,
-                      double kernel_scale_m, VerifyScratch* scratch, Eigen::Vector4d* projected_box) {
-  const int num_core = static_cast<int>(core_joints.size());
-  scratch->projected.resize(num_core);
-  scratch->depth.resize(num_core);
-  scratch->residuals.resize(num_core);
-  int valid = 0, inside = 0;
-  Eigen::Vector4d box(std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
-                      -std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity());
-  for (int c = 0; c < num_core; ++c) {
-    scratch->depth[c] = -1;
-    if (person(3, core_joints[c]) <= 0) continue;
-    const Eigen::Vector3d h = geo.P.leftCols<3>() * person.col(core_joints[c]).head<3>() + geo.P.col(3);
-    ++valid;
-    if (h.z() <= 0) continue;
-    const Eigen::Vector2d uv = h.head<2>() / h.z();
-    scratch->projected[c] = uv;
-    scratch->depth[c] = h.z();
-    box << std::min(box[0], uv.x()), std::min(box[1], uv.y()), std::max(box[2], uv.x()), std::max(box[3], uv.y());
-    if (uv.x() >= 0 && uv.y() >= 0 && uv.x() < geo.width && uv.y() < geo.height) ++inside;
-  }
-  if (projected_box != nullptr) *projected_box = box;
-  if (inside < 3) return ViewVerdict::kUnseen;
-  double best = std::numeric_limits<double>::infinity();
-  bool occupied = false;
-  for (int g = views.view_begin[view]; g < views.view_begin[view + 1]; ++g) {
-    const Keypoint* kps = views.Pose(g);
-    int n = 0;
-    for (int c = 0; c < num_core; ++c) {
-      const Keypoint& kp = kps[core_joints[c]];
-      if (scratch->depth[c] <= 0 || kp.score <= 0) continue;
-      scratch->residuals[n++] = (scratch->projected[c] - Eigen::Vector2d(kp.u, kp.v)).norm() * scratch->depth[c] / geo.focal;
-    }
-    if (n >= 3) best = std::min(best, Median(scratch->residuals.data(), n));
-    occupied = occupied || BoxIou(box, scratch->boxes[g]) >= 0.1;
-  }
-  if (best <= 2.0 * kernel_scale_m) return ViewVerdict::kSupport;
-  if (!occupied && inside >= options.min_inside_fraction * valid) return ViewVerdict::kEmpty;
-  return ViewVerdict::kOccupied;
-}
-
-int steps::Verify(const VerifyOptions& options, const PreparedViews& views, std::span<const ViewGeometry> geometry,
-                  std::span<const int> core_joints, const Proposals& proposals, const Groups& groups,
-                  double kernel_scale_m, VerifyScratch* scratch, Poses3D* persons, FrameStats* stats) {
+int steps::Verify(const VerifyOptions& options, const VerifyInput& in, VerifyScratch* scratch, Poses3D* persons,
+                  FrameStats* stats) {
+  const PreparedViews& views = in.views;
+  const std::span<const ViewGeometry> geometry = in.geometry;
+  const Proposals& proposals = in.proposals;
+  const Groups& groups = in.groups;
   if (!options.enabled || persons->num_persons() == 0) return persons->num_persons();
   const int num_views = static_cast<int>(geometry.size());
   const bool by_group = groups.size() == persons->num_persons();
@@ -102,11 +34,11 @@ int steps::Verify(const VerifyOptions& options, const PreparedViews& views, std:
     for (int v = 0; can_drop && v < num_views; ++v) {
       if (scratch->own_view[v]) continue;
       if (!have_boxes) {
-        PoseBoxes(views, &scratch->boxes);
+        PoseBoxes(views, &scratch->verdict.boxes);
         have_boxes = true;
       }
-      const ViewVerdict verdict =
-          JudgeView(options, views, geometry[v], v, core_joints, person, kernel_scale_m, scratch, nullptr);
+      const ViewVerdict verdict = JudgeView(views, geometry[v], v, in.core_joints, person, in.kernel.scale_m,
+                                            options.min_inside_fraction, &scratch->verdict, nullptr);
       support += verdict == ViewVerdict::kSupport;
       empty += verdict == ViewVerdict::kEmpty;
     }

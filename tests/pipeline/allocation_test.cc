@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // A warm Triangulator performs no heap allocation per frame (counting operator new), also with
-// the optional temporal steps (bone_lengths, causal smoothing) enabled.
+// the optional temporal steps (bone_lengths, causal smoothing) enabled, and neither does a warm
+// OfflineSmoother.
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -8,6 +9,7 @@
 #include <new>
 #include <vector>
 
+#include "core/pipeline/offline_smoother.h"
 #include "core/pipeline/triangulator.h"
 #include "datasets/synthetic/detector_simulator.h"
 #include "datasets/synthetic/scene.h"
@@ -78,6 +80,51 @@ TEST(Allocation, WarmTriangulatorDoesNotAllocateManyCameras) { CheckNoAllocation
 TEST(Allocation, WarmTriangulatorWithTemporalStepsDoesNotAllocateBody) { CheckNoAllocationOnceWarm(false, 5, 4, true); }
 TEST(Allocation, WarmTriangulatorWithTemporalStepsDoesNotAllocateWholeBody) {
   CheckNoAllocationOnceWarm(true, 5, 2, true);
+}
+
+// Smooths a sequence streamed through `smoother` (a whole sequence, then Flush), counting the
+// allocations.
+long CountSmootherAllocations(OfflineSmoother* smoother, const std::vector<Poses3D>& frames, double fps,
+                              Poses3D* persons, FrameStats* stats) {
+  g_allocations = 0;
+  g_counting = true;
+  int handed_back = 0;
+  for (size_t f = 0; f < frames.size(); ++f) {
+    smoother->Push(f / fps, frames[f], frames[f].num_persons(), FrameStats{});
+    while (smoother->Pop(persons, stats)) ++handed_back;
+  }
+  smoother->Flush();
+  while (smoother->Pop(persons, stats)) ++handed_back;
+  g_counting = false;
+  EXPECT_EQ(handed_back, static_cast<int>(frames.size()));
+  return g_allocations.load();
+}
+
+TEST(Allocation, WarmOfflineSmootherDoesNotAllocate) {
+  synthetic::SceneOptions options;
+  options.rig.num_cameras = 5;
+  options.num_people = 4;
+  options.num_frames = 80;
+  options.seed = 3;
+  const synthetic::Scene scene = synthetic::GenerateScene(options);
+  const synthetic::DetectorSimulator detector(synthetic::DetectorOptions::Realistic(), scene.joint_names, 3);
+  TriangulatorOptions tri_options;
+  tri_options.room_check.center_m = scene.room_center_m;
+  tri_options.room_check.size_m = scene.room_size_m;
+  tri_options.smooth.mode = SmoothMode::kOffline;
+  Triangulator tri(scene.cameras, scene.joint_names, tri_options);
+  std::vector<Poses3D> frames(options.num_frames);
+  std::vector<Poses2D> views;
+  FrameStats stats;
+  for (int f = 0; f < options.num_frames; ++f) {
+    detector.Detect(scene.cameras, scene.gt[f], scene.joint_names, f, &views);
+    tri.Process(views, f / scene.fps, &frames[f], &stats);
+  }
+  OfflineSmoother smoother(tri_options.smooth, tri_options.track.max_gap_s, tri_options.UnobservedScore());
+  Poses3D persons;
+  EXPECT_GT(CountSmootherAllocations(&smoother, frames, scene.fps, &persons, &stats), 0)
+      << "the counter must see the warm-up allocations";
+  EXPECT_EQ(CountSmootherAllocations(&smoother, frames, scene.fps, &persons, &stats), 0);
 }
 
 }  // namespace

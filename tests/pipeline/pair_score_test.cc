@@ -9,7 +9,7 @@
 #include "core/joints.h"
 #include "core/pipeline/make_pairs.h"
 #include "core/pipeline/noise_scale.h"
-#include "core/pipeline/proposal_scoring.h"
+#include "core/pipeline/score.h"
 #include "core/pipeline/triangulate_core.h"
 #include "core/pipeline/undistort.h"
 #include "core/pipeline/view_geometry.h"
@@ -60,15 +60,25 @@ PairTally TallyPairs(const DetectorOptions& detector_options, const ScoreOptions
   std::vector<PosePair> pairs;
   Proposals proposals;
   ScoreScratch scratch;
+  ScoreKernel kernel;
+  FrameStats stats;
   const std::vector<ResolvedLimb> no_limbs;
   PairTally tally;
   for (int f = 0; f < scene_options.num_frames; ++f) {
     detector.Detect(scene.cameras, scene.gt[f], scene.joint_names, f, &views, &sources);
-    steps::Undistort(views, scene.cameras, geometry, derived, core, 3, static_cast<int>(output.size()),
-                   UndistortOptions{}, &prepared);
+    steps::Undistort(UndistortOptions{},
+                     {.views = views,
+                      .cameras = scene.cameras,
+                      .geometry = geometry,
+                      .derived = derived,
+                      .core_joints = core,
+                      .num_output_joints = static_cast<int>(output.size())},
+                     &prepared);
     steps::MakePairs(prepared, &pairs);
-    steps::TriangulateCore(prepared, geometry, pairs, core, TriangulationMethod::kMidpoint, 3, &proposals);
-    ScoreProposals(prepared, geometry, core, no_limbs, score, &noise, &scratch, &proposals);
+    steps::TriangulateCore(TriangulateOptions{},
+                           {.views = prepared, .geometry = geometry, .pairs = pairs, .joints = core}, &proposals);
+    steps::Score(score, {.views = prepared, .geometry = geometry, .core_joints = core, .core_limbs = no_limbs}, &noise,
+                 &scratch, &proposals, &kernel, &stats);
     for (int k = 0; k < proposals.size(); ++k) {
       const PosePair& pair = proposals.pairs[k];
       const int a = sources[prepared.view_of[pair.a]][prepared.person_of[pair.a]].gt_person;

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The step table (core/pipeline/steps.h) is the one list of pipeline steps: these tests fail when
-// docs/algorithm.md (its step table and its "## N. Title" headings) or the source tree disagree
-// with it.
+// docs/algorithm.md (its step table and its "## N. Title" headings), the source tree or the
+// binding of each step to its function and options section (core/pipeline/step_functions.h,
+// whose static_asserts check the rest when it compiles) disagree with it.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,9 +13,12 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "core/pipeline/options.h"
+#include "core/pipeline/step_functions.h"
 #include "core/pipeline/steps.h"
 
 namespace rpt {
@@ -28,6 +32,14 @@ std::vector<std::string> ReadLines(const std::filesystem::path& path) {
   std::vector<std::string> lines;
   for (std::string line; std::getline(in, line);) lines.push_back(line);
   return lines;
+}
+
+std::string ReadFile(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  EXPECT_TRUE(in.good()) << "cannot read " << path;
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
 }
 
 // "`text`" -> "text"; "–" and "" stay as they are.
@@ -121,6 +133,51 @@ TEST(StepTable, DocsHeadingsAgree) {
     EXPECT_TRUE(numbers.count(number)) << "docs/algorithm.md: heading '" << number << ". " << title
                                        << "' names no step of core/pipeline/steps.h";
   }
+}
+
+// Step S's binding: VisitSections names its options member like the step table's section, its
+// file defines its function (and its header declares it), and the Triangulator runs it through
+// the binding only.
+template <Step S>
+void CheckBinding(const std::string& triangulator_source) {
+  using Binding = StepBinding<S>;
+  const StepInfo& info = Info(S);
+  SCOPED_TRACE(std::string(info.key));
+  if constexpr (std::is_null_pointer_v<std::remove_cv_t<decltype(Binding::options)>>) {
+    EXPECT_TRUE(info.section.empty());
+  } else {
+    const TriangulatorOptions options;
+    const void* bound = &(options.*Binding::options);
+    std::string visited;
+    auto visitor = [&](const char* name, const auto& section) {
+      if (static_cast<const void*>(&section) == bound) visited = name;
+    };
+    VisitSections(visitor, options);
+    EXPECT_EQ(visited, info.section) << "VisitSections' name of TriangulatorOptions::" << Binding::options_name;
+  }
+  const std::string function(Binding::function_name);
+  const std::filesystem::path file = kSourceDir / std::string(info.file);
+  EXPECT_NE(ReadFile(file).find("int steps::" + function + "("), std::string::npos)
+      << info.file << " must define steps::" << function;
+  EXPECT_NE(ReadFile(std::filesystem::path(file).replace_extension(".h")).find("int " + function + "("),
+            std::string::npos)
+      << "its header must declare steps::" << function;
+  EXPECT_NE(triangulator_source.find("<Step::k" + function + ">("), std::string::npos)
+      << "Triangulator::Process runs the step through its binding (Run<Step::k" << function << ">)";
+  EXPECT_EQ(triangulator_source.find("steps::" + function + "("), std::string::npos)
+      << "Triangulator::Process calls steps::" << function << " directly, past its binding";
+}
+
+TEST(StepTable, EveryStepIsBoundToItsFunctionAndOptionsSection) {
+  const std::string triangulator = ReadFile(kSourceDir / "core/pipeline/triangulator.cc");
+  [&]<size_t... I>(std::index_sequence<I...>) { (CheckBinding<static_cast<Step>(I)>(triangulator), ...); }
+  (std::make_index_sequence<kNumSteps>{});
+  // Step 3 runs once, when the model is built.
+  EXPECT_NE(ReadFile(kSourceDir / std::string(kChooseCoreJoints.file)).find("steps::ChooseCoreJoints("),
+            std::string::npos);
+  EXPECT_NE(ReadFile(kSourceDir / "core/pipeline/model.cc").find("steps::ChooseCoreJoints(m.resolved.triangulate,"),
+            std::string::npos)
+      << "BuildModel runs step 3 with its section";
 }
 
 // The options sections (config files, `rpt config --dump`, docs/options.md) come in the order the

@@ -14,7 +14,7 @@
 #include "core/pipeline/postprocess.h"
 #include "core/pipeline/prefilter.h"
 #include "core/pipeline/room_check.h"
-#include "core/pipeline/proposal_scoring.h"
+#include "core/pipeline/score.h"
 #include "core/pipeline/triangulate_core.h"
 #include "core/pipeline/undistort.h"
 #include "core/pipeline/view_geometry.h"
@@ -49,9 +49,15 @@ struct StepFixture {
     for (int j = 0; j < static_cast<int>(output.size()); ++j) all.push_back(j);
     views = test::ProjectPersons(cameras, persons);
   }
-  void Prepare() {
-    steps::Undistort(views, cameras, geometry, derived, core, 3, static_cast<int>(output.size()), UndistortOptions{},
-                   &prepared);
+  void Prepare(const UndistortOptions& options = {}) {
+    steps::Undistort(options,
+                     steps::UndistortInput{.views = views,
+                                           .cameras = cameras,
+                                           .geometry = geometry,
+                                           .derived = derived,
+                                           .core_joints = core,
+                                           .num_output_joints = static_cast<int>(output.size())},
+                     &prepared);
   }
   std::vector<Camera> cameras;
   std::vector<Eigen::Matrix4Xd> persons;
@@ -62,6 +68,22 @@ struct StepFixture {
   std::vector<Poses2D> views;
   PreparedViews prepared;
 };
+
+steps::TriangulateCoreInput CoreInput(const StepFixture& f, const std::vector<PosePair>& pairs,
+                                      const std::vector<int>& joints) {
+  return {.views = f.prepared, .geometry = f.geometry, .pairs = pairs, .joints = joints};
+}
+
+// Steps 6-7 on `proposals`, with a fresh noise estimate (at the prior until the frame's votes).
+void Score(const StepFixture& f, const ScoreOptions& options, const std::vector<ResolvedLimb>& limbs,
+           Proposals* proposals) {
+  NoiseScale noise(options.noise_prior_m);
+  ScoreScratch scratch;
+  ScoreKernel kernel;
+  FrameStats stats;
+  steps::Score(options, {.views = f.prepared, .geometry = f.geometry, .core_joints = f.core, .core_limbs = limbs},
+               &noise, &scratch, proposals, &kernel, &stats);
+}
 
 TEST(TriangulateMidpoint, RecoversPointFromExactRays) {
   const Eigen::Vector3d X(0.3, -0.2, 1.1), c1(4, 0, 2), c2(0, 4, 2);
@@ -122,6 +144,21 @@ TEST(Undistort, LowScoresNaNsAndPosesWithoutCoreJointsAreMissing) {
   EXPECT_EQ(f.prepared.view_begin, (std::vector<int>{0, 1, 1}));
 }
 
+TEST(Undistort, DropsPosesWithFewerValidCoreJointsThanItsMinimum) {
+  StepFixture f(2, {test::StandingPerson(0, 0)});
+  for (int j = 0; j < 17; ++j) {
+    if (j != 5 && j != 6 && j != 11 && j != 12) f.views[1].Person(0)(2, j) = 0;  // 4 core joints in view 1
+  }
+  UndistortOptions options;
+  options.min_core_joints = 4;
+  f.Prepare(options);
+  EXPECT_EQ(f.prepared.num_poses(), 2);
+  options.min_core_joints = 5;
+  f.Prepare(options);
+  EXPECT_EQ(f.prepared.num_poses(), 1);
+  EXPECT_EQ(f.prepared.view_of[0], 0);
+}
+
 TEST(MakePairs, EveryCrossViewPairOnce) {
   StepFixture f(3, {test::StandingPerson(-1, 0), test::StandingPerson(1, 0)});
   f.views[2].Clear(17);  // view 2 sees nobody
@@ -151,7 +188,9 @@ TEST(Prefilter, KeepsBothOrNeitherMatchedDropsOneSided) {
   }
   PrefilterScratch scratch;
   const std::vector<int>& match = scratch.match;
-  const int kept = steps::Prefilter(f.prepared, f.geometry, f.core, previous, 0.0, PrefilterOptions{}, &scratch, &pairs);
+  const steps::PrefilterInput input{
+      .views = f.prepared, .geometry = f.geometry, .core_joints = f.core, .previous = previous, .timestamp_s = 0.0};
+  const int kept = steps::Prefilter(PrefilterOptions{}, input, &scratch, &pairs);
   // Kept: a-a, b-b (same match), c-c (neither). Dropped: mixed ones and one-sided c-x / x-c.
   EXPECT_EQ(kept, 3);
   for (const PosePair& p : pairs) {
@@ -162,7 +201,7 @@ TEST(Prefilter, KeepsBothOrNeitherMatchedDropsOneSided) {
   steps::MakePairs(f.prepared, &pairs);
   PrefilterOptions off;
   off.enabled = false;
-  EXPECT_EQ(steps::Prefilter(f.prepared, f.geometry, f.core, previous, 0.0, off, &scratch, &pairs), 9);
+  EXPECT_EQ(steps::Prefilter(off, input, &scratch, &pairs), 9);
 }
 
 TEST(TriangulateCore, ExactRecoveryWithMidpointAndDlt) {
@@ -172,7 +211,9 @@ TEST(TriangulateCore, ExactRecoveryWithMidpointAndDlt) {
   steps::MakePairs(f.prepared, &pairs);
   for (TriangulationMethod method : {TriangulationMethod::kMidpoint, TriangulationMethod::kDlt}) {
     Proposals proposals;
-    ASSERT_EQ(steps::TriangulateCore(f.prepared, f.geometry, pairs, f.all, method, 3, &proposals), 6);
+    TriangulateOptions options;
+    options.method = method;
+    ASSERT_EQ(steps::TriangulateCore(options, CoreInput(f, pairs, f.all), &proposals), 6);
     for (int k = 0; k < proposals.size(); ++k) {
       for (int j = 0; j < 17; ++j) {
         EXPECT_LT((proposals.xyz[k * 20 + j] - f.persons[0].col(j).head<3>()).norm(), 1e-9);
@@ -192,8 +233,11 @@ TEST(TriangulateCore, PairsWithTooFewCommonJointsYieldNoProposal) {
   std::vector<PosePair> pairs;
   steps::MakePairs(f.prepared, &pairs);
   Proposals proposals;
-  EXPECT_EQ(steps::TriangulateCore(f.prepared, f.geometry, pairs, f.core, TriangulationMethod::kMidpoint, 4, &proposals), 1);
-  EXPECT_EQ(steps::TriangulateCore(f.prepared, f.geometry, pairs, f.core, TriangulationMethod::kMidpoint, 5, &proposals), 0);
+  TriangulateOptions options;
+  options.min_core_joints = 4;
+  EXPECT_EQ(steps::TriangulateCore(options, CoreInput(f, pairs, f.core), &proposals), 1);
+  options.min_core_joints = 5;
+  EXPECT_EQ(steps::TriangulateCore(options, CoreInput(f, pairs, f.core), &proposals), 0);
 }
 
 Proposals OneJointProposals(const std::vector<Eigen::Vector3d>& points) {
@@ -209,16 +253,17 @@ Proposals OneJointProposals(const std::vector<Eigen::Vector3d>& points) {
 
 TEST(RoomCheck, DropsProposalsOutsideTheBoxPlusMargin) {
   Proposals p = OneJointProposals({{0, 0, 1}, {2.9, 0, 1}, {3.2, 0, 1}, {0, 50, 1}});
-  RoomCheckOptions room;
-  room.center_m = Eigen::Vector3d(0, 0, 1);
-  room.size_m = Eigen::Vector3d(5, 0, 3);  // y unbounded
-  room.margin_m = 0.5;
-  EXPECT_EQ(steps::RoomCheck(room, &p), 3);
+  const Room room{.center_m = Eigen::Vector3d(0, 0, 1), .size_m = Eigen::Vector3d(5, 0, 3)};  // y unbounded
+  RoomCheckOptions options;
+  options.margin_m = 0.5;
+  EXPECT_EQ(steps::RoomCheck(options, room, &p), 3);
   EXPECT_NEAR(p.xyz[1].x(), 2.9, 1e-12);
   EXPECT_NEAR(p.xyz[2].y(), 50, 1e-12);
-  RoomCheckOptions unbounded;
   Proposals q = OneJointProposals({{1e6, 0, 0}});
-  EXPECT_EQ(steps::RoomCheck(unbounded, &q), 1);
+  EXPECT_EQ(steps::RoomCheck(options, Room{}, &q), 1) << "no room: nothing dropped";
+  Proposals r = OneJointProposals({{3.2, 0, 1}});
+  options.margin_m = 0.8;
+  EXPECT_EQ(steps::RoomCheck(options, room, &r), 1) << "the margin is room_check's own";
 }
 
 TEST(ScoreProposals, CorrectPairsScoreOneMismatchedPairsScoreLow) {
@@ -227,10 +272,8 @@ TEST(ScoreProposals, CorrectPairsScoreOneMismatchedPairsScoreLow) {
   std::vector<PosePair> pairs;
   steps::MakePairs(f.prepared, &pairs);
   Proposals proposals;
-  steps::TriangulateCore(f.prepared, f.geometry, pairs, f.core, TriangulationMethod::kMidpoint, 3, &proposals);
-  std::vector<ResolvedLimb> no_limbs;
-  ScoreScratch scratch;
-  ScoreProposals(f.prepared, f.geometry, f.core, no_limbs, ScoreOptions{}, nullptr, &scratch, &proposals);
+  steps::TriangulateCore(TriangulateOptions{}, CoreInput(f, pairs, f.core), &proposals);
+  Score(f, ScoreOptions{}, {}, &proposals);
   int correct = 0;
   for (int k = 0; k < proposals.size(); ++k) {
     const bool same = f.prepared.person_of[proposals.pairs[k].a] == f.prepared.person_of[proposals.pairs[k].b];
@@ -256,9 +299,8 @@ TEST(ScoreProposals, ModesConfidenceAndLimbPruning) {
   const int wrist_left_slot = 6, wrist_right_slot = 7;  // order of DefaultCoreJoints()
   auto run = [&](ScoreOptions options, std::vector<ResolvedLimb> limbs = {}) {
     Proposals p;
-    steps::TriangulateCore(f.prepared, f.geometry, pairs, f.core, TriangulationMethod::kMidpoint, 3, &p);
-    ScoreScratch scratch;
-    ScoreProposals(f.prepared, f.geometry, f.core, limbs, options, nullptr, &scratch, &p);
+    steps::TriangulateCore(TriangulateOptions{}, CoreInput(f, pairs, f.core), &p);
+    Score(f, options, limbs, &p);
     return p;
   };
   ScoreOptions combined;
@@ -322,7 +364,7 @@ TEST(Group, ClustersByPersonAndDropsSmallGroups) {
   FrameStats counters;
   GroupOptions options;
   const std::vector<int> no_mirror = {0, 1, 2};
-  EXPECT_EQ(steps::Group(options, 12, no_mirror, &p, &groups, &scratch, &counters), 3);
+  EXPECT_EQ(steps::Group(options, {.num_poses = 12, .mirror = no_mirror}, &scratch, &p, &groups, &counters), 3);
   EXPECT_EQ(counters.small_groups, 0);
   EXPECT_EQ(counters.conflicting_proposals, 0);
   EXPECT_EQ(p.group[0], p.group[2]);
@@ -330,7 +372,7 @@ TEST(Group, ClustersByPersonAndDropsSmallGroups) {
   EXPECT_EQ(p.group[1], p.group[3]);
   EXPECT_NE(p.group[0], p.group[1]);
   options.min_group_size = 2;
-  EXPECT_EQ(steps::Group(options, 12, no_mirror, &p, &groups, &scratch, &counters), 2);
+  EXPECT_EQ(steps::Group(options, {.num_poses = 12, .mirror = no_mirror}, &scratch, &p, &groups, &counters), 2);
   EXPECT_EQ(counters.small_groups, 1);
   EXPECT_EQ(p.group[5], -1);
   EXPECT_EQ(groups.members.size(), 5u);
@@ -357,11 +399,11 @@ TEST(Group, ExclusivePosesRemovePhantomsThatReuseAPersonsPoses) {
   FrameStats counters;
   GroupOptions options;
   const std::vector<int> no_mirror = {0, 1};
-  EXPECT_EQ(steps::Group(options, 4, no_mirror, &p, &groups, &scratch, &counters), 1);
+  EXPECT_EQ(steps::Group(options, {.num_poses = 4, .mirror = no_mirror}, &scratch, &p, &groups, &counters), 1);
   EXPECT_EQ(counters.conflicting_proposals, 1);
   EXPECT_EQ(p.group[3], -1);
   options.exclusive_poses = false;
-  EXPECT_EQ(steps::Group(options, 4, no_mirror, &p, &groups, &scratch, &counters), 2);
+  EXPECT_EQ(steps::Group(options, {.num_poses = 4, .mirror = no_mirror}, &scratch, &p, &groups, &counters), 2);
   EXPECT_EQ(counters.conflicting_proposals, 0);
 }
 
@@ -386,12 +428,12 @@ TEST(Group, MirroredDuplicateOfAPersonIsDropped) {
   FrameStats counters;
   GroupOptions options;
   const std::vector<int> mirror = {1, 0};
-  EXPECT_EQ(steps::Group(options, 5, mirror, &p, &groups, &scratch, &counters), 1);
+  EXPECT_EQ(steps::Group(options, {.num_poses = 5, .mirror = mirror}, &scratch, &p, &groups, &counters), 1);
   EXPECT_EQ(counters.mirrored_groups, 1);
   EXPECT_EQ(p.group[3], -1);
   EXPECT_EQ(p.group[0], 0);
   options.drop_mirrored = false;
-  EXPECT_EQ(steps::Group(options, 5, mirror, &p, &groups, &scratch, &counters), 2);
+  EXPECT_EQ(steps::Group(options, {.num_poses = 5, .mirror = mirror}, &scratch, &p, &groups, &counters), 2);
 }
 
 TEST(JointSide, ReadsTheSideToken) {
@@ -423,7 +465,7 @@ TEST(Merge, DistanceFilterTopKAndWeighting) {
   auto merge = [&](MergeOptions options) {
     Poses3D persons;
     persons.Clear(1);
-    steps::Merge(options, p, groups, &scratch, &persons);
+    steps::Merge(options, {.proposals = p, .groups = groups}, &scratch, &persons);
     return Eigen::Vector4d(persons.Person(0).col(0));
   };
   MergeOptions plain;
@@ -449,13 +491,13 @@ TEST(Merge, DistanceFilterTopKAndWeighting) {
   pair_group.members = {0, 1};
   Poses3D out;
   out.Clear(1);
-  steps::Merge(distance, two, pair_group, &scratch, &out);
+  steps::Merge(distance, {.proposals = two, .groups = pair_group}, &scratch, &out);
   EXPECT_NEAR(out.Person(0)(0, 0), 1.0, 1e-12);
   EXPECT_NEAR(out.Person(0)(3, 0), 0.8, 1e-12);
   MergeOptions no_fallback = distance;
   no_fallback.keep_best_when_all_far = false;
   out.Clear(1);
-  steps::Merge(no_fallback, two, pair_group, &scratch, &out);
+  steps::Merge(no_fallback, {.proposals = two, .groups = pair_group}, &scratch, &out);
   EXPECT_EQ(out.Person(0)(3, 0), 0.0);
   MergeOptions strict = plain;
   strict.min_joint_score = 1.1;
@@ -489,10 +531,10 @@ TEST(Postprocess, DropsInvalidPersonsAndFillsMissingJoints) {
   few.row(3).tail(12).setZero();  // 5 joints only
   add(few);
   add(test::StandingPerson(40, 0));  // outside the room
-  RoomCheckOptions room;
-  room.size_m = Eigen::Vector3d(10, 10, 0);
+  const Room room{.size_m = Eigen::Vector3d(10, 10, 0)};
+  const steps::PostprocessInput input{.neighbour = neighbour, .limbs = limbs, .room = room};
   FrameStats stats;
-  EXPECT_EQ(steps::Postprocess(PostprocessOptions{}, room, neighbour, limbs, &persons, &stats), 2);
+  EXPECT_EQ(steps::Postprocess(PostprocessOptions{}, input, &persons, &stats), 2);
   EXPECT_EQ(persons.num_persons(), 2);
   EXPECT_GE(stats.filled_joints, 2);
   EXPECT_EQ(stats.replaced_joints, 1);
@@ -503,7 +545,22 @@ TEST(Postprocess, DropsInvalidPersonsAndFillsMissingJoints) {
   PostprocessOptions off;
   off.enabled = false;
   add(tiny);
-  EXPECT_EQ(steps::Postprocess(off, room, neighbour, limbs, &persons, &stats), 3);
+  EXPECT_EQ(steps::Postprocess(off, input, &persons, &stats), 3);
+}
+
+TEST(Postprocess, DropsPersonsOutsideTheRoomPlusItsOwnMargin) {
+  // The room reaches x = 5; the person's centre is at x = 5.3.
+  const Room room{.size_m = Eigen::Vector3d(10, 10, 0)};
+  const std::vector<int> no_neighbour(17, -1);
+  Poses3D persons;
+  persons.Clear(17);
+  persons.AddPerson() = test::StandingPerson(5.3, 0);
+  const steps::PostprocessInput input{.neighbour = no_neighbour, .limbs = {}, .room = room};
+  PostprocessOptions options;
+  FrameStats stats;
+  EXPECT_EQ(steps::Postprocess(options, input, &persons, &stats), 1) << "inside with the default 0.5 m";
+  options.room_margin_m = 0.2;
+  EXPECT_EQ(steps::Postprocess(options, input, &persons, &stats), 0);
 }
 
 }  // namespace

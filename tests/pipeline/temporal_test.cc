@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// The optional temporal steps: causal smoothing (step 16), offline smoothing of whole sequences,
-// per-track bone-length consistency (step 15), and that all of them are off by default.
+// The optional temporal steps: causal smoothing (step 16), per-track bone-length consistency
+// (step 15), and that both are off by default. Offline smoothing: offline_smoother_test.cc.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,7 +13,6 @@
 #include "core/pipeline/bone_lengths.h"
 #include "core/pipeline/smooth.h"
 #include "core/pipeline/triangulator.h"
-#include "core/smooth_offline.h"
 #include "datasets/synthetic/detector_simulator.h"
 #include "datasets/synthetic/scene.h"
 #include "tests/pipeline/test_scene.h"
@@ -30,6 +29,14 @@ Poses3D Points(const std::vector<Eigen::Vector3d>& xyz, const std::vector<int>& 
   persons.Clear(1);
   for (size_t p = 0; p < xyz.size(); ++p) persons.AddPerson(ids[p]).col(0) << xyz[p], 1.0;
   return persons;
+}
+
+// Step 16 on `frame` at time `t`: the first `num_detected` persons are smoothed.
+int Smooth(const SmoothOptions& options, double t, double unobserved_score, int num_detected, JointFilters* filters,
+           Poses3D* frame) {
+  const steps::SmoothInput input{
+      .timestamp_s = t, .max_gap_s = kMaxGap, .unobserved_score = unobserved_score, .num_detected = num_detected};
+  return steps::Smooth(options, input, filters, frame);
 }
 
 SmoothOptions Causal() {
@@ -67,7 +74,7 @@ TEST(SmoothCausal, ReducesJitterOnAConstantVelocityTrackAsTheAlphaBetaTheoryPred
     options.measurement_noise_m = sigma;
     options.acceleration_m_s2 = acceleration;
     const AlphaBeta theory = SteadyState(sigma, acceleration, dt);
-    TrackSmoother smoother;
+    JointFilters filters;
     std::mt19937_64 rng(7);
     std::normal_distribution<double> noise(0.0, sigma);
     double raw_sq = 0, smooth_sq = 0;
@@ -77,7 +84,7 @@ TEST(SmoothCausal, ReducesJitterOnAConstantVelocityTrackAsTheAlphaBetaTheoryPred
       const Eigen::Vector3d truth = velocity * (f * dt);
       const Eigen::Vector3d observed = truth + Eigen::Vector3d(noise(rng), noise(rng), noise(rng));
       Poses3D frame = Points({observed}, {0});
-      smoother.Apply(options, kMaxGap, 0.0, f * dt, 1, &frame);
+      Smooth(options, f * dt, 0.0, 1, &filters, &frame);
       if (f < 200) continue;  // let the gains settle
       raw_sq += (observed - truth).squaredNorm();
       smooth_sq += (frame.Person(0).col(0).head<3>() - truth).squaredNorm();
@@ -99,12 +106,12 @@ TEST(SmoothCausal, FollowsAStepWithBoundedLagAndOvershoot) {
   // 5th frame on, within 1 % from the 10th.
   const SmoothOptions options = Causal();
   const double dt = 0.04, step = 0.3;
-  TrackSmoother smoother;
+  JointFilters filters;
   std::vector<double> response;
   for (int f = 0; f < 130; ++f) {
     const double x = f < 100 ? 0.0 : step;
     Poses3D frame = Points({Eigen::Vector3d(x, 0, 1)}, {3});
-    smoother.Apply(options, kMaxGap, 0.0, f * dt, 1, &frame);
+    Smooth(options, f * dt, 0.0, 1, &filters, &frame);
     if (f >= 100) response.push_back(frame.Person(0)(0, 0) / step);
   }
   EXPECT_NEAR(response[0], SteadyState(options.measurement_noise_m, options.acceleration_m_s2, dt).alpha, 1e-6);
@@ -121,10 +128,10 @@ TEST(SmoothCausal, FollowsAStepWithBoundedLagAndOvershoot) {
 
 TEST(SmoothCausal, RestartsAfterGapsAndUnknownTimes) {
   const SmoothOptions options = Causal();
-  TrackSmoother smoother;
+  JointFilters filters;
   auto feed = [&](double t, double x) {
     Poses3D frame = Points({Eigen::Vector3d(x, 0, 1)}, {0});
-    smoother.Apply(options, kMaxGap, 0.0, t, 1, &frame);
+    Smooth(options, t, 0.0, 1, &filters, &frame);
     return frame.Person(0)(0, 0);
   };
   for (int f = 0; f < 10; ++f) feed(f * 0.04, 0.0);
@@ -139,10 +146,10 @@ TEST(SmoothCausal, RestartsAfterGapsAndUnknownTimes) {
 TEST(SmoothCausal, MissingFilledAndCoastingJointsAreLeftAloneAndTracksAreSeparate) {
   const SmoothOptions options = Causal();
   const double filled = 0.05;
-  TrackSmoother smoother;
+  JointFilters filters;
   for (int f = 0; f < 10; ++f) {
     Poses3D frame = Points({Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(5, 0, 1)}, {0, 1});
-    smoother.Apply(options, kMaxGap, filled, f * 0.04, 2, &frame);
+    Smooth(options, f * 0.04, filled, 2, &filters, &frame);
   }
   // Track 0's joint is missing, track 1's is filled, and a coasting track 2 follows them: none
   // changes and none updates its filter.
@@ -150,129 +157,15 @@ TEST(SmoothCausal, MissingFilledAndCoastingJointsAreLeftAloneAndTracksAreSeparat
   frame.Person(0)(3, 0) = 0;
   frame.Person(1)(3, 0) = filled;
   const Poses3D before = frame;
-  EXPECT_EQ(smoother.Apply(options, kMaxGap, filled, 0.40, 2, &frame), 0);
+  EXPECT_EQ(Smooth(options, 0.40, filled, 2, &filters, &frame), 0);
   EXPECT_EQ(frame.data, before.data);
   // Next frame: both tracks continue from where they were (not from the ignored values), and a
   // new track starts with its input.
   Poses3D next = Points({Eigen::Vector3d(5, 0, 1), Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(2, 2, 2)}, {1, 0, 4});
-  EXPECT_EQ(smoother.Apply(options, kMaxGap, filled, 0.44, 3, &next), 2);
+  EXPECT_EQ(Smooth(options, 0.44, filled, 3, &filters, &next), 2);
   EXPECT_LT((next.Person(0).col(0).head<3>() - Eigen::Vector3d(5, 0, 1)).norm(), 1e-9) << "track 1 kept its own state";
   EXPECT_LT((next.Person(1).col(0).head<3>() - Eigen::Vector3d(0, 0, 1)).norm(), 1e-9) << "track 0 kept its own state";
   EXPECT_EQ(next.Person(2)(0, 0), 2.0) << "a new track starts with its input";
-}
-
-// --- Offline smoothing --------------------------------------------------------------------------
-
-SmoothOptions Offline(int degree) {
-  SmoothOptions options;
-  options.mode = SmoothMode::kOffline;
-  options.offline_degree = degree;
-  return options;
-}
-
-TEST(SmoothOffline, IsExactOnLinearMotionWithUnevenTimesAndMissingJoints) {
-  for (int degree : {1, 2, 3}) {
-    SCOPED_TRACE(testing::Message() << "degree " << degree);
-    std::vector<Poses3D> frames;
-    std::vector<double> times;
-    auto truth = [](double t) { return Eigen::Vector3d(0.3 + 1.2 * t, -0.5 * t, 1.0 + 0.1 * t); };
-    double t = 0;
-    for (int f = 0; f < 60; ++f) {
-      t += f % 7 == 3 ? 0.08 : 0.04;  // a dropped frame now and then
-      times.push_back(t);
-      frames.push_back(Points({truth(t)}, {0}));
-      if (f % 5 == 2) frames.back().Person(0)(3, 0) = 0;  // joint missing
-    }
-    const std::vector<Poses3D> input = frames;
-    EXPECT_GT(SmoothOffline(Offline(degree), kMaxGap, 0.0, times, {}, &frames), 0);
-    for (size_t f = 0; f < frames.size(); ++f) {
-      if (input[f].Person(0)(3, 0) <= 0) {
-        EXPECT_EQ(frames[f].data, input[f].data) << "missing joints stay as they are";
-        continue;
-      }
-      EXPECT_LT((frames[f].Person(0).col(0).head<3>() - truth(times[f])).norm(), 1e-9) << "frame " << f;
-    }
-  }
-}
-
-TEST(SmoothOffline, ReducesNoise) {
-  std::mt19937_64 rng(3);
-  std::normal_distribution<double> noise(0.0, 0.02);
-  std::vector<Poses3D> frames;
-  std::vector<double> times;
-  std::vector<Eigen::Vector3d> truth;
-  for (int f = 0; f < 500; ++f) {
-    const double t = f * 0.04;
-    truth.emplace_back(std::sin(t), std::cos(0.7 * t), 1.0);  // smooth curved motion, about 1 m/s
-    times.push_back(t);
-    frames.push_back(Points({truth.back() + Eigen::Vector3d(noise(rng), noise(rng), noise(rng))}, {0}));
-  }
-  const std::vector<Poses3D> input = frames;
-  SmoothOffline(Offline(2), kMaxGap, 0.0, times, {}, &frames);
-  double raw = 0, smooth = 0;
-  for (size_t f = 0; f < frames.size(); ++f) {
-    raw += (input[f].Person(0).col(0).head<3>() - truth[f]).squaredNorm();
-    smooth += (frames[f].Person(0).col(0).head<3>() - truth[f]).squaredNorm();
-  }
-  // sigma 0.1 s at 25 fps: about 6 effective frames for a quadratic fit; the error drops to
-  // less than half.
-  EXPECT_LT(std::sqrt(smooth / raw), 0.5);
-}
-
-TEST(SmoothOffline, NeverMixesTracksCrossesGapsOrUsesCoastingAndFilledJoints) {
-  const double filled = 0.05;
-  auto a = [](double t) { return Eigen::Vector3d(t, 0, 1); };          // track 0
-  auto b = [](double t) { return Eigen::Vector3d(3, 2 * t, 1); };      // track 1
-  auto c = [](double t) { return Eigen::Vector3d(-2, -1, 1 + t); };    // track 0 again after the gap
-  std::vector<Poses3D> frames;
-  std::vector<double> times;
-  std::vector<int> detected;
-  for (int f = 0; f < 40; ++f) {
-    const double t = f < 20 ? f * 0.04 : 2.0 + f * 0.04;  // a 1.2 s gap before frame 20
-    times.push_back(f == 30 ? kNaN : t);
-    Eigen::Vector3d first = f < 20 ? a(t) : c(t);
-    if (f % 2 == 0) {
-      frames.push_back(Points({first, b(t)}, {0, 1}));
-    } else {
-      frames.push_back(Points({b(t), first}, {1, 0}));  // order within a frame does not matter
-    }
-    detected.push_back(2);
-    if (f >= 10 && f < 13) {
-      // A coasting copy of a third track with a wild pose.
-      frames.back().AddPerson(7).col(0) << 50, 50, 50, 1;
-    }
-    if (f == 16) {
-      frames.back().Person(0)(3, 0) = filled;  // track 0's joint filled: its position is meaningless
-      frames.back().Person(0).col(0).head<3>() << 9, 9, 9;
-    }
-  }
-  const std::vector<Poses3D> input = frames;
-  SmoothOffline(Offline(2), kMaxGap, filled, times, detected, &frames);
-  for (int f = 0; f < 40; ++f) {
-    SCOPED_TRACE(testing::Message() << "frame " << f);
-    const double t = times[f];
-    for (int p = 0; p < frames[f].num_persons(); ++p) {
-      const auto got = frames[f].Person(p).col(0).head<3>();
-      const int id = frames[f].track_ids[p];
-      if (id == 7 || f == 30 || (f == 16 && id == 0)) {
-        EXPECT_EQ(Eigen::Vector4d(frames[f].Person(p).col(0)), Eigen::Vector4d(input[f].Person(p).col(0)))
-            << "coasting, unknown time or filled: unchanged";
-        continue;
-      }
-      const Eigen::Vector3d expected = id == 1 ? b(t) : f < 20 ? a(t) : c(t);
-      EXPECT_LT((got - expected).norm(), 1e-9) << "track " << id;
-    }
-  }
-}
-
-TEST(SmoothOffline, OffLeavesFramesBitIdentical) {
-  std::vector<Poses3D> frames = {Points({Eigen::Vector3d(0, 0, 1)}, {0}), Points({Eigen::Vector3d(0.1, 0, 1)}, {0}),
-                                 Points({Eigen::Vector3d(0.15, 0, 1)}, {0})};
-  const std::vector<Poses3D> input = frames;
-  EXPECT_EQ(SmoothOffline(SmoothOptions{}, kMaxGap, 0.0, std::vector<double>{0, 0.04, 0.08}, {}, &frames), 0);
-  for (size_t f = 0; f < frames.size(); ++f) EXPECT_EQ(frames[f].data, input[f].data);
-  EXPECT_EQ(SmoothOffline(Causal(), kMaxGap, 0.0, std::vector<double>{0, 0.04, 0.08}, {}, &frames), 0)
-      << "causal smoothing happens inside the triangulator";
 }
 
 // --- Bone lengths -------------------------------------------------------------------------------
@@ -289,6 +182,16 @@ Skeleton BodySkeleton() {
   }
   for (const std::string& name : names) s.neighbour.push_back(FindJoint(names, NeighbourJoint(name)));
   return s;
+}
+
+// Step 15 on `frame`: the first `num_detected` persons are checked.
+int CheckBones(const BoneLengthOptions& options, const Skeleton& s, double unobserved_score, int num_detected,
+               BoneLengthHistory* history, Poses3D* frame, FrameStats* stats) {
+  BoneLengthsScratch scratch;
+  return steps::BoneLengths(
+      options,
+      {.limbs = s.limbs, .neighbour = s.neighbour, .unobserved_score = unobserved_score, .num_detected = num_detected},
+      history, &scratch, frame, stats);
 }
 
 // A person walking along x at 1 m/s with `noise_m` Gaussian noise per joint and axis.
@@ -310,13 +213,13 @@ TEST(BoneLengths, MarksExactlyTheCorruptedJoint) {
   options.enabled = true;
   for (double filled : {0.0, 0.05}) {
     SCOPED_TRACE(testing::Message() << "filled score " << filled);
-    BoneLengthChecker checker;
+    BoneLengthHistory history;
     std::mt19937_64 rng(5);
     FrameStats stats;
     for (int f = 0; f < 30; ++f) {
       Poses3D frame = Walker(f, 0.01, &rng);
       const Poses3D before = frame;
-      const int checked = checker.Apply(options, s.limbs, s.neighbour, filled, 1, &frame, &stats);
+      const int checked = CheckBones(options, s, filled, 1, &history, &frame, &stats);
       EXPECT_EQ(checked, f < options.min_observations ? 0 : 12) << "12 joints have limbs, checked once known";
       EXPECT_EQ(frame.data, before.data) << "clean frame " << f;
     }
@@ -327,7 +230,7 @@ TEST(BoneLengths, MarksExactlyTheCorruptedJoint) {
     Poses3D frame = Walker(30, 0.01, &rng);
     frame.Person(0).col(wrist).head<3>() += Eigen::Vector3d(0, 0.3, 0);
     Poses3D before = frame;
-    checker.Apply(options, s.limbs, s.neighbour, filled, 1, &frame, &stats);
+    CheckBones(options, s, filled, 1, &history, &frame, &stats);
     EXPECT_EQ(stats.bone_length_corrections, 1);
     for (int j = 0; j < 17; ++j) {
       if (j == wrist) continue;
@@ -346,7 +249,7 @@ TEST(BoneLengths, MarksExactlyTheCorruptedJoint) {
     frame.Person(0).col(elbow).head<3>() += Eigen::Vector3d(0, 0.3, 0);
     before = frame;
     stats.Reset();
-    checker.Apply(options, s.limbs, s.neighbour, filled, 1, &frame, &stats);
+    CheckBones(options, s, filled, 1, &history, &frame, &stats);
     EXPECT_EQ(stats.bone_length_corrections, 1);
     EXPECT_LE(frame.Person(0)(3, elbow), filled);
     EXPECT_EQ(Eigen::Vector4d(frame.Person(0).col(wrist)), Eigen::Vector4d(before.Person(0).col(wrist)));
@@ -359,7 +262,7 @@ TEST(BoneLengths, CleanTracksFilledJointsAndCoastingPersonsAreNeverCorrected) {
   const int elbow = FindJoint(CocoBodyJoints(), "elbow_right");
   BoneLengthOptions options;
   options.enabled = true;
-  BoneLengthChecker checker;
+  BoneLengthHistory history;
   std::mt19937_64 rng(11);
   FrameStats stats;
   for (int f = 0; f < 500; ++f) {
@@ -380,7 +283,7 @@ TEST(BoneLengths, CleanTracksFilledJointsAndCoastingPersonsAreNeverCorrected) {
       coasting.col(wrist).head<3>() += Eigen::Vector3d(1, 0, 0);
     }
     const Poses3D before = frame;
-    checker.Apply(options, s.limbs, s.neighbour, 0.05, 2, &frame, &stats);
+    CheckBones(options, s, 0.05, 2, &history, &frame, &stats);
     EXPECT_EQ(frame.data, before.data) << "frame " << f;
   }
   EXPECT_EQ(stats.bone_length_corrections, 0);

@@ -100,6 +100,16 @@ TEST(Triangulator, RejectsBadConfigurationAndShapes) {
   }
   EXPECT_THROW(Triangulator({cameras[0]}, CocoBodyJoints(), TriangulatorOptions{}), ConfigError);
   EXPECT_THROW(Triangulator(cameras, {"nose", "nose"}, TriangulatorOptions{}), ConfigError);
+  TriangulatorOptions too_many;
+  too_many.undistort.min_core_joints = 13;  // of the 12 default core joints
+  try {
+    Triangulator(cameras, CocoBodyJoints(), too_many);
+    FAIL() << "expected ConfigError";
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("undistort.min_core_joints (13) exceeds the number of core joints (12)"),
+              std::string::npos)
+        << e.what();
+  }
 
   Triangulator tri(cameras, CocoBodyJoints(), TriangulatorOptions{});
   Poses3D persons;

@@ -1,13 +1,16 @@
 // SPDX-License-Identifier: MIT
-// Step 11b: re-scoring persons against all views (verify.h) on hand-made geometry.
+// Steps 11b and 12b on hand-made geometry: re-scoring persons against all views (verify.h) and
+// lifting persons seen by one view (single_view.h), both judged by the other views
+// (view_verdict.h).
 #include <gtest/gtest.h>
 
 #include <vector>
 
 #include "core/joints.h"
+#include "core/pipeline/single_view.h"
 #include "core/pipeline/undistort.h"
-#include "core/pipeline/view_geometry.h"
 #include "core/pipeline/verify.h"
+#include "core/pipeline/view_geometry.h"
 #include "tests/pipeline/test_scene.h"
 
 namespace rpt {
@@ -21,7 +24,14 @@ struct VerifyFixture {
     for (const Camera& c : cameras) geometry.push_back(MakeViewGeometry(c));
     for (const auto& n : DefaultCoreJoints()) core.push_back(FindJoint(CocoBodyJoints(), n));
     const std::vector<Poses2D> views = test::ProjectPersons(cameras, detected);
-    steps::Undistort(views, cameras, geometry, {}, core, 3, 17, UndistortOptions{}, &prepared);
+    steps::Undistort(UndistortOptions{},
+                     {.views = views,
+                      .cameras = cameras,
+                      .geometry = geometry,
+                      .derived = {},
+                      .core_joints = core,
+                      .num_output_joints = 17},
+                     &prepared);
     persons.Clear(17);
     proposals.Clear(17);
     groups.begin = {0};
@@ -35,7 +45,16 @@ struct VerifyFixture {
   }
   int Run(const VerifyOptions& options = {}) {
     FrameStats stats;
-    const int kept = steps::Verify(options, prepared, geometry, core, proposals, groups, 0.05, &scratch, &persons, &stats);
+    ScoreKernel kernel;
+    kernel.scale_m = 0.05;
+    const int kept = steps::Verify(options,
+                                   {.views = prepared,
+                                    .geometry = geometry,
+                                    .core_joints = core,
+                                    .proposals = proposals,
+                                    .groups = groups,
+                                    .kernel = kernel},
+                                   &scratch, &persons, &stats);
     dropped = stats.unsupported_persons;
     return kept;
   }
@@ -85,6 +104,55 @@ TEST(Verify, AnOccludedPersonIsNotAPhantom) {
   VerifyFixture f({a, c}, {{hidden, 0}});
   EXPECT_EQ(f.Run(), 1);
   EXPECT_EQ(f.dropped, 0);
+}
+
+TEST(SingleView, LiftsAPoseOnlyWhenTheOtherViewsDoNotSeeAnEmptySpot) {
+  // A person detected by camera 0 only, standing in plain view of the four others, which detect
+  // nobody: four empty views contradict it. With single_view.min_empty_views above four they do
+  // not, and the pose is lifted to about the person's place.
+  const std::vector<Camera> cameras = test::RingCameras(5);
+  std::vector<ViewGeometry> geometry;
+  for (const Camera& c : cameras) geometry.push_back(MakeViewGeometry(c));
+  std::vector<int> core;
+  for (const auto& n : DefaultCoreJoints()) core.push_back(FindJoint(CocoBodyJoints(), n));
+  const Eigen::Matrix4Xd person = test::StandingPerson(0.5, 0.2);
+  std::vector<Poses2D> views = test::ProjectPersons(cameras, {person});
+  for (size_t v = 1; v < views.size(); ++v) views[v].Clear(17);
+  PreparedViews prepared;
+  steps::Undistort(UndistortOptions{},
+                   {.views = views,
+                    .cameras = cameras,
+                    .geometry = geometry,
+                    .derived = {},
+                    .core_joints = core,
+                    .num_output_joints = 17},
+                   &prepared);
+  const std::vector<TypicalLimb> limbs = ResolveTypicalLimbs(CocoBodyJoints());
+  const Proposals no_proposals;
+  const Groups no_groups;
+  ScoreKernel kernel;
+  kernel.scale_m = 0.05;
+  Poses3D found;
+  found.Clear(17);
+  const steps::SingleViewInput input{.views = prepared,
+                                     .geometry = geometry,
+                                     .core_joints = core,
+                                     .limbs = limbs,
+                                     .proposals = no_proposals,
+                                     .groups = no_groups,
+                                     .kernel = kernel,
+                                     .found = found};
+  SingleViewOptions options;
+  options.enabled = true;
+  SingleViewScratch scratch;
+  Poses3D lifted;
+  FrameStats stats;
+  EXPECT_EQ(steps::SingleView(options, input, &scratch, &lifted, &stats), 0) << "four empty views";
+  options.min_empty_views = 5;
+  ASSERT_EQ(steps::SingleView(options, input, &scratch, &lifted, &stats), 1);
+  EXPECT_EQ(stats.single_view_persons, 1);
+  const Eigen::Vector3d hips = 0.5 * (lifted.Person(0).col(11) + lifted.Person(0).col(12)).head<3>();
+  EXPECT_LT((hips - 0.5 * (person.col(11) + person.col(12)).head<3>()).norm(), 0.5);
 }
 
 }  // namespace
