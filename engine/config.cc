@@ -6,7 +6,7 @@
 #include <sstream>
 #include <type_traits>
 
-#include "cli/json_text.h"
+#include "engine/json_text.h"
 #include "core/closest_name.h"
 #include "core/errors.h"
 #include "core/option_codec.h"

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "engine/run.h"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <exception>
@@ -13,7 +14,7 @@
 #include "core/errors.h"
 #include "core/pipeline/room_check.h"
 #include "core/pipeline/triangulator.h"
-#include "core/smooth_offline.h"
+#include "core/pipeline/offline_smoother.h"
 #include "engine/checked_source.h"
 #include "engine/input.h"
 #include "engine/thread_count.h"
@@ -50,7 +51,8 @@ void Emit(int index, const SequenceFrame& frame, const Poses3D& persons, const F
 }
 
 // Triangulates the frames of `source` (sequence `index`) as they are pulled: one input frame is
-// alive at a time (a few more with offline smoothing, which looks smooth.offline_sigma_s x 3 ahead).
+// alive at a time (a window's worth with offline smoothing, which looks 3 x smooth.offline_sigma_s
+// ahead).
 void RunSequence(int index, FrameSource& source, const RunOptions& options, const metrics::EvalOptions* eval,
                  FrameSink* sink, std::atomic<long>* frames_done, bool report_progress, SequenceRun* run) {
   const SequenceHeader& header = source.header();
@@ -67,18 +69,48 @@ void RunSequence(int index, FrameSource& source, const RunOptions& options, cons
   if (sink != nullptr) sink->BeginSequence(index, header, output_joints);
 
   const std::vector<Poses2D> no_views(header.cameras.size());
-  SequenceFrame frame;
-  Poses3D persons;
-  FrameStats stats;
-  while (source.Next(&frame)) {
+  // smooth.mode = offline: frames come back from the smoother once their window is complete; the
+  // input frames wait beside them (a window's worth, their buffers reused).
+  const bool offline = tri_options.track.enabled && tri_options.smooth.mode == SmoothMode::kOffline;
+  OfflineSmoother smoother(tri_options.smooth, tri_options.track.max_gap_s, tri_options.UnobservedScore());
+  std::vector<SequenceFrame> waiting(1);  // ring of the input frames the smoother holds
+  size_t first_waiting = 0, num_waiting = 0;
+  Poses3D persons, smoothed;
+  FrameStats stats, smoothed_stats;
+  const auto emit_ready = [&] {
+    while (smoother.Pop(&smoothed, &smoothed_stats)) {
+      SequenceFrame& frame = waiting[first_waiting];
+      Emit(index, frame, smoothed, smoothed_stats, header, output_joints, run, &checker, sink);
+      first_waiting = (first_waiting + 1) % waiting.size();
+      --num_waiting;
+    }
+  };
+  while (true) {
+    if (offline && num_waiting == waiting.size()) {  // grow the ring, keeping the order
+      std::rotate(waiting.begin(), waiting.begin() + static_cast<long>(first_waiting), waiting.end());
+      first_waiting = 0;
+      waiting.resize(waiting.size() * 2);
+    }
+    SequenceFrame& frame = offline ? waiting[(first_waiting + num_waiting) % waiting.size()] : waiting[0];
+    if (!source.Next(&frame)) break;
     try {
       triangulator.Process(frame.views.empty() ? no_views : frame.views, frame.timestamp_s, &persons, &stats);
     } catch (const InputError& e) {  // e.g. more persons in a view than triangulate.max_persons_per_view
       throw InputError(header.name + ": frame '" + frame.id + "': " + e.what());
     }
-    Emit(index, frame, persons, stats, header, output_joints, run, &checker, sink);
+    if (offline) {
+      ++num_waiting;
+      smoother.Push(frame.timestamp_s, persons, persons.num_persons() - stats.coasting_tracks, stats);
+      emit_ready();
+    } else {
+      Emit(index, frame, persons, stats, header, output_joints, run, &checker, sink);
+    }
     const long done = ++*frames_done;
     if (report_progress && options.progress) options.progress(done);
+  }
+  if (offline) {
+    smoother.Flush();
+    emit_ready();
   }
   if (checker) run->result.check = checker->Finish();
   run->result.timing = run->timing.Finalize();

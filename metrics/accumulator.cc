@@ -307,36 +307,6 @@ void MetricsAccumulator::Merge(const MetricsAccumulator& other) {
   totals_.Merge(other.totals_);
 }
 
-void MetricsAccumulator::Merge(const MetricsAccumulator& other) {
-  for (const std::string& id : other.frame_ids_) {
-    if (!frame_ids_.insert(id).second) throw InputError("metrics: frame '" + id + "' was added twice");
-  }
-  const EvalRecords& o = other.records_;
-  const int gt_id_base = records_.num_gt;
-  records_.pairs.reserve(records_.pairs.size() + o.pairs.size());
-  for (const PairRecord& pair : o.pairs) {
-    records_.pairs.push_back(pair);
-    if (pair.match.gt_id >= 0) records_.pairs.back().match.gt_id += gt_id_base;
-  }
-  records_.num_frames += o.num_frames;
-  records_.num_frames_with_gt += o.num_frames_with_gt;
-  records_.num_gt += o.num_gt;
-  records_.num_dropped_gt += o.num_dropped_gt;
-  records_.num_pred_counted += o.num_pred_counted;
-  records_.num_pred_total += o.num_pred_total;
-  const auto add = [](std::vector<int>* into, const std::vector<int>& from) {
-    for (size_t i = 0; i < into->size() && i < from.size(); ++i) (*into)[i] += from[i];
-  };
-  add(&records_.gt_valid_per_joint, o.gt_valid_per_joint);
-  add(&records_.pcp_total, o.pcp_total);
-  add(&records_.pcp_correct_nearest, o.pcp_correct_nearest);
-  // The group sizes of the last joint lists seen (as Add does).
-  for (size_t i = 0; i < records_.group_num_joints.size() && i < o.group_num_joints.size(); ++i) {
-    if (o.group_num_joints[i] != 0) records_.group_num_joints[i] = o.group_num_joints[i];
-  }
-  if (records_.legacy && o.legacy) records_.legacy->Merge(*o.legacy);
-}
-
 MetricsResult MetricsAccumulator::Finalize() const {
   MetricsResult result;
   for (const MetricReducer reduce : MetricReducers()) reduce(totals_, options_, &result);

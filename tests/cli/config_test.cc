@@ -249,9 +249,9 @@ TEST(Config, ChecksNameSectionAndKeyWithRangesFromTheMetadata) {
             "--set metrics.legacy_pcp_actors=1000000000: metrics.legacy_pcp_actors: '1000000000' is not an integer in "
             "[1, 10000]");
   // Values set in code get the same words from Check().
-  Config in_code;
+  engine::Config in_code;
   in_code.triangulator.filter.min_match_score = 1.5;
-  EXPECT_EQ(test::ConfigErrorOf([&] { CheckConfig(in_code); }),
+  EXPECT_EQ(test::ConfigErrorOf([&] { engine::CheckConfig(in_code); }),
             "filter.min_match_score: '1.5' is not a number in [0, 1]");
   // Every option is described.
   for (const engine::ConfigOptionInfo& option : engine::ConfigOptions()) {
@@ -286,7 +286,7 @@ TEST(Config, DocsOptionTablesAreGeneratedFromTheMetadata) {
          "`./build/rpt config --markdown > docs/options.md`";
   const test::CommandResult r = test::RunRpt("config --markdown");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_EQ(r.out, ConfigMarkdown());
+  EXPECT_EQ(r.out, engine::ConfigMarkdown());
   EXPECT_NE(r.out.find("| `prefilter.max_pairs_per_person` | `30` | integer in [0, 1000000000] |  |"),
             std::string::npos);
   EXPECT_NE(r.out.find("| `metrics.matching` | `greedy` | greedy \\| hungarian |"), std::string::npos);
@@ -317,7 +317,7 @@ const char* const kCodecKeys[] = {"prefilter.enabled",       "merge.top_k", "fil
                                   "triangulate.core_joints", "score.mode",  "room_check.size_m"};
 
 OptionSpec SpecOf(const std::string& key) {
-  for (const ConfigOptionInfo& option : ConfigOptions()) {
+  for (const engine::ConfigOptionInfo& option : engine::ConfigOptions()) {
     if (option.key == key) return option.spec;
   }
   ADD_FAILURE() << "no option " << key;
@@ -350,13 +350,13 @@ struct Outcome {
 };
 
 Outcome BySet(const std::string& key, const std::string& text) {
-  Config c;
+  engine::Config c;
   try {
-    ApplyConfigOverride(key + "=" + text, &c);
+    engine::ApplyConfigOverride(key + "=" + text, &c);
   } catch (const ConfigError& e) {
     return {e.what(), ""};
   }
-  return {"", GetConfigOption(c, key)};
+  return {"", engine::GetConfigOption(c, key)};
 }
 
 Outcome ByParam(const std::string& name, const std::string& text) {
@@ -372,13 +372,13 @@ Outcome ByParam(const std::string& name, const std::string& text) {
 Outcome ByFile(const std::string& key, const nlohmann::json& value, const std::filesystem::path& path) {
   const std::string section = key.substr(0, key.find('.'));
   std::ofstream(path) << nlohmann::json{{section, {{key.substr(section.size() + 1), value}}}}.dump();
-  Config c;
+  engine::Config c;
   try {
     engine::LoadConfigFile(path, &c);
   } catch (const ConfigError& e) {
     return {e.what(), ""};
   }
-  return {"", GetConfigOption(c, key)};
+  return {"", engine::GetConfigOption(c, key)};
 }
 
 TEST(OptionCodec, SetParamAndConfigFilesReadValuesAlike) {

@@ -11,6 +11,7 @@
 
 #include "core/errors.h"
 #include "datasets/readers/synthetic_dataset.h"
+#include "datasets/registry.h"
 #include "tests/error_message.h"
 
 namespace rpt {
@@ -173,7 +174,7 @@ TEST(DatasetParams, SyntheticSeedTakesTheFullRange) {
   EXPECT_THAT(test::ErrorMessage<ConfigError>([] {
                 MaterializeAll(OpenSynthetic(Request({{"noise", "noisy"}})));
               }),
-              HasSubstr("synthetic: param noise: 'noisy' is not one of"));
+              HasSubstr("synthetic.noise: 'noisy' is not one of perfect, clean, realistic, hard, none"));
   EXPECT_THAT(test::ErrorMessage<ConfigError>([] {
                 MaterializeAll(OpenSynthetic(Request({{"camras", "3"}})));
               }),

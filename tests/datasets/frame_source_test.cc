@@ -14,6 +14,7 @@
 #include "datasets/synthetic/detector_options.h"
 #include "datasets/synthetic/scene.h"
 #include "datasets/synthetic/synthetic_sequence.h"
+#include "datasets/registry.h"
 #include "tests/counting_source.h"
 
 namespace rpt {

@@ -339,9 +339,13 @@ TEST(GenericLabels, RegistryPairTakesSplitAndFps) {
   EXPECT_EQ(sequences[0].frames.size(), 2u);
   EXPECT_DOUBLE_EQ(sequences[0].frames[1].timestamp_s, 2 / 50.0);
   request.params = {{"fps", "fast"}};
-  EXPECT_THAT(test::ConfigErrorOf([&] { ReadDataset(request); }), HasSubstr("fps"));
+  EXPECT_EQ(test::ConfigErrorOf([&] { ReadDataset(request); }),
+            "--param fps=fast: generic.fps: 'fast' is not a number >= 0");
+  request.params = {{"fps", "-1"}};
+  EXPECT_EQ(test::ConfigErrorOf([&] { ReadDataset(request); }), "--param fps=-1: generic.fps: '-1' is not a number >= 0");
   request.params = {{"frames", "1-2"}};
-  EXPECT_THAT(test::ConfigErrorOf([&] { ReadDataset(request); }), HasSubstr("no parameter 'frames'"));
+  EXPECT_EQ(test::ConfigErrorOf([&] { ReadDataset(request); }),
+            "--param frames=1-2: unknown parameter 'frames' (generic has: split, fps)");
 }
 
 TEST(GenericCommon, JointNamesAreCheckedWithSuggestions) {

@@ -16,6 +16,7 @@
 
 #include "core/errors.h"
 #include "datasets/readers/mvor.h"
+#include "datasets/registry.h"
 #include "tests/datasets/io_test_util.h"
 #include "tests/error_message.h"
 #include "tests/test_data.h"

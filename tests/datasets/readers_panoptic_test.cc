@@ -477,7 +477,7 @@ TEST(PanopticReader, BadParamsAreConfigErrors) {
   EXPECT_EQ(PanopticParams{}.cameras, "00_03,00_06,00_12,00_13,00_23");
   EXPECT_THAT(config_error({{"camera", "00_03"}}), HasSubstr("did you mean 'cameras'?"));
   EXPECT_EQ(test::ErrorMessage<ConfigError>([&] {
-              ReadPanoptic(Request(dir.path(), {{"sequences", ","}}));
+              ReadDataset(Request(dir.path(), {{"sequences", ","}}));
             }),
             "panoptic.sequences: no sequences selected");
 }

@@ -225,7 +225,7 @@ TEST(Shelf4daReader, ParamsSelectFramesDetectionsNoseAndAssociation) {
   EXPECT_THAT(test::ConfigErrorOf([&] {
                 ReadDataset(Request(dir.path(), {{"detections", "pkl"}}));
               }),
-              HasSubstr("param detections: 'pkl' is not one of openpose, none"));
+              HasSubstr("--param detections=pkl: shelf-4da.detections: 'pkl' is not one of openpose, none"));
   EXPECT_THAT(test::ConfigErrorOf([&] {
                 ReadDataset(Request(dir.path(), {{"min_joints", "1"}}));
               }),
@@ -237,7 +237,7 @@ TEST(Shelf4daReader, ParamsSelectFramesDetectionsNoseAndAssociation) {
   EXPECT_THAT(test::ConfigErrorOf([&] {
                 ReadDataset(Request(dir.path(), {{"fps", "30"}}));
               }),
-              HasSubstr("has no parameter 'fps'"));
+              HasSubstr("--param fps=30: unknown parameter 'fps' (shelf-4da has:"));
 }
 
 TEST(Shelf4daReader, MalformedDetectionFilesNameFileLineAndToken) {
