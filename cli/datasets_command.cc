@@ -4,9 +4,13 @@
 #include <memory>
 
 #include "cli/commands.h"
-#include "datasets/registry.h"
+#include "engine/dataset_registry.h"
 
 namespace rpt::cli {
+
+using engine::DatasetEntry;
+using engine::DatasetParamsMarkdown;
+using engine::DatasetRegistry;
 
 void RegisterDatasetsCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand("datasets", "List the dataset readers, their layouts and parameters");

@@ -13,7 +13,7 @@
 #include "engine/run.h"
 #include "core/errors.h"
 #include "core/text.h"
-#include "datasets/readers/synthetic_dataset.h"
+#include "datasets/synthetic/synthetic_dataset.h"
 #include "datasets/synthetic/detector_options.h"
 
 namespace rpt::cli {

@@ -26,6 +26,7 @@
 #include "datasets/detections.h"
 #include "datasets/detector_stats/statistics.h"
 #include "datasets/synthetic/detector_options.h"
+#include "datasets/synthetic/simulate_detections.h"
 
 namespace rpt::cli {
 namespace {

@@ -4,7 +4,7 @@
 // Every reader is a pair of functions (datasets/readers/<name>.h):
 //   DatasetInfo <Name>Info();
 //   std::vector<std::unique_ptr<FrameSource>> Open<Name>(const DatasetRequest& request);
-// registered together (datasets/registry.cc), and a <Name>Params struct with VisitFields: the
+// registered together (engine/dataset_registry.cc), and a <Name>Params struct with VisitFields: the
 // reader parses request.params into it once (ParseDatasetParams, datasets/dataset_params.h) and
 // <Name>Info() lists it (DescribeDatasetParams).
 // Open<Name> returns one FrameSource (datasets/frame_source.h) per sequence. Everything that is

@@ -5,7 +5,6 @@
 #include <unordered_set>
 
 #include "core/errors.h"
-#include "datasets/synthetic/detector_simulator.h"
 
 namespace rpt {
 
@@ -95,26 +94,6 @@ InputError NoFrameMatchesError(const std::string& source, size_t num_detection_f
   return InputError(source + ": none of its " + std::to_string(num_detection_frames) + " frame ids" +
                     (num_detection_frames == 0 ? "" : " (e.g. '" + first_detection_id + "')") +
                     " matches a frame of sequence '" + sequence_name + "' (e.g. '" + first_frame_id + "')");
-}
-
-JointNames SimulatedDetectionJoints(const SimulationOptions& options, const JointNames& gt_joints) {
-  if (!options.joints.empty()) return options.joints;
-  const bool whole_body = FindJoint(gt_joints, "hand_root_left") >= 0;
-  return whole_body ? CocoWholeBodyJoints() : CocoBodyJoints();
-}
-
-synthetic::DetectorOptions SimulatedDetectorModel(const SimulationOptions& options) {
-  return synthetic::DetectorProfile(options.perfect ? "perfect" : options.detector);
-}
-
-void SimulateDetections(const SimulationOptions& options, Sequence* sequence) {
-  const JointNames joints = SimulatedDetectionJoints(options, sequence->gt_joints);
-  const synthetic::DetectorSimulator detector(SimulatedDetectorModel(options), joints, options.seed);
-  sequence->detection_joints = joints;
-  for (size_t f = 0; f < sequence->frames.size(); ++f) {
-    SequenceFrame& frame = sequence->frames[f];
-    detector.Detect(sequence->cameras, frame.gt, sequence->gt_joints, f, &frame.views, nullptr, &frame.labels_2d);
-  }
 }
 
 }  // namespace rpt

@@ -3,7 +3,6 @@
 // they attach to a Sequence.
 #pragma once
 
-#include <cstdint>
 #include <span>
 #include <string>
 #include <vector>
@@ -12,7 +11,6 @@
 #include "core/joints.h"
 #include "core/poses.h"
 #include "datasets/sequence.h"
-#include "datasets/synthetic/detector_options.h"
 
 namespace rpt {
 
@@ -56,20 +54,5 @@ void CountUnattachedFrames(const AttachReport& report, const std::string& source
 InputError NoFrameMatchesError(const std::string& source, size_t num_detection_frames,
                                const std::string& first_detection_id, const std::string& sequence_name,
                                const std::string& first_frame_id);
-
-// Replaces every frame's views by simulated detections of its GT (synthetic detector model,
-// joints mapped by name to `joints`; default: COCO-17, or COCO-WholeBody when the GT has it), and
-// its labels_2d by the simulator's view of the GT (which joints it treated as occluded).
-struct SimulationOptions {
-  uint64_t seed = 1;
-  std::string detector = "realistic";  // profile: perfect | clean | realistic | hard (docs/detector_model.md)
-  bool perfect = false;   // deprecated: same as detector = "perfect"
-  JointNames joints;      // empty = automatic as above
-};
-void SimulateDetections(const SimulationOptions& options, Sequence* sequence);
-// Its parts (also used frame by frame: datasets/simulated_source.h): the simulated joints for GT
-// with `gt_joints`, and the detector model of the profile.
-JointNames SimulatedDetectionJoints(const SimulationOptions& options, const JointNames& gt_joints);
-synthetic::DetectorOptions SimulatedDetectorModel(const SimulationOptions& options);
 
 }  // namespace rpt

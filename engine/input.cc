@@ -6,10 +6,10 @@
 
 #include "core/errors.h"
 #include "datasets/readers/detections_file.h"
-#include "datasets/simulated_source.h"
+#include "datasets/synthetic/simulated_source.h"
 #include "engine/attached_detections.h"
 #include "engine/checked_source.h"
-#include "datasets/registry.h"
+#include "engine/dataset_registry.h"
 
 namespace rpt::engine {
 namespace {

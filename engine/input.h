@@ -14,6 +14,7 @@
 #include "datasets/frame_source.h"
 #include "datasets/input_warnings.h"
 #include "datasets/sequence.h"
+#include "datasets/synthetic/simulate_detections.h"
 
 namespace rpt::engine {
 
@@ -21,7 +22,7 @@ class AttachedDetections;
 
 // What to read (the input options of every command that reads a dataset).
 struct InputSpec {
-  std::string dataset;              // dataset reader (datasets/registry.h)
+  std::string dataset;              // dataset reader (engine/dataset_registry.h)
   std::string root;                 // its folder (or file)
   std::vector<std::string> params;  // key=value parameters of the reader (with `labels`: of the labels reader)
   std::string labels;               // generic labels file (JSON or HDF5 cache) instead of a dataset

@@ -12,7 +12,7 @@
 #include "core/text.h"
 #include "datasets/dataset_params.h"
 #include "datasets/io/json_file.h"
-#include "datasets/registry.h"
+#include "engine/dataset_registry.h"
 
 namespace rpt::engine {
 namespace {

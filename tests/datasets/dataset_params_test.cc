@@ -10,11 +10,13 @@
 #include <sstream>
 
 #include "core/errors.h"
-#include "datasets/readers/synthetic_dataset.h"
-#include "datasets/registry.h"
+#include "datasets/synthetic/synthetic_dataset.h"
+#include "engine/dataset_registry.h"
 #include "tests/error_message.h"
 
 namespace rpt {
+using engine::DatasetRegistry;
+using engine::DatasetEntry;
 namespace {
 
 using ::testing::HasSubstr;

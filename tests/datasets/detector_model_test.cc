@@ -18,14 +18,16 @@
 #include "datasets/detector_stats/statistics.h"
 #include "datasets/readers/mvor.h"
 #include "datasets/readers/shelf_4da.h"
-#include "datasets/registry.h"
+#include "engine/dataset_registry.h"
 #include "datasets/synthetic/camera_rig.h"
 #include "datasets/synthetic/detector_simulator.h"
 #include "datasets/synthetic/scene.h"
 #include "datasets/synthetic/synthetic_sequence.h"
 #include "tests/test_data.h"
+#include "datasets/synthetic/simulate_detections.h"
 
 namespace rpt::synthetic {
+using engine::ReadDataset;
 namespace {
 
 uint64_t FnvBytes(uint64_t h, const void* data, size_t n) {

@@ -10,14 +10,16 @@
 #include <vector>
 
 #include "datasets/frame_source.h"
-#include "datasets/readers/synthetic_dataset.h"
+#include "datasets/synthetic/synthetic_dataset.h"
 #include "datasets/synthetic/detector_options.h"
 #include "datasets/synthetic/scene.h"
 #include "datasets/synthetic/synthetic_sequence.h"
-#include "datasets/registry.h"
+#include "engine/dataset_registry.h"
 #include "tests/counting_source.h"
 
 namespace rpt {
+using engine::ReadDataset;
+using engine::OpenDataset;
 namespace {
 
 synthetic::SceneOptions SmallScene(int frames) {

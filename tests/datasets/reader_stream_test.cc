@@ -24,13 +24,15 @@
 #include "datasets/readers/detections_file.h"
 #include "datasets/readers/generic_labels.h"
 #include "datasets/readers/hdf5_cache.h"
-#include "datasets/registry.h"
+#include "engine/dataset_registry.h"
 #include "tests/datasets/io_test_util.h"
 #include "tests/datasets/readers_generic_test_util.h"
 #include "tests/error_message.h"
 #include "tests/test_data.h"
 
 namespace rpt::test {
+using engine::OpenDataset;
+using engine::ReadDataset;
 namespace {
 
 // Times compare equal when both are unknown (NaN).

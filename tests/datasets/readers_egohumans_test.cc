@@ -11,12 +11,14 @@
 #include <map>
 
 #include "core/errors.h"
-#include "datasets/registry.h"
+#include "engine/dataset_registry.h"
 #include "tests/datasets/reader_stream_test.h"
 #include "tests/datasets/readers_h36m_ego_test_util.h"
 #include "tests/datasets/tolerance_test_util.h"
 
 namespace rpt {
+using engine::ReadDataset;
+using engine::OpenDataset;
 namespace {
 
 namespace fs = std::filesystem;

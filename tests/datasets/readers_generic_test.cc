@@ -14,11 +14,12 @@
 #include "datasets/readers/generic_common.h"
 #include "datasets/readers/generic_labels.h"
 #include "datasets/readers/hdf5_cache.h"
-#include "datasets/registry.h"
+#include "engine/dataset_registry.h"
 #include "tests/datasets/readers_generic_test_util.h"
 #include "tests/datasets/tolerance_test_util.h"
 
 namespace rpt {
+using engine::ReadDataset;
 namespace {
 
 using ::testing::HasSubstr;

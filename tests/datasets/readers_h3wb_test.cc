@@ -9,12 +9,14 @@
 
 #include "core/errors.h"
 #include "datasets/readers/human36m.h"
-#include "datasets/registry.h"
+#include "engine/dataset_registry.h"
 #include "tests/datasets/reader_stream_test.h"
 #include "tests/datasets/readers_h36m_ego_test_util.h"
 #include "tests/datasets/tolerance_test_util.h"
 
 namespace rpt {
+using engine::ReadDataset;
+using engine::OpenDataset;
 namespace {
 
 namespace fs = std::filesystem;

@@ -16,12 +16,13 @@
 
 #include "core/errors.h"
 #include "datasets/readers/mvor.h"
-#include "datasets/registry.h"
+#include "engine/dataset_registry.h"
 #include "tests/datasets/io_test_util.h"
 #include "tests/error_message.h"
 #include "tests/test_data.h"
 
 namespace rpt {
+using engine::ReadDataset;
 namespace {
 
 using ::testing::HasSubstr;

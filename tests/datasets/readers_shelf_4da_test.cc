@@ -24,12 +24,13 @@
 #include "datasets/readers/shelf_4da.h"
 #include "datasets/readers/shelf_campus.h"
 #include "datasets/readers/voxelpose_calibration.h"
-#include "datasets/registry.h"
+#include "engine/dataset_registry.h"
 #include "tests/datasets/io_test_util.h"
 #include "tests/error_message.h"
 #include "tests/test_data.h"
 
 namespace rpt {
+using engine::ReadDataset;
 namespace {
 
 using ::testing::HasSubstr;

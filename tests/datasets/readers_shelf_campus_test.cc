@@ -17,12 +17,13 @@
 #include "core/joints.h"
 #include "datasets/io/mat.h"
 #include "datasets/readers/shelf_campus.h"
-#include "datasets/registry.h"
+#include "engine/dataset_registry.h"
 #include "tests/datasets/io_test_util.h"
 #include "tests/error_message.h"
 #include "tests/test_data.h"
 
 namespace rpt {
+using engine::ReadDataset;
 namespace {
 
 using ::testing::HasSubstr;

@@ -13,8 +13,9 @@
 #include <vector>
 
 #include "datasets/detections.h"
-#include "datasets/registry.h"
+#include "engine/dataset_registry.h"
 #include "tests/test_data.h"
+#include "datasets/synthetic/simulate_detections.h"
 
 namespace rpt::engine {
 namespace {

@@ -8,12 +8,13 @@
 #include <vector>
 
 #include "datasets/frame_source.h"
-#include "datasets/readers/synthetic_dataset.h"
-#include "datasets/simulated_source.h"
+#include "datasets/synthetic/synthetic_dataset.h"
+#include "datasets/synthetic/simulated_source.h"
 #include "engine/detection_checks.h"
 #include "engine/frame_sink.h"
 #include "engine/run.h"
 #include "tests/counting_source.h"
+#include "datasets/synthetic/simulate_detections.h"
 
 namespace rpt::engine {
 namespace {

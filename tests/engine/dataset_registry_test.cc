@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The dataset registry (datasets/registry.h): every reader is listed with parameters its own
+// The dataset registry (engine/dataset_registry.h): every reader is listed with parameters its own
 // parser accepts, docs/datasets.md shows the tables it generates, and opening a dataset gives the
 // frames that reading it whole gives.
 #include <gtest/gtest.h>
@@ -10,9 +10,9 @@
 #include <string>
 
 #include "core/errors.h"
-#include "datasets/registry.h"
+#include "engine/dataset_registry.h"
 
-namespace rpt {
+namespace rpt::engine {
 namespace {
 
 TEST(DatasetRegistry, EveryReaderIsListedOnce) {
@@ -55,4 +55,4 @@ TEST(DatasetRegistry, AnUnknownDatasetIsAConfigErrorListingTheKnownOnes) {
 }
 
 }  // namespace
-}  // namespace rpt
+}  // namespace rpt::engine

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "datasets/simulated_source.h"
+#include "datasets/synthetic/simulated_source.h"
 
 #include <utility>
 

@@ -12,7 +12,7 @@
 #include "datasets/frame_source.h"
 #include "datasets/sequence.h"
 
-namespace rpt {
+namespace rpt::engine {
 
 struct DatasetEntry {
   DatasetInfo info;
@@ -35,4 +35,4 @@ std::vector<std::unique_ptr<FrameSource>> OpenDataset(const DatasetRequest& requ
 // Frames are not validated here (the consumer validates: datasets/sequence.h).
 std::vector<Sequence> ReadDataset(const DatasetRequest& request);
 
-}  // namespace rpt
+}  // namespace rpt::engine

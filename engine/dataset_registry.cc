@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "datasets/registry.h"
+#include "engine/dataset_registry.h"
 
 #include "core/errors.h"
 #include "core/text.h"
@@ -11,9 +11,9 @@
 #include "datasets/readers/panoptic.h"
 #include "datasets/readers/shelf_4da.h"
 #include "datasets/readers/shelf_campus.h"
-#include "datasets/readers/synthetic_dataset.h"
+#include "datasets/synthetic/synthetic_dataset.h"
 
-namespace rpt {
+namespace rpt::engine {
 
 const std::vector<DatasetEntry>& DatasetRegistry() {
   static const std::vector<DatasetEntry> entries = {
@@ -68,4 +68,4 @@ std::vector<std::unique_ptr<FrameSource>> OpenDataset(const DatasetRequest& requ
 
 std::vector<Sequence> ReadDataset(const DatasetRequest& request) { return MaterializeAll(OpenDataset(request)); }
 
-}  // namespace rpt
+}  // namespace rpt::engine

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "datasets/readers/synthetic_dataset.h"
+#include "datasets/synthetic/synthetic_dataset.h"
 
 #include <algorithm>
 #include <memory>

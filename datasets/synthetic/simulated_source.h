@@ -9,6 +9,7 @@
 #include "datasets/detections.h"
 #include "datasets/frame_source.h"
 #include "datasets/synthetic/detector_simulator.h"
+#include "datasets/synthetic/simulate_detections.h"
 
 namespace rpt {
 
