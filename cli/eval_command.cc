@@ -40,7 +40,6 @@ void RunEval(const EvalArgs& args) {
   options.triangulator = config.triangulator;
   options.eval = config.metrics;
   options.checks = engine::DetectionCheckOptions{};
-  options.checks->max_gap_s = config.triangulator.track.max_gap_s;  // one notion of continuity
   options.threads = args.threads;
   std::unique_ptr<Progress> progress = ProgressOf(input, !args.quiet);
   options.progress = ReportTo(progress.get());

@@ -45,7 +45,7 @@ void RunInspect(const InspectArgs& args) {
     engine::DetectionCheckOptions check_options;
     check_options.max_frames = 0;
     check_options.shift_frames = 0;
-    const engine::SequenceCheck check = engine::CheckDetections(s, check_options);
+    const engine::SequenceCheck check = engine::CheckDetections(s, TrackOptions{}.max_gap_s, check_options);
     nlohmann::ordered_json seq;
     seq["sequence"] = s.name;
     seq["frames"] = s.frames.size();

@@ -195,8 +195,8 @@ struct DetectionChecker::State {
     std::vector<ProjectedView> projected;  // per camera, empty until needed
   };
 
-  State(const SequenceHeader& h, long n, const DetectionCheckOptions& o)
-      : header(h), options(o), num_frames(n),
+  State(const SequenceHeader& h, long n, double gap, const DetectionCheckOptions& o)
+      : header(h), options(o), max_gap_s(gap), num_frames(n),
         measured_thinning(n >= 0 ? 0 : 2 * static_cast<size_t>(std::max(o.max_frames, 0))),
         anchor_thinning(o.shift_frames > 0 ? 2 * static_cast<size_t>(o.shift_frames) : 0) {
     check.sequence = h.name;
@@ -283,6 +283,7 @@ struct DetectionChecker::State {
 
   SequenceHeader header;
   DetectionCheckOptions options;
+  double max_gap_s;
   long num_frames;
   int K = 0;
   std::vector<int> det_of_gt;
@@ -300,8 +301,9 @@ struct DetectionChecker::State {
   Thinning<AnchorUnits> anchor_thinning;
 };
 
-DetectionChecker::DetectionChecker(const SequenceHeader& header, long num_frames, const DetectionCheckOptions& options)
-    : state_(std::make_unique<State>(header, num_frames, options)) {}
+DetectionChecker::DetectionChecker(const SequenceHeader& header, long num_frames, double max_gap_s,
+                                   const DetectionCheckOptions& options)
+    : state_(std::make_unique<State>(header, num_frames, max_gap_s, options)) {}
 DetectionChecker::~DetectionChecker() = default;
 DetectionChecker::DetectionChecker(DetectionChecker&&) noexcept = default;
 DetectionChecker& DetectionChecker::operator=(DetectionChecker&&) noexcept = default;
@@ -311,7 +313,7 @@ void DetectionChecker::Add(const SequenceFrame& frame) {
   const long f = ++s.last;
   if (f > 0) {
     const double dt = frame.timestamp_s - s.last_time;
-    if (!(dt > 0 && dt <= s.options.max_gap_s)) {  // NaN: not continuous
+    if (!(dt > 0 && dt <= s.max_gap_s)) {  // NaN: not continuous
       s.last_break = f;
       s.any_break = true;
     }
@@ -394,7 +396,7 @@ SequenceCheck DetectionChecker::Finish() {
     char text[160];
     if (s.any_break) {
       std::snprintf(text, sizeof(text), "frames are not continuous (more than %g s apart or without a time)",
-                    s.options.max_gap_s);
+                    s.max_gap_s);
     } else {
       std::snprintf(text, sizeof(text), "no frame with detections has %d continuous frames on each side", K);
     }
@@ -444,18 +446,10 @@ SequenceCheck DetectionChecker::Finish() {
   return check;
 }
 
-SequenceCheck CheckDetections(const Sequence& s, const DetectionCheckOptions& options) {
-  DetectionChecker checker(s, static_cast<long>(s.frames.size()), options);
+SequenceCheck CheckDetections(const Sequence& s, double max_gap_s, const DetectionCheckOptions& options) {
+  DetectionChecker checker(s, static_cast<long>(s.frames.size()), max_gap_s, options);
   for (const SequenceFrame& frame : s.frames) checker.Add(frame);
   return checker.Finish();
-}
-
-std::vector<SequenceCheck> CheckDetections(const std::vector<Sequence>& sequences,
-                                           const DetectionCheckOptions& options) {
-  std::vector<SequenceCheck> checks;
-  checks.reserve(sequences.size());
-  for (const Sequence& s : sequences) checks.push_back(CheckDetections(s, options));
-  return checks;
 }
 
 bool LooksShifted(const ShiftCheck& shift) {

@@ -24,8 +24,6 @@ struct DetectionCheckOptions {
   int max_shift = 5;
   // Frames per sequence at which the shift test compares (evenly spaced); 0 = all.
   int shift_frames = 40;
-  // Consecutive frames further apart than this (or with an unknown time) are not continuous.
-  double max_gap_s = 1.0;
   // Joints (shared by name, GT-valid, detected, in front of the camera) a GT person and a
   // detection must have in common to be compared.
   int min_joints = 3;
@@ -85,7 +83,10 @@ struct SequenceCheck {
 // are at most twice the wanted number).
 class DetectionChecker {
  public:
-  DetectionChecker(const SequenceHeader& header, long num_frames, const DetectionCheckOptions& options = {});
+  // Consecutive frames further apart than max_gap_s (or with an unknown time) are not continuous:
+  // the triangulator's track.max_gap_s, so the checks and the tracker share one notion.
+  DetectionChecker(const SequenceHeader& header, long num_frames, double max_gap_s,
+                   const DetectionCheckOptions& options = {});
   ~DetectionChecker();
   DetectionChecker(DetectionChecker&&) noexcept;
   DetectionChecker& operator=(DetectionChecker&&) noexcept;
@@ -100,11 +101,9 @@ class DetectionChecker {
   std::unique_ptr<State> state_;
 };
 
-// Measures one sequence (or all) with a DetectionChecker. Fast: the distances use at most
-// max_frames frames and the shift test at most shift_frames frames per sequence.
-SequenceCheck CheckDetections(const Sequence& sequence, const DetectionCheckOptions& options = {});
-std::vector<SequenceCheck> CheckDetections(const std::vector<Sequence>& sequences,
-                                           const DetectionCheckOptions& options = {});
+// Measures one sequence with a DetectionChecker. Fast: the distances use at most max_frames
+// frames and the shift test at most shift_frames frames.
+SequenceCheck CheckDetections(const Sequence& sequence, double max_gap_s, const DetectionCheckOptions& options = {});
 
 // Warning triggers (docs/diagnostics.md; the real-data numbers behind them are there).
 // A camera without detections in at least this share of the frames where GT is in its view.

@@ -65,7 +65,7 @@ void RunSequence(int index, FrameSource& source, const RunOptions& options, cons
   run->timing = metrics::TimingAccumulator(options.warmup_frames);
   if (eval != nullptr) run->metrics.emplace(*eval);
   std::optional<DetectionChecker> checker;
-  if (options.checks) checker.emplace(header, source.num_frames(), *options.checks);
+  if (options.checks) checker.emplace(header, source.num_frames(), tri_options.track.max_gap_s, *options.checks);
   if (sink != nullptr) sink->BeginSequence(index, header, output_joints);
 
   const std::vector<Poses2D> no_views(header.cameras.size());

@@ -20,6 +20,9 @@
 namespace rpt::engine {
 namespace {
 
+// The continuity the checks share with the tracker (track.max_gap_s); its default.
+constexpr double kMaxGap = 1.0;
+
 Sequence Synthetic(int frames = 120) {
   DatasetRequest request;
   request.dataset = "synthetic";
@@ -68,7 +71,7 @@ void ShiftDetections(Sequence* s, int k) {
 
 TEST(DetectionChecks, CleanSyntheticSceneRaisesNothing) {
   const Sequence s = Synthetic();
-  const SequenceCheck check = CheckDetections(s);
+  const SequenceCheck check = CheckDetections(s, kMaxGap);
   EXPECT_TRUE(Codes(check).empty()) << Describe(check);
   ASSERT_EQ(check.cameras.size(), s.cameras.size());
   for (const CameraCheck& c : check.cameras) {
@@ -83,7 +86,7 @@ TEST(DetectionChecks, DetectionsShiftedByThreeFramesAreFound) {
   for (int k : {3, -2}) {
     Sequence s = Synthetic();
     ShiftDetections(&s, k);
-    const SequenceCheck check = CheckDetections(s);
+    const SequenceCheck check = CheckDetections(s, kMaxGap);
     EXPECT_TRUE(Has(Codes(check), "detections_frame_shifted")) << Describe(check);
     EXPECT_EQ(check.shift.best_shift, k) << Describe(check);
     for (const CheckWarning& w : DetectionWarnings(check)) {
@@ -102,7 +105,7 @@ TEST(DetectionChecks, StaticSceneIsNotTestedForShifts) {
   SimulationOptions simulation;
   SimulateDetections(simulation, &s);
   ShiftDetections(&s, 3);  // a shift of a frozen scene changes nothing
-  const SequenceCheck check = CheckDetections(s);
+  const SequenceCheck check = CheckDetections(s, kMaxGap);
   EXPECT_FALSE(check.shift.tested) << Describe(check);
   EXPECT_NE(check.shift.reason.find("moves less"), std::string::npos) << check.shift.reason;
   EXPECT_TRUE(Codes(check).empty()) << Describe(check);
@@ -112,12 +115,12 @@ TEST(DetectionChecks, FramesFarApartAreNotTestedForShifts) {
   Sequence s = Synthetic();
   ShiftDetections(&s, 3);
   for (size_t f = 0; f < s.frames.size(); ++f) s.frames[f].timestamp_s = 75.0 * f;  // MVOR-like
-  const SequenceCheck check = CheckDetections(s);
+  const SequenceCheck check = CheckDetections(s, kMaxGap);
   EXPECT_FALSE(check.shift.tested);
   EXPECT_NE(check.shift.reason.find("not continuous"), std::string::npos) << check.shift.reason;
   EXPECT_FALSE(Has(Codes(check), "detections_frame_shifted"));
   for (SequenceFrame& frame : s.frames) frame.timestamp_s = std::nan("");
-  EXPECT_FALSE(CheckDetections(s).shift.tested) << "unknown times are not continuous";
+  EXPECT_FALSE(CheckDetections(s, kMaxGap).shift.tested) << "unknown times are not continuous";
 }
 
 TEST(DetectionChecks, CameraWithoutDetectionsInAnyOrMostFrames) {
@@ -126,7 +129,7 @@ TEST(DetectionChecks, CameraWithoutDetectionsInAnyOrMostFrames) {
   for (size_t f = 0; f < s.frames.size(); ++f) {
     if (f % 3 != 0) s.frames[f].views[3].Clear(s.frames[f].views[3].num_joints);  // empty in 2/3 of the frames
   }
-  const SequenceCheck check = CheckDetections(s);
+  const SequenceCheck check = CheckDetections(s, kMaxGap);
   const std::vector<CheckWarning> warnings = DetectionWarnings(check);
   ASSERT_EQ(warnings.size(), 2u) << Describe(check);
   EXPECT_EQ(warnings[0].code, "camera_without_detections");
@@ -144,7 +147,7 @@ TEST(DetectionChecks, WrongRotationOfOneCamera) {
   const Eigen::Vector3d centre = camera.Center();
   camera.R = Eigen::AngleAxisd(0.2, Eigen::Vector3d::UnitY()).toRotationMatrix() * camera.R;
   camera.t = -camera.R * centre;
-  const SequenceCheck check = CheckDetections(s);
+  const SequenceCheck check = CheckDetections(s, kMaxGap);
   const std::vector<CheckWarning> warnings = DetectionWarnings(check);
   ASSERT_EQ(warnings.size(), 1u) << Describe(check);
   EXPECT_EQ(warnings[0].code, "gt_far_from_detections") << Describe(check);
@@ -154,8 +157,8 @@ TEST(DetectionChecks, WrongRotationOfOneCamera) {
 TEST(DetectionChecks, SwappedCameraOrderAndAllDetectionsFarAway) {
   Sequence swapped = Synthetic();
   std::swap(swapped.cameras[0], swapped.cameras[1]);
-  std::vector<std::string> codes = Codes(CheckDetections(swapped));
-  EXPECT_EQ(std::count(codes.begin(), codes.end(), "gt_far_from_detections"), 2) << Describe(CheckDetections(swapped));
+  std::vector<std::string> codes = Codes(CheckDetections(swapped, kMaxGap));
+  EXPECT_EQ(std::count(codes.begin(), codes.end(), "gt_far_from_detections"), 2) << Describe(CheckDetections(swapped, kMaxGap));
 
   Sequence far = Synthetic();
   for (SequenceFrame& frame : far.frames) {
@@ -163,8 +166,8 @@ TEST(DetectionChecks, SwappedCameraOrderAndAllDetectionsFarAway) {
       for (int p = 0; p < view.num_persons(); ++p) view.Person(p).row(0).array() += 400;
     }
   }
-  codes = Codes(CheckDetections(far));
-  EXPECT_EQ(std::count(codes.begin(), codes.end(), "gt_far_from_detections"), 5) << Describe(CheckDetections(far));
+  codes = Codes(CheckDetections(far, kMaxGap));
+  EXPECT_EQ(std::count(codes.begin(), codes.end(), "gt_far_from_detections"), 5) << Describe(CheckDetections(far, kMaxGap));
 }
 
 TEST(DetectionChecks, GroundTruthInMillimetres) {
@@ -172,7 +175,7 @@ TEST(DetectionChecks, GroundTruthInMillimetres) {
   for (SequenceFrame& frame : s.frames) {
     for (int p = 0; p < frame.gt.num_persons(); ++p) frame.gt.Person(p).topRows<3>() *= 1000.0;
   }
-  const SequenceCheck check = CheckDetections(s);
+  const SequenceCheck check = CheckDetections(s, kMaxGap);
   const std::vector<std::string> codes = Codes(check);
   ASSERT_EQ(codes.size(), s.cameras.size()) << Describe(check);
   for (const std::string& code : codes) {
@@ -185,14 +188,14 @@ TEST(DetectionChecks, FramesWithoutAnyDetectionAndUnsharedJointNames) {
   for (size_t f = 0; f < s.frames.size(); ++f) {
     if (f % 4 != 0) s.frames[f].views.clear();  // frame ids the detections did not match
   }
-  SequenceCheck check = CheckDetections(s);
+  SequenceCheck check = CheckDetections(s, kMaxGap);
   EXPECT_EQ(Codes(check), std::vector<std::string>{"frames_without_detections"}) << Describe(check);
   EXPECT_NE(DetectionWarnings(check)[0].message.find("90 of 120"), std::string::npos)
       << DetectionWarnings(check)[0].message;
 
   Sequence renamed = Synthetic();
   for (std::string& name : renamed.gt_joints) name = "gt_" + name;
-  check = CheckDetections(renamed);
+  check = CheckDetections(renamed, kMaxGap);
   EXPECT_EQ(Codes(check), std::vector<std::string>{"no_shared_joints"}) << Describe(check);
 }
 
@@ -201,7 +204,7 @@ TEST(DetectionChecks, SamplingKeepsItFast) {
   options.max_frames = 20;
   options.shift_frames = 15;
   const Sequence s = Synthetic(300);
-  const SequenceCheck check = CheckDetections(s, options);
+  const SequenceCheck check = CheckDetections(s, kMaxGap, options);
   EXPECT_EQ(check.measured_frames, 20);
   EXPECT_LE(check.shift.frames, 15);
   EXPECT_TRUE(Codes(check).empty()) << Describe(check);
@@ -210,7 +213,7 @@ TEST(DetectionChecks, SamplingKeepsItFast) {
 // The checks stream: a checker fed frame by frame without knowing the frame count gives what the
 // whole sequence gives while the sample covers every candidate, and keeps bounded samples beyond.
 SequenceCheck CheckStreamed(const Sequence& s, const DetectionCheckOptions& options) {
-  DetectionChecker checker(s, /*num_frames=*/-1, options);
+  DetectionChecker checker(s, /*num_frames=*/-1, kMaxGap, options);
   for (const SequenceFrame& frame : s.frames) checker.Add(frame);
   return checker.Finish();
 }
@@ -220,7 +223,7 @@ TEST(DetectionChecks, StreamedWithUnknownLengthMatchesTheWholeSequenceWhileSampl
   options.max_frames = 100;
   options.shift_frames = 60;  // up to 120 anchors are all kept
   const Sequence s = Synthetic(100);
-  const SequenceCheck whole = CheckDetections(s, options);
+  const SequenceCheck whole = CheckDetections(s, kMaxGap, options);
   const SequenceCheck streamed = CheckStreamed(s, options);
   EXPECT_EQ(Describe(streamed), Describe(whole));
   EXPECT_EQ(streamed.measured_frames, 100);
@@ -232,7 +235,7 @@ TEST(DetectionChecks, StreamedLongSequenceKeepsBoundedSpreadSamples) {
   options.max_frames = 20;
   options.shift_frames = 15;
   const Sequence s = Synthetic(400);
-  const SequenceCheck whole = CheckDetections(s, options);
+  const SequenceCheck whole = CheckDetections(s, kMaxGap, options);
   const SequenceCheck streamed = CheckStreamed(s, options);
   EXPECT_EQ(streamed.measured_frames, 20);
   EXPECT_EQ(streamed.shift.frames, 15);
@@ -256,7 +259,8 @@ TEST(DetectionChecks, RealMvorFixtureRaisesNothing) {
   request.root = test::SharedData("mvor");
   const std::vector<Sequence> sequences = ReadDataset(request);
   ASSERT_EQ(sequences.size(), 4u);
-  for (const SequenceCheck& check : CheckDetections(sequences)) {
+  for (const Sequence& sequence : sequences) {
+    const SequenceCheck check = CheckDetections(sequence, kMaxGap);
     EXPECT_TRUE(Codes(check).empty()) << Describe(check);
     EXPECT_FALSE(check.shift.tested) << "MVOR frames are minutes apart";
     for (const CameraCheck& c : check.cameras) EXPECT_LT(c.rel_median, 0.25) << Describe(check);
