@@ -33,13 +33,6 @@ bool SequenceSource::Next(SequenceFrame* frame) {
   return true;
 }
 
-std::vector<std::unique_ptr<FrameSource>> SourcesOf(std::vector<Sequence> sequences) {
-  std::vector<std::unique_ptr<FrameSource>> sources;
-  sources.reserve(sequences.size());
-  for (Sequence& sequence : sequences) sources.push_back(std::make_unique<SequenceSource>(std::move(sequence)));
-  return sources;
-}
-
 Sequence Materialize(FrameSource& source) {
   Sequence sequence;
   static_cast<SequenceHeader&>(sequence) = source.header();

@@ -76,9 +76,6 @@ class SequenceSource final : public FrameSource {
   size_t next_ = 0;
 };
 
-// Wraps each sequence into a SequenceSource.
-std::vector<std::unique_ptr<FrameSource>> SourcesOf(std::vector<Sequence> sequences);
-
 // Pulls every frame of `source` into a Sequence (what a whole-sequence consumer needs), with the
 // source's warnings once it is exhausted.
 Sequence Materialize(FrameSource& source);
