@@ -11,6 +11,7 @@ void RegisterDemoCommand(CLI::App& app);
 void RegisterConfigCommand(CLI::App& app);
 void RegisterEvalCommand(CLI::App& app);
 void RegisterDatasetsCommand(CLI::App& app);
+void RegisterCamerasCommand(CLI::App& app);
 void RegisterConvertCommand(CLI::App& app);
 void RegisterBenchCommand(CLI::App& app);
 void RegisterInspectCommand(CLI::App& app);

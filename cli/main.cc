@@ -86,6 +86,7 @@ int main(int argc, char** argv) {
   rpt::cli::RegisterDetectorStatsCommand(app);
   rpt::cli::RegisterRenderCommand(app);
   rpt::cli::RegisterDatasetsCommand(app);
+  rpt::cli::RegisterCamerasCommand(app);
   rpt::cli::RegisterConvertCommand(app);
   rpt::cli::RegisterBenchCommand(app);
   rpt::cli::RegisterConfigCommand(app);
