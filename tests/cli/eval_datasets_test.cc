@@ -5,6 +5,8 @@
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <set>
+#include <string>
 
 #include "datasets/detections.h"
 #include "datasets/readers/generic_detections.h"
@@ -161,6 +163,57 @@ TEST(EvalDatasets, GenericInterchangeFilesWrittenByTheTest) {
       test::RunRpt("eval --quiet --labels " + (dir / "labels.json").string() + " --detections " + (dir / "stray.json").string());
   EXPECT_EQ(mismatch.exit_code, 2);
   EXPECT_NE(mismatch.err.find("stray.json"), std::string::npos) << mismatch.err;
+  fs::remove_all(dir);
+}
+
+// Honest time end to end: labels without "timestamp" and "fps" run with their times unknown
+// (one warning saying how to give them; nothing carried across frames, so no track lasts), and
+// --param fps=N gives them times again (no warning; tracks last).
+TEST(EvalDatasets, LabelsWithoutTimesRunWithTimesUnknownAndSaySo) {
+  const fs::path dir = test::TempDir("no_times");
+  synthetic::SceneOptions options;
+  options.num_frames = 20;
+  options.num_people = 3;
+  const synthetic::Scene scene = synthetic::GenerateScene(options);
+  Sequence sequence = synthetic::MakeSyntheticSequence(scene, synthetic::DetectorOptions::Realistic(), 5, "mine");
+  sequence.fps = 0;
+  for (SequenceFrame& f : sequence.frames) f.timestamp_s = kUnknownTime;
+  WriteLabels(dir / "labels.json", {sequence});
+  Detections detections;
+  detections.joints = sequence.detection_joints;
+  for (const SequenceFrame& f : sequence.frames) {
+    FrameDetections frame{f.id, {}, f.views};
+    for (const Camera& c : sequence.cameras) frame.cameras.push_back(c.name);
+    detections.frames.push_back(frame);
+  }
+  WriteGenericDetections(dir / "detections.json", detections);
+  const std::string input = "eval --quiet --labels " + (dir / "labels.json").string() + " --detections " +
+                            (dir / "detections.json").string();
+  // Distinct track ids over the run's predictions.
+  auto track_ids = [](const fs::path& out) {
+    std::set<int> ids;
+    const nlohmann::json predictions = nlohmann::json::parse(test::ReadAll(out / "predictions.json"));
+    for (const auto& frame : predictions["frames"]) {
+      for (const auto& id : frame["track_ids"]) ids.insert(id.get<int>());
+    }
+    return ids;
+  };
+  const test::CommandResult unknown = test::RunRpt(input + " --out " + (dir / "unknown").string());
+  ASSERT_EQ(unknown.exit_code, 0) << unknown.err;
+  const std::string warning = "their times are unknown";
+  ASSERT_NE(unknown.err.find(warning), std::string::npos) << unknown.err;
+  EXPECT_EQ(unknown.err.find(warning), unknown.err.rfind(warning)) << "one warning: " << unknown.err;
+  EXPECT_NE(unknown.err.find("--param fps=N"), std::string::npos) << "says how to give them";
+  EXPECT_GE(track_ids(dir / "unknown").size(), 20u * 2) << "nothing carried from one frame to the next";
+
+  const test::CommandResult known = test::RunRpt(input + " --param fps=5 --out " + (dir / "known").string());
+  ASSERT_EQ(known.exit_code, 0) << known.err;
+  EXPECT_EQ(known.err.find(warning), std::string::npos) << known.err;
+  EXPECT_LE(track_ids(dir / "known").size(), 6u) << "tracks last across frames 0.2 s apart";
+
+  const test::CommandResult bogus = test::RunRpt(input + " --param bogus=1 --out " + (dir / "bogus").string());
+  EXPECT_EQ(bogus.exit_code, 2) << "an unknown parameter of the labels reader is refused";
+  EXPECT_NE(bogus.err.find("bogus"), std::string::npos) << bogus.err;
   fs::remove_all(dir);
 }
 
