@@ -1,16 +1,28 @@
 #!/usr/bin/env bash
-# Installs the build and test dependencies from Debian 12 packages (run as root, or with sudo).
+# Installs the Debian 12 packages rpt needs (run as root, or with sudo).
+#   bash scripts/install_deps.sh           what building and running `rpt` needs
+#   bash scripts/install_deps.sh --tests   that, plus what the tests, benchmarks and fuzzers need
 set -euo pipefail
+tests=0
+case "${1:-}" in
+  "") ;;
+  --tests) tests=1 ;;
+  *) echo "usage: bash scripts/install_deps.sh [--tests]" >&2; exit 2 ;;
+esac
 SUDO=""
 if [ "$(id -u)" != 0 ]; then SUDO="sudo"; fi
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq
+# The build, and three.js and Chart.js, which rpt report inlines into report.html at run time
+# (engine/report/report_html.h).
 $SUDO apt-get install -y -qq --no-install-recommends \
   build-essential cmake pkg-config ccache \
   libeigen3-dev libopencv-dev nlohmann-json3-dev libcli11-dev libhdf5-dev zlib1g-dev libtomlplusplus-dev \
-  libgtest-dev libgmock-dev libbenchmark-dev \
-  clang libclang-rt-14-dev >/dev/null
-# rpt report: three.js and Chart.js, inlined into report.html at run time (engine/outputs/step_tables.html.h), and
-# Chromium for the report's browser test (tests/report/; skipped without it).
-$SUDO apt-get install -y -qq --no-install-recommends libjs-three libjs-chart.js chromium >/dev/null
+  libjs-three libjs-chart.js >/dev/null
+if [ "$tests" = 1 ]; then
+  # GoogleTest, Google Benchmark, clang with libFuzzer (fuzz/), and Chromium for the report's
+  # browser test (tests/report/; skipped without it).
+  $SUDO apt-get install -y -qq --no-install-recommends \
+    libgtest-dev libgmock-dev libbenchmark-dev clang libclang-rt-14-dev chromium >/dev/null
+fi
 echo "dependencies installed"

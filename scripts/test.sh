@@ -7,7 +7,7 @@ cd "$(dirname "$0")/.."
 BUILD_DIR="${BUILD_DIR:-build}"
 . scripts/step_time.sh
 t=$(date +%s)
-cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release -DRPT_BUILD_BENCHMARKS=ON >/dev/null
+cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release -DRPT_BUILD_TESTS=ON -DRPT_BUILD_BENCHMARKS=ON >/dev/null
 cmake --build "$BUILD_DIR" -j"$(nproc)"
 step build "$t"
 t=$(date +%s)
