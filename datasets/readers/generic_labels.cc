@@ -342,7 +342,9 @@ std::vector<std::unique_ptr<FrameSource>> OpenLabels(const std::filesystem::path
                     ground_truth](size_t i, SequenceFrame* frame, InputWarnings*) {
       const LabelRef& ref = labels[i];
       const json root = file->Parse(ref);
-      const std::string pointer = "/" + std::to_string(ref.index);
+      // Appended, not "/" + std::to_string(...): GCC 12 warns falsely (-Wstringop-overflow) on that form here.
+      std::string pointer(1, '/');
+      pointer += std::to_string(ref.index);
       frame->id = IdString(root, pointer + "/id", file->source);
       frame->timestamp_s = ref.timestamp_s;
       if (ground_truth) ConvertLabel(root, pointer, file->source, num_joints, &frame->gt);
