@@ -57,7 +57,9 @@ int steps::Smooth(const SmoothOptions& options, const SmoothInput& in, JointFilt
       f.p01 *= 1 - k0;
       f.p00 *= 1 - k0;
       person.col(j).head<3>() = f.x;
-      if (!provenance.empty()) provenance[j] = static_cast<uint8_t>(JointProvenance::kSmoothed);
+      if (!provenance.empty() && provenance[j] == static_cast<uint8_t>(JointProvenance::kTriangulated)) {
+        provenance[j] = static_cast<uint8_t>(JointProvenance::kSmoothed);  // a lifted joint stays lifted
+      }
       ++smoothed;
     }
   }
