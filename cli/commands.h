@@ -10,6 +10,7 @@ namespace rpt::cli {
 void RegisterDemoCommand(CLI::App& app);
 void RegisterConfigCommand(CLI::App& app);
 void RegisterEvalCommand(CLI::App& app);
+void RegisterTriangulateCommand(CLI::App& app);
 void RegisterDatasetsCommand(CLI::App& app);
 void RegisterCamerasCommand(CLI::App& app);
 void RegisterConvertCommand(CLI::App& app);

@@ -1,13 +1,14 @@
 // SPDX-License-Identifier: MIT
 // `rpt eval`: a dataset (or generic labels) through the triangulator and the metrics. Prints the
 // paper-style row and writes summary.{md,csv,json}, per_joint.csv, steps.csv, config.json, run.json and
-// predictions.json into the output folder. Checks the input and the results and prints a
+// the chosen exports (--export: predictions.json by default, predictions.csv, trc/) into the output folder. Checks the input and the results and prints a
 // "warning: ..." line on stderr for each problem found (engine/diagnostics.h).
 #include <cstdio>
 #include <iostream>
 
 #include "cli/commands.h"
 #include "cli/config_args.h"
+#include "cli/export_args.h"
 #include "engine/diagnostics.h"
 #include "engine/input.h"
 #include "engine/outputs/step_tables.h"
@@ -25,6 +26,7 @@ namespace {
 struct EvalArgs {
   engine::InputSpec input;
   ConfigArgs config;
+  ExportArgs exports;
   std::string out;
   int threads = 0;
   bool json = false;
@@ -33,6 +35,7 @@ struct EvalArgs {
 
 void RunEval(const EvalArgs& args) {
   const engine::Config config = ResolveConfig(args.config);
+  const engine::ExportOptions exports = ExportOptionsOf(args.exports);
   engine::Input input = engine::OpenInput(args.input);
   const InputWarnings opened = input.Warnings();  // what the files read up front corrected or left unused
   PrintInputWarnings(opened);
@@ -46,7 +49,7 @@ void RunEval(const EvalArgs& args) {
   engine::RunInfo info = engine::CollectRunInfo(0);
   const std::string out_dir =
       !args.out.empty() ? args.out : "out/eval-" + (args.input.dataset.empty() ? "labels" : args.input.dataset);
-  engine::RunFolder folder(out_dir, info.run_id, input.size());
+  engine::RunFolder folder(out_dir, info.run_id, input.size(), exports);
   // Streamed: each frame is checked and triangulated, written, then dropped.
   const engine::RunResult run = engine::Run(input, options, folder.sink());
   progress.reset();
@@ -94,6 +97,7 @@ void RegisterEvalCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand("eval", "Evaluate the triangulator on a dataset or on generic labels");
   AddInputOptions(command, &args->input);
   AddConfigOptions(command, &args->config);
+  AddExportOptions(command, &args->exports);
   command->add_option("--out", args->out, "output folder (default out/eval-<dataset>)");
   AddThreadsOption(command, &args->threads, "sequences evaluated");
   command->add_flag("--json", args->json, "print the summary as one JSON object");

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The input options shared by the commands that read a dataset (--dataset, --root, --param,
-// --labels, --detections, --simulate, ...; engine/input.h opens what they name) and how the
-// input's warnings are printed.
+// --labels, --cameras, --detections, --simulate, ...; engine/input.h opens what they name) and how
+// the input's warnings are printed.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -12,6 +12,10 @@
 namespace rpt::cli {
 
 void AddInputOptions(CLI::App* command, engine::InputSpec* spec);
+
+// The input options of the commands that need no ground truth (rpt triangulate): --dataset, --root,
+// --param, --labels, --cameras, --fps, --detections, --strict; sets spec->ground_truth = false.
+void AddDetectionInputOptions(CLI::App* command, engine::InputSpec* spec);
 
 // Prints every entry as "warning: <line>" on stderr.
 void PrintInputWarnings(const InputWarnings& warnings);

@@ -82,6 +82,7 @@ int main(int argc, char** argv) {
   rpt::engine::SetCommand(argc, argv);
   rpt::cli::RegisterDemoCommand(app);
   rpt::cli::RegisterEvalCommand(app);
+  rpt::cli::RegisterTriangulateCommand(app);
   rpt::cli::RegisterInspectCommand(app);
   rpt::cli::RegisterDetectorStatsCommand(app);
   rpt::cli::RegisterRenderCommand(app);

@@ -16,15 +16,19 @@ std::optional<std::vector<Sequence>> ReloadRecordedInput(const engine::RecordedR
     *why = problem;
     return std::nullopt;
   }
-  if (words.size() < 2 || words[1] != "eval") {
-    *why = "run.json does not record an `rpt eval` command";
+  if (words.size() < 2 || (words[1] != "eval" && words[1] != "triangulate")) {
+    *why = "run.json does not record an `rpt eval` or `rpt triangulate` command";
     return std::nullopt;
   }
-  // The recorded eval command's input options; everything else (config, output) is ignored.
+  // The recorded command's input options; everything else (config, output) is ignored.
   CLI::App app;
   app.allow_extras();
   engine::InputSpec input;
-  AddInputOptions(&app, &input);
+  if (words[1] == "eval") {
+    AddInputOptions(&app, &input);
+  } else {
+    AddDetectionInputOptions(&app, &input);
+  }
   std::vector<std::string> args(words.begin() + 2, words.end());
   std::reverse(args.begin(), args.end());  // CLI11 parses a reversed vector
   try {

@@ -14,7 +14,7 @@
 
 namespace rpt::cli {
 
-// Re-loads the input of the recorded `rpt eval` command (its input options only; the configuration
+// Re-loads the input of the recorded `rpt eval` or `rpt triangulate` command (without GT for the latter) (its input options only; the configuration
 // is the recorded config.json). When it cannot (not an eval command, files moved), returns nullopt
 // and sets *why to a one-line reason.
 std::optional<std::vector<Sequence>> ReloadRecordedInput(const engine::RecordedRun& run, std::string* why);

@@ -5,6 +5,8 @@
 #include <utility>
 
 #include "core/errors.h"
+#include "datasets/calibration/calibration.h"
+#include "datasets/readers/detection_frames.h"
 #include "datasets/readers/detections_file.h"
 #include "datasets/synthetic/simulated_source.h"
 #include "engine/attached_detections.h"
@@ -16,9 +18,22 @@ namespace {
 
 // Throws ConfigError on contradicting input options.
 void CheckInputSpec(const InputSpec& spec) {
-  if (spec.dataset.empty() == spec.labels.empty()) {
-    throw ConfigError("give either --dataset NAME (with --root DIR) or --labels FILE");
+  const int named = !spec.dataset.empty() + !spec.labels.empty() + !spec.cameras.empty();
+  if (named != 1) {
+    throw ConfigError(std::string("give one of --dataset NAME (with --root DIR), --labels FILE") +
+                      (spec.ground_truth ? "" : " or --cameras FILE (with --detections)"));
   }
+  if (!spec.cameras.empty()) {
+    if (spec.detections.empty()) throw ConfigError("--cameras needs --detections FILE (the frames are its frames)");
+    if (!spec.params.empty()) {
+      throw ConfigError("--param " + spec.params.front() + ": parameters belong to --dataset or --labels, not --cameras");
+    }
+  }
+  if (spec.fps != 0 && spec.cameras.empty()) {
+    throw ConfigError("--fps applies to --cameras (datasets and labels give their own times; labels: --param fps=N)");
+  }
+  if (!(spec.fps >= 0)) throw ConfigError("--fps " + std::to_string(spec.fps) + ": expected a rate >= 0");
+  if (!spec.ground_truth && spec.simulate) throw ConfigError("--simulate needs the ground truth (not with triangulate)");
   if (spec.simulate && !spec.detections.empty()) throw ConfigError("--simulate and --detections exclude each other");
   if (!spec.simulate && (!spec.detector.empty() || spec.simulate_perfect)) {
     throw ConfigError(std::string(spec.simulate_perfect ? "--simulate-perfect" : "--detector") +
@@ -35,6 +50,7 @@ DatasetRequest RequestOf(const InputSpec& spec) {
   DatasetRequest request;
   request.dataset = spec.labels.empty() ? spec.dataset : "generic";
   request.root = spec.labels.empty() ? spec.root : spec.labels;
+  request.ground_truth = spec.ground_truth;
   for (const std::string& assignment : spec.params) {
     const size_t eq = assignment.find('=');
     if (eq == std::string::npos || eq == 0) throw ConfigError("--param " + assignment + ": expected key=value");
@@ -112,10 +128,38 @@ std::vector<Sequence> Input::Materialize() {
   return sequences;
 }
 
+namespace {
+
+// --cameras FILE --detections FILE: one sequence of the detection frames, named after the
+// detections file (a VoxelPose cache's frame ids "<name>_<frame>").
+std::vector<std::unique_ptr<FrameSource>> OpenDetectionsOnCameras(const InputSpec& spec, InputWarnings* opened) {
+  Calibration calibration = ReadCalibration(spec.cameras, {}, opened);
+  std::filesystem::path path(spec.detections);
+  DetectionFramesOptions options;
+  options.name = (path.has_filename() ? path : path.parent_path()).stem().string();
+  options.fps = spec.fps;
+  DetectionsFileOptions file_options;
+  file_options.voxelpose.frame_id_prefix = options.name;
+  for (const Camera& camera : calibration.cameras) file_options.voxelpose.cameras.push_back(camera.name);
+  std::vector<std::unique_ptr<FrameSource>> sources;
+  sources.push_back(OpenDetectionFrames(std::move(calibration.cameras), ReadDetectionsFile(path, file_options), options,
+                                        spec.cameras, path));
+  return sources;
+}
+
+}  // namespace
+
 Input OpenInput(const InputSpec& spec, const InputNeeds& needs) {
   CheckInputSpec(spec);
-  std::vector<std::unique_ptr<FrameSource>> sources = OpenDataset(RequestOf(spec));
   InputWarnings opened;
+  if (!spec.cameras.empty()) {
+    std::vector<std::unique_ptr<FrameSource>> sources = OpenDetectionsOnCameras(spec, &opened);
+    for (auto& source : sources) source = std::make_unique<CheckedSource>(std::move(source));
+    Input input(std::move(sources), std::move(opened), spec.strict);
+    input.CheckStrict();
+    return input;
+  }
+  std::vector<std::unique_ptr<FrameSource>> sources = OpenDataset(RequestOf(spec));
   std::shared_ptr<AttachedDetections> attached;
   std::vector<std::shared_ptr<AttachedDetections>> per_sequence_files;
   if (spec.simulate) {

@@ -26,12 +26,19 @@ struct InputSpec {
   std::string root;                 // its folder (or file)
   std::vector<std::string> params;  // key=value parameters of the reader (with `labels`: of the labels reader)
   std::string labels;               // generic labels file (JSON or HDF5 cache) instead of a dataset
+  // A calibration file (any format datasets/calibration reads) instead of a dataset or labels: the
+  // frames are those of the detections file (datasets/readers/detection_frames.h).
+  std::string cameras;
+  double fps = 0;                   // with `cameras`: frame rate of the detection frames; 0 = times unknown
   std::string detections;           // detections file or folder (ReadDetectionsFile)
   bool simulate = false;            // simulated detections from the ground truth
   bool simulate_perfect = false;    // deprecated alias of detector = "perfect"
   std::string detector;             // simulated detector profile; empty = realistic
   uint64_t seed = 1;                // of the simulated detector
   bool strict = false;              // unused input is an error (CheckStrict)
+  // false: only the detections are wanted (rpt triangulate): readers go without their GT files
+  // (DatasetRequest::ground_truth) and frames carry no persons.
+  bool ground_truth = true;
 };
 
 // What a command needs of its input.

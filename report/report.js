@@ -31,7 +31,9 @@
     html += row('this run (rpt)', data.summary || {}, 'ours');
     if (data.paper) html += row(data.paper.label, data.paper, 'paper');
     table.innerHTML = html + '</tbody>';
-    el('summary-note').textContent = data.paper
+    el('summary-note').textContent = data.evaluated === false
+        ? 'No ground truth (rpt triangulate): no accuracy metrics; ' + fmt((data.summary || {}).output_persons, 0) + ' persons triangulated.'
+        : data.paper
         ? 'Paper row: Bermuth et al., CVPR 2026 (their 2D network and protocol, FPS on their machine; results/paper.json).'
         : 'The paper has no row for this dataset.';
     const legacy = (data.summary || {}).legacy_pcp;
@@ -72,8 +74,15 @@
             datasets: [{ label: 'mean error (mm)', data: joints.map((j) => j.mean_error_mm), backgroundColor: '#4f86c6' }] },
     options: { plugins: { legend: { display: false } }, scales: { y: { beginAtZero: true, title: { display: true, text: 'mm' } } } },
   });
+  // Plots that need ground truth say so when the run had none.
+  const NO_GT = ': not available, the run has no ground truth (rpt triangulate)';
+  if (data.evaluated === false) {
+    for (const id of ['plot-joints', 'plot-recall']) el(id).closest('figure').querySelector('figcaption').textContent += NO_GT;
+    el('plot-frames').closest('figure').querySelector('figcaption').firstChild.textContent =
+        'Persons triangulated over frames (no ground truth) ';
+  }
   const curve = data.recall_curve || { threshold_mm: [], recall: [] };
-  if (data.input_loaded && !curve.recall.length) {
+  if (data.input_loaded && data.evaluated !== false && !curve.recall.length) {
     el('plot-recall').closest('figure').querySelector('figcaption').textContent +=
         ': not computed (the curve redoes the greedy matching; this run used metrics.matching = hungarian)';
   }
@@ -120,12 +129,16 @@
       if (framesChart) framesChart.destroy();
       framesChart = new Chart(el('plot-frames'), {
         type: 'scatter',
-        data: { datasets: [
+        data: { datasets: (data.evaluated === false ? [
+          // No ground truth: the persons triangulated per frame instead of errors.
+          { label: 'persons triangulated', data: seq.num_predictions.map((v, f) => ({ x: f, y: v })), showLine: true, stepped: true, borderColor: '#2f6fb0', backgroundColor: '#2f6fb0', pointRadius: 0, borderWidth: 1, yAxisID: 'count' },
+        ] : [
           { label: 'MPJPE (mm)', data: points, showLine: true, borderColor: '#2f6fb0', backgroundColor: '#2f6fb0', pointRadius: 1.5, borderWidth: 1, yAxisID: 'y', spanGaps: false },
           { label: 'missed GT', data: missed, showLine: true, stepped: true, borderColor: '#ff2d2d', backgroundColor: '#ff2d2d', pointRadius: 0, borderWidth: 1, yAxisID: 'count' },
           { label: 'invalid predictions', data: invalid, showLine: true, stepped: true, borderColor: '#f58231', backgroundColor: '#f58231', pointRadius: 0, borderWidth: 1, yAxisID: 'count' },
+        ]).concat([
           { label: 'selected frame', data: [], pointRadius: 6, pointStyle: 'triangle', backgroundColor: '#000', yAxisID: 'y' },
-        ] },
+        ]) },
         options: {
           scales: { x: { title: { display: true, text: 'frame' } }, y: { beginAtZero: true, title: { display: true, text: 'mm' } },
                     count: { position: 'right', beginAtZero: true, grid: { drawOnChartArea: false }, title: { display: true, text: 'persons' } } },
@@ -390,8 +403,10 @@
     const invalid = sc.predictions.filter((p) => p.invalid).length;
     const frameError = seq.mpjpe_mm[sc.frame];
     el('frame-label').textContent = `${seq.name} \u00b7 frame ${sc.frame + 1}/${seq.frame_ids.length} \u00b7 ${sc.id}`;
-    el('frame-stats').textContent = `${sc.predictions.length} prediction(s), ${invalid} invalid; ${kept} GT person(s), ` +
-        `${kept - matched} missed; frame MPJPE ${fmt(frameError, 1)} mm` +
+    el('frame-stats').textContent = (data.evaluated === false
+        ? `${sc.predictions.length} person(s) triangulated (no ground truth)`
+        : `${sc.predictions.length} prediction(s), ${invalid} invalid; ${kept} GT person(s), ` +
+          `${kept - matched} missed; frame MPJPE ${fmt(frameError, 1)} mm`) +
         (scenes.length < totalFrames() ? ` (the report carries ${scenes.length} of ${totalFrames()} frames, evenly spaced)` : '');
     const views = drawViews(sc);
     markFrame();

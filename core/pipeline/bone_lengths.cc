@@ -119,7 +119,7 @@ int steps::BoneLengths(const BoneLengthOptions& options, const BoneLengthsInput&
     }
     stats->bone_length_corrections += marked;
     if (marked > 0 && unobserved_score > 0)
-      stats->filled_joints += FillMissingJoints(in.neighbour, unobserved_score, person);
+      stats->filled_joints += FillMissingJoints(in.neighbour, unobserved_score, person, persons->PersonProvenance(p));
   }
   return checked;
 }

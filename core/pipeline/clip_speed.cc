@@ -20,6 +20,11 @@ int steps::ClipSpeed(const ClipSpeedOptions& options, const ClipSpeedInput& in, 
       const double length = step.norm();
       if (length <= max_step) continue;
       person.col(j).head<3>() = from + step * (max_step / length);
+      // A filled or lifted joint stays what it is: moving it does not make it observed.
+      const std::span<uint8_t> source = persons->PersonProvenance(p);
+      if (!source.empty() && source[j] == static_cast<uint8_t>(JointProvenance::kTriangulated)) {
+        source[j] = static_cast<uint8_t>(JointProvenance::kSmoothed);
+      }
       ++clipped;
     }
   }

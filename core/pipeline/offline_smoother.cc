@@ -170,6 +170,10 @@ int OfflineSmoother::SmoothFrame(int i, Poses3D* persons) {
       const Eigen::Vector3d fitted = Fit(observations_, self, options_.offline_sigma_s, options_.offline_degree);
       if (fitted == observations_[self].x) continue;
       persons->Person(p).col(j).head<3>() = fitted;
+      const std::span<uint8_t> source = persons->PersonProvenance(p);
+      if (!source.empty() && source[j] == static_cast<uint8_t>(JointProvenance::kTriangulated)) {
+        source[j] = static_cast<uint8_t>(JointProvenance::kSmoothed);  // a lifted joint stays lifted
+      }
       ++changed;
     }
   }

@@ -5,7 +5,8 @@
 
 namespace rpt {
 
-int FillMissingJoints(std::span<const int> neighbour, double filled_score, Eigen::Map<Eigen::Matrix4Xd> person) {
+int FillMissingJoints(std::span<const int> neighbour, double filled_score, Eigen::Map<Eigen::Matrix4Xd> person,
+                      std::span<uint8_t> provenance) {
   const int n = static_cast<int>(person.cols());
   int filled = 0;
   // Repeated passes let fills propagate along chains (e.g. finger tip <- ... <- wrist).
@@ -15,6 +16,7 @@ int FillMissingJoints(std::span<const int> neighbour, double filled_score, Eigen
       if (person(3, j) > 0 || neighbour[j] < 0 || person(3, neighbour[j]) <= 0) continue;
       person.col(j).head<3>() = person.col(neighbour[j]).head<3>();
       person(3, j) = filled_score;
+      if (!provenance.empty()) provenance[j] = static_cast<uint8_t>(JointProvenance::kFilled);
       ++filled;
       changed = true;
     }
@@ -59,15 +61,12 @@ int steps::Postprocess(const PostprocessOptions& options, const PostprocessInput
     stats->replaced_joints += replaced;
 
     if (options.fill_missing_joints)
-      stats->filled_joints += FillMissingJoints(in.neighbour, options.filled_joint_score, person);
-    if (kept != p) {
-      persons->Person(kept) = persons->Person(p);
-      persons->track_ids[kept] = persons->track_ids[p];
-    }
+      stats->filled_joints +=
+          FillMissingJoints(in.neighbour, options.filled_joint_score, person, persons->PersonProvenance(p));
+    if (kept != p) persons->MovePerson(p, kept);
     ++kept;
   }
-  persons->data.resize(static_cast<size_t>(kept) * 4 * n);
-  persons->track_ids.resize(kept);
+  persons->Truncate(kept);
   return kept;
 }
 

@@ -20,8 +20,10 @@ namespace rpt {
 
 // Fills the missing joints (score <= 0) of one person from their neighbour joints
 // (`neighbour[j]`, -1 = none), repeatedly so fills propagate along chains; filled joints get
-// `filled_score`. Returns the number of joints filled.
-int FillMissingJoints(std::span<const int> neighbour, double filled_score, Eigen::Map<Eigen::Matrix4Xd> person);
+// `filled_score` and, when `provenance` is not empty (the person's entries), JointProvenance::kFilled.
+// Returns the number of joints filled.
+int FillMissingJoints(std::span<const int> neighbour, double filled_score, Eigen::Map<Eigen::Matrix4Xd> person,
+                      std::span<uint8_t> provenance);
 
 namespace steps {
 

@@ -26,6 +26,7 @@ int steps::Smooth(const SmoothOptions& options, const SmoothInput& in, JointFilt
     std::vector<JointFilters::Filter>& filters = tracks.Get(id, &created).joints;
     if (created || static_cast<int>(filters.size()) != n) filters.assign(n, JointFilters::Filter{});
     auto person = persons->Person(p);
+    const std::span<uint8_t> provenance = persons->PersonProvenance(p);
     for (int j = 0; j < n; ++j) {
       if (!(person(3, j) > in.unobserved_score)) continue;
       JointFilters::Filter& f = filters[j];
@@ -56,6 +57,9 @@ int steps::Smooth(const SmoothOptions& options, const SmoothInput& in, JointFilt
       f.p01 *= 1 - k0;
       f.p00 *= 1 - k0;
       person.col(j).head<3>() = f.x;
+      if (!provenance.empty() && provenance[j] == static_cast<uint8_t>(JointProvenance::kTriangulated)) {
+        provenance[j] = static_cast<uint8_t>(JointProvenance::kSmoothed);  // a lifted joint stays lifted
+      }
       ++smoothed;
     }
   }

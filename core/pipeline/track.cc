@@ -108,6 +108,9 @@ int steps::Track(const TrackOptions& options, std::span<const int> match_joints,
     }
     auto person = persons->AddPerson(t.id);
     person = Eigen::Map<const Eigen::Matrix4Xd>(t.pose.data(), 4, n);
+    for (uint8_t& source : persons->PersonProvenance(persons->num_persons() - 1)) {
+      source = static_cast<uint8_t>(JointProvenance::kPredicted);
+    }
     ++stats->coasting_tracks;
   }
   return persons->num_persons();

@@ -162,7 +162,16 @@ void Triangulator::Process(std::span<const Poses2D> views, double timestamp_s, P
                                                &buf.single_view_scratch, &buf.lifted, stats);
   if (num_lifted > 0) {
     num_lifted = run.Call<Step::kPostprocess>(postprocess_input, &buf.lifted, stats);
-    for (int p = 0; p < num_lifted; ++p) persons->AddPerson() = buf.lifted.Person(p);
+    for (int p = 0; p < num_lifted; ++p) {
+      persons->AddPerson() = buf.lifted.Person(p);
+      // Lifted from one view, but filled joints stay filled.
+      const std::span<uint8_t> source = persons->PersonProvenance(persons->num_persons() - 1);
+      for (int j = 0; j < num_joints; ++j) {
+        if (buf.lifted.Provenance(p, j) == JointProvenance::kTriangulated) {
+          source[j] = static_cast<uint8_t>(JointProvenance::kLifted);
+        }
+      }
+    }
   }
   const int first_lifted = persons->num_persons() - num_lifted;
   stats->count[static_cast<int>(Step::kSingleView)] = persons->num_persons();

@@ -46,15 +46,10 @@ int steps::Verify(const VerifyOptions& options, const VerifyInput& in, VerifyScr
       ++stats->unsupported_persons;
       continue;
     }
-    if (kept != p) {
-      std::copy_n(persons->data.begin() + 4 * static_cast<size_t>(p) * num_joints, 4 * static_cast<size_t>(num_joints),
-                  persons->data.begin() + 4 * static_cast<size_t>(kept) * num_joints);
-      persons->track_ids[kept] = persons->track_ids[p];
-    }
+    if (kept != p) persons->MovePerson(p, kept);
     ++kept;
   }
-  persons->data.resize(4 * static_cast<size_t>(kept) * num_joints);
-  persons->track_ids.resize(kept);
+  persons->Truncate(kept);
   return kept;
 }
 

@@ -32,13 +32,16 @@ struct PredictionsWriter::Part {
   std::filesystem::path path;
   std::ofstream out;
   JointNames joints;
+  std::string name;
+  double fps = 0;
   long frames = 0;
   int replaced = 0;  // strings with invalid UTF-8
   bool begun = false;
 };
 
-PredictionsWriter::PredictionsWriter(std::filesystem::path path, std::string run_id, int num_sequences)
-    : path_(std::move(path)), run_id_(std::move(run_id)) {
+PredictionsWriter::PredictionsWriter(std::filesystem::path path, std::string run_id, int num_sequences,
+                                     ExportOptions options)
+    : path_(std::move(path)), run_id_(std::move(run_id)), options_(std::move(options)) {
   parts_.resize(static_cast<size_t>(num_sequences));
 }
 
@@ -51,13 +54,15 @@ PredictionsWriter::~PredictionsWriter() {
   }
 }
 
-void PredictionsWriter::BeginSequence(int sequence, const SequenceHeader&, const JointNames& output_joints) {
+void PredictionsWriter::BeginSequence(int sequence, const SequenceHeader& header, const JointNames& output_joints) {
   auto part = std::make_unique<Part>();
   part->path = path_;
   part->path += ".part-" + std::to_string(sequence);
   part->out.open(part->path, std::ios::binary | std::ios::trunc);
   if (!part->out) throw InputError(part->path.string() + ": cannot open for writing: " + std::strerror(errno));
   part->joints = output_joints;
+  part->name = header.name;
+  part->fps = header.fps;
   part->begun = true;
   parts_[sequence] = std::move(part);
 }
@@ -67,15 +72,21 @@ void PredictionsWriter::Frame(const FrameOutput& frame) {
   std::ostream& out = part.out;
   const Poses3D& persons = *frame.persons;
   out << (part.frames++ == 0 ? "" : ",") << "\n{\"id\": " << io::DumpJson(Json(frame.input->id), -1, &part.replaced)
-      << ", \"persons\": [";
+      << ", \"time\": ";
+  WriteNumber(out, frame.input->timestamp_s, 6);
+  out << ", \"persons\": [";
   for (int p = 0; p < persons.num_persons(); ++p) {
     const auto person = persons.Person(p);
     out << (p ? ", [" : "[");
     for (int j = 0; j < persons.num_joints; ++j) {
       out << (j ? ", [" : "[");
-      for (int row = 0; row < 4; ++row) {
-        if (row) out << ", ";
-        WriteNumber(out, person(row, j), row < 3 ? 6 : 4);
+      if (person(3, j) > 0 && !JointWritten(persons, p, j, options_)) {
+        out << "null, null, null, 0";  // a filled joint, not written
+      } else {
+        for (int row = 0; row < 4; ++row) {
+          if (row) out << ", ";
+          WriteNumber(out, person(row, j), row < 3 ? 6 : 4);
+        }
       }
       out << "]";
     }
@@ -83,6 +94,12 @@ void PredictionsWriter::Frame(const FrameOutput& frame) {
   }
   out << "], \"track_ids\": [";
   for (int p = 0; p < persons.num_persons(); ++p) out << (p ? ", " : "") << persons.track_ids[p];
+  out << "], \"provenance\": [";
+  for (int p = 0; p < persons.num_persons(); ++p) {
+    out << (p ? ", [" : "[");
+    for (int j = 0; j < persons.num_joints; ++j) out << (j ? "," : "") << static_cast<int>(persons.Provenance(p, j));
+    out << "]";
+  }
   out << "]}";
 }
 
@@ -100,8 +117,16 @@ int PredictionsWriter::Finish() {
     if (part != nullptr && joints.empty()) joints = part->joints;
   }
   io::WriteTextFile(path_, [&](std::ostream& out) {
+    Json sequences = Json::array();
+    for (const auto& part : parts_) {
+      if (part == nullptr) continue;
+      sequences.push_back({{"name", part->name}, {"frames", part->frames}, {"fps", part->fps > 0 ? Json(part->fps) : Json()}});
+    }
     out << "{\"run_id\": " << io::DumpJson(Json(run_id_), -1, &replaced)
-        << ", \"joints\": " << io::DumpJson(Json(joints), -1, &replaced) << ",\n\"frames\": [";
+        << ", \"joints\": " << io::DumpJson(Json(joints), -1, &replaced)
+        << ",\n\"units\": {\"position\": \"m\", \"time\": \"s\", \"score\": \"1\"}, \"provenance_names\": "
+        << io::DumpJson(Json(ProvenanceNames()), -1) << ",\n\"sequences\": " << io::DumpJson(sequences, -1, &replaced)
+        << ",\n\"frames\": [";
     bool first = true;
     for (const auto& part : parts_) {
       if (part == nullptr || part->frames == 0) continue;

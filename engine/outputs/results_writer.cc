@@ -168,6 +168,36 @@ Json SummaryJson(const RunResult& run) {
   return j;
 }
 
+Json TriangulationSummaryJson(const RunResult& run) {
+  Json j;
+  j["evaluated"] = false;
+  j["fps"] = Number(run.timing.fps);
+  j["frame_time_us_median"] = Number(run.timing.frame_us_median);
+  j["frames"] = run.frames;
+  j["eval_frames_per_s"] = Number(run.wall_seconds > 0 ? run.frames / run.wall_seconds : 0.0);
+  j["output_persons"] = run.output_persons;
+  j["step_time_us_median"] = StepTimesJson(run.timing);
+  j["step_count_per_frame"] = StepCountsJson(run.counts);
+  j["counter_per_frame"] = CountersJson(run.counts);
+  j["detection_noise_m"] = run.counts.noise_frames > 0 ? Json(run.counts.noise_m_median) : Json(nullptr);
+  if (run.sequences.size() > 1) {
+    j["per_sequence"] = Json::array();
+    for (const SequenceResult& sequence : run.sequences) {
+      j["per_sequence"].push_back({{"sequence", sequence.name},
+                                   {"fps", Number(sequence.timing.fps)},
+                                   {"frame_time_us_median", Number(sequence.timing.frame_us_median)},
+                                   {"frames", sequence.frames}});
+    }
+  }
+  Json units;
+  for (const SummaryColumn& c : SummaryColumns()) {
+    if (j.contains(c.key)) units[c.key] = c.unit;
+  }
+  units["output_persons"] = "count";
+  j["units"] = units;
+  return j;
+}
+
 std::string SummaryCsv(const std::vector<std::pair<std::string, Json>>& rows) {
   std::ostringstream out;
   const std::vector<std::string> legacy = LegacyPcpKeys(rows);  // after the fixed columns, when any row has them
@@ -261,9 +291,15 @@ void WriteRunFiles(const std::filesystem::path& staging, const RunResult& run, c
   };
   Json summary;
   summary["run_id"] = info.run_id;
-  summary.update(SummaryJson(run));
+  summary.update(run.evaluated ? SummaryJson(run) : TriangulationSummaryJson(run));
   summary.update(extra_summary);
   write_json("summary.json", summary);
+  if (!run.evaluated) {  // no metrics: no summary tables, no per-joint errors
+    io::WriteTextFile(staging / "steps.csv", StepsCsv(run.timing, run.counts));
+    io::WriteTextFile(staging / "config.json", DumpConfig(config, /*with_comments=*/false));
+    write_json("run.json", RunInfoJson(info));  // last: the marker of a complete run
+    return;
+  }
   std::string label;
   for (const SequenceResult& s : run.sequences) AppendItem(&label, s.name, "+");
   if (run.sequences.size() > 3) {
@@ -292,7 +328,8 @@ void WriteRunFiles(const std::filesystem::path& staging, const RunResult& run, c
 
 }  // namespace
 
-RunFolder::RunFolder(const std::filesystem::path& dir, const std::string& run_id, int num_sequences)
+RunFolder::RunFolder(const std::filesystem::path& dir, const std::string& run_id, int num_sequences,
+                     const ExportOptions& exports)
     : dir_(dir), folder_(std::make_unique<io::StagedFolder>(dir)) {
   // When the folder must be replaced in place, the old run marker goes first, so a reader never
   // takes a mixed folder for a complete run.
@@ -301,17 +338,28 @@ RunFolder::RunFolder(const std::filesystem::path& dir, const std::string& run_id
     std::filesystem::remove(folder_->path() / "run.json", ec);
     if (ec) throw InputError((dir / "run.json").string() + ": cannot remove the old run marker: " + ec.message());
   }
-  predictions_ = std::make_unique<PredictionsWriter>(folder_->path() / "predictions.json", run_id, num_sequences);
+  if (exports.Has(ExportFormat::kJson)) {
+    predictions_ =
+        std::make_unique<PredictionsWriter>(folder_->path() / "predictions.json", run_id, num_sequences, exports);
+  }
+  if (exports.Has(ExportFormat::kCsv)) {
+    csv_ = std::make_unique<CsvExport>(folder_->path() / "predictions.csv", num_sequences, exports);
+  }
+  if (exports.Has(ExportFormat::kTrc)) trc_ = std::make_unique<TrcExport>(folder_->path() / "trc", num_sequences, exports);
+  sinks_ = std::make_unique<SinkList>(std::vector<FrameSink*>{predictions_.get(), csv_.get(), trc_.get()});
 }
 
 RunFolder::~RunFolder() = default;
 
-FrameSink* RunFolder::sink() { return predictions_.get(); }
+FrameSink* RunFolder::sink() { return sinks_.get(); }
 
 void RunFolder::Finish(const RunResult& run, const Config& config, const RunInfo& info, const Json& extra_summary) {
   std::vector<std::pair<std::string, int>> replaced;  // file, strings with invalid UTF-8
   try {
-    if (const int count = predictions_->Finish(); count > 0) replaced.emplace_back("predictions.json", count);
+    if (predictions_ != nullptr) {
+      if (const int count = predictions_->Finish(); count > 0) replaced.emplace_back("predictions.json", count);
+    }
+    if (csv_ != nullptr) csv_->Finish();
     WriteRunFiles(folder_->path(), run, config, info, extra_summary, &replaced);
     folder_->Commit();
   } catch (const InputError& e) {

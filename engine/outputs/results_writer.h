@@ -15,7 +15,10 @@
 #include "engine/outputs/run_info.h"
 #include "datasets/io/staged_output.h"
 #include "engine/frame_sink.h"
+#include "engine/outputs/csv_export.h"
+#include "engine/outputs/export_options.h"
 #include "engine/outputs/predictions_writer.h"
+#include "engine/outputs/trc_export.h"
 #include "engine/run.h"
 
 namespace rpt::engine {
@@ -34,6 +37,11 @@ const std::vector<SummaryColumn>& SummaryColumns();
 // "step_count_per_frame", "counter_per_frame" and "detection_noise_m" (null when not estimated),
 // and with several sequences "per_sequence": one SequenceSummaryJson per sequence.
 nlohmann::ordered_json SummaryJson(const RunResult& run);
+// The summary of a run without metrics (rpt triangulate): "evaluated": false, "fps",
+// "frame_time_us_median", "frames", "eval_frames_per_s", "output_persons" (triangulated
+// person-frames), the step times, counts and counters, "detection_noise_m", "per_sequence" (with
+// several: sequence, fps, frame_time_us_median, frames) and "units".
+nlohmann::ordered_json TriangulationSummaryJson(const RunResult& run);
 // One sequence of a run: "sequence" (its name) and the SummaryColumns() keys it has on its own
 // (everything but the run's wall-clock throughput), plus "wholebody_mpjpe_mm" / "legacy_pcp".
 nlohmann::ordered_json SequenceSummaryJson(const SequenceResult& sequence);
@@ -49,23 +57,28 @@ std::string SummaryMarkdown(const std::vector<std::pair<std::string, nlohmann::o
 // The paper-style row printed on the terminal: PCP | PCK@100/500 | MPJPE | Recall@100/500 | Invalid | F1 | FPS.
 std::string PaperRow(const RunResult& run);
 
-// The output folder of a run (`rpt eval`): built beside the target and swapped in whole when
-// complete (io::StagedFolder), so `dir` holds either its old contents or the complete new run.
-// predictions.json streams in while the run goes (sink()); Finish() writes summary.{json,csv,md}
-// (`extra_summary`, e.g. eval's warnings and data checks, merged into summary.json),
-// per_joint.csv, steps.csv, config.json and run.json (last: the marker of a complete run; summary,
+// The output folder of a run (`rpt eval`, `rpt triangulate`): built beside the target and swapped
+// in whole when complete (io::StagedFolder), so `dir` holds either its old contents or the complete
+// new run. predictions.json streams in while the run goes (sink()); Finish() writes
+// summary.{json,csv,md} (`extra_summary`, e.g. eval's warnings and data checks, merged into
+// summary.json), per_joint.csv (the last three only for an evaluated run; without metrics
+// summary.json is TriangulationSummaryJson), steps.csv, config.json and run.json (last: the
+// marker of a complete run; summary,
 // predictions and run carry the same "run_id"), then swaps the folder in. Strings that are not
 // valid UTF-8 are written as U+FFFD with one "warning: <file>: ..." line on stderr per file.
 // Throws InputError naming the file when anything cannot be written; `dir` is then left as it
 // was, and so it is when the run fails before Finish (the destructor removes the temporary).
 class RunFolder {
  public:
-  RunFolder(const std::filesystem::path& dir, const std::string& run_id, int num_sequences);
+  // `exports`: the files of 3D persons written (export_options.h; default predictions.json).
+  RunFolder(const std::filesystem::path& dir, const std::string& run_id, int num_sequences,
+            const ExportOptions& exports = {});
   ~RunFolder();
   RunFolder(const RunFolder&) = delete;
   RunFolder& operator=(const RunFolder&) = delete;
 
-  // Writes predictions.json (engine/outputs/predictions_writer.h).
+  // Writes the exports: predictions.json (predictions_writer.h), predictions.csv (csv_export.h),
+  // trc/ (trc_export.h).
   FrameSink* sink();
   void Finish(const RunResult& run, const Config& config, const RunInfo& info,
               const nlohmann::ordered_json& extra_summary = nlohmann::ordered_json::object());
@@ -74,6 +87,9 @@ class RunFolder {
   std::filesystem::path dir_;
   std::unique_ptr<io::StagedFolder> folder_;
   std::unique_ptr<PredictionsWriter> predictions_;
+  std::unique_ptr<CsvExport> csv_;
+  std::unique_ptr<TrcExport> trc_;
+  std::unique_ptr<SinkList> sinks_;
 };
 
 // run.json: run id, git revision, date, command ("command": one line for people; "argv": the

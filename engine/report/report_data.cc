@@ -170,8 +170,14 @@ Json BuildReportData(const RecordedRun& run, const std::vector<Sequence>* sequen
                      std::vector<std::string>* warnings) {
   Json data;
   const std::string dataset = RecordedDataset(run);
-  data["title"] = (dataset.empty() ? std::string("generic labels") : dataset) + " - " + run.dir.filename().string();
+  const bool triangulation = RecordedWords(run).size() > 1 && RecordedWords(run)[1] == "triangulate";
+  data["title"] = (!dataset.empty() ? dataset : triangulation ? std::string("triangulation") : std::string("generic labels")) +
+                  " - " + run.dir.filename().string();
   data["dataset"] = dataset;
+  // Without ground truth (rpt triangulate) nothing is matched: predictions are persons, not invalid.
+  const auto evaluated_key = run.summary.find("evaluated");
+  const bool evaluated = evaluated_key == run.summary.end() || !evaluated_key->is_boolean() || evaluated_key->get<bool>();
+  data["evaluated"] = evaluated;
   data["summary"] = run.summary;
   data["paper"] = PaperResultsFor(dataset);
   data["per_joint"] = run.per_joint;
@@ -190,7 +196,15 @@ Json BuildReportData(const RecordedRun& run, const std::vector<Sequence>* sequen
     return data;
   }
   const JointNames& prediction_joints = run.predictions.joints;
-  const RunOutcomes outcomes = EvaluateFrameOutcomes(*sequences, predictions, prediction_joints, eval_options);
+  RunOutcomes outcomes = EvaluateFrameOutcomes(*sequences, predictions, prediction_joints, eval_options);
+  if (!evaluated) {
+    for (auto& frames : outcomes.frames) {
+      for (FrameOutcome& o : frames) {
+        o.pred_invalid.assign(o.pred_invalid.size(), false);
+        o.num_invalid = 0;
+      }
+    }
+  }
   const auto recorded_gt = run.summary.find("gt_persons");
   if (recorded_gt != run.summary.end() && recorded_gt->is_number() &&
       recorded_gt->get<long>() != outcomes.metrics.num_gt_persons) {

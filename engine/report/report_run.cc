@@ -127,7 +127,10 @@ RecordedRun ReadRecordedRun(const std::filesystem::path& dir) {
   run.summary = LoadOrdered(dir / "summary.json");
   run.config = LoadOrdered(dir / "config.json");
   run.run_info = LoadOrdered(dir / "run.json");
-  run.per_joint = ReadPerJoint(dir / "per_joint.csv");
+  // A run without ground truth (rpt triangulate, summary "evaluated": false) has no per-joint errors.
+  const auto evaluated = run.summary.find("evaluated");
+  const bool without_gt = evaluated != run.summary.end() && evaluated->is_boolean() && !evaluated->get<bool>();
+  run.per_joint = without_gt ? Json::array() : ReadPerJoint(dir / "per_joint.csv");
   run.predictions = ReadPredictions(dir / "predictions.json");
   return run;
 }

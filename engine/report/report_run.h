@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// What `rpt report` reads from an `rpt eval` output folder: the recorded files (summary.json,
-// per_joint.csv, config.json, run.json, predictions.json), and the input of the run re-loaded from
+// What `rpt report` reads from an `rpt eval` or `rpt triangulate` output folder: the recorded files
+// (summary.json, per_joint.csv (not for a run without GT), config.json, run.json, predictions.json), and the input of the run re-loaded from
 // the command line that run.json records (GT, cameras, detections are not copied into the folder:
 // the dataset stays their one source).
 #pragma once
@@ -28,7 +28,7 @@ struct RecordedRun {
   nlohmann::ordered_json summary;   // summary.json
   nlohmann::ordered_json config;    // config.json (the resolved configuration of the run)
   nlohmann::ordered_json run_info;  // run.json
-  nlohmann::ordered_json per_joint; // per_joint.csv as [{"joint", "mean_error_mm", "pck100", "count"}]
+  nlohmann::ordered_json per_joint; // per_joint.csv as [{"joint", "mean_error_mm", "pck100", "count"}]; [] without GT
   RecordedPredictions predictions;
 };
 

@@ -92,8 +92,18 @@ TEST(PredictionsWriter, JoinsSequencesInInputOrderAndLeavesNoParts) {
   for (int f = 0; f < 4; ++f) EXPECT_EQ(predictions["frames"][f]["id"], ids[f]);
   EXPECT_EQ(predictions["frames"][3]["persons"][0][0][0], 21.0);
   EXPECT_EQ(predictions["frames"][1]["track_ids"], Json({2}));
-  // The file's layout: one frame per line after the header line.
-  EXPECT_EQ(text.rfind("{\"run_id\": \"run\", \"joints\": [\"a\",\"b\"],\n\"frames\": [\n{\"id\": \"a0\"", 0), 0u) << text;
+  // Per sequence its frame count (sequence 1 has none), per frame its time and provenance.
+  ASSERT_EQ(predictions["sequences"].size(), 3u);
+  EXPECT_EQ(predictions["sequences"][0]["frames"], 2);
+  EXPECT_EQ(predictions["sequences"][1]["frames"], 0);
+  EXPECT_EQ(predictions["sequences"][2]["frames"], 2);
+  EXPECT_EQ(predictions["frames"][0]["time"], 0.0);
+  EXPECT_EQ(predictions["frames"][0]["provenance"], Json({{0, 0}}));
+  EXPECT_EQ(predictions["units"]["position"], "m");
+  // The file's layout: three header lines (ids and joints, units and provenance names, sequences),
+  // then one frame per line.
+  EXPECT_EQ(text.rfind("{\"run_id\": \"run\", \"joints\": [\"a\",\"b\"],\n\"units\": ", 0), 0u) << text;
+  EXPECT_NE(text.find("],\n\"frames\": [\n{\"id\": \"a0\", \"time\": 0.000000, \"persons\": "), std::string::npos) << text;
   EXPECT_EQ(text.substr(text.size() - 4), "\n]}\n");
   int files = 0;
   for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir)) ++files;

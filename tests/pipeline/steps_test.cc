@@ -541,6 +541,22 @@ TEST(Postprocess, DropsInvalidPersonsAndFillsMissingJoints) {
   EXPECT_LT((persons.Person(0).col(9).head<3>() - good.col(7).head<3>()).norm(), 1e-12);
   EXPECT_NEAR(persons.Person(0)(3, 9), PostprocessOptions{}.filled_joint_score, 1e-12);
   EXPECT_LT((persons.Person(1).col(10).head<3>() - wrong.col(8).head<3>()).norm(), 1e-12);
+  // Filled joints say so (the replaced wrist too); the others stay triangulated.
+  EXPECT_EQ(persons.Provenance(0, 9), JointProvenance::kFilled);
+  EXPECT_EQ(persons.Provenance(0, 7), JointProvenance::kTriangulated);
+  EXPECT_EQ(persons.Provenance(1, 10), JointProvenance::kFilled);
+  EXPECT_EQ(persons.Provenance(1, 8), JointProvenance::kTriangulated);
+  EXPECT_EQ(persons.provenance.size(), 2 * names.size());
+
+  // A kept person after a dropped one moves down with its provenance.
+  Poses3D moved;
+  moved.Clear(static_cast<int>(names.size()));
+  moved.AddPerson().leftCols(17) = tiny;
+  moved.AddPerson().leftCols(17) = good;
+  EXPECT_EQ(steps::Postprocess(PostprocessOptions{}, input, &moved, &stats), 1);
+  EXPECT_EQ(moved.Provenance(0, 9), JointProvenance::kFilled);
+  EXPECT_EQ(moved.Provenance(0, 7), JointProvenance::kTriangulated);
+  EXPECT_EQ(moved.provenance.size(), names.size());
 
   PostprocessOptions off;
   off.enabled = false;

@@ -1,0 +1,43 @@
+// SPDX-License-Identifier: MIT
+#include "cli/export_args.h"
+
+#include "core/errors.h"
+
+namespace rpt::cli {
+
+void AddExportOptions(CLI::App* command, ExportArgs* args) {
+  command->add_option("--export", args->formats,
+                      "files of 3D persons, comma-separated: json (predictions.json), csv (predictions.csv), trc "
+                      "(trc/, one file per track for OpenSim) (default json; docs/own_data.md)");
+  command->add_flag("--no-predictions", args->no_predictions, "write no 3D persons at all (long runs)");
+  command->add_flag("--no-filled-joints", args->no_filled_joints,
+                    "write joints filled from a neighbour (provenance 'filled') as missing");
+  command->add_option("--trc-axes", args->trc_axes, "world axes of the TRC files: z-up (as is) or y-up (OpenSim)")
+      ->check(CLI::IsMember({"z-up", "y-up"}))
+      ->capture_default_str();
+  command->add_option("--trc-units", args->trc_units, "unit of the TRC coordinates: m or mm")
+      ->check(CLI::IsMember({"m", "mm"}))
+      ->capture_default_str();
+}
+
+engine::ExportOptions ExportOptionsOf(const ExportArgs& args) {
+  engine::ExportOptions options;
+  if (args.no_predictions) {
+    if (!args.formats.empty()) throw ConfigError("--no-predictions contradicts --export " + args.formats);
+    options.formats.clear();
+  } else if (!args.formats.empty()) {
+    options.formats = engine::ParseExportFormats(args.formats);
+    for (const engine::ExportFormat format : {engine::ExportFormat::kNpz, engine::ExportFormat::kH5}) {
+      if (options.Has(format)) {
+        throw ConfigError("--export " + args.formats + ": " + std::string(engine::ExportFormatName(format)) +
+                          " is not written yet (json, csv and trc are)");
+      }
+    }
+  }
+  options.filled_joints = !args.no_filled_joints;
+  options.trc_axes = args.trc_axes == "y-up" ? engine::TrcAxes::kYUp : engine::TrcAxes::kZUp;
+  options.trc_millimetres = args.trc_units == "mm";
+  return options;
+}
+
+}  // namespace rpt::cli

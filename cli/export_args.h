@@ -1,0 +1,26 @@
+// SPDX-License-Identifier: MIT
+// The export options of rpt eval and rpt triangulate (--export, --no-predictions,
+// --no-filled-joints, --trc-axes, --trc-units) and the engine::ExportOptions they make.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <string>
+
+#include "engine/outputs/export_options.h"
+
+namespace rpt::cli {
+
+struct ExportArgs {
+  std::string formats;  // empty: json
+  bool no_predictions = false;
+  bool no_filled_joints = false;
+  std::string trc_axes = "z-up";
+  std::string trc_units = "m";
+};
+
+void AddExportOptions(CLI::App* command, ExportArgs* args);
+
+// Throws ConfigError for contradicting options (--no-predictions with --export) and bad names.
+engine::ExportOptions ExportOptionsOf(const ExportArgs& args);
+
+}  // namespace rpt::cli

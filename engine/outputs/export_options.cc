@@ -1,0 +1,62 @@
+// SPDX-License-Identifier: MIT
+#include "engine/outputs/export_options.h"
+
+#include <algorithm>
+#include <array>
+
+#include "core/errors.h"
+
+namespace rpt::engine {
+namespace {
+
+constexpr std::array<std::pair<ExportFormat, std::string_view>, 5> kFormats = {{
+    {ExportFormat::kJson, "json"},
+    {ExportFormat::kCsv, "csv"},
+    {ExportFormat::kTrc, "trc"},
+    {ExportFormat::kNpz, "npz"},
+    {ExportFormat::kH5, "h5"},
+}};
+
+}  // namespace
+
+bool ExportOptions::Has(ExportFormat format) const {
+  return std::find(formats.begin(), formats.end(), format) != formats.end();
+}
+
+std::string_view ExportFormatName(ExportFormat format) {
+  for (const auto& [value, name] : kFormats) {
+    if (value == format) return name;
+  }
+  return "?";
+}
+
+std::vector<ExportFormat> ParseExportFormats(const std::string& text) {
+  std::vector<ExportFormat> formats;
+  size_t start = 0;
+  while (start <= text.size()) {
+    const size_t comma = std::min(text.find(',', start), text.size());
+    const std::string name = text.substr(start, comma - start);
+    const auto it = std::find_if(kFormats.begin(), kFormats.end(), [&](const auto& f) { return f.second == name; });
+    if (it == kFormats.end()) {
+      throw ConfigError("--export " + text + ": '" + name + "' is not one of json, csv, trc, npz, h5");
+    }
+    if (std::find(formats.begin(), formats.end(), it->first) != formats.end()) {
+      throw ConfigError("--export " + text + ": '" + name + "' given twice");
+    }
+    formats.push_back(it->first);
+    start = comma + 1;
+  }
+  return formats;
+}
+
+const std::vector<std::string>& ProvenanceNames() {
+  static const std::vector<std::string> names = {"triangulated", "filled", "smoothed", "lifted", "predicted"};
+  return names;
+}
+
+std::string_view ProvenanceName(JointProvenance provenance) {
+  const auto code = static_cast<size_t>(provenance);
+  return code < ProvenanceNames().size() ? std::string_view(ProvenanceNames()[code]) : std::string_view("?");
+}
+
+}  // namespace rpt::engine

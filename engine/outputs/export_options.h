@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: MIT
+// Which files of 3D persons a run writes (rpt eval and rpt triangulate: --export, --no-predictions,
+// --no-filled-joints, --trc-axes, --trc-units) and what every export shares: the provenance names
+// and which joints are written. The formats and their schemas: docs/own_data.md, "Exports".
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/poses.h"
+
+namespace rpt::engine {
+
+enum class ExportFormat { kJson, kCsv, kTrc, kNpz, kH5 };
+
+// World axes of the TRC files: as they are (z up, the convention of every dataset reader and of
+// most calibrations), or rotated for OpenSim's y up: (x, y, z) -> (x, z, -y), a rotation of -90
+// degrees about x.
+enum class TrcAxes { kZUp, kYUp };
+
+struct ExportOptions {
+  std::vector<ExportFormat> formats = {ExportFormat::kJson};  // empty: no predictions at all
+  // Joints filled from a neighbour (JointProvenance::kFilled) are written; false: written as missing.
+  bool filled_joints = true;
+  TrcAxes trc_axes = TrcAxes::kZUp;
+  bool trc_millimetres = false;  // TRC coordinates in mm instead of m
+
+  bool Has(ExportFormat format) const;
+};
+
+// "json", "csv", "trc", "npz", "h5".
+std::string_view ExportFormatName(ExportFormat format);
+// Parses "json,csv,trc" (names as above, comma-separated, no repeats). Throws ConfigError naming
+// the option (`--export`) and the bad name.
+std::vector<ExportFormat> ParseExportFormats(const std::string& text);
+
+// "triangulated", "filled", "smoothed", "lifted", "predicted": the JointProvenance values by code.
+std::string_view ProvenanceName(JointProvenance provenance);
+const std::vector<std::string>& ProvenanceNames();
+
+// Joint j of person p is written as present: score > 0, and not filled unless filled joints are
+// written.
+inline bool JointWritten(const Poses3D& persons, int p, int j, const ExportOptions& options) {
+  if (!(persons.data[(static_cast<size_t>(p) * persons.num_joints + j) * 4 + 3] > 0)) return false;
+  return options.filled_joints || persons.Provenance(p, j) != JointProvenance::kFilled;
+}
+
+}  // namespace rpt::engine

@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: MIT
+#include "engine/outputs/part_files.h"
+
+#include <cerrno>
+#include <cstring>
+
+#include "core/errors.h"
+#include "datasets/io/text_file.h"
+
+namespace rpt::engine {
+
+PartFiles::PartFiles(std::filesystem::path target, int num_sequences)
+    : target_(std::move(target)), parts_(static_cast<size_t>(num_sequences)) {}
+
+PartFiles::~PartFiles() {
+  for (Part& part : parts_) {
+    if (part.path.empty()) continue;
+    part.out.close();
+    std::error_code ec;
+    std::filesystem::remove(part.path, ec);
+  }
+}
+
+std::ostream& PartFiles::Open(int sequence) {
+  Part& part = parts_[sequence];
+  part.path = target_;
+  part.path += ".part-" + std::to_string(sequence);
+  part.out.open(part.path, std::ios::binary | std::ios::trunc);
+  if (!part.out) throw InputError(part.path.string() + ": cannot open for writing: " + std::strerror(errno));
+  return part.out;
+}
+
+void PartFiles::Close(int sequence) {
+  Part& part = parts_[sequence];
+  part.out.flush();
+  if (!part.out) throw InputError(part.path.string() + ": write failed: " + std::strerror(errno));
+  part.out.close();
+}
+
+void PartFiles::Join(const std::string& head, const std::string& tail) {
+  io::WriteTextFile(target_, [&](std::ostream& out) {
+    out << head;
+    for (const Part& part : parts_) {
+      if (part.path.empty()) continue;
+      std::ifstream in(part.path, std::ios::binary);
+      if (!in) throw InputError(part.path.string() + ": cannot read back: " + std::strerror(errno));
+      if (in.peek() != std::ifstream::traits_type::eof()) out << in.rdbuf();
+    }
+    out << tail;
+  });
+  for (Part& part : parts_) {
+    if (part.path.empty()) continue;
+    std::error_code ec;
+    std::filesystem::remove(part.path, ec);
+    part.path.clear();
+  }
+}
+
+}  // namespace rpt::engine

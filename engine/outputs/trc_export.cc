@@ -1,0 +1,157 @@
+// SPDX-License-Identifier: MIT
+#include "engine/outputs/trc_export.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+
+#include "core/errors.h"
+#include "datasets/io/text_file.h"
+
+namespace rpt::engine {
+namespace {
+
+std::string FileName(std::string name) {
+  for (char& c : name) {
+    if (c == '/' || c == '\\') c = '_';
+  }
+  return name.empty() ? "sequence" : name;
+}
+
+}  // namespace
+
+TrcExport::TrcExport(std::filesystem::path dir, int num_sequences, ExportOptions options)
+    : dir_(std::move(dir)), options_(std::move(options)), sequences_(static_cast<size_t>(num_sequences)) {}
+
+TrcExport::~TrcExport() {
+  for (Sequence& s : sequences_) {
+    for (auto& [id, track] : s.tracks) {
+      track.out.reset();
+      std::error_code ec;
+      std::filesystem::remove(track.part, ec);
+    }
+  }
+}
+
+long TrcExport::files() const {
+  long count = 0;
+  for (const Sequence& s : sequences_) count += s.files;
+  return count;
+}
+
+void TrcExport::BeginSequence(int sequence, const SequenceHeader& header, const JointNames& output_joints) {
+  Sequence& s = sequences_[sequence];
+  s.name = FileName(header.name);
+  s.joints = output_joints;
+  s.fps = header.fps;
+  std::error_code ec;
+  std::filesystem::create_directories(dir_, ec);
+  if (ec) throw InputError(dir_.string() + ": cannot create the folder: " + ec.message());
+}
+
+std::ofstream& TrcExport::TrackStream(Sequence* s, int track_id, long frame_idx, double time_s) {
+  auto [it, created] = s->tracks.try_emplace(track_id);
+  Track& track = it->second;
+  if (created) {
+    track.part = dir_ / (s->name + "_track" + std::to_string(track_id) + ".trc.part");
+    track.first_frame = frame_idx;
+    track.first_time_s = time_s;
+  }
+  track.last_time_s = time_s;
+  if (track.out == nullptr) {
+    if (s->open >= kMaxOpenTrcParts) {  // close the others; they reopen to append when needed
+      for (auto& [id, other] : s->tracks) {
+        if (other.out == nullptr) continue;
+        other.out->flush();
+        if (!*other.out) throw InputError(other.part.string() + ": write failed: " + std::strerror(errno));
+        other.out.reset();
+      }
+      s->open = 0;
+    }
+    track.out = std::make_unique<std::ofstream>(track.part, std::ios::binary | (created ? std::ios::trunc : std::ios::app));
+    if (!*track.out) throw InputError(track.part.string() + ": cannot open for writing: " + std::strerror(errno));
+    ++s->open;
+  }
+  return *track.out;
+}
+
+void TrcExport::Frame(const FrameOutput& frame) {
+  Sequence& s = sequences_[frame.sequence];
+  const long frame_idx = s.frames++;
+  const Poses3D& persons = *frame.persons;
+  const double time_s = frame.input->timestamp_s;
+  const double scale = options_.trc_millimetres ? 1000.0 : 1.0;
+  char number[64];
+  for (int p = 0; p < persons.num_persons(); ++p) {
+    if (persons.track_ids[p] < 0) continue;
+    if (!std::isfinite(time_s)) {
+      throw InputError("--export trc: sequence '" + s.name + "', frame '" + frame.input->id +
+                       "': the frame's time is unknown (a TRC row needs one; give --fps)");
+    }
+    std::ofstream& out = TrackStream(&s, persons.track_ids[p], frame_idx, time_s);
+    ++s.tracks[persons.track_ids[p]].rows;
+    std::snprintf(number, sizeof(number), "%ld\t%.6f", frame_idx + 1, time_s);
+    out << number;
+    const auto person = persons.Person(p);
+    for (int j = 0; j < persons.num_joints; ++j) {
+      if (!JointWritten(persons, p, j, options_)) {
+        out << "\t\t\t";
+        continue;
+      }
+      double x = person(0, j), y = person(1, j), z = person(2, j);
+      if (options_.trc_axes == TrcAxes::kYUp) {
+        const double up = z;
+        z = -y;
+        y = up;
+      }
+      std::snprintf(number, sizeof(number), "\t%.6f\t%.6f\t%.6f", x * scale, y * scale, z * scale);
+      out << number;
+    }
+    out << "\n";
+  }
+}
+
+void TrcExport::WriteFile(const Sequence& s, int track_id, const Track& track) const {
+  const std::string name = s.name + "_track" + std::to_string(track_id) + ".trc";
+  double rate = s.fps;
+  if (!(rate > 0) && track.rows > 1 && track.last_time_s > track.first_time_s) {
+    rate = (track.rows - 1) / (track.last_time_s - track.first_time_s);
+  }
+  char line[256];
+  io::WriteTextFile(dir_ / name, [&](std::ostream& out) {
+    out << "PathFileType\t4\t(X/Y/Z)\t" << name << "\n";
+    out << "DataRate\tCameraRate\tNumFrames\tNumMarkers\tUnits\tOrigDataRate\tOrigDataStartFrame\tOrigNumFrames\n";
+    std::snprintf(line, sizeof(line), "%.6g\t%.6g\t%ld\t%zu\t%s\t%.6g\t%ld\t%ld\n", rate, rate, track.rows,
+                  s.joints.size(), options_.trc_millimetres ? "mm" : "m", rate, track.first_frame + 1, track.rows);
+    out << line << "Frame#\tTime";
+    for (const std::string& joint : s.joints) out << "\t" << joint << "\t\t";
+    out << "\n\t";
+    for (size_t j = 1; j <= s.joints.size(); ++j) out << "\tX" << j << "\tY" << j << "\tZ" << j;
+    out << "\n\n";
+    std::ifstream in(track.part, std::ios::binary);
+    if (!in) throw InputError(track.part.string() + ": cannot read back: " + std::strerror(errno));
+    if (in.peek() != std::ifstream::traits_type::eof()) out << in.rdbuf();
+  });
+}
+
+void TrcExport::EndSequence(int sequence) {
+  Sequence& s = sequences_[sequence];
+  for (auto& [id, track] : s.tracks) {
+    if (track.out != nullptr) {
+      track.out->flush();
+      if (!*track.out) throw InputError(track.part.string() + ": write failed: " + std::strerror(errno));
+      track.out.reset();
+    }
+  }
+  s.open = 0;
+  for (auto& [id, track] : s.tracks) {
+    WriteFile(s, id, track);
+    std::error_code ec;
+    std::filesystem::remove(track.part, ec);
+    ++s.files;
+  }
+  s.tracks.clear();
+}
+
+}  // namespace rpt::engine

@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: MIT
+// TRC files for OpenSim (--export trc): one file per sequence and track, trc/<sequence>_track<id>.trc
+// ('/' in a sequence name becomes '_'; untracked persons, id -1, are not written), one marker per
+// joint, one row per frame the track is in:
+//   PathFileType  4  (X/Y/Z)  <file name>
+//   DataRate  CameraRate  NumFrames  NumMarkers  Units  OrigDataRate  OrigDataStartFrame  OrigNumFrames
+//   <fps>  <fps>  <rows>  <joints>  m|mm  <fps>  <first frame + 1>  <rows>
+//   Frame#  Time  <joint>\t\t\t ...
+//           X1  Y1  Z1  X2 ...
+//   (blank line)
+//   <frame index + 1>  <time_s>  x  y  z ...
+// Tab-separated; a missing joint (or a filled one without ExportOptions::filled_joints) has empty
+// fields. Axes per ExportOptions::trc_axes (y up for OpenSim: (x, z, -y)), units per
+// trc_millimetres. The data rate is the sequence's fps, else the track's mean rate from its times.
+// A frame with an unknown time is an InputError naming the sequence and the frame (a TRC row needs
+// a time: give --fps). Streams: each track's rows go to a part file beside its target (at most
+// kMaxOpenTrcParts open at once, others reopened to append); EndSequence writes each track's
+// header and rows into its file.
+#pragma once
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "engine/frame_sink.h"
+#include "engine/outputs/export_options.h"
+
+namespace rpt::engine {
+
+inline constexpr int kMaxOpenTrcParts = 32;
+
+class TrcExport final : public FrameSink {
+ public:
+  // Writes into `dir` (created when the first file is written).
+  TrcExport(std::filesystem::path dir, int num_sequences, ExportOptions options);
+  ~TrcExport() override;
+
+  void BeginSequence(int sequence, const SequenceHeader& header, const JointNames& output_joints) override;
+  void Frame(const FrameOutput& frame) override;
+  void EndSequence(int sequence) override;
+
+  // The files written so far.
+  long files() const;
+
+ private:
+  struct Track {
+    std::filesystem::path part;
+    std::unique_ptr<std::ofstream> out;  // null while closed
+    long rows = 0;
+    long first_frame = 0;
+    double first_time_s = 0, last_time_s = 0;
+  };
+  struct Sequence {
+    std::string name;  // as a file name
+    JointNames joints;
+    double fps = 0;
+    long frames = 0;
+    std::map<int, Track> tracks;
+    int open = 0;
+    long files = 0;
+  };
+  std::ofstream& TrackStream(Sequence* s, int track_id, long frame_idx, double time_s);
+  void WriteFile(const Sequence& s, int track_id, const Track& track) const;
+
+  std::filesystem::path dir_;
+  ExportOptions options_;
+  std::vector<Sequence> sequences_;
+};
+
+}  // namespace rpt::engine

@@ -1,0 +1,414 @@
+// SPDX-License-Identifier: MIT
+// rpt triangulate end to end on files the test writes from a generated scene: cameras (our JSON)
+// and detections in every detection format (generic JSON, HDF5 cache, OpenPose folder, COCO result
+// list), each triangulated without labels and compared with `rpt eval` on labels of the same frames
+// (same engine loop: equal predictions); the exports read back and compared with predictions.json;
+// bad input exits 2 naming the file and the place.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "core/joints.h"
+#include "datasets/calibration/calibration.h"
+#include "datasets/readers/generic_detections.h"
+#include "datasets/readers/generic_labels.h"
+#include "datasets/readers/hdf5_cache.h"
+#include "engine/input.h"
+#include "tests/cli/cli_test_util.h"
+
+namespace rpt {
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+
+constexpr double kFps = 25.0;
+
+Json ReadJson(const fs::path& path) { return Json::parse(test::ReadAll(path)); }
+
+// A generated scene with simulated detections, its frame times i / kFps.
+Sequence Scene(int frames) {
+  engine::InputSpec spec;
+  spec.dataset = "synthetic";
+  spec.params = {"frames=" + std::to_string(frames), "people=2", "cameras=4"};
+  InputWarnings warnings;
+  std::vector<Sequence> sequences = engine::LoadInput(spec, {}, &warnings);
+  Sequence scene = std::move(sequences.at(0));
+  for (size_t i = 0; i < scene.frames.size(); ++i) scene.frames[i].timestamp_s = static_cast<double>(i) / kFps;
+  return scene;
+}
+
+// The scene's detections of the COCO-17 joints (what OpenPose and COCO files can hold), frame ids
+// as given.
+Detections Coco17(const Sequence& scene, const std::vector<std::string>& frame_ids) {
+  std::vector<int> from;
+  for (const std::string& name : CocoBodyJoints()) {
+    const auto it = std::find(scene.detection_joints.begin(), scene.detection_joints.end(), name);
+    EXPECT_NE(it, scene.detection_joints.end()) << name;
+    from.push_back(static_cast<int>(it - scene.detection_joints.begin()));
+  }
+  Detections detections;
+  detections.joints = CocoBodyJoints();
+  for (size_t f = 0; f < scene.frames.size(); ++f) {
+    FrameDetections frame;
+    frame.frame_id = frame_ids[f];
+    for (size_t c = 0; c < scene.cameras.size(); ++c) {
+      const Poses2D& view = scene.frames[f].views[c];
+      Poses2D out;
+      out.Clear(17);
+      for (int p = 0; p < view.num_persons(); ++p) {
+        auto person = out.AddPerson();
+        for (int j = 0; j < 17; ++j) person.col(j) = view.Person(p).col(from[j]);
+      }
+      frame.cameras.push_back(scene.cameras[c].name);
+      frame.views.push_back(std::move(out));
+    }
+    detections.frames.push_back(std::move(frame));
+  }
+  return detections;
+}
+
+// Labels of the scene (GT, cameras, times) with these frame ids.
+void WriteLabelsAs(const fs::path& path, Sequence scene, const std::vector<std::string>& frame_ids) {
+  for (size_t f = 0; f < scene.frames.size(); ++f) scene.frames[f].id = frame_ids[f];
+  WriteLabels(path, {scene});
+}
+
+// OpenPose COCO-18 order of the COCO-17 joints (index into CocoBodyJoints(); -1 = the neck).
+constexpr int kOpenPoseCoco18[18] = {0, -1, 6, 8, 10, 5, 7, 9, 12, 14, 16, 11, 13, 15, 2, 1, 4, 3};
+
+void WriteOpenPoseFolder(const fs::path& dir, const Detections& detections) {
+  for (size_t f = 0; f < detections.frames.size(); ++f) {
+    const FrameDetections& frame = detections.frames[f];
+    for (size_t c = 0; c < frame.cameras.size(); ++c) {
+      Json people = Json::array();
+      const Poses2D& view = frame.views[c];
+      for (int p = 0; p < view.num_persons(); ++p) {
+        std::vector<double> flat;
+        for (int k : kOpenPoseCoco18) {
+          for (int r = 0; r < 3; ++r) flat.push_back(k < 0 ? 0.0 : view.Person(p)(r, k));
+        }
+        people.push_back({{"pose_keypoints_2d", flat}});
+      }
+      fs::create_directories(dir / frame.cameras[c]);
+      char name[64];
+      std::snprintf(name, sizeof(name), "video_%012zu_keypoints.json", f);
+      std::ofstream(dir / frame.cameras[c] / name) << Json{{"version", 1.3}, {"people", people}}.dump();
+    }
+  }
+}
+
+// COCO results with MVOR ids (day 1, camera number from "cam<N>").
+void WriteCocoResults(const fs::path& path, const Detections& detections) {
+  Json results = Json::array();
+  for (size_t f = 0; f < detections.frames.size(); ++f) {
+    const FrameDetections& frame = detections.frames[f];
+    for (size_t c = 0; c < frame.cameras.size(); ++c) {
+      const long long cam = std::stoll(frame.cameras[c].substr(3));
+      const long long image_id = 10000000000LL + cam * 10000000LL + static_cast<long long>(f);
+      for (int p = 0; p < frame.views[c].num_persons(); ++p) {
+        std::vector<double> flat;
+        for (int j = 0; j < 17; ++j) {
+          for (int r = 0; r < 3; ++r) flat.push_back(frame.views[c].Person(p)(r, j));
+        }
+        results.push_back({{"image_id", image_id}, {"category_id", 1}, {"score", 0.9}, {"keypoints", flat}});
+      }
+    }
+  }
+  std::ofstream(path) << results.dump();
+}
+
+std::vector<std::string> Ids(const std::string& prefix, int frames) {
+  std::vector<std::string> ids;
+  for (int f = 0; f < frames; ++f) {
+    char id[64];
+    std::snprintf(id, sizeof(id), "%s%06d", prefix.c_str(), f);
+    ids.push_back(id);
+  }
+  return ids;
+}
+
+// The frames of two predictions.json files are equal (ids, times, persons, track ids, provenance).
+void ExpectSameFrames(const Json& a, const Json& b, const std::string& what) {
+  EXPECT_EQ(a["joints"], b["joints"]) << what;
+  ASSERT_EQ(a["frames"].size(), b["frames"].size()) << what;
+  int persons = 0;
+  for (size_t f = 0; f < a["frames"].size(); ++f) {
+    EXPECT_EQ(a["frames"][f], b["frames"][f]) << what << ", frame " << f;
+    persons += static_cast<int>(a["frames"][f]["persons"].size());
+  }
+  EXPECT_GT(persons, static_cast<int>(a["frames"].size())) << what << ": about two persons per frame";
+}
+
+class Triangulate : public ::testing::Test {
+ protected:
+  static constexpr int kFrames = 16;
+  void SetUp() override {
+    dir_ = test::TempDir("triangulate");
+    scene_ = Scene(kFrames);
+    WriteCalibration(dir_ / "cameras.json", scene_.cameras);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  // eval on labels + detections and triangulate on cameras + detections give the same frames.
+  void CompareWithEval(const std::string& format, const fs::path& detections, const std::vector<std::string>& ids) {
+    WriteLabelsAs(dir_ / (format + "_labels.json"), scene_, ids);
+    const fs::path eval = dir_ / (format + "_eval"), tri = dir_ / (format + "_tri");
+    const test::CommandResult e = test::RunRpt("eval --labels " + (dir_ / (format + "_labels.json")).string() +
+                                               " --detections " + detections.string() + " --out " + eval.string() +
+                                               " --quiet");
+    ASSERT_EQ(e.exit_code, 0) << format << ": " << e.err;
+    const test::CommandResult t = test::RunRpt("triangulate --cameras " + (dir_ / "cameras.json").string() +
+                                               " --detections " + detections.string() + " --fps 25 --out " +
+                                               tri.string());
+    ASSERT_EQ(t.exit_code, 0) << format << ": " << t.err;
+    EXPECT_NE(t.out.find(std::to_string(kFrames) + " frames, 4 cameras"), std::string::npos) << t.out;
+    EXPECT_NE(t.out.find("make_pairs"), std::string::npos) << "the step table:\n" << t.out;
+    ExpectSameFrames(ReadJson(eval / "predictions.json"), ReadJson(tri / "predictions.json"), format);
+    EXPECT_FALSE(fs::exists(tri / "per_joint.csv")) << "no GT, no per-joint errors";
+    EXPECT_EQ(ReadJson(tri / "summary.json")["evaluated"], false);
+  }
+
+  fs::path dir_;
+  Sequence scene_;
+};
+
+TEST_F(Triangulate, GenericJsonEqualsEval) {
+  const std::vector<std::string> ids = Ids("take_", kFrames);
+  Detections detections = Coco17(scene_, ids);
+  WriteGenericDetections(dir_ / "detections.json", detections);
+  CompareWithEval("json", dir_ / "detections.json", ids);
+}
+
+TEST_F(Triangulate, Hdf5CacheEqualsEval) {
+  const std::vector<std::string> ids = Ids("take_", kFrames);
+  WriteDetectionsHdf5(dir_ / "detections.h5", Coco17(scene_, ids));
+  CompareWithEval("h5", dir_ / "detections.h5", ids);
+}
+
+TEST_F(Triangulate, OpenPoseFolderEqualsEval) {
+  const std::vector<std::string> ids = Ids("", kFrames);
+  WriteOpenPoseFolder(dir_ / "openpose", Coco17(scene_, ids));
+  CompareWithEval("openpose", dir_ / "openpose", ids);
+}
+
+TEST_F(Triangulate, CocoResultsEqualEval) {
+  // MVOR image ids number the cameras from 1.
+  for (size_t c = 0; c < scene_.cameras.size(); ++c) scene_.cameras[c].name = "cam" + std::to_string(c + 1);
+  WriteCalibration(dir_ / "cameras.json", scene_.cameras);
+  const std::vector<std::string> ids = Ids("mvor_day1_", kFrames);
+  WriteCocoResults(dir_ / "results.json", Coco17(scene_, ids));
+  CompareWithEval("coco", dir_ / "results.json", ids);
+}
+
+// CSV rows and TRC files of a run, read back, against its predictions.json.
+std::vector<std::string> SplitLine(const std::string& line, char separator) {
+  std::vector<std::string> fields;
+  std::string field;
+  std::stringstream s(line);
+  while (std::getline(s, field, separator)) fields.push_back(field);
+  if (!line.empty() && line.back() == separator) fields.push_back("");
+  return fields;
+}
+
+// A TRC file: header values by name, marker names, rows of (frame#, time, coordinates or NaN).
+struct Trc {
+  std::map<std::string, std::string> header;
+  std::vector<std::string> markers;
+  std::vector<std::vector<double>> rows;
+};
+Trc ReadTrc(const fs::path& path) {
+  std::ifstream in(path);
+  std::string line;
+  std::vector<std::string> lines;
+  while (std::getline(in, line)) lines.push_back(line);
+  Trc trc;
+  EXPECT_GE(lines.size(), 6u);
+  EXPECT_EQ(SplitLine(lines[0], '\t')[0], "PathFileType");
+  const auto keys = SplitLine(lines[1], '\t'), values = SplitLine(lines[2], '\t');
+  EXPECT_EQ(keys.size(), values.size());
+  for (size_t i = 0; i < keys.size() && i < values.size(); ++i) trc.header[keys[i]] = values[i];
+  const auto names = SplitLine(lines[3], '\t');
+  for (size_t i = 2; i < names.size(); i += 3) trc.markers.push_back(names[i]);
+  EXPECT_EQ(lines[5], "") << "a blank line after the header";
+  for (size_t l = 6; l < lines.size(); ++l) {
+    std::vector<double> row;
+    for (const std::string& field : SplitLine(lines[l], '\t')) row.push_back(field.empty() ? NAN : std::stod(field));
+    EXPECT_EQ(row.size(), 2 + 3 * trc.markers.size()) << path << ":" << l + 1;
+    trc.rows.push_back(row);
+  }
+  return trc;
+}
+
+TEST_F(Triangulate, ExportsReadBackEqualTheJson) {
+  const std::vector<std::string> ids = Ids("take_", kFrames);
+  WriteGenericDetections(dir_ / "detections.json", Coco17(scene_, ids));
+  const std::string input =
+      "triangulate --cameras " + (dir_ / "cameras.json").string() + " --detections " + (dir_ / "detections.json").string() + " --fps 25 --quiet";
+  const test::CommandResult r = test::RunRpt(input + " --export json,csv,trc --out " + (dir_ / "all").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Json p = ReadJson(dir_ / "all" / "predictions.json");
+  EXPECT_EQ(p["units"]["position"], "m");
+  EXPECT_EQ(p["units"]["time"], "s");
+  EXPECT_EQ(p["provenance_names"], Json({"triangulated", "filled", "smoothed", "lifted", "predicted"}));
+  ASSERT_EQ(p["sequences"].size(), 1u);
+  EXPECT_EQ(p["sequences"][0]["frames"], kFrames);
+  EXPECT_EQ(p["sequences"][0]["fps"], 25.0);
+  const Json& joints = p["joints"];
+
+  // CSV: one row per present joint, the same numbers, times and provenance names.
+  std::ifstream csv(dir_ / "all" / "predictions.csv");
+  std::string line;
+  std::getline(csv, line);
+  EXPECT_EQ(line, "sequence,frame,frame_id,time_s,track_id,joint,x_m,y_m,z_m,score,provenance");
+  std::map<std::tuple<int, int, std::string>, std::vector<std::string>> rows;  // (frame, track, joint) -> fields
+  while (std::getline(csv, line)) {
+    const auto fields = SplitLine(line, ',');
+    ASSERT_EQ(fields.size(), 11u) << line;
+    EXPECT_EQ(fields[0], "detections");
+    EXPECT_EQ(fields[2], ids[std::stoi(fields[1])]);
+    rows[{std::stoi(fields[1]), std::stoi(fields[4]), fields[5]}] = fields;
+  }
+  size_t present = 0;
+  int filled_joints = 0;
+  std::map<int, int> rows_per_track;
+  for (int f = 0; f < kFrames; ++f) {
+    const Json& frame = p["frames"][f];
+    EXPECT_DOUBLE_EQ(frame["time"].get<double>(), f / kFps);
+    for (size_t q = 0; q < frame["persons"].size(); ++q) {
+      const int track = frame["track_ids"][q];
+      ++rows_per_track[track];
+      for (size_t j = 0; j < joints.size(); ++j) {
+        const Json& joint = frame["persons"][q][j];
+        if (!(joint[3].get<double>() > 0)) continue;
+        ++present;
+        const auto it = rows.find({f, track, joints[j].get<std::string>()});
+        ASSERT_NE(it, rows.end()) << "frame " << f << " track " << track << " " << joints[j];
+        const auto& fields = it->second;
+        EXPECT_DOUBLE_EQ(std::stod(fields[3]), f / kFps);
+        for (int k = 0; k < 3; ++k) EXPECT_DOUBLE_EQ(std::stod(fields[6 + k]), joint[k].get<double>());
+        EXPECT_DOUBLE_EQ(std::stod(fields[9]), joint[3].get<double>());
+        EXPECT_EQ(fields[10], p["provenance_names"][frame["provenance"][q][j].get<int>()]);
+        // Filled joints are those post-processing gave its fill score (postprocess.filled_joint_score).
+        const bool filled = frame["provenance"][q][j] == 1;
+        filled_joints += filled;
+        if (filled) EXPECT_EQ(joint[3].get<double>(), 0.05);
+        if (!filled) EXPECT_NE(joint[3].get<double>(), 0.05) << "frame " << f << " joint " << joints[j];
+      }
+    }
+  }
+  EXPECT_EQ(rows.size(), present);
+  EXPECT_GT(filled_joints, 0) << "the generated detections miss some joints, which are filled";
+  ASSERT_GE(rows_per_track.size(), 2u);
+
+  // TRC: one file per track, a row per frame of the track, z up as is; y up rotated.
+  const test::CommandResult y = test::RunRpt(input + " --export trc --trc-axes y-up --trc-units mm --out " + (dir_ / "yup").string());
+  ASSERT_EQ(y.exit_code, 0) << y.err;
+  for (const auto& [track, count] : rows_per_track) {
+    const std::string name = "detections_track" + std::to_string(track) + ".trc";
+    const Trc trc = ReadTrc(dir_ / "all" / "trc" / name);
+    const Trc yup = ReadTrc(dir_ / "yup" / "trc" / name);
+    EXPECT_EQ(trc.header.at("NumFrames"), std::to_string(count));
+    EXPECT_EQ(trc.header.at("NumMarkers"), std::to_string(joints.size()));
+    EXPECT_EQ(trc.header.at("Units"), "m");
+    EXPECT_EQ(yup.header.at("Units"), "mm");
+    EXPECT_EQ(std::stod(trc.header.at("DataRate")), kFps);
+    ASSERT_EQ(trc.rows.size(), static_cast<size_t>(count));
+    ASSERT_EQ(yup.rows.size(), static_cast<size_t>(count));
+    for (size_t j = 0; j < joints.size(); ++j) EXPECT_EQ(trc.markers[j], joints[j]);
+    for (size_t r = 0; r < trc.rows.size(); ++r) {
+      const int f = static_cast<int>(trc.rows[r][0]) - 1;
+      const Json& frame = p["frames"][f];
+      EXPECT_DOUBLE_EQ(trc.rows[r][1], f / kFps);
+      size_t q = 0;
+      while (q < frame["track_ids"].size() && frame["track_ids"][q] != track) ++q;
+      ASSERT_LT(q, frame["track_ids"].size()) << "frame " << f << " has track " << track;
+      for (size_t j = 0; j < joints.size(); ++j) {
+        const Json& joint = frame["persons"][q][j];
+        const double* xyz = &trc.rows[r][2 + 3 * j];
+        const double* xyz_up = &yup.rows[r][2 + 3 * j];
+        if (!(joint[3].get<double>() > 0)) {
+          EXPECT_TRUE(std::isnan(xyz[0])) << "missing joint: empty fields";
+          continue;
+        }
+        for (int k = 0; k < 3; ++k) EXPECT_DOUBLE_EQ(xyz[k], joint[k].get<double>());
+        // The JSON rounds to 1e-6 m: 5e-4 mm.
+        EXPECT_NEAR(xyz_up[0], 1000 * joint[0].get<double>(), 1e-3);
+        EXPECT_NEAR(xyz_up[1], 1000 * joint[2].get<double>(), 1e-3) << "y up = the world's z";
+        EXPECT_NEAR(xyz_up[2], -1000 * joint[1].get<double>(), 1e-3);
+      }
+    }
+  }
+
+  // Filled joints not written: no CSV row, null in the JSON; --no-predictions writes none.
+  const test::CommandResult nf =
+      test::RunRpt(input + " --export json,csv --no-filled-joints --out " + (dir_ / "nofill").string());
+  ASSERT_EQ(nf.exit_code, 0) << nf.err;
+  const std::string nofill_csv = test::ReadAll(dir_ / "nofill" / "predictions.csv");
+  EXPECT_EQ(nofill_csv.find(",filled\n"), std::string::npos);
+  const Json nofill = ReadJson(dir_ / "nofill" / "predictions.json");
+  for (size_t f = 0; f < nofill["frames"].size(); ++f) {
+    const Json& frame = nofill["frames"][f];
+    for (size_t q = 0; q < frame["persons"].size(); ++q) {
+      for (size_t j = 0; j < joints.size(); ++j) {
+        if (frame["provenance"][q][j] != 1) continue;
+        EXPECT_TRUE(frame["persons"][q][j][0].is_null());
+        EXPECT_EQ(frame["persons"][q][j][3], 0);
+      }
+    }
+  }
+  const test::CommandResult none = test::RunRpt(input + " --no-predictions --out " + (dir_ / "none").string());
+  ASSERT_EQ(none.exit_code, 0) << none.err;
+  EXPECT_FALSE(fs::exists(dir_ / "none" / "predictions.json"));
+  EXPECT_TRUE(fs::exists(dir_ / "none" / "run.json"));
+  EXPECT_EQ(test::RunRpt(input + " --no-predictions --export csv --out " + (dir_ / "x").string()).exit_code, 2);
+}
+
+TEST(TriangulateDataset, WithoutGroundTruthEqualsEval) {
+  const fs::path dir = test::TempDir("triangulate_dataset");
+  const std::string input = "--dataset synthetic --param frames=20 --param people=2";
+  ASSERT_EQ(test::RunRpt("eval " + input + " --quiet --out " + (dir / "eval").string()).exit_code, 0);
+  const test::CommandResult t = test::RunRpt("triangulate " + input + " --quiet --out " + (dir / "tri").string());
+  ASSERT_EQ(t.exit_code, 0) << t.err;
+  ExpectSameFrames(ReadJson(dir / "eval" / "predictions.json"), ReadJson(dir / "tri" / "predictions.json"), "synthetic");
+  fs::remove_all(dir);
+}
+
+TEST_F(Triangulate, BadInputExitsWith2NamingFileAndPlace) {
+  const std::vector<std::string> ids = Ids("take_", kFrames);
+  Detections detections = Coco17(scene_, ids);
+  detections.frames[3].cameras[1] = "cam9";
+  WriteGenericDetections(dir_ / "bad.json", detections);
+  const std::string cameras = " --cameras " + (dir_ / "cameras.json").string();
+  const test::CommandResult unknown = test::RunRpt("triangulate" + cameras + " --detections " + (dir_ / "bad.json").string());
+  EXPECT_EQ(unknown.exit_code, 2);
+  EXPECT_NE(unknown.err.find((dir_ / "bad.json").string() + ": frame 'take_000003': camera 'cam9' is not in the calibration"),
+            std::string::npos)
+      << unknown.err;
+  const test::CommandResult no_file = test::RunRpt("triangulate --cameras /no/such/cams.yml --detections x.json");
+  EXPECT_EQ(no_file.exit_code, 2);
+  EXPECT_NE(no_file.err.find("/no/such/cams.yml"), std::string::npos) << no_file.err;
+  EXPECT_EQ(test::RunRpt("triangulate" + cameras).exit_code, 2) << "--cameras without --detections";
+  EXPECT_EQ(test::RunRpt("triangulate" + cameras + " --detections " + (dir_ / "bad.json").string() + " --export json,xls")
+                .exit_code,
+            2);
+  WriteLabelsAs(dir_ / "labels.json", scene_, ids);
+  const test::CommandResult param =
+      test::RunRpt("eval --labels " + (dir_ / "labels.json").string() + " --simulate --param bogus=1 --quiet");
+  EXPECT_EQ(param.exit_code, 2) << "--param with --labels is applied or refused";
+  EXPECT_NE(param.err.find("bogus"), std::string::npos) << param.err;
+  const test::CommandResult tri_param = test::RunRpt("triangulate --labels " + (dir_ / "labels.json").string() +
+                                                     " --detections " + (dir_ / "bad.json").string() + " --param bogus=1");
+  EXPECT_EQ(tri_param.exit_code, 2);
+}
+
+}  // namespace
+}  // namespace rpt
