@@ -42,7 +42,9 @@ void RunReport(const ReportArgs& args) {
                                                       eval_options, args.data, &warnings);
   const std::filesystem::path out = args.out.empty() ? run.dir / "report.html" : std::filesystem::path(args.out);
   const std::string page = engine::ReportHtml(data);
-  io::WriteTextFile(out, page);
+  // RUN_DIR/report.html is rpt's name inside a run folder (a link there is replaced, a FIFO too);
+  // --out FILE is the user's.
+  io::WriteTextFile(out, args.out.empty() ? io::NamedBy::kRpt : io::NamedBy::kUser, page);
   int scenes = data.contains("scenes") ? static_cast<int>(data["scenes"].size()) : 0;
   std::printf("report in %s (%.1f MB, %d frame(s) with 3D scene and camera views)\n", out.c_str(),
               page.size() / 1e6, scenes);

@@ -132,8 +132,8 @@ std::pair<int, int> ParseShard(const std::string& text) {
 void WriteTables(const fs::path& dir, const Json& rows, const std::string& stem) {
   std::vector<std::pair<std::string, Json>> table;
   for (const Json& row : rows) table.emplace_back(row["name"].get<std::string>(), row["summary"]);
-  io::WriteTextFile(dir / (stem + ".csv"), engine::SummaryCsv(table));
-  io::WriteTextFile(dir / (stem + ".md"), engine::SummaryMarkdown(table));
+  io::WriteTextFile(dir / (stem + ".csv"), io::NamedBy::kRpt, engine::SummaryCsv(table));
+  io::WriteTextFile(dir / (stem + ".md"), io::NamedBy::kRpt, engine::SummaryMarkdown(table));
 }
 
 // <stem>.{csv,md,json} into `out`, each file atomic, the JSON (the data the tables show) last. With
@@ -150,8 +150,8 @@ void WriteSweepFiles(const fs::path& out, const Json& file, const std::string& s
   int replaced = 0;
   try {
     WriteTables(dir, file["rows"], stem);
-    io::WriteTextFile(dir / (stem + ".html"), engine::SweepHtml(file));
-    io::WriteTextFile(dir / (stem + ".json"), io::DumpJson(file, 2, &replaced) + "\n");  // last
+    io::WriteTextFile(dir / (stem + ".html"), io::NamedBy::kRpt, engine::SweepHtml(file));
+    io::WriteTextFile(dir / (stem + ".json"), io::NamedBy::kRpt, io::DumpJson(file, 2, &replaced) + "\n");  // last
     if (folder) folder->Commit();
   } catch (const InputError& e) {
     throw InputError(folder ? folder->NamedAsTarget(e.what()) : std::string(e.what()));

@@ -56,7 +56,7 @@ std::string JunitXml(const std::string& suite_name, const std::vector<JunitCase>
 
 void WriteJunitXml(const std::filesystem::path& path, const std::string& suite_name,
                    const std::vector<JunitCase>& cases) {
-  io::WriteTextFile(path, JunitXml(suite_name, cases));
+  io::WriteTextFile(path, io::NamedBy::kUser, JunitXml(suite_name, cases));
 }
 
 }  // namespace rpt::engine

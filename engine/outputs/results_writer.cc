@@ -256,7 +256,7 @@ void WriteRunFiles(const std::filesystem::path& staging, const RunResult& run, c
   const auto write_json = [&](const std::string& name, const Json& value) {
     int count = 0;
     const std::string text = io::DumpJson(value, 2, &count) + "\n";
-    io::WriteTextFile(staging / name, text);
+    io::WriteTextFile(staging / name, io::NamedBy::kRpt, text);
     if (count > 0) replaced->emplace_back(name, count);
   };
   Json summary;
@@ -274,8 +274,8 @@ void WriteRunFiles(const std::filesystem::path& staging, const RunResult& run, c
   if (run.sequences.size() > 1) {
     for (const SequenceResult& sequence : run.sequences) rows.emplace_back(sequence.name, SequenceSummaryJson(sequence));
   }
-  io::WriteTextFile(staging / "summary.csv", SummaryCsv(rows));
-  io::WriteTextFile(staging / "summary.md", SummaryMarkdown(rows) + "\nRevision " + info.git_revision + ", " + info.cpu +
+  io::WriteTextFile(staging / "summary.csv", io::NamedBy::kRpt, SummaryCsv(rows));
+  io::WriteTextFile(staging / "summary.md", io::NamedBy::kRpt, SummaryMarkdown(rows) + "\nRevision " + info.git_revision + ", " + info.cpu +
                                                 ", " + std::to_string(info.threads) + " thread(s). Command: `" +
                                                 info.command_line + "`\n");
   std::ostringstream joints;
@@ -284,9 +284,9 @@ void WriteRunFiles(const std::filesystem::path& staging, const RunResult& run, c
     joints << CsvField(row.name) << "," << Cell(Number(row.mean_error_mm), 2) << "," << Cell(Number(row.pck_100), 2) << ","
            << row.count << "," << row.num_gt << "\n";
   }
-  io::WriteTextFile(staging / "per_joint.csv", joints.str());
-  io::WriteTextFile(staging / "steps.csv", StepsCsv(run.timing, run.counts));
-  io::WriteTextFile(staging / "config.json", DumpConfig(config, /*with_comments=*/false));
+  io::WriteTextFile(staging / "per_joint.csv", io::NamedBy::kRpt, joints.str());
+  io::WriteTextFile(staging / "steps.csv", io::NamedBy::kRpt, StepsCsv(run.timing, run.counts));
+  io::WriteTextFile(staging / "config.json", io::NamedBy::kRpt, DumpConfig(config, /*with_comments=*/false));
   write_json("run.json", RunInfoJson(info));  // last: the marker of a complete run
 }
 
