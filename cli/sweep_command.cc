@@ -21,6 +21,7 @@
 #endif
 
 #include "cli/commands.h"
+#include "core/printable_text.h"
 #include "cli/config_args.h"
 #include "engine/json_text.h"
 #include "cli/input_options.h"
@@ -158,7 +159,7 @@ void WriteSweepFiles(const fs::path& out, const Json& file, const std::string& s
   }
   if (replaced > 0) {
     std::fprintf(stderr, "warning: %s: %d string(s) not valid UTF-8; invalid bytes written as U+FFFD\n",
-                 (out / (stem + ".json")).string().c_str(), replaced);
+                 PrintableText((out / (stem + ".json")).string()).c_str(), replaced);
   }
 }
 
@@ -279,8 +280,8 @@ void RunSweep(const SweepArgs& args) {
     for (const Json& row : rows) table.emplace_back(row["name"].get<std::string>(), row["summary"]);
     return table;
   }());
-  std::printf("%d of %zu configurations; tables in %s/%s.{json,csv,md,html}\n", count, all.size(), args.out.c_str(),
-              stem.c_str());
+  std::printf("%d of %zu configurations; tables in %s/%s.{json,csv,md,html}\n", count, all.size(),
+              PrintableText(args.out, LineBreaks::kEscape).c_str(), stem.c_str());
 }
 
 [[noreturn]] void FailAt(const std::string& source, const std::string& pointer, const std::string& what) {
@@ -371,7 +372,7 @@ void RunMerge(const std::vector<std::string>& inputs, const std::string& out) {
   file["rows"] = rows;
   WriteSweepFiles(out, file, "sweep", /*whole_folder=*/true);
   std::printf("merged %zu configurations from %zu shard files into %s/sweep.{json,csv,md,html}\n", by_index.size(), inputs.size(),
-              out.c_str());
+              PrintableText(out, LineBreaks::kEscape).c_str());
 }
 
 }  // namespace

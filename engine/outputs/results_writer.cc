@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "engine/outputs/step_tables.h"
+#include "engine/outputs/text_escaping.h"
 #include "core/errors.h"
 #include "core/text.h"
 #include "datasets/io/json_output.h"
@@ -59,13 +60,6 @@ std::vector<std::string> LegacyPcpKeys(const std::vector<std::pair<std::string, 
 }
 
 }  // namespace
-
-std::string CsvField(const std::string& text) {
-  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
-  std::string quoted = "\"";
-  for (const char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return quoted + "\"";
-}
 
 const std::vector<SummaryColumn>& SummaryColumns() {
   static const std::vector<SummaryColumn> columns = {
@@ -198,7 +192,7 @@ std::string SummaryMarkdown(const std::vector<std::pair<std::string, Json>>& row
   for (size_t i = 0; i < keys.size(); ++i) out << "---|";
   out << "\n";
   for (const auto& [label, j] : rows) {
-    out << "| " << label << " |";
+    out << "| " << MarkdownText(label) << " |";
     for (const std::string& key : keys) out << " " << (j.contains(key) ? Cell(j[key], key == "fps" ? 0 : 1) : "-") << " |";
     out << "\n";
   }
@@ -214,7 +208,7 @@ std::string SummaryMarkdown(const std::vector<std::pair<std::string, Json>>& row
   for (size_t i = 0; i < legacy.size(); ++i) out << "---|";
   out << "\n";
   for (const auto& [label, j] : rows) {
-    out << "| " << label << " |";
+    out << "| " << MarkdownText(label) << " |";
     for (const std::string& key : legacy) out << " " << (j.contains(key) ? Cell(j[key], 1) : "-") << " |";
     out << "\n";
   }
@@ -275,9 +269,10 @@ void WriteRunFiles(const std::filesystem::path& staging, const RunResult& run, c
     for (const SequenceResult& sequence : run.sequences) rows.emplace_back(sequence.name, SequenceSummaryJson(sequence));
   }
   io::WriteTextFile(staging / "summary.csv", io::NamedBy::kRpt, SummaryCsv(rows));
-  io::WriteTextFile(staging / "summary.md", io::NamedBy::kRpt, SummaryMarkdown(rows) + "\nRevision " + info.git_revision + ", " + info.cpu +
-                                                ", " + std::to_string(info.threads) + " thread(s). Command: `" +
-                                                info.command_line + "`\n");
+  io::WriteTextFile(staging / "summary.md", io::NamedBy::kRpt,
+                    SummaryMarkdown(rows) + "\nRevision " + MarkdownText(info.git_revision) + ", " +
+                        MarkdownText(info.cpu) + ", " + std::to_string(info.threads) +
+                        " thread(s). Command: " + MarkdownCode(info.command_line) + "\n");
   std::ostringstream joints;
   joints << "joint,mean_error_mm,pck100_pct,count,num_gt\n";
   for (const auto& row : run.metrics.joints) {
