@@ -52,8 +52,8 @@ class CheckReport {
   void Checked(const engine::ThresholdEvaluation& e, const engine::ThresholdCheck& check, double achieved, bool pass) {
     ++checked_;
     failures_ += pass ? 0 : 1;
-    std::printf("%-40s %-22s %6s %10.2f %10.2f  %s\n", Shown(e.name).c_str(), Shown(check.metric).c_str(), Shown(check.bound).c_str(),
-                check.limit, achieved, pass ? "ok" : "FAILED");
+    std::printf("%-40s %-22s %6s %10.2f %10.2f  %s\n", Shown(e.name).c_str(), Shown(check.metric).c_str(),
+                Shown(check.bound).c_str(), check.limit, achieved, pass ? "ok" : "FAILED");
     json_.push_back({{"evaluation", e.name}, {"metric", check.metric}, {"bound", check.bound},
                      {"expected", check.limit}, {"achieved", std::isnan(achieved) ? Json(nullptr) : Json(achieved)},
                      {"pass", pass}});
@@ -75,7 +75,8 @@ class CheckReport {
 
   void Errored(const engine::ThresholdEvaluation& e, const std::string& what) {
     ++errored_;
-    std::printf("%-40s %-22s %6s %10s %10s  ERROR: %s\n", Shown(e.name).c_str(), "-", "-", "-", "-", PrintableText(what).c_str());
+    std::printf("%-40s %-22s %6s %10s %10s  ERROR: %s\n", Shown(e.name).c_str(), "-", "-", "-", "-",
+                PrintableText(what).c_str());
     json_.push_back({{"evaluation", e.name}, {"error", what}, {"pass", false}});
     AddCases(e, engine::JunitCase::Outcome::kError, what);
   }

@@ -92,10 +92,11 @@ void RunInspect(const InspectArgs& args) {
 void PrintReport(const nlohmann::ordered_json& report, const std::vector<std::string>& shift_lines) {
   for (size_t i = 0; i < report.size(); ++i) {
     const auto& seq = report[i];
-    std::printf("sequence %s: %d frames (%d with detections), %ld GT person-frames, %d GT joints, %d detection joints\n",
-                PrintableText(seq["sequence"].get<std::string>(), LineBreaks::kEscape).c_str(), seq["frames"].get<int>(),
-                seq["frames_with_detections"].get<int>(), seq["gt_persons"].get<long>(), seq["gt_joints"].get<int>(),
-                seq["detection_joints"].get<int>());
+    std::printf(
+        "sequence %s: %d frames (%d with detections), %ld GT person-frames, %d GT joints, %d detection joints\n",
+        PrintableText(seq["sequence"].get<std::string>(), LineBreaks::kEscape).c_str(), seq["frames"].get<int>(),
+        seq["frames_with_detections"].get<int>(), seq["gt_persons"].get<long>(), seq["gt_joints"].get<int>(),
+        seq["detection_joints"].get<int>());
     std::printf("  room centre (%.2f, %.2f, %.2f) m, size (%.2f, %.2f, %.2f) m\n", seq["room_center_m"][0].get<double>(),
                 seq["room_center_m"][1].get<double>(), seq["room_center_m"][2].get<double>(),
                 seq["room_size_m"][0].get<double>(), seq["room_size_m"][1].get<double>(),
@@ -114,8 +115,8 @@ void PrintReport(const nlohmann::ordered_json& report, const std::vector<std::st
         std::snprintf(relative, sizeof(relative), "%.3f", cam["gt_to_detection_rel_median"].get<double>());
       }
       std::printf("  %-10s %-26s %-11s %-8s %10ld %10ld %18s %14s\n",
-                  PrintableText(cam["name"].get<std::string>(), LineBreaks::kEscape).c_str(), centre,
-                  image, cam["model"].get<std::string>().c_str(), cam["detections"].get<long>(),
+                  PrintableText(cam["name"].get<std::string>(), LineBreaks::kEscape).c_str(), centre, image,
+                  cam["model"].get<std::string>().c_str(), cam["detections"].get<long>(),
                   cam["gt_persons_compared"].get<long>(), median, relative);
     }
     std::printf("  %s\n", PrintableText(shift_lines[i], LineBreaks::kEscape).c_str());

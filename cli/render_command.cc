@@ -113,7 +113,8 @@ void RenderSequence(const RenderArgs& args, const engine::Config& config, const 
   engine::RunOptions options;
   options.triangulator = config.triangulator;
   options.eval.reset();
-  const engine::FrameRange range = engine::ParseFrameRange(args.frames, static_cast<long>(sequence.frames.size()), sequence.name);
+  const engine::FrameRange range =
+      engine::ParseFrameRange(args.frames, static_cast<long>(sequence.frames.size()), sequence.name);
   const std::vector<int> cameras = engine::SelectCameras(args.cameras, sequence.cameras, sequence.name);
   std::vector<std::string> camera_names, frame_ids;
   for (const Camera& camera : sequence.cameras) camera_names.push_back(camera.name);
@@ -156,7 +157,8 @@ void RenderSequence(const RenderArgs& args, const engine::Config& config, const 
       overlay.title = sequence.name + "  " + camera.name + "  frame " + frame.id;
       engine::DrawOverlay(overlay, &canvas);
       for (const engine::ReprojectedPerson& p : views[c].predictions) {
-        if (p.num_measured > 0) errors[c].sum_px += p.mean_error_px * p.num_measured, errors[c].joints += p.num_measured;
+        if (p.num_measured > 0)
+          errors[c].sum_px += p.mean_error_px * p.num_measured, errors[c].joints += p.num_measured;
       }
       if (png) {
         const std::filesystem::path path = sequence_dir / camera_files[c] / (frame_files[f - range.first] + ".png");
@@ -217,7 +219,9 @@ void RunRender(const RenderArgs& args) {
   }
   if (png) std::printf("%ld PNG file(s) in %s\n", pngs, PrintableText(out_dir.string()).c_str());
   for (const std::string& video : videos) {
-    std::printf("video %s\n", PrintableText((out_dir / video).string(), LineBreaks::kEscape).c_str());  // out_dir/<seq>/<cam>.mp4 (...)
+    std::printf(
+        "video %s\n",
+        PrintableText((out_dir / video).string(), LineBreaks::kEscape).c_str());  // out_dir/<seq>/<cam>.mp4 (...)
   }
   std::fflush(stdout);
   if (problems.missing > 0) {

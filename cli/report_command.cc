@@ -48,8 +48,7 @@ void RunReport(const ReportArgs& args) {
   io::WriteTextFile(out, args.out.empty() ? io::NamedBy::kRpt : io::NamedBy::kUser, page);
   int scenes = data.contains("scenes") ? static_cast<int>(data["scenes"].size()) : 0;
   std::printf("report in %s (%.1f MB, %d frame(s) with 3D scene and camera views)\n",
-              PrintableText(out.string(), LineBreaks::kEscape).c_str(),
-              page.size() / 1e6, scenes);
+              PrintableText(out.string(), LineBreaks::kEscape).c_str(), page.size() / 1e6, scenes);
   std::fflush(stdout);
   for (const std::string& line : warnings) std::fprintf(stderr, "warning: %s\n", PrintableText(line).c_str());
 }

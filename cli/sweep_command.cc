@@ -371,8 +371,8 @@ void RunMerge(const std::vector<std::string>& inputs, const std::string& out) {
   file["base"] = base;
   file["rows"] = rows;
   WriteSweepFiles(out, file, "sweep", /*whole_folder=*/true);
-  std::printf("merged %zu configurations from %zu shard files into %s/sweep.{json,csv,md,html}\n", by_index.size(), inputs.size(),
-              PrintableText(out, LineBreaks::kEscape).c_str());
+  std::printf("merged %zu configurations from %zu shard files into %s/sweep.{json,csv,md,html}\n", by_index.size(),
+              inputs.size(), PrintableText(out, LineBreaks::kEscape).c_str());
 }
 
 }  // namespace

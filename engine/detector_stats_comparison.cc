@@ -192,7 +192,8 @@ void PrintDetectorStatsComparison(const std::vector<DetectorStatsColumn>& column
               MarkdownText(Join(columns.front().stats.joints)).c_str());
   for (size_t c = 1; c < columns.size(); ++c) {
     if (columns[c].stats.joints != columns.front().stats.joints) {
-      std::printf("; %s: %s", MarkdownText(columns[c].name).c_str(), MarkdownText(Join(columns[c].stats.joints)).c_str());
+      std::printf("; %s: %s", MarkdownText(columns[c].name).c_str(),
+                  MarkdownText(Join(columns[c].stats.joints)).c_str());
     }
   }
   std::printf(". Errors in box units (the projected GT statistic joints, clipped to the image).\n\n");

@@ -182,7 +182,8 @@ void PrintCheckSummary(std::ostream& out, const EvalDiagnostics& diagnostics) {
   }
   out << "tested in " << tested << " of " << n << " sequences, " << shifted << " shifted";
   if (untested != nullptr) {
-    out << "; not tested in " << PrintableText(untested->sequence, LineBreaks::kEscape) << " (" << untested->shift.reason << ")";
+    out << "; not tested in " << PrintableText(untested->sequence, LineBreaks::kEscape) << " ("
+        << untested->shift.reason << ")";
   }
   out << "\n";
 }

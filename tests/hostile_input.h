@@ -36,7 +36,8 @@ inline HostileInput MakeHostileInput(const std::filesystem::path& dir) {
   Sequence sequence = synthetic::MakeSyntheticSequence(scene, synthetic::DetectorOptions::Realistic(), 5, "x");
   HostileInput input;
   const std::vector<std::string> names = {"<!--<script>", "cam a", "cam/a", "cam_a",
-                                          "\x1b[31mred\x1b]0;title\x07 \xc2\x9b" "2J =1+2"};
+                                          "\x1b[31mred\x1b]0;title\x07 \xc2\x9b"
+                                          "2J =1+2"};
   for (size_t c = 0; c < sequence.cameras.size(); ++c) {
     input.cameras.push_back(c < names.size() ? names[c] : "cam `" + std::to_string(c) + "` | <b>");
     sequence.cameras[c].name = input.cameras[c];

@@ -42,9 +42,9 @@ void Unregister(Registry& registry, const fs::path& path) {
 
 // `<target>.tmp-<pid>-<n>`, followed by the target's extension when asked (call with the lock held).
 fs::path NextTemporaryName(Registry& registry, const fs::path& target, bool keep_extension = false) {
-  return target.parent_path() / (target.filename().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
-                                 std::to_string(registry.next_number++) +
-                                 (keep_extension ? target.extension().string() : std::string()));
+  return target.parent_path() /
+         (target.filename().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
+          std::to_string(registry.next_number++) + (keep_extension ? target.extension().string() : std::string()));
 }
 
 bool IsDeviceOrFifo(const fs::file_status& status) {
@@ -172,7 +172,7 @@ void StagedFile::Commit() {
 StagedFolder::StagedFolder(const fs::path& target) : target_(target) {
   std::error_code ec;
   if (target_.filename().empty()) target_ = target_.parent_path();  // "out/" -> "out"
-  if (fs::is_symlink(fs::symlink_status(target_, ec))) {  // the user's link: the folder it points to
+  if (fs::is_symlink(fs::symlink_status(target_, ec))) {            // the user's link: the folder it points to
     const fs::path resolved = fs::canonical(target_, ec);
     if (ec) {
       throw InputError(target_.string() + ": is a link to a folder that does not exist (" + ec.message() +
@@ -190,7 +190,8 @@ StagedFolder::StagedFolder(const fs::path& target) : target_(target) {
     staging_ = target_;  // in place
     return;
   }
-  if (fs::exists(status)) RefuseWriteProtected(target_, /*with_subfolders=*/true);  // the old contents go after the swap
+  if (fs::exists(status))
+    RefuseWriteProtected(target_, /*with_subfolders=*/true);  // the old contents go after the swap
   if (!absolute.parent_path().empty()) fs::create_directories(absolute.parent_path(), ec);
   if (ec) throw InputError(target_.string() + ": cannot create output folder: " + ec.message());
   Registry& registry = TheRegistry();
@@ -208,7 +209,8 @@ StagedFolder::StagedFolder(const fs::path& target) : target_(target) {
   // fall back to in place.
   for (const fs::directory_entry& entry : fs::directory_iterator(target_, ec)) {
     const fs::file_status kind = entry.symlink_status(ec);
-    if (!ec && !fs::is_regular_file(kind) && !fs::is_directory(kind) && !fs::is_symlink(kind)) continue;  // FIFOs, devices: dropped
+    if (!ec && !fs::is_regular_file(kind) && !fs::is_directory(kind) && !fs::is_symlink(kind))
+      continue;  // FIFOs, devices: dropped
     fs::copy(entry.path(), staging_ / entry.path().filename(),
              fs::copy_options::recursive | fs::copy_options::create_hard_links | fs::copy_options::copy_symlinks, ec);
     if (ec) break;

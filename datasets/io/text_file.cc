@@ -8,7 +8,8 @@
 
 namespace rpt::io {
 
-void WriteTextFile(const std::filesystem::path& path, NamedBy named_by, const std::function<void(std::ostream&)>& write) {
+void WriteTextFile(const std::filesystem::path& path, NamedBy named_by,
+                   const std::function<void(std::ostream&)>& write) {
   StagedFile staged(path, named_by);
   std::ofstream out(staged.path(), std::ios::binary | std::ios::trunc);
   if (!out) throw InputError(path.string() + ": cannot open for writing");
@@ -19,7 +20,8 @@ void WriteTextFile(const std::filesystem::path& path, NamedBy named_by, const st
 }
 
 void WriteTextFile(const std::filesystem::path& path, NamedBy named_by, const std::string& text) {
-  WriteTextFile(path, named_by, [&text](std::ostream& out) { out.write(text.data(), static_cast<std::streamsize>(text.size())); });
+  WriteTextFile(path, named_by,
+                [&text](std::ostream& out) { out.write(text.data(), static_cast<std::streamsize>(text.size())); });
 }
 
 }  // namespace rpt::io

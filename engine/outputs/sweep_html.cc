@@ -194,8 +194,8 @@ std::string SweepHtml(const Json& sweep) {
       if (set.contains(option)) {
         html << "<td class=\"option\">" << HtmlText(JsonValueText(set[option])) << "</td>";
       } else {
-        html << "<td class=\"option inherited\">" << (base.contains(option) ? HtmlText(JsonValueText(base[option])) : "")
-             << "</td>";
+        html << "<td class=\"option inherited\">"
+             << (base.contains(option) ? HtmlText(JsonValueText(base[option])) : "") << "</td>";
       }
     }
     for (const Headline& h : metrics) {

@@ -16,12 +16,23 @@ std::string MarkupEntities(std::string_view text) {
   out.reserve(text.size());
   for (const char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&apos;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -86,7 +97,8 @@ std::vector<std::string> SplitCsvLine(std::string_view line) {
   }
   if (quoted) throw std::invalid_argument("a quoted field is not closed");
   for (std::string& field : fields) {
-    if (field.size() > 1 && field.front() == '\'' && std::string_view("=+-@'").find(field[1]) != std::string_view::npos) {
+    if (field.size() > 1 && field.front() == '\'' &&
+        std::string_view("=+-@'").find(field[1]) != std::string_view::npos) {
       field.erase(0, 1);
     }
   }
@@ -113,7 +125,8 @@ std::string MarkdownCode(std::string_view raw) {
     longest = std::max(longest, run);
   }
   const std::string fence(longest + 1, '`');
-  // A space inside each fence keeps a leading or trailing back-tick apart from it (Markdown strips one space each side).
+  // A space inside each fence keeps a leading or trailing back-tick apart from it (Markdown strips one space each
+  // side).
   const bool pad = !text.empty() && (text.front() == '`' || text.back() == '`' || text.front() == ' ');
   return fence + (pad ? " " : "") + text + (pad ? " " : "") + fence;
 }

@@ -146,7 +146,7 @@ std::string FileNameOf(const std::string& text) {
   if (out.size() <= kMaxBytes) return out;
   size_t cut = kCutAt;
   while (cut > 0 && (out[cut - 1] == '%' || (cut > 1 && out[cut - 2] == '%'))) --cut;  // never inside a %XX
-  std::uint64_t hash = 14695981039346656037ull;  // FNV-1a over the whole text
+  std::uint64_t hash = 14695981039346656037ull;                                        // FNV-1a over the whole text
   for (const char c : text) hash = (hash ^ static_cast<unsigned char>(c)) * 1099511628211ull;
   char suffix[24];
   std::snprintf(suffix, sizeof(suffix), "~%016llx", static_cast<unsigned long long>(hash));

@@ -65,7 +65,8 @@ std::string ReportHtml(const nlohmann::ordered_json& data) {
   ReplaceOnce(&page, "/*RPT_SCRIPT*/", std::string(assets::kReportJs));
   // Names from the input (cameras, scenes, frame ids, joints, paths) are in there: ScriptJson keeps
   // "<!--<script>" or "</script" in one of them from ending or changing the element.
-  ReplaceOnce(&page, "/*RPT_DATA*/", ScriptJson(data.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace)));
+  ReplaceOnce(&page, "/*RPT_DATA*/",
+              ScriptJson(data.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace)));
   return page;
 }
 

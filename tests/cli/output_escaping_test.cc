@@ -51,7 +51,10 @@ void ExpectTerminalSafe(const std::string& text, bool line_breaks_allowed, const
 
 TEST(OutputEscaping, TerminalTextKeepsNothingATerminalActsOn) {
   EXPECT_EQ(PrintableText("\x1b[31mred", LineBreaks::kEscape), "\\x1b[31mred");
-  EXPECT_EQ(PrintableText("\xc2\x9b" "31m", LineBreaks::kEscape), "\\xc2\\x9b31m");
+  EXPECT_EQ(PrintableText("\xc2\x9b"
+                          "31m",
+                          LineBreaks::kEscape),
+            "\\xc2\\x9b31m");
   EXPECT_EQ(PrintableText("l\xe2\x80\xaer"), "l\\xe2\\x80\\xaer");
   EXPECT_EQ(PrintableText("a\nb\tc", LineBreaks::kEscape), "a\\x0ab\\x09c");
   EXPECT_EQ(PrintableText("a\nb\tc"), "a\nb\tc");
@@ -61,7 +64,8 @@ TEST(OutputEscaping, TerminalTextKeepsNothingATerminalActsOn) {
     ExpectTerminalSafe(PrintableText(s, LineBreaks::kEscape), false, s);
     ExpectTerminalSafe(PrintableText(s), true, s);
   }
-  EXPECT_EQ(PrintableText("Z\xc3\xbcrich \xe2\x9c\x93 \xf0\x9f\x98\x80"), "Z\xc3\xbcrich \xe2\x9c\x93 \xf0\x9f\x98\x80");
+  EXPECT_EQ(PrintableText("Z\xc3\xbcrich \xe2\x9c\x93 \xf0\x9f\x98\x80"),
+            "Z\xc3\xbcrich \xe2\x9c\x93 \xf0\x9f\x98\x80");
 }
 
 TEST(OutputEscaping, HtmlTextHasNoMarkup) {
@@ -85,7 +89,8 @@ TEST(OutputEscaping, HtmlTextHasNoMarkup) {
 }
 
 TEST(OutputEscaping, ScriptJsonCannotEndOrChangeTheScriptElement) {
-  EXPECT_EQ(ScriptJson("[\"</script><!--<script>&\"]"), "[\"\\u003c/script\\u003e\\u003c!--\\u003cscript\\u003e\\u0026\"]");
+  EXPECT_EQ(ScriptJson("[\"</script><!--<script>&\"]"),
+            "[\"\\u003c/script\\u003e\\u003c!--\\u003cscript\\u003e\\u0026\"]");
   EXPECT_EQ(ScriptJson("\"\xe2\x80\xa8\xe2\x80\xa9\""), "\"\\u2028\\u2029\"");
   Json data = Json::object();
   for (const std::string& s : HostileStrings()) {
@@ -241,7 +246,8 @@ TEST(OutputEscaping, SweepHtmlIsWellFormedAndCutsLabelsAtCharacters) {
   }
   const std::string long_name(47, 'a');
   for (const std::string& tail : {std::string("\xc3\xbc\xc3\xbc\xc3\xbc"), std::string("\xf0\x9f\x98\x80 end")}) {
-    sweep["rows"].push_back({{"name", long_name + tail}, {"set", Json::object()}, {"default", false}, {"summary", {{"pcp", 2.0}}}});
+    sweep["rows"].push_back(
+        {{"name", long_name + tail}, {"set", Json::object()}, {"default", false}, {"summary", {{"pcp", 2.0}}}});
   }
   sweep["rows"][0]["default"] = true;
   const std::string html = SweepHtml(sweep);

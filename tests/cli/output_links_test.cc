@@ -47,7 +47,8 @@ class Outside {
     return path;
   }
   void ExpectUntouched() const {
-    for (const auto& [path, text] : files_) EXPECT_EQ(test::ReadAll(path), text) << path << " was written through a link";
+    for (const auto& [path, text] : files_)
+      EXPECT_EQ(test::ReadAll(path), text) << path << " was written through a link";
     size_t entries = 0;
     for ([[maybe_unused]] const auto& e : fs::recursive_directory_iterator(dir_)) ++entries;
     EXPECT_EQ(entries, files_.size() + folders_) << "something was created outside the output";
@@ -74,8 +75,8 @@ void ExpectRegularFile(const fs::path& path) {
 }
 
 // Every name an eval run writes, plus the scratch name of its predictions.
-const std::vector<std::string> kRunFiles = {"summary.json", "summary.csv", "summary.md", "per_joint.csv", "steps.csv",
-                                            "config.json", "run.json", "predictions.json"};
+const std::vector<std::string> kRunFiles = {"summary.json", "summary.csv", "summary.md", "per_joint.csv",
+                                            "steps.csv",    "config.json", "run.json",   "predictions.json"};
 
 TEST(OutputLinks, EvalReplacesEveryLinkInTheOldRunFolder) {
   const fs::path root = test::TempDir("links_eval");
@@ -129,7 +130,8 @@ TEST(OutputLinks, ReportReplacesALinkAtReportHtml) {
   ExpectRegularFile(out / "report.html");
   // --out naming a link the user gave: the link is replaced too (what it points to is not a device).
   Plant(root / "page.html", outside.File("page"));
-  ASSERT_EQ(test::RunRpt("report " + out.string() + " --max-frames 2 --out " + (root / "page.html").string()).exit_code, 0);
+  ASSERT_EQ(test::RunRpt("report " + out.string() + " --max-frames 2 --out " + (root / "page.html").string()).exit_code,
+            0);
   ExpectRegularFile(root / "page.html");
   outside.ExpectUntouched();
   fs::remove_all(root);
@@ -138,7 +140,8 @@ TEST(OutputLinks, ReportReplacesALinkAtReportHtml) {
 TEST(OutputLinks, SweepAndMergeReplaceLinks) {
   const fs::path root = test::TempDir("links_sweep");
   Outside outside(root / "outside");
-  const std::string sweep = "sweep --grid merge.top_k=0,2 --dataset synthetic --param frames=3 --param cameras=2 --threads 1";
+  const std::string sweep =
+      "sweep --grid merge.top_k=0,2 --dataset synthetic --param frames=3 --param cameras=2 --threads 1";
   const fs::path whole = root / "whole", shards = root / "shards";
   fs::create_directories(whole);
   fs::create_directories(shards);
@@ -156,8 +159,9 @@ TEST(OutputLinks, SweepAndMergeReplaceLinks) {
     ExpectRegularFile(shards / (std::string("sweep-shard-1-of-2.") + ext));
     Plant(shards / (std::string("sweep.") + ext), outside.File(std::string("merged.") + ext));
   }
-  const test::CommandResult merge = test::RunRpt("merge " + (shards / "sweep-shard-1-of-2.json").string() + " " +
-                                                 (shards / "sweep-shard-2-of-2.json").string() + " --out " + shards.string());
+  const test::CommandResult merge =
+      test::RunRpt("merge " + (shards / "sweep-shard-1-of-2.json").string() + " " +
+                   (shards / "sweep-shard-2-of-2.json").string() + " --out " + shards.string());
   ASSERT_EQ(merge.exit_code, 0) << merge.err;
   for (const char* ext : {"json", "csv", "md", "html"}) ExpectRegularFile(shards / (std::string("sweep.") + ext));
   outside.ExpectUntouched();
@@ -168,7 +172,8 @@ TEST(OutputLinks, RenderReplacesFileAndFolderLinks) {
   const fs::path root = test::TempDir("links_render");
   Outside outside(root / "outside");
   const fs::path out = root / "out";
-  const std::string render = "render --dataset synthetic --param frames=2 --param cameras=2 --frames 0:2 --out " + out.string();
+  const std::string render =
+      "render --dataset synthetic --param frames=2 --param cameras=2 --frames 0:2 --out " + out.string();
   ASSERT_EQ(test::RunRpt(render).exit_code, 0);
   std::vector<fs::path> pngs;
   for (const auto& e : fs::recursive_directory_iterator(out)) {
@@ -193,11 +198,12 @@ TEST(OutputLinks, RenderReplacesFileAndFolderLinks) {
 TEST(OutputLinks, JunitAndConvertReplaceALinkTheUserNamed) {
   const fs::path root = test::TempDir("links_user");
   Outside outside(root / "outside");
-  WriteFile(root / "thresholds.json",
-            R"({"evaluations": [{"name": "small", "dataset": "synthetic", "params": {"frames": 3}, "min": {"pcp": 0}}]})");
+  WriteFile(
+      root / "thresholds.json",
+      R"({"evaluations": [{"name": "small", "dataset": "synthetic", "params": {"frames": 3}, "min": {"pcp": 0}}]})");
   Plant(root / "junit.xml", outside.File("junit"));
-  const test::CommandResult check =
-      test::RunRpt("check --thresholds " + (root / "thresholds.json").string() + " --junit " + (root / "junit.xml").string());
+  const test::CommandResult check = test::RunRpt("check --thresholds " + (root / "thresholds.json").string() +
+                                                 " --junit " + (root / "junit.xml").string());
   ASSERT_EQ(check.exit_code, 0) << check.out << check.err;
   ExpectRegularFile(root / "junit.xml");
   Plant(root / "cache.h5", outside.File("cache"));
@@ -255,7 +261,8 @@ TEST(OutputFolder, AWriteProtectedOldFolderIsRefusedAndLeftAsItWas) {
       {"eval, the folder", out, "eval " + kSmallRun + " --out " + out.string()},
       {"eval, a folder inside", out / "render" / "seq", "eval " + kSmallRun + " --out " + out.string()},
       {"render", out, "render --dataset synthetic --param frames=1 --param cameras=2 --out " + out.string()},
-      {"sweep", out, "sweep --grid merge.top_k=0 --dataset synthetic --param frames=2 --threads 1 --out " + out.string()},
+      {"sweep", out,
+       "sweep --grid merge.top_k=0 --dataset synthetic --param frames=2 --threads 1 --out " + out.string()},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.what);
@@ -311,7 +318,8 @@ TEST(RenderInterrupted, PreviousVideosStayIntact) {
   const fs::path root = test::TempDir("render_interrupt");
   const fs::path out = root / "out";
   const std::string scene = "--dataset synthetic --param frames=400 --param cameras=2 --param people=2";
-  const test::CommandResult first = test::RunRpt("render " + scene + " --frames 0:3 --format both --out " + out.string());
+  const test::CommandResult first =
+      test::RunRpt("render " + scene + " --frames 0:3 --format both --out " + out.string());
   ASSERT_EQ(first.exit_code, 0) << first.err;
   const std::map<std::string, std::string> before = Contents(out);
   size_t videos = 0;
@@ -376,7 +384,8 @@ TEST(HostileNames, EveryCommandPrintsThemEscapedAndWritesThemSafely) {
   EXPECT_NE(eval.out.find("frames"), std::string::npos);
   run("report", "report " + run_dir.string());
   const fs::path render_dir = root / "render";
-  const test::CommandResult render = run("render", "render " + input.args() + " --frames : --out " + render_dir.string());
+  const test::CommandResult render =
+      run("render", "render " + input.args() + " --frames : --out " + render_dir.string());
   // One folder per camera: 'cam a', 'cam/a' and 'cam_a' do not share one.
   size_t camera_folders = 0, pngs = 0;
   for (const auto& sequence_dir : fs::directory_iterator(render_dir)) {
@@ -387,7 +396,8 @@ TEST(HostileNames, EveryCommandPrintsThemEscapedAndWritesThemSafely) {
   }
   EXPECT_EQ(camera_folders, input.cameras.size());
   EXPECT_EQ(pngs, input.cameras.size() * 4);
-  EXPECT_NE(render.out.find(std::to_string(input.cameras.size() * 4) + " PNG file(s)"), std::string::npos) << render.out;
+  EXPECT_NE(render.out.find(std::to_string(input.cameras.size() * 4) + " PNG file(s)"), std::string::npos)
+      << render.out;
   run("sweep", "sweep --grid merge.top_k=0,2 --threads 1 " + input.args() + " --out " + (root / "sweep").string());
   // A thresholds file whose evaluation is named with escape sequences and markup.
   Json thresholds;
@@ -396,7 +406,8 @@ TEST(HostileNames, EveryCommandPrintsThemEscapedAndWritesThemSafely) {
                                 {"detections", input.detections.string()},
                                 {"min", {{"pcp", 0}}}}};
   WriteFile(root / "thresholds.json", thresholds.dump());
-  run("check", "check --thresholds " + (root / "thresholds.json").string() + " --junit " + (root / "junit.xml").string());
+  run("check",
+      "check --thresholds " + (root / "thresholds.json").string() + " --junit " + (root / "junit.xml").string());
 
   // The files: summary.csv keeps its columns and no field starts a formula; summary.md one row per line.
   std::istringstream csv(test::ReadAll(run_dir / "summary.csv"));

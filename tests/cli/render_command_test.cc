@@ -234,7 +234,8 @@ TEST(RenderSelection, FileNamesAreOneToOne) {
 
   const std::vector<std::string> texts = {"cam a", "cam/a", "cam_a", "Cam_A", "cam_a~2", "", "%", "."};
   const std::vector<std::string> names = engine::UniqueFileNames(texts);
-  EXPECT_EQ(names, (std::vector<std::string>{"cam%20a", "cam%2Fa", "cam_a", "Cam_A~2", "cam_a%7E2", "%", "%25", "%2E"}));
+  EXPECT_EQ(names,
+            (std::vector<std::string>{"cam%20a", "cam%2Fa", "cam_a", "Cam_A~2", "cam_a%7E2", "%", "%25", "%2E"}));
   std::set<std::string> lower;
   for (std::string name : names) {
     for (char& c : name) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));

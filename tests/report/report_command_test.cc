@@ -64,7 +64,8 @@ TEST(ReportCommand, SelfContainedPageWithSampledFrames) {
 // the report refuse its own eval's file).
 TEST(ReportCommand, ReadsBackPerJointCsvWithCommasInJointNames) {
   const fs::path dir = TempDir("report_per_joint");
-  ASSERT_EQ(RunRpt("eval --dataset synthetic --param frames=5 --param cameras=2 --quiet --out " + dir.string()).exit_code, 0);
+  ASSERT_EQ(
+      RunRpt("eval --dataset synthetic --param frames=5 --param cameras=2 --quiet --out " + dir.string()).exit_code, 0);
   std::istringstream csv(ReadAll(dir / "per_joint.csv"));
   std::string header, line, rewritten;
   std::getline(csv, header);
