@@ -11,6 +11,8 @@
 #include <filesystem>
 #include <iostream>
 
+#include "core/printable_text.h"
+#include "datasets/io/json_output.h"
 #include "cli/commands.h"
 #include "engine/outputs/junit_xml.h"
 #include "cli/input_options.h"
@@ -35,6 +37,9 @@ struct CheckArgs {
   std::string junit;
 };
 
+// A name from the thresholds file on one terminal line.
+std::string Shown(const std::string& name) { return PrintableText(name, LineBreaks::kEscape); }
+
 std::string CheckName(const engine::ThresholdCheck& check) {
   char limit[32];
   std::snprintf(limit, sizeof(limit), "%g", check.limit);
@@ -47,8 +52,8 @@ class CheckReport {
   void Checked(const engine::ThresholdEvaluation& e, const engine::ThresholdCheck& check, double achieved, bool pass) {
     ++checked_;
     failures_ += pass ? 0 : 1;
-    std::printf("%-40s %-22s %6s %10.2f %10.2f  %s\n", e.name.c_str(), check.metric.c_str(), check.bound.c_str(),
-                check.limit, achieved, pass ? "ok" : "FAILED");
+    std::printf("%-40s %-22s %6s %10.2f %10.2f  %s\n", Shown(e.name).c_str(), Shown(check.metric).c_str(),
+                Shown(check.bound).c_str(), check.limit, achieved, pass ? "ok" : "FAILED");
     json_.push_back({{"evaluation", e.name}, {"metric", check.metric}, {"bound", check.bound},
                      {"expected", check.limit}, {"achieved", std::isnan(achieved) ? Json(nullptr) : Json(achieved)},
                      {"pass", pass}});
@@ -62,15 +67,16 @@ class CheckReport {
   void Skipped(const engine::ThresholdEvaluation& e, bool as_failure) {
     ++skipped_;
     const std::string why = e.required_path + " absent";
-    std::printf("%-40s %-22s %6s %10s %10s  %s (%s)\n", e.name.c_str(), "-", "-", "-", "-",
-                as_failure ? "SKIPPED, failing" : "skipped", why.c_str());
+    std::printf("%-40s %-22s %6s %10s %10s  %s (%s)\n", Shown(e.name).c_str(), "-", "-", "-", "-",
+                as_failure ? "SKIPPED, failing" : "skipped", Shown(why).c_str());
     AddCases(e, as_failure ? engine::JunitCase::Outcome::kFailure : engine::JunitCase::Outcome::kSkipped,
              as_failure ? "skipped (" + why + "), --fail-on-skip" : "skipped (" + why + ")");
   }
 
   void Errored(const engine::ThresholdEvaluation& e, const std::string& what) {
     ++errored_;
-    std::printf("%-40s %-22s %6s %10s %10s  ERROR: %s\n", e.name.c_str(), "-", "-", "-", "-", what.c_str());
+    std::printf("%-40s %-22s %6s %10s %10s  ERROR: %s\n", Shown(e.name).c_str(), "-", "-", "-", "-",
+                PrintableText(what).c_str());
     json_.push_back({{"evaluation", e.name}, {"error", what}, {"pass", false}});
     AddCases(e, engine::JunitCase::Outcome::kError, what);
   }
@@ -143,7 +149,7 @@ int RunCheck(const CheckArgs& args) {
   std::fflush(stdout);  // the table first, then the readers' corrections (stderr)
   PrintInputWarnings(warnings);
   report.PrintTotals();
-  if (args.json) std::cout << report.json().dump(2) << "\n";
+  if (args.json) std::cout << io::DumpJson(report.json(), 2) << "\n";
   if (!args.junit.empty()) engine::WriteJunitXml(args.junit, "rpt check " + args.thresholds, report.cases());
   return report.ExitCode(args.fail_on_skip);
 }

@@ -75,7 +75,7 @@ void RunConvert(const ConvertArgs& args) {
     if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) {
       throw InputError(args.out + ": not a regular file (an HDF5 cache cannot be written to a device or pipe)");
     }
-    io::StagedFile cache(args.out);
+    io::StagedFile cache(args.out, io::NamedBy::kUser);
     try {
       Hdf5WriteOptions options;
       options.float64 = args.float64;

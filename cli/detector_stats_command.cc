@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "cli/commands.h"
+#include "datasets/io/json_output.h"
 #include "engine/detector_stats_comparison.h"
 #include "engine/outputs/detector_stats_json.h"
 #include "engine/outputs/detector_stats_markdown.h"
@@ -114,7 +115,7 @@ void RunComparison(const DetectorStatsArgs& args) {
       entry.update(engine::DetectorStatsJson(columns[c].stats));
       j[c == 0 ? std::string("input") : args.compare[c - 1]] = std::move(entry);
     }
-    std::cout << j.dump(2) << "\n";
+    std::cout << io::DumpJson(j, 2) << "\n";
     return;
   }
   engine::PrintDetectorStatsComparison(columns, Describe(args.input), args.input.seed);
@@ -133,7 +134,7 @@ void RunDetectorStats(const DetectorStatsArgs& args) {
     Json j;
     j["input"] = Describe(args.input);
     j.update(engine::DetectorStatsJson(stats));
-    std::cout << j.dump(2) << "\n";
+    std::cout << io::DumpJson(j, 2) << "\n";
     return;
   }
   engine::PrintDetectorStatsMarkdown(stats, Describe(args.input));

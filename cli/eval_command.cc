@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "cli/commands.h"
+#include "core/printable_text.h"
 #include "cli/config_args.h"
 #include "cli/export_args.h"
 #include "engine/diagnostics.h"
@@ -84,7 +85,7 @@ void RunEval(const EvalArgs& args) {
     engine::PrintCheckSummary(std::cout, diagnostics);
     engine::PrintStepTimes(std::cout, run.timing, &run.counts);
   }
-  std::printf("results in %s\n", out_dir.c_str());
+  std::printf("results in %s\n", PrintableText(out_dir, LineBreaks::kEscape).c_str());
   // Last, so they are what the user sees.
   std::fflush(stdout);
   engine::PrintWarnings(std::cerr, diagnostics);

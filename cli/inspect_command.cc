@@ -10,6 +10,8 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
+#include "core/printable_text.h"
+#include "datasets/io/json_output.h"
 #include "cli/commands.h"
 #include "engine/diagnostics.h"
 #include "cli/input_options.h"
@@ -79,21 +81,22 @@ void RunInspect(const InspectArgs& args) {
     report.push_back(seq);
   }
   if (args.json) {
-    std::cout << report.dump(2) << "\n";
+    std::cout << io::DumpJson(report, 2) << "\n";  // invalid UTF-8 (a name) as U+FFFD, not an error
   } else {
     PrintReport(report, shift_lines);
   }
   std::fflush(stdout);
-  for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
+  for (const std::string& w : warnings) std::cerr << "warning: " << PrintableText(w) << "\n";
 }
 
 void PrintReport(const nlohmann::ordered_json& report, const std::vector<std::string>& shift_lines) {
   for (size_t i = 0; i < report.size(); ++i) {
     const auto& seq = report[i];
-    std::printf("sequence %s: %d frames (%d with detections), %ld GT person-frames, %d GT joints, %d detection joints\n",
-                seq["sequence"].get<std::string>().c_str(), seq["frames"].get<int>(),
-                seq["frames_with_detections"].get<int>(), seq["gt_persons"].get<long>(), seq["gt_joints"].get<int>(),
-                seq["detection_joints"].get<int>());
+    std::printf(
+        "sequence %s: %d frames (%d with detections), %ld GT person-frames, %d GT joints, %d detection joints\n",
+        PrintableText(seq["sequence"].get<std::string>(), LineBreaks::kEscape).c_str(), seq["frames"].get<int>(),
+        seq["frames_with_detections"].get<int>(), seq["gt_persons"].get<long>(), seq["gt_joints"].get<int>(),
+        seq["detection_joints"].get<int>());
     std::printf("  room centre (%.2f, %.2f, %.2f) m, size (%.2f, %.2f, %.2f) m\n", seq["room_center_m"][0].get<double>(),
                 seq["room_center_m"][1].get<double>(), seq["room_center_m"][2].get<double>(),
                 seq["room_size_m"][0].get<double>(), seq["room_size_m"][1].get<double>(),
@@ -111,11 +114,12 @@ void PrintReport(const nlohmann::ordered_json& report, const std::vector<std::st
         std::snprintf(median, sizeof(median), "%.1f", cam["gt_to_detection_px_median"].get<double>());
         std::snprintf(relative, sizeof(relative), "%.3f", cam["gt_to_detection_rel_median"].get<double>());
       }
-      std::printf("  %-10s %-26s %-11s %-8s %10ld %10ld %18s %14s\n", cam["name"].get<std::string>().c_str(), centre,
-                  image, cam["model"].get<std::string>().c_str(), cam["detections"].get<long>(),
+      std::printf("  %-10s %-26s %-11s %-8s %10ld %10ld %18s %14s\n",
+                  PrintableText(cam["name"].get<std::string>(), LineBreaks::kEscape).c_str(), centre, image,
+                  cam["model"].get<std::string>().c_str(), cam["detections"].get<long>(),
                   cam["gt_persons_compared"].get<long>(), median, relative);
     }
-    std::printf("  %s\n", shift_lines[i].c_str());
+    std::printf("  %s\n", PrintableText(shift_lines[i], LineBreaks::kEscape).c_str());
   }
 }
 

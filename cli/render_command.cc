@@ -25,6 +25,8 @@
 #include "engine/run.h"
 #include "core/closest_name.h"
 #include "core/errors.h"
+#include "core/printable_text.h"
+#include "datasets/io/staged_output.h"
 #include "core/text.h"
 
 namespace rpt::cli {
@@ -100,6 +102,92 @@ struct ErrorSum {
   long joints = 0;
 };
 
+// One sequence into `root / sequence_file` (root: the staging folder): PNGs and/or videos per
+// camera, then its reprojection errors on stdout. File names are engine::UniqueFileNames of the
+// camera names and frame ids, so distinct names never share a file; every file is staged and
+// renamed into place, and folders are created inside `root` only (io::CreateFolderInside).
+void RenderSequence(const RenderArgs& args, const engine::Config& config, const Sequence& sequence,
+                    const std::filesystem::path& root, const std::string& sequence_file, ImageProblems* problems,
+                    long* pngs, std::vector<std::string>* videos) {
+  const bool png = args.format != "mp4", mp4 = args.format != "png";
+  engine::RunOptions options;
+  options.triangulator = config.triangulator;
+  options.eval.reset();
+  const engine::FrameRange range =
+      engine::ParseFrameRange(args.frames, static_cast<long>(sequence.frames.size()), sequence.name);
+  const std::vector<int> cameras = engine::SelectCameras(args.cameras, sequence.cameras, sequence.name);
+  std::vector<std::string> camera_names, frame_ids;
+  for (const Camera& camera : sequence.cameras) camera_names.push_back(camera.name);
+  for (long f = range.first; f < range.end; ++f) frame_ids.push_back(sequence.frames[f].id);
+  const std::vector<std::string> camera_files = engine::UniqueFileNames(camera_names);
+  const std::vector<std::string> frame_files = engine::UniqueFileNames(frame_ids);
+  const std::filesystem::path sequence_dir = io::CreateFolderInside(root, sequence_file);
+  if (png) {
+    for (const int c : cameras) io::CreateFolderInside(root, std::filesystem::path(sequence_file) / camera_files[c]);
+  }
+  std::map<int, std::unique_ptr<engine::Mp4Writer>> writers;
+  if (mp4) {
+    const double fps = args.fps > 0 ? args.fps : (sequence.fps > 0 ? sequence.fps : 10.0);
+    for (const int c : cameras) {
+      const Camera& camera = sequence.cameras[c];
+      const std::filesystem::path path = sequence_dir / (camera_files[c] + ".mp4");
+      writers[c] = std::make_unique<engine::Mp4Writer>(path, cv::Size(camera.width, camera.height), fps);
+    }
+  }
+  // The whole sequence, as eval runs it (tracking and smoothing see every frame).
+  engine::PredictionsCollector collected(1);
+  engine::Run(std::span<const Sequence>(&sequence, 1), options, &collected);
+  const engine::PredictionsCollector::Sequence& run = collected.sequences().front();
+  std::map<int, ErrorSum> errors;
+  for (long f = range.first; f < range.end; ++f) {
+    const SequenceFrame& frame = sequence.frames[f];
+    const std::vector<engine::ViewReprojection> views = engine::ReprojectFrame(
+        sequence.cameras, frame.views, sequence.detection_joints, {&run.persons[f], &run.output_joints},
+        args.gt ? engine::PersonsWithJoints{&frame.gt, &sequence.gt_joints} : engine::PersonsWithJoints{});
+    for (const int c : cameras) {
+      const Camera& camera = sequence.cameras[c];
+      cv::Mat canvas = Background(args, camera, c, frame, f, problems);
+      engine::OverlayInput overlay;
+      overlay.camera = &camera;
+      overlay.detections = c < static_cast<int>(frame.views.size()) ? &frame.views[c] : nullptr;
+      overlay.detection_joints = &sequence.detection_joints;
+      overlay.reprojection = &views[c];
+      overlay.prediction_joints = &run.output_joints;
+      overlay.gt_joints = args.gt ? &sequence.gt_joints : nullptr;
+      overlay.title = sequence.name + "  " + camera.name + "  frame " + frame.id;
+      engine::DrawOverlay(overlay, &canvas);
+      for (const engine::ReprojectedPerson& p : views[c].predictions) {
+        if (p.num_measured > 0)
+          errors[c].sum_px += p.mean_error_px * p.num_measured, errors[c].joints += p.num_measured;
+      }
+      if (png) {
+        const std::filesystem::path path = sequence_dir / camera_files[c] / (frame_files[f - range.first] + ".png");
+        io::StagedFile file(path, io::NamedBy::kRpt, /*keep_extension=*/true);  // OpenCV picks PNG by the extension
+        if (!cv::imwrite(file.path().string(), canvas)) throw InputError(path.string() + ": cannot write the PNG");
+        file.Commit();
+        ++*pngs;
+      }
+      if (mp4) writers[c]->Write(canvas);
+    }
+  }
+  for (const auto& [c, writer] : writers) {
+    writer->Finish();
+    videos->push_back((std::filesystem::path(sequence_file) / (camera_files[c] + ".mp4")).string());
+    videos->back() += " (" + std::to_string(writer->frames()) + " frames, " + writer->codec() + ")";
+  }
+  std::printf("%s: frames %ld to %ld, mean reprojection error of the 3D result against the matched detections:\n",
+              PrintableText(sequence.name, LineBreaks::kEscape).c_str(), range.first, range.end - 1);
+  for (const int c : cameras) {
+    const ErrorSum& e = errors[c];
+    const std::string name = PrintableText(sequence.cameras[c].name, LineBreaks::kEscape);
+    if (e.joints > 0) {
+      std::printf("  %-12s %7.1f px over %ld joints\n", name.c_str(), e.sum_px / e.joints, e.joints);
+    } else {
+      std::printf("  %-12s       - (no reprojected joint matched a detection)\n", name.c_str());
+    }
+  }
+}
+
 void RunRender(const RenderArgs& args) {
   if (!args.images.empty()) engine::ImagePath(args.images, "", 0, "", 0);  // a bad template fails before any work
   const engine::Config config = ResolveConfig(args.config);
@@ -108,94 +196,43 @@ void RunRender(const RenderArgs& args) {
   PrintInputWarnings(warnings);
   const std::filesystem::path out_dir =
       !args.out.empty() ? args.out : "out/render-" + (args.input.dataset.empty() ? "labels" : args.input.dataset);
-  const bool png = args.format != "mp4", mp4 = args.format != "png";
-  engine::RunOptions options;
-  options.triangulator = config.triangulator;
-  options.eval.reset();
+  const bool png = args.format != "mp4";
   ImageProblems problems;
   long pngs = 0;
   std::vector<std::string> videos;
-  for (const Sequence* sequence : SelectSequences(sequences, args.sequences)) {
-    const engine::FrameRange range = engine::ParseFrameRange(args.frames, static_cast<long>(sequence->frames.size()), sequence->name);
-    const std::vector<int> cameras = engine::SelectCameras(args.cameras, sequence->cameras, sequence->name);
-    const std::filesystem::path sequence_dir = out_dir / engine::FileNameOf(sequence->name);
-    std::error_code ec;
-    for (const int c : cameras) {
-      std::filesystem::create_directories(png ? sequence_dir / engine::FileNameOf(sequence->cameras[c].name) : sequence_dir,
-                                          ec);
-      if (ec) throw InputError(sequence_dir.string() + ": cannot create output folder: " + ec.message());
+  // Built beside out_dir and swapped in whole at the end, like eval's run folder: an interrupted or
+  // failed render leaves the previous one intact; files of the old folder that this render does not
+  // write are carried over.
+  io::StagedFolder folder(out_dir);
+  try {
+    const std::vector<const Sequence*> selected = SelectSequences(sequences, args.sequences);
+    std::vector<std::string> sequence_names;
+    for (const Sequence* sequence : selected) sequence_names.push_back(sequence->name);
+    const std::vector<std::string> sequence_files = engine::UniqueFileNames(sequence_names);
+    for (size_t s = 0; s < selected.size(); ++s) {
+      const Sequence* sequence = selected[s];
+      RenderSequence(args, config, *sequence, folder.path(), sequence_files[s], &problems, &pngs, &videos);
     }
-    std::map<int, std::unique_ptr<engine::Mp4Writer>> writers;
-    if (mp4) {
-      const double fps = args.fps > 0 ? args.fps : (sequence->fps > 0 ? sequence->fps : 10.0);
-      for (const int c : cameras) {
-        const Camera& camera = sequence->cameras[c];
-        const std::filesystem::path path = sequence_dir / (engine::FileNameOf(camera.name) + ".mp4");
-        writers[c] = std::make_unique<engine::Mp4Writer>(path, cv::Size(camera.width, camera.height), fps);
-      }
-    }
-    // The whole sequence, as eval runs it (tracking and smoothing see every frame).
-    engine::PredictionsCollector collected(1);
-    engine::Run(std::span<const Sequence>(sequence, 1), options, &collected);
-    const engine::PredictionsCollector::Sequence& run = collected.sequences().front();
-    std::map<int, ErrorSum> errors;
-    for (long f = range.first; f < range.end; ++f) {
-      const SequenceFrame& frame = sequence->frames[f];
-      const std::vector<engine::ViewReprojection> views = engine::ReprojectFrame(
-          sequence->cameras, frame.views, sequence->detection_joints, {&run.persons[f], &run.output_joints},
-          args.gt ? engine::PersonsWithJoints{&frame.gt, &sequence->gt_joints} : engine::PersonsWithJoints{});
-      for (const int c : cameras) {
-        const Camera& camera = sequence->cameras[c];
-        cv::Mat canvas = Background(args, camera, c, frame, f, &problems);
-        engine::OverlayInput overlay;
-        overlay.camera = &camera;
-        overlay.detections = c < static_cast<int>(frame.views.size()) ? &frame.views[c] : nullptr;
-        overlay.detection_joints = &sequence->detection_joints;
-        overlay.reprojection = &views[c];
-        overlay.prediction_joints = &run.output_joints;
-        overlay.gt_joints = args.gt ? &sequence->gt_joints : nullptr;
-        overlay.title = sequence->name + "  " + camera.name + "  frame " + frame.id;
-        engine::DrawOverlay(overlay, &canvas);
-        for (const engine::ReprojectedPerson& p : views[c].predictions) {
-          if (p.num_measured > 0)
-            errors[c].sum_px += p.mean_error_px * p.num_measured, errors[c].joints += p.num_measured;
-        }
-        if (png) {
-          const std::filesystem::path path = sequence_dir / engine::FileNameOf(camera.name) / (engine::FileNameOf(frame.id) + ".png");
-          if (!cv::imwrite(path.string(), canvas)) throw InputError(path.string() + ": cannot write the PNG");
-          ++pngs;
-        }
-        if (mp4) writers[c]->Write(canvas);
-      }
-    }
-    for (const auto& [c, writer] : writers) {
-      videos.push_back((sequence_dir / (engine::FileNameOf(sequence->cameras[c].name) + ".mp4")).string() + " (" +
-                       std::to_string(writer->frames()) + " frames, " + writer->codec() + ")");
-    }
-    std::printf("%s: frames %ld to %ld, mean reprojection error of the 3D result against the matched detections:\n",
-                sequence->name.c_str(), range.first, range.end - 1);
-    for (const int c : cameras) {
-      const ErrorSum& e = errors[c];
-      if (e.joints > 0) {
-        std::printf("  %-12s %7.1f px over %ld joints\n", sequence->cameras[c].name.c_str(), e.sum_px / e.joints,
-                    e.joints);
-      } else {
-        std::printf("  %-12s       - (no reprojected joint matched a detection)\n", sequence->cameras[c].name.c_str());
-      }
-    }
+    folder.Commit();
+  } catch (const InputError& e) {
+    throw InputError(folder.NamedAsTarget(e.what()));
   }
-  if (png) std::printf("%ld PNG file(s) in %s\n", pngs, out_dir.string().c_str());
-  for (const std::string& video : videos) std::printf("video %s\n", video.c_str());
+  if (png) std::printf("%ld PNG file(s) in %s\n", pngs, PrintableText(out_dir.string()).c_str());
+  for (const std::string& video : videos) {
+    std::printf(
+        "video %s\n",
+        PrintableText((out_dir / video).string(), LineBreaks::kEscape).c_str());  // out_dir/<seq>/<cam>.mp4 (...)
+  }
   std::fflush(stdout);
   if (problems.missing > 0) {
     std::cerr << "warning: --images: " << problems.missing
-              << " image(s) could not be read (first: " << problems.first_missing
+              << " image(s) could not be read (first: " << PrintableText(problems.first_missing, LineBreaks::kEscape)
               << "); drawn on a white canvas instead\n";
   }
   if (problems.resized > 0) {
     std::cerr << "warning: --images: " << problems.resized
               << " image(s) differ from the calibrated image size and were resized to it (first: "
-              << problems.first_resized << ")\n";
+              << PrintableText(problems.first_resized, LineBreaks::kEscape) << ")\n";
   }
 }
 

@@ -14,6 +14,7 @@
 #include "cli/recorded_input.h"
 #include "engine/run.h"
 #include "core/errors.h"
+#include "core/printable_text.h"
 #include "datasets/io/text_file.h"
 
 namespace rpt::cli {
@@ -42,12 +43,14 @@ void RunReport(const ReportArgs& args) {
                                                       eval_options, args.data, &warnings);
   const std::filesystem::path out = args.out.empty() ? run.dir / "report.html" : std::filesystem::path(args.out);
   const std::string page = engine::ReportHtml(data);
-  io::WriteTextFile(out, page);
+  // RUN_DIR/report.html is rpt's name inside a run folder (a link there is replaced, a FIFO too);
+  // --out FILE is the user's.
+  io::WriteTextFile(out, args.out.empty() ? io::NamedBy::kRpt : io::NamedBy::kUser, page);
   int scenes = data.contains("scenes") ? static_cast<int>(data["scenes"].size()) : 0;
-  std::printf("report in %s (%.1f MB, %d frame(s) with 3D scene and camera views)\n", out.c_str(),
-              page.size() / 1e6, scenes);
+  std::printf("report in %s (%.1f MB, %d frame(s) with 3D scene and camera views)\n",
+              PrintableText(out.string(), LineBreaks::kEscape).c_str(), page.size() / 1e6, scenes);
   std::fflush(stdout);
-  for (const std::string& line : warnings) std::fprintf(stderr, "warning: %s\n", line.c_str());
+  for (const std::string& line : warnings) std::fprintf(stderr, "warning: %s\n", PrintableText(line).c_str());
 }
 
 }  // namespace

@@ -21,6 +21,7 @@
 #endif
 
 #include "cli/commands.h"
+#include "core/printable_text.h"
 #include "cli/config_args.h"
 #include "engine/json_text.h"
 #include "cli/input_options.h"
@@ -132,8 +133,8 @@ std::pair<int, int> ParseShard(const std::string& text) {
 void WriteTables(const fs::path& dir, const Json& rows, const std::string& stem) {
   std::vector<std::pair<std::string, Json>> table;
   for (const Json& row : rows) table.emplace_back(row["name"].get<std::string>(), row["summary"]);
-  io::WriteTextFile(dir / (stem + ".csv"), engine::SummaryCsv(table));
-  io::WriteTextFile(dir / (stem + ".md"), engine::SummaryMarkdown(table));
+  io::WriteTextFile(dir / (stem + ".csv"), io::NamedBy::kRpt, engine::SummaryCsv(table));
+  io::WriteTextFile(dir / (stem + ".md"), io::NamedBy::kRpt, engine::SummaryMarkdown(table));
 }
 
 // <stem>.{csv,md,json} into `out`, each file atomic, the JSON (the data the tables show) last. With
@@ -150,15 +151,15 @@ void WriteSweepFiles(const fs::path& out, const Json& file, const std::string& s
   int replaced = 0;
   try {
     WriteTables(dir, file["rows"], stem);
-    io::WriteTextFile(dir / (stem + ".html"), engine::SweepHtml(file));
-    io::WriteTextFile(dir / (stem + ".json"), io::DumpJson(file, 2, &replaced) + "\n");  // last
+    io::WriteTextFile(dir / (stem + ".html"), io::NamedBy::kRpt, engine::SweepHtml(file));
+    io::WriteTextFile(dir / (stem + ".json"), io::NamedBy::kRpt, io::DumpJson(file, 2, &replaced) + "\n");  // last
     if (folder) folder->Commit();
   } catch (const InputError& e) {
     throw InputError(folder ? folder->NamedAsTarget(e.what()) : std::string(e.what()));
   }
   if (replaced > 0) {
     std::fprintf(stderr, "warning: %s: %d string(s) not valid UTF-8; invalid bytes written as U+FFFD\n",
-                 (out / (stem + ".json")).string().c_str(), replaced);
+                 PrintableText((out / (stem + ".json")).string()).c_str(), replaced);
   }
 }
 
@@ -279,8 +280,8 @@ void RunSweep(const SweepArgs& args) {
     for (const Json& row : rows) table.emplace_back(row["name"].get<std::string>(), row["summary"]);
     return table;
   }());
-  std::printf("%d of %zu configurations; tables in %s/%s.{json,csv,md,html}\n", count, all.size(), args.out.c_str(),
-              stem.c_str());
+  std::printf("%d of %zu configurations; tables in %s/%s.{json,csv,md,html}\n", count, all.size(),
+              PrintableText(args.out, LineBreaks::kEscape).c_str(), stem.c_str());
 }
 
 [[noreturn]] void FailAt(const std::string& source, const std::string& pointer, const std::string& what) {
@@ -370,8 +371,8 @@ void RunMerge(const std::vector<std::string>& inputs, const std::string& out) {
   file["base"] = base;
   file["rows"] = rows;
   WriteSweepFiles(out, file, "sweep", /*whole_folder=*/true);
-  std::printf("merged %zu configurations from %zu shard files into %s/sweep.{json,csv,md,html}\n", by_index.size(), inputs.size(),
-              out.c_str());
+  std::printf("merged %zu configurations from %zu shard files into %s/sweep.{json,csv,md,html}\n", by_index.size(),
+              inputs.size(), PrintableText(out, LineBreaks::kEscape).c_str());
 }
 
 }  // namespace

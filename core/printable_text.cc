@@ -1,25 +1,48 @@
 // SPDX-License-Identifier: MIT
 #include "core/printable_text.h"
 
+#include <algorithm>
 #include <cstdint>
 
 #include "core/utf8.h"
 
 namespace rpt {
 
-std::string PrintableText(std::string_view text) {
+namespace {
+
+// Is the valid sequence of `length` bytes at text[i] a character the terminal must not see raw?
+bool MustEscape(std::string_view text, std::size_t i, std::size_t length, LineBreaks line_breaks) {
+  const auto byte = [&](std::size_t k) { return static_cast<std::uint8_t>(text[i + k]); };
+  if (length == 1) {
+    const std::uint8_t c = byte(0);
+    if (line_breaks == LineBreaks::kKeep && (c == '\n' || c == '\t')) return false;
+    return c < 0x20 || c == 0x7f;
+  }
+  if (length == 2) return byte(0) == 0xc2 && byte(1) < 0xa0;  // C1 controls U+0080-U+009F
+  if (length == 3 && byte(0) == 0xe2) {
+    const unsigned code = 0x2000u + ((byte(1) & 0x3fu) << 6) + (byte(2) & 0x3fu);
+    return (code >= 0x202a && code <= 0x202e) || (code >= 0x2066 && code <= 0x2069);  // bidirectional overrides
+  }
+  if (length == 3 && byte(0) == 0xef && byte(1) == 0xbf) return byte(2) >= 0xbe;  // noncharacters U+FFFE, U+FFFF
+  return false;
+}
+
+}  // namespace
+
+std::string PrintableText(std::string_view text, LineBreaks line_breaks) {
   static const char* const kHex = "0123456789abcdef";
   std::string out;
   out.reserve(text.size());
   for (std::size_t i = 0; i < text.size();) {
     const std::size_t length = Utf8SequenceLength(text, i);
-    const auto c = static_cast<std::uint8_t>(text[i]);
-    const bool control = length == 1 && (c < 0x20 || c == 0x7f) && c != '\n' && c != '\t';
-    if (length == 0 || control) {
-      out += "\\x";
-      out += kHex[c >> 4];
-      out += kHex[c & 0xf];
-      ++i;
+    if (length == 0 || MustEscape(text, i, length, line_breaks)) {
+      for (std::size_t k = 0; k < std::max<std::size_t>(length, 1); ++k) {
+        const auto c = static_cast<std::uint8_t>(text[i + k]);
+        out += "\\x";
+        out += kHex[c >> 4];
+        out += kHex[c & 0xf];
+      }
+      i += std::max<std::size_t>(length, 1);
     } else {
       out.append(text.substr(i, length));
       i += length;

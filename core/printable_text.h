@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: MIT
-// Text for messages that quote input (names, attribute values, tokens read from files): valid
-// UTF-8 is kept as it is; bytes that are not valid UTF-8, and control characters other than
-// newline and tab, are written as \xNN. Errors and warnings then never send raw binary from a
-// damaged file to a terminal, a log or a JSON report.
+// The terminal's escaping: text for messages and lines that quote input (names, attribute values,
+// tokens read from files, paths): valid UTF-8 is kept as it is; bytes that are not valid UTF-8,
+// control characters (C0 other than newline and tab, DEL, C1 such as U+009B, the one-character
+// escape sequence introducer) and the bidirectional overrides U+202A-U+202E and U+2066-U+2069
+// (which reorder what a terminal shows) and the noncharacters U+FFFE and U+FFFF are written as
+// \xNN per byte. Errors, warnings and
+// printed names then never send an escape sequence or raw binary from a file to a terminal or a log.
 #pragma once
 
 #include <string>
@@ -10,6 +13,10 @@
 
 namespace rpt {
 
-std::string PrintableText(std::string_view text);
+// kKeep: newline and tab stay (a message of several lines); kEscape: they are escaped too (one name
+// inside a line: a camera, a sequence, a frame id, a path).
+enum class LineBreaks { kKeep, kEscape };
+
+std::string PrintableText(std::string_view text, LineBreaks line_breaks = LineBreaks::kKeep);
 
 }  // namespace rpt

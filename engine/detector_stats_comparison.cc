@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "core/text.h"
+#include "engine/outputs/text_escaping.h"
 
 namespace rpt::engine {
 namespace {
@@ -185,19 +186,20 @@ const std::vector<std::pair<const char*, RowFunction>>& CompareRows() {
 }  // namespace
 
 void PrintDetectorStatsComparison(const std::vector<DetectorStatsColumn>& columns, const std::string& input, uint64_t seed) {
-  std::printf("# Detector statistics: %s, against simulated detectors (seed %llu)\n\n", input.c_str(),
+  std::printf("# Detector statistics: %s, against simulated detectors (seed %llu)\n\n", MarkdownText(input).c_str(),
               static_cast<unsigned long long>(seed));
   std::printf("The simulated detectors run on the input's ground truth and cameras. Statistic joints: %s",
-              Join(columns.front().stats.joints).c_str());
+              MarkdownText(Join(columns.front().stats.joints)).c_str());
   for (size_t c = 1; c < columns.size(); ++c) {
     if (columns[c].stats.joints != columns.front().stats.joints) {
-      std::printf("; %s: %s", columns[c].name.c_str(), Join(columns[c].stats.joints).c_str());
+      std::printf("; %s: %s", MarkdownText(columns[c].name).c_str(),
+                  MarkdownText(Join(columns[c].stats.joints)).c_str());
     }
   }
   std::printf(". Errors in box units (the projected GT statistic joints, clipped to the image).\n\n");
 
   std::printf("| statistic |");
-  for (const DetectorStatsColumn& c : columns) std::printf(" %s |", c.name.c_str());
+  for (const DetectorStatsColumn& c : columns) std::printf(" %s |", MarkdownText(c.name).c_str());
   std::printf("\n|---|");
   for (size_t c = 0; c < columns.size(); ++c) std::printf("---:|");
   std::printf("\n");
@@ -217,7 +219,7 @@ void PrintDetectorStatsComparison(const std::vector<DetectorStatsColumn>& column
     }
   }
   std::printf("\nPer joint (%s; offsets: medians, down = along shoulders->hips, out = away from the midline):\n\n",
-              Join(names, " / ").c_str());
+              MarkdownText(Join(names, " / ")).c_str());
   std::printf("| joint | error median | missing | hidden | missing when hidden | confidence | offset down | offset out |\n");
   std::printf("|---|---:|---:|---:|---:|---:|---:|---:|\n");
   for (const std::string& joint : joints) {
@@ -238,7 +240,7 @@ void PrintDetectorStatsComparison(const std::vector<DetectorStatsColumn>& column
       const std::string text = cell.Text();
       return text == "-" ? text : text + " %";
     };
-    std::printf("| %s | %s | %s | %s | %s | %s | %s | %s |\n", joint.c_str(), error.Text().c_str(),
+    std::printf("| %s | %s | %s | %s | %s | %s | %s | %s |\n", MarkdownText(joint).c_str(), error.Text().c_str(),
                 percent(missing).c_str(), percent(hidden).c_str(), percent(hidden_missing).c_str(),
                 confidence.Text().c_str(), down.Text().c_str(), out.Text().c_str());
   }

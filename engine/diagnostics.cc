@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "engine/diagnostics.h"
+#include "core/printable_text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -180,12 +181,15 @@ void PrintCheckSummary(std::ostream& out, const EvalDiagnostics& diagnostics) {
     return;
   }
   out << "tested in " << tested << " of " << n << " sequences, " << shifted << " shifted";
-  if (untested != nullptr) out << "; not tested in " << untested->sequence << " (" << untested->shift.reason << ")";
+  if (untested != nullptr) {
+    out << "; not tested in " << PrintableText(untested->sequence, LineBreaks::kEscape) << " ("
+        << untested->shift.reason << ")";
+  }
   out << "\n";
 }
 
 void PrintWarnings(std::ostream& err, const EvalDiagnostics& diagnostics) {
-  for (const CheckWarning& w : diagnostics.warnings) err << "warning: " << w.message << "\n";
+  for (const CheckWarning& w : diagnostics.warnings) err << "warning: " << PrintableText(w.message) << "\n";
 }
 
 }  // namespace rpt::engine

@@ -235,7 +235,7 @@ void WriteCameraGroupToml(const fs::path& path, const std::vector<Camera>& camer
     text += std::string("fisheye = ") + (camera.model == DistortionModel::kFisheye ? "true" : "false") + "\n\n";
   }
   text += "[metadata]\nadjusted = false\nerror = 0.0\n";
-  io::WriteTextFile(path, text);
+  io::WriteTextFile(path, io::NamedBy::kUser, text);
 }
 
 }  // namespace rpt

@@ -45,7 +45,7 @@ void WriteCamerasJson(const std::filesystem::path& path, const std::vector<Camer
     text += "  " + io::DumpJson(camera, -1) + (c + 1 < cameras.size() ? ",\n" : "\n");
   }
   text += "]}\n";
-  io::WriteTextFile(path, text);
+  io::WriteTextFile(path, io::NamedBy::kUser, text);
 }
 
 }  // namespace rpt

@@ -171,8 +171,8 @@ void WriteEasyMocapCameras(const fs::path& intri_path, const fs::path& extri_pat
     extrinsics.Matrix("Rot_" + name, 3, 3, RowMajor(camera.R));
     extrinsics.Matrix("T_" + name, 3, 1, {t.x(), t.y(), t.z()});
   }
-  io::WriteTextFile(intri_path, intri.Finish());
-  if (!one_file) io::WriteTextFile(extri_path, extri.Finish());
+  io::WriteTextFile(intri_path, io::NamedBy::kUser, intri.Finish());
+  if (!one_file) io::WriteTextFile(extri_path, io::NamedBy::kUser, extri.Finish());
 }
 
 }  // namespace rpt

@@ -277,7 +277,7 @@ void WriteOpenCVCamera(const fs::path& path, const Camera& camera, LengthUnit un
   out.Matrix("R", 3, 3, RowMajor(camera.R));
   const Eigen::Vector3d t = camera.t / MetresPerUnit(units);
   out.Matrix("T", 3, 1, {t.x(), t.y(), t.z()});
-  io::WriteTextFile(path, out.Finish());
+  io::WriteTextFile(path, io::NamedBy::kUser, out.Finish());
 }
 
 }  // namespace rpt

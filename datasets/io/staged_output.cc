@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstring>
 #include <mutex>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -39,17 +40,22 @@ void Unregister(Registry& registry, const fs::path& path) {
   paths.erase(std::remove(paths.begin(), paths.end(), path), paths.end());
 }
 
-// `<target>.tmp-<pid>-<n>` (call with the lock held).
-fs::path NextTemporaryName(Registry& registry, const fs::path& target) {
+// `<target>.tmp-<pid>-<n>`, followed by the target's extension when asked (call with the lock held).
+fs::path NextTemporaryName(Registry& registry, const fs::path& target, bool keep_extension = false) {
   return target.parent_path() /
-         (target.filename().string() + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(registry.next_number++));
+         (target.filename().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
+          std::to_string(registry.next_number++) + (keep_extension ? target.extension().string() : std::string()));
+}
+
+bool IsDeviceOrFifo(const fs::file_status& status) {
+  return fs::is_character_file(status) || fs::is_block_file(status) || fs::is_fifo(status);
 }
 
 std::string ErrnoText() { return std::strerror(errno); }
 
 // Flushes a file's (or a folder's) data and entries to disk.
 bool SyncToDisk(const fs::path& path, bool folder) {
-  const int fd = ::open(path.c_str(), (folder ? O_RDONLY | O_DIRECTORY : O_RDONLY) | O_CLOEXEC);
+  const int fd = ::open(path.c_str(), (folder ? O_RDONLY | O_DIRECTORY : O_RDONLY) | O_CLOEXEC | O_NOFOLLOW);
   if (fd < 0) return false;
   const bool ok = ::fsync(fd) == 0 || errno == EINVAL;  // EINVAL: the file system does not sync (e.g. some FUSE)
   ::close(fd);
@@ -79,17 +85,45 @@ bool ExchangePaths(const fs::path& a, const fs::path& b) {
 
 // Creates `<target>.tmp-<pid>-<n>` (a name not yet taken), registers it, stores its name in
 // `created` and returns it open for writing; throws InputError naming `target` when it cannot.
-int CreateRegisteredFile(const fs::path& target, fs::path* created) {
+// O_EXCL never follows a link: a name taken by anything, a planted link included, is skipped.
+int CreateRegisteredFile(const fs::path& target, fs::path* created, bool keep_extension = false) {
   Registry& registry = TheRegistry();
   std::lock_guard<std::mutex> lock(registry.mutex);
   for (;;) {
-    *created = NextTemporaryName(registry, target);
-    const int fd = ::open(created->c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    *created = NextTemporaryName(registry, target, keep_extension);
+    const int fd = ::open(created->c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW, 0666);
     if (fd < 0 && errno == EEXIST) continue;
     if (fd < 0) throw InputError(target.string() + ": cannot open for writing (" + ErrnoText() + ")");
     registry.paths.push_back(*created);
     return fd;
   }
+}
+
+// Is `folder` writable for this process? For root (who may write anywhere) the owner's write bit
+// says whether the owner protected it.
+bool Writable(const fs::path& folder) {
+  struct stat info {};
+  if (::lstat(folder.c_str(), &info) != 0) return false;
+  if (::geteuid() == 0) return (info.st_mode & S_IWUSR) != 0;
+  return ::access(folder.c_str(), W_OK) == 0;
+}
+
+// Throws InputError when `folder` (or, `with_subfolders`, a folder inside it; links not followed) is
+// write-protected.
+void RefuseWriteProtected(const fs::path& folder, bool with_subfolders) {
+  const auto refuse = [&](const fs::path& protected_folder) {
+    throw InputError(protected_folder.string() + ": write-protected; rpt does not replace a write-protected " +
+                     "output folder (make it writable, e.g. chmod -R u+w " + folder.string() +
+                     ", or choose another output folder)");
+  };
+  if (!Writable(folder)) refuse(folder);
+  if (!with_subfolders) return;
+  std::error_code ec;
+  for (auto it = fs::recursive_directory_iterator(folder, ec); !ec && it != fs::recursive_directory_iterator();
+       it.increment(ec)) {
+    if (it->is_directory(ec) && !it->is_symlink(ec) && !Writable(it->path())) refuse(it->path());
+  }
+  if (ec) throw InputError(folder.string() + ": cannot read the old output folder (" + ec.message() + ")");
 }
 
 void RemoveRegisteredFile(const fs::path& path) {
@@ -102,20 +136,17 @@ void RemoveRegisteredFile(const fs::path& path) {
 
 }  // namespace
 
-StagedFile::StagedFile(const fs::path& target) : target_(target) {
+StagedFile::StagedFile(const fs::path& target, NamedBy named_by, bool keep_extension) : target_(target) {
   std::error_code ec;
-  if (fs::is_symlink(target_, ec)) {  // replace what the link points to, not the link
-    const fs::path resolved = fs::weakly_canonical(target_, ec);
-    if (!ec) target_ = resolved;
-  }
-  const fs::file_status status = fs::status(target_, ec);
-  if (fs::is_directory(status)) throw InputError(target_.string() + ": is a folder, expected a file");
-  if (fs::exists(status) && !fs::is_regular_file(status)) {  // a device or FIFO: written in place
+  const fs::file_status entry = fs::symlink_status(target_, ec);  // the name itself: a link is not followed
+  if (fs::is_directory(entry)) throw InputError(target_.string() + ": is a folder, expected a file");
+  if (named_by == NamedBy::kUser && fs::exists(entry) && !fs::is_regular_file(entry) &&
+      IsDeviceOrFifo(fs::status(target_, ec))) {  // /dev/stdout, /dev/full, a FIFO: written in place
     temporary_ = target_;
     return;
   }
-  const int fd = CreateRegisteredFile(target_, &temporary_);
-  if (fs::exists(status)) ::fchmod(fd, static_cast<mode_t>(status.permissions()) & 07777);  // keep the old mode
+  const int fd = CreateRegisteredFile(target_, &temporary_, keep_extension);
+  if (fs::is_regular_file(entry)) ::fchmod(fd, static_cast<mode_t>(entry.permissions()) & 07777);  // keep the old mode
   ::close(fd);
   pending_ = true;
 }
@@ -141,15 +172,26 @@ void StagedFile::Commit() {
 StagedFolder::StagedFolder(const fs::path& target) : target_(target) {
   std::error_code ec;
   if (target_.filename().empty()) target_ = target_.parent_path();  // "out/" -> "out"
+  if (fs::is_symlink(fs::symlink_status(target_, ec))) {            // the user's link: the folder it points to
+    const fs::path resolved = fs::canonical(target_, ec);
+    if (ec) {
+      throw InputError(target_.string() + ": is a link to a folder that does not exist (" + ec.message() +
+                       "); rpt writes into the folder a link points to: create it or choose another output folder");
+    }
+    target_ = resolved;
+  }
   const fs::file_status status = fs::status(target_, ec);
   if (fs::exists(status) && !fs::is_directory(status)) {
     throw InputError(target_.string() + ": exists and is not a folder");
   }
   const fs::path absolute = fs::absolute(target_, ec).lexically_normal();
   if ((fs::exists(status) && HoldsCurrentDirectory(target_)) || !absolute.has_relative_path()) {
+    if (fs::exists(status)) RefuseWriteProtected(target_, /*with_subfolders=*/false);
     staging_ = target_;  // in place
     return;
   }
+  if (fs::exists(status))
+    RefuseWriteProtected(target_, /*with_subfolders=*/true);  // the old contents go after the swap
   if (!absolute.parent_path().empty()) fs::create_directories(absolute.parent_path(), ec);
   if (ec) throw InputError(target_.string() + ": cannot create output folder: " + ec.message());
   Registry& registry = TheRegistry();
@@ -162,8 +204,13 @@ StagedFolder::StagedFolder(const fs::path& target) : target_(target) {
   registry.paths.push_back(staging_);
   pending_ = true;
   if (!fs::exists(status)) return;
-  // Carry the old entries over; should that fail (e.g. hard links not allowed), fall back to in place.
+  // Carry the old entries over (files as hard links, links as links: no writer follows them; FIFOs
+  // and devices are not results and stay behind); should that fail (e.g. hard links not allowed),
+  // fall back to in place.
   for (const fs::directory_entry& entry : fs::directory_iterator(target_, ec)) {
+    const fs::file_status kind = entry.symlink_status(ec);
+    if (!ec && !fs::is_regular_file(kind) && !fs::is_directory(kind) && !fs::is_symlink(kind))
+      continue;  // FIFOs, devices: dropped
     fs::copy(entry.path(), staging_ / entry.path().filename(),
              fs::copy_options::recursive | fs::copy_options::create_hard_links | fs::copy_options::copy_symlinks, ec);
     if (ec) break;
@@ -233,6 +280,28 @@ std::string StagedFolder::NamedAsTarget(std::string message) const {
     message.replace(at, staging.size(), target);
   }
   return message;
+}
+
+fs::path CreateFolderInside(const fs::path& root, const fs::path& relative) {
+  if (relative.is_absolute()) throw std::logic_error("CreateFolderInside: " + relative.string() + " is not relative");
+  fs::path folder = root;
+  for (const fs::path& name : relative) {
+    if (name == "." || name == ".." || name.empty()) {
+      throw std::logic_error("CreateFolderInside: " + relative.string() + " holds '" + name.string() + "'");
+    }
+    folder /= name;
+    std::error_code ec;
+    const fs::file_status entry = fs::symlink_status(folder, ec);
+    if (fs::is_directory(entry)) continue;
+    if (fs::is_regular_file(entry)) throw InputError(folder.string() + ": exists and is not a folder");
+    if (fs::exists(entry) && !fs::remove(folder, ec)) {  // a link, FIFO or device: replaced, never followed
+      throw InputError(folder.string() + ": cannot replace (" + ec.message() + ")");
+    }
+    if (::mkdir(folder.c_str(), 0777) != 0) {
+      throw InputError(folder.string() + ": cannot create output folder (" + ErrnoText() + ")");
+    }
+  }
+  return folder;
 }
 
 ScratchFile::ScratchFile(const fs::path& name_like) { ::close(CreateRegisteredFile(name_like, &path_)); }

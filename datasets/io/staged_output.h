@@ -4,6 +4,11 @@
 // folder. Every temporary is registered; RemoveTemporariesForExit (called by the interrupt handler,
 // cli/interrupt.h) removes those still present. Temporaries are named `<target>.tmp-<pid>-<n>`; one
 // is left behind only when the process is killed with SIGKILL (or the machine fails): delete it.
+//
+// Nothing is ever written through a link: a link (or a hard link carried over from an old folder)
+// at the name of a file rpt writes is replaced by the new file, and what it points to stays as it
+// was; folders rpt creates inside an output folder replace links the same way (CreateFolderInside).
+// A run folder received from someone else (a tarball) therefore cannot make rpt write outside it.
 #pragma once
 
 #include <filesystem>
@@ -11,14 +16,25 @@
 
 namespace rpt::io {
 
+// Who named a file rpt writes; it decides what happens to a device or FIFO found at the name. Links
+// to anything else are never written through, whoever named the file.
+enum class NamedBy {
+  kRpt,   // a file rpt names inside an output folder (a run, sweep or render folder, RUN_DIR/report.html):
+          // whatever is at the name (a link, a FIFO, a device) is replaced by the new file
+  kUser,  // the path the user gave for the file itself (--out FILE, --junit FILE): a device or FIFO
+          // there, or a link to one (/dev/stdout, /dev/full), is written to in place
+};
+
 // A file written under a temporary name in the target's folder, then renamed over the target by
 // Commit(). Destroyed without Commit(), the temporary is removed and the target stays as it was.
-// A target that exists and is not a regular file (/dev/full, /dev/stdout, a FIFO) is written in
-// place: it cannot be replaced by a rename.
+// A link at the target is replaced (the file it points to is not touched); so is a device or FIFO
+// unless the user named the file (NamedBy::kUser: written in place, a rename cannot replace it).
 class StagedFile {
  public:
-  // Creates the (empty) temporary; throws InputError naming the target when it cannot.
-  explicit StagedFile(const std::filesystem::path& target);
+  // Creates the (empty) temporary; throws InputError naming the target when it cannot. With
+  // `keep_extension` the temporary's name also ends in the target's extension
+  // (`cam.mp4.tmp-<pid>-<n>.mp4`), for writers that choose the format by it (OpenCV).
+  StagedFile(const std::filesystem::path& target, NamedBy named_by, bool keep_extension = false);
   ~StagedFile();
   StagedFile(const StagedFile&) = delete;
   StagedFile& operator=(const StagedFile&) = delete;
@@ -41,6 +57,12 @@ class StagedFile {
 // so files other commands keep there (another shard's tables, a report) survive. When the folder is
 // the current directory or holds it, the swap is impossible: files are then replaced one by one
 // in place (each still atomic) and in_place() is true.
+//
+// The folder named by the user may be a link to a folder: the folder it points to is replaced (the
+// link is resolved once, at the start, and stays; target() is the resolved folder); a link to nothing
+// is an InputError. A write-protected old folder (no write permission on it or on a folder inside
+// it, or, for root, no owner write bit) is an InputError before anything is created: rpt does not
+// replace what its owner protected, and could not remove the old contents after the swap.
 class StagedFolder {
  public:
   explicit StagedFolder(const std::filesystem::path& target);  // throws InputError naming the folder
@@ -61,7 +83,14 @@ class StagedFolder {
   bool pending_ = false;
 };
 
-// A file the process writes for its own use and never keeps (rpt bench's HDF5 round trip): created
+// Creates `root / relative` folder by folder below `root` (an existing folder, e.g. a StagedFolder's
+// path()) and returns it. A link, FIFO or device at the name of a folder to create is replaced by
+// the folder, never followed, so nothing is created outside `root`; a regular file there is an
+// InputError naming it. `relative` must be relative and free of "." and ".." (std::logic_error).
+std::filesystem::path CreateFolderInside(const std::filesystem::path& root, const std::filesystem::path& relative);
+
+// A file the process writes for its own use and never keeps (rpt bench's HDF5 round trip, the parts
+// of predictions.json): created
 // empty and registered as `<name_like>.tmp-<pid>-<n>` (so Ctrl-C removes it like the temporaries
 // above) and removed by the destructor on every other way out, an exception included.
 class ScratchFile {

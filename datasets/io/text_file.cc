@@ -8,8 +8,9 @@
 
 namespace rpt::io {
 
-void WriteTextFile(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write) {
-  StagedFile staged(path);
+void WriteTextFile(const std::filesystem::path& path, NamedBy named_by,
+                   const std::function<void(std::ostream&)>& write) {
+  StagedFile staged(path, named_by);
   std::ofstream out(staged.path(), std::ios::binary | std::ios::trunc);
   if (!out) throw InputError(path.string() + ": cannot open for writing");
   write(out);
@@ -18,8 +19,9 @@ void WriteTextFile(const std::filesystem::path& path, const std::function<void(s
   staged.Commit();
 }
 
-void WriteTextFile(const std::filesystem::path& path, const std::string& text) {
-  WriteTextFile(path, [&text](std::ostream& out) { out.write(text.data(), static_cast<std::streamsize>(text.size())); });
+void WriteTextFile(const std::filesystem::path& path, NamedBy named_by, const std::string& text) {
+  WriteTextFile(path, named_by,
+                [&text](std::ostream& out) { out.write(text.data(), static_cast<std::streamsize>(text.size())); });
 }
 
 }  // namespace rpt::io

@@ -11,13 +11,17 @@
 #include <ostream>
 #include <string>
 
+#include "datasets/io/staged_output.h"
+
 namespace rpt::io {
 
-// Writes `text` to `path`, replacing it. Throws InputError naming the file when it cannot be
-// opened, written or closed (e.g. a full disk); the old file is then left as it was.
-void WriteTextFile(const std::filesystem::path& path, const std::string& text);
+// Writes `text` to `path`, replacing it (a link there is replaced, never written through; what
+// `named_by` changes: io::NamedBy). Throws InputError naming the file when it cannot be opened,
+// written or closed (e.g. a full disk); the old file is then left as it was.
+void WriteTextFile(const std::filesystem::path& path, NamedBy named_by, const std::string& text);
 
 // The same for text too large to build in memory first: `write` streams it into the stream.
-void WriteTextFile(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write);
+void WriteTextFile(const std::filesystem::path& path, NamedBy named_by,
+                   const std::function<void(std::ostream&)>& write);
 
 }  // namespace rpt::io

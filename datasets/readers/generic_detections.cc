@@ -175,7 +175,7 @@ int WriteGenericDetections(const std::filesystem::path& path, const Detections& 
     text += f + 1 < detections.frames.size() ? ",\n" : "\n";
   }
   text += "]}\n";
-  io::WriteTextFile(path, text);
+  io::WriteTextFile(path, io::NamedBy::kUser, text);
   return replaced;
 }
 

@@ -424,7 +424,7 @@ int WriteLabels(const std::filesystem::path& path, const std::vector<Sequence>& 
     }
   }
   int replaced = 0;
-  io::WriteTextFile(path, generic_internal::DumpListOnePerLine(labels, &replaced));
+  io::WriteTextFile(path, io::NamedBy::kUser, generic_internal::DumpListOnePerLine(labels, &replaced));
   return replaced;
 }
 

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "core/text.h"
+#include "engine/outputs/text_escaping.h"
 
 namespace rpt::engine {
 namespace {
@@ -29,17 +30,18 @@ void PrintErrorRow(const char* name, const ErrorSummary& s) {
 }  // namespace
 
 void PrintDetectorStatsMarkdown(const DetectorStats& s, const std::string& input) {
-  std::printf("# Detector statistics: %s\n\n", input.c_str());
-  std::printf("Statistic joints: %s. Box: the projected GT statistic joints, clipped to the image; errors are\n"
-              "pixel distances divided by its diagonal (box units).\n\n",
-              Join(s.joints).c_str());
+  std::printf("# Detector statistics: %s\n\n", MarkdownText(input).c_str());
+  std::printf(
+      "Statistic joints: %s. Box: the projected GT statistic joints, clipped to the image; errors are\n"
+      "pixel distances divided by its diagonal (box units).\n\n",
+      MarkdownText(Join(s.joints)).c_str());
   std::printf("## Detection per view\n\n");
   std::printf("| camera | views | GT persons in view | detected | rate | detections | exact duplicates | false positives | per view | near a GT person | on 2D-only persons |\n");
   std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   auto row = [](const ViewStats& v) {
-    std::printf("| %s | %ld | %ld | %ld | %s | %ld | %ld | %ld | %.3f | %ld | %ld |\n", v.camera.c_str(), v.views,
-                v.gt_in_view, v.detected, Percent(v.detection_rate()).c_str(), v.detections, v.duplicates, v.false_positives,
-                v.false_positives_per_view(), v.false_positives_near_gt, v.on_unlabelled);
+    std::printf("| %s | %ld | %ld | %ld | %s | %ld | %ld | %ld | %.3f | %ld | %ld |\n", MarkdownText(v.camera).c_str(),
+                v.views, v.gt_in_view, v.detected, Percent(v.detection_rate()).c_str(), v.detections, v.duplicates,
+                v.false_positives, v.false_positives_per_view(), v.false_positives_near_gt, v.on_unlabelled);
   };
   for (const ViewStats& v : s.views) row(v);
   row(s.total);
@@ -105,10 +107,11 @@ void PrintDetectorStatsMarkdown(const DetectorStats& s, const std::string& input
   std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   auto share = [](long a, long b) { return Percent(b > 0 ? static_cast<double>(a) / b : 0); };
   for (const detector_stats::JointStats& p : s.per_joint) {
-    std::printf("| %s | %ld | %.3f | %.3f | %s | %s | %s | %.3f | %+.3f | %+.3f | %+.3f | %+.3f |\n", p.joint.c_str(),
-                p.error.count, p.error.median, p.error.p90, share(p.missing, p.in_image).c_str(),
-                share(p.hidden, p.in_image).c_str(), share(p.hidden_missing, p.hidden).c_str(), p.confidence_mean, p.down_mean,
-                p.down_median, p.out_mean, p.out_median);
+    std::printf("| %s | %ld | %.3f | %.3f | %s | %s | %s | %.3f | %+.3f | %+.3f | %+.3f | %+.3f |\n",
+                MarkdownText(p.joint).c_str(), p.error.count, p.error.median, p.error.p90,
+                share(p.missing, p.in_image).c_str(), share(p.hidden, p.in_image).c_str(),
+                share(p.hidden_missing, p.hidden).c_str(), p.confidence_mean, p.down_mean, p.down_median, p.out_mean,
+                p.out_median);
   }
 }
 

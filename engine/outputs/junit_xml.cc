@@ -2,29 +2,10 @@
 #include "engine/outputs/junit_xml.h"
 
 #include "core/errors.h"
-#include "datasets/io/json_output.h"
+#include "engine/outputs/text_escaping.h"
 #include "datasets/io/text_file.h"
 
 namespace rpt::engine {
-
-std::string XmlEscape(std::string_view raw) {
-  const std::string text = io::ValidUtf8(std::string(raw));  // XML must be valid UTF-8 (a path from the file system may not be)
-  std::string out;
-  out.reserve(text.size());
-  for (const char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\n' && c != '\r') break;
-        out += c;
-    }
-  }
-  return out;
-}
 
 std::string JunitXml(const std::string& suite_name, const std::vector<JunitCase>& cases) {
   int failures = 0, errors = 0, skipped = 0;
@@ -36,10 +17,10 @@ std::string JunitXml(const std::string& suite_name, const std::vector<JunitCase>
   const std::string counts = " tests=\"" + std::to_string(cases.size()) + "\" failures=\"" + std::to_string(failures) +
                              "\" errors=\"" + std::to_string(errors) + "\" skipped=\"" + std::to_string(skipped) + "\"";
   std::string xml = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-  xml += "<testsuites name=\"" + XmlEscape(suite_name) + "\"" + counts + ">\n";
-  xml += "  <testsuite name=\"" + XmlEscape(suite_name) + "\"" + counts + ">\n";
+  xml += "<testsuites name=\"" + XmlText(suite_name) + "\"" + counts + ">\n";
+  xml += "  <testsuite name=\"" + XmlText(suite_name) + "\"" + counts + ">\n";
   for (const JunitCase& c : cases) {
-    xml += "    <testcase classname=\"" + XmlEscape(c.classname) + "\" name=\"" + XmlEscape(c.name) + "\"";
+    xml += "    <testcase classname=\"" + XmlText(c.classname) + "\" name=\"" + XmlText(c.name) + "\"";
     const char* element = c.outcome == JunitCase::Outcome::kFailure ? "failure"
                           : c.outcome == JunitCase::Outcome::kError ? "error"
                           : c.outcome == JunitCase::Outcome::kSkipped ? "skipped"
@@ -48,7 +29,7 @@ std::string JunitXml(const std::string& suite_name, const std::vector<JunitCase>
       xml += "/>\n";
       continue;
     }
-    xml += ">\n      <" + std::string(element) + " message=\"" + XmlEscape(c.message) + "\"/>\n    </testcase>\n";
+    xml += ">\n      <" + std::string(element) + " message=\"" + XmlText(c.message) + "\"/>\n    </testcase>\n";
   }
   xml += "  </testsuite>\n</testsuites>\n";
   return xml;
@@ -56,7 +37,7 @@ std::string JunitXml(const std::string& suite_name, const std::vector<JunitCase>
 
 void WriteJunitXml(const std::filesystem::path& path, const std::string& suite_name,
                    const std::vector<JunitCase>& cases) {
-  io::WriteTextFile(path, JunitXml(suite_name, cases));
+  io::WriteTextFile(path, io::NamedBy::kUser, JunitXml(suite_name, cases));
 }
 
 }  // namespace rpt::engine

@@ -17,11 +17,7 @@ struct JunitCase {
   std::string message;    // why it failed / errored / was skipped
 };
 
-// `text` with & < > " ' as entities and the characters XML 1.0 forbids (controls other than tab,
-// newline, carriage return) dropped, bytes that are not valid UTF-8 as U+FFFD: safe in text and in
-// quoted attributes.
-std::string XmlEscape(std::string_view text);
-
+// Every name and message goes through XmlText (engine/outputs/text_escaping.h).
 // <testsuites><testsuite name=suite_name tests failures errors skipped><testcase .../>...</testsuite></testsuites>.
 std::string JunitXml(const std::string& suite_name, const std::vector<JunitCase>& cases);
 

@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "core/errors.h"
+#include "datasets/io/staged_output.h"
 #include "datasets/io/text_file.h"
 
 namespace rpt::engine {
@@ -13,18 +14,16 @@ PartFiles::PartFiles(std::filesystem::path target, int num_sequences)
     : target_(std::move(target)), parts_(static_cast<size_t>(num_sequences)) {}
 
 PartFiles::~PartFiles() {
-  for (Part& part : parts_) {
-    if (part.path.empty()) continue;
-    part.out.close();
-    std::error_code ec;
-    std::filesystem::remove(part.path, ec);
-  }
+  for (Part& part : parts_) part.out.close();  // before the scratch files go
 }
 
 std::ostream& PartFiles::Open(int sequence) {
   Part& part = parts_[sequence];
-  part.path = target_;
-  part.path += ".part-" + std::to_string(sequence);
+  std::filesystem::path name_like = target_;
+  name_like += ".part-" + std::to_string(sequence);
+  // A new scratch file (never an existing name, so never through a link), removed with the parts.
+  part.scratch = std::make_unique<io::ScratchFile>(name_like);
+  part.path = part.scratch->path();
   part.out.open(part.path, std::ios::binary | std::ios::trunc);
   if (!part.out) throw InputError(part.path.string() + ": cannot open for writing: " + std::strerror(errno));
   return part.out;
@@ -38,7 +37,7 @@ void PartFiles::Close(int sequence) {
 }
 
 void PartFiles::Join(const std::string& head, const std::string& tail) {
-  io::WriteTextFile(target_, [&](std::ostream& out) {
+  io::WriteTextFile(target_, io::NamedBy::kRpt, [&](std::ostream& out) {
     out << head;
     for (const Part& part : parts_) {
       if (part.path.empty()) continue;

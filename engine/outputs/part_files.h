@@ -6,8 +6,11 @@
 
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <string>
 #include <vector>
+
+#include "datasets/io/staged_output.h"
 
 namespace rpt::engine {
 
@@ -28,6 +31,7 @@ class PartFiles {
 
  private:
   struct Part {
+    std::unique_ptr<io::ScratchFile> scratch;
     std::filesystem::path path;
     std::ofstream out;
   };

@@ -8,6 +8,7 @@
 
 #include "core/errors.h"
 #include "datasets/io/json_output.h"
+#include "datasets/io/staged_output.h"
 #include "datasets/io/text_file.h"
 
 namespace rpt::engine {
@@ -27,8 +28,11 @@ void WriteNumber(std::ostream& out, double value, int decimals) {
 
 }  // namespace
 
-// One sequence's frames, as the JSON text of the "frames" list (without the brackets).
+// One sequence's frames, as the JSON text of the "frames" list (without the brackets), in a scratch
+// file of its own (created new, so a link planted at its name in an old run folder is never written
+// through; removed on every way out, Ctrl-C included).
 struct PredictionsWriter::Part {
+  std::unique_ptr<io::ScratchFile> scratch;  // declared before `out`: closed after it
   std::filesystem::path path;
   std::ofstream out;
   JointNames joints;
@@ -45,19 +49,14 @@ PredictionsWriter::PredictionsWriter(std::filesystem::path path, std::string run
   parts_.resize(static_cast<size_t>(num_sequences));
 }
 
-PredictionsWriter::~PredictionsWriter() {
-  for (const auto& part : parts_) {
-    if (part == nullptr) continue;
-    part->out.close();
-    std::error_code ec;
-    std::filesystem::remove(part->path, ec);
-  }
-}
+PredictionsWriter::~PredictionsWriter() = default;
 
 void PredictionsWriter::BeginSequence(int sequence, const SequenceHeader& header, const JointNames& output_joints) {
   auto part = std::make_unique<Part>();
-  part->path = path_;
-  part->path += ".part-" + std::to_string(sequence);
+  std::filesystem::path name_like = path_;
+  name_like += ".part-" + std::to_string(sequence);
+  part->scratch = std::make_unique<io::ScratchFile>(name_like);
+  part->path = part->scratch->path();
   part->out.open(part->path, std::ios::binary | std::ios::trunc);
   if (!part->out) throw InputError(part->path.string() + ": cannot open for writing: " + std::strerror(errno));
   part->joints = output_joints;
@@ -116,12 +115,12 @@ int PredictionsWriter::Finish() {
   for (const auto& part : parts_) {
     if (part != nullptr && joints.empty()) joints = part->joints;
   }
-  io::WriteTextFile(path_, [&](std::ostream& out) {
-    Json sequences = Json::array();
-    for (const auto& part : parts_) {
-      if (part == nullptr) continue;
-      sequences.push_back({{"name", part->name}, {"frames", part->frames}, {"fps", part->fps > 0 ? Json(part->fps) : Json()}});
-    }
+  Json sequences = Json::array();
+  for (const auto& part : parts_) {
+    if (part == nullptr) continue;
+    sequences.push_back({{"name", part->name}, {"frames", part->frames}, {"fps", part->fps > 0 ? Json(part->fps) : Json()}});
+  }
+  io::WriteTextFile(path_, io::NamedBy::kRpt, [&](std::ostream& out) {
     out << "{\"run_id\": " << io::DumpJson(Json(run_id_), -1, &replaced)
         << ", \"joints\": " << io::DumpJson(Json(joints), -1, &replaced)
         << ",\n\"units\": {\"position\": \"m\", \"time\": \"s\", \"score\": \"1\"}, \"provenance_names\": "
@@ -139,12 +138,7 @@ int PredictionsWriter::Finish() {
     }
     out << "\n]}\n";
   });
-  for (auto& part : parts_) {
-    if (part == nullptr) continue;
-    std::error_code ec;
-    std::filesystem::remove(part->path, ec);
-    part.reset();
-  }
+  for (auto& part : parts_) part.reset();  // the scratch files go
   return replaced;
 }
 

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "engine/outputs/step_tables.h"
+#include "engine/outputs/text_escaping.h"
 #include "core/errors.h"
 #include "core/text.h"
 #include "datasets/io/json_output.h"
@@ -59,13 +60,6 @@ std::vector<std::string> LegacyPcpKeys(const std::vector<std::pair<std::string, 
 }
 
 }  // namespace
-
-std::string CsvField(const std::string& text) {
-  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
-  std::string quoted = "\"";
-  for (const char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return quoted + "\"";
-}
 
 const std::vector<SummaryColumn>& SummaryColumns() {
   static const std::vector<SummaryColumn> columns = {
@@ -228,7 +222,7 @@ std::string SummaryMarkdown(const std::vector<std::pair<std::string, Json>>& row
   for (size_t i = 0; i < keys.size(); ++i) out << "---|";
   out << "\n";
   for (const auto& [label, j] : rows) {
-    out << "| " << label << " |";
+    out << "| " << MarkdownText(label) << " |";
     for (const std::string& key : keys) out << " " << (j.contains(key) ? Cell(j[key], key == "fps" ? 0 : 1) : "-") << " |";
     out << "\n";
   }
@@ -244,7 +238,7 @@ std::string SummaryMarkdown(const std::vector<std::pair<std::string, Json>>& row
   for (size_t i = 0; i < legacy.size(); ++i) out << "---|";
   out << "\n";
   for (const auto& [label, j] : rows) {
-    out << "| " << label << " |";
+    out << "| " << MarkdownText(label) << " |";
     for (const std::string& key : legacy) out << " " << (j.contains(key) ? Cell(j[key], 1) : "-") << " |";
     out << "\n";
   }
@@ -286,7 +280,7 @@ void WriteRunFiles(const std::filesystem::path& staging, const RunResult& run, c
   const auto write_json = [&](const std::string& name, const Json& value) {
     int count = 0;
     const std::string text = io::DumpJson(value, 2, &count) + "\n";
-    io::WriteTextFile(staging / name, text);
+    io::WriteTextFile(staging / name, io::NamedBy::kRpt, text);
     if (count > 0) replaced->emplace_back(name, count);
   };
   Json summary;
@@ -295,8 +289,8 @@ void WriteRunFiles(const std::filesystem::path& staging, const RunResult& run, c
   summary.update(extra_summary);
   write_json("summary.json", summary);
   if (!run.evaluated) {  // no metrics: no summary tables, no per-joint errors
-    io::WriteTextFile(staging / "steps.csv", StepsCsv(run.timing, run.counts));
-    io::WriteTextFile(staging / "config.json", DumpConfig(config, /*with_comments=*/false));
+    io::WriteTextFile(staging / "steps.csv", io::NamedBy::kRpt, StepsCsv(run.timing, run.counts));
+    io::WriteTextFile(staging / "config.json", io::NamedBy::kRpt, DumpConfig(config, /*with_comments=*/false));
     write_json("run.json", RunInfoJson(info));  // last: the marker of a complete run
     return;
   }
@@ -310,19 +304,20 @@ void WriteRunFiles(const std::filesystem::path& staging, const RunResult& run, c
   if (run.sequences.size() > 1) {
     for (const SequenceResult& sequence : run.sequences) rows.emplace_back(sequence.name, SequenceSummaryJson(sequence));
   }
-  io::WriteTextFile(staging / "summary.csv", SummaryCsv(rows));
-  io::WriteTextFile(staging / "summary.md", SummaryMarkdown(rows) + "\nRevision " + info.git_revision + ", " + info.cpu +
-                                                ", " + std::to_string(info.threads) + " thread(s). Command: `" +
-                                                info.command_line + "`\n");
+  io::WriteTextFile(staging / "summary.csv", io::NamedBy::kRpt, SummaryCsv(rows));
+  io::WriteTextFile(staging / "summary.md", io::NamedBy::kRpt,
+                    SummaryMarkdown(rows) + "\nRevision " + MarkdownText(info.git_revision) + ", " +
+                        MarkdownText(info.cpu) + ", " + std::to_string(info.threads) +
+                        " thread(s). Command: " + MarkdownCode(info.command_line) + "\n");
   std::ostringstream joints;
   joints << "joint,mean_error_mm,pck100_pct,count,num_gt\n";
   for (const auto& row : run.metrics.joints) {
     joints << CsvField(row.name) << "," << Cell(Number(row.mean_error_mm), 2) << "," << Cell(Number(row.pck_100), 2) << ","
            << row.count << "," << row.num_gt << "\n";
   }
-  io::WriteTextFile(staging / "per_joint.csv", joints.str());
-  io::WriteTextFile(staging / "steps.csv", StepsCsv(run.timing, run.counts));
-  io::WriteTextFile(staging / "config.json", DumpConfig(config, /*with_comments=*/false));
+  io::WriteTextFile(staging / "per_joint.csv", io::NamedBy::kRpt, joints.str());
+  io::WriteTextFile(staging / "steps.csv", io::NamedBy::kRpt, StepsCsv(run.timing, run.counts));
+  io::WriteTextFile(staging / "config.json", io::NamedBy::kRpt, DumpConfig(config, /*with_comments=*/false));
   write_json("run.json", RunInfoJson(info));  // last: the marker of a complete run
 }
 

@@ -49,8 +49,7 @@ nlohmann::ordered_json SequenceSummaryJson(const SequenceResult& sequence);
 // CSV / Markdown tables with one row per (label, summary). When a row has a legacy PCP, the CSV
 // gains the columns legacy_pcp, legacy_pcp_actor1, ... after the fixed ones, and the Markdown a
 // second table in the papers' layout: Actor 1 | Actor 2 | ... | Average.
-// A CSV field (RFC 4180): quoted, with inner quotes doubled, when it holds a comma, quote or line break.
-std::string CsvField(const std::string& text);
+// Labels go through the tables' escaping (CsvField, MarkdownText: engine/outputs/text_escaping.h).
 std::string SummaryCsv(const std::vector<std::pair<std::string, nlohmann::ordered_json>>& rows);
 std::string SummaryMarkdown(const std::vector<std::pair<std::string, nlohmann::ordered_json>>& rows);
 

@@ -7,8 +7,10 @@
 #include <sstream>
 #include <vector>
 
+#include "core/utf8.h"
 #include "engine/json_text.h"
 #include "engine/outputs/results_writer.h"
+#include "engine/outputs/text_escaping.h"
 
 namespace rpt::engine {
 namespace {
@@ -42,30 +44,15 @@ std::string TitleOf(const std::string& key) {
   return key == "legacy_pcp" ? "Legacy PCP (%)" : key;
 }
 
-std::string Escape(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      case '\'':
-        out += "&apos;";
-        break;
-      default:
-        out += c;
-    }
+// `name` cut to at most `max_characters` characters with "..." (whole UTF-8 characters: a cut
+// never splits one; bytes that are not valid UTF-8 count as one character each).
+std::string Shortened(const std::string& name, size_t max_characters) {
+  size_t characters = 0, cut = 0;
+  for (size_t i = 0; i < name.size(); ++characters) {
+    if (characters == max_characters - 1) cut = i;
+    i += std::max<size_t>(Utf8SequenceLength(name, i), 1);
   }
-  return out;
+  return characters <= max_characters ? name : name.substr(0, cut) + "...";
 }
 
 std::string Fixed(double value, int decimals) {
@@ -113,13 +100,13 @@ std::string BarChart(const Json& rows, const Headline& metric, size_t baseline) 
   for (size_t i = 0; i < rows.size(); ++i) {
     const Json& row = rows[i];
     const std::string name = row.at("name").get<std::string>();
-    const std::string shown = name.size() > 48 ? name.substr(0, 47) + "..." : name;
+    const std::string shown = Shortened(name, 48);
     const int y = static_cast<int>(i) * kRowHeight + 3;
     const double v = Value(row, metric.key);
     const std::string verdict = i == baseline ? "baseline" : Verdict(v - base_value, metric);
-    svg << "<g class=\"bar " << verdict << "\"><title>" << Escape(name) << ": "
+    svg << "<g class=\"bar " << verdict << "\"><title>" << HtmlText(name) << ": "
         << (std::isfinite(v) ? Fixed(v, DecimalsOf(metric.key)) : "-") << "</title>";
-    svg << "<text x=\"" << kLabelWidth - 6 << "\" y=\"" << y + 12 << "\" text-anchor=\"end\">" << Escape(shown)
+    svg << "<text x=\"" << kLabelWidth - 6 << "\" y=\"" << y + 12 << "\" text-anchor=\"end\">" << HtmlText(shown)
         << "</text>";
     if (std::isfinite(v)) {
       const double w = std::max(0.0, v) / max_value * kBarWidth;
@@ -187,28 +174,28 @@ std::string SweepHtml(const Json& sweep) {
           "line.baseline-mark { stroke: #1f77b4; stroke-dasharray: 4 3; }\n"
           "</style>\n</head>\n<body>\n<h1>rpt sweep</h1>\n";
   html << "<p>" << rows.size() << " configuration(s). Deltas against <b>"
-       << Escape(rows.empty() ? "" : rows[baseline.row].at("name").get<std::string>()) << "</b>";
+       << HtmlText(rows.empty() ? "" : rows[baseline.row].at("name").get<std::string>()) << "</b>";
   html << (baseline.is_default ? " (the default configuration: no override changes an option)"
                                : " (the first row: no configuration equals the default)")
        << "; green is better, red is worse. Grey option values are inherited from the base configuration.</p>\n";
   if (sweep.contains("run") && sweep["run"].contains("command")) {
-    html << "<p>Command: <code>" << Escape(JsonValueText(sweep["run"]["command"])) << "</code></p>\n";
+    html << "<p>Command: <code>" << HtmlText(JsonValueText(sweep["run"]["command"])) << "</code></p>\n";
   }
   html << "<table id=\"sweep\">\n<thead>\n<tr><th class=\"name\">configuration</th>";
-  for (const std::string& option : options) html << "<th class=\"option\">" << Escape(option) << "</th>";
-  for (const Headline& h : metrics) html << "<th>" << Escape(TitleOf(h.key)) << "</th>";
+  for (const std::string& option : options) html << "<th class=\"option\">" << HtmlText(option) << "</th>";
+  for (const Headline& h : metrics) html << "<th>" << HtmlText(TitleOf(h.key)) << "</th>";
   html << "</tr>\n</thead>\n<tbody>\n";
   for (size_t i = 0; i < rows.size(); ++i) {
     const Json& row = rows[i];
     html << "<tr data-row=\"" << i << "\"" << (i == baseline.row ? " class=\"baseline\"" : "") << ">";
-    html << "<td class=\"name\">" << Escape(row.at("name").get<std::string>()) << "</td>";
+    html << "<td class=\"name\">" << HtmlText(row.at("name").get<std::string>()) << "</td>";
     const Json set = row.value("set", Json::object());
     for (const std::string& option : options) {
       if (set.contains(option)) {
-        html << "<td class=\"option\">" << Escape(JsonValueText(set[option])) << "</td>";
+        html << "<td class=\"option\">" << HtmlText(JsonValueText(set[option])) << "</td>";
       } else {
-        html << "<td class=\"option inherited\">" << (base.contains(option) ? Escape(JsonValueText(base[option])) : "")
-             << "</td>";
+        html << "<td class=\"option inherited\">"
+             << (base.contains(option) ? HtmlText(JsonValueText(base[option])) : "") << "</td>";
       }
     }
     for (const Headline& h : metrics) {
@@ -232,7 +219,7 @@ std::string SweepHtml(const Json& sweep) {
   html << "</tbody>\n</table>\n<h2>Headline metrics</h2>\n<div class=\"charts\">\n";
   for (const Headline& h : metrics) {
     if (rows.empty()) break;
-    html << "<figure>\n<figcaption>" << Escape(TitleOf(h.key)) << ", "
+    html << "<figure>\n<figcaption>" << HtmlText(TitleOf(h.key)) << ", "
          << (h.higher_is_better ? "higher is better" : "lower is better") << "</figcaption>\n"
          << BarChart(rows, h, baseline.row) << "\n</figure>\n";
   }

@@ -7,20 +7,11 @@
 #include <cstring>
 
 #include "core/errors.h"
+#include "datasets/io/staged_output.h"
 #include "datasets/io/text_file.h"
+#include "engine/outputs/file_names.h"
 
 namespace rpt::engine {
-namespace {
-
-std::string FileName(std::string name) {
-  for (char& c : name) {
-    if (c == '/' || c == '\\') c = '_';
-  }
-  return name.empty() ? "sequence" : name;
-}
-
-}  // namespace
-
 TrcExport::TrcExport(std::filesystem::path dir, int num_sequences, ExportOptions options)
     : dir_(std::move(dir)), options_(std::move(options)), sequences_(static_cast<size_t>(num_sequences)) {}
 
@@ -42,7 +33,7 @@ long TrcExport::files() const {
 
 void TrcExport::BeginSequence(int sequence, const SequenceHeader& header, const JointNames& output_joints) {
   Sequence& s = sequences_[sequence];
-  s.name = FileName(header.name);
+  s.name = FileNameOf(header.name);  // one-to-one, never a path
   s.joints = output_joints;
   s.fps = header.fps;
   std::error_code ec;
@@ -54,7 +45,9 @@ std::ofstream& TrcExport::TrackStream(Sequence* s, int track_id, long frame_idx,
   auto [it, created] = s->tracks.try_emplace(track_id);
   Track& track = it->second;
   if (created) {
-    track.part = dir_ / (s->name + "_track" + std::to_string(track_id) + ".trc.part");
+    // A new scratch file (never an existing name, so never through a link), removed with the track.
+    track.scratch = std::make_unique<io::ScratchFile>(dir_ / (s->name + "_track" + std::to_string(track_id) + ".trc.part"));
+    track.part = track.scratch->path();
     track.first_frame = frame_idx;
     track.first_time_s = time_s;
   }
@@ -119,7 +112,7 @@ void TrcExport::WriteFile(const Sequence& s, int track_id, const Track& track) c
     rate = (track.rows - 1) / (track.last_time_s - track.first_time_s);
   }
   char line[256];
-  io::WriteTextFile(dir_ / name, [&](std::ostream& out) {
+  io::WriteTextFile(dir_ / name, io::NamedBy::kRpt, [&](std::ostream& out) {
     out << "PathFileType\t4\t(X/Y/Z)\t" << name << "\n";
     out << "DataRate\tCameraRate\tNumFrames\tNumMarkers\tUnits\tOrigDataRate\tOrigDataStartFrame\tOrigNumFrames\n";
     std::snprintf(line, sizeof(line), "%.6g\t%.6g\t%ld\t%zu\t%s\t%.6g\t%ld\t%ld\n", rate, rate, track.rows,
@@ -147,8 +140,6 @@ void TrcExport::EndSequence(int sequence) {
   s.open = 0;
   for (auto& [id, track] : s.tracks) {
     WriteFile(s, id, track);
-    std::error_code ec;
-    std::filesystem::remove(track.part, ec);
     ++s.files;
   }
   s.tracks.clear();

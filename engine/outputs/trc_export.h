@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "datasets/io/staged_output.h"
 #include "engine/frame_sink.h"
 #include "engine/outputs/export_options.h"
 
@@ -47,7 +48,8 @@ class TrcExport final : public FrameSink {
 
  private:
   struct Track {
-    std::filesystem::path part;
+    std::unique_ptr<io::ScratchFile> scratch;  // the rows so far
+    std::filesystem::path part;                // its path
     std::unique_ptr<std::ofstream> out;  // null while closed
     long rows = 0;
     long first_frame = 0;

@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <cstdint>
 #include <cstdio>
+#include <unordered_set>
 
 #include "core/closest_name.h"
 #include "core/errors.h"
@@ -124,14 +126,6 @@ std::string ImagePath(const std::string& pattern, const std::string& camera, int
     i = close;
   }
   return out;
-}
-
-std::string FileNameOf(const std::string& text) {
-  std::string out = text;
-  for (char& c : out) {
-    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '-' && c != '_') c = '_';
-  }
-  return out.empty() || out == "." || out == ".." ? "_" : out;
 }
 
 }  // namespace rpt::engine

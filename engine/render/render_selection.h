@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/camera.h"
+#include "engine/outputs/file_names.h"
 
 namespace rpt::engine {
 
@@ -36,9 +37,5 @@ std::vector<int> SelectCameras(const std::vector<std::string>& selection, const 
 // ConfigError naming --images.
 std::string ImagePath(const std::string& pattern, const std::string& camera, int camera_idx,
                       const std::string& frame_id, long frame_idx);
-
-// `text` with every character other than letters, digits, '.', '-' and '_' replaced by '_' (frame
-// ids and camera names as file names); "", "." and ".." become "_".
-std::string FileNameOf(const std::string& text);
 
 }  // namespace rpt::engine

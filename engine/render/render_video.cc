@@ -5,10 +5,11 @@
 
 namespace rpt::engine {
 
-Mp4Writer::Mp4Writer(const std::filesystem::path& path, cv::Size size, double fps) {
+Mp4Writer::Mp4Writer(const std::filesystem::path& path, cv::Size size, double fps)
+    : file_(path, io::NamedBy::kRpt, /*keep_extension=*/true) {
   for (const char* codec : {"avc1", "mp4v"}) {
     const int fourcc = cv::VideoWriter::fourcc(codec[0], codec[1], codec[2], codec[3]);
-    if (writer_.open(path.string(), cv::CAP_FFMPEG, fourcc, fps, size)) {
+    if (writer_.open(file_.path().string(), cv::CAP_FFMPEG, fourcc, fps, size)) {
       codec_ = codec;
       return;
     }
@@ -20,6 +21,11 @@ Mp4Writer::Mp4Writer(const std::filesystem::path& path, cv::Size size, double fp
 void Mp4Writer::Write(const cv::Mat& frame) {
   writer_.write(frame);
   ++frames_;
+}
+
+void Mp4Writer::Finish() {
+  writer_.release();
+  file_.Commit();
 }
 
 }  // namespace rpt::engine

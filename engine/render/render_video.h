@@ -9,8 +9,13 @@
 #include <opencv2/videoio.hpp>
 #include <string>
 
+#include "datasets/io/staged_output.h"
+
 namespace rpt::engine {
 
+// The video is written under a temporary name beside `path` (io::StagedFile, ending in .mp4 so that
+// FFmpeg picks the container) and renamed over `path` by Finish(): an interrupted render leaves the
+// previous video intact, and a link at `path` is replaced, never written through.
 class Mp4Writer {
  public:
   // Opens `path` for frames of `size` at `fps`; throws InputError naming the file when no codec
@@ -18,11 +23,14 @@ class Mp4Writer {
   Mp4Writer(const std::filesystem::path& path, cv::Size size, double fps);
   // Appends one frame (BGR, 8 bit, the size given at construction).
   void Write(const cv::Mat& frame);
+  // Closes the video and puts it in place; throws InputError naming the file.
+  void Finish();
   // The fourcc in use: "avc1" or "mp4v".
   const std::string& codec() const { return codec_; }
   long frames() const { return frames_; }
 
  private:
+  io::StagedFile file_;
   cv::VideoWriter writer_;
   std::string codec_;
   long frames_ = 0;

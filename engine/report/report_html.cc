@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "core/errors.h"
+#include "engine/outputs/text_escaping.h"
 #include "report_assets.h"
 
 namespace rpt::engine {
@@ -32,12 +33,6 @@ std::string ReadLibrary(const Library& library) {
   std::stringstream text;
   text << in.rdbuf();
   return text.str();
-}
-
-// Text placed inside <script>: "</script" (any case) would end the element early.
-std::string ScriptSafe(std::string text) {
-  for (size_t at = text.find("</"); at != std::string::npos; at = text.find("</", at + 3)) text.replace(at, 2, "<\\/");
-  return text;
 }
 
 void ReplaceOnce(std::string* text, std::string_view marker, const std::string& with) {
@@ -68,7 +63,10 @@ std::string ReportHtml(const nlohmann::ordered_json& data) {
   ReplaceOnce(&page, "/*RPT_STYLE*/", std::string(assets::kReportCss));
   ReplaceOnce(&page, "<!--RPT_LIBRARIES-->", libraries);
   ReplaceOnce(&page, "/*RPT_SCRIPT*/", std::string(assets::kReportJs));
-  ReplaceOnce(&page, "/*RPT_DATA*/", ScriptSafe(data.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace)));
+  // Names from the input (cameras, scenes, frame ids, joints, paths) are in there: ScriptJson keeps
+  // "<!--<script>" or "</script" in one of them from ending or changing the element.
+  ReplaceOnce(&page, "/*RPT_DATA*/",
+              ScriptJson(data.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace)));
   return page;
 }
 

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/errors.h"
+#include "engine/outputs/text_escaping.h"
 #include "datasets/io/json_file.h"
 
 namespace rpt::engine {
@@ -36,9 +37,11 @@ Json ReadPerJoint(const std::filesystem::path& path) {
     ++line_number;
     if (line_number == 1 || line.empty()) continue;
     std::vector<std::string> fields;
-    std::stringstream s(line);
-    std::string field;
-    while (std::getline(s, field, ',')) fields.push_back(field);
+    try {
+      fields = SplitCsvLine(line);  // the writer's quoting (a joint name may hold a comma)
+    } catch (const std::invalid_argument& e) {
+      throw InputError(path.string() + ":" + std::to_string(line_number) + ": " + e.what());
+    }
     if (fields.size() != 5) {
       throw InputError(path.string() + ":" + std::to_string(line_number) + ": expected 5 fields, found " +
                        std::to_string(fields.size()));

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "engine/outputs/junit_xml.h"
+#include "engine/outputs/text_escaping.h"
 #include "engine/outputs/results_writer.h"
 #include "datasets/readers/hdf5_cache.h"
 #include "tests/cli/cli_test_util.h"
@@ -324,8 +325,8 @@ TEST(AtomicOutputs, FullStandardOutputIsAnError) {
 }
 
 TEST(AtomicOutputs, JunitXmlReplacesInvalidUtf8) {
-  EXPECT_EQ(engine::XmlEscape("a\xff<b"), "a\xef\xbf\xbd&lt;b");
-  EXPECT_EQ(engine::XmlEscape("caf\xc3\xa9"), "caf\xc3\xa9");  // valid UTF-8 untouched
+  EXPECT_EQ(engine::XmlText("a\xff<b"), "a\xef\xbf\xbd&lt;b");
+  EXPECT_EQ(engine::XmlText("caf\xc3\xa9"), "caf\xc3\xa9");  // valid UTF-8 untouched
 }
 
 }  // namespace

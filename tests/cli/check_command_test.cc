@@ -139,15 +139,17 @@ TEST_F(CheckCommandTest, JunitHasOneWellFormedTestcasePerCheck) {
   EXPECT_NE(suite.children[4].children[0].attributes.at("message").find("broken_labels.json"), std::string::npos);
 }
 
-TEST(JunitXml, EscapesMarkupAndDropsCharactersXmlForbids) {
+// Characters XML 1.0 forbids are written visibly as \xNN (XmlText), no longer dropped: a name
+// keeps telling two cases apart.
+TEST(JunitXml, EscapesMarkupAndShowsCharactersXmlForbids) {
   const std::string xml = engine::JunitXml("suite & <co>", {{"a\x01 \"b\"", "c 'd' </testcase>", engine::JunitCase::Outcome::kFailure,
                                                           "x < y && \x1f z > w"}});
   const test::XmlElement root = test::XmlReader::Parse(xml);
   EXPECT_EQ(root.attributes.at("name"), "suite & <co>");
   const test::XmlElement& testcase = root.children.at(0).children.at(0);
-  EXPECT_EQ(testcase.attributes.at("classname"), "a \"b\"");
+  EXPECT_EQ(testcase.attributes.at("classname"), "a\\x01 \"b\"");
   EXPECT_EQ(testcase.attributes.at("name"), "c 'd' </testcase>");
-  EXPECT_EQ(testcase.children.at(0).attributes.at("message"), "x < y &&  z > w");
+  EXPECT_EQ(testcase.children.at(0).attributes.at("message"), "x < y && \\x1f z > w");
 }
 
 TEST(XmlReader, RejectsMalformedXml) {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <set>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/videoio.hpp>
 #include <string>
@@ -203,8 +204,44 @@ TEST(RenderSelection, ImagePathTemplates) {
   EXPECT_EQ(engine::ImagePath("c{camera_idx:2}_{frame_id}_{frame}", "a", 4, "noDigits", 0), "c04_noDigits_noDigits");
   EXPECT_THROW(engine::ImagePath("{frame", "a", 0, "f", 0), ConfigError);
   EXPECT_THROW(engine::ImagePath("{camera:3}", "a", 0, "f", 0), ConfigError);
-  EXPECT_EQ(engine::FileNameOf("panoptic/160906 band1"), "panoptic_160906_band1");
-  EXPECT_EQ(engine::FileNameOf(".."), "_");
+}
+
+// Distinct names never share a file: the cleaning is one-to-one (%XX), made unique also where case
+// or a cut long name would join two (issue 19: 'cam a' and 'cam/a' were both 'cam_a').
+TEST(RenderSelection, FileNamesAreOneToOne) {
+  EXPECT_EQ(engine::FileNameOf("panoptic/160906 band1"), "panoptic%2F160906%20band1");
+  EXPECT_EQ(engine::FileNameOf("cam a"), "cam%20a");
+  EXPECT_EQ(engine::FileNameOf("cam/a"), "cam%2Fa");
+  EXPECT_EQ(engine::FileNameOf("cam_a"), "cam_a");
+  EXPECT_EQ(engine::FileNameOf("cam%20a"), "cam%2520a");
+  EXPECT_EQ(engine::FileNameOf("Camera0.v2"), "Camera0.v2");
+  EXPECT_EQ(engine::FileNameOf(".."), "%2E.");
+  EXPECT_EQ(engine::FileNameOf("."), "%2E");
+  EXPECT_EQ(engine::FileNameOf(".hidden"), "%2Ehidden");
+  EXPECT_EQ(engine::FileNameOf(""), "%");
+  EXPECT_EQ(engine::FileNameOf("\xc3\xa9\x1b"), "%C3%A9%1B");
+  const std::string long_a(300, 'a'), long_b = std::string(299, 'a') + "b";
+  const std::string cut_a = engine::FileNameOf(long_a), cut_b = engine::FileNameOf(long_b);
+  EXPECT_EQ(cut_a.size(), 180u + 17u);
+  EXPECT_EQ(cut_a.substr(0, 181), std::string(180, 'a') + "~");
+  EXPECT_NE(cut_a, cut_b);
+  EXPECT_LE(engine::FileNameOf(std::string(300, '/')).size(), 200u);
+  EXPECT_EQ(engine::FileNameOf(std::string(300, '/')).substr(0, 180), [] {
+    std::string s;
+    for (int i = 0; i < 60; ++i) s += "%2F";
+    return s;
+  }()) << "a cut never splits a %XX";
+
+  const std::vector<std::string> texts = {"cam a", "cam/a", "cam_a", "Cam_A", "cam_a~2", "", "%", "."};
+  const std::vector<std::string> names = engine::UniqueFileNames(texts);
+  EXPECT_EQ(names,
+            (std::vector<std::string>{"cam%20a", "cam%2Fa", "cam_a", "Cam_A~2", "cam_a%7E2", "%", "%25", "%2E"}));
+  std::set<std::string> lower;
+  for (std::string name : names) {
+    for (char& c : name) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    lower.insert(name);
+  }
+  EXPECT_EQ(lower.size(), texts.size());
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include "datasets/io/staged_output.h"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -47,9 +48,9 @@ fs::path FreshDir(const std::string& name) {
 
 TEST(StagedFile, TargetChangesOnlyOnCommit) {
   const fs::path dir = FreshDir("file");
-  WriteTextFile(dir / "a.txt", "old\n");
+  WriteTextFile(dir / "a.txt", NamedBy::kUser, "old\n");
   {
-    StagedFile staged(dir / "a.txt");
+    StagedFile staged(dir / "a.txt", NamedBy::kUser);
     std::ofstream(staged.path()) << "new\n";
     EXPECT_EQ(Read(dir / "a.txt"), "old\n");
     EXPECT_EQ(staged.path().parent_path(), dir);
@@ -62,8 +63,8 @@ TEST(StagedFile, TargetChangesOnlyOnCommit) {
 
 TEST(StagedFile, FailedWriteKeepsTheOldFileAndLeavesNoTemporary) {
   const fs::path dir = FreshDir("failed");
-  WriteTextFile(dir / "a.txt", "old\n");
-  EXPECT_THROW(WriteTextFile(dir / "a.txt",
+  WriteTextFile(dir / "a.txt", NamedBy::kUser, "old\n");
+  EXPECT_THROW(WriteTextFile(dir / "a.txt", NamedBy::kUser,
                              [](std::ostream& out) {
                                out << "half of the new";
                                throw InputError("disk gone");
@@ -78,7 +79,7 @@ TEST(StagedFile, AFolderInTheWayIsAnErrorNamingTheFile) {
   const fs::path dir = FreshDir("folder_in_way");
   fs::create_directories(dir / "summary.json");
   try {
-    WriteTextFile(dir / "summary.json", "{}");
+    WriteTextFile(dir / "summary.json", NamedBy::kUser, "{}");
     FAIL() << "expected InputError";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find((dir / "summary.json").string()), std::string::npos) << e.what();
@@ -90,16 +91,16 @@ TEST(StagedFile, AFolderInTheWayIsAnErrorNamingTheFile) {
 TEST(StagedFolder, SwapsInTheNewContentsAndKeepsOtherFiles) {
   const fs::path root = FreshDir("folder");
   const fs::path out = root / "run";
-  WriteTextFile(out.string() + "-unused", "");  // a sibling that must not be touched
+  WriteTextFile(out.string() + "-unused", NamedBy::kUser, "");  // a sibling that must not be touched
   fs::create_directories(out / "render");
-  WriteTextFile(out / "summary.json", "old summary");
-  WriteTextFile(out / "report.html", "kept");
-  WriteTextFile(out / "render" / "frame.png", "kept too");
+  WriteTextFile(out / "summary.json", NamedBy::kUser, "old summary");
+  WriteTextFile(out / "report.html", NamedBy::kUser, "kept");
+  WriteTextFile(out / "render" / "frame.png", NamedBy::kUser, "kept too");
   {
     StagedFolder folder(out);
     ASSERT_FALSE(folder.in_place());
-    WriteTextFile(folder.path() / "summary.json", "new summary");
-    WriteTextFile(folder.path() / "run.json", "{}");
+    WriteTextFile(folder.path() / "summary.json", NamedBy::kUser, "new summary");
+    WriteTextFile(folder.path() / "run.json", NamedBy::kUser, "{}");
     EXPECT_EQ(Read(out / "summary.json"), "old summary");  // nothing changes before Commit
     EXPECT_FALSE(fs::exists(out / "run.json"));
     folder.Commit();
@@ -115,10 +116,10 @@ TEST(StagedFolder, SwapsInTheNewContentsAndKeepsOtherFiles) {
 TEST(StagedFolder, WithoutCommitTheOldFolderStaysAndTheStagingGoes) {
   const fs::path root = FreshDir("abandoned");
   fs::create_directories(root / "run");
-  WriteTextFile(root / "run" / "summary.json", "old");
+  WriteTextFile(root / "run" / "summary.json", NamedBy::kUser, "old");
   {
     StagedFolder folder(root / "run");
-    WriteTextFile(folder.path() / "summary.json", "new");
+    WriteTextFile(folder.path() / "summary.json", NamedBy::kUser, "new");
     EXPECT_EQ(Entries(root).size(), 2u);  // run and its staging sibling
   }
   EXPECT_EQ(Entries(root), std::vector<std::string>{"run"});
@@ -129,7 +130,7 @@ TEST(StagedFolder, WithoutCommitTheOldFolderStaysAndTheStagingGoes) {
 TEST(StagedFolder, ANewFolderAppearsOnlyOnCommit) {
   const fs::path root = FreshDir("new");
   StagedFolder folder(root / "a" / "run");
-  WriteTextFile(folder.path() / "run.json", "{}");
+  WriteTextFile(folder.path() / "run.json", NamedBy::kUser, "{}");
   EXPECT_FALSE(fs::exists(root / "a" / "run"));
   folder.Commit();
   EXPECT_EQ(Entries(root / "a"), std::vector<std::string>{"run"});
@@ -147,7 +148,7 @@ TEST(StagedFolder, TheCurrentDirectoryIsWrittenInPlace) {
   {
     StagedFolder folder(".");
     EXPECT_TRUE(folder.in_place());
-    WriteTextFile(folder.path() / "run.json", "{}");
+    WriteTextFile(folder.path() / "run.json", NamedBy::kUser, "{}");
     folder.Commit();
   }
   fs::current_path(previous);
@@ -157,13 +158,131 @@ TEST(StagedFolder, TheCurrentDirectoryIsWrittenInPlace) {
 
 TEST(StagedFolder, AFileInTheWayIsAnErrorNamingIt) {
   const fs::path root = FreshDir("file_in_way");
-  WriteTextFile(root / "run", "a file");
+  WriteTextFile(root / "run", NamedBy::kUser, "a file");
   try {
     StagedFolder folder(root / "run");
     FAIL() << "expected InputError";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find((root / "run").string()), std::string::npos) << e.what();
   }
+  fs::remove_all(root);
+}
+
+// Issue 19: a link at the name (planted in a run folder from elsewhere) is replaced, never written
+// through, whoever named the file; a FIFO is replaced in a folder rpt writes, written to when the user
+// named it.
+TEST(StagedFile, ALinkAtTheTargetIsReplacedNotWrittenThrough) {
+  const fs::path dir = FreshDir("link_target");
+  WriteTextFile(dir / "outside.txt", NamedBy::kUser, "precious");
+  for (const NamedBy named_by : {NamedBy::kRpt, NamedBy::kUser}) {
+    fs::create_symlink(dir / "outside.txt", dir / "summary.json");
+    fs::create_symlink(dir / "absent.txt", dir / "dangling.json");
+    fs::create_directories(dir / "folder");
+    fs::create_symlink(dir / "folder", dir / "to_folder.json");
+    for (const char* name : {"summary.json", "dangling.json", "to_folder.json"}) {
+      WriteTextFile(dir / name, named_by, "new");
+      EXPECT_TRUE(fs::is_regular_file(fs::symlink_status(dir / name))) << name;
+      EXPECT_EQ(Read(dir / name), "new");
+      fs::remove(dir / name);
+    }
+    EXPECT_EQ(Read(dir / "outside.txt"), "precious");
+    EXPECT_FALSE(fs::exists(dir / "absent.txt"));
+    EXPECT_TRUE(fs::is_empty(dir / "folder"));
+  }
+  ASSERT_EQ(::mkfifo((dir / "pipe").c_str(), 0644), 0);
+  WriteTextFile(dir / "pipe", NamedBy::kRpt, "new");  // would block if written to
+  EXPECT_TRUE(fs::is_regular_file(fs::symlink_status(dir / "pipe")));
+  fs::remove_all(dir);
+}
+
+TEST(StagedFile, KeepExtensionEndsTheTemporaryInTheTargetsExtension) {
+  const fs::path dir = FreshDir("extension");
+  StagedFile staged(dir / "cam.mp4", NamedBy::kRpt, /*keep_extension=*/true);
+  EXPECT_EQ(staged.path().extension(), ".mp4");
+  EXPECT_EQ(staged.path().filename().string().rfind("cam.mp4.tmp-" + std::to_string(::getpid()) + "-", 0), 0u);
+  std::ofstream(staged.path()) << "video";
+  staged.Commit();
+  EXPECT_EQ(Entries(dir), std::vector<std::string>{"cam.mp4"});
+  fs::remove_all(dir);
+}
+
+// The user's --out link: the folder it points to is replaced and the link kept; a link to nothing
+// is an error and nothing is created.
+TEST(StagedFolder, ALinkNamedAsTheFolderIsResolvedOnce) {
+  const fs::path root = FreshDir("out_link");
+  fs::create_directories(root / "disk" / "run");
+  WriteTextFile(root / "disk" / "run" / "summary.json", NamedBy::kUser, "old");
+  fs::create_directory_symlink(root / "disk" / "run", root / "out");
+  {
+    StagedFolder folder(root / "out");
+    EXPECT_EQ(folder.target(), fs::canonical(root / "disk" / "run"));
+    EXPECT_EQ(folder.path().parent_path(), fs::canonical(root / "disk"));
+    WriteTextFile(folder.path() / "summary.json", NamedBy::kRpt, "new");
+    folder.Commit();
+  }
+  EXPECT_TRUE(fs::is_symlink(root / "out"));
+  EXPECT_EQ(Read(root / "out" / "summary.json"), "new");
+  EXPECT_EQ(Entries(root / "disk"), std::vector<std::string>{"run"});
+  fs::create_directory_symlink(root / "missing", root / "dangling");
+  EXPECT_THROW(StagedFolder(root / "dangling"), InputError);
+  EXPECT_FALSE(fs::exists(root / "missing"));
+  EXPECT_EQ(Entries(root), (std::vector<std::string>{"dangling", "disk", "out"}));
+  fs::remove_all(root);
+}
+
+TEST(StagedFolder, AWriteProtectedFolderIsRefusedBeforeAnythingIsCreated) {
+  const fs::path root = FreshDir("protected");
+  fs::create_directories(root / "run" / "render");
+  WriteTextFile(root / "run" / "summary.json", NamedBy::kUser, "old");
+  for (const fs::path& protect : {root / "run", root / "run" / "render"}) {
+    ::chmod(protect.c_str(), 0555);
+    try {
+      StagedFolder folder(root / "run");
+      ADD_FAILURE() << "no error for " << protect;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(protect.string() + ": write-protected"), std::string::npos) << e.what();
+    }
+    ::chmod(protect.c_str(), 0755);
+    EXPECT_EQ(Entries(root), std::vector<std::string>{"run"});
+  }
+  EXPECT_EQ(Read(root / "run" / "summary.json"), "old");
+  fs::remove_all(root);
+}
+
+// Carried-over links stay links (never followed); FIFOs are not carried over.
+TEST(StagedFolder, CarriesLinksAsLinksAndDropsFifos) {
+  const fs::path root = FreshDir("carry");
+  fs::create_directories(root / "run");
+  WriteTextFile(root / "outside.txt", NamedBy::kUser, "precious");
+  fs::create_symlink(root / "outside.txt", root / "run" / "notes.txt");
+  fs::create_symlink(root / "outside.txt", root / "run" / "summary.json");
+  ASSERT_EQ(::mkfifo((root / "run" / "pipe").c_str(), 0644), 0);
+  {
+    StagedFolder folder(root / "run");
+    ASSERT_FALSE(folder.in_place());
+    WriteTextFile(folder.path() / "summary.json", NamedBy::kRpt, "new");
+    folder.Commit();
+  }
+  EXPECT_EQ(Entries(root / "run"), (std::vector<std::string>{"notes.txt", "summary.json"}));
+  EXPECT_TRUE(fs::is_symlink(root / "run" / "notes.txt"));
+  EXPECT_EQ(Read(root / "run" / "summary.json"), "new");
+  EXPECT_EQ(Read(root / "outside.txt"), "precious");
+  fs::remove_all(root);
+}
+
+TEST(CreateFolderInside, ReplacesLinksAndStaysInside) {
+  const fs::path root = FreshDir("inside");
+  fs::create_directories(root / "out" / "kept");
+  fs::create_directories(root / "elsewhere");
+  fs::create_directory_symlink(root / "elsewhere", root / "out" / "seq");
+  EXPECT_EQ(CreateFolderInside(root / "out", fs::path("seq") / "cam"), root / "out" / "seq" / "cam");
+  EXPECT_TRUE(fs::is_directory(fs::symlink_status(root / "out" / "seq")));
+  EXPECT_TRUE(fs::is_empty(root / "elsewhere"));
+  EXPECT_EQ(CreateFolderInside(root / "out", "kept"), root / "out" / "kept");
+  WriteTextFile(root / "out" / "file", NamedBy::kUser, "x");
+  EXPECT_THROW(CreateFolderInside(root / "out", fs::path("file") / "cam"), InputError);
+  EXPECT_THROW(CreateFolderInside(root / "out", fs::path("..") / "x"), std::logic_error);
+  EXPECT_THROW(CreateFolderInside(root / "out", root / "abs"), std::logic_error);
   fs::remove_all(root);
 }
 
@@ -202,12 +321,12 @@ TEST(ScratchFile, AMissingFolderIsAnErrorNamingIt) {
 TEST(RemoveTemporariesForExit, RemovesWhatIsBeingWritten) {
   // Run in a child: the registry stays locked afterwards, as in the process that exits.
   const fs::path root = FreshDir("exit");
-  WriteTextFile(root / "kept.txt", "old");
+  WriteTextFile(root / "kept.txt", NamedBy::kUser, "old");
   fs::create_directories(root / "run");
   const pid_t child = ::fork();
   ASSERT_GE(child, 0);
   if (child == 0) {
-    StagedFile file(root / "kept.txt");
+    StagedFile file(root / "kept.txt", NamedBy::kUser);
     std::ofstream(file.path()) << "half";
     StagedFolder folder(root / "run");
     std::ofstream(folder.path() / "summary.json") << "half";

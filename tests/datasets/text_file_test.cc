@@ -16,8 +16,8 @@ namespace fs = std::filesystem;
 
 TEST(TextFile, WritesAndReplaces) {
   const fs::path path = fs::path(testing::TempDir()) / "rpt_text_file_test.txt";
-  WriteTextFile(path, "first version, longer\n");
-  WriteTextFile(path, "second\n");
+  WriteTextFile(path, NamedBy::kUser, "first version, longer\n");
+  WriteTextFile(path, NamedBy::kUser, "second\n");
   std::ifstream in(path, std::ios::binary);
   std::stringstream text;
   text << in.rdbuf();
@@ -28,7 +28,7 @@ TEST(TextFile, WritesAndReplaces) {
 TEST(TextFile, FailureNamesTheFile) {
   const fs::path path = fs::path(testing::TempDir()) / "no_such_folder_rpt" / "out.csv";
   try {
-    WriteTextFile(path, "x");
+    WriteTextFile(path, NamedBy::kUser, "x");
     FAIL() << "expected InputError";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find(path.string()), std::string::npos) << e.what();
@@ -38,7 +38,7 @@ TEST(TextFile, FailureNamesTheFile) {
 #ifdef __linux__
 TEST(TextFile, FullDiskIsAnError) {
   if (!fs::exists("/dev/full")) GTEST_SKIP() << "/dev/full is absent";
-  EXPECT_THROW(WriteTextFile("/dev/full", std::string(1 << 16, 'x')), InputError);
+  EXPECT_THROW(WriteTextFile("/dev/full", NamedBy::kUser, std::string(1 << 16, 'x')), InputError);
 }
 #endif
 

@@ -30,12 +30,7 @@ std::vector<std::string> SplitCsvLine(const std::string& line) {
   return fields;
 }
 
-TEST(ResultsWriter, CsvFieldQuotesOnlyWhatNeedsIt) {
-  EXPECT_EQ(CsvField("shelf"), "shelf");
-  EXPECT_EQ(CsvField("a, b"), "\"a, b\"");
-  EXPECT_EQ(CsvField("say \"hi\""), "\"say \"\"hi\"\"\"");
-  EXPECT_EQ(CsvField("two\nlines"), "\"two\nlines\"");
-}
+// CsvField itself: OutputEscaping.CsvFieldsAreOneLineNeverAFormulaAndReadBack (tests/cli).
 
 // Sweep rows are named by people ("bone-length check (rpt addition, off by default)"): a comma in
 // the name must not shift the numbers into the wrong columns.

@@ -8,7 +8,10 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <sstream>
 
+#include "engine/outputs/text_escaping.h"
+#include "tests/hostile_input.h"
 #include "tests/report/report_test_util.h"
 #include "tests/test_data.h"
 
@@ -106,6 +109,36 @@ TEST(ReportBrowser, MvorFixture) {
   const fs::path dir = TempDir("report_browser_mvor");
   ASSERT_TRUE(EvalAndReport("--dataset mvor --root " + SharedData("mvor").string(), dir, "--max-frames 60"));
   CheckInBrowser(dir, "mvor");
+}
+
+// Issue 19: "<!--<script>" in a camera, scene, frame id, joint name or input path blanked the page
+// while the error counter stayed 0. Every hostile string in those places: the page loads, draws and
+// counts no error; the names are shown as text.
+TEST(ReportBrowser, HostileNamesLoadWithoutErrors) {
+  RPT_REQUIRE_CHROMIUM();
+  const fs::path dir = TempDir("report_browser_hostile");
+  const HostileInput input = MakeHostileInput(dir);
+  const fs::path run = dir / "run <!--<script>";
+  ASSERT_EQ(RunRpt("eval " + input.args() + " --quiet --out '" + run.string() + "'").exit_code, 0);
+  std::istringstream csv(ReadAll(run / "per_joint.csv"));
+  std::string header, line, rewritten;
+  std::getline(csv, header);
+  rewritten = header + "\n";
+  for (size_t row = 0; std::getline(csv, line); ++row) {
+    const std::string name = HostileStrings()[row % HostileStrings().size()] + " " + std::to_string(row);
+    rewritten += engine::CsvField(name) + line.substr(engine::CsvField(engine::SplitCsvLine(line)[0]).size()) + "\n";
+  }
+  std::ofstream(run / "per_joint.csv") << rewritten;
+  const CommandResult report = RunRpt("report '" + run.string() + "'");
+  ASSERT_EQ(report.exit_code, 0) << report.err;
+  const std::string dom = DumpDom(run / "report.html");
+  ASSERT_FALSE(dom.empty()) << "chromium printed no DOM";
+  const size_t errors_at = dom.find("id=\"rpt-errors\"");
+  EXPECT_EQ(BodyAttribute(dom, "data-rpt-errors"), "0")
+      << (errors_at == std::string::npos ? dom.substr(0, 2000) : dom.substr(errors_at, 2000));
+  EXPECT_EQ(BodyAttribute(dom, "data-rpt-ready"), "1");
+  EXPECT_EQ(BodyAttribute(dom, "data-rpt-camera-views"), std::to_string(input.cameras.size()));
+  EXPECT_NE(dom.find("&lt;!--&lt;script&gt;"), std::string::npos) << "the names are text, not markup";
 }
 
 TEST(ReportBrowser, RunWhoseInputIsGone) {

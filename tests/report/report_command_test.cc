@@ -8,7 +8,11 @@
 #include <algorithm>
 #include <fstream>
 #include <regex>
+#include <sstream>
 
+#include "core/printable_text.h"
+#include "engine/outputs/text_escaping.h"
+#include "tests/hostile_strings.h"
 #include "tests/report/report_test_util.h"
 
 namespace rpt::test {
@@ -53,6 +57,33 @@ TEST(ReportCommand, SelfContainedPageWithSampledFrames) {
   EXPECT_EQ(matched, summary["matches"].get<long>());
   EXPECT_EQ(data["per_joint"].size(), 13u);
   EXPECT_FALSE(data["recall_curve"]["recall"].empty());
+}
+
+// per_joint.csv as the eval writer writes it (CsvField) with hostile joint names: a comma, a quote,
+// a formula, a line break; `rpt report` reads it back with the same rules (issue 19: a comma made
+// the report refuse its own eval's file).
+TEST(ReportCommand, ReadsBackPerJointCsvWithCommasInJointNames) {
+  const fs::path dir = TempDir("report_per_joint");
+  ASSERT_EQ(
+      RunRpt("eval --dataset synthetic --param frames=5 --param cameras=2 --quiet --out " + dir.string()).exit_code, 0);
+  std::istringstream csv(ReadAll(dir / "per_joint.csv"));
+  std::string header, line, rewritten;
+  std::getline(csv, header);
+  rewritten = header + "\n";
+  std::vector<std::string> names;
+  for (size_t row = 0; std::getline(csv, line); ++row) {
+    const std::string name = HostileStrings()[row % HostileStrings().size()] + " joint " + std::to_string(row);
+    names.push_back(PrintableText(name, LineBreaks::kEscape));
+    rewritten += engine::CsvField(name) + line.substr(engine::CsvField(engine::SplitCsvLine(line)[0]).size()) + "\n";
+  }
+  ASSERT_GE(names.size(), 13u);
+  std::ofstream(dir / "per_joint.csv") << rewritten;
+  const CommandResult r = RunRpt("report " + dir.string() + " --max-frames 2");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Json data = ReportData(ReadAll(dir / "report.html"));
+  ASSERT_EQ(data["per_joint"].size(), names.size());
+  for (size_t i = 0; i < names.size(); ++i) EXPECT_EQ(data["per_joint"][i]["joint"], names[i]);
+  EXPECT_TRUE(data["per_joint"][0]["mean_error_mm"].is_number()) << "the numbers stay in their columns";
 }
 
 TEST(ReportCommand, PaperRowForKnownDatasets) {
