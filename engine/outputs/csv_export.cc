@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "engine/outputs/results_writer.h"
+#include "engine/outputs/text_escaping.h"
 
 namespace rpt::engine {
 
