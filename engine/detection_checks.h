@@ -133,7 +133,7 @@ struct CheckWarning {
 };
 
 // Warnings of one code about single cameras beyond this many are counted in one line.
-inline constexpr long kMaxCameraWarningsShown = 3;
+inline constexpr long kMaxCameraWarningsShown = 10;
 
 // The warnings the measurements of one sequence call for, in camera order.
 std::vector<CheckWarning> DetectionWarnings(const SequenceCheck& check);

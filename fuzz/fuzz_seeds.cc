@@ -371,7 +371,7 @@ std::map<std::string, std::vector<std::pair<std::string, Bytes>>> MakeFuzzSeeds(
   seeds["config"] = {{"config.json", Of(R"({"filter": {"min_match_score": 0.9}, "triangulate": {"core_joints": ["nose", "hip_left"]},
   "room_check": {"size_m": [8, 8, 3]}})")}};
   seeds["thresholds"] = {{"thresholds.json", Of(R"({"description": "fuzz", "evaluations": [{"name": "synthetic",
-  "dataset": "synthetic", "params": {"frames": 2}, "metrics": {"mpjpe_mm": {"max": 100}}}]})")}};
+  "dataset": "synthetic", "params": {"frames": 2}, "min": {"recall500": 50}, "max": {"mpjpe_mm": 100}}]})")}};
   seeds["sweep_shard"] = {{"sweep-shard-1-of-1.json", Of(R"({"total": 2, "shard": "1/1", "base": {"filter.min_match_score": "0.9"},
   "rows": [{"index": 0, "name": "a", "set": {"merge.top_k": "0"}, "default": true, "summary": {"mpjpe_mm": 50.5, "recall500": null}},
            {"index": 1, "name": "b", "summary": {"mpjpe_mm": 51}}]})")}};

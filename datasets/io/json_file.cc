@@ -172,7 +172,7 @@ Json Parse(std::string_view text, const std::string& source) {
   return root;
 }
 
-// Appends `value`'s JSON text to `out` until `out` is longer than `limit` bytes: each level of
+// Appends `value`'s JSON text (compact, as dump() writes it) to `out` until `out` is longer than `limit` bytes: each level of
 // nesting writes a byte before it recurses, so the recursion ends within `limit` levels.
 template <class Json>
 void AppendExcerpt(const Json& value, std::size_t limit, std::string* out) {
@@ -184,8 +184,8 @@ void AppendExcerpt(const Json& value, std::size_t limit, std::string* out) {
     const bool object = value.is_object();
     out->push_back(object ? '{' : '[');
     for (auto it = value.begin(); it != value.end() && out->size() <= limit; ++it) {
-      if (it != value.begin()) out->append(", ");
-      if (object) out->append(quoted(it.key()) + ": ");
+      if (it != value.begin()) out->push_back(',');
+      if (object) out->append(quoted(it.key()) + ":");
       AppendExcerpt(it.value(), limit, out);
     }
     out->push_back(object ? '}' : ']');

@@ -21,8 +21,10 @@
 namespace rpt {
 namespace {
 
-// Version 2: every dataset carries the CRC-32 of its values (io::NumbersCrc, io::StringsCrc).
+// Version 2 (written): every dataset carries the CRC-32 of its values (io::NumbersCrc,
+// io::StringsCrc), checked on reading. Version 1 (read): the same layout without checksums.
 constexpr int kVersion = 2;
+constexpr int kVersionWithoutChecksums = 1;
 constexpr const char* kDetectionsFormat = "rpt-detections";
 constexpr const char* kSequencesFormat = "rpt-sequences";
 
@@ -38,11 +40,12 @@ void CheckFormat(io::Hdf5Reader& reader, hid_t group, const std::string& place, 
     reader.Fail(place, "attribute format is '" + found + "', expected '" + format + "' (not written by rpt?)");
   }
   const double version = reader.NumberAttribute(group, place, "version");
-  if (version != kVersion) {
-    reader.Fail(place, "format version " + std::to_string(version) + " is not supported (this build reads version " +
-                    std::to_string(kVersion) + "; write the cache again with this rpt)");
+  if (version != kVersion && version != kVersionWithoutChecksums) {
+    reader.Fail(place, "format version " + std::to_string(version) + " is not supported (this build reads versions " +
+                    std::to_string(kVersionWithoutChecksums) + " and " + std::to_string(kVersion) + ")");
   }
-  reader.RequireChecksums();
+  // rpt writes version 2; version 1 is the format other tools (and rpt before checksums) write.
+  if (version == kVersion) reader.RequireChecksums();
 }
 
 // Offsets: offsets[0] = 0, non-decreasing, offsets.back() = total.

@@ -101,7 +101,7 @@ TEST_F(InputLimits, MessagesQuoteAShortExcerptOfAValue) {
   Write(dir_ / "object.json", "{\"filter\": {\"min_match_score\": {\"k\": [\"" + long_text + "\"]}}}");
   Write(dir_ / "thresholds.json", "{\"description\": [\"" + long_text + "\"]}");
   Write(dir_ / "broken.json", "{\"filter\": \"" + long_text + "\n\"}");
-  for (const std::string args : {"config --dump --config " + Path("config.json"),
+  for (const std::string& args : {"config --dump --config " + Path("config.json"),
                                  "config --dump --config " + Path("object.json"),
                                  "check --thresholds " + Path("thresholds.json"),
                                  "config --dump --config " + Path("broken.json")}) {
@@ -129,7 +129,7 @@ TEST_F(InputLimits, FileSizeAndFileTypeAreCheckedBeforeReading) {
   EXPECT_EQ(test::RunRpt("--max-input-mb 100 inspect --labels " + Path("labels.json")).exit_code, 0);
 
   ASSERT_EQ(::mkfifo((dir_ / "fifo.json").c_str(), 0600), 0);
-  for (const std::string args : {"inspect --labels " + Path("fifo.json"), "config --dump --config " + Path("fifo.json"),
+  for (const std::string& args : {"inspect --labels " + Path("fifo.json"), "config --dump --config " + Path("fifo.json"),
                                  "check --thresholds " + Path("fifo.json")}) {
     const test::CommandResult r = test::RunRpt(args, "timeout 20 ");
     EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;
@@ -179,19 +179,26 @@ TEST_F(InputLimits, RenderRefusesImagesAboveMaxMegapixels) {
   EXPECT_EQ(test::RunRpt(render).exit_code, 0);
 }
 
-// Out of memory is never "internal error": under a 2 GB address space limit, reading a cache or
-// labels file larger than the memory ends in exit 2 naming the input.
+// Out of memory is never "internal error": under an address-space limit just above what rpt needs
+// to start (found here, it depends on the shared libraries), reading an input that does not fit
+// ends in exit 2 naming the file. Steps of 5 MB above that point hit other allocations; none may
+// say "internal error".
 TEST_F(InputLimits, OutOfMemoryNamesTheInputInsteadOfInternalError) {
-  Convert("--param frames=200 --param cameras=8 --param people=3");
-  const test::CommandResult r =
-      test::RunRpt("inspect --labels " + Path("labels.json") + " --detections " + Path("detections.json"),
-                   "ulimit -v 60000; ");
-  EXPECT_NE(r.err.find("internal error"), 0u) << r.err;
-  EXPECT_FALSE(Contains(r.err, "internal error")) << r.err;
-  if (r.exit_code != 0) {
-    EXPECT_TRUE(r.exit_code == 2 || r.exit_code == 1) << r.exit_code << " " << r.err;
-    EXPECT_TRUE(Contains(r.err, "out of memory") || Contains(r.err, "cannot")) << r.err;
+  Convert("--param frames=300 --param cameras=8 --param people=3");
+  long base_kb = 0;
+  for (long kb = 200000; kb <= 2000000 && base_kb == 0; kb += 5000) {
+    if (test::RunRpt("config --dump", "ulimit -v " + std::to_string(kb) + "; ").exit_code == 0) base_kb = kb;
   }
+  ASSERT_GT(base_kb, 0) << "rpt did not start under 2 GB of address space";
+  int named = 0;
+  for (long kb = base_kb; kb <= base_kb + 50000; kb += 5000) {
+    const test::CommandResult r =
+        test::RunRpt("inspect --labels " + Path("labels.json") + " --detections " + Path("detections.json"),
+                     "ulimit -v " + std::to_string(kb) + "; ");
+    EXPECT_FALSE(Contains(r.err, "internal error")) << kb << " kB: " << r.err;
+    if (r.exit_code == 2 && Contains(r.err, ": out of memory reading the file")) ++named;
+  }
+  EXPECT_GT(named, 0) << "no run ended naming the file it could not read";
 }
 
 // Misspelt optional keys were dropped silently, even under --strict.
@@ -206,7 +213,7 @@ TEST_F(InputLimits, UnknownKeysInLabelsAndDetectionsAreCountedAndRefusedUnderStr
   }
   Write(dir_ / "labels.json", labels);
   std::string detections = test::ReadAll(Path("detections.json"));
-  detections.replace(detections.find("\"views\""), 7, "\"views\", \"bodyIds\": [1], \"x\"");
+  detections.replace(detections.find("\"views\""), 7, "\"bodyIds\": [1], \"views\"");
   Write(dir_ / "detections.json", detections);
   const std::string eval = "eval --labels " + Path("labels.json") + " --detections " + Path("detections.json") +
                            " --quiet --out " + Path("out");

@@ -227,6 +227,15 @@ TEST(Hdf5CacheCorruption, DatasetsExpandingBeyondTheBudgetAreRefusedBeforeReadin
     H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
     const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
     ASSERT_GE(file, 0);
+    // Version 1: the datasets replaced below carry no checksums, as another tool's would.
+    H5Adelete_by_name(file, "/detections", "version", H5P_DEFAULT);
+    const hid_t scalar = H5Screate(H5S_SCALAR);
+    const hid_t version =
+        H5Acreate_by_name(file, "/detections", "version", H5T_STD_I32LE, scalar, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    const int one = 1;
+    ASSERT_GE(H5Awrite(version, H5T_NATIVE_INT, &one), 0);
+    H5Aclose(version);
+    H5Sclose(scalar);
     H5Ldelete(file, "/detections/keypoints", H5P_DEFAULT);
     H5Ldelete(file, "/detections/person_offsets", H5P_DEFAULT);
     const hsize_t dims[3] = {persons, 17, 3}, chunk[3] = {65536, 17, 3};

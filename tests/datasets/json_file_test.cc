@@ -114,11 +114,11 @@ TEST(JsonDepthLimit, DeeperThanTheLimitIsAnInputErrorAtTheOpener) {
 // Messages quote at most a short excerpt: of a value (JsonExcerpt) and of the token a parse error
 // stopped at (a string token runs to the end of its line, a number as long as its digits).
 TEST(JsonExcerpt, ValuesAndTokensAreQuotedShort) {
-  EXPECT_EQ(JsonExcerpt(nlohmann::json::parse("[1, 2, 3]")), "[1, 2, 3]");
+  EXPECT_EQ(JsonExcerpt(nlohmann::json::parse("[1, 2, {\"a\": 3}]")), "[1,2,{\"a\":3}]") << "as dump() writes it";
   EXPECT_EQ(JsonExcerpt(nlohmann::json("abc")), "\"abc\"");
   nlohmann::json big = nlohmann::json::array();
   for (int i = 0; i < 100000; ++i) big.push_back(i);
-  EXPECT_EQ(JsonExcerpt(big, 20), "[0, 1, 2, 3, 4, 5, 6...");
+  EXPECT_EQ(JsonExcerpt(big, 20), "[0,1,2,3,4,5,6,7,8,9...");
   const nlohmann::json deep = ParseJsonText(Nested(200, "[", ']'), "x");
   EXPECT_EQ(JsonExcerpt(deep, 10), std::string(10, '[') + "...");
   EXPECT_EQ(JsonExcerpt(nlohmann::json(std::string(1000, 'x')), 8), "\"xxxxxxx...");
