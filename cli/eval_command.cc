@@ -14,6 +14,7 @@
 #include "engine/input.h"
 #include "engine/outputs/step_tables.h"
 #include "engine/outputs/results_writer.h"
+#include "engine/input_digests.h"
 #include "engine/outputs/run_info.h"
 #include "engine/run.h"
 #include "datasets/io/json_output.h"
@@ -48,6 +49,7 @@ void RunEval(const EvalArgs& args) {
   std::unique_ptr<Progress> progress = ProgressOf(input, !args.quiet);
   options.progress = ReportTo(progress.get());
   engine::RunInfo info = engine::CollectRunInfo(0);
+  info.input_digests = engine::InputDigests(args.input);  // compared by `rpt report` before it re-loads the input
   const std::string out_dir =
       !args.out.empty() ? args.out : "out/eval-" + (args.input.dataset.empty() ? "labels" : args.input.dataset);
   engine::RunFolder folder(out_dir, info.run_id, input.size(), exports);

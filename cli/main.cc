@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <new>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -18,6 +19,7 @@
 #include "engine/outputs/run_info.h"
 #include "core/errors.h"
 #include "datasets/io/inflate_budget.h"
+#include "datasets/io/input_limits.h"
 #include "datasets/readers/hdf5_cache.h"
 #include "git_revision.h"
 
@@ -79,6 +81,16 @@ int main(int argc, char** argv) {
          "limit on the data decompressed from one input file (MAT, NPZ, compressed HDF5), in MiB "
          "(default: 64 x the file size, at least 64, at most 4096)")
       ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 24));
+  app.add_option_function<std::uint64_t>(
+         "--max-input-mb", [](std::uint64_t megabytes) { rpt::io::SetMaxInputMb(megabytes); },
+         "limit on the size of an input file read whole (JSON, NPY, MAT, pickle), in MiB (default " +
+             std::to_string(rpt::io::kDefaultMaxInputMb) + ")")
+      ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 24));
+  app.add_option_function<std::uint64_t>(
+         "--max-cameras", [](std::uint64_t count) { rpt::io::SetMaxCameras(count); },
+         "limit on the cameras of one label, calibration file or frame (default " +
+             std::to_string(rpt::io::kDefaultMaxCameras) + ")")
+      ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 24));
   rpt::engine::SetCommand(argc, argv);
   rpt::cli::RegisterDemoCommand(app);
   rpt::cli::RegisterEvalCommand(app);
@@ -109,6 +121,13 @@ int main(int argc, char** argv) {
   } catch (const rpt::ConfigError& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 2;
+  } catch (const std::bad_alloc&) {
+    // The places that read or process an input turn this into an InputError naming the input;
+    // what is left is named by its command.
+    const std::vector<CLI::App*> ran = app.get_subcommands();
+    std::fprintf(stderr, "error: out of memory running `rpt %s`: the input is too large for this machine (see the "
+                 "limits in `rpt --help`: --max-input-mb, --max-cameras)\n", ran.empty() ? "" : ran[0]->get_name().c_str());
+    return 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "internal error: %s\n", e.what());
     return 1;

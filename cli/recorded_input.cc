@@ -3,13 +3,18 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cstdio>
 
 #include "cli/input_options.h"
+#include "core/errors.h"
+#include "core/text.h"
 #include "engine/input.h"
+#include "engine/input_digests.h"
 
 namespace rpt::cli {
 
-std::optional<std::vector<Sequence>> ReloadRecordedInput(const engine::RecordedRun& run, std::string* why) {
+std::optional<std::vector<Sequence>> ReloadRecordedInput(const engine::RecordedRun& run, bool require_same_input,
+                                                         std::string* why, std::vector<std::string>* warnings) {
   std::string problem;
   const std::vector<std::string> words = engine::RecordedWords(run, &problem);
   if (!problem.empty()) {
@@ -33,12 +38,32 @@ std::optional<std::vector<Sequence>> ReloadRecordedInput(const engine::RecordedR
   std::reverse(args.begin(), args.end());  // CLI11 parses a reversed vector
   try {
     app.parse(args);
-    InputWarnings warnings;  // already recorded in run.json
-    return engine::LoadInput(input, {}, &warnings);
   } catch (const CLI::Error& e) {
     *why = std::string("cannot parse the recorded command: ") + e.what();
+    return std::nullopt;
+  }
+  bool unreadable = false;
+  const std::vector<std::string> problems = engine::InputDigestProblems(run.run_info, input, &unreadable);
+  if (!problems.empty() && require_same_input) {
+    throw InputError("--require-same-input: the input on disk is not verified as the run's:\n  " + Join(problems, "\n  "));
+  }
+  for (const std::string& line : problems) warnings->push_back("input not verified as the run's: " + line);
+  if (unreadable) {
+    *why = Join(problems, "; ");
+    return std::nullopt;
+  }
+  try {
+    InputWarnings input_warnings;  // already recorded in run.json
+    // The run's frames are the frames of predictions.json: a larger input is not the run's.
+    return engine::LoadInput(input, {}, &input_warnings, static_cast<long>(run.predictions.frames.size()));
   } catch (const std::exception& e) {
-    *why = e.what();
+    if (problems.empty()) {
+      *why = e.what();
+    } else {
+      std::fprintf(stderr, "error re-loading the input: %s\n", e.what());
+      *why = "the input could not be re-loaded, and it is not verified as the run's (the reader's message went to the "
+             "terminal, not into the page)";
+    }
   }
   return std::nullopt;
 }

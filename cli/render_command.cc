@@ -25,6 +25,7 @@
 #include "engine/run.h"
 #include "core/closest_name.h"
 #include "core/errors.h"
+#include "core/option_codec.h"
 #include "core/printable_text.h"
 #include "datasets/io/staged_output.h"
 #include "core/text.h"
@@ -43,7 +44,18 @@ struct RenderArgs {
   double fps = 0;
   std::string images;
   bool gt = false;
+  double max_megapixels = 100;  // the image of one camera (a 60000 x 40000 camera took 7.7 GB for one PNG)
 };
+
+// A camera's image is allocated whole (canvas, background, encoder): its size is checked before.
+void CheckImageSize(const Camera& camera, const std::string& sequence, double max_megapixels) {
+  const double megapixels = static_cast<double>(camera.width) * camera.height / 1e6;
+  if (megapixels <= max_megapixels) return;
+  throw InputError("sequence '" + sequence + "', camera '" + camera.name + "': image " + std::to_string(camera.width) +
+                   " x " + std::to_string(camera.height) + " px (" + std::to_string(static_cast<long long>(megapixels)) +
+                   " megapixels), above --max-megapixels (" + FormatOption(max_megapixels) +
+                   "); raise it if the camera is genuine");
+}
 
 // What went wrong with --images, counted and reported once at the end.
 struct ImageProblems {
@@ -116,6 +128,7 @@ void RenderSequence(const RenderArgs& args, const engine::Config& config, const 
   const engine::FrameRange range =
       engine::ParseFrameRange(args.frames, static_cast<long>(sequence.frames.size()), sequence.name);
   const std::vector<int> cameras = engine::SelectCameras(args.cameras, sequence.cameras, sequence.name);
+  for (const int c : cameras) CheckImageSize(sequence.cameras[c], sequence.name, args.max_megapixels);
   std::vector<std::string> camera_names, frame_ids;
   for (const Camera& camera : sequence.cameras) camera_names.push_back(camera.name);
   for (long f = range.first; f < range.end; ++f) frame_ids.push_back(sequence.frames[f].id);
@@ -262,6 +275,9 @@ void RegisterRenderCommand(CLI::App& app) {
                       "{camera_idx}, {frame_id}, {frame} (digits ending the frame id), {frame_idx}; "
                       "{camera_idx:2}/{frame_idx:6} pad with zeros. Default: a white canvas of the image size");
   command->add_flag("--gt", args->gt, "also draw the reprojected ground truth");
+  command->add_option("--max-megapixels", args->max_megapixels, "a camera with a larger image is refused (memory)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.001, 1e6));
   command->callback([args] { RunRender(*args); });
 }
 

@@ -23,6 +23,7 @@ namespace {
 struct ReportArgs {
   std::string run_dir;
   std::string out;  // default RUN_DIR/report.html
+  bool require_same_input = false;
   engine::ReportDataOptions data;
 };
 
@@ -31,14 +32,15 @@ void RunReport(const ReportArgs& args) {
   engine::Config config;
   engine::LoadConfigFile(run.dir / "config.json", &config);
   std::string why_no_input;
-  const std::optional<std::vector<Sequence>> sequences = ReloadRecordedInput(run, &why_no_input);
+  std::vector<std::string> warnings;
+  const std::optional<std::vector<Sequence>> sequences =
+      ReloadRecordedInput(run, args.require_same_input, &why_no_input, &warnings);
   metrics::EvalOptions eval_options = config.metrics;
   if (sequences) {
     std::vector<const SequenceHeader*> headers;
     for (const Sequence& s : *sequences) headers.push_back(&s);
     eval_options = engine::EvalOptionsFor(config.metrics, headers);
   }
-  std::vector<std::string> warnings;
   const nlohmann::ordered_json data = engine::BuildReportData(run, sequences ? &*sequences : nullptr, why_no_input,
                                                       eval_options, args.data, &warnings);
   const std::filesystem::path out = args.out.empty() ? run.dir / "report.html" : std::filesystem::path(args.out);
@@ -61,10 +63,16 @@ void RegisterReportCommand(CLI::App& app) {
       "report", "Write one self-contained report.html (plots, 3D viewer, camera overlays) for an `rpt eval` folder");
   command->add_option("RUN_DIR", args->run_dir, "output folder of `rpt eval`")->required();
   command->add_option("--out", args->out, "the page to write (default RUN_DIR/report.html)");
+  command->add_flag("--require-same-input", args->require_same_input,
+                    "refuse (exit 2) when the input on disk differs from the digests run.json records (default: warn)");
   command->add_option("--max-frames", args->data.max_scene_frames,
                       "frames that carry a 3D scene and camera views, evenly spaced over the run (bounds the size)")
       ->capture_default_str()
-      ->check(CLI::Range(1, 100000));
+      ->check(CLI::Range(1, 10000));
+  command->add_option("--max-scene-mb", args->data.max_scene_mb,
+                      "the 3D scenes' share of the page: fewer frames carry one when --max-frames of them take more")
+      ->capture_default_str()
+      ->check(CLI::Range(0.1, 1000.0));
   command->callback([args] { RunReport(*args); });
 }
 

@@ -8,6 +8,7 @@
 
 #include "core/closest_name.h"
 #include "core/text.h"
+#include "core/utf8.h"
 
 namespace rpt {
 namespace {
@@ -63,9 +64,11 @@ std::string WithRange(std::string noun, const OptionSpec& spec) {
   return noun + (range.front() == '[' || range.front() == '(' ? " in " : " ") + range;
 }
 
+// Quotes at most kMaxQuotedValueBytes of the value (a config file's value can be a long list).
+constexpr std::size_t kMaxQuotedValueBytes = 80;
 std::string Problem(std::string_view text, std::string_view expected) {
   std::string problem = "'";
-  return problem.append(text).append("' is not ").append(expected);
+  return problem.append(Utf8Excerpt(text, kMaxQuotedValueBytes)).append("' is not ").append(expected);
 }
 
 constexpr std::string_view kBoolProblem = "true or false (also yes/no, on/off, 1/0)";

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "core/utf8.h"
 
+#include <algorithm>
 #include <cstdint>
 
 namespace rpt {
@@ -37,6 +38,17 @@ bool IsValidUtf8(std::string_view text) {
     i += length;
   }
   return true;
+}
+
+std::string Utf8Excerpt(std::string_view text, std::size_t max_bytes) {
+  if (text.size() <= max_bytes) return std::string(text);
+  std::size_t end = 0;
+  while (end < text.size()) {
+    const std::size_t n = std::max<std::size_t>(Utf8SequenceLength(text, end), 1);
+    if (end + n > max_bytes) break;
+    end += n;
+  }
+  return std::string(text.substr(0, end)) + "...";
 }
 
 }  // namespace rpt

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
 #include <string_view>
 
 namespace rpt {
@@ -13,5 +14,9 @@ std::size_t Utf8SequenceLength(std::string_view text, std::size_t i);
 
 // True when every byte of `text` belongs to a valid UTF-8 sequence (control characters are valid).
 bool IsValidUtf8(std::string_view text);
+
+// An excerpt for a message that quotes input: `text` when at most `max_bytes` long, else its first
+// bytes up to `max_bytes` cut at a character boundary, followed by "...".
+std::string Utf8Excerpt(std::string_view text, std::size_t max_bytes);
 
 }  // namespace rpt

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "datasets/frame_source.h"
 
+#include "core/errors.h"
+
 #include <utility>
 
 namespace rpt {
@@ -33,12 +35,22 @@ bool SequenceSource::Next(SequenceFrame* frame) {
   return true;
 }
 
-Sequence Materialize(FrameSource& source) {
+Sequence Materialize(FrameSource& source, long max_frames) {
   Sequence sequence;
   static_cast<SequenceHeader&>(sequence) = source.header();
+  auto too_many = [&] {
+    return InputError("sequence '" + sequence.name + "': more than the " + std::to_string(max_frames) +
+                      " frames expected (" + (source.num_frames() > max_frames ? std::to_string(source.num_frames())
+                                                                                 : std::string("more")) +
+                      ")");
+  };
+  if (max_frames >= 0 && source.num_frames() > max_frames) throw too_many();
   if (source.num_frames() > 0) sequence.frames.reserve(static_cast<size_t>(source.num_frames()));
   SequenceFrame frame;
-  while (source.Next(&frame)) sequence.frames.push_back(std::move(frame));
+  while (source.Next(&frame)) {
+    if (max_frames >= 0 && static_cast<long>(sequence.frames.size()) == max_frames) throw too_many();
+    sequence.frames.push_back(std::move(frame));
+  }
   sequence.warnings = source.warnings();
   return sequence;
 }

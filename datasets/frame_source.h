@@ -78,7 +78,9 @@ class SequenceSource final : public FrameSource {
 
 // Pulls every frame of `source` into a Sequence (what a whole-sequence consumer needs), with the
 // source's warnings once it is exhausted.
-Sequence Materialize(FrameSource& source);
+// With max_frames >= 0, a source with more frames is refused (InputError naming the sequence) before
+// they are read: memory stays bounded for an input that is not the one expected (`rpt report`).
+Sequence Materialize(FrameSource& source, long max_frames = -1);
 // Every source materialised in turn (the sources of one dataset: its sequences, in order).
 std::vector<Sequence> MaterializeAll(std::vector<std::unique_ptr<FrameSource>> sources);
 

@@ -176,7 +176,7 @@ void LoadConfigFile(const std::filesystem::path& path, Config* config) {
       if (value.is_object() || value.is_null()) {
         if (!ForOption(*config, key, [](const auto&, const OptionSpec&) {})) UnknownOption(where, key);
         throw ConfigError(
-            OptionMessage(where, key, "'" + value.dump() + "' is not a value (a string, number, boolean or list)"));
+            OptionMessage(where, key, "'" + io::JsonExcerpt(value) + "' is not a value (a string, number, boolean or list)"));
       }
       SetConfigOption(key, JsonValueText(value), where, config);
     }

@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: MIT
 #include "engine/detection_checks.h"
 
+#include <map>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <deque>
 #include <limits>
+#include <map>
 #include <utility>
 
 namespace rpt::engine {
@@ -472,32 +475,45 @@ std::vector<CheckWarning> DetectionWarnings(const SequenceCheck& check) {
                                                 " GT joint names also exist in the detections; GT and detections "
                                                 "cannot be compared (joint names?)"});
   }
+  // Per camera and code, the first kMaxCameraWarningsShown are printed and the others counted in one
+  // line: 100 000 cameras gave 99 999 warning lines.
+  std::map<std::string, long> per_code;
+  const auto camera_warning = [&](CheckWarning warning) {
+    if (++per_code[warning.code] <= kMaxCameraWarningsShown) warnings.push_back(std::move(warning));
+  };
   for (const CameraCheck& camera : check.cameras) {
     const std::string where = seq + ", camera " + camera.name;
     if (camera.input_frames > 0 && camera.detections == 0) {
-      warnings.push_back({"camera_without_detections",
+      camera_warning({"camera_without_detections",
                           where + ": no detections in any of the " + std::to_string(camera.input_frames) +
                               " frames where other cameras have some; is the camera's name or order in the detections "
                               "right?"});
     } else if (camera.frames_gt_in_view > 0 &&
                camera.empty_frames_gt_in_view >= kEmptyCameraShare * camera.frames_gt_in_view) {
-      warnings.push_back(
+      camera_warning(
           {"camera_often_without_detections",
            where + ": no detections in " + std::to_string(camera.empty_frames_gt_in_view) + " of the " +
                std::to_string(camera.frames_gt_in_view) + " frames where GT persons are in its view (" +
                Percent(static_cast<double>(camera.empty_frames_gt_in_view) / camera.frames_gt_in_view) + ")"});
     }
     if (camera.gt_compared >= kMinComparedPersons && camera.rel_median >= kFarRelDistance) {
-      warnings.push_back({"gt_far_from_detections",
+      camera_warning({"gt_far_from_detections",
                           where + ": projected GT is far from the detections (median " + Fixed(camera.rel_median, 2) +
                               " of the person's box diagonal, " + Fixed(camera.px_median, 0) + " px, over " +
                               std::to_string(camera.gt_compared) + " GT persons; expected < " +
                               Fixed(kFarRelDistance, 2) + "); check calibration, camera order and units"});
     } else if (camera.detections > 0 && check.frames_with_gt > 0 && check.shared_joints >= kMinSharedJoints &&
                camera.gt_in_view == 0) {
-      warnings.push_back({"gt_far_from_detections", where + ": no GT person projects into the image although the camera has " +
+      camera_warning({"gt_far_from_detections", where + ": no GT person projects into the image although the camera has " +
                                                 std::to_string(camera.detections) +
                                                 " detections; check calibration, camera order and units"});
+    }
+  }
+  for (const auto& [code, count] : per_code) {
+    if (count > kMaxCameraWarningsShown) {
+      warnings.push_back({code, seq + ": " + std::to_string(count - kMaxCameraWarningsShown) +
+                                    " more cameras with the warning '" + code + "' (" + std::to_string(count) +
+                                    " in all; the first " + std::to_string(kMaxCameraWarningsShown) + " above)"});
     }
   }
   const ShiftCheck& shift = check.shift;

@@ -131,6 +131,9 @@ struct CheckWarning {
   std::string message;  // one line, printed as "warning: <message>"
 };
 
+// Warnings of one code about single cameras beyond this many are counted in one line.
+inline constexpr long kMaxCameraWarningsShown = 10;
+
 // The warnings the measurements of one sequence call for, in camera order.
 std::vector<CheckWarning> DetectionWarnings(const SequenceCheck& check);
 

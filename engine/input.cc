@@ -2,6 +2,7 @@
 #include "engine/input.h"
 
 #include <filesystem>
+#include <new>
 #include <utility>
 
 #include "core/errors.h"
@@ -116,11 +117,13 @@ InputWarnings Input::Warnings() const {
 
 void Input::CheckStrict() const { engine::CheckStrict(strict_, Warnings()); }
 
-std::vector<Sequence> Input::Materialize() {
+std::vector<Sequence> Input::Materialize(long max_frames) {
   std::vector<Sequence> sequences;
   sequences.reserve(sources_.size());
+  long frames = 0;
   for (int i = 0; i < size(); ++i) {
-    sequences.push_back(rpt::Materialize(*sources_[i]));
+    sequences.push_back(rpt::Materialize(*sources_[i], max_frames < 0 ? -1 : max_frames - frames));
+    frames += static_cast<long>(sequences.back().frames.size());
     sequences.back().warnings = {};  // in Warnings(): not twice
     Finished(i);
   }
@@ -199,11 +202,21 @@ Input OpenInput(const InputSpec& spec, const InputNeeds& needs) {
   return input;
 }
 
-std::vector<Sequence> LoadInput(const InputSpec& spec, const InputNeeds& needs, InputWarnings* warnings) {
-  Input input = OpenInput(spec, needs);
-  std::vector<Sequence> sequences = input.Materialize();
-  warnings->Merge(input.Warnings());
-  return sequences;
+std::vector<Sequence> LoadInput(const InputSpec& spec, const InputNeeds& needs, InputWarnings* warnings,
+                                long max_frames) {
+  try {
+    Input input = OpenInput(spec, needs);
+    std::vector<Sequence> sequences = input.Materialize(max_frames);
+    warnings->Merge(input.Warnings());
+    return sequences;
+  } catch (const std::bad_alloc&) {
+    std::string paths;
+    for (const std::string& path : {spec.root, spec.labels, spec.detections}) {
+      if (!path.empty()) paths += (paths.empty() ? "" : ", ") + path;
+    }
+    throw InputError((paths.empty() ? "dataset " + spec.dataset : paths) +
+                     ": out of memory reading the input whole (it is too large for this machine's memory)");
+  }
 }
 
 SimulationOptions SimulationOf(const InputSpec& spec) {

@@ -71,7 +71,9 @@ class Input {
   void CheckStrict() const;
   // Every sequence in memory (for the commands that need whole sequences: inspect, render,
   // report, detector-stats, convert); each frame validated once, like a run's.
-  std::vector<Sequence> Materialize();
+  // With max_frames >= 0, an input of more frames (all sequences together) is refused before they
+  // are read (InputError).
+  std::vector<Sequence> Materialize(long max_frames = -1);
 
  private:
   std::vector<std::unique_ptr<FrameSource>> sources_;
@@ -89,8 +91,10 @@ class Input {
 // opening throws too.
 Input OpenInput(const InputSpec& spec, const InputNeeds& needs = {});
 
-// Opens and materialises (Input::Materialize), with --strict applied to the whole input.
-std::vector<Sequence> LoadInput(const InputSpec& spec, const InputNeeds& needs, InputWarnings* warnings);
+// Opens and materialises (Input::Materialize, up to max_frames when >= 0), with --strict applied to the
+// whole input. Running out of memory is an InputError naming the input.
+std::vector<Sequence> LoadInput(const InputSpec& spec, const InputNeeds& needs, InputWarnings* warnings,
+                                long max_frames = -1);
 
 // The simulated detector of the input options: --detector PROFILE (--simulate-perfect: "perfect";
 // neither: "realistic") with --seed (also what detector-stats --compare simulates with).

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <exception>
 #include <mutex>
+#include <new>
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -97,6 +98,10 @@ void RunSequence(int index, FrameSource& source, const RunOptions& options, cons
       triangulator.Process(frame.views.empty() ? no_views : frame.views, frame.timestamp_s, &persons, &stats);
     } catch (const InputError& e) {  // e.g. more persons in a view than triangulate.max_persons_per_view
       throw InputError(header.name + ": frame '" + frame.id + "': " + e.what());
+    } catch (const std::bad_alloc&) {
+      throw InputError(header.name + ": frame '" + frame.id +
+                       "': out of memory triangulating the frame (lower triangulate.max_pairs_per_frame or "
+                       "triangulate.max_persons_per_view to refuse such frames early)");
     }
     if (offline) {
       ++num_waiting;

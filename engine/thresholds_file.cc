@@ -61,11 +61,7 @@ class Validator {
     return object[key];
   }
 
-  static std::string Describe(const Json& value) {
-    std::string text = value.dump();
-    if (text.size() > 40) text = text.substr(0, 37) + "...";
-    return std::string(value.type_name()) + " " + text;
-  }
+  static std::string Describe(const Json& value) { return std::string(value.type_name()) + " " + io::JsonExcerpt(value); }
 
  private:
   std::string path_;

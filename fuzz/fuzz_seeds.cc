@@ -368,6 +368,16 @@ std::map<std::string, std::vector<std::pair<std::string, Bytes>>> MakeFuzzSeeds(
   seeds["egohumans_gt"] = {{"00001.npy", EgohumansGt()}};
   seeds["egohumans_poses2d"] = {{"00001.npy", EgohumansPoses2d()}, {"nobody.npy", test::NpyOfObjectList({})}};
   AddCalibrationSeeds(&seeds);
+  seeds["config"] = {{"config.json", Of(R"({"filter": {"min_match_score": 0.9}, "triangulate": {"core_joints": ["nose", "hip_left"]},
+  "room_check": {"size_m": [8, 8, 3]}})")}};
+  seeds["thresholds"] = {{"thresholds.json", Of(R"({"description": "fuzz", "evaluations": [{"name": "synthetic",
+  "dataset": "synthetic", "params": {"frames": 2}, "min": {"recall500": 50}, "max": {"mpjpe_mm": 100}}]})")}};
+  seeds["sweep_shard"] = {{"sweep-shard-1-of-1.json", Of(R"({"total": 2, "shard": "1/1", "base": {"filter.min_match_score": "0.9"},
+  "rows": [{"index": 0, "name": "a", "set": {"merge.top_k": "0"}, "default": true, "summary": {"mpjpe_mm": 50.5, "recall500": null}},
+           {"index": 1, "name": "b", "summary": {"mpjpe_mm": 51}}]})")}};
+  seeds["run_folder"] = {{"summary.json", Of(std::string(1, '\0') + R"({"mpjpe_mm": 50.5, "gt_persons": 2})")},
+                         {"run.json", Of(std::string(1, '\2') + R"({"argv": ["rpt", "eval", "--labels", "x.json"], "input_digests": {}})")},
+                         {"predictions.json", Of(std::string(1, '\3') + R"({"joints": ["a", "b"], "frames": []})")}};
   return seeds;
 }
 

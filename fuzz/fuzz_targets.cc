@@ -16,7 +16,15 @@
 #include <stdexcept>
 #include <string>
 
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "cli/commands.h"
 #include "core/errors.h"
+#include "engine/config.h"
+#include "engine/report/report_data.h"
+#include "engine/report/report_run.h"
+#include "engine/thresholds_file.h"
 #include "datasets/calibration/calibration.h"
 #include "datasets/dataset_request.h"
 #include "datasets/frame_source.h"
@@ -364,9 +372,52 @@ void ReadCalibrationWith(CalibrationFormat format, const std::string& name, std:
   ReadCalibration(WriteScratch(name, bytes), {.format = format}, &warnings);
 }
 
+// `bytes` as a sweep shard merged by `rpt merge` (into a scratch folder).
+void MergeShard(std::span<const std::uint8_t> bytes) {
+  const fs::path shard = WriteScratch("sweep-shard-1-of-1.json", bytes);
+  CLI::App app;
+  cli::RegisterMergeCommand(app);
+  std::vector<std::string> args = {"merge", shard.string(), "--out", (ScratchDir() / "merged").string()};
+  std::reverse(args.begin(), args.end());  // CLI11 parses a reversed vector
+  app.parse(args);
+}
+
+// An `rpt eval` output folder read by `rpt report` (engine::ReadRecordedRun, the run's config and
+// the page data without the input): the first byte picks the file the rest of `bytes` is
+// (summary.json, config.json, run.json, predictions.json); the others are valid companions.
+void ReadRunFolder(std::span<const std::uint8_t> bytes) {
+  static const char* const kFiles[] = {"summary.json", "config.json", "run.json", "predictions.json"};
+  const fs::path dir = ScratchDir() / "run";
+  fs::create_directories(dir);
+  WriteScratch("run/summary.json", std::string(R"({"mpjpe_mm": 50.5, "gt_persons": 2, "step_time_us_median": {"undistort": 3}})"));
+  WriteScratch("run/config.json", std::string(R"({"filter": {"min_match_score": 0.9}})"));
+  WriteScratch("run/run.json", std::string(R"({"run_id": "r", "argv": ["rpt", "eval", "--dataset", "synthetic"]})"));
+  WriteScratch("run/predictions.json", std::string(R"({"joints": ["nose"], "frames": [{"id": "f0", "track_ids": [1],
+    "persons": [[[0.1, 0.2, 1.5, 0.9]]]}]})"));
+  WriteScratch("run/per_joint.csv", std::string("joint,mean_error_mm,pck100_pct,count,num_gt\nnose,10.5,90,4,4\n"));
+  if (!bytes.empty()) WriteScratch(fs::path("run") / kFiles[bytes[0] % 4], bytes.subspan(1));
+  const engine::RecordedRun run = engine::ReadRecordedRun(dir);
+  engine::Config config;
+  engine::LoadConfigFile(dir / "config.json", &config);
+  std::vector<std::string> warnings;
+  const nlohmann::ordered_json data =
+      engine::BuildReportData(run, nullptr, "not re-loaded (fuzzing)", config.metrics, {}, &warnings);
+  (void)data.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
+}
+
 std::vector<FuzzTarget> MakeTargets() {
   using B = std::span<const std::uint8_t>;
   return {
+      {"config", "rpt configuration (--config)",
+       [](B b) {
+         engine::Config config;
+         engine::LoadConfigFile(WriteScratch("config.json", b), &config);
+       }},
+      {"thresholds", "rpt check thresholds file (--thresholds)",
+       [](B b) { engine::ReadThresholdsFile(WriteScratch("thresholds.json", b).string()); }},
+      {"sweep_shard", "rpt sweep shard merged by rpt merge", MergeShard},
+      {"run_folder", "rpt eval output folder read by rpt report (summary, config, run, predictions JSON)",
+       ReadRunFolder},
       {"labels", "generic JSON labels (rpt / skelda)",
        [](B b) { ReadAll(OpenLabels(WriteScratch("labels.json", b))); }},
       {"detections_json", "generic JSON detections",

@@ -248,6 +248,8 @@
     const material = new THREE.LineBasicMaterial({ color: CAMERA_COLOUR });
     const centers = [];
     for (const cam of seq.cameras) {
+      // A camera too far away to draw (rpt report leaves out its position) is only listed.
+      if (!cam.center || !cam.corners) continue;
       const c = cam.center, k = cam.corners, positions = [];
       for (let i = 0; i < 4; i++) positions.push(...c, ...k[i], ...k[i], ...k[(i + 1) % 4]);
       const geometry = new THREE.BufferGeometry();
@@ -273,7 +275,9 @@
     if (count) target.multiplyScalar(1 / count); else target.copy(cameraMean);
     if (!Number.isFinite(floor)) floor = target.dot(up) - 1;
     const spread = centers.reduce((m, c) => Math.max(m, c.distanceTo(target)), 2);
-    const grid = new THREE.GridHelper(Math.ceil(spread * 2), Math.ceil(spread * 2), 0x3a4654, 0x26303b);
+    // At most 200 grid lines per side, however far the cameras are.
+    const gridSize = Math.ceil(spread * 2);
+    const grid = new THREE.GridHelper(gridSize, Math.min(gridSize, 200), 0x3a4654, 0x26303b);
     grid.quaternion.setFromUnitVectors(new THREE.Vector3(0, 1, 0), up);
     grid.position.copy(target.clone().sub(up.clone().multiplyScalar(target.dot(up) - floor)));
     cameraGroup.add(grid);

@@ -92,8 +92,11 @@ struct TriangulateOptions {
   int min_core_joints = 3;               // a pair needs this many core joints seen in both views (step 4)
   // Association pairs every pose of a view with every pose of the other views: time and memory grow
   // with the square of the persons per view (1600 took 4.7 s and 1 GB for one frame). A frame with
-  // more persons in one view is refused (InputError) instead of stalling a run.
+  // more persons in one view is refused (InputError) instead of stalling a run. The pairs of a
+  // frame (every pose of a view with every pose of each other view) are bounded too: 10 views of
+  // 500 poses each are 11 million pairs (2.7 GB for one frame).
   int max_persons_per_view = 500;
+  int max_pairs_per_frame = 1000000;
 };
 
 template <class Visitor, OptionsOf<TriangulateOptions> Self>
@@ -107,6 +110,9 @@ void VisitFields(Visitor& v, Self& o) {
   v("max_persons_per_view", o.max_persons_per_view,
     OptionSpec{.help = "a frame with more 2D poses in one view is refused (association cost grows with the square)",
                .min = 1, .max = 100000});
+  v("max_pairs_per_frame", o.max_pairs_per_frame,
+    OptionSpec{.help = "a frame with more pairs of 2D poses across views is refused (memory grows with the pairs)",
+               .min = 1, .max = 1000000000});
 }
 
 // Step 5 and the room. The room is an axis-aligned box, a property of the scene: center_m and

@@ -94,6 +94,19 @@ void Triangulator::Process(std::span<const Poses2D> views, double timestamp_s, P
                        "); raise it with --set triangulate.max_persons_per_view=N if this is a real scene");
     }
   }
+  // Every pose of a view pairs with every pose of each later view: the pair buffers grow with
+  // (persons x views)^2. Counted before anything is allocated.
+  long long num_pairs = 0, poses_before = 0;
+  for (const Poses2D& view : views) {
+    num_pairs += poses_before * view.num_persons();
+    poses_before += view.num_persons();
+  }
+  if (num_pairs > opt.triangulate.max_pairs_per_frame) {
+    throw InputError(std::to_string(poses_before) + " 2D poses in " + std::to_string(views.size()) + " views make " +
+                     std::to_string(num_pairs) + " pairs across views, above triangulate.max_pairs_per_frame (" +
+                     std::to_string(opt.triangulate.max_pairs_per_frame) +
+                     "); raise it with --set triangulate.max_pairs_per_frame=N if this is a real scene");
+  }
   stats->Reset();
   StepRunner run(opt, stats);
   // Is this frame continuous with the last one? Unknown times and large gaps break continuity.

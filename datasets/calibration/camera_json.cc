@@ -7,6 +7,7 @@
 
 #include "core/errors.h"
 #include "datasets/camera_plausibility.h"
+#include "datasets/io/input_limits.h"
 #include "datasets/io/json_file.h"
 
 namespace rpt::camera_json {
@@ -100,6 +101,7 @@ std::vector<Camera> ParseCameras(const json& root, const std::string& pointer, c
                                  InputWarnings* warnings) {
   const json& list = io::JsonAt(root, pointer, source);
   if (!list.is_array() || list.empty()) Fail(source, pointer, "expected a non-empty list of cameras");
+  io::CheckCameraCount(list.size(), source + ": " + pointer);
   std::vector<Camera> cameras;
   std::unordered_set<std::string> names;
   for (size_t c = 0; c < list.size(); ++c) {

@@ -9,6 +9,7 @@
 #include <system_error>
 
 #include "core/errors.h"
+#include "datasets/io/input_limits.h"
 
 namespace rpt::io::detail {
 
@@ -19,13 +20,22 @@ std::vector<std::uint8_t> ReadFileBytes(const std::filesystem::path& path) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw InputError(name + ": file not found");
   if (std::filesystem::is_directory(path, ec)) throw InputError(name + ": is a directory, expected a file");
+  // A FIFO, a device or a socket would block the read or never end.
+  if (!std::filesystem::is_regular_file(path, ec)) throw InputError(name + ": not a regular file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(name + ": cannot open file");
   in.seekg(0, std::ios::end);
   const std::streamoff size = in.tellg();
   if (size < 0) throw InputError(name + ": cannot determine file size");
+  CheckInputFileSize(static_cast<std::uint64_t>(size), name);
   in.seekg(0, std::ios::beg);
-  std::vector<std::uint8_t> bytes(static_cast<std::size_t>(size));
+  std::vector<std::uint8_t> bytes;
+  try {
+    bytes.resize(static_cast<std::size_t>(size));
+  } catch (const std::bad_alloc&) {
+    throw InputError(name + ": out of memory reading the file (" + std::to_string(size >> 20) +
+                     " MiB)");
+  }
   if (size > 0 && !in.read(reinterpret_cast<char*>(bytes.data()), size)) {
     throw InputError(name + ": read error");
   }

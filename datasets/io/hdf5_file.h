@@ -15,9 +15,11 @@
 #include <filesystem>
 #include <numeric>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/errors.h"
+#include "datasets/io/file_digest.h"
 #include "datasets/io/hdf5_preflight.h"
 #include "datasets/io/inflate_budget.h"
 
@@ -91,6 +93,27 @@ inline std::string ShapeText(const std::vector<hsize_t>& dims) {
   return out + "]";
 }
 
+// The checksum of a dataset's values, stored by Hdf5Writer in the dataset's attribute "crc32" and
+// compared by Hdf5Reader after each read (RequireChecksums): CRC-32 of the values as little-endian
+// doubles (numbers, whatever their stored type) or of the strings each followed by a NUL.
+template <typename T>
+std::uint32_t NumbersCrc(const T* data, std::size_t count) {
+  std::uint32_t crc = 0;
+  double block[512];
+  for (std::size_t first = 0; first < count; first += 512) {
+    const std::size_t n = std::min<std::size_t>(512, count - first);
+    for (std::size_t i = 0; i < n; ++i) block[i] = static_cast<double>(data[first + i]);
+    crc = Crc32(crc, std::string_view(reinterpret_cast<const char*>(block), n * sizeof(double)));
+  }
+  return crc;
+}
+inline std::uint32_t StringsCrc(const std::vector<std::string>& values) {
+  std::uint32_t crc = 0;
+  for (const std::string& value : values) crc = Crc32(Crc32(crc, value), std::string_view("\0", 1));
+  return crc;
+}
+inline constexpr const char* kChecksumAttribute = "crc32";
+
 // Creates (or adds to) an HDF5 file; every error names the file and the object path.
 class Hdf5Writer {
  public:
@@ -125,6 +148,14 @@ class Hdf5Writer {
   template <typename T>
   void Numbers(hid_t parent, const std::string& parent_name, const std::string& name, hid_t file_type,
                hid_t memory_type, const std::vector<hsize_t>& dims, const T* data) {
+    const hsize_t count = std::accumulate(dims.begin(), dims.end(), hsize_t{1}, std::multiplies<>());
+    Hdf5Id dataset = Dataset(parent, parent_name, name, file_type, memory_type, dims, data);
+    Checksum(dataset.get(), parent_name + "/" + name, NumbersCrc(data, count));
+  }
+
+  // A dataset of `dims` from `data`, without its checksum.
+  Hdf5Id Dataset(hid_t parent, const std::string& parent_name, const std::string& name, hid_t file_type,
+                 hid_t memory_type, const std::vector<hsize_t>& dims, const void* data) {
     const std::string place = parent_name + "/" + name;
     Hdf5Id space(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr), H5Sclose);
     if (!space.valid()) Fail(place, "cannot create dataspace " + ShapeText(dims));
@@ -135,6 +166,11 @@ class Hdf5Writer {
     if (count > 0 && H5Dwrite(dataset.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0) {
       Fail(place, "write failed");
     }
+    return dataset;
+  }
+
+  void Checksum(hid_t dataset, const std::string& place, std::uint32_t crc) {
+    NumberAttribute(dataset, place, kChecksumAttribute, H5T_STD_U32LE, H5T_NATIVE_UINT32, crc);
   }
 
   void Doubles(hid_t parent, const std::string& parent_name, const std::string& name, const std::vector<hsize_t>& dims,
@@ -160,7 +196,8 @@ class Hdf5Writer {
     H5Tset_size(type.get(), width);
     H5Tset_strpad(type.get(), H5T_STR_NULLPAD);
     H5Tset_cset(type.get(), H5T_CSET_UTF8);
-    Numbers(parent, parent_name, name, type.get(), type.get(), {values.size()}, buffer.data());
+    Hdf5Id dataset = Dataset(parent, parent_name, name, type.get(), type.get(), {values.size()}, buffer.data());
+    Checksum(dataset.get(), parent_name + "/" + name, StringsCrc(values));
   }
 
   void StringAttribute(hid_t object, const std::string& place, const std::string& name, const std::string& value) {
@@ -362,7 +399,25 @@ class Hdf5Reader {
     if (count > 0 && H5Dread(dataset.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0) {
       Fail(name, "read failed (damaged file?)");
     }
+    VerifyChecksum(dataset.get(), name, NumbersCrc(values.data(), values.size()));
     return values;
+  }
+
+  // From now on every dataset read must carry the checksum Hdf5Writer stores, and match it (the
+  // caches rpt writes; other files, e.g. Human3.6M's, have none).
+  void RequireChecksums() { require_checksums_ = true; }
+
+  // With RequireChecksums: throws InputError naming the dataset when its "crc32" attribute is
+  // missing or differs from `crc` (the checksum of the values read).
+  void VerifyChecksum(hid_t dataset, const std::string& name, std::uint32_t crc) const {
+    if (!require_checksums_) return;
+    if (!HasAttribute(dataset, name, kChecksumAttribute)) {
+      Fail(name, std::string("checksum attribute '") + kChecksumAttribute + "' missing (damaged?)");
+    }
+    const double stored = NumberAttribute(dataset, name, kChecksumAttribute);
+    if (stored != static_cast<double>(crc)) {
+      Fail(name, "checksum mismatch: the values differ from those rpt wrote (damaged file; write the cache again)");
+    }
   }
 
   std::vector<double> Doubles(const std::string& name, const std::vector<long long>& expected, const std::string& meaning = "") const {
@@ -407,6 +462,7 @@ class Hdf5Reader {
       H5Dvlen_reclaim(memory_type.get(), space.get(), H5P_DEFAULT, pointers.data());
       if (read < 0) Fail(name, "read failed (damaged file?)");
       budget_.Reserve(text_bytes, source_ + ": " + name);
+      VerifyChecksum(dataset.get(), name, StringsCrc(out));
       return out;
     }
     const size_t width = H5Tget_size(file_type.get());
@@ -424,6 +480,7 @@ class Hdf5Reader {
       // Space-padded strings (Fortran / MATLAB style).
       if (pad == H5T_STR_SPACEPAD) out[i].erase(out[i].find_last_not_of(' ') + 1);
     }
+    VerifyChecksum(dataset.get(), name, StringsCrc(out));
     return out;
   }
 
@@ -498,6 +555,7 @@ class Hdf5Reader {
   std::string source_;
   std::uintmax_t file_bytes_ = 0;
   mutable InflateBudget budget_{std::string(), 0};
+  bool require_checksums_ = false;
   Hdf5Id file_;
 };
 

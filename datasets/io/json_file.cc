@@ -7,8 +7,10 @@
 #include <optional>
 
 #include "core/errors.h"
+#include "core/utf8.h"
 #include "datasets/io/number_text.h"
 #include "datasets/io/binary.h"
+#include "datasets/io/input_limits.h"
 
 namespace rpt::io {
 namespace {
@@ -36,58 +38,177 @@ void LineColumn(std::string_view text, std::size_t byte, std::size_t* line, std:
   *column = byte > line_start ? byte - line_start : 1;
 }
 
+std::string CutText(std::string_view text, std::size_t max_bytes) { return Utf8Excerpt(text, max_bytes); }
+
+// nlohmann quotes the token it stopped at ("last read: '<token>'", "number overflow parsing
+// '<token>'"): a string token runs to the end of its line, a number token as long as its digits.
+// The quote is cut to kMaxQuotedBytes.
+std::string BoundQuote(const std::string& message) {
+  const std::size_t open = message.find('\'');
+  const std::size_t close = message.rfind('\'');
+  if (open == std::string::npos || close <= open) return message;
+  return message.substr(0, open + 1) + CutText(std::string_view(message).substr(open + 1, close - open - 1), kMaxQuotedBytes) +
+         message.substr(close);
+}
+
+// The byte at which `text` (JSON) first opens its (limit + 1)-th nested array or object.
+std::size_t TooDeepAt(std::string_view text, int limit) {
+  int depth = 0;
+  for (std::size_t pos = 0; pos < text.size(); ++pos) {
+    const char c = text[pos];
+    if (c == '"') {
+      for (++pos; pos < text.size() && text[pos] != '"'; ++pos) pos += text[pos] == '\\' ? 1 : 0;
+    } else if (c == '[' || c == '{') {
+      if (++depth > limit) return pos;
+    } else if (c == ']' || c == '}') {
+      --depth;
+    }
+  }
+  return text.size();
+}
+
+[[noreturn]] void ThrowAt(std::string_view text, const std::string& source, std::size_t position, const std::string& what) {
+  std::size_t line = 0, column = 0;
+  LineColumn(text, position, &line, &column);
+  throw InputError(source + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " + what);
+}
+
+[[noreturn]] void ThrowTooDeep(std::string_view text, const std::string& source) {
+  ThrowAt(text, source, TooDeepAt(text, kMaxJsonDepth) + 1,
+          "JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels (no file rpt reads needs more than 6)");
+}
+
+// nlohmann's parse error without its "[json.exception.parse_error.101] parse error at line 1, column 2: " prefix.
+std::string ParseErrorText(const nlohmann::detail::exception& e) {
+  std::string msg = e.what();
+  if (msg.rfind("[json.exception", 0) == 0) {
+    if (auto p = msg.find("] "); p != std::string::npos) msg = msg.substr(p + 2);
+    if (msg.rfind("parse error", 0) == 0) {
+      if (auto p = msg.find(": "); p != std::string::npos) msg = msg.substr(p + 2);
+    }
+  }
+  return "JSON parse error: " + BoundQuote(msg);
+}
+
 // nlohmann's DOM builder, except that every error the parser reports (syntax errors and number
 // overflows such as 1e400, which nlohmann reports as out_of_range.406 rather than parse_error)
-// becomes an InputError naming the source, line and column. sax_parse calls parse_error() of
-// this type (it is a template on the SAX type), so hiding the base's method is enough.
-class DomBuilder : public nlohmann::detail::json_sax_dom_parser<nlohmann::json> {
+// becomes an InputError naming the source, line and column, and that arrays and objects nested
+// deeper than kMaxJsonDepth stop the parse. sax_parse calls the methods of this type (it is a
+// template on the SAX type), so hiding the base's methods is enough.
+template <class Json>
+class DomBuilder : public nlohmann::detail::json_sax_dom_parser<Json> {
+  using Base = nlohmann::detail::json_sax_dom_parser<Json>;
+
  public:
-  DomBuilder(nlohmann::json& root, std::string_view text, const std::string& source)
-      : json_sax_dom_parser(root, /*allow_exceptions=*/true), text_(text), source_(source) {}
+  DomBuilder(Json& root, std::string_view text, const std::string& source)
+      : Base(root, /*allow_exceptions=*/true), text_(text), source_(source) {}
+
+  bool start_object(std::size_t size) {
+    if (++depth_ > kMaxJsonDepth) ThrowTooDeep(text_, source_);
+    return Base::start_object(size);
+  }
+  bool start_array(std::size_t size) {
+    if (++depth_ > kMaxJsonDepth) ThrowTooDeep(text_, source_);
+    return Base::start_array(size);
+  }
+  bool end_object() {
+    --depth_;
+    return Base::end_object();
+  }
+  bool end_array() {
+    --depth_;
+    return Base::end_array();
+  }
 
   [[noreturn]] bool parse_error(std::size_t position, const std::string& /*token*/, const nlohmann::detail::exception& e) {
-    std::size_t line = 0, column = 0;
-    LineColumn(text_, position, &line, &column);
-    std::string msg = e.what();
-    // Drop nlohmann's own "[json.exception.parse_error.101] parse error at line 1, column 2: " prefix.
-    if (msg.rfind("[json.exception", 0) == 0) {
-      if (auto p = msg.find("] "); p != std::string::npos) msg = msg.substr(p + 2);
-      if (msg.rfind("parse error", 0) == 0) {
-        if (auto p = msg.find(": "); p != std::string::npos) msg = msg.substr(p + 2);
-      }
-    }
-    throw InputError(source_ + ":" + std::to_string(line) + ":" + std::to_string(column) + ": JSON parse error: " + msg);
+    ThrowAt(text_, source_, position, ParseErrorText(e));
   }
 
  private:
   std::string_view text_;
   const std::string& source_;
+  int depth_ = 0;
 };
 
 // DomBuilder's errors without the document.
 class SyntaxChecker : public nlohmann::detail::json_sax_acceptor<nlohmann::json> {
+  using Base = nlohmann::detail::json_sax_acceptor<nlohmann::json>;
+
  public:
   SyntaxChecker(std::string_view text, const std::string& source) : text_(text), source_(source) {}
 
-  [[noreturn]] bool parse_error(std::size_t position, const std::string& token, const nlohmann::detail::exception& e) {
-    nlohmann::json unused;
-    DomBuilder(unused, text_, source_).parse_error(position, token, e);
+  bool start_object(std::size_t size) {
+    if (++depth_ > kMaxJsonDepth) ThrowTooDeep(text_, source_);
+    return Base::start_object(size);
+  }
+  bool start_array(std::size_t size) {
+    if (++depth_ > kMaxJsonDepth) ThrowTooDeep(text_, source_);
+    return Base::start_array(size);
+  }
+  bool end_object() {
+    --depth_;
+    return Base::end_object();
+  }
+  bool end_array() {
+    --depth_;
+    return Base::end_array();
+  }
+
+  [[noreturn]] bool parse_error(std::size_t position, const std::string& /*token*/, const nlohmann::detail::exception& e) {
+    ThrowAt(text_, source_, position, ParseErrorText(e));
   }
 
  private:
   std::string_view text_;
   const std::string& source_;
+  int depth_ = 0;
 };
+
+template <class Json>
+Json Parse(std::string_view text, const std::string& source) {
+  Json root;
+  DomBuilder<Json> builder(root, text, source);
+  Json::sax_parse(text.begin(), text.end(), &builder);
+  return root;
+}
+
+// Appends `value`'s JSON text (compact, as dump() writes it) to `out` until `out` is longer than `limit` bytes: each level of
+// nesting writes a byte before it recurses, so the recursion ends within `limit` levels.
+template <class Json>
+void AppendExcerpt(const Json& value, std::size_t limit, std::string* out) {
+  auto quoted = [&](const std::string& text) {
+    const std::size_t room = limit + 1 - std::min(limit + 1, out->size());
+    return Json(CutText(text, room)).dump(-1, ' ', false, Json::error_handler_t::replace);
+  };
+  if (value.is_object() || value.is_array()) {
+    const bool object = value.is_object();
+    out->push_back(object ? '{' : '[');
+    for (auto it = value.begin(); it != value.end() && out->size() <= limit; ++it) {
+      if (it != value.begin()) out->push_back(',');
+      if (object) out->append(quoted(it.key()) + ":");
+      AppendExcerpt(it.value(), limit, out);
+    }
+    out->push_back(object ? '}' : ']');
+  } else if (value.is_string()) {
+    out->append(quoted(value.template get_ref<const typename Json::string_t&>()));
+  } else {
+    out->append(value.dump());
+  }
+}
+
+template <class Json>
+std::string Excerpt(const Json& value, std::size_t max_bytes) {
+  std::string text;
+  AppendExcerpt(value, max_bytes, &text);
+  return CutText(text, max_bytes);
+}
 
 bool IsJsonSpace(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
 
 }  // namespace
 
 nlohmann::json ParseJsonText(std::string_view text, const std::string& source) {
-  nlohmann::json root;
-  DomBuilder builder(root, text, source);
-  nlohmann::json::sax_parse(text.begin(), text.end(), &builder);
-  return root;
+  return Parse<nlohmann::json>(text, source);
 }
 
 void CheckJsonText(std::string_view text, const std::string& source) {
@@ -129,6 +250,15 @@ nlohmann::json LoadJsonFile(const std::filesystem::path& path) {
   const auto bytes = detail::ReadFileBytes(path);
   return ParseJsonText(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), detail::SourceName(path));
 }
+
+nlohmann::ordered_json LoadOrderedJsonFile(const std::filesystem::path& path) {
+  const auto bytes = detail::ReadFileBytes(path);
+  return Parse<nlohmann::ordered_json>(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()),
+                                       detail::SourceName(path));
+}
+
+std::string JsonExcerpt(const nlohmann::json& value, std::size_t max_bytes) { return Excerpt(value, max_bytes); }
+std::string JsonExcerpt(const nlohmann::ordered_json& value, std::size_t max_bytes) { return Excerpt(value, max_bytes); }
 
 std::string JsonPointerJoin(std::string_view base, std::string_view token) {
   std::string out(base);
@@ -188,9 +318,9 @@ std::int64_t JsonInt(const nlohmann::json& root, const std::string& pointer, con
   const auto& j = JsonAt(root, pointer, source);
   if (const auto value = JsonToInt64(j)) return *value;
   if (j.is_number_unsigned() || (j.is_number_float() && j.get<double>() == std::floor(j.get<double>()))) {
-    Fail(source, pointer, "integer " + j.dump() + " is outside the 64-bit signed range");
+    Fail(source, pointer, "integer " + JsonExcerpt(j) + " is outside the 64-bit signed range");
   }
-  Fail(source, pointer, "expected an integer, got " + (j.is_number() ? j.dump() : TypeName(j)));
+  Fail(source, pointer, "expected an integer, got " + (j.is_number() ? JsonExcerpt(j) : TypeName(j)));
 }
 
 std::int64_t JsonIntIn(const nlohmann::json& root, const std::string& pointer, const std::string& source,
@@ -282,6 +412,7 @@ void ForEachJsonCamera(const nlohmann::json& root, const std::string& source, co
                        const std::function<void(const std::string& id, const std::string& pointer)>& per_camera) {
   if (!root.is_object()) throw InputError(source + ": expected an object keyed by camera id");
   if (root.empty()) throw InputError(source + ": no cameras");
+  CheckCameraCount(root.size(), source + ": /");
   for (const std::string& id : JsonObjectKeysNumericOrder(root)) {
     const std::string pointer = JsonPointerJoin("", id);
     if (!root.at(id).is_object()) throw InputError(source + ": " + pointer + ": expected an object with " + members);

@@ -23,12 +23,30 @@ namespace rpt::io {
 
 inline constexpr std::size_t kAnyCount = std::numeric_limits<std::size_t>::max();
 
+// The one guarded path of every JSON file rpt reads (configs, thresholds, sweep lists and shards,
+// run folders, labels, detections, calibrations): the file is read by io::detail::ReadFileBytes
+// (a regular file within the input size limit, io/input_limits.h) and parsed with
+//  * a depth limit checked while parsing: an array or object nested deeper than kMaxJsonDepth ends
+//    the parse with "<source>:<line>:<column>: JSON nested deeper than 256 levels" (the values
+//    built so far are never serialised or destroyed recursively beyond that depth);
+//  * parse errors that quote at most kMaxQuotedBytes of the offending token.
+// No format rpt reads nests deeper than 6 levels.
+inline constexpr int kMaxJsonDepth = 256;
+inline constexpr std::size_t kMaxQuotedBytes = 40;
+
 // Throws InputError "<path>: file not found" or "<path>:<line>:<column>: JSON parse error: ...".
 nlohmann::json LoadJsonFile(const std::filesystem::path& path);
+// The same keeping the order of object members (the run folder files `rpt report` shows).
+nlohmann::ordered_json LoadOrderedJsonFile(const std::filesystem::path& path);
 // Same for text already in memory; `source` names it in messages.
 nlohmann::json ParseJsonText(std::string_view text, const std::string& source);
 // Throws the InputError ParseJsonText would throw for `text`, without building the document.
 void CheckJsonText(std::string_view text, const std::string& source);
+
+// A value for a message: its JSON text, cut to at most `max_bytes` bytes (at a UTF-8 character
+// boundary, then "...") while it is written, so a large or deep value costs no more than that.
+std::string JsonExcerpt(const nlohmann::json& value, std::size_t max_bytes = kMaxQuotedBytes);
+std::string JsonExcerpt(const nlohmann::ordered_json& value, std::size_t max_bytes = kMaxQuotedBytes);
 // The byte ranges [first, second) of the elements of the top-level array of `text`, which must be
 // valid JSON (CheckJsonText); nullopt when the top-level value is not an array. Lets a reader keep
 // a long list as its text and parse one element at a time.

@@ -35,7 +35,7 @@ std::int64_t ImageId(const json& value, const std::string& source, const std::st
     std::int64_t id = 0;
     if (io::ParseInteger(text, &id)) return id;
   }
-  throw InputError(source + ": " + pointer + ": expected an integer image id in the 64-bit signed range, got " + value.dump());
+  throw InputError(source + ": " + pointer + ": expected an integer image id in the 64-bit signed range, got " + io::JsonExcerpt(value));
 }
 
 // COCO's person category is 1; results without "category_id" are taken as persons. Written as a

@@ -7,6 +7,7 @@
 
 #include "core/errors.h"
 #include "datasets/input_warnings.h"
+#include "datasets/io/input_limits.h"
 #include "datasets/io/json_file.h"
 #include "datasets/io/json_output.h"
 #include "datasets/io/text_file.h"
@@ -117,6 +118,10 @@ Detections ReadGenericDetections(const std::filesystem::path& path) {
   CheckJointNames(detections.joints, source + ": /joints");
   const int num_joints = static_cast<int>(detections.joints.size());
 
+  generic_internal::UnknownKeys unknown_top({"joints", "frames"});
+  generic_internal::UnknownKeys unknown_frame({"id", "views"});
+  generic_internal::UnknownKeys unknown_view({"camera", "poses"});
+  unknown_top.Count(root);
   const json& frames = io::JsonAt(root, "/frames", source);
   if (!frames.is_array()) Fail(source, "/frames", "expected a list of frames, got " + std::string(frames.type_name()));
   detections.frames.reserve(frames.size());
@@ -124,6 +129,7 @@ Detections ReadGenericDetections(const std::filesystem::path& path) {
   for (size_t f = 0; f < frames.size(); ++f) {
     const std::string pointer = io::JsonPointerJoin("/frames", f);
     if (!frames[f].is_object()) Fail(source, pointer, "expected a frame object");
+    unknown_frame.Count(frames[f]);
     FrameDetections& frame = detections.frames.emplace_back();
     frame.frame_id = generic_internal::IdString(root, pointer + "/id", source);
     if (const auto [it, fresh] = frame_of_id.emplace(frame.frame_id, f); !fresh) {
@@ -133,10 +139,12 @@ Detections ReadGenericDetections(const std::filesystem::path& path) {
     if (views_it == frames[f].end()) Fail(source, pointer + "/views", "missing");
     const json& views = *views_it;
     if (!views.is_array()) Fail(source, pointer + "/views", "expected a list of views");
+    io::CheckCameraCount(views.size(), source + ": " + pointer + "/views");
     std::unordered_set<std::string> cameras;
     for (size_t v = 0; v < views.size(); ++v) {
       const std::string view_pointer = io::JsonPointerJoin(pointer + "/views", v);
       if (!views[v].is_object()) Fail(source, view_pointer, "expected {\"camera\": ..., \"poses\": [...]}");
+      unknown_view.Count(views[v]);
       std::string camera = io::JsonString(root, view_pointer + "/camera", source);
       if (camera.empty()) Fail(source, view_pointer + "/camera", "empty camera name");
       if (!cameras.insert(camera).second) Fail(source, view_pointer + "/camera", "camera '" + camera + "' appears twice in this frame");
@@ -146,6 +154,9 @@ Detections ReadGenericDetections(const std::filesystem::path& path) {
       ParsePoses(*poses, view_pointer + "/poses", source, num_joints, &frame.views.emplace_back(), &detections.warnings);
     }
   }
+  unknown_top.Report(source, "top-level objects", &detections.warnings);
+  unknown_frame.Report(source, "frames", &detections.warnings);
+  unknown_view.Report(source, "views", &detections.warnings);
   return detections;
 }
 

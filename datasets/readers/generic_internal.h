@@ -10,9 +10,15 @@
 #include <fstream>
 #include <string>
 
+#include <map>
+#include <vector>
+
 #include <nlohmann/json.hpp>
 
+#include "core/closest_name.h"
 #include "core/errors.h"
+#include "core/utf8.h"
+#include "datasets/input_warnings.h"
 #include "datasets/io/json_file.h"
 #include "datasets/io/json_output.h"
 
@@ -32,6 +38,49 @@ inline std::string IdString(const nlohmann::json& root, const std::string& point
   if (j.is_number_integer()) return std::to_string(j.get<std::int64_t>());
   throw InputError(source + ": " + pointer + ": expected a string or an integer id, got " + std::string(j.type_name()));
 }
+
+// Keys of the objects of a file (labels, frames, views) that the reader does not read: a misspelt
+// optional key ("timeStamp", "bodyIds", "scenes") would otherwise drop its value silently. Counted
+// per key, reported as unused input (an error under --strict): one warning per key for the first
+// kMaxShownKeys keys, one for all others.
+class UnknownKeys {
+ public:
+  static constexpr std::size_t kMaxShownKeys = 5;
+  static constexpr std::size_t kMaxKeyBytes = 40;
+
+  explicit UnknownKeys(std::vector<std::string> known) : known_(std::move(known)) {}
+
+  void Count(const nlohmann::json& object) {
+    if (!object.is_object()) return;
+    for (auto it = object.begin(); it != object.end(); ++it) {
+      if (std::find(known_.begin(), known_.end(), it.key()) != known_.end()) continue;
+      const std::string key = Utf8Excerpt(it.key(), kMaxKeyBytes);
+      if (auto found = counts_.find(key); found != counts_.end()) {
+        ++found->second;
+      } else if (counts_.size() < kMaxShownKeys) {
+        order_.push_back(key);
+        counts_[key] = 1;
+      } else {
+        ++others_;
+      }
+    }
+  }
+
+  // `objects`: what holds the keys, plural ("labels", "frames of the detections").
+  void Report(const std::string& source, const std::string& objects, InputWarnings* warnings) const {
+    for (const std::string& key : order_) {
+      warnings->AddUnused(source, objects + " with the unknown key '" + key + "'" + DidYouMean(key, known_) + ", not read",
+                          counts_.at(key));
+    }
+    warnings->AddUnused(source, "other unknown keys in " + objects + " (not read)", others_);
+  }
+
+ private:
+  std::vector<std::string> known_;
+  std::vector<std::string> order_;  // first seen first
+  std::map<std::string, long> counts_;
+  long others_ = 0;
+};
 
 // A JSON list written one element per line (diff-friendly, compact); invalid UTF-8 is written as
 // U+FFFD and counted in `*replaced` (io::DumpJson).

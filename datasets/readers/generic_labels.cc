@@ -139,6 +139,12 @@ bool InSplit(const json& root, const std::string& pointer, const std::string& so
   return std::any_of(splits->begin(), splits->end(), [&](const json& s) { return s.get<std::string>() == split; });
 }
 
+// Every key a label may hold: what the reader reads, and what the skelda format holds that it does not need.
+std::vector<std::string> KnownLabelKeys() {
+  return {"id", "cameras", "joints", "bodies3D", "scene", "seq", "timestamp", "fps", "bodyids", "splits",
+          "room_center", "room_size", "imgpaths", "subject", "action"};
+}
+
 // One label of a sequence: where it is in the file's text and its time (when known at opening).
 struct LabelRef {
   std::size_t begin = 0;  // byte range of the label in the text
@@ -160,6 +166,7 @@ struct SequenceBuild {
   std::vector<bool> has_timestamp;
   std::optional<double> fps;
   bool room_set = false;
+  generic_internal::UnknownKeys unknown_keys{KnownLabelKeys()};
 };
 
 // The file's text, which every sequence of the file converts its labels from.
@@ -237,6 +244,7 @@ std::vector<std::unique_ptr<FrameSource>> OpenLabels(const std::filesystem::path
     }
     SequenceBuild& build = builds[it->second];
     const int index_in_group = build.label_count++;
+    build.unknown_keys.Count(label);
     if (!options.split.empty() && !InSplit(root, pointer, source, options.split)) continue;
 
     const std::string id = IdString(root, pointer + "/id", source);
@@ -316,6 +324,7 @@ std::vector<std::unique_ptr<FrameSource>> OpenLabels(const std::filesystem::path
   std::vector<std::unique_ptr<FrameSource>> sources;
   for (SequenceBuild& build : builds) {
     if (build.labels.empty()) continue;  // all its labels belong to other splits
+    build.unknown_keys.Report(source, "labels", &build.warnings);
     SequenceHeader& header = build.header;
     const bool all = std::all_of(build.has_timestamp.begin(), build.has_timestamp.end(), [](bool b) { return b; });
     const bool none = std::none_of(build.has_timestamp.begin(), build.has_timestamp.end(), [](bool b) { return b; });

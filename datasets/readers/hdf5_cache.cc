@@ -21,7 +21,10 @@
 namespace rpt {
 namespace {
 
-constexpr int kVersion = 1;
+// Version 2 (written): every dataset carries the CRC-32 of its values (io::NumbersCrc,
+// io::StringsCrc), checked on reading. Version 1 (read): the same layout without checksums.
+constexpr int kVersion = 2;
+constexpr int kVersionWithoutChecksums = 1;
 constexpr const char* kDetectionsFormat = "rpt-detections";
 constexpr const char* kSequencesFormat = "rpt-sequences";
 
@@ -31,16 +34,18 @@ using io::Hdf5Reader;
 using io::Hdf5Writer;
 using io::ShapeText;
 
-void CheckFormat(const io::Hdf5Reader& reader, hid_t group, const std::string& place, const std::string& format) {
+void CheckFormat(io::Hdf5Reader& reader, hid_t group, const std::string& place, const std::string& format) {
   const std::string found = reader.HasAttribute(group, place, "format") ? reader.StringAttribute(group, place, "format") : "";
   if (found != format) {
     reader.Fail(place, "attribute format is '" + found + "', expected '" + format + "' (not written by rpt?)");
   }
   const double version = reader.NumberAttribute(group, place, "version");
-  if (version != kVersion) {
-    reader.Fail(place, "format version " + std::to_string(version) + " is not supported (this build reads version " +
-                    std::to_string(kVersion) + ")");
+  if (version != kVersion && version != kVersionWithoutChecksums) {
+    reader.Fail(place, "format version " + std::to_string(version) + " is not supported (this build reads versions " +
+                    std::to_string(kVersionWithoutChecksums) + " and " + std::to_string(kVersion) + ")");
   }
+  // rpt writes version 2; version 1 is the format other tools (and rpt before checksums) write.
+  if (version == kVersion) reader.RequireChecksums();
 }
 
 // Offsets: offsets[0] = 0, non-decreasing, offsets.back() = total.
@@ -160,7 +165,7 @@ void FillViews(const std::vector<T>& values, const Hdf5Reader& reader, const std
 
 Detections ReadDetectionsHdf5(const std::filesystem::path& path) {
   const Hdf5Quiet quiet;
-  const Hdf5Reader reader(path);
+  Hdf5Reader reader(path);
   const std::string name = "/detections";
   if (!reader.Exists(name)) {
     reader.Fail(name, std::string("missing: no detections in this file") +
@@ -226,12 +231,14 @@ Detections ReadDetectionsHdf5(const std::filesystem::path& path) {
     if (count > 0 && H5Dread(keypoints.get(), H5T_NATIVE_FLOAT, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0) {
       reader.Fail(keypoints_name, "read failed (damaged file?)");
     }
+    reader.VerifyChecksum(keypoints.get(), keypoints_name, io::NumbersCrc(values.data(), values.size()));
     FillViews(values, reader, keypoints_name, &detections, person_offsets);
   } else {
     std::vector<double> values(count);
     if (count > 0 && H5Dread(keypoints.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0) {
       reader.Fail(keypoints_name, "read failed (damaged file?)");
     }
+    reader.VerifyChecksum(keypoints.get(), keypoints_name, io::NumbersCrc(values.data(), values.size()));
     FillViews(values, reader, keypoints_name, &detections, person_offsets);
   }
   return detections;
@@ -316,7 +323,7 @@ void WriteSequencesHdf5(const std::filesystem::path& path, const std::vector<Seq
 
 std::vector<std::unique_ptr<FrameSource>> OpenSequencesHdf5(const std::filesystem::path& path) {
   const Hdf5Quiet quiet;
-  const Hdf5Reader reader(path);
+  Hdf5Reader reader(path);
   if (!reader.Exists("/sequences")) {
     reader.Fail("/sequences", std::string("missing: no labels in this file") +
                                   (reader.Exists("/detections") ? " (it holds detections only)" : " (not an rpt cache?)"));

@@ -269,6 +269,9 @@ Json RunInfoJson(const RunInfo& info) {
   j["compiler"] = info.compiler;
   j["build_type"] = info.build_type;
   j["input_warnings"] = info.input_warnings;
+  Json digests = Json::object();
+  for (const auto& [path, digest] : info.input_digests) digests[path] = digest;
+  j["input_digests"] = digests;
   return j;
 }
 

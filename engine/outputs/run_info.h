@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace rpt::engine {
@@ -19,6 +20,8 @@ struct RunInfo {
   std::string date_utc;
   std::string run_id;  // unique per run ("<date>-<pid>-<random>"); every JSON output of the run carries it
   std::vector<std::string> input_warnings;  // corrections the readers applied, one line per file and kind
+  // {path, digest} of the input files and folders (engine/input_digests.h); "" = not digested.
+  std::vector<std::pair<std::string, std::string>> input_digests;
 };
 
 // The run's machine, build and time, and the command stored by SetCommand.

@@ -7,6 +7,7 @@
 #include "engine/report/report_frame_outcomes.h"
 #include "engine/reprojection.h"
 #include "core/joints.h"
+#include "core/option_codec.h"
 #include "report_assets.h"
 
 namespace rpt::engine {
@@ -15,10 +16,16 @@ namespace {
 using Json = nlohmann::ordered_json;
 
 // Rounded numbers keep the report small: metres to the millimetre, pixels to 0.1 px, errors to 0.1.
+// A value that does not survive the rounding (1e308 / 1e-3 overflows) is null, like NaN.
 Json Round(double value, double step) {
-  if (!std::isfinite(value)) return nullptr;
-  return std::round(value / step) * step;
+  const double rounded = std::round(value / step) * step;
+  if (!std::isfinite(rounded)) return nullptr;
+  return rounded;
 }
+
+// The 3D viewer draws cameras up to this far from the origin (it works in 32-bit floats); a camera
+// farther away (accepted with a warning, e.g. T = 1e308) is listed without a position.
+constexpr double kMaxDrawnCameraDistanceM = 1e6;
 Json Metres(double value) { return Round(value, 1e-3); }
 Json Tenths(double value) { return Round(value, 0.1); }
 
@@ -60,6 +67,11 @@ Json Reprojected(const ReprojectedPerson& person) {
 }
 
 Json CameraJson(const Camera& camera, double depth_m) {
+  const Eigen::Vector3d center = camera.Center();
+  if (!center.allFinite() || center.norm() > kMaxDrawnCameraDistanceM) {
+    return {{"name", camera.name}, {"width", camera.width}, {"height", camera.height}, {"center", nullptr},
+            {"corners", nullptr}};
+  }
   Json corners = Json::array();
   const double w = camera.width, h = camera.height;
   for (const Eigen::Vector2d& uv : {Eigen::Vector2d(0, 0), Eigen::Vector2d(w, 0), Eigen::Vector2d(w, h),
@@ -68,7 +80,6 @@ Json CameraJson(const Camera& camera, double depth_m) {
     const Eigen::Vector3d in_world = camera.R.transpose() * (Eigen::Vector3d(xy.x(), xy.y(), 1.0) * depth_m - camera.t);
     corners.push_back({Metres(in_world.x()), Metres(in_world.y()), Metres(in_world.z())});
   }
-  const Eigen::Vector3d center = camera.Center();
   return {{"name", camera.name},
           {"width", camera.width},
           {"height", camera.height},
@@ -247,11 +258,27 @@ Json BuildReportData(const RecordedRun& run, const std::vector<Sequence>* sequen
                               {"num_invalid", invalid}});
   }
   data["sequences"] = sequences_json;
-  Json scenes = Json::array();
-  for (const auto& [s, f] : SceneFrames(*sequences, options.max_scene_frames)) {
-    scenes.push_back(SceneJson((*sequences)[s], s, f, predictions[s][f], prediction_joints, outcomes.frames[s][f],
-                               eval_options.min_gt_score));
+  auto scene_json = [&](int s, int f) {
+    return SceneJson((*sequences)[s], s, f, predictions[s][f], prediction_joints, outcomes.frames[s][f],
+                     eval_options.min_gt_score);
+  };
+  // The size of a scene, estimated from (at most) the first 10 of the even spacing, bounds how many
+  // frames carry one.
+  std::vector<std::pair<int, int>> picked = SceneFrames(*sequences, options.max_scene_frames);
+  double sample_bytes = 0;
+  const size_t sample = std::min<size_t>(picked.size(), 10);
+  for (size_t k = 0; k < sample; ++k) sample_bytes += static_cast<double>(scene_json(picked[k].first, picked[k].second).dump().size());
+  const double budget_bytes = options.max_scene_mb * 1e6;
+  if (sample > 0 && sample_bytes / sample * picked.size() > budget_bytes) {
+    const int fitting = std::max(1, static_cast<int>(budget_bytes / (sample_bytes / sample)));
+    warnings->push_back(std::to_string(fitting) + " frames carry a 3D scene, not " + std::to_string(picked.size()) +
+                        ": a scene of this run takes about " + std::to_string(static_cast<long>(sample_bytes / sample / 1e3)) +
+                        " kB and the scenes are kept under " + FormatOption(options.max_scene_mb) +
+                        " MB (--max-scene-mb)");
+    picked = SceneFrames(*sequences, fitting);
   }
+  Json scenes = Json::array();
+  for (const auto& [s, f] : picked) scenes.push_back(scene_json(s, f));
   data["scenes"] = scenes;
   data["warnings"] = *warnings;
   return data;

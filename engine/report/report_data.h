@@ -19,6 +19,9 @@ namespace rpt::engine {
 
 struct ReportDataOptions {
   int max_scene_frames = 200;  // frames with a 3D scene and camera views; evenly spaced over the run when more
+  // The scenes' share of the page: fewer frames carry a scene when max_scene_frames of them would
+  // take more (the size of a scene grows with cameras x persons; estimated from the first ones).
+  double max_scene_mb = 10;
 };
 
 // `sequences` is null when the input could not be re-loaded (`why_no_input` says why): the report

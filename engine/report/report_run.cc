@@ -2,6 +2,7 @@
 #include "engine/report/report_run.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -14,22 +15,21 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
+// Through the one guarded JSON path (a regular file within --max-input-mb, nesting within
+// io::kMaxJsonDepth, messages that quote at most a short excerpt); ordered: the report lists steps
+// and options in the run's order.
 Json LoadOrdered(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path.string() + ": file not found (is this an `rpt eval` output folder?)");
-  std::stringstream text;
-  text << in.rdbuf();
-  try {
-    return Json::parse(text.str());  // ordered: the report lists steps and options in the run's order
-  } catch (const nlohmann::json::parse_error& e) {
-    throw InputError(path.string() + ": JSON parse error at byte " + std::to_string(e.byte) + ": " + e.what());
+  if (!std::filesystem::exists(path)) {
+    throw InputError(path.string() + ": file not found (is this an `rpt eval` output folder?)");
   }
+  return io::LoadOrderedJsonFile(path);
 }
 
 // per_joint.csv: joint,mean_error_mm,pck100_pct,count,num_gt ("-" = no value).
 Json ReadPerJoint(const std::filesystem::path& path) {
   std::ifstream in(path);
   if (!in) throw InputError(path.string() + ": file not found");
+  if (!std::filesystem::is_regular_file(path)) throw InputError(path.string() + ": not a regular file");
   Json rows = Json::array();
   std::string line;
   int line_number = 0;
@@ -74,6 +74,9 @@ RecordedPredictions ReadPredictions(const std::filesystem::path& path) {
   for (size_t f = 0; f < frames.size(); ++f) {
     const std::string pointer = "/frames/" + std::to_string(f);
     const nlohmann::json& id = io::JsonAt(root, pointer + "/id", source);
+    if (!id.is_string() && !id.is_number_integer()) {
+      throw InputError(source + ": " + pointer + "/id: expected a string or an integer, got " + io::JsonExcerpt(id));
+    }
     out.frame_ids.push_back(id.is_string() ? id.get<std::string>() : id.dump());
     const nlohmann::json& persons = io::JsonAt(root, pointer + "/persons", source);
     const std::vector<double> track_ids = io::JsonNumbers(root, pointer + "/track_ids", source, persons.size());

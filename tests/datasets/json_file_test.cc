@@ -3,6 +3,7 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include "core/errors.h"
 #include "tests/datasets/io_test_util.h"
@@ -76,6 +77,73 @@ TEST(JsonFixture, ShelfCalibration) {
   EXPECT_EQ(JsonMatrix(root, "/0/T", src, 3, 1).size(), 3u);
   EXPECT_GT(JsonNumber(root, "/0/fx", src), 100.0);
   EXPECT_EQ(JsonMatrix(root, "/0/k", src, 3, 1), (std::vector<double>{0, 0, 0}));
+}
+
+}  // namespace
+}  // namespace rpt::io
+
+namespace rpt::io {
+namespace {
+
+std::string Nested(int depth, const std::string& open, char close) {
+  std::string text;
+  for (int i = 0; i < depth; ++i) text += open;
+  text += "1";
+  return text + std::string(static_cast<std::size_t>(depth), close);
+}
+
+// Deep nesting stopped the process (exit 139) wherever a value was serialised or destroyed
+// recursively: the parse itself stops at kMaxJsonDepth, naming the line and column of the opener.
+TEST(JsonDepthLimit, DeeperThanTheLimitIsAnInputErrorAtTheOpener) {
+  EXPECT_NO_THROW(ParseJsonText(Nested(kMaxJsonDepth, "[", ']'), "ok.json"));
+  EXPECT_NO_THROW(CheckJsonText(Nested(kMaxJsonDepth, "{\"a\":", '}'), "ok.json"));
+  EXPECT_THAT(test::InputErrorOf([] { ParseJsonText(Nested(kMaxJsonDepth + 1, "[", ']'), "a.json"); }),
+              HasSubstr("a.json:1:257: JSON nested deeper than 256 levels"));
+  EXPECT_THAT(test::InputErrorOf([] { ParseJsonText("{\"x\":\n  " + Nested(70000, "{\"a\":", '}') + "}", "b.json"); }),
+              HasSubstr("b.json:2:"));
+  EXPECT_THAT(test::InputErrorOf([] { CheckJsonText(Nested(100000, "[", ']'), "c.json"); }),
+              HasSubstr("c.json:1:257: JSON nested deeper than 256"));
+  // Brackets inside strings do not count.
+  EXPECT_NO_THROW(ParseJsonText("[\"" + std::string(1000, '[') + "\"]", "d.json"));
+  test::TempDir dir;
+  const auto path = dir.Write("run.json", Text("{\"a\": " + Nested(50000, "[", ']') + "}"));
+  EXPECT_THAT(test::InputErrorOf([&] { LoadOrderedJsonFile(path); }), HasSubstr("run.json:1:"));
+  EXPECT_THAT(test::InputErrorOf([&] { LoadJsonFile(path); }), HasSubstr("nested deeper than 256 levels"));
+}
+
+// Messages quote at most a short excerpt: of a value (JsonExcerpt) and of the token a parse error
+// stopped at (a string token runs to the end of its line, a number as long as its digits).
+TEST(JsonExcerpt, ValuesAndTokensAreQuotedShort) {
+  EXPECT_EQ(JsonExcerpt(nlohmann::json::parse("[1, 2, {\"a\": 3}]")), "[1,2,{\"a\":3}]") << "as dump() writes it";
+  EXPECT_EQ(JsonExcerpt(nlohmann::json("abc")), "\"abc\"");
+  nlohmann::json big = nlohmann::json::array();
+  for (int i = 0; i < 100000; ++i) big.push_back(i);
+  EXPECT_EQ(JsonExcerpt(big, 20), "[0,1,2,3,4,5,6,7,8,9...");
+  const nlohmann::json deep = ParseJsonText(Nested(200, "[", ']'), "x");
+  EXPECT_EQ(JsonExcerpt(deep, 10), std::string(10, '[') + "...");
+  EXPECT_EQ(JsonExcerpt(nlohmann::json(std::string(1000, 'x')), 8), "\"xxxxxxx...");
+  // Cut at a character boundary: never half of "é".
+  EXPECT_EQ(JsonExcerpt(nlohmann::json("\xc3\xa9\xc3\xa9\xc3\xa9"), 4), "\"\xc3\xa9...");
+  const nlohmann::ordered_json ordered = {{"k", std::string(500, 'v')}};
+  EXPECT_LE(JsonExcerpt(ordered).size(), kMaxQuotedBytes + 3);
+
+  const std::string long_line = "[\"" + std::string(100000, 's') + "\n\"]";
+  const std::string message = test::InputErrorOf([&] { ParseJsonText(long_line, "line.json"); });
+  EXPECT_THAT(message, HasSubstr("line.json:1:"));
+  EXPECT_LT(message.size(), 300u) << message.substr(0, 300);
+  const std::string number = test::InputErrorOf([] { ParseJsonText("[1" + std::string(5000, '0') + "e400]", "n.json"); });
+  EXPECT_THAT(number, HasSubstr("number overflow parsing '1000000000"));
+  EXPECT_LT(number.size(), 200u) << number.substr(0, 300);
+}
+
+// Only regular files are read whole: a FIFO blocked the read forever, a folder is named as such.
+TEST(JsonFileType, OnlyRegularFilesAreRead) {
+  test::TempDir dir;
+  const auto fifo = dir.path() / "fifo.json";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  EXPECT_THAT(test::InputErrorOf([&] { LoadJsonFile(fifo); }), HasSubstr("fifo.json: not a regular file"));
+  EXPECT_THAT(test::InputErrorOf([&] { LoadOrderedJsonFile(fifo); }), HasSubstr("fifo.json: not a regular file"));
+  EXPECT_THAT(test::InputErrorOf([&] { LoadJsonFile(dir.path()); }), HasSubstr("is a directory"));
 }
 
 }  // namespace

@@ -19,7 +19,25 @@ namespace {
 using ::testing::HasSubstr;
 using test::InputErrorOf;
 
-// Edits a cache file in place with the HDF5 C API (to make malformed files).
+// Marks an edited cache as written by another tool: format version 1, whose datasets carry no
+// checksums (a version-2 cache with a replaced dataset is refused as damaged).
+inline void MarkCacheVersion1(hid_t file) {
+  for (const char* group : {"/detections", "/sequences"}) {
+    if (H5Lexists(file, group, H5P_DEFAULT) <= 0) continue;
+    // Replaced, not rewritten: HDF5 1.10 cannot write an attribute opened by name in this file.
+    H5Adelete_by_name(file, group, "version", H5P_DEFAULT);
+    const hid_t space = H5Screate(H5S_SCALAR);
+    const hid_t attribute =
+        H5Acreate_by_name(file, group, "version", H5T_STD_I32LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    const int one = 1;
+    EXPECT_GE(H5Awrite(attribute, H5T_NATIVE_INT, &one), 0) << group;
+    H5Aclose(attribute);
+    H5Sclose(space);
+  }
+}
+
+// Edits a cache file in place with the HDF5 C API (to make malformed files, or files as another
+// tool writes them: version 1, without checksums).
 class Hdf5Editor {
  public:
   explicit Hdf5Editor(const std::filesystem::path& path) {
@@ -27,6 +45,7 @@ class Hdf5Editor {
     H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
     file_ = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
     EXPECT_GE(file_, 0);
+    MarkCacheVersion1(file_);
   }
   ~Hdf5Editor() {
     H5Fclose(file_);

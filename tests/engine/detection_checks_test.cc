@@ -267,5 +267,29 @@ TEST(DetectionChecks, RealMvorFixtureRaisesNothing) {
   }
 }
 
+// 100 000 cameras without detections gave 99 999 warning lines: per code, ten cameras are named
+// and the others counted in one line.
+TEST(DetectionWarnings, ManyCamerasWithOneWarningGiveAFewLines) {
+  for (const int cameras : {10, 11, 1000}) {
+    SequenceCheck check;
+    check.sequence = "s";
+    for (int c = 0; c < cameras; ++c) {
+      CameraCheck camera;
+      camera.name = "cam" + std::to_string(c);
+      camera.input_frames = 10;  // other cameras have detections, this one none
+      check.cameras.push_back(camera);
+    }
+    const std::vector<CheckWarning> warnings = DetectionWarnings(check);
+    ASSERT_EQ(warnings.size(), cameras > 10 ? 11u : 10u) << cameras;
+    EXPECT_NE(warnings[9].message.find("s, camera cam9: no detections"), std::string::npos);
+    if (cameras > 10) {
+      EXPECT_EQ(warnings[10].code, "camera_without_detections");
+      EXPECT_EQ(warnings[10].message, "s: " + std::to_string(cameras - 10) +
+                                          " more cameras with the warning 'camera_without_detections' (" +
+                                          std::to_string(cameras) + " in all; the first 10 above)");
+    }
+  }
+}
+
 }  // namespace
 }  // namespace rpt::engine

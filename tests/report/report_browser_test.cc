@@ -161,5 +161,16 @@ TEST(ReportBrowser, RunWhoseInputIsGone) {
   EXPECT_NE(dom.find("Frames: not available"), std::string::npos);
 }
 
+// Cameras at T = 1e308 and 2e6 m (accepted with warnings): the viewer drew a grid of 1e308 lines
+// (RangeError) and stopped; now the page has no console error and draws the near cameras.
+TEST(ReportBrowser, FarCamerasDoNotBreakTheViewer) {
+  RPT_REQUIRE_CHROMIUM();
+  const fs::path dir = TempDir("report_browser_far");
+  const std::string input = FarCameraInput(dir / "input", {{0, "1e308"}, {2, "2e6"}});
+  ASSERT_TRUE(EvalAndReport(input, dir / "run"));
+  CheckInBrowser(dir / "run", "far_cameras");
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace rpt::test

@@ -188,5 +188,46 @@ TEST(ReportCommand, MissingJavascriptLibraryNamesThePackage) {
   EXPECT_NE(r.err.find("libjs-three"), std::string::npos) << r.err;
 }
 
+// A camera at T = 1e308 (accepted with a warning) killed the 3D viewer: the page now lists cameras
+// farther than 1000 km without a position; nearer ones keep theirs.
+TEST(ReportData, FarCamerasHaveNoPositionInThePage) {
+  const fs::path dir = TempDir("report_far_cameras");
+  const std::string input = FarCameraInput(dir / "input", {{0, "1e308"}, {2, "2e6"}});
+  ASSERT_TRUE(EvalAndReport(input, dir / "run"));
+  const Json data = ReportData(ReadAll(dir / "run" / "report.html"));
+  ASSERT_TRUE(data["input_loaded"].get<bool>());
+  const Json& cameras = data["sequences"][0]["cameras"];
+  ASSERT_EQ(cameras.size(), 4u);
+  EXPECT_TRUE(cameras[0]["center"].is_null());
+  EXPECT_TRUE(cameras[0]["corners"].is_null());
+  EXPECT_TRUE(cameras[2]["center"].is_null()) << "2000 km: not drawn";
+  for (int c : {1, 3}) {
+    ASSERT_TRUE(cameras[c]["center"].is_array()) << c;
+    for (const Json& v : cameras[c]["center"]) EXPECT_TRUE(v.is_number()) << c;
+    ASSERT_EQ(cameras[c]["corners"].size(), 4u);
+  }
+  EXPECT_EQ(cameras[0]["width"], cameras[1]["width"]) << "still listed for its camera view";
+  fs::remove_all(dir);
+}
+
+// --max-frames scenes of a large rig made pages of hundreds of MB: the scenes are kept under
+// --max-scene-mb by carrying fewer frames, evenly spaced, with a warning.
+TEST(ReportData, ScenesAreKeptUnderTheirShareOfThePage) {
+  const fs::path dir = TempDir("report_scene_budget");
+  ASSERT_TRUE(EvalAndReport(kSyntheticRun, dir));
+  EXPECT_EQ(ReportData(ReadAll(dir / "report.html"))["scenes"].size(), 40u) << "within the default budget";
+  const CommandResult small = RunRpt("report " + dir.string() + " --max-scene-mb 0.1");
+  ASSERT_EQ(small.exit_code, 0) << small.err;
+  const Json data = ReportData(ReadAll(dir / "report.html"));
+  const size_t scenes = data["scenes"].size();
+  EXPECT_GE(scenes, 1u);
+  EXPECT_LT(scenes, 40u);
+  EXPECT_NE(small.err.find(std::to_string(scenes) + " frames carry a 3D scene, not 40"), std::string::npos) << small.err;
+  EXPECT_NE(small.err.find("--max-scene-mb"), std::string::npos) << small.err;
+  EXPECT_LT(data["scenes"].dump().size(), 150000u) << "about the budget";
+  EXPECT_EQ(RunRpt("report " + dir.string() + " --max-frames 100000").exit_code, 2) << "--max-frames is bounded";
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace rpt::test

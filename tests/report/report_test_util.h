@@ -7,8 +7,12 @@
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <fstream>
 #include <regex>
+#include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "tests/cli/cli_test_util.h"
 
@@ -25,6 +29,38 @@ inline bool EvalAndReport(const std::string& eval_args, const std::filesystem::p
   EXPECT_EQ(report.exit_code, 0) << report.err;
   EXPECT_NE(report.out.find("report in "), std::string::npos) << report.out;
   return report.exit_code == 0;
+}
+
+// Labels and detections of a synthetic scene (`rpt convert`) whose cameras `far` (indices) are moved
+// to the centre [distance, 0, 0]: accepted with a warning, they must not break the page. Returns the
+// eval arguments reading them.
+inline std::string FarCameraInput(const std::filesystem::path& dir, const std::vector<std::pair<int, std::string>>& far) {
+  std::filesystem::create_directories(dir);
+  const std::string labels = (dir / "labels.json").string(), detections = (dir / "detections.json").string();
+  const CommandResult convert = RunRpt("convert --dataset synthetic --param frames=12 --param people=2 --param cameras=4 "
+                                       "--labels-out " + labels + " --detections-out " + detections);
+  EXPECT_EQ(convert.exit_code, 0) << convert.err;
+  std::string text = ReadAll(labels), out;
+  const std::regex centre(R"("T": ?\[\[[^\]]*\], ?\[[^\]]*\], ?\[[^\]]*\]\])");
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);) {
+    int camera = 0;
+    std::string edited;
+    auto begin = std::sregex_iterator(line.begin(), line.end(), centre);
+    size_t last = 0;
+    for (auto it = begin; it != std::sregex_iterator(); ++it, ++camera) {
+      edited += line.substr(last, static_cast<size_t>(it->position()) - last);
+      std::string replacement = it->str();
+      for (const auto& [index, distance] : far) {
+        if (index == camera) replacement = "\"T\": [[" + distance + "], [0], [0]]";
+      }
+      edited += replacement;
+      last = static_cast<size_t>(it->position() + it->length());
+    }
+    out += edited + line.substr(last) + "\n";
+  }
+  std::ofstream(labels) << out;
+  return "--labels " + labels + " --detections " + detections;
 }
 
 // The JSON data block of a report page.
