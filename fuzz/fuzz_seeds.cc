@@ -40,7 +40,10 @@ Bytes Written(const std::string& name, Write&& write) {
 // `count` numbers first, first + step, ... separated by spaces (4D-Association text).
 std::string Numbers(int count, double first, double step) {
   std::string out;
-  for (int i = 0; i < count; ++i) out += (i ? " " : "") + std::to_string(first + step * i);
+  for (int i = 0; i < count; ++i) {
+    if (i > 0) out += ' ';
+    out += std::to_string(first + step * i);
+  }
   return out;
 }
 
@@ -100,7 +103,10 @@ std::string FourDaSkeletons() {
   std::string out = "19 2\n";
   for (int f = 0; f < 2; ++f) {
     out += "1\n5\n";
-    for (int row = 0; row < 4; ++row) out += Numbers(19, row == 3 ? 1 : 0.1 * row + f, row == 3 ? 0 : 0.05) + "\n";
+    for (int row = 0; row < 4; ++row) {
+      out += Numbers(19, row == 3 ? 1 : 0.1 * row + f, row == 3 ? 0 : 0.05);
+      out += '\n';
+    }
   }
   return out;
 }

@@ -16,7 +16,6 @@ int steps::Verify(const VerifyOptions& options, const VerifyInput& in, VerifyScr
   const bool by_group = groups.size() == persons->num_persons();
   bool have_boxes = false;  // pose boxes are computed when first needed
   int kept = 0;
-  const int num_joints = persons->num_joints;
   for (int p = 0; p < persons->num_persons(); ++p) {
     const auto person = persons->Person(p);
     int support = 0, empty = 0;

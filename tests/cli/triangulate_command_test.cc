@@ -300,8 +300,11 @@ TEST_F(Triangulate, ExportsReadBackEqualTheJson) {
         // Filled joints are those post-processing gave its fill score (postprocess.filled_joint_score).
         const bool filled = frame["provenance"][q][j] == 1;
         filled_joints += filled;
-        if (filled) EXPECT_EQ(joint[3].get<double>(), 0.05);
-        if (!filled) EXPECT_NE(joint[3].get<double>(), 0.05) << "frame " << f << " joint " << joints[j];
+        if (filled) {
+          EXPECT_EQ(joint[3].get<double>(), 0.05);
+        } else {
+          EXPECT_NE(joint[3].get<double>(), 0.05) << "frame " << f << " joint " << joints[j];
+        }
       }
     }
   }

@@ -4,6 +4,7 @@
 // frames that reading it whole gives.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -27,7 +28,7 @@ TEST(DatasetRegistry, EveryReaderIsListedOnce) {
 
 // docs/datasets.md shows the tables DatasetParamsMarkdown() generates from the readers' visits.
 TEST(DatasetRegistry, DocsTablesMatchTheReaders) {
-  std::ifstream file(std::string(RPT_SOURCE_DIR) + "/docs/datasets.md");
+  std::ifstream file(std::filesystem::path(RPT_SOURCE_DIR) / "docs" / "datasets.md");
   ASSERT_TRUE(file.good());
   std::stringstream text;
   text << file.rdbuf();
