@@ -23,7 +23,6 @@
 #include "cli/commands.h"
 #include "core/printable_text.h"
 #include "cli/config_args.h"
-#include "engine/json_text.h"
 #include "cli/input_options.h"
 #include "engine/input.h"
 #include "cli/progress.h"
@@ -31,10 +30,10 @@
 #include "engine/outputs/run_info.h"
 #include "engine/run.h"
 #include "engine/outputs/sweep_html.h"
+#include "engine/sweep_configurations.h"
 #include "cli/threads_option.h"
 #include "engine/thread_count.h"
 #include "core/errors.h"
-#include "core/option_codec.h"
 #include "core/text.h"
 #include "datasets/dataset_request.h"
 #include "datasets/io/json_file.h"
@@ -48,11 +47,6 @@ namespace {
 namespace fs = std::filesystem;
 using Json = nlohmann::ordered_json;
 
-struct Variant {
-  std::string name;
-  std::vector<std::pair<std::string, std::string>> overrides;  // key, value
-};
-
 struct SweepArgs {
   engine::InputSpec input;
   ConfigArgs config;
@@ -62,64 +56,6 @@ struct SweepArgs {
   std::string out = "out/sweep";
   int threads = 0;
 };
-
-
-// The --list file: a list of {"name", "set"} or {"configurations": [...]}; every wrong type is an
-// InputError naming the file and the JSON pointer.
-std::vector<Variant> ReadList(const std::string& path) {
-  const nlohmann::json root = io::LoadJsonFile(path);
-  const std::string list_pointer = root.is_object() ? "/configurations" : "";
-  const nlohmann::json* items = io::JsonFind(root, list_pointer);
-  if (!items || !items->is_array()) {
-    throw InputError(path + ": " + (list_pointer.empty() ? "/" : list_pointer) +
-                     ": expected a list of {\"name\", \"set\"} or {\"configurations\": [...]}, got " +
-                     (items ? items->type_name() : "nothing"));
-  }
-  std::vector<Variant> variants;
-  for (size_t i = 0; i < items->size(); ++i) {
-    const std::string pointer = io::JsonPointerJoin(list_pointer, i);
-    const nlohmann::json& item = (*items)[i];
-    if (!item.is_object()) {
-      throw InputError(path + ": " + pointer + ": expected {\"name\", \"set\"}, got " + item.type_name());
-    }
-    Variant v;
-    v.name = item.contains("name") ? io::JsonString(root, pointer + "/name", path) : "config " + std::to_string(i);
-    if (item.contains("set")) {
-      const nlohmann::json& set = item["set"];
-      if (!set.is_object()) {
-        throw InputError(path + ": " + pointer + "/set: expected an object {option: value}, got " + set.type_name());
-      }
-      for (const auto& [key, value] : set.items()) v.overrides.emplace_back(key, engine::JsonValueText(value));
-    }
-    variants.push_back(v);
-  }
-  return variants;
-}
-
-std::vector<Variant> ExpandGrid(const std::vector<std::string>& grid) {
-  std::vector<Variant> variants = {Variant{}};
-  for (const std::string& axis : grid) {
-    const size_t eq = axis.find('=');
-    if (eq == std::string::npos) throw ConfigError("--grid " + axis + ": expected key=value1,value2,...");
-    const std::string key = axis.substr(0, eq);
-    const std::vector<std::string> values = SplitList(axis.substr(eq + 1));
-    if (values.empty()) throw ConfigError("--grid " + axis + ": no values");
-    std::vector<Variant> next;
-    for (const Variant& v : variants) {
-      for (const std::string& value : values) {
-        Variant w = v;
-        w.overrides.emplace_back(key, value);
-        next.push_back(w);
-      }
-    }
-    variants = next;
-  }
-  for (Variant& v : variants) {
-    for (const auto& [key, value] : v.overrides) AppendItem(&v.name, key + "=" + value, " ");
-    if (v.name.empty()) v.name = "default";
-  }
-  return variants;
-}
 
 std::pair<int, int> ParseShard(const std::string& text) {
   int k = 0, n = 0;
@@ -165,7 +101,8 @@ void WriteSweepFiles(const fs::path& out, const Json& file, const std::string& s
 
 void RunSweep(const SweepArgs& args) {
   if (args.grid.empty() == args.list.empty()) throw ConfigError("give either --grid key=v1,v2 (repeatable) or --list FILE");
-  const std::vector<Variant> all = args.list.empty() ? ExpandGrid(args.grid) : ReadList(args.list);
+  const std::vector<engine::SweepConfiguration> all =
+      args.list.empty() ? engine::ExpandSweepGrid(args.grid) : engine::ReadSweepList(args.list);
   const auto [shard, shards] = ParseShard(args.shard);
   std::vector<int> mine;
   for (int i = shard - 1; i < static_cast<int>(all.size()); i += shards) mine.push_back(i);
@@ -260,7 +197,7 @@ void RunSweep(const SweepArgs& args) {
   // The base configuration's value of every varied option (sweep.html shows them greyed where a
   // row does not set the option).
   Json base = Json::object();
-  for (const Variant& v : all) {
+  for (const engine::SweepConfiguration& v : all) {
     for (const auto& [key, value] : v.overrides) {
       if (key.rfind("param.", 0) != 0 && !base.contains(key)) base[key] = engine::GetConfigOption(base_options, key);
     }

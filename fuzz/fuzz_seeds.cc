@@ -378,6 +378,9 @@ std::map<std::string, std::vector<std::pair<std::string, Bytes>>> MakeFuzzSeeds(
   "room_check": {"size_m": [8, 8, 3]}})")}};
   seeds["thresholds"] = {{"thresholds.json", Of(R"({"description": "fuzz", "evaluations": [{"name": "synthetic",
   "dataset": "synthetic", "params": {"frames": 2}, "min": {"recall500": 50}, "max": {"mpjpe_mm": 100}}]})")}};
+  seeds["sweep_list"] = {{"list.json", Of(R"([{"name": "no prefilter", "set": {"prefilter.enabled": false}},
+  {"set": {"filter.min_match_score": 0.9, "triangulate.core_joints": ["nose", "hip_left"]}}, {"name": "default"}])")},
+                         {"object.json", Of(R"({"configurations": [{"name": "a", "set": {"merge.top_k": 0}}]})")}};
   seeds["sweep_shard"] = {{"sweep-shard-1-of-1.json", Of(R"({"total": 2, "shard": "1/1", "base": {"filter.min_match_score": "0.9"},
   "rows": [{"index": 0, "name": "a", "set": {"merge.top_k": "0"}, "default": true, "summary": {"mpjpe_mm": 50.5, "recall500": null}},
            {"index": 1, "name": "b", "summary": {"mpjpe_mm": 51}}]})")}};

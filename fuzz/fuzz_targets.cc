@@ -24,6 +24,7 @@
 #include "engine/config.h"
 #include "engine/report/report_data.h"
 #include "engine/report/report_run.h"
+#include "engine/sweep_configurations.h"
 #include "engine/thresholds_file.h"
 #include "datasets/calibration/calibration.h"
 #include "datasets/dataset_request.h"
@@ -415,6 +416,8 @@ std::vector<FuzzTarget> MakeTargets() {
        }},
       {"thresholds", "rpt check thresholds file (--thresholds)",
        [](B b) { engine::ReadThresholdsFile(WriteScratch("thresholds.json", b).string()); }},
+      {"sweep_list", "rpt sweep configuration list (--list)",
+       [](B b) { engine::ReadSweepList(WriteScratch("sweep.json", b).string()); }},
       {"sweep_shard", "rpt sweep shard merged by rpt merge", MergeShard},
       {"run_folder", "rpt eval output folder read by rpt report (summary, config, run, predictions JSON)",
        ReadRunFolder},
