@@ -16,6 +16,7 @@
 #include "core/closest_name.h"
 #include "cli/commands.h"
 #include "cli/interrupt.h"
+#include "cli/memory_reserve.h"
 #include "engine/outputs/run_info.h"
 #include "core/errors.h"
 #include "datasets/io/inflate_budget.h"
@@ -69,6 +70,7 @@ void PrintOptionSuggestions(CLI::App& app) {
 
 int main(int argc, char** argv) {
   rpt::cli::InstallInterruptHandler();  // before any other thread starts
+  rpt::cli::InstallMemoryReserve(32 << 20);  // out of memory ends in a message, not std::terminate
   rpt::SkipHdf5CleanupAtExit();          // before any other HDF5 call
   CLI::App app{"rpt: RapidPoseTriangulation, learning-free multi-view multi-person 3D pose triangulation"};
   app.require_subcommand(1);

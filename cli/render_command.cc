@@ -224,7 +224,13 @@ void RunRender(const RenderArgs& args) {
     const std::vector<std::string> sequence_files = engine::UniqueFileNames(sequence_names);
     for (size_t s = 0; s < selected.size(); ++s) {
       const Sequence* sequence = selected[s];
-      RenderSequence(args, config, *sequence, folder.path(), sequence_files[s], &problems, &pngs, &videos);
+      try {
+        RenderSequence(args, config, *sequence, folder.path(), sequence_files[s], &problems, &pngs, &videos);
+      } catch (const cv::Exception& e) {  // OpenCV allocates images itself: no std::bad_alloc
+        if (e.code != cv::Error::StsNoMem) throw;
+        throw InputError(sequence->name + ": out of memory drawing the camera images (lower --max-megapixels, or "
+                         "render fewer cameras with --cameras)");
+      }
     }
     folder.Commit();
   } catch (const InputError& e) {

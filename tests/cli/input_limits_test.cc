@@ -201,6 +201,38 @@ TEST_F(InputLimits, OutOfMemoryNamesTheInputInsteadOfInternalError) {
   EXPECT_GT(named, 0) << "no run ended naming the file it could not read";
 }
 
+// Out of memory in the middle of building a page, a run or an image used to abort (exit 134,
+// "terminate called after throwing std::bad_alloc"): the exception unwound through a destructor
+// that allocates (nlohmann::json frees deep values through a heap stack), or came from OpenCV as a
+// cv::Exception. Under address-space limits from just above what rpt needs to start up to 60 MB
+// more, eval, report and render end with exit 0, 1 or 2, never an abort or "internal error", and
+// some of them say "out of memory".
+TEST_F(InputLimits, OutOfMemoryAnywhereEndsInAMessageNotAnAbort) {
+  Convert("--param frames=50 --param cameras=4 --param people=3");
+  const std::string input = "--labels " + Path("labels.json") + " --detections " + Path("detections.json");
+  const test::CommandResult eval = test::RunRpt("eval " + input + " --out " + Path("run"));
+  ASSERT_EQ(eval.exit_code, 0) << eval.err;
+  long base_kb = 0;
+  for (long kb = 200000; kb <= 2000000 && base_kb == 0; kb += 5000) {
+    if (test::RunRpt("config --dump", "ulimit -v " + std::to_string(kb) + "; ").exit_code == 0) base_kb = kb;
+  }
+  ASSERT_GT(base_kb, 0) << "rpt did not start under 2 GB of address space";
+  const std::vector<std::string> commands = {"eval " + input + " --out " + Path("run2"), "report " + Path("run"),
+                                             "render " + input + " --frames 0:1 --out " + Path("render")};
+  int out_of_memory = 0;
+  for (long kb = base_kb; kb <= base_kb + 60000; kb += 6000) {
+    for (const std::string& command : commands) {
+      const test::CommandResult r = test::RunRpt(command, "ulimit -v " + std::to_string(kb) + "; ");
+      EXPECT_TRUE(r.exit_code == 0 || r.exit_code == 1 || r.exit_code == 2)
+          << kb << " kB, rpt " << command << ": exit " << r.exit_code << "\n" << r.err;
+      EXPECT_FALSE(Contains(r.err, "internal error") || Contains(r.err, "terminate called"))
+          << kb << " kB, rpt " << command << ": " << r.err;
+      if (r.exit_code != 0 && Contains(r.err, "out of memory")) ++out_of_memory;
+    }
+  }
+  EXPECT_GT(out_of_memory, 0) << "no limit ran out of memory: the range is too generous to test anything";
+}
+
 // Misspelt optional keys were dropped silently, even under --strict.
 TEST_F(InputLimits, UnknownKeysInLabelsAndDetectionsAreCountedAndRefusedUnderStrict) {
   Convert("--param frames=3 --param cameras=2 --param people=1");
