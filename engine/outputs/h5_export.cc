@@ -11,13 +11,13 @@
 
 namespace rpt::engine {
 
-void WriteH5Export(const std::filesystem::path& path, const ArrayFrames& frames) {
+void WriteH5Export(const std::filesystem::path& path, const ArrayFrames& frames, std::int64_t block_frames) {
+  if (block_frames <= 0) block_frames = frames.block_frames();
   using Type = io::Hdf5ArrayWriter::Type;
   const JointNames joints = frames.joints();
   const auto num_frames = static_cast<std::uint64_t>(frames.num_frames());
   const auto num_persons = static_cast<std::uint64_t>(frames.max_persons());
   const auto num_joints = static_cast<std::uint64_t>(joints.size());
-  const std::int64_t block_frames = frames.block_frames();
   const auto chunk = static_cast<std::uint64_t>(block_frames);
   const size_t id_width = std::max<size_t>(1, frames.max_id_bytes());
   io::Hdf5ArrayWriter h5(path);

@@ -6,6 +6,7 @@
 // group. Layout: docs/own_data.md, "predictions.npz and predictions.h5".
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 
 #include "engine/outputs/array_frames.h"
@@ -14,6 +15,7 @@ namespace rpt::engine {
 
 // Writes the file (staged: `path` holds its old contents until it is complete). Throws InputError
 // naming the file when it cannot be written.
-void WriteH5Export(const std::filesystem::path& path, const ArrayFrames& frames);
+// `block_frames`: frames read at a time (0: ArrayFrames::block_frames()).
+void WriteH5Export(const std::filesystem::path& path, const ArrayFrames& frames, std::int64_t block_frames = 0);
 
 }  // namespace rpt::engine

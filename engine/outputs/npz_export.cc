@@ -14,7 +14,8 @@ namespace rpt::engine {
 // The arrays are written as they are in memory, and called little-endian ("<f8").
 static_assert(std::endian::native == std::endian::little, "predictions.npz is written from little-endian memory");
 
-void WriteNpzExport(const std::filesystem::path& path, const ArrayFrames& frames) {
+void WriteNpzExport(const std::filesystem::path& path, const ArrayFrames& frames, std::int64_t block_frames) {
+  if (block_frames <= 0) block_frames = frames.block_frames();
   const JointNames joints = frames.joints();
   const std::int64_t num_frames = frames.num_frames();
   const std::int64_t num_persons = frames.max_persons();
@@ -24,7 +25,7 @@ void WriteNpzExport(const std::filesystem::path& path, const ArrayFrames& frames
   const auto streamed = [&](const std::string& name, const std::string& descr, const std::vector<std::int64_t>& shape,
                             const std::function<void(const ArrayFrames::Blocks&)>& write) {
     npz.BeginArray(name, descr, shape);
-    ArrayFrames::Blocks blocks(frames, frames.block_frames());
+    ArrayFrames::Blocks blocks(frames, block_frames);
     while (blocks.Next()) write(blocks);
     npz.EndArray();
   };

@@ -18,6 +18,7 @@
 //   run_id, position_unit ("m"), time_unit ("s")   0-d <U
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 
 #include "engine/outputs/array_frames.h"
@@ -26,6 +27,7 @@ namespace rpt::engine {
 
 // Writes the archive (staged: `path` holds its old contents until it is complete). Throws
 // InputError naming the file when it cannot be written, or when a member would pass 4 GiB.
-void WriteNpzExport(const std::filesystem::path& path, const ArrayFrames& frames);
+// `block_frames`: frames read at a time (0: ArrayFrames::block_frames()).
+void WriteNpzExport(const std::filesystem::path& path, const ArrayFrames& frames, std::int64_t block_frames = 0);
 
 }  // namespace rpt::engine

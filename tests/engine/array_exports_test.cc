@@ -274,12 +274,23 @@ TEST(ArrayExports, NpzAndH5HoldEveryFrameExactlyPaddedToTheLargestFrame) {
     EXPECT_EQ(frames.max_id_code_points(), 5u);
     EXPECT_EQ(frames.max_id_bytes(), 6u);
     const std::string tag = filled ? "" : "_nofill";
-    WriteNpzExport(dir / ("predictions" + tag + ".npz"), frames);
-    WriteH5Export(dir / ("predictions" + tag + ".h5"), frames);
+    // Blocks of 2 frames: 3 blocks, the last one short.
+    WriteNpzExport(dir / ("predictions" + tag + ".npz"), frames, 2);
+    WriteH5Export(dir / ("predictions" + tag + ".h5"), frames, 2);
     SCOPED_TRACE(filled ? "filled joints written" : "--no-filled-joints");
     const Expected e = ExpectedArrays(filled);
     ExpectNpz(dir / ("predictions" + tag + ".npz"), e);
     ExpectH5(dir / ("predictions" + tag + ".h5"), e);
+  }
+  // The run's own block size (all 5 frames in one block) gives the same files.
+  {
+    ArrayFrames frames(dir / "predictions.arrays", "run-7", 2, ExportOptions{});
+    Feed(&frames);
+    EXPECT_EQ(frames.block_frames(), 4096);
+    WriteNpzExport(dir / "one_block.npz", frames);
+    WriteH5Export(dir / "one_block.h5", frames);
+    ExpectNpz(dir / "one_block.npz", ExpectedArrays(true));
+    ExpectH5(dir / "one_block.h5", ExpectedArrays(true));
   }
   // The filled joints (w_0 person 0 and rün_2 person 0, joint 1) differ between the two runs.
   const auto with = io::ReadNpz(dir / "predictions.npz").at("poses").AsArray().ToDoubles();
