@@ -8,7 +8,8 @@ namespace rpt::cli {
 void AddExportOptions(CLI::App* command, ExportArgs* args) {
   command->add_option("--export", args->formats,
                       "files of 3D persons, comma-separated: json (predictions.json), csv (predictions.csv), trc "
-                      "(trc/, one file per track for OpenSim) (default json; docs/own_data.md)");
+                      "(trc/, one file per track for OpenSim), npz (predictions.npz, numpy arrays frames x persons x "
+                      "joints x 4), h5 (predictions.h5, the same arrays in HDF5) (default json; docs/own_data.md)");
   command->add_flag("--no-predictions", args->no_predictions, "write no 3D persons at all (long runs)");
   command->add_flag("--no-filled-joints", args->no_filled_joints,
                     "write joints filled from a neighbour (provenance 'filled') as missing");
@@ -27,12 +28,6 @@ engine::ExportOptions ExportOptionsOf(const ExportArgs& args) {
     options.formats.clear();
   } else if (!args.formats.empty()) {
     options.formats = engine::ParseExportFormats(args.formats);
-    for (const engine::ExportFormat format : {engine::ExportFormat::kNpz, engine::ExportFormat::kH5}) {
-      if (options.Has(format)) {
-        throw ConfigError("--export " + args.formats + ": " + std::string(engine::ExportFormatName(format)) +
-                          " is not written yet (json, csv and trc are)");
-      }
-    }
   }
   options.filled_joints = !args.no_filled_joints;
   options.trc_axes = args.trc_axes == "y-up" ? engine::TrcAxes::kYUp : engine::TrcAxes::kZUp;

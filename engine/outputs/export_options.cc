@@ -9,12 +9,17 @@
 namespace rpt::engine {
 namespace {
 
-constexpr std::array<std::pair<ExportFormat, std::string_view>, 5> kFormats = {{
-    {ExportFormat::kJson, "json"},
-    {ExportFormat::kCsv, "csv"},
-    {ExportFormat::kTrc, "trc"},
-    {ExportFormat::kNpz, "npz"},
-    {ExportFormat::kH5, "h5"},
+struct FormatNames {
+  ExportFormat format;
+  std::string_view name;  // in --export
+  std::string_view file;  // in the run folder
+};
+constexpr std::array<FormatNames, 5> kFormats = {{
+    {ExportFormat::kJson, "json", "predictions.json"},
+    {ExportFormat::kCsv, "csv", "predictions.csv"},
+    {ExportFormat::kTrc, "trc", "trc"},
+    {ExportFormat::kNpz, "npz", "predictions.npz"},
+    {ExportFormat::kH5, "h5", "predictions.h5"},
 }};
 
 }  // namespace
@@ -24,8 +29,15 @@ bool ExportOptions::Has(ExportFormat format) const {
 }
 
 std::string_view ExportFormatName(ExportFormat format) {
-  for (const auto& [value, name] : kFormats) {
-    if (value == format) return name;
+  for (const FormatNames& f : kFormats) {
+    if (f.format == format) return f.name;
+  }
+  return "?";
+}
+
+std::string_view ExportFileName(ExportFormat format) {
+  for (const FormatNames& f : kFormats) {
+    if (f.format == format) return f.file;
   }
   return "?";
 }
@@ -36,14 +48,15 @@ std::vector<ExportFormat> ParseExportFormats(const std::string& text) {
   while (start <= text.size()) {
     const size_t comma = std::min(text.find(',', start), text.size());
     const std::string name = text.substr(start, comma - start);
-    const auto it = std::find_if(kFormats.begin(), kFormats.end(), [&](const auto& f) { return f.second == name; });
+    const auto it =
+        std::find_if(kFormats.begin(), kFormats.end(), [&](const FormatNames& f) { return f.name == name; });
     if (it == kFormats.end()) {
       throw ConfigError("--export " + text + ": '" + name + "' is not one of json, csv, trc, npz, h5");
     }
-    if (std::find(formats.begin(), formats.end(), it->first) != formats.end()) {
+    if (std::find(formats.begin(), formats.end(), it->format) != formats.end()) {
       throw ConfigError("--export " + text + ": '" + name + "' given twice");
     }
-    formats.push_back(it->first);
+    formats.push_back(it->format);
     start = comma + 1;
   }
   return formats;

@@ -4,6 +4,7 @@
 // and which joints are written. The formats and their schemas: docs/own_data.md, "Exports".
 #pragma once
 
+#include <array>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -13,6 +14,8 @@
 namespace rpt::engine {
 
 enum class ExportFormat { kJson, kCsv, kTrc, kNpz, kH5 };
+inline constexpr std::array<ExportFormat, 5> kExportFormats = {
+    ExportFormat::kJson, ExportFormat::kCsv, ExportFormat::kTrc, ExportFormat::kNpz, ExportFormat::kH5};
 
 // World axes of the TRC files: as they are (z up, the convention of every dataset reader and of
 // most calibrations), or rotated for OpenSim's y up: (x, y, z) -> (x, z, -y), a rotation of -90
@@ -31,6 +34,9 @@ struct ExportOptions {
 
 // "json", "csv", "trc", "npz", "h5".
 std::string_view ExportFormatName(ExportFormat format);
+// What it writes in a run folder: "predictions.json", "predictions.csv", "trc" (a folder),
+// "predictions.npz", "predictions.h5".
+std::string_view ExportFileName(ExportFormat format);
 // Parses "json,csv,trc" (names as above, comma-separated, no repeats). Throws ConfigError naming
 // the option (`--export`) and the bad name.
 std::vector<ExportFormat> ParseExportFormats(const std::string& text);

@@ -7,13 +7,15 @@
 #include <cstdlib>
 #include <sstream>
 
-#include "engine/outputs/step_tables.h"
-#include "engine/outputs/text_escaping.h"
 #include "core/errors.h"
 #include "core/text.h"
 #include "datasets/io/json_output.h"
 #include "datasets/io/staged_output.h"
 #include "datasets/io/text_file.h"
+#include "engine/outputs/h5_export.h"
+#include "engine/outputs/npz_export.h"
+#include "engine/outputs/step_tables.h"
+#include "engine/outputs/text_escaping.h"
 
 namespace rpt::engine {
 namespace {
@@ -324,11 +326,21 @@ void WriteRunFiles(const std::filesystem::path& staging, const RunResult& run, c
   write_json("run.json", RunInfoJson(info));  // last: the marker of a complete run
 }
 
+// Removes what `format` writes in `folder` (a file, or the trc folder with its files), links
+// included and never followed; throws InputError naming it when it cannot.
+void RemoveExport(const std::filesystem::path& folder, ExportFormat format) {
+  const std::filesystem::path path = folder / ExportFileName(format);
+  std::error_code ec;
+  if (!std::filesystem::exists(std::filesystem::symlink_status(path, ec))) return;
+  std::filesystem::remove_all(path, ec);  // a link itself is removed, not what it points to
+  if (ec) throw InputError(path.string() + ": cannot remove the earlier run's export: " + ec.message());
+}
+
 }  // namespace
 
 RunFolder::RunFolder(const std::filesystem::path& dir, const std::string& run_id, int num_sequences,
                      const ExportOptions& exports)
-    : dir_(dir), folder_(std::make_unique<io::StagedFolder>(dir)) {
+    : dir_(dir), exports_(exports), folder_(std::make_unique<io::StagedFolder>(dir)) {
   // When the folder must be replaced in place, the old run marker goes first, so a reader never
   // takes a mixed folder for a complete run.
   if (folder_->in_place()) {
@@ -337,14 +349,24 @@ RunFolder::RunFolder(const std::filesystem::path& dir, const std::string& run_id
     if (ec) throw InputError((dir / "run.json").string() + ": cannot remove the old run marker: " + ec.message());
   }
   if (exports.Has(ExportFormat::kJson)) {
-    predictions_ =
-        std::make_unique<PredictionsWriter>(folder_->path() / "predictions.json", run_id, num_sequences, exports);
+    predictions_ = std::make_unique<PredictionsWriter>(folder_->path() / ExportFileName(ExportFormat::kJson), run_id,
+                                                       num_sequences, exports);
   }
   if (exports.Has(ExportFormat::kCsv)) {
-    csv_ = std::make_unique<CsvExport>(folder_->path() / "predictions.csv", num_sequences, exports);
+    csv_ = std::make_unique<CsvExport>(folder_->path() / ExportFileName(ExportFormat::kCsv), num_sequences, exports);
   }
-  if (exports.Has(ExportFormat::kTrc)) trc_ = std::make_unique<TrcExport>(folder_->path() / "trc", num_sequences, exports);
-  sinks_ = std::make_unique<SinkList>(std::vector<FrameSink*>{predictions_.get(), csv_.get(), trc_.get()});
+  if (exports.Has(ExportFormat::kTrc)) {
+    // The TRC files of an earlier run in this folder would stay beside the new ones (tracks this
+    // run does not have): the folder starts empty. Staged, the old folder is untouched (its
+    // entries here are hard links); in place, its TRC files go now.
+    RemoveExport(folder_->path(), ExportFormat::kTrc);
+    trc_ = std::make_unique<TrcExport>(folder_->path() / ExportFileName(ExportFormat::kTrc), num_sequences, exports);
+  }
+  if (exports.Has(ExportFormat::kNpz) || exports.Has(ExportFormat::kH5)) {
+    arrays_ = std::make_unique<ArrayFrames>(folder_->path() / "predictions.arrays", run_id, num_sequences, exports);
+  }
+  sinks_ =
+      std::make_unique<SinkList>(std::vector<FrameSink*>{predictions_.get(), csv_.get(), trc_.get(), arrays_.get()});
 }
 
 RunFolder::~RunFolder() = default;
@@ -358,6 +380,15 @@ void RunFolder::Finish(const RunResult& run, const Config& config, const RunInfo
       if (const int count = predictions_->Finish(); count > 0) replaced.emplace_back("predictions.json", count);
     }
     if (csv_ != nullptr) csv_->Finish();
+    if (exports_.Has(ExportFormat::kNpz))
+      WriteNpzExport(folder_->path() / ExportFileName(ExportFormat::kNpz), *arrays_);
+    if (exports_.Has(ExportFormat::kH5)) WriteH5Export(folder_->path() / ExportFileName(ExportFormat::kH5), *arrays_);
+    arrays_.reset();  // its scratch files go
+    // An earlier run's exports that this run does not write (carried over with the folder's other
+    // entries, or left in place) go: the folder holds only this run's.
+    for (const ExportFormat format : kExportFormats) {
+      if (!exports_.Has(format)) RemoveExport(folder_->path(), format);
+    }
     WriteRunFiles(folder_->path(), run, config, info, extra_summary, &replaced);
     folder_->Commit();
   } catch (const InputError& e) {

@@ -11,13 +11,14 @@
 #include <string>
 #include <vector>
 
-#include "engine/config.h"
-#include "engine/outputs/run_info.h"
 #include "datasets/io/staged_output.h"
+#include "engine/config.h"
 #include "engine/frame_sink.h"
+#include "engine/outputs/array_frames.h"
 #include "engine/outputs/csv_export.h"
 #include "engine/outputs/export_options.h"
 #include "engine/outputs/predictions_writer.h"
+#include "engine/outputs/run_info.h"
 #include "engine/outputs/trc_export.h"
 #include "engine/run.h"
 
@@ -77,17 +78,21 @@ class RunFolder {
   RunFolder& operator=(const RunFolder&) = delete;
 
   // Writes the exports: predictions.json (predictions_writer.h), predictions.csv (csv_export.h),
-  // trc/ (trc_export.h).
+  // trc/ (trc_export.h), predictions.npz (npz_export.h) and predictions.h5 (h5_export.h). The
+  // folder holds only this run's exports: those of an earlier run there that this run does not
+  // write are removed (its TRC files all), whatever --export that run had.
   FrameSink* sink();
   void Finish(const RunResult& run, const Config& config, const RunInfo& info,
               const nlohmann::ordered_json& extra_summary = nlohmann::ordered_json::object());
 
  private:
   std::filesystem::path dir_;
+  ExportOptions exports_;
   std::unique_ptr<io::StagedFolder> folder_;
   std::unique_ptr<PredictionsWriter> predictions_;
   std::unique_ptr<CsvExport> csv_;
   std::unique_ptr<TrcExport> trc_;
+  std::unique_ptr<ArrayFrames> arrays_;  // for predictions.npz and predictions.h5
   std::unique_ptr<SinkList> sinks_;
 };
 

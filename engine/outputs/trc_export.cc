@@ -83,7 +83,9 @@ void TrcExport::Frame(const FrameOutput& frame) {
                        "': the frame's time is unknown (a TRC row needs one; give --fps)");
     }
     std::ofstream& out = TrackStream(&s, persons.track_ids[p], frame_idx, time_s);
-    ++s.tracks[persons.track_ids[p]].rows;
+    Track& track = s.tracks[persons.track_ids[p]];
+    ++track.rows;
+    track.last_frame = frame_idx;
     std::snprintf(number, sizeof(number), "%ld\t%.6f", frame_idx + 1, time_s);
     out << number;
     const auto person = persons.Person(p);
@@ -103,10 +105,36 @@ void TrcExport::Frame(const FrameOutput& frame) {
     }
     out << "\n";
   }
+  // A track is in every frame from its first to its end (it coasts while its person is not
+  // detected, core/pipeline/track.h): one missing from this frame has ended, and its file is
+  // written now, so that only the live tracks are held.
+  for (auto it = s.tracks.begin(); it != s.tracks.end();) {
+    if (it->second.last_frame == frame_idx) {
+      ++it;
+      continue;
+    }
+    FinishTrack(&s, it->first, &it->second);
+    it = s.tracks.erase(it);
+  }
+}
+
+void TrcExport::FinishTrack(Sequence* s, int track_id, Track* track) {
+  if (track->out != nullptr) {
+    track->out->flush();
+    if (!*track->out) throw InputError(track->part.string() + ": write failed: " + std::strerror(errno));
+    track->out.reset();
+    --s->open;
+  }
+  WriteFile(*s, track_id, *track);
+  ++s->files;
 }
 
 void TrcExport::WriteFile(const Sequence& s, int track_id, const Track& track) const {
-  const std::string name = s.name + "_track" + std::to_string(track_id) + ".trc";
+  std::string name = s.name + "_track" + std::to_string(track_id) + ".trc";
+  std::error_code ec;
+  if (std::filesystem::exists(std::filesystem::symlink_status(dir_ / name, ec))) {  // the track came back
+    name = s.name + "_track" + std::to_string(track_id) + "_from" + std::to_string(track.first_frame + 1) + ".trc";
+  }
   double rate = s.fps;
   if (!(rate > 0) && track.rows > 1 && track.last_time_s > track.first_time_s) {
     rate = (track.rows - 1) / (track.last_time_s - track.first_time_s);
@@ -130,18 +158,7 @@ void TrcExport::WriteFile(const Sequence& s, int track_id, const Track& track) c
 
 void TrcExport::EndSequence(int sequence) {
   Sequence& s = sequences_[sequence];
-  for (auto& [id, track] : s.tracks) {
-    if (track.out != nullptr) {
-      track.out->flush();
-      if (!*track.out) throw InputError(track.part.string() + ": write failed: " + std::strerror(errno));
-      track.out.reset();
-    }
-  }
-  s.open = 0;
-  for (auto& [id, track] : s.tracks) {
-    WriteFile(s, id, track);
-    ++s.files;
-  }
+  for (auto& [id, track] : s.tracks) FinishTrack(&s, id, &track);
   s.tracks.clear();
 }
 

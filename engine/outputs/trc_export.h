@@ -13,9 +13,13 @@
 // fields. Axes per ExportOptions::trc_axes (y up for OpenSim: (x, z, -y)), units per
 // trc_millimetres. The data rate is the sequence's fps, else the track's mean rate from its times.
 // A frame with an unknown time is an InputError naming the sequence and the frame (a TRC row needs
-// a time: give --fps). Streams: each track's rows go to a part file beside its target (at most
-// kMaxOpenTrcParts open at once, others reopened to append); EndSequence writes each track's
-// header and rows into its file.
+// a time: give --fps). Streams, and memory holds the live tracks only: each track's rows go to a
+// part file beside its target (at most kMaxOpenTrcParts open at once, others reopened to append),
+// and a track's file (header and rows) is written as soon as a frame comes without it: a track is
+// in every frame from its first to its end, coasting included (core/pipeline/track.h); the rest at
+// EndSequence. Should a track id come back after its file was written, its later rows go to
+// <sequence>_track<id>_from<frame#>.trc. `dir` must hold no TRC files of another run (RunFolder
+// empties it).
 #pragma once
 
 #include <filesystem>
@@ -52,7 +56,7 @@ class TrcExport final : public FrameSink {
     std::filesystem::path part;                // its path
     std::unique_ptr<std::ofstream> out;  // null while closed
     long rows = 0;
-    long first_frame = 0;
+    long first_frame = 0, last_frame = 0;
     double first_time_s = 0, last_time_s = 0;
   };
   struct Sequence {
@@ -60,11 +64,13 @@ class TrcExport final : public FrameSink {
     JointNames joints;
     double fps = 0;
     long frames = 0;
-    std::map<int, Track> tracks;
+    std::map<int, Track> tracks;  // the live ones
     int open = 0;
     long files = 0;
   };
   std::ofstream& TrackStream(Sequence* s, int track_id, long frame_idx, double time_s);
+  // Closes the track's part and writes its file.
+  void FinishTrack(Sequence* s, int track_id, Track* track);
   void WriteFile(const Sequence& s, int track_id, const Track& track) const;
 
   std::filesystem::path dir_;

@@ -2,9 +2,11 @@
 // rpt triangulate end to end on files the test writes from a generated scene: cameras (our JSON)
 // and detections in every detection format (generic JSON, HDF5 cache, OpenPose folder, COCO result
 // list), each triangulated without labels and compared with `rpt eval` on labels of the same frames
-// (same engine loop: equal predictions); the exports read back and compared with predictions.json;
-// bad input exits 2 naming the file and the place.
+// (same engine loop: equal predictions); the exports read back (CSV and TRC by small parsers here,
+// NPZ by our NPY reader, HDF5 by the HDF5 C API) and compared with predictions.json; a reused
+// output folder holds only the new run's exports; bad input exits 2 naming the file and the place.
 #include <gtest/gtest.h>
+#include <hdf5.h>
 
 #include <cmath>
 #include <filesystem>
@@ -18,6 +20,7 @@
 
 #include "core/joints.h"
 #include "datasets/calibration/calibration.h"
+#include "datasets/io/npy.h"
 #include "datasets/readers/generic_detections.h"
 #include "datasets/readers/generic_labels.h"
 #include "datasets/readers/hdf5_cache.h"
@@ -373,6 +376,218 @@ TEST_F(Triangulate, ExportsReadBackEqualTheJson) {
   EXPECT_FALSE(fs::exists(dir_ / "none" / "predictions.json"));
   EXPECT_TRUE(fs::exists(dir_ / "none" / "run.json"));
   EXPECT_EQ(test::RunRpt(input + " --no-predictions --export csv --out " + (dir_ / "x").string()).exit_code, 2);
+}
+
+// A dataset of an HDF5 file through the C API: its values as doubles, its shape, strings.
+class H5File {
+ public:
+  explicit H5File(const fs::path& path) : file_(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT)) {}
+  ~H5File() {
+    if (file_ >= 0) H5Fclose(file_);
+  }
+  bool ok() const { return file_ >= 0; }
+  std::vector<std::int64_t> Shape(const std::string& name) const {
+    const hid_t dataset = H5Dopen2(file_, name.c_str(), H5P_DEFAULT);
+    const hid_t space = H5Dget_space(dataset);
+    std::vector<hsize_t> dims(static_cast<size_t>(std::max(0, H5Sget_simple_extent_ndims(space))));
+    H5Sget_simple_extent_dims(space, dims.data(), nullptr);
+    H5Sclose(space);
+    H5Dclose(dataset);
+    return {dims.begin(), dims.end()};
+  }
+  std::vector<double> Doubles(const std::string& name) const {
+    size_t count = 1;
+    for (const std::int64_t d : Shape(name)) count *= static_cast<size_t>(d);
+    std::vector<double> values(count);
+    const hid_t dataset = H5Dopen2(file_, name.c_str(), H5P_DEFAULT);
+    EXPECT_GE(H5Dread(dataset, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), 0) << name;
+    H5Dclose(dataset);
+    return values;
+  }
+  std::vector<std::string> Strings(const std::string& name) const {
+    const hid_t dataset = H5Dopen2(file_, name.c_str(), H5P_DEFAULT);
+    const hid_t type = H5Dget_type(dataset);
+    const size_t width = H5Tget_size(type), count = static_cast<size_t>(Shape(name).at(0));
+    std::vector<char> buffer(width * count);
+    EXPECT_GE(H5Dread(dataset, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, buffer.data()), 0) << name;
+    H5Tclose(type);
+    H5Dclose(dataset);
+    std::vector<std::string> out;
+    for (size_t i = 0; i < count; ++i)
+      out.emplace_back(buffer.data() + i * width, strnlen(buffer.data() + i * width, width));
+    return out;
+  }
+  std::string Attribute(const std::string& name) const {
+    const hid_t attribute = H5Aopen(file_, name.c_str(), H5P_DEFAULT);
+    const hid_t type = H5Aget_type(attribute);
+    std::vector<char> buffer(H5Tget_size(type) + 1, '\0');
+    H5Aread(attribute, type, buffer.data());
+    H5Tclose(type);
+    H5Aclose(attribute);
+    return buffer.data();
+  }
+
+ private:
+  hid_t file_;
+};
+
+// One array of predictions.npz or predictions.h5, whichever was read: shape and values.
+struct Array {
+  std::vector<std::int64_t> shape;
+  std::vector<double> values;
+  std::vector<std::string> strings;
+};
+using Arrays = std::map<std::string, Array>;
+
+Arrays ReadNpzArrays(const fs::path& path) {
+  Arrays arrays;
+  for (const auto& [name, view] : io::ReadNpz(path)) {
+    const io::NdArray& a = view.AsArray();
+    Array& out = arrays[name];
+    out.shape = a.shape;
+    if (a.dtype.kind == 'U') {
+      for (size_t i = 0; i < a.Size(); ++i) out.strings.push_back(a.ElementAsString(i));
+    } else {
+      out.values = a.ToDoubles();
+    }
+  }
+  return arrays;
+}
+
+Arrays ReadH5Arrays(const fs::path& path) {
+  const H5File h5(path);
+  EXPECT_TRUE(h5.ok()) << path;
+  Arrays arrays;
+  for (const std::string name :
+       {"poses", "track_ids", "num_persons", "provenance", "times_s", "sequence_frame_offsets", "sequence_fps"}) {
+    arrays[name] = {h5.Shape("/" + name), h5.Doubles("/" + name), {}};
+  }
+  for (const std::string name : {"frame_ids", "joint_names", "provenance_names", "sequence_names"}) {
+    arrays[name] = {h5.Shape("/" + name), {}, h5.Strings("/" + name)};
+  }
+  for (const std::string name : {"run_id", "position_unit", "time_unit"}) arrays[name] = {{}, {}, {h5.Attribute(name)}};
+  return arrays;
+}
+
+// The arrays hold predictions.json's frames: values (the JSON's 6 decimals, scores 4), track ids,
+// provenance, times and ids; padding after each frame's persons. Returns the filled joints with a
+// position.
+int ExpectArraysEqualTheJson(const Arrays& a, const Json& p, const std::string& what) {
+  const size_t num_frames = p["frames"].size(), num_joints = p["joints"].size();
+  size_t num_persons = 0;
+  for (const Json& frame : p["frames"]) num_persons = std::max(num_persons, frame["persons"].size());
+  EXPECT_GE(num_persons, 2u) << what;
+  const auto n = [](size_t v) { return static_cast<std::int64_t>(v); };
+  EXPECT_EQ(a.at("poses").shape, (std::vector<std::int64_t>{n(num_frames), n(num_persons), n(num_joints), 4})) << what;
+  EXPECT_EQ(a.at("track_ids").shape, (std::vector<std::int64_t>{n(num_frames), n(num_persons)})) << what;
+  EXPECT_EQ(a.at("provenance").shape, (std::vector<std::int64_t>{n(num_frames), n(num_persons), n(num_joints)}))
+      << what;
+  if (a.at("poses").values.size() != num_frames * num_persons * num_joints * 4) return 0;
+  EXPECT_EQ(a.at("joint_names").strings, p["joints"].get<std::vector<std::string>>()) << what;
+  EXPECT_EQ(a.at("provenance_names").strings, p["provenance_names"].get<std::vector<std::string>>()) << what;
+  EXPECT_EQ(a.at("sequence_names").strings, std::vector<std::string>{p["sequences"][0]["name"].get<std::string>()})
+      << what;
+  EXPECT_EQ(a.at("sequence_frame_offsets").values, (std::vector<double>{0.0, static_cast<double>(num_frames)})) << what;
+  EXPECT_EQ(a.at("sequence_fps").values, std::vector<double>{p["sequences"][0]["fps"].get<double>()}) << what;
+  EXPECT_EQ(a.at("run_id").strings, std::vector<std::string>{p["run_id"].get<std::string>()}) << what;
+  EXPECT_EQ(a.at("position_unit").strings, std::vector<std::string>{p["units"]["position"].get<std::string>()}) << what;
+  EXPECT_EQ(a.at("time_unit").strings, std::vector<std::string>{p["units"]["time"].get<std::string>()}) << what;
+  int filled = 0;
+  for (size_t f = 0; f < num_frames; ++f) {
+    const Json& frame = p["frames"][f];
+    EXPECT_EQ(a.at("frame_ids").strings[f], frame["id"]) << what;
+    EXPECT_NEAR(a.at("times_s").values[f], frame["time"].get<double>(), 5e-7) << what;
+    EXPECT_EQ(a.at("num_persons").values[f], static_cast<double>(frame["persons"].size())) << what;
+    for (size_t q = 0; q < num_persons; ++q) {
+      const bool real = q < frame["persons"].size();
+      const double track = a.at("track_ids").values[f * num_persons + q];
+      EXPECT_EQ(track, real ? frame["track_ids"][q].get<double>() : -1.0) << what << " frame " << f << " person " << q;
+      for (size_t j = 0; j < num_joints; ++j) {
+        const double* v = &a.at("poses").values[((f * num_persons + q) * num_joints + j) * 4];
+        const double provenance = a.at("provenance").values[(f * num_persons + q) * num_joints + j];
+        const std::string at =
+            what + " frame " + std::to_string(f) + " person " + std::to_string(q) + " joint " + std::to_string(j);
+        if (!real) {
+          EXPECT_TRUE(std::isnan(v[0]) && std::isnan(v[3])) << at << ": padding";
+          EXPECT_EQ(provenance, 255) << at;
+          continue;
+        }
+        const Json& joint = frame["persons"][q][j];
+        EXPECT_EQ(provenance, frame["provenance"][q][j].get<double>()) << at;
+        if (joint[3].is_number() && joint[3].get<double>() > 0) {
+          for (int k = 0; k < 3; ++k) EXPECT_NEAR(v[k], joint[k].get<double>(), 5e-7) << at;
+          EXPECT_NEAR(v[3], joint[3].get<double>(), 5e-5) << at;
+          filled += provenance == 1;
+        } else {
+          EXPECT_TRUE(std::isnan(v[0]) && std::isnan(v[1]) && std::isnan(v[2])) << at << ": missing";
+          EXPECT_EQ(v[3], 0) << at;
+        }
+      }
+    }
+  }
+  return filled;
+}
+
+TEST_F(Triangulate, ArrayExportsReadBackEqualTheJson) {
+  const std::vector<std::string> ids = Ids("take_", kFrames);
+  WriteGenericDetections(dir_ / "detections.json", Coco17(scene_, ids));
+  const std::string input = "triangulate --cameras " + (dir_ / "cameras.json").string() + " --detections " +
+                            (dir_ / "detections.json").string() + " --fps 25 --quiet --export json,npz,h5";
+  for (const bool filled_joints : {true, false}) {
+    const fs::path out = dir_ / (filled_joints ? "arrays" : "arrays_nofill");
+    const test::CommandResult r =
+        test::RunRpt(input + (filled_joints ? "" : " --no-filled-joints") + " --out " + out.string());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const Json p = ReadJson(out / "predictions.json");
+    const Arrays npz = ReadNpzArrays(out / "predictions.npz"), h5 = ReadH5Arrays(out / "predictions.h5");
+    const int npz_filled = ExpectArraysEqualTheJson(npz, p, "npz");
+    const int h5_filled = ExpectArraysEqualTheJson(h5, p, "h5");
+    EXPECT_EQ(npz_filled, h5_filled);
+    // The generated detections miss some joints: filled, unless --no-filled-joints (then missing).
+    if (filled_joints) {
+      EXPECT_GT(npz_filled, 0);
+    } else {
+      EXPECT_EQ(npz_filled, 0) << "--no-filled-joints: every filled joint is NaN";
+    }
+    for (const auto& entry : fs::directory_iterator(out)) {
+      EXPECT_EQ(entry.path().filename().string().find(".part"), std::string::npos) << entry.path();
+    }
+  }
+}
+
+TEST_F(Triangulate, AReusedOutputFolderHoldsOnlyTheNewRunsExports) {
+  const std::vector<std::string> ids = Ids("take_", kFrames);
+  WriteGenericDetections(dir_ / "detections.json", Coco17(scene_, ids));
+  const fs::path out = dir_ / "reused";
+  const std::string input = "triangulate --cameras " + (dir_ / "cameras.json").string() + " --detections " +
+                            (dir_ / "detections.json").string() + " --fps 25 --quiet --out " + out.string();
+  const std::vector<std::string> exports = {"predictions.json", "predictions.csv", "trc", "predictions.npz",
+                                            "predictions.h5"};
+  const auto present = [&]() {
+    std::vector<std::string> names;
+    for (const std::string& name : exports) {
+      if (fs::exists(out / name)) names.push_back(name);
+    }
+    return names;
+  };
+  ASSERT_EQ(test::RunRpt(input + " --export json,csv,trc,npz,h5").exit_code, 0);
+  EXPECT_EQ(present(), exports);
+  std::ofstream(out / "notes.txt") << "the user's own file\n";
+  std::ofstream(out / "trc" / "detections_track99.trc") << "an earlier run's track\n";
+  ASSERT_EQ(test::RunRpt(input + " --export csv").exit_code, 0);
+  EXPECT_EQ(present(), std::vector<std::string>{"predictions.csv"});
+  EXPECT_TRUE(fs::exists(out / "notes.txt")) << "other files stay";
+  ASSERT_EQ(test::RunRpt(input + " --export trc,h5").exit_code, 0);
+  EXPECT_EQ(present(), (std::vector<std::string>{"trc", "predictions.h5"}));
+  // A TRC file of an earlier run goes too, also when this run writes TRC.
+  std::ofstream(out / "trc" / "detections_track99.trc") << "an earlier run's track\n";
+  ASSERT_EQ(test::RunRpt(input + " --export trc").exit_code, 0);
+  EXPECT_FALSE(fs::exists(out / "trc" / "detections_track99.trc"));
+  EXPECT_TRUE(fs::exists(out / "trc" / "detections_track0.trc"));
+  ASSERT_EQ(test::RunRpt(input + " --no-predictions").exit_code, 0);
+  EXPECT_EQ(present(), std::vector<std::string>{});
+  EXPECT_TRUE(fs::exists(out / "run.json"));
+  EXPECT_TRUE(fs::exists(out / "notes.txt"));
 }
 
 TEST(TriangulateDataset, WithoutGroundTruthEqualsEval) {

@@ -1,0 +1,114 @@
+// SPDX-License-Identifier: MIT
+// TRC files (engine/outputs/trc_export.h) of tracks that end: written as soon as a frame comes
+// without the track, so that only the live tracks are held (and only their part files exist); a
+// track id that comes back gets a file of its own.
+#include "engine/outputs/trc_export.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace rpt::engine {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path TempDir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("rpt_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+std::vector<std::string> Lines(const fs::path& path) {
+  std::ifstream in(path);
+  std::vector<std::string> lines;
+  std::string line;
+  while (std::getline(in, line)) lines.push_back(line);
+  return lines;
+}
+
+int PartFiles(const fs::path& dir) {
+  int count = 0;
+  for (const auto& entry : fs::directory_iterator(dir))
+    count += entry.path().string().find(".part") != std::string::npos;
+  return count;
+}
+
+// Frame `frame_idx` (time frame_idx / 10 s) with one person per track id, joint "a" at (track, frame, 0).
+void Feed(TrcExport* trc, long frame_idx, const std::vector<int>& tracks) {
+  SequenceFrame input;
+  input.id = "f" + std::to_string(frame_idx);
+  input.timestamp_s = frame_idx / 10.0;
+  Poses3D persons;
+  persons.Clear(1);
+  for (const int track : tracks) persons.AddPerson(track).col(0) << track, static_cast<double>(frame_idx), 0, 1;
+  FrameStats stats;
+  trc->Frame(FrameOutput{0, &input, &persons, &stats});
+}
+
+TEST(TrcExport, WritesATracksFileWhenItEndsAndAReturningIdToAFileOfItsOwn) {
+  const fs::path dir = TempDir("trc_ended");
+  TrcExport trc(dir / "trc", 1, ExportOptions{});
+  SequenceHeader header;
+  header.name = "s";
+  header.fps = 10;
+  trc.BeginSequence(0, header, {"a"});
+  Feed(&trc, 0, {0, 1});
+  Feed(&trc, 1, {0, 1});
+  EXPECT_EQ(trc.files(), 0);
+  Feed(&trc, 2, {0});
+  EXPECT_EQ(trc.files(), 1) << "track 1 ended with frame 2";
+  ASSERT_TRUE(fs::exists(dir / "trc" / "s_track1.trc"));
+  Feed(&trc, 3, {});
+  EXPECT_EQ(trc.files(), 2);
+  EXPECT_EQ(PartFiles(dir / "trc"), 0) << "no live track, no part file";
+  Feed(&trc, 4, {0});  // the id comes back
+  trc.EndSequence(0);
+  EXPECT_EQ(trc.files(), 3);
+  EXPECT_EQ(PartFiles(dir / "trc"), 0);
+
+  const auto track1 = Lines(dir / "trc" / "s_track1.trc");
+  ASSERT_EQ(track1.size(), 8u);
+  EXPECT_EQ(track1[2], "10\t10\t2\t1\tm\t10\t1\t2");
+  EXPECT_EQ(track1[6], "1\t0.000000\t1.000000\t0.000000\t0.000000");
+  EXPECT_EQ(track1[7], "2\t0.100000\t1.000000\t1.000000\t0.000000");
+  const auto track0 = Lines(dir / "trc" / "s_track0.trc");
+  ASSERT_EQ(track0.size(), 9u);
+  EXPECT_EQ(track0[2], "10\t10\t3\t1\tm\t10\t1\t3");
+  EXPECT_EQ(track0[8], "3\t0.200000\t0.000000\t2.000000\t0.000000");
+  const auto again = Lines(dir / "trc" / "s_track0_from5.trc");
+  ASSERT_EQ(again.size(), 7u);
+  EXPECT_EQ(again[0], "PathFileType\t4\t(X/Y/Z)\ts_track0_from5.trc");
+  EXPECT_EQ(again[2], "10\t10\t1\t1\tm\t10\t5\t1");
+  EXPECT_EQ(again[6], "5\t0.400000\t0.000000\t4.000000\t0.000000");
+  fs::remove_all(dir);
+}
+
+TEST(TrcExport, HoldsOnlyTheLiveTracksPartFiles) {
+  const fs::path dir = TempDir("trc_many");
+  TrcExport trc(dir / "trc", 1, ExportOptions{});
+  SequenceHeader header;
+  header.name = "s";
+  header.fps = 10;
+  trc.BeginSequence(0, header, {"a"});
+  // 200 tracks, two alive at a time, each for three frames.
+  for (long f = 0; f < 200; ++f) {
+    std::vector<int> tracks;
+    for (int t = static_cast<int>(f / 3) * 2; t < static_cast<int>(f / 3) * 2 + 2; ++t) tracks.push_back(t);
+    Feed(&trc, f, tracks);
+    EXPECT_LE(PartFiles(dir / "trc"), 2) << "frame " << f;
+  }
+  trc.EndSequence(0);
+  EXPECT_EQ(trc.files(), 134);
+  EXPECT_EQ(PartFiles(dir / "trc"), 0);
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace rpt::engine
