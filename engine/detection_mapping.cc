@@ -181,6 +181,11 @@ Detections ReadMappedDetections(const std::string& path, const DetectionMapping&
       }
     }
   }
+  if (format == DetectionsFormat::kVoxelPosePickle && options.voxelpose.frame_id_prefix.empty()) {
+    throw ConfigError(path +
+                      ": a VoxelPose cache is keyed \"<camera>_<frame>\": name its frames with "
+                      "--voxelpose-prefix NAME (frame ids NAME_000300)");
+  }
   Detections detections = ReadDetectionsFile(path, options);
   if (renames.empty()) return detections;
   std::set<std::string> used, names;

@@ -207,6 +207,18 @@ TEST_F(DetectionMapping, VoxelPoseCacheWithPrefixAndCameraIdsEqualsEval) {
       test::RunRpt("triangulate --quiet --cameras " + (dir_ / "cameras.json").string() + " --detections " +
                    (dir_ / "cache.pkl").string() + " --out " + (dir_ / "x").string());
   EXPECT_NE(unnamed.err.find("keys of cameras not in the calibration ignored"), std::string::npos) << unnamed.err;
+  // rpt convert reads it alone only when told the frame ids; the renames apply too.
+  const std::string convert = "convert --detections " + (dir_ / "cache.pkl").string() + " --detections-out " +
+                              (dir_ / "converted.json").string();
+  const test::CommandResult no_prefix = test::RunRpt(convert);
+  EXPECT_EQ(no_prefix.exit_code, 2);
+  EXPECT_NE(no_prefix.err.find("--voxelpose-prefix NAME"), std::string::npos) << no_prefix.err;
+  const test::CommandResult converted = test::RunRpt(convert + " --voxelpose-prefix take" + renames);
+  ASSERT_EQ(converted.exit_code, 0) << converted.err;
+  const Json written = ReadJson(dir_ / "converted.json");
+  ASSERT_EQ(written["frames"].size(), static_cast<size_t>(kFrames));
+  EXPECT_EQ(written["frames"][3]["id"], "take_000003");
+  EXPECT_EQ(written["frames"][3]["views"][2]["camera"], "cam2");
 }
 
 TEST_F(DetectionMapping, AFlagThatDoesNotApplyExitsWith2NamingIt) {

@@ -227,7 +227,7 @@ TEST_F(RenderRun, DrawsTheRecordedPredictionsOfEvalAndTriangulateRuns) {
   EXPECT_EQ(ErrorLines(from_eval.out), errors) << "the same predictions, the same errors";
   EXPECT_EQ(ErrorLines(from_tri.out), errors) << "triangulate's predictions are eval's";
   const std::string sequence = scene_.name;
-  for (const std::string& camera : {"cam0", "cam3"}) {
+  for (const char* camera : {"cam0", "cam3"}) {
     const fs::path png = fs::path(camera) / "take_000004.png";
     EXPECT_LT(DifferentPixels(dir_ / "direct" / sequence / png, dir_ / "from_tri" / "detections" / png), 0.02)
         << "the same persons drawn; only the title differs (the sequence's name)";
@@ -237,7 +237,7 @@ TEST_F(RenderRun, DrawsTheRecordedPredictionsOfEvalAndTriangulateRuns) {
   const test::CommandResult same =
       test::RunRpt("render --run " + eval.string() + " --frames 3:5 --out " + (dir_ / "from_eval_nogt").string());
   ASSERT_EQ(same.exit_code, 0) << same.err;
-  for (const std::string& camera : {"cam0", "cam3"}) {
+  for (const char* camera : {"cam0", "cam3"}) {
     const fs::path png = fs::path(sequence) / camera / "take_000004.png";
     EXPECT_LT(DifferentPixels(dir_ / "direct" / png, dir_ / "from_eval_nogt" / png), 1e-3) << png;
   }
