@@ -9,13 +9,12 @@
 
 #include "cli/commands.h"
 #include "cli/input_options.h"
-#include "engine/input.h"
 #include "core/errors.h"
 #include "datasets/io/staged_output.h"
-#include "datasets/readers/detections_file.h"
 #include "datasets/readers/generic_detections.h"
 #include "datasets/readers/generic_labels.h"
 #include "datasets/readers/hdf5_cache.h"
+#include "engine/input.h"
 
 namespace rpt::cli {
 namespace {
@@ -62,8 +61,9 @@ void RunConvert(const ConvertArgs& args) {
   InputWarnings warnings;
   const std::vector<Sequence> sequences =
       detections_only ? std::vector<Sequence>{} : engine::LoadInput(args.input, {.detections = false}, &warnings);
-  const Detections detections =
-      detections_only ? ReadDetectionsFile(args.input.detections, DetectionsFileOptions{}) : CollectDetections(sequences);
+  const Detections detections = detections_only
+                                    ? engine::ReadMappedDetections(args.input.detections, args.input.mapping)
+                                    : CollectDetections(sequences);
   warnings.Merge(detections.warnings);  // empty unless read directly above
   engine::CheckStrict(args.input.strict, warnings);  // engine::LoadInput checked its own; this covers the direct read
   PrintInputWarnings(warnings);

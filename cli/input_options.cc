@@ -10,6 +10,58 @@ namespace rpt::cli {
 
 namespace {
 
+// How the entries of --detections become frame ids, cameras and joints (engine/detection_mapping.h).
+void AddDetectionMappingOptions(CLI::App* command, engine::DetectionMapping* mapping) {
+  const std::string group = "Detection mapping (docs/own_data.md)";
+  command
+      ->add_option("--map-pattern", mapping->pattern,
+                   "regular expression matching each file path of an OpenPose folder (relative to it), or each image "
+                   "file_name of --coco-images; its groups feed --map-frame-id and --map-camera")
+      ->group(group);
+  command
+      ->add_option("--map-frame-id", mapping->frame_id,
+                   "frame id template: {N} group N, {N:W} zero-padded to W digits, {N:W+K} plus K (default {2:6})")
+      ->group(group);
+  command->add_option("--map-camera", mapping->camera, "camera name template (default {1}: the folder)")->group(group);
+  command
+      ->add_option("--openpose-joints", mapping->openpose_joints,
+                   "joints read from an OpenPose folder: " + Join(engine::OpenPoseJointsNames(), "|") +
+                       " (default auto: whole-body with face/hands, body-feet with BODY_25, else body)")
+      ->check(CLI::IsMember(engine::OpenPoseJointsNames()))
+      ->group(group);
+  command
+      ->add_option("--coco-images", mapping->coco_images,
+                   "COCO annotation file whose \"images\" place the image ids of a COCO result list (by "
+                   "\"frame_id\"/\"camera\" or by file_name, --map-*)")
+      ->group(group);
+  command
+      ->add_option("--coco-image-ids", mapping->coco_image_ids,
+                   "how a COCO result list's image ids become frames and cameras: images (the images of "
+                   "--coco-images; default with it) or mvor (day*1e10 + cam*1e7 + frame; default without)")
+      ->check(CLI::IsMember(engine::CocoImageIdsNames()))
+      ->group(group);
+  command
+      ->add_option_function<double>(
+          "--coco-min-score", [mapping](double score) { mapping->coco_min_score = score; },
+          "COCO results with a lower person \"score\" are dropped (default: none)")
+      ->check(CLI::NonNegativeNumber)
+      ->group(group);
+  command
+      ->add_option("--coco-keypoints", mapping->coco_keypoints,
+                   "the array of a COCO result holding the keypoints (default coco_keypoints when present, else "
+                   "keypoints)")
+      ->group(group);
+  command
+      ->add_option("--voxelpose-prefix", mapping->voxelpose_prefix,
+                   "frame ids of a VoxelPose .pkl cache: <prefix>_<frame, 6 digits> (default: the sequence's name; "
+                   "with --cameras the detections file's name)")
+      ->group(group);
+  command
+      ->add_option("--rename-camera", mapping->rename_cameras,
+                   "FROM=TO: camera FROM of the detections is camera TO of the calibration (repeatable; any format)")
+      ->group(group);
+}
+
 void AddSourceOptions(CLI::App* command, engine::InputSpec* spec) {
   command->add_option("--dataset", spec->dataset, "dataset reader (see `rpt datasets`)");
   command->add_option("--root", spec->root, "dataset folder in its original layout");
@@ -20,6 +72,7 @@ void AddSourceOptions(CLI::App* command, engine::InputSpec* spec) {
   command->add_option("--labels", spec->labels, "generic labels file (skelda schema) instead of --dataset");
   command->add_option("--detections", spec->detections,
                       "2D detections: generic JSON, HDF5 cache, OpenPose folder, COCO result list or VoxelPose .pkl");
+  AddDetectionMappingOptions(command, &spec->mapping);
 }
 
 void AddStrictOption(CLI::App* command, engine::InputSpec* spec) {

@@ -2,9 +2,11 @@
 // `rpt render`: overlays of the 2D detections against the reprojected 3D result, per camera and
 // frame, as PNG files and/or MP4 videos, for papers and slides. Takes the same input options as
 // `rpt eval` and runs the triangulator with the same --config/--set (so it draws what eval
-// evaluates: pass a run folder's config.json to redraw that run), then projects each frame's
-// result into the selected cameras (engine/reprojection.h) and draws it (engine/render/render_overlay.h) on
-// the camera's image (--images) or on a white canvas of the image size.
+// evaluates), or with --run DIR draws the predictions.json of an `rpt eval` or `rpt triangulate`
+// output folder over its input, re-loaded from the command run.json records (cli/recorded_input.h).
+// Each frame's result is projected into the selected cameras (engine/reprojection.h) and drawn
+// (engine/render/render_overlay.h) on the camera's image (--images) or on a white canvas of the
+// image size.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -13,22 +15,25 @@
 #include <memory>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#include <optional>
 
 #include "cli/commands.h"
 #include "cli/config_args.h"
 #include "cli/input_options.h"
-#include "engine/input.h"
-#include "engine/render/render_overlay.h"
-#include "engine/render/render_selection.h"
-#include "engine/render/render_video.h"
-#include "engine/reprojection.h"
-#include "engine/run.h"
+#include "cli/recorded_input.h"
 #include "core/closest_name.h"
 #include "core/errors.h"
 #include "core/option_codec.h"
 #include "core/printable_text.h"
-#include "datasets/io/staged_output.h"
 #include "core/text.h"
+#include "datasets/io/staged_output.h"
+#include "engine/input.h"
+#include "engine/render/render_overlay.h"
+#include "engine/render/render_selection.h"
+#include "engine/render/render_video.h"
+#include "engine/report/report_run.h"
+#include "engine/reprojection.h"
+#include "engine/run.h"
 
 namespace rpt::cli {
 namespace {
@@ -36,6 +41,7 @@ namespace {
 struct RenderArgs {
   engine::InputSpec input;
   ConfigArgs config;
+  std::string run;  // --run DIR: the recorded predictions over the recorded input
   std::string out;
   std::string frames = "0";
   std::vector<std::string> cameras;
@@ -118,13 +124,12 @@ struct ErrorSum {
 // camera, then its reprojection errors on stdout. File names are engine::UniqueFileNames of the
 // camera names and frame ids, so distinct names never share a file; every file is staged and
 // renamed into place, and folders are created inside `root` only (io::CreateFolderInside).
-void RenderSequence(const RenderArgs& args, const engine::Config& config, const Sequence& sequence,
-                    const std::filesystem::path& root, const std::string& sequence_file, ImageProblems* problems,
-                    long* pngs, std::vector<std::string>* videos) {
+// `persons`: the 3D result of every frame of the sequence, its joints `output_joints`.
+void RenderSequence(const RenderArgs& args, const Sequence& sequence, const std::vector<Poses3D>& persons,
+                    const JointNames& output_joints, const std::filesystem::path& root,
+                    const std::string& sequence_file, ImageProblems* problems, long* pngs,
+                    std::vector<std::string>* videos) {
   const bool png = args.format != "mp4", mp4 = args.format != "png";
-  engine::RunOptions options;
-  options.triangulator = config.triangulator;
-  options.eval.reset();
   const engine::FrameRange range =
       engine::ParseFrameRange(args.frames, static_cast<long>(sequence.frames.size()), sequence.name);
   const std::vector<int> cameras = engine::SelectCameras(args.cameras, sequence.cameras, sequence.name);
@@ -147,15 +152,11 @@ void RenderSequence(const RenderArgs& args, const engine::Config& config, const 
       writers[c] = std::make_unique<engine::Mp4Writer>(path, cv::Size(camera.width, camera.height), fps);
     }
   }
-  // The whole sequence, as eval runs it (tracking and smoothing see every frame).
-  engine::PredictionsCollector collected(1);
-  engine::Run(std::span<const Sequence>(&sequence, 1), options, &collected);
-  const engine::PredictionsCollector::Sequence& run = collected.sequences().front();
   std::map<int, ErrorSum> errors;
   for (long f = range.first; f < range.end; ++f) {
     const SequenceFrame& frame = sequence.frames[f];
     const std::vector<engine::ViewReprojection> views = engine::ReprojectFrame(
-        sequence.cameras, frame.views, sequence.detection_joints, {&run.persons[f], &run.output_joints},
+        sequence.cameras, frame.views, sequence.detection_joints, {&persons[f], &output_joints},
         args.gt ? engine::PersonsWithJoints{&frame.gt, &sequence.gt_joints} : engine::PersonsWithJoints{});
     for (const int c : cameras) {
       const Camera& camera = sequence.cameras[c];
@@ -165,7 +166,7 @@ void RenderSequence(const RenderArgs& args, const engine::Config& config, const 
       overlay.detections = c < static_cast<int>(frame.views.size()) ? &frame.views[c] : nullptr;
       overlay.detection_joints = &sequence.detection_joints;
       overlay.reprojection = &views[c];
-      overlay.prediction_joints = &run.output_joints;
+      overlay.prediction_joints = &output_joints;
       overlay.gt_joints = args.gt ? &sequence.gt_joints : nullptr;
       overlay.title = sequence.name + "  " + camera.name + "  frame " + frame.id;
       engine::DrawOverlay(overlay, &canvas);
@@ -201,14 +202,98 @@ void RenderSequence(const RenderArgs& args, const engine::Config& config, const 
   }
 }
 
+// The 3D result of every frame of `sequence`: the whole sequence run as eval runs it (tracking and
+// smoothing see every frame).
+std::vector<Poses3D> RunSequence(const engine::Config& config, const Sequence& sequence, JointNames* output_joints) {
+  engine::RunOptions options;
+  options.triangulator = config.triangulator;
+  options.eval.reset();
+  engine::PredictionsCollector collected(1);
+  engine::Run(std::span<const Sequence>(&sequence, 1), options, &collected);
+  engine::PredictionsCollector::Sequence& run = collected.sequences().front();
+  *output_joints = std::move(run.output_joints);
+  return std::move(run.persons);
+}
+
+// With --run, the options that name an input or a configuration would be ignored: refused.
+void CheckRunExcludes(const RenderArgs& args) {
+  const engine::InputSpec& in = args.input;
+  const std::pair<bool, const char*> options[] = {
+      {!in.dataset.empty(), "--dataset"},
+      {!in.root.empty(), "--root"},
+      {!in.labels.empty(), "--labels"},
+      {!in.detections.empty(), "--detections"},
+      {!in.params.empty(), "--param"},
+      {in.simulate || in.simulate_perfect || !in.detector.empty(), "--simulate"},
+      {!in.mapping.empty(), "the detection mapping options"},
+      {!args.config.config_file.empty(), "--config"},
+      {!args.config.overrides.empty(), "--set"}};
+  for (const auto& [given, name] : options) {
+    if (given) {
+      throw ConfigError(std::string("--run draws the run's recorded predictions over its recorded input and "
+                                    "configuration; ") +
+                        name + " does not apply with it");
+    }
+  }
+}
+
+// The input and the 3D result to draw: --run DIR's recorded ones, or the input options' run with
+// --config/--set.
+struct RenderInput {
+  std::vector<Sequence> sequences;
+  std::vector<std::vector<Poses3D>> persons;  // per sequence, per frame
+  std::vector<JointNames> output_joints;      // per sequence
+};
+
+RenderInput RecordedRenderInput(const RenderArgs& args) {
+  CheckRunExcludes(args);
+  const engine::RecordedRun run = engine::ReadRecordedRun(args.run);
+  std::string why;
+  std::vector<std::string> warnings;
+  std::optional<std::vector<Sequence>> sequences =
+      ReloadRecordedInput(run, /*require_same_input=*/false, &why, &warnings);
+  for (const std::string& line : warnings) std::fprintf(stderr, "warning: %s\n", PrintableText(line).c_str());
+  if (!sequences) throw InputError(args.run + ": cannot re-load the run's input: " + why);
+  const std::vector<std::string> words = engine::RecordedWords(run);
+  if (args.gt && words.size() > 1 && words[1] == "triangulate") {
+    throw ConfigError("--gt: " + args.run + " is an `rpt triangulate` run, which has no ground truth");
+  }
+  RenderInput input;
+  if (!engine::SplitPredictions(run.predictions, *sequences, &input.persons, &why)) {
+    throw InputError((run.dir / "predictions.json").string() + ": " + why);
+  }
+  input.sequences = std::move(*sequences);
+  input.output_joints.assign(input.sequences.size(), run.predictions.joints);
+  return input;
+}
+
 void RunRender(const RenderArgs& args) {
   if (!args.images.empty()) engine::ImagePath(args.images, "", 0, "", 0);  // a bad template fails before any work
-  const engine::Config config = ResolveConfig(args.config);
-  InputWarnings warnings;
-  const std::vector<Sequence> sequences = engine::LoadInput(args.input, {}, &warnings);
-  PrintInputWarnings(warnings);
-  const std::filesystem::path out_dir =
-      !args.out.empty() ? args.out : "out/render-" + (args.input.dataset.empty() ? "labels" : args.input.dataset);
+  RenderInput input;
+  if (!args.run.empty()) {
+    input = RecordedRenderInput(args);
+  } else {
+    const engine::Config config = ResolveConfig(args.config);
+    InputWarnings warnings;
+    input.sequences = engine::LoadInput(args.input, {}, &warnings);
+    PrintInputWarnings(warnings);
+    // Run only the sequences drawn.
+    const std::vector<const Sequence*> selected = SelectSequences(input.sequences, args.sequences);
+    input.persons.resize(input.sequences.size());
+    input.output_joints.resize(input.sequences.size());
+    for (const Sequence* sequence : selected) {
+      const size_t s = static_cast<size_t>(sequence - input.sequences.data());
+      input.persons[s] = RunSequence(config, *sequence, &input.output_joints[s]);
+    }
+  }
+  const std::vector<Sequence>& sequences = input.sequences;
+  std::string default_name = args.input.dataset.empty() ? "labels" : args.input.dataset;
+  if (!args.run.empty()) {
+    std::filesystem::path run = std::filesystem::absolute(args.run).lexically_normal();
+    if (!run.has_filename()) run = run.parent_path();
+    default_name = run.filename().string();
+  }
+  const std::filesystem::path out_dir = !args.out.empty() ? args.out : "out/render-" + default_name;
   const bool png = args.format != "mp4";
   ImageProblems problems;
   long pngs = 0;
@@ -224,8 +309,10 @@ void RunRender(const RenderArgs& args) {
     const std::vector<std::string> sequence_files = engine::UniqueFileNames(sequence_names);
     for (size_t s = 0; s < selected.size(); ++s) {
       const Sequence* sequence = selected[s];
+      const size_t index = static_cast<size_t>(sequence - sequences.data());
       try {
-        RenderSequence(args, config, *sequence, folder.path(), sequence_files[s], &problems, &pngs, &videos);
+        RenderSequence(args, *sequence, input.persons[index], input.output_joints[index], folder.path(),
+                       sequence_files[s], &problems, &pngs, &videos);
       } catch (const cv::Exception& e) {  // OpenCV allocates images itself: no std::bad_alloc
         if (e.code != cv::Error::StsNoMem) throw;
         throw InputError(sequence->name + ": out of memory drawing the camera images (lower --max-megapixels, or "
@@ -263,7 +350,10 @@ void RegisterRenderCommand(CLI::App& app) {
       "render", "Draw the 2D detections against the reprojected 3D result per camera and frame (PNG, MP4)");
   AddInputOptions(command, &args->input);
   AddConfigOptions(command, &args->config);
-  command->add_option("--out", args->out, "output folder (default out/render-<dataset>)");
+  command->add_option("--run", args->run,
+                      "an `rpt eval` or `rpt triangulate` output folder: draw its predictions.json over its input "
+                      "(re-loaded from run.json) instead of running the input options");
+  command->add_option("--out", args->out, "output folder (default out/render-<dataset>, with --run render-<folder>)");
   command
       ->add_option("--frames", args->frames,
                    "frame indices (0-based): N, A:B (B excluded), A:, :B or : (all); default 0")

@@ -18,6 +18,7 @@
 #include "cli/threads_option.h"
 #include "datasets/io/json_output.h"
 #include "engine/input.h"
+#include "engine/input_digests.h"
 #include "engine/outputs/results_writer.h"
 #include "engine/outputs/run_info.h"
 #include "engine/outputs/step_tables.h"
@@ -54,6 +55,7 @@ void RunTriangulate(const TriangulateArgs& args) {
   std::unique_ptr<Progress> progress = ProgressOf(input, !args.quiet);
   options.progress = ReportTo(progress.get());
   engine::RunInfo info = engine::CollectRunInfo(0);
+  info.input_digests = engine::InputDigests(args.input);  // compared by `rpt report` and `rpt render --run`
   const std::string out_dir = !args.out.empty() ? args.out : DefaultOutDir(args.input, input);
   engine::RunFolder folder(out_dir, info.run_id, input.size(), exports);
   const engine::RunResult run = engine::Run(input, options, folder.sink());

@@ -8,7 +8,6 @@
 #include "core/errors.h"
 #include "datasets/calibration/calibration.h"
 #include "datasets/readers/detection_frames.h"
-#include "datasets/readers/detections_file.h"
 #include "datasets/synthetic/simulated_source.h"
 #include "engine/attached_detections.h"
 #include "engine/checked_source.h"
@@ -34,6 +33,7 @@ void CheckInputSpec(const InputSpec& spec) {
     throw ConfigError("--fps applies to --cameras (datasets and labels give their own times; labels: --param fps=N)");
   }
   if (!(spec.fps >= 0)) throw ConfigError("--fps " + std::to_string(spec.fps) + ": expected a rate >= 0");
+  CheckDetectionMapping(spec.mapping, spec.detections);
   if (!spec.ground_truth && spec.simulate) throw ConfigError("--simulate needs the ground truth (not with triangulate)");
   if (spec.simulate && !spec.detections.empty()) throw ConfigError("--simulate and --detections exclude each other");
   if (!spec.simulate && (!spec.detector.empty() || spec.simulate_perfect)) {
@@ -134,19 +134,20 @@ std::vector<Sequence> Input::Materialize(long max_frames) {
 namespace {
 
 // --cameras FILE --detections FILE: one sequence of the detection frames, named after the
-// detections file (a VoxelPose cache's frame ids "<name>_<frame>").
+// detections file (a VoxelPose cache's frame ids "<name>_<frame>" unless --voxelpose-prefix).
 std::vector<std::unique_ptr<FrameSource>> OpenDetectionsOnCameras(const InputSpec& spec, InputWarnings* opened) {
   Calibration calibration = ReadCalibration(spec.cameras, {}, opened);
   std::filesystem::path path(spec.detections);
   DetectionFramesOptions options;
   options.name = (path.has_filename() ? path : path.parent_path()).stem().string();
   options.fps = spec.fps;
-  DetectionsFileOptions file_options;
-  file_options.voxelpose.frame_id_prefix = options.name;
-  for (const Camera& camera : calibration.cameras) file_options.voxelpose.cameras.push_back(camera.name);
+  VoxelPoseDetectionsOptions voxelpose;
+  voxelpose.frame_id_prefix = options.name;
+  for (const Camera& camera : calibration.cameras) voxelpose.cameras.push_back(camera.name);
+  Detections detections = ReadMappedDetections(spec.detections, spec.mapping, voxelpose);
   std::vector<std::unique_ptr<FrameSource>> sources;
-  sources.push_back(OpenDetectionFrames(std::move(calibration.cameras), ReadDetectionsFile(path, file_options), options,
-                                        spec.cameras, path));
+  sources.push_back(
+      OpenDetectionFrames(std::move(calibration.cameras), std::move(detections), options, spec.cameras, path));
   return sources;
 }
 
@@ -174,18 +175,19 @@ Input OpenInput(const InputSpec& spec, const InputNeeds& needs) {
     // name as the frame-id prefix ("shelf" -> "shelf_000300"); it covers every image, so frames no
     // sequence uses are not reported.
     for (auto& source : sources) {
-      DetectionsFileOptions options;
-      options.voxelpose.frame_id_prefix = source->header().name;
-      for (const Camera& camera : source->header().cameras) options.voxelpose.cameras.push_back(camera.name);
-      auto file = std::make_shared<AttachedDetections>(ReadDetectionsFile(spec.detections, options), spec.detections,
-                                                       /*report_unused_frames=*/false);
+      VoxelPoseDetectionsOptions voxelpose;
+      voxelpose.frame_id_prefix = source->header().name;
+      for (const Camera& camera : source->header().cameras) voxelpose.cameras.push_back(camera.name);
+      auto file = std::make_shared<AttachedDetections>(ReadMappedDetections(spec.detections, spec.mapping, voxelpose),
+                                                       spec.detections, /*report_unused_frames=*/false);
       opened.Merge(file->file_warnings());
       source = file->Wrap(std::move(source));
       per_sequence_files.push_back(std::move(file));
     }
   } else if (!spec.detections.empty()) {
     // One file for all sequences: each frame goes to the sequence that holds its id.
-    attached = std::make_shared<AttachedDetections>(ReadDetectionsFile(spec.detections), spec.detections);
+    attached =
+        std::make_shared<AttachedDetections>(ReadMappedDetections(spec.detections, spec.mapping), spec.detections);
     opened.Merge(attached->file_warnings());  // once, however many sequences use it
     for (auto& source : sources) source = attached->Wrap(std::move(source));
   }

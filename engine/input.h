@@ -15,6 +15,7 @@
 #include "datasets/input_warnings.h"
 #include "datasets/sequence.h"
 #include "datasets/synthetic/simulate_detections.h"
+#include "engine/detection_mapping.h"
 
 namespace rpt::engine {
 
@@ -31,6 +32,7 @@ struct InputSpec {
   std::string cameras;
   double fps = 0;                   // with `cameras`: frame rate of the detection frames; 0 = times unknown
   std::string detections;           // detections file or folder (ReadDetectionsFile)
+  DetectionMapping mapping;         // how its entries become frame ids, cameras and joints (--map-*, --coco-*, ...)
   bool simulate = false;            // simulated detections from the ground truth
   bool simulate_perfect = false;    // deprecated alias of detector = "perfect"
   std::string detector;             // simulated detector profile; empty = realistic

@@ -13,7 +13,7 @@ namespace rpt::engine {
 
 std::vector<std::string> InputPaths(const InputSpec& spec) {
   std::vector<std::string> paths;
-  for (const std::string& path : {spec.root, spec.labels, spec.detections}) {
+  for (const std::string& path : {spec.root, spec.labels, spec.cameras, spec.detections, spec.mapping.coco_images}) {
     if (!path.empty() && std::find(paths.begin(), paths.end(), path) == paths.end()) paths.push_back(path);
   }
   return paths;

@@ -14,7 +14,7 @@
 
 namespace rpt::engine {
 
-// The paths the input options name (--root, --labels, --detections), each once.
+// The paths the input options name (--root, --labels, --cameras, --detections, --coco-images), each once.
 std::vector<std::string> InputPaths(const InputSpec& spec);
 
 // {path, digest} of every InputPaths entry; a path that cannot be digested gets "" (the run goes on:

@@ -45,23 +45,54 @@ std::vector<std::unique_ptr<FrameSource>> OpenLabelsFile(const std::filesystem::
   return OpenSequencesHdf5(path);
 }
 
-Detections ReadDetectionsFile(const std::filesystem::path& path, const DetectionsFileOptions& options) {
+DetectionsFormat DetectionsFormatOf(const std::filesystem::path& path) {
   const std::string source = path.string();
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw InputError(source + ": file not found");
-  if (std::filesystem::is_directory(path, ec)) return ReadOpenPoseFolder(path, options.openpose);
-
-  if (IsHdf5Extension(path)) return ReadDetectionsHdf5(path);
+  if (std::filesystem::is_directory(path, ec)) return DetectionsFormat::kOpenPoseFolder;
+  if (IsHdf5Extension(path)) return DetectionsFormat::kHdf5Cache;
   const std::string extension = LowerExtension(path);
   if (extension == ".json") {
     const char first = generic_internal::FirstSignificantChar(path);
-    if (first == '[') return ReadCocoDetections(path, options.coco);
-    if (first == '{') return ReadGenericDetections(path);
+    if (first == '[') return DetectionsFormat::kCocoResults;
+    if (first == '{') return DetectionsFormat::kGenericJson;
     throw InputError(source + ":1:1: expected a JSON object (generic detections) or a list (COCO results); supported:\n" +
                      SupportedDetectionFormats());
   }
-  if (extension == ".pkl" || extension == ".pickle") return ReadVoxelPoseDetections(path, options.voxelpose);
+  if (extension == ".pkl" || extension == ".pickle") return DetectionsFormat::kVoxelPosePickle;
   throw InputError(source + ": unknown detection format '" + extension + "'; supported:\n" + SupportedDetectionFormats());
+}
+
+const char* DetectionsFormatName(DetectionsFormat format) {
+  switch (format) {
+    case DetectionsFormat::kOpenPoseFolder:
+      return "an OpenPose folder";
+    case DetectionsFormat::kHdf5Cache:
+      return "an HDF5 cache";
+    case DetectionsFormat::kGenericJson:
+      return "generic detections JSON";
+    case DetectionsFormat::kCocoResults:
+      return "a COCO result list";
+    case DetectionsFormat::kVoxelPosePickle:
+      return "a VoxelPose .pkl cache";
+  }
+  return "?";
+}
+
+Detections ReadDetectionsFile(const std::filesystem::path& path, const DetectionsFileOptions& options) {
+  switch (DetectionsFormatOf(path)) {
+    case DetectionsFormat::kOpenPoseFolder:
+      return ReadOpenPoseFolder(path, options.openpose);
+    case DetectionsFormat::kHdf5Cache:
+      return ReadDetectionsHdf5(path);
+    case DetectionsFormat::kGenericJson:
+      return ReadGenericDetections(path);
+    case DetectionsFormat::kCocoResults:
+      return ReadCocoDetections(path, options.coco);
+    case DetectionsFormat::kVoxelPosePickle:
+      return ReadVoxelPoseDetections(path, options.voxelpose);
+  }
+  throw InputError(path.string() + ": unknown detection format");
 }
 
 }  // namespace rpt

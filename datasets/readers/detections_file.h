@@ -24,7 +24,18 @@ struct DetectionsFileOptions {
   VoxelPoseDetectionsOptions voxelpose;
 };
 
-// Dispatches on what `path` is:
+// The formats ReadDetectionsFile reads.
+enum class DetectionsFormat { kOpenPoseFolder, kHdf5Cache, kGenericJson, kCocoResults, kVoxelPosePickle };
+
+// What `path` is (the dispatch below): a folder, then the extension, then for .json the first
+// significant character. Throws InputError for a missing path, an unknown extension, and a .json
+// file that is neither an object nor a list.
+DetectionsFormat DetectionsFormatOf(const std::filesystem::path& path);
+// "an OpenPose folder", "an HDF5 cache", "generic detections JSON", "a COCO result list",
+// "a VoxelPose .pkl cache": for messages.
+const char* DetectionsFormatName(DetectionsFormat format);
+
+// Dispatches on what `path` is (DetectionsFormatOf):
 //   folder                 -> OpenPose JSON folder (ReadOpenPoseFolder)
 //   *.h5, *.hdf5           -> HDF5 cache (ReadDetectionsHdf5)
 //   *.json, an object      -> generic detections {"joints", "frames"} (ReadGenericDetections)

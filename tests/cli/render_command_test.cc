@@ -5,19 +5,23 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <set>
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
+#include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
+#include "core/errors.h"
+#include "datasets/readers/generic_detections.h"
+#include "engine/frame_sink.h"
 #include "engine/input.h"
 #include "engine/render/render_overlay.h"
 #include "engine/render/render_selection.h"
-#include "engine/frame_sink.h"
 #include "engine/run.h"
-#include "core/errors.h"
 #include "tests/cli/cli_test_util.h"
+#include "tests/cli/triangulate_test_util.h"
 #include "tests/error_message.h"
 
 namespace rpt::cli {
@@ -166,6 +170,89 @@ TEST(RenderCommand, BadSelectionsExitTwoNamingTheOption) {
   }
   EXPECT_EQ(test::RunRpt(base + " --format gif").exit_code, 2);
   fs::remove_all(out);
+}
+
+// The lines of the reprojection errors per camera ("  cam0   10.6 px over 64 joints").
+std::vector<std::string> ErrorLines(const std::string& out) {
+  std::vector<std::string> lines;
+  std::stringstream s(out);
+  for (std::string line; std::getline(s, line);) {
+    if (line.find(" px over ") != std::string::npos) lines.push_back(line);
+  }
+  return lines;
+}
+
+// The share of the pixels of two images of the same size that differ.
+double DifferentPixels(const fs::path& a, const fs::path& b) {
+  const cv::Mat x = cv::imread(a.string(), cv::IMREAD_COLOR), y = cv::imread(b.string(), cv::IMREAD_COLOR);
+  EXPECT_FALSE(x.empty()) << a;
+  EXPECT_FALSE(y.empty()) << b;
+  if (x.empty() || y.empty() || x.size() != y.size()) return 1;
+  cv::Mat diff;
+  cv::absdiff(x, y, diff);
+  cv::cvtColor(diff, diff, cv::COLOR_BGR2GRAY);
+  return static_cast<double>(cv::countNonZero(diff)) / static_cast<double>(diff.total());
+}
+
+// --run DIR draws an eval or a triangulate run's predictions over its re-loaded input.
+class RenderRun : public test::SceneFilesTest {};
+
+TEST_F(RenderRun, DrawsTheRecordedPredictionsOfEvalAndTriangulateRuns) {
+  const std::vector<std::string> ids = test::Ids("take_", kFrames);
+  WriteGenericDetections(dir_ / "detections.json", test::Coco17(scene_, ids));
+  test::WriteLabelsAs(dir_ / "labels.json", scene_, ids);
+  const std::string detections = " --detections " + (dir_ / "detections.json").string();
+  const std::string labels = " --labels " + (dir_ / "labels.json").string() + detections;
+  const fs::path eval = dir_ / "eval", tri = dir_ / "tri";
+  ASSERT_EQ(test::RunRpt("eval --quiet" + labels + " --out " + eval.string()).exit_code, 0);
+  const test::CommandResult t = test::RunRpt("triangulate --quiet --cameras " + (dir_ / "cameras.json").string() +
+                                             detections + " --fps 25 --out " + tri.string());
+  ASSERT_EQ(t.exit_code, 0) << t.err;
+
+  // The eval run redrawn equals a render of the same input (the predictions.json's rounding to
+  // micrometres moves no more than a few anti-aliased pixels).
+  const test::CommandResult direct =
+      test::RunRpt("render" + labels + " --frames 3:5 --out " + (dir_ / "direct").string());
+  ASSERT_EQ(direct.exit_code, 0) << direct.err;
+  const test::CommandResult from_eval =
+      test::RunRpt("render --run " + eval.string() + " --frames 3:5 --gt --out " + (dir_ / "from_eval").string());
+  ASSERT_EQ(from_eval.exit_code, 0) << from_eval.err;
+  const test::CommandResult from_tri =
+      test::RunRpt("render --run " + tri.string() + " --frames 3:5 --out " + (dir_ / "from_tri").string());
+  ASSERT_EQ(from_tri.exit_code, 0) << from_tri.err;
+  EXPECT_EQ(from_tri.err, "") << "no warning: the input is verified as the run's";
+  EXPECT_NE(from_tri.out.find("8 PNG file(s)"), std::string::npos) << from_tri.out;  // 2 frames x 4 cameras
+  const std::vector<std::string> errors = ErrorLines(direct.out);
+  ASSERT_EQ(errors.size(), 4u) << direct.out;
+  EXPECT_EQ(ErrorLines(from_eval.out), errors) << "the same predictions, the same errors";
+  EXPECT_EQ(ErrorLines(from_tri.out), errors) << "triangulate's predictions are eval's";
+  const std::string sequence = scene_.name;
+  for (const char* camera : {"cam0", "cam3"}) {
+    const fs::path png = fs::path(camera) / "take_000004.png";
+    EXPECT_LT(DifferentPixels(dir_ / "direct" / sequence / png, dir_ / "from_tri" / "detections" / png), 0.02)
+        << "the same persons drawn; only the title differs (the sequence's name)";
+    // --gt adds the ground truth to the eval run's drawing: more pixels differ than without.
+    EXPECT_GT(DifferentPixels(dir_ / "direct" / sequence / png, dir_ / "from_eval" / sequence / png), 0.0);
+  }
+  const test::CommandResult same =
+      test::RunRpt("render --run " + eval.string() + " --frames 3:5 --out " + (dir_ / "from_eval_nogt").string());
+  ASSERT_EQ(same.exit_code, 0) << same.err;
+  for (const char* camera : {"cam0", "cam3"}) {
+    const fs::path png = fs::path(sequence) / camera / "take_000004.png";
+    EXPECT_LT(DifferentPixels(dir_ / "direct" / png, dir_ / "from_eval_nogt" / png), 1e-3) << png;
+  }
+  EXPECT_TRUE(fs::exists(dir_ / "direct" / sequence / "cam0" / "take_000003.png"));
+
+  // Refused: --gt without GT, input or configuration options beside --run, a folder that is no run.
+  const auto expect_refused = [](const std::string& args, const std::string& message) {
+    const test::CommandResult r = test::RunRpt("render " + args + " --out /nonexistent/never");
+    EXPECT_EQ(r.exit_code, 2) << args;
+    EXPECT_NE(r.err.find(message), std::string::npos) << args << "\n" << r.err;
+  };
+  expect_refused("--run " + tri.string() + " --gt", "is an `rpt triangulate` run, which has no ground truth");
+  expect_refused("--run " + tri.string() + labels, "--labels does not apply with it");
+  expect_refused("--run " + tri.string() + " --set smooth.mode=causal", "--set does not apply with it");
+  expect_refused("--run " + (dir_ / "nothing").string(), "nothing");
 }
 
 TEST(RenderSelection, FrameRanges) {

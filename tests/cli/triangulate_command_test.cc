@@ -26,6 +26,7 @@
 #include "datasets/readers/hdf5_cache.h"
 #include "engine/input.h"
 #include "tests/cli/cli_test_util.h"
+#include "tests/cli/triangulate_test_util.h"
 
 namespace rpt {
 namespace {
@@ -33,156 +34,16 @@ namespace {
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
 
-constexpr double kFps = 25.0;
-
-Json ReadJson(const fs::path& path) { return Json::parse(test::ReadAll(path)); }
-
-// A generated scene with simulated detections, its frame times i / kFps.
-Sequence Scene(int frames) {
-  engine::InputSpec spec;
-  spec.dataset = "synthetic";
-  spec.params = {"frames=" + std::to_string(frames), "people=2", "cameras=4"};
-  InputWarnings warnings;
-  std::vector<Sequence> sequences = engine::LoadInput(spec, {}, &warnings);
-  Sequence scene = std::move(sequences.at(0));
-  for (size_t i = 0; i < scene.frames.size(); ++i) scene.frames[i].timestamp_s = static_cast<double>(i) / kFps;
-  return scene;
-}
-
-// The scene's detections of the COCO-17 joints (what OpenPose and COCO files can hold), frame ids
-// as given.
-Detections Coco17(const Sequence& scene, const std::vector<std::string>& frame_ids) {
-  std::vector<int> from;
-  for (const std::string& name : CocoBodyJoints()) {
-    const auto it = std::find(scene.detection_joints.begin(), scene.detection_joints.end(), name);
-    EXPECT_NE(it, scene.detection_joints.end()) << name;
-    from.push_back(static_cast<int>(it - scene.detection_joints.begin()));
-  }
-  Detections detections;
-  detections.joints = CocoBodyJoints();
-  for (size_t f = 0; f < scene.frames.size(); ++f) {
-    FrameDetections frame;
-    frame.frame_id = frame_ids[f];
-    for (size_t c = 0; c < scene.cameras.size(); ++c) {
-      const Poses2D& view = scene.frames[f].views[c];
-      Poses2D out;
-      out.Clear(17);
-      for (int p = 0; p < view.num_persons(); ++p) {
-        auto person = out.AddPerson();
-        for (int j = 0; j < 17; ++j) person.col(j) = view.Person(p).col(from[j]);
-      }
-      frame.cameras.push_back(scene.cameras[c].name);
-      frame.views.push_back(std::move(out));
-    }
-    detections.frames.push_back(std::move(frame));
-  }
-  return detections;
-}
-
-// Labels of the scene (GT, cameras, times) with these frame ids.
-void WriteLabelsAs(const fs::path& path, Sequence scene, const std::vector<std::string>& frame_ids) {
-  for (size_t f = 0; f < scene.frames.size(); ++f) scene.frames[f].id = frame_ids[f];
-  WriteLabels(path, {scene});
-}
-
-// OpenPose COCO-18 order of the COCO-17 joints (index into CocoBodyJoints(); -1 = the neck).
-constexpr int kOpenPoseCoco18[18] = {0, -1, 6, 8, 10, 5, 7, 9, 12, 14, 16, 11, 13, 15, 2, 1, 4, 3};
-
-void WriteOpenPoseFolder(const fs::path& dir, const Detections& detections) {
-  for (size_t f = 0; f < detections.frames.size(); ++f) {
-    const FrameDetections& frame = detections.frames[f];
-    for (size_t c = 0; c < frame.cameras.size(); ++c) {
-      Json people = Json::array();
-      const Poses2D& view = frame.views[c];
-      for (int p = 0; p < view.num_persons(); ++p) {
-        std::vector<double> flat;
-        for (int k : kOpenPoseCoco18) {
-          for (int r = 0; r < 3; ++r) flat.push_back(k < 0 ? 0.0 : view.Person(p)(r, k));
-        }
-        people.push_back({{"pose_keypoints_2d", flat}});
-      }
-      fs::create_directories(dir / frame.cameras[c]);
-      char name[64];
-      std::snprintf(name, sizeof(name), "video_%012zu_keypoints.json", f);
-      std::ofstream(dir / frame.cameras[c] / name) << Json{{"version", 1.3}, {"people", people}}.dump();
-    }
-  }
-}
-
-// COCO results with MVOR ids (day 1, camera number from "cam<N>").
-void WriteCocoResults(const fs::path& path, const Detections& detections) {
-  Json results = Json::array();
-  for (size_t f = 0; f < detections.frames.size(); ++f) {
-    const FrameDetections& frame = detections.frames[f];
-    for (size_t c = 0; c < frame.cameras.size(); ++c) {
-      const long long cam = std::stoll(frame.cameras[c].substr(3));
-      const long long image_id = 10000000000LL + cam * 10000000LL + static_cast<long long>(f);
-      for (int p = 0; p < frame.views[c].num_persons(); ++p) {
-        std::vector<double> flat;
-        for (int j = 0; j < 17; ++j) {
-          for (int r = 0; r < 3; ++r) flat.push_back(frame.views[c].Person(p)(r, j));
-        }
-        results.push_back({{"image_id", image_id}, {"category_id", 1}, {"score", 0.9}, {"keypoints", flat}});
-      }
-    }
-  }
-  std::ofstream(path) << results.dump();
-}
-
-std::vector<std::string> Ids(const std::string& prefix, int frames) {
-  std::vector<std::string> ids;
-  for (int f = 0; f < frames; ++f) {
-    char id[64];
-    std::snprintf(id, sizeof(id), "%s%06d", prefix.c_str(), f);
-    ids.push_back(id);
-  }
-  return ids;
-}
-
-// The frames of two predictions.json files are equal (ids, times, persons, track ids, provenance).
-void ExpectSameFrames(const Json& a, const Json& b, const std::string& what) {
-  EXPECT_EQ(a["joints"], b["joints"]) << what;
-  ASSERT_EQ(a["frames"].size(), b["frames"].size()) << what;
-  int persons = 0;
-  for (size_t f = 0; f < a["frames"].size(); ++f) {
-    EXPECT_EQ(a["frames"][f], b["frames"][f]) << what << ", frame " << f;
-    persons += static_cast<int>(a["frames"][f]["persons"].size());
-  }
-  EXPECT_GT(persons, static_cast<int>(a["frames"].size())) << what << ": about two persons per frame";
-}
-
-class Triangulate : public ::testing::Test {
- protected:
-  static constexpr int kFrames = 16;
-  void SetUp() override {
-    dir_ = test::TempDir("triangulate");
-    scene_ = Scene(kFrames);
-    WriteCalibration(dir_ / "cameras.json", scene_.cameras);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  // eval on labels + detections and triangulate on cameras + detections give the same frames.
-  void CompareWithEval(const std::string& format, const fs::path& detections, const std::vector<std::string>& ids) {
-    WriteLabelsAs(dir_ / (format + "_labels.json"), scene_, ids);
-    const fs::path eval = dir_ / (format + "_eval"), tri = dir_ / (format + "_tri");
-    const test::CommandResult e = test::RunRpt("eval --labels " + (dir_ / (format + "_labels.json")).string() +
-                                               " --detections " + detections.string() + " --out " + eval.string() +
-                                               " --quiet");
-    ASSERT_EQ(e.exit_code, 0) << format << ": " << e.err;
-    const test::CommandResult t = test::RunRpt("triangulate --cameras " + (dir_ / "cameras.json").string() +
-                                               " --detections " + detections.string() + " --fps 25 --out " +
-                                               tri.string());
-    ASSERT_EQ(t.exit_code, 0) << format << ": " << t.err;
-    EXPECT_NE(t.out.find(std::to_string(kFrames) + " frames, 4 cameras"), std::string::npos) << t.out;
-    EXPECT_NE(t.out.find("make_pairs"), std::string::npos) << "the step table:\n" << t.out;
-    ExpectSameFrames(ReadJson(eval / "predictions.json"), ReadJson(tri / "predictions.json"), format);
-    EXPECT_FALSE(fs::exists(tri / "per_joint.csv")) << "no GT, no per-joint errors";
-    EXPECT_EQ(ReadJson(tri / "summary.json")["evaluated"], false);
-  }
-
-  fs::path dir_;
-  Sequence scene_;
-};
+using test::Coco17;
+using test::ExpectSameFrames;
+using test::Ids;
+using test::kFps;
+using test::ReadJson;
+using test::Scene;
+using test::WriteCocoResults;
+using test::WriteLabelsAs;
+using test::WriteOpenPoseFolder;
+using Triangulate = test::SceneFilesTest;
 
 TEST_F(Triangulate, GenericJsonEqualsEval) {
   const std::vector<std::string> ids = Ids("take_", kFrames);
@@ -210,6 +71,33 @@ TEST_F(Triangulate, CocoResultsEqualEval) {
   const std::vector<std::string> ids = Ids("mvor_day1_", kFrames);
   WriteCocoResults(dir_ / "results.json", Coco17(scene_, ids));
   CompareWithEval("coco", dir_ / "results.json", ids);
+}
+
+TEST_F(Triangulate, VoxelPoseCacheEqualsEval) {
+  // Frame ids "<prefix>_<frame, 6 digits>": the prefix is the labels' sequence name for eval and
+  // the cache's file name for triangulate, so both are "take".
+  scene_.name = "take";
+  const std::vector<std::string> ids = Ids("take_", kFrames);
+  test::WriteVoxelPoseCache(dir_ / "take.pkl", Coco17(scene_, ids));
+  CompareWithEval("pkl", dir_ / "take.pkl", ids);
+}
+
+TEST_F(Triangulate, LabelsWithDetectionsEqualEval) {
+  // --labels FILE --detections FILE: the labels give the cameras, frames and times only.
+  const std::vector<std::string> ids = Ids("take_", kFrames);
+  WriteGenericDetections(dir_ / "detections.json", Coco17(scene_, ids));
+  WriteLabelsAs(dir_ / "labels.json", scene_, ids);
+  const std::string input =
+      " --labels " + (dir_ / "labels.json").string() + " --detections " + (dir_ / "detections.json").string();
+  const test::CommandResult e = test::RunRpt("eval" + input + " --quiet --out " + (dir_ / "eval").string());
+  ASSERT_EQ(e.exit_code, 0) << e.err;
+  const test::CommandResult t = test::RunRpt("triangulate" + input + " --quiet --out " + (dir_ / "tri").string());
+  ASSERT_EQ(t.exit_code, 0) << t.err;
+  const Json tri = ReadJson(dir_ / "tri" / "predictions.json");
+  ExpectSameFrames(ReadJson(dir_ / "eval" / "predictions.json"), tri, "labels");
+  EXPECT_EQ(tri["sequences"][0]["fps"], kFps) << "the labels' times";
+  EXPECT_EQ(ReadJson(dir_ / "tri" / "summary.json")["evaluated"], false);
+  EXPECT_GE(tri["frames"][kFrames - 1]["track_ids"][0].get<int>(), 0) << "times known: tracked";
 }
 
 // CSV rows and TRC files of a run, read back, against its predictions.json.
