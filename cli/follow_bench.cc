@@ -87,9 +87,11 @@ std::string FrameLine(const Sequence& sequence, const SequenceFrame& frame, long
     }
     views.push_back({{"camera", sequence.cameras[c].name}, {"poses", std::move(poses)}});
   }
-  return Json{{"id", "f" + std::to_string(k)}, {"time", static_cast<double>(k) / fps}, {"views", std::move(views)}}
-             .dump() +
-         "\n";
+  std::string id = "f";  // appended: GCC 12 warns falsely (-Wrestrict) on "f" + std::to_string(k)
+  id += std::to_string(k);
+  std::string line = Json{{"id", id}, {"time", static_cast<double>(k) / fps}, {"views", std::move(views)}}.dump();
+  line += "\n";
+  return line;
 }
 
 // Each frame's triangulation time, in order (the benchmark pairs it with the frame's latency).

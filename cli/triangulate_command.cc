@@ -13,6 +13,7 @@
 // loop on a live source, engine/live_input.h); the summary goes to stderr.
 #include <unistd.h>
 
+#include <csignal>
 #include <cstdio>
 #include <iostream>
 #include <optional>
@@ -75,6 +76,9 @@ void CheckFollowArgs(const TriangulateArgs& args) {
 // stderr. Returns the exit code: 0 at the end of the input, 128 + the signal after Ctrl-C.
 int RunFollow(const TriangulateArgs& args) {
   CheckFollowArgs(args);
+  // A reader that closes standard output is a write error (exit 2, outputs cleaned up), as for every
+  // command's printed results, not a silent death by SIGPIPE.
+  std::signal(SIGPIPE, SIG_IGN);
   const engine::Config config = ResolveConfig(args.config);
   const engine::ExportOptions exports = ExportOptionsOf(args.exports);
   auto stop = std::make_shared<io::StopRequest>();

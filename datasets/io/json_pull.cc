@@ -15,8 +15,6 @@
 namespace rpt::io {
 namespace {
 
-bool IsDigit(char c) { return c >= '0' && c <= '9'; }
-
 int HexValue(char c) {
   if (c >= '0' && c <= '9') return c - '0';
   if (c >= 'a' && c <= 'f') return c - 'a' + 10;
@@ -64,34 +62,24 @@ void JsonPull::Fail(const std::string& what) const {
   throw InputError("column " + std::to_string(column()) + ": " + what);
 }
 
-void JsonPull::SkipSpace() {
-  while (pos_ < text_.size()) {
-    const char c = text_[pos_];
-    if (c != ' ' && c != '\t' && c != '\n' && c != '\r') return;
-    ++pos_;
-  }
-}
-
 void JsonPull::Expect(char c, const char* what) {
   SkipSpace();
   if (pos_ >= text_.size() || text_[pos_] != c) Fail(std::string("expected ") + what + ", got " + Describe(text_, pos_));
   ++pos_;
 }
 
-JsonPull::Kind JsonPull::Peek() {
-  SkipSpace();
-  if (pos_ >= text_.size()) return Kind::kEnd;
-  switch (text_[pos_]) {
-    case '{': return Kind::kObject;
-    case '[': return Kind::kArray;
-    case '"': return Kind::kString;
-    case 't': return Kind::kTrue;
-    case 'f': return Kind::kFalse;
-    case 'n': return Kind::kNull;
-    default:
-      if (text_[pos_] == '-' || IsDigit(text_[pos_])) return Kind::kNumber;
-      Fail("expected a JSON value, got " + Describe(text_, pos_));
+void JsonPull::FailNoValue() const { Fail("expected a JSON value, got " + Describe(text_, pos_)); }
+
+bool JsonPull::IsJsonNumber(const char* first, const char* end) {
+  const char* p = first;
+  if (p < end && *p == '-') ++p;
+  if (p == end || !IsDigit(*p)) return false;
+  if (*p == '0' && p + 1 < end && IsDigit(p[1])) return false;  // a leading zero
+  for (; p < end; ++p) {
+    if (*p == '.') return p + 1 < end && IsDigit(p[1]);  // a digit after the point
+    if (*p == 'e' || *p == 'E') return true;             // from_chars read a whole exponent
   }
+  return true;
 }
 
 void JsonPull::BeginObject() {
@@ -126,19 +114,11 @@ bool JsonPull::NextKey(std::string_view* key) {
   return true;
 }
 
-bool JsonPull::NextElement() {
-  SkipSpace();
-  if (after_begin_) {
+// NextElement at the end of the text, or before a character that is neither ',' nor ']'.
+bool JsonPull::NextElementAtEnd() {
+  if (after_begin_) {  // the value that should come next reports what is there
     after_begin_ = false;
-    if (pos_ < text_.size() && text_[pos_] == ']') {
-      ++pos_;
-      return false;
-    }
     return true;
-  }
-  if (pos_ < text_.size() && text_[pos_] == ']') {
-    ++pos_;
-    return false;
   }
   Expect(',', "',' or ']'");
   return true;
@@ -182,7 +162,9 @@ std::string_view JsonPull::NumberText() {
   return text_.substr(start, p - start);
 }
 
-double JsonPull::Number() {
+// Number's way when std::from_chars did not read a JSON number: the precise error, or a literal
+// below the double range (read as what strtod makes of it).
+double JsonPull::NumberSlow() {
   SkipSpace();
   const std::size_t start = pos_;
   const std::string_view number = NumberText();

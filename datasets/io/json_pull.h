@@ -22,6 +22,7 @@
 //   json.End();
 #pragma once
 
+#include <charconv>
 #include <cstddef>
 #include <string>
 #include <string_view>
@@ -38,7 +39,21 @@ class JsonPull {
 
   // The kind of the next value (after whitespace), kEnd at the end of the text; throws on a
   // character no value starts with.
-  Kind Peek();
+  Kind Peek() {
+    SkipSpace();
+    if (pos_ >= text_.size()) return Kind::kEnd;
+    switch (text_[pos_]) {
+      case '{': return Kind::kObject;
+      case '[': return Kind::kArray;
+      case '"': return Kind::kString;
+      case 't': return Kind::kTrue;
+      case 'f': return Kind::kFalse;
+      case 'n': return Kind::kNull;
+      default:
+        if (text_[pos_] == '-' || IsDigit(text_[pos_])) return Kind::kNumber;
+        FailNoValue();
+    }
+  }
   // '{' or '['; throws naming what was expected otherwise.
   void BeginObject();
   void BeginArray();
@@ -46,9 +61,36 @@ class JsonPull {
   // read), then the caller reads its value; false at the closing '}'.
   bool NextKey(std::string_view* key);
   // The next element of the array begun last: true, then the caller reads it; false at ']'.
-  bool NextElement();
+  bool NextElement() {  // the common cases inline: a frame line holds thousands of elements
+    SkipSpace();
+    if (pos_ < text_.size()) {
+      const char c = text_[pos_];
+      if (after_begin_) {
+        after_begin_ = false;
+        if (c != ']') return true;
+        ++pos_;
+        return false;
+      }
+      if (c == ',' || c == ']') {
+        ++pos_;
+        return c == ',';
+      }
+    }
+    return NextElementAtEnd();
+  }
   // A number (finite: a literal beyond the double range is an error).
-  double Number();
+  double Number() {
+    SkipSpace();
+    const char* first = text_.data() + pos_;
+    const char* last = text_.data() + text_.size();
+    double value = 0;
+    const auto [end, error] = std::from_chars(first, last, value);
+    // std::from_chars also takes what JSON does not ("01", "1.", ".5", "inf"): checked on what it read.
+    if (error != std::errc() || !IsJsonNumber(first, end)) return NumberSlow();
+    pos_ = static_cast<std::size_t>(end - text_.data());
+    after_begin_ = false;
+    return value;  // finite: a literal beyond the double range is a result_out_of_range error
+  }
   // A number written as an integer literal (no fraction, no exponent): its text, else empty
   // (nothing is consumed then).
   std::string_view IntegerText();
@@ -67,7 +109,18 @@ class JsonPull {
   [[noreturn]] void Fail(const std::string& what) const;
 
  private:
-  void SkipSpace();
+  static bool IsDigit(char c) { return c >= '0' && c <= '9'; }
+  static bool IsJsonNumber(const char* first, const char* end);
+  void SkipSpace() {
+    while (pos_ < text_.size()) {
+      const char c = text_[pos_];
+      if (c != ' ' && c != '\t' && c != '\n' && c != '\r') return;
+      ++pos_;
+    }
+  }
+  [[noreturn]] void FailNoValue() const;
+  bool NextElementAtEnd();
+  double NumberSlow();
   void Expect(char c, const char* what);
   std::string_view NumberText();
   void SkipValue(int depth);

@@ -230,7 +230,7 @@ TEST(DetectionLines, BadLinesNameTheLineAndThePlace) {
       {"{\"views\": [{\"camera\": \"a\", \"poses\": []}, {\"camera\": \"a\", \"poses\": []}]}",
        "live:2: /views/1/camera: camera 'a' appears twice in this frame"},
       {"{\"views\": [{\"camera\": \"a\", \"poses\": [[[1, 2, 3]]]}]}",
-       "live:2: /views/0/poses/0/0: score 3 outside [0, 1]"},
+       "live:2: /views/0/poses/0/0: score 3 outside [0, 1] (values up to 1.5 are clamped to 1)"},
       {"{\"views\": [{\"camera\": \"a\", \"poses\": [[[1, 2, 1], [1, 2, 1]]]}]}",
        "live:2: /views/0/poses/0: more than 1 joints (as many as the joints line names)"},
       {"{\"views\": [{\"camera\": \"a\"}]}", "live:2: /views/0/poses: missing (write [] for no detections)"},
@@ -238,7 +238,7 @@ TEST(DetectionLines, BadLinesNameTheLineAndThePlace) {
       {"{\"id\": \"\", \"views\": []}", "live:2: /id: empty id"},
       {"{\"id\": 1.5, \"views\": []}", "live:2: /id: expected a string or an integer id"},
       {"{\"joints\": [\"nose\"]}", "live:2: /joints: a joints line after the first line: the joints are given once, on the first line"},
-      {"{\"views\": []} x", "live:2: column 16: unexpected 'x' after the end of the JSON value"},
+      {"{\"views\": []} x", "live:2: column 15: unexpected 'x' after the end of the JSON value"},
   };
   for (const auto& [line, message] : cases) {
     Stream stream(joints + line + "\n");
