@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -71,8 +72,16 @@ std::string ReadLine(int fd, std::string* buffer) {
   }
 }
 
+// How the benchmark writes numbers: as a Python producer does (json.dumps of floats: the shortest
+// text that reads back exactly, mostly 16-17 digits) or as OpenPose does (3 decimals).
+enum class Digits { kFull, kThreeDecimals };
+
+double Written(double value, Digits digits) {
+  return digits == Digits::kFull ? value : std::round(value * 1000.0) / 1000.0;
+}
+
 // Frame `frame` of `sequence` as a detection line, numbered `k` (its id and its time k / fps).
-std::string FrameLine(const Sequence& sequence, const SequenceFrame& frame, long k, double fps) {
+std::string FrameLine(const Sequence& sequence, const SequenceFrame& frame, long k, double fps, Digits digits) {
   Json views = Json::array();
   for (size_t c = 0; c < frame.views.size(); ++c) {
     Json poses = Json::array();
@@ -81,7 +90,8 @@ std::string FrameLine(const Sequence& sequence, const SequenceFrame& frame, long
       Json joints = Json::array();
       for (int j = 0; j < view.num_joints; ++j) {
         const auto joint = view.Person(p).col(j);
-        joints.push_back(joint(2) > 0 ? Json{joint(0), joint(1), joint(2)} : Json());
+        joints.push_back(joint(2) > 0 ? Json{Written(joint(0), digits), Written(joint(1), digits), Written(joint(2), digits)}
+                                      : Json());
       }
       poses.push_back(std::move(joints));
     }
@@ -105,6 +115,7 @@ class FrameTimes final : public engine::FrameSink {
 
 struct FollowResult {
   bench::BenchScene scene;
+  Digits digits = Digits::kFull;
   long frames = 0;                // timed frames
   double line_kb_median = 0;
   double triangulation_us = 0;    // medians over the timed frames
@@ -116,7 +127,7 @@ struct FollowResult {
   double pipes_added_us_p90 = 0;
 };
 
-FollowResult BenchFollow(const bench::BenchScene& scene, int repeat, const std::string& detector,
+FollowResult BenchFollow(const bench::BenchScene& scene, Digits digits, int repeat, const std::string& detector,
                          const engine::Config& config) {
   const Sequence sequence = bench::MakeBenchSequence(scene, 1, detector);
   const double fps = sequence.fps > 0 ? sequence.fps : 25.0;
@@ -125,7 +136,7 @@ FollowResult BenchFollow(const bench::BenchScene& scene, int repeat, const std::
   std::vector<double> line_kb;
   for (int pass = 0; pass <= repeat; ++pass) {
     for (long f = 0; f < frames; ++f) {
-      lines.push_back(FrameLine(sequence, sequence.frames[f], pass * frames + f, fps));
+      lines.push_back(FrameLine(sequence, sequence.frames[f], pass * frames + f, fps, digits));
       line_kb.push_back(static_cast<double>(lines.back().size()) / 1024.0);
     }
   }
@@ -176,6 +187,7 @@ FollowResult BenchFollow(const bench::BenchScene& scene, int repeat, const std::
   for (size_t i = 0; i < pipes_us.size(); ++i) added_us.push_back(pipes_us[i] - times.us[frames + i]);
   FollowResult result;
   result.scene = scene;
+  result.digits = digits;
   result.frames = static_cast<long>(pipes_us.size());
   result.line_kb_median = metrics::Median(line_kb);
   result.triangulation_us = run.timing.frame_us_median;
@@ -199,8 +211,10 @@ void RunFollowBench(const std::vector<bench::BenchScene>& scenes, int repeat, co
   constexpr double kTargetAddedUs = 100;  // issue 20: --follow adds at most 100 us per frame on shelf-like
   std::vector<FollowResult> results;
   for (const bench::BenchScene& scene : scenes) {
-    if (!json) std::fprintf(stderr, "benchmarking --follow on %s ...\n", scene.name.c_str());
-    results.push_back(BenchFollow(scene, repeat, detector, config));
+    for (const Digits digits : {Digits::kFull, Digits::kThreeDecimals}) {
+      if (!json) std::fprintf(stderr, "benchmarking --follow on %s ...\n", scene.name.c_str());
+      results.push_back(BenchFollow(scene, digits, repeat, detector, config));
+    }
   }
   const engine::RunInfo info = engine::CollectRunInfo(1);
   if (json) {
@@ -212,6 +226,7 @@ void RunFollowBench(const std::vector<bench::BenchScene>& scenes, int repeat, co
     j["scenes"] = Json::array();
     for (const FollowResult& r : results) {
       j["scenes"].push_back({{"name", r.scene.name},
+                             {"numbers", r.digits == Digits::kFull ? "full precision" : "3 decimals"},
                              {"frames", r.frames},
                              {"line_kb_median", r.line_kb_median},
                              {"triangulation_us_median", r.triangulation_us},
@@ -232,6 +247,8 @@ void RunFollowBench(const std::vector<bench::BenchScene>& scenes, int repeat, co
       repeat, info.git_revision.c_str(), info.cpu.c_str());
   std::printf("%-40s", "(us per frame)");
   for (const auto& r : results) std::printf(" %14s", r.scene.name.c_str());
+  std::printf("\n%-40s", "numbers written with");
+  for (const auto& r : results) std::printf(" %14s", r.digits == Digits::kFull ? "full precision" : "3 decimals");
   std::printf("\n");
   const auto row = [&](const char* label, auto value, const char* format) {
     std::printf("%-40s", label);

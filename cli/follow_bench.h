@@ -7,7 +7,8 @@
 // pipeline. Reported per frame, medians after a warm-up pass: the triangulation time, the latency
 // measured in the process (line read -> line written) and as the producer sees it (line written ->
 // output line read), and what --follow adds to the triangulation (the target: 100 us on
-// shelf-like).
+// shelf-like). Each scene twice: numbers at full precision (as Python producers write floats) and
+// with 3 decimals (as OpenPose writes them), since reading the numbers is most of the added time.
 #pragma once
 
 #include <string>

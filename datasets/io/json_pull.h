@@ -81,9 +81,10 @@ class JsonPull {
   // A number (finite: a literal beyond the double range is an error).
   double Number() {
     SkipSpace();
+    double value = 0;
+    if (ShortDecimal(&value)) return value;
     const char* first = text_.data() + pos_;
     const char* last = text_.data() + text_.size();
-    double value = 0;
     const auto [end, error] = std::from_chars(first, last, value);
     // std::from_chars also takes what JSON does not ("01", "1.", ".5", "inf"): checked on what it read.
     if (error != std::errc() || !IsJsonNumber(first, end)) return NumberSlow();
@@ -111,6 +112,42 @@ class JsonPull {
  private:
   static bool IsDigit(char c) { return c >= '0' && c <= '9'; }
   static bool IsJsonNumber(const char* first, const char* end);
+  // Clinger's fast path for what detectors write most: [-]digits[.digits] with at most 19 digits
+  // whose value m (all digits as an integer) is below 2^53, read as m / 10^(fraction digits) with
+  // at most 22 of them: both exact doubles, so one division rounds the decimal value correctly,
+  // as std::from_chars does. Sets *value and consumes the number; false (nothing consumed) when
+  // the text is anything else (exponents, longer mantissas, errors: Number() takes them).
+  bool ShortDecimal(double* value) {
+    static constexpr double kPowersOfTen[23] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                                1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+                                                1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+    const std::size_t n = text_.size();
+    std::size_t p = pos_;
+    const bool negative = p < n && text_[p] == '-';
+    if (negative) ++p;
+    unsigned long long m = 0;
+    int digits = 0, fraction = 0;
+    if (p < n && text_[p] == '0') {
+      ++p;
+      if (p < n && IsDigit(text_[p])) return false;  // a leading zero: the error is Number()'s
+    } else {
+      if (p >= n || !IsDigit(text_[p])) return false;
+      for (; p < n && IsDigit(text_[p]); ++p, ++digits) m = m * 10 + static_cast<unsigned>(text_[p] - '0');
+    }
+    if (p < n && text_[p] == '.') {
+      ++p;
+      if (p >= n || !IsDigit(text_[p])) return false;
+      for (; p < n && IsDigit(text_[p]); ++p, ++digits, ++fraction) m = m * 10 + static_cast<unsigned>(text_[p] - '0');
+    }
+    if (digits > 19 || fraction > 22 || m > (1ULL << 53) || (p < n && (text_[p] == 'e' || text_[p] == 'E'))) {
+      return false;
+    }
+    const double magnitude = static_cast<double>(m) / kPowersOfTen[fraction];
+    *value = negative ? -magnitude : magnitude;
+    pos_ = p;
+    after_begin_ = false;
+    return true;
+  }
   void SkipSpace() {
     while (pos_ < text_.size()) {
       const char c = text_[pos_];

@@ -9,7 +9,10 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <charconv>
+#include <cstring>
 #include <nlohmann/json.hpp>
+#include <random>
 #include <string>
 #include <thread>
 #include <vector>
@@ -87,6 +90,31 @@ TEST(JsonPull, AcceptsAndRefusesWhatNlohmannDoes) {
     if (accepts && nlohmann_accepts) {
       EXPECT_EQ(pulled, expected) << text;
     }
+  }
+}
+
+// Numbers as detectors write them (a few decimals, full precision, integers, tiny and huge values)
+// read bit for bit as std::from_chars reads them, whichever path (the short-decimal fast path or
+// from_chars) takes them.
+TEST(JsonPull, NumbersEqualFromChars) {
+  std::mt19937_64 random(7);
+  std::uniform_real_distribution<double> pixels(-50, 4000);
+  std::vector<std::string> texts = {"0", "-0", "0.5", "1e-400", "123456789012345678901234", "9007199254740993",
+                                    "0.30000000000000004", "2.2250738585072014e-308", "1.7976931348623157e308"};
+  for (int i = 0; i < 20000; ++i) {
+    const double x = pixels(random) * (i % 7 == 0 ? 1e-9 : 1.0);
+    char text[64];
+    const char* formats[] = {"%.3f", "%.17g", "%.16g", "%.1f", "%.0f", "%.22f", "%.6e"};
+    std::snprintf(text, sizeof(text), formats[i % 7], x);
+    texts.push_back(text);
+  }
+  for (const std::string& text : texts) {
+    double expected = 0;
+    std::from_chars(text.data(), text.data() + text.size(), expected);
+    io::JsonPull json(text);
+    const double read = json.Number();
+    EXPECT_EQ(std::memcmp(&read, &expected, sizeof(double)), 0) << text << ": " << read << " vs " << expected;
+    json.End();
   }
 }
 
