@@ -14,9 +14,11 @@ namespace rpt::engine {
 namespace {
 
 void CheckLiveSpec(const InputSpec& spec) {
-  if (spec.cameras.empty()) throw ConfigError("--follow needs --cameras FILE (the calibration of the stream's cameras)");
+  if (spec.cameras.empty())
+    throw ConfigError("--follow needs --cameras FILE (the calibration of the stream's cameras)");
   const auto refuse = [](bool given, const std::string& option) {
-    if (given) throw ConfigError(option + ": not with --follow (the frames come from the stream; --cameras gives the cameras)");
+    if (given)
+      throw ConfigError(option + ": not with --follow (the frames come from the stream; --cameras gives the cameras)");
   };
   refuse(!spec.detections.empty(), "--detections");
   refuse(!spec.dataset.empty(), "--dataset");

@@ -64,7 +64,8 @@ void JsonPull::Fail(const std::string& what) const {
 
 void JsonPull::Expect(char c, const char* what) {
   SkipSpace();
-  if (pos_ >= text_.size() || text_[pos_] != c) Fail(std::string("expected ") + what + ", got " + Describe(text_, pos_));
+  if (pos_ >= text_.size() || text_[pos_] != c)
+    Fail(std::string("expected ") + what + ", got " + Describe(text_, pos_));
   ++pos_;
 }
 
@@ -249,14 +250,30 @@ std::string_view JsonPull::DecodeString(std::size_t start) {
     const char escape = text_[p + 1];
     p += 2;
     switch (escape) {
-      case '"': decoded_.push_back('"'); break;
-      case '\\': decoded_.push_back('\\'); break;
-      case '/': decoded_.push_back('/'); break;
-      case 'b': decoded_.push_back('\b'); break;
-      case 'f': decoded_.push_back('\f'); break;
-      case 'n': decoded_.push_back('\n'); break;
-      case 'r': decoded_.push_back('\r'); break;
-      case 't': decoded_.push_back('\t'); break;
+      case '"':
+        decoded_.push_back('"');
+        break;
+      case '\\':
+        decoded_.push_back('\\');
+        break;
+      case '/':
+        decoded_.push_back('/');
+        break;
+      case 'b':
+        decoded_.push_back('\b');
+        break;
+      case 'f':
+        decoded_.push_back('\f');
+        break;
+      case 'n':
+        decoded_.push_back('\n');
+        break;
+      case 'r':
+        decoded_.push_back('\r');
+        break;
+      case 't':
+        decoded_.push_back('\t');
+        break;
       case 'u': {
         unsigned code_point = hex4(p);
         p += 4;
@@ -271,7 +288,8 @@ std::string_view JsonPull::DecodeString(std::size_t start) {
         AppendUtf8(&decoded_, code_point);
         break;
       }
-      default: fail_at(p - 1, "invalid escape \\" + Describe(text_, p - 1));
+      default:
+        fail_at(p - 1, "invalid escape \\" + Describe(text_, p - 1));
     }
   }
   if (!IsValidUtf8(decoded_)) fail_at(start, "string is not valid UTF-8");
@@ -306,12 +324,23 @@ void JsonPull::SkipValue(int depth) {
       BeginArray();
       while (NextElement()) SkipValue(depth + 1);
       break;
-    case Kind::kString: String(); break;
-    case Kind::kNumber: NumberText(); break;
-    case Kind::kTrue: Literal("true"); break;
-    case Kind::kFalse: Literal("false"); break;
-    case Kind::kNull: Literal("null"); break;
-    case Kind::kEnd: Fail("expected a JSON value, got the end of the line");
+    case Kind::kString:
+      String();
+      break;
+    case Kind::kNumber:
+      NumberText();
+      break;
+    case Kind::kTrue:
+      Literal("true");
+      break;
+    case Kind::kFalse:
+      Literal("false");
+      break;
+    case Kind::kNull:
+      Literal("null");
+      break;
+    case Kind::kEnd:
+      Fail("expected a JSON value, got the end of the line");
   }
 }
 

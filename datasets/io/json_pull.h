@@ -43,12 +43,18 @@ class JsonPull {
     SkipSpace();
     if (pos_ >= text_.size()) return Kind::kEnd;
     switch (text_[pos_]) {
-      case '{': return Kind::kObject;
-      case '[': return Kind::kArray;
-      case '"': return Kind::kString;
-      case 't': return Kind::kTrue;
-      case 'f': return Kind::kFalse;
-      case 'n': return Kind::kNull;
+      case '{':
+        return Kind::kObject;
+      case '[':
+        return Kind::kArray;
+      case '"':
+        return Kind::kString;
+      case 't':
+        return Kind::kTrue;
+      case 'f':
+        return Kind::kFalse;
+      case 'n':
+        return Kind::kNull;
       default:
         if (text_[pos_] == '-' || IsDigit(text_[pos_])) return Kind::kNumber;
         FailNoValue();
@@ -118,9 +124,8 @@ class JsonPull {
   // as std::from_chars does. Sets *value and consumes the number; false (nothing consumed) when
   // the text is anything else (exponents, longer mantissas, errors: Number() takes them).
   bool ShortDecimal(double* value) {
-    static constexpr double kPowersOfTen[23] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
-                                                1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
-                                                1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+    static constexpr double kPowersOfTen[23] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
+                                                1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
     const std::size_t n = text_.size();
     std::size_t p = pos_;
     const bool negative = p < n && text_[p] == '-';

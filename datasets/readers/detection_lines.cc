@@ -128,9 +128,7 @@ class DetectionLineSource final : public FrameSource {
   }
 
  private:
-  static bool IsBlank(std::string_view line) {
-    return line.find_first_not_of(" \t\r") == std::string_view::npos;
-  }
+  static bool IsBlank(std::string_view line) { return line.find_first_not_of(" \t\r") == std::string_view::npos; }
 
   // Line 1: {"joints": [names]}.
   void ReadJointsLine() {
@@ -257,7 +255,8 @@ class DetectionLineSource final : public FrameSource {
     const std::uint64_t hash = std::hash<std::string>{}(id);
     const std::size_t kept = std::min(num_recent_, kRecentIds);
     for (std::size_t i = 0; i < kept; ++i) {
-      if (recent_ids_[i] == hash) Fail("/id", "frame id '" + id + "' repeats one of the last " + std::to_string(kRecentIds) + " frames");
+      if (recent_ids_[i] == hash)
+        Fail("/id", "frame id '" + id + "' repeats one of the last " + std::to_string(kRecentIds) + " frames");
     }
     recent_ids_[num_recent_++ % kRecentIds] = hash;
   }
@@ -286,7 +285,8 @@ class DetectionLineSource final : public FrameSource {
                                                  calibration_file_ + " (cameras: " + Join(camera_names_, ", ") + ")");
           }
           camera = it->second;
-          if (camera_seen_[camera]) Fail(ViewPointer(v) + "/camera", "camera '" + std::string(name) + "' appears twice in this frame");
+          if (camera_seen_[camera])
+            Fail(ViewPointer(v) + "/camera", "camera '" + std::string(name) + "' appears twice in this frame");
           camera_seen_[camera] = true;
         } else if (key == "poses") {
           if (has_poses) Fail(ViewPointer(v) + "/poses", "given twice");
@@ -310,7 +310,8 @@ class DetectionLineSource final : public FrameSource {
     if (json_.Peek() != Kind::kArray) Fail(ViewPointer(v) + "/poses", "expected a list of persons");
     json_.BeginArray();
     for (size_t p = 0; json_.NextElement(); ++p) {
-      if (json_.Peek() != Kind::kArray) Fail(pointer(p), "expected a list of " + std::to_string(num_joints_) + " joints");
+      if (json_.Peek() != Kind::kArray)
+        Fail(pointer(p), "expected a list of " + std::to_string(num_joints_) + " joints");
       json_.BeginArray();
       auto joints = scratch_.AddPerson();
       int j = 0;
@@ -323,7 +324,8 @@ class DetectionLineSource final : public FrameSource {
         if (json_.Peek() != Kind::kArray) Fail(joint_pointer(), "expected [x, y, score] or null");
         json_.BeginArray();
         for (int row = 0; row < 3; ++row) {
-          if (!json_.NextElement() || json_.Peek() != Kind::kNumber) Fail(joint_pointer(), "expected [x, y, score] or null");
+          if (!json_.NextElement() || json_.Peek() != Kind::kNumber)
+            Fail(joint_pointer(), "expected [x, y, score] or null");
           joints(row, j) = json_.Number();
         }
         if (json_.NextElement()) Fail(joint_pointer(), "expected [x, y, score] or null");
@@ -340,7 +342,8 @@ class DetectionLineSource final : public FrameSource {
   void Finish() {
     ended_ = true;
     if (counts_->bad_lines > 0) {
-      warnings_.AddUnused(source_, "bad lines skipped (the first: " + counts_->first_bad_line + ")", counts_->bad_lines);
+      warnings_.AddUnused(source_, "bad lines skipped (the first: " + counts_->first_bad_line + ")",
+                          counts_->bad_lines);
     }
     frame_keys_.Report(source_, "frame lines", &warnings_);
     view_keys_.Report(source_, "views", &warnings_);

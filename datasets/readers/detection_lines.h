@@ -37,16 +37,16 @@ namespace rpt {
 inline constexpr std::size_t kRecentIds = 1024;
 
 struct DetectionLinesOptions {
-  std::string name;     // the sequence's name
-  double fps = 0;       // rate of the lines without "time"; 0 = their times are unknown
+  std::string name;  // the sequence's name
+  double fps = 0;    // rate of the lines without "time"; 0 = their times are unknown
   bool skip_bad_lines = false;
 };
 
 // What the stream held, kept up to date by the source (read it once the run is over).
 struct DetectionLinesCounts {
-  long lines = 0;       // every line read, the joints line, blank and bad lines included
-  long frames = 0;      // frames handed out
-  long bad_lines = 0;   // skipped (with skip_bad_lines)
+  long lines = 0;              // every line read, the joints line, blank and bad lines included
+  long frames = 0;             // frames handed out
+  long bad_lines = 0;          // skipped (with skip_bad_lines)
   std::string first_bad_line;  // the error of the first one
   // When the line of the last frame handed out was read (io::LineReader::line_time): where the
   // latency of its output starts.

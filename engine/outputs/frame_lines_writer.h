@@ -2,7 +2,8 @@
 // The live output of `rpt triangulate --follow` (docs/own_data.md, "Live input"): JSON lines on a
 // file descriptor (standard output), each written whole by one write() as soon as its frame is
 // triangulated, so a reader at the other end of a pipe gets every frame at once:
-//   {"joints": [...], "units": {"position": "m", "time": "s", "score": "1"}, "provenance_names": [...], "sequence": "...", "fps": F or null}
+//   {"joints": [...], "units": {"position": "m", "time": "s", "score": "1"}, "provenance_names": [...], "sequence":
+//   "...", "fps": F or null}
 //   {"id": "...", "time": t, "persons": [...], "track_ids": [...], "provenance": [...]}   one per frame
 // The frame objects are predictions.json's (engine/outputs/frame_json.h). The line buffer is
 // reused: a warm writer allocates nothing. For one sequence at a time (a live input has one).

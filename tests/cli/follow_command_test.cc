@@ -166,9 +166,9 @@ class Follow : public ::testing::Test {
   // The offline run's predictions.json.
   Json Offline() {
     const fs::path out = dir_ / "offline";
-    const test::CommandResult r = test::RunRpt("triangulate --cameras " + Cameras() + " --detections " +
-                                               (dir_ / "detections.json").string() + " --fps 25 --quiet --out " +
-                                               out.string());
+    const test::CommandResult r =
+        test::RunRpt("triangulate --cameras " + Cameras() + " --detections " + (dir_ / "detections.json").string() +
+                     " --fps 25 --quiet --out " + out.string());
     EXPECT_EQ(r.exit_code, 0) << r.err;
     return Json::parse(test::ReadAll(out / "predictions.json"));
   }
@@ -242,10 +242,13 @@ TEST_F(Follow, TimesFromFpsAndANamedPipe) {
 TEST_F(Follow, ABadLineIsAnErrorNamingItsLine) {
   const std::string good = FrameLine(detections_, 0, true);
   const std::vector<std::pair<std::string, std::string>> cases = {
-      {"{\"views\": [{\"camera\": \"nope\", \"poses\": []}]}", "stdin:3: /views/0/camera: camera 'nope' is not in the calibration"},
+      {"{\"views\": [{\"camera\": \"nope\", \"poses\": []}]}",
+       "stdin:3: /views/0/camera: camera 'nope' is not in the calibration"},
       {"{\"views\": [}", "stdin:3: column 12: expected"},
-      {"{\"views\": [{\"camera\": \"cam0\", \"poses\": [[[1, 2, 0.5]]]}]}", "stdin:3: /views/0/poses/0: 1 joints, expected "},
-      {"{\"views\": [{\"camera\": \"cam0\", \"poses\": [[[1, 2]]]}]}", "stdin:3: /views/0/poses/0/0: expected [x, y, score] or null"},
+      {"{\"views\": [{\"camera\": \"cam0\", \"poses\": [[[1, 2, 0.5]]]}]}",
+       "stdin:3: /views/0/poses/0: 1 joints, expected "},
+      {"{\"views\": [{\"camera\": \"cam0\", \"poses\": [[[1, 2]]]}]}",
+       "stdin:3: /views/0/poses/0/0: expected [x, y, score] or null"},
       {"{\"id\": \"x\"}", "stdin:3: /views: missing"},
       {good, "stdin:3: /id: frame id 'take_0' repeats one of the last 1024 frames"},
       {"{\"time\": \"soon\", \"views\": []}", "stdin:3: /time: expected the time in seconds"},
@@ -261,7 +264,8 @@ TEST_F(Follow, ABadLineIsAnErrorNamingItsLine) {
   }
   const fs::path no_joints = dir_ / "no_joints.jsonl";
   std::ofstream(no_joints) << good << "\n";
-  const test::CommandResult r = test::RunRpt("triangulate --follow - --cameras " + Cameras() + " < " + no_joints.string());
+  const test::CommandResult r =
+      test::RunRpt("triangulate --follow - --cameras " + Cameras() + " < " + no_joints.string());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("stdin:1: column"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("the first line is {\"joints\": [names]}"), std::string::npos) << r.err;
@@ -281,12 +285,14 @@ TEST_F(Follow, SkipBadLinesCountsThem) {
       test::RunRpt("triangulate --follow - --skip-bad-lines --cameras " + Cameras() + " < " + file.string());
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1 + 6) << r.out;
-  EXPECT_NE(r.err.find("warning: stdin: 4 bad lines skipped (the first: stdin:3: column 1: expected"), std::string::npos)
+  EXPECT_NE(r.err.find("warning: stdin: 4 bad lines skipped (the first: stdin:3: column 1: expected"),
+            std::string::npos)
       << r.err;
   EXPECT_NE(r.err.find("stdin: 12 lines, 6 frames"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("4 bad line(s) skipped"), std::string::npos) << r.err;
   // Without the flag the first bad line ends the run.
-  const test::CommandResult strict = test::RunRpt("triangulate --follow - --cameras " + Cameras() + " < " + file.string());
+  const test::CommandResult strict =
+      test::RunRpt("triangulate --follow - --cameras " + Cameras() + " < " + file.string());
   EXPECT_EQ(strict.exit_code, 2);
   EXPECT_NE(strict.err.find("error: stdin:3: column 1: "), std::string::npos) << strict.err;
 }
@@ -310,8 +316,7 @@ TEST_F(Follow, CtrlCEndsCleanlyAfterTheFramesInHand) {
 TEST_F(Follow, OptionsThatDoNotFit) {
   const std::string base = "triangulate --follow - --cameras " + Cameras();
   for (const auto& [extra, message] : std::vector<std::pair<std::string, std::string>>{
-           {" --detections x.json", "--detections: not with --follow"},
-           {" --json", "--json: not with --follow"}}) {
+           {" --detections x.json", "--detections: not with --follow"}, {" --json", "--json: not with --follow"}}) {
     const test::CommandResult r = test::RunRpt(base + extra + " < /dev/null");
     EXPECT_EQ(r.exit_code, 2) << extra;
     EXPECT_NE(r.err.find(message), std::string::npos) << r.err;

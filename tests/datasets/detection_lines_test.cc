@@ -47,12 +47,21 @@ Json PullValue(io::JsonPull& json) {
       while (json.NextElement()) array.push_back(PullValue(json));
       return array;
     }
-    case io::JsonPull::Kind::kString: return std::string(json.String());
-    case io::JsonPull::Kind::kNumber: return json.Number();
-    case io::JsonPull::Kind::kTrue: json.Skip(); return true;
-    case io::JsonPull::Kind::kFalse: json.Skip(); return false;
-    case io::JsonPull::Kind::kNull: json.Skip(); return nullptr;
-    case io::JsonPull::Kind::kEnd: break;
+    case io::JsonPull::Kind::kString:
+      return std::string(json.String());
+    case io::JsonPull::Kind::kNumber:
+      return json.Number();
+    case io::JsonPull::Kind::kTrue:
+      json.Skip();
+      return true;
+    case io::JsonPull::Kind::kFalse:
+      json.Skip();
+      return false;
+    case io::JsonPull::Kind::kNull:
+      json.Skip();
+      return nullptr;
+    case io::JsonPull::Kind::kEnd:
+      break;
   }
   throw InputError("no value");
 }
@@ -62,9 +71,9 @@ TEST(JsonPull, AcceptsAndRefusesWhatNlohmannDoes) {
       "{}", "[]", " [ 1 , 2 ] ", "{\"a\": [1, -0, 0.5, -1.25e-3, 2E+2, 1e0]}", "[true, false, null]",
       "\"\\u00e9\\ud83d\\ude00 \\\" \\\\ \\/ \\b\\f\\n\\r\\t\"", "\"caf\xc3\xa9\"", "[[[[]]]]",
       // refused
-      "", "[1,]", "[,1]", "{\"a\" 1}", "{\"a\": 1,}", "{1: 2}", "[01]", "[1.]", "[.5]", "[+1]", "[1e]", "[-]",
-      "[NaN]", "[Infinity]", "[tru]", "[nulll]", "\"a", "\"\\x\"", "\"\\u12\"", "\"\\ud800\"", "\"\\udc00x\"",
-      "\"a\tb\"", "\"\xff\"", "\"\xc3\"", "[1] 2", "[1]]", "{\"a\": 1}}", "[1e400]"};
+      "", "[1,]", "[,1]", "{\"a\" 1}", "{\"a\": 1,}", "{1: 2}", "[01]", "[1.]", "[.5]", "[+1]", "[1e]", "[-]", "[NaN]",
+      "[Infinity]", "[tru]", "[nulll]", "\"a", "\"\\x\"", "\"\\u12\"", "\"\\ud800\"", "\"\\udc00x\"", "\"a\tb\"",
+      "\"\xff\"", "\"\xc3\"", "[1] 2", "[1]]", "{\"a\": 1}}", "[1e400]"};
   for (const std::string& text : texts) {
     bool nlohmann_accepts = true;
     Json expected;
@@ -99,8 +108,15 @@ TEST(JsonPull, AcceptsAndRefusesWhatNlohmannDoes) {
 TEST(JsonPull, NumbersEqualFromChars) {
   std::mt19937_64 random(7);
   std::uniform_real_distribution<double> pixels(-50, 4000);
-  std::vector<std::string> texts = {"0", "-0", "0.5", "1e-400", "123456789012345678901234", "9007199254740993",
-                                    "0.30000000000000004", "2.2250738585072014e-308", "1.7976931348623157e308"};
+  std::vector<std::string> texts = {"0",
+                                    "-0",
+                                    "0.5",
+                                    "1e-400",
+                                    "123456789012345678901234",
+                                    "9007199254740993",
+                                    "0.30000000000000004",
+                                    "2.2250738585072014e-308",
+                                    "1.7976931348623157e308"};
   for (int i = 0; i < 20000; ++i) {
     const double x = pixels(random) * (i % 7 == 0 ? 1e-9 : 1.0);
     char text[64];
@@ -162,7 +178,8 @@ TEST(LineReader, LinesAsTheyArrive) {
   std::vector<io::LineReader::Result> results;
   const std::vector<std::string> lines =
       ReadLines("first\r\n\nsecond line\n" + std::string(100, 'x') + "\nthird\nlast without newline", 40, &results);
-  EXPECT_EQ(lines, (std::vector<std::string>{"first", "", "second line", "<too long>", "third", "last without newline"}));
+  EXPECT_EQ(lines,
+            (std::vector<std::string>{"first", "", "second line", "<too long>", "third", "last without newline"}));
   EXPECT_EQ(results[3], io::LineReader::Result::kTooLong);
 }
 
@@ -218,7 +235,8 @@ TEST(DetectionLines, FramesAsWritten) {
       "{\"joints\": [\"nose\", \"neck\"]}\n"
       "{\"id\": 7, \"time\": 1.5, \"views\": [{\"poses\": [[[1, 2, 0.5], null]], \"camera\": \"b\"}]}\n"
       "\n"
-      "{\"views\": [{\"camera\": \"a\", \"poses\": [[[3, 4, 1.2], [5, 6, 0]], [null, [7, 8, 1]]]}, {\"camera\": \"b\", \"poses\": null}]}\n"
+      "{\"views\": [{\"camera\": \"a\", \"poses\": [[[3, 4, 1.2], [5, 6, 0]], [null, [7, 8, 1]]]}, {\"camera\": \"b\", "
+      "\"poses\": null}]}\n"
       "{\"id\": \"x\", \"time\": null, \"views\": []}\n",
       options);
   const SequenceHeader& header = stream.source->header();
@@ -245,9 +263,10 @@ TEST(DetectionLines, FramesAsWritten) {
   EXPECT_EQ(stream.counts.frames, 3);
   std::vector<std::string> warnings;
   for (const InputWarning& w : stream.source->warnings().items()) warnings.push_back(w.Line());
-  EXPECT_EQ(warnings, (std::vector<std::string>{"live: 1 scores above 1 clamped to 1 (largest = 1.2)",
-                                                "live: 1 frames without times: nothing is carried between them (no "
-                                                "tracking, no smoothing); give \"time\" in the lines or the rate with --fps"}));
+  EXPECT_EQ(warnings,
+            (std::vector<std::string>{"live: 1 scores above 1 clamped to 1 (largest = 1.2)",
+                                      "live: 1 frames without times: nothing is carried between them (no "
+                                      "tracking, no smoothing); give \"time\" in the lines or the rate with --fps"}));
 }
 
 TEST(DetectionLines, BadLinesNameTheLineAndThePlace) {
@@ -265,7 +284,8 @@ TEST(DetectionLines, BadLinesNameTheLineAndThePlace) {
       {"{\"views\": [], \"views\": []}", "live:2: /views: given twice"},
       {"{\"id\": \"\", \"views\": []}", "live:2: /id: empty id"},
       {"{\"id\": 1.5, \"views\": []}", "live:2: /id: expected a string or an integer id"},
-      {"{\"joints\": [\"nose\"]}", "live:2: /joints: a joints line after the first line: the joints are given once, on the first line"},
+      {"{\"joints\": [\"nose\"]}",
+       "live:2: /joints: a joints line after the first line: the joints are given once, on the first line"},
       {"{\"views\": []} x", "live:2: column 15: unexpected 'x' after the end of the JSON value"},
   };
   for (const auto& [line, message] : cases) {
@@ -273,7 +293,8 @@ TEST(DetectionLines, BadLinesNameTheLineAndThePlace) {
     SequenceFrame frame;
     EXPECT_EQ(test::ErrorMessage([&] { stream.source->Next(&frame); }), message) << line;
   }
-  EXPECT_EQ(test::ErrorMessage([] { Stream stream("{\"joints\": [\"nose\", \"nose\"]}\n"); }).substr(0, 10), "live:1: /j");
+  EXPECT_EQ(test::ErrorMessage([] { Stream stream("{\"joints\": [\"nose\", \"nose\"]}\n"); }).substr(0, 10),
+            "live:1: /j");
   EXPECT_EQ(test::ErrorMessage([] { Stream stream(""); }),
             "live:1: no joints line: the stream must start with {\"joints\": [names]}");
 }
