@@ -2,8 +2,9 @@
 // rpt triangulate --follow end to end on a generated scene: its detections fed through a pipe one
 // line at a time, each output line read before the next input line is written (so every frame
 // must come out flushed on its own), equal to the offline `rpt triangulate` of the same detections
-// (persons, track ids, provenance, times); the time from --fps as offline; a named pipe; bad lines
-// exit 2 naming the line, --skip-bad-lines counts them; Ctrl-C ends cleanly with exit 130.
+// (persons, track ids, provenance, times), also in the --out run folder (rpt report says the stream
+// is not read again); the time from --fps as offline; a named pipe; bad lines exit 2 naming the
+// line, --skip-bad-lines counts them; Ctrl-C ends cleanly with exit 130.
 #include <gtest/gtest.h>
 
 #include <fcntl.h>
@@ -219,6 +220,10 @@ TEST_F(Follow, FrameByFrameThroughAPipeEqualsTheOfflineRun) {
   // --out: the run folder holds the same frames.
   const Json written = Json::parse(test::ReadAll(run / "predictions.json"));
   EXPECT_EQ(written["frames"], offline["frames"]);
+  // rpt report on it: the recorded tables; the stream is not read again, and it says why.
+  const test::CommandResult report = test::RunRpt("report " + run.string());
+  EXPECT_EQ(report.exit_code, 0) << report.err;
+  EXPECT_NE(report.err.find("the run read a live stream"), std::string::npos) << report.err;
 }
 
 TEST_F(Follow, TimesFromFpsAndANamedPipe) {
