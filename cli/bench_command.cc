@@ -14,6 +14,7 @@
 #include "bench/bench_scenes.h"
 #include "cli/commands.h"
 #include "cli/config_args.h"
+#include "cli/follow_bench.h"
 #include "engine/outputs/step_tables.h"
 #include "engine/outputs/results_writer.h"
 #include "engine/outputs/run_info.h"
@@ -38,6 +39,7 @@ using Json = nlohmann::ordered_json;
 struct BenchArgs {
   bool io = false;
   int io_frames = 10000;
+  bool follow = false;
   std::vector<std::string> scenes;
   bool scaling = false;
   int frames = 0;
@@ -176,9 +178,14 @@ void RunBench(const BenchArgs& args) {
     }
     scenes.push_back(*it);
   }
+  if (scenes.empty() && args.follow) scenes.push_back(bench::StandardScenes().front());  // shelf-like
   if (scenes.empty()) scenes = args.scaling ? bench::ScalingScenes() : bench::StandardScenes();
   for (auto& s : scenes) {
     if (args.frames > 0) s.frames = args.frames;
+  }
+  if (args.follow) {
+    RunFollowBench(scenes, args.repeat, args.detector, config, args.json);
+    return;
   }
 
   std::vector<SceneResult> results;
@@ -262,6 +269,9 @@ void RegisterBenchCommand(CLI::App& app) {
       ->check(CLI::IsMember(synthetic::DetectorProfileNames()))
       ->capture_default_str();
   command->add_flag("--json", args->json, "print the results as JSON");
+  command->add_flag("--follow", args->follow,
+                    "time the live input instead (triangulate --follow): lines fed one at a time through a pipe, "
+                    "median line in -> line out latency vs. the triangulation time (default scene: shelf-like)");
   command->add_flag("--io", args->io, "time reading an HDF5 detection cache instead (see --io-frames)");
   command->add_option("--io-frames", args->io_frames, "frames in the --io cache (5 views each)")
       ->check(CLI::Range(1, 10000000))

@@ -10,7 +10,8 @@ namespace rpt::cli {
 void RegisterDemoCommand(CLI::App& app);
 void RegisterConfigCommand(CLI::App& app);
 void RegisterEvalCommand(CLI::App& app);
-void RegisterTriangulateCommand(CLI::App& app);
+// triangulate --follow: 128 + the signal when Ctrl-C ended the stream.
+void RegisterTriangulateCommand(CLI::App& app, int* exit_code);
 void RegisterDatasetsCommand(CLI::App& app);
 void RegisterCamerasCommand(CLI::App& app);
 void RegisterConvertCommand(CLI::App& app);

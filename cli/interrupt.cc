@@ -8,7 +8,9 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cstdio>
+#include <mutex>
 #include <thread>
 
 #include "datasets/io/staged_output.h"
@@ -29,7 +31,38 @@ sigset_t InterruptSignals() {
   return signals;
 }
 
-const char* SignalName(int signal_number) {
+// The stop of the StopOnInterrupt alive, and the signal that called it.
+struct StopHook {
+  std::mutex mutex;
+  std::function<void()> stop;
+  std::atomic<int> signal_number{0};
+};
+StopHook& Hook() {
+  static StopHook hook;
+  return hook;
+}
+
+[[noreturn]] void WaitForInterrupt(sigset_t signals) {
+  int signal_number = 0;
+  while (true) {
+    while (sigwait(&signals, &signal_number) != 0) {
+    }
+    StopHook& hook = Hook();
+    std::lock_guard<std::mutex> lock(hook.mutex);
+    if (!hook.stop || hook.signal_number.load() != 0) break;
+    hook.signal_number.store(signal_number);
+    hook.stop();
+  }
+  const int removed = io::RemoveTemporariesForExit();
+  std::fprintf(stderr, "\ninterrupted (%s): %d unfinished output(s) removed, finished outputs unchanged\n",
+               StopOnInterrupt::SignalName(signal_number), removed);
+  std::fflush(stderr);
+  _exit(128 + signal_number);
+}
+
+}  // namespace
+
+const char* StopOnInterrupt::SignalName(int signal_number) {
   switch (signal_number) {
     case SIGINT: return "SIGINT";
     case SIGTERM: return "SIGTERM";
@@ -38,18 +71,20 @@ const char* SignalName(int signal_number) {
   }
 }
 
-[[noreturn]] void WaitForInterrupt(sigset_t signals) {
-  int signal_number = 0;
-  while (sigwait(&signals, &signal_number) != 0) {
-  }
-  const int removed = io::RemoveTemporariesForExit();
-  std::fprintf(stderr, "\ninterrupted (%s): %d unfinished output(s) removed, finished outputs unchanged\n",
-               SignalName(signal_number), removed);
-  std::fflush(stderr);
-  _exit(128 + signal_number);
+StopOnInterrupt::StopOnInterrupt(std::function<void()> stop) {
+  StopHook& hook = Hook();
+  std::lock_guard<std::mutex> lock(hook.mutex);
+  hook.stop = std::move(stop);
+  hook.signal_number.store(0);
 }
 
-}  // namespace
+StopOnInterrupt::~StopOnInterrupt() {
+  StopHook& hook = Hook();
+  std::lock_guard<std::mutex> lock(hook.mutex);
+  hook.stop = nullptr;
+}
+
+int StopOnInterrupt::signal_number() const { return Hook().signal_number.load(); }
 
 void InstallInterruptHandler() {
   const sigset_t signals = InterruptSignals();

@@ -96,7 +96,8 @@ int main(int argc, char** argv) {
   rpt::engine::SetCommand(argc, argv);
   rpt::cli::RegisterDemoCommand(app);
   rpt::cli::RegisterEvalCommand(app);
-  rpt::cli::RegisterTriangulateCommand(app);
+  int exit_code = 0;
+  rpt::cli::RegisterTriangulateCommand(app, &exit_code);
   rpt::cli::RegisterInspectCommand(app);
   rpt::cli::RegisterDetectorStatsCommand(app);
   rpt::cli::RegisterRenderCommand(app);
@@ -105,7 +106,6 @@ int main(int argc, char** argv) {
   rpt::cli::RegisterConvertCommand(app);
   rpt::cli::RegisterBenchCommand(app);
   rpt::cli::RegisterConfigCommand(app);
-  int exit_code = 0;
   rpt::cli::RegisterCheckCommand(app, &exit_code);
   rpt::cli::RegisterSweepCommand(app);
   rpt::cli::RegisterMergeCommand(app);

@@ -25,6 +25,11 @@ std::optional<std::vector<Sequence>> ReloadRecordedInput(const engine::RecordedR
     *why = "run.json does not record an `rpt eval` or `rpt triangulate` command";
     return std::nullopt;
   }
+  const auto live = [](const std::string& word) { return word == "--follow" || word.starts_with("--follow="); };
+  if (words[1] == "triangulate" && std::any_of(words.begin() + 2, words.end(), live)) {
+    *why = "the run read a live stream (rpt triangulate --follow), which is not read again";
+    return std::nullopt;
+  }
   // The recorded command's input options; everything else (config, output) is ignored.
   CLI::App app;
   app.allow_extras();

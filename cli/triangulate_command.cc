@@ -7,18 +7,30 @@
 // the chosen exports, steps.csv, summary.json, config.json and run.json into the output folder
 // (one atomic swap, like eval's). Prints the input warnings, progress on long runs, the counts
 // and the time per step.
+//
+// With --follow the detections come as JSON lines from standard input or a named pipe, and each
+// frame goes out as one JSON line on standard output as soon as it is triangulated (the same run
+// loop on a live source, engine/live_input.h); the summary goes to stderr.
+#include <unistd.h>
+
+#include <csignal>
 #include <cstdio>
 #include <iostream>
+#include <optional>
 
 #include "cli/commands.h"
 #include "cli/config_args.h"
 #include "cli/export_args.h"
 #include "cli/input_options.h"
+#include "cli/interrupt.h"
 #include "cli/progress.h"
 #include "cli/threads_option.h"
 #include "datasets/io/json_output.h"
 #include "engine/input.h"
 #include "engine/input_digests.h"
+#include "engine/live_input.h"
+#include "engine/live_latency.h"
+#include "engine/outputs/frame_lines_writer.h"
 #include "engine/outputs/results_writer.h"
 #include "engine/outputs/run_info.h"
 #include "engine/outputs/step_tables.h"
@@ -35,11 +47,86 @@ struct TriangulateArgs {
   int threads = 0;
   bool json = false;
   bool quiet = false;
+  std::string follow;  // --follow PATH: live input ("-" = standard input)
+  bool skip_bad_lines = false;
 };
+
+// The line format, for --help (docs/own_data.md, "Live input", has the details).
+constexpr const char* kFollowHelp =
+    "Live input (--follow PATH, - = standard input): line 1 names the joints, every other line is one frame:\n"
+    "  {\"joints\": [\"nose\", \"eye_left\", ...]}\n"
+    "  {\"id\": \"f1\", \"time\": 0.04, \"views\": [{\"camera\": \"cam0\", \"poses\": [[[u, v, score], ...], ...]}]}\n"
+    "\"id\" (default: the line number) and \"time\" (seconds; default: frame index / --fps, else unknown) are\n"
+    "optional; cameras are --cameras' names; pixels of the original image, a joint null or of score 0 is\n"
+    "missing. Output on stdout, one line per frame as soon as it is done, after a first line with the\n"
+    "joints and units: {\"id\", \"time\" (s), \"persons\": [[[x, y, z, score], ...]] (m, world frame),\n"
+    "\"track_ids\", \"provenance\"}. Ends at the end of the input (exit 0) or on Ctrl-C (exit 130), with a\n"
+    "summary on stderr; a bad line is an error naming it (exit 2) unless --skip-bad-lines.";
 
 std::string DefaultOutDir(const engine::InputSpec& input, const engine::Input& opened) {
   if (!input.dataset.empty()) return "out/triangulate-" + input.dataset;
   return "out/triangulate-" + (opened.size() == 1 ? opened.header(0).name : std::string("labels"));
+}
+
+void CheckFollowArgs(const TriangulateArgs& args) {
+  if (args.json) throw ConfigError("--json: not with --follow (standard output holds the frame lines)");
+  if (args.threads > 1) throw ConfigError("--threads: not with --follow (one stream is one sequence)");
+}
+
+// --follow: the live input through the same run loop, the frame lines on stdout, the summary on
+// stderr. Returns the exit code: 0 at the end of the input, 128 + the signal after Ctrl-C.
+int RunFollow(const TriangulateArgs& args) {
+  CheckFollowArgs(args);
+  // A reader that closes standard output is a write error (exit 2, outputs cleaned up), as for every
+  // command's printed results, not a silent death by SIGPIPE.
+  std::signal(SIGPIPE, SIG_IGN);
+  const engine::Config config = ResolveConfig(args.config);
+  const engine::ExportOptions exports = ExportOptionsOf(args.exports);
+  auto stop = std::make_shared<io::StopRequest>();
+  const StopOnInterrupt on_interrupt([stop] { stop->Request(); });
+  DetectionLinesCounts counts;
+  std::optional<engine::Input> input;
+  try {
+    input.emplace(engine::OpenLiveInput(args.input, {args.follow, args.skip_bad_lines}, stop, &counts));
+  } catch (const InputError&) {
+    if (on_interrupt.signal_number() == 0) throw;
+    std::fprintf(stderr, "interrupted (%s) before the joints line: nothing triangulated\n",
+                 StopOnInterrupt::SignalName(on_interrupt.signal_number()));
+    return 128 + on_interrupt.signal_number();
+  }
+  const InputWarnings opened = input->Warnings();
+  PrintInputWarnings(opened);
+  engine::RunOptions options;
+  options.triangulator = config.triangulator;
+  options.eval.reset();  // no ground truth: no metrics
+  options.threads = 1;
+  engine::FrameLinesWriter lines(STDOUT_FILENO, "stdout", exports);
+  engine::LiveLatency latency(&counts);
+  engine::RunInfo info = engine::CollectRunInfo(1);
+  std::optional<engine::RunFolder> folder;
+  if (!args.out.empty()) folder.emplace(args.out, info.run_id, input->size(), exports);
+  engine::SinkList sinks({&lines, &latency, folder ? folder->sink() : nullptr});
+  const engine::RunResult run = engine::Run(*input, options, &sinks);
+  PrintInputWarnings(run.warnings.Except(opened));
+  if (folder) {
+    info.threads = run.threads;
+    info.input_warnings = engine::InputWarningLines(run.warnings);
+    folder->Finish(run, config, info);
+  }
+  const int signal_number = on_interrupt.signal_number();
+  std::fprintf(stderr, "%s: %ld lines, %ld frames, %ld persons triangulated (%.2f per frame)%s; %s\n",
+               input->header(0).name.c_str(), counts.lines, run.frames, run.output_persons,
+               run.frames > 0 ? static_cast<double>(run.output_persons) / run.frames : 0.0,
+               counts.bad_lines > 0 ? (", " + std::to_string(counts.bad_lines) + " bad line(s) skipped").c_str() : "",
+               signal_number != 0 ? (std::string("stopped by ") + StopOnInterrupt::SignalName(signal_number)).c_str()
+                                  : "end of input");
+  if (run.frames > 0) {
+    std::fprintf(stderr,
+                 "per frame (median): triangulation %.1f us, line in -> line out %.1f us (p90 %.1f us, max %.1f us)\n",
+                 run.timing.frame_us_median, latency.median_us(), latency.p90_us(), latency.max_us());
+  }
+  if (folder) std::fprintf(stderr, "results in %s\n", args.out.c_str());
+  return signal_number != 0 ? 128 + signal_number : 0;
 }
 
 void RunTriangulate(const TriangulateArgs& args) {
@@ -88,7 +175,7 @@ void RunTriangulate(const TriangulateArgs& args) {
 
 }  // namespace
 
-void RegisterTriangulateCommand(CLI::App& app) {
+void RegisterTriangulateCommand(CLI::App& app, int* exit_code) {
   auto args = std::make_shared<TriangulateArgs>();
   CLI::App* command = app.add_subcommand(
       "triangulate", "Triangulate 2D detections into 3D persons with track ids (your own cameras; no ground truth)");
@@ -99,7 +186,22 @@ void RegisterTriangulateCommand(CLI::App& app) {
   AddThreadsOption(command, &args->threads, "sequences triangulated");
   command->add_flag("--json", args->json, "print the summary as one JSON object");
   command->add_flag("--quiet", args->quiet, "no progress, no step table");
-  command->callback([args] { RunTriangulate(*args); });
+  command->add_option("--follow", args->follow,
+                      "live input: frames as JSON lines from PATH (a named pipe or a file; - = standard input), "
+                      "one JSON line of 3D persons per frame on standard output as soon as it is done (format below)")
+      ->option_text("PATH");
+  command->add_flag("--skip-bad-lines", args->skip_bad_lines,
+                    "with --follow: skip lines that cannot be read and count them (printed at the end) instead of "
+                    "stopping at the first (exit 2)");
+  command->footer(kFollowHelp);
+  command->callback([args, exit_code] {
+    if (!args->follow.empty()) {
+      *exit_code = RunFollow(*args);
+    } else {
+      if (args->skip_bad_lines) throw ConfigError("--skip-bad-lines: only with --follow");
+      RunTriangulate(*args);
+    }
+  });
 }
 
 }  // namespace rpt::cli

@@ -52,18 +52,19 @@ void ValidateFrame(const SequenceHeader& sequence, const SequenceFrame& frame, c
   }
   for (size_t v = 0; v < frame.views.size(); ++v) {
     const Poses2D& view = frame.views[v];
-    const std::string where = Where(source, frame) + ", camera '" + sequence.cameras[v].name + "'";
+    // Built on error only: a valid frame is checked without allocating (the per-frame path).
+    const auto where = [&] { return Where(source, frame) + ", camera '" + sequence.cameras[v].name + "'"; };
     if (view.num_persons() > 0 && view.num_joints != static_cast<int>(sequence.detection_joints.size())) {
-      throw InputError(where + ": detections have " + std::to_string(view.num_joints) + " joints, expected " +
+      throw InputError(where() + ": detections have " + std::to_string(view.num_joints) + " joints, expected " +
                        std::to_string(sequence.detection_joints.size()));
     }
     for (size_t i = 0; i < view.data.size(); i += 3) {
       const double score = view.data[i + 2];
       if (!std::isfinite(view.data[i]) || !std::isfinite(view.data[i + 1]) || !std::isfinite(score)) {
-        throw InputError(where + ": detection " + std::to_string(i / 3 / view.num_joints) + " contains NaN or infinity");
+        throw InputError(where() + ": detection " + std::to_string(i / 3 / view.num_joints) + " contains NaN or infinity");
       }
       if (score < 0 || score > 1) {
-        throw InputError(where + ": detection score " + std::to_string(score) + " outside [0, 1]");
+        throw InputError(where() + ": detection score " + std::to_string(score) + " outside [0, 1]");
       }
     }
   }

@@ -16,8 +16,10 @@ namespace rpt::engine {
 
 class CheckedSource final : public FrameSource {
  public:
-  // Throws InputError when the header (cameras) is invalid.
-  explicit CheckedSource(std::unique_ptr<FrameSource> frames);
+  // Throws InputError when the header (cameras) is invalid. `check_ids` false: repeated frame ids
+  // are left to the source, for a live stream that checks them within a window of recent frames
+  // (datasets/readers/detection_lines.h), so memory stays flat however long it runs.
+  explicit CheckedSource(std::unique_ptr<FrameSource> frames, bool check_ids = true);
 
   const SequenceHeader& header() const override { return frames_->header(); }
   long num_frames() const override { return frames_->num_frames(); }
@@ -26,6 +28,7 @@ class CheckedSource final : public FrameSource {
 
  private:
   std::unique_ptr<FrameSource> frames_;
+  bool check_ids_;
   // Hashes of the frame ids seen (8 bytes a frame instead of the ids themselves).
   std::unordered_set<std::uint64_t> id_hashes_;
 };

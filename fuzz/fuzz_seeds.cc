@@ -28,6 +28,36 @@ using test::ByteVec;
 
 Bytes Of(const std::string& text) { return Bytes(text.begin(), text.end()); }
 
+// `detections` as the live input's stream (datasets/readers/detection_lines.h): the joints line,
+// then one frame a line with its time; a missing joint as null, a blank line in between.
+Bytes DetectionLines(const Detections& detections) {
+  std::string text = "{\"joints\": [";
+  for (size_t j = 0; j < detections.joints.size(); ++j) text += (j ? ", \"" : "\"") + detections.joints[j] + "\"";
+  text += "]}\n\n";
+  for (size_t f = 0; f < detections.frames.size(); ++f) {
+    const FrameDetections& frame = detections.frames[f];
+    text += "{\"id\": \"" + frame.frame_id + "\", \"time\": " + std::to_string(0.04 * static_cast<double>(f)) +
+            ", \"views\": [";
+    for (size_t v = 0; v < frame.views.size(); ++v) {
+      text += std::string(v ? ", " : "") + "{\"camera\": \"" + frame.cameras[v] + "\", \"poses\": [";
+      for (int p = 0; p < frame.views[v].num_persons(); ++p) {
+        text += p ? ", [" : "[";
+        const auto person = frame.views[v].Person(p);
+        for (int j = 0; j < frame.views[v].num_joints; ++j) {
+          if (j) text += ", ";
+          text += person(2, j) > 0 ? "[" + std::to_string(person(0, j)) + ", " + std::to_string(person(1, j)) + ", " +
+                                         std::to_string(person(2, j)) + "]"
+                                   : std::string("null");
+        }
+        text += "]";
+      }
+      text += "]}";
+    }
+    text += "]}\n";
+  }
+  return Of(text);
+}
+
 // What a project writer puts into a file, read back as bytes.
 template <class Write>
 Bytes Written(const std::string& name, Write&& write) {
@@ -323,6 +353,7 @@ std::map<std::string, std::vector<std::pair<std::string, Bytes>>> MakeFuzzSeeds(
   const Detections detections = test::MakeDetections(3, {"cam_a", "cam_b"}, CocoBodyJoints());
   seeds["detections_json"] = {
       {"written.json", Written("detections.json", [&](const fs::path& p) { WriteGenericDetections(p, detections); })}};
+  seeds["detection_lines"] = {{"stream.jsonl", DetectionLines(detections)}};
   seeds["coco"] = {{"mvor_results.json", Of(R"([{"image_id": 10010000005, "category_id": 1, "score": 0.9, "keypoints": [)" +
                                                 Keypoints(17, 100) + R"(]}, {"image_id": "10020000005", "category_id": 1, "score": 0.4, "keypoints": [)" +
                                                 Keypoints(17, 300) + "]}]")}};

@@ -33,7 +33,10 @@
 #include "datasets/io/mat.h"
 #include "datasets/io/npy.h"
 #include "datasets/io/pickle.h"
+#include "datasets/io/input_limits.h"
+#include "datasets/io/line_reader.h"
 #include "datasets/readers/coco_detections.h"
+#include "datasets/readers/detection_lines.h"
 #include "datasets/readers/colmap_text.h"
 #include "datasets/readers/egohumans.h"
 #include "datasets/readers/fourda_calibration.h"
@@ -406,6 +409,32 @@ void ReadRunFolder(std::span<const std::uint8_t> bytes) {
   (void)data.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
 }
 
+// The live input's stream (rpt triangulate --follow) on two cameras cam_a and cam_b: every frame
+// it hands out must be valid (an invalid one is a finding, not a refusal).
+void ReadDetectionLines(std::span<const std::uint8_t> bytes) {
+  std::vector<Camera> cameras(2);
+  for (int c = 0; c < 2; ++c) {
+    cameras[c].name = c == 0 ? "cam_a" : "cam_b";
+    cameras[c].width = 640;
+    cameras[c].height = 480;
+    cameras[c].K << 500, 0, 320, 0, 500, 240, 0, 0, 1;
+    cameras[c].t = Eigen::Vector3d(0.5 * c, 0, 4);
+  }
+  DetectionLinesOptions options;
+  options.name = "fuzz";
+  options.fps = 25;
+  auto lines = std::make_unique<io::LineReader>(WriteScratch("lines.jsonl", bytes).string(), io::MaxInputBytes(), nullptr);
+  const std::unique_ptr<FrameSource> source = OpenDetectionLines(cameras, std::move(lines), options, "cameras.json");
+  SequenceFrame frame;
+  while (source->Next(&frame)) {
+    try {
+      ValidateFrame(source->header(), frame, "fuzz");
+    } catch (const InputError& e) {
+      throw std::logic_error(std::string("detection lines handed out an invalid frame: ") + e.what());
+    }
+  }
+}
+
 std::vector<FuzzTarget> MakeTargets() {
   using B = std::span<const std::uint8_t>;
   return {
@@ -425,6 +454,7 @@ std::vector<FuzzTarget> MakeTargets() {
        [](B b) { ReadAll(OpenLabels(WriteScratch("labels.json", b))); }},
       {"detections_json", "generic JSON detections",
        [](B b) { ReadGenericDetections(WriteScratch("detections.json", b)); }},
+      {"detection_lines", "detection lines of the live input (rpt triangulate --follow)", ReadDetectionLines},
       {"coco", "COCO keypoint result list (MVOR image ids)",
        [](B b) { ReadCocoDetections(WriteScratch("results.json", b)); }},
       {"openpose", "OpenPose *_keypoints.json (one file of a camera folder)",

@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "engine/outputs/predictions_writer.h"
 
-#include <cmath>
-#include <cstdio>
 #include <cstring>
 #include <nlohmann/json.hpp>
 
@@ -10,21 +8,12 @@
 #include "datasets/io/json_output.h"
 #include "datasets/io/staged_output.h"
 #include "datasets/io/text_file.h"
+#include "engine/outputs/frame_json.h"
 
 namespace rpt::engine {
 namespace {
 
 using Json = nlohmann::json;
-
-void WriteNumber(std::ostream& out, double value, int decimals) {
-  if (!std::isfinite(value)) {
-    out << "null";
-    return;
-  }
-  char number[64];
-  std::snprintf(number, sizeof(number), "%.*f", decimals, value);
-  out << number;
-}
 
 }  // namespace
 
@@ -40,6 +29,7 @@ struct PredictionsWriter::Part {
   double fps = 0;
   long frames = 0;
   int replaced = 0;  // strings with invalid UTF-8
+  std::string text;  // the frame being written (its capacity reused)
   bool begun = false;
 };
 
@@ -68,38 +58,9 @@ void PredictionsWriter::BeginSequence(int sequence, const SequenceHeader& header
 
 void PredictionsWriter::Frame(const FrameOutput& frame) {
   Part& part = *parts_[frame.sequence];
-  std::ostream& out = part.out;
-  const Poses3D& persons = *frame.persons;
-  out << (part.frames++ == 0 ? "" : ",") << "\n{\"id\": " << io::DumpJson(Json(frame.input->id), -1, &part.replaced)
-      << ", \"time\": ";
-  WriteNumber(out, frame.input->timestamp_s, 6);
-  out << ", \"persons\": [";
-  for (int p = 0; p < persons.num_persons(); ++p) {
-    const auto person = persons.Person(p);
-    out << (p ? ", [" : "[");
-    for (int j = 0; j < persons.num_joints; ++j) {
-      out << (j ? ", [" : "[");
-      if (person(3, j) > 0 && !JointWritten(persons, p, j, options_)) {
-        out << "null, null, null, 0";  // a filled joint, not written
-      } else {
-        for (int row = 0; row < 4; ++row) {
-          if (row) out << ", ";
-          WriteNumber(out, person(row, j), row < 3 ? 6 : 4);
-        }
-      }
-      out << "]";
-    }
-    out << "]";
-  }
-  out << "], \"track_ids\": [";
-  for (int p = 0; p < persons.num_persons(); ++p) out << (p ? ", " : "") << persons.track_ids[p];
-  out << "], \"provenance\": [";
-  for (int p = 0; p < persons.num_persons(); ++p) {
-    out << (p ? ", [" : "[");
-    for (int j = 0; j < persons.num_joints; ++j) out << (j ? "," : "") << static_cast<int>(persons.Provenance(p, j));
-    out << "]";
-  }
-  out << "]}";
+  part.text.assign(part.frames++ == 0 ? "\n" : ",\n");
+  AppendFrameJson(frame, options_, &part.text, &part.replaced);
+  part.out << part.text;
 }
 
 void PredictionsWriter::EndSequence(int sequence) {

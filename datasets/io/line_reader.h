@@ -1,0 +1,89 @@
+// SPDX-License-Identifier: MIT
+// Lines of a stream read as they arrive (standard input, a named pipe, a file), for input that is
+// written while rpt reads it (`rpt triangulate --follow`, datasets/readers/detection_lines.h).
+// A line is handed out as soon as its newline has been read; reading waits in poll() on the
+// stream and on a StopRequest, so another thread (the interrupt handler, cli/interrupt.h) can end
+// the wait at any time. Memory is bounded: the buffer holds at most one line of max_line_bytes
+// plus one read; a longer line is read through and dropped, and reported as too long.
+#pragma once
+
+#include <atomic>
+#include <chrono>
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <string_view>
+
+namespace rpt::io {
+
+// A request to stop reading, made from any thread: wakes a LineReader waiting for input.
+class StopRequest {
+ public:
+  StopRequest();  // throws InputError when the process is out of file descriptors
+  ~StopRequest();
+  StopRequest(const StopRequest&) = delete;
+  StopRequest& operator=(const StopRequest&) = delete;
+
+  // Safe to call from any thread, any number of times.
+  void Request();
+  bool requested() const;
+  // Readable once requested (for poll()).
+  int fd() const { return read_fd_; }
+
+ private:
+  int read_fd_ = -1, write_fd_ = -1;
+  std::atomic<bool> requested_{false};
+};
+
+class LineReader {
+ public:
+  using Clock = std::chrono::steady_clock;
+  enum class Result {
+    kLine,     // a line (without its "\n" or "\r\n")
+    kTooLong,  // a line longer than max_line_bytes, read through and dropped
+    kEnd,      // end of the stream (a last line without "\n" is handed out before)
+    kStopped,  // the StopRequest was made
+  };
+
+  // Opens `path` for reading: "-" is standard input; else a file or a named pipe (opening a pipe
+  // does not wait for its writer: reading does, and a stop request ends that wait). `source` is
+  // "stdin" or the path. Throws InputError naming the path when it cannot be opened or is a folder.
+  // `stop` may be null.
+  LineReader(const std::string& path, std::size_t max_line_bytes, std::shared_ptr<const StopRequest> stop);
+  // Reads the file descriptor `fd` (not closed by the reader), named `source` in messages.
+  LineReader(int fd, std::string source, std::size_t max_line_bytes, std::shared_ptr<const StopRequest> stop);
+  ~LineReader();
+  LineReader(const LineReader&) = delete;
+  LineReader& operator=(const LineReader&) = delete;
+
+  // The next line in *line, valid until the next call. Throws InputError naming the source when
+  // reading fails.
+  Result Next(std::string_view* line);
+
+  const std::string& source() const { return source_; }
+  // The number of the line handed out last (1-based; too-long lines count).
+  long line_number() const { return line_number_; }
+  // When the last line handed out was read (its newline arrived): the start of its latency.
+  Clock::time_point line_time() const { return line_time_; }
+
+ private:
+  // Waits for input and reads once more into the buffer; sets at_end_ or stopped_ instead.
+  void Fill();
+
+  int fd_ = -1;
+  bool owns_fd_ = false;
+  std::string source_;
+  std::size_t max_line_bytes_;
+  std::shared_ptr<const StopRequest> stop_;
+  std::string buffer_;
+  std::size_t begin_ = 0;  // the unconsumed bytes are buffer_[begin_, end_)
+  std::size_t end_ = 0;
+  std::size_t scanned_ = 0;  // bytes from begin_ known to hold no newline
+  bool at_end_ = false;
+  bool stopped_ = false;
+  bool dropping_ = false;  // inside a too-long line, up to its newline
+  long line_number_ = 0;
+  Clock::time_point read_time_{}, line_time_{};
+};
+
+}  // namespace rpt::io

@@ -1,0 +1,62 @@
+// SPDX-License-Identifier: MIT
+#include "engine/live_input.h"
+
+#include <filesystem>
+#include <utility>
+#include <vector>
+
+#include "core/errors.h"
+#include "datasets/calibration/calibration.h"
+#include "datasets/io/input_limits.h"
+#include "engine/checked_source.h"
+
+namespace rpt::engine {
+namespace {
+
+void CheckLiveSpec(const InputSpec& spec) {
+  if (spec.cameras.empty())
+    throw ConfigError("--follow needs --cameras FILE (the calibration of the stream's cameras)");
+  const auto refuse = [](bool given, const std::string& option) {
+    if (given)
+      throw ConfigError(option + ": not with --follow (the frames come from the stream; --cameras gives the cameras)");
+  };
+  refuse(!spec.detections.empty(), "--detections");
+  refuse(!spec.dataset.empty(), "--dataset");
+  refuse(!spec.labels.empty(), "--labels");
+  refuse(!spec.root.empty(), "--root");
+  refuse(!spec.params.empty(), "--param");
+  refuse(spec.simulate, "--simulate");
+  if (!(spec.fps >= 0)) throw ConfigError("--fps " + std::to_string(spec.fps) + ": expected a rate >= 0");
+}
+
+}  // namespace
+
+Input OpenLiveInput(const InputSpec& spec, const LiveInputOptions& options, std::shared_ptr<const io::StopRequest> stop,
+                    DetectionLinesCounts* counts) {
+  CheckLiveSpec(spec);
+  if (options.path.empty()) throw ConfigError("--follow: give a path (a named pipe or a file) or - for standard input");
+  InputWarnings opened;
+  Calibration calibration = ReadCalibration(spec.cameras, {}, &opened);
+  // A line is read whole, like a file: the same limit bounds it.
+  auto lines = std::make_unique<io::LineReader>(options.path, io::MaxInputBytes(), std::move(stop));
+  DetectionLinesOptions lines_options;
+  lines_options.name = options.path == "-" ? "stdin" : std::filesystem::path(options.path).stem().string();
+  lines_options.fps = spec.fps;
+  lines_options.skip_bad_lines = options.skip_bad_lines;
+  return OpenLiveInput(std::move(calibration.cameras), std::move(lines), lines_options, spec.cameras, counts,
+                       std::move(opened), spec.strict);
+}
+
+Input OpenLiveInput(std::vector<Camera> cameras, std::unique_ptr<io::LineReader> lines,
+                    const DetectionLinesOptions& options, const std::string& calibration_name,
+                    DetectionLinesCounts* counts, InputWarnings opened, bool strict) {
+  std::vector<std::unique_ptr<FrameSource>> sources;
+  sources.push_back(std::make_unique<CheckedSource>(
+      OpenDetectionLines(std::move(cameras), std::move(lines), options, calibration_name, counts),
+      /*check_ids=*/false));
+  Input input(std::move(sources), std::move(opened), strict);
+  input.CheckStrict();
+  return input;
+}
+
+}  // namespace rpt::engine

@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: MIT
+// The live input of `rpt triangulate --follow`: the cameras of a calibration and the frames of a
+// stream of detection lines (datasets/readers/detection_lines.h) read as they arrive, opened as an
+// Input like every other (engine/input.h), so the one run loop (engine/run.h) triangulates, tracks
+// and smooths them exactly as it does a file. Memory stays flat however long the stream runs:
+// frame ids are checked for repeats by the source within a window of recent frames, not kept.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "datasets/io/line_reader.h"
+#include "datasets/readers/detection_lines.h"
+#include "engine/input.h"
+
+namespace rpt::engine {
+
+struct LiveInputOptions {
+  std::string path;             // "-" = standard input; else a named pipe or a file
+  bool skip_bad_lines = false;  // count bad lines instead of stopping at the first
+};
+
+// Opens the stream and reads its joints line (waiting for it), on the calibration spec.cameras
+// (any format datasets/calibration reads) with spec.fps for the lines without "time"; the other
+// input options must be empty (ConfigError naming them). `stop` ends the wait for input (may be
+// null); `counts` (may be null) is kept up to date while the stream is read and must outlive the
+// run. Throws InputError naming the file and the line.
+Input OpenLiveInput(const InputSpec& spec, const LiveInputOptions& options, std::shared_ptr<const io::StopRequest> stop,
+                    DetectionLinesCounts* counts);
+
+// The same on cameras in memory and a reader already open (the latency benchmark feeds a pipe):
+// `calibration_name` names the cameras in messages.
+Input OpenLiveInput(std::vector<Camera> cameras, std::unique_ptr<io::LineReader> lines,
+                    const DetectionLinesOptions& options, const std::string& calibration_name,
+                    DetectionLinesCounts* counts, InputWarnings opened = {}, bool strict = false);
+
+}  // namespace rpt::engine

@@ -1,0 +1,339 @@
+// SPDX-License-Identifier: MIT
+// rpt triangulate --follow end to end on a generated scene: its detections fed through a pipe one
+// line at a time, each output line read before the next input line is written (so every frame
+// must come out flushed on its own), equal to the offline `rpt triangulate` of the same detections
+// (persons, track ids, provenance, times), also in the --out run folder (rpt report says the stream
+// is not read again); the time from --fps as offline; a named pipe; bad lines exit 2 naming the
+// line, --skip-bad-lines counts them; Ctrl-C ends cleanly with exit 130.
+#include <gtest/gtest.h>
+
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "datasets/calibration/calibration.h"
+#include "datasets/readers/generic_detections.h"
+#include "engine/input.h"
+#include "tests/cli/cli_test_util.h"
+
+namespace rpt {
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+
+constexpr double kFps = 25.0;
+constexpr int kFrames = 24;
+
+// The generated scene's detections (all its joints), frame ids "take_<f>".
+Detections SceneDetections(std::vector<Camera>* cameras) {
+  engine::InputSpec spec;
+  spec.dataset = "synthetic";
+  spec.params = {"frames=" + std::to_string(kFrames), "people=3", "cameras=4"};
+  InputWarnings warnings;
+  std::vector<Sequence> sequences = engine::LoadInput(spec, {}, &warnings);
+  const Sequence& scene = sequences.at(0);
+  *cameras = scene.cameras;
+  Detections detections;
+  detections.joints = scene.detection_joints;
+  for (size_t f = 0; f < scene.frames.size(); ++f) {
+    FrameDetections frame;
+    frame.frame_id = "take_" + std::to_string(f);
+    for (size_t c = 0; c < scene.cameras.size(); ++c) {
+      frame.cameras.push_back(scene.cameras[c].name);
+      frame.views.push_back(scene.frames[f].views[c]);
+    }
+    detections.frames.push_back(std::move(frame));
+  }
+  return detections;
+}
+
+std::string JointsLine(const Detections& detections) { return Json{{"joints", detections.joints}}.dump(); }
+
+// Frame f as a line; with_time: "time": f / kFps.
+std::string FrameLine(const Detections& detections, size_t f, bool with_time) {
+  const FrameDetections& frame = detections.frames[f];
+  Json views = Json::array();
+  for (size_t c = 0; c < frame.views.size(); ++c) {
+    Json poses = Json::array();
+    for (int p = 0; p < frame.views[c].num_persons(); ++p) {
+      Json joints = Json::array();
+      const auto person = frame.views[c].Person(p);
+      for (int j = 0; j < frame.views[c].num_joints; ++j) {
+        joints.push_back(person(2, j) > 0 ? Json{person(0, j), person(1, j), person(2, j)} : Json());
+      }
+      poses.push_back(std::move(joints));
+    }
+    views.push_back({{"camera", frame.cameras[c]}, {"poses", std::move(poses)}});
+  }
+  Json line = {{"id", frame.frame_id}, {"views", std::move(views)}};
+  if (with_time) line["time"] = static_cast<double>(f) / kFps;
+  return line.dump();
+}
+
+// `rpt <args>` with a pipe to its stdin and one from its stdout; stderr into a file.
+class Child {
+ public:
+  Child(const std::string& args, const fs::path& err) {
+    int in[2], out[2];
+    EXPECT_EQ(pipe(in), 0);
+    EXPECT_EQ(pipe(out), 0);
+    pid_ = fork();
+    if (pid_ == 0) {
+      dup2(in[0], STDIN_FILENO);
+      dup2(out[1], STDOUT_FILENO);
+      const int err_fd = open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+      dup2(err_fd, STDERR_FILENO);
+      for (int fd : {in[0], in[1], out[0], out[1], err_fd}) close(fd);
+      const std::string command = "exec " + std::string(RPT_BINARY) + " " + args;
+      execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+      _exit(127);
+    }
+    close(in[0]);
+    close(out[1]);
+    in_ = in[1];
+    out_ = out[0];
+  }
+  ~Child() {
+    CloseInput();
+    if (out_ >= 0) close(out_);
+    if (pid_ > 0) Wait();
+  }
+
+  void WriteLine(const std::string& line) {
+    const std::string text = line + "\n";
+    ASSERT_EQ(write(in_, text.data(), text.size()), static_cast<ssize_t>(text.size()));
+  }
+  void CloseInput() {
+    if (in_ >= 0) close(in_);
+    in_ = -1;
+  }
+  // The next output line, or "<timeout>" when none comes within 60 s (a line not flushed).
+  std::string ReadLine() {
+    while (true) {
+      const size_t newline = buffer_.find('\n');
+      if (newline != std::string::npos) {
+        std::string line = buffer_.substr(0, newline);
+        buffer_.erase(0, newline + 1);
+        return line;
+      }
+      pollfd fd{out_, POLLIN, 0};
+      if (poll(&fd, 1, 60000) <= 0) return "<timeout>";
+      char chunk[65536];
+      const ssize_t n = read(out_, chunk, sizeof(chunk));
+      if (n <= 0) return "<end>";
+      buffer_.append(chunk, static_cast<size_t>(n));
+    }
+  }
+  void Signal(int signal_number) { kill(pid_, signal_number); }
+  // The exit code (-1 when killed by a signal).
+  int Wait() {
+    int status = 0;
+    waitpid(pid_, &status, 0);
+    pid_ = -1;
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+
+ private:
+  pid_t pid_ = -1;
+  int in_ = -1, out_ = -1;
+  std::string buffer_;
+};
+
+class Follow : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = test::TempDir("follow");
+    std::vector<Camera> cameras;
+    detections_ = SceneDetections(&cameras);
+    WriteCalibration(dir_ / "cameras.json", cameras);
+    WriteGenericDetections(dir_ / "detections.json", detections_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::string Cameras() const { return (dir_ / "cameras.json").string(); }
+
+  // The offline run's predictions.json.
+  Json Offline() {
+    const fs::path out = dir_ / "offline";
+    const test::CommandResult r =
+        test::RunRpt("triangulate --cameras " + Cameras() + " --detections " + (dir_ / "detections.json").string() +
+                     " --fps 25 --quiet --out " + out.string());
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return Json::parse(test::ReadAll(out / "predictions.json"));
+  }
+
+  // Writes the lines (joints line first) to a file and returns its path.
+  fs::path LinesFile(const std::string& name, const std::vector<std::string>& frame_lines) {
+    std::ofstream out(dir_ / name);
+    out << JointsLine(detections_) << "\n";
+    for (const std::string& line : frame_lines) out << line << "\n";
+    return dir_ / name;
+  }
+
+  fs::path dir_;
+  Detections detections_;
+};
+
+TEST_F(Follow, FrameByFrameThroughAPipeEqualsTheOfflineRun) {
+  const Json offline = Offline();
+  ASSERT_EQ(offline["frames"].size(), static_cast<size_t>(kFrames));
+  const fs::path run = dir_ / "follow_run";
+  Child child("triangulate --follow - --cameras " + Cameras() + " --out " + run.string(), dir_ / "err.txt");
+  child.WriteLine(JointsLine(detections_));
+  const Json header = Json::parse(child.ReadLine());
+  EXPECT_EQ(header["joints"], offline["joints"]);
+  EXPECT_EQ(header["units"]["position"], "m");
+  EXPECT_EQ(header["units"]["time"], "s");
+  int persons = 0, tracked = 0;
+  for (int f = 0; f < kFrames; ++f) {
+    child.WriteLine(FrameLine(detections_, static_cast<size_t>(f), /*with_time=*/true));
+    const std::string line = child.ReadLine();  // before the next frame goes in
+    ASSERT_NE(line, "<timeout>") << "frame " << f << " was not written on its own";
+    const Json frame = Json::parse(line);
+    EXPECT_EQ(frame, offline["frames"][f]) << "frame " << f;
+    persons += static_cast<int>(frame["persons"].size());
+    for (const Json& id : frame["track_ids"]) tracked += id.get<int>() >= 0 ? 1 : 0;
+  }
+  child.CloseInput();
+  EXPECT_EQ(child.ReadLine(), "<end>");
+  EXPECT_EQ(child.Wait(), 0);
+  const std::string err = test::ReadAll(dir_ / "err.txt");
+  EXPECT_NE(err.find("stdin: " + std::to_string(kFrames + 1) + " lines, " + std::to_string(kFrames) + " frames"),
+            std::string::npos)
+      << err;
+  EXPECT_NE(err.find("end of input"), std::string::npos) << err;
+  EXPECT_NE(err.find("line in -> line out"), std::string::npos) << err;
+  EXPECT_GT(persons, 2 * kFrames) << "about three persons per frame";
+  EXPECT_EQ(tracked, persons) << "every person tracked: the times are known";
+  // --out: the run folder holds the same frames.
+  const Json written = Json::parse(test::ReadAll(run / "predictions.json"));
+  EXPECT_EQ(written["frames"], offline["frames"]);
+  // rpt report on it: the recorded tables; the stream is not read again, and it says why.
+  const test::CommandResult report = test::RunRpt("report " + run.string());
+  EXPECT_EQ(report.exit_code, 0) << report.err;
+  EXPECT_NE(report.err.find("the run read a live stream"), std::string::npos) << report.err;
+}
+
+TEST_F(Follow, TimesFromFpsAndANamedPipe) {
+  const Json offline = Offline();
+  const fs::path fifo = dir_ / "detections.fifo";
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  // rpt opens the pipe before its writer does (the wait is in poll(), not in open()).
+  Child child("triangulate --follow " + fifo.string() + " --fps 25 --cameras " + Cameras(), dir_ / "err.txt");
+  // Written from another thread while this one reads the output: neither pipe can fill up.
+  std::thread writer([&] {
+    std::ofstream out(fifo);
+    out << JointsLine(detections_) << "\n";
+    for (int f = 0; f < kFrames; ++f) out << FrameLine(detections_, static_cast<size_t>(f), false) << "\n";
+  });
+  child.ReadLine();  // the joints line
+  for (int f = 0; f < kFrames; ++f) EXPECT_EQ(Json::parse(child.ReadLine()), offline["frames"][f]) << "frame " << f;
+  writer.join();
+  EXPECT_EQ(child.Wait(), 0) << test::ReadAll(dir_ / "err.txt");
+}
+
+TEST_F(Follow, ABadLineIsAnErrorNamingItsLine) {
+  const std::string good = FrameLine(detections_, 0, true);
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"{\"views\": [{\"camera\": \"nope\", \"poses\": []}]}",
+       "stdin:3: /views/0/camera: camera 'nope' is not in the calibration"},
+      {"{\"views\": [}", "stdin:3: column 12: expected"},
+      {"{\"views\": [{\"camera\": \"cam0\", \"poses\": [[[1, 2, 0.5]]]}]}",
+       "stdin:3: /views/0/poses/0: 1 joints, expected "},
+      {"{\"views\": [{\"camera\": \"cam0\", \"poses\": [[[1, 2]]]}]}",
+       "stdin:3: /views/0/poses/0/0: expected [x, y, score] or null"},
+      {"{\"id\": \"x\"}", "stdin:3: /views: missing"},
+      {good, "stdin:3: /id: frame id 'take_0' repeats one of the last 1024 frames"},
+      {"{\"time\": \"soon\", \"views\": []}", "stdin:3: /time: expected the time in seconds"},
+  };
+  for (const auto& [bad, message] : cases) {
+    const fs::path lines = LinesFile("bad.jsonl", {good, bad, FrameLine(detections_, 1, true)});
+    const test::CommandResult r =
+        test::RunRpt("triangulate --follow - --cameras " + Cameras() + " < " + lines.string());
+    EXPECT_EQ(r.exit_code, 2) << bad;
+    EXPECT_NE(r.err.find("error: " + message), std::string::npos) << bad << "\n" << r.err;
+    // The frame before the bad line was written (the joints line and one frame).
+    EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 2) << bad << "\n" << r.out;
+  }
+  const fs::path no_joints = dir_ / "no_joints.jsonl";
+  std::ofstream(no_joints) << good << "\n";
+  const test::CommandResult r =
+      test::RunRpt("triangulate --follow - --cameras " + Cameras() + " < " + no_joints.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("stdin:1: column"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("the first line is {\"joints\": [names]}"), std::string::npos) << r.err;
+}
+
+TEST_F(Follow, SkipBadLinesCountsThem) {
+  std::vector<std::string> lines;
+  for (int f = 0; f < 6; ++f) lines.push_back(FrameLine(detections_, static_cast<size_t>(f), true));
+  // Lines 3, 5, 6 and 12 are bad (the joints line is line 1); line 7 is blank.
+  lines.insert(lines.begin() + 1, "not json");
+  lines.insert(lines.begin() + 3, "{\"views\": [{\"camera\": \"nope\", \"poses\": []}]}");
+  lines.insert(lines.begin() + 4, lines[0]);  // a repeated id
+  lines.insert(lines.begin() + 5, "   ");
+  lines.push_back("[1, 2]");
+  const fs::path file = LinesFile("skip.jsonl", lines);
+  const test::CommandResult r =
+      test::RunRpt("triangulate --follow - --skip-bad-lines --cameras " + Cameras() + " < " + file.string());
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1 + 6) << r.out;
+  EXPECT_NE(r.err.find("warning: stdin: 4 bad lines skipped (the first: stdin:3: column 1: expected"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("stdin: 12 lines, 6 frames"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("4 bad line(s) skipped"), std::string::npos) << r.err;
+  // Without the flag the first bad line ends the run.
+  const test::CommandResult strict =
+      test::RunRpt("triangulate --follow - --cameras " + Cameras() + " < " + file.string());
+  EXPECT_EQ(strict.exit_code, 2);
+  EXPECT_NE(strict.err.find("error: stdin:3: column 1: "), std::string::npos) << strict.err;
+}
+
+TEST_F(Follow, CtrlCEndsCleanlyAfterTheFramesInHand) {
+  Child child("triangulate --follow - --cameras " + Cameras(), dir_ / "err.txt");
+  child.WriteLine(JointsLine(detections_));
+  child.ReadLine();
+  for (int f = 0; f < 3; ++f) {
+    child.WriteLine(FrameLine(detections_, static_cast<size_t>(f), true));
+    ASSERT_NE(child.ReadLine(), "<timeout>");
+  }
+  child.Signal(SIGINT);  // the input stays open: the signal ends the run, not the end of the input
+  EXPECT_EQ(child.ReadLine(), "<end>");
+  EXPECT_EQ(child.Wait(), 130);
+  const std::string err = test::ReadAll(dir_ / "err.txt");
+  EXPECT_NE(err.find("stdin: 4 lines, 3 frames"), std::string::npos) << err;
+  EXPECT_NE(err.find("stopped by SIGINT"), std::string::npos) << err;
+}
+
+TEST_F(Follow, OptionsThatDoNotFit) {
+  const std::string base = "triangulate --follow - --cameras " + Cameras();
+  for (const auto& [extra, message] : std::vector<std::pair<std::string, std::string>>{
+           {" --detections x.json", "--detections: not with --follow"}, {" --json", "--json: not with --follow"}}) {
+    const test::CommandResult r = test::RunRpt(base + extra + " < /dev/null");
+    EXPECT_EQ(r.exit_code, 2) << extra;
+    EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
+  }
+  const test::CommandResult no_cameras = test::RunRpt("triangulate --follow - < /dev/null");
+  EXPECT_EQ(no_cameras.exit_code, 2);
+  EXPECT_NE(no_cameras.err.find("--follow needs --cameras"), std::string::npos) << no_cameras.err;
+  const test::CommandResult skip = test::RunRpt("triangulate --skip-bad-lines --cameras " + Cameras() +
+                                                " --detections " + (dir_ / "detections.json").string());
+  EXPECT_EQ(skip.exit_code, 2);
+  EXPECT_NE(skip.err.find("--skip-bad-lines: only with --follow"), std::string::npos) << skip.err;
+}
+
+}  // namespace
+}  // namespace rpt
