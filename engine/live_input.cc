@@ -26,6 +26,7 @@ void CheckLiveSpec(const InputSpec& spec) {
   refuse(!spec.root.empty(), "--root");
   refuse(!spec.params.empty(), "--param");
   refuse(spec.simulate, "--simulate");
+  refuse(!spec.mapping.empty(), "the detection mapping flags (--map-*, --coco-*, --openpose-joints, --rename-camera, ...)");
   if (!(spec.fps >= 0)) throw ConfigError("--fps " + std::to_string(spec.fps) + ": expected a rate >= 0");
 }
 

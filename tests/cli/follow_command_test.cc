@@ -321,7 +321,10 @@ TEST_F(Follow, CtrlCEndsCleanlyAfterTheFramesInHand) {
 TEST_F(Follow, OptionsThatDoNotFit) {
   const std::string base = "triangulate --follow - --cameras " + Cameras();
   for (const auto& [extra, message] : std::vector<std::pair<std::string, std::string>>{
-           {" --detections x.json", "--detections: not with --follow"}, {" --json", "--json: not with --follow"}}) {
+           {" --detections x.json", "--detections: not with --follow"},
+           {" --json", "--json: not with --follow"},
+           {" --rename-camera cam0=a", "the detection mapping flags (--map-*, --coco-*, --openpose-joints, "
+                                       "--rename-camera, ...): not with --follow"}}) {
     const test::CommandResult r = test::RunRpt(base + extra + " < /dev/null");
     EXPECT_EQ(r.exit_code, 2) << extra;
     EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
