@@ -201,3 +201,16 @@ def test_export_errors(predictions, tmp_path):
         rpt.export.write(tmp_path, predictions, "npz")
     with pytest.raises(rpt.ConfigError, match=r"trc_axes: 'x-up' is not z-up \| y-up"):
         rpt.export.write(tmp_path, predictions, "trc", trc_axes="x-up")
+
+
+def test_one_array_for_all_views(rig):
+    scene, _ = rig
+    views = good_views(rig)
+    assert all(v.shape == (1, JOINTS, 3) for v in views)
+    a = rpt.Triangulator(scene.cameras, scene.joint_names)
+    b = rpt.Triangulator(scene.cameras, scene.joint_names)
+    persons_list, _ = a.process(views, 0.0)
+    persons_array, _ = b.process(np.stack(views), 0.0)
+    assert np.array_equal(persons_list, persons_array)
+    with pytest.raises(ValueError, match=r"views: shape \(2, 1, 17, 3\), expected \(3, n, 17, 3\)"):
+        b.process(np.stack(views[:2]))
