@@ -110,8 +110,8 @@ Poses3D PersonsFromArray(py::handle object, int num_joints, const std::string& w
 }
 
 py::array_t<double> PersonsArray(const Poses3D& persons) {
-  py::array_t<double> array({static_cast<py::ssize_t>(persons.num_persons()), static_cast<py::ssize_t>(persons.num_joints),
-                             py::ssize_t{4}});
+  py::array_t<double> array(
+      {static_cast<py::ssize_t>(persons.num_persons()), static_cast<py::ssize_t>(persons.num_joints), py::ssize_t{4}});
   std::copy(persons.data.begin(), persons.data.end(), array.mutable_data());
   return array;
 }
@@ -123,7 +123,8 @@ py::array_t<long long> TrackIdsArray(const Poses3D& persons) {
 }
 
 py::array_t<uint8_t> ProvenanceArray(const Poses3D& persons) {
-  py::array_t<uint8_t> array({static_cast<py::ssize_t>(persons.num_persons()), static_cast<py::ssize_t>(persons.num_joints)});
+  py::array_t<uint8_t> array(
+      {static_cast<py::ssize_t>(persons.num_persons()), static_cast<py::ssize_t>(persons.num_joints)});
   uint8_t* out = array.mutable_data();
   for (int p = 0; p < persons.num_persons(); ++p) {
     for (int j = 0; j < persons.num_joints; ++j) *out++ = static_cast<uint8_t>(persons.Provenance(p, j));

@@ -53,17 +53,22 @@ Camera MakeCamera(const std::string& name, int width, int height, py::handle K, 
 
 std::string ModelText(DistortionModel model) {
   switch (model) {
-    case DistortionModel::kOpenCV: return "opencv";
-    case DistortionModel::kH36M: return "h36m";
-    case DistortionModel::kFisheye: return "fisheye";
-    default: return "none";
+    case DistortionModel::kOpenCV:
+      return "opencv";
+    case DistortionModel::kH36M:
+      return "h36m";
+    case DistortionModel::kFisheye:
+      return "fisheye";
+    default:
+      return "none";
   }
 }
 
 // Points (n, 3) or (3,) -> distorted pixels (n, 2) and whether each is in front of the camera.
 py::tuple Project(const Camera& camera, py::handle points) {
   const bool single = py::isinstance<py::array>(points) && py::reinterpret_borrow<py::array>(points).ndim() == 1;
-  const py::array_t<double> array = single ? CheckedArray(points, "points", {3}) : CheckedArray(points, "points", {-1, 3});
+  const py::array_t<double> array =
+      single ? CheckedArray(points, "points", {3}) : CheckedArray(points, "points", {-1, 3});
   const py::ssize_t n = single ? 1 : array.shape(0);
   py::array_t<double> uv({n, py::ssize_t{2}});
   py::array_t<bool> in_front(n);
@@ -115,14 +120,19 @@ void RegisterCameras(py::module_& m, py::module_& cameras) {
       .def_property_readonly("R", [](const Camera& c) { return MatrixArray(c.R); })
       .def_property_readonly("t", [](const Camera& c) { return MatrixArray(c.t).reshape({3}); })
       .def_property_readonly("center", [](const Camera& c) { return MatrixArray(c.Center()).reshape({3}); })
-      .def_property_readonly("dist", [](const Camera& c) { return MatrixArray(Eigen::Map<const Eigen::Matrix<double, 5, 1>>(c.dist.data())).reshape({5}); })
+      .def_property_readonly(
+          "dist",
+          [](const Camera& c) {
+            return MatrixArray(Eigen::Map<const Eigen::Matrix<double, 5, 1>>(c.dist.data())).reshape({5});
+          })
       .def_property_readonly("model", [](const Camera& c) { return ModelText(c.model); })
       .def("project", &Project, py::arg("points"),
            "World points (n, 3) in metres -> (pixels (n, 2) in the distorted image, in_front (n,) bool)")
       .def("undistort_points", &UndistortPoints, py::arg("points"),
            "Distorted pixels (n, 2) -> undistorted pixels (n, 2), same K")
-      .def("to_json", [](const Camera& c) { return PythonOf(camera_json::CameraJson(c, "Camera.to_json", c.name)); },
-           "The camera as our cameras JSON object (T = camera centre; docs/cameras.md)")
+      .def(
+          "to_json", [](const Camera& c) { return PythonOf(camera_json::CameraJson(c, "Camera.to_json", c.name)); },
+          "The camera as our cameras JSON object (T = camera centre; docs/cameras.md)")
       .def("__repr__", [](const Camera& c) {
         return "Camera('" + c.name + "', " + std::to_string(c.width) + "x" + std::to_string(c.height) + ", " +
                ModelText(c.model) + ")";

@@ -181,7 +181,7 @@ py::tuple RoomTuple(const SequenceHeader& h) {
 
 void RegisterDatasets(py::module_& datasets, py::module_& synthetic) {
   py::class_<SequenceHeader, std::shared_ptr<SequenceHeader>>(datasets, "SequenceInfo",
-                                                                "What a sequence is: name, cameras, joints, room, fps")
+                                                              "What a sequence is: name, cameras, joints, room, fps")
       .def_readonly("name", &SequenceHeader::name)
       .def_readonly("cameras", &SequenceHeader::cameras)
       .def_readonly("joint_names", &SequenceHeader::detection_joints, "joints of the 2D detections (views)")
@@ -212,20 +212,24 @@ void RegisterDatasets(py::module_& datasets, py::module_& synthetic) {
   py::class_<Frame>(datasets, "Frame", "One frame: id, time, 2D detections per camera, ground truth")
       .def_property_readonly("sequence", [](const Frame& f) { return f.sequence->name; })
       .def_property_readonly("id", [](const Frame& f) { return f.frame.id; })
-      .def_property_readonly("timestamp", [](const Frame& f) { return TimeObject(f.frame.timestamp_s); },
-                             "seconds; None when unknown")
-      .def_property_readonly("views", [](const Frame& f) { return ViewsList(f.frame, *f.sequence); },
-                             "per camera an array (persons, joints, 3): u_px, v_px, score")
-      .def_property_readonly("gt", [](const Frame& f) { return PersonsArray(f.frame.gt); },
-                             "ground truth (persons, gt joints, 4): x, y, z (m), score")
-      .def_property_readonly("gt_ids", [](const Frame& f) { return TrackIdsArray(f.frame.gt); },
-                             "the dataset's person ids of the ground truth (-1: none)")
+      .def_property_readonly(
+          "timestamp", [](const Frame& f) { return TimeObject(f.frame.timestamp_s); }, "seconds; None when unknown")
+      .def_property_readonly(
+          "views", [](const Frame& f) { return ViewsList(f.frame, *f.sequence); },
+          "per camera an array (persons, joints, 3): u_px, v_px, score")
+      .def_property_readonly(
+          "gt", [](const Frame& f) { return PersonsArray(f.frame.gt); },
+          "ground truth (persons, gt joints, 4): x, y, z (m), score")
+      .def_property_readonly(
+          "gt_ids", [](const Frame& f) { return TrackIdsArray(f.frame.gt); },
+          "the dataset's person ids of the ground truth (-1: none)")
       .def_property_readonly("cameras", [](const Frame& f) { return f.sequence->cameras; })
       .def("__repr__", [](const Frame& f) { return "Frame('" + f.frame.id + "')"; });
 
   py::class_<Dataset>(datasets, "Dataset", "An opened input: iterate for its frames, or load() its sequences")
       .def_property_readonly("sequences", &Dataset::Headers, "one SequenceInfo per sequence")
-      .def("__iter__", [](Dataset& d) -> Dataset& { return d; }, py::return_value_policy::reference_internal)
+      .def(
+          "__iter__", [](Dataset& d) -> Dataset& { return d; }, py::return_value_policy::reference_internal)
       .def("__next__", &Dataset::Next)
       .def("load", &Dataset::Load, "every sequence in memory (validated), as rpt.datasets.Sequence objects")
       .def_property_readonly("warnings", &Dataset::Warnings, "the readers' corrections and unused input");

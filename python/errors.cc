@@ -38,10 +38,12 @@ PyObject* NewException(const char* name, const char* doc, PyObject* bases) {
 }  // namespace
 
 void RegisterErrors(py::module_& m) {
-  config_error = NewException("rpt.ConfigError", "Bad options or parameters (the CLI's exit code 2).", PyExc_ValueError);
+  config_error =
+      NewException("rpt.ConfigError", "Bad options or parameters (the CLI's exit code 2).", PyExc_ValueError);
   input_error = NewException("rpt.InputError", "Input that cannot be used (the CLI's exit code 2).", PyExc_ValueError);
   PyObject* bases = PyTuple_Pack(2, PyExc_FileNotFoundError, input_error);
-  missing_file_error = NewException("rpt.InputFileNotFoundError", "A file or folder named by the input is missing.", bases);
+  missing_file_error =
+      NewException("rpt.InputFileNotFoundError", "A file or folder named by the input is missing.", bases);
   Py_DECREF(bases);
   m.add_object("ConfigError", py::handle(config_error));
   m.add_object("InputError", py::handle(input_error));

@@ -74,12 +74,15 @@ std::vector<std::filesystem::path> Write(const std::filesystem::path& dir, py::h
   if (py::isinstance<py::str>(formats)) {
     format_text = formats.cast<std::string>();
   } else {
-    for (const std::string& f : formats.cast<std::vector<std::string>>()) format_text += (format_text.empty() ? "" : ",") + f;
+    for (const std::string& f : formats.cast<std::vector<std::string>>())
+      format_text += (format_text.empty() ? "" : ",") + f;
   }
   options.formats = engine::ParseExportFormats(format_text);
   options.filled_joints = filled_joints;
-  if (trc_axes != "z-up" && trc_axes != "y-up") throw ConfigError("export.write: trc_axes: '" + trc_axes + "' is not z-up | y-up");
-  if (trc_units != "m" && trc_units != "mm") throw ConfigError("export.write: trc_units: '" + trc_units + "' is not m | mm");
+  if (trc_axes != "z-up" && trc_axes != "y-up")
+    throw ConfigError("export.write: trc_axes: '" + trc_axes + "' is not z-up | y-up");
+  if (trc_units != "m" && trc_units != "mm")
+    throw ConfigError("export.write: trc_units: '" + trc_units + "' is not m | mm");
   options.trc_axes = trc_axes == "y-up" ? engine::TrcAxes::kYUp : engine::TrcAxes::kZUp;
   options.trc_millimetres = trc_units == "mm";
 
@@ -117,13 +120,17 @@ void RegisterExport(py::module_& exports) {
               "(predictions.json), 'csv' (predictions.csv), 'trc' (trc/, one file per track), a comma text or a "
               "list; filled_joints=False writes filled joints as missing; trc_axes 'z-up' | 'y-up' (OpenSim); "
               "trc_units 'm' | 'mm'. Returns the paths written. Schemas: docs/own_data.md.");
-  exports.def("formats", [] {
-    std::vector<std::string> names;
-    for (const engine::ExportFormat f : {engine::ExportFormat::kJson, engine::ExportFormat::kCsv, engine::ExportFormat::kTrc}) {
-      names.emplace_back(engine::ExportFormatName(f));
-    }
-    return names;
-  }, "The formats write() writes");
+  exports.def(
+      "formats",
+      [] {
+        std::vector<std::string> names;
+        for (const engine::ExportFormat f :
+             {engine::ExportFormat::kJson, engine::ExportFormat::kCsv, engine::ExportFormat::kTrc}) {
+          names.emplace_back(engine::ExportFormatName(f));
+        }
+        return names;
+      },
+      "The formats write() writes");
 }
 
 }  // namespace rpt::python

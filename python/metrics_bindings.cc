@@ -59,7 +59,8 @@ Predictions PredictionsOfArrays(const py::sequence& predictions, const JointName
 bool IsArrayList(py::handle object) {
   if (!py::isinstance<py::list>(object) && !py::isinstance<py::tuple>(object)) return false;
   const py::sequence list = py::reinterpret_borrow<py::sequence>(object);
-  return list.size() == 0 || py::isinstance<py::array>(list[0]) || list[0].is_none() || py::isinstance<py::list>(list[0]);
+  return list.size() == 0 || py::isinstance<py::array>(list[0]) || list[0].is_none() ||
+         py::isinstance<py::list>(list[0]);
 }
 
 py::object Evaluate(py::handle gt, py::handle predictions, py::handle options, py::handle gt_joints,

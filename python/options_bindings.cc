@@ -28,8 +28,9 @@ std::string OptionText(py::handle value, std::string_view where, std::string_vie
   try {
     return json.attr("dumps")(plain).cast<std::string>();
   } catch (const py::error_already_set&) {
-    throw ConfigError(OptionMessage(where, key, "a " + py::str(py::type::of(value)).cast<std::string>() +
-                                                    " is not a value (str, bool, number or list)"));
+    throw ConfigError(OptionMessage(
+        where, key,
+        "a " + py::str(py::type::of(value)).cast<std::string>() + " is not a value (str, bool, number or list)"));
   }
 }
 
@@ -39,7 +40,9 @@ namespace {
 template <class Self, class F>
 void ForEachOption(Self& config, F&& f) {
   auto section_visitor = [&f](std::string_view section, auto& options) {
-    auto field_visitor = [&f, section](std::string_view name, auto& field, const OptionSpec&) { f(section, name, field); };
+    auto field_visitor = [&f, section](std::string_view name, auto& field, const OptionSpec&) {
+      f(section, name, field);
+    };
     VisitFields(field_visitor, options);
   };
   VisitSections(section_visitor, config);
@@ -131,21 +134,27 @@ void RegisterOptions(py::module_& m) {
           },
           py::arg("values"))
       .def("to_dict", &ToDict, "{'section': {'name': value}} with every option, typed")
-      .def("to_json", [](const engine::Config& c) { return engine::DumpConfig(c, false); },
-           "The JSON text of `rpt config --dump` (from_json reads it back)")
+      .def(
+          "to_json", [](const engine::Config& c) { return engine::DumpConfig(c, false); },
+          "The JSON text of `rpt config --dump` (from_json reads it back)")
       .def("__getitem__", &Get, py::arg("key"))
-      .def("__setitem__", [](engine::Config& c, const std::string& key, py::handle value) { Set(&c, key, value, "Options"); })
-      .def("__contains__", [](const engine::Config&, const std::string& key) {
-        for (const engine::ConfigOptionInfo& info : engine::ConfigOptions()) {
-          if (info.key == key) return true;
-        }
-        return false;
-      })
-      .def_static("keys", [] {
-        std::vector<std::string> keys;
-        for (const engine::ConfigOptionInfo& info : engine::ConfigOptions()) keys.push_back(info.key);
-        return keys;
-      }, "Every key, in dump order")
+      .def("__setitem__",
+           [](engine::Config& c, const std::string& key, py::handle value) { Set(&c, key, value, "Options"); })
+      .def("__contains__",
+           [](const engine::Config&, const std::string& key) {
+             for (const engine::ConfigOptionInfo& info : engine::ConfigOptions()) {
+               if (info.key == key) return true;
+             }
+             return false;
+           })
+      .def_static(
+          "keys",
+          [] {
+            std::vector<std::string> keys;
+            for (const engine::ConfigOptionInfo& info : engine::ConfigOptions()) keys.push_back(info.key);
+            return keys;
+          },
+          "Every key, in dump order")
       .def_static(
           "describe",
           [](const std::string& key) {
@@ -166,9 +175,10 @@ void RegisterOptions(py::module_& m) {
       .def("check", &engine::CheckConfig, "Raises ConfigError naming the key of the first invalid setting")
       .def("warnings", &engine::ConfigWarnings, "Valid settings without effect, one line each")
       .def("copy", [](const engine::Config& c) { return c; })
-      .def("__eq__", [](const engine::Config& a, const engine::Config& b) {
-        return engine::DumpConfig(a, false) == engine::DumpConfig(b, false);
-      })
+      .def("__eq__",
+           [](const engine::Config& a, const engine::Config& b) {
+             return engine::DumpConfig(a, false) == engine::DumpConfig(b, false);
+           })
       .def("__repr__", [](const engine::Config& c) {
         const engine::Config defaults;
         std::string changed;

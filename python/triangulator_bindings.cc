@@ -218,7 +218,7 @@ class PyTriangulator {
   Triangulator triangulator_;
   SequenceHeader header_;  // cameras and joints, to validate frames as the CLI does
   std::mutex mutex_;
-  SequenceFrame frame_;    // process(): the views of the frame, reused
+  SequenceFrame frame_;  // process(): the views of the frame, reused
   Poses3D persons_;
   FrameStats stats_;
   long calls_ = 0;
@@ -244,32 +244,42 @@ void RegisterTriangulator(py::module_& m) {
                           "3D persons of a sequence (Triangulator.process_sequence): per frame persons (P, J, 4), "
                           "track ids, provenance and step statistics")
       .def("__len__", [](const Predictions& p) { return p.persons.size(); })
-      .def("__getitem__",
-           [](const Predictions& p, long i) {
-             const long n = static_cast<long>(p.persons.size());
-             if (i < 0) i += n;
-             if (i < 0 || i >= n) throw py::index_error("frame index out of range");
-             const Poses3D& persons = p.persons[static_cast<size_t>(i)];
-             return py::make_tuple(PersonsArray(persons), TrackIdsArray(persons));
-           },
-           "(persons (P, J, 4), track ids (P,)) of frame i")
+      .def(
+          "__getitem__",
+          [](const Predictions& p, long i) {
+            const long n = static_cast<long>(p.persons.size());
+            if (i < 0) i += n;
+            if (i < 0 || i >= n) throw py::index_error("frame index out of range");
+            const Poses3D& persons = p.persons[static_cast<size_t>(i)];
+            return py::make_tuple(PersonsArray(persons), TrackIdsArray(persons));
+          },
+          "(persons (P, J, 4), track ids (P,)) of frame i")
       .def_readonly("sequence", &Predictions::sequence)
       .def_readonly("joint_names", &Predictions::joints)
       .def_readonly("frame_ids", &Predictions::frame_ids)
       .def_readonly("wall_seconds", &Predictions::wall_seconds, "the whole process_sequence call")
-      .def_property_readonly("timestamps", [](const Predictions& p) {
-        py::array_t<double> a(static_cast<py::ssize_t>(p.timestamps_s.size()));
-        std::copy(p.timestamps_s.begin(), p.timestamps_s.end(), a.mutable_data());
-        return a;
-      }, "seconds per frame, NaN when unknown")
-      .def("provenance", [](const Predictions& p, size_t i) { return ProvenanceArray(p.persons.at(i)); },
-           py::arg("frame"), "(P, J) provenance codes of frame i (0 triangulated, 1 filled, 2 smoothed, 3 lifted, 4 predicted)")
-      .def("stats", [](const Predictions& p, size_t i) { return StatsDict(p.stats.at(i)); }, py::arg("frame"))
-      .def_property_readonly("frame_time_us", [](const Predictions& p) {
-        py::array_t<double> a(static_cast<py::ssize_t>(p.stats.size()));
-        for (size_t i = 0; i < p.stats.size(); ++i) a.mutable_at(static_cast<py::ssize_t>(i)) = p.stats[i].total_us;
-        return a;
-      }, "the triangulator's time per frame (steady clock, microseconds)")
+      .def_property_readonly(
+          "timestamps",
+          [](const Predictions& p) {
+            py::array_t<double> a(static_cast<py::ssize_t>(p.timestamps_s.size()));
+            std::copy(p.timestamps_s.begin(), p.timestamps_s.end(), a.mutable_data());
+            return a;
+          },
+          "seconds per frame, NaN when unknown")
+      .def(
+          "provenance", [](const Predictions& p, size_t i) { return ProvenanceArray(p.persons.at(i)); },
+          py::arg("frame"),
+          "(P, J) provenance codes of frame i (0 triangulated, 1 filled, 2 smoothed, 3 lifted, 4 predicted)")
+      .def(
+          "stats", [](const Predictions& p, size_t i) { return StatsDict(p.stats.at(i)); }, py::arg("frame"))
+      .def_property_readonly(
+          "frame_time_us",
+          [](const Predictions& p) {
+            py::array_t<double> a(static_cast<py::ssize_t>(p.stats.size()));
+            for (size_t i = 0; i < p.stats.size(); ++i) a.mutable_at(static_cast<py::ssize_t>(i)) = p.stats[i].total_us;
+            return a;
+          },
+          "the triangulator's time per frame (steady clock, microseconds)")
       .def("__repr__", [](const Predictions& p) {
         return "Predictions('" + p.sequence + "', " + std::to_string(p.persons.size()) + " frames)";
       });
@@ -308,14 +318,16 @@ void RegisterTriangulator(py::module_& m) {
            "Every frame of a list (rpt.datasets.Frame objects, (views, timestamp) tuples or views), converted first, "
            "then triangulated in C++; returns rpt.Predictions")
       .def("reset", &PyTriangulator::Reset, "Forgets the previous frames (tracks, pre-filter, noise estimate)")
-      .def_property_readonly("stats", [](const PyTriangulator& t) { return StatsDict(t.stats()); },
-                             "the last frame's time and count per step, and the counters")
-      .def_property_readonly("last_provenance", [](const PyTriangulator& t) { return ProvenanceArray(t.persons()); },
-                             "(P, J) provenance codes of the last process() call")
+      .def_property_readonly(
+          "stats", [](const PyTriangulator& t) { return StatsDict(t.stats()); },
+          "the last frame's time and count per step, and the counters")
+      .def_property_readonly(
+          "last_provenance", [](const PyTriangulator& t) { return ProvenanceArray(t.persons()); },
+          "(P, J) provenance codes of the last process() call")
       .def_property_readonly("joint_names", [](const PyTriangulator& t) { return t.triangulator().input_joints(); })
-      .def_property_readonly("output_joint_names",
-                             [](const PyTriangulator& t) { return t.triangulator().output_joints(); },
-                             "the joints of the persons: the input joints, then the derived ones")
+      .def_property_readonly(
+          "output_joint_names", [](const PyTriangulator& t) { return t.triangulator().output_joints(); },
+          "the joints of the persons: the input joints, then the derived ones")
       .def_property_readonly("cameras", [](const PyTriangulator& t) { return t.triangulator().cameras(); });
 }
 
