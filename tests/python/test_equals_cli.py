@@ -4,6 +4,7 @@ import json
 import math
 
 import numpy as np
+import pytest
 
 import rpt
 
@@ -119,3 +120,20 @@ def test_stats_per_step(scene):
     assert list(stats["steps"])[:2] == ["undistort", "make_pairs"]
     assert stats["steps"]["merge"]["count"] == 4  # the four people of the scene, each found once
     assert stats["total_us"] > 0
+
+
+def test_offline_smoothing_equals_the_clis(scene, tmp_path):
+    from conftest import run_cli, scene_params
+    done = run_cli("eval", "--dataset", "synthetic", *scene_params(), "--set", "smooth.mode=offline", "--json",
+                   "--quiet", "--out", tmp_path / "run")
+    cli_summary = json.loads(done.stdout)
+    options = {"smooth.mode": "offline"}
+    triangulator = rpt.Triangulator.for_sequence(scene, options)
+    with pytest.raises(rpt.ConfigError, match=r"smooth.mode=offline smooths whole sequences: use process_sequence"):
+        triangulator.process(scene[0].views)
+    predictions = triangulator.process_sequence(scene)
+    assert 2 in predictions.provenance(10)  # smoothed joints
+    summary = rpt.metrics.evaluate(scene, predictions)
+    for key, value in cli_summary.items():
+        if key not in TIMING_KEYS:
+            assert summary[key] == value, key
