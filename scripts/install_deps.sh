@@ -13,16 +13,20 @@ SUDO=""
 if [ "$(id -u)" != 0 ]; then SUDO="sudo"; fi
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq
-# The build, and three.js and Chart.js, which rpt report inlines into report.html at run time
+# The build (with the Python module rpt: python3-dev, python3-numpy, pybind11-dev; docs/python.md),
+# and three.js and Chart.js, which rpt report inlines into report.html at run time
 # (engine/report/report_html.h).
 $SUDO apt-get install -y -qq --no-install-recommends \
   build-essential cmake pkg-config ccache \
   libeigen3-dev libopencv-dev nlohmann-json3-dev libcli11-dev libhdf5-dev zlib1g-dev libtomlplusplus-dev \
+  python3-dev python3-numpy pybind11-dev \
   libjs-three libjs-chart.js >/dev/null
 if [ "$tests" = 1 ]; then
-  # GoogleTest, Google Benchmark, clang with libFuzzer (fuzz/), and Chromium for the report's
-  # browser test (tests/report/; skipped without it).
+  # GoogleTest, Google Benchmark, clang with libFuzzer (fuzz/), Chromium for the report's
+  # browser test (tests/report/; skipped without it), pytest for the Python module's tests and
+  # matplotlib for its example (tests/python/).
   $SUDO apt-get install -y -qq --no-install-recommends \
-    libgtest-dev libgmock-dev libbenchmark-dev clang libclang-rt-14-dev chromium >/dev/null
+    libgtest-dev libgmock-dev libbenchmark-dev clang libclang-rt-14-dev chromium \
+    python3-pytest python3-matplotlib >/dev/null
 fi
 echo "dependencies installed"

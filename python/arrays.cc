@@ -1,0 +1,167 @@
+// SPDX-License-Identifier: MIT
+#include "python/arrays.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace rpt::python {
+namespace {
+
+std::string ShapeText(const py::array& array) {
+  std::string text = "(";
+  for (py::ssize_t d = 0; d < array.ndim(); ++d) text += (d > 0 ? ", " : "") + std::to_string(array.shape(d));
+  return text + (array.ndim() == 1 ? ",)" : ")");
+}
+
+std::string ExpectedShapeText(const std::vector<py::ssize_t>& shape, const std::vector<std::string>& names) {
+  std::string text = "(";
+  for (size_t d = 0; d < shape.size(); ++d) {
+    text += d > 0 ? ", " : "";
+    text += shape[d] >= 0 ? std::to_string(shape[d]) : (d < names.size() ? names[d] : "n");
+  }
+  return text + (shape.size() == 1 ? ",)" : ")");
+}
+
+}  // namespace
+
+py::array_t<double> CheckedArray(py::handle object, const std::string& what, std::vector<py::ssize_t> shape) {
+  py::array array;
+  if (py::isinstance<py::array>(object)) {
+    array = py::reinterpret_borrow<py::array>(object);
+    const bool is_float64 = py::isinstance<py::array_t<double>>(object);
+    const bool is_float32 = py::isinstance<py::array_t<float>>(object);
+    if (!is_float64 && !is_float32) {
+      throw py::type_error(what + ": dtype " + py::str(array.dtype()).cast<std::string>() +
+                           ", expected float64 or float32");
+    }
+    if (!(array.flags() & py::array::c_style)) {
+      throw py::value_error(what + ": the array is not C-contiguous (pass np.ascontiguousarray(...))");
+    }
+    if (is_float32) array = py::array_t<double>(array);  // converted copy
+  } else {
+    // Lists and other sequences: numpy converts them (and raises for what is not numbers).
+    array = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(object);
+    if (!array) throw py::error_already_set();
+  }
+  if (array.ndim() != static_cast<py::ssize_t>(shape.size())) {
+    throw py::value_error(what + ": shape " + ShapeText(array) + ", expected " + std::to_string(shape.size()) +
+                          " dimensions " + ExpectedShapeText(shape, {}));
+  }
+  for (size_t d = 0; d < shape.size(); ++d) {
+    if (shape[d] >= 0 && array.shape(static_cast<py::ssize_t>(d)) != shape[d]) {
+      throw py::value_error(what + ": shape " + ShapeText(array) + ", expected " + ExpectedShapeText(shape, {}));
+    }
+  }
+  return py::reinterpret_borrow<py::array_t<double>>(array);
+}
+
+void ViewFromArray(py::handle object, int num_joints, const std::string& what, Poses2D* view) {
+  view->Clear(num_joints);
+  if (object.is_none()) return;
+  const py::array_t<double> array = CheckedArray(object, what, {-1, -1, 3});
+  if (array.shape(0) > 0 && array.shape(1) != num_joints) {
+    throw py::value_error(what + ": " + std::to_string(array.shape(1)) + " joints, expected " +
+                          std::to_string(num_joints) + " (shape (persons, " + std::to_string(num_joints) + ", 3))");
+  }
+  if (array.shape(0) == 0 && array.shape(1) != num_joints && array.shape(1) != 0) {
+    throw py::value_error(what + ": " + std::to_string(array.shape(1)) + " joints, expected " +
+                          std::to_string(num_joints));
+  }
+  view->data.assign(array.data(), array.data() + array.size());
+}
+
+void ViewsFromPython(py::handle views, int num_cameras, int num_joints, std::vector<Poses2D>* out) {
+  out->resize(static_cast<size_t>(num_cameras));
+  if (py::isinstance<py::array>(views)) {  // one array (cameras, persons, joints, 3)
+    const py::array_t<double> array = CheckedArray(views, "views", {num_cameras, -1, num_joints, 3});
+    const size_t per_view = array.size() / static_cast<size_t>(std::max(num_cameras, 1));
+    for (int c = 0; c < num_cameras; ++c) {
+      (*out)[c].Clear(num_joints);
+      (*out)[c].data.assign(array.data() + c * per_view, array.data() + (c + 1) * per_view);
+    }
+    return;
+  }
+  if (!py::isinstance<py::list>(views) && !py::isinstance<py::tuple>(views)) {
+    throw py::type_error("views: expected a list of one (persons, joints, 3) array per camera, got " +
+                         py::str(py::type::of(views)).cast<std::string>());
+  }
+  const py::sequence list = py::reinterpret_borrow<py::sequence>(views);
+  if (static_cast<int>(list.size()) != num_cameras) {
+    throw py::value_error("views: " + std::to_string(list.size()) + " views for " + std::to_string(num_cameras) +
+                          " cameras");
+  }
+  for (int c = 0; c < num_cameras; ++c) {
+    ViewFromArray(list[static_cast<size_t>(c)], num_joints, "views[" + std::to_string(c) + "]", &(*out)[c]);
+  }
+}
+
+Poses3D PersonsFromArray(py::handle object, int num_joints, const std::string& what) {
+  Poses3D persons;
+  persons.Clear(num_joints);
+  if (object.is_none()) return persons;
+  const py::array_t<double> array = CheckedArray(object, what, {-1, num_joints, 4});
+  for (py::ssize_t p = 0; p < array.shape(0); ++p) persons.AddPerson();
+  std::copy(array.data(), array.data() + array.size(), persons.data.begin());
+  for (const double value : persons.data) {
+    if (!std::isfinite(value)) throw py::value_error(what + ": contains NaN or infinity");
+  }
+  return persons;
+}
+
+py::array_t<double> PersonsArray(const Poses3D& persons) {
+  py::array_t<double> array(
+      {static_cast<py::ssize_t>(persons.num_persons()), static_cast<py::ssize_t>(persons.num_joints), py::ssize_t{4}});
+  std::copy(persons.data.begin(), persons.data.end(), array.mutable_data());
+  return array;
+}
+
+py::array_t<long long> TrackIdsArray(const Poses3D& persons) {
+  py::array_t<long long> array(static_cast<py::ssize_t>(persons.num_persons()));
+  std::copy(persons.track_ids.begin(), persons.track_ids.end(), array.mutable_data());
+  return array;
+}
+
+py::array_t<uint8_t> ProvenanceArray(const Poses3D& persons) {
+  py::array_t<uint8_t> array(
+      {static_cast<py::ssize_t>(persons.num_persons()), static_cast<py::ssize_t>(persons.num_joints)});
+  uint8_t* out = array.mutable_data();
+  for (int p = 0; p < persons.num_persons(); ++p) {
+    for (int j = 0; j < persons.num_joints; ++j) *out++ = static_cast<uint8_t>(persons.Provenance(p, j));
+  }
+  return array;
+}
+
+py::array_t<double> ViewArray(const Poses2D& view, int num_joints) {
+  const int persons = view.num_joints == num_joints ? view.num_persons() : 0;
+  py::array_t<double> array({static_cast<py::ssize_t>(persons), static_cast<py::ssize_t>(num_joints), py::ssize_t{3}});
+  if (persons > 0) std::copy(view.data.begin(), view.data.end(), array.mutable_data());
+  return array;
+}
+
+Eigen::Matrix3d Matrix3From(py::handle object, const std::string& what) {
+  const py::array_t<double> array = CheckedArray(object, what, {3, 3});
+  Eigen::Matrix3d m;
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) m(r, c) = array.at(r, c);
+  }
+  if (!m.allFinite()) throw py::value_error(what + ": contains NaN or infinity");
+  return m;
+}
+
+Eigen::Vector3d Vector3From(py::handle object, const std::string& what) {
+  const py::array_t<double> array = CheckedArray(object, what, {3});
+  const Eigen::Vector3d v(array.at(0), array.at(1), array.at(2));
+  if (!v.allFinite()) throw py::value_error(what + ": contains NaN or infinity");
+  return v;
+}
+
+py::array_t<double> MatrixArray(const Eigen::MatrixXd& matrix) {
+  py::array_t<double> array({static_cast<py::ssize_t>(matrix.rows()), static_cast<py::ssize_t>(matrix.cols())});
+  for (Eigen::Index r = 0; r < matrix.rows(); ++r) {
+    for (Eigen::Index c = 0; c < matrix.cols(); ++c) array.mutable_at(r, c) = matrix(r, c);
+  }
+  return array;
+}
+
+}  // namespace rpt::python

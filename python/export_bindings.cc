@@ -1,0 +1,136 @@
+// SPDX-License-Identifier: MIT
+// rpt.export.write: the CLI's exports of 3D persons (--export json,csv,trc; engine/outputs/) from
+// rpt.Predictions, written by the same writers (FrameSinks fed frame by frame as engine::Run feeds
+// them). The formats are dispatched in one place, ExportSinks below: a new export format is one more
+// case there.
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/errors.h"
+#include "engine/frame_sink.h"
+#include "engine/outputs/csv_export.h"
+#include "engine/outputs/export_options.h"
+#include "engine/outputs/predictions_writer.h"
+#include "engine/outputs/trc_export.h"
+#include "python/bindings.h"
+
+namespace rpt::python {
+namespace {
+
+// The writers of `options.formats` into `dir`, and how each finishes.
+struct ExportSinks {
+  std::unique_ptr<engine::PredictionsWriter> json;
+  std::unique_ptr<engine::CsvExport> csv;
+  std::unique_ptr<engine::TrcExport> trc;
+  std::vector<engine::FrameSink*> all;
+  std::vector<std::filesystem::path> written;
+
+  ExportSinks(const std::filesystem::path& dir, const std::string& run_id, int num_sequences,
+              const engine::ExportOptions& options) {
+    for (const engine::ExportFormat format : options.formats) {
+      switch (format) {
+        case engine::ExportFormat::kJson:
+          json = std::make_unique<engine::PredictionsWriter>(dir / "predictions.json", run_id, num_sequences, options);
+          all.push_back(json.get());
+          written.push_back(dir / "predictions.json");
+          break;
+        case engine::ExportFormat::kCsv:
+          csv = std::make_unique<engine::CsvExport>(dir / "predictions.csv", num_sequences, options);
+          all.push_back(csv.get());
+          written.push_back(dir / "predictions.csv");
+          break;
+        case engine::ExportFormat::kTrc:
+          trc = std::make_unique<engine::TrcExport>(dir / "trc", num_sequences, options);
+          all.push_back(trc.get());
+          written.push_back(dir / "trc");
+          break;
+        case engine::ExportFormat::kNpz:  // the hook for the NumPy and HDF5 exports (issue 20)
+        case engine::ExportFormat::kH5:
+          throw ConfigError("export.write: " + std::string(engine::ExportFormatName(format)) +
+                            " is not written yet (json, csv and trc are)");
+      }
+    }
+  }
+
+  void Finish() {
+    if (json) json->Finish();
+    if (csv) csv->Finish();
+  }
+};
+
+std::vector<std::filesystem::path> Write(const std::filesystem::path& dir, py::handle predictions, py::handle formats,
+                                         bool filled_joints, const std::string& trc_axes, const std::string& trc_units,
+                                         const std::string& run_id) {
+  std::vector<Predictions> runs = py::isinstance<Predictions>(predictions)
+                                      ? std::vector<Predictions>{predictions.cast<Predictions>()}
+                                      : predictions.cast<std::vector<Predictions>>();
+  engine::ExportOptions options;
+  std::string format_text;
+  if (py::isinstance<py::str>(formats)) {
+    format_text = formats.cast<std::string>();
+  } else {
+    for (const std::string& f : formats.cast<std::vector<std::string>>())
+      format_text += (format_text.empty() ? "" : ",") + f;
+  }
+  options.formats = engine::ParseExportFormats(format_text);
+  options.filled_joints = filled_joints;
+  if (trc_axes != "z-up" && trc_axes != "y-up")
+    throw ConfigError("export.write: trc_axes: '" + trc_axes + "' is not z-up | y-up");
+  if (trc_units != "m" && trc_units != "mm")
+    throw ConfigError("export.write: trc_units: '" + trc_units + "' is not m | mm");
+  options.trc_axes = trc_axes == "y-up" ? engine::TrcAxes::kYUp : engine::TrcAxes::kZUp;
+  options.trc_millimetres = trc_units == "mm";
+
+  py::gil_scoped_release release;
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw InputError(dir.string() + ": cannot create the folder (" + ec.message() + ")");
+  ExportSinks sinks(dir, run_id, static_cast<int>(runs.size()), options);
+  engine::SinkList sink(sinks.all);
+  for (size_t s = 0; s < runs.size(); ++s) {
+    const Predictions& run = runs[s];
+    SequenceHeader header;
+    header.name = run.sequence;
+    header.fps = run.fps;
+    sink.BeginSequence(static_cast<int>(s), header, run.joints);
+    SequenceFrame frame;
+    for (size_t f = 0; f < run.persons.size(); ++f) {
+      frame.id = run.frame_ids[f];
+      frame.timestamp_s = run.timestamps_s[f];
+      sink.Frame(engine::FrameOutput{static_cast<int>(s), &frame, &run.persons[f], &run.stats[f]});
+    }
+    sink.EndSequence(static_cast<int>(s));
+  }
+  sinks.Finish();
+  return sinks.written;
+}
+
+}  // namespace
+
+void RegisterExport(py::module_& exports) {
+  exports.def("write", &Write, py::arg("out_dir"), py::arg("predictions"), py::arg("formats") = "json", py::kw_only(),
+              py::arg("filled_joints") = true, py::arg("trc_axes") = "z-up", py::arg("trc_units") = "m",
+              py::arg("run_id") = "python",
+              "Writes rpt.Predictions (or a list, one per sequence) as the CLI's --export does: formats 'json' "
+              "(predictions.json), 'csv' (predictions.csv), 'trc' (trc/, one file per track), a comma text or a "
+              "list; filled_joints=False writes filled joints as missing; trc_axes 'z-up' | 'y-up' (OpenSim); "
+              "trc_units 'm' | 'mm'. Returns the paths written. Schemas: docs/own_data.md.");
+  exports.def(
+      "formats",
+      [] {
+        std::vector<std::string> names;
+        for (const engine::ExportFormat f :
+             {engine::ExportFormat::kJson, engine::ExportFormat::kCsv, engine::ExportFormat::kTrc}) {
+          names.emplace_back(engine::ExportFormatName(f));
+        }
+        return names;
+      },
+      "The formats write() writes");
+}
+
+}  // namespace rpt::python

@@ -1,0 +1,334 @@
+// SPDX-License-Identifier: MIT
+// rpt.Triangulator (core/pipeline/triangulator.h) and rpt.Predictions. process() triangulates one
+// frame from numpy views; process_sequence() a whole sequence in C++ (an rpt.datasets.Sequence is
+// read in place; a list of frames is converted up front), the GIL released while C++ works. Every
+// frame from Python passes the CLI's validation (ValidateFrame: joint counts, finite values,
+// scores in [0, 1]) before the triangulator sees it.
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <chrono>
+#include <cmath>
+#include <mutex>
+#include <span>
+#include <string>
+
+#include "core/errors.h"
+#include "core/pipeline/offline_smoother.h"
+#include "core/pipeline/triangulator.h"
+#include "engine/run.h"
+#include "python/arrays.h"
+#include "python/bindings.h"
+#include "python/datasets_types.h"
+
+namespace rpt::python {
+namespace {
+
+double TimeOf(py::handle timestamp) {
+  if (timestamp.is_none()) return kUnknownTime;
+  const double t = timestamp.cast<double>();
+  if (std::isinf(t)) throw py::value_error("timestamp: must be finite seconds, or None (unknown)");
+  return t;
+}
+
+// (views, timestamp): a pair whose second item is a time (a number or None), not a second view.
+bool IsViewsAndTime(py::handle item) {
+  if (!py::isinstance<py::tuple>(item) || py::len(item) != 2) return false;
+  const py::handle second = py::reinterpret_borrow<py::tuple>(item)[1];
+  return second.is_none() || py::isinstance<py::float_>(second) || py::isinstance<py::int_>(second);
+}
+
+py::dict StatsDict(const FrameStats& stats) {
+  py::dict steps;
+  for (int s = 0; s < kNumSteps; ++s) {
+    py::dict step;
+    step["time_us"] = stats.time_us[static_cast<size_t>(s)];
+    step["count"] = stats.count[static_cast<size_t>(s)];
+    steps[py::str(std::string(kSteps[static_cast<size_t>(s)].key))] = step;
+  }
+  py::dict d;
+  d["total_us"] = stats.total_us;
+  d["steps"] = steps;
+  d["pruned_limbs"] = stats.pruned_limbs;
+  d["small_groups"] = stats.small_groups;
+  d["conflicting_proposals"] = stats.conflicting_proposals;
+  d["mirrored_groups"] = stats.mirrored_groups;
+  d["unsupported_persons"] = stats.unsupported_persons;
+  d["single_view_persons"] = stats.single_view_persons;
+  d["replaced_joints"] = stats.replaced_joints;
+  d["filled_joints"] = stats.filled_joints;
+  d["new_tracks"] = stats.new_tracks;
+  d["coasting_tracks"] = stats.coasting_tracks;
+  d["bone_length_corrections"] = stats.bone_length_corrections;
+  d["noise_m"] = stats.noise_m;
+  return d;
+}
+
+class PyTriangulator {
+ public:
+  PyTriangulator(std::vector<Camera> cameras, JointNames joints, const TriangulatorOptions& options, std::string name,
+                 double fps)
+      : triangulator_(cameras, joints, options) {
+    header_.name = std::move(name);
+    header_.cameras = std::move(cameras);
+    header_.detection_joints = std::move(joints);
+    header_.fps = fps;
+  }
+
+  py::tuple Process(py::handle views, py::handle timestamp) {
+    std::unique_lock lock = Lock();
+    if (triangulator_.options().smooth.mode == SmoothMode::kOffline && triangulator_.options().track.enabled) {
+      throw ConfigError("smooth.mode=offline smooths whole sequences: use process_sequence, or smooth.mode=causal");
+    }
+    frame_.timestamp_s = TimeOf(timestamp);
+    frame_.id = std::to_string(calls_);
+    ViewsFromPython(views, num_cameras(), num_joints(), &frame_.views);
+    ValidateFrame(header_, frame_, "Triangulator.process");
+    {
+      py::gil_scoped_release release;
+      triangulator_.Process(frame_.views, frame_.timestamp_s, &persons_, &stats_);
+    }
+    ++calls_;
+    return py::make_tuple(PersonsArray(persons_), TrackIdsArray(persons_));
+  }
+
+  // The frames of a loaded sequence, read in place.
+  Predictions ProcessSequence(const Sequence& sequence) {
+    std::unique_lock lock = Lock();
+    if (sequence.cameras.size() != header_.cameras.size() || sequence.detection_joints != header_.detection_joints) {
+      throw InputError("process_sequence: sequence '" + sequence.name + "' has " +
+                       std::to_string(sequence.cameras.size()) + " cameras and " +
+                       std::to_string(sequence.detection_joints.size()) +
+                       " detection joints; the triangulator was made for " + std::to_string(header_.cameras.size()) +
+                       " and " + std::to_string(header_.detection_joints.size()));
+    }
+    Predictions out = Begin(sequence.name, sequence.fps);
+    py::gil_scoped_release release;
+    Run(sequence.frames, &out);
+    return out;
+  }
+
+  // Frames from Python: rpt.datasets.Frame objects, (views, timestamp) tuples or views alone,
+  // converted and validated first, then triangulated in one go.
+  Predictions ProcessFrames(const py::iterable& frames) {
+    std::unique_lock lock = Lock();
+    std::vector<SequenceFrame> converted;
+    for (py::handle item : frames) {
+      SequenceFrame& frame = converted.emplace_back();
+      const std::string where = "frames[" + std::to_string(converted.size() - 1) + "]";
+      frame.id = std::to_string(converted.size() - 1);
+      frame.timestamp_s = kUnknownTime;
+      if (py::isinstance<Frame>(item)) {
+        const Frame& f = item.cast<const Frame&>();
+        frame.id = f.frame.id;
+        frame.timestamp_s = f.frame.timestamp_s;
+        frame.views = f.frame.views;
+        if (frame.views.empty()) frame.views.resize(header_.cameras.size());
+      } else if (IsViewsAndTime(item)) {
+        const py::tuple pair = py::reinterpret_borrow<py::tuple>(item);
+        frame.timestamp_s = TimeOf(pair[1]);
+        ViewsFromPython(pair[0], num_cameras(), num_joints(), &frame.views);
+      } else {
+        ViewsFromPython(item, num_cameras(), num_joints(), &frame.views);
+      }
+      ValidateFrame(header_, frame, "process_sequence: " + where);
+    }
+    if (converted.empty()) throw py::value_error("process_sequence: no frames");
+    Predictions out = Begin(header_.name, header_.fps);
+    py::gil_scoped_release release;
+    Run(converted, &out);
+    return out;
+  }
+
+  void Reset() {
+    std::unique_lock lock = Lock();
+    triangulator_.Reset();
+    calls_ = 0;
+  }
+
+  const Triangulator& triangulator() const { return triangulator_; }
+  const FrameStats& stats() const { return stats_; }
+  const Poses3D& persons() const { return persons_; }
+
+ private:
+  int num_cameras() const { return static_cast<int>(header_.cameras.size()); }
+  int num_joints() const { return static_cast<int>(header_.detection_joints.size()); }
+
+  // One call at a time: a second thread gets an error instead of a data race (the GIL is released
+  // while C++ works).
+  std::unique_lock<std::mutex> Lock() {
+    std::unique_lock lock(mutex_, std::try_to_lock);
+    if (!lock.owns_lock()) throw py::value_error("Triangulator: in use by another thread (one call at a time)");
+    return lock;
+  }
+
+  Predictions Begin(const std::string& name, double fps) const {
+    Predictions out;
+    out.sequence = name;
+    out.fps = fps;
+    out.cameras = num_cameras();
+    out.joints = triangulator_.output_joints();
+    return out;
+  }
+
+  // The loop of engine::Run's sequences (engine/run.cc, RunSequence): each frame triangulated in
+  // order, through the offline smoother when smooth.mode = offline.
+  void Run(std::span<const SequenceFrame> frames, Predictions* out) {
+    const auto start = std::chrono::steady_clock::now();
+    const TriangulatorOptions& options = triangulator_.options();
+    const bool offline = options.track.enabled && options.smooth.mode == SmoothMode::kOffline;
+    OfflineSmoother smoother(options.smooth, options.track.max_gap_s, options.UnobservedScore());
+    const std::vector<Poses2D> no_views(header_.cameras.size());
+    out->frame_ids.reserve(frames.size());
+    out->timestamps_s.reserve(frames.size());
+    out->persons.reserve(frames.size());
+    out->stats.reserve(frames.size());
+    Poses3D smoothed;
+    FrameStats smoothed_stats;
+    for (const SequenceFrame& frame : frames) {
+      try {
+        triangulator_.Process(frame.views.empty() ? no_views : frame.views, frame.timestamp_s, &persons_, &stats_);
+      } catch (const InputError& e) {
+        throw InputError(out->sequence + ": frame '" + frame.id + "': " + e.what());
+      }
+      out->frame_ids.push_back(frame.id);
+      out->timestamps_s.push_back(frame.timestamp_s);
+      if (offline) {
+        smoother.Push(frame.timestamp_s, persons_, persons_.num_persons() - stats_.coasting_tracks, stats_);
+        while (smoother.Pop(&smoothed, &smoothed_stats)) {
+          out->persons.push_back(smoothed);
+          out->stats.push_back(smoothed_stats);
+        }
+      } else {
+        out->persons.push_back(persons_);
+        out->stats.push_back(stats_);
+      }
+      ++calls_;
+    }
+    if (offline) {
+      smoother.Flush();
+      while (smoother.Pop(&smoothed, &smoothed_stats)) {
+        out->persons.push_back(smoothed);
+        out->stats.push_back(smoothed_stats);
+      }
+    }
+    out->wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+
+  Triangulator triangulator_;
+  SequenceHeader header_;  // cameras and joints, to validate frames as the CLI does
+  std::mutex mutex_;
+  SequenceFrame frame_;  // process(): the views of the frame, reused
+  Poses3D persons_;
+  FrameStats stats_;
+  long calls_ = 0;
+};
+
+std::vector<Camera> CamerasOf(py::handle cameras) {
+  if (!py::isinstance<py::list>(cameras) && !py::isinstance<py::tuple>(cameras)) {
+    throw py::type_error("cameras: expected a list of rpt.Camera");
+  }
+  std::vector<Camera> out;
+  for (py::handle camera : cameras) {
+    if (!py::isinstance<Camera>(camera)) throw py::type_error("cameras: expected a list of rpt.Camera");
+    out.push_back(camera.cast<Camera>());
+  }
+  if (out.empty()) throw py::value_error("cameras: empty list");
+  return out;
+}
+
+}  // namespace
+
+void RegisterTriangulator(py::module_& m) {
+  py::class_<Predictions>(m, "Predictions",
+                          "3D persons of a sequence (Triangulator.process_sequence): per frame persons (P, J, 4), "
+                          "track ids, provenance and step statistics")
+      .def("__len__", [](const Predictions& p) { return p.persons.size(); })
+      .def(
+          "__getitem__",
+          [](const Predictions& p, long i) {
+            const long n = static_cast<long>(p.persons.size());
+            if (i < 0) i += n;
+            if (i < 0 || i >= n) throw py::index_error("frame index out of range");
+            const Poses3D& persons = p.persons[static_cast<size_t>(i)];
+            return py::make_tuple(PersonsArray(persons), TrackIdsArray(persons));
+          },
+          "(persons (P, J, 4), track ids (P,)) of frame i")
+      .def_readonly("sequence", &Predictions::sequence)
+      .def_readonly("joint_names", &Predictions::joints)
+      .def_readonly("frame_ids", &Predictions::frame_ids)
+      .def_readonly("wall_seconds", &Predictions::wall_seconds, "the whole process_sequence call")
+      .def_property_readonly(
+          "timestamps",
+          [](const Predictions& p) {
+            py::array_t<double> a(static_cast<py::ssize_t>(p.timestamps_s.size()));
+            std::copy(p.timestamps_s.begin(), p.timestamps_s.end(), a.mutable_data());
+            return a;
+          },
+          "seconds per frame, NaN when unknown")
+      .def(
+          "provenance", [](const Predictions& p, size_t i) { return ProvenanceArray(p.persons.at(i)); },
+          py::arg("frame"),
+          "(P, J) provenance codes of frame i (0 triangulated, 1 filled, 2 smoothed, 3 lifted, 4 predicted)")
+      .def(
+          "stats", [](const Predictions& p, size_t i) { return StatsDict(p.stats.at(i)); }, py::arg("frame"))
+      .def_property_readonly(
+          "frame_time_us",
+          [](const Predictions& p) {
+            py::array_t<double> a(static_cast<py::ssize_t>(p.stats.size()));
+            for (size_t i = 0; i < p.stats.size(); ++i) a.mutable_at(static_cast<py::ssize_t>(i)) = p.stats[i].total_us;
+            return a;
+          },
+          "the triangulator's time per frame (steady clock, microseconds)")
+      .def("__repr__", [](const Predictions& p) {
+        return "Predictions('" + p.sequence + "', " + std::to_string(p.persons.size()) + " frames)";
+      });
+
+  py::class_<PyTriangulator>(m, "Triangulator",
+                             "The triangulator (docs/algorithm.md): 2D detections of calibrated cameras in, 3D persons "
+                             "with track ids out")
+      .def(py::init([](py::handle cameras, const JointNames& joint_names, py::handle options) {
+             const engine::Config config = ConfigOf(options);
+             std::vector<Camera> list = CamerasOf(cameras);
+             py::gil_scoped_release release;
+             return std::make_unique<PyTriangulator>(std::move(list), joint_names, config.triangulator, "python", 0.0);
+           }),
+           py::arg("cameras"), py::arg("joint_names"), py::arg("options") = py::none(),
+           "cameras: list of rpt.Camera; joint_names: the joints of the detections, in order; options: None, a dict "
+           "or rpt.Options")
+      .def_static(
+          "for_sequence",
+          [](const SequenceHeader& sequence, py::handle options) {
+            const engine::Config config = ConfigOf(options);
+            py::gil_scoped_release release;
+            return std::make_unique<PyTriangulator>(sequence.cameras, sequence.detection_joints,
+                                                    engine::TriangulatorOptionsFor(config.triangulator, sequence),
+                                                    sequence.name, sequence.fps);
+          },
+          py::arg("sequence"), py::arg("options") = py::none(),
+          "The triangulator `rpt eval` runs on this sequence: its cameras and joints, its room unless "
+          "room_check.size_m is set")
+      .def("process", &PyTriangulator::Process, py::arg("views"), py::arg("timestamp") = py::none(),
+           "views: per camera an array (persons, joints, 3) of u_px, v_px, score (or one array (cameras, persons, "
+           "joints, 3)); timestamp: seconds, None = unknown. Returns (persons (P, J, 4): x, y, z in metres and "
+           "score, track ids (P,))")
+      .def("process_sequence", &PyTriangulator::ProcessSequence, py::arg("frames"),
+           "Every frame of an rpt.datasets.Sequence, in C++; returns rpt.Predictions")
+      .def("process_sequence", &PyTriangulator::ProcessFrames, py::arg("frames"),
+           "Every frame of a list (rpt.datasets.Frame objects, (views, timestamp) tuples or views), converted first, "
+           "then triangulated in C++; returns rpt.Predictions")
+      .def("reset", &PyTriangulator::Reset, "Forgets the previous frames (tracks, pre-filter, noise estimate)")
+      .def_property_readonly(
+          "stats", [](const PyTriangulator& t) { return StatsDict(t.stats()); },
+          "the last frame's time and count per step, and the counters")
+      .def_property_readonly(
+          "last_provenance", [](const PyTriangulator& t) { return ProvenanceArray(t.persons()); },
+          "(P, J) provenance codes of the last process() call")
+      .def_property_readonly("joint_names", [](const PyTriangulator& t) { return t.triangulator().input_joints(); })
+      .def_property_readonly(
+          "output_joint_names", [](const PyTriangulator& t) { return t.triangulator().output_joints(); },
+          "the joints of the persons: the input joints, then the derived ones")
+      .def_property_readonly("cameras", [](const PyTriangulator& t) { return t.triangulator().cameras(); });
+}
+
+}  // namespace rpt::python

@@ -1,0 +1,216 @@
+"""Every class of bad input raises the right Python exception with the CLI's words, never crashes:
+arrays of the wrong dtype, shape or layout, NaN, empty arrays; bad options, parameters and files."""
+import numpy as np
+import pytest
+
+import rpt
+
+from conftest import run_cli
+
+JOINTS = 17
+
+
+@pytest.fixture(scope="module")
+def rig():
+    scene = rpt.synthetic.scene(cameras=3, people=1, frames=2, noise="perfect")
+    return scene, rpt.Triangulator(scene.cameras, scene.joint_names)
+
+
+def good_views(rig):
+    scene, _ = rig
+    return [v.copy() for v in scene[0].views]
+
+
+def test_good_views_pass(rig):
+    _, triangulator = rig
+    persons, track_ids = triangulator.process(good_views(rig), 0.0)
+    assert persons.shape == (1, 20, 4)  # 17 joints and the 3 derived ones
+    assert track_ids.shape == (1,)
+
+
+def test_wrong_dtype_raises_type_error(rig):
+    _, triangulator = rig
+    views = good_views(rig)
+    views[1] = views[1].astype(np.int64)
+    with pytest.raises(TypeError, match=r"views\[1\]: dtype int64, expected float64 or float32"):
+        triangulator.process(views)
+    views[1] = np.array([["a"]], dtype=object)
+    with pytest.raises(TypeError, match=r"views\[1\]: dtype object"):
+        triangulator.process(views)
+
+
+def test_float32_is_accepted(rig):
+    _, triangulator = rig
+    views = [v.astype(np.float32) for v in good_views(rig)]
+    persons, _ = triangulator.process(views)
+    assert persons.shape[0] == 1
+
+
+def test_wrong_shape_raises_value_error(rig):
+    _, triangulator = rig
+    views = good_views(rig)
+    views[0] = views[0][..., :2].copy()
+    with pytest.raises(ValueError, match=r"views\[0\]: shape \(1, 17, 2\), expected \(n, n, 3\)"):
+        triangulator.process(views)
+    views = good_views(rig)
+    views[2] = np.zeros((1, 13, 3))
+    with pytest.raises(ValueError, match=r"views\[2\]: 13 joints, expected 17"):
+        triangulator.process(views)
+    views[2] = np.zeros((17, 3))
+    with pytest.raises(ValueError, match=r"views\[2\]: shape \(17, 3\), expected 3 dimensions"):
+        triangulator.process(views)
+
+
+def test_wrong_number_of_views_raises(rig):
+    _, triangulator = rig
+    with pytest.raises(ValueError, match=r"views: 2 views for 3 cameras"):
+        triangulator.process(good_views(rig)[:2])
+    with pytest.raises(TypeError, match=r"views: expected a list"):
+        triangulator.process({"a": 1})
+
+
+def test_non_contiguous_raises(rig):
+    _, triangulator = rig
+    views = good_views(rig)
+    wide = np.zeros((1, JOINTS * 2, 3))
+    wide[:, ::2] = views[0]
+    views[0] = wide[:, ::2]
+    assert not views[0].flags.c_contiguous
+    with pytest.raises(ValueError, match=r"views\[0\]: the array is not C-contiguous"):
+        triangulator.process(views)
+
+
+def test_nan_and_bad_scores_raise_input_error(rig):
+    _, triangulator = rig
+    views = good_views(rig)
+    views[1][0, 5, 0] = np.nan
+    with pytest.raises(rpt.InputError, match=r"camera '.*': detection 0 contains NaN or infinity"):
+        triangulator.process(views)
+    views = good_views(rig)
+    views[0][0, 3, 2] = 1.5
+    with pytest.raises(ValueError, match=r"detection score 1.5.* outside \[0, 1\]"):
+        triangulator.process(views)
+    with pytest.raises(ValueError, match=r"timestamp: must be finite"):
+        triangulator.process(good_views(rig), float("inf"))
+
+
+def test_empty_arrays(rig):
+    _, triangulator = rig
+    # a camera that sees nobody: None or (0, joints, 3)
+    views = good_views(rig)
+    views[0] = None
+    views[1] = np.zeros((0, JOINTS, 3))
+    triangulator.process(views)
+    views[1] = np.zeros((0,))
+    with pytest.raises(ValueError, match=r"views\[1\]: shape \(0,\), expected 3 dimensions"):
+        triangulator.process(views)
+    with pytest.raises(ValueError, match=r"process_sequence: no frames"):
+        triangulator.process_sequence([])
+    with pytest.raises(ValueError, match=r"cameras: empty list"):
+        rpt.Triangulator([], ["nose"])
+
+
+def test_bad_frames_in_a_sequence_name_the_frame(rig):
+    _, triangulator = rig
+    views = good_views(rig)
+    views[2][0, 0, 1] = np.inf
+    with pytest.raises(rpt.InputError, match=r"process_sequence: frames\[1\]: frame '1', camera"):
+        triangulator.process_sequence([good_views(rig), views])
+
+
+def test_bad_option_values_name_the_key():
+    with pytest.raises(rpt.ConfigError) as error:
+        rpt.Options({"filter.min_match_score": 1.5})
+    assert str(error.value) == "Options: filter.min_match_score: '1.5' is not a number in [0, 1]"
+    assert isinstance(error.value, ValueError)
+    options = rpt.Options()
+    with pytest.raises(rpt.ConfigError, match=r"Options: group.min_group_size: '2.5' is not an integer"):
+        options["group.min_group_size"] = 2.5
+    with pytest.raises(rpt.ConfigError, match=r"did you mean 'filter.min_match_score'"):
+        options["filter.min_match_scor"] = 0.5
+    with pytest.raises(rpt.ConfigError, match=r"metrics.matching: 'best' is not one of greedy, hungarian"):
+        options["metrics.matching"] = "best"
+    with pytest.raises(rpt.ConfigError, match=r"None is not a value"):
+        options["track.enabled"] = None
+    with pytest.raises(TypeError, match=r"options: expected None, a dict or an rpt.Options"):
+        rpt.Triangulator([], [], options=3)
+
+
+def test_option_messages_equal_the_clis(tmp_path):
+    done = run_cli("config", "--dump", "--set", "filter.min_match_score=1.5", check=False)
+    assert done.returncode == 2
+    with pytest.raises(rpt.ConfigError) as error:
+        rpt.Options({"filter.min_match_score": "1.5"})
+    assert done.stderr.strip().endswith(str(error.value).removeprefix("Options"))
+    config = tmp_path / "config.json"
+    config.write_text('{"filter": {"min_match_score": 2}}')
+    done = run_cli("config", "--dump", "--config", config, check=False)
+    with pytest.raises(rpt.ConfigError) as error:
+        rpt.Options.from_json(config)
+    assert str(error.value) in done.stderr
+
+
+def test_dataset_errors_are_the_clis(tmp_path):
+    done = run_cli("eval", "--dataset", "shelf", "--root", tmp_path / "missing", check=False)
+    with pytest.raises(FileNotFoundError) as error:
+        rpt.datasets.open("shelf", str(tmp_path / "missing"))
+    assert isinstance(error.value, rpt.InputError)
+    assert str(error.value) in done.stderr
+    done = run_cli("eval", "--dataset", "shelve", "--root", "x", check=False)
+    with pytest.raises(rpt.ConfigError) as error:
+        rpt.datasets.open("shelve", "x")
+    assert str(error.value).startswith("unknown dataset 'shelve' (known: shelf, ")
+    assert str(error.value) in done.stderr
+    done = run_cli("eval", "--dataset", "synthetic", "--param", "people=0", check=False)
+    with pytest.raises(rpt.ConfigError) as error:
+        rpt.datasets.open("synthetic", people=0)
+    assert str(error.value) in done.stderr
+    with pytest.raises(rpt.ConfigError, match=r"synthetic.noise: 'loud' is not one of perfect, clean, realistic, hard, none"):
+        rpt.synthetic.scene(noise="loud")
+
+
+def test_camera_errors():
+    with pytest.raises(FileNotFoundError, match=r"nothing.yml: file not found"):
+        rpt.cameras.load("/nonexistent/nothing.yml")
+    with pytest.raises(ValueError, match=r"K: shape \(2, 2\), expected \(3, 3\)"):
+        rpt.Camera(width=10, height=10, K=np.eye(2))
+    with pytest.raises(ValueError, match=r"K: contains NaN"):
+        rpt.Camera(width=10, height=10, K=np.full((3, 3), np.nan))
+    with pytest.raises(rpt.InputError, match=r"camera 'a': "):
+        rpt.Camera(name="a", width=0, height=10, K=np.eye(3))
+    with pytest.raises(rpt.ConfigError, match=r"cameras.load: format: 'yaml' is not one of auto, json, opencv"):
+        rpt.cameras.load("x.yml", format="yaml")
+    camera = rpt.Camera(width=10, height=10, K=np.eye(3))
+    with pytest.raises(ValueError, match=r"points: shape \(2, 2\), expected \(n, 3\)"):
+        camera.project(np.zeros((2, 2)))
+
+
+def test_metrics_errors(scene, predictions):
+    with pytest.raises(rpt.ConfigError, match=r"metrics.evaluate: metrics.min_gt_score: '2' is not a number in \[0, 1\]"):
+        rpt.metrics.evaluate(scene, predictions, min_gt_score=2)
+    with pytest.raises(ValueError, match=r"with arrays, give gt_joints= and joint_names="):
+        rpt.metrics.evaluate([np.zeros((1, 17, 4))], [np.zeros((1, 17, 4))])
+    gt = np.zeros((1, 17, 4))
+    gt[0, 0, 0] = np.nan
+    with pytest.raises(ValueError, match=r"gt\[0\]: contains NaN"):
+        rpt.metrics.evaluate([gt], [np.zeros((1, 17, 4))], gt_joints=scene.joint_names, joint_names=scene.joint_names)
+
+
+def test_export_errors(predictions, tmp_path):
+    with pytest.raises(rpt.ConfigError, match=r"npz is not written yet"):
+        rpt.export.write(tmp_path, predictions, "npz")
+    with pytest.raises(rpt.ConfigError, match=r"trc_axes: 'x-up' is not z-up \| y-up"):
+        rpt.export.write(tmp_path, predictions, "trc", trc_axes="x-up")
+
+
+def test_one_array_for_all_views(rig):
+    scene, _ = rig
+    views = good_views(rig)
+    assert all(v.shape == (1, JOINTS, 3) for v in views)
+    a = rpt.Triangulator(scene.cameras, scene.joint_names)
+    b = rpt.Triangulator(scene.cameras, scene.joint_names)
+    persons_list, _ = a.process(views, 0.0)
+    persons_array, _ = b.process(np.stack(views), 0.0)
+    assert np.array_equal(persons_list, persons_array)
+    with pytest.raises(ValueError, match=r"views: shape \(2, 1, 17, 3\), expected \(3, n, 17, 3\)"):
+        b.process(np.stack(views[:2]))

@@ -1,0 +1,51 @@
+"""Files in, as a user's own data: generic labels and detections JSON (written by `rpt convert`),
+read by rpt.datasets.open_labels / open_cameras, give what `rpt eval --labels` and
+`rpt triangulate --cameras` give."""
+import json
+
+import pytest
+
+import rpt
+
+from conftest import run_cli, scene_params
+
+TIMING_KEYS = {"fps", "frame_time_us_median", "eval_frames_per_s", "step_time_us_median"}
+
+
+@pytest.fixture(scope="module")
+def files(tmp_path_factory):
+    folder = tmp_path_factory.mktemp("own_data")
+    run_cli("convert", "--dataset", "synthetic", *scene_params(), "--labels-out", folder / "labels.json",
+            "--detections-out", folder / "detections.json")
+    return folder
+
+
+def test_labels_and_detections_equal_rpt_eval(files, tmp_path):
+    done = run_cli("eval", "--labels", files / "labels.json", "--detections", files / "detections.json", "--json",
+                   "--quiet", "--out", tmp_path / "run")
+    cli_summary = json.loads(done.stdout)
+    sequences = rpt.datasets.open_labels(str(files / "labels.json"),
+                                         detections_file=str(files / "detections.json")).load()
+    predictions = [rpt.Triangulator.for_sequence(s).process_sequence(s) for s in sequences]
+    summary = rpt.metrics.evaluate(sequences, predictions)
+    for key, value in cli_summary.items():
+        if key not in TIMING_KEYS:
+            assert summary[key] == value, key
+
+
+def test_cameras_and_detections_equal_rpt_triangulate(files, tmp_path):
+    run_cli("triangulate", "--cameras", files / "labels.json", "--detections", files / "detections.json", "--fps",
+            25, "--export", "csv,trc", "--out", tmp_path / "cli")
+    dataset = rpt.datasets.open_cameras(str(files / "labels.json"), str(files / "detections.json"), fps=25)
+    (sequence,) = dataset.load()
+    assert sequence.fps == 25 and len(sequence) == 40
+    predictions = rpt.Triangulator.for_sequence(sequence).process_sequence(sequence)
+    rpt.export.write(tmp_path / "py", predictions, ["csv", "trc"])
+    assert (tmp_path / "py" / "predictions.csv").read_bytes() == (tmp_path / "cli" / "predictions.csv").read_bytes()
+    names = sorted(p.name for p in (tmp_path / "cli" / "trc").iterdir())
+    assert names and names == sorted(p.name for p in (tmp_path / "py" / "trc").iterdir())
+
+
+def test_missing_detections_file(files):
+    with pytest.raises(FileNotFoundError, match=r"nothing.json: file not found"):
+        rpt.datasets.open_cameras(str(files / "labels.json"), str(files / "nothing.json"))
