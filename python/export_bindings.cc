@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// rpt.export.write: the CLI's exports of 3D persons (--export json,csv,trc; engine/outputs/) from
+// rpt.export.write: the CLI's exports of 3D persons (--export json,csv,trc,npz,h5; engine/outputs/) from
 // rpt.Predictions, written by the same writers (FrameSinks fed frame by frame as engine::Run feeds
 // them). The formats are dispatched in one place, ExportSinks below: a new export format is one more
 // case there.
@@ -13,8 +13,11 @@
 
 #include "core/errors.h"
 #include "engine/frame_sink.h"
+#include "engine/outputs/array_frames.h"
 #include "engine/outputs/csv_export.h"
 #include "engine/outputs/export_options.h"
+#include "engine/outputs/h5_export.h"
+#include "engine/outputs/npz_export.h"
 #include "engine/outputs/predictions_writer.h"
 #include "engine/outputs/trc_export.h"
 #include "python/bindings.h"
@@ -27,6 +30,8 @@ struct ExportSinks {
   std::unique_ptr<engine::PredictionsWriter> json;
   std::unique_ptr<engine::CsvExport> csv;
   std::unique_ptr<engine::TrcExport> trc;
+  std::unique_ptr<engine::ArrayFrames> arrays;  // the frames of the npz and h5 exports
+  std::filesystem::path npz, h5;
   std::vector<engine::FrameSink*> all;
   std::vector<std::filesystem::path> written;
 
@@ -49,10 +54,17 @@ struct ExportSinks {
           all.push_back(trc.get());
           written.push_back(dir / "trc");
           break;
-        case engine::ExportFormat::kNpz:  // the hook for the NumPy and HDF5 exports (issue 20)
-        case engine::ExportFormat::kH5:
-          throw ConfigError("export.write: " + std::string(engine::ExportFormatName(format)) +
-                            " is not written yet (json, csv and trc are)");
+        case engine::ExportFormat::kNpz:
+        case engine::ExportFormat::kH5: {
+          const std::filesystem::path path = dir / std::string(engine::ExportFileName(format));
+          (format == engine::ExportFormat::kNpz ? npz : h5) = path;
+          if (!arrays) {
+            arrays = std::make_unique<engine::ArrayFrames>(path, run_id, num_sequences, options);
+            all.push_back(arrays.get());
+          }
+          written.push_back(path);
+          break;
+        }
       }
     }
   }
@@ -60,6 +72,9 @@ struct ExportSinks {
   void Finish() {
     if (json) json->Finish();
     if (csv) csv->Finish();
+    if (!npz.empty()) engine::WriteNpzExport(npz, *arrays);
+    if (!h5.empty()) engine::WriteH5Export(h5, *arrays);
+    arrays.reset();  // its scratch files go
   }
 };
 
@@ -117,17 +132,15 @@ void RegisterExport(py::module_& exports) {
               py::arg("filled_joints") = true, py::arg("trc_axes") = "z-up", py::arg("trc_units") = "m",
               py::arg("run_id") = "python",
               "Writes rpt.Predictions (or a list, one per sequence) as the CLI's --export does: formats 'json' "
-              "(predictions.json), 'csv' (predictions.csv), 'trc' (trc/, one file per track), a comma text or a "
-              "list; filled_joints=False writes filled joints as missing; trc_axes 'z-up' | 'y-up' (OpenSim); "
+              "(predictions.json), 'csv' (predictions.csv), 'trc' (trc/, one file per track), 'npz' "
+              "(predictions.npz), 'h5' (predictions.h5), a comma text or a list; filled_joints=False writes "
+              "filled joints as missing; trc_axes 'z-up' | 'y-up' (OpenSim); "
               "trc_units 'm' | 'mm'. Returns the paths written. Schemas: docs/own_data.md.");
   exports.def(
       "formats",
       [] {
         std::vector<std::string> names;
-        for (const engine::ExportFormat f :
-             {engine::ExportFormat::kJson, engine::ExportFormat::kCsv, engine::ExportFormat::kTrc}) {
-          names.emplace_back(engine::ExportFormatName(f));
-        }
+        for (const engine::ExportFormat f : engine::kExportFormats) names.emplace_back(engine::ExportFormatName(f));
         return names;
       },
       "The formats write() writes");

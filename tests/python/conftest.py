@@ -33,7 +33,7 @@ def scene_params(scene=SCENE):
 def cli_eval(tmp_path_factory):
     """`rpt eval` on SCENE with every export: (summary of --json, output folder)."""
     out = tmp_path_factory.mktemp("cli_eval") / "run"
-    done = run_cli("eval", "--dataset", "synthetic", *scene_params(), "--export", "json,csv,trc", "--json",
+    done = run_cli("eval", "--dataset", "synthetic", *scene_params(), "--export", "json,csv,trc,npz", "--json",
                    "--quiet", "--out", out)
     return json.loads(done.stdout), out
 

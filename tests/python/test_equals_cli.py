@@ -45,8 +45,14 @@ def test_predictions_equal_predictions_json(cli_eval, predictions):
 
 def test_exports_equal_the_clis(cli_eval, predictions, tmp_path):
     _, out = cli_eval
-    written = rpt.export.write(tmp_path, predictions, "json,csv,trc")
-    assert [p.name for p in written] == ["predictions.json", "predictions.csv", "trc"]
+    written = rpt.export.write(tmp_path, predictions, "json,csv,trc,npz")
+    assert [p.name for p in written] == ["predictions.json", "predictions.csv", "trc", "predictions.npz"]
+    with np.load(tmp_path / "predictions.npz") as ours, np.load(out / "predictions.npz") as theirs:
+        assert sorted(ours.files) == sorted(theirs.files)
+        assert str(ours["run_id"]) == "python"
+        for name in ours.files:
+            if name != "run_id":
+                np.testing.assert_array_equal(ours[name], theirs[name], err_msg=name)
     assert (tmp_path / "predictions.csv").read_bytes() == (out / "predictions.csv").read_bytes()
     cli_trc = sorted(p.name for p in (out / "trc").iterdir())
     assert cli_trc and sorted(p.name for p in (tmp_path / "trc").iterdir()) == cli_trc

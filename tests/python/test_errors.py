@@ -197,8 +197,8 @@ def test_metrics_errors(scene, predictions):
 
 
 def test_export_errors(predictions, tmp_path):
-    with pytest.raises(rpt.ConfigError, match=r"npz is not written yet"):
-        rpt.export.write(tmp_path, predictions, "npz")
+    with pytest.raises(rpt.ConfigError, match=r"'xls' is not one of json, csv, trc, npz, h5"):
+        rpt.export.write(tmp_path, predictions, "json,xls")
     with pytest.raises(rpt.ConfigError, match=r"trc_axes: 'x-up' is not z-up \| y-up"):
         rpt.export.write(tmp_path, predictions, "trc", trc_axes="x-up")
 
