@@ -45,9 +45,17 @@ Bytes DetectionLines(const Detections& detections) {
         const auto person = frame.views[v].Person(p);
         for (int j = 0; j < frame.views[v].num_joints; ++j) {
           if (j) text += ", ";
-          text += person(2, j) > 0 ? "[" + std::to_string(person(0, j)) + ", " + std::to_string(person(1, j)) + ", " +
-                                         std::to_string(person(2, j)) + "]"
-                                   : std::string("null");
+          if (person(2, j) > 0) {  // appended piece by piece: GCC 12 warns falsely (-Wrestrict) on "[" + string
+            text += "[";
+            text += std::to_string(person(0, j));
+            text += ", ";
+            text += std::to_string(person(1, j));
+            text += ", ";
+            text += std::to_string(person(2, j));
+            text += "]";
+          } else {
+            text += "null";
+          }
         }
         text += "]";
       }
