@@ -69,8 +69,17 @@ void PrintOptionSuggestions(CLI::App& app) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  rpt::cli::InstallInterruptHandler();  // before any other thread starts
-  rpt::cli::InstallMemoryReserve(32 << 20);  // out of memory ends in a message, not std::terminate
+  bool started = false;
+  try {
+    rpt::cli::InstallInterruptHandler();  // before any other thread starts
+    started = rpt::cli::InstallMemoryReserve(32 << 20);  // out of memory ends in a message, not std::terminate
+  } catch (const std::exception&) {  // the handler's thread could not start (std::system_error, bad_alloc)
+  }
+  if (!started) {
+    std::fprintf(stderr, "error: out of memory starting rpt: the memory limit of this process (ulimit -v) leaves no room "
+                 "to run\n");
+    return 1;
+  }
   rpt::SkipHdf5CleanupAtExit();          // before any other HDF5 call
   CLI::App app{"rpt: RapidPoseTriangulation, learning-free multi-view multi-person 3D pose triangulation"};
   app.require_subcommand(1);

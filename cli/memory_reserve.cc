@@ -19,9 +19,12 @@ void ReleaseReserveAndFail() {
 
 }  // namespace
 
-void InstallMemoryReserve(std::size_t bytes) {
-  std::free(reserve.exchange(std::malloc(bytes)));
+bool InstallMemoryReserve(std::size_t bytes) {
+  void* block = std::malloc(bytes);
+  if (block == nullptr) return false;
+  std::free(reserve.exchange(block));
   std::set_new_handler(ReleaseReserveAndFail);
+  return true;
 }
 
 }  // namespace rpt::cli

@@ -12,7 +12,9 @@
 namespace rpt::cli {
 
 // Reserves `bytes` (not touched: it costs address space, not resident memory) and installs the
-// new-handler that releases it and throws std::bad_alloc. Call once, first thing in main().
-void InstallMemoryReserve(std::size_t bytes);
+// new-handler that releases it and throws std::bad_alloc. Call once, first thing in main(). False
+// when the reserve itself cannot be had: the process is at its memory limit before doing anything,
+// and any allocation could end in std::terminate (the caller stops with an error).
+bool InstallMemoryReserve(std::size_t bytes);
 
 }  // namespace rpt::cli
