@@ -116,6 +116,37 @@ py::array_t<double> PersonsArray(const Poses3D& persons) {
   return array;
 }
 
+namespace {
+
+template <class T>
+py::array_t<T> ReadOnlyView(std::vector<py::ssize_t> shape, const T* data, py::handle owner) {
+  py::array_t<T> view(std::move(shape), {}, data, owner);
+  view.attr("setflags")(py::arg("write") = false);
+  return view;
+}
+
+}  // namespace
+
+py::array_t<double> PersonsView(const Poses3D& persons, py::handle owner) {
+  return ReadOnlyView<double>(
+      {static_cast<py::ssize_t>(persons.num_persons()), static_cast<py::ssize_t>(persons.num_joints), py::ssize_t{4}},
+      persons.data.data(), owner);
+}
+
+py::array_t<uint8_t> ProvenanceView(const Poses3D& persons, py::handle owner) {
+  return ReadOnlyView<uint8_t>(
+      {static_cast<py::ssize_t>(persons.num_persons()), static_cast<py::ssize_t>(persons.num_joints)},
+      persons.provenance.data(), owner);
+}
+
+py::array_t<double> ViewOf(const Poses2D& view, int num_joints, py::handle owner) {
+  const int persons = view.num_joints == num_joints ? view.num_persons() : 0;
+  if (persons == 0) return ViewArray(Poses2D{}, num_joints);
+  return ReadOnlyView<double>(
+      {static_cast<py::ssize_t>(persons), static_cast<py::ssize_t>(num_joints), py::ssize_t{3}}, view.data.data(),
+      owner);
+}
+
 py::array_t<long long> TrackIdsArray(const Poses3D& persons) {
   py::array_t<long long> array(static_cast<py::ssize_t>(persons.num_persons()));
   std::copy(persons.track_ids.begin(), persons.track_ids.end(), array.mutable_data());

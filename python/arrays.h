@@ -38,6 +38,14 @@ py::array_t<double> PersonsArray(const Poses3D& persons);
 py::array_t<long long> TrackIdsArray(const Poses3D& persons);
 py::array_t<uint8_t> ProvenanceArray(const Poses3D& persons);
 py::array_t<double> ViewArray(const Poses2D& view, int num_joints);
+// Zero-copy, read-only views of stored results (rpt.Predictions): (persons, joints, 4) float64 and
+// (persons, joints) uint8 over `persons`' own buffers, kept alive by `owner` (the Python object that
+// holds `persons`, which never changes them).
+py::array_t<double> PersonsView(const Poses3D& persons, py::handle owner);
+py::array_t<uint8_t> ProvenanceView(const Poses3D& persons, py::handle owner);
+// The same for 2D detections and ground truth held by a frame (rpt.datasets.Frame): (persons,
+// joints, 3) float64; a view of another joint count is empty (as ViewArray).
+py::array_t<double> ViewOf(const Poses2D& view, int num_joints, py::handle owner);
 
 // Fixed-size matrices of a camera, refused unless finite and of the shape.
 Eigen::Matrix3d Matrix3From(py::handle object, const std::string& what);

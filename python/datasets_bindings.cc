@@ -26,11 +26,12 @@ namespace {
 
 py::object TimeObject(double timestamp_s) { return std::isnan(timestamp_s) ? py::none() : py::cast(timestamp_s); }
 
-py::list ViewsList(const SequenceFrame& frame, const SequenceHeader& header) {
+// Read-only views of the frame's detections, kept alive by `owner` (the rpt.datasets.Frame).
+py::list ViewsList(const SequenceFrame& frame, const SequenceHeader& header, py::handle owner) {
   py::list views;
   const int joints = static_cast<int>(header.detection_joints.size());
   for (size_t c = 0; c < header.cameras.size(); ++c) {
-    views.append(c < frame.views.size() ? ViewArray(frame.views[c], joints) : ViewArray(Poses2D{}, joints));
+    views.append(c < frame.views.size() ? ViewOf(frame.views[c], joints, owner) : ViewArray(Poses2D{}, joints));
   }
   return views;
 }
@@ -215,11 +216,15 @@ void RegisterDatasets(py::module_& datasets, py::module_& synthetic) {
       .def_property_readonly(
           "timestamp", [](const Frame& f) { return TimeObject(f.frame.timestamp_s); }, "seconds; None when unknown")
       .def_property_readonly(
-          "views", [](const Frame& f) { return ViewsList(f.frame, *f.sequence); },
-          "per camera an array (persons, joints, 3): u_px, v_px, score")
+          "views",
+          [](py::object self) {
+            const Frame& f = self.cast<const Frame&>();
+            return ViewsList(f.frame, *f.sequence, self);
+          },
+          "per camera an array (persons, joints, 3): u_px, v_px, score (read-only views, no copy)")
       .def_property_readonly(
-          "gt", [](const Frame& f) { return PersonsArray(f.frame.gt); },
-          "ground truth (persons, gt joints, 4): x, y, z (m), score")
+          "gt", [](py::object self) { return PersonsView(self.cast<const Frame&>().frame.gt, self); },
+          "ground truth (persons, gt joints, 4): x, y, z (m), score (a read-only view, no copy)")
       .def_property_readonly(
           "gt_ids", [](const Frame& f) { return TrackIdsArray(f.frame.gt); },
           "the dataset's person ids of the ground truth (-1: none)")

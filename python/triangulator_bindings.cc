@@ -246,14 +246,16 @@ void RegisterTriangulator(py::module_& m) {
       .def("__len__", [](const Predictions& p) { return p.persons.size(); })
       .def(
           "__getitem__",
-          [](const Predictions& p, long i) {
+          [](py::object self, long i) {
+            const Predictions& p = self.cast<const Predictions&>();
             const long n = static_cast<long>(p.persons.size());
             if (i < 0) i += n;
             if (i < 0 || i >= n) throw py::index_error("frame index out of range");
             const Poses3D& persons = p.persons[static_cast<size_t>(i)];
-            return py::make_tuple(PersonsArray(persons), TrackIdsArray(persons));
+            return py::make_tuple(PersonsView(persons, self), TrackIdsArray(persons));
           },
-          "(persons (P, J, 4), track ids (P,)) of frame i")
+          "(persons (P, J, 4), track ids (P,)) of frame i; persons is a read-only view of the stored result "
+          "(no copy; .copy() to change it)")
       .def_readonly("sequence", &Predictions::sequence)
       .def_readonly("joint_names", &Predictions::joints)
       .def_readonly("frame_ids", &Predictions::frame_ids)
@@ -267,7 +269,10 @@ void RegisterTriangulator(py::module_& m) {
           },
           "seconds per frame, NaN when unknown")
       .def(
-          "provenance", [](const Predictions& p, size_t i) { return ProvenanceArray(p.persons.at(i)); },
+          "provenance",
+          [](py::object self, size_t i) {
+            return ProvenanceView(self.cast<const Predictions&>().persons.at(i), self);
+          },
           py::arg("frame"),
           "(P, J) provenance codes of frame i (0 triangulated, 1 filled, 2 smoothed, 3 lifted, 4 predicted)")
       .def(

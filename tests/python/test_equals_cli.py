@@ -143,3 +143,33 @@ def test_offline_smoothing_equals_the_clis(scene, tmp_path):
     for key, value in cli_summary.items():
         if key not in TIMING_KEYS:
             assert summary[key] == value, key
+
+
+def test_stored_results_are_read_only_views_without_copies(scene):
+    predictions = rpt.Triangulator.for_sequence(scene).process_sequence(scene)
+    frame = next(i for i in range(len(predictions)) if predictions[i][0].shape[0] > 0)
+    persons, _ = predictions[frame]
+    again, _ = predictions[frame]
+    assert np.shares_memory(persons, again)  # both views of the one stored result
+    assert not persons.flags.writeable
+    with pytest.raises(ValueError, match="read-only"):
+        persons[0, 0, 0] = 1.0
+    provenance = predictions.provenance(frame)
+    assert np.shares_memory(provenance, predictions.provenance(frame)) and not provenance.flags.writeable
+    expected = persons.copy()
+    del predictions, again  # the view keeps the stored result alive
+    np.testing.assert_array_equal(persons, expected)
+    assert persons.shape[1:] == (len(scene.joint_names) + 3, 4)
+
+
+def test_frames_hand_out_read_only_views_of_their_detections_and_gt():
+    frame = next(iter(rpt.datasets.open("synthetic", frames=2, cameras=3, people=2)))
+    views, gt = frame.views, frame.gt
+    assert len(views) == 3 and gt.shape == (2, gt.shape[1], 4)
+    for view, again in zip(views, frame.views):
+        assert view.shape[0] > 0 and np.shares_memory(view, again) and not view.flags.writeable
+    assert np.shares_memory(gt, frame.gt) and not gt.flags.writeable
+    expected = [v.copy() for v in views]
+    del frame  # the views keep the frame alive
+    for view, copy in zip(views, expected):
+        np.testing.assert_array_equal(view, copy)
