@@ -5,6 +5,7 @@
 #include <cctype>
 #include <cmath>
 #include <optional>
+#include <utility>
 
 #include "core/errors.h"
 #include "core/utf8.h"
@@ -90,84 +91,54 @@ std::string ParseErrorText(const nlohmann::detail::exception& e) {
   return "JSON parse error: " + BoundQuote(msg);
 }
 
-// nlohmann's DOM builder, except that every error the parser reports (syntax errors and number
+// A nlohmann SAX handler (the DOM builder, or the acceptor that only checks), except that every error the parser reports (syntax errors and number
 // overflows such as 1e400, which nlohmann reports as out_of_range.406 rather than parse_error)
 // becomes an InputError naming the source, line and column, and that arrays and objects nested
 // deeper than kMaxJsonDepth stop the parse. sax_parse calls the methods of this type (it is a
 // template on the SAX type), so hiding the base's methods is enough.
+template <class Sax>
+class Guarded : public Sax {
+ public:
+  template <class... SaxArgs>
+  Guarded(std::string_view text, const std::string& source, SaxArgs&&... sax_args)
+      : Sax(std::forward<SaxArgs>(sax_args)...), text_(text), source_(source) {}
+
+  bool start_object(std::size_t size) {
+    if (++depth_ > kMaxJsonDepth) ThrowTooDeep(text_, source_);
+    return Sax::start_object(size);
+  }
+  bool start_array(std::size_t size) {
+    if (++depth_ > kMaxJsonDepth) ThrowTooDeep(text_, source_);
+    return Sax::start_array(size);
+  }
+  bool end_object() {
+    --depth_;
+    return Sax::end_object();
+  }
+  bool end_array() {
+    --depth_;
+    return Sax::end_array();
+  }
+
+  [[noreturn]] bool parse_error(std::size_t position, const std::string& /*token*/, const nlohmann::detail::exception& e) {
+    ThrowAt(text_, source_, position, ParseErrorText(e));
+  }
+
+ private:
+  std::string_view text_;
+  const std::string& source_;
+  int depth_ = 0;
+};
+
+// Builds the document; and the same errors without the document.
 template <class Json>
-class DomBuilder : public nlohmann::detail::json_sax_dom_parser<Json> {
-  using Base = nlohmann::detail::json_sax_dom_parser<Json>;
-
- public:
-  DomBuilder(Json& root, std::string_view text, const std::string& source)
-      : Base(root, /*allow_exceptions=*/true), text_(text), source_(source) {}
-
-  bool start_object(std::size_t size) {
-    if (++depth_ > kMaxJsonDepth) ThrowTooDeep(text_, source_);
-    return Base::start_object(size);
-  }
-  bool start_array(std::size_t size) {
-    if (++depth_ > kMaxJsonDepth) ThrowTooDeep(text_, source_);
-    return Base::start_array(size);
-  }
-  bool end_object() {
-    --depth_;
-    return Base::end_object();
-  }
-  bool end_array() {
-    --depth_;
-    return Base::end_array();
-  }
-
-  [[noreturn]] bool parse_error(std::size_t position, const std::string& /*token*/, const nlohmann::detail::exception& e) {
-    ThrowAt(text_, source_, position, ParseErrorText(e));
-  }
-
- private:
-  std::string_view text_;
-  const std::string& source_;
-  int depth_ = 0;
-};
-
-// DomBuilder's errors without the document.
-class SyntaxChecker : public nlohmann::detail::json_sax_acceptor<nlohmann::json> {
-  using Base = nlohmann::detail::json_sax_acceptor<nlohmann::json>;
-
- public:
-  SyntaxChecker(std::string_view text, const std::string& source) : text_(text), source_(source) {}
-
-  bool start_object(std::size_t size) {
-    if (++depth_ > kMaxJsonDepth) ThrowTooDeep(text_, source_);
-    return Base::start_object(size);
-  }
-  bool start_array(std::size_t size) {
-    if (++depth_ > kMaxJsonDepth) ThrowTooDeep(text_, source_);
-    return Base::start_array(size);
-  }
-  bool end_object() {
-    --depth_;
-    return Base::end_object();
-  }
-  bool end_array() {
-    --depth_;
-    return Base::end_array();
-  }
-
-  [[noreturn]] bool parse_error(std::size_t position, const std::string& /*token*/, const nlohmann::detail::exception& e) {
-    ThrowAt(text_, source_, position, ParseErrorText(e));
-  }
-
- private:
-  std::string_view text_;
-  const std::string& source_;
-  int depth_ = 0;
-};
+using DomBuilder = Guarded<nlohmann::detail::json_sax_dom_parser<Json>>;
+using SyntaxChecker = Guarded<nlohmann::detail::json_sax_acceptor<nlohmann::json>>;
 
 template <class Json>
 Json Parse(std::string_view text, const std::string& source) {
   Json root;
-  DomBuilder<Json> builder(root, text, source);
+  DomBuilder<Json> builder(text, source, root, /*allow_exceptions=*/true);
   Json::sax_parse(text.begin(), text.end(), &builder);
   return root;
 }

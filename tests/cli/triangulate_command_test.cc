@@ -27,6 +27,7 @@
 #include "engine/input.h"
 #include "tests/cli/cli_test_util.h"
 #include "tests/cli/triangulate_test_util.h"
+#include "tests/hdf5_test_file.h"
 
 namespace rpt {
 namespace {
@@ -266,58 +267,6 @@ TEST_F(Triangulate, ExportsReadBackEqualTheJson) {
   EXPECT_EQ(test::RunRpt(input + " --no-predictions --export csv --out " + (dir_ / "x").string()).exit_code, 2);
 }
 
-// A dataset of an HDF5 file through the C API: its values as doubles, its shape, strings.
-class H5File {
- public:
-  explicit H5File(const fs::path& path) : file_(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT)) {}
-  ~H5File() {
-    if (file_ >= 0) H5Fclose(file_);
-  }
-  bool ok() const { return file_ >= 0; }
-  std::vector<std::int64_t> Shape(const std::string& name) const {
-    const hid_t dataset = H5Dopen2(file_, name.c_str(), H5P_DEFAULT);
-    const hid_t space = H5Dget_space(dataset);
-    std::vector<hsize_t> dims(static_cast<size_t>(std::max(0, H5Sget_simple_extent_ndims(space))));
-    H5Sget_simple_extent_dims(space, dims.data(), nullptr);
-    H5Sclose(space);
-    H5Dclose(dataset);
-    return {dims.begin(), dims.end()};
-  }
-  std::vector<double> Doubles(const std::string& name) const {
-    size_t count = 1;
-    for (const std::int64_t d : Shape(name)) count *= static_cast<size_t>(d);
-    std::vector<double> values(count);
-    const hid_t dataset = H5Dopen2(file_, name.c_str(), H5P_DEFAULT);
-    EXPECT_GE(H5Dread(dataset, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), 0) << name;
-    H5Dclose(dataset);
-    return values;
-  }
-  std::vector<std::string> Strings(const std::string& name) const {
-    const hid_t dataset = H5Dopen2(file_, name.c_str(), H5P_DEFAULT);
-    const hid_t type = H5Dget_type(dataset);
-    const size_t width = H5Tget_size(type), count = static_cast<size_t>(Shape(name).at(0));
-    std::vector<char> buffer(width * count);
-    EXPECT_GE(H5Dread(dataset, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, buffer.data()), 0) << name;
-    H5Tclose(type);
-    H5Dclose(dataset);
-    std::vector<std::string> out;
-    for (size_t i = 0; i < count; ++i)
-      out.emplace_back(buffer.data() + i * width, strnlen(buffer.data() + i * width, width));
-    return out;
-  }
-  std::string Attribute(const std::string& name) const {
-    const hid_t attribute = H5Aopen(file_, name.c_str(), H5P_DEFAULT);
-    const hid_t type = H5Aget_type(attribute);
-    std::vector<char> buffer(H5Tget_size(type) + 1, '\0');
-    H5Aread(attribute, type, buffer.data());
-    H5Tclose(type);
-    H5Aclose(attribute);
-    return buffer.data();
-  }
-
- private:
-  hid_t file_;
-};
 
 // One array of predictions.npz or predictions.h5, whichever was read: shape and values.
 struct Array {
@@ -343,7 +292,7 @@ Arrays ReadNpzArrays(const fs::path& path) {
 }
 
 Arrays ReadH5Arrays(const fs::path& path) {
-  const H5File h5(path);
+  const test::Hdf5TestFile h5(path);
   EXPECT_TRUE(h5.ok()) << path;
   Arrays arrays;
   for (const std::string name :

@@ -21,6 +21,7 @@
 #include "engine/outputs/array_frames.h"
 #include "engine/outputs/h5_export.h"
 #include "engine/outputs/npz_export.h"
+#include "tests/hdf5_test_file.h"
 
 namespace rpt::engine {
 namespace {
@@ -186,69 +187,16 @@ void ExpectNpz(const fs::path& path, const Expected& e) {
   EXPECT_EQ(npz.size(), 14u);
 }
 
-// The HDF5 file through the C API only.
-class H5 {
- public:
-  explicit H5(const fs::path& path) : file_(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT)) {}
-  ~H5() {
-    if (file_ >= 0) H5Fclose(file_);
-  }
-  bool ok() const { return file_ >= 0; }
-  std::vector<hsize_t> Dims(const std::string& name) const {
-    const hid_t dataset = H5Dopen2(file_, name.c_str(), H5P_DEFAULT);
-    const hid_t space = H5Dget_space(dataset);
-    std::vector<hsize_t> dims(static_cast<size_t>(H5Sget_simple_extent_ndims(space)));
-    H5Sget_simple_extent_dims(space, dims.data(), nullptr);
-    H5Sclose(space);
-    H5Dclose(dataset);
-    return dims;
-  }
-  std::vector<double> Doubles(const std::string& name) const {
-    size_t count = 1;
-    for (const hsize_t d : Dims(name)) count *= d;
-    std::vector<double> values(count);
-    const hid_t dataset = H5Dopen2(file_, name.c_str(), H5P_DEFAULT);
-    EXPECT_GE(H5Dread(dataset, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), 0) << name;
-    H5Dclose(dataset);
-    return values;
-  }
-  std::vector<std::string> Strings(const std::string& name) const {
-    const hid_t dataset = H5Dopen2(file_, name.c_str(), H5P_DEFAULT);
-    const hid_t type = H5Dget_type(dataset);
-    EXPECT_EQ(H5Tget_cset(type), H5T_CSET_UTF8) << name;
-    const size_t width = H5Tget_size(type), count = Dims(name)[0];
-    std::vector<char> buffer(width * count);
-    EXPECT_GE(H5Dread(dataset, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, buffer.data()), 0) << name;
-    H5Tclose(type);
-    H5Dclose(dataset);
-    std::vector<std::string> out;
-    for (size_t i = 0; i < count; ++i)
-      out.emplace_back(buffer.data() + i * width, strnlen(buffer.data() + i * width, width));
-    return out;
-  }
-  std::string Attribute(const std::string& name) const {
-    const hid_t attribute = H5Aopen(file_, name.c_str(), H5P_DEFAULT);
-    const hid_t type = H5Aget_type(attribute);
-    std::vector<char> buffer(H5Tget_size(type) + 1, '\0');
-    H5Aread(attribute, type, buffer.data());
-    H5Tclose(type);
-    H5Aclose(attribute);
-    return buffer.data();
-  }
-
- private:
-  hid_t file_;
-};
 
 void ExpectH5(const fs::path& path, const Expected& e) {
-  const H5 h5(path);
+  const test::Hdf5TestFile h5(path);
   ASSERT_TRUE(h5.ok()) << path;
-  EXPECT_EQ(h5.Dims("/poses"), (std::vector<hsize_t>{5, 3, 2, 4}));
+  EXPECT_EQ(h5.Shape("/poses"), (std::vector<std::int64_t>{5, 3, 2, 4}));
   ExpectSameNumbers(h5.Doubles("/poses"), e.poses, "h5 poses");
-  EXPECT_EQ(h5.Dims("/track_ids"), (std::vector<hsize_t>{5, 3}));
+  EXPECT_EQ(h5.Shape("/track_ids"), (std::vector<std::int64_t>{5, 3}));
   ExpectSameNumbers(h5.Doubles("/track_ids"), AsDoubles(e.track_ids), "h5 track_ids");
   ExpectSameNumbers(h5.Doubles("/num_persons"), AsDoubles(e.num_persons), "h5 num_persons");
-  EXPECT_EQ(h5.Dims("/provenance"), (std::vector<hsize_t>{5, 3, 2}));
+  EXPECT_EQ(h5.Shape("/provenance"), (std::vector<std::int64_t>{5, 3, 2}));
   ExpectSameNumbers(h5.Doubles("/provenance"), AsDoubles(e.provenance), "h5 provenance");
   ExpectSameNumbers(h5.Doubles("/times_s"), e.times_s, "h5 times_s");
   EXPECT_EQ(h5.Strings("/frame_ids"), e.ids);
