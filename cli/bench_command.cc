@@ -34,7 +34,7 @@
 namespace rpt::cli {
 namespace {
 
-using Json = nlohmann::ordered_json;
+using OrderedJson = nlohmann::ordered_json;
 
 struct BenchArgs {
   bool io = false;
@@ -138,7 +138,7 @@ void RunIoBench(const BenchArgs& args) {
   if (frames_read != detections.frames.size()) throw InputError(path.string() + ": read back a different frame count");
   const double read_s = metrics::Median(reads);
   if (args.json) {
-    Json j;
+    OrderedJson j;
     j["frames"] = args.io_frames;
     j["views"] = sequence.cameras.size();
     j["persons"] = persons;
@@ -195,12 +195,12 @@ void RunBench(const BenchArgs& args) {
   }
   const engine::RunInfo info = engine::CollectRunInfo(1);
   if (args.json) {
-    Json j;
+    OrderedJson j;
     j["run"] = engine::RunInfoJson(info);
     j["repeat"] = args.repeat;
-    j["scenes"] = Json::array();
+    j["scenes"] = OrderedJson::array();
     for (const SceneResult& r : results) {
-      Json s;
+      OrderedJson s;
       s["name"] = r.scene.name;
       s["description"] = r.scene.description;
       s["frames"] = r.scene.frames;

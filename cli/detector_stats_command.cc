@@ -32,7 +32,7 @@
 namespace rpt::cli {
 namespace {
 
-using Json = nlohmann::ordered_json;
+using OrderedJson = nlohmann::ordered_json;
 using detector_stats::DetectorStats;
 
 struct DetectorStatsArgs {
@@ -108,9 +108,9 @@ void RunComparison(const DetectorStatsArgs& args) {
     inputs.push_back(described);
   }
   if (args.json) {
-    Json j = Json::object();
+    OrderedJson j = OrderedJson::object();
     for (size_t c = 0; c < columns.size(); ++c) {
-      Json entry;
+      OrderedJson entry;
       entry["input"] = Describe(inputs[c]);
       entry.update(engine::DetectorStatsJson(columns[c].stats));
       j[c == 0 ? std::string("input") : args.compare[c - 1]] = std::move(entry);
@@ -131,7 +131,7 @@ void RunDetectorStats(const DetectorStatsArgs& args) {
   PrintInputWarnings(input_warnings);
   const DetectorStats stats = ComputeStats(sequences, args);
   if (args.json) {
-    Json j;
+    OrderedJson j;
     j["input"] = Describe(args.input);
     j.update(engine::DetectorStatsJson(stats));
     std::cout << io::DumpJson(j, 2) << "\n";

@@ -45,7 +45,7 @@ namespace rpt::cli {
 namespace {
 
 namespace fs = std::filesystem;
-using Json = nlohmann::ordered_json;
+using OrderedJson = nlohmann::ordered_json;
 
 struct SweepArgs {
   engine::InputSpec input;
@@ -66,9 +66,9 @@ std::pair<int, int> ParseShard(const std::string& text) {
   return {k, n};
 }
 
-void WriteTables(const fs::path& dir, const Json& rows, const std::string& stem) {
-  std::vector<std::pair<std::string, Json>> table;
-  for (const Json& row : rows) table.emplace_back(row["name"].get<std::string>(), row["summary"]);
+void WriteTables(const fs::path& dir, const OrderedJson& rows, const std::string& stem) {
+  std::vector<std::pair<std::string, OrderedJson>> table;
+  for (const OrderedJson& row : rows) table.emplace_back(row["name"].get<std::string>(), row["summary"]);
   io::WriteTextFile(dir / (stem + ".csv"), io::NamedBy::kRpt, engine::SummaryCsv(table));
   io::WriteTextFile(dir / (stem + ".md"), io::NamedBy::kRpt, engine::SummaryMarkdown(table));
 }
@@ -77,7 +77,7 @@ void WriteTables(const fs::path& dir, const Json& rows, const std::string& stem)
 // `whole_folder` the three are swapped in together (io::StagedFolder; other files in `out`, e.g. shard
 // files, are kept). Shards share a folder and may finish at the same time on different machines:
 // a folder swap could then drop another shard's files, so a shard replaces only its own files.
-void WriteSweepFiles(const fs::path& out, const Json& file, const std::string& stem, bool whole_folder) {
+void WriteSweepFiles(const fs::path& out, const OrderedJson& file, const std::string& stem, bool whole_folder) {
   std::optional<io::StagedFolder> folder;
   if (whole_folder) folder.emplace(out);
   std::error_code ec;
@@ -139,7 +139,7 @@ void RunSweep(const SweepArgs& args) {
   if (!per_config_input) PrintInputWarnings(warnings);
   std::vector<InputWarnings> config_warnings(mine.size());
 
-  std::vector<Json> summaries(mine.size());
+  std::vector<OrderedJson> summaries(mine.size());
   std::exception_ptr error;
   std::mutex error_mutex;
   std::atomic<long> done{0};
@@ -184,9 +184,9 @@ void RunSweep(const SweepArgs& args) {
     PrintInputWarnings(warnings);
   }
 
-  Json rows = Json::array();
+  OrderedJson rows = OrderedJson::array();
   for (int c = 0; c < count; ++c) {
-    Json set = Json::object();
+    OrderedJson set = OrderedJson::object();
     for (const auto& [key, value] : all[mine[c]].overrides) set[key] = value;
     rows.push_back({{"index", mine[c]},
                     {"name", all[mine[c]].name},
@@ -196,13 +196,13 @@ void RunSweep(const SweepArgs& args) {
   }
   // The base configuration's value of every varied option (sweep.html shows them greyed where a
   // row does not set the option).
-  Json base = Json::object();
+  OrderedJson base = OrderedJson::object();
   for (const engine::SweepConfiguration& v : all) {
     for (const auto& [key, value] : v.overrides) {
       if (key.rfind("param.", 0) != 0 && !base.contains(key)) base[key] = engine::GetConfigOption(base_options, key);
     }
   }
-  Json file;
+  OrderedJson file;
   file["total"] = all.size();
   file["shard"] = args.shard;
   engine::RunInfo info = engine::CollectRunInfo(threads);
@@ -213,8 +213,8 @@ void RunSweep(const SweepArgs& args) {
   const std::string stem = shards == 1 ? "sweep" : "sweep-shard-" + std::to_string(shard) + "-of-" + std::to_string(shards);
   WriteSweepFiles(args.out, file, stem, /*whole_folder=*/shards == 1);
   std::cout << engine::SummaryMarkdown([&] {
-    std::vector<std::pair<std::string, Json>> table;
-    for (const Json& row : rows) table.emplace_back(row["name"].get<std::string>(), row["summary"]);
+    std::vector<std::pair<std::string, OrderedJson>> table;
+    for (const OrderedJson& row : rows) table.emplace_back(row["name"].get<std::string>(), row["summary"]);
     return table;
   }());
   std::printf("%d of %zu configurations; tables in %s/%s.{json,csv,md,html}\n", count, all.size(),
@@ -237,8 +237,8 @@ const nlohmann::json& ObjectAt(const nlohmann::json& root, const std::string& po
 // [0, total), name, set (optional object), default (optional boolean), summary (an object whose
 // table columns are numbers or null). A damaged or hand-edited file is an InputError naming the
 // file and the JSON pointer, not an "internal error" from deep inside nlohmann.
-Json CheckedShardRow(const nlohmann::json& shard, const std::string& pointer, const std::string& source,
-                     std::int64_t total, int* index) {
+OrderedJson CheckedShardRow(const nlohmann::json& shard, const std::string& pointer, const std::string& source,
+                            std::int64_t total, int* index) {
   ObjectAt(shard, pointer, source, "a row {\"index\", \"name\", \"set\", \"summary\"}");
   *index = static_cast<int>(io::JsonIntIn(shard, pointer + "/index", source, 0, total - 1));
   io::JsonString(shard, pointer + "/name", source);
@@ -254,12 +254,12 @@ Json CheckedShardRow(const nlohmann::json& shard, const std::string& pointer, co
              std::string("expected a number or null, got ") + value.type_name());
     }
   }
-  return Json::parse(io::JsonAt(shard, pointer, source).dump());
+  return OrderedJson::parse(io::JsonAt(shard, pointer, source).dump());
 }
 
 void RunMerge(const std::vector<std::string>& inputs, const std::string& out) {
-  std::map<int, Json> by_index;
-  Json base = Json::object();
+  std::map<int, OrderedJson> by_index;
+  OrderedJson base = OrderedJson::object();
   std::int64_t total = -1;
   for (const std::string& path : inputs) {
     const nlohmann::json shard = io::LoadJsonFile(path);
@@ -274,13 +274,13 @@ void RunMerge(const std::vector<std::string>& inputs, const std::string& out) {
     }
     total = shard_total;
     if (shard.contains("base")) {
-      base.update(Json::parse(ObjectAt(shard, "/base", path, "an object {option: base value}").dump()));
+      base.update(OrderedJson::parse(ObjectAt(shard, "/base", path, "an object {option: base value}").dump()));
     }
     const nlohmann::json& rows = io::JsonAt(shard, "/rows", path);
     if (!rows.is_array()) FailAt(path, "/rows", std::string("expected a list of rows, got ") + rows.type_name());
     for (size_t i = 0; i < rows.size(); ++i) {
       int index = 0;
-      Json row = CheckedShardRow(shard, io::JsonPointerJoin("/rows", i), path, total, &index);
+      OrderedJson row = CheckedShardRow(shard, io::JsonPointerJoin("/rows", i), path, total, &index);
       if (!by_index.emplace(index, std::move(row)).second) {
         throw InputError(path + ": configuration " + std::to_string(index) + " appears in two shard files");
       }
@@ -300,9 +300,9 @@ void RunMerge(const std::vector<std::string>& inputs, const std::string& out) {
     if (missing_count > named) missing += ", ... (" + std::to_string(missing_count) + " in all)";
     throw InputError("merge: configurations missing (shard files absent?): " + missing);
   }
-  Json rows = Json::array();
+  OrderedJson rows = OrderedJson::array();
   for (auto& [index, row] : by_index) rows.push_back(row);
-  Json file;
+  OrderedJson file;
   file["total"] = total;
   file["shard"] = "1/1";
   file["base"] = base;

@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "engine/detection_checks.h"
 
-#include <map>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -11,11 +9,13 @@
 #include <map>
 #include <utility>
 
+#include "core/nan.h"
+
 namespace rpt::engine {
-namespace {
+// Not an anonymous namespace: DetectionChecker::State, a class with linkage, holds these types.
+namespace detection_checks_internal {
 
 constexpr double kMinGtScore = 0.1;  // a GT joint is valid iff its score is above (docs/metrics.md)
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // One GT person projected into one camera: per usable joint, its index in the detection joints
 // and its pixel.
@@ -130,13 +130,13 @@ bool HasInput(const SequenceFrame& frame) {
   return false;
 }
 
-std::string Percent(double share) {
+std::string PercentText(double share) {
   char text[32];
   std::snprintf(text, sizeof(text), "%.0f %%", 100.0 * share);
   return text;
 }
 
-std::string Fixed(double value, int decimals) {
+std::string FixedText(double value, int decimals) {
   char text[32];
   std::snprintf(text, sizeof(text), "%.*f", decimals, value);
   return text;
@@ -185,7 +185,9 @@ struct AnchorUnits {
   std::vector<double> motion;
 };
 
-}  // namespace
+}  // namespace detection_checks_internal
+
+using namespace detection_checks_internal;  // NOLINT(build/namespaces): this file's own helpers
 
 // The frames the checks still need: the last 2 * max_shift + 1 (with their GT projections,
 // computed once on demand), the counts, and the sampled measurements.
@@ -440,9 +442,9 @@ SequenceCheck DetectionChecker::Finish() {
     // Over K frames the GT moves less than the detections err at their best shift: a shift
     // would not stand out from the detection error.
     shift.reason = "the GT moves less over " + std::to_string(K) + " frames (median " +
-                   Fixed(std::isfinite(shift.motion_rel) ? shift.motion_rel : 0, 3) +
+                   FixedText(std::isfinite(shift.motion_rel) ? shift.motion_rel : 0, 3) +
                    " of the person's box) than the detections err (" +
-                   Fixed(std::min(shift.RelAt(0), shift.RelAt(shift.best_shift)), 3) + ")";
+                   FixedText(std::min(shift.RelAt(0), shift.RelAt(shift.best_shift)), 3) + ")";
   } else {
     shift.tested = true;
   }
@@ -467,7 +469,8 @@ std::vector<CheckWarning> DetectionWarnings(const SequenceCheck& check) {
     warnings.push_back(
         {"frames_without_detections",
          seq + ": " + std::to_string(check.frames_with_gt_no_input) + " of " + std::to_string(check.frames_with_gt) +
-             " frames with GT persons (" + Percent(static_cast<double>(check.frames_with_gt_no_input) / check.frames_with_gt) +
+             " frames with GT persons (" +
+             PercentText(static_cast<double>(check.frames_with_gt_no_input) / check.frames_with_gt) +
              ") have no 2D detection in any camera; do the frame ids of the detections match the labels?"});
   }
   if (check.frames_with_gt > 0 && check.shared_joints < kMinSharedJoints) {
@@ -490,18 +493,18 @@ std::vector<CheckWarning> DetectionWarnings(const SequenceCheck& check) {
                               "right?"});
     } else if (camera.frames_gt_in_view > 0 &&
                camera.empty_frames_gt_in_view >= kEmptyCameraShare * camera.frames_gt_in_view) {
-      camera_warning(
-          {"camera_often_without_detections",
-           where + ": no detections in " + std::to_string(camera.empty_frames_gt_in_view) + " of the " +
-               std::to_string(camera.frames_gt_in_view) + " frames where GT persons are in its view (" +
-               Percent(static_cast<double>(camera.empty_frames_gt_in_view) / camera.frames_gt_in_view) + ")"});
+      camera_warning({"camera_often_without_detections",
+                      where + ": no detections in " + std::to_string(camera.empty_frames_gt_in_view) + " of the " +
+                          std::to_string(camera.frames_gt_in_view) + " frames where GT persons are in its view (" +
+                          PercentText(static_cast<double>(camera.empty_frames_gt_in_view) / camera.frames_gt_in_view) +
+                          ")"});
     }
     if (camera.gt_compared >= kMinComparedPersons && camera.rel_median >= kFarRelDistance) {
       camera_warning({"gt_far_from_detections",
-                          where + ": projected GT is far from the detections (median " + Fixed(camera.rel_median, 2) +
-                              " of the person's box diagonal, " + Fixed(camera.px_median, 0) + " px, over " +
-                              std::to_string(camera.gt_compared) + " GT persons; expected < " +
-                              Fixed(kFarRelDistance, 2) + "); check calibration, camera order and units"});
+                      where + ": projected GT is far from the detections (median " + FixedText(camera.rel_median, 2) +
+                          " of the person's box diagonal, " + FixedText(camera.px_median, 0) + " px, over " +
+                          std::to_string(camera.gt_compared) + " GT persons; expected < " +
+                          FixedText(kFarRelDistance, 2) + "); check calibration, camera order and units"});
     } else if (camera.detections > 0 && check.frames_with_gt > 0 && check.shared_joints >= kMinSharedJoints &&
                camera.gt_in_view == 0) {
       camera_warning({"gt_far_from_detections", where + ": no GT person projects into the image although the camera has " +
@@ -519,13 +522,13 @@ std::vector<CheckWarning> DetectionWarnings(const SequenceCheck& check) {
   const ShiftCheck& shift = check.shift;
   if (LooksShifted(shift)) {
     const int k = shift.best_shift;
-    warnings.push_back(
-        {"detections_frame_shifted",
-         seq + ": the detections of frame f fit the GT of frame f" + (k > 0 ? "+" : "") + std::to_string(k) +
-             " better than their own (median " + Fixed(shift.RelAt(k), 3) + " vs " + Fixed(shift.RelAt(0), 3) +
-             " of the box diagonal, closer in " + Percent(shift.win_share) + " of " +
-             std::to_string(shift.comparisons) + " comparisons); are detections and labels shifted by " +
-             std::to_string(std::abs(k)) + " frame(s)?"});
+    warnings.push_back({"detections_frame_shifted",
+                        seq + ": the detections of frame f fit the GT of frame f" + (k > 0 ? "+" : "") +
+                            std::to_string(k) + " better than their own (median " + FixedText(shift.RelAt(k), 3) +
+                            " vs " + FixedText(shift.RelAt(0), 3) + " of the box diagonal, closer in " +
+                            PercentText(shift.win_share) + " of " + std::to_string(shift.comparisons) +
+                            " comparisons); are detections and labels shifted by " + std::to_string(std::abs(k)) +
+                            " frame(s)?"});
   }
   return warnings;
 }

@@ -27,9 +27,9 @@ std::string Format(const char* format, double value) {
 
 // Cells made of several values ("a / b / c"); a value that does not exist is "-", a cell
 // without any value is a single "-".
-struct Cell {
+struct ComparisonCell {
   std::vector<std::string> parts;
-  Cell& Add(bool present, const char* format, double value) {
+  ComparisonCell& Add(bool present, const char* format, double value) {
     parts.push_back(present ? Format(format, value) : "-");
     return *this;
   }
@@ -43,7 +43,11 @@ struct Cell {
 double Share(long part, long whole) { return whole > 0 ? static_cast<double>(part) / whole : 0; }
 
 std::string Errors(const ErrorSummary& e) {
-  return Cell{}.Add(e.count > 0, "%.3f", e.median).Add(e.count > 0, "%.3f", e.p90).Add(e.count > 0, "%.3f", e.p99).Text();
+  return ComparisonCell{}
+      .Add(e.count > 0, "%.3f", e.median)
+      .Add(e.count > 0, "%.3f", e.p90)
+      .Add(e.count > 0, "%.3f", e.p99)
+      .Text();
 }
 
 // Occluded or not labelled.
@@ -79,10 +83,12 @@ const std::vector<std::pair<const char*, RowFunction>>& CompareRows() {
   static const std::vector<std::pair<const char*, RowFunction>> rows = {
       {"GT persons in view", [](const DetectorStats& s) { return std::to_string(s.persons_in_view); }},
       {"detection rate, GT persons in view",
-       [](const DetectorStats& s) { return Cell{}.Add(s.total.gt_in_view > 0, "%.3f", s.total.detection_rate()).Text(); }},
+       [](const DetectorStats& s) {
+         return ComparisonCell{}.Add(s.total.gt_in_view > 0, "%.3f", s.total.detection_rate()).Text();
+       }},
       {"... mostly visible / mostly hidden persons",
        [](const DetectorStats& s) {
-         return Cell{}
+         return ComparisonCell{}
              .Add(s.persons_by_label[0] > 0, "%.3f", s.detection_rate_by_label[0])
              .Add(s.persons_by_label[1] > 0, "%.3f", s.detection_rate_by_label[1])
              .Text();
@@ -90,7 +96,7 @@ const std::vector<std::pair<const char*, RowFunction>>& CompareRows() {
       {"GT persons detected in 0 / 1 / 2 / 3+ views",
        [](const DetectorStats& s) {
          const bool any = s.persons_in_any_view > 0;
-         return Cell{}
+         return ComparisonCell{}
              .Add(any, "%.3f", s.ShareDetectedInViews(0))
              .Add(any, "%.3f", s.ShareDetectedInViews(1))
              .Add(any, "%.3f", s.ShareDetectedInViews(2))
@@ -98,16 +104,19 @@ const std::vector<std::pair<const char*, RowFunction>>& CompareRows() {
              .Text();
        }},
       {"false positives per view",
-       [](const DetectorStats& s) { return Cell{}.Add(s.total.views > 0, "%.3f", s.total.false_positives_per_view()).Text(); }},
+       [](const DetectorStats& s) {
+         return ComparisonCell{}.Add(s.total.views > 0, "%.3f", s.total.false_positives_per_view()).Text();
+       }},
       {"joint error, all: median / p90 / p99", [](const DetectorStats& s) { return Errors(s.all); }},
-      {"visible joints", [](const DetectorStats& s) { return Errors(s.by_visibility[detector_stats::kVisible].error); }},
+      {"visible joints",
+       [](const DetectorStats& s) { return Errors(s.by_visibility[detector_stats::kVisible].error); }},
       {"hidden joints (occluded or not labelled)", [](const DetectorStats& s) { return Errors(s.hidden); }},
       {"persons neither truncated nor hidden", [](const DetectorStats& s) { return Errors(s.clear_persons); }},
       {"confidence <= 0.5", [](const DetectorStats& s) { return Errors(s.confidence_low); }},
       {"confidence 0.5-0.9", [](const DetectorStats& s) { return Errors(s.confidence_mid); }},
       {"confidence >= 0.9", [](const DetectorStats& s) { return Errors(s.confidence_high); }},
       {"hidden share of in-image joints",
-       [](const DetectorStats& s) { return Cell{}.Add(HasLabels(s), "%.3f", s.hidden_share).Text(); }},
+       [](const DetectorStats& s) { return ComparisonCell{}.Add(HasLabels(s), "%.3f", s.hidden_share).Text(); }},
       {"missing joints: all / visible / hidden",
        [](const DetectorStats& s) {
          long hidden = 0, hidden_missing = 0;
@@ -117,7 +126,7 @@ const std::vector<std::pair<const char*, RowFunction>>& CompareRows() {
            hidden_missing += s.by_visibility[v].missing;
          }
          const detector_stats::VisibilityStats& visible = s.by_visibility[detector_stats::kVisible];
-         return Cell{}
+         return ComparisonCell{}
              .Add(s.joints_in_image > 0, "%.3f", s.missing_rate)
              .Add(visible.of_detected > 0, "%.3f", visible.missing_rate())
              .Add(hidden > 0, "%.3f", Share(hidden_missing, hidden))
@@ -133,7 +142,7 @@ const std::vector<std::pair<const char*, RowFunction>>& CompareRows() {
            hidden_sum += Reported(s.by_visibility[v]) * s.by_visibility[v].confidence_mean;
          }
          const detector_stats::VisibilityStats& visible = s.by_visibility[detector_stats::kVisible];
-         return Cell{}
+         return ComparisonCell{}
              .Add(Reported(visible) > 0, "%.2f", visible.confidence_mean)
              .Add(hidden > 0, "%.2f", hidden > 0 ? hidden_sum / hidden : 0)
              .Text();
@@ -145,12 +154,13 @@ const std::vector<std::pair<const char*, RowFunction>>& CompareRows() {
            total += s.confidence_histogram[b];
            if (b < 5) low += s.confidence_histogram[b];
          }
-         return Cell{}
+         return ComparisonCell{}
              .Add(total > 0, "%.3f", Share(s.confidence_histogram[9], total))
              .Add(total > 0, "%.3f", Share(low, total))
              .Text();
        }},
-      {"left/right swaps", [](const DetectorStats& s) { return Cell{}.Add(s.swap_candidates > 0, "%.3f", s.swap_rate).Text(); }},
+      {"left/right swaps",
+       [](const DetectorStats& s) { return ComparisonCell{}.Add(s.swap_candidates > 0, "%.3f", s.swap_rate).Text(); }},
       {"hip offset, down / out (medians)",
        [](const DetectorStats& s) {
          // The mean of both hips' medians (each hip's alone: the per-joint table).
@@ -162,23 +172,27 @@ const std::vector<std::pair<const char*, RowFunction>>& CompareRows() {
            if (p->down_count > 0) down += p->down_median, ++down_n;
            if (p->out_count > 0) out += p->out_median, ++out_n;
          }
-         return Cell{}
+         return ComparisonCell{}
              .Add(down_n > 0, "%+.3f", down_n > 0 ? down / down_n : 0)
              .Add(out_n > 0, "%+.3f", out_n > 0 ? out / out_n : 0)
              .Text();
        }},
       {"truncated persons",
-       [](const DetectorStats& s) { return Cell{}.Add(s.persons_in_view > 0, "%.3f", s.truncated_share).Text(); }},
+       [](const DetectorStats& s) {
+         return ComparisonCell{}.Add(s.persons_in_view > 0, "%.3f", s.truncated_share).Text();
+       }},
       {"false positives: mean confidence / reported joints",
        [](const DetectorStats& s) {
          const bool any = s.total.false_positives > 0;
-         return Cell{}
+         return ComparisonCell{}
              .Add(any, "%.2f", s.false_positive_confidence_mean)
              .Add(any, "%.1f", s.false_positive_joints_mean)
              .Text();
        }},
       {"box diagonal, median px",
-       [](const DetectorStats& s) { return Cell{}.Add(s.persons_in_view > 0, "%.0f", s.box_diagonal_px_median).Text(); }},
+       [](const DetectorStats& s) {
+         return ComparisonCell{}.Add(s.persons_in_view > 0, "%.0f", s.box_diagonal_px_median).Text();
+       }},
   };
   return rows;
 }
@@ -223,7 +237,7 @@ void PrintDetectorStatsComparison(const std::vector<DetectorStatsColumn>& column
   std::printf("| joint | error median | missing | hidden | missing when hidden | confidence | offset down | offset out |\n");
   std::printf("|---|---:|---:|---:|---:|---:|---:|---:|\n");
   for (const std::string& joint : joints) {
-    Cell error, missing, hidden, hidden_missing, confidence, down, out;
+    ComparisonCell error, missing, hidden, hidden_missing, confidence, down, out;
     for (const DetectorStatsColumn& c : columns) {
       const detector_stats::JointStats* p = FindJointStats(c.stats, joint);
       const detector_stats::JointStats none;
@@ -236,7 +250,7 @@ void PrintDetectorStatsComparison(const std::vector<DetectorStatsColumn>& column
       down.Add(j.down_count > 0, "%+.3f", j.down_median);
       out.Add(j.out_count > 0, "%+.3f", j.out_median);
     }
-    auto percent = [](const Cell& cell) {
+    auto percent = [](const ComparisonCell& cell) {
       const std::string text = cell.Text();
       return text == "-" ? text : text + " %";
     };

@@ -11,9 +11,9 @@
 namespace rpt::engine {
 namespace {
 
-using Json = nlohmann::ordered_json;
+using OrderedJson = nlohmann::ordered_json;
 
-Json OrNull(double value) { return std::isfinite(value) ? Json(value) : Json(nullptr); }
+OrderedJson OrNull(double value) { return std::isfinite(value) ? OrderedJson(value) : OrderedJson(nullptr); }
 
 // The first step after which no item is left in any frame, or -1.
 int FirstEmptyStep(const metrics::StepCountSummary& counts) {
@@ -69,8 +69,8 @@ EvalDiagnostics Diagnose(const RunResult& run) {
   return diagnostics;
 }
 
-Json CameraCheckJson(const CameraCheck& camera) {
-  Json j;
+OrderedJson CameraCheckJson(const CameraCheck& camera) {
+  OrderedJson j;
   j["name"] = camera.name;
   j["detections"] = camera.detections;
   j["frames_gt_in_view"] = camera.frames_gt_in_view;
@@ -81,8 +81,8 @@ Json CameraCheckJson(const CameraCheck& camera) {
   return j;
 }
 
-Json ShiftCheckJson(const ShiftCheck& shift) {
-  Json j;
+OrderedJson ShiftCheckJson(const ShiftCheck& shift) {
+  OrderedJson j;
   j["tested"] = shift.tested;
   if (!shift.reason.empty()) j["reason"] = shift.reason;
   if (shift.comparisons == 0) return j;
@@ -96,18 +96,18 @@ Json ShiftCheckJson(const ShiftCheck& shift) {
   return j;
 }
 
-Json DiagnosticsJson(const EvalDiagnostics& diagnostics) {
-  Json j;
-  j["warnings"] = Json::array();
+OrderedJson DiagnosticsJson(const EvalDiagnostics& diagnostics) {
+  OrderedJson j;
+  j["warnings"] = OrderedJson::array();
   for (const CheckWarning& w : diagnostics.warnings) j["warnings"].push_back({{"code", w.code}, {"message", w.message}});
-  j["data_checks"] = Json::array();
+  j["data_checks"] = OrderedJson::array();
   for (const SequenceCheck& check : diagnostics.checks) {
-    Json seq;
+    OrderedJson seq;
     seq["sequence"] = check.sequence;
     seq["measured_frames"] = check.measured_frames;
     seq["frames_with_gt"] = check.frames_with_gt;
     seq["frames_with_gt_without_detections"] = check.frames_with_gt_no_input;
-    seq["cameras"] = Json::array();
+    seq["cameras"] = OrderedJson::array();
     for (const CameraCheck& camera : check.cameras) seq["cameras"].push_back(CameraCheckJson(camera));
     seq["frame_shift"] = ShiftCheckJson(check.shift);
     j["data_checks"].push_back(seq);

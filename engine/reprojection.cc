@@ -5,12 +5,11 @@
 #include <cmath>
 #include <limits>
 
+#include "core/nan.h"
 #include "datasets/detector_stats/association.h"
 
 namespace rpt::engine {
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // Per 3D joint (`num_joints` of them), the index of the detection joint of the same name, or -1
 // (also when the names run short or the view holds fewer joints than the names say).

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "metrics/reducers/reducers.h"
+
 namespace rpt::metrics {
 namespace {
 
@@ -16,10 +18,6 @@ const std::array<std::vector<int>, kNumLegacyGroups>& LegacyGroupParts() {
   static const std::array<std::vector<int>, kNumLegacyGroups> parts = {
       {{8}, {9}, {5, 6}, {4, 7}, {1, 2}, {0, 3}}};
   return parts;
-}
-
-double Percent(double numerator, double denominator) {
-  return denominator > 0 ? 100.0 * numerator / denominator : std::numeric_limits<double>::quiet_NaN();
 }
 
 // Endpoint of a generic part: mean of its two joints; valid iff both are.

@@ -4,21 +4,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/pipeline/median.h"
 #include "core/pipeline/postprocess.h"
 
 namespace rpt {
-namespace {
-
-// Median of values (reordered in place); the mean of the two middle values for an even count.
-double Median(std::vector<double>& values) {
-  const size_t n = values.size();
-  const auto middle = values.begin() + n / 2;
-  std::nth_element(values.begin(), middle, values.end());
-  if (n % 2 == 1) return *middle;
-  return 0.5 * (*middle + *std::max_element(values.begin(), middle));
-}
-
-}  // namespace
 
 int steps::BoneLengths(const BoneLengthOptions& options, const BoneLengthsInput& in, BoneLengthHistory* history,
                        BoneLengthsScratch* scratch, Poses3D* persons, FrameStats* stats) {
@@ -65,7 +54,7 @@ int steps::BoneLengths(const BoneLengthOptions& options, const BoneLengthsInput&
       if (stored < options.min_observations) continue;
       const double* recorded = track.lengths.data() + static_cast<size_t>(l) * window;
       median.assign(recorded, recorded + stored);
-      expected[l] = Median(median);
+      expected[l] = Median(median.data(), static_cast<int>(median.size()));
       const double tolerance = std::max(options.tolerance_rel * expected[l], options.min_tolerance_m);
       disagrees[l] = std::abs(length[l] - expected[l]) > tolerance;
     }

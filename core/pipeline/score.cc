@@ -5,30 +5,10 @@
 #include <cmath>
 #include <limits>
 
+#include "core/pipeline/median.h"
+
 namespace rpt {
 namespace {
-
-// Median of values[0..n) (may reorder them). A pair has a dozen core joints: for so few values
-// the ranks are counted without branches (nth_element's mispredicted branches cost several
-// times more); larger sets use nth_element.
-double Median(double* values, int n) {
-  if (n <= 0) return std::numeric_limits<double>::infinity();
-  if (n > 32) {
-    double* mid = values + n / 2;
-    std::nth_element(values, mid, values + n);
-    if (n % 2 == 1) return *mid;
-    return 0.5 * (*mid + *std::max_element(values, mid));
-  }
-  // Rank = values below, plus equal values earlier in the list: ranks are 0..n-1, each once.
-  double lower = 0, upper = 0;  // the values of rank (n - 1) / 2 and n / 2
-  for (int i = 0; i < n; ++i) {
-    int rank = 0;
-    for (int j = 0; j < n; ++j) rank += (values[j] < values[i]) | ((values[j] == values[i]) & (j < i));
-    lower = rank == (n - 1) / 2 ? values[i] : lower;
-    upper = rank == n / 2 ? values[i] : upper;
-  }
-  return 0.5 * (lower + upper);
-}
 
 // Moves the `trimmed` lowest-scoring of the (score, weight) terms to the front, lowest first;
 // of equal scores the earlier joint goes first, so the trimmed joints are well defined. One

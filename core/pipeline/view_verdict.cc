@@ -5,18 +5,9 @@
 #include <limits>
 
 #include "core/pipeline/box_iou.h"
+#include "core/pipeline/median.h"
 
 namespace rpt {
-namespace {
-
-// Median of values[0..n) (reorders them); +inf for none.
-double Median(double* values, int n) {
-  if (n <= 0) return std::numeric_limits<double>::infinity();
-  std::nth_element(values, values + n / 2, values + n);
-  return values[n / 2];
-}
-
-}  // namespace
 
 void PoseBoxes(const PreparedViews& views, std::vector<Eigen::Vector4d>* boxes) {
   boxes->resize(views.num_poses());
@@ -68,7 +59,7 @@ ViewVerdict JudgeView(const PreparedViews& views, const ViewGeometry& geo, int v
       scratch->residuals[n++] =
           (scratch->projected[c] - Eigen::Vector2d(kp.u, kp.v)).norm() * scratch->depth[c] / geo.focal;
     }
-    if (n >= 3) best = std::min(best, Median(scratch->residuals.data(), n));
+    if (n >= 3) best = std::min(best, UpperMedian(scratch->residuals.data(), n));
     occupied = occupied || BoxIou(box, scratch->boxes[g]) >= 0.1;
   }
   if (best <= 2.0 * kernel_scale_m) return ViewVerdict::kSupport;

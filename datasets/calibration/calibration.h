@@ -147,6 +147,9 @@ struct Calibration {
 // file when it is missing or its format cannot be told.
 CalibrationFormat DetectCalibrationFormat(const std::filesystem::path& path);
 
+// True for an existing regular file (or a link to one); false, never an error, for anything else.
+bool IsRegularFile(const std::filesystem::path& path);
+
 // The format a file of this name is written in (CalibrationWriteOptions::format auto). Throws
 // ConfigError for a name whose format cannot be told.
 CalibrationFormat CalibrationFormatForOutput(const std::filesystem::path& path);

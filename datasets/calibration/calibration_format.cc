@@ -20,11 +20,6 @@ std::string Lower(std::string text) {
   return text;
 }
 
-bool IsFile(const fs::path& path) {
-  std::error_code ec;
-  return fs::is_regular_file(path, ec);
-}
-
 bool IsStorageExtension(const std::string& extension) {
   return extension == ".yml" || extension == ".yaml" || extension == ".xml";
 }
@@ -84,13 +79,13 @@ const char* LengthUnitWord(LengthUnit unit) {
 CalibrationFormat DetectCalibrationFormat(const fs::path& path) {
   std::error_code ec;
   if (fs::is_directory(path, ec)) {
-    if (IsFile(path / "cameras.txt") && IsFile(path / "images.txt")) return CalibrationFormat::kColmap;
-    if (IsFile(path / "intri.yml") && IsFile(path / "extri.yml")) return CalibrationFormat::kEasyMocap;
+    if (IsRegularFile(path / "cameras.txt") && IsRegularFile(path / "images.txt")) return CalibrationFormat::kColmap;
+    if (IsRegularFile(path / "intri.yml") && IsRegularFile(path / "extri.yml")) return CalibrationFormat::kEasyMocap;
     throw InputError(path.string() +
                      ": a folder, but it holds neither cameras.txt + images.txt (COLMAP) nor intri.yml + "
                      "extri.yml (EasyMocap)");
   }
-  if (!IsFile(path)) throw InputError(path.string() + ": file not found");
+  if (!IsRegularFile(path)) throw InputError(path.string() + ": file not found");
   const std::string name = Lower(path.filename().string());
   const std::string extension = Lower(path.extension().string());
   const std::string stem = Lower(path.stem().string());
@@ -117,6 +112,11 @@ CalibrationFormat CalibrationFormatForOutput(const fs::path& path) {
   throw ConfigError(path.string() +
                     ": cannot tell the format to write from the name (expected *.json, *.toml, "
                     "*.yml, *.yaml, *.xml or intri.yml); set the format");
+}
+
+bool IsRegularFile(const std::filesystem::path& path) {
+  std::error_code ec;
+  return std::filesystem::is_regular_file(path, ec);
 }
 
 }  // namespace rpt

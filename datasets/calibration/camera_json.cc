@@ -9,23 +9,20 @@
 #include "datasets/camera_plausibility.h"
 #include "datasets/io/input_limits.h"
 #include "datasets/io/json_file.h"
+#include "datasets/io/json_output.h"
 
 namespace rpt::camera_json {
 namespace {
 
 using nlohmann::json;
-using ojson = nlohmann::ordered_json;
+using OrderedJson = nlohmann::ordered_json;
 
 [[noreturn]] void Fail(const std::string& source, const std::string& pointer, const std::string& what) {
   throw InputError(source + ": " + pointer + ": " + what);
 }
 
-void CheckFinite(double value, const std::string& source, const std::string& where) {
-  if (!std::isfinite(value)) throw InputError(source + ": cannot write " + where + ": value is not finite");
-}
-
-ojson MatrixJson(const Eigen::Matrix3d& m) {
-  ojson rows = ojson::array();
+OrderedJson MatrixJson(const Eigen::Matrix3d& m) {
+  OrderedJson rows = OrderedJson::array();
   for (int r = 0; r < 3; ++r) rows.push_back({m(r, 0), m(r, 1), m(r, 2)});
   return rows;
 }
@@ -115,15 +112,15 @@ std::vector<Camera> ParseCameras(const json& root, const std::string& pointer, c
   return cameras;
 }
 
-ojson CameraJson(const Camera& camera, const std::string& source, const std::string& where) {
+OrderedJson CameraJson(const Camera& camera, const std::string& source, const std::string& where) {
   for (Eigen::Index i = 0; i < 9; ++i) {
-    CheckFinite(camera.K.data()[i], source, where);
-    CheckFinite(camera.R.data()[i], source, where);
+    io::CheckFiniteToWrite(camera.K.data()[i], source, where);
+    io::CheckFiniteToWrite(camera.R.data()[i], source, where);
   }
   const Eigen::Vector3d center = camera.Center();
-  for (int i = 0; i < 3; ++i) CheckFinite(center[i], source, where);
-  for (double d : camera.dist) CheckFinite(d, source, where);
-  ojson j;
+  for (int i = 0; i < 3; ++i) io::CheckFiniteToWrite(center[i], source, where);
+  for (double d : camera.dist) io::CheckFiniteToWrite(d, source, where);
+  OrderedJson j;
   j["name"] = camera.name;
   j["K"] = MatrixJson(camera.K);
   switch (camera.model) {
@@ -139,7 +136,8 @@ ojson CameraJson(const Camera& camera, const std::string& source, const std::str
       break;
   }
   j["R"] = MatrixJson(camera.R);
-  j["T"] = ojson::array({ojson::array({center[0]}), ojson::array({center[1]}), ojson::array({center[2]})});
+  j["T"] = OrderedJson::array(
+      {OrderedJson::array({center[0]}), OrderedJson::array({center[1]}), OrderedJson::array({center[2]})});
   j["width"] = camera.width;
   j["height"] = camera.height;
   if (camera.model == DistortionModel::kFisheye) j["type"] = "fisheye";

@@ -20,11 +20,6 @@ using namespace opencv_conventions;
 
 constexpr double kRotationAgreement = 1e-6;  // max |R(R_) - Rot_| accepted when both are stored
 
-bool IsFile(const fs::path& path) {
-  std::error_code ec;
-  return fs::is_regular_file(path, ec);
-}
-
 // The rotation of camera `name`: R_ (Rodrigues vector, or a matrix), else Rot_; both must agree.
 // Sets *form to what was read.
 Eigen::Matrix3d ReadRotation(const File& extri, const std::string& name, InputWarnings* warnings, std::string* form) {
@@ -80,7 +75,7 @@ std::vector<fs::path> EasyMocapFiles(const fs::path& path) {
     intri = path.parent_path() / ("intri" + path.extension().string());
   }
   for (const fs::path& file : {intri, extri}) {
-    if (!IsFile(file)) {
+    if (!IsRegularFile(file)) {
       throw InputError(file.string() + ": file not found (EasyMocap cameras are intri.yml and extri.yml side by side)");
     }
   }

@@ -6,13 +6,9 @@
 #include <limits>
 #include <tuple>
 
+#include "datasets/gt_presence.h"
+
 namespace rpt::detector_stats {
-namespace {
-
-constexpr double kPresentScore = 0.1;  // GT joints with a score <= this are absent
-
-}  // namespace
-
 ProjectedPerson ProjectPerson(const Camera& camera, const Poses3D& gt, int p, const std::vector<int>& gt_index) {
   const int num_joints = static_cast<int>(gt_index.size());
   ProjectedPerson out;
@@ -25,7 +21,7 @@ ProjectedPerson ProjectPerson(const Camera& camera, const Poses3D& gt, int p, co
   Eigen::Vector2d hi = -lo;
   for (int k = 0; k < num_joints; ++k) {
     const int g = gt_index[k];
-    if (g < 0 || !(person(3, g) > kPresentScore) || !person.col(g).head<3>().allFinite()) continue;
+    if (g < 0 || !(person(3, g) > kGtPresentScore) || !person.col(g).head<3>().allFinite()) continue;
     Eigen::Vector2d uv;
     if (!camera.Project(person.col(g).head<3>(), &uv) || !uv.allFinite()) {
       out.truncated = true;  // behind the camera

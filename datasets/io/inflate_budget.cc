@@ -5,17 +5,12 @@
 #include <cstdio>
 
 #include "core/errors.h"
+#include "datasets/io/input_limits.h"
 
 namespace rpt::io {
 namespace {
 
 std::atomic<std::uint64_t> configured_megabytes{0};
-
-std::string Megabytes(std::uint64_t bytes) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%.1f", static_cast<double>(bytes) / (1 << 20));
-  return text;
-}
 
 }  // namespace
 
@@ -34,12 +29,12 @@ InflateBudget::InflateBudget(std::string source, std::uint64_t file_bytes)
 void InflateBudget::Reserve(std::uint64_t bytes, const std::string& what) {
   if (bytes > limit_ - used_) {
     const bool configured = configured_megabytes > 0;
-    throw InputError(what + ": decompressing " + Megabytes(bytes) + " MB would take the data decompressed from " +
-                     source_ + " to " + Megabytes(used_ + std::min(bytes, UINT64_MAX - used_)) +
-                     " MB, above the limit of " + Megabytes(limit_) + " MB (" +
-                     (configured ? std::string("set by --max-inflate-mb")
-                                 : "64 x the file size, at least 64 MB, at most 4096 MB") +
-                     "; raise it with --max-inflate-mb N if the file is genuine)");
+    throw InputError(
+        what + ": decompressing " + MegabytesText(bytes) + " MB would take the data decompressed from " + source_ +
+        " to " + MegabytesText(used_ + std::min(bytes, UINT64_MAX - used_)) + " MB, above the limit of " +
+        MegabytesText(limit_) + " MB (" +
+        (configured ? std::string("set by --max-inflate-mb") : "64 x the file size, at least 64 MB, at most 4096 MB") +
+        "; raise it with --max-inflate-mb N if the file is genuine)");
   }
   used_ += bytes;
 }

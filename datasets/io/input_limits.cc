@@ -12,12 +12,6 @@ namespace {
 std::atomic<std::uint64_t> max_input_mb{0};
 std::atomic<std::uint64_t> max_cameras{0};
 
-std::string Megabytes(std::uint64_t bytes) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%.1f", static_cast<double>(bytes) / (1 << 20));
-  return text;
-}
-
 }  // namespace
 
 void SetMaxInputMb(std::uint64_t megabytes) { max_input_mb = megabytes; }
@@ -32,7 +26,7 @@ std::uint64_t MaxCameras() { return max_cameras > 0 ? max_cameras.load() : kDefa
 
 void CheckInputFileSize(std::uint64_t bytes, const std::string& source) {
   if (bytes <= MaxInputBytes()) return;
-  throw InputError(source + ": " + Megabytes(bytes) + " MB, above the limit of " + Megabytes(MaxInputBytes()) +
+  throw InputError(source + ": " + MegabytesText(bytes) + " MB, above the limit of " + MegabytesText(MaxInputBytes()) +
                    " MB for a file read whole (raise it with --max-input-mb N if the file is genuine)");
 }
 
@@ -40,6 +34,12 @@ void CheckCameraCount(std::uint64_t count, const std::string& where) {
   if (count <= MaxCameras()) return;
   throw InputError(where + ": " + std::to_string(count) + " cameras, above the limit of " + std::to_string(MaxCameras()) +
                    " (raise it with --max-cameras N if the input is genuine)");
+}
+
+std::string MegabytesText(std::uint64_t bytes) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.1f", static_cast<double>(bytes) / (1 << 20));
+  return text;
 }
 
 }  // namespace rpt::io

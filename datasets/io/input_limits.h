@@ -29,4 +29,7 @@ void CheckInputFileSize(std::uint64_t bytes, const std::string& source);
 // when `count` is above MaxCameras(); `where` names the file and the place.
 void CheckCameraCount(std::uint64_t count, const std::string& where);
 
+// `bytes` in MiB with one decimal ("12.5"), as the limit messages print sizes.
+std::string MegabytesText(std::uint64_t bytes);
+
 }  // namespace rpt::io

@@ -4,9 +4,11 @@
 // are written as U+FFFD and counted instead of throwing after other outputs were written.
 #pragma once
 
+#include <cmath>
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "core/errors.h"
 #include "core/utf8.h"
 
 namespace rpt::io {
@@ -46,6 +48,12 @@ inline std::string ValidUtf8(const std::string& text, int* replaced = nullptr) {
   if (replaced != nullptr) ++*replaced;
   return nlohmann::json::parse(nlohmann::json(text).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace))
       .get<std::string>();
+}
+
+// Throws InputError "<source>: cannot write <where>: value is not finite" for NaN and infinities,
+// which JSON cannot hold.
+inline void CheckFiniteToWrite(double value, const std::string& source, const std::string& where) {
+  if (!std::isfinite(value)) throw InputError(source + ": cannot write " + where + ": value is not finite");
 }
 
 }  // namespace rpt::io

@@ -19,13 +19,13 @@ namespace {
 // few calls.
 constexpr std::size_t kReadBytes = 64 * 1024;
 
-std::string ErrnoText() { return std::strerror(errno); }
+std::string LineReaderErrno() { return std::strerror(errno); }
 
 }  // namespace
 
 StopRequest::StopRequest() {
   int fds[2];
-  if (pipe2(fds, O_CLOEXEC | O_NONBLOCK) != 0) throw InputError("cannot create a pipe: " + ErrnoText());
+  if (pipe2(fds, O_CLOEXEC | O_NONBLOCK) != 0) throw InputError("cannot create a pipe: " + LineReaderErrno());
   read_fd_ = fds[0];
   write_fd_ = fds[1];
 }
@@ -54,7 +54,7 @@ LineReader::LineReader(const std::string& path, std::size_t max_line_bytes, std:
   // Non-blocking, so that opening a named pipe does not wait for its writer (the wait is in poll(),
   // where a stop request ends it); blocking again for the reads.
   fd_ = open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
-  if (fd_ < 0) throw InputError(path + ": cannot open: " + ErrnoText());
+  if (fd_ < 0) throw InputError(path + ": cannot open: " + LineReaderErrno());
   owns_fd_ = true;
   struct stat info {};
   if (fstat(fd_, &info) != 0 || S_ISDIR(info.st_mode)) {
@@ -63,7 +63,7 @@ LineReader::LineReader(const std::string& path, std::size_t max_line_bytes, std:
   }
   const int flags = fcntl(fd_, F_GETFL);
   if (flags < 0 || fcntl(fd_, F_SETFL, flags & ~O_NONBLOCK) != 0) {
-    const std::string error = ErrnoText();
+    const std::string error = LineReaderErrno();
     close(fd_);
     throw InputError(path + ": cannot read: " + error);
   }
@@ -85,7 +85,7 @@ void LineReader::Fill() {
   if (buffer_.size() < end_ + kReadBytes) buffer_.resize(end_ + kReadBytes);
   pollfd fds[2] = {{fd_, POLLIN, 0}, {stop_ ? stop_->fd() : -1, POLLIN, 0}};
   while (poll(fds, 2, -1) < 0) {
-    if (errno != EINTR) throw InputError(source_ + ": cannot wait for input: " + ErrnoText());
+    if (errno != EINTR) throw InputError(source_ + ": cannot wait for input: " + LineReaderErrno());
   }
   if (fds[1].revents != 0) {
     stopped_ = true;
@@ -103,7 +103,7 @@ void LineReader::Fill() {
       return;
     }
     if (errno == EAGAIN || errno == EWOULDBLOCK) return;  // woken without data: wait again
-    if (errno != EINTR) throw InputError(source_ + ": read failed: " + ErrnoText());
+    if (errno != EINTR) throw InputError(source_ + ": read failed: " + LineReaderErrno());
   }
 }
 

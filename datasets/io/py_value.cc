@@ -16,7 +16,7 @@ namespace {
 constexpr std::size_t kMaxKeyDepth = 32;
 constexpr std::size_t kMaxListShapeDepth = 32;
 
-std::string Describe(const PyValue& v) {
+std::string DescribePyValue(const PyValue& v) {
   if (v.kind == PyKind::kNdArray && v.array) return v.array->Describe();
   return PyKindName(v.kind);
 }
@@ -246,7 +246,7 @@ bool PyView::AsBool() const {
   if (kind() == PyKind::kNdArray && node_->array->dtype.kind == 'b' && node_->array->Size() == 1) {
     return node_->array->ElementAsDouble(0) != 0.0;
   }
-  Fail("expected bool, got " + Describe(*node_));
+  Fail("expected bool, got " + DescribePyValue(*node_));
 }
 
 std::int64_t PyView::AsInt() const {
@@ -262,7 +262,7 @@ std::int64_t PyView::AsInt() const {
       }
     }
   }
-  Fail("expected int, got " + Describe(*node_));
+  Fail("expected int, got " + DescribePyValue(*node_));
 }
 
 double PyView::AsDouble() const {
@@ -275,21 +275,21 @@ double PyView::AsDouble() const {
       break;
     default: break;
   }
-  Fail("expected a number, got " + Describe(*node_));
+  Fail("expected a number, got " + DescribePyValue(*node_));
 }
 
 const std::string& PyView::AsStr() const {
-  if (kind() != PyKind::kStr) Fail("expected str, got " + Describe(*node_));
+  if (kind() != PyKind::kStr) Fail("expected str, got " + DescribePyValue(*node_));
   return node_->text;
 }
 
 const std::string& PyView::AsBytes() const {
-  if (kind() != PyKind::kBytes) Fail("expected bytes, got " + Describe(*node_));
+  if (kind() != PyKind::kBytes) Fail("expected bytes, got " + DescribePyValue(*node_));
   return node_->text;
 }
 
 const NdArray& PyView::AsArray() const {
-  if (kind() != PyKind::kNdArray || !node_->array) Fail("expected ndarray, got " + Describe(*node_));
+  if (kind() != PyKind::kNdArray || !node_->array) Fail("expected ndarray, got " + DescribePyValue(*node_));
   return *node_->array;
 }
 
@@ -302,7 +302,7 @@ std::size_t PyView::Size() const {
     case PyKind::kNdArray: return node_->array->Size();
     default: break;
   }
-  Fail("expected a container, got " + Describe(*node_));
+  Fail("expected a container, got " + DescribePyValue(*node_));
 }
 
 PyView PyView::At(std::size_t index) const {
@@ -323,7 +323,7 @@ PyView PyView::At(std::size_t index) const {
     }
     default: break;
   }
-  Fail("expected list or tuple, got " + Describe(*node_));
+  Fail("expected list or tuple, got " + DescribePyValue(*node_));
 }
 
 std::vector<PyView> PyView::Elements() const {
@@ -336,7 +336,7 @@ std::vector<PyView> PyView::Elements() const {
 }
 
 std::optional<PyView> PyView::Find(std::string_view key) const {
-  if (kind() != PyKind::kDict) Fail("expected dict, got " + Describe(*node_));
+  if (kind() != PyKind::kDict) Fail("expected dict, got " + DescribePyValue(*node_));
   auto it = node_->key_index.find(StrKeyString(key));
   if (it == node_->key_index.end()) it = node_->key_index.find(BytesKeyString(key));
   if (it == node_->key_index.end()) return std::nullopt;
@@ -353,7 +353,7 @@ PyView PyView::Key(std::string_view key) const {
 }
 
 std::optional<PyView> PyView::Find(const PyValue& key) const {
-  if (kind() != PyKind::kDict) Fail("expected dict, got " + Describe(*node_));
+  if (kind() != PyKind::kDict) Fail("expected dict, got " + DescribePyValue(*node_));
   auto k = KeyString(key);
   if (!k) Fail("unhashable key " + Repr(key));
   auto it = node_->key_index.find(*k);
@@ -374,7 +374,7 @@ PyView PyView::Key(const PyValue& key) const {
 }
 
 std::vector<std::pair<PyView, PyView>> PyView::Items() const {
-  if (kind() != PyKind::kDict) Fail("expected dict, got " + Describe(*node_));
+  if (kind() != PyKind::kDict) Fail("expected dict, got " + DescribePyValue(*node_));
   std::vector<std::pair<PyView, PyView>> out;
   out.reserve(node_->entries.size());
   for (const auto& [k, v] : node_->entries) {
@@ -434,7 +434,7 @@ void FlattenNested(const PyValue& v, std::vector<double>& out) {
 std::vector<std::int64_t> PyView::Shape() const {
   if (kind() == PyKind::kNdArray) return node_->array->shape;
   auto s = NestedShape(*node_, 0);
-  if (!s) Fail("expected an array of numbers, got " + Describe(*node_) + " (not a rectangular nest of numbers)");
+  if (!s) Fail("expected an array of numbers, got " + DescribePyValue(*node_) + " (not a rectangular nest of numbers)");
   return *s;
 }
 
@@ -454,7 +454,9 @@ std::vector<double> PyView::ToDoubles(std::span<const std::int64_t> expected) co
   if (!expected.empty()) {
     bool ok = expected.size() == shape.size();
     for (std::size_t i = 0; ok && i < shape.size(); ++i) ok = expected[i] < 0 || expected[i] == shape[i];
-    if (!ok) Fail("expected shape " + ShapeToString(expected) + ", got " + Describe(*node_) + " of shape " + ShapeToString(shape));
+    if (!ok)
+      Fail("expected shape " + ShapeToString(expected) + ", got " + DescribePyValue(*node_) + " of shape " +
+           ShapeToString(shape));
   }
   try {
     if (kind() == PyKind::kNdArray) return node_->array->ToDoubles();

@@ -3,6 +3,7 @@
 
 #include "datasets/io/number_text.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -20,7 +21,9 @@ bool IsSpace(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' ||
 // Tokens are shown in messages; a corrupt file may hold a very long one.
 std::string Shown(std::string_view token) {
   constexpr std::size_t kMax = 40;
-  return token.size() <= kMax ? std::string(token) : std::string(token.substr(0, kMax)) + "...";
+  std::string shown(token.substr(0, std::min(token.size(), kMax)));
+  if (token.size() > kMax) shown.append("...");  // appended: GCC 12 warns falsely (-Warray-bounds) on string + "..."
+  return shown;
 }
 
 }  // namespace

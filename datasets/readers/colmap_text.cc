@@ -35,7 +35,7 @@ std::string Trim(const std::string& line) {
   return line.substr(first, last - first + 1);
 }
 
-std::string Where(const std::string& source, int line) { return source + ":" + std::to_string(line); }
+std::string LineWhere(const std::string& source, int line) { return source + ":" + std::to_string(line); }
 
 // The lines of a COLMAP text file, numbered for error messages; Next() skips blank lines and
 // '#' comments.
@@ -60,7 +60,7 @@ class NumberedLines {
   }
   int number() const { return number_; }
   // "file:line" of the line read last.
-  std::string Where() const { return rpt::Where(source_, number_); }
+  std::string LineWhere() const { return rpt::LineWhere(source_, number_); }
 
  private:
   std::istream& in_;
@@ -75,7 +75,7 @@ double ParseDouble(const std::string& token, const std::string& what, const std:
   return value;
 }
 
-int ParseInt(const std::string& token, const std::string& what, const std::string& where) {
+int ParseColmapInt(const std::string& token, const std::string& what, const std::string& where) {
   int value = 0;
   if (!io::ParseInteger(token, &value)) throw InputError(where + ": " + what + " '" + token + "' is not an integer");
   return value;
@@ -95,15 +95,15 @@ std::vector<ColmapCamera> ParseColmapCamerasText(std::istream& in, const std::st
   NumberedLines lines(in, source);
   std::string line;
   while (lines.Next(&line)) {
-    const std::string where = lines.Where();
+    const std::string where = lines.LineWhere();
     const auto tokens = Tokens(line);
     if (tokens.size() < 4) throw InputError(where + ": expected CAMERA_ID MODEL WIDTH HEIGHT PARAMS...");
     ColmapCamera camera;
     camera.line = lines.number();
-    camera.camera_id = ParseInt(tokens[0], "CAMERA_ID", where);
+    camera.camera_id = ParseColmapInt(tokens[0], "CAMERA_ID", where);
     camera.model = tokens[1];
-    camera.width = ParseInt(tokens[2], "WIDTH", where);
-    camera.height = ParseInt(tokens[3], "HEIGHT", where);
+    camera.width = ParseColmapInt(tokens[2], "WIDTH", where);
+    camera.height = ParseColmapInt(tokens[3], "HEIGHT", where);
     if (camera.width <= 0 || camera.height <= 0) throw InputError(where + ": image size must be positive");
     for (std::size_t i = 4; i < tokens.size(); ++i) {
       camera.params.push_back(ParseDouble(tokens[i], "parameter " + std::to_string(i - 4), where));
@@ -120,15 +120,15 @@ std::vector<ColmapImage> ParseColmapImagesText(std::istream& in, const std::stri
   NumberedLines lines(in, source);
   std::string line;
   while (lines.Next(&line)) {
-    const std::string where = lines.Where();
+    const std::string where = lines.LineWhere();
     const auto tokens = Tokens(line);
     if (tokens.size() < 10) throw InputError(where + ": expected IMAGE_ID QW QX QY QZ TX TY TZ CAMERA_ID NAME");
     ColmapImage image;
     image.line = lines.number();
-    image.image_id = ParseInt(tokens[0], "IMAGE_ID", where);
+    image.image_id = ParseColmapInt(tokens[0], "IMAGE_ID", where);
     for (int i = 0; i < 4; ++i) image.qvec_wxyz[i] = ParseDouble(tokens[1 + static_cast<std::size_t>(i)], "quaternion", where);
     for (int i = 0; i < 3; ++i) image.tvec[i] = ParseDouble(tokens[5 + static_cast<std::size_t>(i)], "translation", where);
-    image.camera_id = ParseInt(tokens[8], "CAMERA_ID", where);
+    image.camera_id = ParseColmapInt(tokens[8], "CAMERA_ID", where);
     // NAME is the rest of the line (COLMAP allows spaces in image names).
     std::size_t pos = 0;
     for (int i = 0; i < 9; ++i) {
@@ -142,7 +142,7 @@ std::vector<ColmapImage> ParseColmapImagesText(std::istream& in, const std::stri
     // The POINTS2D line always follows (possibly empty): (X, Y, POINT3D_ID) triples.
     if (std::string raw; lines.NextRaw(&raw)) {
       if (Tokens(raw).size() % 3 != 0) {
-        throw InputError(lines.Where() + ": expected the POINTS2D line of image " + tokens[0] +
+        throw InputError(lines.LineWhere() + ": expected the POINTS2D line of image " + tokens[0] +
                          " (X Y POINT3D_ID triples)");
       }
     }
@@ -170,7 +170,8 @@ Eigen::Matrix3d ColmapQuaternionToRotation(const Eigen::Vector4d& q) {
 }
 
 Camera ColmapCameraToCamera(const ColmapCamera& colmap, const std::string& source) {
-  const std::string where = Where(source, colmap.line) + ": camera " + std::to_string(colmap.camera_id) + " (" + colmap.model + ")";
+  const std::string where =
+      LineWhere(source, colmap.line) + ": camera " + std::to_string(colmap.camera_id) + " (" + colmap.model + ")";
   const std::vector<double>& p = colmap.params;
   auto expect = [&](std::size_t n) {
     if (p.size() != n) {

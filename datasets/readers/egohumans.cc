@@ -31,7 +31,7 @@ constexpr int kAriaImageSize = 1408;  // egohumans: any other COLMAP camera size
 constexpr int kBodyJoints = 17;
 constexpr int kWholeBodyJoints = 133;
 
-struct Options {
+struct EgoHumansOptions {
   fs::path root;
   std::vector<std::string> sequences;  // empty = all
   std::vector<std::string> cameras;    // empty = all exo cameras
@@ -49,9 +49,9 @@ struct SequenceDir {
   std::string seq;  // e.g. "001_tagging"
 };
 
-Options ParseOptions(const DatasetRequest& request) {
+EgoHumansOptions ParseEgoHumansOptions(const DatasetRequest& request) {
   const EgohumansParams params = ParseDatasetParams<EgohumansParams>("egohumans", request);
-  Options o;
+  EgoHumansOptions o;
   o.root = request.root;
   o.sequences = params.sequences;
   o.cameras = params.cameras;
@@ -76,7 +76,7 @@ std::vector<fs::path> SortedSubdirs(const fs::path& dir) {
 }
 
 // The sequence directories under root: root itself, root/<seq>, or root/<big>/<seq>.
-std::vector<SequenceDir> FindSequences(const Options& options) {
+std::vector<SequenceDir> FindSequences(const EgoHumansOptions& options) {
   fs::path root = options.root.lexically_normal();
   if (root.filename().empty()) root = root.parent_path();
   if (!fs::is_directory(root)) throw InputError(PathName(options.root) + ": not a directory");
@@ -145,7 +145,7 @@ void SetPose(const Eigen::Matrix4d& cam_from_aria, const std::string& source, co
 }
 
 // The exo cameras; rotation and quaternion corrections are counted in `warnings`.
-std::vector<Camera> ReadExoCameras(const Options& options, const SequenceDir& dir, int reference_time_stamp,
+std::vector<Camera> ReadExoCameras(const EgoHumansOptions& options, const SequenceDir& dir, int reference_time_stamp,
                                    InputWarnings* warnings) {
   const fs::path workplace = dir.path / "colmap" / "workplace";
   const fs::path cameras_path = workplace / "cameras.txt";
@@ -219,7 +219,7 @@ std::vector<Camera> ReadExoCameras(const Options& options, const SequenceDir& di
 
 // Time stamps of processed_data/<gt>/%05d.npy, sorted; other entries are counted in `warnings`
 // (unused input).
-std::vector<int> GtTimeStamps(const Options& options, const SequenceDir& dir, InputWarnings* warnings) {
+std::vector<int> GtTimeStamps(const EgoHumansOptions& options, const SequenceDir& dir, InputWarnings* warnings) {
   const fs::path gt_dir = dir.path / "processed_data" / options.gt;
   if (!fs::is_directory(gt_dir)) throw InputError(PathName(gt_dir) + ": ground-truth directory not found");
   std::vector<int> out;
@@ -241,14 +241,14 @@ std::vector<int> GtTimeStamps(const Options& options, const SequenceDir& dir, In
   return out;
 }
 
-std::vector<int> SelectedTimeStamps(const Options& options, const SequenceDir& dir, InputWarnings* warnings) {
+std::vector<int> SelectedTimeStamps(const EgoHumansOptions& options, const SequenceDir& dir, InputWarnings* warnings) {
   const std::vector<int> all = GtTimeStamps(options, dir, warnings);
   std::vector<int> out;
   for (const std::size_t k : h36m_ego::SelectFrames(all.size(), options.every, options.max_frames)) out.push_back(all[k]);
   return out;
 }
 
-std::string FrameId(const SequenceDir& dir, int time_stamp) {
+std::string EgoHumansFrameId(const SequenceDir& dir, int time_stamp) {
   return "egohumans_" + dir.big + "_" + dir.seq + "_" + h36m_ego::Padded(time_stamp, 5);
 }
 
@@ -347,7 +347,7 @@ std::vector<std::unique_ptr<FrameSource>> OpenEgohumans(const DatasetRequest& re
         "egohumans: the frames are the ground-truth time stamps (processed_data/<gt>/%05d.npy): the "
         "reader cannot run without its ground truth");
   }
-  const Options options = ParseOptions(request);
+  const EgoHumansOptions options = ParseEgoHumansOptions(request);
   std::vector<std::unique_ptr<FrameSource>> out;
   for (const SequenceDir& dir : FindSequences(options)) {
     InputWarnings warnings;
@@ -362,7 +362,7 @@ std::vector<std::unique_ptr<FrameSource>> OpenEgohumans(const DatasetRequest& re
     auto convert = [dir, stamps, options, cameras = header.cameras](std::size_t i, SequenceFrame* frame,
                                                                     InputWarnings* frame_warnings) {
       const int stamp = stamps[i];
-      frame->id = FrameId(dir, stamp);
+      frame->id = EgoHumansFrameId(dir, stamp);
       frame->timestamp_s = (stamp - 1) / options.fps;
       frame->gt = ReadGtFrame(dir.path / "processed_data" / options.gt / (h36m_ego::Padded(stamp, 5) + ".npy"));
       if (!options.detections) return;

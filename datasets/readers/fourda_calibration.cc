@@ -7,18 +7,17 @@
 
 #include "core/errors.h"
 #include "datasets/calibration/rodrigues.h"
+#include "datasets/calibration/row_major.h"
 #include "datasets/camera_plausibility.h"
 #include "datasets/io/json_file.h"
 
 namespace rpt {
 namespace {
 
-Eigen::Matrix3d RowMajor3x3(const double* v) { return Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(v); }
-
 // "R": a Rodrigues vector (axis * angle in radians) or a row-major matrix.
-Eigen::Matrix3d ReadRotation(const nlohmann::json& root, const std::string& pointer, const std::string& source) {
+Eigen::Matrix3d ReadFourDaRotation(const nlohmann::json& root, const std::string& pointer, const std::string& source) {
   const std::vector<double> r = io::JsonNumbers(root, pointer, source);
-  if (r.size() == 9) return RowMajor3x3(r.data());
+  if (r.size() == 9) return Matrix3FromRowMajor(r.data());
   if (r.size() != 3) {
     throw InputError(source + ": " + pointer + ": expected 3 numbers (Rodrigues vector) or 9 (row-major matrix), got " +
                      std::to_string(r.size()));
@@ -26,7 +25,7 @@ Eigen::Matrix3d ReadRotation(const nlohmann::json& root, const std::string& poin
   return RotationFromRodrigues(Eigen::Vector3d(r[0], r[1], r[2]));
 }
 
-int ImageSide(double value, const std::string& where) {
+int FourDaImageSide(double value, const std::string& where) {
   if (!(value >= 1.0 && value <= 1e6) || value != std::floor(value)) {
     throw InputError(where + ": image size " + std::to_string(value) + " is not a positive integer");
   }
@@ -42,10 +41,10 @@ std::vector<Camera> ReadFourDaCalibration(const std::filesystem::path& path, Inp
   io::ForEachJsonCamera(root, source, "K, RT, imgSize", [&](const std::string& id, const std::string& base) {
     Camera camera;
     camera.name = id;
-    camera.K = RowMajor3x3(io::JsonNumbers(root, base + "/K", source, 9).data());
+    camera.K = Matrix3FromRowMajor(io::JsonNumbers(root, base + "/K", source, 9).data());
     const std::vector<double> size = io::JsonNumbers(root, base + "/imgSize", source, 2);
-    camera.width = ImageSide(size[0], source + ": " + base + "/imgSize");
-    camera.height = ImageSide(size[1], source + ": " + base + "/imgSize");
+    camera.width = FourDaImageSide(size[0], source + ": " + base + "/imgSize");
+    camera.height = FourDaImageSide(size[1], source + ": " + base + "/imgSize");
 
     Eigen::Matrix3d R;
     std::string rotation_pointer;
@@ -56,7 +55,7 @@ std::vector<Camera> ReadFourDaCalibration(const std::filesystem::path& path, Inp
       camera.t = Eigen::Vector3d(rt[3], rt[7], rt[11]);
     } else if (io::JsonFind(root, base + "/R") != nullptr || io::JsonFind(root, base + "/T") != nullptr) {
       rotation_pointer = base + "/R";
-      R = ReadRotation(root, rotation_pointer, source);
+      R = ReadFourDaRotation(root, rotation_pointer, source);
       const std::vector<double> t = io::JsonNumbers(root, base + "/T", source, 3);
       camera.t = Eigen::Vector3d(t[0], t[1], t[2]);
     } else {

@@ -12,7 +12,22 @@
 #include "datasets/io/number_text.h"
 
 namespace rpt {
+namespace path_template {
+
+// One piece of a template: literal text, or a capture group with optional padding and offset.
+// (Outside the anonymous namespace: PathMapper::Impl, a member of a class with linkage, holds them.)
+struct TemplatePart {
+  std::string literal;
+  int group = -1;  // >= 0: a capture group
+  int width = -1;  // >= 0: numeric, zero-padded
+  long long offset = 0;
+};
+
+}  // namespace path_template
+
 namespace {
+
+using path_template::TemplatePart;
 
 const std::unordered_set<std::string>& KnownNames() {
   static const std::unordered_set<std::string> names = [] {
@@ -41,14 +56,6 @@ std::string Suggestion(std::string_view name) {
   if (lower != name && IsKnownJointName(lower)) return lower;
   return "";
 }
-
-// One piece of a template: literal text, or a capture group with optional padding and offset.
-struct TemplatePart {
-  std::string literal;
-  int group = -1;     // >= 0: a capture group
-  int width = -1;     // >= 0: numeric, zero-padded
-  long long offset = 0;
-};
 
 std::vector<TemplatePart> ParseTemplate(const std::string& text, const std::string& what) {
   std::vector<TemplatePart> parts;

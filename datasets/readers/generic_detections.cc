@@ -17,12 +17,9 @@
 namespace rpt {
 namespace {
 
-using nlohmann::json;
+using generic_internal::Fail;
 using generic_internal::Source;
-
-[[noreturn]] void Fail(const std::string& source, const std::string& pointer, const std::string& what) {
-  throw InputError(source + ": " + pointer + ": " + what);
-}
+using nlohmann::json;
 
 // One view's "poses": persons x joints x [x, y, score]. Scores slightly above 1 are clamped and
 // counted in `warnings`.

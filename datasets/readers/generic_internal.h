@@ -24,6 +24,11 @@
 
 namespace rpt::generic_internal {
 
+// Throws InputError "<source>: <pointer>: <what>".
+[[noreturn]] inline void Fail(const std::string& source, const std::string& pointer, const std::string& what) {
+  throw InputError(source + ": " + pointer + ": " + what);
+}
+
 // The name of a file in messages: the path as given.
 inline std::string Source(const std::filesystem::path& path) { return path.string(); }
 

@@ -17,6 +17,7 @@
 #include "datasets/input_warnings.h"
 #include "datasets/io/binary.h"
 #include "datasets/io/json_file.h"
+#include "datasets/io/json_output.h"
 #include "datasets/io/text_file.h"
 #include "datasets/readers/detections_file.h"
 #include "datasets/readers/generic_common.h"
@@ -25,19 +26,16 @@
 namespace rpt {
 namespace {
 
-using nlohmann::json;
+using generic_internal::Fail;
 using generic_internal::IdString;
 using generic_internal::Source;
+using nlohmann::json;
 
 // The one warning of a file whose labels have neither "timestamp" nor "fps" (count = the labels).
 constexpr const char* kUnknownTimesWarning =
     "labels without \"timestamp\" or \"fps\": their times are unknown, so nothing is carried from one frame to the "
     "next (no tracking, no speed limits); give each label a \"timestamp\", each scene an \"fps\", or the frame rate "
     "as --param fps=N";
-
-[[noreturn]] void Fail(const std::string& source, const std::string& pointer, const std::string& what) {
-  throw InputError(source + ": " + pointer + ": " + what);
-}
 
 bool Near(double a, double b) { return std::abs(a - b) <= 1e-9 * std::max({1.0, std::abs(a), std::abs(b)}); }
 
@@ -369,25 +367,21 @@ std::vector<std::unique_ptr<FrameSource>> OpenLabels(const std::filesystem::path
 
 namespace {
 
-using ojson = nlohmann::ordered_json;
-
-void CheckFinite(double value, const std::string& source, const std::string& where) {
-  if (!std::isfinite(value)) throw InputError(source + ": cannot write " + where + ": value is not finite");
-}
+using OrderedJson = nlohmann::ordered_json;
 
 }  // namespace
 
 int WriteLabels(const std::filesystem::path& path, const std::vector<Sequence>& sequences) {
   const std::string source = Source(path);
-  std::vector<ojson> labels;
+  std::vector<OrderedJson> labels;
   std::unordered_set<std::string> ids;
   for (const Sequence& sequence : sequences) {
     CheckJointNames(sequence.gt_joints, source + ": cannot write sequence '" + sequence.name + "'");
-    ojson cameras = ojson::array();
+    OrderedJson cameras = OrderedJson::array();
     for (const Camera& camera : sequence.cameras)
       cameras.push_back(
           camera_json::CameraJson(camera, source, "sequence '" + sequence.name + "', camera '" + camera.name + "'"));
-    const ojson joints = sequence.gt_joints;
+    const OrderedJson joints = sequence.gt_joints;
     const int num_joints = static_cast<int>(sequence.gt_joints.size());
     for (const SequenceFrame& frame : sequence.frames) {
       const std::string where = "sequence '" + sequence.name + "', frame '" + frame.id + "'";
@@ -396,25 +390,25 @@ int WriteLabels(const std::filesystem::path& path, const std::vector<Sequence>& 
         throw InputError(source + ": cannot write " + where + ": " + std::to_string(frame.gt.num_joints) +
                          " joints, expected " + std::to_string(num_joints));
       }
-      ojson label;
+      OrderedJson label;
       label["id"] = frame.id;
       label["scene"] = sequence.name;
       if (std::isnan(frame.timestamp_s)) {
         label["timestamp"] = nullptr;  // unknown (read back as a label without time)
       } else {
-        CheckFinite(frame.timestamp_s, source, where);
+        io::CheckFiniteToWrite(frame.timestamp_s, source, where);
         label["timestamp"] = frame.timestamp_s;
       }
       if (sequence.fps > 0) label["fps"] = sequence.fps;
       label["joints"] = joints;
       label["cameras"] = cameras;
-      ojson bodies = ojson::array();
+      OrderedJson bodies = OrderedJson::array();
       bool tracked = false;
       for (int p = 0; p < frame.gt.num_persons(); ++p) {
         const auto person = frame.gt.Person(p);
-        ojson body = ojson::array();
+        OrderedJson body = OrderedJson::array();
         for (int j = 0; j < num_joints; ++j) {
-          for (int k = 0; k < 4; ++k) CheckFinite(person(k, j), source, where);
+          for (int k = 0; k < 4; ++k) io::CheckFiniteToWrite(person(k, j), source, where);
           body.push_back({person(0, j), person(1, j), person(2, j), person(3, j)});
         }
         bodies.push_back(std::move(body));
@@ -424,8 +418,8 @@ int WriteLabels(const std::filesystem::path& path, const std::vector<Sequence>& 
       if (tracked) label["bodyids"] = frame.gt.track_ids;
       const Room& room = sequence.room;
       for (int i = 0; i < 3; ++i) {
-        CheckFinite(room.center_m[i], source, where);
-        CheckFinite(room.size_m[i], source, where);
+        io::CheckFiniteToWrite(room.center_m[i], source, where);
+        io::CheckFiniteToWrite(room.size_m[i], source, where);
       }
       label["room_center"] = {room.center_m.x(), room.center_m.y(), room.center_m.z()};
       label["room_size"] = {room.size_m.x(), room.size_m.y(), room.size_m.z()};

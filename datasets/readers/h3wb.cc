@@ -71,7 +71,7 @@ std::optional<fs::path> FindAnnotationFile(const fs::path& root, const std::stri
   return std::nullopt;
 }
 
-Options ParseOptions(const DatasetRequest& request) {
+Options ParseH3wbOptions(const DatasetRequest& request) {
   const H3wbParams params = ParseDatasetParams<H3wbParams>("h3wb", request);
   Options o;
   o.root = request.root;
@@ -108,11 +108,10 @@ Options ParseOptions(const DatasetRequest& request) {
   return o;
 }
 
-std::string FrameId(const Clip& clip, long long number) {
+std::string H3wbFrameId(const Clip& clip, long long number) {
   if (clip.sample_ids) return "h3wb_" + clip.subject + "_sample_" + h36m_ego::Padded(number, 6);
   return "h3wb_" + clip.subject + "_" + clip.action + "_" + h36m_ego::Padded(number, 6);
 }
-
 
 // ---------------------------------------------------------------------------------------
 // npz "new format"
@@ -346,7 +345,7 @@ std::vector<std::unique_ptr<FrameSource>> OpenH3wb(const DatasetRequest& request
         "h3wb: frames and views are assembled from the 3D annotations (the stored 2D is in the same "
         "file): the reader cannot run without its ground truth");
   }
-  const Options options = ParseOptions(request);
+  const Options options = ParseH3wbOptions(request);
   std::vector<std::unique_ptr<FrameSource>> out;
   for (Clip& clip : ReadClips(options, options.detections)) {
     SequenceHeader header;
@@ -372,7 +371,7 @@ std::vector<std::unique_ptr<FrameSource>> OpenH3wb(const DatasetRequest& request
       std::vector<std::optional<Eigen::Matrix2Xd>> pose_2d;
       clip.convert(i, &world_m, &pose_2d);
       const long long number = clip.numbers[i];
-      frame->id = FrameId(clip, number);
+      frame->id = H3wbFrameId(clip, number);
       if (detections) {
         for (std::size_t c = 0; c < clip.cameras.size(); ++c)
           frame->views.push_back(View2D(clip, pose_2d[c], c, frame->id));

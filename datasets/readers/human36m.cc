@@ -25,7 +25,7 @@ namespace {
 
 using h36m_ego::PathName;
 
-constexpr double kFps = 50.0;
+constexpr double kHuman36mFps = 50.0;
 constexpr int kNumJoints = 18;  // 17 H36M joints + nose
 constexpr int kNoseIndex = 17;
 constexpr int kNeckNoseIndex = 9;
@@ -39,7 +39,7 @@ constexpr std::array<int, 17> kLearnableTriToJoint = {3, 2, 1, 4, 5, 6, 0, 7, 8,
 
 constexpr const char* kLabelsFileName = "human36m-multiview-labels-GTbboxes.npy";
 
-struct Options {
+struct Human36mOptions {
   std::filesystem::path root;
   std::vector<std::string> subjects;
   std::vector<std::string> actions;  // empty = all
@@ -54,7 +54,7 @@ struct Options {
 };
 
 // "Directions" matches "Directions-1" and "Directions-2"; "Directions-1" only itself.
-bool ActionMatches(const std::string& action, const std::string& filter) {
+bool Human36mActionMatches(const std::string& action, const std::string& filter) {
   if (action == filter) return true;
   if (action.size() <= filter.size() + 1 || action.compare(0, filter.size(), filter) != 0 || action[filter.size()] != '-') {
     return false;
@@ -63,16 +63,18 @@ bool ActionMatches(const std::string& action, const std::string& filter) {
                      [](char c) { return c >= '0' && c <= '9'; });
 }
 
-bool ActionSelected(const Options& options, const std::string& subject, const std::string& action) {
+bool ActionSelected(const Human36mOptions& options, const std::string& subject, const std::string& action) {
   if (!options.actions.empty() &&
-      std::none_of(options.actions.begin(), options.actions.end(), [&](const std::string& f) { return ActionMatches(action, f); })) {
+      std::none_of(options.actions.begin(), options.actions.end(),
+                   [&](const std::string& f) { return Human36mActionMatches(action, f); })) {
     return false;
   }
   for (const std::string& item : options.exclude) {
     const std::size_t slash = item.find('/');
     const std::string subject_filter = slash == std::string::npos ? "" : item.substr(0, slash);
     const std::string action_filter = slash == std::string::npos ? item : item.substr(slash + 1);
-    if ((subject_filter.empty() || subject_filter == subject) && ActionMatches(action, action_filter)) return false;
+    if ((subject_filter.empty() || subject_filter == subject) && Human36mActionMatches(action, action_filter))
+      return false;
   }
   return true;
 }
@@ -90,9 +92,9 @@ std::string ListPaths(const std::vector<std::filesystem::path>& paths) {
   return out;
 }
 
-Options ParseOptions(const DatasetRequest& request) {
+Human36mOptions ParseHuman36mOptions(const DatasetRequest& request) {
   const Human36mParams params = ParseDatasetParams<Human36mParams>("human36m", request);
-  Options o;
+  Human36mOptions o;
   o.root = request.root;
   o.subjects = params.subjects;
   o.actions = params.actions;
@@ -161,7 +163,7 @@ SequenceHeader NewHeader(const std::string& subject, const std::string& action, 
   header.name = "human36m/" + subject + "/" + action;
   header.cameras = std::move(cameras);
   header.gt_joints = Human36mJoints();
-  header.fps = kFps;
+  header.fps = kHuman36mFps;
   return header;
 }
 
@@ -169,7 +171,7 @@ SequenceHeader NewHeader(const std::string& subject, const std::string& action, 
 void FillFrame(bool nose_from_head, const std::string& subject, const std::string& action, long long frame_idx,
                const Eigen::Matrix<double, 3, 17>& joints_m, SequenceFrame* frame) {
   frame->id = "human36m_" + subject + "_" + action + "_" + h36m_ego::Padded(frame_idx, 6);
-  frame->timestamp_s = static_cast<double>(frame_idx) / kFps;
+  frame->timestamp_s = static_cast<double>(frame_idx) / kHuman36mFps;
   frame->gt.Clear(kNumJoints);
   auto person = frame->gt.AddPerson(0);
   for (int j = 0; j < 17; ++j) person.col(j) << joints_m.col(j), 1.0;
@@ -178,7 +180,7 @@ void FillFrame(bool nose_from_head, const std::string& subject, const std::strin
 
 // The cameras of `subject`; their corrections go to `warnings`, which the subject's first sequence
 // takes over (the cameras are shared by all its sequences: counted once).
-std::vector<Camera> SubjectCameras(const Options& options, const io::PyView* labels, const std::string& subject,
+std::vector<Camera> SubjectCameras(const Human36mOptions& options, const io::PyView* labels, const std::string& subject,
                                    InputWarnings* warnings) {
   if (options.cameras_file.empty()) return h36m_ego::LearnableTriCameras(*labels, subject, options.model, warnings);
   return ReadHuman36mCameras(options.cameras_file, subject, options.model, warnings);
@@ -282,7 +284,7 @@ Eigen::Matrix<double, 3, 17> AnnotFrameToWorld(const AnnotRows& rows, long long 
 
 // One source per selected action directory; its annot.h5 is read when the source is opened and
 // converted one frame per Next.
-std::vector<std::unique_ptr<FrameSource>> OpenFromAnnot(const Options& options) {
+std::vector<std::unique_ptr<FrameSource>> OpenFromAnnot(const Human36mOptions& options) {
   std::vector<std::unique_ptr<FrameSource>> out;
   for (const std::string& subject : options.subjects) {
     const std::filesystem::path subject_dir = options.root / "processed" / subject;
@@ -319,7 +321,7 @@ std::vector<std::unique_ptr<FrameSource>> OpenFromAnnot(const Options& options) 
 // learnable-triangulation labels npy
 
 // The labels npy is read once for every sequence; each source converts its rows one frame per Next.
-std::vector<std::unique_ptr<FrameSource>> OpenFromLabels(const Options& options) {
+std::vector<std::unique_ptr<FrameSource>> OpenFromLabels(const Human36mOptions& options) {
   const std::string source = PathName(options.labels_file);
   const io::PyView labels = io::ReadNpy(options.labels_file);
   if (!labels.IsDict()) labels.Fail("expected the dict written by generate-labels-npy-multiview.py");
@@ -445,7 +447,7 @@ std::vector<std::unique_ptr<FrameSource>> OpenHuman36m(const DatasetRequest& req
         "human36m: the frames are the ground-truth labels (annot.h5 or the labels npy) and the reader "
         "has no 2D detections of its own: it cannot run without its ground truth");
   }
-  const Options options = ParseOptions(request);
+  const Human36mOptions options = ParseHuman36mOptions(request);
   return options.use_npy ? OpenFromLabels(options) : OpenFromAnnot(options);
 }
 

@@ -136,7 +136,7 @@ int FrameNumber(const std::string& file_name, const std::string& where) {
   return frame;
 }
 
-std::string FrameId(int day, int frame) {
+std::string MvorFrameId(int day, int frame) {
   char text[48];
   std::snprintf(text, sizeof(text), "mvor_day%d_%06d", day, frame);
   return text;
@@ -324,7 +324,7 @@ std::vector<std::unique_ptr<FrameSource>> OpenMvor(const DatasetRequest& request
     const auto start = day_start.try_emplace(day, time_s).first;
 
     MvorFrame& frame = day_frames->second.emplace_back();
-    frame.id = FrameId(day, frame_number);
+    frame.id = MvorFrameId(day, frame_number);
     frame.timestamp_s = time_s - start->second;
     if (const auto persons = persons_of.find(key); persons != persons_of.end()) {
       frame.persons = std::move(persons->second);

@@ -11,6 +11,7 @@
 
 #include "core/errors.h"
 #include "core/option_codec.h"
+#include "datasets/calibration/row_major.h"
 #include "datasets/camera_plausibility.h"
 #include "datasets/input_warnings.h"
 #include "datasets/io/json_file.h"
@@ -35,14 +36,10 @@ Eigen::Matrix3d AxisPermutation() {
   return A;
 }
 
-std::string FrameId(const std::string& sequence, long frame) {
+std::string PanopticFrameId(const std::string& sequence, long frame) {
   char digits[32];
   std::snprintf(digits, sizeof(digits), "%06ld", frame);
   return "panoptic_" + sequence + "_" + digits;
-}
-
-Eigen::Matrix3d RowMajor3x3(const std::vector<double>& v) {
-  return Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(v.data());
 }
 
 }  // namespace
@@ -93,12 +90,13 @@ std::vector<Camera> ReadPanopticCameras(const std::filesystem::path& path, const
     }
     const std::vector<double> dist = io::JsonNumbers(root, base + "/distCoef", source, 5);
     const std::vector<double> t = io::JsonMatrix(root, base + "/t", source, 3, 1);
-    const Eigen::Matrix3d R = AcceptRotation(RowMajor3x3(io::JsonMatrix(root, base + "/R", source, 3, 3)), source,
-                                             source + ": " + base + "/R (camera '" + name + "')", warnings);
-    Camera camera = ConvertPanopticCamera(
-        name, static_cast<int>(resolution[0]), static_cast<int>(resolution[1]),
-        RowMajor3x3(io::JsonMatrix(root, base + "/K", source, 3, 3)), {dist[0], dist[1], dist[2], dist[3], dist[4]}, R,
-        Eigen::Vector3d(t[0], t[1], t[2]));
+    const Eigen::Matrix3d R =
+        AcceptRotation(Matrix3FromRowMajor(io::JsonMatrix(root, base + "/R", source, 3, 3).data()), source,
+                       source + ": " + base + "/R (camera '" + name + "')", warnings);
+    Camera camera =
+        ConvertPanopticCamera(name, static_cast<int>(resolution[0]), static_cast<int>(resolution[1]),
+                              Matrix3FromRowMajor(io::JsonMatrix(root, base + "/K", source, 3, 3).data()),
+                              {dist[0], dist[1], dist[2], dist[3], dist[4]}, R, Eigen::Vector3d(t[0], t[1], t[2]));
     if (const std::string error = camera.Validate(); !error.empty()) {
       throw InputError(source + ": " + base + ": " + error);  // error names the camera
     }
@@ -196,7 +194,7 @@ class PanopticSource final : public FrameSource {
       if (params_.max_frames > 0 && delivered_ >= params_.max_frames) return false;
       const PoseFile& file = files_[next_];
       next_ += static_cast<size_t>(params_.every);
-      frame->id = FrameId(name_, file.frame);
+      frame->id = PanopticFrameId(name_, file.frame);
       frame->timestamp_s = static_cast<double>(file.frame) / kHdFps;
       frame->views.clear();
       frame->labels_2d.clear();

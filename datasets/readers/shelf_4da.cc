@@ -21,15 +21,15 @@ namespace {
 
 constexpr const char* kName = "shelf-4da";
 constexpr const char* kFramePrefix = "shelf4da";
-constexpr double kFps = 25.0;  // the Shelf reader's rate (not published for Shelf)
-constexpr int kFileJoints = 15;  // SHELF15
-constexpr int kHeadBottom = 12;
-constexpr int kHeadTop = 13;
+constexpr double kShelfFps = 25.0;  // the Shelf reader's rate (not published for Shelf)
+constexpr int kShelf15Joints = 15;  // SHELF15
+constexpr int kShelf15HeadBottom = 12;
+constexpr int kShelf15HeadTop = 13;
 constexpr int kNose = 15;  // derived, after the file's joints
 
 std::string What(const std::string& key) { return dataset_params::ParamKey(kName, key); }
 
-std::string FrameId(size_t index) {
+std::string ShelfFourDaFrameId(size_t index) {
   char digits[32];
   std::snprintf(digits, sizeof(digits), "%06zu", index);
   return std::string(kFramePrefix) + "_" + digits;
@@ -54,8 +54,8 @@ std::vector<size_t> SelectFrames(const std::string& text, size_t num_frames, con
 }
 
 // gt.txt persons -> Poses3D with the derived nose.
-void ConvertGroundTruth(const std::vector<FourDaPerson>& persons, HeadNoseProxy nose_proxy, const std::string& source,
-                        size_t frame, Poses3D* gt) {
+void ConvertShelf15GroundTruth(const std::vector<FourDaPerson>& persons, HeadNoseProxy nose_proxy,
+                               const std::string& source, size_t frame, Poses3D* gt) {
   gt->Clear(static_cast<int>(Shelf4daJoints().size()));
   for (size_t p = 0; p < persons.size(); ++p) {
     const FourDaPerson& person = persons[p];
@@ -65,13 +65,13 @@ void ConvertGroundTruth(const std::vector<FourDaPerson>& persons, HeadNoseProxy 
                        " is negative (ground-truth identities are track ids >= 0)");
     }
     auto joints = gt->AddPerson(person.identity);
-    joints.leftCols(kFileJoints) = person.joints;
-    const Eigen::Vector3d bottom = person.joints.col(kHeadBottom).head<3>();
-    const Eigen::Vector3d top = person.joints.col(kHeadTop).head<3>();
+    joints.leftCols(kShelf15Joints) = person.joints;
+    const Eigen::Vector3d bottom = person.joints.col(kShelf15HeadBottom).head<3>();
+    const Eigen::Vector3d top = person.joints.col(kShelf15HeadTop).head<3>();
     const Eigen::Vector3d nose = nose_proxy == HeadNoseProxy::kTop      ? top
                                  : nose_proxy == HeadNoseProxy::kBottom ? bottom
                                                                     : Eigen::Vector3d(0.5 * (bottom + top));
-    joints.col(kNose) << nose, std::min(person.joints(3, kHeadBottom), person.joints(3, kHeadTop));
+    joints.col(kNose) << nose, std::min(person.joints(3, kShelf15HeadBottom), person.joints(3, kShelf15HeadTop));
   }
 }
 
@@ -153,7 +153,7 @@ std::vector<std::unique_ptr<FrameSource>> OpenShelf4da(const DatasetRequest& req
   header.name = kName;
   header.cameras = ReadFourDaCalibration(request.root / "calibration.json", &warnings);
   header.room = ShelfRoom();
-  header.fps = kFps;
+  header.fps = kShelfFps;
 
   // The parsed files: gt.txt and one detection file per camera, converted one frame per Next.
   struct Files {
@@ -170,9 +170,9 @@ std::vector<std::unique_ptr<FrameSource>> OpenShelf4da(const DatasetRequest& req
     const std::filesystem::path gt_path = request.root / "gt.txt";
     files->gt_source = gt_path.string();
     files->gt = ReadFourDaSkeletons(gt_path);
-    if (files->gt->num_joints != kFileJoints) {
+    if (files->gt->num_joints != kShelf15Joints) {
       throw InputError(files->gt_source + ":1: header: " + std::to_string(files->gt->num_joints) +
-                       " joints, expected " + std::to_string(kFileJoints) + " (SHELF15)");
+                       " joints, expected " + std::to_string(kShelf15Joints) + " (SHELF15)");
     }
     count_source = files->gt_source;
     num_frames = files->gt->frames.size();
@@ -198,9 +198,9 @@ std::vector<std::unique_ptr<FrameSource>> OpenShelf4da(const DatasetRequest& req
   auto convert = [files, nose_proxy = params.nose_proxy, association, cameras = header.cameras](
                      size_t i, SequenceFrame* frame, InputWarnings*) {
     const size_t f = files->frames[i];
-    frame->id = FrameId(f);
-    frame->timestamp_s = static_cast<double>(f) / kFps;
-    if (files->gt) ConvertGroundTruth(files->gt->frames[f], nose_proxy, files->gt_source, f, &frame->gt);
+    frame->id = ShelfFourDaFrameId(f);
+    frame->timestamp_s = static_cast<double>(f) / kShelfFps;
+    if (files->gt) ConvertShelf15GroundTruth(files->gt->frames[f], nose_proxy, files->gt_source, f, &frame->gt);
     if (files->detections.empty()) return;
     frame->views.resize(cameras.size());
     for (size_t c = 0; c < cameras.size(); ++c) {

@@ -85,7 +85,7 @@ DatasetInfo MakeInfo(const ShelfCampusSpec& spec) {
   return info;
 }
 
-std::string FrameId(const std::string& prefix, int frame) {
+std::string ShelfCampusFrameId(const std::string& prefix, int frame) {
   char digits[32];
   std::snprintf(digits, sizeof(digits), "%06d", frame);
   return prefix + "_" + digits;
@@ -227,11 +227,11 @@ std::vector<std::unique_ptr<FrameSource>> OpenShelfCampus(const ShelfCampusSpec&
       if (detections->HasFrame(f)) {
         ++report.frames_with_detections;
       } else if (report.frames_without++ == 0) {
-        report.first_frame_without = FrameId(spec.name, f);
+        report.first_frame_without = ShelfCampusFrameId(spec.name, f);
       }
     }
     if (report.frames_with_detections == 0) {
-      throw NoFrameMatchesError(pkl.string(), 0, "", spec.name, FrameId(spec.name, frames.front()));
+      throw NoFrameMatchesError(pkl.string(), 0, "", spec.name, ShelfCampusFrameId(spec.name, frames.front()));
     }
     CountUnattachedFrames(report, pkl.string(), &warnings);
     warnings.Merge(detections->warnings());
@@ -240,7 +240,7 @@ std::vector<std::unique_ptr<FrameSource>> OpenShelfCampus(const ShelfCampusSpec&
   auto convert = [name = spec.name, frames, fps, nose_proxy, truth, detections](size_t i, SequenceFrame* frame,
                                                                                 InputWarnings* frame_warnings) {
     const int f = frames[i];
-    frame->id = FrameId(name, f);
+    frame->id = ShelfCampusFrameId(name, f);
     frame->timestamp_s = f / fps;
     if (truth) ConvertGroundTruth(*truth, f, nose_proxy, &frame->gt);
     if (detections) detections->ReadFrame(f, &frame->views, frame_warnings);

@@ -6,16 +6,13 @@
 
 #include "core/errors.h"
 #include "datasets/calibration/image_size.h"
+#include "datasets/calibration/row_major.h"
 #include "datasets/camera_plausibility.h"
 #include "datasets/input_warnings.h"
 #include "datasets/io/json_file.h"
 
 namespace rpt {
 namespace {
-
-Eigen::Matrix3d RowMajor3x3(const std::vector<double>& v) {
-  return Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(v.data());
-}
 
 // Optional n x 1 coefficient vector; absent = zeros.
 std::vector<double> OptionalCoefficients(const nlohmann::json& root, const std::string& pointer,
@@ -32,7 +29,7 @@ std::vector<Camera> ReadVoxelPoseCalibration(const std::filesystem::path& path, 
   const std::string source = path.string();
   std::vector<Camera> cameras;
   io::ForEachJsonCamera(root, source, "R, T, fx, fy, cx, cy", [&](const std::string& id, const std::string& base) {
-    const Eigen::Matrix3d R_file = RowMajor3x3(io::JsonMatrix(root, base + "/R", source, 3, 3));
+    const Eigen::Matrix3d R_file = Matrix3FromRowMajor(io::JsonMatrix(root, base + "/R", source, 3, 3).data());
     const std::vector<double> center_mm = io::JsonMatrix(root, base + "/T", source, 3, 1);
     const Eigen::Matrix3d R = AcceptRotation(R_file, source, source + ": " + base + "/R", warnings);
 

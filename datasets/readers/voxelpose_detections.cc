@@ -17,7 +17,7 @@ namespace {
 
 constexpr int kCocoJoints = 17;
 
-std::string FrameId(const std::string& prefix, long frame) {
+std::string VoxelPoseFrameId(const std::string& prefix, long frame) {
   char digits[32];
   std::snprintf(digits, sizeof(digits), "%06ld", frame);
   return prefix + "_" + digits;
@@ -151,7 +151,7 @@ Detections ReadVoxelPoseDetections(const std::filesystem::path& path, const Voxe
   detections.warnings = file.warnings();
   for (const long frame : file.frames()) {
     FrameDetections& out = detections.frames.emplace_back();
-    out.frame_id = FrameId(options.frame_id_prefix, frame);
+    out.frame_id = VoxelPoseFrameId(options.frame_id_prefix, frame);
     file.ReadFrame(frame, &out.cameras, &out.views, &detections.warnings);
   }
   return detections;

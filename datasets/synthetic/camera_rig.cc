@@ -15,8 +15,6 @@
 namespace rpt::synthetic {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 // d r_d / d r of the radial-tangential model's radial part, as a function of s = r^2.
 double RadTanRadialDerivative(const std::array<double, 5>& d, double s) {
   return 1.0 + s * (3.0 * d[0] + s * (5.0 * d[1] + s * 7.0 * d[4]));
@@ -104,7 +102,7 @@ double MonotonicRadius(const Camera& camera) {
       return std::sqrt(s);
     }
     case DistortionModel::kFisheye: {
-      const double theta_max = 89.9 * kPi / 180.0;
+      const double theta_max = 89.9 * std::numbers::pi / 180.0;
       const double theta = FirstNonPositive([&](double x) { return FisheyeDerivative(camera.dist, x); }, theta_max);
       return std::tan(std::min(theta, theta_max));
     }
@@ -157,9 +155,9 @@ std::vector<Camera> MakeCameraRig(const RigOptions& options, uint64_t seed) {
   Rng rng(DeriveSeed(seed, 0x716));
   const bool ring = options.layout == RigLayout::kRing;
   const int n = options.num_cameras;
-  const double azimuth_offset = rng.Uniform(0.0, 2.0 * kPi);
+  const double azimuth_offset = rng.Uniform(0.0, 2.0 * std::numbers::pi);
   const double w = options.image_width, h = options.image_height;
-  const double half_fov = 0.5 * fov_deg * kPi / 180.0;
+  const double half_fov = 0.5 * fov_deg * std::numbers::pi / 180.0;
 
   std::vector<Camera> cameras;
   cameras.reserve(n);
@@ -174,13 +172,13 @@ std::vector<Camera> MakeCameraRig(const RigOptions& options, uint64_t seed) {
     Eigen::Vector3d target = options.look_at_m;
     double roll;
     if (ring) {
-      azimuth = azimuth_offset + 2.0 * kPi * i / n + rng.Normal(0.0, 0.03);
+      azimuth = azimuth_offset + 2.0 * std::numbers::pi * i / n + rng.Normal(0.0, 0.03);
       radius = options.radius_m * (1.0 + rng.Uniform(-0.02, 0.02));
       height = options.height_m + rng.Uniform(-0.05, 0.05);
       target += Eigen::Vector3d(rng.Normal(0.0, 0.05), rng.Normal(0.0, 0.05), rng.Normal(0.0, 0.03));
       roll = rng.Normal(0.0, 0.005);
     } else {
-      azimuth = azimuth_offset + 2.0 * kPi * (i + rng.Uniform(-0.35, 0.35)) / n;
+      azimuth = azimuth_offset + 2.0 * std::numbers::pi * (i + rng.Uniform(-0.35, 0.35)) / n;
       radius = options.radius_m * rng.Uniform(0.75, 1.25);
       height = std::max(0.5, options.height_m + rng.Uniform(-0.8, 0.8));
       target += Eigen::Vector3d(rng.Uniform(-0.5, 0.5), rng.Uniform(-0.5, 0.5), rng.Uniform(-0.3, 0.3));

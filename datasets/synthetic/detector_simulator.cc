@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "core/errors.h"
+#include "datasets/gt_presence.h"
 #include "datasets/synthetic/camera_rig.h"
 #include "datasets/synthetic/detector_error_model.h"
 #include "datasets/synthetic/detector_occlusion.h"
@@ -19,7 +20,6 @@
 namespace rpt::synthetic {
 namespace {
 
-constexpr double kPresentScore = 0.1;  // GT joints with a score <= this are absent
 constexpr int kFalsePositiveAttempts = 10;
 
 // Per-camera quantities shared by all persons of a view.
@@ -298,7 +298,7 @@ void DetectorSimulator::Detect(std::span<const Camera> cameras, const Poses3D& g
     const auto person = gt.Person(p);
     for (int k = 0; k < num_joints; ++k) {
       const int g = from_gt[k];
-      present[p][k] = g >= 0 && person(3, g) > kPresentScore && person.col(g).head<3>().allFinite();
+      present[p][k] = g >= 0 && person(3, g) > kGtPresentScore && person.col(g).head<3>().allFinite();
       if (g >= 0) gt_points[p].col(k) = person.col(g).head<3>();
     }
   }

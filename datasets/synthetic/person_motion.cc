@@ -13,7 +13,6 @@ namespace rpt::synthetic {
 namespace {
 
 using Eigen::Vector3d;
-constexpr double kPi = std::numbers::pi;
 // Gait phase (rad) of the peak swing knee flexion and the half width of the flexion bump; the leg
 // phase is pi/2 at maximal hip flexion.
 constexpr double kKneePeakPhase = 0.6;
@@ -44,16 +43,17 @@ std::array<Vector3d, 68> MakeFaceTemplate() {
   // Jaw 0-16: from the right temple around the chin to the left temple.
   for (int i = 0; i <= 16; ++i) {
     const double t = i / 16.0;
-    const double c = std::cos(kPi * t), s = std::sin(kPi * t);
+    const double c = std::cos(std::numbers::pi * t), s = std::sin(std::numbers::pi * t);
     face[i] = Vector3d(0.046 - 0.048 * std::pow(std::abs(c), 1.5), -0.042 * c, 0.004 - 0.063 * std::pow(s, 1.1));
   }
   // Brows 17-21 (right, outer to inner) and 22-26 (left, inner to outer).
   for (int k = 0; k < 5; ++k) {
-    const double arch = 0.023 + 0.004 * std::sin(kPi * k / 4.0);
+    const double arch = 0.023 + 0.004 * std::sin(std::numbers::pi * k / 4.0);
     const double y_right = -0.036 + 0.007 * k;
     const double y_left = 0.008 + 0.007 * k;
     face[17 + k] = Vector3d(0.050 - 0.010 * std::pow(y_right / 0.036, 2), y_right, arch);
-    face[22 + k] = Vector3d(0.050 - 0.010 * std::pow(y_left / 0.036, 2), y_left, 0.023 + 0.004 * std::sin(kPi * (4 - k) / 4.0));
+    face[22 + k] = Vector3d(0.050 - 0.010 * std::pow(y_left / 0.036, 2), y_left,
+                            0.023 + 0.004 * std::sin(std::numbers::pi * (4 - k) / 4.0));
   }
   // Nose bridge 27-30 (30 = nose tip) and lower nose 31-35.
   const double bridge_x[4] = {0.050, 0.055, 0.059, 0.063};
@@ -182,7 +182,8 @@ BodyShape RandomBodyShape(Rng& rng) {
 double StrideFrequencyHz(double speed_mps) { return 0.55 + 0.35 * std::max(0.0, speed_mps); }
 
 void AdvanceGaitPhase(double dt_s, GaitState* state) {
-  state->phase_rad = std::remainder(state->phase_rad + 2.0 * kPi * StrideFrequencyHz(state->speed_mps) * dt_s, 2.0 * kPi);
+  state->phase_rad = std::remainder(
+      state->phase_rad + 2.0 * std::numbers::pi * StrideFrequencyHz(state->speed_mps) * dt_s, 2.0 * std::numbers::pi);
 }
 
 int NumPosedJoints(bool whole_body) { return whole_body ? kNumWholeBody : kNumBody; }
@@ -216,15 +217,15 @@ void PoseJoints(const BodyShape& shape, const GaitState& state, bool whole_body,
 
   for (int side_index = 0; side_index < 2; ++side_index) {
     const double side = side_index == 0 ? 1.0 : -1.0;  // +1 left
-    const double leg_phase = phase + side_index * kPi;
+    const double leg_phase = phase + side_index * std::numbers::pi;
 
     // Leg: hip flexion, knee flexion in early swing, foot pitch.
     const Vector3d hip = pelvis + torso * Vector3d(0.0, side * shape.hip_half_width_m, 0.0);
     const double hip_flexion = hip_amplitude * std::sin(leg_phase) + 0.03 * amplitude;
     // Swing knee flexion: a raised-cosine bump from push-off to just before heel strike, peaking
     // (~55 deg at a normal walk) while the thigh swings forward.
-    const double from_peak = std::remainder(leg_phase - kKneePeakPhase, 2.0 * kPi) / kKneeBumpHalfWidth;
-    const double bump = std::abs(from_peak) < 1.0 ? std::pow(std::cos(0.5 * kPi * from_peak), 2) : 0.0;
+    const double from_peak = std::remainder(leg_phase - kKneePeakPhase, 2.0 * std::numbers::pi) / kKneeBumpHalfWidth;
+    const double bump = std::abs(from_peak) < 1.0 ? std::pow(std::cos(0.5 * std::numbers::pi * from_peak), 2) : 0.0;
     const double knee_flexion = 0.08 + std::min(1.0, 2.6 * hip_amplitude) * bump;
     const Vector3d thigh_direction =
         (std::sin(hip_flexion) * forward - std::cos(hip_flexion) * up - side * 0.04 * left).normalized();

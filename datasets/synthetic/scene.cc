@@ -14,10 +14,10 @@
 #include "datasets/synthetic/random.h"
 
 namespace rpt::synthetic {
-namespace {
+// Not an anonymous namespace: SceneStream::State, a class with linkage, holds a Walkers and an Animator.
+namespace scene_internal {
 
 using Eigen::Vector2d;
-constexpr double kPi = std::numbers::pi;
 
 // Distance of the hip centre from the walls: keeps swinging feet and hands inside the room.
 constexpr double kWallMargin = 0.65;
@@ -122,7 +122,7 @@ class Walkers {
     }
     for (Agent& agent : agents) {
       agent.preferred_speed = rng.Uniform(0.6, 1.5);
-      agent.heading = rng.Uniform(-kPi, kPi);
+      agent.heading = rng.Uniform(-std::numbers::pi, std::numbers::pi);
       agent.waypoint = SampleWaypoint(rng, waypoints, agent.position, agent.heading);
       agent.heading = std::atan2(agent.waypoint.y() - agent.position.y(), agent.waypoint.x() - agent.position.x()) +
                       rng.Normal(0.0, 0.2);
@@ -158,7 +158,7 @@ class Walkers {
         double best_cost = std::numeric_limits<double>::infinity();
         double best_steer = 0.0, best_intrusion = 0.0;
         for (int k = 0; k <= 2 * kSteerSteps; ++k) {
-          const double steer = (k % 2 == 1 ? -1.0 : 1.0) * ((k + 1) / 2) * (kPi / kSteerSteps);
+          const double steer = (k % 2 == 1 ? -1.0 : 1.0) * ((k + 1) / 2) * (std::numbers::pi / kSteerSteps);
           const double crowding = intrusion(i, Direction(goal_heading + steer), lookahead);
           if (crowding < 0.0) continue;
           const double cost = std::abs(steer) + 4.0 * crowding + (steer > 0.0 ? 1e-3 : 0.0);
@@ -171,8 +171,8 @@ class Walkers {
         if (std::isfinite(best_cost)) {
           agent.blocked_s = 0.0;
           desired_heading = goal_heading + best_steer;
-          target_speed =
-              agent.preferred_speed * (1.0 - 0.3 * std::abs(best_steer) / kPi) * (best_intrusion > 0.0 ? 0.75 : 1.0);
+          target_speed = agent.preferred_speed * (1.0 - 0.3 * std::abs(best_steer) / std::numbers::pi) *
+                         (best_intrusion > 0.0 ? 0.75 : 1.0);
         } else {
           desired_heading = goal_heading;
           agent.blocked_s += dt;
@@ -183,9 +183,10 @@ class Walkers {
         }
       }
       // Turn with a limited rate; walk slower while the heading is off.
-      const double turn = std::remainder(desired_heading - agent.heading, 2.0 * kPi);
-      agent.heading = std::remainder(agent.heading + std::clamp(turn, -kTurnRate * dt, kTurnRate * dt), 2.0 * kPi);
-      const double remaining = std::remainder(desired_heading - agent.heading, 2.0 * kPi);
+      const double turn = std::remainder(desired_heading - agent.heading, 2.0 * std::numbers::pi);
+      agent.heading =
+          std::remainder(agent.heading + std::clamp(turn, -kTurnRate * dt, kTurnRate * dt), 2.0 * std::numbers::pi);
+      const double remaining = std::remainder(desired_heading - agent.heading, 2.0 * std::numbers::pi);
       target_speed *= std::max(0.0, std::cos(remaining));
       agent.speed = std::clamp(target_speed, agent.speed - kDeceleration * dt, agent.speed + kAcceleration * dt);
       // Hard constraints: inside the room, minimum separation to everybody's current position.
@@ -237,7 +238,7 @@ class Animator {
   // Draws each person's gait phase from `rng` (in person order).
   Animator(std::vector<BodyShape> shapes, bool whole_body, double fps, double floor_z, Rng& rng)
       : shapes_(std::move(shapes)), whole_body_(whole_body), fps_(fps), floor_z_(floor_z), gaits_(shapes_.size()) {
-    for (GaitState& gait : gaits_) gait.phase_rad = rng.Uniform(-kPi, kPi);
+    for (GaitState& gait : gaits_) gait.phase_rad = rng.Uniform(-std::numbers::pi, std::numbers::pi);
   }
 
   // The walking speed before the first frame: the step from frame 0 to frame 1 (sequences of
@@ -301,7 +302,9 @@ Scene MakeSceneShell(const RigOptions& rig, uint64_t seed, bool whole_body, cons
   return scene;
 }
 
-}  // namespace
+}  // namespace scene_internal
+
+using namespace scene_internal;  // NOLINT(build/namespaces): this file's own helpers
 
 struct SceneStream::State {
   State(const SceneOptions& options, std::vector<BodyShape> shapes, Rng& gait_rng)
@@ -394,9 +397,9 @@ Scene MakeCrossingScene(const CrossingOptions& options) {
   for (int i = 0; i < options.num_people; ++i) shapes.push_back(RandomBodyShape(rng));
 
   const Box2 walk = ShrunkRoom(options.room_center_m, options.room_size_m, kWallMargin);
-  const double lane_angle = rng.Uniform(0.0, 2.0 * kPi);
+  const double lane_angle = rng.Uniform(0.0, 2.0 * std::numbers::pi);
   const Vector2d along = Direction(lane_angle);
-  const Vector2d across = Direction(lane_angle + 0.5 * kPi);
+  const Vector2d across = Direction(lane_angle + 0.5 * std::numbers::pi);
   const Vector2d center = options.room_center_m.head<2>();
   const double meet_time = 0.5 * (options.num_frames - 1) / options.fps;
   std::vector<Path> paths(options.num_people);
@@ -416,7 +419,7 @@ Scene MakeCrossingScene(const CrossingOptions& options) {
       s_hi = std::min(s_hi, b);
     }
     if (!(s_lo <= 0.0 && s_hi >= 0.0)) throw ConfigError("crossing scene: lanes do not fit into the room");
-    const double heading = lane_angle + (direction > 0 ? 0.0 : kPi);
+    const double heading = lane_angle + (direction > 0 ? 0.0 : std::numbers::pi);
     for (int frame = 0; frame < options.num_frames; ++frame) {
       const double s = std::clamp(direction * speed * (frame / options.fps - meet_time), s_lo, s_hi);
       paths[i].position.push_back(lane_origin + s * along);

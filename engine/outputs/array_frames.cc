@@ -8,14 +8,13 @@
 #include <limits>
 
 #include "core/errors.h"
+#include "core/nan.h"
 #include "datasets/io/json_output.h"
 #include "datasets/io/npz_writer.h"
 #include "datasets/io/staged_output.h"
 
 namespace rpt::engine {
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // A frame's record in a part file (native byte order; read back by the same process):
 //   double time_s, int32 num_persons P, uint32 id bytes, the id, int32 track_ids[P],

@@ -13,7 +13,7 @@ using detector_stats::DetectorStats;
 using detector_stats::ErrorSummary;
 using detector_stats::ViewStats;
 
-std::string Percent(double fraction) {
+std::string PercentOneDecimal(double fraction) {
   char text[32];
   std::snprintf(text, sizeof(text), "%.1f %%", 100.0 * fraction);
   return text;
@@ -40,15 +40,17 @@ void PrintDetectorStatsMarkdown(const DetectorStats& s, const std::string& input
   std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   auto row = [](const ViewStats& v) {
     std::printf("| %s | %ld | %ld | %ld | %s | %ld | %ld | %ld | %.3f | %ld | %ld |\n", MarkdownText(v.camera).c_str(),
-                v.views, v.gt_in_view, v.detected, Percent(v.detection_rate()).c_str(), v.detections, v.duplicates,
-                v.false_positives, v.false_positives_per_view(), v.false_positives_near_gt, v.on_unlabelled);
+                v.views, v.gt_in_view, v.detected, PercentOneDecimal(v.detection_rate()).c_str(), v.detections,
+                v.duplicates, v.false_positives, v.false_positives_per_view(), v.false_positives_near_gt,
+                v.on_unlabelled);
   };
   for (const ViewStats& v : s.views) row(v);
   row(s.total);
-  std::printf("\nDetection rate by the 2D labels: mostly visible %s of %ld, mostly hidden %s of %ld, no labels %s of %ld.\n",
-              Percent(s.detection_rate_by_label[0]).c_str(), s.persons_by_label[0],
-              Percent(s.detection_rate_by_label[1]).c_str(), s.persons_by_label[1],
-              Percent(s.detection_rate_by_label[2]).c_str(), s.persons_by_label[2]);
+  std::printf(
+      "\nDetection rate by the 2D labels: mostly visible %s of %ld, mostly hidden %s of %ld, no labels %s of %ld.\n",
+      PercentOneDecimal(s.detection_rate_by_label[0]).c_str(), s.persons_by_label[0],
+      PercentOneDecimal(s.detection_rate_by_label[1]).c_str(), s.persons_by_label[1],
+      PercentOneDecimal(s.detection_rate_by_label[2]).c_str(), s.persons_by_label[2]);
 
   std::printf("\n## Joint errors (box units)\n\n");
   std::printf("| joints | count | median | p90 | p99 | mean |\n|---|---:|---:|---:|---:|---:|\n");
@@ -71,23 +73,26 @@ void PrintDetectorStatsMarkdown(const DetectorStats& s, const std::string& input
   for (int v = 0; v < detector_stats::kNumVisibilities; ++v) {
     const detector_stats::VisibilityStats& b = s.by_visibility[v];
     std::printf("| %s | %ld | %s | %s of %ld | %.3f |\n", detector_stats::VisibilityName(v), b.joints,
-                Percent(labelled > 0 ? static_cast<double>(b.joints) / labelled : 0).c_str(),
-                Percent(b.missing_rate()).c_str(), b.of_detected, b.confidence_mean);
+                PercentOneDecimal(labelled > 0 ? static_cast<double>(b.joints) / labelled : 0).c_str(),
+                PercentOneDecimal(b.missing_rate()).c_str(), b.of_detected, b.confidence_mean);
   }
 
   std::printf("\n## Other statistics\n\n| statistic | value |\n|---|---|\n");
   std::printf("| missing joints (in-image GT joints of detected persons) | %s of %ld |\n",
-              Percent(s.missing_rate).c_str(), s.joints_in_image);
-  std::printf("| hidden share (occluded or not labelled, views with 2D labels) | %s |\n", Percent(s.hidden_share).c_str());
-  std::printf("| truncated persons (a joint outside the image) | %s of %ld |\n", Percent(s.truncated_share).c_str(),
-              s.persons_in_view);
-  std::printf("| GT persons detected in 0 / 1 / 2 / 3+ views (of %ld in view of a camera, per frame) | %s / %s / %s / %s |\n",
-              s.persons_in_any_view, Percent(s.ShareDetectedInViews(0)).c_str(), Percent(s.ShareDetectedInViews(1)).c_str(),
-              Percent(s.ShareDetectedInViews(2)).c_str(), Percent(s.ShareDetectedInViews(3)).c_str());
+              PercentOneDecimal(s.missing_rate).c_str(), s.joints_in_image);
+  std::printf("| hidden share (occluded or not labelled, views with 2D labels) | %s |\n",
+              PercentOneDecimal(s.hidden_share).c_str());
+  std::printf("| truncated persons (a joint outside the image) | %s of %ld |\n",
+              PercentOneDecimal(s.truncated_share).c_str(), s.persons_in_view);
+  std::printf(
+      "| GT persons detected in 0 / 1 / 2 / 3+ views (of %ld in view of a camera, per frame) | %s / %s / %s / %s |\n",
+      s.persons_in_any_view, PercentOneDecimal(s.ShareDetectedInViews(0)).c_str(),
+      PercentOneDecimal(s.ShareDetectedInViews(1)).c_str(), PercentOneDecimal(s.ShareDetectedInViews(2)).c_str(),
+      PercentOneDecimal(s.ShareDetectedInViews(3)).c_str());
   std::printf("| box diagonal, median px (whole / truncated persons) | %.0f / %.0f |\n", s.box_diagonal_px_median,
               s.box_diagonal_px_median_truncated);
-  std::printf("| left/right swaps (closer to the mirrored GT joint) | %s of %ld |\n", Percent(s.swap_rate).c_str(),
-              s.swap_candidates);
+  std::printf("| left/right swaps (closer to the mirrored GT joint) | %s of %ld |\n",
+              PercentOneDecimal(s.swap_rate).c_str(), s.swap_candidates);
   std::printf("| confidence mean / median | %.3f / %.3f |\n", s.confidence_mean, s.confidence_median);
   std::printf("| confidence mean of false positives | %.3f |\n", s.false_positive_confidence_mean);
   std::printf("| reported statistic joints per detection (paired / false positive) | %.2f / %.2f |\n",
@@ -100,12 +105,13 @@ void PrintDetectorStatsMarkdown(const DetectorStats& s, const std::string& input
   long total = 0;
   for (long n : s.confidence_histogram) total += n;
   std::printf("\n| share |");
-  for (long n : s.confidence_histogram) std::printf(" %s |", Percent(total > 0 ? static_cast<double>(n) / total : 0).c_str());
+  for (long n : s.confidence_histogram)
+    std::printf(" %s |", PercentOneDecimal(total > 0 ? static_cast<double>(n) / total : 0).c_str());
 
   std::printf("\n\n## Per joint (box units; offsets: down = along shoulders->hips, out = away from the midline)\n\n");
   std::printf("| joint | count | median | p90 | missing | hidden | missing of hidden | confidence | down mean | down median | out mean | out median |\n");
   std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
-  auto share = [](long a, long b) { return Percent(b > 0 ? static_cast<double>(a) / b : 0); };
+  auto share = [](long a, long b) { return PercentOneDecimal(b > 0 ? static_cast<double>(a) / b : 0); };
   for (const detector_stats::JointStats& p : s.per_joint) {
     std::printf("| %s | %ld | %.3f | %.3f | %s | %s | %s | %.3f | %+.3f | %+.3f | %+.3f | %+.3f |\n",
                 MarkdownText(p.joint).c_str(), p.error.count, p.error.median, p.error.p90,

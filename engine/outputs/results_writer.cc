@@ -20,11 +20,11 @@
 namespace rpt::engine {
 namespace {
 
-using Json = nlohmann::ordered_json;
+using OrderedJson = nlohmann::ordered_json;
 
-Json Number(double value) { return std::isfinite(value) ? Json(value) : Json(nullptr); }
+OrderedJson Number(double value) { return std::isfinite(value) ? OrderedJson(value) : OrderedJson(nullptr); }
 
-std::string Cell(const Json& value, int decimals = 1) {
+std::string Cell(const OrderedJson& value, int decimals = 1) {
   if (value.is_null()) return "-";
   if (value.is_number_integer()) return std::to_string(value.get<long>());
   if (value.is_number()) {
@@ -40,7 +40,7 @@ std::string LegacyPcpActorKey(int actor_id) { return "legacy_pcp_actor" + std::t
 
 // The legacy PCP keys of any row: "legacy_pcp", then the per-actor keys from actor 1 to the
 // highest any row reports; empty when no row has a legacy PCP.
-std::vector<std::string> LegacyPcpKeys(const std::vector<std::pair<std::string, Json>>& rows) {
+std::vector<std::string> LegacyPcpKeys(const std::vector<std::pair<std::string, OrderedJson>>& rows) {
   std::vector<int> actors;
   bool any = false;
   const std::string prefix = "legacy_pcp_actor";
@@ -93,7 +93,7 @@ const std::vector<SummaryColumn>& SummaryColumns() {
 namespace {
 
 // The metric columns of one result (SummaryColumns' keys that the metrics give) into *j.
-void AddMetricColumns(const metrics::MetricsResult& m, Json* j) {
+void AddMetricColumns(const metrics::MetricsResult& m, OrderedJson* j) {
   (*j)["pcp"] = Number(m.pcp);
   (*j)["pck100"] = Number(m.pck_100);
   (*j)["pck500"] = Number(m.pck_500);
@@ -104,7 +104,7 @@ void AddMetricColumns(const metrics::MetricsResult& m, Json* j) {
   (*j)["f1"] = Number(m.f1);
 }
 
-void AddCountColumns(const metrics::MetricsResult& m, Json* j) {
+void AddCountColumns(const metrics::MetricsResult& m, OrderedJson* j) {
   (*j)["gt_persons"] = m.num_gt_persons;
   (*j)["predictions"] = m.num_predictions;
   (*j)["matches"] = m.num_matches;
@@ -112,7 +112,7 @@ void AddCountColumns(const metrics::MetricsResult& m, Json* j) {
     (*j)["ap" + std::to_string(static_cast<int>(metrics::kApThresholdsMm[i]))] = Number(m.ap[i]);
   }
   if (!m.wholebody.empty()) {
-    Json groups;
+    OrderedJson groups;
     for (const auto& g : m.wholebody) groups[g.name] = Number(g.mpjpe_mm);
     (*j)["wholebody_mpjpe_mm"] = groups;
   }
@@ -127,8 +127,8 @@ void AddCountColumns(const metrics::MetricsResult& m, Json* j) {
 
 }  // namespace
 
-Json SequenceSummaryJson(const SequenceResult& sequence) {
-  Json j;
+OrderedJson SequenceSummaryJson(const SequenceResult& sequence) {
+  OrderedJson j;
   j["sequence"] = sequence.name;
   AddMetricColumns(sequence.metrics, &j);
   j["fps"] = Number(sequence.timing.fps);
@@ -138,9 +138,9 @@ Json SequenceSummaryJson(const SequenceResult& sequence) {
   return j;
 }
 
-Json SummaryJson(const RunResult& run) {
+OrderedJson SummaryJson(const RunResult& run) {
   const metrics::MetricsResult& m = run.metrics;
-  Json j;
+  OrderedJson j;
   AddMetricColumns(m, &j);
   j["fps"] = Number(run.timing.fps);
   j["frame_time_us_median"] = Number(run.timing.frame_us_median);
@@ -150,12 +150,12 @@ Json SummaryJson(const RunResult& run) {
   j["step_time_us_median"] = StepTimesJson(run.timing);
   j["step_count_per_frame"] = StepCountsJson(run.counts);
   j["counter_per_frame"] = CountersJson(run.counts);
-  j["detection_noise_m"] = run.counts.noise_frames > 0 ? Json(run.counts.noise_m_median) : Json(nullptr);
+  j["detection_noise_m"] = run.counts.noise_frames > 0 ? OrderedJson(run.counts.noise_m_median) : OrderedJson(nullptr);
   if (run.sequences.size() > 1) {
-    j["per_sequence"] = Json::array();
+    j["per_sequence"] = OrderedJson::array();
     for (const SequenceResult& sequence : run.sequences) j["per_sequence"].push_back(SequenceSummaryJson(sequence));
   }
-  Json units;
+  OrderedJson units;
   for (const SummaryColumn& c : SummaryColumns()) units[c.key] = c.unit;
   for (const std::string& key : LegacyPcpKeys({{"", j}})) {
     if (j.contains(key)) units[key] = "%";
@@ -164,8 +164,8 @@ Json SummaryJson(const RunResult& run) {
   return j;
 }
 
-Json TriangulationSummaryJson(const RunResult& run) {
-  Json j;
+OrderedJson TriangulationSummaryJson(const RunResult& run) {
+  OrderedJson j;
   j["evaluated"] = false;
   j["fps"] = Number(run.timing.fps);
   j["frame_time_us_median"] = Number(run.timing.frame_us_median);
@@ -175,9 +175,9 @@ Json TriangulationSummaryJson(const RunResult& run) {
   j["step_time_us_median"] = StepTimesJson(run.timing);
   j["step_count_per_frame"] = StepCountsJson(run.counts);
   j["counter_per_frame"] = CountersJson(run.counts);
-  j["detection_noise_m"] = run.counts.noise_frames > 0 ? Json(run.counts.noise_m_median) : Json(nullptr);
+  j["detection_noise_m"] = run.counts.noise_frames > 0 ? OrderedJson(run.counts.noise_m_median) : OrderedJson(nullptr);
   if (run.sequences.size() > 1) {
-    j["per_sequence"] = Json::array();
+    j["per_sequence"] = OrderedJson::array();
     for (const SequenceResult& sequence : run.sequences) {
       j["per_sequence"].push_back({{"sequence", sequence.name},
                                    {"fps", Number(sequence.timing.fps)},
@@ -185,7 +185,7 @@ Json TriangulationSummaryJson(const RunResult& run) {
                                    {"frames", sequence.frames}});
     }
   }
-  Json units;
+  OrderedJson units;
   for (const SummaryColumn& c : SummaryColumns()) {
     if (j.contains(c.key)) units[c.key] = c.unit;
   }
@@ -194,7 +194,7 @@ Json TriangulationSummaryJson(const RunResult& run) {
   return j;
 }
 
-std::string SummaryCsv(const std::vector<std::pair<std::string, Json>>& rows) {
+std::string SummaryCsv(const std::vector<std::pair<std::string, OrderedJson>>& rows) {
   std::ostringstream out;
   const std::vector<std::string> legacy = LegacyPcpKeys(rows);  // after the fixed columns, when any row has them
   out << "run";
@@ -210,7 +210,7 @@ std::string SummaryCsv(const std::vector<std::pair<std::string, Json>>& rows) {
   return out.str();
 }
 
-std::string SummaryMarkdown(const std::vector<std::pair<std::string, Json>>& rows) {
+std::string SummaryMarkdown(const std::vector<std::pair<std::string, OrderedJson>>& rows) {
   static const std::vector<std::string> keys = {"pcp",       "pck100",    "pck500",  "mpjpe_mm", "recall100",
                                                 "recall500", "invalid",   "f1",      "fps",      "frames"};
   std::ostringstream out;
@@ -248,7 +248,7 @@ std::string SummaryMarkdown(const std::vector<std::pair<std::string, Json>>& row
 }
 
 std::string PaperRow(const RunResult& run) {
-  const Json j = SummaryJson(run);
+  const OrderedJson j = SummaryJson(run);
   char line[512];
   std::snprintf(line, sizeof(line),
                 "PCP %s | PCK@100/500 %s / %s | MPJPE %s mm | Recall@100/500 %s / %s | Invalid %s | F1 %s | FPS %s",
@@ -258,8 +258,8 @@ std::string PaperRow(const RunResult& run) {
   return line;
 }
 
-Json RunInfoJson(const RunInfo& info) {
-  Json j;
+OrderedJson RunInfoJson(const RunInfo& info) {
+  OrderedJson j;
   j["run_id"] = info.run_id;
   j["git_revision"] = info.git_revision;
   j["date_utc"] = info.date_utc;
@@ -271,7 +271,7 @@ Json RunInfoJson(const RunInfo& info) {
   j["compiler"] = info.compiler;
   j["build_type"] = info.build_type;
   j["input_warnings"] = info.input_warnings;
-  Json digests = Json::object();
+  OrderedJson digests = OrderedJson::object();
   for (const auto& [path, digest] : info.input_digests) digests[path] = digest;
   j["input_digests"] = digests;
   return j;
@@ -281,14 +281,15 @@ namespace {
 
 // The files of one run into `staging`, run.json last.
 void WriteRunFiles(const std::filesystem::path& staging, const RunResult& run, const Config& config,
-                   const RunInfo& info, const Json& extra_summary, std::vector<std::pair<std::string, int>>* replaced) {
-  const auto write_json = [&](const std::string& name, const Json& value) {
+                   const RunInfo& info, const OrderedJson& extra_summary,
+                   std::vector<std::pair<std::string, int>>* replaced) {
+  const auto write_json = [&](const std::string& name, const OrderedJson& value) {
     int count = 0;
     const std::string text = io::DumpJson(value, 2, &count) + "\n";
     io::WriteTextFile(staging / name, io::NamedBy::kRpt, text);
     if (count > 0) replaced->emplace_back(name, count);
   };
-  Json summary;
+  OrderedJson summary;
   summary["run_id"] = info.run_id;
   summary.update(run.evaluated ? SummaryJson(run) : TriangulationSummaryJson(run));
   summary.update(extra_summary);
@@ -305,7 +306,7 @@ void WriteRunFiles(const std::filesystem::path& staging, const RunResult& run, c
     label = run.sequences.front().name + "+" + std::to_string(run.sequences.size() - 1) + " more";
   }
   // The whole run first, then (with several sequences) one row per sequence.
-  std::vector<std::pair<std::string, Json>> rows = {{label, summary}};
+  std::vector<std::pair<std::string, OrderedJson>> rows = {{label, summary}};
   if (run.sequences.size() > 1) {
     for (const SequenceResult& sequence : run.sequences) rows.emplace_back(sequence.name, SequenceSummaryJson(sequence));
   }
@@ -373,7 +374,8 @@ RunFolder::~RunFolder() = default;
 
 FrameSink* RunFolder::sink() { return sinks_.get(); }
 
-void RunFolder::Finish(const RunResult& run, const Config& config, const RunInfo& info, const Json& extra_summary) {
+void RunFolder::Finish(const RunResult& run, const Config& config, const RunInfo& info,
+                       const OrderedJson& extra_summary) {
   std::vector<std::pair<std::string, int>> replaced;  // file, strings with invalid UTF-8
   try {
     if (predictions_ != nullptr) {

@@ -15,7 +15,7 @@
 namespace rpt::engine {
 namespace {
 
-using Json = nlohmann::ordered_json;
+using OrderedJson = nlohmann::ordered_json;
 
 // A headline metric and which way is better.
 struct Headline {
@@ -55,7 +55,7 @@ std::string Shortened(const std::string& name, size_t max_characters) {
   return characters <= max_characters ? name : name.substr(0, cut) + "...";
 }
 
-std::string Fixed(double value, int decimals) {
+std::string FixedDecimals(double value, int decimals) {
   char text[64];
   std::snprintf(text, sizeof(text), "%.*f", decimals, value);
   return text;
@@ -64,8 +64,8 @@ std::string Fixed(double value, int decimals) {
 int DecimalsOf(const std::string& key) { return key == "frame_time_us_median" ? 0 : 1; }
 
 // The metric of a row, or NaN when the row does not report it.
-double Value(const Json& row, const std::string& key) {
-  const Json& summary = row.at("summary");
+double Value(const OrderedJson& row, const std::string& key) {
+  const OrderedJson& summary = row.at("summary");
   if (!summary.contains(key) || !summary[key].is_number()) return std::nan("");
   return summary[key].get<double>();
 }
@@ -77,16 +77,16 @@ std::string Verdict(double delta, const Headline& metric) {
 }
 
 std::string DeltaText(double delta, const std::string& key) {
-  const std::string text = Fixed(std::fabs(delta), DecimalsOf(key));
-  if (text == Fixed(0.0, DecimalsOf(key))) return "\u00b1" + text;  // plus-minus sign
+  const std::string text = FixedDecimals(std::fabs(delta), DecimalsOf(key));
+  if (text == FixedDecimals(0.0, DecimalsOf(key))) return "\u00b1" + text;  // plus-minus sign
   return (delta > 0 ? "+" : "\u2212") + text;                       // minus sign
 }
 
 // One horizontal bar per row, scaled from 0 to the largest value; a dashed line at the baseline.
-std::string BarChart(const Json& rows, const Headline& metric, size_t baseline) {
+std::string BarChart(const OrderedJson& rows, const Headline& metric, size_t baseline) {
   constexpr int kLabelWidth = 330, kBarWidth = 260, kRowHeight = 18, kTextWidth = 70;
   double max_value = 0;
-  for (const Json& row : rows) {
+  for (const OrderedJson& row : rows) {
     const double v = Value(row, metric.key);
     if (std::isfinite(v)) max_value = std::max(max_value, v);
   }
@@ -98,29 +98,29 @@ std::string BarChart(const Json& rows, const Headline& metric, size_t baseline) 
       << width << "\" height=\"" << height << "\" viewBox=\"0 0 " << width << " " << height << "\">\n";
   const double base_value = Value(rows[baseline], metric.key);
   for (size_t i = 0; i < rows.size(); ++i) {
-    const Json& row = rows[i];
+    const OrderedJson& row = rows[i];
     const std::string name = row.at("name").get<std::string>();
     const std::string shown = Shortened(name, 48);
     const int y = static_cast<int>(i) * kRowHeight + 3;
     const double v = Value(row, metric.key);
     const std::string verdict = i == baseline ? "baseline" : Verdict(v - base_value, metric);
     svg << "<g class=\"bar " << verdict << "\"><title>" << HtmlText(name) << ": "
-        << (std::isfinite(v) ? Fixed(v, DecimalsOf(metric.key)) : "-") << "</title>";
+        << (std::isfinite(v) ? FixedDecimals(v, DecimalsOf(metric.key)) : "-") << "</title>";
     svg << "<text x=\"" << kLabelWidth - 6 << "\" y=\"" << y + 12 << "\" text-anchor=\"end\">" << HtmlText(shown)
         << "</text>";
     if (std::isfinite(v)) {
       const double w = std::max(0.0, v) / max_value * kBarWidth;
-      svg << "<rect x=\"" << kLabelWidth << "\" y=\"" << y + 2 << "\" width=\"" << Fixed(w, 1) << "\" height=\""
+      svg << "<rect x=\"" << kLabelWidth << "\" y=\"" << y + 2 << "\" width=\"" << FixedDecimals(w, 1) << "\" height=\""
           << kRowHeight - 5 << "\"/>";
-      svg << "<text x=\"" << Fixed(kLabelWidth + w + 4, 1) << "\" y=\"" << y + 12 << "\">"
-          << Fixed(v, DecimalsOf(metric.key)) << "</text>";
+      svg << "<text x=\"" << FixedDecimals(kLabelWidth + w + 4, 1) << "\" y=\"" << y + 12 << "\">"
+          << FixedDecimals(v, DecimalsOf(metric.key)) << "</text>";
     } else {
       svg << "<text x=\"" << kLabelWidth + 4 << "\" y=\"" << y + 12 << "\">-</text>";
     }
     svg << "</g>\n";
   }
   if (std::isfinite(base_value)) {
-    const std::string x = Fixed(kLabelWidth + std::max(0.0, base_value) / max_value * kBarWidth, 1);
+    const std::string x = FixedDecimals(kLabelWidth + std::max(0.0, base_value) / max_value * kBarWidth, 1);
     svg << "<line class=\"baseline-mark\" x1=\"" << x << "\" y1=\"0\" x2=\"" << x << "\" y2=\"" << height << "\"/>\n";
   }
   svg << "</svg>";
@@ -129,20 +129,20 @@ std::string BarChart(const Json& rows, const Headline& metric, size_t baseline) 
 
 }  // namespace
 
-SweepBaseline FindSweepBaseline(const Json& rows) {
+SweepBaseline FindSweepBaseline(const OrderedJson& rows) {
   for (size_t i = 0; i < rows.size(); ++i) {
     if (rows[i].value("default", false)) return {i, true};
   }
   return {0, false};
 }
 
-std::string SweepHtml(const Json& sweep) {
-  const Json& rows = sweep.at("rows");
+std::string SweepHtml(const OrderedJson& sweep) {
+  const OrderedJson& rows = sweep.at("rows");
   const SweepBaseline baseline = FindSweepBaseline(rows);
   // The varied options, in order of first appearance.
   std::vector<std::string> options;
-  for (const Json& row : rows) {
-    const Json set = row.value("set", Json::object());  // items() must not outlive it
+  for (const OrderedJson& row : rows) {
+    const OrderedJson set = row.value("set", OrderedJson::object());  // items() must not outlive it
     for (const auto& [key, value] : set.items()) {
       if (std::find(options.begin(), options.end(), key) == options.end()) options.push_back(key);
     }
@@ -150,10 +150,10 @@ std::string SweepHtml(const Json& sweep) {
   std::vector<Headline> metrics;
   for (const Headline& h : Headlines()) {
     bool reported = false;
-    for (const Json& row : rows) reported |= row.at("summary").contains(h.key);
+    for (const OrderedJson& row : rows) reported |= row.at("summary").contains(h.key);
     if (reported) metrics.push_back(h);
   }
-  const Json base = sweep.value("base", Json::object());
+  const OrderedJson base = sweep.value("base", OrderedJson::object());
   std::ostringstream html;
   html << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\"/>\n<title>rpt sweep: " << rows.size()
        << " configurations</title>\n<style>\n"
@@ -186,10 +186,10 @@ std::string SweepHtml(const Json& sweep) {
   for (const Headline& h : metrics) html << "<th>" << HtmlText(TitleOf(h.key)) << "</th>";
   html << "</tr>\n</thead>\n<tbody>\n";
   for (size_t i = 0; i < rows.size(); ++i) {
-    const Json& row = rows[i];
+    const OrderedJson& row = rows[i];
     html << "<tr data-row=\"" << i << "\"" << (i == baseline.row ? " class=\"baseline\"" : "") << ">";
     html << "<td class=\"name\">" << HtmlText(row.at("name").get<std::string>()) << "</td>";
-    const Json set = row.value("set", Json::object());
+    const OrderedJson set = row.value("set", OrderedJson::object());
     for (const std::string& option : options) {
       if (set.contains(option)) {
         html << "<td class=\"option\">" << HtmlText(JsonValueText(set[option])) << "</td>";
@@ -205,11 +205,11 @@ std::string SweepHtml(const Json& sweep) {
         html << "-</td>";
         continue;
       }
-      html << Fixed(v, DecimalsOf(h.key));
+      html << FixedDecimals(v, DecimalsOf(h.key));
       const double base_value = Value(rows[baseline.row], h.key);
       if (i != baseline.row && std::isfinite(base_value)) {
         const double delta = v - base_value;
-        html << " <span class=\"delta " << Verdict(delta, h) << "\" data-delta=\"" << Fixed(delta, 4) << "\">"
+        html << " <span class=\"delta " << Verdict(delta, h) << "\" data-delta=\"" << FixedDecimals(delta, 4) << "\">"
              << DeltaText(delta, h.key) << "</span>";
       }
       html << "</td>";

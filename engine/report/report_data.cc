@@ -13,11 +13,11 @@
 namespace rpt::engine {
 namespace {
 
-using Json = nlohmann::ordered_json;
+using OrderedJson = nlohmann::ordered_json;
 
 // Rounded numbers keep the report small: metres to the millimetre, pixels to 0.1 px, errors to 0.1.
 // A value that does not survive the rounding (1e308 / 1e-3 overflows) is null, like NaN.
-Json Round(double value, double step) {
+OrderedJson Round(double value, double step) {
   const double rounded = std::round(value / step) * step;
   if (!std::isfinite(rounded)) return nullptr;
   return rounded;
@@ -26,11 +26,11 @@ Json Round(double value, double step) {
 // The 3D viewer draws cameras up to this far from the origin (it works in 32-bit floats); a camera
 // farther away (accepted with a warning, e.g. T = 1e308) is listed without a position.
 constexpr double kMaxDrawnCameraDistanceM = 1e6;
-Json Metres(double value) { return Round(value, 1e-3); }
-Json Tenths(double value) { return Round(value, 0.1); }
+OrderedJson Metres(double value) { return Round(value, 1e-3); }
+OrderedJson Tenths(double value) { return Round(value, 0.1); }
 
-Json Edges(const JointNames& joints) {
-  Json edges = Json::array();
+OrderedJson Edges(const JointNames& joints) {
+  OrderedJson edges = OrderedJson::array();
   for (const LimbSpec& limb : LimbsFor(joints)) {
     const int a = FindJoint(joints, limb.a);
     const int b = FindJoint(joints, limb.b);
@@ -40,8 +40,8 @@ Json Edges(const JointNames& joints) {
 }
 
 // Joints of one 3D person: [x, y, z] in metres, null where the score is <= min_score.
-Json Joints3D(const Poses3D& poses, int p, double min_score) {
-  Json joints = Json::array();
+OrderedJson Joints3D(const Poses3D& poses, int p, double min_score) {
+  OrderedJson joints = OrderedJson::array();
   const auto person = poses.Person(p);
   for (int j = 0; j < poses.num_joints; ++j) {
     if (person(3, j) > min_score && person.col(j).head<3>().allFinite()) {
@@ -53,26 +53,27 @@ Json Joints3D(const Poses3D& poses, int p, double min_score) {
   return joints;
 }
 
-Json Reprojected(const ReprojectedPerson& person) {
-  Json uv = Json::array();
-  Json error = Json::array();
+OrderedJson Reprojected(const ReprojectedPerson& person) {
+  OrderedJson uv = OrderedJson::array();
+  OrderedJson error = OrderedJson::array();
   for (size_t j = 0; j < person.status.size(); ++j) {
     const bool has_pixel =
         person.status[j] == JointReprojection::kMeasured || person.status[j] == JointReprojection::kNotDetected;
-    uv.push_back(has_pixel ? Json{Tenths(person.uv_px(0, j)), Tenths(person.uv_px(1, j))} : Json(nullptr));
+    uv.push_back(has_pixel ? OrderedJson{Tenths(person.uv_px(0, j)), Tenths(person.uv_px(1, j))}
+                           : OrderedJson(nullptr));
     error.push_back(Tenths(person.error_px[j]));
   }
   return {{"uv", uv}, {"error_px", error}, {"mean_error_px", Tenths(person.mean_error_px)},
           {"detection", person.detection_idx}, {"track_id", person.track_id}};
 }
 
-Json CameraJson(const Camera& camera, double depth_m) {
+OrderedJson CameraJson(const Camera& camera, double depth_m) {
   const Eigen::Vector3d center = camera.Center();
   if (!center.allFinite() || center.norm() > kMaxDrawnCameraDistanceM) {
     return {{"name", camera.name}, {"width", camera.width}, {"height", camera.height}, {"center", nullptr},
             {"corners", nullptr}};
   }
-  Json corners = Json::array();
+  OrderedJson corners = OrderedJson::array();
   const double w = camera.width, h = camera.height;
   for (const Eigen::Vector2d& uv : {Eigen::Vector2d(0, 0), Eigen::Vector2d(w, 0), Eigen::Vector2d(w, h),
                                    Eigen::Vector2d(0, h)}) {
@@ -89,7 +90,7 @@ Json CameraJson(const Camera& camera, double depth_m) {
 
 // The world's up direction: the mean of the cameras' up vectors (-y of each camera), since
 // cameras are mounted upright.
-Json UpDirection(const std::vector<Camera>& cameras) {
+OrderedJson UpDirection(const std::vector<Camera>& cameras) {
   Eigen::Vector3d up = Eigen::Vector3d::Zero();
   for (const Camera& camera : cameras) up -= camera.R.row(1).transpose();
   if (up.norm() < 1e-9) up = Eigen::Vector3d::UnitZ();
@@ -97,13 +98,13 @@ Json UpDirection(const std::vector<Camera>& cameras) {
   return {Round(up.x(), 0.01), Round(up.y(), 0.01), Round(up.z(), 0.01)};
 }
 
-Json Steps(const Json& summary) {
-  Json steps = Json::array();
+OrderedJson Steps(const OrderedJson& summary) {
+  OrderedJson steps = OrderedJson::array();
   const auto times = summary.find("step_time_us_median");
   const auto counts = summary.find("step_count_per_frame");
   if (times == summary.end() || !times->is_object()) return steps;
   for (const auto& [name, time] : times->items()) {
-    Json count = nullptr;
+    OrderedJson count = nullptr;
     if (counts != summary.end() && counts->contains(name)) count = (*counts)[name];
     steps.push_back({{"step", name}, {"time_us_median", time}, {"count_per_frame", count}});
   }
@@ -124,14 +125,14 @@ std::vector<std::pair<int, int>> SceneFrames(const std::vector<Sequence>& sequen
   return picked;
 }
 
-Json SceneJson(const Sequence& sequence, int s, int f, const Poses3D& predictions, const JointNames& prediction_joints,
-               const FrameOutcome& outcome, double min_gt_score) {
+OrderedJson SceneJson(const Sequence& sequence, int s, int f, const Poses3D& predictions,
+                      const JointNames& prediction_joints, const FrameOutcome& outcome, double min_gt_score) {
   const SequenceFrame& frame = sequence.frames[f];
-  Json gt = Json::array();
+  OrderedJson gt = OrderedJson::array();
   for (int g = 0; g < frame.gt.num_persons(); ++g) {
     gt.push_back({{"joints", Joints3D(frame.gt, g, min_gt_score)}, {"state", outcome.gt_state[g]}});
   }
-  Json persons = Json::array();
+  OrderedJson persons = OrderedJson::array();
   for (int p = 0; p < predictions.num_persons(); ++p) {
     persons.push_back({{"joints", Joints3D(predictions, p, 0.0)},
                        {"track_id", predictions.track_ids[p]},
@@ -143,24 +144,25 @@ Json SceneJson(const Sequence& sequence, int s, int f, const Poses3D& prediction
   const std::vector<ViewReprojection> views =
       ReprojectFrame(sequence.cameras, frame.views, sequence.detection_joints, {&predictions, &prediction_joints},
                      {&frame.gt, &sequence.gt_joints}, reprojection);
-  Json views_json = Json::array();
+  OrderedJson views_json = OrderedJson::array();
   for (size_t c = 0; c < views.size(); ++c) {
-    Json detections = Json::array();
+    OrderedJson detections = OrderedJson::array();
     if (c < frame.views.size()) {
       const Poses2D& view = frame.views[c];
       for (int d = 0; d < view.num_persons(); ++d) {
-        Json joints = Json::array();
+        OrderedJson joints = OrderedJson::array();
         const auto person = view.Person(d);
         for (int j = 0; j < view.num_joints; ++j) {
-          joints.push_back(person(2, j) > 0 ? Json{Tenths(person(0, j)), Tenths(person(1, j)), Round(person(2, j), 0.01)}
-                                            : Json(nullptr));
+          joints.push_back(person(2, j) > 0
+                               ? OrderedJson{Tenths(person(0, j)), Tenths(person(1, j)), Round(person(2, j), 0.01)}
+                               : OrderedJson(nullptr));
         }
         detections.push_back(joints);
       }
     }
-    Json projected = Json::array();
+    OrderedJson projected = OrderedJson::array();
     for (const ReprojectedPerson& person : views[c].predictions) projected.push_back(Reprojected(person));
-    Json projected_gt = Json::array();
+    OrderedJson projected_gt = OrderedJson::array();
     for (const ReprojectedPerson& person : views[c].gt) projected_gt.push_back(Reprojected(person)["uv"]);
     views_json.push_back({{"detections", detections}, {"predictions", projected}, {"gt", projected_gt}});
   }
@@ -170,16 +172,16 @@ Json SceneJson(const Sequence& sequence, int s, int f, const Poses3D& prediction
 
 }  // namespace
 
-Json PaperResultsFor(const std::string& dataset) {
-  const Json paper = Json::parse(assets::kPaperJson);
-  const Json& datasets = paper["datasets"];
-  return datasets.contains(dataset) ? datasets[dataset] : Json(nullptr);
+OrderedJson PaperResultsFor(const std::string& dataset) {
+  const OrderedJson paper = OrderedJson::parse(assets::kPaperJson);
+  const OrderedJson& datasets = paper["datasets"];
+  return datasets.contains(dataset) ? datasets[dataset] : OrderedJson(nullptr);
 }
 
-Json BuildReportData(const RecordedRun& run, const std::vector<Sequence>* sequences, const std::string& why_no_input,
-                     const metrics::EvalOptions& eval_options, const ReportDataOptions& options,
-                     std::vector<std::string>* warnings) {
-  Json data;
+OrderedJson BuildReportData(const RecordedRun& run, const std::vector<Sequence>* sequences,
+                            const std::string& why_no_input, const metrics::EvalOptions& eval_options,
+                            const ReportDataOptions& options, std::vector<std::string>* warnings) {
+  OrderedJson data;
   const std::string dataset = RecordedDataset(run);
   const bool triangulation = RecordedWords(run).size() > 1 && RecordedWords(run)[1] == "triangulate";
   data["title"] = (!dataset.empty() ? dataset : triangulation ? std::string("triangulation") : std::string("generic labels")) +
@@ -227,13 +229,13 @@ Json BuildReportData(const RecordedRun& run, const std::vector<Sequence>* sequen
   data["prediction_joints"] = prediction_joints;
   data["prediction_edges"] = Edges(prediction_joints);
   data["recall_curve"] = {{"threshold_mm", outcomes.recall_threshold_mm}, {"recall", outcomes.recall}};
-  Json sequences_json = Json::array();
+  OrderedJson sequences_json = OrderedJson::array();
   for (size_t s = 0; s < sequences->size(); ++s) {
     const Sequence& sequence = (*sequences)[s];
-    Json cameras = Json::array();
+    OrderedJson cameras = OrderedJson::array();
     for (const Camera& camera : sequence.cameras) cameras.push_back(CameraJson(camera, 0.4));
-    Json ids = Json::array(), mpjpe = Json::array(), num_gt = Json::array(), matched = Json::array(),
-         invalid = Json::array(), num_pred = Json::array();
+    OrderedJson ids = OrderedJson::array(), mpjpe = OrderedJson::array(), num_gt = OrderedJson::array(),
+                matched = OrderedJson::array(), invalid = OrderedJson::array(), num_pred = OrderedJson::array();
     for (size_t f = 0; f < sequence.frames.size(); ++f) {
       const FrameOutcome& o = outcomes.frames[s][f];
       ids.push_back(sequence.frames[f].id);
@@ -277,7 +279,7 @@ Json BuildReportData(const RecordedRun& run, const std::vector<Sequence>* sequen
                         " MB (--max-scene-mb)");
     picked = SceneFrames(*sequences, fitting);
   }
-  Json scenes = Json::array();
+  OrderedJson scenes = OrderedJson::array();
   for (const auto& [s, f] : picked) scenes.push_back(scene_json(s, f));
   data["scenes"] = scenes;
   data["warnings"] = *warnings;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/nan.h"
 #include "metrics/accumulator.h"
 #include "metrics/eval_records.h"
 #include "metrics/matching.h"
@@ -12,7 +13,6 @@
 namespace rpt::engine {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // The thresholds of the recall curve (mm).

@@ -13,12 +13,12 @@
 namespace rpt::engine {
 namespace {
 
-using Json = nlohmann::ordered_json;
+using OrderedJson = nlohmann::ordered_json;
 
 // Through the one guarded JSON path (a regular file within --max-input-mb, nesting within
 // io::kMaxJsonDepth, messages that quote at most a short excerpt); ordered: the report lists steps
 // and options in the run's order.
-Json LoadOrdered(const std::filesystem::path& path) {
+OrderedJson LoadOrdered(const std::filesystem::path& path) {
   if (!std::filesystem::exists(path)) {
     throw InputError(path.string() + ": file not found (is this an `rpt eval` output folder?)");
   }
@@ -26,11 +26,11 @@ Json LoadOrdered(const std::filesystem::path& path) {
 }
 
 // per_joint.csv: joint,mean_error_mm,pck100_pct,count,num_gt ("-" = no value).
-Json ReadPerJoint(const std::filesystem::path& path) {
+OrderedJson ReadPerJoint(const std::filesystem::path& path) {
   std::ifstream in(path);
   if (!in) throw InputError(path.string() + ": file not found");
   if (!std::filesystem::is_regular_file(path)) throw InputError(path.string() + ": not a regular file");
-  Json rows = Json::array();
+  OrderedJson rows = OrderedJson::array();
   std::string line;
   int line_number = 0;
   while (std::getline(in, line)) {
@@ -46,7 +46,7 @@ Json ReadPerJoint(const std::filesystem::path& path) {
       throw InputError(path.string() + ":" + std::to_string(line_number) + ": expected 5 fields, found " +
                        std::to_string(fields.size()));
     }
-    auto number = [&](const std::string& text) -> Json {
+    auto number = [&](const std::string& text) -> OrderedJson {
       if (text == "-" || text.empty()) return nullptr;
       try {
         return std::stod(text);
@@ -136,7 +136,7 @@ RecordedRun ReadRecordedRun(const std::filesystem::path& dir) {
   // A run without ground truth (rpt triangulate, summary "evaluated": false) has no per-joint errors.
   const auto evaluated = run.summary.find("evaluated");
   const bool without_gt = evaluated != run.summary.end() && evaluated->is_boolean() && !evaluated->get<bool>();
-  run.per_joint = without_gt ? Json::array() : ReadPerJoint(dir / "per_joint.csv");
+  run.per_joint = without_gt ? OrderedJson::array() : ReadPerJoint(dir / "per_joint.csv");
   run.predictions = ReadPredictions(dir / "predictions.json");
   return run;
 }

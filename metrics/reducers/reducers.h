@@ -22,6 +22,7 @@
 #include <span>
 #include <vector>
 
+#include "core/nan.h"
 #include "metrics/eval_options.h"
 #include "metrics/eval_records.h"
 #include "metrics/metrics_result.h"
@@ -149,8 +150,6 @@ void ReduceWholeBody(const MetricTotals&, const EvalOptions&, MetricsResult*);  
 
 // Every reducer, in the order Finalize() runs them (each writes its own fields only).
 std::span<const MetricReducer> MetricReducers();
-
-inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // 100 * numerator / denominator, NaN when the denominator is zero.
 inline double Percent(double numerator, double denominator) {
