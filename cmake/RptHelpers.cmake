@@ -8,7 +8,21 @@ function(rpt_set_compile_options target)
   if(RPT_MARCH_NATIVE)
     target_compile_options(${target} PRIVATE -march=native)
   endif()
+  # Unity build of the product libraries: most of a file's compile time is the same template code
+  # (nlohmann::json, Eigen, the standard library) instantiated again in every file; batches of
+  # RPT_UNITY_BATCH files instantiate it once. Names in anonymous namespaces must therefore be
+  # unique within a library (a clash is a compile error, never a silent mix-up). Executables and
+  # tests keep one file per compile, so an edit there rebuilds one file.
+  get_target_property(type ${target} TYPE)
+  if(RPT_UNITY_BUILD AND type STREQUAL "STATIC_LIBRARY")
+    set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE ${RPT_UNITY_BATCH})
+    # The library's sources, for the test that file-local names are unique in it
+    # (scripts/check_unity_names.py, ctest UnityBuild.FileLocalNamesAreUniquePerLibrary).
+    file(GENERATE OUTPUT ${PROJECT_BINARY_DIR}/unity_sources/${target}.txt
+         CONTENT "$<TARGET_PROPERTY:${target},SOURCE_DIR>\n$<JOIN:$<TARGET_PROPERTY:${target},SOURCES>,\n>\n")
+  endif()
 endfunction()
+set(RPT_UNITY_BATCH 8 CACHE STRING "Files per unity batch (RPT_UNITY_BUILD)")
 
 # Precompiled headers: the heavy third-party and standard headers most files of a target include
 # (Eigen, nlohmann/json, CLI11, GoogleTest), parsed once per target instead of once per file. A
