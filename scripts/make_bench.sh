@@ -36,6 +36,16 @@ NATIVE=$(grep -E '^RPT_MARCH_NATIVE:' "$BUILD/CMakeCache.txt" | cut -d= -f2-)
   $PIN "$RPT" bench --io --io-frames 10000
   echo '```'
   echo
+  echo "## Live input (\`rpt triangulate --follow\`)"
+  echo
+  echo "Lines fed one at a time through a pipe by a second thread, each after the output line of the one"
+  echo "before; not pinned (the feeding thread and the live run are two threads). Target: --follow adds"
+  echo "at most 100 us per frame over the triangulation time on shelf-like."
+  echo
+  echo '```'
+  "$RPT" bench --follow --repeat 5 2>/dev/null
+  echo '```'
+  echo
   echo "## Scaling (cameras with 4 people; people with 5 cameras)"
   echo
   echo '```'
