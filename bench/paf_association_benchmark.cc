@@ -3,10 +3,12 @@
 // real OpenPose candidates of the 4D-Association Shelf bundle, before (bench/
 // baseline_paf_association.h, allocating) and after (PafAssociator, buffers reused) in the same
 // run. One iteration groups one whole frame: the candidates of its 5 views, frames cycling
-// through all 301. The bundle folder is the first argument (default
-// ../shared/data/shelf/4d_association); without it the benchmark says so and exits 0.
+// through all 301 (the candidates mostly not in cache, as when a reader converts frames parsed
+// before), or through RPT_PAF_FRAMES frames spread evenly over them (e.g. 8: in cache, as
+// candidates fresh from a detector). The bundle folder is the first argument (default ../shared/data/shelf/4d_association);
+// without it the benchmark says so and exits 0.
 //
-//   taskset -c 1 ./build/bench/rpt_paf_benchmark ../shared/data/shelf/4d_association \
+//   taskset -c 1 ./build/bench/rpt_paf_benchmark ../shared/data/shelf/4d_association
 //       --benchmark_repetitions=9 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 
@@ -87,7 +89,12 @@ int main(int argc, char** argv) {
     frames.resize(d.frames.size());
     for (size_t f = 0; f < d.frames.size(); ++f) frames[f].push_back(d.frames[f]);
   }
-  if (const char* n = std::getenv("RPT_PAF_FRAMES")) frames.resize(std::min<size_t>(frames.size(), std::stoul(n)));
+  if (const char* n = std::getenv("RPT_PAF_FRAMES")) {  // n frames spread over the sequence
+    const size_t keep = std::clamp<size_t>(std::strtoul(n, nullptr, 10), 1, frames.size());
+    std::vector<std::vector<rpt::PafCandidates>> spread;
+    for (size_t i = 0; i < keep; ++i) spread.push_back(frames[i * frames.size() / keep]);
+    frames = std::move(spread);
+  }
   benchmark::RegisterBenchmark("paf_association/before_baseline", rpt::bench::BM_PafBaseline)->Unit(benchmark::kMicrosecond);
   benchmark::RegisterBenchmark("paf_association/after_PafAssociator", rpt::bench::BM_PafAssociator)->Unit(benchmark::kMicrosecond);
   benchmark::Initialize(&argc, argv);
