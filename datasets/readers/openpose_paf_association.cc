@@ -13,20 +13,27 @@ using Key = PafAssociator::Key;
 
 inline bool Less(const Key& x, const Key& y) { return x.score != y.score ? x.score < y.score : x.index < y.index; }
 
-// Sorts the keys: up to a few dozen (one image's connections; 58 on average on the 4D-Association
-// Shelf views) by insertion, which is stable, so comparing the scores alone keeps equal scores in
-// index order; std::sort on score and index beyond.
-void SortKeys(Key* first, Key* last) {
-  if (last - first > 64) {
-    std::sort(first, last, [](const Key& x, const Key& y) { return Less(x, y); });
-    return;
+// Fills sorted[0, count) with the indices of keys[0, count) (keys[n].index == n) by Less: one
+// std::sort of plain 64-bit integers, the score's bits with their lowest bits replaced by the index
+// (scores that differ only there would be ordered by index: checked after, and then sorted again
+// by score and index, which real scores, a few significant digits each, never need).
+void SortByScore(const Key* keys, size_t count, std::uint64_t* packed, std::uint32_t* sorted) {
+  const int index_bits = std::max(1, static_cast<int>(std::bit_width(count)));
+  if (index_bits <= 20) {
+    const std::uint64_t low = (std::uint64_t{1} << index_bits) - 1;
+    for (size_t n = 0; n < count; ++n) packed[n] = (keys[n].score & ~low) | n;
+    std::sort(packed, packed + count);
+    bool exact = true;
+    for (size_t n = 1; n < count && exact; ++n) {
+      exact = ((packed[n] ^ packed[n - 1]) & ~low) != 0 || keys[packed[n] & low].score == keys[packed[n - 1] & low].score;
+    }
+    if (exact) {
+      for (size_t n = 0; n < count; ++n) sorted[n] = static_cast<std::uint32_t>(packed[n] & low);
+      return;
+    }
   }
-  for (Key* i = first + (first != last); i < last; ++i) {
-    const Key x = *i;
-    Key* j = i;
-    for (; j > first && x.score < j[-1].score; --j) *j = j[-1];
-    *j = x;
-  }
+  for (size_t n = 0; n < count; ++n) sorted[n] = static_cast<std::uint32_t>(n);
+  std::sort(sorted, sorted + count, [keys](std::uint32_t x, std::uint32_t y) { return Less(keys[x], keys[y]); });
 }
 
 // Asks for the cache lines of `values` (a hint; no effect on the result).
@@ -91,6 +98,8 @@ void PafAssociator::Run(const PafSkeleton& skeleton, const PafCandidates& candid
   if (possible_.size() < entries) {  // grown only, never shrunk: allocation-free once warm
     possible_.resize(entries);
     order_.resize(entries);
+    packed_.resize(entries);
+    sorted_.resize(entries);
   }
   used_offset_.resize(num_limbs + 1);
   used_offset_[0] = 0;
@@ -115,7 +124,7 @@ void PafAssociator::Run(const PafSkeleton& skeleton, const PafCandidates& candid
       }
     }
   }
-  SortKeys(order_.data(), order_.data() + count);
+  SortByScore(order_.data(), count, packed_.data(), sorted_.data());
   used_.assign(static_cast<size_t>(used_offset_[num_limbs]), 0);
 
   // Step 2. owner_ holds the person of every candidate (-1 = none), joint j's from offset_[j];
@@ -130,7 +139,7 @@ void PafAssociator::Run(const PafSkeleton& skeleton, const PafCandidates& candid
   mask_.clear();
   const size_t words = (nj + 63) / 64;  // a person's joints as a bit set (1 word for BODY_25)
   for (size_t n = 0; n < count; ++n) {
-    const Connection& c = possible_[order_[n].index];
+    const Connection& c = possible_[sorted_[n]];
     // Step 1: the limb's greedy matching keeps the connection when neither end is used yet.
     unsigned char* used = used_.data() + used_offset_[static_cast<size_t>(c.limb)];
     unsigned char& used_a = used[c.a];

@@ -97,10 +97,12 @@ class PafAssociator {
   };
 
  private:
-  // Every limb's possible connections, in (limb, a, b) order, and their keys, sorted (the first
-  // `count` of a call; sized to the most PAF entries seen, never shrunk).
+  // Every limb's possible connections, in (limb, a, b) order, their keys, and their indices
+  // sorted by key (the first `count` of a call; sized to the most PAF entries seen, never shrunk).
   std::vector<Connection> possible_;
   std::vector<Key> order_;
+  std::vector<std::uint64_t> packed_;  // sort buffer
+  std::vector<std::uint32_t> sorted_;
   std::vector<int> used_offset_;      // per limb: first slot of its candidates in used_
   std::vector<unsigned char> used_;   // per limb, per candidate of either joint: used by a kept connection
   std::vector<int> offset_;  // first slot of joint j's candidates in owner_

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cmath>
 #include <cstdlib>
 #include <new>
 #include <random>
@@ -111,6 +112,14 @@ TEST(PafAssociatorEquality, HandBuiltMergeAndTieCases) {
   associator.Run(skeleton, c, {0.05, 2}, &persons);
   EXPECT_EQ(Unflatten(persons), (std::vector<PafPerson>{{0, 0, 0, 0}, {1, 1, 1, 1}}));
   EXPECT_EQ(Unflatten(persons), bench::AssociatePafsBaseline(skeleton, c, {0.05, 2}));
+  // Scores that differ in their last bit only: ordered by score, not by index (the sort's check).
+  const PafSkeleton one_limb{2, {{0, 1}}};
+  PafCandidates close;
+  for (int j = 0; j < 2; ++j) close.joints.push_back((Eigen::Matrix3Xd(3, 2) << 0, 1, 0, 0, 0.9, 0.9).finished());
+  close.pafs.push_back((Eigen::MatrixXd(2, 2) << 0.5, std::nextafter(0.5, 1.0), 0.4, 0.3).finished());
+  associator.Run(one_limb, close, {0.05, 2}, &persons);
+  EXPECT_EQ(Unflatten(persons), (std::vector<PafPerson>{{0, 1}, {1, 0}}));
+  EXPECT_EQ(Unflatten(persons), bench::AssociatePafsBaseline(one_limb, close, {0.05, 2}));
   // No candidates at all: no persons, and the associator still works afterwards.
   PafCandidates empty;
   for (int j = 0; j < 4; ++j) empty.joints.emplace_back(3, 0);
