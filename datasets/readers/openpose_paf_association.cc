@@ -9,31 +9,40 @@
 namespace rpt {
 namespace {
 
-using Key = PafAssociator::Key;
+using Connection = PafAssociator::Connection;
 
-inline bool Less(const Key& x, const Key& y) { return x.score != y.score ? x.score < y.score : x.index < y.index; }
+// The bits of a positive double, inverted: they order like the values, decreasing.
+std::uint64_t DecreasingKey(double score) {
+  std::uint64_t bits;
+  std::memcpy(&bits, &score, sizeof bits);
+  return ~bits;
+}
 
-// Fills sorted[0, count) with the indices of keys[0, count) (keys[n].index == n) by Less: one
-// std::sort of plain 64-bit integers, the score's bits with their lowest bits replaced by the index
-// (scores that differ only there would be ordered by index: checked after, and then sorted again
-// by score and index, which real scores, a few significant digits each, never need).
-void SortByScore(const Key* keys, size_t count, std::uint64_t* packed, std::uint32_t* sorted) {
-  const int index_bits = std::max(1, static_cast<int>(std::bit_width(count)));
-  if (index_bits <= 20) {
-    const std::uint64_t low = (std::uint64_t{1} << index_bits) - 1;
-    for (size_t n = 0; n < count; ++n) packed[n] = (keys[n].score & ~low) | n;
-    std::sort(packed, packed + count);
-    bool exact = true;
-    for (size_t n = 1; n < count && exact; ++n) {
-      exact = ((packed[n] ^ packed[n - 1]) & ~low) != 0 || keys[packed[n] & low].score == keys[packed[n - 1] & low].score;
-    }
-    if (exact) {
-      for (size_t n = 0; n < count; ++n) sorted[n] = static_cast<std::uint32_t>(packed[n] & low);
-      return;
-    }
+// Fills sorted[0, count) with the indices of possible[0, count) by decreasing score, equal scores
+// by index (= limb, a, b). packed[n] holds DecreasingKey(score of n) with its lowest `low` bits
+// replaced by n: one std::sort of plain integers does it, unless two different scores agree in all
+// other bits (then they would be ordered by index): checked after, and then sorted again by score
+// and index, which real scores (a few significant digits each) never need.
+void SortByScore(const PafCandidates& candidates, const Connection* possible, size_t count, std::uint64_t low,
+                 std::uint64_t* packed, std::uint32_t* sorted) {
+  const auto score = [&](std::uint64_t n) {
+    const Connection& c = possible[n];
+    return candidates.pafs[static_cast<size_t>(c.limb)](c.a, c.b);
+  };
+  std::sort(packed, packed + count);
+  bool exact = true;
+  for (size_t n = 1; n < count && exact; ++n) {
+    exact = ((packed[n] ^ packed[n - 1]) & ~low) != 0 || score(packed[n] & low) == score(packed[n - 1] & low);
+  }
+  if (exact) {
+    for (size_t n = 0; n < count; ++n) sorted[n] = static_cast<std::uint32_t>(packed[n] & low);
+    return;
   }
   for (size_t n = 0; n < count; ++n) sorted[n] = static_cast<std::uint32_t>(n);
-  std::sort(sorted, sorted + count, [keys](std::uint32_t x, std::uint32_t y) { return Less(keys[x], keys[y]); });
+  std::sort(sorted, sorted + count, [&](std::uint32_t x, std::uint32_t y) {
+    const double sx = score(x), sy = score(y);
+    return sx != sy ? sx > sy : x < y;
+  });
 }
 
 // Asks for the cache lines of `values` (a hint; no effect on the result).
@@ -97,10 +106,13 @@ void PafAssociator::Run(const PafSkeleton& skeleton, const PafCandidates& candid
   for (const Eigen::Matrix3Xd& joint : candidates.joints) Prefetch(joint.data(), joint.size());
   if (possible_.size() < entries) {  // grown only, never shrunk: allocation-free once warm
     possible_.resize(entries);
-    order_.resize(entries);
     packed_.resize(entries);
     sorted_.resize(entries);
   }
+  // Indices up to `entries` fit in the lowest bits of a packed key (SortByScore); more than 2^20
+  // possible connections in one image (never seen) are taken as one big sort.
+  const int index_bits = std::max(1, static_cast<int>(std::bit_width(entries)));
+  const std::uint64_t low = index_bits <= 20 ? (std::uint64_t{1} << index_bits) - 1 : ~std::uint64_t{0};
   used_offset_.resize(num_limbs + 1);
   used_offset_[0] = 0;
   size_t count = 0;
@@ -116,15 +128,13 @@ void PafAssociator::Run(const PafSkeleton& skeleton, const PafCandidates& candid
       for (Eigen::Index j = 0; j < cols; ++j) {
         // Written always, counted when possible: no branch on the scores.
         const double score = paf(i, j);
-        std::uint64_t bits;
-        std::memcpy(&bits, &score, sizeof bits);
-        order_[count] = {~bits, static_cast<std::uint32_t>(count)};
+        packed_[count] = (DecreasingKey(score) & ~low) | count;
         possible_[count] = {static_cast<int>(k), static_cast<int>(i), static_cast<int>(j)};
         count += static_cast<size_t>((score > 0) & (score >= options.min_paf_score) & (cand_b(2, j) > 0));
       }
     }
   }
-  SortByScore(order_.data(), count, packed_.data(), sorted_.data());
+  SortByScore(candidates, possible_.data(), count, low, packed_.data(), sorted_.data());
   used_.assign(static_cast<size_t>(used_offset_[num_limbs]), 0);
 
   // Step 2. owner_ holds the person of every candidate (-1 = none), joint j's from offset_[j];

@@ -88,20 +88,13 @@ class PafAssociator {
     int a = 0;
     int b = 0;
   };
-  // Sort key of a possible connection: the score's bits (positive doubles order like their bits),
-  // inverted for a decreasing order, then the connection's index in possible_ (generated in limb,
-  // a, b order, so equal scores keep that order).
-  struct Key {
-    std::uint64_t score;
-    std::uint32_t index;
-  };
 
  private:
-  // Every limb's possible connections, in (limb, a, b) order, their keys, and their indices
-  // sorted by key (the first `count` of a call; sized to the most PAF entries seen, never shrunk).
+  // Every limb's possible connections, in (limb, a, b) order, their sort keys, and their indices
+  // by decreasing score (the first `count` of a call; sized to the most PAF entries seen, never
+  // shrunk).
   std::vector<Connection> possible_;
-  std::vector<Key> order_;
-  std::vector<std::uint64_t> packed_;  // sort buffer
+  std::vector<std::uint64_t> packed_;
   std::vector<std::uint32_t> sorted_;
   std::vector<int> used_offset_;      // per limb: first slot of its candidates in used_
   std::vector<unsigned char> used_;   // per limb, per candidate of either joint: used by a kept connection
