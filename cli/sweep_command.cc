@@ -3,7 +3,8 @@
 // parallel across configurations with OpenMP, one row per configuration in sweep.{csv,md,json,html}
 // (sweep.html: engine/outputs/sweep_html.h).
 // `--shard k/N` runs every N-th configuration starting at k (1-based) so a sweep can be split
-// across machines; `rpt merge` joins the shard files (docs/sweeps.md shows a Slurm array job).
+// across machines; `rpt merge` joins the shard files. `--slurm N` submits the shards as a Slurm job
+// array and the merge as a job after it (cli/slurm_submit.h; docs/sweeps.md shows a real run).
 #include <algorithm>
 #include <atomic>
 #include <cstdint>
