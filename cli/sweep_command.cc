@@ -3,7 +3,8 @@
 // parallel across configurations with OpenMP, one row per configuration in sweep.{csv,md,json,html}
 // (sweep.html: engine/outputs/sweep_html.h).
 // `--shard k/N` runs every N-th configuration starting at k (1-based) so a sweep can be split
-// across machines; `rpt merge` joins the shard files (docs/sweeps.md shows a Slurm array job).
+// across machines; `rpt merge` joins the shard files. `--slurm N` submits the shards as a Slurm job
+// array and the merge as a job after it (cli/slurm_submit.h; docs/sweeps.md shows a real run).
 #include <algorithm>
 #include <atomic>
 #include <cstdint>
@@ -26,6 +27,7 @@
 #include "cli/input_options.h"
 #include "engine/input.h"
 #include "cli/progress.h"
+#include "cli/slurm_submit.h"
 #include "engine/outputs/results_writer.h"
 #include "engine/outputs/run_info.h"
 #include "engine/run.h"
@@ -55,6 +57,11 @@ struct SweepArgs {
   std::string shard = "1/1";
   std::string out = "out/sweep";
   int threads = 0;
+  bool threads_given = false;
+  int slurm = 0;                            // --slurm N: submit as a job array of N shards
+  std::vector<std::string> slurm_options;   // --slurm-option key=value
+  bool slurm_dry_run = false;
+  bool shard_given = false;
 };
 
 std::pair<int, int> ParseShard(const std::string& text) {
@@ -99,10 +106,41 @@ void WriteSweepFiles(const fs::path& out, const OrderedJson& file, const std::st
   }
 }
 
+// --slurm N: every configuration resolved here first (a typo fails now, not in N jobs), then the
+// job scripts written and submitted (cli/slurm_submit.h).
+void SubmitToSlurm(const SweepArgs& args, const std::vector<engine::SweepConfiguration>& all) {
+  if (args.shard_given) throw ConfigError("--slurm runs every shard itself: leave out --shard");
+  for (const engine::SweepConfiguration& configuration : all) {
+    ConfigArgs config_args = args.config;
+    for (const auto& [key, value] : configuration.overrides) {
+      if (key.rfind("param.", 0) != 0) config_args.overrides.push_back(key + "=" + value);
+    }
+    ResolveConfig(config_args);
+  }
+  SlurmSweep sweep;
+  sweep.shards = std::min<int>(args.slurm, static_cast<int>(all.size()));
+  if (sweep.shards < args.slurm) {
+    std::fprintf(stderr, "note: --slurm %d: the sweep has %zu configurations; submitting %d shards\n", args.slurm,
+                 all.size(), sweep.shards);
+  }
+  const std::vector<std::string>& command = engine::CurrentCommandArgs();
+  sweep.sweep_args.assign(command.begin() + std::min<size_t>(1, command.size()), command.end());
+  sweep.sbatch_options = args.slurm_options;
+  sweep.out = args.out;
+  sweep.threads_given = args.threads_given;
+  sweep.dry_run = args.slurm_dry_run;
+  SubmitSlurmSweep(sweep);
+}
+
 void RunSweep(const SweepArgs& args) {
   if (args.grid.empty() == args.list.empty()) throw ConfigError("give either --grid key=v1,v2 (repeatable) or --list FILE");
   const std::vector<engine::SweepConfiguration> all =
       args.list.empty() ? engine::ExpandSweepGrid(args.grid) : engine::ReadSweepList(args.list);
+  if (args.slurm > 0) {
+    SubmitToSlurm(args, all);
+    return;
+  }
+  if (!args.slurm_options.empty() || args.slurm_dry_run) throw ConfigError("--slurm-option and --slurm-dry-run need --slurm N");
   const auto [shard, shards] = ParseShard(args.shard);
   std::vector<int> mine;
   for (int i = shard - 1; i < static_cast<int>(all.size()); i += shards) mine.push_back(i);
@@ -326,7 +364,25 @@ void RegisterSweepCommand(CLI::App& app) {
   command->add_option("--shard", args->shard, "k/N: run configurations k, k+N, ... (1-based)")->capture_default_str();
   command->add_option("--out", args->out, "output folder")->capture_default_str();
   AddThreadsOption(command, &args->threads, "configurations");
-  command->callback([args] { RunSweep(*args); });
+  const std::string slurm_group = "Slurm (docs/sweeps.md)";
+  command
+      ->add_option("--slurm", args->slurm,
+                   "N: submit the sweep to Slurm as a job array of N shards (at most the configurations) and a merge "
+                   "job that runs when all succeeded; the job scripts and logs go to <out>/slurm/")
+      ->check(CLI::PositiveNumber)
+      ->group(slurm_group);
+  command
+      ->add_option("--slurm-option", args->slurm_options,
+                   "sbatch option for both jobs without its dashes, e.g. time=01:00:00, partition=cpu, "
+                   "cpus-per-task=4 (repeatable)")
+      ->group(slurm_group);
+  command->add_flag("--slurm-dry-run", args->slurm_dry_run, "with --slurm: write the job scripts, do not submit")
+      ->group(slurm_group);
+  command->callback([args, command] {
+    args->threads_given = command->get_option("--threads")->count() > 0;
+    args->shard_given = command->get_option("--shard")->count() > 0;
+    RunSweep(*args);
+  });
 }
 
 void RegisterMergeCommand(CLI::App& app) {

@@ -24,9 +24,11 @@ $SUDO apt-get install -y -qq --no-install-recommends \
 if [ "$tests" = 1 ]; then
   # GoogleTest, Google Benchmark, clang with libFuzzer (fuzz/), Chromium for the report's
   # browser test (tests/report/; skipped without it), pytest for the Python module's tests and
-  # matplotlib for its example (tests/python/).
+  # matplotlib for its example (tests/python/), and Slurm with munge for the one-node cluster of
+  # scripts/ci_slurm.sh (`rpt sweep --slurm`; the packages' services are not started: the script
+  # starts its own daemons).
   $SUDO apt-get install -y -qq --no-install-recommends \
     libgtest-dev libgmock-dev libbenchmark-dev clang libclang-rt-14-dev chromium \
-    python3-pytest python3-matplotlib >/dev/null
+    python3-pytest python3-matplotlib slurm-wlm munge >/dev/null
 fi
 echo "dependencies installed"

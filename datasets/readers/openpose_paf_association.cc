@@ -2,47 +2,54 @@
 #include "datasets/readers/openpose_paf_association.h"
 
 #include <algorithm>
+#include <bit>
 #include <cassert>
-#include <tuple>
+#include <cstring>
 
 namespace rpt {
 namespace {
 
-struct Connection {
-  double score = 0;
-  int limb = 0;
-  int a = 0;  // candidate index of the limb's first joint
-  int b = 0;  // candidate index of the limb's second joint
-};
+using Connection = PafAssociator::Connection;
 
-// Decreasing score; ties by limb, a, b so the result never depends on sort stability.
-bool Before(const Connection& x, const Connection& y) {
-  if (x.score != y.score) return x.score > y.score;
-  return std::tie(x.limb, x.a, x.b) < std::tie(y.limb, y.a, y.b);
+// The bits of a positive double, inverted: they order like the values, decreasing.
+std::uint64_t DecreasingKey(double score) {
+  std::uint64_t bits;
+  std::memcpy(&bits, &score, sizeof bits);
+  return ~bits;
 }
 
-// Step 1: the greedy one-to-one matching of one limb.
-void MatchLimb(const PafCandidates& candidates, int limb, int joint_a, int joint_b, double min_paf_score,
-               std::vector<Connection>* kept) {
-  const Eigen::MatrixXd& paf = candidates.pafs[static_cast<size_t>(limb)];
-  const Eigen::Matrix3Xd& cand_a = candidates.joints[static_cast<size_t>(joint_a)];
-  const Eigen::Matrix3Xd& cand_b = candidates.joints[static_cast<size_t>(joint_b)];
-  std::vector<Connection> possible;
-  for (int i = 0; i < paf.rows(); ++i) {
-    if (!(cand_a(2, i) > 0)) continue;
-    for (int j = 0; j < paf.cols(); ++j) {
-      const double score = paf(i, j);
-      if (cand_b(2, j) > 0 && score > 0 && score >= min_paf_score) possible.push_back({score, limb, i, j});
-    }
+// Fills sorted[0, count) with the indices of possible[0, count) by decreasing score, equal scores
+// by index (= limb, a, b). packed[n] holds DecreasingKey(score of n) with its lowest `low` bits
+// replaced by n: one std::sort of plain integers does it, unless two different scores agree in all
+// other bits (then they would be ordered by index): checked after, and then sorted again by score
+// and index, which real scores (a few significant digits each) never need.
+void SortByScore(const PafCandidates& candidates, const Connection* possible, size_t count, std::uint64_t low,
+                 std::uint64_t* packed, std::uint32_t* sorted) {
+  const auto score = [&](std::uint64_t n) {
+    const Connection& c = possible[n];
+    return candidates.pafs[static_cast<size_t>(c.limb)](c.a, c.b);
+  };
+  std::sort(packed, packed + count);
+  bool exact = true;
+  for (size_t n = 1; n < count && exact; ++n) {
+    exact = ((packed[n] ^ packed[n - 1]) & ~low) != 0 || score(packed[n] & low) == score(packed[n - 1] & low);
   }
-  std::sort(possible.begin(), possible.end(), Before);
-  std::vector<bool> used_a(static_cast<size_t>(paf.rows()), false);
-  std::vector<bool> used_b(static_cast<size_t>(paf.cols()), false);
-  for (const Connection& c : possible) {
-    if (used_a[static_cast<size_t>(c.a)] || used_b[static_cast<size_t>(c.b)]) continue;
-    used_a[static_cast<size_t>(c.a)] = used_b[static_cast<size_t>(c.b)] = true;
-    kept->push_back(c);
+  if (exact) {
+    for (size_t n = 0; n < count; ++n) sorted[n] = static_cast<std::uint32_t>(packed[n] & low);
+    return;
   }
+  for (size_t n = 0; n < count; ++n) sorted[n] = static_cast<std::uint32_t>(n);
+  std::sort(sorted, sorted + count, [&](std::uint32_t x, std::uint32_t y) {
+    const double sx = score(x), sy = score(y);
+    return sx != sy ? sx > sy : x < y;
+  });
+}
+
+// Asks for the cache lines of `values` (a hint; no effect on the result).
+void Prefetch(const double* values, Eigen::Index count) {
+  const char* first = reinterpret_cast<const char*>(values);
+  const char* last = reinterpret_cast<const char*>(values + count);
+  for (const char* line = first; line < last; line += 64) __builtin_prefetch(line);
 }
 
 }  // namespace
@@ -77,65 +84,148 @@ std::string CheckPafCandidates(const PafSkeleton& skeleton, const PafCandidates&
   return {};
 }
 
-std::vector<PafPerson> AssociatePafs(const PafSkeleton& skeleton, const PafCandidates& candidates,
-                                     const PafAssociationOptions& options) {
+void PafAssociator::Run(const PafSkeleton& skeleton, const PafCandidates& candidates,
+                        const PafAssociationOptions& options, PafPersons* persons) {
   assert(CheckPafCandidates(skeleton, candidates).empty());
-  std::vector<Connection> kept;
-  for (size_t k = 0; k < skeleton.limbs.size(); ++k) {
-    MatchLimb(candidates, static_cast<int>(k), skeleton.limbs[k].first, skeleton.limbs[k].second,
-              options.min_paf_score, &kept);
-  }
-  std::sort(kept.begin(), kept.end(), Before);
+  const int num_joints = skeleton.num_joints;
+  const size_t nj = static_cast<size_t>(num_joints);
+  const size_t num_limbs = skeleton.limbs.size();
 
-  // Step 2. owner[joint][candidate] = person index or -1; merged persons are emptied, not erased,
-  // so indices stay valid and the output order is the order of creation.
-  std::vector<std::vector<int>> owner(static_cast<size_t>(skeleton.num_joints));
-  for (int j = 0; j < skeleton.num_joints; ++j) {
-    owner[static_cast<size_t>(j)].assign(static_cast<size_t>(candidates.joints[static_cast<size_t>(j)].cols()), -1);
+  // Every possible connection of every limb, generated in (limb, a, b) order, with its sort key.
+  // Steps 1 and 2 then run in one pass over them by decreasing score: per limb the greedy
+  // one-to-one matching sees its connections in the same order as on its own, and its kept
+  // connections reach step 2 in the order step 2 sorts them (score, then limb, a, b).
+  // The candidates and PAF scores are some 50 small heap blocks per image, often not in cache
+  // (a reader converts frames parsed long before): asking for all of them first lets the memory
+  // fetch them side by side instead of one miss after the other.
+  size_t entries = 0;
+  for (const Eigen::MatrixXd& paf : candidates.pafs) {
+    entries += static_cast<size_t>(paf.size());
+    Prefetch(paf.data(), paf.size());
   }
-  std::vector<PafPerson> persons;
-  for (const Connection& c : kept) {
+  for (const Eigen::Matrix3Xd& joint : candidates.joints) Prefetch(joint.data(), joint.size());
+  if (possible_.size() < entries) {  // grown only, never shrunk: allocation-free once warm
+    possible_.resize(entries);
+    packed_.resize(entries);
+    sorted_.resize(entries);
+  }
+  // Indices up to `entries` fit in the lowest bits of a packed key (SortByScore); more than 2^20
+  // possible connections in one image (never seen) are taken as one big sort.
+  const int index_bits = std::max(1, static_cast<int>(std::bit_width(entries)));
+  const std::uint64_t low = index_bits <= 20 ? (std::uint64_t{1} << index_bits) - 1 : ~std::uint64_t{0};
+  used_offset_.resize(num_limbs + 1);
+  used_offset_[0] = 0;
+  size_t count = 0;
+  for (size_t k = 0; k < num_limbs; ++k) {
+    const Eigen::MatrixXd& paf = candidates.pafs[k];
+    const Eigen::Index rows = paf.rows(), cols = paf.cols();
+    used_offset_[k + 1] = used_offset_[k] + static_cast<int>(rows + cols);
+    if (rows == 0 || cols == 0) continue;
+    const Eigen::Matrix3Xd& cand_a = candidates.joints[static_cast<size_t>(skeleton.limbs[k].first)];
+    const Eigen::Matrix3Xd& cand_b = candidates.joints[static_cast<size_t>(skeleton.limbs[k].second)];
+    for (Eigen::Index i = 0; i < rows; ++i) {
+      if (!(cand_a(2, i) > 0)) continue;
+      for (Eigen::Index j = 0; j < cols; ++j) {
+        // Written always, counted when possible: no branch on the scores.
+        const double score = paf(i, j);
+        packed_[count] = (DecreasingKey(score) & ~low) | count;
+        possible_[count] = {static_cast<int>(k), static_cast<int>(i), static_cast<int>(j)};
+        count += static_cast<size_t>((score > 0) & (score >= options.min_paf_score) & (cand_b(2, j) > 0));
+      }
+    }
+  }
+  SortByScore(candidates, possible_.data(), count, low, packed_.data(), sorted_.data());
+  used_.assign(static_cast<size_t>(used_offset_[num_limbs]), 0);
+
+  // Step 2. owner_ holds the person of every candidate (-1 = none), joint j's from offset_[j];
+  // merged persons are emptied, not erased, so indices stay valid and the output order is the
+  // order of creation.
+  offset_.resize(nj + 1);
+  offset_[0] = 0;
+  for (size_t j = 0; j < nj; ++j) offset_[j + 1] = offset_[j] + static_cast<int>(candidates.joints[j].cols());
+  owner_.assign(static_cast<size_t>(offset_[nj]), -1);
+  persons_.clear();
+  joint_count_.clear();
+  mask_.clear();
+  const size_t words = (nj + 63) / 64;  // a person's joints as a bit set (1 word for BODY_25)
+  for (size_t n = 0; n < count; ++n) {
+    const Connection& c = possible_[sorted_[n]];
+    // Step 1: the limb's greedy matching keeps the connection when neither end is used yet.
+    unsigned char* used = used_.data() + used_offset_[static_cast<size_t>(c.limb)];
+    unsigned char& used_a = used[c.a];
+    unsigned char& used_b = used[candidates.pafs[static_cast<size_t>(c.limb)].rows() + c.b];
+    if (used_a | used_b) continue;
+    used_a = used_b = 1;
+    // Step 2.
     const auto [joint_a, joint_b] = skeleton.limbs[static_cast<size_t>(c.limb)];
-    int& owner_a = owner[static_cast<size_t>(joint_a)][static_cast<size_t>(c.a)];
-    int& owner_b = owner[static_cast<size_t>(joint_b)][static_cast<size_t>(c.b)];
+    int& owner_a = owner_[static_cast<size_t>(offset_[static_cast<size_t>(joint_a)] + c.a)];
+    int& owner_b = owner_[static_cast<size_t>(offset_[static_cast<size_t>(joint_b)] + c.b)];
     if (owner_a < 0 && owner_b < 0) {
-      PafPerson person(static_cast<size_t>(skeleton.num_joints), -1);
-      person[static_cast<size_t>(joint_a)] = c.a;
-      person[static_cast<size_t>(joint_b)] = c.b;
-      owner_a = owner_b = static_cast<int>(persons.size());
-      persons.push_back(std::move(person));
+      const int p = static_cast<int>(joint_count_.size());
+      persons_.resize(persons_.size() + nj, -1);
+      mask_.resize(mask_.size() + words, 0);
+      int* person = persons_.data() + static_cast<size_t>(p) * nj;
+      std::uint64_t* mask = mask_.data() + static_cast<size_t>(p) * words;
+      person[joint_a] = c.a;
+      person[joint_b] = c.b;
+      mask[joint_a / 64] |= std::uint64_t{1} << (joint_a % 64);
+      mask[joint_b / 64] |= std::uint64_t{1} << (joint_b % 64);
+      joint_count_.push_back(2);
+      owner_a = owner_b = p;
     } else if (owner_a < 0 || owner_b < 0) {
       const int p = std::max(owner_a, owner_b);
       const int joint = owner_a < 0 ? joint_a : joint_b;
-      const int candidate = owner_a < 0 ? c.a : c.b;
-      PafPerson& person = persons[static_cast<size_t>(p)];
-      if (person[static_cast<size_t>(joint)] >= 0) continue;  // it has another candidate of this joint
-      person[static_cast<size_t>(joint)] = candidate;
+      int* person = persons_.data() + static_cast<size_t>(p) * nj;
+      if (person[joint] >= 0) continue;  // it has another candidate of this joint
+      person[joint] = owner_a < 0 ? c.a : c.b;
+      mask_[static_cast<size_t>(p) * words + static_cast<size_t>(joint / 64)] |= std::uint64_t{1} << (joint % 64);
+      ++joint_count_[static_cast<size_t>(p)];
       (owner_a < 0 ? owner_a : owner_b) = p;
     } else if (owner_a != owner_b) {
       const int keep = std::min(owner_a, owner_b);
       const int drop = std::max(owner_a, owner_b);
-      PafPerson& first = persons[static_cast<size_t>(keep)];
-      PafPerson& second = persons[static_cast<size_t>(drop)];
-      bool shared_joint = false;
-      for (size_t j = 0; j < first.size() && !shared_joint; ++j) shared_joint = first[j] >= 0 && second[j] >= 0;
-      if (shared_joint) continue;
-      for (size_t j = 0; j < second.size(); ++j) {
-        if (second[j] < 0) continue;
-        first[j] = second[j];
-        owner[j][static_cast<size_t>(second[j])] = keep;
-        second[j] = -1;
+      std::uint64_t* keep_mask = mask_.data() + static_cast<size_t>(keep) * words;
+      std::uint64_t* drop_mask = mask_.data() + static_cast<size_t>(drop) * words;
+      std::uint64_t shared = 0;
+      for (size_t w = 0; w < words; ++w) shared |= keep_mask[w] & drop_mask[w];
+      if (shared != 0) continue;  // they share a joint
+      int* first = persons_.data() + static_cast<size_t>(keep) * nj;
+      int* second = persons_.data() + static_cast<size_t>(drop) * nj;
+      for (size_t w = 0; w < words; ++w) {
+        for (std::uint64_t bits = drop_mask[w]; bits != 0; bits &= bits - 1) {
+          const size_t j = w * 64 + static_cast<size_t>(std::countr_zero(bits));
+          first[j] = second[j];
+          owner_[static_cast<size_t>(offset_[j] + second[j])] = keep;
+          second[j] = -1;
+        }
+        keep_mask[w] |= drop_mask[w];
+        drop_mask[w] = 0;
       }
+      joint_count_[static_cast<size_t>(keep)] += joint_count_[static_cast<size_t>(drop)];
+      joint_count_[static_cast<size_t>(drop)] = 0;
     }
     // else: both ends already in the same person (a redundant limb).
   }
 
   // Step 3.
-  std::vector<PafPerson> out;
-  for (PafPerson& person : persons) {
-    const auto joints = std::count_if(person.begin(), person.end(), [](int c) { return c >= 0; });
-    if (joints > 0 && joints >= options.min_joints) out.push_back(std::move(person));
+  persons->num_joints = num_joints;
+  persons->candidate.clear();
+  for (size_t p = 0; p < joint_count_.size(); ++p) {
+    const int joints = joint_count_[p];
+    if (joints > 0 && joints >= options.min_joints) {
+      const int* person = persons_.data() + p * nj;
+      persons->candidate.insert(persons->candidate.end(), person, person + nj);
+    }
   }
+}
+
+std::vector<PafPerson> AssociatePafs(const PafSkeleton& skeleton, const PafCandidates& candidates,
+                                     const PafAssociationOptions& options) {
+  PafAssociator associator;
+  PafPersons persons;
+  associator.Run(skeleton, candidates, options, &persons);
+  std::vector<PafPerson> out;
+  for (int p = 0; p < persons.size(); ++p) out.emplace_back(persons.Person(p), persons.Person(p) + persons.num_joints);
   return out;
 }
 

@@ -19,12 +19,16 @@
 //     connection belong to no person.
 // Persons come out in the order their first (highest-scoring) connection was processed.
 //
+// PafAssociator runs it with buffers it keeps: once warm (candidate counts seen before) a call
+// allocates nothing. AssociatePafs() is the one-shot form.
+//
 // PAF scores are used as given: 4D-Association raises them to the power 0.2 after reading,
 // a monotone transform that changes no ordering; min_paf_score applies to the values given
 // (0.05 here is 0.05^0.2 = 0.55 on 4D-Association's scale).
 #pragma once
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
@@ -58,11 +62,50 @@ struct PafAssociationOptions {
 // One assembled person: per joint the index of its candidate, -1 = none.
 using PafPerson = std::vector<int>;
 
+// The assembled persons of one image, flat: person p's candidate of joint j is
+// candidate[p * num_joints + j] (-1 = none).
+struct PafPersons {
+  int num_joints = 0;
+  std::vector<int> candidate;
+  int size() const { return num_joints == 0 ? 0 : static_cast<int>(candidate.size()) / num_joints; }
+  const int* Person(int p) const { return candidate.data() + static_cast<size_t>(p) * static_cast<size_t>(num_joints); }
+};
+
 // Empty string when `candidates` fits `skeleton` (joint and limb counts, PAF matrix shapes, limb
 // joints in range, finite values), else what is wrong.
 std::string CheckPafCandidates(const PafSkeleton& skeleton, const PafCandidates& candidates);
 
-// Runs the association above. Precondition: CheckPafCandidates() returned "" (asserted).
+// The association above with reused buffers. Precondition: CheckPafCandidates() returned ""
+// (asserted).
+class PafAssociator {
+ public:
+  void Run(const PafSkeleton& skeleton, const PafCandidates& candidates, const PafAssociationOptions& options,
+           PafPersons* persons);
+
+  // A possible connection: limb, candidates a (of the limb's first joint) and b (second).
+  struct Connection {
+    int limb = 0;
+    int a = 0;
+    int b = 0;
+  };
+
+ private:
+  // Every limb's possible connections, in (limb, a, b) order, their sort keys, and their indices
+  // by decreasing score (the first `count` of a call; sized to the most PAF entries seen, never
+  // shrunk).
+  std::vector<Connection> possible_;
+  std::vector<std::uint64_t> packed_;
+  std::vector<std::uint32_t> sorted_;
+  std::vector<int> used_offset_;      // per limb: first slot of its candidates in used_
+  std::vector<unsigned char> used_;   // per limb, per candidate of either joint: used by a kept connection
+  std::vector<int> offset_;  // first slot of joint j's candidates in owner_
+  std::vector<int> owner_;   // person of each candidate, -1 = none
+  std::vector<int> persons_;  // persons as created (merged ones emptied), num_joints each
+  std::vector<int> joint_count_;  // joints of each person in persons_
+  std::vector<std::uint64_t> mask_;  // the joints of each person in persons_ as a bit set
+};
+
+// One-shot form of PafAssociator::Run.
 std::vector<PafPerson> AssociatePafs(const PafSkeleton& skeleton, const PafCandidates& candidates,
                                      const PafAssociationOptions& options);
 

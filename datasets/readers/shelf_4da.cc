@@ -92,12 +92,17 @@ void AssembleView(const PafCandidates& candidates, const PafAssociationOptions& 
   view->Clear(num_joints);
   const double sx = camera.width - 1.0;
   const double sy = camera.height - 1.0;
-  for (const PafPerson& person : AssociatePafs(Body25PafSkeleton(), candidates, options)) {
+  // Per thread, so frames may be converted in parallel; allocation-free once warm.
+  thread_local PafAssociator associator;
+  thread_local PafPersons persons;
+  associator.Run(Body25PafSkeleton(), candidates, options, &persons);
+  for (int p = 0; p < persons.size(); ++p) {
+    const int* person = persons.Person(p);
     auto joints = view->AddPerson();
     bool any = false;
     for (int c = 0; c < num_joints; ++c) {
       const int b = CocoFromBody25()[static_cast<size_t>(c)];
-      const int candidate = person[static_cast<size_t>(b)];
+      const int candidate = person[b];
       if (candidate < 0) continue;
       const auto point = candidates.joints[static_cast<size_t>(b)].col(candidate);
       joints.col(c) << point(0) * sx, point(1) * sy, point(2);
