@@ -7,7 +7,7 @@
 namespace rpt::engine {
 namespace {
 
-double Percent(long part, long whole) { return whole > 0 ? 100.0 * static_cast<double>(part) / whole : 0.0; }
+double PercentOfWhole(long part, long whole) { return whole > 0 ? 100.0 * static_cast<double>(part) / whole : 0.0; }
 
 }  // namespace
 
@@ -47,14 +47,14 @@ void PrintLossTable(std::ostream& out, const LossTable& table) {
   std::snprintf(line, sizeof(line),
                 "where the GT persons are lost (first step that loses each): %ld GT persons, %ld (%.1f %%) detected "
                 "in 2 or more views\n",
-                table.gt_persons, table.triangulable, Percent(table.triangulable, table.gt_persons));
+                table.gt_persons, table.triangulable, PercentOfWhole(table.triangulable, table.gt_persons));
   out << line;
   std::snprintf(line, sizeof(line), "  %-52s %8s %8s\n", "category", "persons", "% of GT");
   out << line;
   for (const LossRow& row : LossRows(table)) {
     const std::string label = row.detail.empty() ? row.label : "  " + row.label;
     std::snprintf(line, sizeof(line), "  %-52s %8ld %8.1f\n", label.c_str(), row.persons,
-                  Percent(row.persons, table.gt_persons));
+                  PercentOfWhole(row.persons, table.gt_persons));
     out << line;
   }
 }
@@ -99,7 +99,7 @@ std::string LossesCsv(const LossTable& table) {
   out << "category,detail,persons,percent_of_gt\n";
   char percent[32];
   const auto row = [&](const std::string& category, const std::string& detail, long persons) {
-    std::snprintf(percent, sizeof(percent), "%.2f", Percent(persons, table.gt_persons));
+    std::snprintf(percent, sizeof(percent), "%.2f", PercentOfWhole(persons, table.gt_persons));
     out << category << "," << detail << "," << persons << "," << percent << "\n";
   };
   for (const LossRow& r : LossRows(table)) row(r.category, r.detail, r.persons);
