@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // `rpt eval`: a dataset (or generic labels) through the triangulator and the metrics. Prints the
 // paper-style row and writes summary.{md,csv,json}, per_joint.csv, steps.csv, config.json, run.json and
-// the chosen exports (--export: predictions.json by default, predictions.csv, trc/) into the output folder. Checks the input and the results and prints a
+// the chosen exports (--export: predictions.json by default, predictions.csv, trc/), and with --loss-table losses.csv
+// (engine/loss_table.h), into the output folder. Checks the input and the results and prints a
 // "warning: ..." line on stderr for each problem found (engine/diagnostics.h).
 #include <cstdio>
 #include <iostream>
@@ -12,6 +13,7 @@
 #include "cli/export_args.h"
 #include "engine/diagnostics.h"
 #include "engine/input.h"
+#include "engine/outputs/loss_tables.h"
 #include "engine/outputs/step_tables.h"
 #include "engine/outputs/results_writer.h"
 #include "engine/input_digests.h"
@@ -33,6 +35,7 @@ struct EvalArgs {
   int threads = 0;
   bool json = false;
   bool quiet = false;
+  bool loss_table = false;
 };
 
 void RunEval(const EvalArgs& args) {
@@ -45,6 +48,7 @@ void RunEval(const EvalArgs& args) {
   options.triangulator = config.triangulator;
   options.eval = config.metrics;
   options.checks = engine::DetectionCheckOptions{};
+  options.loss_table = args.loss_table;
   options.threads = args.threads;
   std::unique_ptr<Progress> progress = ProgressOf(input, !args.quiet);
   options.progress = ReportTo(progress.get());
@@ -60,7 +64,8 @@ void RunEval(const EvalArgs& args) {
   info.threads = run.threads;
   info.input_warnings = engine::InputWarningLines(run.warnings);
   const engine::EvalDiagnostics diagnostics = engine::Diagnose(run);
-  const nlohmann::ordered_json diagnostics_json = engine::DiagnosticsJson(diagnostics);
+  nlohmann::ordered_json diagnostics_json = engine::DiagnosticsJson(diagnostics);
+  diagnostics_json.update(engine::RunLossTablesJson(run));
   folder.Finish(run, config, info, diagnostics_json);
   if (args.json) {
     nlohmann::ordered_json summary = engine::SummaryJson(run);
@@ -87,6 +92,7 @@ void RunEval(const EvalArgs& args) {
     engine::PrintCheckSummary(std::cout, diagnostics);
     engine::PrintStepTimes(std::cout, run.timing, &run.counts);
   }
+  if (run.losses) engine::PrintLossTable(std::cout, *run.losses);
   std::printf("results in %s\n", PrintableText(out_dir, LineBreaks::kEscape).c_str());
   // Last, so they are what the user sees.
   std::fflush(stdout);
@@ -105,6 +111,9 @@ void RegisterEvalCommand(CLI::App& app) {
   AddThreadsOption(command, &args->threads, "sequences evaluated");
   command->add_flag("--json", args->json, "print the summary as one JSON object");
   command->add_flag("--quiet", args->quiet, "no progress, no step table");
+  command->add_flag("--loss-table", args->loss_table,
+                    "follow every GT person through the association and count where it is lost (losses.csv, "
+                    "summary.json \"loss_table\"; docs/diagnostics.md)");
   command->callback([args] { RunEval(*args); });
 }
 

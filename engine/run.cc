@@ -30,12 +30,13 @@ struct SequenceRun {
   std::optional<metrics::MetricsAccumulator> metrics;
   metrics::TimingAccumulator timing;
   metrics::StepCountAccumulator counts;
+  std::optional<LossAccumulator> losses;
   long gt_persons = 0, output_persons = 0, frames_with_gt = 0, frames_with_gt_without_prediction = 0;
 };
 
 // What is measured of one triangulated frame, and the frame handed to the sink.
 void Emit(int index, const SequenceFrame& frame, const Poses3D& persons, const FrameStats& stats,
-          const SequenceHeader& header, const JointNames& output_joints, SequenceRun* run,
+          const FrameTrace& trace, const SequenceHeader& header, const JointNames& output_joints, SequenceRun* run,
           std::optional<DetectionChecker>* checker, FrameSink* sink) {
   run->timing.Add(stats);
   run->counts.Add(stats);
@@ -47,6 +48,7 @@ void Emit(int index, const SequenceFrame& frame, const Poses3D& persons, const F
     if (persons.num_persons() == 0) ++run->frames_with_gt_without_prediction;
   }
   if (run->metrics) run->metrics->Add(frame.id, frame.gt, header.gt_joints, persons, output_joints);
+  if (run->losses) run->losses->Add(frame, trace, run->metrics->LastFrame());
   if (*checker) (*checker)->Add(frame);
   if (sink != nullptr) sink->Frame(FrameOutput{index, &frame, &persons, &stats});
 }
@@ -65,6 +67,10 @@ void RunSequence(int index, FrameSource& source, const RunOptions& options, cons
   run->result.output_joints = output_joints;
   run->timing = metrics::TimingAccumulator(options.warmup_frames);
   if (eval != nullptr) run->metrics.emplace(*eval);
+  if (options.loss_table) {
+    if (eval == nullptr) throw ConfigError("the loss table needs the metrics (ground truth)");
+    run->losses.emplace(header, output_joints, *eval);
+  }
   std::optional<DetectionChecker> checker;
   if (options.checks) checker.emplace(header, source.num_frames(), tri_options.track.max_gap_s, *options.checks);
   if (sink != nullptr) sink->BeginSequence(index, header, output_joints);
@@ -75,13 +81,15 @@ void RunSequence(int index, FrameSource& source, const RunOptions& options, cons
   const bool offline = tri_options.track.enabled && tri_options.smooth.mode == SmoothMode::kOffline;
   OfflineSmoother smoother(tri_options.smooth, tri_options.track.max_gap_s, tri_options.UnobservedScore());
   std::vector<SequenceFrame> waiting(1);  // ring of the input frames the smoother holds
+  std::vector<FrameTrace> traces(1);      // their traces, when the loss table is made
   size_t first_waiting = 0, num_waiting = 0;
   Poses3D persons, smoothed;
   FrameStats stats, smoothed_stats;
   const auto emit_ready = [&] {
     while (smoother.Pop(&smoothed, &smoothed_stats)) {
       SequenceFrame& frame = waiting[first_waiting];
-      Emit(index, frame, smoothed, smoothed_stats, header, output_joints, run, &checker, sink);
+      Emit(index, frame, smoothed, smoothed_stats, traces[first_waiting % traces.size()], header, output_joints, run,
+           &checker, sink);
       first_waiting = (first_waiting + 1) % waiting.size();
       --num_waiting;
     }
@@ -89,13 +97,19 @@ void RunSequence(int index, FrameSource& source, const RunOptions& options, cons
   while (true) {
     if (offline && num_waiting == waiting.size()) {  // grow the ring, keeping the order
       std::rotate(waiting.begin(), waiting.begin() + static_cast<long>(first_waiting), waiting.end());
+      if (run->losses) {
+        std::rotate(traces.begin(), traces.begin() + static_cast<long>(first_waiting), traces.end());
+        traces.resize(waiting.size() * 2);
+      }
       first_waiting = 0;
       waiting.resize(waiting.size() * 2);
     }
-    SequenceFrame& frame = offline ? waiting[(first_waiting + num_waiting) % waiting.size()] : waiting[0];
+    const size_t slot = offline ? (first_waiting + num_waiting) % waiting.size() : 0;
+    SequenceFrame& frame = waiting[slot];
+    FrameTrace* trace = run->losses ? &traces[slot] : nullptr;
     if (!source.Next(&frame)) break;
     try {
-      triangulator.Process(frame.views.empty() ? no_views : frame.views, frame.timestamp_s, &persons, &stats);
+      triangulator.Process(frame.views.empty() ? no_views : frame.views, frame.timestamp_s, &persons, &stats, trace);
     } catch (const InputError& e) {  // e.g. more persons in a view than triangulate.max_persons_per_view
       throw InputError(header.name + ": frame '" + frame.id + "': " + e.what());
     } catch (const std::bad_alloc&) {
@@ -108,7 +122,7 @@ void RunSequence(int index, FrameSource& source, const RunOptions& options, cons
       smoother.Push(frame.timestamp_s, persons, persons.num_persons() - stats.coasting_tracks, stats);
       emit_ready();
     } else {
-      Emit(index, frame, persons, stats, header, output_joints, run, &checker, sink);
+      Emit(index, frame, persons, stats, traces[0], header, output_joints, run, &checker, sink);
     }
     const long done = ++*frames_done;
     if (report_progress && options.progress) options.progress(done);
@@ -120,6 +134,7 @@ void RunSequence(int index, FrameSource& source, const RunOptions& options, cons
   if (checker) run->result.check = checker->Finish();
   run->result.timing = run->timing.Finalize();
   if (run->metrics) run->result.metrics = run->metrics->Finalize();
+  if (run->losses) run->result.losses = run->losses->table();
   if (sink != nullptr) sink->EndSequence(index);
 }
 
@@ -215,7 +230,9 @@ RunResult Run(Input& input, const RunOptions& options, FrameSink* sink) {
   if (eval) all.emplace(*eval);
   metrics::TimingAccumulator timing;
   metrics::StepCountAccumulator counts;
+  if (options.loss_table) result.losses.emplace();
   for (SequenceRun& run : runs) {
+    if (result.losses && run.result.losses) result.losses->Merge(*run.result.losses);
     if (all) all->Merge(*run.metrics);
     timing.Merge(run.timing);
     counts.Merge(run.counts);

@@ -26,6 +26,7 @@
 #include "datasets/sequence.h"
 #include "engine/detection_checks.h"
 #include "engine/frame_sink.h"
+#include "engine/loss_table.h"
 #include "metrics/eval_options.h"
 #include "metrics/metrics_result.h"
 #include "metrics/step_counts.h"
@@ -42,6 +43,9 @@ struct RunOptions {
   std::optional<metrics::EvalOptions> eval = metrics::EvalOptions{};
   // Input checks (detections against GT and cameras, engine/detection_checks.h); empty: none.
   std::optional<DetectionCheckOptions> checks;
+  // Where the GT persons are lost (engine/loss_table.h); needs `eval`. Recording what the
+  // association did costs time, which counts in the frames' total (not in any step's).
+  bool loss_table = false;
   int warmup_frames = 0;  // frames per sequence excluded from timing
   int threads = 0;        // sequences in parallel; 0 = automatic (at most the cores and the sequences)
   // Called with the frames done so far (all sequences), from one thread; may be empty.
@@ -57,6 +61,7 @@ struct SequenceResult {
   metrics::MetricsResult metrics;         // when RunOptions::eval is set
   metrics::TimingSummary timing;
   std::optional<SequenceCheck> check;     // when RunOptions::checks is set
+  std::optional<LossTable> losses;        // when RunOptions::loss_table is set
 };
 
 struct RunResult {
@@ -64,6 +69,7 @@ struct RunResult {
   metrics::MetricsResult metrics;   // over all sequences
   metrics::TimingSummary timing;    // over all frames of all sequences
   metrics::StepCountSummary counts; // items per step per frame, over all frames
+  std::optional<LossTable> losses;  // over all sequences, when RunOptions::loss_table is set
   long frames = 0;
   double wall_seconds = 0;          // the whole run, steady clock
   int threads = 1;                  // threads used for the sequences

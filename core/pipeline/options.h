@@ -30,6 +30,10 @@ struct UndistortOptions {
   // proposal needs that many core joints seen in both views) at the same value, such a pose could
   // not be in any proposal; dropping it here keeps it out of the pairs and the pre-filter.
   int min_core_joints = 3;
+  // A pose that repeats an earlier pose of its view exactly (every joint's pixel and score) is
+  // dropped: a copy adds no evidence, but its extra pairs would count twice in grouping (a file
+  // artifact: MVOR's shipped OpenPose detections repeat 22 % of their poses).
+  bool drop_exact_copies = true;
 };
 
 template <class Visitor, OptionsOf<UndistortOptions> Self>
@@ -42,6 +46,8 @@ void VisitFields(Visitor& v, Self& o) {
     OptionSpec{.help = "2D poses with fewer valid core joints are dropped before pairing (at "
                        "triangulate.min_core_joints they could form no proposal)",
                .min = 1, .max = 1000});
+  v("drop_exact_copies", o.drop_exact_copies,
+    OptionSpec{.help = "drop a 2D pose that repeats an earlier pose of its view exactly (pixels and scores)"});
 }
 
 // Step 2: keep pairs whose two poses both match the same last-frame person, or neither does.

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "core/pipeline/triangulator.h"
 
+#include <algorithm>
 #include <chrono>
 #include <string>
 #include <utility>
@@ -70,7 +71,18 @@ const TriangulatorOptions& Triangulator::options() const { return model_->option
 
 void Triangulator::Reset() { temporal_->Reset(model_->num_core_joints(), model_->resolved.score.noise_prior_m); }
 
-void Triangulator::Process(std::span<const Poses2D> views, double timestamp_s, Poses3D* persons, FrameStats* stats) {
+namespace {
+
+// The pairs of `pairs` as pose-index pairs, for a FrameTrace.
+void TracePairs(std::span<const PosePair> pairs, std::vector<std::array<int, 2>>* out) {
+  out->clear();
+  for (const PosePair& pair : pairs) out->push_back({pair.a, pair.b});
+}
+
+}  // namespace
+
+void Triangulator::Process(std::span<const Poses2D> views, double timestamp_s, Poses3D* persons, FrameStats* stats,
+                           FrameTrace* trace) {
   const TriangulatorModel& m = *model_;
   const TriangulatorOptions& opt = m.resolved;
   FrameBuffers& buf = *frame_;
@@ -123,24 +135,51 @@ void Triangulator::Process(std::span<const Poses2D> views, double timestamp_s, P
                                                   .num_output_joints = num_joints},
                             &buf.prepared);
   run.Run<Step::kMakePairs>(buf.prepared, &buf.pairs);
+  if (trace != nullptr) {
+    trace->Clear();
+    trace->pose_view = buf.prepared.view_of;
+    trace->pose_person = buf.prepared.person_of;
+    TracePairs(buf.pairs, &trace->pairs[FrameTrace::kMakePairs]);
+    run.Skip();
+  }
   run.Run<Step::kPrefilter>(steps::PrefilterInput{.views = buf.prepared,
                                                   .geometry = m.geometry,
                                                   .core_joints = m.core_joints,
                                                   .previous = state.previous,
                                                   .timestamp_s = timestamp_s},
                             &buf.prefilter, &buf.pairs);
+  if (trace != nullptr) {
+    TracePairs(buf.pairs, &trace->pairs[FrameTrace::kPrefilter]);
+    run.Skip();
+  }
   run.Run<Step::kTriangulateCore>(
       steps::TriangulateCoreInput{
           .views = buf.prepared, .geometry = m.geometry, .pairs = buf.pairs, .joints = m.core_joints},
       &buf.core);
+  if (trace != nullptr) {
+    TracePairs(buf.core.pairs, &trace->pairs[FrameTrace::kTriangulateCore]);
+    run.Skip();
+  }
   run.Run<Step::kRoomCheck>(m.room, &buf.core);
+  if (trace != nullptr) {
+    TracePairs(buf.core.pairs, &trace->pairs[FrameTrace::kRoomCheck]);
+    run.Skip();
+  }
   run.Run<Step::kScore>(
       steps::ScoreInput{
           .views = buf.prepared, .geometry = m.geometry, .core_joints = m.core_joints, .core_limbs = m.core_limbs},
       &state.noise, &buf.score_scratch, &buf.core, &buf.kernel, stats);
   run.Run<Step::kFilter>(&buf.core);
+  if (trace != nullptr) {
+    TracePairs(buf.core.pairs, &trace->pairs[FrameTrace::kFilter]);
+    run.Skip();
+  }
   run.Run<Step::kGroup>(steps::GroupInput{.num_poses = buf.prepared.num_poses(), .mirror = m.core_mirror},
                         &buf.group_scratch, &buf.core, &buf.groups, stats);
+  if (trace != nullptr) {
+    trace->group_of_pair = buf.core.group;  // grouping keeps the filtered proposals in their order
+    run.Skip();
+  }
   run.Run<Step::kTriangulateFull>(steps::TriangulateFullInput{.views = buf.prepared,
                                                               .geometry = m.geometry,
                                                               .core = buf.core,
@@ -152,6 +191,13 @@ void Triangulator::Process(std::span<const Poses2D> views, double timestamp_s, P
                                   &buf.full, stats);
   persons->Clear(num_joints);
   run.Run<Step::kMerge>(steps::MergeInput{.proposals = buf.full, .groups = buf.groups}, &buf.merge_scratch, persons);
+  if (trace != nullptr) {
+    // Verify and postprocess keep persons in order and move their track ids with them (all -1
+    // until tracking): each person carries its merged index through them, then -1 again.
+    trace->merged = *persons;
+    for (int p = 0; p < persons->num_persons(); ++p) persons->track_ids[p] = p;
+    run.Skip();
+  }
   run.Run<Step::kVerify>(steps::VerifyInput{.views = buf.prepared,
                                             .geometry = m.geometry,
                                             .core_joints = m.core_joints,
@@ -159,8 +205,17 @@ void Triangulator::Process(std::span<const Poses2D> views, double timestamp_s, P
                                             .groups = buf.groups,
                                             .kernel = buf.kernel},
                          &buf.verify_scratch, persons, stats);
+  if (trace != nullptr) {
+    trace->after_verify = persons->track_ids;
+    run.Skip();
+  }
   const steps::PostprocessInput postprocess_input{.neighbour = m.neighbour, .limbs = m.all_limbs, .room = m.room};
   run.Run<Step::kPostprocess>(postprocess_input, persons, stats);
+  if (trace != nullptr) {
+    trace->after_postprocess = persons->track_ids;
+    std::fill(persons->track_ids.begin(), persons->track_ids.end(), -1);
+    run.Skip();
+  }
 
   // Step 12b: persons seen by one view only, post-processed like the others and appended. They
   // stay out of the pre-filter's memory: their depth is a guess.

@@ -22,6 +22,7 @@
 #include "core/camera.h"
 #include "core/joints.h"
 #include "core/pipeline/frame_stats.h"
+#include "core/pipeline/frame_trace.h"
 #include "core/pipeline/options.h"
 #include "core/poses.h"
 
@@ -45,7 +46,10 @@ class Triangulator {
   // frame's time in seconds, NaN when unknown: a frame more than options().track.max_gap_s after
   // the last one, or with an unknown time, starts afresh (no pre-filter, tracks end, nothing
   // coasts). The detection noise estimate of the adaptive score carries over regardless.
-  void Process(std::span<const Poses2D> views, double timestamp_s, Poses3D* persons, FrameStats* stats);
+  // With a `trace`, what the association steps did with the poses is recorded into it
+  // (frame_trace.h); the recording's time is no step's time but counts in stats->total_us.
+  void Process(std::span<const Poses2D> views, double timestamp_s, Poses3D* persons, FrameStats* stats,
+               FrameTrace* trace = nullptr);
 
   // Forgets the previous frame (pre-filter poses, tracks) and the noise estimate, e.g. between
   // sequences.

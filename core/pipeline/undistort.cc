@@ -18,6 +18,16 @@ void SetFromNormalized(const ViewGeometry& g, double x, double y, double score, 
   kp->ray = g.R_t * Eigen::Vector3d(x, y, 1.0);
 }
 
+// Whether pose p of `view` equals an earlier pose of it in every number (pixels and scores).
+bool RepeatsEarlierPose(const Poses2D& view, int p) {
+  const size_t n = 3 * static_cast<size_t>(view.num_joints);
+  const double* pose = view.data.data() + p * n;
+  for (int e = 0; e < p; ++e) {
+    if (std::equal(pose, pose + n, view.data.data() + e * n)) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 int steps::Undistort(const UndistortOptions& options, const UndistortInput& in, PreparedViews* prepared) {
@@ -40,6 +50,7 @@ int steps::Undistort(const UndistortOptions& options, const UndistortInput& in, 
     const bool distorted = camera.HasDistortion();
     for (int p = 0; p < view.num_persons(); ++p) {
       const auto person = view.Person(p);
+      if (options.drop_exact_copies && RepeatsEarlierPose(view, p)) continue;
       const size_t base = out.keypoints.size();
       out.keypoints.resize(base + num_output_joints);
       Keypoint* kps = out.keypoints.data() + base;

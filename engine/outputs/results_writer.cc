@@ -13,6 +13,7 @@
 #include "datasets/io/staged_output.h"
 #include "datasets/io/text_file.h"
 #include "engine/outputs/h5_export.h"
+#include "engine/outputs/loss_tables.h"
 #include "engine/outputs/npz_export.h"
 #include "engine/outputs/step_tables.h"
 #include "engine/outputs/text_escaping.h"
@@ -323,6 +324,13 @@ void WriteRunFiles(const std::filesystem::path& staging, const RunResult& run, c
   }
   io::WriteTextFile(staging / "per_joint.csv", io::NamedBy::kRpt, joints.str());
   io::WriteTextFile(staging / "steps.csv", io::NamedBy::kRpt, StepsCsv(run.timing, run.counts));
+  if (run.losses) {
+    io::WriteTextFile(staging / "losses.csv", io::NamedBy::kRpt, LossesCsv(*run.losses));
+  } else {  // an earlier run's table (carried over into the folder) is not this run's
+    std::error_code ec;
+    std::filesystem::remove(staging / "losses.csv", ec);
+    if (ec) throw InputError((staging / "losses.csv").string() + ": cannot remove the earlier run's table: " + ec.message());
+  }
   io::WriteTextFile(staging / "config.json", io::NamedBy::kRpt, DumpConfig(config, /*with_comments=*/false));
   write_json("run.json", RunInfoJson(info));  // last: the marker of a complete run
 }

@@ -106,6 +106,38 @@ TEST(EvalDiagnostics, JsonOutputCarriesTheWarnings) {
   fs::remove_all(out);
 }
 
+// --loss-table: printed, in losses.csv and summary.json (also with --json); a later run without it
+// leaves no table of the earlier run in the folder.
+TEST(EvalDiagnostics, LossTableIsPrintedAndWrittenOnlyWhenAsked) {
+  const fs::path out = test::TempDir("diag_losses");
+  const std::string eval = "eval --dataset synthetic --simulate --param frames=30 --quiet --out " + out.string();
+  const test::CommandResult r = test::RunRpt(eval + " --loss-table");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("where the GT persons are lost"), std::string::npos) << r.out;
+  const Json summary = ReadJson(out / "summary.json");
+  const Json& table = summary.at("loss_table");
+  const long gt = table.at("gt_persons").get<long>();
+  EXPECT_EQ(gt, 120) << "4 people x 30 frames";
+  long sum = 0;
+  for (const auto& [key, persons] : table.at("categories").items()) sum += persons.get<long>();
+  EXPECT_EQ(sum, gt);
+  EXPECT_EQ(table.at("categories").size(), 7u);
+  const std::string csv = test::ReadAll(out / "losses.csv");
+  EXPECT_EQ(csv.rfind("category,detail,persons,percent_of_gt\nfound,,", 0), 0u) << csv;
+  EXPECT_NE(csv.find("\nall,,120,100.00\n"), std::string::npos) << csv;
+
+  const test::CommandResult json = test::RunRpt(eval + " --loss-table --json");
+  ASSERT_EQ(json.exit_code, 0) << json.err;
+  EXPECT_EQ(Json::parse(json.out).at("loss_table").at("gt_persons").get<long>(), 120);
+
+  const test::CommandResult plain = test::RunRpt(eval);
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  EXPECT_EQ(plain.out.find("where the GT persons are lost"), std::string::npos) << plain.out;
+  EXPECT_FALSE(fs::exists(out / "losses.csv"));
+  EXPECT_FALSE(ReadJson(out / "summary.json").contains("loss_table"));
+  fs::remove_all(out);
+}
+
 TEST(EvalDiagnostics, EmptyCameraIsNamed) {
   const Case c = EvalEdited("empty_camera", nullptr, [](Json* d) {
     for (Json& frame : (*d)["frames"]) {

@@ -203,5 +203,80 @@ TEST(Triangulator, UnknownTimesAndLargeGapsStartAfresh) {
   }
 }
 
+// A view that repeats a pose exactly: the copy is dropped before pairing (undistort), so the frame
+// gives what it gives without it; a pose that differs in one score is no copy.
+TEST(Triangulator, ExactCopiesOfAPoseAreDropped) {
+  const auto cameras = test::RingCameras(3);
+  const std::vector<Eigen::Matrix4Xd> bodies = {test::StandingPerson(-0.8, 0.2), test::StandingPerson(0.9, -0.3, 2.0)};
+  const std::vector<Poses2D> clean = test::ProjectPersons(cameras, bodies);
+  std::vector<Poses2D> copied = clean;
+  Poses2D& view = copied[0];  // poses: body 0, its copy, body 1, body 1 with one score changed
+  view.Clear(clean[0].num_joints);
+  view.AddPerson() = clean[0].Person(0);
+  view.AddPerson() = clean[0].Person(0);
+  view.AddPerson() = clean[0].Person(1);
+  auto changed = view.AddPerson();
+  changed = clean[0].Person(1);
+  changed(2, 0) = 0.5;
+  Triangulator tri(cameras, CocoBodyJoints(), TriangulatorOptions{});
+  Poses3D persons, expected;
+  FrameStats stats;
+  FrameTrace trace;
+  tri.Process(copied, std::numeric_limits<double>::quiet_NaN(), &persons, &stats, &trace);
+  EXPECT_EQ(stats.count[static_cast<int>(Step::kUndistort)], 3 + 2 + 2);
+  EXPECT_EQ(trace.pose_person, (std::vector<int>{0, 2, 3, 0, 1, 0, 1}));
+  EXPECT_EQ(trace.pose_view, (std::vector<int>{0, 0, 0, 1, 1, 2, 2}));
+
+  TriangulatorOptions keep;
+  keep.undistort.drop_exact_copies = false;
+  Triangulator with_copies(cameras, CocoBodyJoints(), keep);
+  with_copies.Process(copied, std::numeric_limits<double>::quiet_NaN(), &expected, &stats);
+  EXPECT_EQ(stats.count[static_cast<int>(Step::kUndistort)], 4 + 2 + 2);
+
+  // Without the copy: the same persons, bit for bit.
+  std::vector<Poses2D> without = copied;
+  without[0].Clear(clean[0].num_joints);
+  for (int p : {0, 2, 3}) without[0].AddPerson() = copied[0].Person(p);
+  Triangulator reference(cameras, CocoBodyJoints(), TriangulatorOptions{});
+  reference.Process(without, std::numeric_limits<double>::quiet_NaN(), &expected, &stats);
+  EXPECT_EQ(persons.data, expected.data);
+}
+
+// The trace of a clean frame: every pair survives to the filter but the cross-person ones, each
+// person's pairs form one group, merged into one person each, and all are kept.
+TEST(Triangulator, TraceRecordsWhatTheAssociationDid) {
+  const auto cameras = test::RingCameras(3);
+  const std::vector<Eigen::Matrix4Xd> bodies = {test::StandingPerson(-0.8, 0.2), test::StandingPerson(0.9, -0.3, 2.0)};
+  Triangulator tri(cameras, CocoBodyJoints(), TriangulatorOptions{});
+  Poses3D persons;
+  FrameStats stats;
+  FrameTrace trace;
+  tri.Process(test::ProjectPersons(cameras, bodies), 0.0, &persons, &stats, &trace);
+  ASSERT_EQ(trace.pose_person, (std::vector<int>{0, 1, 0, 1, 0, 1}));
+  EXPECT_EQ(trace.pairs[FrameTrace::kMakePairs].size(), 12u);  // 3 view pairs x 2 x 2
+  EXPECT_EQ(trace.pairs[FrameTrace::kPrefilter].size(), 12u);
+  const auto& filtered = trace.pairs[FrameTrace::kFilter];
+  ASSERT_EQ(filtered.size(), 6u);
+  ASSERT_EQ(trace.group_of_pair.size(), 6u);
+  for (size_t i = 0; i < filtered.size(); ++i) {
+    const int person = trace.pose_person[filtered[i][0]];
+    EXPECT_EQ(trace.pose_person[filtered[i][1]], person) << "pair " << i;
+    // The groups are numbered in creation order; both hold one person's three pairs.
+    EXPECT_EQ(trace.group_of_pair[i], trace.group_of_pair[0] == 0 ? person : 1 - person) << "pair " << i;
+  }
+  EXPECT_EQ(trace.merged.num_persons(), 2);
+  EXPECT_EQ(trace.after_verify, (std::vector<int>{0, 1}));
+  EXPECT_EQ(trace.after_postprocess, (std::vector<int>{0, 1}));
+  // The persons carry no trace label out of the triangulator: tracking numbers them.
+  EXPECT_EQ(persons.num_persons(), 2);
+  for (int id : persons.track_ids) EXPECT_GE(id, 0);
+  // Without a trace, the same persons.
+  Triangulator untraced(cameras, CocoBodyJoints(), TriangulatorOptions{});
+  Poses3D same;
+  untraced.Process(test::ProjectPersons(cameras, bodies), 0.0, &same, &stats);
+  EXPECT_EQ(same.data, persons.data);
+  EXPECT_EQ(same.track_ids, persons.track_ids);
+}
+
 }  // namespace
 }  // namespace rpt

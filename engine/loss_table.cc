@@ -1,0 +1,206 @@
+// SPDX-License-Identifier: MIT
+#include "engine/loss_table.h"
+
+#include <algorithm>
+
+#include "metrics/person_error.h"
+
+namespace rpt::engine {
+
+const char* LossKey(Loss loss) {
+  switch (loss) {
+    case Loss::kFound: return "found";
+    case Loss::kFewerThanTwoViews: return "fewer_than_2_views";
+    case Loss::kPairFiltered: return "pair_filtered";
+    case Loss::kGroupedWrongly: return "grouped_wrongly";
+    case Loss::kMergedWrongly: return "merged_wrongly";
+    case Loss::kRejected: return "rejected";
+    case Loss::kPlacedOff: return "placed_off";
+  }
+  return "?";
+}
+
+void LossTable::Merge(const LossTable& other) {
+  gt_persons += other.gt_persons;
+  triangulable += other.triangulable;
+  for (int k = 0; k < kNumLosses; ++k) count[k] += other.count[k];
+  found_fewer_than_2_views += other.found_fewer_than_2_views;
+  in_no_view += other.in_no_view;
+  in_one_view += other.in_one_view;
+  for (size_t s = 0; s < pairs_dropped_by.size(); ++s) pairs_dropped_by[s] += other.pairs_dropped_by[s];
+  grouped_dropped += other.grouped_dropped;
+  grouped_absorbed += other.grouped_absorbed;
+  merged_mixed += other.merged_mixed;
+  merged_own_pairs_only += other.merged_own_pairs_only;
+  rejected_by_verify += other.rejected_by_verify;
+  rejected_by_postprocess += other.rejected_by_postprocess;
+}
+
+LossAccumulator::LossAccumulator(const SequenceHeader& header, const JointNames& output_joints,
+                                 const metrics::EvalOptions& eval, const LossTableOptions& options)
+    : cameras_(header.cameras), options_(options), min_pred_score_(eval.min_pred_score) {
+  // The association joints: the evaluated joints both the GT and the detections have (as
+  // `rpt detector-stats` takes them).
+  const JointNames& evaluated = eval.EvaluatedJoints();
+  for (const std::string& name : evaluated) {
+    const int g = FindJoint(header.gt_joints, name), d = FindJoint(header.detection_joints, name);
+    if (g < 0 || d < 0) continue;
+    gt_index_.push_back(g);
+    det_index_.push_back(d);
+  }
+  pred_eval_ = metrics::FindJointNames(evaluated, output_joints);
+}
+
+void LossAccumulator::LabelDetections(const SequenceFrame& frame) {
+  const int num_views = static_cast<int>(frame.views.size());
+  label_.resize(num_views);
+  detecting_views_.assign(frame.gt.num_persons(), 0);
+  std::vector<detector_stats::ProjectedPerson> persons;
+  std::vector<int> original;
+  for (int c = 0; c < num_views && c < static_cast<int>(cameras_.size()); ++c) {
+    const Poses2D& view = frame.views[c];
+    label_[c].assign(view.num_persons(), -1);
+    if (view.num_persons() == 0 || gt_index_.empty()) continue;
+    persons.clear();
+    for (int p = 0; p < frame.gt.num_persons(); ++p) {
+      detector_stats::ProjectedPerson person = detector_stats::ProjectPerson(cameras_[c], frame.gt, p, gt_index_);
+      if (std::find(person.present.begin(), person.present.end(), 1) != person.present.end()) {
+        persons.push_back(std::move(person));
+      }
+    }
+    if (persons.empty()) continue;
+    // Exact copies of an earlier detection are associated as their original (as detector-stats).
+    original.assign(view.num_persons(), -1);
+    Poses2D unique;
+    unique.Clear(view.num_joints);
+    std::vector<int> unique_of(view.num_persons(), -1);
+    for (int d = 0; d < view.num_persons(); ++d) {
+      for (int e = 0; e < d && original[d] < 0; ++e) {
+        if (original[e] < 0 && view.Person(e) == view.Person(d)) original[d] = e;
+      }
+      if (original[d] < 0) {
+        unique_of[d] = unique.num_persons();
+        unique.AddPerson() = view.Person(d);
+      }
+    }
+    const detector_stats::Association association =
+        detector_stats::Associate(persons, unique, det_index_, options_.association);
+    for (int d = 0; d < view.num_persons(); ++d) {
+      const int u = unique_of[original[d] < 0 ? d : original[d]];
+      const int i = association.person_of_detection[u];
+      // Only persons in view are detected (a pairing with a person mostly outside counts for nobody).
+      if (i < 0 || persons[i].num_in_image < options_.min_joints_in_image) continue;
+      label_[c][d] = persons[i].gt_person;
+      if (original[d] < 0) ++detecting_views_[persons[i].gt_person];
+    }
+  }
+}
+
+void LossAccumulator::Add(const SequenceFrame& frame, const FrameTrace& trace, const metrics::FrameRecords& records) {
+  LabelDetections(frame);
+  // The GT person of each traced pose (-1: none).
+  std::vector<int> owner(trace.pose_view.size(), -1);
+  for (size_t g = 0; g < owner.size(); ++g) {
+    const int v = trace.pose_view[g], d = trace.pose_person[g];
+    if (v < static_cast<int>(label_.size()) && d < static_cast<int>(label_[v].size())) owner[g] = label_[v][d];
+  }
+  const auto true_pair_of = [&](const std::array<int, 2>& pair) {
+    const int a = owner[pair[0]];
+    return a >= 0 && a == owner[pair[1]] ? a : -1;
+  };
+  // Per kept group: its pairs, its true pairs per GT person, and its owner: the person with more
+  // true pairs in it than anybody else (-1: none, or a tie).
+  const int num_groups = trace.merged.num_persons();
+  const int num_gt = frame.gt.num_persons();
+  std::vector<int> pairs_in_group(static_cast<size_t>(num_groups) * num_gt, 0), group_size(num_groups, 0);
+  std::vector<int> group_owner(num_groups, -1);
+  const auto& filtered = trace.pairs[FrameTrace::kFilter];
+  for (size_t i = 0; i < filtered.size() && i < trace.group_of_pair.size(); ++i) {
+    const int g = trace.group_of_pair[i];
+    if (g < 0) continue;
+    ++group_size[g];
+    const int p = true_pair_of(filtered[i]);
+    if (p >= 0) ++pairs_in_group[static_cast<size_t>(g) * num_gt + p];
+  }
+  for (int g = 0; g < num_groups; ++g) {
+    int best = 0;
+    for (int p = 0; p < num_gt; ++p) {
+      const int n = pairs_in_group[static_cast<size_t>(g) * num_gt + p];
+      if (n > best) {
+        best = n;
+        group_owner[g] = p;
+      } else if (n == best && n > 0) {
+        group_owner[g] = -1;  // a tie: nobody's own
+      }
+    }
+  }
+
+  last_.clear();
+  const int num_kept = static_cast<int>(records.kept_gt_idx.size());
+  std::vector<char> found(num_kept, 0);
+  for (const metrics::PairRecord& pair : records.pairs) {
+    if (pair.gt_idx >= 0 && (pair.flags & metrics::kMatch500)) found[pair.gt_idx] = 1;
+  }
+  for (int k = 0; k < num_kept; ++k) {
+    const int p = records.kept_gt_idx[k];
+    const int views = detecting_views_[p];
+    ++table_.gt_persons;
+    if (views >= 2) ++table_.triangulable;
+    Loss loss = Loss::kPlacedOff;
+    if (found[k]) {
+      loss = Loss::kFound;
+      if (views < 2) ++table_.found_fewer_than_2_views;
+    } else if (views < 2) {
+      loss = Loss::kFewerThanTwoViews;
+      ++(views == 0 ? table_.in_no_view : table_.in_one_view);
+    } else {
+      // The last stage at which a true pair of p was left.
+      int last_stage = -1;
+      for (int s = 0; s < FrameTrace::kNumPairStages; ++s) {
+        const auto& list = trace.pairs[s];
+        if (std::any_of(list.begin(), list.end(), [&](const std::array<int, 2>& pair) { return true_pair_of(pair) == p; })) {
+          last_stage = s;
+        }
+      }
+      if (last_stage < FrameTrace::kFilter) {
+        loss = Loss::kPairFiltered;
+        // The next step dropped them; none made (-1): undistort left its poses in one view only.
+        ++table_.pairs_dropped_by[last_stage + 1];
+      } else {
+        bool in_kept_group = false, own_group = false, mixed = false, merged_near = false, verified = false,
+             kept = false;
+        for (int g = 0; g < num_groups; ++g) {
+          const int n = pairs_in_group[static_cast<size_t>(g) * num_gt + p];
+          if (n == 0) continue;
+          in_kept_group = true;
+          if (group_owner[g] != p) continue;
+          own_group = true;
+          mixed |= n < group_size[g];
+          const metrics::EvalPerson merged = metrics::ExtractPerson(trace.merged, g, pred_eval_, min_pred_score_);
+          if (!(metrics::PersonMpjpe(records.gt[k], merged) < 500.0)) continue;
+          merged_near = true;
+          const bool after_verify =
+              std::find(trace.after_verify.begin(), trace.after_verify.end(), g) != trace.after_verify.end();
+          const bool after_postprocess = std::find(trace.after_postprocess.begin(), trace.after_postprocess.end(),
+                                                   g) != trace.after_postprocess.end();
+          verified |= after_verify;
+          kept |= after_postprocess;
+        }
+        if (!own_group) {
+          loss = Loss::kGroupedWrongly;
+          ++(in_kept_group ? table_.grouped_absorbed : table_.grouped_dropped);
+        } else if (!merged_near) {
+          loss = Loss::kMergedWrongly;
+          ++(mixed ? table_.merged_mixed : table_.merged_own_pairs_only);
+        } else if (!kept) {
+          loss = Loss::kRejected;
+          ++(verified ? table_.rejected_by_postprocess : table_.rejected_by_verify);
+        }
+      }
+    }
+    ++table_[loss];
+    last_.push_back(loss);
+  }
+}
+
+}  // namespace rpt::engine

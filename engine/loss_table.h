@@ -1,0 +1,119 @@
+// SPDX-License-Identifier: MIT
+// Where the ground-truth persons are lost (`rpt eval --loss-table`, docs/diagnostics.md): each
+// kept GT person of each frame (the persons Recall@500 counts) is followed through the
+// triangulator's association steps (core/pipeline/frame_trace.h) and put in one category, the
+// first that applies:
+//
+//   found              the metrics match it within 500 mm (it counts in Recall@500)
+//   fewer_than_2_views its detections (below) are in fewer than two views: nothing to triangulate
+//   pair_filtered      no pair of two of its own detections survives filter
+//   grouped_wrongly    such pairs survive, but grouping drops them all or puts them only into
+//                      groups that are not its own: a group is a person's own when that person
+//                      has more true pairs in it than anybody else
+//   merged_wrongly     it has groups of its own, but every one merges into a person >= 500 mm off
+//   rejected           such a person (< 500 mm) exists, but verify or postprocess drops it
+//   placed_off         such a person is output, yet the final matching does not count it within
+//                      500 mm (tracking or post-processing moved it, or it went to another person)
+//
+// Its detections: per camera, the GT persons (projected with the camera) and the 2D detections
+// are paired one-to-one as `rpt detector-stats` pairs them (datasets/detector_stats/association.h,
+// on the evaluated joints): a GT person counts as detected in a view when it is in view (at least
+// min_joints_in_image joints in the image) and paired with a detection there. Exact copies of a
+// detection belong to the person of the original. A pair of two of its detections in different
+// views is a *true pair* of the person; a group's pairs are counted per person by their true pairs.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "core/joints.h"
+#include "core/pipeline/frame_trace.h"
+#include "datasets/detector_stats/association.h"
+#include "datasets/sequence.h"
+#include "metrics/eval_options.h"
+#include "metrics/eval_records.h"
+
+namespace rpt::engine {
+
+enum class Loss : int {
+  kFound = 0,
+  kFewerThanTwoViews,
+  kPairFiltered,
+  kGroupedWrongly,
+  kMergedWrongly,
+  kRejected,
+  kPlacedOff,
+};
+inline constexpr int kNumLosses = 7;
+// "found", "fewer_than_2_views", "pair_filtered", ... (the keys of the JSON and CSV).
+const char* LossKey(Loss loss);
+
+// The steps that can drop a person's last true pair, in pipeline order.
+inline constexpr std::array<const char*, 5> kPairDroppers = {"undistort", "prefilter", "triangulate_core",
+                                                             "room_check", "filter"};
+
+// The counts over a run (or one sequence). Every kept GT person is in exactly one category, so the
+// categories sum to gt_persons; the details split some categories further.
+struct LossTable {
+  long gt_persons = 0;    // kept GT persons (Recall's denominator)
+  long triangulable = 0;  // of those, detected in two or more views
+  std::array<long, kNumLosses> count{};
+  // Details.
+  long found_fewer_than_2_views = 0;  // found, though detected in fewer than two views (coasting, single_view)
+  long in_no_view = 0;                // fewer_than_2_views: detected in no view
+  long in_one_view = 0;               // fewer_than_2_views: detected in exactly one view
+  // pair_filtered: the step that dropped the last true pair, kPairDroppers order (undistort: no
+  // pair was made, it dropped the person's poses in all views but one for too few core joints).
+  std::array<long, 5> pairs_dropped_by{};
+  long grouped_dropped = 0;   // grouped_wrongly: grouping dropped every true pair
+  long grouped_absorbed = 0;  // grouped_wrongly: true pairs kept only in groups of other persons
+  // merged_wrongly: one of its groups also holds other pairs (cross-person pairs, other persons'
+  // pairs), or all hold only its true pairs (the detections themselves triangulate that far off).
+  long merged_mixed = 0, merged_own_pairs_only = 0;
+  long rejected_by_verify = 0, rejected_by_postprocess = 0;
+
+  long& operator[](Loss loss) { return count[static_cast<int>(loss)]; }
+  long operator[](Loss loss) const { return count[static_cast<int>(loss)]; }
+  void Merge(const LossTable& other);
+};
+
+struct LossTableOptions {
+  detector_stats::AssociationOptions association;  // as `rpt detector-stats` (--gate)
+  int min_joints_in_image = 2;                      // as `rpt detector-stats --min-joints-in-image`
+};
+
+// Follows the GT persons of one sequence, frame by frame.
+class LossAccumulator {
+ public:
+  // `eval` with its evaluated joints resolved (run.h EvalOptionsFor); `output_joints` are the
+  // triangulator's.
+  LossAccumulator(const SequenceHeader& header, const JointNames& output_joints, const metrics::EvalOptions& eval,
+                  const LossTableOptions& options = {});
+
+  // One frame: its input, what the triangulator did (`trace`) and the metrics' records of the
+  // frame's output (MetricsAccumulator::LastFrame()).
+  void Add(const SequenceFrame& frame, const FrameTrace& trace, const metrics::FrameRecords& records);
+
+  const LossTable& table() const { return table_; }
+
+  // The category of each kept GT person of the frame added last (records.kept_gt_idx order).
+  const std::vector<Loss>& last_frame() const { return last_; }
+
+ private:
+  // Per view, the GT person (frame index) of each detection, -1 for none.
+  void LabelDetections(const SequenceFrame& frame);
+
+  std::vector<Camera> cameras_;
+  LossTableOptions options_;
+  std::vector<int> gt_index_, det_index_;  // per association joint: GT / detection joint index
+  std::vector<int> pred_eval_;             // per evaluated joint: output joint index (-1: none)
+  double min_pred_score_ = 0;
+  LossTable table_;
+  std::vector<Loss> last_;
+  // Per frame scratch.
+  std::vector<std::vector<int>> label_;  // [view][detection]
+  std::vector<int> detecting_views_;     // per GT person of the frame
+};
+
+}  // namespace rpt::engine

@@ -1,0 +1,260 @@
+// SPDX-License-Identifier: MIT
+// The loss table (engine/loss_table.h): hand-made scenes in which each GT person is lost at a known
+// step, with the exact counts of every category and detail; and on the real MVOR and Shelf-4DA
+// fixtures (skipped without ../shared/data) the categories sum to the GT persons and the found
+// ones are exactly the persons Recall@500 counts.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "core/joints.h"
+#include "datasets/sequence.h"
+#include "engine/input.h"
+#include "engine/loss_table.h"
+#include "engine/outputs/loss_tables.h"
+#include "engine/run.h"
+#include "tests/pipeline/test_scene.h"
+#include "tests/test_data.h"
+
+namespace rpt::engine {
+namespace {
+
+using test::RingCameras;
+using test::StandingPerson;
+
+constexpr double kNoTime = std::numeric_limits<double>::quiet_NaN();
+
+// One detection of `person` in `view`: its exact projection moved by `shift_px` in u, keeping only
+// the joints named in `keep` (all when empty).
+void AddDetection(const Camera& camera, const Eigen::Matrix4Xd& person, Poses2D* view, double shift_px = 0,
+                  const std::vector<std::string>& keep = {}) {
+  const JointNames& names = CocoBodyJoints();
+  if (view->num_joints == 0) view->Clear(static_cast<int>(names.size()));
+  auto pose = view->AddPerson();
+  for (int j = 0; j < static_cast<int>(names.size()); ++j) {
+    if (!keep.empty() && FindJoint(keep, names[j]) < 0) continue;
+    Eigen::Vector2d uv;
+    if (camera.Project(person.col(j).head<3>(), &uv)) pose.col(j) << uv.x() + shift_px, uv.y(), 0.9;
+  }
+}
+
+struct SceneFrame {
+  std::vector<Eigen::Matrix4Xd> gt;
+  std::vector<Poses2D> views;  // one per camera
+  double time_s = kNoTime;
+};
+
+SceneFrame NewFrame(int num_cameras, std::vector<Eigen::Matrix4Xd> gt, double time_s = kNoTime) {
+  SceneFrame frame{std::move(gt), std::vector<Poses2D>(num_cameras), time_s};
+  for (Poses2D& view : frame.views) view.Clear(static_cast<int>(CocoBodyJoints().size()));
+  return frame;
+}
+
+// The loss table of the frames run through the triangulator with `options`.
+LossTable Losses(const std::vector<Camera>& cameras, const std::vector<SceneFrame>& frames,
+                 const TriangulatorOptions& options = {}, RunResult* result = nullptr) {
+  Sequence sequence;
+  sequence.name = "scene";
+  sequence.cameras = cameras;
+  sequence.gt_joints = CocoBodyJoints();
+  sequence.detection_joints = CocoBodyJoints();
+  for (size_t f = 0; f < frames.size(); ++f) {
+    SequenceFrame frame;
+    frame.id = "f" + std::to_string(f);
+    frame.timestamp_s = frames[f].time_s;
+    frame.gt.Clear(static_cast<int>(CocoBodyJoints().size()));
+    for (const Eigen::Matrix4Xd& person : frames[f].gt) frame.gt.AddPerson() = person;
+    frame.views = frames[f].views;
+    sequence.frames.push_back(std::move(frame));
+  }
+  RunOptions run_options;
+  run_options.triangulator = options;
+  run_options.threads = 1;
+  run_options.loss_table = true;
+  const std::vector<Sequence> sequences = {sequence};
+  RunResult run = Run(sequences, run_options);
+  EXPECT_TRUE(run.losses.has_value());
+  const LossTable table = run.losses.value_or(LossTable{});
+  if (result != nullptr) *result = std::move(run);
+  return table;
+}
+
+// Every category and detail as "key=count" (the non-zero ones), to compare a whole table at once.
+std::string Describe(const LossTable& table) {
+  std::string text = "gt=" + std::to_string(table.gt_persons) + " triangulable=" + std::to_string(table.triangulable);
+  for (const LossRow& row : LossRows(table)) {
+    if (row.persons == 0) continue;
+    text += " " + row.category + (row.detail.empty() ? "" : "/" + row.detail) + "=" + std::to_string(row.persons);
+  }
+  return text;
+}
+
+TEST(LossTableTest, PersonSeenByEveryCameraIsFound) {
+  const std::vector<Camera> cameras = RingCameras(4);
+  const Eigen::Matrix4Xd person = StandingPerson(0, 0);
+  SceneFrame frame = NewFrame(4, {person});
+  for (int c = 0; c < 4; ++c) AddDetection(cameras[c], person, &frame.views[c]);
+  EXPECT_EQ(Describe(Losses(cameras, {frame})), "gt=1 triangulable=1 found=1");
+}
+
+TEST(LossTableTest, PersonsDetectedInOneOrNoViewAreCountedApart) {
+  const std::vector<Camera> cameras = RingCameras(4);
+  const Eigen::Matrix4Xd seen = StandingPerson(0, 0), unseen = StandingPerson(1.2, 0.8);
+  SceneFrame frame = NewFrame(4, {seen, unseen});
+  AddDetection(cameras[2], seen, &frame.views[2]);
+  EXPECT_EQ(Describe(Losses(cameras, {frame})),
+            "gt=2 triangulable=0 fewer_than_2_views=2 fewer_than_2_views/no_view=1 fewer_than_2_views/one_view=1");
+}
+
+TEST(LossTableTest, PoseWithTooFewCoreJointsMakesNoPair) {
+  const std::vector<Camera> cameras = RingCameras(4);
+  const Eigen::Matrix4Xd person = StandingPerson(0, 0);
+  SceneFrame frame = NewFrame(4, {person});
+  AddDetection(cameras[0], person, &frame.views[0]);
+  // Nose and shoulders: paired with the person (3 evaluated joints), but 2 core joints only.
+  AddDetection(cameras[1], person, &frame.views[1], 0, {"nose", "shoulder_left", "shoulder_right"});
+  EXPECT_EQ(Describe(Losses(cameras, {frame})),
+            "gt=1 triangulable=1 pair_filtered=1 pair_filtered/undistort=1");
+}
+
+TEST(LossTableTest, PairOfDisagreeingViewsIsFiltered) {
+  const std::vector<Camera> cameras = RingCameras(4);
+  const Eigen::Matrix4Xd person = StandingPerson(0, 0);
+  SceneFrame frame = NewFrame(4, {person});
+  AddDetection(cameras[0], person, &frame.views[0]);
+  AddDetection(cameras[1], person, &frame.views[1], 80);  // 80 px off: still this person's, but ~0.4 m
+  EXPECT_EQ(Describe(Losses(cameras, {frame})), "gt=1 triangulable=1 pair_filtered=1 pair_filtered/filter=1");
+}
+
+TEST(LossTableTest, PairOfASmallGroupIsDroppedByGrouping) {
+  const std::vector<Camera> cameras = RingCameras(4);
+  const Eigen::Matrix4Xd person = StandingPerson(0, 0);
+  SceneFrame frame = NewFrame(4, {person});
+  AddDetection(cameras[0], person, &frame.views[0]);
+  AddDetection(cameras[1], person, &frame.views[1]);
+  TriangulatorOptions options;
+  options.group.min_group_size = 2;  // its one pair makes a group of one
+  EXPECT_EQ(Describe(Losses(cameras, {frame}, options)),
+            "gt=1 triangulable=1 grouped_wrongly=1 grouped_wrongly/dropped=1");
+}
+
+TEST(LossTableTest, PersonNextToABetterSeenOneIsAbsorbedIntoItsGroup) {
+  const std::vector<Camera> cameras = RingCameras(4);
+  const Eigen::Matrix4Xd seen = StandingPerson(0, 0), hidden = StandingPerson(0.12, 0);
+  SceneFrame frame = NewFrame(4, {seen, hidden});
+  for (int c = 0; c < 4; ++c) AddDetection(cameras[c], seen, &frame.views[c]);
+  AddDetection(cameras[0], hidden, &frame.views[0]);  // 12 cm beside: its one pair joins the other's group
+  AddDetection(cameras[1], hidden, &frame.views[1]);
+  EXPECT_EQ(Describe(Losses(cameras, {frame})),
+            "gt=2 triangulable=2 found=1 grouped_wrongly=1 grouped_wrongly/absorbed=1");
+}
+
+TEST(LossTableTest, DetectionsThatAgreeOnTheWrongPlaceAreMergedOff) {
+  const std::vector<Camera> cameras = RingCameras(4);
+  // Every camera reports the person 0.6 m beside its GT position: consistent, so triangulated there.
+  const Eigen::Matrix4Xd person = StandingPerson(0, 0), reported = StandingPerson(0.6, 0);
+  SceneFrame frame = NewFrame(4, {person});
+  for (int c = 0; c < 4; ++c) AddDetection(cameras[c], reported, &frame.views[c]);
+  EXPECT_EQ(Describe(Losses(cameras, {frame})),
+            "gt=1 triangulable=1 merged_wrongly=1 merged_wrongly/own_pairs_only=1");
+}
+
+TEST(LossTableTest, PersonThatThreeEmptyViewsContradictIsRejectedByVerify) {
+  const std::vector<Camera> cameras = RingCameras(5);
+  const Eigen::Matrix4Xd person = StandingPerson(0, 0);
+  SceneFrame frame = NewFrame(5, {person});
+  AddDetection(cameras[0], person, &frame.views[0]);
+  AddDetection(cameras[1], person, &frame.views[1]);
+  EXPECT_EQ(Describe(Losses(cameras, {frame})), "gt=1 triangulable=1 rejected=1 rejected/verify=1");
+}
+
+TEST(LossTableTest, PersonWithFiveJointsIsRejectedByPostprocess) {
+  const std::vector<Camera> cameras = RingCameras(4);
+  const Eigen::Matrix4Xd person = StandingPerson(0, 0);
+  SceneFrame frame = NewFrame(4, {person});
+  // Five joints of one side: no derived joint, fewer than postprocess.min_valid_joints (6).
+  const std::vector<std::string> left = {"shoulder_left", "elbow_left", "wrist_left", "hip_left", "knee_left"};
+  for (int c = 0; c < 4; ++c) AddDetection(cameras[c], person, &frame.views[c], 0, left);
+  EXPECT_EQ(Describe(Losses(cameras, {frame})), "gt=1 triangulable=1 rejected=1 rejected/postprocess=1");
+}
+
+TEST(LossTableTest, PersonHeldBackBySpeedClippingIsPlacedOff) {
+  const std::vector<Camera> cameras = RingCameras(4);
+  const Eigen::Matrix4Xd before = StandingPerson(0, 0), after = StandingPerson(1.0, 0);
+  SceneFrame first = NewFrame(4, {before}, 0.0), second = NewFrame(4, {after}, 0.01);
+  for (int c = 0; c < 4; ++c) {
+    AddDetection(cameras[c], before, &first.views[c]);
+    AddDetection(cameras[c], after, &second.views[c]);
+  }
+  // 1 m in 10 ms: the track continues (gate 2 m) and clip_speed lets it move 0.1 m (10 m/s).
+  TriangulatorOptions options;
+  options.track.max_distance_m = 2.0;
+  EXPECT_EQ(Describe(Losses(cameras, {first, second}, options)), "gt=2 triangulable=2 found=1 placed_off=1");
+}
+
+TEST(LossTableTest, FramesAndSequencesAddUp) {
+  const std::vector<Camera> cameras = RingCameras(4);
+  const Eigen::Matrix4Xd a = StandingPerson(0, 0), b = StandingPerson(1.2, 0.8);
+  SceneFrame both = NewFrame(4, {a, b}), one = NewFrame(4, {a, b});
+  for (int c = 0; c < 4; ++c) {
+    AddDetection(cameras[c], a, &both.views[c]);
+    AddDetection(cameras[c], b, &both.views[c]);
+  }
+  AddDetection(cameras[0], a, &one.views[0]);
+  AddDetection(cameras[1], b, &one.views[1]);
+  AddDetection(cameras[2], b, &one.views[2], 80);
+  RunResult run;
+  const LossTable table = Losses(cameras, {both, one}, {}, &run);
+  EXPECT_EQ(Describe(table),
+            "gt=4 triangulable=3 found=2 fewer_than_2_views=1 fewer_than_2_views/one_view=1 pair_filtered=1 "
+            "pair_filtered/filter=1");
+  // The found persons are those Recall@500 counts.
+  EXPECT_DOUBLE_EQ(run.metrics.recall_500, 50.0);
+  const std::string csv = LossesCsv(table);
+  EXPECT_NE(csv.find("category,detail,persons,percent_of_gt\nfound,,2,50.00\n"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("\nall,,4,100.00\nall,triangulable,3,75.00\n"), std::string::npos) << csv;
+  const nlohmann::ordered_json json = LossTableJson(table);
+  EXPECT_EQ(json["categories"]["pair_filtered"], 1);
+  EXPECT_EQ(json["details"]["pair_filtered"]["filter"], 1);
+}
+
+// Real data: the categories sum to the GT persons, and the found ones are Recall@500's.
+void ExpectConsistentOnRealData(const InputSpec& spec) {
+  Input input = OpenInput(spec);
+  RunOptions options;
+  options.loss_table = true;
+  const RunResult run = Run(input, options);
+  ASSERT_TRUE(run.losses.has_value());
+  const LossTable& table = *run.losses;
+  long sum = 0;
+  for (const long count : table.count) sum += count;
+  EXPECT_EQ(sum, table.gt_persons);
+  EXPECT_EQ(table.gt_persons, run.metrics.num_gt_persons);
+  EXPECT_NEAR(100.0 * table[Loss::kFound] / table.gt_persons, run.metrics.recall_500, 1e-9);
+  EXPECT_EQ(table.in_no_view + table.in_one_view, table[Loss::kFewerThanTwoViews]);
+  EXPECT_LE(table.triangulable, table.gt_persons);
+  EXPECT_GT(table[Loss::kFound], 0);
+}
+
+TEST(LossTableTest, MvorCategoriesSumToTheGtPersons) {
+  RPT_REQUIRE_SHARED_DATA("mvor/camma_mvor_2018.json");
+  RPT_REQUIRE_SHARED_DATA("mvor/openpose_kps.json");
+  InputSpec spec;
+  spec.dataset = "mvor";
+  spec.root = test::SharedData("mvor").string();
+  ExpectConsistentOnRealData(spec);
+}
+
+TEST(LossTableTest, Shelf4daCategoriesSumToTheGtPersons) {
+  RPT_REQUIRE_SHARED_DATA("shelf/4d_association");
+  InputSpec spec;
+  spec.dataset = "shelf-4da";
+  spec.root = test::SharedData("shelf/4d_association").string();
+  ExpectConsistentOnRealData(spec);
+}
+
+}  // namespace
+}  // namespace rpt::engine
