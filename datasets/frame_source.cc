@@ -21,6 +21,7 @@ bool IndexedFrameSource::Next(SequenceFrame* frame) {
   frame->gt.Clear(0);
   frame->views.clear();
   frame->labels_2d.clear();
+  frame->paf_grouping_us = -1;
   convert_(next_++, frame, &warnings_);
   return true;
 }

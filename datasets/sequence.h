@@ -43,6 +43,12 @@ struct SequenceFrame {
   // simulated detections: the simulator's own occlusion). Empty when there are none; only the
   // detector statistics (`rpt detector-stats`) use them.
   std::vector<std::vector<PersonLabel2D>> labels_2d;
+  // Microseconds the reader spent grouping this frame's raw detection candidates into persons
+  // (the shelf-4da reader's part-affinity grouping, all views, including the conversion of the
+  // persons to views); negative = the reader grouped nothing. Reported as the step table's row
+  // "paf_grouping (reader)" (metrics/timing.h): work a user feeding raw candidates pays per frame
+  // on top of the pipeline.
+  double paf_grouping_us = -1;
 };
 
 // What a sequence is, without its frames: what a FrameSource (datasets/frame_source.h) announces

@@ -38,7 +38,7 @@ struct SequenceRun {
 void Emit(int index, const SequenceFrame& frame, const Poses3D& persons, const FrameStats& stats,
           const FrameTrace& trace, const SequenceHeader& header, const JointNames& output_joints, SequenceRun* run,
           std::optional<DetectionChecker>* checker, FrameSink* sink) {
-  run->timing.Add(stats);
+  run->timing.Add(stats, frame.paf_grouping_us);
   run->counts.Add(stats);
   ++run->result.frames;
   run->gt_persons += frame.gt.num_persons();

@@ -25,10 +25,18 @@ double Median(std::vector<double> values) {
 TimingAccumulator::TimingAccumulator(int warmup_frames)
     : warmup_frames_(warmup_frames),
       frame_us_(kMinTimeUs, kTimeDecades),
-      step_us_(kNumSteps, LogHistogram(kMinTimeUs, kTimeDecades)) {}
+      step_us_(kNumSteps, LogHistogram(kMinTimeUs, kTimeDecades)),
+      grouping_us_(kMinTimeUs, kTimeDecades),
+      frame_with_grouping_us_(kMinTimeUs, kTimeDecades) {}
 
-void TimingAccumulator::Add(const FrameStats& stats) {
+void TimingAccumulator::Add(const FrameStats& stats, double paf_grouping_us) {
   if (seen_++ < warmup_frames_) return;
+  if (paf_grouping_us >= 0) {
+    grouping_us_sum_ += paf_grouping_us;
+    frame_with_grouping_us_sum_ += stats.total_us + paf_grouping_us;
+    grouping_us_.Add(paf_grouping_us);
+    frame_with_grouping_us_.Add(stats.total_us + paf_grouping_us);
+  }
   frame_us_sum_ += stats.total_us;
   frame_us_.Add(stats.total_us);
   for (int s = 0; s < kNumSteps; ++s) {
@@ -44,6 +52,10 @@ void TimingAccumulator::Merge(const TimingAccumulator& other) {
     step_us_sum_[s] += other.step_us_sum_[s];
     step_us_[s].Merge(other.step_us_[s]);
   }
+  grouping_us_sum_ += other.grouping_us_sum_;
+  frame_with_grouping_us_sum_ += other.frame_with_grouping_us_sum_;
+  grouping_us_.Merge(other.grouping_us_);
+  frame_with_grouping_us_.Merge(other.frame_with_grouping_us_);
 }
 
 TimingSummary TimingAccumulator::Finalize() const {
@@ -57,6 +69,13 @@ TimingSummary TimingAccumulator::Finalize() const {
   for (int s = 0; s < kNumSteps; ++s) {
     summary.step_us_median[s] = step_us_[s].Median();
     summary.step_us_mean[s] = step_us_sum_[s] / summary.frames;
+  }
+  summary.paf_grouping_frames = static_cast<int>(grouping_us_.count());
+  if (summary.paf_grouping_frames > 0) {
+    summary.paf_grouping_us_median = grouping_us_.Median();
+    summary.paf_grouping_us_mean = grouping_us_sum_ / summary.paf_grouping_frames;
+    summary.frame_with_grouping_us_median = frame_with_grouping_us_.Median();
+    summary.frame_with_grouping_us_mean = frame_with_grouping_us_sum_ / summary.paf_grouping_frames;
   }
   return summary;
 }

@@ -24,13 +24,23 @@ struct TimingSummary {
   double fps = 0;  // 1e6 / frame_us_mean
   std::array<double, kNumSteps> step_us_median{};
   std::array<double, kNumSteps> step_us_mean{};
+  // The reader's part-affinity grouping (SequenceFrame::paf_grouping_us), over the frames that
+  // had one (paf_grouping_frames; 0 = none: readers of ready-made persons), and per frame the
+  // pipeline plus that grouping.
+  int paf_grouping_frames = 0;
+  double paf_grouping_us_median = 0;
+  double paf_grouping_us_mean = 0;
+  double frame_with_grouping_us_median = 0;
+  double frame_with_grouping_us_mean = 0;
 };
 
 class TimingAccumulator {
  public:
   // `warmup_frames` first frames are ignored (cold caches, first allocations).
   explicit TimingAccumulator(int warmup_frames = 0);
-  void Add(const FrameStats& stats);
+  // `paf_grouping_us`: the reader's grouping time of the frame (SequenceFrame::paf_grouping_us),
+  // negative = none.
+  void Add(const FrameStats& stats, double paf_grouping_us = -1);
   // Appends another accumulator's frames (e.g. from parallel runs over sequences); the means add
   // the other's sums, equal to adding its frames here up to rounding.
   void Merge(const TimingAccumulator& other);
@@ -43,6 +53,10 @@ class TimingAccumulator {
   std::array<double, kNumSteps> step_us_sum_{};
   LogHistogram frame_us_;
   std::vector<LogHistogram> step_us_;  // one per step
+  double grouping_us_sum_ = 0;
+  double frame_with_grouping_us_sum_ = 0;
+  LogHistogram grouping_us_;             // frames with a reader grouping only
+  LogHistogram frame_with_grouping_us_;  // total_us + grouping, the same frames
 };
 
 // Median of `values` (mean of the middle two for even counts); 0 for none.

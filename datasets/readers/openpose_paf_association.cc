@@ -23,12 +23,8 @@ std::uint64_t DecreasingKey(double score) {
 // replaced by n: one std::sort of plain integers does it, unless two different scores agree in all
 // other bits (then they would be ordered by index): checked after, and then sorted again by score
 // and index, which real scores (a few significant digits each) never need.
-void SortByScore(const PafCandidates& candidates, const Connection* possible, size_t count, std::uint64_t low,
-                 std::uint64_t* packed, std::uint32_t* sorted) {
-  const auto score = [&](std::uint64_t n) {
-    const Connection& c = possible[n];
-    return candidates.pafs[static_cast<size_t>(c.limb)](c.a, c.b);
-  };
+template <class Score>
+void SortByScore(const Score& score, size_t count, std::uint64_t low, std::uint64_t* packed, std::uint32_t* sorted) {
   std::sort(packed, packed + count);
   bool exact = true;
   for (size_t n = 1; n < count && exact; ++n) {
@@ -46,7 +42,7 @@ void SortByScore(const PafCandidates& candidates, const Connection* possible, si
 }
 
 // Asks for the cache lines of `values` (a hint; no effect on the result).
-void Prefetch(const double* values, Eigen::Index count) {
+void Prefetch(const double* values, size_t count) {
   const char* first = reinterpret_cast<const char*>(values);
   const char* last = reinterpret_cast<const char*>(values + count);
   for (const char* line = first; line < last; line += 64) __builtin_prefetch(line);
@@ -84,9 +80,59 @@ std::string CheckPafCandidates(const PafSkeleton& skeleton, const PafCandidates&
   return {};
 }
 
+void PafCandidateStore::Append(const PafSkeleton& skeleton, const PafCandidates& candidates) {
+  assert(CheckPafCandidates(skeleton, candidates).empty());
+  assert(starts_.empty() || (num_joints_ == skeleton.num_joints && num_limbs_ == static_cast<int>(skeleton.limbs.size())));
+  num_joints_ = skeleton.num_joints;
+  num_limbs_ = static_cast<int>(skeleton.limbs.size());
+  const size_t nj = static_cast<size_t>(num_joints_);
+  const size_t first_index = index_.size();
+  const size_t first_value = values_.size();
+  starts_.emplace_back(first_index, first_value);
+  index_.resize(first_index + 2 * nj + static_cast<size_t>(num_limbs_) + 1);
+  int* index = index_.data() + first_index;
+  size_t size = 0;
+  for (size_t j = 0; j < nj; ++j) {
+    index[j] = static_cast<int>(candidates.joints[j].cols());
+    index[nj + j] = static_cast<int>(size);
+    size += static_cast<size_t>(candidates.joints[j].size());
+  }
+  for (size_t k = 0; k < static_cast<size_t>(num_limbs_); ++k) {
+    index[2 * nj + k] = static_cast<int>(size);
+    size += static_cast<size_t>(candidates.pafs[k].size());
+  }
+  index[2 * nj + static_cast<size_t>(num_limbs_)] = static_cast<int>(size);
+  values_.resize(first_value + size);
+  double* out = values_.data() + first_value;
+  for (const Eigen::Matrix3Xd& joint : candidates.joints) {
+    for (Eigen::Index r = 0; r < 3; ++r) {
+      for (Eigen::Index i = 0; i < joint.cols(); ++i) *out++ = joint(r, i);
+    }
+  }
+  for (const Eigen::MatrixXd& paf : candidates.pafs) {
+    for (Eigen::Index r = 0; r < paf.rows(); ++r) {
+      for (Eigen::Index c = 0; c < paf.cols(); ++c) *out++ = paf(r, c);
+    }
+  }
+}
+
+void PafCandidateStore::Clear() {
+  starts_.clear();
+  index_.clear();
+  values_.clear();
+}
+
 void PafAssociator::Run(const PafSkeleton& skeleton, const PafCandidates& candidates,
                         const PafAssociationOptions& options, PafPersons* persons) {
-  assert(CheckPafCandidates(skeleton, candidates).empty());
+  packed_candidates_.Clear();
+  packed_candidates_.Append(skeleton, candidates);
+  Run(skeleton, packed_candidates_[0], options, persons);
+}
+
+void PafAssociator::Run(const PafSkeleton& skeleton, const PackedPafCandidates& candidates,
+                        const PafAssociationOptions& options, PafPersons* persons) {
+  assert(candidates.num_joints() == skeleton.num_joints);
+  assert(candidates.num_limbs() == static_cast<int>(skeleton.limbs.size()));
   const int num_joints = skeleton.num_joints;
   const size_t nj = static_cast<size_t>(num_joints);
   const size_t num_limbs = skeleton.limbs.size();
@@ -95,15 +141,14 @@ void PafAssociator::Run(const PafSkeleton& skeleton, const PafCandidates& candid
   // Steps 1 and 2 then run in one pass over them by decreasing score: per limb the greedy
   // one-to-one matching sees its connections in the same order as on its own, and its kept
   // connections reach step 2 in the order step 2 sorts them (score, then limb, a, b).
-  // The candidates and PAF scores are some 50 small heap blocks per image, often not in cache
-  // (a reader converts frames parsed long before): asking for all of them first lets the memory
-  // fetch them side by side instead of one miss after the other.
+  // The candidates are often not in cache (a reader converts frames parsed long before): asking
+  // for their whole block first lets the memory fetch its lines side by side.
+  Prefetch(candidates.begin(), static_cast<size_t>(candidates.end() - candidates.begin()));
   size_t entries = 0;
-  for (const Eigen::MatrixXd& paf : candidates.pafs) {
-    entries += static_cast<size_t>(paf.size());
-    Prefetch(paf.data(), paf.size());
+  for (size_t k = 0; k < num_limbs; ++k) {
+    entries += static_cast<size_t>(candidates.count(skeleton.limbs[k].first)) *
+               static_cast<size_t>(candidates.count(skeleton.limbs[k].second));
   }
-  for (const Eigen::Matrix3Xd& joint : candidates.joints) Prefetch(joint.data(), joint.size());
   if (possible_.size() < entries) {  // grown only, never shrunk: allocation-free once warm
     possible_.resize(entries);
     packed_.resize(entries);
@@ -117,24 +162,31 @@ void PafAssociator::Run(const PafSkeleton& skeleton, const PafCandidates& candid
   used_offset_[0] = 0;
   size_t count = 0;
   for (size_t k = 0; k < num_limbs; ++k) {
-    const Eigen::MatrixXd& paf = candidates.pafs[k];
-    const Eigen::Index rows = paf.rows(), cols = paf.cols();
-    used_offset_[k + 1] = used_offset_[k] + static_cast<int>(rows + cols);
+    const int rows = candidates.count(skeleton.limbs[k].first);
+    const int cols = candidates.count(skeleton.limbs[k].second);
+    used_offset_[k + 1] = used_offset_[k] + rows + cols;
     if (rows == 0 || cols == 0) continue;
-    const Eigen::Matrix3Xd& cand_a = candidates.joints[static_cast<size_t>(skeleton.limbs[k].first)];
-    const Eigen::Matrix3Xd& cand_b = candidates.joints[static_cast<size_t>(skeleton.limbs[k].second)];
-    for (Eigen::Index i = 0; i < rows; ++i) {
-      if (!(cand_a(2, i) > 0)) continue;
-      for (Eigen::Index j = 0; j < cols; ++j) {
+    const double* score_a = candidates.JointRow(skeleton.limbs[k].first, 2);
+    const double* score_b = candidates.JointRow(skeleton.limbs[k].second, 2);
+    const double* paf = candidates.Paf(static_cast<int>(k));
+    for (int i = 0; i < rows; ++i) {
+      if (!(score_a[i] > 0)) continue;
+      const double* row = paf + static_cast<size_t>(i) * static_cast<size_t>(cols);
+      for (int j = 0; j < cols; ++j) {
         // Written always, counted when possible: no branch on the scores.
-        const double score = paf(i, j);
+        const double score = row[j];
         packed_[count] = (DecreasingKey(score) & ~low) | count;
-        possible_[count] = {static_cast<int>(k), static_cast<int>(i), static_cast<int>(j)};
-        count += static_cast<size_t>((score > 0) & (score >= options.min_paf_score) & (cand_b(2, j) > 0));
+        possible_[count] = {static_cast<int>(k), i, j};
+        count += static_cast<size_t>((score > 0) & (score >= options.min_paf_score) & (score_b[j] > 0));
       }
     }
   }
-  SortByScore(candidates, possible_.data(), count, low, packed_.data(), sorted_.data());
+  const auto score = [&](std::uint64_t n) {
+    const Connection& c = possible_[n];
+    const int cols = candidates.count(skeleton.limbs[static_cast<size_t>(c.limb)].second);
+    return candidates.Paf(c.limb)[static_cast<size_t>(c.a) * static_cast<size_t>(cols) + static_cast<size_t>(c.b)];
+  };
+  SortByScore(score, count, low, packed_.data(), sorted_.data());
   used_.assign(static_cast<size_t>(used_offset_[num_limbs]), 0);
 
   // Step 2. owner_ holds the person of every candidate (-1 = none), joint j's from offset_[j];
@@ -142,7 +194,7 @@ void PafAssociator::Run(const PafSkeleton& skeleton, const PafCandidates& candid
   // order of creation.
   offset_.resize(nj + 1);
   offset_[0] = 0;
-  for (size_t j = 0; j < nj; ++j) offset_[j + 1] = offset_[j] + static_cast<int>(candidates.joints[j].cols());
+  for (size_t j = 0; j < nj; ++j) offset_[j + 1] = offset_[j] + candidates.count(static_cast<int>(j));
   owner_.assign(static_cast<size_t>(offset_[nj]), -1);
   persons_.clear();
   joint_count_.clear();
@@ -153,7 +205,7 @@ void PafAssociator::Run(const PafSkeleton& skeleton, const PafCandidates& candid
     // Step 1: the limb's greedy matching keeps the connection when neither end is used yet.
     unsigned char* used = used_.data() + used_offset_[static_cast<size_t>(c.limb)];
     unsigned char& used_a = used[c.a];
-    unsigned char& used_b = used[candidates.pafs[static_cast<size_t>(c.limb)].rows() + c.b];
+    unsigned char& used_b = used[candidates.count(skeleton.limbs[static_cast<size_t>(c.limb)].first) + c.b];
     if (used_a | used_b) continue;
     used_a = used_b = 1;
     // Step 2.

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -86,7 +87,7 @@ const std::array<int, 17>& CocoFromBody25() {
 }
 
 // Assembled BODY_25 persons of one view -> COCO-17 poses in pixels.
-void AssembleView(const PafCandidates& candidates, const PafAssociationOptions& options, const Camera& camera,
+void AssembleView(const PackedPafCandidates& candidates, const PafAssociationOptions& options, const Camera& camera,
                   Poses2D* view) {
   const int num_joints = static_cast<int>(CocoBodyJoints().size());
   view->Clear(num_joints);
@@ -104,8 +105,7 @@ void AssembleView(const PafCandidates& candidates, const PafAssociationOptions& 
       const int b = CocoFromBody25()[static_cast<size_t>(c)];
       const int candidate = person[b];
       if (candidate < 0) continue;
-      const auto point = candidates.joints[static_cast<size_t>(b)].col(candidate);
-      joints.col(c) << point(0) * sx, point(1) * sy, point(2);
+      joints.col(c) << candidates.x(b, candidate) * sx, candidates.y(b, candidate) * sy, candidates.score(b, candidate);
       any = true;
     }
     if (!any) view->data.resize(view->data.size() - 3 * static_cast<size_t>(num_joints));
@@ -164,8 +164,10 @@ std::vector<std::unique_ptr<FrameSource>> OpenShelf4da(const DatasetRequest& req
   struct Files {
     std::optional<FourDaSkeletons> gt;
     std::string gt_source;
-    std::vector<FourDaDetections> detections;  // per camera
-    std::vector<size_t> frames;                // the selected frame indices
+    // The selected frames' candidates, packed in the order they are grouped: image i * cameras + c
+    // is camera c of the i-th selected frame (PafCandidateStore: one buffer, not ~50 blocks per view).
+    PafCandidateStore candidates;
+    std::vector<size_t> frames;  // the selected frame indices
   };
   auto files = std::make_shared<Files>();
   std::string count_source;  // the file the frame count comes from
@@ -185,9 +187,10 @@ std::vector<std::unique_ptr<FrameSource>> OpenShelf4da(const DatasetRequest& req
   }
   if (with_detections) {
     header.detection_joints = CocoBodyJoints();
+    std::vector<FourDaDetections> parsed;  // per camera, packed below
     for (const Camera& camera : header.cameras) {
       const std::filesystem::path path = request.root / "detection" / (camera.name + ".txt");
-      FourDaDetections& detections = files->detections.emplace_back(ReadFourDaDetections(path, &warnings));
+      FourDaDetections& detections = parsed.emplace_back(ReadFourDaDetections(path, &warnings));
       if (count_source.empty()) {  // without gt.txt: the first detection file counts the frames
         count_source = path.string();
         num_frames = detections.frames.size();
@@ -198,6 +201,9 @@ std::vector<std::unique_ptr<FrameSource>> OpenShelf4da(const DatasetRequest& req
       }
     }
     if (!request.ground_truth) files->frames = SelectFrames(params.frames, num_frames, count_source);
+    for (const size_t f : files->frames) {
+      for (const FourDaDetections& camera : parsed) files->candidates.Append(Body25PafSkeleton(), camera.frames[f]);
+    }
   }
 
   auto convert = [files, nose_proxy = params.nose_proxy, association, cameras = header.cameras](
@@ -206,11 +212,15 @@ std::vector<std::unique_ptr<FrameSource>> OpenShelf4da(const DatasetRequest& req
     frame->id = ShelfFourDaFrameId(f);
     frame->timestamp_s = static_cast<double>(f) / kShelfFps;
     if (files->gt) ConvertShelf15GroundTruth(files->gt->frames[f], nose_proxy, files->gt_source, f, &frame->gt);
-    if (files->detections.empty()) return;
+    if (files->candidates.size() == 0) return;
+    // Timed: the grouping is per-frame work before the pipeline (the step table's row
+    // "paf_grouping (reader)").
+    const auto start = std::chrono::steady_clock::now();
     frame->views.resize(cameras.size());
     for (size_t c = 0; c < cameras.size(); ++c) {
-      AssembleView(files->detections[c].frames[f], association, cameras[c], &frame->views[c]);
+      AssembleView(files->candidates[i * cameras.size() + c], association, cameras[c], &frame->views[c]);
     }
+    frame->paf_grouping_us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
   };
   const size_t count = files->frames.size();
   std::vector<std::unique_ptr<FrameSource>> sources;

@@ -21,8 +21,10 @@
 // Shelf reader's rate). The files are assumed to be Shelf images 300-600, which nothing in the
 // origin states; the index is therefore not renamed to a Shelf image number.
 //
-// Detections (detections=openpose): per camera and frame, AssociatePafs
-// (openpose_paf_association.h) assembles the BODY_25 candidates into persons, which become
+// Detections (detections=openpose): the candidates of the selected frames are packed when the
+// source opens (PafCandidateStore, frame by frame); per camera and frame a PafAssociator
+// (openpose_paf_association.h) assembles the BODY_25 candidates into persons, timed per frame
+// (SequenceFrame::paf_grouping_us, the step table's "paf_grouping (reader)"), which become
 // COCO-17 (CocoBodyJoints(); neck, mid-hip and feet dropped; a person without any COCO joint is
 // dropped) with the candidate score as confidence. x, y are stored normalised: pixels =
 // x * (width - 1), y * (height - 1), as 4D-Association does.

@@ -10,26 +10,36 @@ namespace rpt::engine {
 void PrintStepTimes(std::ostream& out, const metrics::TimingSummary& timing, const metrics::StepCountSummary* counts) {
   char line[200];
   if (counts != nullptr) {
-    std::snprintf(line, sizeof(line), "  %-18s %12s %12s %14s  %s\n", "step", "median (us)", "mean (us)",
+    std::snprintf(line, sizeof(line), "  %-21s %12s %12s %14s  %s\n", "step", "median (us)", "mean (us)",
                   "count / frame", "items after the step");
   } else {
-    std::snprintf(line, sizeof(line), "  %-18s %12s %12s\n", "step", "median (us)", "mean (us)");
+    std::snprintf(line, sizeof(line), "  %-21s %12s %12s\n", "step", "median (us)", "mean (us)");
   }
   out << line;
+  if (timing.paf_grouping_frames > 0) {
+    std::snprintf(line, sizeof(line), "  %-21s %12.2f %12.2f%s\n", kPafGroupingRow, timing.paf_grouping_us_median,
+                  timing.paf_grouping_us_mean, counts != nullptr ? "              -  (before the pipeline)" : "");
+    out << line;
+  }
   for (int s = 0; s < kNumSteps; ++s) {
     if (counts != nullptr) {
-      std::snprintf(line, sizeof(line), "  %-18s %12.2f %12.2f %14.2f  %s\n", std::string(kSteps[s].key).c_str(),
+      std::snprintf(line, sizeof(line), "  %-21s %12.2f %12.2f %14.2f  %s\n", std::string(kSteps[s].key).c_str(),
                     timing.step_us_median[s], timing.step_us_mean[s], counts->count_per_frame[s],
                     std::string(kSteps[s].item).c_str());
     } else {
-      std::snprintf(line, sizeof(line), "  %-18s %12.2f %12.2f\n", std::string(kSteps[s].key).c_str(),
+      std::snprintf(line, sizeof(line), "  %-21s %12.2f %12.2f\n", std::string(kSteps[s].key).c_str(),
                     timing.step_us_median[s], timing.step_us_mean[s]);
     }
     out << line;
   }
-  std::snprintf(line, sizeof(line), "  %-18s %12.2f %12.2f\n", "frame (total)", timing.frame_us_median,
+  std::snprintf(line, sizeof(line), "  %-21s %12.2f %12.2f\n", "frame (total)", timing.frame_us_median,
                 timing.frame_us_mean);
   out << line;
+  if (timing.paf_grouping_frames > 0) {
+    std::snprintf(line, sizeof(line), "  %-21s %12.2f %12.2f\n", "frame + grouping", timing.frame_with_grouping_us_median,
+                  timing.frame_with_grouping_us_mean);
+    out << line;
+  }
   if (counts == nullptr) return;
   // The extra counters, four per line.
   for (int c = 0; c < metrics::kNumCounters; ++c) {
@@ -42,6 +52,7 @@ void PrintStepTimes(std::ostream& out, const metrics::TimingSummary& timing, con
 
 nlohmann::ordered_json StepTimesJson(const metrics::TimingSummary& timing) {
   nlohmann::ordered_json steps = nlohmann::ordered_json::object();
+  if (timing.paf_grouping_frames > 0) steps[kPafGroupingRow] = timing.paf_grouping_us_median;
   for (int s = 0; s < kNumSteps; ++s) steps[std::string(kSteps[s].key)] = timing.step_us_median[s];
   return steps;
 }
@@ -64,6 +75,11 @@ std::string StepsCsv(const metrics::TimingSummary& timing, const metrics::StepCo
   std::ostringstream out;
   out << "step,items,count_per_frame,time_us_median,time_us_mean\n";
   char line[200];
+  if (timing.paf_grouping_frames > 0) {
+    std::snprintf(line, sizeof(line), "%s,,,%.3f,%.3f\n", kPafGroupingRow, timing.paf_grouping_us_median,
+                  timing.paf_grouping_us_mean);
+    out << line;
+  }
   for (int s = 0; s < kNumSteps; ++s) {
     std::snprintf(line, sizeof(line), "%s,%s,%.4f,%.3f,%.3f\n", std::string(kSteps[s].key).c_str(),
                   std::string(kSteps[s].item).c_str(), counts.count_per_frame[s], timing.step_us_median[s],

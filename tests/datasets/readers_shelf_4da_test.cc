@@ -197,6 +197,8 @@ TEST(Shelf4daReader, HandMadeBundleAssemblesTheTwoPersons) {
   EXPECT_DOUBLE_EQ(view.Person(1)(2, coco_nose), 1.0) << "1.2 clamped";
   for (int p = 0; p < 2; ++p) EXPECT_EQ((view.Person(p).row(2).array() > 0).count(), 4) << "nose, shoulder, elbow, hip";
   EXPECT_EQ(s.frames[1].views[0].num_persons(), 0);
+  // The grouping is timed per frame (the step table's "paf_grouping (reader)").
+  for (const SequenceFrame& frame : s.frames) EXPECT_GE(frame.paf_grouping_us, 0.0) << frame.id;
 
   const InputWarning* clamped = FindWarning(s.warnings, "0.txt", "scores above 1 clamped to 1");
   ASSERT_NE(clamped, nullptr);
@@ -212,6 +214,7 @@ TEST(Shelf4daReader, ParamsSelectFramesDetectionsNoseAndAssociation) {
   EXPECT_EQ(one.frames[0].id, "shelf4da_000001");
   EXPECT_TRUE(one.frames[0].views.empty());
   EXPECT_TRUE(one.detection_joints.empty());
+  EXPECT_LT(one.frames[0].paf_grouping_us, 0.0) << "nothing grouped, no grouping time";
 
   const Sequence top = ReadDataset(Request(dir.path(), {{"nose_proxy", "top"}}))[0];
   EXPECT_NEAR(top.frames[0].gt.Person(0)(2, FindJoint(top.gt_joints, "nose")), 1.75, 1e-12);
@@ -397,6 +400,7 @@ TEST(Shelf4daFixture, HeaderFactsAndSequenceShape) {
     EXPECT_EQ(s.cameras[c].height, 776);
     EXPECT_EQ(s.frames[0].views[c].num_joints, 17);
   }
+  for (const SequenceFrame& frame : s.frames) EXPECT_GT(frame.paf_grouping_us, 0.0) << frame.id;
   for (const std::string& joint : EvaluationJoints13()) EXPECT_GE(FindJoint(s.gt_joints, joint), 0) << joint;
   EXPECT_TRUE(s.room.center_m.isApprox(ShelfRoom().center_m));
   EXPECT_TRUE(s.room.size_m.isApprox(ShelfRoom().size_m));

@@ -35,5 +35,39 @@ TEST(TimingAccumulator, MediansMeansFpsAndWarmup) {
   EXPECT_EQ(timing.Finalize().frames, 5);
 }
 
+// The reader's grouping time (SequenceFrame::paf_grouping_us): summarised over the frames that
+// have one, after the same warm-up, and added to the frame time in frame_with_grouping.
+TEST(TimingAccumulator, ReaderGroupingOverTheFramesThatHaveOne) {
+  TimingAccumulator timing(/*warmup_frames=*/1);
+  const double totals[] = {1000, 10, 20, 30, 40};
+  const double grouping[] = {500, 4, 6, -1, 11};
+  for (int f = 0; f < 5; ++f) {
+    FrameStats stats;
+    stats.total_us = totals[f];
+    timing.Add(stats, grouping[f]);
+  }
+  const TimingSummary s = timing.Finalize();
+  EXPECT_EQ(s.frames, 4);
+  EXPECT_EQ(s.paf_grouping_frames, 3) << "the warm-up frame and the frame without grouping are not counted";
+  EXPECT_DOUBLE_EQ(s.paf_grouping_us_median, 6.0);
+  EXPECT_DOUBLE_EQ(s.paf_grouping_us_mean, 7.0);
+  EXPECT_DOUBLE_EQ(s.frame_with_grouping_us_median, 26.0);  // 14, 26, 51
+  EXPECT_DOUBLE_EQ(s.frame_with_grouping_us_mean, 91.0 / 3);
+  EXPECT_DOUBLE_EQ(s.frame_us_median, 25.0) << "the pipeline's frame time does not include the grouping";
+  TimingAccumulator other;
+  FrameStats one;
+  one.total_us = 5;
+  other.Add(one, 2);
+  timing.Merge(other);
+  EXPECT_EQ(timing.Finalize().paf_grouping_frames, 4);
+  EXPECT_DOUBLE_EQ(timing.Finalize().paf_grouping_us_mean, 23.0 / 4);
+
+  TimingAccumulator none;
+  FrameStats stats;
+  stats.total_us = 3;
+  none.Add(stats);
+  EXPECT_EQ(none.Finalize().paf_grouping_frames, 0);
+}
+
 }  // namespace
 }  // namespace rpt::metrics
