@@ -3,6 +3,7 @@
 
 #include <Eigen/LU>
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "core/pipeline/pair_triangulation.h"
@@ -19,8 +20,9 @@ double RayDistance(const View& view, const Eigen::Vector3d& x) {
 }
 
 // The point with the least sum of squared distances to the rays of the views neither dropped nor
-// `skip`; false when those rays are (nearly) parallel.
-bool FitRays(const std::vector<View>& views, int skip, Eigen::Vector3d* x) {
+// `skip`, and the inverse of that least-squares system (its covariance per unit of ray noise);
+// false when those rays are (nearly) parallel.
+bool FitRays(const std::vector<View>& views, int skip, Eigen::Vector3d* x, Eigen::Matrix3d* inverse) {
   Eigen::Matrix3d a = Eigen::Matrix3d::Zero();
   Eigen::Vector3d b = Eigen::Vector3d::Zero();
   for (int i = 0; i < static_cast<int>(views.size()); ++i) {
@@ -30,43 +32,46 @@ bool FitRays(const std::vector<View>& views, int skip, Eigen::Vector3d* x) {
     b += p * views[i].center;
   }
   if (!(a.determinant() > 1e-12)) return false;
-  *x = a.inverse() * b;
+  *inverse = a.inverse();
+  *x = *inverse * b;
   return true;
 }
 
 // Drops the views of joint j that disagree with the others (triangulate_full.h); true when any was.
+// A view's disagreement is the distance of its ray from the others' point, divided by
+// sqrt(1 + the others' point's variance along that offset per unit of ray noise): two rays that meet
+// at a narrow angle fix their point poorly in depth, and a third view is not blamed for that.
 bool DropDisagreeingViews(const TriangulateOptions& options, std::vector<View>& views, std::vector<double>& distances) {
   int active = static_cast<int>(views.size());
   bool any = false;
   while (active >= 3) {
-    // The view whose removal leaves the others in best agreement.
     int worst = -1;
-    double best_sum = std::numeric_limits<double>::infinity();
-    Eigen::Vector3d best_x = Eigen::Vector3d::Zero();
+    double worst_z = -1, worst_distance = 0;
+    Eigen::Vector3d worst_x = Eigen::Vector3d::Zero();
     for (int v = 0; v < static_cast<int>(views.size()); ++v) {
       if (views[v].dropped) continue;
       Eigen::Vector3d x;
-      if (!FitRays(views, v, &x)) continue;
-      double sum = 0;
-      for (int i = 0; i < static_cast<int>(views.size()); ++i) {
-        if (i == v || views[i].dropped) continue;
-        const double d = RayDistance(views[i], x);
-        sum += d * d;
-      }
-      if (sum < best_sum) {
-        best_sum = sum;
+      Eigen::Matrix3d inverse;
+      if (!FitRays(views, v, &x, &inverse)) continue;
+      const Eigen::Vector3d d = x - views[v].center;
+      const Eigen::Vector3d offset = d - views[v].ray * views[v].ray.dot(d);
+      const double distance = offset.norm();
+      const double z =
+          distance > 0 ? distance / std::sqrt(1.0 + offset.dot(inverse * offset) / (distance * distance)) : 0.0;
+      if (z > worst_z) {
+        worst_z = z;
         worst = v;
-        best_x = x;
+        worst_x = x;
+        worst_distance = distance;
       }
     }
     if (worst < 0) break;
     distances.clear();
     for (int i = 0; i < static_cast<int>(views.size()); ++i)
-      if (i != worst && !views[i].dropped) distances.push_back(RayDistance(views[i], best_x));
+      if (i != worst && !views[i].dropped) distances.push_back(RayDistance(views[i], worst_x));
     const auto middle = distances.begin() + static_cast<std::ptrdiff_t>(distances.size() / 2);
     std::nth_element(distances.begin(), middle, distances.end());
-    const double distance = RayDistance(views[worst], best_x);
-    if (!(distance > options.robust_min_m && distance > options.robust_ratio * *middle)) break;
+    if (!(worst_z > options.robust_min_m && worst_distance > options.robust_ratio * *middle)) break;
     views[worst].dropped = true;
     --active;
     any = true;

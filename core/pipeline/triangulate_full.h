@@ -5,14 +5,16 @@
 // not recomputed (identical results).
 //
 // With triangulate.robust_views, each group's joints seen in 3 or more of its poses get a consensus
-// over views: the rays of those poses, the point that minimises the squared distances to them, and
-// repeatedly the view whose removal leaves the others in best agreement (least sum of squared ray
-// distances). That view is dropped for the joint when its ray passes farther than robust_min_m from
-// the others' point and farther than robust_ratio x the median distance of the others' rays; then
-// the next, while 3 or more views remain. The proposals whose pair uses a dropped view get joint
-// score 0 for that joint, so the merge (step 11) averages only the pairs of agreeing views: the
-// joint is re-triangulated from them. A joint is left as it is when no proposal of agreeing views
-// has it. Nothing changes where the views agree (bit for bit).
+// over views. For every view, the others' rays give a point (least squares over the distances to
+// the rays); the view's disagreement is its ray's distance from that point, divided by
+// sqrt(1 + that point's variance along the offset per unit of ray noise), so that two rays meeting
+// at a narrow angle, which fix their point poorly in depth, do not outvote a third view. The view
+// that disagrees most is dropped for the joint when its disagreement exceeds robust_min_m and its
+// distance robust_ratio x the median distance of the other views' rays; then the next, while 3 or
+// more views remain. The proposals whose pair uses a dropped view get joint score 0 for that
+// joint, so the merge (step 11) averages only the pairs of agreeing views: the joint is
+// re-triangulated from them. A joint is left as it is when no proposal of agreeing views has it.
+// Nothing changes where the views agree (bit for bit).
 #pragma once
 
 #include <span>
