@@ -104,9 +104,10 @@ struct TriangulateOptions {
   int max_persons_per_view = 500;
   int max_pairs_per_frame = 1000000;
   // Step 10, per joint of a group seen in 3 or more of its poses: a view whose ray passes farther
-  // from the point the other views agree on than robust_min_m and than robust_ratio x the median
-  // distance of the other views' rays is dropped for that joint (at most down to 2 views), so an
-  // occluded joint reported at a wrong place is not averaged in (triangulate_full.h).
+  // from the point the other views agree on than robust_min_m (scaled by that point's depth
+  // uncertainty) and than robust_ratio x the median distance of the other views' rays is dropped
+  // for that joint (at most down to 2 views), so an occluded joint reported at a wrong place is not
+  // averaged in (triangulate_full.h). Off: it improved no case measured (docs/algorithm.md).
   bool robust_views = false;
   double robust_min_m = 0.15;  // m at the joint: smaller disagreements are detection noise
   double robust_ratio = 4.0;   // x the median distance of the other views' rays
@@ -130,8 +131,8 @@ void VisitFields(Visitor& v, Self& o) {
     OptionSpec{.help = "step 10: per joint seen in 3+ views of a person, drop the views that disagree with the "
                        "others (robust_min_m, robust_ratio) before the merge"});
   v("robust_min_m", o.robust_min_m,
-    OptionSpec{.help = "robust_views: a view is dropped only if its ray passes farther than this from the point "
-                       "the other views agree on",
+    OptionSpec{.help = "robust_views: a view is dropped only if its ray's distance from the other views' point, "
+                       "over sqrt(1 + that point's depth variance), exceeds this",
                .unit = "m", .min = 0, .max = 100, .min_exclusive = true});
   v("robust_ratio", o.robust_ratio,
     OptionSpec{.help = "robust_views: ... and farther than this many times the median distance of the other "
