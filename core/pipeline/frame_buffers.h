@@ -15,6 +15,7 @@
 #include "core/pipeline/score.h"
 #include "core/pipeline/single_view.h"
 #include "core/pipeline/track.h"
+#include "core/pipeline/triangulate_full.h"
 #include "core/pipeline/verify.h"
 #include "core/poses.h"
 
@@ -30,6 +31,7 @@ struct FrameBuffers {
   GroupScratch group_scratch;
   Groups groups;                 // group
   Proposals full;                // triangulate_full
+  TriangulateFullScratch triangulate_full_scratch;
   MergeScratch merge_scratch;
   VerifyScratch verify_scratch;
   SingleViewScratch single_view_scratch;

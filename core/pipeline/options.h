@@ -103,6 +103,14 @@ struct TriangulateOptions {
   // 500 poses each are 11 million pairs (2.7 GB for one frame).
   int max_persons_per_view = 500;
   int max_pairs_per_frame = 1000000;
+  // Step 10, per joint of a group seen in 3 or more of its poses: a view whose ray passes farther
+  // from the point the other views agree on than robust_min_m (scaled by that point's depth
+  // uncertainty) and than robust_ratio x the median distance of the other views' rays is dropped
+  // for that joint (at most down to 2 views), so an occluded joint reported at a wrong place is not
+  // averaged in (triangulate_full.h). Off: it improved no case measured (docs/algorithm.md).
+  bool robust_views = false;
+  double robust_min_m = 0.15;  // m at the joint: smaller disagreements are detection noise
+  double robust_ratio = 4.0;   // x the median distance of the other views' rays
 };
 
 template <class Visitor, OptionsOf<TriangulateOptions> Self>
@@ -119,6 +127,17 @@ void VisitFields(Visitor& v, Self& o) {
   v("max_pairs_per_frame", o.max_pairs_per_frame,
     OptionSpec{.help = "a frame with more pairs of 2D poses across views is refused (memory grows with the pairs)",
                .min = 1, .max = 1000000000});
+  v("robust_views", o.robust_views,
+    OptionSpec{.help = "step 10: per joint seen in 3+ views of a person, drop the views that disagree with the "
+                       "others (robust_min_m, robust_ratio) before the merge"});
+  v("robust_min_m", o.robust_min_m,
+    OptionSpec{.help = "robust_views: a view is dropped only if its ray's distance from the other views' point, "
+                       "over sqrt(1 + that point's depth variance), exceeds this",
+               .unit = "m", .min = 0, .max = 100, .min_exclusive = true});
+  v("robust_ratio", o.robust_ratio,
+    OptionSpec{.help = "robust_views: ... and farther than this many times the median distance of the other "
+                       "views' rays",
+               .min = 1, .max = 1e6});
 }
 
 // Step 5 and the room. The room is an axis-aligned box, a property of the scene: center_m and

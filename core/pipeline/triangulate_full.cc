@@ -1,12 +1,130 @@
 // SPDX-License-Identifier: MIT
 #include "core/pipeline/triangulate_full.h"
 
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
 #include "core/pipeline/pair_triangulation.h"
 
 namespace rpt {
+namespace {
 
-int steps::TriangulateFull(const TriangulateOptions& options, const TriangulateFullInput& in, Proposals* proposals,
-                           FrameStats* stats) {
+using View = TriangulateFullScratch::View;
+
+// Distance of `x` from the (unit) viewing ray of `view`.
+double RayDistance(const View& view, const Eigen::Vector3d& x) {
+  const Eigen::Vector3d d = x - view.center;
+  return (d - view.ray * view.ray.dot(d)).norm();
+}
+
+// The point with the least sum of squared distances to the rays of the views neither dropped nor
+// `skip`, and the inverse of that least-squares system (its covariance per unit of ray noise);
+// false when those rays are (nearly) parallel.
+bool FitRays(const std::vector<View>& views, int skip, Eigen::Vector3d* x, Eigen::Matrix3d* inverse) {
+  Eigen::Matrix3d a = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d b = Eigen::Vector3d::Zero();
+  for (int i = 0; i < static_cast<int>(views.size()); ++i) {
+    if (i == skip || views[i].dropped) continue;
+    const Eigen::Matrix3d p = Eigen::Matrix3d::Identity() - views[i].ray * views[i].ray.transpose();
+    a += p;
+    b += p * views[i].center;
+  }
+  if (!(a.determinant() > 1e-12)) return false;
+  *inverse = a.inverse();
+  *x = *inverse * b;
+  return true;
+}
+
+// Drops the views of joint j that disagree with the others (triangulate_full.h); true when any was.
+// A view's disagreement is the distance of its ray from the others' point, divided by
+// sqrt(1 + the others' point's variance along that offset per unit of ray noise): two rays that meet
+// at a narrow angle fix their point poorly in depth, and a third view is not blamed for that.
+bool DropDisagreeingViews(const TriangulateOptions& options, std::vector<View>& views, std::vector<double>& distances) {
+  int active = static_cast<int>(views.size());
+  bool any = false;
+  while (active >= 3) {
+    int worst = -1;
+    double worst_z = -1, worst_distance = 0;
+    Eigen::Vector3d worst_x = Eigen::Vector3d::Zero();
+    for (int v = 0; v < static_cast<int>(views.size()); ++v) {
+      if (views[v].dropped) continue;
+      Eigen::Vector3d x;
+      Eigen::Matrix3d inverse;
+      if (!FitRays(views, v, &x, &inverse)) continue;
+      const Eigen::Vector3d d = x - views[v].center;
+      const Eigen::Vector3d offset = d - views[v].ray * views[v].ray.dot(d);
+      const double distance = offset.norm();
+      const double z =
+          distance > 0 ? distance / std::sqrt(1.0 + offset.dot(inverse * offset) / (distance * distance)) : 0.0;
+      if (z > worst_z) {
+        worst_z = z;
+        worst = v;
+        worst_x = x;
+        worst_distance = distance;
+      }
+    }
+    if (worst < 0) break;
+    distances.clear();
+    for (int i = 0; i < static_cast<int>(views.size()); ++i)
+      if (i != worst && !views[i].dropped) distances.push_back(RayDistance(views[i], worst_x));
+    const auto middle = distances.begin() + static_cast<std::ptrdiff_t>(distances.size() / 2);
+    std::nth_element(distances.begin(), middle, distances.end());
+    if (!(worst_z > options.robust_min_m && worst_distance > options.robust_ratio * *middle)) break;
+    views[worst].dropped = true;
+    --active;
+    any = true;
+  }
+  return any;
+}
+
+bool IsDropped(const std::vector<View>& views, int pose) {
+  for (const View& v : views)
+    if (v.pose == pose) return v.dropped;
+  return false;
+}
+
+// triangulate.robust_views over the proposals of group g (proposals [begin, end)).
+void DropDisagreeingViewsOfGroup(const TriangulateOptions& options, const steps::TriangulateFullInput& in, int begin, int end,
+                                 TriangulateFullScratch* scratch, Proposals* proposals) {
+  const int n = proposals->num_joints;
+  auto& poses = scratch->poses;
+  poses.clear();
+  for (int k = begin; k < end; ++k) {
+    for (const int pose : {proposals->pairs[k].a, proposals->pairs[k].b})
+      if (std::find(poses.begin(), poses.end(), pose) == poses.end()) poses.push_back(pose);
+  }
+  if (poses.size() < 3) return;
+  auto& views = scratch->views;
+  for (int j = 0; j < n; ++j) {
+    views.clear();
+    for (const int pose : poses) {
+      const Keypoint& kp = in.views.Pose(pose)[j];
+      if (kp.score <= 0) continue;
+      views.push_back(View{.pose = pose, .center = in.geometry[in.views.view_of[pose]].center,
+                           .ray = kp.ray.normalized(), .dropped = false});
+    }
+    if (views.size() < 3 || !DropDisagreeingViews(options, views, scratch->distances)) continue;
+    // Only when a proposal of agreeing views has the joint: else leave it as it is.
+    bool agreeing = false;
+    for (int k = begin; k < end && !agreeing; ++k) {
+      const PosePair& pair = proposals->pairs[k];
+      agreeing = proposals->score[static_cast<size_t>(k) * n + j] > 0 && !IsDropped(views, pair.a) &&
+                 !IsDropped(views, pair.b);
+    }
+    if (!agreeing) continue;
+    for (int k = begin; k < end; ++k) {
+      const PosePair& pair = proposals->pairs[k];
+      if (IsDropped(views, pair.a) || IsDropped(views, pair.b)) proposals->score[static_cast<size_t>(k) * n + j] = 0;
+    }
+  }
+}
+
+}  // namespace
+
+int steps::TriangulateFull(const TriangulateOptions& options, const TriangulateFullInput& in,
+                           TriangulateFullScratch* scratch, Proposals* proposals, FrameStats* stats) {
   const PreparedViews& views = in.views;
   const Proposals& core = in.core;
   const int num_joints = static_cast<int>(in.all_joints.size());
@@ -51,6 +169,10 @@ int steps::TriangulateFull(const TriangulateOptions& options, const TriangulateF
       score[i] *= pv.ka[in.all_joints[i]].sqrt_score * pv.kb[in.all_joints[i]].sqrt_score;
   }
   stats->pruned_limbs += pruned;
+  if (options.robust_views) {
+    for (int g = 0; g < in.groups.size(); ++g)
+      DropDisagreeingViewsOfGroup(options, in, in.groups.begin[g], in.groups.begin[g + 1], scratch, proposals);
+  }
   return proposals->size();
 }
 

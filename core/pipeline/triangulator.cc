@@ -188,7 +188,7 @@ void Triangulator::Process(std::span<const Poses2D> views, double timestamp_s, P
                                                               .all_joints = m.all_joints,
                                                               .limbs = m.all_limbs,
                                                               .kernel = buf.kernel},
-                                  &buf.full, stats);
+                                  &buf.triangulate_full_scratch, &buf.full, stats);
   persons->Clear(num_joints);
   run.Run<Step::kMerge>(steps::MergeInput{.proposals = buf.full, .groups = buf.groups}, &buf.merge_scratch, persons);
   if (trace != nullptr) {

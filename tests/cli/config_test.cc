@@ -120,6 +120,7 @@ TEST(ConfigCommand, DumpIsLoadableAndOverridesApply) {
   EXPECT_FALSE(nlohmann::json::accept(commented.out));  // clearly not JSON
   EXPECT_EQ(test::RunRpt("config --set nope.nope=1").exit_code, 2);
   EXPECT_EQ(test::RunRpt("demo --frames 5 --set filter.min_match_score=7").exit_code, 2);
+  EXPECT_EQ(test::RunRpt("demo --frames 5 --set triangulate.robust_min_m=-1").exit_code, 2);
 }
 
 TEST(Config, DumpReadsBackIdenticallyWithEveryKindOfValue) {
@@ -243,6 +244,13 @@ TEST(Config, ChecksNameSectionAndKeyWithRangesFromTheMetadata) {
   EXPECT_EQ(problem("triangulate.max_persons_per_view=0"),
             "--set triangulate.max_persons_per_view=0: triangulate.max_persons_per_view: '0' is not an integer in [1, "
             "100000]");
+  EXPECT_EQ(problem("triangulate.robust_min_m=0"),
+            "--set triangulate.robust_min_m=0: triangulate.robust_min_m: '0' is not a number in (0, 100]");
+  EXPECT_EQ(problem("triangulate.robust_ratio=0.5"),
+            "--set triangulate.robust_ratio=0.5: triangulate.robust_ratio: '0.5' is not a number in [1, 1000000]");
+  EXPECT_EQ(problem("triangulate.robust_views=maybe"),
+            "--set triangulate.robust_views=maybe: triangulate.robust_views: 'maybe' is not true or false (also "
+            "yes/no, on/off, 1/0)");
   EXPECT_EQ(problem("metrics.min_gt_score=2"),
             "--set metrics.min_gt_score=2: metrics.min_gt_score: '2' is not a number in [0, 1]");
   EXPECT_EQ(problem("metrics.legacy_pcp_actors=1000000000"),

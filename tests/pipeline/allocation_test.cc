@@ -46,7 +46,7 @@ long CountAllocations(Triangulator& tri, const std::vector<std::vector<Poses2D>>
   return g_allocations.load();
 }
 
-void CheckNoAllocationOnceWarm(bool whole_body, int cameras, int people, bool temporal = false) {
+void CheckNoAllocationOnceWarm(bool whole_body, int cameras, int people, bool temporal = false, bool robust = false) {
   synthetic::SceneOptions options;
   options.rig.num_cameras = cameras;
   options.num_people = people;
@@ -65,6 +65,7 @@ void CheckNoAllocationOnceWarm(bool whole_body, int cameras, int people, bool te
     tri_options.bone_lengths.enabled = true;
     tri_options.smooth.mode = SmoothMode::kCausal;
   }
+  tri_options.triangulate.robust_views = robust;
   Triangulator tri(scene.cameras, scene.joint_names, tri_options);
   Poses3D persons;
   FrameStats stats;
@@ -80,6 +81,10 @@ TEST(Allocation, WarmTriangulatorDoesNotAllocateManyCameras) { CheckNoAllocation
 TEST(Allocation, WarmTriangulatorWithTemporalStepsDoesNotAllocateBody) { CheckNoAllocationOnceWarm(false, 5, 4, true); }
 TEST(Allocation, WarmTriangulatorWithTemporalStepsDoesNotAllocateWholeBody) {
   CheckNoAllocationOnceWarm(true, 5, 2, true);
+}
+TEST(Allocation, WarmTriangulatorWithRobustViewsDoesNotAllocate) {
+  CheckNoAllocationOnceWarm(false, 12, 8, false, true);
+  CheckNoAllocationOnceWarm(true, 5, 2, false, true);
 }
 
 // Smooths a sequence streamed through `smoother` (a whole sequence, then Flush), counting the
