@@ -11,8 +11,9 @@ function(rpt_set_compile_options target)
   # Unity build of the product libraries: most of a file's compile time is the same template code
   # (nlohmann::json, Eigen, the standard library) instantiated again in every file; batches of
   # RPT_UNITY_BATCH files instantiate it once. Names in anonymous namespaces must therefore be
-  # unique within a library (a clash is a compile error, never a silent mix-up). Executables and
-  # tests keep one file per compile, so an edit there rebuilds one file.
+  # unique within a library: a clash is a compile error, or, for same-named functions with
+  # different parameters, a silent overload, which the test below catches. Executables and tests
+  # keep one file per compile, so an edit there rebuilds one file.
   get_target_property(type ${target} TYPE)
   if(RPT_UNITY_BUILD AND type STREQUAL "STATIC_LIBRARY")
     set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE ${RPT_UNITY_BATCH})
