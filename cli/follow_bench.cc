@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "cli/follow_bench.h"
 
+#include <poll.h>
+#include <sched.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -55,8 +57,9 @@ void WriteAll(int fd, const std::string& text) {
   }
 }
 
-// Reads from `fd` until a whole line is in *buffer; removes and returns it.
-std::string ReadLine(int fd, std::string* buffer) {
+// Reads from `fd` until a whole line is in *buffer; removes and returns it. Like the live input, it
+// polls without sleeping for up to `spin` before each blocking read.
+std::string ReadLine(int fd, std::string* buffer, std::chrono::microseconds spin) {
   char chunk[65536];
   while (true) {
     const size_t newline = buffer->find('\n');
@@ -64,6 +67,11 @@ std::string ReadLine(int fd, std::string* buffer) {
       std::string line = buffer->substr(0, newline);
       buffer->erase(0, newline + 1);
       return line;
+    }
+    if (spin.count() > 0) {
+      pollfd ready{fd, POLLIN, 0};
+      const Clock::time_point until = Clock::now() + spin;
+      while (poll(&ready, 1, 0) == 0 && Clock::now() < until) sched_yield();
     }
     const ssize_t n = read(fd, chunk, sizeof(chunk));
     if (n < 0 && errno == EINTR) continue;
@@ -116,6 +124,7 @@ class FrameTimes final : public engine::FrameSink {
 struct FollowResult {
   bench::BenchScene scene;
   Digits digits = Digits::kFull;
+  int spin_us = 0;                // the live input's and the producer's polling before they sleep
   long frames = 0;                // timed frames
   double line_kb_median = 0;
   double triangulation_us = 0;    // medians over the timed frames
@@ -127,8 +136,9 @@ struct FollowResult {
   double pipes_added_us_p90 = 0;
 };
 
-FollowResult BenchFollow(const bench::BenchScene& scene, Digits digits, int repeat, const std::string& detector,
-                         const engine::Config& config) {
+FollowResult BenchFollow(const bench::BenchScene& scene, Digits digits, int spin_us, int repeat,
+                         const std::string& detector, const engine::Config& config) {
+  const std::chrono::microseconds spin(spin_us);
   const Sequence sequence = bench::MakeBenchSequence(scene, 1, detector);
   const double fps = sequence.fps > 0 ? sequence.fps : 25.0;
   const long frames = static_cast<long>(sequence.frames.size());
@@ -145,9 +155,10 @@ FollowResult BenchFollow(const bench::BenchScene& scene, Digits digits, int repe
   DetectionLinesCounts counts;
   DetectionLinesOptions options;
   options.name = scene.name;
-  engine::Input input = engine::OpenLiveInput(
-      sequence.cameras, std::make_unique<io::LineReader>(in.fds[0], "bench", io::MaxInputBytes(), nullptr), options,
-      "the scene's cameras", &counts);
+  auto reader = std::make_unique<io::LineReader>(in.fds[0], "bench", io::MaxInputBytes(), nullptr);
+  reader->set_spin(spin);
+  engine::Input input =
+      engine::OpenLiveInput(sequence.cameras, std::move(reader), options, "the scene's cameras", &counts);
   engine::RunOptions run_options;
   run_options.triangulator = config.triangulator;
   run_options.eval.reset();
@@ -170,11 +181,11 @@ FollowResult BenchFollow(const bench::BenchScene& scene, Digits digits, int repe
   std::vector<double> pipes_us, added_us;
   std::string buffer;
   try {
-    ReadLine(out.fds[0], &buffer);  // the joints line
+    ReadLine(out.fds[0], &buffer, spin);  // the joints line
     for (size_t k = 0; k < lines.size(); ++k) {
       const Clock::time_point start = Clock::now();
       WriteAll(in.fds[1], lines[k]);
-      ReadLine(out.fds[0], &buffer);
+      ReadLine(out.fds[0], &buffer, spin);
       const double us = std::chrono::duration<double, std::micro>(Clock::now() - start).count();
       if (static_cast<long>(k) >= frames) pipes_us.push_back(us);
     }
@@ -188,6 +199,7 @@ FollowResult BenchFollow(const bench::BenchScene& scene, Digits digits, int repe
   FollowResult result;
   result.scene = scene;
   result.digits = digits;
+  result.spin_us = spin_us;
   result.frames = static_cast<long>(pipes_us.size());
   result.line_kb_median = metrics::Median(line_kb);
   result.triangulation_us = run.timing.frame_us_median;
@@ -211,9 +223,11 @@ void RunFollowBench(const std::vector<bench::BenchScene>& scenes, int repeat, co
   constexpr double kTargetAddedUs = 100;  // issue 20: --follow adds at most 100 us per frame on shelf-like
   std::vector<FollowResult> results;
   for (const bench::BenchScene& scene : scenes) {
-    for (const Digits digits : {Digits::kFull, Digits::kThreeDecimals}) {
-      if (!json) std::fprintf(stderr, "benchmarking --follow on %s ...\n", scene.name.c_str());
-      results.push_back(BenchFollow(scene, digits, repeat, detector, config));
+    for (const int spin_us : {engine::kDefaultSpinUs, 0}) {
+      for (const Digits digits : {Digits::kFull, Digits::kThreeDecimals}) {
+        if (!json) std::fprintf(stderr, "benchmarking --follow on %s ...\n", scene.name.c_str());
+        results.push_back(BenchFollow(scene, digits, spin_us, repeat, detector, config));
+      }
     }
   }
   const engine::RunInfo info = engine::CollectRunInfo(1);
@@ -227,6 +241,7 @@ void RunFollowBench(const std::vector<bench::BenchScene>& scenes, int repeat, co
     for (const FollowResult& r : results) {
       j["scenes"].push_back({{"name", r.scene.name},
                              {"numbers", r.digits == Digits::kFull ? "full precision" : "3 decimals"},
+                             {"spin_us", r.spin_us},
                              {"frames", r.frames},
                              {"line_kb_median", r.line_kb_median},
                              {"triangulation_us_median", r.triangulation_us},
@@ -243,12 +258,15 @@ void RunFollowBench(const std::vector<bench::BenchScene>& scenes, int repeat, co
   }
   std::printf(
       "rpt bench --follow: lines fed one at a time through a pipe, each after the output line of the one before;\n"
-      "medians over %d passes after a warm-up pass; revision %s; %s\n\n",
+      "both ends poll for --spin-us before they sleep; medians over %d passes after a warm-up pass;\n"
+      "revision %s; %s\n\n",
       repeat, info.git_revision.c_str(), info.cpu.c_str());
   std::printf("%-40s", "(us per frame)");
   for (const auto& r : results) std::printf(" %14s", r.scene.name.c_str());
   std::printf("\n%-40s", "numbers written with");
   for (const auto& r : results) std::printf(" %14s", r.digits == Digits::kFull ? "full precision" : "3 decimals");
+  std::printf("\n%-40s", "--spin-us (both ends)");
+  for (const auto& r : results) std::printf(" %14d", r.spin_us);
   std::printf("\n");
   const auto row = [&](const char* label, auto value, const char* format) {
     std::printf("%-40s", label);

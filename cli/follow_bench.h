@@ -8,7 +8,9 @@
 // measured in the process (line read -> line written) and as the producer sees it (line written ->
 // output line read), and what --follow adds to the triangulation (the target: 100 us on
 // shelf-like). Each scene twice: numbers at full precision (as Python producers write floats) and
-// with 3 decimals (as OpenPose writes them), since reading the numbers is most of the added time.
+// with 3 decimals (as OpenPose writes them), since reading the numbers is most of the added time;
+// and each with the live input's default --spin-us and with 0 (the feeding thread polls for the
+// output line as long as the live input polls for its input: a producer that waits the same way).
 #pragma once
 
 #include <string>

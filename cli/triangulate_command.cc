@@ -49,6 +49,7 @@ struct TriangulateArgs {
   bool quiet = false;
   std::string follow;  // --follow PATH: live input ("-" = standard input)
   bool skip_bad_lines = false;
+  int spin_us = engine::kDefaultSpinUs;
 };
 
 // The line format, for --help (docs/own_data.md, "Live input", has the details).
@@ -87,7 +88,7 @@ int RunFollow(const TriangulateArgs& args) {
   DetectionLinesCounts counts;
   std::optional<engine::Input> input;
   try {
-    input.emplace(engine::OpenLiveInput(args.input, {args.follow, args.skip_bad_lines}, stop, &counts));
+    input.emplace(engine::OpenLiveInput(args.input, {args.follow, args.skip_bad_lines, args.spin_us}, stop, &counts));
   } catch (const InputError&) {
     if (on_interrupt.signal_number() == 0) throw;
     std::fprintf(stderr, "interrupted (%s) before the joints line: nothing triangulated\n",
@@ -193,12 +194,18 @@ void RegisterTriangulateCommand(CLI::App& app, int* exit_code) {
   command->add_flag("--skip-bad-lines", args->skip_bad_lines,
                     "with --follow: skip lines that cannot be read and count them (printed at the end) instead of "
                     "stopping at the first (exit 2)");
+  CLI::Option* spin = command->add_option("--spin-us", args->spin_us,
+                      "with --follow: after each read, poll for the next line without sleeping for up to this many "
+                      "microseconds (lower latency for lines that follow soon; 0 = sleep at once)")
+      ->capture_default_str()
+      ->option_text("US");
   command->footer(kFollowHelp);
-  command->callback([args, exit_code] {
+  command->callback([args, exit_code, spin] {
     if (!args->follow.empty()) {
       *exit_code = RunFollow(*args);
     } else {
       if (args->skip_bad_lines) throw ConfigError("--skip-bad-lines: only with --follow");
+      if (spin->count() > 0) throw ConfigError("--spin-us: only with --follow");
       RunTriangulate(*args);
     }
   });

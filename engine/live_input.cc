@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "engine/live_input.h"
 
+#include <chrono>
 #include <filesystem>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -39,7 +41,9 @@ Input OpenLiveInput(const InputSpec& spec, const LiveInputOptions& options, std:
   InputWarnings opened;
   Calibration calibration = ReadCalibration(spec.cameras, {}, &opened);
   // A line is read whole, like a file: the same limit bounds it.
+  if (options.spin_us < 0) throw ConfigError("--spin-us " + std::to_string(options.spin_us) + ": expected a time >= 0");
   auto lines = std::make_unique<io::LineReader>(options.path, io::MaxInputBytes(), std::move(stop));
+  lines->set_spin(std::chrono::microseconds(options.spin_us));
   DetectionLinesOptions lines_options;
   lines_options.name = options.path == "-" ? "stdin" : std::filesystem::path(options.path).stem().string();
   lines_options.fps = spec.fps;

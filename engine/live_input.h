@@ -16,9 +16,16 @@
 
 namespace rpt::engine {
 
+// How long the live input polls for the next line without sleeping (io::LineReader::set_spin):
+// a line that comes within this time of the last read is taken without a thread wake-up, which is
+// slow on an idle machine (docs/own_data.md, Latency). At 30 frames a second it costs at most 0.6 %
+// of a core; `--spin-us 0` sleeps at once.
+constexpr int kDefaultSpinUs = 200;
+
 struct LiveInputOptions {
   std::string path;             // "-" = standard input; else a named pipe or a file
   bool skip_bad_lines = false;  // count bad lines instead of stopping at the first
+  int spin_us = kDefaultSpinUs;  // polling without sleeping before each wait for input, in microseconds
 };
 
 // Opens the stream and reads its joints line (waiting for it), on the calibration spec.cameras

@@ -3,6 +3,7 @@
 
 #include <fcntl.h>
 #include <poll.h>
+#include <sched.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -84,9 +85,7 @@ void LineReader::Fill() {
   }
   if (buffer_.size() < end_ + kReadBytes) buffer_.resize(end_ + kReadBytes);
   pollfd fds[2] = {{fd_, POLLIN, 0}, {stop_ ? stop_->fd() : -1, POLLIN, 0}};
-  while (poll(fds, 2, -1) < 0) {
-    if (errno != EINTR) throw InputError(source_ + ": cannot wait for input: " + LineReaderErrno());
-  }
+  Wait(fds);
   if (fds[1].revents != 0) {
     stopped_ = true;
     return;
@@ -104,6 +103,21 @@ void LineReader::Fill() {
     }
     if (errno == EAGAIN || errno == EWOULDBLOCK) return;  // woken without data: wait again
     if (errno != EINTR) throw InputError(source_ + ": read failed: " + LineReaderErrno());
+  }
+}
+
+void LineReader::Wait(pollfd* fds) {
+  if (spin_.count() > 0) {
+    const Clock::time_point until = Clock::now() + spin_;
+    do {
+      const int ready = poll(fds, 2, 0);
+      if (ready > 0) return;
+      if (ready < 0 && errno != EINTR) throw InputError(source_ + ": cannot wait for input: " + LineReaderErrno());
+      sched_yield();  // a runnable thread of the machine goes first: polling must not slow what it waits for
+    } while (Clock::now() < until);
+  }
+  while (poll(fds, 2, -1) < 0) {
+    if (errno != EINTR) throw InputError(source_ + ": cannot wait for input: " + LineReaderErrno());
   }
 }
 

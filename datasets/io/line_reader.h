@@ -3,9 +3,13 @@
 // written while rpt reads it (`rpt triangulate --follow`, datasets/readers/detection_lines.h).
 // A line is handed out as soon as its newline has been read; reading waits in poll() on the
 // stream and on a StopRequest, so another thread (the interrupt handler, cli/interrupt.h) can end
-// the wait at any time. Memory is bounded: the buffer holds at most one line of max_line_bytes
+// the wait at any time. With a spin time (set_spin) the reader first polls without sleeping for up
+// to that long after each read, so a line that follows soon is taken without the wake-up of a
+// sleeping thread (slow on an idle machine; `rpt triangulate --follow --spin-us`). Memory is bounded: the buffer holds at most one line of max_line_bytes
 // plus one read; a longer line is read through and dropped, and reported as too long.
 #pragma once
+
+#include <poll.h>
 
 #include <atomic>
 #include <chrono>
@@ -60,6 +64,9 @@ class LineReader {
   // reading fails.
   Result Next(std::string_view* line);
 
+  // Polls for input without sleeping for up to `spin` before each wait (zero: sleep at once).
+  void set_spin(std::chrono::microseconds spin) { spin_ = spin; }
+
   const std::string& source() const { return source_; }
   // The number of the line handed out last (1-based; too-long lines count).
   long line_number() const { return line_number_; }
@@ -69,12 +76,15 @@ class LineReader {
  private:
   // Waits for input and reads once more into the buffer; sets at_end_ or stopped_ instead.
   void Fill();
+  // Waits until the stream or the stop request is readable: polls for up to spin_, then sleeps.
+  void Wait(pollfd* fds);
 
   int fd_ = -1;
   bool owns_fd_ = false;
   std::string source_;
   std::size_t max_line_bytes_;
   std::shared_ptr<const StopRequest> stop_;
+  std::chrono::microseconds spin_{0};
   std::string buffer_;
   std::size_t begin_ = 0;  // the unconsumed bytes are buffer_[begin_, end_)
   std::size_t end_ = 0;

@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "core/pipeline/frame_stats.h"
 #include "tests/cli/cli_test_util.h"
@@ -28,6 +30,27 @@ TEST(BenchCommand, ReportsStepsAccuracyAndBaseline) {
   EXPECT_LT(s["mpjpe_mm"].get<double>(), 60.0);
   EXPECT_TRUE(j["run"].contains("cpu"));
   EXPECT_EQ(test::RunRpt("bench --scene nosuch").exit_code, 2);
+}
+
+// rpt bench --follow: each scene with numbers at full precision and with 3 decimals, each with the
+// live input's default polling before it sleeps (--spin-us) and with none; every timed frame counted.
+TEST(BenchCommand, FollowTimesEachWayOfWaiting) {
+  const test::CommandResult r = test::RunRpt("bench --follow --scene few-views --frames 20 --repeat 2 --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["scenes"].size(), 4u);
+  const std::vector<std::pair<int, std::string>> expected = {
+      {200, "full precision"}, {200, "3 decimals"}, {0, "full precision"}, {0, "3 decimals"}};
+  for (size_t i = 0; i < expected.size(); ++i) {
+    const nlohmann::json& s = j["scenes"][i];
+    EXPECT_EQ(s["name"], "few-views");
+    EXPECT_EQ(s["spin_us"], expected[i].first) << i;
+    EXPECT_EQ(s["numbers"], expected[i].second) << i;
+    EXPECT_EQ(s["frames"], 40) << "2 passes of 20 frames after the warm-up pass";
+    // Per frame, the latency holds the triangulation: so do the medians.
+    EXPECT_GE(s["latency_in_process_us_median"].get<double>(), s["triangulation_us_median"].get<double>()) << i;
+    EXPECT_GE(s["added_in_process_us_median"].get<double>(), 0.0) << i;
+  }
 }
 
 TEST(BenchCommand, HdfCacheRoundTripTiming) {

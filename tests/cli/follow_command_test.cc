@@ -230,8 +230,10 @@ TEST_F(Follow, TimesFromFpsAndANamedPipe) {
   const Json offline = Offline();
   const fs::path fifo = dir_ / "detections.fifo";
   ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
-  // rpt opens the pipe before its writer does (the wait is in poll(), not in open()).
-  Child child("triangulate --follow " + fifo.string() + " --fps 25 --cameras " + Cameras(), dir_ / "err.txt");
+  // rpt opens the pipe before its writer does (the wait is in poll(), not in open()); it sleeps at
+  // once when no line is there (--spin-us 0; the test above polls first, the default).
+  Child child("triangulate --follow " + fifo.string() + " --fps 25 --spin-us 0 --cameras " + Cameras(),
+              dir_ / "err.txt");
   // Written from another thread while this one reads the output: neither pipe can fill up.
   std::thread writer([&] {
     std::ofstream out(fifo);
@@ -336,6 +338,13 @@ TEST_F(Follow, OptionsThatDoNotFit) {
                                                 " --detections " + (dir_ / "detections.json").string());
   EXPECT_EQ(skip.exit_code, 2);
   EXPECT_NE(skip.err.find("--skip-bad-lines: only with --follow"), std::string::npos) << skip.err;
+  const test::CommandResult spin = test::RunRpt("triangulate --spin-us 0 --cameras " + Cameras() + " --detections " +
+                                                (dir_ / "detections.json").string());
+  EXPECT_EQ(spin.exit_code, 2);
+  EXPECT_NE(spin.err.find("--spin-us: only with --follow"), std::string::npos) << spin.err;
+  const test::CommandResult negative = test::RunRpt(base + " --spin-us -1 < /dev/null");
+  EXPECT_EQ(negative.exit_code, 2);
+  EXPECT_NE(negative.err.find("--spin-us -1: expected a time >= 0"), std::string::npos) << negative.err;
 }
 
 }  // namespace

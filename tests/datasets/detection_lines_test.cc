@@ -150,7 +150,8 @@ TEST(JsonPull, ErrorsNameTheColumn) {
 
 // Lines written to a pipe by a thread, read by a LineReader.
 std::vector<std::string> ReadLines(const std::string& text, size_t max_line_bytes,
-                                   std::vector<io::LineReader::Result>* results) {
+                                   std::vector<io::LineReader::Result>* results,
+                                   std::chrono::microseconds spin = std::chrono::microseconds(0)) {
   int fds[2];
   EXPECT_EQ(pipe(fds), 0);
   std::thread writer([&] {
@@ -160,6 +161,7 @@ std::vector<std::string> ReadLines(const std::string& text, size_t max_line_byte
     close(fds[1]);
   });
   io::LineReader reader(fds[0], "pipe", max_line_bytes, nullptr);
+  reader.set_spin(spin);
   std::vector<std::string> lines;
   std::string_view line;
   while (true) {
@@ -181,6 +183,36 @@ TEST(LineReader, LinesAsTheyArrive) {
   EXPECT_EQ(lines,
             (std::vector<std::string>{"first", "", "second line", "<too long>", "third", "last without newline"}));
   EXPECT_EQ(results[3], io::LineReader::Result::kTooLong);
+}
+
+TEST(LineReader, PollingBeforeSleepingReadsTheSameLines) {
+  const std::string text = "first\r\n\nsecond line\n" + std::string(100, 'x') + "\nthird\nlast without newline";
+  std::vector<io::LineReader::Result> sleeping, polling;
+  const std::vector<std::string> expected = ReadLines(text, 40, &sleeping);
+  // Polling for up to 10 s: the lines and the end of the stream come as they arrive, not after 10 s.
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_EQ(ReadLines(text, 40, &polling, std::chrono::seconds(10)), expected);
+  EXPECT_EQ(polling, sleeping);
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5)) << "the end waited for the polling";
+}
+
+TEST(LineReader, AStopRequestEndsThePolling) {
+  int fds[2];
+  ASSERT_EQ(pipe(fds), 0);
+  auto stop = std::make_shared<io::StopRequest>();
+  io::LineReader reader(fds[0], "pipe", 1000, stop);
+  reader.set_spin(std::chrono::seconds(30));
+  std::thread stopper([&] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    stop->Request();
+  });
+  const auto start = std::chrono::steady_clock::now();
+  std::string_view line;
+  EXPECT_EQ(reader.Next(&line), io::LineReader::Result::kStopped);
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(10)) << "the stop waited for the polling";
+  stopper.join();
+  close(fds[0]);
+  close(fds[1]);
 }
 
 TEST(LineReader, AStopRequestEndsTheWait) {
