@@ -34,4 +34,5 @@ configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/rptConfig.cmake.in
                               ${PROJECT_BINARY_DIR}/rptConfig.cmake INSTALL_DESTINATION ${RPT_INSTALL_CMAKEDIR})
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/rptConfigVersion.cmake COMPATIBILITY SameMinorVersion)
 install(FILES ${PROJECT_BINARY_DIR}/rptConfig.cmake ${PROJECT_BINARY_DIR}/rptConfigVersion.cmake
+              ${PROJECT_SOURCE_DIR}/cmake/RptFindOpenCV.cmake
         DESTINATION ${RPT_INSTALL_CMAKEDIR})
