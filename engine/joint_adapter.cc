@@ -237,11 +237,11 @@ void CheckAdapterJoints(const JointAdapter& adapter, const JointNames& joints) {
       }
     }
     if (difference.empty()) {
-      difference = std::to_string(adapter.joints.size()) + " joints, the predictions have " +
-                   std::to_string(joints.size());
+      difference = "the first " + std::to_string(n) + " joints agree";
     }
-    throw ConfigError(where + ": fitted for other joints than the predictions': " + difference +
-                      " (the predictions' joints: " + Join(joints) + "); fit it again with the same options");
+    throw ConfigError(where + ": fitted for other joints than the predictions': " + difference + " (" +
+                      std::to_string(adapter.joints.size()) + " joints in the adapter, " + std::to_string(joints.size()) +
+                      " in the predictions); fit it again with the options of this run");
   }
   if (!BodyFrameJoints::Find(joints).complete()) {
     throw ConfigError(where + ": the predictions lack the hips and shoulders a body frame is built from "
