@@ -75,7 +75,7 @@ class AdapterValidator {
   std::string path_;
 };
 
-Json ToJson(const Eigen::Vector3d& v) { return Json::array({v.x(), v.y(), v.z()}); }
+Json OffsetJson(const Eigen::Vector3d& v) { return Json::array({v.x(), v.y(), v.z()}); }
 
 }  // namespace
 
@@ -183,7 +183,7 @@ nlohmann::ordered_json JointAdapterJson(const JointAdapter& adapter, bool with_f
   for (size_t j = 0; j < adapter.joints.size(); ++j) {
     Ordered joint;
     joint["name"] = adapter.joints[j];
-    joint["offset_m"] = ToJson(adapter.offset_m[j]);
+    joint["offset_m"] = OffsetJson(adapter.offset_m[j]);
     joint["samples"] = j < adapter.samples.size() ? adapter.samples[j] : 0;
     const double spread = j < adapter.spread_m.size() ? adapter.spread_m[j] : std::nan("");
     joint["spread_m"] = std::isfinite(spread) ? Ordered(spread) : Ordered(nullptr);
