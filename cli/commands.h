@@ -10,6 +10,7 @@ namespace rpt::cli {
 void RegisterDemoCommand(CLI::App& app);
 void RegisterConfigCommand(CLI::App& app);
 void RegisterEvalCommand(CLI::App& app);
+void RegisterFitAdapterCommand(CLI::App& app);
 // triangulate --follow: 128 + the signal when Ctrl-C ended the stream.
 void RegisterTriangulateCommand(CLI::App& app, int* exit_code);
 void RegisterDatasetsCommand(CLI::App& app);

@@ -13,6 +13,7 @@
 #include "cli/export_args.h"
 #include "engine/diagnostics.h"
 #include "engine/input.h"
+#include "engine/joint_adapter.h"
 #include "engine/outputs/loss_tables.h"
 #include "engine/outputs/step_tables.h"
 #include "engine/outputs/results_writer.h"
@@ -36,11 +37,22 @@ struct EvalArgs {
   bool json = false;
   bool quiet = false;
   bool loss_table = false;
+  std::string adapter;  // joint-definition adapter file (rpt fit-adapter)
 };
 
 void RunEval(const EvalArgs& args) {
   const engine::Config config = ResolveConfig(args.config);
   const engine::ExportOptions exports = ExportOptionsOf(args.exports);
+  std::shared_ptr<const engine::JointAdapter> adapter;
+  if (!args.adapter.empty()) {
+    adapter = std::make_shared<const engine::JointAdapter>(engine::ReadJointAdapter(args.adapter));
+    if (adapter->fit.dataset != args.input.dataset) {
+      std::fprintf(stderr, "warning: %s: fitted on %s, applied to %s: its offsets describe that dataset's joint "
+                   "definitions\n", PrintableText(adapter->path, LineBreaks::kEscape).c_str(),
+                   adapter->fit.dataset.empty() ? "another input" : ("dataset " + adapter->fit.dataset).c_str(),
+                   args.input.dataset.empty() ? "another input" : ("dataset " + args.input.dataset).c_str());
+    }
+  }
   engine::Input input = engine::OpenInput(args.input);
   const InputWarnings opened = input.Warnings();  // what the files read up front corrected or left unused
   PrintInputWarnings(opened);
@@ -49,6 +61,7 @@ void RunEval(const EvalArgs& args) {
   options.eval = config.metrics;
   options.checks = engine::DetectionCheckOptions{};
   options.loss_table = args.loss_table;
+  options.adapter = adapter;
   options.threads = args.threads;
   std::unique_ptr<Progress> progress = ProgressOf(input, !args.quiet);
   options.progress = ReportTo(progress.get());
@@ -66,6 +79,12 @@ void RunEval(const EvalArgs& args) {
   const engine::EvalDiagnostics diagnostics = engine::Diagnose(run);
   nlohmann::ordered_json diagnostics_json = engine::DiagnosticsJson(diagnostics);
   diagnostics_json.update(engine::RunLossTablesJson(run));
+  if (adapter) {
+    nlohmann::ordered_json adapter_json = engine::JointAdapterJson(*adapter, /*with_frame_ids=*/false);
+    adapter_json["adapted_persons"] = run.adapted_persons;
+    adapter_json["unadapted_persons"] = run.unadapted_persons;
+    diagnostics_json["joint_adapter"] = adapter_json;
+  }
   folder.Finish(run, config, info, diagnostics_json);
   if (args.json) {
     nlohmann::ordered_json summary = engine::SummaryJson(run);
@@ -86,6 +105,12 @@ void RunEval(const EvalArgs& args) {
   for (const auto& g : run.metrics.wholebody) whole_body |= (g.name == "Face" || g.name == "Hands") && g.num_persons > 0;
   for (const auto& g : run.metrics.wholebody) {
     if (whole_body) std::printf("  whole-body MPJPE %-6s %.1f mm\n", g.name.c_str(), g.mpjpe_mm);
+  }
+  if (adapter) {
+    std::printf("joint adapter %s, fitted on %s: moved %ld persons, left %ld without a body frame as they were\n",
+                PrintableText(adapter->path, LineBreaks::kEscape).c_str(),
+                PrintableText(engine::FitDescription(adapter->fit), LineBreaks::kEscape).c_str(), run.adapted_persons,
+                run.unadapted_persons);
   }
   if (run.metrics.legacy_pcp) std::printf("  legacy PCP (actors 1-3) %.1f %%\n", run.metrics.legacy_pcp->average_pcp);
   if (!args.quiet) {
@@ -114,6 +139,9 @@ void RegisterEvalCommand(CLI::App& app) {
   command->add_flag("--loss-table", args->loss_table,
                     "follow every GT person through the association and count where it is lost (losses.csv, "
                     "summary.json \"loss_table\"; docs/diagnostics.md)");
+  command->add_option("--adapter", args->adapter,
+                      "joint-definition adapter (rpt fit-adapter) applied to the predictions before the metrics; "
+                      "refused on the frames it was fitted on (docs/joint_adapter.md)");
   command->callback([args] { RunEval(*args); });
 }
 

@@ -105,6 +105,7 @@ int main(int argc, char** argv) {
   rpt::engine::SetCommand(argc, argv);
   rpt::cli::RegisterDemoCommand(app);
   rpt::cli::RegisterEvalCommand(app);
+  rpt::cli::RegisterFitAdapterCommand(app);
   int exit_code = 0;
   rpt::cli::RegisterTriangulateCommand(app, &exit_code);
   rpt::cli::RegisterInspectCommand(app);

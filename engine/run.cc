@@ -13,11 +13,13 @@
 #endif
 
 #include "core/errors.h"
+#include "core/joint_offsets.h"
 #include "core/pipeline/room_check.h"
 #include "core/pipeline/triangulator.h"
 #include "core/pipeline/offline_smoother.h"
 #include "engine/checked_source.h"
 #include "engine/input.h"
+#include "engine/joint_adapter.h"
 #include "engine/thread_count.h"
 #include "metrics/accumulator.h"
 
@@ -34,10 +36,42 @@ struct SequenceRun {
   long gt_persons = 0, output_persons = 0, frames_with_gt = 0, frames_with_gt_without_prediction = 0;
 };
 
+// The run's joint adapter (RunOptions::adapter) on one sequence: each frame's persons copied and
+// moved before they are measured and written.
+class FrameAdapter {
+ public:
+  FrameAdapter(const JointAdapter* adapter, const JointNames& output_joints) : adapter_(adapter) {
+    if (adapter_ == nullptr) return;
+    CheckAdapterJoints(*adapter_, output_joints);
+    frame_joints_ = BodyFrameJoints::Find(output_joints);
+  }
+  // `persons` with the adapter applied (itself without an adapter). Throws ConfigError when the
+  // adapter was fitted on this frame. Allocates nothing once warm.
+  const Poses3D& Apply(const SequenceFrame& frame, const Poses3D& persons, SequenceResult* result) {
+    if (adapter_ == nullptr) return persons;
+    if (adapter_->IsFitFrame(frame.id)) {
+      throw ConfigError((adapter_->path.empty() ? std::string("joint adapter") : adapter_->path) + ": frame '" +
+                        frame.id + "' is one it was fitted on (" + FitDescription(adapter_->fit) +
+                        "); an adapter is never evaluated on its own fitting frames: select other frames");
+    }
+    adapted_ = persons;  // keeps the buffers' capacity
+    const int moved = ApplyJointOffsets(adapter_->offset_m, frame_joints_, &adapted_);
+    result->adapted_persons += moved;
+    result->unadapted_persons += adapted_.num_persons() - moved;
+    return adapted_;
+  }
+
+ private:
+  const JointAdapter* adapter_;
+  BodyFrameJoints frame_joints_;
+  Poses3D adapted_;
+};
+
 // What is measured of one triangulated frame, and the frame handed to the sink.
-void Emit(int index, const SequenceFrame& frame, const Poses3D& persons, const FrameStats& stats,
+void Emit(int index, const SequenceFrame& frame, const Poses3D& triangulated, const FrameStats& stats,
           const FrameTrace& trace, const SequenceHeader& header, const JointNames& output_joints, SequenceRun* run,
-          std::optional<DetectionChecker>* checker, FrameSink* sink) {
+          std::optional<DetectionChecker>* checker, FrameAdapter* adapter, FrameSink* sink) {
+  const Poses3D& persons = adapter->Apply(frame, triangulated, &run->result);
   run->timing.Add(stats, frame.paf_grouping_us);
   run->counts.Add(stats);
   ++run->result.frames;
@@ -73,6 +107,7 @@ void RunSequence(int index, FrameSource& source, const RunOptions& options, cons
   }
   std::optional<DetectionChecker> checker;
   if (options.checks) checker.emplace(header, source.num_frames(), tri_options.track.max_gap_s, *options.checks);
+  FrameAdapter adapter(options.adapter.get(), output_joints);
   if (sink != nullptr) sink->BeginSequence(index, header, output_joints);
 
   const std::vector<Poses2D> no_views(header.cameras.size());
@@ -89,7 +124,7 @@ void RunSequence(int index, FrameSource& source, const RunOptions& options, cons
     while (smoother.Pop(&smoothed, &smoothed_stats)) {
       SequenceFrame& frame = waiting[first_waiting];
       Emit(index, frame, smoothed, smoothed_stats, traces[first_waiting % traces.size()], header, output_joints, run,
-           &checker, sink);
+           &checker, &adapter, sink);
       first_waiting = (first_waiting + 1) % waiting.size();
       --num_waiting;
     }
@@ -122,7 +157,7 @@ void RunSequence(int index, FrameSource& source, const RunOptions& options, cons
       smoother.Push(frame.timestamp_s, persons, persons.num_persons() - stats.coasting_tracks, stats);
       emit_ready();
     } else {
-      Emit(index, frame, persons, stats, traces[0], header, output_joints, run, &checker, sink);
+      Emit(index, frame, persons, stats, traces[0], header, output_joints, run, &checker, &adapter, sink);
     }
     const long done = ++*frames_done;
     if (report_progress && options.progress) options.progress(done);
@@ -239,6 +274,8 @@ RunResult Run(Input& input, const RunOptions& options, FrameSink* sink) {
     result.frames += run.result.frames;
     result.gt_persons += run.gt_persons;
     result.output_persons += run.output_persons;
+    result.adapted_persons += run.result.adapted_persons;
+    result.unadapted_persons += run.result.unadapted_persons;
     result.frames_with_gt += run.frames_with_gt;
     result.frames_with_gt_without_prediction += run.frames_with_gt_without_prediction;
     result.sequences.push_back(std::move(run.result));

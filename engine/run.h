@@ -35,6 +35,7 @@
 namespace rpt::engine {
 
 class Input;
+struct JointAdapter;
 
 struct RunOptions {
   // The sequence's room is used unless room_check.size_m is set (TriangulatorOptionsFor).
@@ -46,6 +47,11 @@ struct RunOptions {
   // Where the GT persons are lost (engine/loss_table.h); needs `eval`. Recording what the
   // association did costs time, which counts in the frames' total (not in any step's).
   bool loss_table = false;
+  // A joint-definition adapter (engine/joint_adapter.h): applied to every frame's persons after
+  // triangulation, before they are measured and written; null = none. The run refuses (ConfigError)
+  // predictions of other joints and a frame the adapter was fitted on. Its time is outside the
+  // steps' (like the metrics').
+  std::shared_ptr<const JointAdapter> adapter;
   int warmup_frames = 0;  // frames per sequence excluded from timing
   int threads = 0;        // sequences in parallel; 0 = automatic (at most the cores and the sequences)
   // Called with the frames done so far (all sequences), from one thread; may be empty.
@@ -62,6 +68,8 @@ struct SequenceResult {
   metrics::TimingSummary timing;
   std::optional<SequenceCheck> check;     // when RunOptions::checks is set
   std::optional<LossTable> losses;        // when RunOptions::loss_table is set
+  long adapted_persons = 0;               // persons the adapter moved (RunOptions::adapter)
+  long unadapted_persons = 0;             // persons it left as they were: no body frame
 };
 
 struct RunResult {
@@ -75,6 +83,8 @@ struct RunResult {
   int threads = 1;                  // threads used for the sequences
   long gt_persons = 0;              // GT person-frames
   long output_persons = 0;          // triangulated person-frames
+  long adapted_persons = 0;         // of those: moved by RunOptions::adapter
+  long unadapted_persons = 0;       // of those: left as they were by it (no body frame)
   long frames_with_gt = 0;          // frames with at least one GT person
   long frames_with_gt_without_prediction = 0;  // of those: nobody triangulated
   std::vector<SequenceResult> sequences;       // in input order

@@ -47,6 +47,45 @@ r = d["datasets"][sys.argv[1]]
 print("| " + r["label"] + " | " + " | ".join(str(r[c]) for c in d["columns"]) + " | |")' "$1"
 }
 
+# A joint-definition adapter (docs/joint_adapter.md) fitted on one part of a dataset and evaluated
+# on another, beside the same held-out part without it. The adapter file (its split, offsets and
+# fitting frame ids) is kept as results/real/adapters/<name>.json; summary.json states the split too.
+adapted() {  # name, fit selection (--param), held-out selection (--param), then the shared rpt arguments
+  local name="$1" fit="$2" held_out="$3"; shift 3
+  mkdir -p "$OUT/real/adapters"
+  "$RPT" fit-adapter --threads 1 --param "$fit" "$@" --out "$OUT/real/adapters/$name.json" > /dev/null
+  real "$name-without" --param "$held_out" "$@"
+  real "$name" --param "$held_out" "$@" --adapter "$OUT/real/adapters/$name.json"
+}
+
+adapter_results() {
+  adapted shelf4da-adapter-fit0-149    frames=0-149   frames=150-300 --dataset shelf-4da --root "$SHARED/shelf/4d_association"
+  adapted shelf4da-adapter-fit150-300  frames=150-300 frames=0-149   --dataset shelf-4da --root "$SHARED/shelf/4d_association"
+  adapted mvor-adapter-fit-days12      days=1,2       days=3,4       --dataset mvor --root "$SHARED/mvor"
+  adapted mvor-adapter-fit-days34      days=3,4       days=1,2       --dataset mvor --root "$SHARED/mvor"
+}
+
+# The adapter table of results/real/README.md (after adapter_results).
+adapter_table() {
+  local head='| run | PCP (%) | PCK@100 (%) | PCK@500 (%) | MPJPE (mm) | Recall@100 (%) | Recall@500 (%) | Invalid (%) | F1 (%) | FPS (1/s) | Frames (count) |'
+  echo "## Joint-definition adapter, held-out frames"
+  echo
+  echo "\`rpt fit-adapter\` on one part, \`rpt eval --adapter\` on the other (2-fold; docs/joint_adapter.md). Each"
+  echo "pair of rows is the same held-out frames without and with the adapter; the adapter files, with"
+  echo "their split, offsets and fitting frames, are in adapters/. FPS does not include the adapter."
+  echo
+  echo "$head"
+  echo '|---|---|---|---|---|---|---|---|---|---|---|'
+  ours shelf4da-adapter-fit0-149-without "Shelf-4DA frames 150-300, no adapter"
+  ours shelf4da-adapter-fit0-149 "Shelf-4DA frames 150-300, adapter fitted on frames 0-149"
+  ours shelf4da-adapter-fit150-300-without "Shelf-4DA frames 0-149, no adapter"
+  ours shelf4da-adapter-fit150-300 "Shelf-4DA frames 0-149, adapter fitted on frames 150-300"
+  ours mvor-adapter-fit-days12-without "MVOR days 3-4, no adapter"
+  ours mvor-adapter-fit-days12 "MVOR days 3-4, adapter fitted on days 1-2"
+  ours mvor-adapter-fit-days34-without "MVOR days 1-2, no adapter"
+  ours mvor-adapter-fit-days34 "MVOR days 1-2, adapter fitted on days 3-4"
+}
+
 real_results() {
   sweep real/ablations-mvor --dataset mvor --root "$SHARED/mvor" --list results/ablations.json
   sweep real/ablations-shelf4da --dataset shelf-4da --root "$SHARED/shelf/4d_association" --list results/ablations.json
@@ -61,6 +100,7 @@ real_results() {
        --set metrics.legacy_pcp=campus
   real panoptic-simulated    --dataset panoptic --root "$SHARED/panoptic" \
        --param sequences=160906_band1,160906_band2 --param every=1 --simulate
+  adapter_results
   local head='| run | PCP (%) | PCK@100 (%) | PCK@500 (%) | MPJPE (mm) | Recall@100 (%) | Recall@500 (%) | Invalid (%) | F1 (%) | FPS (1/s) | Frames (count) |'
   {
     echo "# Real cases: rpt beside the paper"
@@ -90,6 +130,8 @@ real_results() {
     paper campus
     ours panoptic-simulated "Panoptic fixture, 40 frames (rpt)"
     paper panoptic
+    echo
+    adapter_table
   } > "$OUT/real/README.md"
   echo "wrote $OUT/real/README.md"
 }
