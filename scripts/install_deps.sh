@@ -13,12 +13,13 @@ SUDO=""
 if [ "$(id -u)" != 0 ]; then SUDO="sudo"; fi
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq
-# The build (with the Python module rpt: python3-dev, python3-numpy, pybind11-dev; docs/python.md),
+# The build (with the Python module rpt: python3-dev, python3-numpy, pybind11-dev; docs/python.md;
+# Highway, libhwy-dev, for the SIMD kernels chosen at run time: core/pipeline/simd_kernels.h),
 # and three.js and Chart.js, which rpt report inlines into report.html at run time
 # (engine/report/report_html.h).
 $SUDO apt-get install -y -qq --no-install-recommends \
   build-essential cmake pkg-config ccache \
-  libeigen3-dev libopencv-dev nlohmann-json3-dev libcli11-dev libhdf5-dev zlib1g-dev libtomlplusplus-dev \
+  libeigen3-dev libopencv-dev nlohmann-json3-dev libcli11-dev libhdf5-dev zlib1g-dev libtomlplusplus-dev libhwy-dev \
   python3-dev python3-numpy pybind11-dev \
   libjs-three libjs-chart.js >/dev/null
 if [ "$tests" = 1 ]; then
