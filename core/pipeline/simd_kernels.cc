@@ -164,9 +164,8 @@ HWY_INLINE void TriangulateLanes(D d, const double* ca, const PoseColumns& a, co
   hn::StoreU(hn::IfThenElseZero(ok, hn::Set(d, 1.0)), d, score + i);
 }
 
-void TriangulatePairImpl(const double* ca, const PoseColumns& a, const double* cb, const PoseColumns& b, int n,
-                         double* xyz, double* gap, double* score) {
-  const hn::ScalableTag<double> d;
+template <class D>
+HWY_INLINE void TriangulatePairJoints(D d, const double* ca, const PoseColumns& a, const double* cb, const PoseColumns& b, int n, double* xyz, double* gap, double* score) {
   const size_t N = hn::Lanes(d), count = static_cast<size_t>(n);
   size_t i = 0;
   for (; i + N <= count; i += N) TriangulateLanes(d, ca, a, cb, b, i, xyz, gap, score);
@@ -181,6 +180,17 @@ void TriangulatePairImpl(const double* ca, const PoseColumns& a, const double* c
   }
 }
 
+void TriangulatePairImpl(const double* ca, const PoseColumns& a, const double* cb, const PoseColumns& b, int n,
+                         double* xyz, double* gap, double* score) {
+  // Fewer than 32 joints (the core joints, a body): 4 lanes at most, so that AVX-512 does not
+  // spend most of a short row in its padded last vector.
+  if (hn::Lanes(hn::ScalableTag<double>()) > 4 && n < 32) {
+    TriangulatePairJoints(hn::CappedTag<double, 4>(), ca, a, cb, b, n, xyz, gap, score);
+  } else {
+    TriangulatePairJoints(hn::ScalableTag<double>(), ca, a, cb, b, n, xyz, gap, score);
+  }
+}
+
 template <class D, class V = hn::Vec<D>>
 HWY_INLINE void ResidualLanes(D d, const ResidualViews& rv, const PoseColumns& a, const PoseColumns& b, size_t i,
                               const double* xyz, const double* gap, const double* score, const double* geometric,
@@ -189,16 +199,16 @@ HWY_INLINE void ResidualLanes(D d, const ResidualViews& rv, const PoseColumns& a
                               hn::Ge(hn::LoadU(d, geometric + i), hn::Zero(d)));
   V r = hn::Zero(d);
   if (use_reprojection) {
-    r = hn::IfThenElse(hn::Gt(hn::LoadU(d, gap + i), hn::Set(d, skip_gap)), hn::Set(d, 1e6),
-                       Residual(d, rv, a, b, xyz, i));
+    const auto far = hn::Gt(hn::LoadU(d, gap + i), hn::Set(d, skip_gap));
+    // Like the scalar code, no projection when no joint needs one (e.g. the pairs of different people).
+    r = hn::AllTrue(d, hn::Or(skipped, far)) ? hn::Set(d, 1e6)
+                                              : hn::IfThenElse(far, hn::Set(d, 1e6), Residual(d, rv, a, b, xyz, i));
   }
   hn::StoreU(hn::IfThenElse(skipped, hn::Set(d, -1.0), r), d, residual + i);
 }
 
-void PairResidualsImpl(const ResidualViews& rv, const PoseColumns& a, const PoseColumns& b, int n, const double* xyz,
-                       const double* gap, const double* score, const double* geometric, bool use_reprojection,
-                       double skip_gap, double* residual) {
-  const hn::ScalableTag<double> d;
+template <class D>
+HWY_INLINE void PairResidualsJoints(D d, const ResidualViews& rv, const PoseColumns& a, const PoseColumns& b, int n, const double* xyz, const double* gap, const double* score, const double* geometric, bool use_reprojection, double skip_gap, double* residual) {
   const size_t N = hn::Lanes(d), count = static_cast<size_t>(n);
   size_t i = 0;
   for (; i + N <= count; i += N)
@@ -214,6 +224,18 @@ void PairResidualsImpl(const ResidualViews& rv, const PoseColumns& a, const Pose
   }
 }
 
+void PairResidualsImpl(const ResidualViews& rv, const PoseColumns& a, const PoseColumns& b, int n, const double* xyz,
+                       const double* gap, const double* score, const double* geometric, bool use_reprojection,
+                       double skip_gap, double* residual) {
+  // Fewer than 32 joints (the core joints, a body): 4 lanes at most, so that AVX-512 does not
+  // spend most of a short row in its padded last vector.
+  if (hn::Lanes(hn::ScalableTag<double>()) > 4 && n < 32) {
+    PairResidualsJoints(hn::CappedTag<double, 4>(), rv, a, b, n, xyz, gap, score, geometric, use_reprojection, skip_gap, residual);
+  } else {
+    PairResidualsJoints(hn::ScalableTag<double>(), rv, a, b, n, xyz, gap, score, geometric, use_reprojection, skip_gap, residual);
+  }
+}
+
 template <class D, class V = hn::Vec<D>>
 HWY_INLINE void ScoreLanes(D d, const JointKernel& kernel, const ResidualViews& rv, const PoseColumns& a,
                            const PoseColumns& b, size_t i, const double* xyz, const double* gap,
@@ -221,6 +243,8 @@ HWY_INLINE void ScoreLanes(D d, const JointKernel& kernel, const ResidualViews& 
   const V zero = hn::Zero(d);
   const V old_score = hn::LoadU(d, score + i);
   const V old_geometric = hn::LoadU(d, geometric + i);
+  const auto unscored = hn::Le(old_score, zero);
+  const auto earlier = hn::Ge(old_geometric, zero);
   V exponent = zero;
   auto negligible = hn::Lt(zero, zero);  // all false
   if (kernel.use_ray_gap) {
@@ -228,14 +252,18 @@ HWY_INLINE void ScoreLanes(D d, const JointKernel& kernel, const ResidualViews& 
     exponent = hn::Mul(r, r);
     negligible = hn::Gt(exponent, hn::Set(d, 30.0));
   }
+  if (hn::AllTrue(d, hn::Or(hn::Or(unscored, earlier), negligible))) {  // nothing to compute
+    const V new_geometric = hn::IfThenElse(hn::Or(unscored, earlier), old_geometric, zero);
+    hn::StoreU(hn::IfThenElse(unscored, old_score, new_geometric), d, score + i);
+    hn::StoreU(new_geometric, d, geometric + i);
+    return;
+  }
   if (kernel.use_reprojection) {
     const V e = residual != nullptr ? hn::LoadU(d, residual + i) : Residual(d, rv, a, b, xyz, i);
     const V r = hn::Mul(e, hn::Set(d, kernel.inv_residual));
     exponent = hn::Add(exponent, hn::Mul(r, r));
   }
   const V s = hn::IfThenZeroElse(negligible, ExpNeg(d, exponent));
-  const auto unscored = hn::Le(old_score, zero);
-  const auto earlier = hn::Ge(old_geometric, zero);
   // unscored: both unchanged; scored earlier: score = geometric; else both = s.
   const V new_geometric = hn::IfThenElse(hn::Or(unscored, earlier), old_geometric, s);
   const V new_score = hn::IfThenElse(unscored, old_score, new_geometric);
@@ -243,10 +271,8 @@ HWY_INLINE void ScoreLanes(D d, const JointKernel& kernel, const ResidualViews& 
   hn::StoreU(new_geometric, d, geometric + i);
 }
 
-void ScoreJointsImpl(const JointKernel& kernel, const ResidualViews& rv, const PoseColumns& a, const PoseColumns& b,
-                     int n, const double* xyz, const double* gap, const double* residual, double* score,
-                     double* geometric) {
-  const hn::ScalableTag<double> d;
+template <class D>
+HWY_INLINE void ScoreJointsJoints(D d, const JointKernel& kernel, const ResidualViews& rv, const PoseColumns& a, const PoseColumns& b, int n, const double* xyz, const double* gap, const double* residual, double* score, double* geometric) {
   const size_t N = hn::Lanes(d), count = static_cast<size_t>(n);
   size_t i = 0;
   for (; i + N <= count; i += N) ScoreLanes(d, kernel, rv, a, b, i, xyz, gap, residual, score, geometric);
@@ -263,6 +289,18 @@ void ScoreJointsImpl(const JointKernel& kernel, const ResidualViews& rv, const P
     ScoreLanes(d, kernel, rv, ta, tb, 0, txyz, tg, tr, ts, tgeo);
     t.Back(ts, score + i);
     t.Back(tgeo, geometric + i);
+  }
+}
+
+void ScoreJointsImpl(const JointKernel& kernel, const ResidualViews& rv, const PoseColumns& a, const PoseColumns& b,
+                     int n, const double* xyz, const double* gap, const double* residual, double* score,
+                     double* geometric) {
+  // Fewer than 32 joints (the core joints, a body): 4 lanes at most, so that AVX-512 does not
+  // spend most of a short row in its padded last vector.
+  if (hn::Lanes(hn::ScalableTag<double>()) > 4 && n < 32) {
+    ScoreJointsJoints(hn::CappedTag<double, 4>(), kernel, rv, a, b, n, xyz, gap, residual, score, geometric);
+  } else {
+    ScoreJointsJoints(hn::ScalableTag<double>(), kernel, rv, a, b, n, xyz, gap, residual, score, geometric);
   }
 }
 

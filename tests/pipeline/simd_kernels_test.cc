@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "core/fast_math.h"
+#include "core/pipeline/merge.h"
 #include "core/pipeline/proposal_scoring.h"
 #include "core/pipeline/triangulator.h"
 #include "core/triangulation.h"
@@ -274,6 +275,65 @@ TEST(SimdKernels, DistanceSumEqualsTheGroupStepsScalarLoopBitForBit) {
     }
     EXPECT_EQ(compared, 200 * 8);
   });
+}
+
+// steps::Merge with the kernel against its scalar code (simd::SetEnabled(false)) on random groups,
+// with repeated points (ties in the top_k choice), scores below the threshold, and every option.
+TEST(SimdKernels, MergeEqualsTheScalarMergeBitForBit) {
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> unit(0, 1);
+  int joints_kept = 0, compared = 0;
+  for (int round = 0; round < 60; ++round) {
+    const int n = kJointCounts[round % 8];
+    Proposals proposals;
+    proposals.Clear(n);
+    Groups groups;
+    groups.begin = {0};
+    const int num_groups = 1 + round % 3;
+    for (int g = 0; g < num_groups; ++g) {
+      const int members = 1 + static_cast<int>(9 * unit(rng));
+      for (int m = 0; m < members; ++m) {
+        proposals.Add(PosePair{m, m + 1});
+        const size_t base = static_cast<size_t>(proposals.size() - 1) * n;
+        for (int j = 0; j < n; ++j) {
+          const double spread = unit(rng) < 0.3 ? 0.4 : 0.05;
+          proposals.xyz[base + j] = Eigen::Vector3d(j + spread * unit(rng), g + spread * unit(rng), spread * unit(rng));
+          if (m > 0 && unit(rng) < 0.2) proposals.xyz[base + j] = proposals.xyz[base - n + j];  // a tie
+          proposals.score[base + j] = unit(rng) < 0.2 ? 0.0 : (unit(rng) < 0.1 ? 0.05 : unit(rng));
+        }
+      }
+      groups.begin.push_back(proposals.size());
+    }
+    for (int m = 0; m < proposals.size(); ++m) groups.members.push_back(m);
+    for (int variant = 0; variant < 6; ++variant) {
+      MergeOptions options;
+      options.min_joint_score = variant == 1 ? 0.1 : 0.0;
+      options.max_distance_m = variant == 2 ? 0.0 : (variant == 3 ? 0.03 : 0.2);
+      options.top_k = variant == 4 ? 0 : (variant == 5 ? 8 : 1 + round % 4);
+      options.score_weighted = variant % 2 == 0;
+      options.keep_best_when_all_far = variant != 3 || round % 2 == 0;
+      MergeScratch scratch;
+      Poses3D scalar, vectorised;
+      scalar.Clear(n);
+      simd::SetEnabled(false);
+      steps::Merge(options, {.proposals = proposals, .groups = groups}, &scratch, &scalar);
+      simd::SetEnabled(true);
+      simd::ForEachPathForTest([&] {
+        vectorised.Clear(n);
+        steps::Merge(options, {.proposals = proposals, .groups = groups}, &scratch, &vectorised);
+        ASSERT_EQ(vectorised.data.size(), scalar.data.size());
+        for (size_t i = 0; i < scalar.data.size(); ++i) {
+          ASSERT_TRUE(SameBits(vectorised.data[i], scalar.data[i]))
+              << simd::ActivePath() << " variant " << variant << " value " << i << ": " << vectorised.data[i]
+              << " vs " << scalar.data[i];
+        }
+        ++compared;
+      });
+      for (size_t i = 3; i < scalar.data.size(); i += 4) joints_kept += scalar.data[i] > 0 ? 1 : 0;
+    }
+  }
+  EXPECT_GT(compared, 360);
+  EXPECT_GT(joints_kept, 1000);
 }
 
 TEST(SimdKernels, ExpMatchesFastExpNegOverItsWholeRange) {
