@@ -448,6 +448,31 @@ void MergeGroupImpl(const MergeParams& p, const double* xyz, const double* score
   for (; j < joints; ++j) MergeLanes(d1, p, xyz, score, members, joints, j, dist, out);
 }
 
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE void PixelDistanceLanes(D d, const double* uv, const PoseColumns& c, size_t i, double* sum, int* count) {
+  V pu, pv;
+  hn::LoadInterleaved2(d, uv + 2 * i, pu, pv);
+  const V du = hn::Sub(pu, hn::LoadU(d, c.u + i)), dv = hn::Sub(pv, hn::LoadU(d, c.v + i));
+  const auto valid = hn::And(hn::Gt(hn::LoadU(d, c.score + i), hn::Zero(d)), hn::Eq(pu, pu));  // pu NaN: not seen
+  const V dist = hn::IfThenElseZero(valid, hn::Sqrt(hn::Add(hn::Mul(du, du), hn::Mul(dv, dv))));
+  HWY_ALIGN double lanes[hn::MaxLanes(d)];
+  hn::Store(dist, d, lanes);
+  for (size_t l = 0; l < hn::Lanes(d); ++l) *sum += lanes[l];  // joint order, as the scalar loop
+  *count += static_cast<int>(hn::CountTrue(d, valid));
+}
+
+double PixelDistanceSumImpl(const double* uv, const PoseColumns& c, int n, int* count) {
+  const hn::CappedTag<double, 4> d;  // rows of core joints: short
+  const hn::CappedTag<double, 1> d1;
+  const size_t N = hn::Lanes(d), joints = static_cast<size_t>(n);
+  double sum = 0;
+  *count = 0;
+  size_t i = 0;
+  for (; i + N <= joints; i += N) PixelDistanceLanes(d, uv, c, i, &sum, count);
+  for (; i < joints; ++i) PixelDistanceLanes(d1, uv, c, i, &sum, count);
+  return sum;
+}
+
 int64_t TargetImpl() { return HWY_TARGET; }
 
 size_t DoubleLanesImpl() { return hn::Lanes(hn::ScalableTag<double>()); }
@@ -506,6 +531,7 @@ HWY_EXPORT(PairResidualsImpl);
 HWY_EXPORT(ScoreJointsImpl);
 HWY_EXPORT(DistanceSumImpl);
 HWY_EXPORT(MergeGroupImpl);
+HWY_EXPORT(PixelDistanceSumImpl);
 HWY_EXPORT(TargetImpl);
 HWY_EXPORT(DoubleLanesImpl);
 
@@ -530,6 +556,10 @@ void ScoreJoints(const JointKernel& kernel, const ResidualViews& rv, const PoseC
 double DistanceSum(const double* xyz, const double* mean, const double* score, const int* count, int n,
                    int* common) {
   return HWY_DYNAMIC_DISPATCH(DistanceSumImpl)(xyz, mean, score, count, n, common);
+}
+
+double PixelDistanceSum(const double* uv, const PoseColumns& c, int n, int* count) {
+  return HWY_DYNAMIC_DISPATCH(PixelDistanceSumImpl)(uv, c, n, count);
 }
 
 size_t MergeScratchSize(int members) {

@@ -80,6 +80,11 @@ void ScoreJoints(const JointKernel& kernel, const ResidualViews& rv, const PoseC
 double DistanceSum(const double* xyz, const double* mean, const double* score, const int* count, int n,
                    int* common);
 
+// Sum over joints i in [0, n) with c.score[i] > 0 and uv_i seen (x not NaN) of the pixel distance
+// |uv_i - (c.u[i], c.v[i])| (uv: u v interleaved, as Eigen::Vector2d), added in joint order;
+// *count = the number of such joints. The pre-filter's distance of a pose from a previous person.
+double PixelDistanceSum(const double* uv, const PoseColumns& c, int n, int* count);
+
 // steps::Merge of one group (merge.h) over joints [0, n), lanes across joints: the group's `members`
 // proposals start at xyz (x y z interleaved, n points per proposal) and score (n per proposal).
 // Writes the person, x y z score per joint (4 x n, column-major). `dist` is scratch of

@@ -11,6 +11,7 @@
 #include <cstring>
 #include <functional>
 #include <iterator>
+#include <limits>
 #include <random>
 #include <set>
 #include <string>
@@ -269,6 +270,43 @@ TEST(SimdKernels, DistanceSumEqualsTheGroupStepsScalarLoopBitForBit) {
         int common = -1;
         const double sum = simd::DistanceSum(xyz.data()->data(), mean.data()->data(), score.data(), count.data(), n, &common);
         ASSERT_EQ(common, expected_common) << simd::ActivePath();
+        ASSERT_TRUE(SameBits(sum, expected)) << simd::ActivePath() << " " << sum << " vs " << expected;
+        ++compared;
+      }
+    }
+    EXPECT_EQ(compared, 200 * 8);
+  });
+}
+
+TEST(SimdKernels, PixelDistanceSumEqualsThePrefiltersScalarLoopBitForBit) {
+  simd::ForEachPathForTest([&] {
+    std::mt19937 rng(13);
+    std::uniform_real_distribution<double> px(0, 1000), unit(0, 1);
+    int compared = 0;
+    for (int round = 0; round < 200; ++round) {
+      for (const int n : kJointCounts) {
+        std::vector<Eigen::Vector2d> uv(n);
+        std::vector<Keypoint> kps(n);
+        for (int i = 0; i < n; ++i) {
+          uv[i] = unit(rng) < 0.15 ? Eigen::Vector2d::Constant(std::numeric_limits<double>::quiet_NaN())
+                                   : Eigen::Vector2d(px(rng), px(rng));
+          kps[i].u = px(rng);
+          kps[i].v = px(rng);
+          kps[i].score = unit(rng) < 0.2 ? 0.0 : unit(rng);
+        }
+        KeypointColumns columns;
+        columns.Assign(kps.data(), 1, n, nullptr, n);
+        double expected = 0;
+        int expected_count = 0;
+        for (int i = 0; i < n; ++i) {  // steps::Prefilter's loop
+          if (kps[i].score <= 0 || std::isnan(uv[i].x())) continue;
+          const double du = uv[i].x() - kps[i].u, dv = uv[i].y() - kps[i].v;
+          expected += std::sqrt(du * du + dv * dv);
+          ++expected_count;
+        }
+        int count = -1;
+        const double sum = simd::PixelDistanceSum(uv.data()->data(), simd::ColumnsOf(columns, 0), n, &count);
+        ASSERT_EQ(count, expected_count) << simd::ActivePath();
         ASSERT_TRUE(SameBits(sum, expected)) << simd::ActivePath() << " " << sum << " vs " << expected;
         ++compared;
       }
