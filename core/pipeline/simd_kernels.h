@@ -1,14 +1,15 @@
 // SPDX-License-Identifier: MIT
-// SIMD kernels of the hot steps, across the joints of one pose pair: mid-point triangulation
-// (steps 4 and 10), reprojection residuals and joint scores (steps 6-7 and 10). Structure of
-// arrays in (KeypointColumns, pipeline_types.h), the Proposals' arrays out.
+// SIMD kernels of the hot steps, one lane per joint: mid-point triangulation of a pose pair
+// (steps 4 and 10), its reprojection residuals and joint scores (steps 6-7 and 10), the pre-filter's
+// pixel distance (step 2), the group distance (step 9) and the merge of a group (step 11).
+// Structure of arrays in (KeypointColumns, pipeline_types.h), the steps' own arrays out.
 //
 // Each kernel is compiled for several instruction sets (Highway, simd_kernels.cc, private to
 // core) and the best one the CPU has is chosen at run time: the default build stays portable.
 // The kernels compute every joint independently with the same double-precision operations in the
 // same order as the scalar code they replace (no fused multiply-add: the file is compiled with
-// -ffp-contract=off), so every instruction set gives bit-identical results: a frame's output does
-// not depend on the machine. The scalar reference stays in proposal_scoring.h, pair_triangulation.h
+// -ffp-contract=off; sums over joints are added in joint order), so every instruction set gives
+// bit-identical results: a frame's output does not depend on the machine. The scalar reference stays in proposal_scoring.h, pair_triangulation.h
 // and fast_math.h, and the tests compare the two on random inputs for every instruction set.
 #pragma once
 
