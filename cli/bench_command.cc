@@ -20,6 +20,7 @@
 #include "engine/outputs/run_info.h"
 #include "engine/run.h"
 #include "core/errors.h"
+#include "core/pipeline/simd_kernels.h"
 #include "core/pipeline/triangulator.h"
 #include "core/text.h"
 #include "datasets/detections.h"
@@ -197,6 +198,7 @@ void RunBench(const BenchArgs& args) {
   if (args.json) {
     OrderedJson j;
     j["run"] = engine::RunInfoJson(info);
+    j["simd"] = simd::Enabled() ? simd::ActivePath() : "off";  // the instruction set the kernels ran on (chosen at run time)
     j["repeat"] = args.repeat;
     j["scenes"] = OrderedJson::array();
     for (const SceneResult& r : results) {
@@ -225,8 +227,9 @@ void RunBench(const BenchArgs& args) {
     std::cout << j.dump(2) << "\n";
     return;
   }
-  std::printf("rpt bench: one thread, median over %d passes after a warm-up; revision %s; %s; %s\n\n", args.repeat,
-              info.git_revision.c_str(), info.cpu.c_str(), info.compiler.c_str());
+  std::printf("rpt bench: one thread, median over %d passes after a warm-up; revision %s; %s; %s; SIMD %s\n\n",
+              args.repeat, info.git_revision.c_str(), info.cpu.c_str(), info.compiler.c_str(),
+              simd::Enabled() ? simd::ActivePath().c_str() : "off");
   std::printf("%-18s", "step (us)");
   for (const auto& r : results) std::printf(" %14s", r.scene.name.c_str());
   std::printf("\n");

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <limits>
 
+#include "core/pipeline/simd_kernels.h"
+
 namespace rpt {
 
 namespace {
@@ -38,6 +40,7 @@ int steps::Group(const GroupOptions& options, const GroupInput& in, GroupScratch
   int* const small_groups = &counters->small_groups;
   const int num = proposals->size();
   const int n = proposals->num_joints;
+  const bool use_simd = simd::Enabled();
   GroupScratch& s = *scratch;
   s.order.resize(num);
   for (int k = 0; k < num; ++k) s.order[k] = k;
@@ -71,13 +74,17 @@ int steps::Group(const GroupOptions& options, const GroupInput& in, GroupScratch
       // both cover the same joints); 3x leaves room for different joint subsets.
       const Eigen::Vector3d group_center = s.center_sum[g] / s.center_count[g];
       if ((group_center - center).squaredNorm() > 9.0 * options.max_distance_m * options.max_distance_m) continue;
-      double sum = 0;
       int common = 0;
-      for (int i = 0; i < n; ++i) {
-        const size_t gi = static_cast<size_t>(g) * n + i;
-        if (score[i] <= 0 || s.count[gi] == 0) continue;
-        sum += (xyz[i] - s.running_mean[gi]).norm();
-        ++common;
+      double sum = 0;
+      const size_t g0 = static_cast<size_t>(g) * n;
+      if (use_simd) {
+        sum = simd::DistanceSum(xyz->data(), s.running_mean[g0].data(), score, s.count.data() + g0, n, &common);
+      } else {
+        for (int i = 0; i < n; ++i) {
+          if (score[i] <= 0 || s.count[g0 + i] == 0) continue;
+          sum += (xyz[i] - s.running_mean[g0 + i]).norm();
+          ++common;
+        }
       }
       if (common < 2) continue;
       const double distance = sum / common;

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 
+#include "core/pipeline/simd_kernels.h"
+
 namespace rpt {
 
 int steps::Merge(const MergeOptions& options, const MergeInput& in, MergeScratch* scratch, Poses3D* persons) {
@@ -12,9 +14,25 @@ int steps::Merge(const MergeOptions& options, const MergeInput& in, MergeScratch
   auto& candidates = scratch->candidates;  // (squared distance to the mean, proposal)
   const double max_distance_sq = options.max_distance_m * options.max_distance_m;
   const double min_score = std::max(options.min_joint_score, 1e-300);  // score 0 = invalid in any case
+  // The SIMD kernel merges a group's joints side by side (its selection of the top_k reproduces
+  // the k minimum searches below, not nth_element's order).
+  const bool use_simd = simd::Enabled() && options.top_k <= 8;
+  const simd::MergeParams params{.min_score = min_score,
+                                 .max_distance_m = options.max_distance_m,
+                                 .max_distance_sq = max_distance_sq,
+                                 .top_k = options.top_k,
+                                 .score_weighted = options.score_weighted,
+                                 .keep_best = options.keep_best_when_all_far};
   for (int g = 0; g < groups.size(); ++g) {
     auto person = persons->AddPerson();
     const int first = groups.begin[g], last = groups.begin[g + 1];
+    if (use_simd && last > first) {
+      scratch->distances.resize(std::max(scratch->distances.size(), simd::MergeScratchSize(last - first)));
+      const size_t at = static_cast<size_t>(first) * n;
+      simd::MergeGroup(params, proposals.xyz[at].data(), proposals.score.data() + at, last - first, n,
+                       scratch->distances.data(), person.data());
+      continue;
+    }
     for (int j = 0; j < n; ++j) {
       candidates.clear();
       Eigen::Vector3d mean = Eigen::Vector3d::Zero();

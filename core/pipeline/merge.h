@@ -20,6 +20,7 @@ namespace rpt {
 
 struct MergeScratch {
   std::vector<std::pair<double, int>> candidates;  // (distance to mean, proposal)
+  std::vector<double> distances;                   // the SIMD kernel's (simd::MergeGroup)
 };
 
 namespace steps {

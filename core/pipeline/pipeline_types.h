@@ -32,6 +32,34 @@ struct Keypoint {
   double x = 0, y = 0;  // normalised undistorted camera coordinates
 };
 
+// The keypoints of every pose as columns (structure of arrays) for the SIMD kernels
+// (simd_kernels.h): field f of joint j of pose g at f[g * stride + j].
+struct KeypointColumns {
+  int stride = 0;  // joints per pose
+  std::vector<double> u, v, score, rx, ry, rz;
+
+  // Sets the columns of `poses` poses of `pose_size` keypoints each (kps): their joints `joints`
+  // (n indices into a pose), or the first n when `joints` is null.
+  void Assign(const Keypoint* kps, int poses, int pose_size, const int* joints, int n) {
+    stride = n;
+    const size_t size = static_cast<size_t>(poses) * n;
+    for (auto* c : {&u, &v, &score, &rx, &ry, &rz}) c->resize(size);
+    for (int g = 0; g < poses; ++g) {
+      const Keypoint* pose = kps + static_cast<size_t>(g) * pose_size;
+      const size_t at = static_cast<size_t>(g) * n;
+      for (int i = 0; i < n; ++i) {
+        const Keypoint& kp = pose[joints != nullptr ? joints[i] : i];
+        u[at + i] = kp.u;
+        v[at + i] = kp.v;
+        score[at + i] = kp.score;
+        rx[at + i] = kp.ray.x();
+        ry[at + i] = kp.ray.y();
+        rz[at + i] = kp.ray.z();
+      }
+    }
+  }
+};
+
 // Output of the undistort step: every usable 2D pose of the frame, all views concatenated.
 struct PreparedViews {
   int num_joints = 0;              // output joints (input + derived)
@@ -40,6 +68,11 @@ struct PreparedViews {
   std::vector<double> bbox_diag;   // per pose: bounding-box diagonal of its valid joints (px)
   std::vector<Keypoint> keypoints; // per pose and joint
   std::vector<int> view_begin;     // num_views + 1 offsets into the pose list
+  // The keypoints again as columns: all joints, and the core joints (`core_joints`, the undistort
+  // input's) in their slot order.
+  KeypointColumns all_columns;
+  KeypointColumns core_columns;
+  std::vector<int> core_joints;
 
   int num_poses() const { return static_cast<int>(view_of.size()); }
   const Keypoint* Pose(int g) const { return keypoints.data() + static_cast<size_t>(g) * num_joints; }

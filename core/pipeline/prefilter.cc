@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "core/pipeline/simd_kernels.h"
+
 namespace rpt {
 
 namespace {
@@ -133,6 +135,10 @@ int steps::Prefilter(const PrefilterOptions& options, const PrefilterInput& in, 
       }
     }
   }
+  // The SIMD kernel reads the core joints' columns of the undistort step (other subsets: scalar).
+  const bool columns = simd::Enabled() && num_core > 0 &&
+                       std::equal(core_joints.begin(), core_joints.end(), views.core_joints.begin(),
+                                  views.core_joints.end());
   for (int g = 0; g < views.num_poses(); ++g) {
     const Keypoint* kps = views.Pose(g);
     const Eigen::Vector2d* projected = scratch->projected.data() + views.view_of[g] * per_view;
@@ -142,7 +148,11 @@ int steps::Prefilter(const PrefilterOptions& options, const PrefilterInput& in, 
     for (int q = 0; q < num_previous; ++q) {
       double sum = 0;
       int n = 0;
-      for (int c = 0; c < num_core; ++c) {
+      if (columns) {
+        sum = simd::PixelDistanceSum(projected[static_cast<size_t>(q) * num_core].data(),
+                                     simd::ColumnsOf(views.core_columns, g), num_core, &n);
+      }
+      for (int c = 0; c < num_core && !columns; ++c) {
         const Keypoint& kp = kps[core_joints[c]];
         const Eigen::Vector2d& uv = projected[static_cast<size_t>(q) * num_core + c];
         if (kp.score <= 0 || std::isnan(uv.x())) continue;

@@ -23,6 +23,7 @@
 #include "core/fast_math.h"
 #include "core/pipeline/options.h"
 #include "core/pipeline/pipeline_types.h"
+#include "core/pipeline/simd_kernels.h"
 
 namespace rpt {
 
@@ -92,12 +93,13 @@ RPT_ALWAYS_INLINE ProposalViews ViewsOf(const PreparedViews& views, std::span<co
 // the 2D confidence: score[i] = geometric[i] = s_i for every triangulated joint, except joints
 // already scored by an earlier step for the same pair (geometric >= 0), which keep that score.
 // `joints` maps the proposal's joint slots to prepared-pose joints, `limbs` are indexed by slot;
-// `residual` (may be null: computed here) holds the joints' residuals. Returns the joints
-// invalidated by limb pruning.
+// `residual` (may be null: computed here) holds the joints' residuals. `columns` (may be null:
+// scalar code) are the keypoint columns of exactly the joints `joints` (the SIMD kernel reads
+// them). Returns the joints invalidated by limb pruning.
 RPT_ALWAYS_INLINE int ScoreJointsOfProposal(const ScoreKernel& kernel, const PreparedViews& views,
                                             const ProposalViews& pv, std::span<const int> joints,
                                             std::span<const ResolvedLimb> limbs, const double* residual,
-                                            Proposals* proposals, int k) {
+                                            const KeypointColumns* columns, Proposals* proposals, int k) {
   const int n = proposals->num_joints;
   const PosePair& pair = proposals->pairs[k];
   const Eigen::Vector3d* xyz = proposals->xyz.data() + pv.base;
@@ -106,7 +108,18 @@ RPT_ALWAYS_INLINE int ScoreJointsOfProposal(const ScoreKernel& kernel, const Pre
   double* geometric = proposals->geometric.data() + pv.base;
   const double scale_a = kernel.adaptive ? 1.0 / pv.ga.focal : 1.0 / views.bbox_diag[pair.a];
   const double scale_b = kernel.adaptive ? 1.0 / pv.gb.focal : 1.0 / views.bbox_diag[pair.b];
-  for (int i = 0; i < n; ++i) {
+  if (columns != nullptr) {
+    static_assert(sizeof(Eigen::Vector3d) == 3 * sizeof(double));
+    simd::ScoreJoints({.use_reprojection = kernel.use_reprojection,
+                       .use_ray_gap = kernel.use_ray_gap,
+                       .inv_residual = kernel.inv_residual,
+                       .inv_ray_gap = kernel.inv_ray_gap},
+                      {.Pa = pv.ga.P.data(), .Pb = pv.gb.P.data(), .scale_a = scale_a, .scale_b = scale_b,
+                       .adaptive = kernel.adaptive},
+                      simd::ColumnsOf(*columns, pair.a), simd::ColumnsOf(*columns, pair.b), n,
+                      reinterpret_cast<const double*>(xyz), gap, residual, score, geometric);
+  }
+  for (int i = 0; i < n && columns == nullptr; ++i) {
     if (score[i] <= 0) continue;
     if (geometric[i] >= 0) {  // computed by an earlier step for the same pair (core joints)
       score[i] = geometric[i];

@@ -63,6 +63,11 @@ int steps::Score(const ScoreOptions& options, const ScoreInput& in, NoiseScale* 
   const bool use_rep = options.mode != ScoreMode::kTriangulationOnly;
   const bool use_tri = options.mode != ScoreMode::kReprojectionOnly;
   const bool adaptive = options.scale == ScoreScale::kAdaptive;
+  // The SIMD kernels read the core joints' columns of the undistort step (other subsets: scalar).
+  const KeypointColumns* columns =
+      simd::Enabled() && std::equal(joints.begin(), joints.end(), views.core_joints.begin(), views.core_joints.end())
+          ? &views.core_columns
+          : nullptr;
 
   // Pass 1 (adaptive scale): every proposal's residuals, then the votes. Otherwise the single
   // pass below computes the residuals where the kernels need them.
@@ -84,18 +89,29 @@ int steps::Score(const ScoreOptions& options, const ScoreInput& in, NoiseScale* 
       const double* score = proposals->score.data() + base;
       const double* geometric = proposals->geometric.data() + base;
       double* residual = scratch->residual.data() + base;
+      if (columns != nullptr) {
+        const PosePair& pair = proposals->pairs[k];
+        simd::PairResiduals({.Pa = ga.P.data(), .Pb = gb.P.data(), .scale_a = 1.0 / ga.focal,
+                             .scale_b = 1.0 / gb.focal, .adaptive = true},
+                            simd::ColumnsOf(*columns, pair.a), simd::ColumnsOf(*columns, pair.b), n,
+                            reinterpret_cast<const double*>(xyz), gap, score, geometric, use_rep, skip_gap, residual);
+      } else {
+        for (int i = 0; i < n; ++i) {
+          residual[i] = -1;
+          if (score[i] <= 0 || geometric[i] >= 0) continue;  // not triangulated, or scored by an earlier step
+          if (!use_rep) {
+            residual[i] = 0;
+          } else if (gap[i] > skip_gap) {
+            residual[i] = 1e6;  // scored 0 below
+          } else {
+            residual[i] =
+                JointResidual(ga, gb, xyz[i], ka[joints[i]], kb[joints[i]], 1.0 / ga.focal, 1.0 / gb.focal, true);
+          }
+        }
+      }
       int votes = 0, plausible_votes = 0;
       for (int i = 0; i < n; ++i) {
-        residual[i] = -1;
-        if (score[i] <= 0 || geometric[i] >= 0) continue;  // not triangulated, or scored by an earlier step
-        if (!use_rep) {
-          residual[i] = 0;
-        } else if (gap[i] > skip_gap) {
-          residual[i] = 1e6;  // scored 0 below
-        } else {
-          residual[i] =
-              JointResidual(ga, gb, xyz[i], ka[joints[i]], kb[joints[i]], 1.0 / ga.focal, 1.0 / gb.focal, true);
-        }
+        if (residual[i] < 0) continue;  // not triangulated, or scored by an earlier step
         const double v = use_rep ? residual[i] : 0.5 * gap[i];
         scratch->votes[votes++] = v;
         plausible_votes += v <= NoiseScale::kMaxPlausibleResidualM ? 1 : 0;
@@ -114,7 +130,7 @@ int steps::Score(const ScoreOptions& options, const ScoreInput& in, NoiseScale* 
   for (int k = 0; k < proposals->size(); ++k) {
     const ProposalViews pv = ViewsOf(views, geometry, *proposals, k);
     const double* residual = adaptive ? scratch->residual.data() + pv.base : nullptr;
-    pruned += ScoreJointsOfProposal(*kernel, views, pv, joints, in.core_limbs, residual, proposals, k);
+    pruned += ScoreJointsOfProposal(*kernel, views, pv, joints, in.core_limbs, residual, columns, proposals, k);
     // Pair score over the joints both views saw; joint score gets the 2D confidence.
     double* score = proposals->score.data() + pv.base;
     int seen = 0;

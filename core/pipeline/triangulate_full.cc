@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "core/pipeline/pair_triangulation.h"
+#include "core/pipeline/simd_kernels.h"
 
 namespace rpt {
 namespace {
@@ -130,6 +131,10 @@ int steps::TriangulateFull(const TriangulateOptions& options, const TriangulateF
   const int num_joints = static_cast<int>(in.all_joints.size());
   proposals->Clear(num_joints);
   const int num_core = core.num_joints;
+  // The SIMD kernels read the columns of all joints (when the proposals' joints are exactly them;
+  // the DLT method takes the scalar path).
+  bool all_columns = simd::Enabled() && views.all_columns.stride == num_joints && options.method != TriangulationMethod::kDlt;
+  for (int j = 0; j < num_joints && all_columns; ++j) all_columns = in.all_joints[j] == j;
   for (int m : in.groups.members) {
     const PosePair& pair = core.pairs[m];
     const int k = proposals->size();
@@ -140,7 +145,7 @@ int steps::TriangulateFull(const TriangulateOptions& options, const TriangulateF
     double* joint_score = proposals->score.data() + base;
     double* geometric = proposals->geometric.data() + base;
     // Core joints: same pair, same rays -> same result; reuse it.
-    for (int c = 0; c < num_core; ++c) {
+    for (int c = 0; c < num_core && !all_columns; ++c) {
       const size_t from = static_cast<size_t>(m) * num_core + c;
       if (core.gap[from] < 0) continue;  // not triangulated
       const int j = in.core_joints[c];
@@ -153,6 +158,27 @@ int steps::TriangulateFull(const TriangulateOptions& options, const TriangulateF
     const ViewGeometry& gb = in.geometry[views.view_of[pair.b]];
     const Keypoint* ka = views.Pose(pair.a);
     const Keypoint* kb = views.Pose(pair.b);
+    if (all_columns) {
+      // All joints at once (the core joints again: the kernel gives the core step's numbers), then
+      // the core joints' results over them.
+      simd::TriangulatePair(ga.center.data(), simd::ColumnsOf(views.all_columns, pair.a), gb.center.data(),
+                            simd::ColumnsOf(views.all_columns, pair.b), num_joints, xyz->data(), gap, joint_score);
+      for (int c = 0; c < num_core; ++c) {
+        const size_t from = static_cast<size_t>(m) * num_core + c;
+        const int j = in.core_joints[c];
+        if (core.gap[from] < 0) {  // not triangulated
+          xyz[j].setZero();
+          gap[j] = -1;
+          joint_score[j] = 0;
+          continue;
+        }
+        xyz[j] = core.xyz[from];
+        gap[j] = core.gap[from];
+        geometric[j] = core.geometric[from];
+        joint_score[j] = 1.0;
+      }
+      continue;
+    }
     for (int j = 0; j < num_joints; ++j) {
       if (joint_score[j] > 0 || geometric[j] >= 0) continue;  // core joint done above
       if (TriangulateJoint(ga, gb, ka[j], kb[j], options.method, &xyz[j], &gap[j])) joint_score[j] = 1.0;
@@ -162,7 +188,8 @@ int steps::TriangulateFull(const TriangulateOptions& options, const TriangulateF
   int pruned = 0;
   for (int k = 0; k < proposals->size(); ++k) {
     const ProposalViews pv = ViewsOf(views, in.geometry, *proposals, k);
-    pruned += ScoreJointsOfProposal(in.kernel, views, pv, in.all_joints, in.limbs, nullptr, proposals, k);
+    pruned += ScoreJointsOfProposal(in.kernel, views, pv, in.all_joints, in.limbs, nullptr,
+                                    all_columns ? &views.all_columns : nullptr, proposals, k);
     if (!in.kernel.use_confidence) continue;
     double* score = proposals->score.data() + pv.base;
     for (int i = 0; i < num_joints; ++i)

@@ -112,6 +112,11 @@ int steps::Undistort(const UndistortOptions& options, const UndistortInput& in, 
     }
   }
   out.view_begin.push_back(out.num_poses());
+  // The same keypoints as columns for the SIMD kernels: all joints, and the core joints.
+  out.core_joints.assign(in.core_joints.begin(), in.core_joints.end());
+  out.all_columns.Assign(out.keypoints.data(), out.num_poses(), num_output_joints, nullptr, num_output_joints);
+  out.core_columns.Assign(out.keypoints.data(), out.num_poses(), num_output_joints, out.core_joints.data(),
+                          static_cast<int>(out.core_joints.size()));
   return out.num_poses();
 }
 

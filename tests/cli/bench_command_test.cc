@@ -29,6 +29,12 @@ TEST(BenchCommand, ReportsStepsAccuracyAndBaseline) {
   EXPECT_GT(s["speedup"].get<double>(), 1.0);
   EXPECT_LT(s["mpjpe_mm"].get<double>(), 60.0);
   EXPECT_TRUE(j["run"].contains("cpu"));
+  // The instruction set the SIMD kernels ran on (chosen at run time), in the JSON and the header.
+  const std::string simd = j["simd"].get<std::string>();
+  EXPECT_TRUE(simd == "scalar" || simd == "SSE4" || simd == "AVX2" || simd == "AVX-512") << simd;
+  const test::CommandResult text = test::RunRpt("bench --scene few-views --frames 5 --repeat 1 --no-baseline");
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_NE(text.out.find("; SIMD " + simd + "\n"), std::string::npos) << text.out;
   EXPECT_EQ(test::RunRpt("bench --scene nosuch").exit_code, 2);
 }
 

@@ -1,0 +1,601 @@
+// SPDX-License-Identifier: MIT
+// The kernels of simd_kernels.h, written once with Highway and compiled for each instruction set
+// below (foreach_target.h re-includes this file per target); HWY_DYNAMIC_DISPATCH picks the best
+// one the CPU supports. Every lane is computed with the scalar code's operations in its order
+// (see the header), so each target gives the scalar result bit for bit.
+
+// Targets: the portable fallback (EMU128), SSE4, AVX2 and AVX-512 (AVX3). SSSE3 and the newer
+// AVX-512 variants add compile time for no gain on double-precision kernels.
+#ifndef HWY_DISABLED_TARGETS
+#define HWY_DISABLED_TARGETS (HWY_SSSE3 | HWY_AVX3_DL)
+#endif
+
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "core/pipeline/simd_kernels.cc"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/highway.h>
+
+#include "core/pipeline/simd_kernels.h"
+
+#include <algorithm>
+#include <limits>
+
+HWY_BEFORE_NAMESPACE();
+namespace rpt::simd {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+// The last, partial vector of joints runs as a full vector over copies: `Tail` copies r < N
+// values of each input to lanes [0, r) of a buffer (the other lanes 0: a missing joint) and the
+// outputs' lanes [0, r) back. Lanes are independent, so the padding changes no result.
+template <size_t kMax>
+struct Tail {
+  explicit Tail(size_t rest) : r(rest) {}
+  size_t r;
+  double in[16][kMax];
+  double out[4][3 * kMax];
+  int used_in = 0, used_out = 0;
+
+  const double* In(const double* p, size_t scale = 1) {
+    double* b = in[used_in++];
+    for (size_t k = 0; k < kMax; ++k) b[k] = 0.0;
+    if (p != nullptr) std::copy(p, p + scale * r, b);
+    return p != nullptr ? b : nullptr;
+  }
+  const double* In3(const double* p) {  // x y z interleaved: three rows of `in`
+    double* b = in[used_in];
+    used_in += 3;
+    for (size_t k = 0; k < 3 * kMax; ++k) b[k] = 0.0;
+    std::copy(p, p + 3 * r, b);
+    return b;
+  }
+  double* Out() { return out[used_out++]; }
+  void Back(const double* b, double* p, size_t scale = 1) { std::copy(b, b + scale * r, p); }
+};
+
+PoseColumns TailColumns(Tail<HWY_MAX_BYTES / 8>& t, const PoseColumns& c, size_t i, bool uv, bool rays) {
+  PoseColumns out{};
+  out.score = t.In(c.score + i);
+  if (uv) {
+    out.u = t.In(c.u + i);
+    out.v = t.In(c.v + i);
+  }
+  if (rays) {
+    out.rx = t.In(c.rx + i);
+    out.ry = t.In(c.ry + i);
+    out.rz = t.In(c.rz + i);
+  }
+  return out;
+}
+
+// exp(-x), FastExpNeg (fast_math.h) lane by lane.
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE V ExpNeg(D d, V x) {
+  const hn::RebindToSigned<D> di;
+  const auto in_range = hn::Lt(x, hn::Set(d, 700.0));  // false for NaN too
+  const V t = hn::Mul(hn::Neg(x), hn::Set(d, 1.4426950408889634));
+  const V n = hn::Round(t);  // to nearest, ties to even: std::nearbyint in the default rounding mode
+  const V f = hn::Sub(t, n);
+  const V l = hn::Mul(hn::Set(d, 0.6931471805599453), f);
+  V p = hn::Set(d, 1.0 / 5040);
+  p = hn::Add(hn::Set(d, 1.0 / 720), hn::Mul(l, p));
+  p = hn::Add(hn::Set(d, 1.0 / 120), hn::Mul(l, p));
+  p = hn::Add(hn::Set(d, 1.0 / 24), hn::Mul(l, p));
+  p = hn::Add(hn::Set(d, 1.0 / 6), hn::Mul(l, p));
+  p = hn::Add(hn::Set(d, 0.5), hn::Mul(l, p));
+  p = hn::Add(hn::Set(d, 1.0), hn::Mul(l, p));
+  p = hn::Add(hn::Set(d, 1.0), hn::Mul(l, p));
+  // Out-of-range lanes would overflow the conversion: give them n = 0 (their result is 0 anyway).
+  const auto exponent = hn::Add(hn::ConvertTo(di, hn::IfThenElseZero(in_range, n)), hn::Set(di, int64_t{1023}));
+  const auto positive = hn::RebindMask(d, hn::Gt(exponent, hn::Zero(di)));
+  const V scale = hn::BitCast(d, hn::ShiftLeft<52>(exponent));
+  return hn::IfThenElseZero(hn::And(in_range, positive), hn::Mul(p, scale));
+}
+
+// Reprojection error (px) of (x, y, z) against (u, v) in the view of projection P (column-major
+// 3x4), and the depth: ReprojectionErrorSq then its square root, lane by lane. The sums follow
+// Eigen's evaluation of P.leftCols<3>() * point in the scalar code (SSE2 baseline): rows 0-1 as
+// one packet, column by column ((a + b) + c), row 2 as an unrolled reduction (a + (b + c)).
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE V ReprojectionError(D d, const double* P, V x, V y, V z, V u, V v, V* depth) {
+  const V hx = hn::Add(hn::Add(hn::Add(hn::Mul(hn::Set(d, P[0]), x), hn::Mul(hn::Set(d, P[3]), y)),
+                               hn::Mul(hn::Set(d, P[6]), z)),
+                       hn::Set(d, P[9]));
+  const V hy = hn::Add(hn::Add(hn::Add(hn::Mul(hn::Set(d, P[1]), x), hn::Mul(hn::Set(d, P[4]), y)),
+                               hn::Mul(hn::Set(d, P[7]), z)),
+                       hn::Set(d, P[10]));
+  const V hz = hn::Add(hn::Add(hn::Mul(hn::Set(d, P[2]), x),
+                               hn::Add(hn::Mul(hn::Set(d, P[5]), y), hn::Mul(hn::Set(d, P[8]), z))),
+                       hn::Set(d, P[11]));
+  *depth = hz;
+  const V inv_z = hn::Div(hn::Set(d, 1.0), hz);
+  const V du = hn::Sub(hn::Mul(hx, inv_z), u);
+  const V dv = hn::Sub(hn::Mul(hy, inv_z), v);
+  const V sq = hn::IfThenElse(hn::Le(hz, hn::Zero(d)), hn::Set(d, 1e12), hn::Add(hn::Mul(du, du), hn::Mul(dv, dv)));
+  return hn::Sqrt(sq);
+}
+
+// JointResidual (proposal_scoring.h) of joints [i, i + Lanes(d)).
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE V Residual(D d, const ResidualViews& rv, const PoseColumns& a, const PoseColumns& b, const double* xyz,
+                      size_t i) {
+  V x, y, z;
+  hn::LoadInterleaved3(d, xyz + 3 * i, x, y, z);
+  V za, zb;
+  const V ea = ReprojectionError(d, rv.Pa, x, y, z, hn::LoadU(d, a.u + i), hn::LoadU(d, a.v + i), &za);
+  const V eb = ReprojectionError(d, rv.Pb, x, y, z, hn::LoadU(d, b.u + i), hn::LoadU(d, b.v + i), &zb);
+  const V half = hn::Set(d, 0.5);
+  const V sa = hn::Set(d, rv.scale_a), sb = hn::Set(d, rv.scale_b);
+  const V r = rv.adaptive ? hn::Mul(half, hn::Add(hn::Mul(hn::Mul(ea, za), sa), hn::Mul(hn::Mul(eb, zb), sb)))
+                          : hn::Mul(half, hn::Add(hn::Mul(ea, sa), hn::Mul(eb, sb)));
+  const auto behind = hn::Or(hn::Le(za, hn::Zero(d)), hn::Le(zb, hn::Zero(d)));
+  return hn::IfThenElse(behind, hn::Set(d, 1e6), r);
+}
+
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE void TriangulateLanes(D d, const double* ca, const PoseColumns& a, const double* cb, const PoseColumns& b,
+                                 size_t i, double* xyz, double* gap, double* score) {
+  const V zero = hn::Zero(d);
+  const V d1x = hn::LoadU(d, a.rx + i), d1y = hn::LoadU(d, a.ry + i), d1z = hn::LoadU(d, a.rz + i);
+  const V d2x = hn::LoadU(d, b.rx + i), d2y = hn::LoadU(d, b.ry + i), d2z = hn::LoadU(d, b.rz + i);
+  const V w0x = hn::Set(d, ca[0] - cb[0]), w0y = hn::Set(d, ca[1] - cb[1]), w0z = hn::Set(d, ca[2] - cb[2]);
+  auto dot = [](V px, V py, V pz, V qx, V qy, V qz) {
+    return hn::Add(hn::Add(hn::Mul(px, qx), hn::Mul(py, qy)), hn::Mul(pz, qz));
+  };
+  const V A = dot(d1x, d1y, d1z, d1x, d1y, d1z), B = dot(d1x, d1y, d1z, d2x, d2y, d2z);
+  const V C = dot(d2x, d2y, d2z, d2x, d2y, d2z);
+  const V Dd = dot(d1x, d1y, d1z, w0x, w0y, w0z), E = dot(d2x, d2y, d2z, w0x, w0y, w0z);
+  const V denom = hn::Sub(hn::Mul(A, C), hn::Mul(B, B));
+  auto ok = hn::Gt(denom, hn::Mul(hn::Mul(hn::Set(d, 1e-12), A), C));  // false for NaN
+  ok = hn::And(ok, hn::And(hn::Gt(hn::LoadU(d, a.score + i), zero), hn::Gt(hn::LoadU(d, b.score + i), zero)));
+  const V s = hn::Div(hn::Sub(hn::Mul(B, E), hn::Mul(C, Dd)), denom);
+  const V t = hn::Div(hn::Sub(hn::Mul(A, E), hn::Mul(B, Dd)), denom);
+  ok = hn::And(ok, hn::And(hn::Gt(s, zero), hn::Gt(t, zero)));
+  const V p1x = hn::Add(hn::Set(d, ca[0]), hn::Mul(s, d1x)), p2x = hn::Add(hn::Set(d, cb[0]), hn::Mul(t, d2x));
+  const V p1y = hn::Add(hn::Set(d, ca[1]), hn::Mul(s, d1y)), p2y = hn::Add(hn::Set(d, cb[1]), hn::Mul(t, d2y));
+  const V p1z = hn::Add(hn::Set(d, ca[2]), hn::Mul(s, d1z)), p2z = hn::Add(hn::Set(d, cb[2]), hn::Mul(t, d2z));
+  const V half = hn::Set(d, 0.5);
+  const V ex = hn::Sub(p1x, p2x), ey = hn::Sub(p1y, p2y), ez = hn::Sub(p1z, p2z);
+  const V g = hn::Sqrt(dot(ex, ey, ez, ex, ey, ez));
+  hn::StoreInterleaved3(hn::IfThenElseZero(ok, hn::Mul(half, hn::Add(p1x, p2x))),
+                        hn::IfThenElseZero(ok, hn::Mul(half, hn::Add(p1y, p2y))),
+                        hn::IfThenElseZero(ok, hn::Mul(half, hn::Add(p1z, p2z))), d, xyz + 3 * i);
+  hn::StoreU(hn::IfThenElse(ok, g, hn::Set(d, -1.0)), d, gap + i);
+  hn::StoreU(hn::IfThenElseZero(ok, hn::Set(d, 1.0)), d, score + i);
+}
+
+template <class D>
+HWY_INLINE void TriangulatePairJoints(D d, const double* ca, const PoseColumns& a, const double* cb, const PoseColumns& b, int n, double* xyz, double* gap, double* score) {
+  const size_t N = hn::Lanes(d), count = static_cast<size_t>(n);
+  size_t i = 0;
+  for (; i + N <= count; i += N) TriangulateLanes(d, ca, a, cb, b, i, xyz, gap, score);
+  if (i < count) {
+    Tail<HWY_MAX_BYTES / 8> t(count - i);
+    const PoseColumns ta = TailColumns(t, a, i, false, true), tb = TailColumns(t, b, i, false, true);
+    double *x = t.Out(), *g = t.Out(), *sc = t.Out();
+    TriangulateLanes(d, ca, ta, cb, tb, 0, x, g, sc);
+    t.Back(x, xyz + 3 * i, 3);
+    t.Back(g, gap + i);
+    t.Back(sc, score + i);
+  }
+}
+
+void TriangulatePairImpl(const double* ca, const PoseColumns& a, const double* cb, const PoseColumns& b, int n,
+                         double* xyz, double* gap, double* score) {
+  // Fewer than 32 joints (the core joints, a body): 4 lanes at most, so that AVX-512 does not
+  // spend most of a short row in its padded last vector.
+  if (hn::Lanes(hn::ScalableTag<double>()) > 4 && n < 32) {
+    TriangulatePairJoints(hn::CappedTag<double, 4>(), ca, a, cb, b, n, xyz, gap, score);
+  } else {
+    TriangulatePairJoints(hn::ScalableTag<double>(), ca, a, cb, b, n, xyz, gap, score);
+  }
+}
+
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE void ResidualLanes(D d, const ResidualViews& rv, const PoseColumns& a, const PoseColumns& b, size_t i,
+                              const double* xyz, const double* gap, const double* score, const double* geometric,
+                              bool use_reprojection, double skip_gap, double* residual) {
+  const auto skipped = hn::Or(hn::Le(hn::LoadU(d, score + i), hn::Zero(d)),
+                              hn::Ge(hn::LoadU(d, geometric + i), hn::Zero(d)));
+  V r = hn::Zero(d);
+  if (use_reprojection) {
+    const auto far = hn::Gt(hn::LoadU(d, gap + i), hn::Set(d, skip_gap));
+    // Like the scalar code, no projection when no joint needs one (e.g. the pairs of different people).
+    r = hn::AllTrue(d, hn::Or(skipped, far)) ? hn::Set(d, 1e6)
+                                              : hn::IfThenElse(far, hn::Set(d, 1e6), Residual(d, rv, a, b, xyz, i));
+  }
+  hn::StoreU(hn::IfThenElse(skipped, hn::Set(d, -1.0), r), d, residual + i);
+}
+
+template <class D>
+HWY_INLINE void PairResidualsJoints(D d, const ResidualViews& rv, const PoseColumns& a, const PoseColumns& b, int n, const double* xyz, const double* gap, const double* score, const double* geometric, bool use_reprojection, double skip_gap, double* residual) {
+  const size_t N = hn::Lanes(d), count = static_cast<size_t>(n);
+  size_t i = 0;
+  for (; i + N <= count; i += N)
+    ResidualLanes(d, rv, a, b, i, xyz, gap, score, geometric, use_reprojection, skip_gap, residual);
+  if (i < count) {
+    Tail<HWY_MAX_BYTES / 8> t(count - i);
+    const PoseColumns ta = TailColumns(t, a, i, true, false), tb = TailColumns(t, b, i, true, false);
+    const double* txyz = t.In3(xyz + 3 * i);
+    const double *tg = t.In(gap + i), *ts = t.In(score + i), *tgeo = t.In(geometric + i);
+    double* r = t.Out();
+    ResidualLanes(d, rv, ta, tb, 0, txyz, tg, ts, tgeo, use_reprojection, skip_gap, r);
+    t.Back(r, residual + i);
+  }
+}
+
+void PairResidualsImpl(const ResidualViews& rv, const PoseColumns& a, const PoseColumns& b, int n, const double* xyz,
+                       const double* gap, const double* score, const double* geometric, bool use_reprojection,
+                       double skip_gap, double* residual) {
+  // Fewer than 32 joints (the core joints, a body): 4 lanes at most, so that AVX-512 does not
+  // spend most of a short row in its padded last vector.
+  if (hn::Lanes(hn::ScalableTag<double>()) > 4 && n < 32) {
+    PairResidualsJoints(hn::CappedTag<double, 4>(), rv, a, b, n, xyz, gap, score, geometric, use_reprojection, skip_gap, residual);
+  } else {
+    PairResidualsJoints(hn::ScalableTag<double>(), rv, a, b, n, xyz, gap, score, geometric, use_reprojection, skip_gap, residual);
+  }
+}
+
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE void ScoreLanes(D d, const JointKernel& kernel, const ResidualViews& rv, const PoseColumns& a,
+                           const PoseColumns& b, size_t i, const double* xyz, const double* gap,
+                           const double* residual, double* score, double* geometric) {
+  const V zero = hn::Zero(d);
+  const V old_score = hn::LoadU(d, score + i);
+  const V old_geometric = hn::LoadU(d, geometric + i);
+  const auto unscored = hn::Le(old_score, zero);
+  const auto earlier = hn::Ge(old_geometric, zero);
+  V exponent = zero;
+  auto negligible = hn::Lt(zero, zero);  // all false
+  if (kernel.use_ray_gap) {
+    const V r = hn::Mul(hn::LoadU(d, gap + i), hn::Set(d, kernel.inv_ray_gap));
+    exponent = hn::Mul(r, r);
+    negligible = hn::Gt(exponent, hn::Set(d, 30.0));
+  }
+  if (hn::AllTrue(d, hn::Or(hn::Or(unscored, earlier), negligible))) {  // nothing to compute
+    const V new_geometric = hn::IfThenElse(hn::Or(unscored, earlier), old_geometric, zero);
+    hn::StoreU(hn::IfThenElse(unscored, old_score, new_geometric), d, score + i);
+    hn::StoreU(new_geometric, d, geometric + i);
+    return;
+  }
+  if (kernel.use_reprojection) {
+    const V e = residual != nullptr ? hn::LoadU(d, residual + i) : Residual(d, rv, a, b, xyz, i);
+    const V r = hn::Mul(e, hn::Set(d, kernel.inv_residual));
+    exponent = hn::Add(exponent, hn::Mul(r, r));
+  }
+  const V s = hn::IfThenZeroElse(negligible, ExpNeg(d, exponent));
+  // unscored: both unchanged; scored earlier: score = geometric; else both = s.
+  const V new_geometric = hn::IfThenElse(hn::Or(unscored, earlier), old_geometric, s);
+  const V new_score = hn::IfThenElse(unscored, old_score, new_geometric);
+  hn::StoreU(new_score, d, score + i);
+  hn::StoreU(new_geometric, d, geometric + i);
+}
+
+template <class D>
+HWY_INLINE void ScoreJointsJoints(D d, const JointKernel& kernel, const ResidualViews& rv, const PoseColumns& a, const PoseColumns& b, int n, const double* xyz, const double* gap, const double* residual, double* score, double* geometric) {
+  const size_t N = hn::Lanes(d), count = static_cast<size_t>(n);
+  size_t i = 0;
+  for (; i + N <= count; i += N) ScoreLanes(d, kernel, rv, a, b, i, xyz, gap, residual, score, geometric);
+  if (i < count) {
+    Tail<HWY_MAX_BYTES / 8> t(count - i);
+    const PoseColumns ta = TailColumns(t, a, i, true, false), tb = TailColumns(t, b, i, true, false);
+    const double* txyz = t.In3(xyz + 3 * i);
+    const double *tg = t.In(gap + i), *tr = t.In(residual != nullptr ? residual + i : nullptr);
+    double *ts = t.Out(), *tgeo = t.Out();
+    std::copy(score + i, score + count, ts);
+    std::copy(geometric + i, geometric + count, tgeo);
+    std::fill(ts + (count - i), ts + hn::MaxLanes(d), 0.0);
+    std::fill(tgeo + (count - i), tgeo + hn::MaxLanes(d), -1.0);
+    ScoreLanes(d, kernel, rv, ta, tb, 0, txyz, tg, tr, ts, tgeo);
+    t.Back(ts, score + i);
+    t.Back(tgeo, geometric + i);
+  }
+}
+
+void ScoreJointsImpl(const JointKernel& kernel, const ResidualViews& rv, const PoseColumns& a, const PoseColumns& b,
+                     int n, const double* xyz, const double* gap, const double* residual, double* score,
+                     double* geometric) {
+  // Fewer than 32 joints (the core joints, a body): 4 lanes at most, so that AVX-512 does not
+  // spend most of a short row in its padded last vector.
+  if (hn::Lanes(hn::ScalableTag<double>()) > 4 && n < 32) {
+    ScoreJointsJoints(hn::CappedTag<double, 4>(), kernel, rv, a, b, n, xyz, gap, residual, score, geometric);
+  } else {
+    ScoreJointsJoints(hn::ScalableTag<double>(), kernel, rv, a, b, n, xyz, gap, residual, score, geometric);
+  }
+}
+
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE void DistanceSumLanes(D d, const double* xyz, const double* mean, const double* score, const int* count,
+                                 size_t i, double* sum, int* common) {
+  const hn::Rebind<int32_t, D> d32;
+  const hn::RebindToSigned<D> di;
+  V x, y, z, mx, my, mz;
+  hn::LoadInterleaved3(d, xyz + 3 * i, x, y, z);
+  hn::LoadInterleaved3(d, mean + 3 * i, mx, my, mz);
+  const V dx = hn::Sub(x, mx), dy = hn::Sub(y, my), dz = hn::Sub(z, mz);
+  const auto counted = hn::RebindMask(d, hn::Gt(hn::PromoteTo(di, hn::LoadU(d32, count + i)), hn::Zero(di)));
+  const auto valid = hn::And(hn::Gt(hn::LoadU(d, score + i), hn::Zero(d)), counted);
+  // The norm as Eigen's (x^2 + y^2) + z^2; invalid joints add +0, which leaves the sum's bits.
+  const V norm = hn::IfThenElseZero(valid, hn::Sqrt(hn::Add(hn::Add(hn::Mul(dx, dx), hn::Mul(dy, dy)), hn::Mul(dz, dz))));
+  HWY_ALIGN double lanes[hn::MaxLanes(d)];
+  hn::Store(norm, d, lanes);
+  for (size_t l = 0; l < hn::Lanes(d); ++l) *sum += lanes[l];  // joint order, as the scalar loop
+  *common += static_cast<int>(hn::CountTrue(d, valid));
+}
+
+double DistanceSumImpl(const double* xyz, const double* mean, const double* score, const int* count, int n,
+                       int* common) {
+  const hn::ScalableTag<double> d;
+  const hn::CappedTag<double, 1> d1;
+  const size_t N = hn::Lanes(d), joints = static_cast<size_t>(n);
+  double sum = 0;
+  *common = 0;
+  size_t i = 0;
+  for (; i + N <= joints; i += N) DistanceSumLanes(d, xyz, mean, score, count, i, &sum, common);
+  for (; i < joints; ++i) DistanceSumLanes(d1, xyz, mean, score, count, i, &sum, common);
+  return sum;
+}
+
+// Merge of joints [j, j + Lanes(d)) of one group: steps::Merge's loop lane by lane (merge.h). `dist`
+// holds members x Lanes(d) squared distances: NaN = not (or no longer) a candidate.
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE void MergeLanes(D d, const MergeParams& p, const double* xyz, const double* score, int members, size_t n,
+                           size_t j, double* dist, double* out) {
+  const size_t N = hn::Lanes(d);
+  const V zero = hn::Zero(d), one = hn::Set(d, 1.0), nan = hn::Set(d, std::numeric_limits<double>::quiet_NaN());
+  const V min_score = hn::Set(d, p.min_score);
+  // Candidates (score >= min_score): their count, sum (member order) and the best-scoring one.
+  V count = zero, sx = zero, sy = zero, sz = zero, best_score = hn::Set(d, -1.0), bx = zero, by = zero, bz = zero;
+  for (int m = 0; m < members; ++m) {
+    const size_t at = static_cast<size_t>(m) * n + j;
+    const V sc = hn::LoadU(d, score + at);
+    V x, y, z;
+    hn::LoadInterleaved3(d, xyz + 3 * at, x, y, z);
+    const auto valid = hn::Ge(sc, min_score);
+    count = hn::Add(count, hn::IfThenElseZero(valid, one));
+    sx = hn::Add(sx, hn::IfThenElseZero(valid, x));
+    sy = hn::Add(sy, hn::IfThenElseZero(valid, y));
+    sz = hn::Add(sz, hn::IfThenElseZero(valid, z));
+    const auto better = hn::And(valid, hn::Gt(sc, best_score));
+    best_score = hn::IfThenElse(better, sc, best_score);
+    bx = hn::IfThenElse(better, x, bx);
+    by = hn::IfThenElse(better, y, by);
+    bz = hn::IfThenElse(better, z, bz);
+  }
+  const auto any = hn::Gt(count, zero);
+  const V mx = hn::Div(sx, count), my = hn::Div(sy, count), mz = hn::Div(sz, count);
+  // The distance filter; the kept candidates summed in member order.
+  const V max_sq = hn::Set(d, p.max_distance_sq);
+  V kept_count = zero, ax = zero, ay = zero, az = zero, aw = zero, as = zero;
+  for (int m = 0; m < members; ++m) {
+    const size_t at = static_cast<size_t>(m) * n + j;
+    const V sc = hn::LoadU(d, score + at);
+    V x, y, z;
+    hn::LoadInterleaved3(d, xyz + 3 * at, x, y, z);
+    const V dx = hn::Sub(x, mx), dy = hn::Sub(y, my), dz = hn::Sub(z, mz);
+    const V dsq = hn::Add(hn::Add(hn::Mul(dx, dx), hn::Mul(dy, dy)), hn::Mul(dz, dz));
+    auto kept = hn::Ge(sc, min_score);
+    if (p.max_distance_m > 0) kept = hn::And(kept, hn::Le(dsq, max_sq));
+    hn::StoreU(hn::IfThenElse(kept, dsq, nan), d, dist + static_cast<size_t>(m) * N);
+    kept_count = hn::Add(kept_count, hn::IfThenElseZero(kept, one));
+    const V w = p.score_weighted ? sc : one;
+    ax = hn::Add(ax, hn::IfThenElseZero(kept, hn::Mul(w, x)));
+    ay = hn::Add(ay, hn::IfThenElseZero(kept, hn::Mul(w, y)));
+    az = hn::Add(az, hn::IfThenElseZero(kept, hn::Mul(w, z)));
+    aw = hn::Add(aw, hn::IfThenElseZero(kept, w));
+    as = hn::Add(as, hn::IfThenElseZero(kept, sc));
+  }
+  V rx = hn::Div(ax, aw), ry = hn::Div(ay, aw), rz = hn::Div(az, aw), rs = hn::Div(as, kept_count);
+  // More than top_k kept: the top_k closest (ties: the earlier member), summed closest first.
+  const V top_k = hn::Set(d, static_cast<double>(p.top_k));
+  const auto many = hn::Gt(kept_count, top_k);
+  if (p.top_k > 0 && !hn::AllFalse(d, many)) {
+    V tx = zero, ty = zero, tz = zero, tw = zero, ts = zero;
+    for (int t = 0; t < p.top_k; ++t) {
+      V low = hn::Set(d, std::numeric_limits<double>::infinity()), low_m = hn::Set(d, -1.0);
+      V lx = zero, ly = zero, lz = zero, ls = zero;
+      for (int m = 0; m < members; ++m) {
+        const size_t at = static_cast<size_t>(m) * n + j;
+        const V dm = hn::LoadU(d, dist + static_cast<size_t>(m) * N);
+        const auto less = hn::Lt(dm, low);  // false for NaN: not a candidate
+        if (hn::AllFalse(d, less)) continue;
+        V x, y, z;
+        hn::LoadInterleaved3(d, xyz + 3 * at, x, y, z);
+        low = hn::IfThenElse(less, dm, low);
+        low_m = hn::IfThenElse(less, hn::Set(d, static_cast<double>(m)), low_m);
+        lx = hn::IfThenElse(less, x, lx);
+        ly = hn::IfThenElse(less, y, ly);
+        lz = hn::IfThenElse(less, z, lz);
+        ls = hn::IfThenElse(less, hn::LoadU(d, score + at), ls);
+      }
+      for (int m = 0; m < members; ++m) {  // the chosen one is no longer a candidate
+        double* dm = dist + static_cast<size_t>(m) * N;
+        hn::StoreU(hn::IfThenElse(hn::Eq(low_m, hn::Set(d, static_cast<double>(m))), nan, hn::LoadU(d, dm)), d, dm);
+      }
+      const V w = p.score_weighted ? ls : one;
+      tx = hn::Add(tx, hn::Mul(w, lx));
+      ty = hn::Add(ty, hn::Mul(w, ly));
+      tz = hn::Add(tz, hn::Mul(w, lz));
+      tw = hn::Add(tw, w);
+      ts = hn::Add(ts, ls);
+    }
+    rx = hn::IfThenElse(many, hn::Div(tx, tw), rx);
+    ry = hn::IfThenElse(many, hn::Div(ty, tw), ry);
+    rz = hn::IfThenElse(many, hn::Div(tz, tw), rz);
+    rs = hn::IfThenElse(many, hn::Div(ts, top_k), rs);
+  }
+  // None kept: the best-scoring candidate alone (keep_best_when_all_far), else missing.
+  const auto none = hn::Eq(kept_count, zero);
+  if (p.keep_best) {
+    const V w = p.score_weighted ? best_score : one;
+    rx = hn::IfThenElse(none, hn::Div(hn::Mul(w, bx), w), rx);
+    ry = hn::IfThenElse(none, hn::Div(hn::Mul(w, by), w), ry);
+    rz = hn::IfThenElse(none, hn::Div(hn::Mul(w, bz), w), rz);
+    rs = hn::IfThenElse(none, best_score, rs);
+  }
+  const auto missing = p.keep_best ? hn::Not(any) : none;
+  hn::StoreInterleaved4(hn::IfThenZeroElse(missing, rx), hn::IfThenZeroElse(missing, ry),
+                        hn::IfThenZeroElse(missing, rz), hn::IfThenZeroElse(missing, rs), d, out + 4 * j);
+}
+
+void MergeGroupImpl(const MergeParams& p, const double* xyz, const double* score, int members, int n, double* dist,
+                    double* out) {
+  const hn::ScalableTag<double> d;
+  const hn::CappedTag<double, 1> d1;
+  const size_t N = hn::Lanes(d), joints = static_cast<size_t>(n);
+  size_t j = 0;
+  for (; j + N <= joints; j += N) MergeLanes(d, p, xyz, score, members, joints, j, dist, out);
+  for (; j < joints; ++j) MergeLanes(d1, p, xyz, score, members, joints, j, dist, out);
+}
+
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE void PixelDistanceLanes(D d, const double* uv, const PoseColumns& c, size_t i, double* sum, int* count) {
+  V pu, pv;
+  hn::LoadInterleaved2(d, uv + 2 * i, pu, pv);
+  const V du = hn::Sub(pu, hn::LoadU(d, c.u + i)), dv = hn::Sub(pv, hn::LoadU(d, c.v + i));
+  const auto valid = hn::And(hn::Gt(hn::LoadU(d, c.score + i), hn::Zero(d)), hn::Eq(pu, pu));  // pu NaN: not seen
+  const V dist = hn::IfThenElseZero(valid, hn::Sqrt(hn::Add(hn::Mul(du, du), hn::Mul(dv, dv))));
+  HWY_ALIGN double lanes[hn::MaxLanes(d)];
+  hn::Store(dist, d, lanes);
+  for (size_t l = 0; l < hn::Lanes(d); ++l) *sum += lanes[l];  // joint order, as the scalar loop
+  *count += static_cast<int>(hn::CountTrue(d, valid));
+}
+
+double PixelDistanceSumImpl(const double* uv, const PoseColumns& c, int n, int* count) {
+  const hn::CappedTag<double, 4> d;  // rows of core joints: short
+  const hn::CappedTag<double, 1> d1;
+  const size_t N = hn::Lanes(d), joints = static_cast<size_t>(n);
+  double sum = 0;
+  *count = 0;
+  size_t i = 0;
+  for (; i + N <= joints; i += N) PixelDistanceLanes(d, uv, c, i, &sum, count);
+  for (; i < joints; ++i) PixelDistanceLanes(d1, uv, c, i, &sum, count);
+  return sum;
+}
+
+int64_t TargetImpl() { return HWY_TARGET; }
+
+size_t DoubleLanesImpl() { return hn::Lanes(hn::ScalableTag<double>()); }
+
+}  // namespace HWY_NAMESPACE
+}  // namespace rpt::simd
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+#include <atomic>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+
+namespace rpt::simd {
+namespace {
+
+std::atomic<bool> g_simd_enabled{true};
+
+std::string PathName(int64_t target) {
+  if (target == HWY_AVX3) return "AVX-512";
+  if (target == HWY_EMU128 || target == HWY_SCALAR) return "scalar";
+  return hwy::TargetName(target);
+}
+
+// RPT_SIMD (read once): "off" = the steps' scalar code; an instruction set's name ("scalar",
+// "SSE4", "AVX2", "AVX-512", case-insensitive) = the kernels restricted to it.
+bool ReadEnvironment() {
+  const char* value = std::getenv("RPT_SIMD");
+  if (value == nullptr || *value == 0) return true;
+  if (strcasecmp(value, "off") == 0) {
+    g_simd_enabled = false;
+    return true;
+  }
+  std::string names;
+  for (const int64_t target : hwy::SupportedAndGeneratedTargets()) {
+    if (strcasecmp(value, PathName(target).c_str()) == 0) {
+      hwy::SetSupportedTargetsForTest(target);
+      hwy::GetChosenTarget().Update(hwy::SupportedTargets());
+      return true;
+    }
+    names += ' ';
+    names += PathName(target);
+  }
+  std::fprintf(stderr, "warning: RPT_SIMD=%s is not one of off%s (this CPU); the best one is used\n", value,
+               names.c_str());
+  return true;
+}
+
+void EnsureEnvironmentRead() { static const bool read = ReadEnvironment(); (void)read; }
+
+}  // namespace
+
+HWY_EXPORT(TriangulatePairImpl);
+HWY_EXPORT(PairResidualsImpl);
+HWY_EXPORT(ScoreJointsImpl);
+HWY_EXPORT(DistanceSumImpl);
+HWY_EXPORT(MergeGroupImpl);
+HWY_EXPORT(PixelDistanceSumImpl);
+HWY_EXPORT(TargetImpl);
+HWY_EXPORT(DoubleLanesImpl);
+
+void TriangulatePair(const double* ca, const PoseColumns& a, const double* cb, const PoseColumns& b, int n,
+                     double* xyz, double* gap, double* score) {
+  HWY_DYNAMIC_DISPATCH(TriangulatePairImpl)(ca, a, cb, b, n, xyz, gap, score);
+}
+
+void PairResiduals(const ResidualViews& rv, const PoseColumns& a, const PoseColumns& b, int n, const double* xyz,
+                   const double* gap, const double* score, const double* geometric, bool use_reprojection,
+                   double skip_gap, double* residual) {
+  HWY_DYNAMIC_DISPATCH(PairResidualsImpl)(rv, a, b, n, xyz, gap, score, geometric, use_reprojection, skip_gap,
+                                          residual);
+}
+
+void ScoreJoints(const JointKernel& kernel, const ResidualViews& rv, const PoseColumns& a, const PoseColumns& b,
+                 int n, const double* xyz, const double* gap, const double* residual, double* score,
+                 double* geometric) {
+  HWY_DYNAMIC_DISPATCH(ScoreJointsImpl)(kernel, rv, a, b, n, xyz, gap, residual, score, geometric);
+}
+
+double DistanceSum(const double* xyz, const double* mean, const double* score, const int* count, int n,
+                   int* common) {
+  return HWY_DYNAMIC_DISPATCH(DistanceSumImpl)(xyz, mean, score, count, n, common);
+}
+
+double PixelDistanceSum(const double* uv, const PoseColumns& c, int n, int* count) {
+  return HWY_DYNAMIC_DISPATCH(PixelDistanceSumImpl)(uv, c, n, count);
+}
+
+size_t MergeScratchSize(int members) {
+  return static_cast<size_t>(members) * HWY_DYNAMIC_DISPATCH(DoubleLanesImpl)();
+}
+
+void MergeGroup(const MergeParams& p, const double* xyz, const double* score, int members, int n, double* dist,
+                double* out) {
+  HWY_DYNAMIC_DISPATCH(MergeGroupImpl)(p, xyz, score, members, n, dist, out);
+}
+
+bool Enabled() {
+  EnsureEnvironmentRead();
+  return g_simd_enabled.load(std::memory_order_relaxed);
+}
+
+void SetEnabled(bool on) {
+  EnsureEnvironmentRead();
+  g_simd_enabled = on;
+}
+
+std::string ActivePath() {
+  EnsureEnvironmentRead();
+  return PathName(HWY_DYNAMIC_DISPATCH(TargetImpl)());
+}
+
+void ForEachPathForTest(const std::function<void()>& body) {
+  EnsureEnvironmentRead();
+  for (const int64_t target : hwy::SupportedAndGeneratedTargets()) {
+    hwy::SetSupportedTargetsForTest(target);
+    hwy::GetChosenTarget().Update(hwy::SupportedTargets());
+    body();
+  }
+  hwy::SetSupportedTargetsForTest(0);
+  hwy::GetChosenTarget().Update(hwy::SupportedTargets());
+}
+
+}  // namespace rpt::simd
+#endif  // HWY_ONCE

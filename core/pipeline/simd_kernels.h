@@ -1,0 +1,120 @@
+// SPDX-License-Identifier: MIT
+// SIMD kernels of the hot steps, one lane per joint: mid-point triangulation of a pose pair
+// (steps 4 and 10), its reprojection residuals and joint scores (steps 6-7 and 10), the pre-filter's
+// pixel distance (step 2), the group distance (step 9) and the merge of a group (step 11).
+// Structure of arrays in (KeypointColumns, pipeline_types.h), the steps' own arrays out.
+//
+// Each kernel is compiled for several instruction sets (Highway, simd_kernels.cc, private to
+// core) and the best one the CPU has is chosen at run time: the default build stays portable.
+// The kernels compute every joint independently with the same double-precision operations in the
+// same order as the scalar code they replace (no fused multiply-add: the file is compiled with
+// -ffp-contract=off; sums over joints are added in joint order), so every instruction set gives
+// bit-identical results: a frame's output does not depend on the machine. The scalar reference stays in proposal_scoring.h, pair_triangulation.h
+// and fast_math.h, and the tests compare the two on random inputs for every instruction set.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "core/pipeline/pipeline_types.h"
+
+namespace rpt::simd {
+
+// One pose's joints as columns (pointers into KeypointColumns).
+struct PoseColumns {
+  const double* u;
+  const double* v;
+  const double* score;  // <= 0: missing
+  const double* rx;
+  const double* ry;
+  const double* rz;  // world ray direction (unnormalised)
+};
+
+// Pose g's columns.
+inline PoseColumns ColumnsOf(const KeypointColumns& c, int g) {
+  const size_t at = static_cast<size_t>(g) * c.stride;
+  return {c.u.data() + at, c.v.data() + at, c.score.data() + at, c.rx.data() + at, c.ry.data() + at, c.rz.data() + at};
+}
+
+// Mid-point triangulation (TriangulateMidpoint) of joints [0, n) of poses a and b, seen from the
+// camera centres ca and cb (3 values each). Writes xyz (n points, x y z interleaved: the layout
+// of Eigen::Vector3d), gap (-1 where not triangulated) and score (1 triangulated, 0 not).
+void TriangulatePair(const double* ca, const PoseColumns& a, const double* cb, const PoseColumns& b, int n,
+                     double* xyz, double* gap, double* score);
+
+// The two views of a pair for the residual (JointResidual): their 3x4 projections (column-major,
+// Eigen's layout) and the residual's scale per view.
+struct ResidualViews {
+  const double* Pa;
+  const double* Pb;
+  double scale_a;
+  double scale_b;
+  bool adaptive;
+};
+
+// Pass 1 of the adaptive score step: residual[i] = -1 where score[i] <= 0 or geometric[i] >= 0;
+// else 0 without the reprojection term, 1e6 where gap[i] > skip_gap, else JointResidual.
+void PairResiduals(const ResidualViews& rv, const PoseColumns& a, const PoseColumns& b, int n, const double* xyz,
+                   const double* gap, const double* score, const double* geometric, bool use_reprojection,
+                   double skip_gap, double* residual);
+
+// The kernels of ScoreKernel (proposal_scoring.h) that the joint scores need.
+struct JointKernel {
+  bool use_reprojection;
+  bool use_ray_gap;
+  double inv_residual;
+  double inv_ray_gap;
+};
+
+// The geometric joint scores of ScoreJointsOfProposal before limb pruning: where score[i] > 0,
+// score[i] = geometric[i] if geometric[i] >= 0 (scored earlier), else both = exp(-exponent).
+// `residual` may be null (computed here).
+void ScoreJoints(const JointKernel& kernel, const ResidualViews& rv, const PoseColumns& a, const PoseColumns& b,
+                 int n, const double* xyz, const double* gap, const double* residual, double* score,
+                 double* geometric);
+
+// Sum over joints i in [0, n) with score[i] > 0 and count[i] > 0 of |xyz_i - mean_i| (points x y z
+// interleaved, as Eigen::Vector3d), added in joint order; *common = the number of such joints.
+// The group step's distance of a proposal from a group.
+double DistanceSum(const double* xyz, const double* mean, const double* score, const int* count, int n,
+                   int* common);
+
+// Sum over joints i in [0, n) with c.score[i] > 0 and uv_i seen (x not NaN) of the pixel distance
+// |uv_i - (c.u[i], c.v[i])| (uv: u v interleaved, as Eigen::Vector2d), added in joint order;
+// *count = the number of such joints. The pre-filter's distance of a pose from a previous person.
+double PixelDistanceSum(const double* uv, const PoseColumns& c, int n, int* count);
+
+// steps::Merge of one group (merge.h) over joints [0, n), lanes across joints: the group's `members`
+// proposals start at xyz (x y z interleaved, n points per proposal) and score (n per proposal).
+// Writes the person, x y z score per joint (4 x n, column-major). `dist` is scratch of
+// MergeScratchSize(members) doubles. Only for top_k <= 8 (larger: nth_element,
+// whose order the kernel does not reproduce).
+struct MergeParams {
+  double min_score;       // max(merge.min_joint_score, 1e-300)
+  double max_distance_m;  // <= 0: no distance filter
+  double max_distance_sq;
+  int top_k;              // 0: keep all
+  bool score_weighted;
+  bool keep_best;         // keep_best_when_all_far
+};
+size_t MergeScratchSize(int members);
+void MergeGroup(const MergeParams& p, const double* xyz, const double* score, int members, int n, double* dist,
+                double* out);
+
+// Whether the steps use these kernels (the default) or their scalar code: for comparisons and tests.
+// The environment variable RPT_SIMD=off starts a process with the scalar code; RPT_SIMD=<name>
+// (scalar, SSE4, AVX2, AVX-512) restricts the kernels to that instruction set.
+bool Enabled();
+void SetEnabled(bool on);
+
+// The instruction set the kernels run on, e.g. "AVX2" ("AVX-512" for Highway's AVX3, "scalar"
+// for its portable fallback).
+std::string ActivePath();
+
+// Runs `body` once for every instruction set compiled in and supported by this CPU, with the
+// kernels restricted to it (ActivePath() names it), then restores the automatic choice. For tests.
+void ForEachPathForTest(const std::function<void()>& body);
+
+}  // namespace rpt::simd
