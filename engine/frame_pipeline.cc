@@ -40,7 +40,7 @@ class Pipeline {
  private:
   // Whether stage s has a frame (or the flush) to handle now. Called with the lock held.
   bool Runnable(Stage s) const {
-    if (running_[s]) return false;
+    if (running_[s] || failed_[s]) return false;  // a stage that threw never runs again
     switch (s) {
       case kRead:
         return !source_done_ && read_ < emitted_ + capacity_ && OrderKey(read_, kRead) < error_key_;
@@ -121,6 +121,7 @@ class Pipeline {
       running_[s] = false;
       last = s;
       if (error) {
+        failed_[s] = true;
         const long key = flush ? OrderKey(frame, kProcess) : OrderKey(frame, s);
         if (key < error_key_) {
           error_key_ = key;
@@ -165,6 +166,7 @@ class Pipeline {
   bool source_done_ = false;  // read returned false
   bool flushed_ = false;      // flush ran (after the last frame was processed)
   bool running_[3] = {false, false, false};
+  bool failed_[3] = {false, false, false};
   bool finished_ = false;
   int sleeping_ = 0;
   long error_key_ = std::numeric_limits<long>::max();

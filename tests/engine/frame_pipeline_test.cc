@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "engine/frame_pipeline.h"
+#include "tests/allocation_counting.h"
 
 namespace rpt::engine {
 namespace {
@@ -217,6 +218,31 @@ TEST(FramePipelineTest, AnEmitErrorStopsTheReaderToo) {
     };
     EXPECT_THROW(RunFramePipeline(s, threads, 16), std::runtime_error);
     EXPECT_LE(reads.load(), 50 + 16 + 1) << "the reader stops within the ring";
+  }
+}
+
+// The hand-overs between the stages allocate nothing per frame: a long run makes no more
+// allocations than a short one (counted on every thread that runs a stage).
+TEST(FramePipelineTest, AllocatesNothingPerFrame) {
+  const auto allocations = [](long frames, int threads) {
+    FrameStages s;
+    s.read = [frames](long f) {
+      g_counting = true;
+      return f < frames;
+    };
+    s.process = [](long) -> long {
+      g_counting = true;
+      return 1;
+    };
+    s.emit = [](long) { g_counting = true; };
+    g_allocations = 0;
+    RunFramePipeline(s, threads, 16);
+    g_counting = false;
+    return g_allocations.load();
+  };
+  for (const int threads : {1, 2, 3}) {
+    const long short_run = allocations(100, threads);
+    EXPECT_EQ(allocations(20000, threads), short_run) << threads << " threads";
   }
 }
 
