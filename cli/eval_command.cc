@@ -133,7 +133,7 @@ void RegisterEvalCommand(CLI::App& app) {
   AddConfigOptions(command, &args->config);
   AddExportOptions(command, &args->exports);
   command->add_option("--out", args->out, "output folder (default out/eval-<dataset>)");
-  AddThreadsOption(command, &args->threads, "sequences evaluated");
+  AddThreadsOption(command, &args->threads, "sequences evaluated", /*one_sequence_stages=*/true);
   command->add_flag("--json", args->json, "print the summary as one JSON object");
   command->add_flag("--quiet", args->quiet, "no progress, no step table");
   command->add_flag("--loss-table", args->loss_table,

@@ -9,11 +9,16 @@
 namespace rpt::cli {
 
 // Adds `--threads` to `command`: non-negative (a negative value is a usage error, exit 2); the
-// run clamps it to the cores and the work (engine/thread_count.h).
-inline void AddThreadsOption(CLI::App* command, int* threads, std::string_view what_runs_in_parallel) {
-  command
-      ->add_option("--threads", *threads,
-                   std::string(what_runs_in_parallel) + " in parallel (0 = automatic: all cores; at most the cores)")
+// run clamps it to the cores and the work (engine/thread_count.h). `one_sequence_stages`: the
+// command runs through engine::Run, where one sequence runs its stages in parallel (engine/run.h).
+inline void AddThreadsOption(CLI::App* command, int* threads, std::string_view what_runs_in_parallel,
+                             bool one_sequence_stages = false) {
+  std::string help = std::string(what_runs_in_parallel) + " in parallel";
+  if (one_sequence_stages) {
+    help += ", or for one sequence its reading, triangulation and measuring + writing (at most 3 threads; the "
+            "results of 1 thread)";
+  }
+  command->add_option("--threads", *threads, help + " (0 = automatic: all cores; at most the cores)")
       ->check(CLI::NonNegativeNumber);
 }
 

@@ -71,7 +71,11 @@ std::string DefaultOutDir(const engine::InputSpec& input, const engine::Input& o
 
 void CheckFollowArgs(const TriangulateArgs& args) {
   if (args.json) throw ConfigError("--json: not with --follow (standard output holds the frame lines)");
-  if (args.threads > 1) throw ConfigError("--threads: not with --follow (one stream is one sequence)");
+  if (args.threads > 1) {
+    throw ConfigError(
+        "--threads: not with --follow (a live stream runs frame by frame on one thread, each frame out as soon as it "
+        "is triangulated)");
+  }
 }
 
 // --follow: the live input through the same run loop, the frame lines on stdout, the summary on
@@ -184,7 +188,7 @@ void RegisterTriangulateCommand(CLI::App& app, int* exit_code) {
   AddConfigOptions(command, &args->config);
   AddExportOptions(command, &args->exports);
   command->add_option("--out", args->out, "output folder (default out/triangulate-<dataset or detections>)");
-  AddThreadsOption(command, &args->threads, "sequences triangulated");
+  AddThreadsOption(command, &args->threads, "sequences triangulated", /*one_sequence_stages=*/true);
   command->add_flag("--json", args->json, "print the summary as one JSON object");
   command->add_flag("--quiet", args->quiet, "no progress, no step table");
   command->add_option("--follow", args->follow,

@@ -18,6 +18,7 @@
 #include "core/pipeline/triangulator.h"
 #include "core/pipeline/offline_smoother.h"
 #include "engine/checked_source.h"
+#include "engine/frame_pipeline.h"
 #include "engine/input.h"
 #include "engine/joint_adapter.h"
 #include "engine/thread_count.h"
@@ -87,11 +88,30 @@ void Emit(int index, const SequenceFrame& frame, const Poses3D& triangulated, co
   if (sink != nullptr) sink->Frame(FrameOutput{index, &frame, &persons, &stats});
 }
 
-// Triangulates the frames of `source` (sequence `index`) as they are pulled: one input frame is
-// alive at a time (a window's worth with offline smoothing, which looks 3 x smooth.offline_sigma_s
-// ahead).
+// One frame in the pipeline's ring (engine/frame_pipeline.h): the input frame, what the
+// triangulator made of it and its trace (for the loss table). Reused frame after frame.
+struct FrameSlot {
+  SequenceFrame frame;
+  Poses3D persons;
+  FrameStats stats;
+  FrameTrace trace;
+};
+
+// Frames in flight when a sequence runs on several threads: enough for the stages to run ahead of
+// each other by a few frames, so that one slow frame does not stall the others (memory: this many
+// input frames, however long the sequence).
+constexpr long kPipelineFrames = 16;
+// Threads that can work on one sequence at once: one per stage.
+constexpr int kPipelineStages = 3;
+
+// Triangulates the frames of `source` (sequence `index`) as they are pulled, on `threads` threads:
+// reading, triangulating, and measuring + writing (Emit) are the pipeline's three stages, each in
+// frame order (engine/frame_pipeline.h). One thread holds one input frame at a time (a window's
+// worth with offline smoothing, which looks 3 x smooth.offline_sigma_s ahead); more threads hold
+// kPipelineFrames (or that window).
 void RunSequence(int index, FrameSource& source, const RunOptions& options, const metrics::EvalOptions* eval,
-                 FrameSink* sink, std::atomic<long>* frames_done, bool report_progress, SequenceRun* run) {
+                 FrameSink* sink, int threads, std::atomic<long>* frames_done, bool report_progress,
+                 SequenceRun* run) {
   const SequenceHeader& header = source.header();
   const TriangulatorOptions tri_options = TriangulatorOptionsFor(options.triangulator, header);
   Triangulator triangulator(header.cameras, header.detection_joints, tri_options);
@@ -112,60 +132,60 @@ void RunSequence(int index, FrameSource& source, const RunOptions& options, cons
 
   const std::vector<Poses2D> no_views(header.cameras.size());
   // smooth.mode = offline: frames come back from the smoother once their window is complete; the
-  // input frames wait beside them (a window's worth, their buffers reused).
+  // input frames wait in their slots meanwhile (the ring grows to a window's worth).
   const bool offline = tri_options.track.enabled && tri_options.smooth.mode == SmoothMode::kOffline;
   OfflineSmoother smoother(tri_options.smooth, tri_options.track.max_gap_s, tri_options.UnobservedScore());
-  std::vector<SequenceFrame> waiting(1);  // ring of the input frames the smoother holds
-  std::vector<FrameTrace> traces(1);      // their traces, when the loss table is made
-  size_t first_waiting = 0, num_waiting = 0;
-  Poses3D persons, smoothed;
-  FrameStats stats, smoothed_stats;
-  const auto emit_ready = [&] {
-    while (smoother.Pop(&smoothed, &smoothed_stats)) {
-      SequenceFrame& frame = waiting[first_waiting];
-      Emit(index, frame, smoothed, smoothed_stats, traces[first_waiting % traces.size()], header, output_joints, run,
-           &checker, &adapter, sink);
-      first_waiting = (first_waiting + 1) % waiting.size();
-      --num_waiting;
+  const long capacity = threads > 1 ? kPipelineFrames : 1;
+  std::vector<FrameSlot> slots(static_cast<size_t>(capacity));
+  const auto slot = [&slots](long frame) -> FrameSlot& { return slots[static_cast<size_t>(frame) % slots.size()]; };
+  long popped = 0;  // frames the smoother handed back (offline)
+  const auto pop_ready = [&] {
+    long ready = 0;
+    while (true) {
+      FrameSlot& s = slot(popped);
+      if (!smoother.Pop(&s.persons, &s.stats)) break;
+      ++popped;
+      ++ready;
     }
+    return ready;
   };
-  while (true) {
-    if (offline && num_waiting == waiting.size()) {  // grow the ring, keeping the order
-      std::rotate(waiting.begin(), waiting.begin() + static_cast<long>(first_waiting), waiting.end());
-      if (run->losses) {
-        std::rotate(traces.begin(), traces.begin() + static_cast<long>(first_waiting), traces.end());
-        traces.resize(waiting.size() * 2);
-      }
-      first_waiting = 0;
-      waiting.resize(waiting.size() * 2);
-    }
-    const size_t slot = offline ? (first_waiting + num_waiting) % waiting.size() : 0;
-    SequenceFrame& frame = waiting[slot];
-    FrameTrace* trace = run->losses ? &traces[slot] : nullptr;
-    if (!source.Next(&frame)) break;
+
+  FrameStages stages;
+  stages.read = [&](long frame) { return source.Next(&slot(frame).frame); };
+  stages.process = [&](long frame) -> long {
+    FrameSlot& s = slot(frame);
     try {
-      triangulator.Process(frame.views.empty() ? no_views : frame.views, frame.timestamp_s, &persons, &stats, trace);
+      triangulator.Process(s.frame.views.empty() ? no_views : s.frame.views, s.frame.timestamp_s, &s.persons,
+                           &s.stats, run->losses ? &s.trace : nullptr);
     } catch (const InputError& e) {  // e.g. more persons in a view than triangulate.max_persons_per_view
-      throw InputError(header.name + ": frame '" + frame.id + "': " + e.what());
+      throw InputError(header.name + ": frame '" + s.frame.id + "': " + e.what());
     } catch (const std::bad_alloc&) {
-      throw InputError(header.name + ": frame '" + frame.id +
+      throw InputError(header.name + ": frame '" + s.frame.id +
                        "': out of memory triangulating the frame (lower triangulate.max_pairs_per_frame or "
                        "triangulate.max_persons_per_view to refuse such frames early)");
     }
-    if (offline) {
-      ++num_waiting;
-      smoother.Push(frame.timestamp_s, persons, persons.num_persons() - stats.coasting_tracks, stats);
-      emit_ready();
-    } else {
-      Emit(index, frame, persons, stats, traces[0], header, output_joints, run, &checker, &adapter, sink);
-    }
+    if (!offline) return 1;
+    smoother.Push(s.frame.timestamp_s, s.persons, s.persons.num_persons() - s.stats.coasting_tracks, s.stats);
+    return pop_ready();
+  };
+  stages.flush = [&]() -> long {
+    if (!offline) return 0;
+    smoother.Flush();
+    return pop_ready();
+  };
+  stages.emit = [&](long frame) {
+    FrameSlot& s = slot(frame);
+    Emit(index, s.frame, s.persons, s.stats, s.trace, header, output_joints, run, &checker, &adapter, sink);
     const long done = ++*frames_done;
     if (report_progress && options.progress) options.progress(done);
-  }
-  if (offline) {
-    smoother.Flush();
-    emit_ready();
-  }
+  };
+  stages.grow = [&](long old_capacity, long new_capacity, long first, long end) {
+    std::vector<FrameSlot> grown(static_cast<size_t>(new_capacity));
+    for (long f = first; f < end; ++f) grown[f % new_capacity] = std::move(slots[f % old_capacity]);
+    slots = std::move(grown);
+  };
+  RunFramePipeline(stages, threads, capacity);
+
   if (checker) run->result.check = checker->Finish();
   run->result.timing = run->timing.Finalize();
   if (run->metrics) run->result.metrics = run->metrics->Finalize();
@@ -253,10 +273,20 @@ RunResult Run(Input& input, const RunOptions& options, FrameSink* sink) {
   std::vector<SequenceRun> runs(static_cast<size_t>(count));
   std::atomic<long> frames_done{0};
   RunResult result;
-  result.threads = ForEachSequence(count, options.threads, [&](int i, bool report_progress) {
-    RunSequence(i, input.source(i), options, eval ? &*eval : nullptr, sink, &frames_done, report_progress, &runs[i]);
-    input.Finished(i);
-  });
+  if (count == 1) {
+    // One sequence: its stages (read, triangulate, measure + write) on up to three threads.
+    result.threads = ClampThreads(options.threads, kPipelineStages);
+    RunSequence(0, input.source(0), options, eval ? &*eval : nullptr, sink, result.threads, &frames_done, true,
+                &runs[0]);
+    input.Finished(0);
+  } else {
+    // Several: one thread per sequence, its stages taking turns.
+    result.threads = ForEachSequence(count, options.threads, [&](int i, bool report_progress) {
+      RunSequence(i, input.source(i), options, eval ? &*eval : nullptr, sink, 1, &frames_done, report_progress,
+                  &runs[i]);
+      input.Finished(i);
+    });
+  }
   result.warnings = input.Warnings();
   input.CheckStrict();
 

@@ -10,7 +10,11 @@
 // (metrics and input checks, when asked) and handed to the sink, then dropped: memory does not
 // grow with the number of frames beyond what the metrics keep per person (metrics/accumulator.h).
 // Independent sequences run in parallel (OpenMP, one Triangulator per sequence); the totals are
-// merged in sequence order, so no number depends on the thread count.
+// merged in sequence order, so no number depends on the thread count. A single sequence runs as a
+// pipeline of three stages on up to three threads (engine/frame_pipeline.h): reading the next
+// frames (parsing, simulation, validation), triangulating (in order: its state carries from frame
+// to frame) and measuring + writing (metrics, checks, the sink, in order), with up to 16 frames in
+// flight; every stage sees the frames in the order one thread would, so the results are the same.
 #pragma once
 
 #include <functional>
@@ -53,8 +57,10 @@ struct RunOptions {
   // steps' (like the metrics').
   std::shared_ptr<const JointAdapter> adapter;
   int warmup_frames = 0;  // frames per sequence excluded from timing
-  int threads = 0;        // sequences in parallel; 0 = automatic (at most the cores and the sequences)
-  // Called with the frames done so far (all sequences), from one thread; may be empty.
+  // Threads: sequences in parallel, or with one sequence its pipeline's stages (at most 3);
+  // 0 = automatic (at most the cores, the sequences or the stages). 1: one input frame at a time.
+  int threads = 0;
+  // Called with the frames done so far (all sequences), by one thread at a time; may be empty.
   std::function<void(long frames_done)> progress;
 };
 
@@ -80,7 +86,7 @@ struct RunResult {
   std::optional<LossTable> losses;  // over all sequences, when RunOptions::loss_table is set
   long frames = 0;
   double wall_seconds = 0;          // the whole run, steady clock
-  int threads = 1;                  // threads used for the sequences
+  int threads = 1;                  // threads used (for the sequences, or one sequence's stages)
   long gt_persons = 0;              // GT person-frames
   long output_persons = 0;          // triangulated person-frames
   long adapted_persons = 0;         // of those: moved by RunOptions::adapter

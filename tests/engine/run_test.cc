@@ -4,15 +4,23 @@
 // see every frame in order; the input checks stream.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <memory>
+#include <string>
+#include <thread>
 #include <vector>
+
+#include "core/errors.h"
 
 #include "datasets/frame_source.h"
 #include "datasets/synthetic/synthetic_dataset.h"
 #include "datasets/synthetic/simulated_source.h"
 #include "engine/detection_checks.h"
 #include "engine/frame_sink.h"
+#include "engine/outputs/loss_tables.h"
+#include "engine/outputs/results_writer.h"
 #include "engine/run.h"
+#include "engine/thread_count.h"
 #include "tests/counting_source.h"
 #include "datasets/synthetic/simulate_detections.h"
 
@@ -73,6 +81,21 @@ void ExpectSameRun(const RunResult& a, const RunResult& b) {
     EXPECT_EQ(a.sequences[i].metrics.mpjpe_mm, b.sequences[i].metrics.mpjpe_mm);
   }
 }
+
+// A sink that records the order of the calls it gets.
+class OrderSink final : public FrameSink {
+ public:
+  void BeginSequence(int sequence, const SequenceHeader& header, const JointNames& joints) override {
+    calls.push_back("begin " + std::to_string(sequence) + " " + header.name + " " + std::to_string(joints.size()));
+  }
+  void Frame(const FrameOutput& frame) override {
+    if (frame.input->id.size() > 0 && frames++ < 2) calls.push_back("frame " + frame.input->id);
+    EXPECT_NE(frame.stats, nullptr);
+  }
+  void EndSequence(int sequence) override { calls.push_back("end " + std::to_string(sequence)); }
+  std::vector<std::string> calls;
+  int frames = 0;
+};
 
 TEST(RunTest, StreamedFramesGiveTheNumbersOfTheSequencesInMemory) {
   const std::vector<Sequence> whole = TwoSequences();
@@ -139,18 +162,146 @@ TEST(RunTest, InputChecksShareTheTrackersMaxGap) {
 }
 
 TEST(RunTest, HoldsOneInputFramePerSequenceWhateverTheLength) {
-  for (const int frames : {10, 3000}) {
-    CountingSource::Counts counts;  // the run frees each source once exhausted
-    std::vector<std::unique_ptr<FrameSource>> sources;
-    sources.push_back(std::make_unique<CountingSource>(OpenSyntheticSequence(Scene(frames)), &counts));
+  for (const int threads : {1, 2}) {
+    for (const int frames : {10, 3000}) {
+      CountingSource::Counts counts;  // the run frees each source once exhausted
+      std::vector<std::unique_ptr<FrameSource>> sources;
+      sources.push_back(std::make_unique<CountingSource>(OpenSyntheticSequence(Scene(frames)), &counts));
+      RunOptions options;
+      options.checks = DetectionCheckOptions{};
+      options.threads = threads;
+      const RunResult run = engine::Run(std::move(sources), options);
+      EXPECT_EQ(run.frames, frames);
+      EXPECT_EQ(counts.delivered, frames);
+      if (run.threads == 1) {
+        EXPECT_EQ(counts.frames_alive_peak, 1u) << "one input frame alive, " << frames << " frames";
+      } else {
+        // One sequence on several threads: the pipeline's ring of 16 frames, however long.
+        EXPECT_LE(counts.frames_alive_peak, 16u) << frames << " frames";
+      }
+      if (frames == 3000) {
+        EXPECT_EQ(run.sequences[0].check->measured_frames, 200) << "bounded sample of the checks";
+      }
+    }
+  }
+}
+
+// Everything a run reports but its times (and the time-derived numbers), as JSON.
+nlohmann::ordered_json Untimed(const RunResult& run) {
+  nlohmann::ordered_json j = SummaryJson(run);
+  j.update(RunLossTablesJson(run));
+  for (const char* timed : {"fps", "frame_time_us_median", "step_time_us_median", "step_time_us_mean",
+                            "eval_frames_per_s", "wall_seconds", "threads"}) {
+    j.erase(timed);
+  }
+  return j;
+}
+
+void ExpectSameFrames(const PredictionsCollector& a, const PredictionsCollector& b) {
+  ExpectSamePredictions(a, b);
+  for (size_t s = 0; s < a.sequences().size(); ++s) {
+    EXPECT_EQ(a.sequences()[s].timestamps_s, b.sequences()[s].timestamps_s);
+    for (size_t f = 0; f < a.sequences()[s].persons.size(); ++f) {
+      ASSERT_EQ(a.sequences()[s].persons[f].provenance, b.sequences()[s].persons[f].provenance) << "frame " << f;
+    }
+  }
+}
+
+// One sequence on 2 or 3 threads (engine/frame_pipeline.h): reading, triangulating and measuring +
+// writing overlap, and every number is that of one thread: the predictions with their track ids,
+// the metrics, the input checks, the loss table, the step counts. A long tracked scene (more
+// frames than the pipeline holds, persons coming and going) with each temporal step in turn.
+TEST(RunTest, OneSequenceOnSeveralThreadsGivesTheResultsOfOneThread) {
+  const int hardware = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  for (const char* temporal : {"track", "causal", "offline"}) {
+    SyntheticParams scene = Scene(900, 7);
+    scene.people = 3;
     RunOptions options;
     options.checks = DetectionCheckOptions{};
-    const RunResult run = engine::Run(std::move(sources), options);
-    EXPECT_EQ(run.frames, frames);
-    EXPECT_EQ(counts.delivered, frames);
-    EXPECT_EQ(counts.frames_alive_peak, 1u) << "one input frame alive, " << frames << " frames";
-    if (frames == 3000) {
-      EXPECT_EQ(run.sequences[0].check->measured_frames, 200) << "bounded sample of the checks";
+    options.loss_table = true;
+    if (std::string(temporal) == "causal") {
+      options.triangulator.smooth.mode = SmoothMode::kCausal;
+      options.triangulator.bone_lengths.enabled = true;
+    } else if (std::string(temporal) == "offline") {
+      options.triangulator.smooth.mode = SmoothMode::kOffline;
+    }
+    const auto run = [&](int threads, PredictionsCollector* predictions) {
+      std::vector<std::unique_ptr<FrameSource>> sources;
+      sources.push_back(OpenSyntheticSequence(scene));
+      options.threads = threads;
+      return engine::Run(std::move(sources), options, predictions);
+    };
+    PredictionsCollector one_predictions(1);
+    const RunResult one = run(1, &one_predictions);
+    ASSERT_EQ(one.frames, 900);
+    EXPECT_EQ(one.threads, 1);
+    ASSERT_GT(one.output_persons, 900 * 2) << temporal;
+    for (const int threads : {2, 3}) {
+      PredictionsCollector predictions(1);
+      const RunResult several = run(threads, &predictions);
+      EXPECT_EQ(several.threads, std::min({threads, hardware, 3})) << "the stages' threads";
+      ExpectSameRun(several, one);
+      ExpectSameFrames(predictions, one_predictions);
+      EXPECT_EQ(Untimed(several).dump(), Untimed(one).dump()) << temporal << ", " << threads << " threads";
+      ASSERT_TRUE(several.sequences[0].check.has_value());
+      EXPECT_EQ(several.sequences[0].check->cameras[0].px_median, one.sequences[0].check->cameras[0].px_median);
+    }
+  }
+}
+
+// A source whose frame `bad` has a score out of range: the validation (engine/checked_source.h)
+// stops the run there.
+std::unique_ptr<FrameSource> WithBadFrame(int frames, int bad) {
+  Sequence sequence = MakeSyntheticDataset(Scene(frames))[0];
+  Poses2D& view = sequence.frames[static_cast<size_t>(bad)].views[1];
+  view.data[2] = 7.5;  // the first joint's score
+  return std::make_unique<SequenceSource>(std::move(sequence));
+}
+
+// A bad frame in the middle of one sequence on several threads: the error of one thread (naming
+// the sequence, the frame and the view), the frames before it handed on, nothing after, no hang.
+TEST(RunTest, ABadFrameMidSequenceStopsEveryThreadCountTheSameWay) {
+  std::string expected;
+  for (const int threads : {1, 2, 3}) {
+    std::vector<std::unique_ptr<FrameSource>> sources;
+    sources.push_back(WithBadFrame(400, 200));
+    RunOptions options;
+    options.threads = threads;
+    OrderSink sink;
+    try {
+      engine::Run(std::move(sources), options, &sink);
+      ADD_FAILURE() << "no error with " << threads << " threads";
+    } catch (const InputError& e) {
+      if (threads == 1) expected = e.what();
+      EXPECT_EQ(std::string(e.what()), expected) << threads << " threads";
+      EXPECT_NE(expected.find("synthetic_000200"), std::string::npos) << expected;
+      EXPECT_EQ(sink.frames, 200) << "the frames before the bad one, " << threads << " threads";
+    }
+  }
+}
+
+// A frame the triangulator refuses (above triangulate.max_persons_per_view) in the middle.
+TEST(RunTest, AFrameTheTriangulatorRefusesStopsEveryThreadCountTheSameWay) {
+  std::string expected;
+  for (const int threads : {1, 2, 3}) {
+    Sequence sequence = MakeSyntheticDataset(Scene(300))[0];
+    Poses2D& view = sequence.frames[150].views[0];
+    const Eigen::Matrix3Xd copy = view.Person(0);
+    for (int extra = 0; extra < 4; ++extra) view.AddPerson() = copy;
+    std::vector<std::unique_ptr<FrameSource>> sources;
+    sources.push_back(std::make_unique<SequenceSource>(std::move(sequence)));
+    RunOptions options;
+    options.threads = threads;
+    options.triangulator.triangulate.max_persons_per_view = 4;
+    OrderSink sink;
+    try {
+      engine::Run(std::move(sources), options, &sink);
+      ADD_FAILURE() << "no error with " << threads << " threads";
+    } catch (const InputError& e) {
+      if (threads == 1) expected = e.what();
+      EXPECT_EQ(std::string(e.what()), expected) << threads << " threads";
+      EXPECT_NE(expected.find("frame 'synthetic_000150'"), std::string::npos) << expected;
+      EXPECT_EQ(sink.frames, 150) << threads << " threads";
     }
   }
 }
@@ -168,21 +319,6 @@ TEST(RunTest, WithoutMetricsNoGroundTruthIsNeeded) {
   EXPECT_GT(run.output_persons, 30) << "two people, triangulated without GT";
   EXPECT_EQ(predictions.sequences()[0].persons.size(), 30u);
 }
-
-// A sink that records the order of the calls it gets.
-class OrderSink final : public FrameSink {
- public:
-  void BeginSequence(int sequence, const SequenceHeader& header, const JointNames& joints) override {
-    calls.push_back("begin " + std::to_string(sequence) + " " + header.name + " " + std::to_string(joints.size()));
-  }
-  void Frame(const FrameOutput& frame) override {
-    if (frame.input->id.size() > 0 && frames++ < 2) calls.push_back("frame " + frame.input->id);
-    EXPECT_NE(frame.stats, nullptr);
-  }
-  void EndSequence(int sequence) override { calls.push_back("end " + std::to_string(sequence)); }
-  std::vector<std::string> calls;
-  int frames = 0;
-};
 
 TEST(RunTest, ASinkSeesTheSequenceBeginItsFramesInOrderThenTheEnd) {
   const std::vector<Sequence> whole = MakeSyntheticDataset(Scene(5));
