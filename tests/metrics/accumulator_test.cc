@@ -137,6 +137,43 @@ TEST(MetricsAccumulator, Shift150mmFailsRecall100ButPassesRecall500) {
   EXPECT_NEAR(r.f1, 100.0, kTol);
 }
 
+// Every gate with a prediction just inside and just outside it. A shift of d mm on every joint makes
+// every joint's error, the MPJPE and each part's mean endpoint error d. The parts' half lengths of
+// CocoBodyTemplate() (PCP: correct when the mean endpoint error <= half the GT part's length), mm:
+// head (mid-shoulder to nose: |(0, 0.10, 0.20)| = 223.6) 111.8, lower arms (|(0.02, 0.05, 0.25)| =
+// 255.7) 127.9, lower legs 210.3, torso 225.0, upper legs 225.3, upper arms 150.3.
+TEST(MetricsAccumulator, EveryGateJustInsideAndJustOutside) {
+  struct Case {
+    double shift_mm;
+    double recall_100, recall_500, pck_100, pck_500, invalid, f1, pcp;
+  };
+  const Case cases[] = {
+      {99, 100, 100, 100, 100, 0, 100, 100},  // inside the 100 mm gates
+      {101, 0, 100, 0, 100, 0, 100, 100},     // outside them
+      {111, 0, 100, 0, 100, 0, 100, 100},     // head still correct (111 <= 111.8)
+      {112, 0, 100, 0, 100, 0, 100, 90},      // head wrong: 9 of 10 parts
+      {127, 0, 100, 0, 100, 0, 100, 90},      // lower arms still correct (127 <= 127.9)
+      {128, 0, 100, 0, 100, 0, 100, 70},      // head and both lower arms wrong
+      {499, 0, 100, 0, 100, 0, 100, 0},       // inside the 500 mm gates (every part wrong)
+      {501, 0, 0, 0, 0, 100, 0, 0},           // outside: a false positive and a miss
+  };
+  for (const Case& c : cases) {
+    Frame frame;
+    frame.Gt(PersonAt(0.0));
+    frame.Pred(Shifted(PersonAt(0.0), {0.0006 * c.shift_mm, 0.0, 0.0008 * c.shift_mm}));  // |(0.6, 0, 0.8)| d
+    const MetricsResult r = Evaluate({frame});
+    const std::string at = "shift " + std::to_string(c.shift_mm) + " mm";
+    EXPECT_NEAR(r.recall_100, c.recall_100, kTol) << at;
+    EXPECT_NEAR(r.recall_500, c.recall_500, kTol) << at;
+    EXPECT_NEAR(r.pck_100, c.pck_100, kTol) << at;
+    EXPECT_NEAR(r.pck_500, c.pck_500, kTol) << at;
+    EXPECT_NEAR(r.invalid, c.invalid, kTol) << at;
+    EXPECT_NEAR(r.f1, c.f1, kTol) << at;
+    EXPECT_NEAR(r.pcp, c.pcp, kTol) << at;
+    if (c.shift_mm < 500) EXPECT_NEAR(r.mpjpe_mm, c.shift_mm, kTol) << at;
+  }
+}
+
 TEST(MetricsAccumulator, MissedPersonAndPckDenominatorSwitch) {
   Frame frame;
   frame.Gt(PersonAt(0.0));
