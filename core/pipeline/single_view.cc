@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <string_view>
 
 #include "core/joints.h"
@@ -45,7 +46,93 @@ bool Center(const Eigen::Ref<const Eigen::Matrix4Xd>& person, std::span<const in
   return n > 0;
 }
 
+// Mean ray of the confident joints among a and b; false when neither is confident.
+bool MeanRay(const Keypoint* kps, int a, int b, double min_score, Eigen::Vector3d* ray) {
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  int n = 0;
+  for (int j : {a, b}) {
+    if (j < 0 || kps[j].score < min_score) continue;
+    sum += kps[j].ray;
+    ++n;
+  }
+  if (n > 0) *ray = sum / n;
+  return n > 0;
+}
+
 }  // namespace
+
+GroundJoints ResolveGroundJoints(const JointNames& joints) {
+  return GroundJoints{.ankle_left = FindJoint(joints, "ankle_left"),
+                      .ankle_right = FindJoint(joints, "ankle_right"),
+                      .hip_left = FindJoint(joints, "hip_left"),
+                      .hip_right = FindJoint(joints, "hip_right"),
+                      .shoulder_left = FindJoint(joints, "shoulder_left"),
+                      .shoulder_right = FindJoint(joints, "shoulder_right")};
+}
+
+bool PlaceOnGround(const SingleViewOptions& options, const Keypoint* kps, const ViewGeometry& geo,
+                   std::span<const TypicalLimb> limbs, const GroundJoints& ground, std::vector<double>* ratios,
+                   Eigen::Matrix4Xd* person, double* body_scale) {
+  const int num_joints = static_cast<int>(person->cols());
+  person->setZero();
+  if (body_scale != nullptr) *body_scale = 0;
+  // The anchor: ankles on their plane, else hips on theirs.
+  Eigen::Vector3d ray;
+  double anchor_z = 0;
+  if (MeanRay(kps, ground.ankle_left, ground.ankle_right, options.min_joint_score, &ray)) {
+    anchor_z = options.floor_z_m + options.ankle_height_m;
+  } else if (MeanRay(kps, ground.hip_left, ground.hip_right, options.min_joint_score, &ray)) {
+    anchor_z = options.floor_z_m + options.hip_height_m;
+  } else {
+    return false;
+  }
+  if (std::abs(ray.z()) < 1e-12) return false;
+  const double t = (anchor_z - geo.center.z()) / ray.z();
+  if (!(t > 0) || !std::isfinite(t)) return false;  // the plane lies behind the camera along this ray
+  const Eigen::Vector3d anchor = geo.center + t * ray;
+  // The vertical plane through the anchor facing the camera: normal = horizontal viewing direction.
+  Eigen::Vector3d normal(anchor.x() - geo.center.x(), anchor.y() - geo.center.y(), 0.0);
+  const double horizontal = normal.norm();
+  if (horizontal < 1e-6) return false;  // straight below the camera: no facing plane
+  normal /= horizontal;
+  for (int j = 0; j < num_joints; ++j) {
+    if (kps[j].score <= 0) continue;
+    const double along = normal.dot(kps[j].ray);
+    if (!(along > 1e-12)) continue;  // a ray parallel to or away from the plane: joint left out
+    person->col(j) << geo.center + kps[j].ray * (horizontal / along), kps[j].score * options.score_factor;
+  }
+  // Body size: placed limb length / typical length, the second largest (foreshortening only shortens).
+  ratios->clear();
+  for (const TypicalLimb& limb : limbs) {
+    if (kps[limb.a].score < options.min_joint_score || kps[limb.b].score < options.min_joint_score) continue;
+    if ((*person)(3, limb.a) <= 0 || (*person)(3, limb.b) <= 0) continue;
+    ratios->push_back((person->col(limb.a).head<3>() - person->col(limb.b).head<3>()).norm() / limb.length_m);
+  }
+  if (ratios->size() < 2) return false;
+  std::sort(ratios->begin(), ratios->end(), std::greater<>());
+  const double scale = (*ratios)[ratios->size() >= 3 ? 1 : 0];
+  if (body_scale != nullptr) *body_scale = scale;
+  if (scale < options.min_body_scale || scale > options.max_body_scale) return false;
+  // Posture: hip-to-shoulder direction near the vertical (when hips and shoulders are placed).
+  Eigen::Vector3d hips = Eigen::Vector3d::Zero(), shoulders = Eigen::Vector3d::Zero();
+  int num_hips = 0, num_shoulders = 0;
+  for (int j : {ground.hip_left, ground.hip_right}) {
+    if (j < 0 || (*person)(3, j) <= 0 || kps[j].score < options.min_joint_score) continue;
+    hips += person->col(j).head<3>();
+    ++num_hips;
+  }
+  for (int j : {ground.shoulder_left, ground.shoulder_right}) {
+    if (j < 0 || (*person)(3, j) <= 0 || kps[j].score < options.min_joint_score) continue;
+    shoulders += person->col(j).head<3>();
+    ++num_shoulders;
+  }
+  if (num_hips > 0 && num_shoulders > 0) {
+    const Eigen::Vector3d torso = shoulders / num_shoulders - hips / num_hips;
+    const double length = torso.norm();
+    if (!(length > 1e-9) || torso.z() / length < options.min_upright) return false;
+  }
+  return true;
+}
 
 std::vector<TypicalLimb> ResolveTypicalLimbs(const JointNames& joints) {
   std::vector<TypicalLimb> out;
@@ -107,27 +194,37 @@ int steps::SingleView(const SingleViewOptions& options, const SingleViewInput& i
   }
   std::sort(scratch->order.begin(), scratch->order.end());
 
+  int implausible = 0;
   for (const auto& [negative_confidence, g] : scratch->order) {
     const Keypoint* kps = views.Pose(g);
     const ViewGeometry& geo = geometry[views.view_of[g]];
-    scratch->depths.clear();
-    for (const TypicalLimb& limb : in.limbs) {
-      const int a = limb.a, b = limb.b;
-      if (kps[a].score < options.min_joint_score || kps[b].score < options.min_joint_score) continue;
-      const double length = std::hypot(kps[a].x - kps[b].x, kps[a].y - kps[b].y);  // normalised units
-      if (length > 1e-6) scratch->depths.push_back(limb.length_m / length);
-    }
-    if (scratch->depths.size() < 2) continue;
-    std::sort(scratch->depths.begin(), scratch->depths.end());
-    const double depth = scratch->depths[scratch->depths.size() >= 3 ? 1 : 0];
-
-    scratch->person.setZero(4, num_joints);
-    for (int j = 0; j < num_joints; ++j) {
-      if (kps[j].score <= 0) continue;
-      scratch->person.col(j) << geo.center + kps[j].ray * depth, kps[j].score * options.score_factor;
-    }
     Eigen::Vector3d center;
-    if (!Center(scratch->person, core_joints, &center)) continue;
+    if (options.ground_prior) {
+      scratch->person.resize(4, num_joints);
+      if (!PlaceOnGround(options, kps, geo, in.limbs, in.ground, &scratch->depths, &scratch->person, nullptr) ||
+          !Center(scratch->person, core_joints, &center) || !in.room.Contains(center, 0.0)) {
+        ++implausible;
+        continue;
+      }
+    } else {
+      scratch->depths.clear();
+      for (const TypicalLimb& limb : in.limbs) {
+        const int a = limb.a, b = limb.b;
+        if (kps[a].score < options.min_joint_score || kps[b].score < options.min_joint_score) continue;
+        const double length = std::hypot(kps[a].x - kps[b].x, kps[a].y - kps[b].y);  // normalised units
+        if (length > 1e-6) scratch->depths.push_back(limb.length_m / length);
+      }
+      if (scratch->depths.size() < 2) continue;
+      std::sort(scratch->depths.begin(), scratch->depths.end());
+      const double depth = scratch->depths[scratch->depths.size() >= 3 ? 1 : 0];
+
+      scratch->person.setZero(4, num_joints);
+      for (int j = 0; j < num_joints; ++j) {
+        if (kps[j].score <= 0) continue;
+        scratch->person.col(j) << geo.center + kps[j].ray * depth, kps[j].score * options.score_factor;
+      }
+      if (!Center(scratch->person, core_joints, &center)) continue;
+    }
     bool duplicate = false;
     for (const Eigen::Vector3d& other : scratch->centers) duplicate |= (other - center).norm() < options.duplicate_distance_m;
     if (duplicate) continue;
@@ -142,6 +239,7 @@ int steps::SingleView(const SingleViewOptions& options, const SingleViewInput& i
     scratch->centers.push_back(center);
   }
   stats->single_view_persons = lifted->num_persons();
+  stats->single_view_implausible = implausible;
   return lifted->num_persons();
 }
 

@@ -20,6 +20,22 @@
 //     empty only if min_inside_fraction of the joints land in its image),
 //   * is at least duplicate_distance_m (centre to centre) from every person found and lifted
 //     before it (poses are taken by decreasing mean confidence).
+//
+// With ground_prior (off by default) the person is instead stood upright on the floor (world z
+// up, z = floor_z_m): the anchor is the mean ray of its confident ankles meeting the plane
+// floor_z_m + ankle_height_m (0.08 m), or, with no ankle seen, of its hips meeting
+// floor_z_m + hip_height_m (0.90 m, a standing adult's hip joint). Every joint lies where its ray
+// meets the vertical plane through the anchor that faces the camera (a person standing upright,
+// not a flat pose parallel to the image plane, which a camera looking down would tilt). The pose
+// is lifted only if, placed so, it is plausible:
+//   * the anchor ray meets its plane in front of the camera, not straight below it;
+//   * its body size is a person's: the second largest of (placed limb length / typical length)
+//     over the typical limbs seen (foreshortening only shortens) lies in
+//     [min_body_scale, max_body_scale] (0.75-1.30);
+//   * it stands: the hip-to-shoulder direction is within acos(min_upright) (60 degrees) of the
+//     vertical (a lying person, a false detection spread across a bed, fail);
+//   * its centre lies inside the room (core/room.h; without a room this check passes);
+// plus the checks above. Poses failing the prior are counted in stats->single_view_implausible.
 #pragma once
 
 #include <span>
@@ -32,8 +48,15 @@
 #include "core/pipeline/proposal_scoring.h"
 #include "core/pipeline/view_verdict.h"
 #include "core/poses.h"
+#include "core/room.h"
 
 namespace rpt {
+
+// The joints the ground prior anchors and checks on (-1 when the joint set lacks one).
+struct GroundJoints {
+  int ankle_left = -1, ankle_right = -1, hip_left = -1, hip_right = -1, shoulder_left = -1, shoulder_right = -1;
+};
+GroundJoints ResolveGroundJoints(const JointNames& joints);
 
 // A limb with its typical adult length, resolved to joint indices.
 struct TypicalLimb {
@@ -52,6 +75,14 @@ struct SingleViewScratch {
   Eigen::Matrix4Xd person;                       // the person being lifted
 };
 
+// The ground prior's placement of one pose seen by `geo`'s camera (on `person`, 4 x J, zeroed
+// first; joints with score <= 0 stay zero). Returns false when the pose is implausible (see the
+// header comment); `ratios` is scratch; `body_scale` (may be null) receives the body scale
+// measured (0 when the pose could not be placed).
+bool PlaceOnGround(const SingleViewOptions& options, const Keypoint* kps, const ViewGeometry& geo,
+                   std::span<const TypicalLimb> limbs, const GroundJoints& ground, std::vector<double>* ratios,
+                   Eigen::Matrix4Xd* person, double* body_scale);
+
 namespace steps {
 
 struct SingleViewInput {
@@ -59,14 +90,16 @@ struct SingleViewInput {
   std::span<const ViewGeometry> geometry;  // per camera
   std::span<const int> core_joints;        // output-joint indices of the core joints
   std::span<const TypicalLimb> limbs;      // the limbs with typical lengths (ResolveTypicalLimbs)
+  const GroundJoints& ground;              // ground prior: ankles, hips, shoulders (ResolveGroundJoints)
+  const Room& room;                        // ground prior: lifted centres must lie inside it
   const Proposals& proposals;              // triangulate_full's, whose kept groups' poses are taken
   const Groups& groups;
   const ScoreKernel& kernel;  // the frame's kernels (step 6-7): agreement scale
   const Poses3D& found;       // the persons found so far (after post-processing)
 };
 
-// Fills `lifted` (cleared first) and counts them in stats->single_view_persons. Returns the number
-// lifted.
+// Fills `lifted` (cleared first) and counts them in stats->single_view_persons (and those the
+// ground prior finds implausible in stats->single_view_implausible). Returns the number lifted.
 int SingleView(const SingleViewOptions& options, const SingleViewInput& in, SingleViewScratch* scratch, Poses3D* lifted,
                FrameStats* stats);
 

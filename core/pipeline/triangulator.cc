@@ -223,6 +223,8 @@ void Triangulator::Process(std::span<const Poses2D> views, double timestamp_s, P
                                                                       .geometry = m.geometry,
                                                                       .core_joints = m.core_joints,
                                                                       .limbs = m.typical_limbs,
+                                                                      .ground = m.ground_joints,
+                                                                      .room = m.room,
                                                                       .proposals = buf.full,
                                                                       .groups = buf.groups,
                                                                       .kernel = buf.kernel,
