@@ -312,6 +312,13 @@ struct SingleViewOptions {
   double min_body_scale = 0.75;  // body size / typical adult's, measured from the limbs once placed
   double max_body_scale = 1.30;
   double min_upright = 0.5;      // cosine between the hip-to-shoulder direction and the vertical
+  // Track assistance (needs track.enabled): a pose matching a live track's projection is placed
+  // at the track's depth, its scores times exp(-age / track_decay_s), age = time since the
+  // track's last multi-view support; not after track_max_age_s.
+  bool track_assist = false;
+  double track_max_age_s = 1.0;
+  double track_decay_s = 0.5;
+  double track_max_distance = 0.5;  // mean 2D joint distance to the track's projection / the pose's box diagonal
 };
 
 template <class Visitor, OptionsOf<SingleViewOptions> Self>
@@ -354,6 +361,18 @@ void VisitFields(Visitor& v, Self& o) {
   v("min_upright", o.min_upright,
     OptionSpec{.help = "cosine between the placed hip-to-shoulder direction and the vertical, at least", .min = -1,
                .max = 1});
+  v("track_assist", o.track_assist,
+    OptionSpec{.help = "place a pose that matches a live track's projection at the track's depth (needs tracking)"});
+  v("track_max_age_s", o.track_max_age_s,
+    OptionSpec{.help = "no track assistance once the track's last multi-view support is older", .unit = "s",
+               .min = 0, .max = 1e6});
+  v("track_decay_s", o.track_decay_s,
+    OptionSpec{.help = "track-assisted joint scores x exp(-age / this), age since the last multi-view support",
+               .unit = "s", .min = 1e-6, .max = 1e6});
+  v("track_max_distance", o.track_max_distance,
+    OptionSpec{.help = "mean 2D joint distance to a track's projection, as a share of the pose's box diagonal, "
+                       "under which the pose is that track's",
+               .min = 0, .max = 100});
 }
 
 // Step 12.

@@ -59,6 +59,70 @@ bool MeanRay(const Keypoint* kps, int a, int b, double min_score, Eigen::Vector3
   return n > 0;
 }
 
+// Camera depth (normalised camera z) of a world point; <= 0 behind the camera.
+double CameraDepth(const ViewGeometry& geo, const Eigen::Vector3d& point) {
+  return geo.Rt.row(2).head<3>().dot(point) + geo.Rt(2, 3);
+}
+
+// The slot of the live track, supported by two views at most track_max_age_s ago and not used
+// yet, whose projection lies closest to the pose (mean normalised distance over the core joints
+// valid in both, at least 3, at most track_max_distance x `diag`); -1 when none.
+int MatchTrack(const SingleViewOptions& options, const Tracks& tracks, double timestamp_s, const Keypoint* kps,
+               const ViewGeometry& geo, double diag, std::span<const int> core_joints,
+               const std::vector<char>& used) {
+  int best = -1;
+  double best_distance = options.track_max_distance * diag;
+  const int num_slots = static_cast<int>(tracks.slots.size());
+  for (int s = 0; s < num_slots; ++s) {
+    const Tracks::Slot& slot = tracks.slots[s];
+    const double age = timestamp_s - slot.supported_s;
+    if (slot.id < 0 || used[s] || slot.pose.empty() || !(age <= options.track_max_age_s)) continue;
+    const int num_joints = static_cast<int>(slot.pose.size() / 4);
+    const Eigen::Map<const Eigen::Matrix4Xd> pose(slot.pose.data(), 4, num_joints);
+    double sum = 0;
+    int n = 0;
+    for (int j : core_joints) {
+      if (pose(3, j) <= 0 || kps[j].score < options.min_joint_score) continue;
+      const Eigen::Vector3d c = geo.Rt * pose.col(j).head<3>().homogeneous();
+      if (c.z() <= 0) continue;
+      sum += std::hypot(c.x() / c.z() - kps[j].x, c.y() / c.z() - kps[j].y);
+      ++n;
+    }
+    if (n < 3) continue;
+    if (sum / n < best_distance) {
+      best_distance = sum / n;
+      best = s;
+    }
+  }
+  return best;
+}
+
+// Places the pose's joints on their rays at the camera depths of the track's joints (its
+// core-joint centre's for joints it lacks); scores x score_factor x exp(-age / track_decay_s).
+void PlaceAtTrack(const SingleViewOptions& options, const Tracks::Slot& slot, double timestamp_s, const Keypoint* kps,
+                  const ViewGeometry& geo, std::span<const int> core_joints, Eigen::Matrix4Xd* person) {
+  const int num_joints = static_cast<int>(slot.pose.size() / 4);
+  const Eigen::Map<const Eigen::Matrix4Xd> pose(slot.pose.data(), 4, num_joints);
+  person->setZero(4, num_joints);
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  int n = 0;
+  for (int j : core_joints) {
+    if (pose(3, j) <= 0) continue;
+    sum += pose.col(j).head<3>();
+    ++n;
+  }
+  if (n == 0) return;
+  const double center_depth = CameraDepth(geo, sum / n);
+  if (!(center_depth > 0)) return;
+  const double factor = options.score_factor * std::exp(-(timestamp_s - slot.supported_s) / options.track_decay_s);
+  for (int j = 0; j < num_joints; ++j) {
+    if (kps[j].score <= 0) continue;
+    const double joint_depth = pose(3, j) > 0 ? CameraDepth(geo, pose.col(j).head<3>()) : 0.0;
+    const double depth = joint_depth > 0 ? joint_depth : center_depth;
+    person->col(j) << geo.center + kps[j].ray * depth, kps[j].score * factor;
+  }
+}
+
 }  // namespace
 
 GroundJoints ResolveGroundJoints(const JointNames& joints) {
@@ -194,12 +258,41 @@ int steps::SingleView(const SingleViewOptions& options, const SingleViewInput& i
   }
   std::sort(scratch->order.begin(), scratch->order.end());
 
-  int implausible = 0;
+  int implausible = 0, tracked = 0;
+  const bool assist = options.track_assist && in.tracks != nullptr;
+  if (assist) {
+    // Tracks continued by a person found this frame (centre within duplicate_distance_m) assist nobody.
+    scratch->track_used.assign(in.tracks->slots.size(), 0);
+    for (size_t s = 0; s < in.tracks->slots.size(); ++s) {
+      const Tracks::Slot& slot = in.tracks->slots[s];
+      if (slot.id < 0 || slot.pose.size() != 4 * static_cast<size_t>(num_joints)) {
+        scratch->track_used[s] = 1;
+        continue;
+      }
+      Eigen::Vector3d track_center;
+      if (!Center(Eigen::Map<const Eigen::Matrix4Xd>(slot.pose.data(), 4, num_joints), core_joints, &track_center)) {
+        continue;
+      }
+      for (const Eigen::Vector3d& other : scratch->centers) {
+        if ((other - track_center).norm() < options.duplicate_distance_m) scratch->track_used[s] = 1;
+      }
+    }
+  }
   for (const auto& [negative_confidence, g] : scratch->order) {
     const Keypoint* kps = views.Pose(g);
     const ViewGeometry& geo = geometry[views.view_of[g]];
     Eigen::Vector3d center;
-    if (options.ground_prior) {
+    const int track_slot = assist ? MatchTrack(options, *in.tracks, in.timestamp_s, kps, geo,
+                                               views.bbox_diag[g] / geo.focal, core_joints, scratch->track_used)
+                                  : -1;
+    bool from_track = false;
+    if (track_slot >= 0) {
+      PlaceAtTrack(options, in.tracks->slots[track_slot], in.timestamp_s, kps, geo, core_joints, &scratch->person);
+      from_track = Center(scratch->person, core_joints, &center);
+    }
+    if (from_track) {
+      // placed at the track's depth
+    } else if (options.ground_prior) {
       scratch->person.resize(4, num_joints);
       if (!PlaceOnGround(options, kps, geo, in.limbs, in.ground, &scratch->depths, &scratch->person, nullptr) ||
           !Center(scratch->person, core_joints, &center) || !in.room.Contains(center, 0.0)) {
@@ -237,9 +330,14 @@ int steps::SingleView(const SingleViewOptions& options, const SingleViewInput& i
     if (empty >= options.min_empty_views && empty > 1) continue;
     lifted->AddPerson() = scratch->person;
     scratch->centers.push_back(center);
+    if (from_track) {
+      scratch->track_used[track_slot] = 1;
+      ++tracked;
+    }
   }
   stats->single_view_persons = lifted->num_persons();
   stats->single_view_implausible = implausible;
+  stats->single_view_tracked = tracked;
   return lifted->num_persons();
 }
 

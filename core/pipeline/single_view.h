@@ -36,6 +36,15 @@
 //     vertical (a lying person, a false detection spread across a bed, fail);
 //   * its centre lies inside the room (core/room.h; without a room this check passes);
 // plus the checks above. Poses failing the prior are counted in stats->single_view_implausible.
+//
+// With track_assist (off by default; needs tracking) a pose is first compared with the live
+// tracks whose last multi-view support (Tracks::Slot::supported_s) is at most track_max_age_s
+// old: projected into the pose's view, a track's joints valid in both lie at a mean distance of
+// at most track_max_distance x the pose's box diagonal. The closest such track (each used once)
+// gives the depth: every joint lies on its ray at the camera depth of the track's same joint
+// (of the track's core-joint centre when the track lacks it), never a guessed depth; its score is
+// the 2D confidence x score_factor x exp(-age / track_decay_s). Such persons skip the ground
+// prior, not the duplicate and verification checks, and are counted in stats->single_view_tracked.
 #pragma once
 
 #include <span>
@@ -46,6 +55,7 @@
 #include "core/pipeline/options.h"
 #include "core/pipeline/pipeline_types.h"
 #include "core/pipeline/proposal_scoring.h"
+#include "core/pipeline/track.h"
 #include "core/pipeline/view_verdict.h"
 #include "core/poses.h"
 #include "core/room.h"
@@ -73,6 +83,7 @@ struct SingleViewScratch {
   std::vector<double> depths;                    // per limb of one pose
   std::vector<Eigen::Vector3d> centers;          // per person: centre of its valid core joints
   Eigen::Matrix4Xd person;                       // the person being lifted
+  std::vector<char> track_used;                  // per track slot: assisted a pose this frame
 };
 
 // The ground prior's placement of one pose seen by `geo`'s camera (on `person`, 4 x J, zeroed
@@ -92,6 +103,8 @@ struct SingleViewInput {
   std::span<const TypicalLimb> limbs;      // the limbs with typical lengths (ResolveTypicalLimbs)
   const GroundJoints& ground;              // ground prior: ankles, hips, shoulders (ResolveGroundJoints)
   const Room& room;                        // ground prior: lifted centres must lie inside it
+  const Tracks* tracks = nullptr;          // track_assist: the live tracks (nullptr without tracking)
+  double timestamp_s = 0;                  // track_assist: this frame's time
   const Proposals& proposals;              // triangulate_full's, whose kept groups' poses are taken
   const Groups& groups;
   const ScoreKernel& kernel;  // the frame's kernels (step 6-7): agreement scale

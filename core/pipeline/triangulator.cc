@@ -225,6 +225,8 @@ void Triangulator::Process(std::span<const Poses2D> views, double timestamp_s, P
                                                                       .limbs = m.typical_limbs,
                                                                       .ground = m.ground_joints,
                                                                       .room = m.room,
+                                                                      .tracks = opt.track.enabled ? &state.tracks : nullptr,
+                                                                      .timestamp_s = timestamp_s,
                                                                       .proposals = buf.full,
                                                                       .groups = buf.groups,
                                                                       .kernel = buf.kernel,

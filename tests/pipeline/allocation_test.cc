@@ -27,7 +27,7 @@ long CountAllocations(Triangulator& tri, const std::vector<std::vector<Poses2D>>
   return g_allocations.load();
 }
 
-// single_view: 0 off, 1 the limb-length depth, 2 the ground prior.
+// single_view: 0 off, 1 the limb-length depth, 2 the ground prior and track assistance.
 void CheckNoAllocationOnceWarm(bool whole_body, int cameras, int people, bool temporal = false, bool robust = false,
                                int single_view = 0) {
   synthetic::SceneOptions options;
@@ -51,6 +51,7 @@ void CheckNoAllocationOnceWarm(bool whole_body, int cameras, int people, bool te
   tri_options.triangulate.robust_views = robust;
   tri_options.single_view.enabled = single_view > 0;
   tri_options.single_view.ground_prior = single_view == 2;
+  tri_options.single_view.track_assist = single_view == 2;
   Triangulator tri(scene.cameras, scene.joint_names, tri_options);
   Poses3D persons;
   FrameStats stats;

@@ -179,7 +179,8 @@ struct OneViewScene {
     kernel.scale_m = 0.05;
     found.Clear(17);
   }
-  int Run(const SingleViewOptions& options, const Room& room, Poses3D* lifted, FrameStats* stats) {
+  int Run(const SingleViewOptions& options, const Room& room, Poses3D* lifted, FrameStats* stats,
+          const Tracks* tracks = nullptr, double timestamp_s = 0) {
     return steps::SingleView(options,
                              {.views = prepared,
                               .geometry = geometry,
@@ -187,6 +188,8 @@ struct OneViewScene {
                               .limbs = limbs,
                               .ground = ground,
                               .room = room,
+                              .tracks = tracks,
+                              .timestamp_s = timestamp_s,
                               .proposals = no_proposals,
                               .groups = no_groups,
                               .kernel = kernel,
@@ -253,6 +256,95 @@ TEST(SingleViewGroundPrior, CountsTheImplausibleAndThoseOutsideTheRoom) {
   room.size_m.x() = 4.0;  // x up to 1.0
   EXPECT_EQ(typical.Run(GroundPriorOn(), room, &lifted, &stats), 1);
   EXPECT_EQ(stats.single_view_implausible, 0);
+}
+
+// One live track (id 7) whose last pose is `pose`, supported by two views at `supported_s`.
+Tracks OneTrack(const Eigen::Matrix4Xd& pose, double supported_s) {
+  Tracks tracks;
+  tracks.slots.resize(1);
+  tracks.slots[0].id = 7;
+  tracks.slots[0].timestamp_s = supported_s;
+  tracks.slots[0].supported_s = supported_s;
+  tracks.slots[0].pose.assign(pose.data(), pose.data() + pose.size());
+  return tracks;
+}
+
+TEST(SingleViewTrackAssist, PlacesAPoseAtItsTracksDepthWithAConfidenceThatFallsWithAge) {
+  // Seen by camera 0 only, 0.5 s after two views last saw it where it stands: every joint lies on
+  // its ray at the camera depth of the track's same joint, i.e. exactly in place; scores
+  // 1 x score_factor 0.5 x exp(-0.5 s / 0.5 s).
+  const Eigen::Matrix4Xd truth = test::StandingPerson(0.5, 0.2);
+  OneViewScene scene(truth);
+  SingleViewOptions options = GroundPriorOn();
+  options.track_assist = true;
+  options.floor_z_m = 10.0;  // the ground prior finds no floor: only the track can place the pose
+  const Tracks tracks = OneTrack(truth, 1.0);
+  Poses3D lifted;
+  FrameStats stats;
+  ASSERT_EQ(scene.Run(options, Room{}, &lifted, &stats, &tracks, 1.5), 1);
+  EXPECT_EQ(stats.single_view_tracked, 1);
+  EXPECT_EQ(stats.single_view_implausible, 0);
+  for (int j = 0; j < 17; ++j) {
+    EXPECT_LT((lifted.Person(0).col(j).head<3>() - truth.col(j).head<3>()).norm(), 1e-9) << "joint " << j;
+    EXPECT_NEAR(lifted.Person(0)(3, j), 0.5 * std::exp(-1.0), 1e-12) << "joint " << j;
+  }
+  // A track that moved 0.3 m sideways still matches; the depth is the track's, not invented.
+  Eigen::Matrix4Xd moved = truth;
+  moved.row(1).array() += 0.3;
+  const Tracks moved_tracks = OneTrack(moved, 1.0);
+  ASSERT_EQ(scene.Run(options, Room{}, &lifted, &stats, &moved_tracks, 1.2), 1);
+  EXPECT_EQ(stats.single_view_tracked, 1);
+  EXPECT_NEAR(lifted.Person(0)(3, kHipL), 0.5 * std::exp(-0.4), 1e-12);
+}
+
+TEST(SingleViewTrackAssist, DropsThePersonWhenItsTrackIsStaleOrContinuedByAFoundPerson) {
+  const Eigen::Matrix4Xd truth = test::StandingPerson(0.5, 0.2);
+  OneViewScene scene(truth);
+  SingleViewOptions options = GroundPriorOn();
+  options.track_assist = true;
+  options.floor_z_m = 10.0;  // the ground prior finds no floor
+  const Tracks tracks = OneTrack(truth, 1.0);
+  Poses3D lifted;
+  FrameStats stats;
+  // 1.0 s after the last multi-view support: still assisted (track_max_age_s = 1.0).
+  EXPECT_EQ(scene.Run(options, Room{}, &lifted, &stats, &tracks, 2.0), 1);
+  // 1.01 s: stale; the ground prior rejects the pose.
+  EXPECT_EQ(scene.Run(options, Room{}, &lifted, &stats, &tracks, 2.01), 0);
+  EXPECT_EQ(stats.single_view_tracked, 0);
+  EXPECT_EQ(stats.single_view_implausible, 1);
+  // Without track_assist the track is ignored.
+  options.track_assist = false;
+  EXPECT_EQ(scene.Run(options, Room{}, &lifted, &stats, &tracks, 1.5), 0);
+  // A track that a person found this frame continues (centre within 0.5 m) assists nobody. The
+  // track moved 0.3 m sideways (still matching the pose), the found person 0.4 m beyond it: 0.7 m
+  // from the pose's place, so neither its projection nor the duplicate check takes the pose.
+  options.track_assist = true;
+  Eigen::Matrix4Xd moved = truth, found = truth;
+  moved.row(1).array() += 0.3;
+  found.row(1).array() += 0.7;
+  const Tracks moved_tracks = OneTrack(moved, 1.0);
+  EXPECT_EQ(scene.Run(options, Room{}, &lifted, &stats, &moved_tracks, 1.5), 1) << "nobody found yet";
+  EXPECT_EQ(stats.single_view_tracked, 1);
+  scene.found.AddPerson() = found;
+  EXPECT_EQ(scene.Run(options, Room{}, &lifted, &stats, &moved_tracks, 1.5), 0);
+  EXPECT_EQ(stats.single_view_tracked, 0);
+}
+
+TEST(TracksCommit, RecordsMultiViewSupportOnlyForPersonsWithoutLiftedJoints) {
+  Poses3D persons;
+  persons.Clear(17);
+  persons.AddPerson(3) = test::StandingPerson(0, 0);
+  Tracks tracks;
+  tracks.slots.resize(1);
+  tracks.slots[0].id = 3;
+  tracks.Commit(persons, 1, 2.0);
+  EXPECT_EQ(tracks.slots[0].supported_s, 2.0) << "triangulated joints";
+  std::span<uint8_t> source = persons.PersonProvenance(0);
+  ASSERT_EQ(source.size(), 17u);
+  source[5] = static_cast<uint8_t>(JointProvenance::kLifted);
+  tracks.Commit(persons, 1, 3.0);
+  EXPECT_EQ(tracks.slots[0].timestamp_s, 3.0);
+  EXPECT_EQ(tracks.slots[0].supported_s, 2.0) << "one lifted joint: no multi-view support";
 }
 
 }  // namespace
