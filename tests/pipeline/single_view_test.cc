@@ -9,6 +9,7 @@
 
 #include "core/joints.h"
 #include "core/pipeline/single_view.h"
+#include "core/pipeline/triangulator.h"
 #include "core/pipeline/undistort.h"
 #include "core/pipeline/view_geometry.h"
 #include "tests/pipeline/test_scene.h"
@@ -328,6 +329,59 @@ TEST(SingleViewTrackAssist, DropsThePersonWhenItsTrackIsStaleOrContinuedByAFound
   scene.found.AddPerson() = found;
   EXPECT_EQ(scene.Run(options, Room{}, &lifted, &stats, &moved_tracks, 1.5), 0);
   EXPECT_EQ(stats.single_view_tracked, 0);
+}
+
+TEST(SingleViewTrackAssist, KeepsAPersonWhoWalksOutOfAllButOneCameraUntilItsTrackIsStale) {
+  // Five ring cameras, 10 frames/s; a person walks 5 cm per frame along x. Frames 0-4: all cameras
+  // see it (triangulated). From frame 5 only camera 0 does (the others' detections removed, and
+  // single_view.min_empty_views = 5 so that their empty views do not veto). The ground prior is
+  // made to find no floor (floor_z_m = 10), so only the track can place it: frames 5-14 (up to
+  // 1.0 s after the last multi-view support at 0.4 s) keep the person, lifted from one view, with
+  // the track id it had and its confidence falling; from frame 15 it is no longer lifted (its
+  // track coasts for track.max_missing_frames, then ends).
+  const std::vector<Camera> cameras = test::RingCameras(5);
+  TriangulatorOptions options;
+  options.single_view.enabled = true;
+  options.single_view.ground_prior = true;
+  options.single_view.floor_z_m = 10.0;
+  options.single_view.track_assist = true;
+  options.single_view.min_empty_views = 5;
+  Triangulator tri(cameras, CocoBodyJoints(), options);
+  Poses3D persons;
+  FrameStats stats;
+  int track_id = -1;
+  double last_score = 1.0;
+  for (int f = 0; f < 20; ++f) {
+    const Eigen::Matrix4Xd truth = test::StandingPerson(-0.5 + 0.05 * f, 0.2);
+    std::vector<Poses2D> views = test::ProjectPersons(cameras, {truth});
+    if (f >= 5) {
+      for (size_t v = 1; v < views.size(); ++v) views[v].Clear(17);
+    }
+    tri.Process(views, 0.1 * f, &persons, &stats);
+    int lifted = -1;
+    for (int p = 0; p < persons.num_persons(); ++p) {
+      if (persons.Provenance(p, kHipL) == JointProvenance::kLifted) lifted = p;
+    }
+    if (f < 5) {
+      ASSERT_EQ(persons.num_persons(), 1) << "frame " << f;
+      EXPECT_EQ(lifted, -1) << "frame " << f;
+      track_id = persons.track_ids[0];
+    } else if (f <= 14) {
+      ASSERT_GE(lifted, 0) << "frame " << f;
+      EXPECT_EQ(stats.single_view_tracked, 1) << "frame " << f;
+      EXPECT_EQ(persons.track_ids[lifted], track_id) << "frame " << f;
+      const Eigen::Vector3d hips = 0.5 * (persons.Person(lifted).col(kHipL) + persons.Person(lifted).col(kHipR)).head<3>();
+      // The depth is the track's: off by at most the distance walked since the last multi-view
+      // frame (here mostly along camera 0's rays: 0.045 m at frame 5, 0.448 m at frame 14).
+      EXPECT_LT((hips - 0.5 * (truth.col(kHipL) + truth.col(kHipR)).head<3>()).norm(), 0.05 * (f - 4) + 0.01)
+          << "frame " << f;
+      EXPECT_LT(persons.Person(lifted)(3, kHipL), last_score) << "frame " << f;
+      last_score = persons.Person(lifted)(3, kHipL);
+    } else {
+      EXPECT_EQ(lifted, -1) << "frame " << f;
+      EXPECT_EQ(stats.single_view_tracked, 0) << "frame " << f;
+    }
+  }
 }
 
 TEST(TracksCommit, RecordsMultiViewSupportOnlyForPersonsWithoutLiftedJoints) {
