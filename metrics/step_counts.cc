@@ -6,7 +6,8 @@ namespace rpt::metrics {
 std::array<int, kNumCounters> Counters(const FrameStats& stats) {
   return {stats.pruned_limbs,        stats.small_groups,        stats.conflicting_proposals, stats.mirrored_groups,
           stats.unsupported_persons, stats.single_view_persons, stats.replaced_joints,       stats.filled_joints,
-          stats.new_tracks,          stats.coasting_tracks,     stats.bone_length_corrections};
+          stats.new_tracks,          stats.coasting_tracks,     stats.bone_length_corrections,
+          stats.single_view_implausible, stats.single_view_tracked};
 }
 
 void StepCountAccumulator::Add(const FrameStats& stats) {

@@ -55,6 +55,8 @@ py::dict StatsDict(const FrameStats& stats) {
   d["mirrored_groups"] = stats.mirrored_groups;
   d["unsupported_persons"] = stats.unsupported_persons;
   d["single_view_persons"] = stats.single_view_persons;
+  d["single_view_implausible"] = stats.single_view_implausible;
+  d["single_view_tracked"] = stats.single_view_tracked;
   d["replaced_joints"] = stats.replaced_joints;
   d["filled_joints"] = stats.filled_joints;
   d["new_tracks"] = stats.new_tracks;

@@ -25,6 +25,9 @@ struct FrameStats {
   int mirrored_groups = 0;    // groups dropped as left/right-swapped duplicates of another group
   int unsupported_persons = 0;  // verify: persons dropped because more views see nobody there than see them
   int single_view_persons = 0;  // single_view: persons placed from one view
+  int single_view_tracked = 0;      // single_view: of the persons placed, those at their track's depth
+  int single_view_implausible = 0;  // single_view with ground_prior: poses not lifted (no floor point,
+                                    // body size, posture or outside the room)
   int replaced_joints = 0;    // post-processing: implausible joints replaced by a neighbour
   int filled_joints = 0;      // missing joints filled from a neighbour (post-processing, and
                               // joints marked missing by bone_lengths)

@@ -76,6 +76,7 @@ TriangulatorModel BuildModel(std::vector<Camera> cameras, JointNames input_joint
   m.core_mirror = MirrorIndices(core_names);
   m.all_limbs = ResolveLimbs(LimbsFor(m.output_joints), m.output_joints);
   m.typical_limbs = ResolveTypicalLimbs(m.output_joints);
+  m.ground_joints = ResolveGroundJoints(m.output_joints);
   m.room = Room{m.resolved.room_check.center_m, m.resolved.room_check.size_m};
   m.max_gap_s = m.resolved.track.max_gap_s;
   m.unobserved_score = m.resolved.UnobservedScore();

@@ -38,6 +38,7 @@ struct TriangulatorModel {
   std::vector<ResolvedLimb> all_limbs;   // indexed by output joint
   std::vector<int> neighbour;          // per output joint, -1 = none
   std::vector<TypicalLimb> typical_limbs;  // single_view: limbs with typical lengths
+  GroundJoints ground_joints;              // single_view's ground prior: ankles, hips, shoulders
 
   // The scene and the frames' continuity.
   Room room;             // room_check.center_m / size_m (the dataset's room unless the user set them)

@@ -302,6 +302,23 @@ struct SingleViewOptions {
   // values: a pose is not lifted when min_empty_views (and more than one) other views are empty.
   int min_empty_views = 2;
   double min_inside_fraction = 0.8;  // a view is empty only if this share of the joints lands in the image
+  // The ground-plane and body-size prior (single_view.h): stand the person upright on the floor
+  // (world z up) instead of at the limb-length depth, and lift it only if its body size, posture
+  // and place are plausible. Physical values, the same for every dataset.
+  bool ground_prior = false;
+  double floor_z_m = 0.0;        // world z of the floor (readers give z up, floor near z = 0)
+  double ankle_height_m = 0.08;  // ankle joint centre above the floor
+  double hip_height_m = 0.90;    // hip joint centre above the floor when standing (no ankle seen)
+  double min_body_scale = 0.75;  // body size / typical adult's, measured from the limbs once placed
+  double max_body_scale = 1.30;
+  double min_upright = 0.5;      // cosine between the hip-to-shoulder direction and the vertical
+  // Track assistance (needs track.enabled): a pose matching a live track's projection is placed
+  // at the track's depth, its scores times exp(-age / track_decay_s), age = time since the
+  // track's last multi-view support; not after track_max_age_s.
+  bool track_assist = false;
+  double track_max_age_s = 1.0;
+  double track_decay_s = 0.5;
+  double track_max_distance = 0.5;  // mean 2D joint distance to the track's projection / the pose's box diagonal
 };
 
 template <class Visitor, OptionsOf<SingleViewOptions> Self>
@@ -326,6 +343,36 @@ void VisitFields(Visitor& v, Self& o) {
   v("min_inside_fraction", o.min_inside_fraction,
     OptionSpec{.help = "a view is empty only if this share of the lifted joints lands in the image", .min = 0,
                .max = 1});
+  v("ground_prior", o.ground_prior,
+    OptionSpec{.help = "stand the person upright on the floor (ankles, else hips, at their height) and lift it only "
+                       "if its body size, posture and place are plausible; false: the limb-length depth"});
+  v("floor_z_m", o.floor_z_m,
+    OptionSpec{.help = "world z of the floor (z up)", .unit = "m", .min = -1e6, .max = 1e6});
+  v("ankle_height_m", o.ankle_height_m,
+    OptionSpec{.help = "ankle joint centre above the floor", .unit = "m", .min = 0, .max = 10});
+  v("hip_height_m", o.hip_height_m,
+    OptionSpec{.help = "hip joint centre above the floor of a standing person (used when no ankle is seen)",
+               .unit = "m", .min = 0, .max = 10});
+  v("min_body_scale", o.min_body_scale,
+    OptionSpec{.help = "smallest plausible body size relative to a typical adult (limb lengths once placed)",
+               .min = 0, .max = 100});
+  v("max_body_scale", o.max_body_scale,
+    OptionSpec{.help = "largest plausible body size relative to a typical adult", .min = 0, .max = 100});
+  v("min_upright", o.min_upright,
+    OptionSpec{.help = "cosine between the placed hip-to-shoulder direction and the vertical, at least", .min = -1,
+               .max = 1});
+  v("track_assist", o.track_assist,
+    OptionSpec{.help = "place a pose that matches a live track's projection at the track's depth (needs tracking)"});
+  v("track_max_age_s", o.track_max_age_s,
+    OptionSpec{.help = "no track assistance once the track's last multi-view support is older", .unit = "s",
+               .min = 0, .max = 1e6});
+  v("track_decay_s", o.track_decay_s,
+    OptionSpec{.help = "track-assisted joint scores x exp(-age / this), age since the last multi-view support",
+               .unit = "s", .min = 1e-6, .max = 1e6});
+  v("track_max_distance", o.track_max_distance,
+    OptionSpec{.help = "mean 2D joint distance to a track's projection, as a share of the pose's box diagonal, "
+                       "under which the pose is that track's",
+               .min = 0, .max = 100});
 }
 
 // Step 12.

@@ -2,6 +2,7 @@
 #include "core/pipeline/track.h"
 
 #include <algorithm>
+#include <limits>
 
 namespace rpt {
 
@@ -38,6 +39,13 @@ void Tracks::Commit(const Poses3D& persons, int num_detected, double timestamp_s
     std::copy_n(persons.data.data() + p * size, size, slot.pose.data());
     slot.timestamp_s = timestamp_s;
     slot.missing = 0;
+    bool multi_view = false, lifted = false;
+    for (int j = 0; j < persons.num_joints; ++j) {
+      const JointProvenance source = persons.Provenance(p, j);
+      multi_view |= source == JointProvenance::kTriangulated || source == JointProvenance::kSmoothed;
+      lifted |= source == JointProvenance::kLifted;
+    }
+    if (multi_view && !lifted) slot.supported_s = timestamp_s;
   }
 }
 
@@ -93,6 +101,7 @@ int steps::Track(const TrackOptions& options, std::span<const int> match_joints,
     }
     slots[s].id = tracks->next_id++;
     slots[s].missing = 0;
+    slots[s].supported_s = -std::numeric_limits<double>::infinity();
     slots[s].pose.clear();
     slot_used[s] = 1;
     persons->track_ids[p] = slots[s].id;

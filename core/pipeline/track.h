@@ -8,6 +8,7 @@
 // it ends. Tracking does not smooth.
 #pragma once
 
+#include <limits>
 #include <span>
 #include <tuple>
 #include <vector>
@@ -25,6 +26,9 @@ struct Tracks {
     int id = -1;  // -1 = free slot
     int missing = 0;
     double timestamp_s = 0;
+    // Time of the last output with a joint seen by two views (triangulated or smoothed, none
+    // lifted from one view); -infinity until then. single_view's track_assist reads it.
+    double supported_s = -std::numeric_limits<double>::infinity();
     std::vector<double> pose;  // num_joints * 4, the track's last output
   };
   std::vector<Slot> slots;
@@ -38,7 +42,8 @@ struct Tracks {
   int FindSlot(int track_id) const;
   // The stored pose (num_joints x 4, column-major) and time of a track, or nullptr.
   const double* LastPose(int track_id, double* timestamp_s) const;
-  // Stores the poses of the first `num_detected` persons as their tracks' last poses.
+  // Stores the poses of the first `num_detected` persons as their tracks' last poses (and the time
+  // as supported_s when the person has a multi-view joint and no joint lifted from one view).
   void Commit(const Poses3D& persons, int num_detected, double timestamp_s);
 };
 

@@ -54,6 +54,8 @@ TEST(StepCountAccumulator, CountersFollowTheirNames) {
   stats.new_tracks = 9;
   stats.coasting_tracks = 10;
   stats.bone_length_corrections = 11;
+  stats.single_view_implausible = 12;
+  stats.single_view_tracked = 13;
   const auto counters = Counters(stats);
   for (int c = 0; c < kNumCounters; ++c) EXPECT_EQ(counters[c], c + 1) << kCounterNames[c];
 }

@@ -27,7 +27,9 @@ long CountAllocations(Triangulator& tri, const std::vector<std::vector<Poses2D>>
   return g_allocations.load();
 }
 
-void CheckNoAllocationOnceWarm(bool whole_body, int cameras, int people, bool temporal = false, bool robust = false) {
+// single_view: 0 off, 1 the limb-length depth, 2 the ground prior and track assistance.
+void CheckNoAllocationOnceWarm(bool whole_body, int cameras, int people, bool temporal = false, bool robust = false,
+                               int single_view = 0) {
   synthetic::SceneOptions options;
   options.rig.num_cameras = cameras;
   options.num_people = people;
@@ -47,6 +49,9 @@ void CheckNoAllocationOnceWarm(bool whole_body, int cameras, int people, bool te
     tri_options.smooth.mode = SmoothMode::kCausal;
   }
   tri_options.triangulate.robust_views = robust;
+  tri_options.single_view.enabled = single_view > 0;
+  tri_options.single_view.ground_prior = single_view == 2;
+  tri_options.single_view.track_assist = single_view == 2;
   Triangulator tri(scene.cameras, scene.joint_names, tri_options);
   Poses3D persons;
   FrameStats stats;
@@ -66,6 +71,11 @@ TEST(Allocation, WarmTriangulatorWithTemporalStepsDoesNotAllocateWholeBody) {
 TEST(Allocation, WarmTriangulatorWithRobustViewsDoesNotAllocate) {
   CheckNoAllocationOnceWarm(false, 12, 8, false, true);
   CheckNoAllocationOnceWarm(true, 5, 2, false, true);
+}
+TEST(Allocation, WarmTriangulatorWithSingleViewDoesNotAllocate) {
+  // Three cameras and six people: persons seen by one camera only occur.
+  CheckNoAllocationOnceWarm(false, 3, 6, false, false, 1);
+  CheckNoAllocationOnceWarm(false, 3, 6, false, false, 2);
 }
 
 // Smooths a sequence streamed through `smoother` (a whole sequence, then Flush), counting the

@@ -128,6 +128,8 @@ TEST(SingleView, LiftsAPoseOnlyWhenTheOtherViewsDoNotSeeAnEmptySpot) {
                     .num_output_joints = 17},
                    &prepared);
   const std::vector<TypicalLimb> limbs = ResolveTypicalLimbs(CocoBodyJoints());
+  const GroundJoints ground = ResolveGroundJoints(CocoBodyJoints());
+  const Room no_room;
   const Proposals no_proposals;
   const Groups no_groups;
   ScoreKernel kernel;
@@ -138,6 +140,8 @@ TEST(SingleView, LiftsAPoseOnlyWhenTheOtherViewsDoNotSeeAnEmptySpot) {
                                      .geometry = geometry,
                                      .core_joints = core,
                                      .limbs = limbs,
+                                     .ground = ground,
+                                     .room = no_room,
                                      .proposals = no_proposals,
                                      .groups = no_groups,
                                      .kernel = kernel,
