@@ -63,13 +63,18 @@ struct HandScene {
     for (const auto& name : DefaultCoreJoints()) core.push_back(FindJoint(CocoBodyJoints(), name));
     const std::vector<Eigen::Vector2d>* displaced[2] = {&displaced_a, &displaced_b};
     for (int v = 0; v < 2; ++v) {
-      views.push_back(test::ProjectPersons({cameras[v]}, std::vector<Eigen::Matrix4Xd>(displaced[v]->size(), person))[0]);
+      views.push_back(
+          test::ProjectPersons({cameras[v]}, std::vector<Eigen::Matrix4Xd>(displaced[v]->size(), person))[0]);
       for (size_t p = 0; p < displaced[v]->size(); ++p) {
         views[v].Person(static_cast<int>(p)).topRows<2>().colwise() += (*displaced[v])[p];
       }
     }
     steps::Undistort(UndistortOptions{},
-                     {.views = views, .cameras = cameras, .geometry = geometry, .derived = {}, .core_joints = core,
+                     {.views = views,
+                      .cameras = cameras,
+                      .geometry = geometry,
+                      .derived = {},
+                      .core_joints = core,
                       .num_output_joints = 17},
                      &prepared);
     steps::MakePairs(prepared, &pairs);
