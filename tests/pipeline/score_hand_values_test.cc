@@ -56,11 +56,9 @@ void ForScalarAndEveryKernel(const std::function<void(const std::string&)>& body
 struct HandScene {
   HandScene(const std::vector<Eigen::Vector2d>& displaced_a, const std::vector<Eigen::Vector2d>& displaced_b) {
     cameras = {test::LookAtCamera({-4, 0, 1}, {0, 0, 1}, "A"), test::LookAtCamera({0, -4, 1}, {0, 0, 1}, "B")};
-    for (const Camera& c : cameras) geometry.push_back(MakeViewGeometry(c));
     person = test::StandingPerson(0, 0);
     person.row(0).setZero();
     person.row(1).setZero();
-    for (const auto& name : DefaultCoreJoints()) core.push_back(FindJoint(CocoBodyJoints(), name));
     const std::vector<Eigen::Vector2d>* displaced[2] = {&displaced_a, &displaced_b};
     for (int v = 0; v < 2; ++v) {
       views.push_back(
@@ -69,14 +67,7 @@ struct HandScene {
         views[v].Person(static_cast<int>(p)).topRows<2>().colwise() += (*displaced[v])[p];
       }
     }
-    steps::Undistort(UndistortOptions{},
-                     {.views = views,
-                      .cameras = cameras,
-                      .geometry = geometry,
-                      .derived = {},
-                      .core_joints = core,
-                      .num_output_joints = 17},
-                     &prepared);
+    test::UndistortCocoViews(cameras, views, &geometry, &core, &prepared);
     steps::MakePairs(prepared, &pairs);
   }
 

@@ -165,18 +165,9 @@ struct OneViewScene {
 
   // `person` detected by camera 0 only.
   explicit OneViewScene(const Eigen::Matrix4Xd& person) {
-    for (const Camera& c : cameras) geometry.push_back(MakeViewGeometry(c));
-    for (const auto& n : DefaultCoreJoints()) core.push_back(FindJoint(CocoBodyJoints(), n));
     std::vector<Poses2D> views = test::ProjectPersons(cameras, {person});
     for (size_t v = 1; v < views.size(); ++v) views[v].Clear(17);
-    steps::Undistort(UndistortOptions{},
-                     {.views = views,
-                      .cameras = cameras,
-                      .geometry = geometry,
-                      .derived = {},
-                      .core_joints = core,
-                      .num_output_joints = 17},
-                     &prepared);
+    test::UndistortCocoViews(cameras, views, &geometry, &core, &prepared);
     kernel.scale_m = 0.05;
     found.Clear(17);
   }

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <string>
 
+#include "core/pipeline/undistort.h"
+
 namespace rpt::test {
 
 Camera LookAtCamera(const Eigen::Vector3d& center, const Eigen::Vector3d& target, const std::string& name) {
@@ -70,6 +72,22 @@ std::vector<Poses2D> ProjectPersons(const std::vector<Camera>& cameras, const st
     }
   }
   return views;
+}
+
+void UndistortCocoViews(const std::vector<Camera>& cameras, const std::vector<Poses2D>& views,
+                        std::vector<ViewGeometry>* geometry, std::vector<int>* core, PreparedViews* prepared) {
+  geometry->clear();
+  for (const Camera& c : cameras) geometry->push_back(MakeViewGeometry(c));
+  core->clear();
+  for (const auto& name : DefaultCoreJoints()) core->push_back(FindJoint(CocoBodyJoints(), name));
+  steps::Undistort(UndistortOptions{},
+                   {.views = views,
+                    .cameras = cameras,
+                    .geometry = *geometry,
+                    .derived = {},
+                    .core_joints = *core,
+                    .num_output_joints = 17},
+                   prepared);
 }
 
 }  // namespace rpt::test

@@ -7,6 +7,8 @@
 
 #include "core/camera.h"
 #include "core/joints.h"
+#include "core/pipeline/pipeline_types.h"
+#include "core/pipeline/view_geometry.h"
 #include "core/poses.h"
 
 namespace rpt::test {
@@ -23,5 +25,10 @@ Eigen::Matrix4Xd StandingPerson(double x, double y, double yaw = 0.0);
 
 // Projects 3D persons (4 x J each) into every camera: one Poses2D per camera.
 std::vector<Poses2D> ProjectPersons(const std::vector<Camera>& cameras, const std::vector<Eigen::Matrix4Xd>& persons);
+
+// What the steps after undistortion read of COCO-17 `views` of `cameras`: each camera's view
+// geometry, the default core joints and the views undistorted with the default options.
+void UndistortCocoViews(const std::vector<Camera>& cameras, const std::vector<Poses2D>& views,
+                        std::vector<ViewGeometry>* geometry, std::vector<int>* core, PreparedViews* prepared);
 
 }  // namespace rpt::test

@@ -21,17 +21,7 @@ namespace {
 struct VerifyFixture {
   VerifyFixture(std::vector<Eigen::Matrix4Xd> detected, std::vector<std::pair<Eigen::Matrix4Xd, int>> candidates)
       : cameras(test::RingCameras(5)) {
-    for (const Camera& c : cameras) geometry.push_back(MakeViewGeometry(c));
-    for (const auto& n : DefaultCoreJoints()) core.push_back(FindJoint(CocoBodyJoints(), n));
-    const std::vector<Poses2D> views = test::ProjectPersons(cameras, detected);
-    steps::Undistort(UndistortOptions{},
-                     {.views = views,
-                      .cameras = cameras,
-                      .geometry = geometry,
-                      .derived = {},
-                      .core_joints = core,
-                      .num_output_joints = 17},
-                     &prepared);
+    test::UndistortCocoViews(cameras, test::ProjectPersons(cameras, detected), &geometry, &core, &prepared);
     persons.Clear(17);
     proposals.Clear(17);
     groups.begin = {0};
@@ -111,22 +101,13 @@ TEST(SingleView, LiftsAPoseOnlyWhenTheOtherViewsDoNotSeeAnEmptySpot) {
   // nobody: four empty views contradict it. With single_view.min_empty_views above four they do
   // not, and the pose is lifted to about the person's place.
   const std::vector<Camera> cameras = test::RingCameras(5);
-  std::vector<ViewGeometry> geometry;
-  for (const Camera& c : cameras) geometry.push_back(MakeViewGeometry(c));
-  std::vector<int> core;
-  for (const auto& n : DefaultCoreJoints()) core.push_back(FindJoint(CocoBodyJoints(), n));
   const Eigen::Matrix4Xd person = test::StandingPerson(0.5, 0.2);
   std::vector<Poses2D> views = test::ProjectPersons(cameras, {person});
   for (size_t v = 1; v < views.size(); ++v) views[v].Clear(17);
+  std::vector<ViewGeometry> geometry;
+  std::vector<int> core;
   PreparedViews prepared;
-  steps::Undistort(UndistortOptions{},
-                   {.views = views,
-                    .cameras = cameras,
-                    .geometry = geometry,
-                    .derived = {},
-                    .core_joints = core,
-                    .num_output_joints = 17},
-                   &prepared);
+  test::UndistortCocoViews(cameras, views, &geometry, &core, &prepared);
   const std::vector<TypicalLimb> limbs = ResolveTypicalLimbs(CocoBodyJoints());
   const GroundJoints ground = ResolveGroundJoints(CocoBodyJoints());
   const Room no_room;
