@@ -5,7 +5,9 @@
 # the whole process, "cpu" its user + system CPU, "others" the cores other processes kept busy
 # meanwhile (from /proc/stat), "load" the 1-minute load average before it. With --pair, the
 # machine's own ceiling instead: one --threads 1 run alone against two at once (two processes).
-# Usage: bash scripts/time_threads.sh [--pair] ROUNDS rpt-arguments...
+# IDLE_WAIT=S: before each round, wait up to S seconds until other processes use under 0.15 cores
+# (over 5 s), for a machine shared with others.
+# Usage: [IDLE_WAIT=S] bash scripts/time_threads.sh [--pair] ROUNDS rpt-arguments...
 #   bash scripts/time_threads.sh 5 eval --dataset synthetic --param frames=20000
 #   bash scripts/time_threads.sh --pair 4 eval --dataset synthetic --param frames=10000
 set -euo pipefail
@@ -39,12 +41,23 @@ except Exception:
 print(w, "%.2f" % (float(u) + float(s)), run)' "$1"
 }
 now() { date +%s.%N; }
+wait_idle() {
+  local end=$((SECONDS + ${IDLE_WAIT:-0})) b0 b1
+  while [ $SECONDS -lt $end ]; do
+    b0=$(busy)
+    sleep 5
+    b1=$(busy)
+    python3 -c "import sys; sys.exit(0 if ($b1 - $b0) / $hz / 5 < 0.15 else 1)" && return 0
+  done
+  return 0  # not idle: time anyway (the "others" column says so)
+}
 # Cores other processes used between two /proc/stat samples: BUSY0 BUSY1 T0 T1 OUR_CPU_SECONDS.
 others() { python3 -c "print('%.2f' % max(0.0, (($2 - $1) / $hz - $5) / ($4 - $3)))"; }
 
 args=("$@")
 echo "rpt ${args[*]}; $(nproc) cores; $(uptime)"
 for r in $(seq 1 "$rounds"); do
+  wait_idle
   if [ "$pair" = 0 ]; then
     for t in 1 2; do
       load=$(cut -d' ' -f1 /proc/loadavg)
@@ -84,13 +97,21 @@ if sys.argv[2] == "0":
         m = re.match(r"threads (\d) round \d+ run (\S+) command (\S+) cpu (\S+) others (\S+)", line)
         if m:
             rows[int(m[1])].append([float(x) if x != "NA" else float("nan") for x in m.groups()[1:]])
+
+    def summary(what, one, two):
+        r1, r2 = med(x[0] for x in one), med(x[0] for x in two)
+        c1, c2 = med(x[1] for x in one), med(x[1] for x in two)
+        print(f"{what}: median run: 1 thread {r1:.3f} s, 2 threads {r2:.3f} s ({r1 / r2:.2f}x); "
+              f"median command: {c1:.3f} s, {c2:.3f} s ({c1 / c2:.2f}x); "
+              f"CPU {med(x[2] for x in one):.2f} s, {med(x[2] for x in two):.2f} s; "
+              f"other processes {min(x[3] for x in one + two):.2f} to {max(x[3] for x in one + two):.2f} cores")
+
     one, two = rows[1], rows[2]
-    r1, r2 = med(x[0] for x in one), med(x[0] for x in two)
-    c1, c2 = med(x[1] for x in one), med(x[1] for x in two)
-    print(f"median run: 1 thread {r1:.3f} s, 2 threads {r2:.3f} s ({r1 / r2:.2f}x); "
-          f"median command: {c1:.3f} s, {c2:.3f} s ({c1 / c2:.2f}x); "
-          f"CPU {med(x[2] for x in one):.2f} s, {med(x[2] for x in two):.2f} s; "
-          f"other processes {min(x[3] for x in one + two):.2f} to {max(x[3] for x in one + two):.2f} cores")
+    summary(f"all {len(one)} rounds", one, two)
+    quiet = [i for i in range(min(len(one), len(two))) if one[i][3] < 0.1 and two[i][3] < 0.1]
+    if quiet:
+        summary(f"the {len(quiet)} rounds with other processes under 0.1 cores", [one[i] for i in quiet],
+                [two[i] for i in quiet])
 else:
     alone, pair = [], []
     for line in lines:
