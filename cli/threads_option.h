@@ -15,8 +15,9 @@ inline void AddThreadsOption(CLI::App* command, int* threads, std::string_view w
                              bool one_sequence_stages = false) {
   std::string help = std::string(what_runs_in_parallel) + " in parallel";
   if (one_sequence_stages) {
-    help += ", or for one sequence its reading, triangulation and measuring + writing (at most 3 threads; the "
-            "results of 1 thread)";
+    help +=
+        ", or for one sequence its reading, triangulation and measuring + writing (at most 8 threads; the "
+        "results of 1 thread)";
   }
   command->add_option("--threads", *threads, help + " (0 = automatic: all cores; at most the cores)")
       ->check(CLI::NonNegativeNumber);

@@ -11,11 +11,12 @@
 // wrong before the first frame is thrown by Open<Name> itself: bad parameters (ConfigError), a
 // missing root, calibration or annotation file, unknown cameras, subjects or sequences, malformed
 // headers (InputError naming the file and the place). Each source then announces the
-// SequenceHeader (name, cameras, joint names, room, fps) and converts one frame per Next() into the
-// caller's buffer, so memory stays flat in the number of frames: formats with a file per frame read
-// it when the frame is pulled; formats with every frame in one file (a .mat, JSON, NumPy or text
-// file) keep that file parsed and convert frame i from it (IndexedFrameSource), never holding the
-// converted frames of a sequence. Reading a whole dataset is its sources materialised
+// SequenceHeader (name, cameras, joint names, room, fps) and converts one frame at a time into the
+// caller's buffer (Pull, then Complete for the part that may run on several frames at once), so
+// memory stays flat in the number of frames: formats with a file per frame read it when the frame
+// is pulled; formats with every frame in one file (a .mat, JSON, NumPy or text file) keep that
+// file parsed and convert frame i from it (IndexedFrameSource), never holding the converted frames
+// of a sequence. Reading a whole dataset is its sources materialised
 // (ReadDataset, MaterializeAll). How each reader yields its frames: docs/datasets.md, "Streaming".
 // Readers do not validate (ValidateFrame, datasets/sequence.h): the consumer validates every frame
 // once. They still throw InputError for what they cannot parse and accept, correct and count

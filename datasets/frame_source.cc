@@ -7,14 +7,23 @@
 
 namespace rpt {
 
+bool FrameSource::Next(SequenceFrame* frame) {
+  if (!Pull(frame)) return false;
+  Complete(next_idx_++, frame);
+  return true;
+}
+
+void FrameSource::Complete(long, SequenceFrame*) const {}
+
 IndexedFrameSource::IndexedFrameSource(SequenceHeader header, size_t num_frames, ConvertFrame convert,
-                                       InputWarnings warnings)
+                                       InputWarnings warnings, CompleteFrame complete)
     : header_(std::move(header)),
       num_frames_(num_frames),
       convert_(std::move(convert)),
+      complete_(std::move(complete)),
       warnings_(std::move(warnings)) {}
 
-bool IndexedFrameSource::Next(SequenceFrame* frame) {
+bool IndexedFrameSource::Pull(SequenceFrame* frame) {
   if (next_ >= num_frames_) return false;
   frame->id.clear();
   frame->timestamp_s = 0;
@@ -26,9 +35,13 @@ bool IndexedFrameSource::Next(SequenceFrame* frame) {
   return true;
 }
 
+void IndexedFrameSource::Complete(long frame_idx, SequenceFrame* frame) const {
+  if (complete_) complete_(static_cast<size_t>(frame_idx), frame);
+}
+
 SequenceSource::SequenceSource(Sequence sequence) : sequence_(std::move(sequence)) {}
 
-bool SequenceSource::Next(SequenceFrame* frame) {
+bool SequenceSource::Pull(SequenceFrame* frame) {
   if (next_ >= sequence_.frames.size()) return false;
   *frame = std::move(sequence_.frames[next_]);
   sequence_.frames[next_] = SequenceFrame{};  // delivered: its memory goes with the caller's buffer

@@ -19,7 +19,8 @@ class AttachedDetections::Source final : public FrameSource {
   const SequenceHeader& header() const override { return header_; }
   long num_frames() const override { return frames_->num_frames(); }
 
-  bool Next(SequenceFrame* frame) override {
+  // The wrapped frame finished (its Next): the lookup needs its id, and counts the frames without detections.
+  bool Pull(SequenceFrame* frame) override {
     if (!frames_->Next(frame)) {
       Finish();
       return false;

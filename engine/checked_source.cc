@@ -15,14 +15,18 @@ CheckedSource::CheckedSource(std::unique_ptr<FrameSource> frames, bool check_ids
   if (check_ids_ && frames_->num_frames() > 0) id_hashes_.reserve(static_cast<size_t>(frames_->num_frames()));
 }
 
-bool CheckedSource::Next(SequenceFrame* frame) {
-  if (!frames_->Next(frame)) return false;
-  const SequenceHeader& h = frames_->header();
+bool CheckedSource::Pull(SequenceFrame* frame) {
+  if (!frames_->Pull(frame)) return false;
   if (check_ids_ && !id_hashes_.insert(std::hash<std::string>{}(frame->id)).second) {
-    throw InputError(h.name + ": frame '" + frame->id + "': repeated frame id");
+    throw InputError(frames_->header().name + ": frame '" + frame->id + "': repeated frame id");
   }
-  ValidateFrame(h, *frame, h.name);
   return true;
+}
+
+void CheckedSource::Complete(long frame_idx, SequenceFrame* frame) const {
+  frames_->Complete(frame_idx, frame);
+  const SequenceHeader& h = frames_->header();
+  ValidateFrame(h, *frame, h.name);
 }
 
 }  // namespace rpt::engine

@@ -3,7 +3,9 @@
 // frame as it is pulled (ValidateSequenceHeader, ValidateFrame: camera validity, joint counts,
 // finite coordinates, scores in [0, 1]; datasets/sequence.h), plus repeated frame ids. Readers
 // correct real-world imprecision first, so a reader's frames pass; what does not is an InputError
-// naming the sequence, the frame and the view.
+// naming the sequence, the frame and the view. The repeated-id check remembers the ids, so it runs
+// in Pull (in order); ValidateFrame reads only the frame and the header, so it runs in Complete,
+// after the wrapped source's Complete (datasets/frame_source.h).
 #pragma once
 
 #include <cstdint>
@@ -23,7 +25,8 @@ class CheckedSource final : public FrameSource {
 
   const SequenceHeader& header() const override { return frames_->header(); }
   long num_frames() const override { return frames_->num_frames(); }
-  bool Next(SequenceFrame* frame) override;
+  bool Pull(SequenceFrame* frame) override;
+  void Complete(long frame_idx, SequenceFrame* frame) const override;
   const InputWarnings& warnings() const override { return frames_->warnings(); }
 
  private:

@@ -13,15 +13,19 @@ namespace rpt::engine {
 namespace {
 
 // The stages in the order one thread runs them on a frame.
-enum Stage : int { kRead = 0, kProcess = 1, kEmit = 2, kNone = 3 };
+enum Stage : int { kRead = 0, kComplete = 1, kProcess = 2, kEmit = 3, kNone = 4 };
+constexpr long kNumStages = 4;
 
 // Where in a one-thread run stage `stage` of frame `frame` happens: errors compare by it.
-long OrderKey(long frame, Stage stage) { return frame * 3 + stage; }
+long OrderKey(long frame, Stage stage) { return frame * kNumStages + stage; }
 
 class Pipeline {
  public:
   Pipeline(const FrameStages& stages, int threads, long capacity)
-      : stages_(stages), threads_(std::max(1, threads)), capacity_(std::max(1L, capacity)) {}
+      : stages_(stages),
+        threads_(std::max(1, threads)),
+        capacity_(std::max(1L, capacity)),
+        complete_done_(static_cast<size_t>(capacity_), 0) {}
 
   void Run() {
     std::vector<std::thread> others;
@@ -40,44 +44,47 @@ class Pipeline {
  private:
   // Whether stage s has a frame (or the flush) to handle now. Called with the lock held.
   bool Runnable(Stage s) const {
-    if (running_[s] || failed_[s]) return false;  // a stage that threw never runs again
+    if (failed_[s]) return false;  // a stage that threw never runs again
     switch (s) {
       case kRead:
-        return !source_done_ && read_ < emitted_ + capacity_ && OrderKey(read_, kRead) < error_key_;
+        return !running_[kRead] && !source_done_ && read_ < emitted_ + capacity_ && OrderKey(read_, kRead) < error_key_;
+      case kComplete:  // several workers at once, on different frames
+        return handed_ < read_ && OrderKey(handed_, kComplete) < error_key_;
       case kProcess:
-        if (processed_ < read_) return OrderKey(processed_, kProcess) < error_key_;
-        return source_done_ && !flushed_ && OrderKey(read_, kProcess) < error_key_;
+        if (running_[kProcess]) return false;
+        if (processed_ < completed_) return OrderKey(processed_, kProcess) < error_key_;
+        return source_done_ && processed_ == read_ && !flushed_ && OrderKey(read_, kProcess) < error_key_;
       case kEmit:
-        return emitted_ < ready_ && OrderKey(emitted_, kEmit) < error_key_;
+        return !running_[kEmit] && emitted_ < ready_ && OrderKey(emitted_, kEmit) < error_key_;
       case kNone:
         break;
     }
     return false;
   }
 
-  // The stage a worker takes next: the one it just ran while that has work (fewer hand-overs),
-  // else the stage nearest the output (it frees slots). One worker alone takes them in a one-thread
-  // run's order: emit, process, read.
-  Stage Pick(Stage last) const {
-    if (threads_ > 1 && last != kNone && Runnable(last)) return last;
-    for (Stage s : {kEmit, kProcess, kRead}) {
+  // The stage a worker takes next. One worker alone takes them in a one-thread run's order (emit,
+  // process, complete, read: the frame in flight first). Several take the stages only one worker
+  // can run first (emit and process free slots, read fills them) and complete frames meanwhile.
+  Stage Pick() const {
+    static constexpr Stage kAlone[] = {kEmit, kProcess, kComplete, kRead};
+    static constexpr Stage kShared[] = {kEmit, kProcess, kRead, kComplete};
+    for (Stage s : threads_ > 1 ? kShared : kAlone) {
       if (Runnable(s)) return s;
     }
     return kNone;
   }
 
-  bool AnyRunning() const { return running_[kRead] || running_[kProcess] || running_[kEmit]; }
-  bool Complete() const { return source_done_ && flushed_ && emitted_ == read_; }
+  bool AnyRunnable() const { return Runnable(kRead) || Runnable(kComplete) || Runnable(kProcess) || Runnable(kEmit); }
+  bool AnyRunning() const { return running_[kRead] || completing_ > 0 || running_[kProcess] || running_[kEmit]; }
+  bool Finished() const { return source_done_ && flushed_ && emitted_ == read_; }
 
   void Work() {
     std::unique_lock<std::mutex> lock(mutex_);
-    Stage last = kNone;
     while (!finished_) {
-      const Stage s = Pick(last);
+      const Stage s = Pick();
       if (s == kNone) {
-        last = kNone;
         if (!AnyRunning()) {
-          if (error_ || Complete()) {
+          if (error_ || Finished()) {
             finished_ = true;
             wake_.notify_all();
             return;
@@ -91,11 +98,29 @@ class Pipeline {
         --sleeping_;
         continue;
       }
-      running_[s] = true;
-      // Another stage may have work for a sleeping worker now.
-      if (sleeping_ > 0 && (Runnable(kRead) || Runnable(kProcess) || Runnable(kEmit))) wake_.notify_one();
-      const long frame = s == kRead ? read_ : s == kProcess ? processed_ : emitted_;
-      const bool flush = s == kProcess && processed_ == read_;
+      long frame = 0;
+      bool flush = false;
+      switch (s) {
+        case kRead:
+          frame = read_;
+          break;
+        case kComplete:
+          frame = handed_++;
+          ++completing_;
+          break;
+        case kProcess:
+          frame = processed_;
+          flush = processed_ == read_;
+          break;
+        case kEmit:
+          frame = emitted_;
+          break;
+        case kNone:
+          break;
+      }
+      if (s != kComplete) running_[s] = true;
+      // Another stage (or frame) may have work for a sleeping worker now.
+      if (sleeping_ > 0 && AnyRunnable()) wake_.notify_one();
       lock.unlock();
       bool more = true;
       long ready = 0;
@@ -104,6 +129,9 @@ class Pipeline {
         switch (s) {
           case kRead:
             more = stages_.read(frame);
+            break;
+          case kComplete:
+            stages_.complete(frame);
             break;
           case kProcess:
             ready = flush ? (stages_.flush ? stages_.flush() : 0) : stages_.process(frame);
@@ -118,8 +146,11 @@ class Pipeline {
         error = std::current_exception();
       }
       lock.lock();
-      running_[s] = false;
-      last = s;
+      if (s == kComplete) {
+        --completing_;
+      } else {
+        running_[s] = false;
+      }
       if (error) {
         failed_[s] = true;
         const long key = flush ? OrderKey(frame, kProcess) : OrderKey(frame, s);
@@ -128,10 +159,19 @@ class Pipeline {
           error_ = error;
         }
       } else if (s == kRead) {
-        if (more) {
-          ++read_;
-        } else {
+        if (!more) {
           source_done_ = true;
+        } else if (stages_.complete) {
+          ++read_;
+        } else {  // nothing to complete: the frame is complete once read
+          handed_ = completed_ = ++read_;
+        }
+      } else if (s == kComplete) {
+        complete_done_[Slot(frame)] = 1;
+        // The frames complete so far in a row go on to the process stage.
+        while (completed_ < handed_ && complete_done_[Slot(completed_)] != 0) {
+          complete_done_[Slot(completed_)] = 0;
+          ++completed_;
         }
       } else if (s == kProcess) {
         if (flush) {
@@ -147,11 +187,14 @@ class Pipeline {
     }
   }
 
-  // Doubles the ring (no stage is running).
+  size_t Slot(long frame) const { return static_cast<size_t>(frame % capacity_); }
+
+  // Doubles the ring (no stage is running, so every frame handed to complete is complete).
   void Grow() {
     const long grown = capacity_ * 2;
     if (stages_.grow) stages_.grow(capacity_, grown, emitted_, read_);
     capacity_ = grown;
+    complete_done_.assign(static_cast<size_t>(capacity_), 0);
   }
 
   const FrameStages& stages_;
@@ -161,12 +204,17 @@ class Pipeline {
   std::mutex mutex_;
   std::condition_variable wake_;
   // Frames [emitted_, read_) are in the ring: [emitted_, ready_) ready to emit, [ready_,
-  // processed_) held back by the process stage, [processed_, read_) read and waiting for it.
-  long read_ = 0, processed_ = 0, ready_ = 0, emitted_ = 0;
+  // processed_) held back by the process stage, [processed_, completed_) complete and waiting for
+  // it, [completed_, handed_) being completed or complete after one that is not yet, [handed_,
+  // read_) read and waiting to be completed.
+  long read_ = 0, handed_ = 0, completed_ = 0, processed_ = 0, ready_ = 0, emitted_ = 0;
+  // Per slot, whether its frame in [completed_, handed_) is complete.
+  std::vector<char> complete_done_;
+  int completing_ = 0;        // complete stages running
   bool source_done_ = false;  // read returned false
   bool flushed_ = false;      // flush ran (after the last frame was processed)
-  bool running_[3] = {false, false, false};
-  bool failed_[3] = {false, false, false};
+  bool running_[kNumStages] = {false, false, false, false};  // read, process, emit (complete: completing_)
+  bool failed_[kNumStages] = {false, false, false, false};
   bool finished_ = false;
   int sleeping_ = 0;
   long error_key_ = std::numeric_limits<long>::max();

@@ -1,17 +1,25 @@
 // SPDX-License-Identifier: MIT
-// One sequence's frames through three stages (engine/run.h): read (pull the next frame from its
-// source: parsing, simulation, validation), process (the triangulator, whose state carries from
-// frame to frame) and emit (metrics, input checks, the sinks that write the outputs). Each stage
-// handles the frames one at a time and in order, as one thread would; the stages run at the same
-// time on different frames, on up to `threads` workers (the calling thread and threads - 1
-// others). Any worker runs any stage, one worker per stage at a time, so a stage's state needs no
-// lock of its own (the pipeline's mutex orders every hand-over) and the stages' work is the same
-// whatever the thread count: the results are those of one thread.
+// One sequence's frames through four stages (engine/run.h): read (pull the next frame from its
+// source, the in-order part of reading: parsing, the synthetic walk, repeated-id checks), complete
+// (the per-frame part of reading: the simulated detector, validation; datasets/frame_source.h),
+// process (the triangulator, whose state carries from frame to frame) and emit (metrics, input
+// checks, the sinks that write the outputs). Read, process and emit handle the frames one at a
+// time and in order, as one thread would; complete handles each frame once, in any order and on
+// several frames at once. The stages run at the same time on different frames, on up to `threads`
+// workers (the calling thread and threads - 1 others). Any worker runs any stage; read, process
+// and emit have one worker at a time, so their state needs no lock of its own (the pipeline's
+// mutex orders every hand-over), and complete may have several, so it must be thread-safe and
+// touch only its frame's slot and constant state. A frame reaches process once it and every
+// frame before it are complete. The stages' work is the same whatever the thread count: the
+// results are those of one thread.
 //
 // The frames live in a ring of reused slots, owned by the caller and indexed by the frame's
-// number modulo the ring's size: a slot is read into, processed, emitted, then read into again,
-// so memory is `capacity` frames however long the sequence. With one thread the stages take turns
-// frame by frame (read 0, process 0, emit 0, read 1, ...): a ring of one slot is enough.
+// number modulo the ring's size: a slot is read into, completed, processed, emitted, then read
+// into again, so memory is `capacity` frames however long the sequence. With one thread the
+// stages take turns frame by frame (read 0, complete 0, process 0, emit 0, read 1, ...): a ring
+// of one slot is enough. With several threads a free worker takes emit, process or read when one
+// has work (they are the ones only one worker can run, and the ring drains through them), else
+// completes the next frame.
 //
 // A process stage may hold frames back (offline smoothing hands a frame out once the frames after
 // it arrived): it returns how many frames became ready to emit. When every stage waits on the
@@ -20,7 +28,8 @@
 //
 // Errors: a stage that throws stops the pipeline; the error rethrown (once every worker stopped)
 // is the one a single thread would have met first (the earliest frame, and within a frame read
-// before process before emit): the stages finish the frames before it, and nothing after it.
+// before complete before process before emit): the stages finish the frames before it, and
+// nothing after it.
 #pragma once
 
 #include <functional>
@@ -30,7 +39,10 @@ namespace rpt::engine {
 struct FrameStages {
   // Reads frame `frame` into slot frame % capacity; false after the last frame.
   std::function<bool(long frame)> read;
-  // Processes frame `frame` (read, in its slot); returns how many frames became ready to emit
+  // Completes frame `frame` (read, in its slot). May run on several workers at once for different
+  // frames, and beside the other stages. Empty: the frames need no completing.
+  std::function<void(long frame)> complete;
+  // Processes frame `frame` (complete, in its slot); returns how many frames became ready to emit
   // (the next ones in order; 1 unless frames are held back).
   std::function<long(long frame)> process;
   // After the last frame was processed: returns how many held-back frames became ready (may be empty).

@@ -98,16 +98,19 @@ struct FrameSlot {
 };
 
 // Frames in flight when a sequence runs on several threads: enough for the stages to run ahead of
-// each other by a few frames, so that one slow frame does not stall the others (memory: this many
-// input frames, however long the sequence).
+// each other by a few frames, so that one slow frame does not stall the others, and for every
+// thread to have a frame to complete (memory: this many input frames, however long the sequence).
 constexpr long kPipelineFrames = 16;
-// Threads that can work on one sequence at once: one per stage.
-constexpr int kPipelineStages = 3;
+// Threads that can work on one sequence at once: one per in-order stage (read, process, emit) and
+// the rest completing frames (the per-frame part of reading), at most half the ring's frames so
+// that each has frames to work on.
+constexpr int kPipelineThreads = static_cast<int>(kPipelineFrames / 2);
 
 // Triangulates the frames of `source` (sequence `index`) as they are pulled, on `threads` threads:
-// reading, triangulating, and measuring + writing (Emit) are the pipeline's three stages, each in
-// frame order (engine/frame_pipeline.h). One thread holds one input frame at a time (a window's
-// worth with offline smoothing, which looks 3 x smooth.offline_sigma_s ahead); more threads hold
+// reading (the source's Pull), completing (its Complete, on several frames at once: simulation,
+// validation), triangulating, and measuring + writing (Emit) are the pipeline's four stages
+// (engine/frame_pipeline.h). One thread holds one input frame at a time (a window's worth with
+// offline smoothing, which looks 3 x smooth.offline_sigma_s ahead); more threads hold
 // kPipelineFrames (or that window).
 void RunSequence(int index, FrameSource& source, const RunOptions& options, const metrics::EvalOptions* eval,
                  FrameSink* sink, int threads, std::atomic<long>* frames_done, bool report_progress,
@@ -151,7 +154,8 @@ void RunSequence(int index, FrameSource& source, const RunOptions& options, cons
   };
 
   FrameStages stages;
-  stages.read = [&](long frame) { return source.Next(&slot(frame).frame); };
+  stages.read = [&](long frame) { return source.Pull(&slot(frame).frame); };
+  stages.complete = [&](long frame) { source.Complete(frame, &slot(frame).frame); };
   stages.process = [&](long frame) -> long {
     FrameSlot& s = slot(frame);
     try {
@@ -227,7 +231,7 @@ class SequenceView final : public FrameSource {
   explicit SequenceView(const Sequence& sequence) : sequence_(sequence) {}
   const SequenceHeader& header() const override { return sequence_; }
   long num_frames() const override { return static_cast<long>(sequence_.frames.size()); }
-  bool Next(SequenceFrame* frame) override {
+  bool Pull(SequenceFrame* frame) override {
     if (next_ >= sequence_.frames.size()) return false;
     *frame = sequence_.frames[next_++];
     return true;
@@ -274,8 +278,8 @@ RunResult Run(Input& input, const RunOptions& options, FrameSink* sink) {
   std::atomic<long> frames_done{0};
   RunResult result;
   if (count == 1) {
-    // One sequence: its stages (read, triangulate, measure + write) on up to three threads.
-    result.threads = ClampThreads(options.threads, kPipelineStages);
+    // One sequence: its stages (read, complete, triangulate, measure + write) on several threads.
+    result.threads = ClampThreads(options.threads, kPipelineThreads);
     RunSequence(0, input.source(0), options, eval ? &*eval : nullptr, sink, result.threads, &frames_done, true,
                 &runs[0]);
     input.Finished(0);

@@ -11,10 +11,12 @@
 // grow with the number of frames beyond what the metrics keep per person (metrics/accumulator.h).
 // Independent sequences run in parallel (OpenMP, one Triangulator per sequence); the totals are
 // merged in sequence order, so no number depends on the thread count. A single sequence runs as a
-// pipeline of three stages on up to three threads (engine/frame_pipeline.h): reading the next
-// frames (parsing, simulation, validation), triangulating (in order: its state carries from frame
-// to frame) and measuring + writing (metrics, checks, the sink, in order), with up to 16 frames in
-// flight; every stage sees the frames in the order one thread would, so the results are the same.
+// pipeline of four stages on up to eight threads (engine/frame_pipeline.h): reading the next
+// frames (the source's Pull: parsing, the synthetic walk, in order), completing them (its Complete:
+// simulated detections, validation; several frames at once), triangulating (in order: its state
+// carries from frame to frame) and measuring + writing (metrics, checks, the sink, in order), with
+// up to 16 frames in flight; the in-order stages see the frames in the order one thread would and
+// each frame is completed from its own data, so the results are the same.
 #pragma once
 
 #include <functional>
@@ -57,8 +59,8 @@ struct RunOptions {
   // steps' (like the metrics').
   std::shared_ptr<const JointAdapter> adapter;
   int warmup_frames = 0;  // frames per sequence excluded from timing
-  // Threads: sequences in parallel, or with one sequence its pipeline's stages (at most 3);
-  // 0 = automatic (at most the cores, the sequences or the stages). 1: one input frame at a time.
+  // Threads: sequences in parallel, or with one sequence its pipeline's stages (at most 8);
+  // 0 = automatic (at most the cores, the sequences or 8). 1: one input frame at a time.
   int threads = 0;
   // Called with the frames done so far (all sequences), by one thread at a time; may be empty.
   std::function<void(long frames_done)> progress;

@@ -10,7 +10,7 @@
 
 namespace rpt {
 
-// Counts the frames a consumer holds: the distinct buffers it passes to Next (a consumer that
+// Counts the frames a consumer holds: the distinct buffers it passes to Pull (a consumer that
 // kept frames would need a new buffer per kept frame).
 class CountingSource final : public FrameSource {
  public:
@@ -23,13 +23,14 @@ class CountingSource final : public FrameSource {
       : inner_(std::move(inner)), report_(report) {}
   const SequenceHeader& header() const override { return inner_->header(); }
   long num_frames() const override { return inner_->num_frames(); }
-  bool Next(SequenceFrame* frame) override {
+  bool Pull(SequenceFrame* frame) override {
     buffers_.insert(frame);
-    const bool more = inner_->Next(frame);
+    const bool more = inner_->Pull(frame);
     delivered_ += more ? 1 : 0;
     if (report_ != nullptr) *report_ = {buffers_.size(), delivered_};
     return more;
   }
+  void Complete(long frame_idx, SequenceFrame* frame) const override { inner_->Complete(frame_idx, frame); }
   const InputWarnings& warnings() const override { return inner_->warnings(); }
 
   size_t frames_alive_peak() const { return buffers_.size(); }

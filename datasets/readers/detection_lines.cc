@@ -99,7 +99,7 @@ class DetectionLineSource final : public FrameSource {
   long num_frames() const override { return -1; }
   const InputWarnings& warnings() const override { return warnings_; }
 
-  bool Next(SequenceFrame* frame) override {
+  bool Pull(SequenceFrame* frame) override {
     if (ended_) return false;
     std::string_view line;
     while (true) {

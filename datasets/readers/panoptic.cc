@@ -189,7 +189,7 @@ class PanopticSource final : public FrameSource {
     const long sampled = (static_cast<long>(files_.size()) + params_.every - 1) / params_.every;
     return params_.max_frames > 0 ? std::min<long>(sampled, params_.max_frames) : sampled;
   }
-  bool Next(SequenceFrame* frame) override {
+  bool Pull(SequenceFrame* frame) override {
     while (next_ < files_.size()) {
       if (params_.max_frames > 0 && delivered_ >= params_.max_frames) return false;
       const PoseFile& file = files_[next_];

@@ -206,12 +206,15 @@ std::vector<std::unique_ptr<FrameSource>> OpenShelf4da(const DatasetRequest& req
     }
   }
 
-  auto convert = [files, nose_proxy = params.nose_proxy, association, cameras = header.cameras](
-                     size_t i, SequenceFrame* frame, InputWarnings*) {
+  auto convert = [files, nose_proxy = params.nose_proxy](size_t i, SequenceFrame* frame, InputWarnings*) {
     const size_t f = files->frames[i];
     frame->id = ShelfFourDaFrameId(f);
     frame->timestamp_s = static_cast<double>(f) / kShelfFps;
     if (files->gt) ConvertShelf15GroundTruth(files->gt->frames[f], nose_proxy, files->gt_source, f, &frame->gt);
+  };
+  // The grouping reads only the parsed candidates (AssembleView's scratch is per thread), so it
+  // completes frames in parallel (datasets/frame_source.h).
+  auto complete = [files, association, cameras = header.cameras](size_t i, SequenceFrame* frame) {
     if (files->candidates.size() == 0) return;
     // Timed: the grouping is per-frame work before the pipeline (the step table's row
     // "paf_grouping (reader)").
@@ -224,8 +227,8 @@ std::vector<std::unique_ptr<FrameSource>> OpenShelf4da(const DatasetRequest& req
   };
   const size_t count = files->frames.size();
   std::vector<std::unique_ptr<FrameSource>> sources;
-  sources.push_back(
-      std::make_unique<IndexedFrameSource>(std::move(header), count, std::move(convert), std::move(warnings)));
+  sources.push_back(std::make_unique<IndexedFrameSource>(std::move(header), count, std::move(convert),
+                                                         std::move(warnings), std::move(complete)));
   return sources;
 }
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "datasets/synthetic/simulated_source.h"
 
+#include <cstdint>
 #include <utility>
 
 namespace rpt {
@@ -19,11 +20,12 @@ SimulatedDetectionsSource::SimulatedDetectionsSource(std::unique_ptr<FrameSource
       header_(WithDetectionJoints(frames_->header(), SimulatedDetectionJoints(options, frames_->header().gt_joints))),
       detector_(SimulatedDetectorModel(options), header_.detection_joints, options.seed) {}
 
-bool SimulatedDetectionsSource::Next(SequenceFrame* frame) {
-  if (!frames_->Next(frame)) return false;
-  detector_.Detect(header_.cameras, frame->gt, header_.gt_joints, next_frame_++, &frame->views, nullptr,
-                   &frame->labels_2d);
-  return true;
+bool SimulatedDetectionsSource::Pull(SequenceFrame* frame) { return frames_->Pull(frame); }
+
+void SimulatedDetectionsSource::Complete(long frame_idx, SequenceFrame* frame) const {
+  frames_->Complete(frame_idx, frame);
+  detector_.Detect(header_.cameras, frame->gt, header_.gt_joints, static_cast<uint64_t>(frame_idx), &frame->views,
+                   nullptr, &frame->labels_2d);
 }
 
 }  // namespace rpt

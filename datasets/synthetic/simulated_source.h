@@ -3,7 +3,6 @@
 // does to a whole sequence, done frame by frame as the frames are pulled, with the same numbers.
 #pragma once
 
-#include <cstdint>
 #include <memory>
 
 #include "datasets/detections.h"
@@ -19,15 +18,16 @@ class SimulatedDetectionsSource final : public FrameSource {
 
   const SequenceHeader& header() const override { return header_; }
   long num_frames() const override { return frames_->num_frames(); }
-  // The next frame of the wrapped source, its views and 2D labels replaced by the simulator's.
-  bool Next(SequenceFrame* frame) override;
+  // The next frame of the wrapped source (its Pull; Complete completes it), its views and 2D
+  // labels replaced by the simulator's in Complete: the frame's randomness depends on its index only.
+  bool Pull(SequenceFrame* frame) override;
+  void Complete(long frame_idx, SequenceFrame* frame) const override;
   const InputWarnings& warnings() const override { return frames_->warnings(); }
 
  private:
   std::unique_ptr<FrameSource> frames_;
   SequenceHeader header_;  // the wrapped header with the simulated detection joints
   synthetic::DetectorSimulator detector_;
-  uint64_t next_frame_ = 0;
 };
 
 }  // namespace rpt

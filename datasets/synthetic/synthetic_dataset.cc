@@ -38,11 +38,12 @@ class DetectionsOnlySource final : public FrameSource {
   }
   const SequenceHeader& header() const override { return header_; }
   long num_frames() const override { return scene_->num_frames(); }
-  bool Next(SequenceFrame* frame) override {
-    if (!scene_->Next(frame)) return false;
+  bool Pull(SequenceFrame* frame) override { return scene_->Pull(frame); }
+  // After the wrapped Complete: the simulated detector needs the persons.
+  void Complete(long frame_idx, SequenceFrame* frame) const override {
+    scene_->Complete(frame_idx, frame);
     frame->gt.Clear(0);
     frame->labels_2d.clear();
-    return true;
   }
   const InputWarnings& warnings() const override { return scene_->warnings(); }
 

@@ -18,13 +18,16 @@ SequenceHeader HeaderOf(const Scene& scene, const std::string& name) {
   return header;
 }
 
-// Frame `index` from its ground truth (already in frame->gt): id, timestamp and detections.
-void CompleteFrame(const SequenceHeader& header, const DetectorSimulator& detector, size_t index,
-                   SequenceFrame* frame) {
+// Frame `index`'s id and timestamp.
+void NameFrame(const SequenceHeader& header, size_t index, SequenceFrame* frame) {
   char id[64];
   std::snprintf(id, sizeof(id), "%s_%06zu", header.name.c_str(), index);
   frame->id = id;
   frame->timestamp_s = static_cast<double>(index) / header.fps;
+}
+
+// Frame `index`'s detections and 2D labels from its ground truth (already in frame->gt).
+void DetectFrame(const SequenceHeader& header, const DetectorSimulator& detector, size_t index, SequenceFrame* frame) {
   detector.Detect(header.cameras, frame->gt, header.gt_joints, index, &frame->views, nullptr, &frame->labels_2d);
 }
 
@@ -38,7 +41,8 @@ Sequence MakeSyntheticSequence(const Scene& scene, const DetectorOptions& detect
   sequence.frames.resize(scene.gt.size());
   for (size_t f = 0; f < scene.gt.size(); ++f) {
     sequence.frames[f].gt = scene.gt[f];
-    CompleteFrame(sequence, detector, f, &sequence.frames[f]);
+    NameFrame(sequence, f, &sequence.frames[f]);
+    DetectFrame(sequence, detector, f, &sequence.frames[f]);
   }
   return sequence;
 }
@@ -47,11 +51,14 @@ SyntheticSource::SyntheticSource(const SceneOptions& options, const DetectorOpti
                                  const std::string& name)
     : scene_(options), header_(HeaderOf(scene_.shell(), name)), detector_(detector, scene_.shell().joint_names, seed) {}
 
-bool SyntheticSource::Next(SequenceFrame* frame) {
+bool SyntheticSource::Pull(SequenceFrame* frame) {
   if (!scene_.Next(&frame->gt)) return false;
-  CompleteFrame(header_, detector_, next_frame_, frame);
-  ++next_frame_;
+  NameFrame(header_, next_frame_++, frame);
   return true;
+}
+
+void SyntheticSource::Complete(long frame_idx, SequenceFrame* frame) const {
+  DetectFrame(header_, detector_, static_cast<size_t>(frame_idx), frame);
 }
 
 }  // namespace rpt::synthetic

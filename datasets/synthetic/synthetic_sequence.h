@@ -21,7 +21,8 @@ Sequence MakeSyntheticSequence(const Scene& scene, const DetectorOptions& detect
 
 // The frames of MakeSyntheticSequence(GenerateScene(options), ...) generated on demand: the scene
 // is simulated one frame ahead (SceneStream) and detected per frame, so memory does not depend on
-// the number of frames.
+// the number of frames. Pull walks the scene (in order); Complete runs the simulated detector,
+// whose randomness depends only on the frame index, so frames can be detected in parallel.
 class SyntheticSource final : public FrameSource {
  public:
   SyntheticSource(const SceneOptions& options, const DetectorOptions& detector, uint64_t seed,
@@ -29,7 +30,8 @@ class SyntheticSource final : public FrameSource {
 
   const SequenceHeader& header() const override { return header_; }
   long num_frames() const override { return scene_.num_frames(); }
-  bool Next(SequenceFrame* frame) override;
+  bool Pull(SequenceFrame* frame) override;
+  void Complete(long frame_idx, SequenceFrame* frame) const override;
   const InputWarnings& warnings() const override { return warnings_; }  // none: generated data
 
  private:

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 // The reader contract (datasets/frame_source.h, datasets/dataset_request.h) over every reader:
-// streamed and materialised give the same numbers (ReaderStreamTest, instantiated here for the
-// synthetic, generic and real-data readers and in each reader's own test file for its generated
-// fixtures), a source of a format read whole does not hold the converted frames, and readers
-// without their ground truth.
+// streamed and materialised give the same numbers, also with frames pulled ahead and completed
+// on several threads at once (ReaderStreamTest, instantiated here for the synthetic, generic and
+// real-data readers, the simulated detections and the validation, and in each reader's own test
+// file for its generated fixtures), a source of a format read whole does not hold the converted
+// frames, and readers without their ground truth.
 #include "tests/datasets/reader_stream_test.h"
 
 #include <gmock/gmock.h>
@@ -12,6 +13,7 @@
 #include <cstdio>
 #include <fstream>
 #include <string>
+#include <thread>
 #include <utility>
 
 #if defined(__GLIBC__) && (__GLIBC__ > 2 || __GLIBC_MINOR__ >= 33)
@@ -24,6 +26,8 @@
 #include "datasets/readers/detections_file.h"
 #include "datasets/readers/generic_labels.h"
 #include "datasets/readers/hdf5_cache.h"
+#include "datasets/synthetic/simulated_source.h"
+#include "engine/checked_source.h"
 #include "engine/dataset_registry.h"
 #include "tests/datasets/io_test_util.h"
 #include "tests/datasets/readers_generic_test_util.h"
@@ -140,6 +144,44 @@ TEST_P(ReaderStreamTest, StreamedFramesEqualTheMaterialisedSequences) {
   EXPECT_GT(frames, 0u);
 }
 
+// The two parts of a frame (Pull in order, then Complete per frame; datasets/frame_source.h) as a
+// consumer on several threads runs them: blocks of frames pulled into their own buffers, each
+// with its id and time already, then completed all at once on a thread each, the last first. The
+// frames are those of the materialised sequences: Complete reads nothing a later Pull changes and
+// needs nothing of the frames around it.
+TEST_P(ReaderStreamTest, FramesPulledAheadAndCompletedOnSeveralThreadsEqualTheMaterialisedSequences) {
+  const ReaderFixture& fixture = GetParam();
+  if (!fixture.shared_data.empty()) RPT_REQUIRE_SHARED_DATA(fixture.shared_data);
+  TempDir dir;
+  const std::vector<Sequence> materialised = MaterializeAll(fixture.open(dir.path()));
+  std::vector<std::unique_ptr<FrameSource>> sources = fixture.open(dir.path());
+  ASSERT_EQ(sources.size(), materialised.size());
+  constexpr size_t kBlock = 6;
+  for (size_t s = 0; s < sources.size(); ++s) {
+    const Sequence& whole = materialised[s];
+    std::vector<SequenceFrame> block(kBlock);
+    size_t done = 0;
+    for (bool more = true; more;) {
+      size_t pulled = 0;
+      while (pulled < kBlock && (more = sources[s]->Pull(&block[pulled]))) {
+        ASSERT_LT(done + pulled, whole.frames.size()) << whole.name;
+        EXPECT_EQ(block[pulled].id, whole.frames[done + pulled].id) << "Pull sets the id";
+        ExpectSameTime(block[pulled].timestamp_s, whole.frames[done + pulled].timestamp_s, block[pulled].id);
+        ++pulled;
+      }
+      std::vector<std::thread> threads;
+      for (size_t i = pulled; i-- > 0;) {
+        threads.emplace_back([&, i] { sources[s]->Complete(static_cast<long>(done + i), &block[i]); });
+      }
+      for (std::thread& t : threads) t.join();
+      for (size_t i = 0; i < pulled; ++i) ExpectSameFrame(block[i], whole.frames[done + i]);
+      done += pulled;
+    }
+    EXPECT_EQ(done, whole.frames.size()) << whole.name;
+    EXPECT_EQ(sources[s]->warnings().items().size(), whole.warnings.items().size()) << whole.name;
+  }
+}
+
 namespace {
 
 // A registry dataset: its root under ../shared/data when `shared_data` names a real fixture, else
@@ -174,6 +216,20 @@ std::vector<std::unique_ptr<FrameSource>> OpenWrittenLabels(const std::filesyste
   return OpenLabels(path, {}, ground_truth);
 }
 
+// The sources of `fixture` with simulated detections (--simulate), then validated as a run does.
+ReaderFixture SimulatedAndChecked(std::string name, ReaderFixture fixture) {
+  return {std::move(name), fixture.shared_data, [open = fixture.open](const std::filesystem::path& dir) {
+            std::vector<std::unique_ptr<FrameSource>> sources = open(dir);
+            SimulationOptions simulation;
+            simulation.seed = 3;
+            for (auto& source : sources) {
+              source = std::make_unique<engine::CheckedSource>(
+                  std::make_unique<SimulatedDetectionsSource>(std::move(source), simulation));
+            }
+            return sources;
+          }};
+}
+
 }  // namespace
 
 INSTANTIATE_TEST_SUITE_P(
@@ -183,6 +239,10 @@ INSTANTIATE_TEST_SUITE_P(
         Dataset("SyntheticWholeBodyFisheye", "", "synthetic", "",
                 {{"frames", "6"}, {"joints", "wholebody"}, {"distortion", "fisheye"}}),
         Dataset("SyntheticWithoutGroundTruth", "", "synthetic", "", {{"frames", "10"}}, false),
+        SimulatedAndChecked("SyntheticSimulatedAgain",
+                            Dataset("", "", "synthetic", "", {{"frames", "15"}, {"people", "2"}, {"cameras", "3"}})),
+        SimulatedAndChecked("LabelsSimulated",
+                            ReaderFixture{"", "", [](const auto& dir) { return OpenWrittenLabels(dir, true, true); }}),
         ReaderFixture{"LabelsWithTimes", "", [](const auto& dir) { return OpenWrittenLabels(dir, true, true); }},
         ReaderFixture{"LabelsWithoutTimes", "", [](const auto& dir) { return OpenWrittenLabels(dir, false, true); }},
         ReaderFixture{"LabelsWithoutGroundTruth", "",
@@ -213,6 +273,8 @@ INSTANTIATE_TEST_SUITE_P(
                               {{"frames", "0-300:4"}}),
                       Dataset("Shelf4daWithoutGroundTruth", "shelf/4d_association/detection", "shelf-4da",
                               "shelf/4d_association", {{"frames", "0-300:9"}}, false),
+                      SimulatedAndChecked("ShelfSimulated",
+                                          Dataset("", "shelf/actorsGT.mat", "shelf", "shelf", {{"frames", "0-2"}})),
                       Dataset("Panoptic", "panoptic/160906_band1", "panoptic", "panoptic",
                               {{"sequences", "160906_band1,160906_band2"}, {"every", "1"}}),
                       Dataset("Mvor", "mvor/camma_mvor_2018.json", "mvor", "mvor", {}),

@@ -2,7 +2,8 @@
 // One parameterised test over every reader (the reader contract, datasets/frame_source.h): the
 // sources a reader opens, pulled frame by frame (round robin over the sequences, one reused frame
 // buffer for all of them), give exactly the headers, frames and warnings of the same sources
-// materialised. The test is defined in reader_stream_test.cc; each reader's test file adds its
+// materialised, and so do they with frames pulled ahead and completed on several threads at once
+// (Pull and Complete). The tests are defined in reader_stream_test.cc; each reader's test file adds its
 // fixtures with INSTANTIATE_TEST_SUITE_P(<Reader>, ReaderStreamTest, ...).
 #pragma once
 
