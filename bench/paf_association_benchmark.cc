@@ -126,10 +126,16 @@ int main(int argc, char** argv) {
   for (const auto& frame : frames) {
     for (const rpt::PafCandidates& view : frame) rpt::bench::PackedFrames().Append(rpt::Body25PafSkeleton(), view);
   }
-  benchmark::RegisterBenchmark("paf_association/before_baseline", rpt::bench::BM_PafBaseline)->Unit(benchmark::kMicrosecond);
-  benchmark::RegisterBenchmark("paf_association/after_PafAssociator_packed", rpt::bench::BM_PafAssociator)->Unit(benchmark::kMicrosecond);
-  benchmark::RegisterBenchmark("paf_association/after_PafAssociator_unpacked", rpt::bench::BM_PafAssociatorUnpacked)
-      ->Unit(benchmark::kMicrosecond);
+  std::vector<benchmark::internal::Benchmark*> benchmarks = {
+      benchmark::RegisterBenchmark("paf_association/before_baseline", rpt::bench::BM_PafBaseline),
+      benchmark::RegisterBenchmark("paf_association/after_PafAssociator_packed", rpt::bench::BM_PafAssociator),
+      benchmark::RegisterBenchmark("paf_association/after_PafAssociator_unpacked",
+                                   rpt::bench::BM_PafAssociatorUnpacked)};
+  for (benchmark::internal::Benchmark* b : benchmarks) {
+    b->Unit(benchmark::kMicrosecond);
+    if (const char* n = std::getenv("RPT_PAF_ITERATIONS"))
+      b->Iterations(static_cast<benchmark::IterationCount>(std::strtoul(n, nullptr, 10)));
+  }
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
   benchmark::RunSpecifiedBenchmarks();
