@@ -39,6 +39,8 @@ struct AssembledPersons {
   size_t words() const { return kWords != 0 ? kWords : num_words; }
   int* Candidates(int p) const { return candidate + static_cast<size_t>(p) * num_joints; }
   std::uint64_t* Joints(int p) const { return joints + static_cast<size_t>(p) * words(); }
+  // The word of `joint` in person p's joint set (the only one when kWords is 1).
+  std::uint64_t& Word(int p, unsigned joint) const { return Joints(p)[kWords == 1 ? 0 : joint / 64]; }
   static std::uint64_t Bit(unsigned joint) { return std::uint64_t{1} << (joint % 64); }
   int New() {
     std::fill_n(Candidates(size), num_joints, -1);
@@ -48,7 +50,7 @@ struct AssembledPersons {
   }
   void Add(int p, unsigned joint, int candidate_of_joint) {
     Candidates(p)[joint] = candidate_of_joint;
-    Joints(p)[joint / 64] |= Bit(joint);
+    Word(p, joint) |= Bit(joint);
     ++joint_count[p];
   }
   bool ShareAJoint(int p, int q) const {
