@@ -20,7 +20,11 @@
 // Persons come out in the order their first (highest-scoring) connection was processed.
 //
 // PafAssociator runs it with buffers it keeps: once warm (candidate counts seen before) a call
-// allocates nothing. AssociatePafs() is the one-shot form.
+// allocates nothing. AssociatePafs() is the one-shot form. How: every connection is one 64-bit
+// key that sorts in the order above (paf_connection_keys.h); step 1 writes keys for the PAF
+// scores a vectorised pass marks as >= min_paf_score and matches only the limbs where two
+// possible connections share a candidate (paf_limb_connections.h, paf_score_mask.h); the kept
+// connections of all limbs are sorted once and step 2 assembles the persons in that order.
 //
 // PAF scores are used as given: 4D-Association raises them to the power 0.2 after reading,
 // a monotone transform that changes no ordering; min_paf_score applies to the values given
