@@ -5,11 +5,14 @@
 // run. One iteration groups one whole frame: the candidates of its 5 views, frames cycling
 // through all 301 (the candidates mostly not in cache, as when a reader converts frames parsed
 // before), or through RPT_PAF_FRAMES frames spread evenly over them (e.g. 8: in cache, as
-// candidates fresh from a detector). The bundle folder is the first argument (default ../shared/data/shelf/4d_association);
-// without it the benchmark says so and exits 0.
+// candidates fresh from a detector). RPT_PAF_ITERATIONS=N runs every benchmark exactly N
+// iterations (frames), for instruction counts under valgrind --tool=callgrind that do not depend
+// on the timer. The bundle folder is the first argument (default
+// ../shared/data/shelf/4d_association); without it the benchmark says so and exits 0.
 //
 //   taskset -c 1 ./build/bench/rpt_paf_benchmark ../shared/data/shelf/4d_association
 //       --benchmark_repetitions=9 --benchmark_report_aggregates_only=true
+//       [--benchmark_enable_random_interleaving=true: on a shared machine, load changes hit both]
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -126,10 +129,16 @@ int main(int argc, char** argv) {
   for (const auto& frame : frames) {
     for (const rpt::PafCandidates& view : frame) rpt::bench::PackedFrames().Append(rpt::Body25PafSkeleton(), view);
   }
-  benchmark::RegisterBenchmark("paf_association/before_baseline", rpt::bench::BM_PafBaseline)->Unit(benchmark::kMicrosecond);
-  benchmark::RegisterBenchmark("paf_association/after_PafAssociator_packed", rpt::bench::BM_PafAssociator)->Unit(benchmark::kMicrosecond);
-  benchmark::RegisterBenchmark("paf_association/after_PafAssociator_unpacked", rpt::bench::BM_PafAssociatorUnpacked)
-      ->Unit(benchmark::kMicrosecond);
+  std::vector<benchmark::internal::Benchmark*> benchmarks = {
+      benchmark::RegisterBenchmark("paf_association/before_baseline", rpt::bench::BM_PafBaseline),
+      benchmark::RegisterBenchmark("paf_association/after_PafAssociator_packed", rpt::bench::BM_PafAssociator),
+      benchmark::RegisterBenchmark("paf_association/after_PafAssociator_unpacked",
+                                   rpt::bench::BM_PafAssociatorUnpacked)};
+  for (benchmark::internal::Benchmark* b : benchmarks) {
+    b->Unit(benchmark::kMicrosecond);
+    if (const char* n = std::getenv("RPT_PAF_ITERATIONS"))
+      b->Iterations(static_cast<benchmark::IterationCount>(std::strtoul(n, nullptr, 10)));
+  }
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
   benchmark::RunSpecifiedBenchmarks();
