@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/closest_name.h"
+#include "core/printable_text.h"
 #include "cli/commands.h"
 #include "cli/interrupt.h"
 #include "cli/memory_reserve.h"
@@ -42,7 +43,8 @@ bool CheckSubcommand(CLI::App& app, int argc, char** argv) {
     if (name == given) return true;
   }
   const std::string closest = rpt::ClosestName(given, names);
-  std::fprintf(stderr, "error: unknown subcommand '%s'%s\nRun with --help for the list.\n", given.c_str(),
+  std::fprintf(stderr, "error: unknown subcommand '%s'%s\nRun with --help for the list.\n",
+               rpt::PrintableText(given, rpt::LineBreaks::kEscape).c_str(),
                closest.empty() ? "" : ("; did you mean '" + closest + "'?").c_str());
   return false;
 }
@@ -62,7 +64,10 @@ void PrintOptionSuggestions(CLI::App& app) {
     if (extra.size() < 3 || extra.rfind("--", 0) != 0) continue;
     const std::string flag = extra.substr(0, extra.find('='));
     const std::string closest = rpt::ClosestName(flag, options);
-    if (!closest.empty()) std::fprintf(stderr, "%s: did you mean '%s'?\n", flag.c_str(), closest.c_str());
+    if (!closest.empty()) {
+      std::fprintf(stderr, "%s: did you mean '%s'?\n", rpt::PrintableText(flag, rpt::LineBreaks::kEscape).c_str(),
+                   closest.c_str());
+    }
   }
 }
 

@@ -5,6 +5,8 @@
 
 #include <cstdio>
 
+#include "core/printable_text.h"
+
 namespace rpt::cli {
 namespace {
 constexpr double kQuietSeconds = 2.0;
@@ -12,7 +14,7 @@ constexpr double kUnknownTotalSeconds = 10.0;
 }
 
 Progress::Progress(std::string label, long total, bool enabled)
-    : label_(std::move(label)),
+    : label_(PrintableText(label, LineBreaks::kEscape)),  // a sequence's name, from the input
       total_(total),
       enabled_(enabled && total != 0),
       tty_(isatty(fileno(stderr)) != 0),

@@ -25,6 +25,7 @@
 #include "cli/interrupt.h"
 #include "cli/progress.h"
 #include "cli/threads_option.h"
+#include "core/printable_text.h"
 #include "datasets/io/json_output.h"
 #include "engine/input.h"
 #include "engine/input_digests.h"
@@ -120,7 +121,7 @@ int RunFollow(const TriangulateArgs& args) {
   }
   const int signal_number = on_interrupt.signal_number();
   std::fprintf(stderr, "%s: %ld lines, %ld frames, %ld persons triangulated (%.2f per frame)%s; %s\n",
-               input->header(0).name.c_str(), counts.lines, run.frames, run.output_persons,
+               PrintableText(input->header(0).name, LineBreaks::kEscape).c_str(), counts.lines, run.frames, run.output_persons,
                run.frames > 0 ? static_cast<double>(run.output_persons) / run.frames : 0.0,
                counts.bad_lines > 0 ? (", " + std::to_string(counts.bad_lines) + " bad line(s) skipped").c_str() : "",
                signal_number != 0 ? (std::string("stopped by ") + StopOnInterrupt::SignalName(signal_number)).c_str()
@@ -130,7 +131,7 @@ int RunFollow(const TriangulateArgs& args) {
                  "per frame (median): triangulation %.1f us, line in -> line out %.1f us (p90 %.1f us, max %.1f us)\n",
                  run.timing.frame_us_median, latency.median_us(), latency.p90_us(), latency.max_us());
   }
-  if (folder) std::fprintf(stderr, "results in %s\n", args.out.c_str());
+  if (folder) std::fprintf(stderr, "results in %s\n", PrintableText(args.out, LineBreaks::kEscape).c_str());
   return signal_number != 0 ? 128 + signal_number : 0;
 }
 
@@ -167,7 +168,7 @@ void RunTriangulate(const TriangulateArgs& args) {
                 run.wall_seconds, run.wall_seconds > 0 ? run.frames / run.wall_seconds : 0.0, run.threads,
                 run.sequences.size());
     if (!args.quiet) engine::PrintStepTimes(std::cout, run.timing, &run.counts);
-    std::printf("results in %s\n", out_dir.c_str());
+    std::printf("results in %s\n", PrintableText(out_dir, LineBreaks::kEscape).c_str());
     std::fflush(stdout);
   }
   if (run.frames > 0 && run.output_persons == 0) {

@@ -320,6 +320,29 @@ TEST_F(Follow, CtrlCEndsCleanlyAfterTheFramesInHand) {
   EXPECT_NE(err.find("stopped by SIGINT"), std::string::npos) << err;
 }
 
+// Names from someone else (a file and a folder named with a terminal escape sequence) reach the
+// terminal escaped, offline and live: the sequence's name in the summary line, the results folder,
+// the progress label.
+TEST_F(Follow, NamesReachTheTerminalEscaped) {
+  const std::string hostile = "take\x1b[2J";
+  const fs::path detections = dir_ / (hostile + ".json");
+  fs::copy_file(dir_ / "detections.json", detections);
+  const fs::path lines = LinesFile(hostile + ".jsonl", {FrameLine(detections_, 0, true), FrameLine(detections_, 1, true)});
+  const std::string out = (dir_ / ("out_" + hostile)).string();
+  const test::CommandResult offline = test::RunRpt("triangulate --cameras " + Cameras() + " --detections '" +
+                                                   detections.string() + "' --fps 25 --out '" + out + "'");
+  const test::CommandResult live =
+      test::RunRpt("triangulate --cameras " + Cameras() + " --follow '" + lines.string() + "' --out '" + out + "_live'");
+  for (const test::CommandResult* r : {&offline, &live}) {
+    ASSERT_EQ(r->exit_code, 0) << r->err;
+    EXPECT_EQ(r->out.find('\x1b'), std::string::npos) << r->out;
+    EXPECT_EQ(r->err.find('\x1b'), std::string::npos) << r->err;
+  }
+  EXPECT_NE(offline.out.find("results in " + (dir_ / "out_take\\x1b[2J").string()), std::string::npos) << offline.out;
+  EXPECT_NE(live.err.find("take\\x1b[2J: 3 lines, 2 frames"), std::string::npos) << live.err;
+  EXPECT_NE(live.err.find("results in " + (dir_ / "out_take\\x1b[2J_live").string()), std::string::npos) << live.err;
+}
+
 TEST_F(Follow, OptionsThatDoNotFit) {
   const std::string base = "triangulate --follow - --cameras " + Cameras();
   for (const auto& [extra, message] : std::vector<std::pair<std::string, std::string>>{
