@@ -73,7 +73,10 @@ TEST(JsonPull, AcceptsAndRefusesWhatNlohmannDoes) {
       // refused
       "", "[1,]", "[,1]", "{\"a\" 1}", "{\"a\": 1,}", "{1: 2}", "[01]", "[1.]", "[.5]", "[+1]", "[1e]", "[-]", "[NaN]",
       "[Infinity]", "[tru]", "[nulll]", "\"a", "\"\\x\"", "\"\\u12\"", "\"\\ud800\"", "\"\\udc00x\"", "\"a\tb\"",
-      "\"\xff\"", "\"\xc3\"", "[1] 2", "[1]]", "{\"a\": 1}}", "[1e400]"};
+      "\"\xff\"", "\"\xc3\"", "[1] 2", "[1]]", "{\"a\": 1}}", "[1e400]",
+      // digit runs read eight at a time: a byte just outside '0'..'9' ('/' and ':') in each place
+      "[12345678:]", "[1234567:8]", "[1234567/8]", "[0.1234567:9]", "[0.12345678/]", "[12345678.1234567:]",
+      "[:2345678]", "[1234567890123456]", "[0.12345678901234567]", "[-98765432.10987654]"};
   for (const std::string& text : texts) {
     bool nlohmann_accepts = true;
     Json expected;
@@ -124,9 +127,33 @@ TEST(JsonPull, NumbersEqualFromChars) {
     std::snprintf(text, sizeof(text), formats[i % 7], x);
     texts.push_back(text);
   }
+  // Digit runs of every length from 1 to 24 before and after the point (the fast path takes runs
+  // eight digits at a time), with random digits and with all nines, and a byte after the number.
+  std::uniform_int_distribution<int> digit(0, 9);
+  for (int integer = 1; integer <= 24; ++integer) {
+    for (int fraction = 0; fraction <= 24; ++fraction) {
+      for (int kind = 0; kind < 3; ++kind) {
+        std::string text = kind == 2 ? "-" : "";
+        for (int i = 0; i < integer; ++i)
+          text += static_cast<char>('0' + (kind == 1 ? 9 : (i == 0 ? 1 + digit(random) % 9 : digit(random))));
+        if (fraction > 0) text += '.';
+        for (int i = 0; i < fraction; ++i) text += static_cast<char>('0' + (kind == 1 ? 9 : digit(random)));
+        texts.push_back(text);
+      }
+    }
+  }
   for (const std::string& text : texts) {
     double expected = 0;
     std::from_chars(text.data(), text.data() + text.size(), expected);
+    {  // followed by more text: the number ends at the first byte that is not part of it
+      const std::string followed = "[" + text + "]";
+      io::JsonPull json(followed);
+      json.BeginArray();
+      ASSERT_TRUE(json.NextElement());
+      const double read = json.Number();
+      EXPECT_EQ(std::memcmp(&read, &expected, sizeof(double)), 0) << followed;
+      EXPECT_FALSE(json.NextElement()) << followed;
+    }
     io::JsonPull json(text);
     const double read = json.Number();
     EXPECT_EQ(std::memcmp(&read, &expected, sizeof(double)), 0) << text << ": " << read << " vs " << expected;

@@ -95,14 +95,18 @@ void ExpectSameFrame(const SequenceFrame& a, const SequenceFrame& b) {
 
 }  // namespace
 
-TEST_P(ReaderStreamTest, StreamedFramesEqualTheMaterialisedSequences) {
+void ReaderStreamTest::SetUp() {
   const ReaderFixture& fixture = GetParam();
   if (!fixture.shared_data.empty()) RPT_REQUIRE_SHARED_DATA(fixture.shared_data);
-  TempDir dir;
-  const std::vector<Sequence> materialised = MaterializeAll(fixture.open(dir.path()));
-  std::vector<std::unique_ptr<FrameSource>> sources = fixture.open(dir.path());
-  ASSERT_EQ(sources.size(), materialised.size());
-  ASSERT_FALSE(sources.empty());
+  materialised_ = MaterializeAll(fixture.open(dir_.path()));
+  sources_ = fixture.open(dir_.path());
+  ASSERT_EQ(sources_.size(), materialised_.size());
+  ASSERT_FALSE(sources_.empty());
+}
+
+TEST_P(ReaderStreamTest, StreamedFramesEqualTheMaterialisedSequences) {
+  const std::vector<Sequence>& materialised = materialised_;
+  std::vector<std::unique_ptr<FrameSource>>& sources = sources_;
 
   // Round robin over the sources, every frame pulled into the same buffer (whose vectors keep
   // their capacity): what a consumer that keeps nothing does.
@@ -150,12 +154,8 @@ TEST_P(ReaderStreamTest, StreamedFramesEqualTheMaterialisedSequences) {
 // frames are those of the materialised sequences: Complete reads nothing a later Pull changes and
 // needs nothing of the frames around it.
 TEST_P(ReaderStreamTest, FramesPulledAheadAndCompletedOnSeveralThreadsEqualTheMaterialisedSequences) {
-  const ReaderFixture& fixture = GetParam();
-  if (!fixture.shared_data.empty()) RPT_REQUIRE_SHARED_DATA(fixture.shared_data);
-  TempDir dir;
-  const std::vector<Sequence> materialised = MaterializeAll(fixture.open(dir.path()));
-  std::vector<std::unique_ptr<FrameSource>> sources = fixture.open(dir.path());
-  ASSERT_EQ(sources.size(), materialised.size());
+  const std::vector<Sequence>& materialised = materialised_;
+  std::vector<std::unique_ptr<FrameSource>>& sources = sources_;
   constexpr size_t kBlock = 6;
   for (size_t s = 0; s < sources.size(); ++s) {
     const Sequence& whole = materialised[s];

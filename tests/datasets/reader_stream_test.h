@@ -17,6 +17,8 @@
 #include <vector>
 
 #include "datasets/frame_source.h"
+#include "datasets/sequence.h"
+#include "tests/datasets/io_test_util.h"
 
 namespace rpt::test {
 
@@ -29,7 +31,16 @@ struct ReaderFixture {
 
 inline void PrintTo(const ReaderFixture& fixture, std::ostream* out) { *out << fixture.name; }
 
-class ReaderStreamTest : public ::testing::TestWithParam<ReaderFixture> {};
+class ReaderStreamTest : public ::testing::TestWithParam<ReaderFixture> {
+ protected:
+  // Skips without the fixture's shared data; else opens the fixture's sources twice in dir_:
+  // materialised_ (the whole sequences) and sources_ (to be read frame by frame), as many of each.
+  void SetUp() override;
+
+  TempDir dir_;
+  std::vector<Sequence> materialised_;
+  std::vector<std::unique_ptr<FrameSource>> sources_;
+};
 
 // The name of a ReaderStreamTest instance: the fixture's name.
 inline std::string ReaderFixtureName(const ::testing::TestParamInfo<ReaderFixture>& info) { return info.param.name; }

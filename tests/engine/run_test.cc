@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <functional>
 #include <memory>
 #include <string>
 #include <thread>
@@ -259,14 +260,15 @@ std::unique_ptr<FrameSource> WithBadFrame(int frames, int bad) {
   return std::make_unique<SequenceSource>(std::move(sequence));
 }
 
-// A bad frame in the middle of one sequence on several threads: the error of one thread (naming
-// the sequence, the frame and the view), the frames before it handed on, nothing after, no hang.
-TEST(RunTest, ABadFrameMidSequenceStopsEveryThreadCountTheSameWay) {
+// Runs the source `make` opens on 1, 2 and 3 threads: each run stops with the error one thread
+// meets (containing `names`), after handing on exactly the `frames_before` frames before it, and
+// nothing hangs.
+void ExpectTheSameStopOnEveryThreadCount(const std::function<std::unique_ptr<FrameSource>()>& make, RunOptions options,
+                                         const std::string& names, int frames_before) {
   std::string expected;
   for (const int threads : {1, 2, 3}) {
     std::vector<std::unique_ptr<FrameSource>> sources;
-    sources.push_back(WithBadFrame(400, 200));
-    RunOptions options;
+    sources.push_back(make());
     options.threads = threads;
     OrderSink sink;
     try {
@@ -275,36 +277,30 @@ TEST(RunTest, ABadFrameMidSequenceStopsEveryThreadCountTheSameWay) {
     } catch (const InputError& e) {
       if (threads == 1) expected = e.what();
       EXPECT_EQ(std::string(e.what()), expected) << threads << " threads";
-      EXPECT_NE(expected.find("synthetic_000200"), std::string::npos) << expected;
-      EXPECT_EQ(sink.frames, 200) << "the frames before the bad one, " << threads << " threads";
+      EXPECT_NE(expected.find(names), std::string::npos) << expected;
+      EXPECT_EQ(sink.frames, frames_before) << "the frames before the bad one, " << threads << " threads";
     }
   }
 }
 
+// A bad frame in the middle of one sequence on several threads: the error of one thread (naming
+// the sequence, the frame and the view), the frames before it handed on, nothing after, no hang.
+TEST(RunTest, ABadFrameMidSequenceStopsEveryThreadCountTheSameWay) {
+  ExpectTheSameStopOnEveryThreadCount([] { return WithBadFrame(400, 200); }, RunOptions{}, "synthetic_000200", 200);
+}
+
 // A frame the triangulator refuses (above triangulate.max_persons_per_view) in the middle.
 TEST(RunTest, AFrameTheTriangulatorRefusesStopsEveryThreadCountTheSameWay) {
-  std::string expected;
-  for (const int threads : {1, 2, 3}) {
+  const auto make = [] {
     Sequence sequence = MakeSyntheticDataset(Scene(300))[0];
     Poses2D& view = sequence.frames[150].views[0];
     const Eigen::Matrix3Xd copy = view.Person(0);
     for (int extra = 0; extra < 4; ++extra) view.AddPerson() = copy;
-    std::vector<std::unique_ptr<FrameSource>> sources;
-    sources.push_back(std::make_unique<SequenceSource>(std::move(sequence)));
-    RunOptions options;
-    options.threads = threads;
-    options.triangulator.triangulate.max_persons_per_view = 4;
-    OrderSink sink;
-    try {
-      engine::Run(std::move(sources), options, &sink);
-      ADD_FAILURE() << "no error with " << threads << " threads";
-    } catch (const InputError& e) {
-      if (threads == 1) expected = e.what();
-      EXPECT_EQ(std::string(e.what()), expected) << threads << " threads";
-      EXPECT_NE(expected.find("frame 'synthetic_000150'"), std::string::npos) << expected;
-      EXPECT_EQ(sink.frames, 150) << threads << " threads";
-    }
-  }
+    return std::unique_ptr<FrameSource>(std::make_unique<SequenceSource>(std::move(sequence)));
+  };
+  RunOptions options;
+  options.triangulator.triangulate.max_persons_per_view = 4;
+  ExpectTheSameStopOnEveryThreadCount(make, options, "frame 'synthetic_000150'", 150);
 }
 
 TEST(RunTest, WithoutMetricsNoGroundTruthIsNeeded) {
