@@ -73,6 +73,8 @@ std::string CsvField(std::string_view raw) {
   return quoted + "\"";
 }
 
+std::string TrcField(std::string_view text) { return PrintableText(text, LineBreaks::kEscape); }
+
 std::vector<std::string> SplitCsvLine(std::string_view line) {
   std::vector<std::string> fields(1);
   bool quoted = false;

@@ -29,6 +29,11 @@ std::string CsvField(std::string_view text);
 // leading '\'' that CsvField added removed. Throws std::invalid_argument on an unclosed quote.
 std::vector<std::string> SplitCsvLine(std::string_view line);
 
+// A field of a tab-separated TRC file (a marker's name in the header, engine/outputs/trc_export.h):
+// PrintableText with line breaks escaped, so a tab, newline or carriage return in a name is
+// written as \x09, \x0a, \x0d and cannot add a column or a line.
+std::string TrcField(std::string_view text);
+
 // Markdown text (a table cell, a sentence): PrintableText (line breaks escaped), then the
 // characters Markdown or inline HTML act on inside a line (\ ` * _ [ ] < > | ~ & ! $) with a
 // backslash.

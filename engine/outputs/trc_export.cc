@@ -10,6 +10,7 @@
 #include "datasets/io/staged_output.h"
 #include "datasets/io/text_file.h"
 #include "engine/outputs/file_names.h"
+#include "engine/outputs/text_escaping.h"
 
 namespace rpt::engine {
 TrcExport::TrcExport(std::filesystem::path dir, int num_sequences, ExportOptions options)
@@ -146,7 +147,7 @@ void TrcExport::WriteFile(const Sequence& s, int track_id, const Track& track) c
     std::snprintf(line, sizeof(line), "%.6g\t%.6g\t%ld\t%zu\t%s\t%.6g\t%ld\t%ld\n", rate, rate, track.rows,
                   s.joints.size(), options_.trc_millimetres ? "mm" : "m", rate, track.first_frame + 1, track.rows);
     out << line << "Frame#\tTime";
-    for (const std::string& joint : s.joints) out << "\t" << joint << "\t\t";
+    for (const std::string& joint : s.joints) out << "\t" << TrcField(joint) << "\t\t";
     out << "\n\t";
     for (size_t j = 1; j <= s.joints.size(); ++j) out << "\tX" << j << "\tY" << j << "\tZ" << j;
     out << "\n\n";

@@ -90,6 +90,24 @@ TEST(TrcExport, WritesATracksFileWhenItEndsAndAReturningIdToAFileOfItsOwn) {
   fs::remove_all(dir);
 }
 
+// Joint names come from the input ("extra_" + anything is a valid joint name): a tab or line break
+// in one must not add a column or a line to the tab-separated header.
+TEST(TrcExport, JointNamesFromTheInputKeepTheHeadersColumns) {
+  const fs::path dir = TempDir("trc_names");
+  TrcExport trc(dir / "trc", 1, ExportOptions{});
+  SequenceHeader header;
+  header.name = "s";
+  header.fps = 10;
+  trc.BeginSequence(0, header, {"extra_a\tb\nc\r\x1b[2J"});
+  Feed(&trc, 0, {0});
+  trc.EndSequence(0);
+  const auto lines = Lines(dir / "trc" / "s_track0.trc");
+  ASSERT_EQ(lines.size(), 7u) << "five header lines (the fifth empty) and one frame";
+  EXPECT_EQ(lines[3], "Frame#\tTime\textra_a\\x09b\\x0ac\\x0d\\x1b[2J\t\t");
+  EXPECT_EQ(lines[4], "\t\tX1\tY1\tZ1");
+  fs::remove_all(dir);
+}
+
 TEST(TrcExport, HoldsOnlyTheLiveTracksPartFiles) {
   const fs::path dir = TempDir("trc_many");
   TrcExport trc(dir / "trc", 1, ExportOptions{});
