@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // One escaping function per sink (engine/outputs/text_escaping.h, core/printable_text.h), each fed
-// every string of tests/hostile_strings.h, alone and through the writers that use it: the tables
+// every string of tests/hostile_strings.h, alone and through the writers that use it: TRC fields, the tables
 // (summary.csv, summary.md, sweep.csv, sweep.md), JUnit XML, sweep.html and the report's data block.
 #include "engine/outputs/text_escaping.h"
 
@@ -103,6 +103,16 @@ TEST(OutputEscaping, ScriptJsonCannotEndOrChangeTheScriptElement) {
   const std::string script = ScriptJson(text);
   EXPECT_EQ(script.find_first_of("<>&"), std::string::npos);
   EXPECT_EQ(Json::parse(script), Json::parse(text)) << "the value is unchanged";
+}
+
+TEST(OutputEscaping, TrcFieldsAreOneFieldOfOneLine) {
+  EXPECT_EQ(TrcField("extra_a\tb\nc"), "extra_a\\x09b\\x0ac");
+  EXPECT_EQ(TrcField("shoulder_left"), "shoulder_left");
+  for (const std::string& s : HostileStrings()) {
+    const std::string field = TrcField(s);
+    EXPECT_EQ(field.find_first_of("\t\n\r"), std::string::npos) << PrintableText(s);
+    ExpectTerminalSafe(field, false, s);
+  }
 }
 
 TEST(OutputEscaping, CsvFieldsAreOneLineNeverAFormulaAndReadBack) {
