@@ -7,6 +7,7 @@
 
 #include "core/utf8.h"
 #include "datasets/io/json_output.h"
+#include "engine/outputs/fixed_decimal.h"
 
 namespace rpt::engine {
 namespace {
@@ -16,9 +17,7 @@ void AppendNumber(double value, int decimals, std::string* out) {
     out->append("null");
     return;
   }
-  char number[64];
-  const auto end = std::to_chars(number, number + sizeof(number), value, std::chars_format::fixed, decimals).ptr;
-  out->append(number, end);
+  AppendFixedDecimal(value, decimals, out);
 }
 
 void AppendInt(long value, std::string* out) {
