@@ -90,12 +90,15 @@ class JsonPull {
   double Number() {
     SkipSpace();
     double value = 0;
-    if (ShortDecimal(&value)) return value;
+    const Short read = ShortDecimal(&value);
+    if (read == Short::kRead) return value;
     const char* first = text_.data() + pos_;
     const char* last = text_.data() + text_.size();
     const auto [end, error] = std::from_chars(first, last, value);
-    // std::from_chars also takes what JSON does not ("01", "1.", ".5", "inf"): checked on what it read.
-    if (error != std::errc() || !IsJsonNumber(first, end)) return NumberSlow();
+    // std::from_chars also takes what JSON does not ("01", "1.", ".5", "inf"): checked on what it
+    // read, unless ShortDecimal checked its start already (then only digits and an exponent follow,
+    // whose grammar is the same in both).
+    if (error != std::errc() || (read != Short::kLongDecimal && !IsJsonNumber(first, end))) return NumberSlow();
     pos_ = static_cast<std::size_t>(end - text_.data());
     after_begin_ = false;
     return value;  // finite: a literal beyond the double range is a result_out_of_range error
@@ -123,9 +126,16 @@ class JsonPull {
   // Clinger's fast path for what detectors write most: [-]digits[.digits] with at most 19 digits
   // whose value m (all digits as an integer) is below 2^53, read as m / 10^(fraction digits) with
   // at most 22 of them: both exact doubles, so one division rounds the decimal value correctly,
-  // as std::from_chars does. A number with eight decimals or more is left to std::from_chars. Sets *value and consumes the number; false (nothing consumed) when
-  // the text is anything else (exponents, longer mantissas, errors: Number() takes them).
-  bool ShortDecimal(double* value) {
+  // as std::from_chars does. Sets *value and consumes the number (kRead); else consumes nothing
+  // and says whether the text starts as a well-formed number with eight decimals or more, which
+  // std::from_chars reads faster (kLongDecimal), or is anything else (exponents, longer
+  // mantissas, errors: kOther). Number() takes both.
+  enum class Short {
+    kRead,         // read and consumed
+    kLongDecimal,  // [-]digits.dddddddd... well formed up to its eighth decimal (nothing consumed)
+    kOther,        // anything else (nothing consumed)
+  };
+  Short ShortDecimal(double* value) {
     static constexpr double kPowersOfTen[23] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
                                                 1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
     const std::size_t n = text_.size();
@@ -136,27 +146,27 @@ class JsonPull {
     int digits = 0, fraction = 0;
     if (p < n && text_[p] == '0') {
       ++p;
-      if (p < n && IsDigit(text_[p])) return false;  // a leading zero: the error is Number()'s
+      if (p < n && IsDigit(text_[p])) return Short::kOther;  // a leading zero: the error is Number()'s
     } else {
-      if (p >= n || !IsDigit(text_[p])) return false;
+      if (p >= n || !IsDigit(text_[p])) return Short::kOther;
       for (; p < n && IsDigit(text_[p]); ++p, ++digits) m = m * 10 + static_cast<unsigned>(text_[p] - '0');
     }
     if (p < n && text_[p] == '.') {
       ++p;
-      if (p >= n || !IsDigit(text_[p])) return false;
+      if (p >= n || !IsDigit(text_[p])) return Short::kOther;
       // Eight decimals or more (full-precision numbers: 16-17 significant digits, mostly beyond
       // 2^53): std::from_chars reads the number faster than this loop could before it gave up.
-      if (p + 8 <= n && EightDigits(text_.data() + p)) return false;
+      if (p + 8 <= n && EightDigits(text_.data() + p)) return Short::kLongDecimal;
       for (; p < n && IsDigit(text_[p]); ++p, ++digits, ++fraction) m = m * 10 + static_cast<unsigned>(text_[p] - '0');
     }
     if (digits > 19 || fraction > 22 || m > (1ULL << 53) || (p < n && (text_[p] == 'e' || text_[p] == 'E'))) {
-      return false;
+      return Short::kOther;
     }
     const double magnitude = static_cast<double>(m) / kPowersOfTen[fraction];
     *value = negative ? -magnitude : magnitude;
     pos_ = p;
     after_begin_ = false;
-    return true;
+    return Short::kRead;
   }
   // Whether the eight bytes at `s` are all ASCII digits, in a few word operations: each byte's
   // high nibble is 3 and stays 3 when 6 is added (0x3a-0x3f reach 0x40); a byte whose addition
