@@ -13,16 +13,16 @@
 #include <string>
 #include <vector>
 
-#include "core/closest_name.h"
-#include "core/printable_text.h"
 #include "cli/commands.h"
 #include "cli/interrupt.h"
 #include "cli/memory_reserve.h"
-#include "engine/outputs/run_info.h"
+#include "core/closest_name.h"
 #include "core/errors.h"
+#include "core/printable_text.h"
 #include "datasets/io/inflate_budget.h"
 #include "datasets/io/input_limits.h"
 #include "datasets/readers/hdf5_cache.h"
+#include "engine/outputs/run_info.h"
 #include "git_revision.h"
 
 namespace {

@@ -121,8 +121,8 @@ int RunFollow(const TriangulateArgs& args) {
   }
   const int signal_number = on_interrupt.signal_number();
   std::fprintf(stderr, "%s: %ld lines, %ld frames, %ld persons triangulated (%.2f per frame)%s; %s\n",
-               PrintableText(input->header(0).name, LineBreaks::kEscape).c_str(), counts.lines, run.frames, run.output_persons,
-               run.frames > 0 ? static_cast<double>(run.output_persons) / run.frames : 0.0,
+               PrintableText(input->header(0).name, LineBreaks::kEscape).c_str(), counts.lines, run.frames,
+               run.output_persons, run.frames > 0 ? static_cast<double>(run.output_persons) / run.frames : 0.0,
                counts.bad_lines > 0 ? (", " + std::to_string(counts.bad_lines) + " bad line(s) skipped").c_str() : "",
                signal_number != 0 ? (std::string("stopped by ") + StopOnInterrupt::SignalName(signal_number)).c_str()
                                   : "end of input");

@@ -39,20 +39,34 @@ void AppendFixedDecimal(double value, int decimals, std::string* out) {
     // std::to_chars decides.
     const double magnitude = std::fabs(value * kScale[decimals]);
     if (magnitude < 4294967296.0) {
-      const auto whole = static_cast<unsigned long long>(magnitude);  // the floor: not negative
+      const auto whole = static_cast<unsigned long long>(magnitude);   // the floor: not negative
       const double fraction = magnitude - static_cast<double>(whole);  // exact: both below 2^32
       if (fraction != 0.5) {
         const unsigned long long digits = whole + (fraction > 0.5 ? 1 : 0);
         char* p = text;
         if (std::signbit(value)) *p++ = '-';
         switch (decimals) {  // constant divisors: multiplications, not divisions
-          case 0: p = std::to_chars(p, text + sizeof(text), digits).ptr; break;
-          case 1: p = WriteDigits<1>(digits, p); break;
-          case 2: p = WriteDigits<2>(digits, p); break;
-          case 3: p = WriteDigits<3>(digits, p); break;
-          case 4: p = WriteDigits<4>(digits, p); break;
-          case 5: p = WriteDigits<5>(digits, p); break;
-          default: p = WriteDigits<6>(digits, p); break;
+          case 0:
+            p = std::to_chars(p, text + sizeof(text), digits).ptr;
+            break;
+          case 1:
+            p = WriteDigits<1>(digits, p);
+            break;
+          case 2:
+            p = WriteDigits<2>(digits, p);
+            break;
+          case 3:
+            p = WriteDigits<3>(digits, p);
+            break;
+          case 4:
+            p = WriteDigits<4>(digits, p);
+            break;
+          case 5:
+            p = WriteDigits<5>(digits, p);
+            break;
+          default:
+            p = WriteDigits<6>(digits, p);
+            break;
         }
         out->append(text, p);
         return;

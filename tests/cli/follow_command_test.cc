@@ -327,12 +327,13 @@ TEST_F(Follow, NamesReachTheTerminalEscaped) {
   const std::string hostile = "take\x1b[2J";
   const fs::path detections = dir_ / (hostile + ".json");
   fs::copy_file(dir_ / "detections.json", detections);
-  const fs::path lines = LinesFile(hostile + ".jsonl", {FrameLine(detections_, 0, true), FrameLine(detections_, 1, true)});
+  const fs::path lines =
+      LinesFile(hostile + ".jsonl", {FrameLine(detections_, 0, true), FrameLine(detections_, 1, true)});
   const std::string out = (dir_ / ("out_" + hostile)).string();
   const test::CommandResult offline = test::RunRpt("triangulate --cameras " + Cameras() + " --detections '" +
                                                    detections.string() + "' --fps 25 --out '" + out + "'");
-  const test::CommandResult live =
-      test::RunRpt("triangulate --cameras " + Cameras() + " --follow '" + lines.string() + "' --out '" + out + "_live'");
+  const test::CommandResult live = test::RunRpt("triangulate --cameras " + Cameras() + " --follow '" + lines.string() +
+                                                "' --out '" + out + "_live'");
   for (const test::CommandResult* r : {&offline, &live}) {
     ASSERT_EQ(r->exit_code, 0) << r->err;
     EXPECT_EQ(r->out.find('\x1b'), std::string::npos) << r->out;

@@ -29,9 +29,14 @@ std::string Fast(double value, int decimals) {
 }
 
 TEST(FixedDecimal, WritesWhatToCharsWrites) {
-  std::vector<double> values = {0.0, -0.0, 1e-9, -1e-9, 0.5, -0.5, 2.5, 0.25, 0.125, 0.0625, 0.03125, 1.0000005,
-                                4294.967295, 4294.967296, 4294.967297, 4294967295.5, 4294967296.5, 1e15, -1e15,
-                                1e300, std::numeric_limits<double>::denorm_min(), 123456.7890125};
+  std::vector<double> values = {0.0,           -0.0,         1e-9,
+                                -1e-9,         0.5,          -0.5,
+                                2.5,           0.25,         0.125,
+                                0.0625,        0.03125,      1.0000005,
+                                4294.967295,   4294.967296,  4294.967297,
+                                4294967295.5,  4294967296.5, 1e15,
+                                -1e15,         1e300,        std::numeric_limits<double>::denorm_min(),
+                                123456.7890125};
   std::mt19937_64 random(11);
   std::uniform_real_distribution<double> unit(-1, 1);
   std::uniform_int_distribution<int> exponent(-12, 12);
