@@ -38,8 +38,10 @@ int steps::Undistort(const UndistortOptions& options, const UndistortInput& in, 
   out.view_of.clear();
   out.person_of.clear();
   out.bbox_diag.clear();
-  out.keypoints.clear();
   out.view_begin.clear();
+  // The keypoints are written into the slots of the last frame (every field of every joint of a
+  // pose is written below), so the slots are initialised only when the frame needs more of them.
+  size_t used = 0;
 
   const int num_views = static_cast<int>(views.size());
   for (int v = 0; v < num_views; ++v) {
@@ -51,8 +53,8 @@ int steps::Undistort(const UndistortOptions& options, const UndistortInput& in, 
     for (int p = 0; p < view.num_persons(); ++p) {
       const auto person = view.Person(p);
       if (options.drop_exact_copies && RepeatsEarlierPose(view, p)) continue;
-      const size_t base = out.keypoints.size();
-      out.keypoints.resize(base + num_output_joints);
+      const size_t base = used;
+      if (out.keypoints.size() < base + num_output_joints) out.keypoints.resize(base + num_output_joints);
       Keypoint* kps = out.keypoints.data() + base;
       for (int j = 0; j < view.num_joints; ++j) {
         const double u = person(0, j), v_px = person(1, j), s = person(2, j);
@@ -94,10 +96,7 @@ int steps::Undistort(const UndistortOptions& options, const UndistortInput& in, 
       // Usable only with enough core joints; bounding box over all valid joints.
       int core_valid = 0;
       for (int c : in.core_joints) core_valid += kps[c].score > 0 ? 1 : 0;
-      if (core_valid < options.min_core_joints) {
-        out.keypoints.resize(base);
-        continue;
-      }
+      if (core_valid < options.min_core_joints) continue;  // its slots go to the next pose
       double min_u = 1e300, min_v = 1e300, max_u = -1e300, max_v = -1e300;
       for (int j = 0; j < num_output_joints; ++j) {
         if (kps[j].score <= 0) continue;
@@ -106,12 +105,14 @@ int steps::Undistort(const UndistortOptions& options, const UndistortInput& in, 
         min_v = std::min(min_v, kps[j].v);
         max_v = std::max(max_v, kps[j].v);
       }
+      used += static_cast<size_t>(num_output_joints);
       out.view_of.push_back(v);
       out.person_of.push_back(p);
       out.bbox_diag.push_back(std::max(1.0, std::hypot(max_u - min_u, max_v - min_v)));
     }
   }
   out.view_begin.push_back(out.num_poses());
+  out.keypoints.resize(used);  // smaller or equal: nothing is initialised
   // The same keypoints as columns for the SIMD kernels: all joints, and the core joints.
   out.core_joints.assign(in.core_joints.begin(), in.core_joints.end());
   out.all_columns.Assign(out.keypoints.data(), out.num_poses(), num_output_joints, nullptr, num_output_joints);
