@@ -159,6 +159,37 @@ TEST(Undistort, DropsPosesWithFewerValidCoreJointsThanItsMinimum) {
   EXPECT_EQ(f.prepared.view_of[0], 0);
 }
 
+// The keypoints of a frame are written into the last frame's slots: a frame with fewer poses,
+// missing joints and a dropped pose after a frame where everything was seen gives exactly what
+// a first frame would (no joint, derived joint or column keeps a value of the frame before).
+TEST(Undistort, AFrameAfterAnotherEqualsAFirstFrame) {
+  StepFixture f(3, {test::StandingPerson(-1, 0), test::StandingPerson(1, 0.5)});
+  f.Prepare();
+  ASSERT_EQ(f.prepared.num_poses(), 6);
+  f.views[0].Person(0)(2, 11) = 0;              // a hip missing: hip_middle cannot be derived
+  f.views[0].Person(1)(0, 6) = std::nan("");    // a NaN coordinate
+  f.views[1].Person(0).row(2).setZero();        // nobody in view 1 for person 0: pose dropped
+  f.views[2].Clear(17);                         // view 2 sees nobody
+  StepFixture first = f;
+  first.prepared = PreparedViews{};
+  first.Prepare();
+  f.Prepare();
+  ASSERT_EQ(f.prepared.num_poses(), 3);
+  EXPECT_EQ(f.prepared.view_of, first.prepared.view_of);
+  EXPECT_EQ(f.prepared.bbox_diag, first.prepared.bbox_diag);
+  ASSERT_EQ(f.prepared.keypoints.size(), first.prepared.keypoints.size());
+  for (size_t k = 0; k < f.prepared.keypoints.size(); ++k) {
+    const Keypoint& a = f.prepared.keypoints[k];
+    const Keypoint& b = first.prepared.keypoints[k];
+    EXPECT_TRUE(a.u == b.u && a.v == b.v && a.score == b.score && a.sqrt_score == b.sqrt_score && a.ray == b.ray &&
+                a.x == b.x && a.y == b.y)
+        << "keypoint " << k;
+  }
+  EXPECT_EQ(f.prepared.all_columns.score, first.prepared.all_columns.score);
+  EXPECT_EQ(f.prepared.all_columns.rx, first.prepared.all_columns.rx);
+  EXPECT_EQ(f.prepared.Pose(0)[FindJoint(f.output, "hip_middle")].score, 0.0);
+}
+
 TEST(MakePairs, EveryCrossViewPairOnce) {
   StepFixture f(3, {test::StandingPerson(-1, 0), test::StandingPerson(1, 0)});
   f.views[2].Clear(17);  // view 2 sees nobody
