@@ -74,7 +74,8 @@ TEST(JsonPull, AcceptsAndRefusesWhatNlohmannDoes) {
       "", "[1,]", "[,1]", "{\"a\" 1}", "{\"a\": 1,}", "{1: 2}", "[01]", "[1.]", "[.5]", "[+1]", "[1e]", "[-]", "[NaN]",
       "[Infinity]", "[tru]", "[nulll]", "\"a", "\"\\x\"", "\"\\u12\"", "\"\\ud800\"", "\"\\udc00x\"", "\"a\tb\"",
       "\"\xff\"", "\"\xc3\"", "[1] 2", "[1]]", "{\"a\": 1}}", "[1e400]",
-      // digit runs read eight at a time: a byte just outside '0'..'9' ('/' and ':') in each place
+      // digit runs with a byte just outside '0'..'9' ('/' and ':') in the eight bytes after the point
+      // (eight digits there send the number to std::from_chars) and elsewhere
       "[12345678:]", "[1234567:8]", "[1234567/8]", "[0.1234567:9]", "[0.12345678/]", "[12345678.1234567:]",
       "[:2345678]", "[1234567890123456]", "[0.12345678901234567]", "[-98765432.10987654]",
       // eight decimals or more (read by std::from_chars without a second check of their start)
@@ -133,8 +134,9 @@ TEST(JsonPull, NumbersEqualFromChars) {
     std::snprintf(text, sizeof(text), formats[i % 7], x);
     texts.push_back(text);
   }
-  // Digit runs of every length from 1 to 24 before and after the point (the fast path takes runs
-  // eight digits at a time), with random digits and with all nines, and a byte after the number.
+  // Digit runs of every length from 1 to 24 before and after the point (up to seven decimals take
+  // the short-decimal path, eight or more std::from_chars), with random digits and with all nines,
+  // alone and followed by more text.
   std::uniform_int_distribution<int> digit(0, 9);
   for (int integer = 1; integer <= 24; ++integer) {
     for (int fraction = 0; fraction <= 24; ++fraction) {
