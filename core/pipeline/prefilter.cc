@@ -41,6 +41,15 @@ int ApplyPairBudget(const PreparedViews& views, std::span<const ViewGeometry> ge
 
   scratch->keep.assign(pairs->size(), 1);
   scratch->covered.resize(views.num_poses());
+  // The core joints' sqrt(score) of every pose side by side: the evidence of a pair below reads
+  // two short rows instead of gathering from two poses' keypoints.
+  const int num_core_joints = static_cast<int>(core_joints.size());
+  scratch->core_sqrt_scores.resize(static_cast<size_t>(views.num_poses()) * num_core_joints);
+  for (int g = 0; g < views.num_poses(); ++g) {
+    const Keypoint* kps = views.Pose(g);
+    double* row = scratch->core_sqrt_scores.data() + static_cast<size_t>(g) * num_core_joints;
+    for (int c = 0; c < num_core_joints; ++c) row[c] = kps[core_joints[c]].sqrt_score;
+  }
   scratch->directions.resize(static_cast<size_t>(num_views));
   for (int q = 0; q < num_previous; ++q) {
     const int first = scratch->bucket_begin[q], last = scratch->bucket_begin[q + 1];
@@ -61,10 +70,10 @@ int ApplyPairBudget(const PreparedViews& views, std::span<const ViewGeometry> ge
     for (int i = first; i < last; ++i) {
       const int k = scratch->bucket[i];
       const PosePair& pair = (*pairs)[k];
-      const Keypoint* ka = views.Pose(pair.a);
-      const Keypoint* kb = views.Pose(pair.b);
+      const double* sa = scratch->core_sqrt_scores.data() + static_cast<size_t>(pair.a) * num_core_joints;
+      const double* sb = scratch->core_sqrt_scores.data() + static_cast<size_t>(pair.b) * num_core_joints;
       double evidence = 0;
-      for (int c : core_joints) evidence += ka[c].sqrt_score * kb[c].sqrt_score;
+      for (int c = 0; c < num_core_joints; ++c) evidence += sa[c] * sb[c];  // in the core joints' order
       const double sine =
           scratch->directions[views.view_of[pair.a]].cross(scratch->directions[views.view_of[pair.b]]).norm();
       scratch->budget.emplace_back(-sine * evidence, k);  // best first
