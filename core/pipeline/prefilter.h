@@ -57,7 +57,7 @@ struct PrefilterScratch {
   std::vector<std::pair<double, int>> budget;  // (-quality, pair index) of one person's pairs
   std::vector<char> keep;                  // per pair
   std::vector<char> covered;               // per pose: used by a kept pair of its person
-  std::vector<double> core_sqrt_scores;     // per pose and core joint: sqrt(score), contiguous
+  std::vector<double> core_sqrt_scores;    // per pose and core joint: sqrt(score), contiguous
 };
 
 namespace steps {
