@@ -235,6 +235,81 @@ TEST(Prefilter, KeepsBothOrNeitherMatchedDropsOneSided) {
   EXPECT_EQ(steps::Prefilter(off, input, &scratch, &pairs), 9);
 }
 
+// The pair budget (prefilter.h): of the pairs matched to one person only max_pairs_per_person are
+// kept, first the two best of every pose, then the best others; best = sin of the angle between
+// the two cameras' directions from the person's last centre x the 2D confidence the two poses
+// share on the core joints. Five cameras around one person whose views see it with different
+// confidences; the expected pairs follow that rule, worked out here from the cameras and the
+// confidences.
+TEST(Prefilter, PairBudgetKeepsEveryPosesTwoBestPairsThenTheBestOthers) {
+  const auto person = test::StandingPerson(0, 0);
+  StepFixture f(5, {person});
+  const double confidence[5] = {0.2, 0.9, 1.0, 0.8, 0.3};
+  for (int v = 0; v < 5; ++v) f.views[v].Person(0).row(2).setConstant(confidence[v]);
+  f.Prepare();
+  ASSERT_EQ(f.prepared.num_poses(), 5);
+  PreviousPersons previous;
+  previous.Clear(static_cast<int>(f.core.size()));
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  for (int c : f.core) {
+    previous.xyz.push_back(person.col(c).head<3>());
+    previous.score.push_back(1.0);
+    centre += person.col(c).head<3>() / static_cast<double>(f.core.size());
+  }
+  std::vector<PosePair> all;
+  steps::MakePairs(f.prepared, &all);
+  ASSERT_EQ(all.size(), 10u);
+  // The rule by hand: quality of every pair, best first (ties: the earlier pair).
+  std::vector<std::pair<double, int>> order;
+  for (int k = 0; k < 10; ++k) {
+    const int va = f.prepared.view_of[all[k].a], vb = f.prepared.view_of[all[k].b];
+    const Eigen::Vector3d da = (f.geometry[va].center - centre).normalized();
+    const Eigen::Vector3d db = (f.geometry[vb].center - centre).normalized();
+    const double evidence = static_cast<double>(f.core.size()) * std::sqrt(confidence[va] * confidence[vb]);
+    order.emplace_back(-da.cross(db).norm() * evidence, k);
+  }
+  std::sort(order.begin(), order.end());
+  for (const int budget : {3, 7, 8}) {
+    std::vector<bool> expected(10, false);
+    int covered[5] = {0, 0, 0, 0, 0}, used = 0;
+    for (const auto& [quality, k] : order) {  // every pose's two best
+      const int va = f.prepared.view_of[all[k].a], vb = f.prepared.view_of[all[k].b];
+      if (covered[va] >= 2 && covered[vb] >= 2) continue;
+      ++covered[va];
+      ++covered[vb];
+      expected[k] = true;
+      ++used;
+    }
+    for (const auto& [quality, k] : order) {  // then the best others, up to the budget
+      if (used >= budget) break;
+      if (!expected[k]) {
+        expected[k] = true;
+        ++used;
+      }
+    }
+    std::vector<PosePair> pairs = all;
+    PrefilterScratch scratch;
+    PrefilterOptions options;
+    options.max_pairs_per_person = budget;
+    const int kept = steps::Prefilter(
+        options, {.views = f.prepared, .geometry = f.geometry, .core_joints = f.core, .previous = previous, .timestamp_s = 0},
+        &scratch, &pairs);
+    ASSERT_EQ(kept, used) << "budget " << budget;
+    ASSERT_EQ(pairs.size(), static_cast<size_t>(used));
+    for (int k = 0, i = 0; k < 10; ++k) {
+      if (!expected[k]) continue;
+      EXPECT_EQ(pairs[i].a, all[k].a) << "budget " << budget << ", kept pair " << i;
+      EXPECT_EQ(pairs[i].b, all[k].b) << "budget " << budget << ", kept pair " << i;
+      ++i;
+    }
+    if (budget == 3) {
+      EXPECT_GT(kept, 3) << "every pose keeps two pairs, even above the budget";
+    } else {
+      EXPECT_EQ(kept, budget);
+    }
+  }
+}
+
 TEST(TriangulateCore, ExactRecoveryWithMidpointAndDlt) {
   StepFixture f(4, {test::StandingPerson(0.5, 0.3, 1.0)});
   f.Prepare();
