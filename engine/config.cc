@@ -75,7 +75,7 @@ std::vector<std::string> Keys() {
 }
 
 template <class>
-constexpr bool kUnsupportedOptionType = false;
+[[maybe_unused]] constexpr bool kUnsupportedOptionType = false;
 
 // The value in the JSON of `rpt config --dump` (a config file reads it back through the codec).
 template <class T>

@@ -200,7 +200,7 @@ void RunSequence(int index, FrameSource& source, const RunOptions& options, cons
 // Runs body(i, report_progress) for i in 0..count-1 on up to `threads` threads, report_progress
 // true on one thread only; the first exception is rethrown once all finished (exceptions must not
 // cross the OpenMP region). Returns the threads used.
-int ForEachSequence(int count, int threads, const std::function<void(int, bool)>& body) {
+int ForEachSequence(int count, [[maybe_unused]] int threads, const std::function<void(int, bool)>& body) {
   std::exception_ptr error;
   std::mutex error_mutex;
   int used = 1;
