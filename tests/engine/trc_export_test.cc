@@ -52,13 +52,18 @@ void Feed(TrcExport* trc, long frame_idx, const std::vector<int>& tracks) {
   trc->Frame(FrameOutput{0, &input, &persons, &stats});
 }
 
-TEST(TrcExport, WritesATracksFileWhenItEndsAndAReturningIdToAFileOfItsOwn) {
-  const fs::path dir = TempDir("trc_ended");
-  TrcExport trc(dir / "trc", 1, ExportOptions{});
+// Sequence "s" at 10 frames a second, the one every test here writes.
+SequenceHeader SequenceS() {
   SequenceHeader header;
   header.name = "s";
   header.fps = 10;
-  trc.BeginSequence(0, header, {"a"});
+  return header;
+}
+
+TEST(TrcExport, WritesATracksFileWhenItEndsAndAReturningIdToAFileOfItsOwn) {
+  const fs::path dir = TempDir("trc_ended");
+  TrcExport trc(dir / "trc", 1, ExportOptions{});
+  trc.BeginSequence(0, SequenceS(), {"a"});
   Feed(&trc, 0, {0, 1});
   Feed(&trc, 1, {0, 1});
   EXPECT_EQ(trc.files(), 0);
@@ -95,10 +100,7 @@ TEST(TrcExport, WritesATracksFileWhenItEndsAndAReturningIdToAFileOfItsOwn) {
 TEST(TrcExport, JointNamesFromTheInputKeepTheHeadersColumns) {
   const fs::path dir = TempDir("trc_names");
   TrcExport trc(dir / "trc", 1, ExportOptions{});
-  SequenceHeader header;
-  header.name = "s";
-  header.fps = 10;
-  trc.BeginSequence(0, header, {"extra_a\tb\nc\r\x1b[2J"});
+  trc.BeginSequence(0, SequenceS(), {"extra_a\tb\nc\r\x1b[2J"});
   Feed(&trc, 0, {0});
   trc.EndSequence(0);
   const auto lines = Lines(dir / "trc" / "s_track0.trc");
@@ -111,10 +113,7 @@ TEST(TrcExport, JointNamesFromTheInputKeepTheHeadersColumns) {
 TEST(TrcExport, HoldsOnlyTheLiveTracksPartFiles) {
   const fs::path dir = TempDir("trc_many");
   TrcExport trc(dir / "trc", 1, ExportOptions{});
-  SequenceHeader header;
-  header.name = "s";
-  header.fps = 10;
-  trc.BeginSequence(0, header, {"a"});
+  trc.BeginSequence(0, SequenceS(), {"a"});
   // 200 tracks, two alive at a time, each for three frames.
   for (long f = 0; f < 200; ++f) {
     std::vector<int> tracks;
