@@ -170,7 +170,9 @@ TEST(MetricsAccumulator, EveryGateJustInsideAndJustOutside) {
     EXPECT_NEAR(r.invalid, c.invalid, kTol) << at;
     EXPECT_NEAR(r.f1, c.f1, kTol) << at;
     EXPECT_NEAR(r.pcp, c.pcp, kTol) << at;
-    if (c.shift_mm < 500) EXPECT_NEAR(r.mpjpe_mm, c.shift_mm, kTol) << at;
+    if (c.shift_mm < 500) {
+      EXPECT_NEAR(r.mpjpe_mm, c.shift_mm, kTol) << at;
+    }
   }
 }
 
