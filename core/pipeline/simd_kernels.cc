@@ -473,6 +473,38 @@ double PixelDistanceSumImpl(const double* uv, const PoseColumns& c, int n, int* 
   return sum;
 }
 
+// RankMedianScalar with lanes over i: each lane counts the values below its value, and the equal
+// ones earlier in the list, with the scalar code's comparisons; the ranks are then read in list
+// order as the scalar code reads them (the last value of a rank wins).
+double RankMedianImpl(const double* values, int n) {
+  const hn::CappedTag<double, 4> d;  // at most 32 values: short rows
+  using V = hn::Vec<decltype(d)>;
+  const size_t N = hn::Lanes(d), count = static_cast<size_t>(n);
+  HWY_ALIGN double padded[kRankMedianMax + 4];
+  HWY_ALIGN double rank[kRankMedianMax + 4];
+  std::copy(values, values + count, padded);
+  std::fill(padded + count, padded + count + N, 0.0);  // lanes past n: ranked, never read
+  const V one = hn::Set(d, 1.0);
+  for (size_t i = 0; i < count; i += N) {
+    const V vi = hn::Load(d, padded + i);
+    const V index = hn::Iota(d, static_cast<double>(i));
+    V r = hn::Zero(d);
+    for (size_t j = 0; j < count; ++j) {
+      const V vj = hn::Set(d, values[j]);
+      const auto counted = hn::Or(hn::Lt(vj, vi), hn::And(hn::Eq(vj, vi), hn::Lt(hn::Set(d, static_cast<double>(j)), index)));
+      r = hn::Add(r, hn::IfThenElseZero(counted, one));
+    }
+    hn::Store(r, d, rank + i);
+  }
+  const double low = static_cast<double>((n - 1) / 2), high = static_cast<double>(n / 2);
+  double lower = 0, upper = 0;
+  for (size_t i = 0; i < count; ++i) {
+    lower = rank[i] == low ? values[i] : lower;
+    upper = rank[i] == high ? values[i] : upper;
+  }
+  return 0.5 * (lower + upper);
+}
+
 int64_t TargetImpl() { return HWY_TARGET; }
 
 size_t DoubleLanesImpl() { return hn::Lanes(hn::ScalableTag<double>()); }
@@ -532,6 +564,7 @@ HWY_EXPORT(ScoreJointsImpl);
 HWY_EXPORT(DistanceSumImpl);
 HWY_EXPORT(MergeGroupImpl);
 HWY_EXPORT(PixelDistanceSumImpl);
+HWY_EXPORT(RankMedianImpl);
 HWY_EXPORT(TargetImpl);
 HWY_EXPORT(DoubleLanesImpl);
 
@@ -570,6 +603,8 @@ void MergeGroup(const MergeParams& p, const double* xyz, const double* score, in
                 double* out) {
   HWY_DYNAMIC_DISPATCH(MergeGroupImpl)(p, xyz, score, members, n, dist, out);
 }
+
+double RankMedian(const double* values, int n) { return HWY_DYNAMIC_DISPATCH(RankMedianImpl)(values, n); }
 
 bool Enabled() {
   EnsureEnvironmentRead();

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // SIMD kernels of the hot steps, one lane per joint: mid-point triangulation of a pose pair
-// (steps 4 and 10), its reprojection residuals and joint scores (steps 6-7 and 10), the pre-filter's
+// (steps 4 and 10), its reprojection residuals, their median and joint scores (steps 6-7 and 10), the pre-filter's
 // pixel distance (step 2), the group distance (step 9) and the merge of a group (step 11).
 // Structure of arrays in (KeypointColumns, pipeline_types.h), the steps' own arrays out.
 //
@@ -102,6 +102,11 @@ struct MergeParams {
 size_t MergeScratchSize(int members);
 void MergeGroup(const MergeParams& p, const double* xyz, const double* score, int members, int n, double* dist,
                 double* out);
+
+// RankMedianScalar (median.h) of values[0..n), n in [1, kRankMedianMax], with the same comparisons
+// (the median of a pair's joint residuals in the score step): bit-identical, NaN included.
+inline constexpr int kRankMedianMax = 32;
+double RankMedian(const double* values, int n);
 
 // Whether the steps use these kernels (the default) or their scalar code: for comparisons and tests.
 // The environment variable RPT_SIMD=off starts a process with the scalar code; RPT_SIMD=<name>

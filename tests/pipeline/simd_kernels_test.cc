@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <functional>
@@ -18,6 +19,7 @@
 #include <vector>
 
 #include "core/fast_math.h"
+#include "core/pipeline/median.h"
 #include "core/pipeline/merge.h"
 #include "core/pipeline/proposal_scoring.h"
 #include "core/pipeline/triangulator.h"
@@ -313,6 +315,46 @@ TEST(SimdKernels, PixelDistanceSumEqualsThePrefiltersScalarLoopBitForBit) {
     }
     EXPECT_EQ(compared, 200 * 8);
   });
+}
+
+// The median of a pair's residuals (median.h): the kernel's ranks against the scalar ranking, on
+// random sets with ties, infinities, NaN and signed zeros, for every size the kernel takes.
+TEST(SimdKernels, RankMedianEqualsTheScalarRankingBitForBit) {
+  simd::ForEachPathForTest([&] {
+    std::mt19937 rng(29);
+    std::uniform_real_distribution<double> unit(0, 1);
+    const double specials[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
+                               -std::numeric_limits<double>::infinity(), 0.0, -0.0, 1e6};
+    int compared = 0, with_nan = 0;
+    for (int round = 0; round < 300; ++round) {
+      for (int n = 1; n <= simd::kRankMedianMax; ++n) {
+        std::vector<double> values(n);
+        for (double& v : values) {
+          const double kind = unit(rng);
+          v = kind < 0.1 ? specials[rng() % std::size(specials)] : kind < 0.4 ? std::round(unit(rng) * 4) : unit(rng);
+        }
+        with_nan += std::any_of(values.begin(), values.end(), [](double v) { return std::isnan(v); });
+        const double expected = RankMedianScalar(values.data(), n);
+        const double got = simd::RankMedian(values.data(), n);
+        ASSERT_EQ(std::memcmp(&got, &expected, sizeof got), 0)
+            << simd::ActivePath() << " n " << n << ": " << got << " vs " << expected;
+        ++compared;
+      }
+    }
+    EXPECT_EQ(compared, 300 * simd::kRankMedianMax);
+    EXPECT_GT(with_nan, 100);
+  });
+  // Known medians, so that a ranking both sides get wrong alike is caught.
+  for (const bool on : {false, true}) {
+    simd::SetEnabled(on);
+    std::vector<double> odd = {5, 1, 4, 1, 3};
+    EXPECT_EQ(Median(odd.data(), 5), 3.0);
+    std::vector<double> even = {0.4, 0.1, 0.3, 0.2};
+    EXPECT_EQ(Median(even.data(), 4), 0.25);
+    std::vector<double> ties = {2, 2, 2, 7, 7, 7};
+    EXPECT_EQ(Median(ties.data(), 6), 4.5);
+  }
+  simd::SetEnabled(true);
 }
 
 // steps::Merge with the kernel against its scalar code (simd::SetEnabled(false)) on random groups,
