@@ -138,6 +138,9 @@ int main(int argc, char** argv) {
   } catch (const rpt::ConfigError& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 2;
+  } catch (const rpt::InstallationError& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 1;
   } catch (const std::bad_alloc&) {
     // The places that read or process an input turn this into an InputError naming the input;
     // what is left is named by its command.

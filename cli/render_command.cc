@@ -13,7 +13,6 @@
 #include <iostream>
 #include <map>
 #include <memory>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <optional>
 
@@ -28,6 +27,7 @@
 #include "core/text.h"
 #include "datasets/io/staged_output.h"
 #include "engine/input.h"
+#include "engine/render/image_codecs.h"
 #include "engine/render/render_overlay.h"
 #include "engine/render/render_selection.h"
 #include "engine/render/render_video.h"
@@ -77,7 +77,7 @@ cv::Mat Background(const RenderArgs& args, const Camera& camera, int camera_idx,
                    long frame_idx, ImageProblems* problems) {
   if (args.images.empty()) return engine::BlankCanvas(camera);
   const std::string path = engine::ImagePath(args.images, camera.name, camera_idx, frame.id, frame_idx);
-  cv::Mat image = cv::imread(path, cv::IMREAD_COLOR);
+  cv::Mat image = engine::LoadImageCodecs().read_color(path);
   if (image.empty()) {
     if (problems->missing++ == 0) problems->first_missing = path;
     return engine::BlankCanvas(camera);
@@ -177,7 +177,7 @@ void RenderSequence(const RenderArgs& args, const Sequence& sequence, const std:
       if (png) {
         const std::filesystem::path path = sequence_dir / camera_files[c] / (frame_files[f - range.first] + ".png");
         io::StagedFile file(path, io::NamedBy::kRpt, /*keep_extension=*/true);  // OpenCV picks PNG by the extension
-        if (!cv::imwrite(file.path().string(), canvas)) throw InputError(path.string() + ": cannot write the PNG");
+        if (!engine::LoadImageCodecs().write_png(file.path().string(), canvas)) throw InputError(path.string() + ": cannot write the PNG");
         file.Commit();
         ++*pngs;
       }
@@ -269,6 +269,7 @@ RenderInput RecordedRenderInput(const RenderArgs& args) {
 
 void RunRender(const RenderArgs& args) {
   if (!args.images.empty()) engine::ImagePath(args.images, "", 0, "", 0);  // a bad template fails before any work
+  engine::LoadImageCodecs();  // so does a missing image and video module
   RenderInput input;
   if (!args.run.empty()) {
     input = RecordedRenderInput(args);

@@ -25,4 +25,12 @@ class ConfigError : public std::runtime_error {
   explicit ConfigError(const char* message) : ConfigError(std::string(message)) {}
 };
 
+// A file of rpt's own build is missing or unusable (e.g. the image and video module of `rpt render`
+// moved away from rpt): neither the input's nor the configuration's fault, so exit code 1, but
+// not an internal error either.
+class InstallationError : public std::runtime_error {
+ public:
+  explicit InstallationError(const std::string& message) : std::runtime_error(PrintableText(message)) {}
+};
+
 }  // namespace rpt

@@ -6,10 +6,10 @@
 namespace rpt::engine {
 
 Mp4Writer::Mp4Writer(const std::filesystem::path& path, cv::Size size, double fps)
-    : file_(path, io::NamedBy::kRpt, /*keep_extension=*/true) {
+    : codecs_(LoadImageCodecs()), file_(path, io::NamedBy::kRpt, /*keep_extension=*/true) {
   for (const char* codec : {"avc1", "mp4v"}) {
-    const int fourcc = cv::VideoWriter::fourcc(codec[0], codec[1], codec[2], codec[3]);
-    if (writer_.open(file_.path().string(), cv::CAP_FFMPEG, fourcc, fps, size)) {
+    writer_ = codecs_.open_mp4(file_.path().string(), codec, fps, size.width, size.height);
+    if (writer_ != nullptr) {
       codec_ = codec;
       return;
     }
@@ -18,13 +18,18 @@ Mp4Writer::Mp4Writer(const std::filesystem::path& path, cv::Size size, double fp
                    "to OpenCV's FFmpeg writer); write PNGs with --format png");
 }
 
+Mp4Writer::~Mp4Writer() {
+  if (writer_ != nullptr) codecs_.close_mp4(writer_);  // unfinished: the staged file is removed
+}
+
 void Mp4Writer::Write(const cv::Mat& frame) {
-  writer_.write(frame);
+  codecs_.write_frame(writer_, frame);
   ++frames_;
 }
 
 void Mp4Writer::Finish() {
-  writer_.release();
+  codecs_.close_mp4(writer_);
+  writer_ = nullptr;
   file_.Commit();
 }
 

@@ -17,6 +17,19 @@ TEST(Main, VersionPrintsProjectVersionAndGitRevision) {
   EXPECT_NE(r.out.find(" (git "), std::string::npos) << r.out;
 }
 
+// OpenCV's image and video files (imgcodecs, videoio: about 220 shared libraries, 0.2 s to load)
+// are loaded by `rpt render` alone (engine/render/image_codecs.h). The loader's trace of a command
+// lists every library it maps: OpenCV's core, never the image and video ones.
+TEST(Main, CommandsOtherThanRenderStartWithoutTheImageAndVideoLibraries) {
+  for (const char* args : {"--version", "config --dump"}) {
+    const test::CommandResult r = test::RunRpt(args, "LD_DEBUG=libs ");
+    EXPECT_EQ(r.exit_code, 0) << args;
+    EXPECT_NE(r.err.find("libopencv_core"), std::string::npos) << args << ": no loader trace\n" << r.err.substr(0, 500);
+    EXPECT_EQ(r.err.find("libopencv_imgcodecs"), std::string::npos) << args;
+    EXPECT_EQ(r.err.find("libopencv_videoio"), std::string::npos) << args;
+  }
+}
+
 TEST(Main, UnknownSubcommandSuggestsTheClosestAndExitsWith2) {
   const test::CommandResult r = test::RunRpt("evl --dataset synthetic");
   EXPECT_EQ(r.exit_code, 2);

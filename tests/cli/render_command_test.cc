@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
@@ -17,6 +18,7 @@
 #include "datasets/readers/generic_detections.h"
 #include "engine/frame_sink.h"
 #include "engine/input.h"
+#include "engine/render/image_codecs.h"
 #include "engine/render/render_overlay.h"
 #include "engine/render/render_selection.h"
 #include "engine/run.h"
@@ -253,6 +255,36 @@ TEST_F(RenderRun, DrawsTheRecordedPredictionsOfEvalAndTriangulateRuns) {
   expect_refused("--run " + tri.string() + labels, "--labels does not apply with it");
   expect_refused("--run " + tri.string() + " --set smooth.mode=causal", "--set does not apply with it");
   expect_refused("--run " + (dir_ / "nothing").string(), "nothing");
+}
+
+// The image and video module (engine/render/image_codecs.h): found where the build put it, its
+// PNG functions read back what they wrote; a missing or foreign module names every place tried.
+TEST(ImageCodecs, TheBuiltModuleWritesAndReadsPngs) {
+  const engine::ImageCodecs& codecs = engine::LoadImageCodecs();
+  EXPECT_EQ(codecs.version, engine::kImageCodecsVersion);
+  cv::Mat image(7, 5, CV_8UC3, cv::Scalar(10, 20, 30));
+  image.at<cv::Vec3b>(3, 2) = cv::Vec3b(200, 100, 0);
+  const fs::path png = test::TempDir("codecs") / "x.png";
+  ASSERT_TRUE(codecs.write_png(png.string(), image));
+  const cv::Mat back = codecs.read_color(png.string());
+  ASSERT_EQ(back.size(), image.size());
+  EXPECT_EQ(cv::norm(back, image, cv::NORM_INF), 0.0);
+  EXPECT_TRUE(codecs.read_color((png.parent_path() / "missing.png").string()).empty());
+}
+
+TEST(ImageCodecs, AModuleThatDoesNotLoadNamesEveryPlaceTried) {
+  const fs::path dir = test::TempDir("codecs_missing");
+  const fs::path text = dir / engine::kImageCodecsFile;
+  std::ofstream(text) << "not a shared library\n";
+  const std::vector<fs::path> places = {dir / "none" / engine::kImageCodecsFile, text};
+  const std::string message = test::ErrorMessage<InstallationError>([&] { engine::LoadImageCodecsFrom(places); });
+  EXPECT_NE(message.find("rpt render needs its image and video module librpt_image_codecs.so"), std::string::npos)
+      << message;
+  EXPECT_NE(message.find(places[0].string() + ": "), std::string::npos) << message;
+  EXPECT_NE(message.find(places[1].string() + ": "), std::string::npos) << message;
+  // The build's own module does load from that list's end.
+  const std::vector<fs::path> with_build = {places[0], engine::ImageCodecsPlaces().back()};
+  EXPECT_EQ(engine::LoadImageCodecsFrom(with_build).version, engine::kImageCodecsVersion);
 }
 
 TEST(RenderSelection, FrameRanges) {
