@@ -177,7 +177,9 @@ void RenderSequence(const RenderArgs& args, const Sequence& sequence, const std:
       if (png) {
         const std::filesystem::path path = sequence_dir / camera_files[c] / (frame_files[f - range.first] + ".png");
         io::StagedFile file(path, io::NamedBy::kRpt, /*keep_extension=*/true);  // OpenCV picks PNG by the extension
-        if (!engine::LoadImageCodecs().write_png(file.path().string(), canvas)) throw InputError(path.string() + ": cannot write the PNG");
+        if (!engine::LoadImageCodecs().write_png(file.path().string(), canvas)) {
+          throw InputError(path.string() + ": cannot write the PNG");
+        }
         file.Commit();
         ++*pngs;
       }

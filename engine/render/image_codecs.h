@@ -29,6 +29,7 @@ struct ImageCodecs {
   void (*close_mp4)(void* writer);
 };
 
+// Raised whenever ImageCodecs changes: a module of another build is refused, not called.
 inline constexpr int kImageCodecsVersion = 1;
 // The module's one exported function: const ImageCodecs* rpt_image_codecs().
 inline constexpr const char* kImageCodecsEntry = "rpt_image_codecs";
