@@ -44,17 +44,22 @@ struct KeypointColumns {
     stride = n;
     const size_t size = static_cast<size_t>(poses) * n;
     for (auto* c : {&u, &v, &score, &rx, &ry, &rz}) c->resize(size);
+    double *pu = u.data(), *pv = v.data(), *ps = score.data(), *px = rx.data(), *py = ry.data(), *pz = rz.data();
     for (int g = 0; g < poses; ++g) {
       const Keypoint* pose = kps + static_cast<size_t>(g) * pose_size;
       const size_t at = static_cast<size_t>(g) * n;
-      for (int i = 0; i < n; ++i) {
-        const Keypoint& kp = pose[joints != nullptr ? joints[i] : i];
-        u[at + i] = kp.u;
-        v[at + i] = kp.v;
-        score[at + i] = kp.score;
-        rx[at + i] = kp.ray.x();
-        ry[at + i] = kp.ray.y();
-        rz[at + i] = kp.ray.z();
+      const auto copy = [&](int i, const Keypoint& kp) {
+        pu[at + i] = kp.u;
+        pv[at + i] = kp.v;
+        ps[at + i] = kp.score;
+        px[at + i] = kp.ray.x();
+        py[at + i] = kp.ray.y();
+        pz[at + i] = kp.ray.z();
+      };
+      if (joints != nullptr) {
+        for (int i = 0; i < n; ++i) copy(i, pose[joints[i]]);
+      } else {
+        for (int i = 0; i < n; ++i) copy(i, pose[i]);
       }
     }
   }

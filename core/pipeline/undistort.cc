@@ -4,11 +4,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/fast_math.h"
+
 namespace rpt {
 
 namespace {
 
-void SetFromNormalized(const ViewGeometry& g, double x, double y, double score, Keypoint* kp) {
+RPT_ALWAYS_INLINE void SetFromNormalized(const ViewGeometry& g, double x, double y, double score, Keypoint* kp) {
   kp->x = x;
   kp->y = y;
   kp->u = g.fx * x + g.skew * y + g.cx;
