@@ -2,6 +2,7 @@
 #include "core/pipeline/prefilter.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -40,7 +41,7 @@ int ApplyPairBudget(const PreparedViews& views, std::span<const ViewGeometry> ge
   }
 
   scratch->keep.assign(pairs->size(), 1);
-  scratch->covered.resize(views.num_poses());
+  scratch->best_two.resize(views.num_poses());
   // The core joints' sqrt(score) of every pose side by side: the evidence of a pair below reads
   // two short rows instead of gathering from two poses' keypoints.
   const int num_core_joints = static_cast<int>(core_joints.size());
@@ -76,29 +77,46 @@ int ApplyPairBudget(const PreparedViews& views, std::span<const ViewGeometry> ge
       for (int c = 0; c < num_core_joints; ++c) evidence += sa[c] * sb[c];  // in the core joints' order
       const double sine =
           scratch->directions[views.view_of[pair.a]].cross(scratch->directions[views.view_of[pair.b]]).norm();
-      scratch->budget.emplace_back(-sine * evidence, k);  // best first
+      scratch->budget.emplace_back(-sine * evidence, k);  // best first: (-quality, pair index) ascending
       scratch->keep[k] = 0;
-      scratch->covered[pair.a] = scratch->covered[pair.b] = 0;
+      scratch->best_two[pair.a] = scratch->best_two[pair.b] = {-1, -1};
     }
-    std::sort(scratch->budget.begin(), scratch->budget.end());
     // Every pose of the person keeps its two best pairs (so the person's group claims all its
-    // poses even if the score filter drops one), then the budget fills by quality.
-    constexpr char kPairsPerPose = 2;
-    size_t used = 0;
-    for (const auto& [quality, k] : scratch->budget) {
-      const PosePair& pair = (*pairs)[k];
-      if (scratch->covered[pair.a] >= kPairsPerPose && scratch->covered[pair.b] >= kPairsPerPose) continue;
-      ++scratch->covered[pair.a];
-      ++scratch->covered[pair.b];
-      scratch->keep[k] = 1;
-      ++used;
-    }
-    for (const auto& [quality, k] : scratch->budget) {
-      if (used >= budget) break;
-      if (!scratch->keep[k]) {
-        scratch->keep[k] = 1;
-        ++used;
+    // poses even if the score filter drops one), then the budget fills by quality. The entries
+    // are totally ordered (pair indices differ), so "the two best of each pose" and "the best of
+    // the rest" are exact selections: no sort of the whole bucket.
+    const std::vector<std::pair<double, int>>& entries = scratch->budget;
+    const int num_entries = static_cast<int>(entries.size());
+    const auto offer = [&entries](std::array<int, 2>& two, int e) {
+      if (two[0] < 0 || entries[e] < entries[two[0]]) {
+        two[1] = two[0];
+        two[0] = e;
+      } else if (two[1] < 0 || entries[e] < entries[two[1]]) {
+        two[1] = e;
       }
+    };
+    for (int e = 0; e < num_entries; ++e) {
+      const PosePair& pair = (*pairs)[entries[e].second];
+      offer(scratch->best_two[pair.a], e);
+      offer(scratch->best_two[pair.b], e);
+    }
+    size_t used = 0;
+    scratch->rest.clear();
+    for (int e = 0; e < num_entries; ++e) {
+      const PosePair& pair = (*pairs)[entries[e].second];
+      const std::array<int, 2>& two_a = scratch->best_two[pair.a];
+      const std::array<int, 2>& two_b = scratch->best_two[pair.b];
+      if (two_a[0] == e || two_a[1] == e || two_b[0] == e || two_b[1] == e) {
+        scratch->keep[entries[e].second] = 1;
+        ++used;
+      } else {
+        scratch->rest.push_back(entries[e]);
+      }
+    }
+    if (used < budget && !scratch->rest.empty()) {
+      const size_t take = std::min(budget - used, scratch->rest.size());
+      std::nth_element(scratch->rest.begin(), scratch->rest.begin() + (take - 1), scratch->rest.end());
+      for (size_t i = 0; i < take; ++i) scratch->keep[scratch->rest[i].second] = 1;
     }
   }
   int kept = 0;

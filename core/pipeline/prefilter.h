@@ -21,6 +21,7 @@
 // meet at the person's last position x the 2D confidence both poses share on the core joints.
 #pragma once
 
+#include <array>
 #include <span>
 #include <vector>
 
@@ -55,8 +56,9 @@ struct PrefilterScratch {
   std::vector<int> bucket_fill;
   std::vector<Eigen::Vector3d> directions;  // per view: unit vector from the person to the camera
   std::vector<std::pair<double, int>> budget;  // (-quality, pair index) of one person's pairs
-  std::vector<char> keep;                  // per pair
-  std::vector<char> covered;               // per pose: used by a kept pair of its person
+  std::vector<std::pair<double, int>> rest;    // the entries of `budget` not among any pose's two best
+  std::vector<char> keep;                      // per pair
+  std::vector<std::array<int, 2>> best_two;    // per pose: its two best entries of `budget` (-1: none)
   std::vector<double> core_sqrt_scores;    // per pose and core joint: sqrt(score), contiguous
 };
 

@@ -3,7 +3,9 @@
 // hand-made scene (the fixture at the top), so their tests stay together.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 #include "core/joints.h"
@@ -306,6 +308,117 @@ TEST(Prefilter, PairBudgetKeepsEveryPosesTwoBestPairsThenTheBestOthers) {
       EXPECT_GT(kept, 3) << "every pose keeps two pairs, even above the budget";
     } else {
       EXPECT_EQ(kept, budget);
+    }
+  }
+}
+
+// The pair budget worked out the slow way the header states it, for the pairs `bucket` (indices
+// into `pairs`) of one person whose last core joints have the mean `centre`: sorted best first
+// (quality as in the test above, from the prepared views' sqrt scores; ties: the earlier pair),
+// kept while one of the two poses has fewer than two kept pairs, then the best others up to
+// `budget`. Sets keep[k] for the kept ones.
+void BudgetByHand(const StepFixture& f, const std::vector<PosePair>& pairs, const std::vector<int>& bucket,
+                  const Eigen::Vector3d& centre, int budget, std::vector<bool>* keep) {
+  std::vector<std::pair<double, int>> order;
+  for (int k : bucket) {
+    const PosePair& pair = pairs[k];
+    const Eigen::Vector3d da = (f.geometry[f.prepared.view_of[pair.a]].center - centre).normalized();
+    const Eigen::Vector3d db = (f.geometry[f.prepared.view_of[pair.b]].center - centre).normalized();
+    double evidence = 0;
+    for (int c : f.core) evidence += f.prepared.Pose(pair.a)[c].sqrt_score * f.prepared.Pose(pair.b)[c].sqrt_score;
+    order.emplace_back(-da.cross(db).norm() * evidence, k);
+  }
+  std::sort(order.begin(), order.end());
+  std::vector<int> covered(f.prepared.num_poses(), 0);
+  int used = 0;
+  for (const auto& [quality, k] : order) {
+    if (covered[pairs[k].a] >= 2 && covered[pairs[k].b] >= 2) continue;
+    ++covered[pairs[k].a];
+    ++covered[pairs[k].b];
+    (*keep)[k] = true;
+    ++used;
+  }
+  for (const auto& [quality, k] : order) {
+    if (used >= budget) break;
+    if (!(*keep)[k]) {
+      (*keep)[k] = true;
+      ++used;
+    }
+  }
+}
+
+// The mean of a previous person's core joints, summed then divided as the pre-filter does.
+Eigen::Vector3d CoreCentre(const Eigen::Matrix4Xd& person, const std::vector<int>& core) {
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for (int c : core) sum += person.col(c).head<3>();
+  return sum / static_cast<double>(core.size());
+}
+
+// Every joint of every view its own confidence in [0.3, 1) (a fixed pseudo-random pattern).
+void VaryConfidences(StepFixture* f) {
+  uint32_t state = 12345;
+  for (Poses2D& view : f->views) {
+    for (int p = 0; p < view.num_persons(); ++p) {
+      for (int j = 0; j < view.num_joints; ++j) {
+        state = state * 1664525u + 1013904223u;
+        view.Person(p)(2, j) = 0.3 + 0.7 * static_cast<double>(state >> 8) / 16777216.0;
+      }
+    }
+  }
+}
+
+// Twelve cameras, two persons, a confidence per joint: every person has 66 pairs, and each
+// budget keeps exactly the pairs of the rule, in make_pairs' order.
+TEST(Prefilter, PairBudgetOnTwelveViewsKeepsThePairsOfTheRule) {
+  const std::vector<Eigen::Matrix4Xd> persons = {test::StandingPerson(-0.6, 0), test::StandingPerson(0.6, 0.3, 1.0)};
+  StepFixture f(12, persons);
+  VaryConfidences(&f);
+  f.Prepare();
+  ASSERT_EQ(f.prepared.num_poses(), 24);
+  PreviousPersons previous;
+  previous.Clear(static_cast<int>(f.core.size()));
+  for (const auto& person : persons) {
+    for (int c : f.core) {
+      previous.xyz.push_back(person.col(c).head<3>());
+      previous.score.push_back(1.0);
+    }
+  }
+  std::vector<PosePair> all;
+  steps::MakePairs(f.prepared, &all);
+  std::vector<std::vector<int>> bucket(2);  // each person's own pairs; the mixed ones are dropped
+  for (int k = 0; k < static_cast<int>(all.size()); ++k) {
+    const int pa = f.prepared.person_of[all[k].a], pb = f.prepared.person_of[all[k].b];
+    if (pa == pb) bucket[pa].push_back(k);
+  }
+  ASSERT_EQ(bucket[0].size(), 66u);
+  ASSERT_EQ(bucket[1].size(), 66u);
+  for (const int budget : {1, 13, 30, 50, 65, 66, 0}) {
+    std::vector<bool> expected(all.size(), false);
+    for (int p = 0; p < 2; ++p) {
+      if (budget == 0 || budget >= 66) {  // off, or not over the budget: all kept
+        for (int k : bucket[p]) expected[k] = true;
+      } else {
+        BudgetByHand(f, all, bucket[p], CoreCentre(persons[p], f.core), budget, &expected);
+      }
+    }
+    std::vector<PosePair> pairs = all;
+    PrefilterScratch scratch;
+    PrefilterOptions options;
+    options.max_pairs_per_person = budget;
+    const int kept = steps::Prefilter(
+        options, {.views = f.prepared, .geometry = f.geometry, .core_joints = f.core, .previous = previous, .timestamp_s = 0},
+        &scratch, &pairs);
+    std::vector<PosePair> want;
+    for (size_t k = 0; k < all.size(); ++k) {
+      if (expected[k]) want.push_back(all[k]);
+    }
+    ASSERT_EQ(kept, static_cast<int>(want.size())) << "budget " << budget;
+    ASSERT_EQ(pairs.size(), want.size()) << "budget " << budget;
+    for (size_t i = 0; i < want.size(); ++i) {
+      EXPECT_TRUE(pairs[i].a == want[i].a && pairs[i].b == want[i].b) << "budget " << budget << ", kept pair " << i;
+    }
+    if (budget == 30) {
+      EXPECT_EQ(kept, 60);  // two persons, each exactly at the budget
     }
   }
 }
