@@ -108,7 +108,6 @@ int ApplyPairBudget(const PreparedViews& views, std::span<const ViewGeometry> ge
       offer(scratch->best_two[pair.b], e);
     }
     size_t used = 0;
-    scratch->rest.clear();
     for (int e = 0; e < num_entries; ++e) {
       const PosePair& pair = (*pairs)[entries[e].second];
       const std::array<int, 2>& two_a = scratch->best_two[pair.a];
@@ -116,11 +115,14 @@ int ApplyPairBudget(const PreparedViews& views, std::span<const ViewGeometry> ge
       if (two_a[0] == e || two_a[1] == e || two_b[0] == e || two_b[1] == e) {
         scratch->keep[entries[e].second] = 1;
         ++used;
-      } else {
-        scratch->rest.push_back(entries[e]);
       }
     }
-    if (used < budget && !scratch->rest.empty()) {
+    if (used >= budget) continue;  // the usual case with many views: the poses' best pairs fill it
+    scratch->rest.clear();
+    for (const auto& entry : entries) {
+      if (!scratch->keep[entry.second]) scratch->rest.push_back(entry);
+    }
+    if (!scratch->rest.empty()) {
       const size_t take = std::min(budget - used, scratch->rest.size());
       std::nth_element(scratch->rest.begin(), scratch->rest.begin() + (take - 1), scratch->rest.end());
       for (size_t i = 0; i < take; ++i) scratch->keep[scratch->rest[i].second] = 1;
@@ -224,11 +226,15 @@ int steps::Prefilter(const PrefilterOptions& options, const PrefilterInput& in, 
     }
   }
 
+  // Kept: both matched to the same person, both free, or either ambiguous; dropped: matched to
+  // different persons, or one matched and the other free. Branch-free: with 31 cameras there are
+  // tens of thousands of pairs, kept and dropped in no order a branch predictor could learn.
   int kept = 0;
   for (const PosePair& pair : *pairs) {
     const int a = (*match)[pair.a], b = (*match)[pair.b];
-    const bool drop = (a >= 0 && b >= 0 && a != b) || (a >= 0 && b == kPoseFree) || (a == kPoseFree && b >= 0);
-    if (!drop) (*pairs)[kept++] = pair;
+    const bool keep = (a == b) | (a == kPoseAmbiguous) | (b == kPoseAmbiguous);
+    (*pairs)[kept] = pair;
+    kept += keep ? 1 : 0;
   }
   pairs->resize(kept);
   if (options.max_pairs_per_person > 0) kept = ApplyPairBudget(views, geometry, core_joints, previous, options, scratch, pairs);
