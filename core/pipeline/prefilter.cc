@@ -12,12 +12,6 @@ namespace rpt {
 
 namespace {
 
-// The person whose budget a kept pair counts in: the one its matched pose (or poses) match; -1
-// for pairs of free and ambiguous poses only.
-int BudgetPerson(const std::vector<int>& match, const PosePair& pair) {
-  return match[pair.a] >= 0 ? match[pair.a] : match[pair.b];
-}
-
 // Keeps at most max_pairs_per_person of the pairs matched to each previous person (see the header).
 int ApplyPairBudget(const PreparedViews& views, std::span<const ViewGeometry> geometry, std::span<const int> core_joints,
                     const PreviousPersons& previous, const PrefilterOptions& options, PrefilterScratch* scratch,
@@ -31,8 +25,7 @@ int ApplyPairBudget(const PreparedViews& views, std::span<const ViewGeometry> ge
   // Pairs per person (both sides match the same person after the filter above): counting sort.
   scratch->bucket_begin.assign(num_previous + 1, 0);
   for (const PosePair& pair : *pairs) {
-    const int q = BudgetPerson(match, pair);
-    if (q >= 0) ++scratch->bucket_begin[q + 1];
+    if (match[pair.a] >= 0) ++scratch->bucket_begin[match[pair.a] + 1];
   }
   bool over_budget = false;
   for (int q = 0; q < num_previous; ++q) {
@@ -43,7 +36,7 @@ int ApplyPairBudget(const PreparedViews& views, std::span<const ViewGeometry> ge
   scratch->bucket.resize(scratch->bucket_begin[num_previous]);
   scratch->bucket_fill.assign(scratch->bucket_begin.begin(), scratch->bucket_begin.end() - 1);
   for (size_t k = 0; k < pairs->size(); ++k) {
-    const int q = BudgetPerson(match, (*pairs)[k]);
+    const int q = match[(*pairs)[k].a];
     if (q >= 0) scratch->bucket[scratch->bucket_fill[q]++] = static_cast<int>(k);
   }
 

@@ -423,58 +423,6 @@ TEST(Prefilter, PairBudgetOnTwelveViewsKeepsThePairsOfTheRule) {
   }
 }
 
-// A pose between two previous persons is ambiguous; its pairs with the poses matched to a person
-// count in that person's budget: it keeps its two best of them, not all eleven.
-TEST(Prefilter, AnAmbiguousPosesPairsCountInTheBudgetOfThePersonItsPartnerMatches) {
-  const Eigen::Matrix4Xd person = test::StandingPerson(0, 0);
-  Eigen::Matrix4Xd beside = person;
-  beside.row(1).array() += 0.3;  // a previous person 30 cm to the side
-  StepFixture f(12, {person});
-  VaryConfidences(&f);
-  // View 0 sees a pose halfway between where the two previous persons project.
-  const Poses2D there = test::ProjectPersons({f.cameras[0]}, {beside})[0];
-  f.views[0].Person(0).topRows(2) = 0.5 * (f.views[0].Person(0).topRows(2) + there.Person(0).topRows(2));
-  f.Prepare();
-  ASSERT_EQ(f.prepared.num_poses(), 12);
-  PreviousPersons previous;
-  previous.Clear(static_cast<int>(f.core.size()));
-  for (const Eigen::Matrix4Xd* p : {&person, static_cast<const Eigen::Matrix4Xd*>(&beside)}) {
-    for (int c : f.core) {
-      previous.xyz.push_back(p->col(c).template head<3>());
-      previous.score.push_back(1.0);
-    }
-  }
-  std::vector<PosePair> all;
-  steps::MakePairs(f.prepared, &all);
-  ASSERT_EQ(all.size(), 66u);
-  std::vector<int> bucket(66);
-  for (int k = 0; k < 66; ++k) bucket[k] = k;
-  std::vector<bool> expected(66, false);
-  BudgetByHand(f, all, bucket, CoreCentre(person, f.core), 30, &expected);
-  std::vector<PosePair> pairs = all;
-  PrefilterScratch scratch;
-  PrefilterOptions options;
-  options.max_pairs_per_person = 30;
-  const int kept = steps::Prefilter(
-      options, {.views = f.prepared, .geometry = f.geometry, .core_joints = f.core, .previous = previous, .timestamp_s = 0},
-      &scratch, &pairs);
-  ASSERT_EQ(scratch.match[0], kPoseAmbiguous);
-  for (int g = 1; g < 12; ++g) ASSERT_EQ(scratch.match[g], 0) << "pose " << g;
-  std::vector<PosePair> want;
-  int with_ambiguous = 0;
-  for (int k = 0; k < 66; ++k) {
-    if (!expected[k]) continue;
-    want.push_back(all[k]);
-    with_ambiguous += all[k].a == 0 ? 1 : 0;
-  }
-  EXPECT_GE(with_ambiguous, 2);
-  EXPECT_LT(with_ambiguous, 11);
-  ASSERT_EQ(kept, static_cast<int>(want.size()));
-  for (size_t i = 0; i < want.size(); ++i) {
-    EXPECT_TRUE(pairs[i].a == want[i].a && pairs[i].b == want[i].b) << "kept pair " << i;
-  }
-}
-
 TEST(TriangulateCore, ExactRecoveryWithMidpointAndDlt) {
   StepFixture f(4, {test::StandingPerson(0.5, 0.3, 1.0)});
   f.Prepare();
