@@ -148,6 +148,8 @@ int steps::Prefilter(const PrefilterOptions& options, const PrefilterInput& in, 
   const double radius_rel = options.max_distance_rel + options.person_speed_m_s * elapsed_s / kPersonSizeM;
   match->assign(views.num_poses(), kPoseFree);
   scratch->distance.assign(views.num_poses(), 0.0);
+  const int words = (num_previous + 63) / 64;
+  scratch->near.assign(static_cast<size_t>(views.num_poses()) * words, 0);
   // Project every previous person into every view once.
   const int num_views = static_cast<int>(views.view_begin.size()) - 1;
   const size_t per_view = static_cast<size_t>(num_previous) * num_core;
@@ -172,6 +174,7 @@ int steps::Prefilter(const PrefilterOptions& options, const PrefilterInput& in, 
     const Keypoint* kps = views.Pose(g);
     const Eigen::Vector2d* projected = scratch->projected.data() + views.view_of[g] * per_view;
     const double radius = radius_rel * views.bbox_diag[g];
+    uint64_t* near = scratch->near.data() + static_cast<size_t>(g) * words;
     double best = std::numeric_limits<double>::infinity(), second = best;
     int best_q = -1;
     for (int q = 0; q < num_previous; ++q) {
@@ -191,6 +194,7 @@ int steps::Prefilter(const PrefilterOptions& options, const PrefilterInput& in, 
       }
       if (n < 3) continue;
       const double mean = sum / n;
+      if (mean < 2 * radius) near[q / 64] |= uint64_t{1} << (q % 64);
       if (mean < best) {
         second = best;
         best = mean;
@@ -219,13 +223,21 @@ int steps::Prefilter(const PrefilterOptions& options, const PrefilterInput& in, 
     }
   }
 
-  // Kept: both matched to the same person, both free, or either ambiguous; dropped: matched to
-  // different persons, or one matched and the other free. Branch-free: with 31 cameras there are
-  // tens of thousands of pairs, kept and dropped in no order a branch predictor could learn.
+  // Kept: both matched to the same person, both free, and an ambiguous pose with a free or
+  // ambiguous one or with a pose matched to a person within twice the radius of it (one of the
+  // persons it is ambiguous between); dropped: matched to different persons, one matched and the
+  // other free, an ambiguous pose with a pose matched to a person far from it. The common test is
+  // branch-free: with 31 cameras there are tens of thousands of pairs, kept and dropped in no
+  // order a branch predictor could learn; ambiguous poses are few.
   int kept = 0;
   for (const PosePair& pair : *pairs) {
     const int a = (*match)[pair.a], b = (*match)[pair.b];
-    const bool keep = (a == b) | (a == kPoseAmbiguous) | (b == kPoseAmbiguous);
+    bool keep = a == b;
+    if ((a == kPoseAmbiguous) | (b == kPoseAmbiguous)) {
+      const int ambiguous_pose = a == kPoseAmbiguous ? pair.a : pair.b;
+      const int other = a == kPoseAmbiguous ? b : a;
+      keep = other < 0 || ((scratch->near[static_cast<size_t>(ambiguous_pose) * words + other / 64] >> (other % 64)) & 1);
+    }
     (*pairs)[kept] = pair;
     kept += keep ? 1 : 0;
   }

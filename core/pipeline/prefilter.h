@@ -8,9 +8,11 @@
 //                        q's closest pose in its view (a person is matched once per view),
 //   free                 when nobody is within twice the radius (a new person),
 //   ambiguous            otherwise.
-// A pair is dropped when its poses match different persons, or when one is matched and the other
-// free (the paper's one-sided case: the other pose is somebody else); every other pair is kept,
-// in particular both-matched-same, both-free and anything ambiguous. Refusing to act on ambiguous
+// A pair is dropped when its poses match different persons, when one is matched and the other
+// free (the paper's one-sided case: the other pose is somebody else), or when an ambiguous pose
+// meets a pose matched to a person farther than twice the radius from it (one-sided again); every
+// other pair is kept: both-matched-same, both-free, and an ambiguous pose with a free or ambiguous
+// one or with the poses of the persons it is ambiguous between. Refusing to act on ambiguous
 // matches keeps true pairs in crowded views and in sparsely sampled sequences.
 //
 // Pair budget (an addition to the paper): a person matched in k views yields k(k-1)/2 pairs, 465
@@ -22,6 +24,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -50,6 +53,8 @@ inline constexpr int kPoseAmbiguous = -2;
 struct PrefilterScratch {
   std::vector<int> match;         // per pose: person index, kPoseFree or kPoseAmbiguous
   std::vector<double> distance;   // per pose: distance to the matched person (px)
+  std::vector<uint64_t> near;     // per pose, (previous persons + 63) / 64 words: bit q set when
+                                  // person q is within twice the radius
   std::vector<Eigen::Vector2d> projected;  // per view, person and core joint (NaN = not visible)
   std::vector<int> bucket_begin;           // per previous person + 1: offsets into bucket
   std::vector<int> bucket;                 // pair indices grouped by matched person

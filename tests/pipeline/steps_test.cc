@@ -423,6 +423,82 @@ TEST(Prefilter, PairBudgetOnTwelveViewsKeepsThePairsOfTheRule) {
   }
 }
 
+// A pose between two previous persons is ambiguous. It pairs with the poses matched to either of
+// them (within twice the match radius of it) and with free poses, but not with the poses of a
+// person standing elsewhere: that pair is the paper's one-sided case.
+TEST(Prefilter, AnAmbiguousPosePairsOnlyWithThePersonsItIsAmbiguousBetween) {
+  const Eigen::Matrix4Xd person = test::StandingPerson(0, 0);
+  Eigen::Matrix4Xd beside = person;
+  beside.row(1).array() += 0.3;  // a previous person 30 cm to the side
+  const Eigen::Matrix4Xd elsewhere = test::StandingPerson(0.5, -1.6);  // beside person, seen from view 0
+  const Eigen::Matrix4Xd newcomer = test::StandingPerson(-1.59, 0.85);  // not in the last frame: free
+  StepFixture f(4, {person, elsewhere, newcomer});
+  // View 0 sees `person` halfway between where `person` and `beside` project.
+  const Poses2D there = test::ProjectPersons({f.cameras[0]}, {beside})[0];
+  f.views[0].Person(0).topRows(2) = 0.5 * (f.views[0].Person(0).topRows(2) + there.Person(0).topRows(2));
+  f.Prepare();
+  ASSERT_EQ(f.prepared.num_poses(), 12);
+  PreviousPersons previous;
+  previous.Clear(static_cast<int>(f.core.size()));
+  for (const Eigen::Matrix4Xd* p : {&person, static_cast<const Eigen::Matrix4Xd*>(&beside), &elsewhere}) {
+    for (int c : f.core) {
+      previous.xyz.push_back(p->col(c).template head<3>());
+      previous.score.push_back(1.0);
+    }
+  }
+  std::vector<PosePair> pairs;
+  steps::MakePairs(f.prepared, &pairs);
+  ASSERT_EQ(pairs.size(), 54u);  // 6 view pairs x 3 x 3
+  PrefilterScratch scratch;
+  const int kept = steps::Prefilter(
+      PrefilterOptions{},
+      {.views = f.prepared, .geometry = f.geometry, .core_joints = f.core, .previous = previous, .timestamp_s = 0},
+      &scratch, &pairs);
+  // Poses: view v holds person (3v), elsewhere (3v + 1) and newcomer (3v + 2).
+  ASSERT_EQ(scratch.match[0], kPoseAmbiguous);
+  for (int v = 0; v < 4; ++v) {
+    if (v > 0) {
+      ASSERT_EQ(scratch.match[3 * v], 0) << "view " << v;
+    }
+    ASSERT_EQ(scratch.match[3 * v + 1], 2) << "view " << v;
+    ASSERT_EQ(scratch.match[3 * v + 2], kPoseFree) << "view " << v;
+  }
+  // Kept: the 6 pairs of each person (3 of person's with the ambiguous pose), and the ambiguous
+  // pose with the 3 free poses of the newcomer in the other views.
+  EXPECT_EQ(kept, 21);
+  int with_newcomer = 0;
+  for (const PosePair& pair : pairs) {
+    const int pa = f.prepared.person_of[pair.a], pb = f.prepared.person_of[pair.b];
+    if (pair.a == 0 && pb == 2) {
+      ++with_newcomer;
+      continue;
+    }
+    EXPECT_EQ(pa, pb) << pair.a << "-" << pair.b;
+  }
+  EXPECT_EQ(with_newcomer, 3);
+  // The bound: `elsewhere` is a person the ambiguous pose is ambiguous between once twice the
+  // radius exceeds its distance in view 0 (mean core-joint distance to pose 1, `elsewhere` itself).
+  double sum = 0;
+  for (int c : f.core) {
+    const Keypoint &p0 = f.prepared.Pose(0)[c], &p1 = f.prepared.Pose(1)[c];
+    sum += std::hypot(p0.u - p1.u, p0.v - p1.v);
+  }
+  const double distance_rel = sum / static_cast<double>(f.core.size()) / f.prepared.bbox_diag[0];
+  for (const double factor : {0.98, 1.02}) {
+    steps::MakePairs(f.prepared, &pairs);
+    PrefilterOptions options;
+    options.max_distance_rel = factor * distance_rel / 2;  // twice the radius: factor x the distance
+    steps::Prefilter(
+        options,
+        {.views = f.prepared, .geometry = f.geometry, .core_joints = f.core, .previous = previous, .timestamp_s = 0},
+        &scratch, &pairs);
+    ASSERT_EQ(scratch.match[0], kPoseAmbiguous) << "factor " << factor;
+    int with_elsewhere = 0;
+    for (const PosePair& pair : pairs) with_elsewhere += pair.a == 0 && f.prepared.person_of[pair.b] == 1 ? 1 : 0;
+    EXPECT_EQ(with_elsewhere, factor > 1 ? 3 : 0) << "factor " << factor;
+  }
+}
+
 TEST(TriangulateCore, ExactRecoveryWithMidpointAndDlt) {
   StepFixture f(4, {test::StandingPerson(0.5, 0.3, 1.0)});
   f.Prepare();
