@@ -21,7 +21,7 @@ struct TimingSummary {
   double frame_us_median = 0;
   double frame_us_mean = 0;
   double frame_us_p90 = 0;
-  double fps = 0;  // 1e6 / frame_us_mean
+  double fps = 0;  // 1e6 / frame_us_median
   std::array<double, kNumSteps> step_us_median{};
   std::array<double, kNumSteps> step_us_mean{};
   // The reader's part-affinity grouping (SequenceFrame::paf_grouping_us), over the frames that
