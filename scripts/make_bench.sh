@@ -53,3 +53,4 @@ NATIVE=$(grep -E '^RPT_MARCH_NATIVE:' "$BUILD/CMakeCache.txt" | cut -d= -f2-)
   echo '```'
 } > results/bench.md
 echo "wrote results/bench.md"
+python3 scripts/readme_speed_table.py  # README's speed table from it (checked by ctest)
