@@ -46,6 +46,14 @@ NATIVE=$(grep -E '^RPT_MARCH_NATIVE:' "$BUILD/CMakeCache.txt" | cut -d= -f2-)
   "$RPT" bench --follow --repeat 5 2>/dev/null
   echo '```'
   echo
+  echo "## SIMD kernels against the scalar steps (same run)"
+  echo
+  echo "The scalar steps stay selectable (\`RPT_SIMD=off\`) for this comparison; both give the same results."
+  echo
+  echo '```'
+  python3 scripts/bench_simd_before_after.py "$RPT" --rounds 3 --repeat 5 --pin "$PIN"
+  echo '```'
+  echo
   echo "## Scaling (cameras with 4 people; people with 5 cameras)"
   echo
   echo '```'
