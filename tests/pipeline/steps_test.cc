@@ -312,6 +312,29 @@ TEST(Prefilter, PairBudgetKeepsEveryPosesTwoBestPairsThenTheBestOthers) {
   }
 }
 
+// The last frame's persons for the pre-filter: the core joints of `persons`, each with score 1.
+PreviousPersons PreviousOf(const StepFixture& f, const std::vector<Eigen::Matrix4Xd>& persons) {
+  PreviousPersons previous;
+  previous.Clear(static_cast<int>(f.core.size()));
+  for (const Eigen::Matrix4Xd& person : persons) {
+    for (int c : f.core) {
+      previous.xyz.push_back(person.col(c).head<3>());
+      previous.score.push_back(1.0);
+    }
+  }
+  return previous;
+}
+
+// The pre-filter with `options` on a fresh copy of `all` (make_pairs' output) at time 0: returns
+// how many it kept, which are then the first entries of *pairs.
+int RunPrefilter(const StepFixture& f, const PreviousPersons& previous, const PrefilterOptions& options,
+                 const std::vector<PosePair>& all, std::vector<PosePair>* pairs, PrefilterScratch* scratch) {
+  *pairs = all;
+  return steps::Prefilter(
+      options, {.views = f.prepared, .geometry = f.geometry, .core_joints = f.core, .previous = previous, .timestamp_s = 0},
+      scratch, pairs);
+}
+
 // The pair budget worked out the slow way the header states it, for the pairs `bucket` (indices
 // into `pairs`) of one person whose last core joints have the mean `centre`: sorted best first
 // (quality as in the test above, from the prepared views' sqrt scores; ties: the earlier pair),
@@ -375,14 +398,7 @@ TEST(Prefilter, PairBudgetOnTwelveViewsKeepsThePairsOfTheRule) {
   VaryConfidences(&f);
   f.Prepare();
   ASSERT_EQ(f.prepared.num_poses(), 24);
-  PreviousPersons previous;
-  previous.Clear(static_cast<int>(f.core.size()));
-  for (const auto& person : persons) {
-    for (int c : f.core) {
-      previous.xyz.push_back(person.col(c).head<3>());
-      previous.score.push_back(1.0);
-    }
-  }
+  const PreviousPersons previous = PreviousOf(f, persons);
   std::vector<PosePair> all;
   steps::MakePairs(f.prepared, &all);
   std::vector<std::vector<int>> bucket(2);  // each person's own pairs; the mixed ones are dropped
@@ -401,13 +417,11 @@ TEST(Prefilter, PairBudgetOnTwelveViewsKeepsThePairsOfTheRule) {
         BudgetByHand(f, all, bucket[p], CoreCentre(persons[p], f.core), budget, &expected);
       }
     }
-    std::vector<PosePair> pairs = all;
+    std::vector<PosePair> pairs;
     PrefilterScratch scratch;
     PrefilterOptions options;
     options.max_pairs_per_person = budget;
-    const int kept = steps::Prefilter(
-        options, {.views = f.prepared, .geometry = f.geometry, .core_joints = f.core, .previous = previous, .timestamp_s = 0},
-        &scratch, &pairs);
+    const int kept = RunPrefilter(f, previous, options, all, &pairs, &scratch);
     std::vector<PosePair> want;
     for (size_t k = 0; k < all.size(); ++k) {
       if (expected[k]) want.push_back(all[k]);
@@ -438,22 +452,12 @@ TEST(Prefilter, AnAmbiguousPosePairsOnlyWithThePersonsItIsAmbiguousBetween) {
   f.views[0].Person(0).topRows(2) = 0.5 * (f.views[0].Person(0).topRows(2) + there.Person(0).topRows(2));
   f.Prepare();
   ASSERT_EQ(f.prepared.num_poses(), 12);
-  PreviousPersons previous;
-  previous.Clear(static_cast<int>(f.core.size()));
-  for (const Eigen::Matrix4Xd* p : {&person, static_cast<const Eigen::Matrix4Xd*>(&beside), &elsewhere}) {
-    for (int c : f.core) {
-      previous.xyz.push_back(p->col(c).template head<3>());
-      previous.score.push_back(1.0);
-    }
-  }
-  std::vector<PosePair> pairs;
-  steps::MakePairs(f.prepared, &pairs);
-  ASSERT_EQ(pairs.size(), 54u);  // 6 view pairs x 3 x 3
+  const PreviousPersons previous = PreviousOf(f, {person, beside, elsewhere});
+  std::vector<PosePair> all, pairs;
+  steps::MakePairs(f.prepared, &all);
+  ASSERT_EQ(all.size(), 54u);  // 6 view pairs x 3 x 3
   PrefilterScratch scratch;
-  const int kept = steps::Prefilter(
-      PrefilterOptions{},
-      {.views = f.prepared, .geometry = f.geometry, .core_joints = f.core, .previous = previous, .timestamp_s = 0},
-      &scratch, &pairs);
+  const int kept = RunPrefilter(f, previous, PrefilterOptions{}, all, &pairs, &scratch);
   // Poses: view v holds person (3v), elsewhere (3v + 1) and newcomer (3v + 2).
   ASSERT_EQ(scratch.match[0], kPoseAmbiguous);
   for (int v = 0; v < 4; ++v) {
@@ -485,13 +489,9 @@ TEST(Prefilter, AnAmbiguousPosePairsOnlyWithThePersonsItIsAmbiguousBetween) {
   }
   const double distance_rel = sum / static_cast<double>(f.core.size()) / f.prepared.bbox_diag[0];
   for (const double factor : {0.98, 1.02}) {
-    steps::MakePairs(f.prepared, &pairs);
     PrefilterOptions options;
     options.max_distance_rel = factor * distance_rel / 2;  // twice the radius: factor x the distance
-    steps::Prefilter(
-        options,
-        {.views = f.prepared, .geometry = f.geometry, .core_joints = f.core, .previous = previous, .timestamp_s = 0},
-        &scratch, &pairs);
+    RunPrefilter(f, previous, options, all, &pairs, &scratch);
     ASSERT_EQ(scratch.match[0], kPoseAmbiguous) << "factor " << factor;
     int with_elsewhere = 0;
     for (const PosePair& pair : pairs) with_elsewhere += pair.a == 0 && f.prepared.person_of[pair.b] == 1 ? 1 : 0;
