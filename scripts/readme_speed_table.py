@@ -61,8 +61,8 @@ def duration(us):
     """Microseconds as the README writes them: 62 us, 1.26 ms, 5.2 ms, 0.86 s."""
     if us < 1000:
         return f"{us:.0f} us"
-    if us < 10000:
-        return f"{us / 1000:.2f} ms" if us < 2000 else f"{us / 1000:.1f} ms"
+    if us < 2000:
+        return f"{us / 1000:.2f} ms"
     if us < 100000:
         return f"{us / 1000:.1f} ms"
     if us < 1000000:
@@ -75,7 +75,10 @@ def expected_cells(rows, scene):
         cell = rows[row].get(scene)
         if cell is None:
             fail(f"results/bench.md: no '{scene}' column in row '{row}'")
-        return float(cell.rstrip("x"))
+        try:
+            return float(cell.rstrip("x"))
+        except ValueError:
+            fail(f"results/bench.md: row '{row}', column '{scene}' is '{cell}', not a number")
     return [duration(value("total (median)")), f"{value('MPJPE (mm)'):.1f} mm", duration(value("baseline (us)")),
             f"{value('speed-up'):.0f}x"]
 
