@@ -33,18 +33,15 @@ def bench(rpt, pin, repeat, simd_off):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("rpt")
-    parser.add_argument("--rounds", type=int, default=3)
-    parser.add_argument("--repeat", type=int, default=5)
+    parser.add_argument("--rounds", type=int, default=5)
+    parser.add_argument("--repeat", type=int, default=10)
     parser.add_argument("--pin", default="", help="command prefix, e.g. 'taskset -c 1'")
     args = parser.parse_args()
     runs = {False: [], True: []}
-    simd_path = None
     for _ in range(args.rounds):
         for off in (True, False):
-            result = bench(args.rpt, args.pin, args.repeat, off)
-            runs[off].append(result)
-            if not off:
-                simd_path = result["simd"]
+            runs[off].append(bench(args.rpt, args.pin, args.repeat, off))
+    simd_path = runs[False][0]["simd"]
     scenes = [s["name"] for s in runs[False][0]["scenes"]]
     steps = list(runs[False][0]["scenes"][0]["step_time_us_median"].keys())
 
@@ -66,10 +63,8 @@ def main():
         cells = []
         for i in range(len(scenes)):
             before, after = median(True, i, key, step), median(False, i, key, step)
-            if before < 0.05 and after < 0.05:
-                cells.append(f"{'-':>30}")
-                continue
-            cells.append(f"{f'{before:.2f} -> {after:.2f} ({before / after:.2f}x)' if after > 0 else '-':>30}")
+            cell = f"{before:.2f} -> {after:.2f} ({before / after:.2f}x)" if after >= 0.05 else "-"  # a step that did not run
+            cells.append(f"{cell:>30}")
         print(f"{label:<18}" + "".join(cells))
     return 0
 

@@ -53,7 +53,7 @@ NATIVE=$(grep -E '^RPT_MARCH_NATIVE:' "$BUILD/CMakeCache.txt" | cut -d= -f2-)
   echo "steps' ratios show what the machine's drift between the two processes alone does."
   echo
   echo '```'
-  python3 scripts/bench_simd_before_after.py "$RPT" --rounds 5 --repeat 10 --pin "$PIN"
+  python3 scripts/bench_simd_before_after.py "$RPT" --pin "$PIN"  # 5 rounds of --repeat 10
   echo '```'
   echo
   echo "## Scaling (cameras with 4 people; people with 5 cameras)"
