@@ -299,7 +299,7 @@ struct SingleViewOptions {
   double duplicate_distance_m = 0.5;  // centre distance under which a lifted person duplicates another
   double max_overlap_iou = 0.3;       // poses overlapping a found person's projection this much are that person
   // The other views' verdict (view_verdict.h), the rule of verification (step 11b) with its own
-  // values: a pose is not lifted when min_empty_views (and more than one) other views are empty.
+  // values: a pose is not lifted when min_empty_views other views are empty.
   int min_empty_views = 2;
   double min_inside_fraction = 0.8;  // a view is empty only if this share of the joints lands in the image
   // The ground-plane and body-size prior (single_view.h): stand the person upright on the floor
@@ -338,7 +338,7 @@ void VisitFields(Visitor& v, Self& o) {
     OptionSpec{.help = "poses overlapping a found person's projection this much are that person", .min = 0,
                .max = 1});
   v("min_empty_views", o.min_empty_views,
-    OptionSpec{.help = "a pose is not lifted when this many other views (and more than one) see nobody there",
+    OptionSpec{.help = "a pose is not lifted when this many other views see nobody there",
                .min = 1, .max = 1e6});
   v("min_inside_fraction", o.min_inside_fraction,
     OptionSpec{.help = "a view is empty only if this share of the lifted joints lands in the image", .min = 0,

@@ -327,7 +327,7 @@ int steps::SingleView(const SingleViewOptions& options, const SingleViewInput& i
       empty += JudgeView(views, geometry[v], v, core_joints, scratch->person, in.kernel.scale_m,
                          options.min_inside_fraction, verdict, nullptr) == ViewVerdict::kEmpty;
     }
-    if (empty >= options.min_empty_views && empty > 1) continue;
+    if (empty >= options.min_empty_views) continue;
     lifted->AddPerson() = scratch->person;
     scratch->centers.push_back(center);
     if (from_track) {

@@ -15,9 +15,9 @@
 //   * belongs to no kept group and overlaps no person already found (box IoU < 0.3 in its view),
 //   * has at least min_core_joints core joints with confidence >= min_joint_score, two limbs of
 //     the list above among them,
-//   * is not contradicted by the other views (view_verdict.h, the rule of verification: fewer
-//     than min_empty_views empty views, or not more than the one view that sees it; a view is
-//     empty only if min_inside_fraction of the joints land in its image),
+//   * is not contradicted by the other views (view_verdict.h, the verdict of verification: fewer
+//     than min_empty_views empty views; a view is empty only if min_inside_fraction of the joints
+//     land in its image),
 //   * is at least duplicate_distance_m (centre to centre) from every person found and lifted
 //     before it (poses are taken by decreasing mean confidence).
 //

@@ -96,48 +96,69 @@ TEST(Verify, AnOccludedPersonIsNotAPhantom) {
   EXPECT_EQ(f.dropped, 0);
 }
 
-TEST(SingleView, LiftsAPoseOnlyWhenTheOtherViewsDoNotSeeAnEmptySpot) {
-  // A person detected by camera 0 only, standing in plain view of the four others, which detect
-  // nobody: four empty views contradict it. With single_view.min_empty_views above four they do
-  // not, and the pose is lifted to about the person's place.
-  const std::vector<Camera> cameras = test::RingCameras(5);
+// A person detected by camera 0 of `num_cameras` ring cameras only, standing in plain view of the
+// others, which detect nobody: step 12b with `options` (enabled) lifts it or not.
+struct OneViewFixture {
+  explicit OneViewFixture(int num_cameras) : cameras(test::RingCameras(num_cameras)) {
+    std::vector<Poses2D> views = test::ProjectPersons(cameras, {person});
+    for (size_t v = 1; v < views.size(); ++v) views[v].Clear(17);
+    test::UndistortCocoViews(cameras, views, &geometry, &core, &prepared);
+    kernel.scale_m = 0.05;
+    found.Clear(17);
+    options.enabled = true;
+  }
+  // The number of persons lifted.
+  int Run() {
+    const steps::SingleViewInput input{.views = prepared,
+                                       .geometry = geometry,
+                                       .core_joints = core,
+                                       .limbs = limbs,
+                                       .ground = ground,
+                                       .room = no_room,
+                                       .proposals = no_proposals,
+                                       .groups = no_groups,
+                                       .kernel = kernel,
+                                       .found = found};
+    return steps::SingleView(options, input, &scratch, &lifted, &stats);
+  }
+
   const Eigen::Matrix4Xd person = test::StandingPerson(0.5, 0.2);
-  std::vector<Poses2D> views = test::ProjectPersons(cameras, {person});
-  for (size_t v = 1; v < views.size(); ++v) views[v].Clear(17);
+  std::vector<Camera> cameras;
   std::vector<ViewGeometry> geometry;
   std::vector<int> core;
   PreparedViews prepared;
-  test::UndistortCocoViews(cameras, views, &geometry, &core, &prepared);
   const std::vector<TypicalLimb> limbs = ResolveTypicalLimbs(CocoBodyJoints());
   const GroundJoints ground = ResolveGroundJoints(CocoBodyJoints());
   const Room no_room;
   const Proposals no_proposals;
   const Groups no_groups;
   ScoreKernel kernel;
-  kernel.scale_m = 0.05;
   Poses3D found;
-  found.Clear(17);
-  const steps::SingleViewInput input{.views = prepared,
-                                     .geometry = geometry,
-                                     .core_joints = core,
-                                     .limbs = limbs,
-                                     .ground = ground,
-                                     .room = no_room,
-                                     .proposals = no_proposals,
-                                     .groups = no_groups,
-                                     .kernel = kernel,
-                                     .found = found};
   SingleViewOptions options;
-  options.enabled = true;
   SingleViewScratch scratch;
   Poses3D lifted;
   FrameStats stats;
-  EXPECT_EQ(steps::SingleView(options, input, &scratch, &lifted, &stats), 0) << "four empty views";
-  options.min_empty_views = 5;
-  ASSERT_EQ(steps::SingleView(options, input, &scratch, &lifted, &stats), 1);
-  EXPECT_EQ(stats.single_view_persons, 1);
-  const Eigen::Vector3d hips = 0.5 * (lifted.Person(0).col(11) + lifted.Person(0).col(12)).head<3>();
-  EXPECT_LT((hips - 0.5 * (person.col(11) + person.col(12)).head<3>()).norm(), 0.5);
+};
+
+TEST(SingleView, LiftsAPoseOnlyWhenTheOtherViewsDoNotSeeAnEmptySpot) {
+  // Four empty views contradict the pose. With single_view.min_empty_views above four they do
+  // not, and the pose is lifted to about the person's place.
+  OneViewFixture f(5);
+  EXPECT_EQ(f.Run(), 0) << "four empty views";
+  f.options.min_empty_views = 5;
+  ASSERT_EQ(f.Run(), 1);
+  EXPECT_EQ(f.stats.single_view_persons, 1);
+  const Eigen::Vector3d hips = 0.5 * (f.lifted.Person(0).col(11) + f.lifted.Person(0).col(12)).head<3>();
+  EXPECT_LT((hips - 0.5 * (f.person.col(11) + f.person.col(12)).head<3>()).norm(), 0.5);
+}
+
+TEST(SingleView, MinEmptyViewsCountsTheEmptyViewsAlone) {
+  // Two cameras: the one other view is empty. Under the default (two empty views) that does not
+  // veto; with min_empty_views = 1 a single empty view does.
+  OneViewFixture f(2);
+  EXPECT_EQ(f.Run(), 1) << "one empty view, two needed";
+  f.options.min_empty_views = 1;
+  EXPECT_EQ(f.Run(), 0) << "one empty view, one needed";
 }
 
 }  // namespace
