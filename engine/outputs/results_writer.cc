@@ -112,6 +112,11 @@ void AddCountColumns(const metrics::MetricsResult& m, OrderedJson* j) {
   for (size_t i = 0; i < metrics::kApThresholdsMm.size(); ++i) {
     (*j)["ap" + std::to_string(static_cast<int>(metrics::kApThresholdsMm[i]))] = Number(m.ap[i]);
   }
+  OrderedJson parts;  // per PCP part (parts the evaluated joints define and some GT person has)
+  for (const auto& part : m.pcp_parts) {
+    if (part.total > 0) parts[part.name] = Number(part.pcp);
+  }
+  if (!parts.empty()) (*j)["pcp_parts"] = parts;
   if (!m.wholebody.empty()) {
     OrderedJson groups;
     for (const auto& g : m.wholebody) groups[g.name] = Number(g.mpjpe_mm);
@@ -161,6 +166,7 @@ OrderedJson SummaryJson(const RunResult& run) {
   for (const std::string& key : LegacyPcpKeys({{"", j}})) {
     if (j.contains(key)) units[key] = "%";
   }
+  if (j.contains("pcp_parts")) units["pcp_parts"] = "%";
   j["units"] = units;
   return j;
 }

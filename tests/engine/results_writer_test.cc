@@ -57,6 +57,33 @@ TEST(ResultsWriter, SummaryCsvKeepsColumnsWhenTheRunNameHasCommas) {
   EXPECT_EQ(checked, 2);
 }
 
+// Per-part PCP: every part some GT person has, by name, in the order of the parts; a part never
+// evaluated (no GT, or its joints not evaluated) is left out rather than reported as 0.
+TEST(ResultsWriter, PcpPerPartInJson) {
+  RunResult run;
+  const auto part = [](const std::string& name, int correct, int total, double pcp) {
+    metrics::PcpPartResult p;
+    p.name = name;
+    p.correct = correct;
+    p.total = total;
+    p.pcp = pcp;
+    return p;
+  };
+  run.metrics.pcp_parts = {part("upper_arm_left", 9, 10, 90.0), part("lower_arm_left", 3, 4, 75.0),
+                           part("head", 0, 0, 0.0), part("torso", 0, 2, 0.0)};
+  const nlohmann::ordered_json summary = SummaryJson(run);
+  ASSERT_TRUE(summary.contains("pcp_parts"));
+  const nlohmann::ordered_json& parts = summary["pcp_parts"];
+  ASSERT_EQ(parts.size(), 3u);
+  EXPECT_EQ(parts.begin().key(), "upper_arm_left");
+  EXPECT_DOUBLE_EQ(parts["upper_arm_left"].get<double>(), 90.0);
+  EXPECT_DOUBLE_EQ(parts["lower_arm_left"].get<double>(), 75.0);
+  EXPECT_DOUBLE_EQ(parts["torso"].get<double>(), 0.0) << "evaluated and all wrong";
+  EXPECT_FALSE(parts.contains("head")) << "never evaluated";
+  EXPECT_EQ(summary["units"]["pcp_parts"], "%");
+  EXPECT_FALSE(SummaryJson(RunResult{}).contains("pcp_parts")) << "no part evaluated";
+}
+
 // Legacy Shelf/Campus PCP: the papers report it per actor and as the average over actors 1-3.
 TEST(ResultsWriter, LegacyPcpPerActorInJsonCsvAndMarkdown) {
   RunResult run;
