@@ -5,8 +5,10 @@ Runs `rpt bench --json` on the standard scenes alternately with RPT_SIMD=off (th
 code, kept selectable for this comparison) and with the default kernels, ROUNDS times each, and
 prints per scene and step the median over the rounds of each setting's per-step median and the
 speed-up. Results are bit-identical between the two settings (tests/pipeline/simd_kernels_test.cc).
+`--before AVX2` compares the kernels on AVX2 (4 double lanes) with the default instead (on an
+AVX-512 CPU: 8 lanes), which measures what twice the lanes buy.
 
-Usage: python3 scripts/bench_simd_before_after.py RPT [--rounds N] [--repeat N] [--pin CMD]
+Usage: python3 scripts/bench_simd_before_after.py RPT [--rounds N] [--repeat N] [--pin CMD] [--before PATH]
 (scripts/make_bench.sh writes its output into results/bench.md).
 """
 import argparse
@@ -18,11 +20,12 @@ import subprocess
 import sys
 
 
-def bench(rpt, pin, repeat, simd_off):
+def bench(rpt, pin, repeat, simd):
+    """One `rpt bench --json` run with RPT_SIMD=simd (None: the default kernels)."""
     env = dict(os.environ)
     env.pop("RPT_SIMD", None)
-    if simd_off:
-        env["RPT_SIMD"] = "off"
+    if simd is not None:
+        env["RPT_SIMD"] = simd
     command = shlex.split(pin) + [rpt, "bench", "--no-baseline", "--repeat", str(repeat), "--json"]
     done = subprocess.run(command, env=env, capture_output=True, text=True)
     if done.returncode != 0:
@@ -36,11 +39,13 @@ def main():
     parser.add_argument("--rounds", type=int, default=5)
     parser.add_argument("--repeat", type=int, default=10)
     parser.add_argument("--pin", default="", help="command prefix, e.g. 'taskset -c 1'")
+    parser.add_argument("--before", default="off",
+                        help="RPT_SIMD of the 'before' runs: off (the scalar steps, default) or an instruction set")
     args = parser.parse_args()
-    runs = {False: [], True: []}
+    runs = {True: [], False: []}  # True: before
     for _ in range(args.rounds):
-        for off in (True, False):
-            runs[off].append(bench(args.rpt, args.pin, args.repeat, off))
+        for before in (True, False):
+            runs[before].append(bench(args.rpt, args.pin, args.repeat, args.before if before else None))
     simd_path = runs[False][0]["simd"]
     scenes = [s["name"] for s in runs[False][0]["scenes"]]
     steps = list(runs[False][0]["scenes"][0]["step_time_us_median"].keys())
@@ -52,12 +57,15 @@ def main():
             values.append(scene[key][step] if step else scene[key])
         return statistics.median(values)
 
-    print(f"scalar steps (RPT_SIMD=off) against the {simd_path} kernels; medians of {args.rounds} alternating "
+    before_name = "scalar" if args.before == "off" else runs[True][0]["simd"]
+    print(f"{'scalar steps (RPT_SIMD=off)' if args.before == 'off' else f'the {before_name} kernels (RPT_SIMD={args.before})'} "
+          f"against the {simd_path} kernels; medians of {args.rounds} alternating "
           f"rounds of `rpt bench --repeat {args.repeat}`, us per frame")
     print()
     header = f"{'step (us)':<18}" + "".join(f"{name:>30}" for name in scenes)
     print(header)
-    print(f"{'':<18}" + "".join(f"{'scalar -> SIMD (speed-up)':>30}" for _ in scenes))
+    column = f"{before_name} -> {simd_path} (speed-up)"
+    print(f"{'':<18}" + "".join(f"{column:>30}" for _ in scenes))
     rows = [(step, "step_time_us_median", step) for step in steps] + [("total (median)", "frame_time_us_median", None)]
     for label, key, step in rows:
         cells = []
