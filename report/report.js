@@ -38,6 +38,24 @@
         : 'The paper has no row for this dataset.';
     const legacy = (data.summary || {}).legacy_pcp;
     if (legacy !== undefined && legacy !== null) el('summary-note').textContent += ' Legacy PCP (actors 1-3): ' + fmt(legacy, 1) + ' %.';
+    // PCP per part (summary.json "pcp_parts"); names are set as text, never as markup.
+    const parts = (data.summary || {}).pcp_parts;
+    if (parts && typeof parts === 'object' && Object.keys(parts).length) {
+      const partsTable = el('pcp-parts-table');
+      const head = partsTable.createTHead().insertRow();
+      const values = partsTable.createTBody().insertRow();
+      const th = document.createElement('th');
+      th.textContent = 'PCP per part (%)';
+      head.appendChild(th);
+      values.insertCell().textContent = 'this run (rpt)';
+      for (const [name, value] of Object.entries(parts)) {
+        const cell = document.createElement('th');
+        cell.textContent = name.replace(/_/g, ' ');
+        head.appendChild(cell);
+        values.insertCell().textContent = typeof value === 'number' ? fmt(value, 1) : '';
+      }
+      partsTable.hidden = false;
+    }
     const list = el('warnings');
     const warnings = (data.warnings || []).concat((data.summary || {}).warnings || []);
     for (const w of warnings) {

@@ -6,6 +6,8 @@
 // ../shared/data has them.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -30,6 +32,13 @@ fs::path ScreenshotDir() {
   do {                                                                                               \
     if (ChromiumBinary().empty()) GTEST_SKIP() << "chromium not installed (scripts/install_deps.sh)"; \
   } while (0)
+
+// The PCP-per-part table of a dumped page ("" when there is none).
+std::string PcpPartsTable(const std::string& dom) {
+  const size_t at = dom.find("id=\"pcp-parts-table\"");
+  if (at == std::string::npos) return "";
+  return dom.substr(at, dom.find("</table>", at) - at);
+}
 
 // Checks the page of `dir` in the browser and saves its screenshots as report_<name>_*.png.
 void CheckInBrowser(const fs::path& dir, const std::string& name) {
@@ -64,6 +73,21 @@ void CheckInBrowser(const fs::path& dir, const std::string& name) {
   ASSERT_FALSE(nonblank.empty()) << "the 3D viewer did not draw";
   EXPECT_GT(std::stol(nonblank), 2000) << "the 3D canvas is blank";
   EXPECT_EQ(dom.find("<canvas id=\"plot-frames\"") == std::string::npos, false);
+  // PCP per part: one column per part of summary.json's "pcp_parts" (underscores as spaces), its value
+  // with one decimal.
+  const Json summary = Json::parse(ReadAll(dir / "summary.json"));
+  const std::string parts = PcpPartsTable(dom);
+  ASSERT_FALSE(parts.empty()) << "no PCP-per-part table";
+  EXPECT_EQ(parts.find("hidden"), std::string::npos);
+  ASSERT_GE(summary["pcp_parts"].size(), 5u);
+  for (const auto& [part, value] : summary["pcp_parts"].items()) {
+    std::string label = part;
+    std::replace(label.begin(), label.end(), '_', ' ');
+    EXPECT_NE(parts.find("<th>" + label + "</th>"), std::string::npos) << part;
+    char cell[32];
+    std::snprintf(cell, sizeof cell, "<td>%.1f</td>", value.get<double>());
+    EXPECT_NE(parts.find(cell), std::string::npos) << part << " " << cell;
+  }
 
   // Screenshots (two more Chromium runs, about a third of this test's time each) for the synthetic
   // run always, for the fixtures when RPT_REPORT_SCREENSHOTS asks for them (docs/report.md).
@@ -129,6 +153,11 @@ TEST(ReportBrowser, HostileNamesLoadWithoutErrors) {
     rewritten += engine::CsvField(name) + line.substr(engine::CsvField(engine::SplitCsvLine(line)[0]).size()) + "\n";
   }
   std::ofstream(run / "per_joint.csv") << rewritten;
+  Json summary = Json::parse(ReadAll(run / "summary.json"));
+  Json hostile_parts = Json::object();
+  for (size_t k = 0; k < HostileStrings().size(); ++k) hostile_parts[HostileStrings()[k] + " part"] = 50.0 + k;
+  summary["pcp_parts"] = hostile_parts;
+  std::ofstream(run / "summary.json") << summary.dump(-1, ' ', false, Json::error_handler_t::replace);
   const CommandResult report = RunRpt("report '" + run.string() + "'");
   ASSERT_EQ(report.exit_code, 0) << report.err;
   const std::string dom = DumpDom(run / "report.html");
@@ -139,6 +168,7 @@ TEST(ReportBrowser, HostileNamesLoadWithoutErrors) {
   EXPECT_EQ(BodyAttribute(dom, "data-rpt-ready"), "1");
   EXPECT_EQ(BodyAttribute(dom, "data-rpt-camera-views"), std::to_string(input.cameras.size()));
   EXPECT_NE(dom.find("&lt;!--&lt;script&gt;"), std::string::npos) << "the names are text, not markup";
+  EXPECT_NE(PcpPartsTable(dom).find("&lt;!--&lt;script&gt; part"), std::string::npos) << "part names are text";
 }
 
 TEST(ReportBrowser, RunWhoseInputIsGone) {
