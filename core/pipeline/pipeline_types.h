@@ -42,26 +42,28 @@ struct KeypointColumns {
   // (n indices into a pose), or the first n when `joints` is null.
   void Assign(const Keypoint* kps, int poses, int pose_size, const int* joints, int n) {
     stride = n;
-    const size_t size = static_cast<size_t>(poses) * n;
-    for (auto* c : {&u, &v, &score, &rx, &ry, &rz}) c->resize(size);
-    double *pu = u.data(), *pv = v.data(), *ps = score.data(), *px = rx.data(), *py = ry.data(), *pz = rz.data();
+    Resize(static_cast<size_t>(poses) * n);
     for (int g = 0; g < poses; ++g) {
       const Keypoint* pose = kps + static_cast<size_t>(g) * pose_size;
       const size_t at = static_cast<size_t>(g) * n;
-      const auto copy = [&](int i, const Keypoint& kp) {
-        pu[at + i] = kp.u;
-        pv[at + i] = kp.v;
-        ps[at + i] = kp.score;
-        px[at + i] = kp.ray.x();
-        py[at + i] = kp.ray.y();
-        pz[at + i] = kp.ray.z();
-      };
       if (joints != nullptr) {
-        for (int i = 0; i < n; ++i) copy(i, pose[joints[i]]);
+        for (int i = 0; i < n; ++i) Set(at + i, pose[joints[i]]);
       } else {
-        for (int i = 0; i < n; ++i) copy(i, pose[i]);
+        for (int i = 0; i < n; ++i) Set(at + i, pose[i]);
       }
     }
+  }
+  void Resize(size_t size) {
+    for (auto* c : {&u, &v, &score, &rx, &ry, &rz}) c->resize(size);
+  }
+  // Value `at` of every column from `kp`.
+  void Set(size_t at, const Keypoint& kp) {
+    u[at] = kp.u;
+    v[at] = kp.v;
+    score[at] = kp.score;
+    rx[at] = kp.ray.x();
+    ry[at] = kp.ray.y();
+    rz[at] = kp.ray.z();
   }
 };
 
@@ -78,6 +80,7 @@ struct PreparedViews {
   KeypointColumns all_columns;
   KeypointColumns core_columns;
   std::vector<int> core_joints;
+  std::vector<double> pinhole_scratch;  // the undistort step's SIMD kernel: sqrt_score, x, y of one pose
 
   int num_poses() const { return static_cast<int>(view_of.size()); }
   const Keypoint* Pose(int g) const { return keypoints.data() + static_cast<size_t>(g) * num_joints; }

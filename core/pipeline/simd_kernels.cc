@@ -473,6 +473,54 @@ double PixelDistanceSumImpl(const double* uv, const PoseColumns& c, int n, int* 
   return sum;
 }
 
+// steps::Undistort's pinhole path (undistort.cc: the inverse of K, then SetFromNormalized) for
+// joints [i, i + Lanes(d)). R_t * (x, y, 1) follows Eigen's evaluation of a 3x3 matrix times a
+// vector on the SSE2 baseline: rows 0-1 column by column ((a + b) + c), row 2 as a + (b + c).
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE void UndistortPinholeLanes(D d, const PinholeView& g, const double* uvs, size_t i, const KeypointFields& out) {
+  V u, v, s;
+  hn::LoadInterleaved3(d, uvs + 3 * i, u, v, s);
+  const auto valid = hn::And(hn::And(hn::Ge(s, hn::Set(d, g.min_score)), hn::IsFinite(s)),
+                             hn::And(hn::IsFinite(u), hn::IsFinite(v)));
+  const V y = hn::Div(hn::Sub(v, hn::Set(d, g.cy)), hn::Set(d, g.fy));
+  const V x = hn::Div(hn::Sub(hn::Sub(u, hn::Set(d, g.cx)), hn::Mul(hn::Set(d, g.skew), y)), hn::Set(d, g.fx));
+  const V pu = hn::Add(hn::Add(hn::Mul(hn::Set(d, g.fx), x), hn::Mul(hn::Set(d, g.skew), y)), hn::Set(d, g.cx));
+  const V pv = hn::Add(hn::Mul(hn::Set(d, g.fy), y), hn::Set(d, g.cy));
+  const V score = hn::Min(s, hn::Set(d, 1.0));
+  const V one = hn::Set(d, 1.0);
+  const double* R = g.R_t;  // column-major: R(r, c) = R[3 c + r]
+  const V rx = hn::Add(hn::Add(hn::Mul(hn::Set(d, R[0]), x), hn::Mul(hn::Set(d, R[3]), y)), hn::Mul(hn::Set(d, R[6]), one));
+  const V ry = hn::Add(hn::Add(hn::Mul(hn::Set(d, R[1]), x), hn::Mul(hn::Set(d, R[4]), y)), hn::Mul(hn::Set(d, R[7]), one));
+  const V rz = hn::Add(hn::Mul(hn::Set(d, R[2]), x), hn::Add(hn::Mul(hn::Set(d, R[5]), y), hn::Mul(hn::Set(d, R[8]), one)));
+  hn::StoreU(hn::IfThenElseZero(valid, pu), d, out.u + i);
+  hn::StoreU(hn::IfThenElseZero(valid, pv), d, out.v + i);
+  hn::StoreU(hn::IfThenElseZero(valid, score), d, out.score + i);
+  hn::StoreU(hn::IfThenElseZero(valid, hn::Sqrt(score)), d, out.sqrt_score + i);
+  hn::StoreU(hn::IfThenElseZero(valid, rx), d, out.rx + i);
+  hn::StoreU(hn::IfThenElseZero(valid, ry), d, out.ry + i);
+  hn::StoreU(hn::IfThenElseZero(valid, rz), d, out.rz + i);
+  hn::StoreU(hn::IfThenElseZero(valid, x), d, out.x + i);
+  hn::StoreU(hn::IfThenElseZero(valid, y), d, out.y + i);
+}
+
+template <class D>
+HWY_INLINE void UndistortPinholeJoints(D d, const PinholeView& g, const double* uvs, size_t n, const KeypointFields& out) {
+  const hn::CappedTag<double, 1> d1;
+  const size_t N = hn::Lanes(d);
+  size_t i = 0;
+  for (; i + N <= n; i += N) UndistortPinholeLanes(d, g, uvs, i, out);
+  for (; i < n; ++i) UndistortPinholeLanes(d1, g, uvs, i, out);
+}
+
+void UndistortPinholeImpl(const PinholeView& g, const double* uvs, int n, const KeypointFields& out) {
+  const size_t joints = static_cast<size_t>(n);
+  if (hn::Lanes(hn::ScalableTag<double>()) > 4 && n < 32) {  // short rows: see TriangulatePairImpl
+    UndistortPinholeJoints(hn::CappedTag<double, 4>(), g, uvs, joints, out);
+  } else {
+    UndistortPinholeJoints(hn::ScalableTag<double>(), g, uvs, joints, out);
+  }
+}
+
 // RankMedianScalar with lanes over i: each lane counts the values below its value, and the equal
 // ones earlier in the list, with the scalar code's comparisons; the ranks are then read in list
 // order as the scalar code reads them (the last value of a rank wins).
@@ -565,6 +613,7 @@ HWY_EXPORT(DistanceSumImpl);
 HWY_EXPORT(MergeGroupImpl);
 HWY_EXPORT(PixelDistanceSumImpl);
 HWY_EXPORT(RankMedianImpl);
+HWY_EXPORT(UndistortPinholeImpl);
 HWY_EXPORT(TargetImpl);
 HWY_EXPORT(DoubleLanesImpl);
 
@@ -605,6 +654,10 @@ void MergeGroup(const MergeParams& p, const double* xyz, const double* score, in
 }
 
 double RankMedian(const double* values, int n) { return HWY_DYNAMIC_DISPATCH(RankMedianImpl)(values, n); }
+
+void UndistortPinhole(const PinholeView& view, const double* uvs, int n, const KeypointFields& out) {
+  HWY_DYNAMIC_DISPATCH(UndistortPinholeImpl)(view, uvs, n, out);
+}
 
 bool Enabled() {
   EnsureEnvironmentRead();

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// SIMD kernels of the hot steps, one lane per joint: mid-point triangulation of a pose pair
+// SIMD kernels of the hot steps, one lane per joint: the undistortion of a pinhole camera's pose
+// (before step 1), mid-point triangulation of a pose pair
 // (steps 4 and 10), its reprojection residuals, their median and joint scores (steps 6-7 and 10), the pre-filter's
 // pixel distance (step 2), the group distance (step 9) and the merge of a group (step 11).
 // Structure of arrays in (KeypointColumns, pipeline_types.h), the steps' own arrays out.
@@ -102,6 +103,21 @@ struct MergeParams {
 size_t MergeScratchSize(int members);
 void MergeGroup(const MergeParams& p, const double* xyz, const double* score, int members, int n, double* dist,
                 double* out);
+
+// The undistort step's keypoints of one pose seen by a pinhole camera (no distortion), lanes across
+// joints: joints [0, n) of `uvs` (u v score per joint, interleaved as Poses2D stores them) into the
+// arrays of `out`, one per field of Keypoint (pipeline_types.h), n values each. A joint with
+// score < min_score or a non-finite number gets all fields 0 (Keypoint{}); a score above 1 is
+// taken as 1.
+struct PinholeView {
+  double fx, fy, cx, cy, skew;
+  const double* R_t;  // camera -> world directions, 3x3 column-major (Eigen's layout)
+  double min_score;
+};
+struct KeypointFields {
+  double *u, *v, *score, *sqrt_score, *rx, *ry, *rz, *x, *y;
+};
+void UndistortPinhole(const PinholeView& view, const double* uvs, int n, const KeypointFields& out);
 
 // RankMedianScalar (median.h) of values[0..n), n in [1, kRankMedianMax], with the same comparisons
 // (the median of a pair's joint residuals in the score step): bit-identical, NaN included.

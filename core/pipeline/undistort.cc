@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/fast_math.h"
+#include "core/pipeline/simd_kernels.h"
 
 namespace rpt {
 
@@ -44,6 +45,7 @@ int steps::Undistort(const UndistortOptions& options, const UndistortInput& in, 
   // The keypoints are written into the slots of the last frame (every field of every joint of a
   // pose is written below), so the slots are initialised only when the frame needs more of them.
   size_t used = 0;
+  KeypointColumns& columns = out.all_columns;  // slot for slot with the keypoints
 
   const int num_views = static_cast<int>(views.size());
   for (int v = 0; v < num_views; ++v) {
@@ -52,13 +54,39 @@ int steps::Undistort(const UndistortOptions& options, const UndistortInput& in, 
     const Camera& camera = in.cameras[v];
     const ViewGeometry& g = in.geometry[v];
     const bool distorted = camera.HasDistortion();
+    // A pinhole camera's joints go through the SIMD kernel (the numbers of the loop below), which
+    // writes the columns directly; the keypoints are filled from them.
+    const bool pinhole_kernel = !distorted && simd::Enabled();
+    const simd::PinholeView pinhole{.fx = g.fx, .fy = g.fy, .cx = g.cx, .cy = g.cy, .skew = g.skew,
+                                    .R_t = g.R_t.data(), .min_score = options.min_joint_score};
+    if (pinhole_kernel) out.pinhole_scratch.resize(3 * static_cast<size_t>(view.num_joints));
     for (int p = 0; p < view.num_persons(); ++p) {
       const auto person = view.Person(p);
       if (options.drop_exact_copies && RepeatsEarlierPose(view, p)) continue;
       const size_t base = used;
       if (out.keypoints.size() < base + num_output_joints) out.keypoints.resize(base + num_output_joints);
+      if (columns.u.size() < base + num_output_joints) columns.Resize(base + num_output_joints);
       Keypoint* kps = out.keypoints.data() + base;
-      for (int j = 0; j < view.num_joints; ++j) {
+      if (pinhole_kernel) {
+        const int n = view.num_joints;
+        double* const sqrt_score = out.pinhole_scratch.data();
+        const simd::KeypointFields fields{.u = columns.u.data() + base, .v = columns.v.data() + base,
+                                          .score = columns.score.data() + base, .sqrt_score = sqrt_score,
+                                          .rx = columns.rx.data() + base, .ry = columns.ry.data() + base,
+                                          .rz = columns.rz.data() + base, .x = sqrt_score + n, .y = sqrt_score + 2 * n};
+        simd::UndistortPinhole(pinhole, person.data(), n, fields);
+        for (int j = 0; j < n; ++j) {
+          Keypoint& kp = kps[j];
+          kp.u = fields.u[j];
+          kp.v = fields.v[j];
+          kp.score = fields.score[j];
+          kp.sqrt_score = fields.sqrt_score[j];
+          kp.ray = Eigen::Vector3d(fields.rx[j], fields.ry[j], fields.rz[j]);
+          kp.x = fields.x[j];
+          kp.y = fields.y[j];
+        }
+      }
+      for (int j = 0; j < view.num_joints && !pinhole_kernel; ++j) {
         const double u = person(0, j), v_px = person(1, j), s = person(2, j);
         if (!(s >= options.min_joint_score) || !std::isfinite(u) || !std::isfinite(v_px) || !std::isfinite(s)) {
           kps[j] = Keypoint{};
@@ -107,6 +135,8 @@ int steps::Undistort(const UndistortOptions& options, const UndistortInput& in, 
         min_v = std::min(min_v, kps[j].v);
         max_v = std::max(max_v, kps[j].v);
       }
+      // The columns of what the kernel did not write: all joints, or the added and derived ones.
+      for (int j = pinhole_kernel ? view.num_joints : 0; j < num_output_joints; ++j) columns.Set(base + j, kps[j]);
       used += static_cast<size_t>(num_output_joints);
       out.view_of.push_back(v);
       out.person_of.push_back(p);
@@ -115,9 +145,10 @@ int steps::Undistort(const UndistortOptions& options, const UndistortInput& in, 
   }
   out.view_begin.push_back(out.num_poses());
   out.keypoints.resize(used);  // smaller or equal: nothing is initialised
-  // The same keypoints as columns for the SIMD kernels: all joints, and the core joints.
+  // The same keypoints as columns for the SIMD kernels: all joints (written above), and the core joints.
+  columns.stride = num_output_joints;
+  columns.Resize(used);
   out.core_joints.assign(in.core_joints.begin(), in.core_joints.end());
-  out.all_columns.Assign(out.keypoints.data(), out.num_poses(), num_output_joints, nullptr, num_output_joints);
   out.core_columns.Assign(out.keypoints.data(), out.num_poses(), num_output_joints, out.core_joints.data(),
                           static_cast<int>(out.core_joints.size()));
   return out.num_poses();

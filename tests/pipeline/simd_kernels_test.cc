@@ -23,9 +23,12 @@
 #include "core/pipeline/merge.h"
 #include "core/pipeline/proposal_scoring.h"
 #include "core/pipeline/triangulator.h"
+#include "core/pipeline/undistort.h"
+#include "core/pipeline/view_geometry.h"
 #include "core/triangulation.h"
 #include "datasets/synthetic/detector_simulator.h"
 #include "datasets/synthetic/scene.h"
+#include "tests/pipeline/test_scene.h"
 
 namespace rpt {
 namespace {
@@ -473,6 +476,78 @@ SceneOutput RunScene(bool whole_body, int cameras, int people, const std::functi
 // The whole triangulator with the kernels (every instruction set) against the steps' scalar code
 // (simd::SetEnabled(false)): the same persons, bit for bit, on scenes and options that take every
 // branch of the kernels.
+// The undistort step of pinhole cameras (one with skew) with the kernel and with its scalar loop, on
+// random joints: in and out of the image, scores below the minimum, at it, above 1 and negative,
+// non-finite coordinates and scores; 17 joints (short rows) and 133 (whole body).
+TEST(SimdKernels, UndistortPinholeEqualsTheScalarUndistortBitForBit) {
+  if (kScalarCodeFused) GTEST_SKIP() << "built with fused multiply-add in the scalar code (RPT_MARCH_NATIVE)";
+  std::vector<Camera> cameras = test::RingCameras(3);
+  cameras[1].K(0, 1) = 3.5;  // skew
+  cameras[2].K << 1234.5, 0, 611.25, 0, 1190.75, 377.5, 0, 0, 1;
+  // A roll about the optical axis: no row of R_t has a zero to hide the order of its sums.
+  cameras[2].R = Eigen::AngleAxisd(0.37, Eigen::Vector3d::UnitZ()).toRotationMatrix() * cameras[2].R;
+  std::vector<ViewGeometry> geometry;
+  for (const Camera& c : cameras) geometry.push_back(MakeViewGeometry(c));
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> pixel(-200, 1200), unit(0, 1);
+  const double special[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
+                            -std::numeric_limits<double>::infinity()};
+  const double scores[] = {-0.5, 0.0, 0.05, 0.1, 1.0, 1.03};
+  for (int joints : {17, 133}) {
+    std::vector<Poses2D> views(cameras.size());
+    for (Poses2D& view : views) {
+      view.Clear(joints);
+      for (int p = 0; p < 4; ++p) {
+        auto person = view.AddPerson();
+        for (int j = 0; j < joints; ++j) {
+          person(0, j) = pixel(rng);
+          person(1, j) = pixel(rng);
+          person(2, j) = unit(rng) < 0.3 ? scores[static_cast<int>(unit(rng) * 6)] : unit(rng);
+          if (unit(rng) < 0.05) person(static_cast<int>(unit(rng) * 3), j) = special[static_cast<int>(unit(rng) * 3)];
+        }
+      }
+    }
+    std::vector<int> core;
+    for (int j = 0; j < 12; ++j) core.push_back(j);
+    const steps::UndistortInput input{
+        .views = views, .cameras = cameras, .geometry = geometry, .derived = {}, .core_joints = core,
+        .num_output_joints = joints};
+    UndistortOptions options;
+    options.min_core_joints = 1;
+    PreparedViews scalar;
+    simd::SetEnabled(false);
+    const int poses = steps::Undistort(options, input, &scalar);
+    simd::SetEnabled(true);
+    ASSERT_EQ(poses, 12) << "every pose kept";
+    simd::ForEachPathForTest([&] {
+      PreparedViews vectorised;
+      ASSERT_EQ(steps::Undistort(options, input, &vectorised), poses);
+      ASSERT_EQ(vectorised.keypoints.size(), scalar.keypoints.size());
+      for (size_t k = 0; k < scalar.keypoints.size(); ++k) {
+        const Keypoint &a = vectorised.keypoints[k], &b = scalar.keypoints[k];
+        const double fa[] = {a.u, a.v, a.score, a.sqrt_score, a.ray.x(), a.ray.y(), a.ray.z(), a.x, a.y};
+        const double fb[] = {b.u, b.v, b.score, b.sqrt_score, b.ray.x(), b.ray.y(), b.ray.z(), b.x, b.y};
+        for (int f = 0; f < 9; ++f) {
+          ASSERT_TRUE(SameBits(fa[f], fb[f])) << simd::ActivePath() << " " << joints << " joints, keypoint " << k
+                                              << " field " << f << ": " << fa[f] << " vs " << fb[f];
+        }
+      }
+      EXPECT_EQ(vectorised.bbox_diag, scalar.bbox_diag);
+      for (const KeypointColumns PreparedViews::*columns : {&PreparedViews::all_columns, &PreparedViews::core_columns}) {
+        const KeypointColumns &a = vectorised.*columns, &b = scalar.*columns;
+        EXPECT_EQ(a.stride, b.stride);
+        for (const std::vector<double> KeypointColumns::*field :
+             {&KeypointColumns::u, &KeypointColumns::v, &KeypointColumns::score, &KeypointColumns::rx,
+              &KeypointColumns::ry, &KeypointColumns::rz}) {
+          ASSERT_EQ((a.*field).size(), (b.*field).size());
+          EXPECT_EQ(std::memcmp((a.*field).data(), (b.*field).data(), (b.*field).size() * sizeof(double)), 0)
+              << simd::ActivePath() << " " << joints << " joints: a column differs";
+        }
+      }
+    });
+  }
+}
+
 TEST(SimdKernels, TriangulatorOutputIsBitIdenticalToTheScalarSteps) {
   if (kScalarCodeFused) GTEST_SKIP() << "built with fused multiply-add in the scalar code (RPT_MARCH_NATIVE)";
   struct Case {
