@@ -36,7 +36,7 @@ struct Keypoint {
 // (simd_kernels.h): field f of joint j of pose g at f[g * stride + j].
 struct KeypointColumns {
   int stride = 0;  // joints per pose
-  std::vector<double> u, v, score, rx, ry, rz;
+  std::vector<double> u, v, score, sqrt_score, rx, ry, rz;
 
   // Sets the columns of `poses` poses of `pose_size` keypoints each (kps): their joints `joints`
   // (n indices into a pose), or the first n when `joints` is null.
@@ -54,13 +54,14 @@ struct KeypointColumns {
     }
   }
   void Resize(size_t size) {
-    for (auto* c : {&u, &v, &score, &rx, &ry, &rz}) c->resize(size);
+    for (auto* c : {&u, &v, &score, &sqrt_score, &rx, &ry, &rz}) c->resize(size);
   }
   // Value `at` of every column from `kp`.
   void Set(size_t at, const Keypoint& kp) {
     u[at] = kp.u;
     v[at] = kp.v;
     score[at] = kp.score;
+    sqrt_score[at] = kp.sqrt_score;
     rx[at] = kp.ray.x();
     ry[at] = kp.ray.y();
     rz[at] = kp.ray.z();
@@ -80,7 +81,7 @@ struct PreparedViews {
   KeypointColumns all_columns;
   KeypointColumns core_columns;
   std::vector<int> core_joints;
-  std::vector<double> pinhole_scratch;  // the undistort step's SIMD kernel: sqrt_score, x, y of one pose
+  std::vector<double> pinhole_scratch;  // the undistort step's SIMD kernel: x and y of one pose
 
   int num_poses() const { return static_cast<int>(view_of.size()); }
   const Keypoint* Pose(int g) const { return keypoints.data() + static_cast<size_t>(g) * num_joints; }

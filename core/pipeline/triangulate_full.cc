@@ -192,6 +192,14 @@ int steps::TriangulateFull(const TriangulateOptions& options, const TriangulateF
                                     all_columns ? &views.all_columns : nullptr, proposals, k);
     if (!in.kernel.use_confidence) continue;
     double* score = proposals->score.data() + pv.base;
+    if (all_columns) {  // the same products, from the contiguous columns
+      const PosePair& pair = proposals->pairs[k];
+      const size_t stride = static_cast<size_t>(views.all_columns.stride);
+      const double* sa = views.all_columns.sqrt_score.data() + static_cast<size_t>(pair.a) * stride;
+      const double* sb = views.all_columns.sqrt_score.data() + static_cast<size_t>(pair.b) * stride;
+      for (int i = 0; i < num_joints; ++i) score[i] *= sa[i] * sb[i];
+      continue;
+    }
     for (int i = 0; i < num_joints; ++i)
       score[i] *= pv.ka[in.all_joints[i]].sqrt_score * pv.kb[in.all_joints[i]].sqrt_score;
   }

@@ -59,7 +59,7 @@ int steps::Undistort(const UndistortOptions& options, const UndistortInput& in, 
     const bool pinhole_kernel = !distorted && simd::Enabled();
     const simd::PinholeView pinhole{.fx = g.fx, .fy = g.fy, .cx = g.cx, .cy = g.cy, .skew = g.skew,
                                     .R_t = g.R_t.data(), .min_score = options.min_joint_score};
-    if (pinhole_kernel) out.pinhole_scratch.resize(3 * static_cast<size_t>(view.num_joints));
+    if (pinhole_kernel) out.pinhole_scratch.resize(2 * static_cast<size_t>(view.num_joints));
     for (int p = 0; p < view.num_persons(); ++p) {
       const auto person = view.Person(p);
       if (options.drop_exact_copies && RepeatsEarlierPose(view, p)) continue;
@@ -69,11 +69,12 @@ int steps::Undistort(const UndistortOptions& options, const UndistortInput& in, 
       Keypoint* kps = out.keypoints.data() + base;
       if (pinhole_kernel) {
         const int n = view.num_joints;
-        double* const sqrt_score = out.pinhole_scratch.data();
+        double* const xy = out.pinhole_scratch.data();
         const simd::KeypointFields fields{.u = columns.u.data() + base, .v = columns.v.data() + base,
-                                          .score = columns.score.data() + base, .sqrt_score = sqrt_score,
+                                          .score = columns.score.data() + base,
+                                          .sqrt_score = columns.sqrt_score.data() + base,
                                           .rx = columns.rx.data() + base, .ry = columns.ry.data() + base,
-                                          .rz = columns.rz.data() + base, .x = sqrt_score + n, .y = sqrt_score + 2 * n};
+                                          .rz = columns.rz.data() + base, .x = xy, .y = xy + n};
         simd::UndistortPinhole(pinhole, person.data(), n, fields);
         for (int j = 0; j < n; ++j) {
           Keypoint& kp = kps[j];

@@ -537,8 +537,8 @@ TEST(SimdKernels, UndistortPinholeEqualsTheScalarUndistortBitForBit) {
         const KeypointColumns &a = vectorised.*columns, &b = scalar.*columns;
         EXPECT_EQ(a.stride, b.stride);
         for (const std::vector<double> KeypointColumns::*field :
-             {&KeypointColumns::u, &KeypointColumns::v, &KeypointColumns::score, &KeypointColumns::rx,
-              &KeypointColumns::ry, &KeypointColumns::rz}) {
+             {&KeypointColumns::u, &KeypointColumns::v, &KeypointColumns::score, &KeypointColumns::sqrt_score,
+              &KeypointColumns::rx, &KeypointColumns::ry, &KeypointColumns::rz}) {
           ASSERT_EQ((a.*field).size(), (b.*field).size());
           EXPECT_EQ(std::memcmp((a.*field).data(), (b.*field).data(), (b.*field).size() * sizeof(double)), 0)
               << simd::ActivePath() << " " << joints << " joints: a column differs";
