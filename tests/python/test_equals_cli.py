@@ -113,7 +113,7 @@ def test_options_change_the_result_like_set(scene, tmp_path):
     options = rpt.Options({"filter.min_match_score": 0.9, "metrics": {"matching": "hungarian"}})
     predictions = rpt.Triangulator.for_sequence(scene, options).process_sequence(scene)
     summary = rpt.metrics.evaluate(scene, predictions, options=options)
-    for key in ("pcp", "mpjpe_mm", "recall500", "invalid", "predictions", "matches"):
+    for key in ("pcp", "pcp_parts", "mpjpe_mm", "recall500", "invalid", "predictions", "matches"):
         assert summary[key] == cli_summary[key], key
     # the same through keyword arguments
     assert rpt.metrics.evaluate(scene, predictions, matching="hungarian")["mpjpe_mm"] == cli_summary["mpjpe_mm"]

@@ -36,6 +36,20 @@ def test_one_joint_off_by_13_cm():
     assert summary["mpjpe_mm"] == pytest.approx(10.0, abs=1e-9)
 
 
+def test_pcp_per_part():
+    # The left wrist 1 m off: the left forearm (0.21 m long here, so 107 mm allowed) is the one wrong
+    # part of ten; the head part ends at the nose, the torso at the mid-hip.
+    prediction = person()
+    prediction[0, COCO.index("wrist_left"), 0] += 1.0
+    summary = rpt.metrics.evaluate([person()], [prediction], gt_joints=COCO, joint_names=COCO)
+    parts = summary["pcp_parts"]
+    assert list(parts) == ["upper_arm_left", "upper_arm_right", "lower_arm_left", "lower_arm_right",
+                           "upper_leg_left", "upper_leg_right", "lower_leg_left", "lower_leg_right", "torso", "head"]
+    assert parts["lower_arm_left"] == 0.0
+    assert all(value == 100.0 for name, value in parts.items() if name != "lower_arm_left")
+    assert summary["pcp"] == 90.0
+
+
 def test_missed_person_and_false_positive():
     gt = [person(), person()]
     predictions = [person(), np.zeros((0, len(COCO), 4))]
