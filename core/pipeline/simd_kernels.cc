@@ -445,6 +445,12 @@ void MergeGroupImpl(const MergeParams& p, const double* xyz, const double* score
   const size_t N = hn::Lanes(d), joints = static_cast<size_t>(n);
   size_t j = 0;
   for (; j + N <= joints; j += N) MergeLanes(d, p, xyz, score, members, joints, j, dist, out);
+  if (j < joints && joints >= N) {
+    // The last joints as one full vector ending at the last joint: its first lanes repeat joints
+    // done above, and write the same values again (every lane is computed on its own).
+    MergeLanes(d, p, xyz, score, members, joints, joints - N, dist, out);
+    return;
+  }
   for (; j < joints; ++j) MergeLanes(d1, p, xyz, score, members, joints, j, dist, out);
 }
 
