@@ -53,6 +53,7 @@ struct KeypointColumns {
       }
     }
   }
+  // Every column to `size` values (a column that grows gets zeros; none allocates below its capacity).
   void Resize(size_t size) {
     for (auto* c : {&u, &v, &score, &sqrt_score, &rx, &ry, &rz}) c->resize(size);
   }
