@@ -86,6 +86,28 @@ adapter_table() {
   ours mvor-adapter-fit-days34 "MVOR days 1-2, adapter fitted on days 3-4"
 }
 
+# Where the GT persons of the two real-detection runs are lost (their losses.csv side by side).
+loss_table() {
+  echo "## Where the ground-truth persons are lost"
+  echo
+  echo "\`rpt eval --loss-table\` (docs/diagnostics.md, section 4): each GT person in the category of the first"
+  echo "step that loses it, with the default options; folders mvor-openpose-losses and shelf4da-openpose-losses."
+  echo
+  python3 - "$OUT/real/mvor-openpose-losses/losses.csv" "$OUT/real/shelf4da-openpose-losses/losses.csv" <<'PY'
+import csv, sys
+tables = [{(r["category"], r["detail"]): r for r in csv.DictReader(open(path))} for path in sys.argv[1:]]
+print("| category | detail | MVOR, shipped OpenPose | Shelf, 4D-Association OpenPose |")
+print("|---|---|---|---|")
+for key, row in tables[0].items():
+    cells = []
+    for table in tables:
+        r = table.get(key)
+        cells.append(f"{r['persons']} ({r['percent_of_gt']} %)" if r else "")
+    label = f"**{key[0]}**" if not key[1] else ""
+    print(f"| {label or ''} | {key[1]} | " + " | ".join(cells) + " |")
+PY
+}
+
 real_results() {
   sweep real/ablations-mvor --dataset mvor --root "$SHARED/mvor" --list results/ablations.json
   sweep real/ablations-shelf4da --dataset shelf-4da --root "$SHARED/shelf/4d_association" --list results/ablations.json
@@ -100,6 +122,9 @@ real_results() {
        --set metrics.legacy_pcp=campus
   real panoptic-simulated    --dataset panoptic --root "$SHARED/panoptic" \
        --param sequences=160906_band1,160906_band2 --param every=1 --simulate
+  # The same two real runs with the loss table (its recording counts in the frame time: FPS differs).
+  real mvor-openpose-losses     --dataset mvor --root "$SHARED/mvor" --loss-table
+  real shelf4da-openpose-losses --dataset shelf-4da --root "$SHARED/shelf/4d_association" --loss-table
   adapter_results
   local head='| run | PCP (%) | PCK@100 (%) | PCK@500 (%) | MPJPE (mm) | Recall@100 (%) | Recall@500 (%) | Invalid (%) | F1 (%) | FPS (1/s) | Frames (count) |'
   {
@@ -132,6 +157,8 @@ real_results() {
     paper panoptic
     echo
     adapter_table
+    echo
+    loss_table
   } > "$OUT/real/README.md"
   echo "wrote $OUT/real/README.md"
 }
