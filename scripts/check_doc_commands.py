@@ -83,6 +83,7 @@ def quoted_commands(text):
 
 
 def check_file(cli, path, root, counts):
+    """The problems of one Markdown file, as "FILE:LINE: what"; counts the commands and options seen."""
     problems = []
     text = path.read_text(encoding="utf-8")
     for number, snippet in quoted_commands(text):
