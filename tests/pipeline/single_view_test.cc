@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Step 12b's ground prior (single_view.h): a person seen by one camera stood upright on the floor,
-// kept only when its body size, posture and place are plausible. Hand-computed geometry first,
-// then the step on a projected scene.
+// Step 12b (single_view.h): a pose seen by one camera is lifted only when the other views do not
+// contradict it; the ground prior stands it upright on the floor, kept only when its body size,
+// posture and place are plausible. Hand-computed geometry first, then the step on a projected scene.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -152,7 +152,7 @@ TEST(PlaceOnGround, RejectsImplausibleSizesAndPostures) {
 }
 
 struct OneViewScene {
-  std::vector<Camera> cameras = test::RingCameras(5);
+  std::vector<Camera> cameras;
   std::vector<ViewGeometry> geometry;
   std::vector<int> core;
   PreparedViews prepared;
@@ -163,8 +163,8 @@ struct OneViewScene {
   ScoreKernel kernel;
   Poses3D found;
 
-  // `person` detected by camera 0 only.
-  explicit OneViewScene(const Eigen::Matrix4Xd& person) {
+  // `person` detected by camera 0 of `num_cameras` ring cameras only; the others detect nobody.
+  explicit OneViewScene(const Eigen::Matrix4Xd& person, int num_cameras = 5) : cameras(test::RingCameras(num_cameras)) {
     std::vector<Poses2D> views = test::ProjectPersons(cameras, {person});
     for (size_t v = 1; v < views.size(); ++v) views[v].Clear(17);
     test::UndistortCocoViews(cameras, views, &geometry, &core, &prepared);
@@ -197,6 +197,37 @@ SingleViewOptions GroundPriorOn() {
   options.ground_prior = true;
   options.min_empty_views = 5;  // the four other views see nobody and must not veto here
   return options;
+}
+
+TEST(SingleView, LiftsAPoseOnlyWhenTheOtherViewsDoNotSeeAnEmptySpot) {
+  // The person stands in plain view of the four other cameras, which detect nobody: four empty
+  // views contradict the pose. With single_view.min_empty_views above four they do not, and the
+  // pose is lifted (limb-length depth) to about the person's place.
+  const Eigen::Matrix4Xd person = test::StandingPerson(0.5, 0.2);
+  OneViewScene scene(person);
+  SingleViewOptions options;
+  options.enabled = true;
+  Poses3D lifted;
+  FrameStats stats;
+  EXPECT_EQ(scene.Run(options, Room{}, &lifted, &stats), 0) << "four empty views";
+  options.min_empty_views = 5;
+  ASSERT_EQ(scene.Run(options, Room{}, &lifted, &stats), 1);
+  EXPECT_EQ(stats.single_view_persons, 1);
+  const Eigen::Vector3d hips = 0.5 * (lifted.Person(0).col(kHipL) + lifted.Person(0).col(kHipR)).head<3>();
+  EXPECT_LT((hips - 0.5 * (person.col(kHipL) + person.col(kHipR)).head<3>()).norm(), 0.5);
+}
+
+TEST(SingleView, MinEmptyViewsCountsTheEmptyViewsAlone) {
+  // Two cameras: the one other view is empty. Under the default (two empty views) that does not
+  // veto; with min_empty_views = 1 a single empty view does.
+  OneViewScene scene(test::StandingPerson(0.5, 0.2), 2);
+  SingleViewOptions options;
+  options.enabled = true;
+  Poses3D lifted;
+  FrameStats stats;
+  EXPECT_EQ(scene.Run(options, Room{}, &lifted, &stats), 1) << "one empty view, two needed";
+  options.min_empty_views = 1;
+  EXPECT_EQ(scene.Run(options, Room{}, &lifted, &stats), 0) << "one empty view, one needed";
 }
 
 TEST(SingleViewGroundPrior, PlacesAPersonSeenByOneCameraNearItsPlace) {

@@ -1,13 +1,10 @@
 // SPDX-License-Identifier: MIT
-// Steps 11b and 12b on hand-made geometry: re-scoring persons against all views (verify.h) and
-// lifting persons seen by one view (single_view.h), both judged by the other views
-// (view_verdict.h).
+// Step 11b on hand-made geometry: re-scoring persons against all views (verify.h), judged by the
+// other views (view_verdict.h). Step 12b's use of the same verdict: single_view_test.cc.
 #include <gtest/gtest.h>
 
 #include <vector>
 
-#include "core/joints.h"
-#include "core/pipeline/single_view.h"
 #include "core/pipeline/undistort.h"
 #include "core/pipeline/verify.h"
 #include "core/pipeline/view_geometry.h"
@@ -94,71 +91,6 @@ TEST(Verify, AnOccludedPersonIsNotAPhantom) {
   VerifyFixture f({a, c}, {{hidden, 0}});
   EXPECT_EQ(f.Run(), 1);
   EXPECT_EQ(f.dropped, 0);
-}
-
-// A person detected by camera 0 of `num_cameras` ring cameras only, standing in plain view of the
-// others, which detect nobody: step 12b with `options` (enabled) lifts it or not.
-struct OneViewFixture {
-  explicit OneViewFixture(int num_cameras) : cameras(test::RingCameras(num_cameras)) {
-    std::vector<Poses2D> views = test::ProjectPersons(cameras, {person});
-    for (size_t v = 1; v < views.size(); ++v) views[v].Clear(17);
-    test::UndistortCocoViews(cameras, views, &geometry, &core, &prepared);
-    kernel.scale_m = 0.05;
-    found.Clear(17);
-    options.enabled = true;
-  }
-  // The number of persons lifted.
-  int Run() {
-    const steps::SingleViewInput input{.views = prepared,
-                                       .geometry = geometry,
-                                       .core_joints = core,
-                                       .limbs = limbs,
-                                       .ground = ground,
-                                       .room = no_room,
-                                       .proposals = no_proposals,
-                                       .groups = no_groups,
-                                       .kernel = kernel,
-                                       .found = found};
-    return steps::SingleView(options, input, &scratch, &lifted, &stats);
-  }
-
-  const Eigen::Matrix4Xd person = test::StandingPerson(0.5, 0.2);
-  std::vector<Camera> cameras;
-  std::vector<ViewGeometry> geometry;
-  std::vector<int> core;
-  PreparedViews prepared;
-  const std::vector<TypicalLimb> limbs = ResolveTypicalLimbs(CocoBodyJoints());
-  const GroundJoints ground = ResolveGroundJoints(CocoBodyJoints());
-  const Room no_room;
-  const Proposals no_proposals;
-  const Groups no_groups;
-  ScoreKernel kernel;
-  Poses3D found;
-  SingleViewOptions options;
-  SingleViewScratch scratch;
-  Poses3D lifted;
-  FrameStats stats;
-};
-
-TEST(SingleView, LiftsAPoseOnlyWhenTheOtherViewsDoNotSeeAnEmptySpot) {
-  // Four empty views contradict the pose. With single_view.min_empty_views above four they do
-  // not, and the pose is lifted to about the person's place.
-  OneViewFixture f(5);
-  EXPECT_EQ(f.Run(), 0) << "four empty views";
-  f.options.min_empty_views = 5;
-  ASSERT_EQ(f.Run(), 1);
-  EXPECT_EQ(f.stats.single_view_persons, 1);
-  const Eigen::Vector3d hips = 0.5 * (f.lifted.Person(0).col(11) + f.lifted.Person(0).col(12)).head<3>();
-  EXPECT_LT((hips - 0.5 * (f.person.col(11) + f.person.col(12)).head<3>()).norm(), 0.5);
-}
-
-TEST(SingleView, MinEmptyViewsCountsTheEmptyViewsAlone) {
-  // Two cameras: the one other view is empty. Under the default (two empty views) that does not
-  // veto; with min_empty_views = 1 a single empty view does.
-  OneViewFixture f(2);
-  EXPECT_EQ(f.Run(), 1) << "one empty view, two needed";
-  f.options.min_empty_views = 1;
-  EXPECT_EQ(f.Run(), 0) << "one empty view, one needed";
 }
 
 }  // namespace
