@@ -43,13 +43,18 @@ int ApplyPairBudget(const PreparedViews& views, std::span<const ViewGeometry> ge
   scratch->keep.assign(pairs->size(), 1);
   scratch->best_two.resize(views.num_poses());
   // The core joints' sqrt(score) of every pose side by side: the evidence of a pair below reads
-  // two short rows instead of gathering from two poses' keypoints.
+  // two short rows instead of gathering from two poses' keypoints. The undistort step's core
+  // columns hold them when its core joints are these; else they are gathered here.
   const int num_core_joints = static_cast<int>(core_joints.size());
-  scratch->core_sqrt_scores.resize(static_cast<size_t>(views.num_poses()) * num_core_joints);
-  for (int g = 0; g < views.num_poses(); ++g) {
-    const Keypoint* kps = views.Pose(g);
-    double* row = scratch->core_sqrt_scores.data() + static_cast<size_t>(g) * num_core_joints;
-    for (int c = 0; c < num_core_joints; ++c) row[c] = kps[core_joints[c]].sqrt_score;
+  const double* core_sqrt_scores = views.core_columns.sqrt_score.data();
+  if (!std::equal(core_joints.begin(), core_joints.end(), views.core_joints.begin(), views.core_joints.end())) {
+    scratch->core_sqrt_scores.resize(static_cast<size_t>(views.num_poses()) * num_core_joints);
+    for (int g = 0; g < views.num_poses(); ++g) {
+      const Keypoint* kps = views.Pose(g);
+      double* row = scratch->core_sqrt_scores.data() + static_cast<size_t>(g) * num_core_joints;
+      for (int c = 0; c < num_core_joints; ++c) row[c] = kps[core_joints[c]].sqrt_score;
+    }
+    core_sqrt_scores = scratch->core_sqrt_scores.data();
   }
   scratch->directions.resize(static_cast<size_t>(num_views));
   for (int q = 0; q < num_previous; ++q) {
@@ -71,8 +76,8 @@ int ApplyPairBudget(const PreparedViews& views, std::span<const ViewGeometry> ge
     for (int i = first; i < last; ++i) {
       const int k = scratch->bucket[i];
       const PosePair& pair = (*pairs)[k];
-      const double* sa = scratch->core_sqrt_scores.data() + static_cast<size_t>(pair.a) * num_core_joints;
-      const double* sb = scratch->core_sqrt_scores.data() + static_cast<size_t>(pair.b) * num_core_joints;
+      const double* sa = core_sqrt_scores + static_cast<size_t>(pair.a) * num_core_joints;
+      const double* sb = core_sqrt_scores + static_cast<size_t>(pair.b) * num_core_joints;
       double evidence = 0;
       for (int c = 0; c < num_core_joints; ++c) evidence += sa[c] * sb[c];  // in the core joints' order
       const double sine =

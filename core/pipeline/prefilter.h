@@ -64,7 +64,7 @@ struct PrefilterScratch {
   std::vector<std::pair<double, int>> rest;    // the entries of `budget` not among any pose's two best
   std::vector<char> keep;                      // per pair
   std::vector<std::array<int, 2>> best_two;    // per pose: its two best entries of `budget` (-1: none)
-  std::vector<double> core_sqrt_scores;    // per pose and core joint: sqrt(score), contiguous
+  std::vector<double> core_sqrt_scores;    // per pose and core joint: sqrt(score), when the core columns lack them
 };
 
 namespace steps {
