@@ -64,6 +64,9 @@ struct PrefilterOptions {
   // the two viewing rays at the person x the 2D confidence both poses share on the core joints.
   // 0: keep all.
   int max_pairs_per_person = 30;
+  // An ambiguous pose pairs with every pose matched to a person it is near (one per view); keep
+  // only this many of those pairs per person, the best as above. 0: keep all.
+  int max_pairs_per_ambiguous_pose = 4;
 };
 
 template <class Visitor, OptionsOf<PrefilterOptions> Self>
@@ -80,6 +83,10 @@ void VisitFields(Visitor& v, Self& o) {
   v("max_pairs_per_person", o.max_pairs_per_person,
     OptionSpec{.help = "pairs kept per tracked person: each pose's two best, then the best others; best = sin of "
                        "the ray angle at the person x shared 2D confidence (0: keep all)",
+               .min = 0, .max = 1e9});
+  v("max_pairs_per_ambiguous_pose", o.max_pairs_per_ambiguous_pose,
+    OptionSpec{.help = "pairs kept between an ambiguous pose and the poses matched to one person it is near; best "
+                       "as for max_pairs_per_person (0: keep all)",
                .min = 0, .max = 1e9});
 }
 

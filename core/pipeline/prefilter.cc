@@ -12,12 +12,112 @@ namespace rpt {
 
 namespace {
 
+// The mean of person q's valid core joints (zero when none is valid).
+Eigen::Vector3d PersonCentre(const PreviousPersons& previous, int q) {
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();
+  int n = 0;
+  for (int c = 0; c < previous.num_core; ++c) {
+    const size_t idx = static_cast<size_t>(q) * previous.num_core + c;
+    if (previous.score[idx] <= 0) continue;
+    center += previous.xyz[idx];
+    ++n;
+  }
+  return n > 0 ? Eigen::Vector3d(center / n) : center;
+}
+
+// The core joints' sqrt(score) of every pose side by side (num_poses rows of core_joints.size()):
+// a pair's evidence reads two short rows instead of gathering from two poses' keypoints. The
+// undistort step's core columns hold them when its core joints are these; else they are gathered.
+const double* CoreSqrtScores(const PreparedViews& views, std::span<const int> core_joints, PrefilterScratch* scratch) {
+  if (std::equal(core_joints.begin(), core_joints.end(), views.core_joints.begin(), views.core_joints.end())) {
+    return views.core_columns.sqrt_score.data();
+  }
+  const int num_core_joints = static_cast<int>(core_joints.size());
+  scratch->core_sqrt_scores.resize(static_cast<size_t>(views.num_poses()) * num_core_joints);
+  for (int g = 0; g < views.num_poses(); ++g) {
+    const Keypoint* kps = views.Pose(g);
+    double* row = scratch->core_sqrt_scores.data() + static_cast<size_t>(g) * num_core_joints;
+    for (int c = 0; c < num_core_joints; ++c) row[c] = kps[core_joints[c]].sqrt_score;
+  }
+  return scratch->core_sqrt_scores.data();
+}
+
+// A pair's quality for the budgets: sin of the angle between the unit directions from a person's
+// last centre to the two cameras (da, db) x the 2D confidence both poses share on the core joints
+// (their rows sa, sb of CoreSqrtScores).
+double PairQuality(const Eigen::Vector3d& da, const Eigen::Vector3d& db, const double* sa, const double* sb,
+                   int num_core_joints) {
+  double evidence = 0;
+  for (int c = 0; c < num_core_joints; ++c) evidence += sa[c] * sb[c];  // in the core joints' order
+  return da.cross(db).norm() * evidence;
+}
+
+// Keeps, of the pairs between an ambiguous pose and the poses matched to one person, only the
+// max_pairs_per_ambiguous_pose best (see the header). The classification filter listed those
+// pairs in scratch->ambiguous (bucket = (ambiguous pose, person); pair = index into `pairs`, in
+// increasing order) and counted them per bucket in scratch->ambiguous_count.
+int LimitAmbiguousPairs(const PreparedViews& views, std::span<const ViewGeometry> geometry,
+                        std::span<const int> core_joints, const PreviousPersons& previous,
+                        const PrefilterOptions& options, PrefilterScratch* scratch, std::vector<PosePair>* pairs) {
+  const int limit = options.max_pairs_per_ambiguous_pose;
+  const int num_previous = previous.size();
+  std::vector<int>& count = scratch->ambiguous_count;
+  // An ambiguous pose over the limit needs many views: the usual frame stops here.
+  if (std::none_of(count.begin(), count.end(), [limit](int n) { return n > limit; })) {
+    return static_cast<int>(pairs->size());
+  }
+  // Entries by bucket (a stable counting sort: within a bucket by pair index), then per bucket over
+  // the limit the `limit` best by quality (of equal quality the earlier pair) stay.
+  const size_t num_buckets = count.size();
+  scratch->bucket_begin.assign(num_buckets + 1, 0);
+  for (size_t b = 0; b < num_buckets; ++b) scratch->bucket_begin[b + 1] = scratch->bucket_begin[b] + count[b];
+  scratch->bucket_fill.assign(scratch->bucket_begin.begin(), scratch->bucket_begin.end() - 1);
+  scratch->ambiguous_sorted.resize(scratch->ambiguous.size());
+  for (const AmbiguousPair& entry : scratch->ambiguous) {
+    scratch->ambiguous_sorted[scratch->bucket_fill[entry.bucket]++] = entry;
+  }
+  const int num_core_joints = static_cast<int>(core_joints.size());
+  const double* core_sqrt_scores = CoreSqrtScores(views, core_joints, scratch);
+  scratch->keep.assign(pairs->size(), 1);
+  for (size_t b = 0; b < num_buckets; ++b) {
+    if (count[b] <= limit) continue;
+    AmbiguousPair* first = scratch->ambiguous_sorted.data() + scratch->bucket_begin[b];
+    AmbiguousPair* last = first + count[b];
+    // Every pair of the bucket shares the ambiguous pose: its view's direction once.
+    const Eigen::Vector3d center = PersonCentre(previous, static_cast<int>(b % num_previous));
+    const int ambiguous_pose = scratch->ambiguous_pose[b / num_previous];
+    const Eigen::Vector3d direction = (geometry[views.view_of[ambiguous_pose]].center - center).normalized();
+    const double* row = core_sqrt_scores + static_cast<size_t>(ambiguous_pose) * num_core_joints;
+    for (AmbiguousPair* e = first; e != last; ++e) {
+      const PosePair& pair = (*pairs)[e->pair];
+      const int other = pair.a == ambiguous_pose ? pair.b : pair.a;
+      const Eigen::Vector3d other_direction = (geometry[views.view_of[other]].center - center).normalized();
+      // In the pair's order (a, b), as the person budget computes it.
+      e->quality = pair.a == ambiguous_pose
+                       ? PairQuality(direction, other_direction, row,
+                                     core_sqrt_scores + static_cast<size_t>(other) * num_core_joints, num_core_joints)
+                       : PairQuality(other_direction, direction,
+                                     core_sqrt_scores + static_cast<size_t>(other) * num_core_joints, row,
+                                     num_core_joints);
+    }
+    std::nth_element(first, first + (limit - 1), last, [](const AmbiguousPair& x, const AmbiguousPair& y) {
+      return x.quality != y.quality ? x.quality > y.quality : x.pair < y.pair;
+    });
+    for (AmbiguousPair* e = first + limit; e != last; ++e) scratch->keep[e->pair] = 0;
+  }
+  int kept = 0;
+  for (size_t k = 0; k < pairs->size(); ++k) {
+    if (scratch->keep[k]) (*pairs)[kept++] = (*pairs)[k];
+  }
+  pairs->resize(kept);
+  return kept;
+}
+
 // Keeps at most max_pairs_per_person of the pairs matched to each previous person (see the header).
 int ApplyPairBudget(const PreparedViews& views, std::span<const ViewGeometry> geometry, std::span<const int> core_joints,
                     const PreviousPersons& previous, const PrefilterOptions& options, PrefilterScratch* scratch,
                     std::vector<PosePair>* pairs) {
   const int num_previous = previous.size();
-  const int num_core = previous.num_core;
   const int num_views = static_cast<int>(geometry.size());
   const std::vector<int>& match = scratch->match;
   const size_t budget = static_cast<size_t>(options.max_pairs_per_person);
@@ -42,47 +142,25 @@ int ApplyPairBudget(const PreparedViews& views, std::span<const ViewGeometry> ge
 
   scratch->keep.assign(pairs->size(), 1);
   scratch->best_two.resize(views.num_poses());
-  // The core joints' sqrt(score) of every pose side by side: the evidence of a pair below reads
-  // two short rows instead of gathering from two poses' keypoints. The undistort step's core
-  // columns hold them when its core joints are these; else they are gathered here.
   const int num_core_joints = static_cast<int>(core_joints.size());
-  const double* core_sqrt_scores = views.core_columns.sqrt_score.data();
-  if (!std::equal(core_joints.begin(), core_joints.end(), views.core_joints.begin(), views.core_joints.end())) {
-    scratch->core_sqrt_scores.resize(static_cast<size_t>(views.num_poses()) * num_core_joints);
-    for (int g = 0; g < views.num_poses(); ++g) {
-      const Keypoint* kps = views.Pose(g);
-      double* row = scratch->core_sqrt_scores.data() + static_cast<size_t>(g) * num_core_joints;
-      for (int c = 0; c < num_core_joints; ++c) row[c] = kps[core_joints[c]].sqrt_score;
-    }
-    core_sqrt_scores = scratch->core_sqrt_scores.data();
-  }
+  const double* core_sqrt_scores = CoreSqrtScores(views, core_joints, scratch);
   scratch->directions.resize(static_cast<size_t>(num_views));
   for (int q = 0; q < num_previous; ++q) {
     const int first = scratch->bucket_begin[q], last = scratch->bucket_begin[q + 1];
     if (static_cast<size_t>(last - first) <= budget) continue;
     // The person's last centre and the unit direction from it to every camera.
-    Eigen::Vector3d center = Eigen::Vector3d::Zero();
-    int n = 0;
-    for (int c = 0; c < num_core; ++c) {
-      const size_t idx = static_cast<size_t>(q) * num_core + c;
-      if (previous.score[idx] <= 0) continue;
-      center += previous.xyz[idx];
-      ++n;
-    }
-    if (n > 0) center /= n;
+    const Eigen::Vector3d center = PersonCentre(previous, q);
     for (int v = 0; v < num_views; ++v) scratch->directions[v] = (geometry[v].center - center).normalized();
     // Quality: sin of the ray angle at the person x the 2D confidence both poses share.
     scratch->budget.clear();
     for (int i = first; i < last; ++i) {
       const int k = scratch->bucket[i];
       const PosePair& pair = (*pairs)[k];
-      const double* sa = core_sqrt_scores + static_cast<size_t>(pair.a) * num_core_joints;
-      const double* sb = core_sqrt_scores + static_cast<size_t>(pair.b) * num_core_joints;
-      double evidence = 0;
-      for (int c = 0; c < num_core_joints; ++c) evidence += sa[c] * sb[c];  // in the core joints' order
-      const double sine =
-          scratch->directions[views.view_of[pair.a]].cross(scratch->directions[views.view_of[pair.b]]).norm();
-      scratch->budget.emplace_back(-sine * evidence, k);  // best first: (-quality, pair index) ascending
+      const double quality =
+          PairQuality(scratch->directions[views.view_of[pair.a]], scratch->directions[views.view_of[pair.b]],
+                      core_sqrt_scores + static_cast<size_t>(pair.a) * num_core_joints,
+                      core_sqrt_scores + static_cast<size_t>(pair.b) * num_core_joints, num_core_joints);
+      scratch->budget.emplace_back(-quality, k);  // best first: (-quality, pair index) ascending
       scratch->keep[k] = 0;
       scratch->best_two[pair.a] = scratch->best_two[pair.b] = {-1, -1};
     }
@@ -228,6 +306,22 @@ int steps::Prefilter(const PrefilterOptions& options, const PrefilterInput& in, 
     }
   }
 
+  // The ambiguous poses numbered, to count their pairs per person below (LimitAmbiguousPairs).
+  const bool limit_ambiguous = options.max_pairs_per_ambiguous_pose > 0;
+  int num_ambiguous = 0;
+  if (limit_ambiguous) {
+    scratch->ambiguous_slot.resize(views.num_poses());
+    scratch->ambiguous_pose.clear();
+    for (int g = 0; g < views.num_poses(); ++g) {
+      scratch->ambiguous_slot[g] = -1;
+      if ((*match)[g] != kPoseAmbiguous) continue;
+      scratch->ambiguous_slot[g] = num_ambiguous++;
+      scratch->ambiguous_pose.push_back(g);
+    }
+    scratch->ambiguous_count.assign(static_cast<size_t>(num_ambiguous) * num_previous, 0);
+    scratch->ambiguous.clear();
+  }
+
   // Kept: both matched to the same person, both free, and an ambiguous pose with a free or
   // ambiguous one or with a pose matched to a person within twice the radius of it (one of the
   // persons it is ambiguous between); dropped: matched to different persons, one matched and the
@@ -242,11 +336,19 @@ int steps::Prefilter(const PrefilterOptions& options, const PrefilterInput& in, 
       const int ambiguous_pose = a == kPoseAmbiguous ? pair.a : pair.b;
       const int other = a == kPoseAmbiguous ? b : a;
       keep = other < 0 || ((scratch->near[static_cast<size_t>(ambiguous_pose) * words + other / 64] >> (other % 64)) & 1);
+      if (keep && other >= 0 && limit_ambiguous) {
+        const int bucket = scratch->ambiguous_slot[ambiguous_pose] * num_previous + other;
+        ++scratch->ambiguous_count[bucket];
+        scratch->ambiguous.push_back({.bucket = bucket, .quality = 0, .pair = kept});
+      }
     }
     (*pairs)[kept] = pair;
     kept += keep ? 1 : 0;
   }
   pairs->resize(kept);
+  if (limit_ambiguous && num_ambiguous > 0) {
+    kept = LimitAmbiguousPairs(views, geometry, core_joints, previous, options, scratch, pairs);
+  }
   if (options.max_pairs_per_person > 0) kept = ApplyPairBudget(views, geometry, core_joints, previous, options, scratch, pairs);
   return kept;
 }

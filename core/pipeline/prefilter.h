@@ -21,6 +21,11 @@
 // best pairs of every pose (so no pose of the person is left unclaimed, even if the score filter
 // drops one), then the best remaining ones. Quality = sin of the angle at which the viewing rays
 // meet at the person's last position x the 2D confidence both poses share on the core joints.
+//
+// Ambiguous pairs (an addition too): an ambiguous pose near person q pairs with every pose matched
+// to q, up to one per view. Of those pairs only the max_pairs_per_ambiguous_pose best are kept
+// (quality as above, at q's last position): enough for the pose to join q's group, should it be
+// q, or to start its own group with another ambiguous or free pose, should it be a new person.
 #pragma once
 
 #include <array>
@@ -50,13 +55,20 @@ struct PreviousPersons {
 inline constexpr int kPoseFree = -1;
 inline constexpr int kPoseAmbiguous = -2;
 
+// A pair of an ambiguous pose with a pose matched to a person, and its quality (see above).
+struct AmbiguousPair {
+  int bucket;  // the ambiguous pose's number x the number of previous persons + the person
+  double quality;
+  int pair;  // index into the pairs
+};
+
 struct PrefilterScratch {
   std::vector<int> match;         // per pose: person index, kPoseFree or kPoseAmbiguous
   std::vector<double> distance;   // per pose: distance to the matched person (px)
   std::vector<uint64_t> near;     // per pose, (previous persons + 63) / 64 words: bit q set when
                                   // person q is within twice the radius
   std::vector<Eigen::Vector2d> projected;  // per view, person and core joint (NaN = not visible)
-  std::vector<int> bucket_begin;           // per previous person + 1: offsets into bucket
+  std::vector<int> bucket_begin;           // per bucket + 1 (previous person, or ambiguous pose and person): offsets
   std::vector<int> bucket;                 // pair indices grouped by matched person
   std::vector<int> bucket_fill;
   std::vector<Eigen::Vector3d> directions;  // per view: unit vector from the person to the camera
@@ -65,6 +77,11 @@ struct PrefilterScratch {
   std::vector<char> keep;                      // per pair
   std::vector<std::array<int, 2>> best_two;    // per pose: its two best entries of `budget` (-1: none)
   std::vector<double> core_sqrt_scores;    // per pose and core joint: sqrt(score), when the core columns lack them
+  std::vector<int> ambiguous_slot;         // per pose: its number among the ambiguous poses (-1: not ambiguous)
+  std::vector<int> ambiguous_pose;         // per ambiguous pose number: the pose
+  std::vector<int> ambiguous_count;        // per ambiguous pose and previous person: its pairs with that person
+  std::vector<AmbiguousPair> ambiguous;    // the pairs of an ambiguous pose with a matched one, in pair order
+  std::vector<AmbiguousPair> ambiguous_sorted;  // the same, by bucket
 };
 
 namespace steps {

@@ -506,6 +506,89 @@ TEST(Prefilter, AnAmbiguousPosePairsOnlyWithThePersonsItIsAmbiguousBetween) {
   }
 }
 
+// Of the pairs of an ambiguous pose with the poses matched to one person, only the
+// max_pairs_per_ambiguous_pose best are kept (prefilter.h), best = sin of the angle between the
+// two cameras' directions from that person's last centre x the 2D confidence the poses share on
+// the core joints, worked out here; its pairs with free poses are not limited. The scene of the
+// test above: ambiguous pose 0 in view 0, `person` matched in views 1-3, the newcomer free.
+TEST(Prefilter, AnAmbiguousPoseKeepsOnlyItsBestPairsWithEachPerson) {
+  const Eigen::Matrix4Xd person = test::StandingPerson(0, 0);
+  Eigen::Matrix4Xd beside = person;
+  beside.row(1).array() += 0.3;
+  const Eigen::Matrix4Xd elsewhere = test::StandingPerson(0.5, -1.6);
+  const Eigen::Matrix4Xd newcomer = test::StandingPerson(-1.59, 0.85);
+  StepFixture f(4, {person, elsewhere, newcomer});
+  const Poses2D there = test::ProjectPersons({f.cameras[0]}, {beside})[0];
+  f.views[0].Person(0).topRows(2) = 0.5 * (f.views[0].Person(0).topRows(2) + there.Person(0).topRows(2));
+  // Confidences differ per view, so the evidence counts in the ranking too: view 2's ray angle
+  // with view 0 has the smallest sine, but view 2 beats view 1 on confidence.
+  const double confidence[4] = {0.9, 0.3, 0.95, 0.7};
+  for (int v = 0; v < 4; ++v) f.views[v].Person(0).row(2).setConstant(confidence[v]);
+  f.Prepare();
+  ASSERT_EQ(f.prepared.num_poses(), 12);
+  const PreviousPersons previous = PreviousOf(f, {person, beside, elsewhere});
+  std::vector<PosePair> all, pairs;
+  steps::MakePairs(f.prepared, &all);
+  // The quality of the ambiguous pose's pair with `person` in view v, at person's last centre.
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  for (int c : f.core) centre += person.col(c).head<3>();
+  centre /= static_cast<double>(f.core.size());
+  auto quality = [&](int v) {
+    const Eigen::Vector3d d0 = (f.geometry[0].center - centre).normalized();
+    const Eigen::Vector3d dv = (f.geometry[v].center - centre).normalized();
+    double evidence = 0;
+    for (int c : f.core) evidence += f.prepared.Pose(0)[c].sqrt_score * f.prepared.Pose(3 * v)[c].sqrt_score;
+    return d0.cross(dv).norm() * evidence;
+  };
+  std::vector<int> ranked = {1, 2, 3};  // best first
+  std::sort(ranked.begin(), ranked.end(), [&](int x, int y) { return quality(x) > quality(y); });
+  ASSERT_GT(quality(ranked[0]), quality(ranked[1]) * 1.05);  // a clear ranking
+  ASSERT_GT(quality(ranked[1]), quality(ranked[2]) * 1.05);
+  for (const int limit : {1, 2, 3, 0}) {
+    PrefilterScratch scratch;
+    PrefilterOptions options;
+    options.max_pairs_per_ambiguous_pose = limit;
+    const int kept = RunPrefilter(f, previous, options, all, &pairs, &scratch);
+    ASSERT_EQ(scratch.match[0], kPoseAmbiguous);
+    std::vector<int> with_person;  // views of person's poses kept with the ambiguous pose
+    int with_newcomer = 0;
+    for (int k = 0; k < kept; ++k) {
+      if (pairs[k].a != 0) continue;
+      const int other = f.prepared.person_of[pairs[k].b];
+      if (other == 0) with_person.push_back(f.prepared.view_of[pairs[k].b]);
+      if (other == 2) ++with_newcomer;
+    }
+    std::vector<int> expected(ranked.begin(), ranked.begin() + (limit == 0 ? 3 : limit));
+    std::sort(expected.begin(), expected.end());
+    EXPECT_EQ(with_person, expected) << "limit " << limit;
+    EXPECT_EQ(with_newcomer, 3) << "limit " << limit;
+    // The other pairs are untouched: 6 of `elsewhere`, 6 of the newcomer, 3 of person's without pose 0.
+    EXPECT_EQ(kept, 15 + static_cast<int>(expected.size()) + 3) << "limit " << limit;
+  }
+  // Near two persons, each has its own limit: with twice the radius just past `elsewhere` (see the
+  // test above) pose 0 pairs with `elsewhere` too, and keeps its best pair with each of the two.
+  double sum = 0;
+  for (int c : f.core) {
+    const Keypoint &p0 = f.prepared.Pose(0)[c], &p1 = f.prepared.Pose(1)[c];
+    sum += std::hypot(p0.u - p1.u, p0.v - p1.v);
+  }
+  PrefilterOptions options;
+  options.max_distance_rel = 1.02 * sum / static_cast<double>(f.core.size()) / f.prepared.bbox_diag[0] / 2;
+  for (const int limit : {0, 1}) {
+    options.max_pairs_per_ambiguous_pose = limit;
+    PrefilterScratch scratch;
+    const int kept = RunPrefilter(f, previous, options, all, &pairs, &scratch);
+    ASSERT_EQ(scratch.match[0], kPoseAmbiguous);
+    int with[3] = {0, 0, 0};
+    for (int k = 0; k < kept; ++k) {
+      if (pairs[k].a == 0) ++with[f.prepared.person_of[pairs[k].b]];
+    }
+    EXPECT_EQ(with[0], limit == 0 ? 3 : 1) << "limit " << limit;
+    EXPECT_EQ(with[1], limit == 0 ? 3 : 1) << "limit " << limit;
+    EXPECT_EQ(with[2], 3) << "limit " << limit;
+  }
+}
+
 TEST(TriangulateCore, ExactRecoveryWithMidpointAndDlt) {
   StepFixture f(4, {test::StandingPerson(0.5, 0.3, 1.0)});
   f.Prepare();
