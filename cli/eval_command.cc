@@ -98,6 +98,8 @@ void RunEval(const EvalArgs& args) {
               run.frames, run.sequences.empty() ? 0 : run.sequences.front().cameras, run.gt_persons,
               run.output_persons);
   std::printf("%s\n", engine::PaperRow(run).c_str());
+  const std::string invalid_causes = engine::InvalidCausesLine(run.metrics, config.metrics.match_threshold_mm);
+  if (!invalid_causes.empty()) std::printf("%s\n", invalid_causes.c_str());
   std::printf("evaluated %ld frames in %.2f s (%.0f frames/s, %d thread(s) over %zu sequence(s))\n", run.frames,
               run.wall_seconds, run.wall_seconds > 0 ? run.frames / run.wall_seconds : 0.0, run.threads,
               run.sequences.size());

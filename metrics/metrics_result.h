@@ -47,6 +47,15 @@ struct PcpPartResult {
   double pcp = 0.0;    // percent
 };
 
+// Why the counted predictions that are not matches (Invalid's numerator) are not, by their nearest
+// GT person (MPJPE) and the gate G = match_threshold_mm; the four counts sum to the false positives.
+struct InvalidCauses {
+  int duplicate = 0;    // nearest GT within G, but matched to another prediction (a second copy)
+  int near_gt = 0;      // nearest GT at G to 2G: a person placed off, or mixed from two people
+  int far_from_gt = 0;  // nearest GT at 2G or farther: a phantom, or a person the GT does not label
+  int no_gt = 0;        // no GT person to compare with (a frame without GT, or no joint in common)
+};
+
 // All values are percentages except *_mm and the counts. A ratio with a zero denominator is NaN.
 struct MetricsResult {
   double pcp = 0.0;        // generic 13-joint PCP (all GT persons)
@@ -68,6 +77,7 @@ struct MetricsResult {
   int num_matches = 0;              // TP pairs at match_threshold_mm
   int num_missing_pred_joints = 0;  // GT-valid joints of matched pairs that the prediction lacks
   int num_unaligned_matches = 0;    // matched pairs left out of aligned MPJPE (pelvis unavailable)
+  InvalidCauses invalid_causes;     // the counted predictions that are not matches, by cause
 
   std::vector<JointResult> joints;       // evaluated joints, in EvalOptions order
   std::vector<PcpPartResult> pcp_parts;  // GenericPcpParts() order

@@ -38,6 +38,17 @@
         : 'The paper has no row for this dataset.';
     const legacy = (data.summary || {}).legacy_pcp;
     if (legacy !== undefined && legacy !== null) el('summary-note').textContent += ' Legacy PCP (actors 1-3): ' + fmt(legacy, 1) + ' %.';
+    // Why the Invalid predictions are not matches (summary.json "invalid_causes", docs/diagnostics.md).
+    const causes = (data.summary || {}).invalid_causes;
+    if (causes && typeof causes === 'object') {
+      const count = (key) => (typeof causes[key] === 'number' ? causes[key] : 0);
+      const total = count('duplicate') + count('near_gt') + count('far_from_gt') + count('no_gt');
+      if (total > 0) {
+        el('summary-note').textContent += ' Unmatched predictions (Invalid): ' + total + ' = ' + count('duplicate') +
+            ' duplicate, ' + count('near_gt') + ' near a GT person, ' + count('far_from_gt') +
+            ' far from every GT person, ' + count('no_gt') + ' without GT.';
+      }
+    }
     // PCP per part (summary.json "pcp_parts"); names are set as text, never as markup.
     const parts = (data.summary || {}).pcp_parts;
     if (parts && typeof parts === 'object' && Object.keys(parts).length) {

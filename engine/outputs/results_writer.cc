@@ -117,6 +117,10 @@ void AddCountColumns(const metrics::MetricsResult& m, OrderedJson* j) {
     if (part.total > 0) parts[part.name] = Number(part.pcp);
   }
   if (!parts.empty()) (*j)["pcp_parts"] = parts;
+  (*j)["invalid_causes"] = {{"duplicate", m.invalid_causes.duplicate},
+                            {"near_gt", m.invalid_causes.near_gt},
+                            {"far_from_gt", m.invalid_causes.far_from_gt},
+                            {"no_gt", m.invalid_causes.no_gt}};
   if (!m.wholebody.empty()) {
     OrderedJson groups;
     for (const auto& g : m.wholebody) groups[g.name] = Number(g.mpjpe_mm);
@@ -167,6 +171,7 @@ OrderedJson SummaryJson(const RunResult& run) {
     if (j.contains(key)) units[key] = "%";
   }
   if (j.contains("pcp_parts")) units["pcp_parts"] = "%";
+  units["invalid_causes"] = "predictions";
   j["units"] = units;
   return j;
 }
@@ -262,6 +267,18 @@ std::string PaperRow(const RunResult& run) {
                 Cell(j["pcp"]).c_str(), Cell(j["pck100"]).c_str(), Cell(j["pck500"]).c_str(),
                 Cell(j["mpjpe_mm"]).c_str(), Cell(j["recall100"]).c_str(), Cell(j["recall500"]).c_str(),
                 Cell(j["invalid"]).c_str(), Cell(j["f1"]).c_str(), Cell(j["fps"], 0).c_str());
+  return line;
+}
+
+std::string InvalidCausesLine(const metrics::MetricsResult& m, double gate_mm) {
+  const metrics::InvalidCauses& c = m.invalid_causes;
+  const int total = c.duplicate + c.near_gt + c.far_from_gt + c.no_gt;
+  if (total == 0) return "";
+  char line[512];
+  std::snprintf(line, sizeof(line),
+                "unmatched predictions (Invalid): %d = %d duplicate (nearest GT person matched to another) + %d near "
+                "a GT person (%.0f-%.0f mm) + %d far from every GT person + %d without GT to compare",
+                total, c.duplicate, c.near_gt, gate_mm, 2 * gate_mm, c.far_from_gt, c.no_gt);
   return line;
 }
 

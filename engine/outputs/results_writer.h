@@ -57,6 +57,10 @@ std::string SummaryMarkdown(const std::vector<std::pair<std::string, nlohmann::o
 // The paper-style row printed on the terminal: PCP | PCK@100/500 | MPJPE | Recall@100/500 | Invalid | F1 | FPS.
 std::string PaperRow(const RunResult& run);
 
+// The counted predictions that are not matches, by cause (metrics::InvalidCauses), as one line;
+// empty when there are none. `gate_mm` = metrics.match_threshold_mm.
+std::string InvalidCausesLine(const metrics::MetricsResult& m, double gate_mm);
+
 // The output folder of a run (`rpt eval`, `rpt triangulate`): built beside the target and swapped
 // in whole when complete (io::StagedFolder), so `dir` holds either its old contents or the complete
 // new run. predictions.json streams in while the run goes (sink()); Finish() writes

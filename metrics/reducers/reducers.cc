@@ -8,6 +8,7 @@ MetricTotals::MetricTotals(const EvalOptions& options) {
   const size_t num_parts = GenericPcpParts().size();
   const size_t num_groups = options.wholebody_groups ? WholeBodyGroups().size() : 0;
   counts.gt_valid_per_joint.assign(num_joints, 0);
+  invalid.gate_mm = options.match_threshold_mm;
   per_joint.error_sum_mm.assign(num_joints, 0.0);
   per_joint.error_count.assign(num_joints, 0);
   per_joint.hits_100.assign(num_joints, 0);
@@ -23,6 +24,7 @@ MetricTotals::MetricTotals(const EvalOptions& options) {
 void MetricTotals::Fold(const FrameRecords& frame) {
   counts.Fold(frame);
   recall.Fold(frame);
+  invalid.Fold(frame);
   mpjpe.Fold(frame);
   pck.Fold(frame);
   per_joint.Fold(frame);
@@ -35,6 +37,7 @@ void MetricTotals::Fold(const FrameRecords& frame) {
 void MetricTotals::Merge(const MetricTotals& other) {
   counts.Merge(other.counts);
   recall.Merge(other.recall);
+  invalid.Merge(other.invalid);
   mpjpe.Merge(other.mpjpe);
   pck.Merge(other.pck);
   per_joint.Merge(other.per_joint);

@@ -44,6 +44,14 @@ struct CountTotals {
   void Merge(const CountTotals& other);
 };
 
+// invalid.cc: the counted predictions that are not matches, by cause (InvalidCauses).
+struct InvalidTotals {
+  double gate_mm = 0;  // match_threshold_mm
+  InvalidCauses causes;
+  void Fold(const FrameRecords& frame);
+  void Merge(const InvalidTotals& other);
+};
+
 // recall.cc: matches at 100 and 500 mm.
 struct RecallTotals {
   int num_matches_100 = 0;
@@ -123,6 +131,7 @@ struct MetricTotals {
   explicit MetricTotals(const EvalOptions& options);  // sizes the per-joint, per-part and per-group totals
   CountTotals counts;
   RecallTotals recall;
+  InvalidTotals invalid;
   MpjpeTotals mpjpe;
   PckTotals pck;
   PerJointTotals per_joint;
@@ -138,7 +147,7 @@ using MetricReducer = void (*)(const MetricTotals& totals, const EvalOptions& op
 
 void ReduceCounts(const MetricTotals&, const EvalOptions&, MetricsResult*);     // num_*
 void ReduceRecall(const MetricTotals&, const EvalOptions&, MetricsResult*);     // recall_100/500
-void ReduceInvalid(const MetricTotals&, const EvalOptions&, MetricsResult*);    // invalid
+void ReduceInvalid(const MetricTotals&, const EvalOptions&, MetricsResult*);    // invalid, invalid_causes
 void ReduceF1(const MetricTotals&, const EvalOptions&, MetricsResult*);         // f1
 void ReduceMpjpe(const MetricTotals&, const EvalOptions&, MetricsResult*);      // mpjpe_mm
 void ReducePck(const MetricTotals&, const EvalOptions&, MetricsResult*);        // pck_100/500

@@ -84,6 +84,25 @@ TEST(ResultsWriter, PcpPerPartInJson) {
   EXPECT_FALSE(SummaryJson(RunResult{}).contains("pcp_parts")) << "no part evaluated";
 }
 
+// The unmatched predictions by cause: counts under their names in summary.json (unit
+// "predictions"), and the terminal line that names the ranges by the gate.
+TEST(ResultsWriter, InvalidCausesInJsonAndOnTheTerminal) {
+  RunResult run;
+  run.metrics.invalid_causes = {.duplicate = 1, .near_gt = 2, .far_from_gt = 3, .no_gt = 4};
+  const nlohmann::ordered_json summary = SummaryJson(run);
+  ASSERT_TRUE(summary.contains("invalid_causes"));
+  const nlohmann::ordered_json& causes = summary["invalid_causes"];
+  EXPECT_EQ(causes["duplicate"], 1);
+  EXPECT_EQ(causes["near_gt"], 2);
+  EXPECT_EQ(causes["far_from_gt"], 3);
+  EXPECT_EQ(causes["no_gt"], 4);
+  EXPECT_EQ(summary["units"]["invalid_causes"], "predictions");
+  EXPECT_EQ(InvalidCausesLine(run.metrics, 500),
+            "unmatched predictions (Invalid): 10 = 1 duplicate (nearest GT person matched to another) + 2 near a GT "
+            "person (500-1000 mm) + 3 far from every GT person + 4 without GT to compare");
+  EXPECT_EQ(InvalidCausesLine(metrics::MetricsResult{}, 500), "") << "nothing unmatched: no line";
+}
+
 // Legacy Shelf/Campus PCP: the papers report it per actor and as the average over actors 1-3.
 TEST(ResultsWriter, LegacyPcpPerActorInJsonCsvAndMarkdown) {
   RunResult run;

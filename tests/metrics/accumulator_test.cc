@@ -263,6 +263,60 @@ TEST(MetricsAccumulator, PredictionsInFrameWithoutGtBothSwitchSettings) {
   EXPECT_NEAR(skipped.recall_500, 100.0, kTol);
 }
 
+// The counted predictions that are not matches, by cause (InvalidCauses), each at the edges of its
+// range: the nearest GT person within the gate but taken by a better-scored prediction (duplicate),
+// at the gate to twice the gate (near), from twice the gate (far), and no GT to compare with (a frame
+// without GT; not counted at all when such frames are skipped). The causes sum to the false positives.
+TEST(MetricsAccumulator, InvalidPredictionsByCauseAtTheEdgesOfEachRange) {
+  // A prediction d mm from GT person 0 on every joint (|(0.6, 0, 0.8)| d; the other GT is 10 m away).
+  auto at = [](double d_mm) { return Shifted(PersonAt(0.0), {0.0006 * d_mm, 0.0, 0.0008 * d_mm}); };
+  Frame frame;
+  frame.Gt(PersonAt(0.0));
+  frame.Gt(PersonAt(10.0));
+  frame.Pred(at(0));             // the match
+  frame.Pred(at(499), 0.5);      // within the gate, lower score: duplicate
+  frame.Pred(at(501));           // just outside the gate: near
+  frame.Pred(at(999));           // near
+  frame.Pred(at(1001));          // just outside twice the gate: far
+  frame.Pred(PersonAt(5.0));     // 5 m from both: far
+  Frame without_gt;
+  without_gt.Pred(PersonAt(0.0));
+  const MetricsResult r = Evaluate({frame, without_gt});
+  EXPECT_EQ(r.num_matches, 1);
+  EXPECT_EQ(r.invalid_causes.duplicate, 1);
+  EXPECT_EQ(r.invalid_causes.near_gt, 2);
+  EXPECT_EQ(r.invalid_causes.far_from_gt, 2);
+  EXPECT_EQ(r.invalid_causes.no_gt, 1);
+  EXPECT_NEAR(r.invalid, 100.0 * 6 / 7, kTol);  // the six causes over the seven counted predictions
+
+  // The ranges follow the gate: at 1000 mm the 501 and 999 mm predictions are duplicates of person 0
+  // (greedy matching: one match per GT person), 1001 and 5 m are near (1000 to 2000 mm).
+  EvalOptions wide;
+  wide.match_threshold_mm = 1000;
+  const MetricsResult w = Evaluate({frame, without_gt}, wide);
+  EXPECT_EQ(w.invalid_causes.duplicate, 3);
+  EXPECT_EQ(w.invalid_causes.near_gt, 1);
+  EXPECT_EQ(w.invalid_causes.far_from_gt, 1);
+  EXPECT_EQ(w.invalid_causes.no_gt, 1);
+
+  // Frames without GT not counted: neither in Invalid nor among its causes.
+  EvalOptions skip;
+  skip.count_preds_without_gt = false;
+  const MetricsResult s = Evaluate({frame, without_gt}, skip);
+  EXPECT_EQ(s.invalid_causes.no_gt, 0);
+  EXPECT_EQ(s.invalid_causes.duplicate + s.invalid_causes.near_gt + s.invalid_causes.far_from_gt, 5);
+
+  // Hungarian matching: the duplicate within the gate is still a duplicate.
+  EvalOptions hungarian;
+  hungarian.matching = MatchingMode::kHungarian;
+  const MetricsResult h = Evaluate({frame, without_gt}, hungarian);
+  EXPECT_EQ(h.num_matches, 1);
+  EXPECT_EQ(h.invalid_causes.duplicate, 1);
+  EXPECT_EQ(h.invalid_causes.near_gt, 2);
+  EXPECT_EQ(h.invalid_causes.far_from_gt, 2);
+  EXPECT_EQ(h.invalid_causes.no_gt, 1);
+}
+
 TEST(MetricsAccumulator, FrameWithoutGtMayOmitJointNames) {
   MetricsAccumulator accumulator;
   Poses3D pred = EmptyPoses(17);

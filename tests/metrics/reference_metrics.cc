@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <limits>
 #include <optional>
+#include <set>
 #include <utility>
 
 #include "core/errors.h"
@@ -32,6 +33,7 @@ enum PairFlag : std::uint8_t { kNearest = 1, kHungarianMatch = 2, kHungarian100 
 struct PairRecord {
   MatchRecord match;
   std::uint8_t flags = 0;
+  int frame = -1;  // the frame's number in the order added
   int pred_idx = -1;
   int gt_idx = -1;
   bool counted = true;
@@ -350,6 +352,7 @@ void ReferenceAccumulator::Add(std::string_view frame_id, const Poses3D& gt, con
     } else {
       record.match = MatchRecord{-1, kInf, scores[p]};
     }
+    record.frame = records_.num_frames;
     record.pred_idx = p;
     record.gt_idx = g;
     record.counted = counted;
@@ -411,6 +414,26 @@ MetricsResult ReferenceAccumulator::Finalize() const {
   {
     const int false_positives = records.num_pred_counted - CountMatches(matches.at_gate);
     result.invalid = Percent(false_positives, records.num_pred_counted);
+    // The unmatched counted predictions by their nearest pair: matched = any pair of the same
+    // (frame, prediction) matched at the gate.
+    std::set<std::pair<int, int>> matched;
+    for (size_t r = 0; r < records.pairs.size(); ++r) {
+      if (matches.at_gate[r]) matched.insert({records.pairs[r].frame, records.pairs[r].pred_idx});
+    }
+    const double gate = options.match_threshold_mm;
+    for (const PairRecord& pair : records.pairs) {
+      if (!(pair.flags & kNearest) || !pair.counted || matched.count({pair.frame, pair.pred_idx}) > 0) continue;
+      InvalidCauses& c = result.invalid_causes;
+      if (pair.gt_idx < 0) {
+        ++c.no_gt;
+      } else if (pair.match.error_mm < gate) {
+        ++c.duplicate;
+      } else if (pair.match.error_mm < 2 * gate) {
+        ++c.near_gt;
+      } else {
+        ++c.far_from_gt;
+      }
+    }
   }
 
   // ReduceF1

@@ -45,6 +45,10 @@ void ExpectIdentical(const MetricsResult& a, const MetricsResult& b, const std::
   EXPECT_EQ(a.num_predictions, b.num_predictions) << context;
   EXPECT_EQ(a.num_predictions_total, b.num_predictions_total) << context;
   EXPECT_EQ(a.num_matches, b.num_matches) << context;
+  EXPECT_EQ(a.invalid_causes.duplicate, b.invalid_causes.duplicate) << context;
+  EXPECT_EQ(a.invalid_causes.near_gt, b.invalid_causes.near_gt) << context;
+  EXPECT_EQ(a.invalid_causes.far_from_gt, b.invalid_causes.far_from_gt) << context;
+  EXPECT_EQ(a.invalid_causes.no_gt, b.invalid_causes.no_gt) << context;
   EXPECT_EQ(a.num_missing_pred_joints, b.num_missing_pred_joints) << context;
   EXPECT_EQ(a.num_unaligned_matches, b.num_unaligned_matches) << context;
   ASSERT_EQ(a.joints.size(), b.joints.size()) << context;

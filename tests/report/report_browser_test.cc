@@ -89,6 +89,22 @@ void CheckInBrowser(const fs::path& dir, const std::string& name) {
     EXPECT_NE(parts.find(cell), std::string::npos) << part << " " << cell;
   }
 
+  // Why the Invalid predictions are not matches: one sentence in the summary note, from
+  // summary.json's "invalid_causes", only when there are any.
+  const Json& causes = summary["invalid_causes"];
+  const int unmatched = causes["duplicate"].get<int>() + causes["near_gt"].get<int>() +
+                        causes["far_from_gt"].get<int>() + causes["no_gt"].get<int>();
+  const std::string sentence = "Unmatched predictions (Invalid): " + std::to_string(unmatched) + " = " +
+                               std::to_string(causes["duplicate"].get<int>()) + " duplicate, " +
+                               std::to_string(causes["near_gt"].get<int>()) + " near a GT person, " +
+                               std::to_string(causes["far_from_gt"].get<int>()) + " far from every GT person, " +
+                               std::to_string(causes["no_gt"].get<int>()) + " without GT.";
+  const size_t note_at = dom.find("id=\"summary-note\"");
+  ASSERT_NE(note_at, std::string::npos);
+  const std::string note = dom.substr(note_at, dom.find("</p>", note_at) - note_at);
+  EXPECT_EQ(note.find(sentence) != std::string::npos, unmatched > 0) << note << "\nexpected: " << sentence;
+  EXPECT_EQ(note.find("Unmatched predictions") != std::string::npos, unmatched > 0) << note;
+
   // Screenshots (two more Chromium runs, about a third of this test's time each) for the synthetic
   // run always, for the fixtures when RPT_REPORT_SCREENSHOTS asks for them (docs/report.md).
   if (name != "synthetic" && std::getenv("RPT_REPORT_SCREENSHOTS") == nullptr) return;
