@@ -108,6 +108,28 @@ for key, row in tables[0].items():
 PY
 }
 
+invalid_causes_table() {
+  echo "## Why predictions are Invalid"
+  echo
+  echo "\`rpt eval\` (docs/diagnostics.md, section 5): every counted prediction that is not a match, by its"
+  echo "nearest GT person and the 500 mm gate; folders mvor-openpose and shelf4da-openpose, \`invalid_causes\` in summary.json."
+  echo
+  python3 - "$OUT/real/mvor-openpose/summary.json" "$OUT/real/shelf4da-openpose/summary.json" <<'PY'
+import json, sys
+runs = [json.load(open(path)) for path in sys.argv[1:]]
+rows = [("duplicate", "duplicate: nearest GT person within 500 mm, matched to another prediction"),
+        ("near_gt", "near_gt: nearest GT person 500 to 1000 mm away"),
+        ("far_from_gt", "far_from_gt: every GT person 1000 mm or farther away"),
+        ("no_gt", "no_gt: no GT person to compare with (a frame without GT)")]
+print("| cause | MVOR, shipped OpenPose | Shelf, 4D-Association OpenPose |")
+print("|---|---|---|")
+for key, label in rows:
+    print(f"| {label} | " + " | ".join(str(run["invalid_causes"][key]) for run in runs) + " |")
+print("| **all unmatched** (Invalid: their share of the predictions) | " +
+      " | ".join(f"{sum(run['invalid_causes'].values())} ({run['invalid']:.1f} % of {run['predictions']})" for run in runs) + " |")
+PY
+}
+
 real_results() {
   sweep real/ablations-mvor --dataset mvor --root "$SHARED/mvor" --list results/ablations.json
   sweep real/ablations-shelf4da --dataset shelf-4da --root "$SHARED/shelf/4d_association" --list results/ablations.json
@@ -159,6 +181,8 @@ real_results() {
     adapter_table
     echo
     loss_table
+    echo
+    invalid_causes_table
   } > "$OUT/real/README.md"
   echo "wrote $OUT/real/README.md"
 }
