@@ -50,10 +50,12 @@ struct PcpPartResult {
 // Why the counted predictions that are not matches (Invalid's numerator) are not, by their nearest
 // GT person (MPJPE) and the gate G = match_threshold_mm; the four counts sum to the false positives.
 struct InvalidCauses {
-  int duplicate = 0;    // nearest GT within G, but matched to another prediction (a second copy)
-  int near_gt = 0;      // nearest GT at G to 2G: a person placed off, or mixed from two people
-  int far_from_gt = 0;  // nearest GT at 2G or farther: a phantom, or a person the GT does not label
-  int no_gt = 0;        // no GT person to compare with (a frame without GT, or no joint in common)
+  int duplicate = 0;        // nearest GT within G, but matched to another prediction (a second copy)
+  int near_matched_gt = 0;  // nearest GT at G to 2G and matched to another prediction: a ghost beside a found person
+  int near_missed_gt = 0;   // nearest GT at G to 2G and matched to none: that person placed off, or mixed
+  int far_from_gt = 0;      // nearest GT at 2G or farther: a phantom, or a person the GT does not label
+  int no_gt = 0;            // no GT person to compare with (a frame without GT, or no joint in common)
+  int Total() const { return duplicate + near_matched_gt + near_missed_gt + far_from_gt + no_gt; }
 };
 
 // All values are percentages except *_mm and the counts. A ratio with a zero denominator is NaN.

@@ -42,10 +42,11 @@
     const causes = (data.summary || {}).invalid_causes;
     if (causes && typeof causes === 'object') {
       const count = (key) => (typeof causes[key] === 'number' ? causes[key] : 0);
-      const total = count('duplicate') + count('near_gt') + count('far_from_gt') + count('no_gt');
+      const total = count('duplicate') + count('near_matched_gt') + count('near_missed_gt') + count('far_from_gt') + count('no_gt');
       if (total > 0) {
         el('summary-note').textContent += ' Unmatched predictions (Invalid): ' + total + ' = ' + count('duplicate') +
-            ' duplicate, ' + count('near_gt') + ' near a GT person, ' + count('far_from_gt') +
+            ' duplicate, ' + count('near_matched_gt') + ' beside a found person, ' + count('near_missed_gt') +
+            ' near a missed person, ' + count('far_from_gt') +
             ' far from every GT person, ' + count('no_gt') + ' without GT.';
       }
     }

@@ -118,7 +118,8 @@ invalid_causes_table() {
 import json, sys
 runs = [json.load(open(path)) for path in sys.argv[1:]]
 rows = [("duplicate", "duplicate: nearest GT person within 500 mm, matched to another prediction"),
-        ("near_gt", "near_gt: nearest GT person 500 to 1000 mm away"),
+        ("near_matched_gt", "near_matched_gt: nearest GT person 500 to 1000 mm away, matched to another prediction"),
+        ("near_missed_gt", "near_missed_gt: nearest GT person 500 to 1000 mm away, matched to none"),
         ("far_from_gt", "far_from_gt: every GT person 1000 mm or farther away"),
         ("no_gt", "no_gt: no GT person to compare with (a frame without GT)")]
 print("| cause | MVOR, shipped OpenPose | Shelf, 4D-Association OpenPose |")

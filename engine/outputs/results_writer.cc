@@ -118,7 +118,8 @@ void AddCountColumns(const metrics::MetricsResult& m, OrderedJson* j) {
   }
   if (!parts.empty()) (*j)["pcp_parts"] = parts;
   (*j)["invalid_causes"] = {{"duplicate", m.invalid_causes.duplicate},
-                            {"near_gt", m.invalid_causes.near_gt},
+                            {"near_matched_gt", m.invalid_causes.near_matched_gt},
+                            {"near_missed_gt", m.invalid_causes.near_missed_gt},
                             {"far_from_gt", m.invalid_causes.far_from_gt},
                             {"no_gt", m.invalid_causes.no_gt}};
   if (!m.wholebody.empty()) {
@@ -272,13 +273,13 @@ std::string PaperRow(const RunResult& run) {
 
 std::string InvalidCausesLine(const metrics::MetricsResult& m, double gate_mm) {
   const metrics::InvalidCauses& c = m.invalid_causes;
-  const int total = c.duplicate + c.near_gt + c.far_from_gt + c.no_gt;
-  if (total == 0) return "";
+  if (c.Total() == 0) return "";
   char line[512];
   std::snprintf(line, sizeof(line),
-                "unmatched predictions (Invalid): %d = %d duplicate (nearest GT person matched to another) + %d near "
-                "a GT person (%.0f-%.0f mm) + %d far from every GT person + %d without GT to compare",
-                total, c.duplicate, c.near_gt, gate_mm, 2 * gate_mm, c.far_from_gt, c.no_gt);
+                "unmatched predictions (Invalid): %d = %d duplicate + %d beside a found person (%.0f-%.0f mm) + %d "
+                "near a missed person (%.0f-%.0f mm) + %d far from every GT person + %d without GT to compare",
+                c.Total(), c.duplicate, c.near_matched_gt, gate_mm, 2 * gate_mm, c.near_missed_gt, gate_mm,
+                2 * gate_mm, c.far_from_gt, c.no_gt);
   return line;
 }
 

@@ -21,7 +21,11 @@ void InvalidTotals::Fold(const FrameRecords& frame) {
     } else if (nearest.error_mm < gate_mm) {
       ++causes.duplicate;
     } else if (nearest.error_mm < 2 * gate_mm) {
-      ++causes.near_gt;
+      const int g = nearest.gt_idx;
+      const bool gt_matched = std::any_of(frame.pairs.begin(), frame.pairs.end(), [g](const PairRecord& pair) {
+        return pair.gt_idx == g && (pair.flags & kMatch) != 0;
+      });
+      ++(gt_matched ? causes.near_matched_gt : causes.near_missed_gt);
     } else {
       ++causes.far_from_gt;
     }
@@ -30,7 +34,8 @@ void InvalidTotals::Fold(const FrameRecords& frame) {
 
 void InvalidTotals::Merge(const InvalidTotals& other) {
   causes.duplicate += other.causes.duplicate;
-  causes.near_gt += other.causes.near_gt;
+  causes.near_matched_gt += other.causes.near_matched_gt;
+  causes.near_missed_gt += other.causes.near_missed_gt;
   causes.far_from_gt += other.causes.far_from_gt;
   causes.no_gt += other.causes.no_gt;
 }

@@ -88,18 +88,20 @@ TEST(ResultsWriter, PcpPerPartInJson) {
 // "predictions"), and the terminal line that names the ranges by the gate.
 TEST(ResultsWriter, InvalidCausesInJsonAndOnTheTerminal) {
   RunResult run;
-  run.metrics.invalid_causes = {.duplicate = 1, .near_gt = 2, .far_from_gt = 3, .no_gt = 4};
+  run.metrics.invalid_causes = {
+      .duplicate = 1, .near_matched_gt = 2, .near_missed_gt = 5, .far_from_gt = 3, .no_gt = 4};
   const nlohmann::ordered_json summary = SummaryJson(run);
   ASSERT_TRUE(summary.contains("invalid_causes"));
   const nlohmann::ordered_json& causes = summary["invalid_causes"];
   EXPECT_EQ(causes["duplicate"], 1);
-  EXPECT_EQ(causes["near_gt"], 2);
+  EXPECT_EQ(causes["near_matched_gt"], 2);
+  EXPECT_EQ(causes["near_missed_gt"], 5);
   EXPECT_EQ(causes["far_from_gt"], 3);
   EXPECT_EQ(causes["no_gt"], 4);
   EXPECT_EQ(summary["units"]["invalid_causes"], "predictions");
   EXPECT_EQ(InvalidCausesLine(run.metrics, 500),
-            "unmatched predictions (Invalid): 10 = 1 duplicate (nearest GT person matched to another) + 2 near a GT "
-            "person (500-1000 mm) + 3 far from every GT person + 4 without GT to compare");
+            "unmatched predictions (Invalid): 15 = 1 duplicate + 2 beside a found person (500-1000 mm) + 5 near a "
+            "missed person (500-1000 mm) + 3 far from every GT person + 4 without GT to compare");
   EXPECT_EQ(InvalidCausesLine(metrics::MetricsResult{}, 500), "") << "nothing unmatched: no line";
 }
 

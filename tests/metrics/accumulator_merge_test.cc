@@ -45,11 +45,12 @@ void ExpectMergedEqualsSingle(const MetricsResult& merged, const MetricsResult& 
   EXPECT_EQ(merged.recall_500, single.recall_500);
   EXPECT_EQ(merged.invalid, single.invalid);
   EXPECT_EQ(merged.invalid_causes.duplicate, single.invalid_causes.duplicate);
-  EXPECT_EQ(merged.invalid_causes.near_gt, single.invalid_causes.near_gt);
+  EXPECT_EQ(merged.invalid_causes.near_matched_gt, single.invalid_causes.near_matched_gt);
+  EXPECT_EQ(merged.invalid_causes.near_missed_gt, single.invalid_causes.near_missed_gt);
   EXPECT_EQ(merged.invalid_causes.far_from_gt, single.invalid_causes.far_from_gt);
   EXPECT_EQ(merged.invalid_causes.no_gt, single.invalid_causes.no_gt);
   const InvalidCauses& c = single.invalid_causes;
-  EXPECT_EQ(c.duplicate + c.near_gt + c.far_from_gt + c.no_gt, single.num_predictions - single.num_matches);
+  EXPECT_EQ(c.Total(), single.num_predictions - single.num_matches);
   EXPECT_EQ(merged.f1, single.f1);
   EXPECT_EQ(merged.pck_100, single.pck_100);
   EXPECT_EQ(merged.pck_500, single.pck_500);

@@ -265,37 +265,45 @@ TEST(MetricsAccumulator, PredictionsInFrameWithoutGtBothSwitchSettings) {
 
 // The counted predictions that are not matches, by cause (InvalidCauses), each at the edges of its
 // range: the nearest GT person within the gate but taken by a better-scored prediction (duplicate),
-// at the gate to twice the gate (near), from twice the gate (far), and no GT to compare with (a frame
-// without GT; not counted at all when such frames are skipped). The causes sum to the false positives.
+// at the gate to twice the gate from a person another prediction matched (near_matched_gt) or from
+// a person nobody matched (near_missed_gt), from twice the gate (far), and no GT to compare with (a
+// frame without GT; not counted at all when such frames are skipped). The causes sum to the false
+// positives.
 TEST(MetricsAccumulator, InvalidPredictionsByCauseAtTheEdgesOfEachRange) {
-  // A prediction d mm from GT person 0 on every joint (|(0.6, 0, 0.8)| d; the other GT is 10 m away).
-  auto at = [](double d_mm) { return Shifted(PersonAt(0.0), {0.0006 * d_mm, 0.0, 0.0008 * d_mm}); };
+  // A prediction d mm from a GT person on every joint (|(0.6, 0, 0.8)| d).
+  auto at = [](double x_m, double d_mm) { return Shifted(PersonAt(x_m), {0.0006 * d_mm, 0.0, 0.0008 * d_mm}); };
   Frame frame;
   frame.Gt(PersonAt(0.0));
-  frame.Gt(PersonAt(10.0));
-  frame.Pred(at(0));             // the match
-  frame.Pred(at(499), 0.5);      // within the gate, lower score: duplicate
-  frame.Pred(at(501));           // just outside the gate: near
-  frame.Pred(at(999));           // near
-  frame.Pred(at(1001));          // just outside twice the gate: far
-  frame.Pred(PersonAt(5.0));     // 5 m from both: far
+  frame.Gt(PersonAt(10.0));       // nobody predicts it within the gate
+  frame.Pred(at(0, 0));           // the match of person 0
+  frame.Pred(at(0, 499), 0.5);    // within the gate, lower score: duplicate
+  frame.Pred(at(0, 501));         // just outside the gate of a matched person: near_matched_gt
+  frame.Pred(at(0, 999));         // near_matched_gt
+  frame.Pred(at(0, 1001));        // just outside twice the gate: far
+  frame.Pred(PersonAt(5.0));      // 5 m from both: far
+  frame.Pred(at(10, 700));        // near the person nobody matched: near_missed_gt
   Frame without_gt;
   without_gt.Pred(PersonAt(0.0));
   const MetricsResult r = Evaluate({frame, without_gt});
   EXPECT_EQ(r.num_matches, 1);
   EXPECT_EQ(r.invalid_causes.duplicate, 1);
-  EXPECT_EQ(r.invalid_causes.near_gt, 2);
+  EXPECT_EQ(r.invalid_causes.near_matched_gt, 2);
+  EXPECT_EQ(r.invalid_causes.near_missed_gt, 1);
   EXPECT_EQ(r.invalid_causes.far_from_gt, 2);
   EXPECT_EQ(r.invalid_causes.no_gt, 1);
-  EXPECT_NEAR(r.invalid, 100.0 * 6 / 7, kTol);  // the six causes over the seven counted predictions
+  EXPECT_EQ(r.invalid_causes.Total(), 7);
+  EXPECT_NEAR(r.invalid, 100.0 * 7 / 8, kTol);  // the seven causes over the eight counted predictions
 
-  // The ranges follow the gate: at 1000 mm the 501 and 999 mm predictions are duplicates of person 0
-  // (greedy matching: one match per GT person), 1001 and 5 m are near (1000 to 2000 mm).
+  // The ranges follow the gate: at 1000 mm the 700 mm prediction matches person 1, the 501 and
+  // 999 mm ones are duplicates of person 0 (greedy matching: one match per GT person), 1001 mm is
+  // near person 0 (1000 to 2000 mm), 5 m is far.
   EvalOptions wide;
   wide.match_threshold_mm = 1000;
   const MetricsResult w = Evaluate({frame, without_gt}, wide);
+  EXPECT_EQ(w.num_matches, 2);
   EXPECT_EQ(w.invalid_causes.duplicate, 3);
-  EXPECT_EQ(w.invalid_causes.near_gt, 1);
+  EXPECT_EQ(w.invalid_causes.near_matched_gt, 1);
+  EXPECT_EQ(w.invalid_causes.near_missed_gt, 0);
   EXPECT_EQ(w.invalid_causes.far_from_gt, 1);
   EXPECT_EQ(w.invalid_causes.no_gt, 1);
 
@@ -304,15 +312,16 @@ TEST(MetricsAccumulator, InvalidPredictionsByCauseAtTheEdgesOfEachRange) {
   skip.count_preds_without_gt = false;
   const MetricsResult s = Evaluate({frame, without_gt}, skip);
   EXPECT_EQ(s.invalid_causes.no_gt, 0);
-  EXPECT_EQ(s.invalid_causes.duplicate + s.invalid_causes.near_gt + s.invalid_causes.far_from_gt, 5);
+  EXPECT_EQ(s.invalid_causes.Total(), 6);
 
-  // Hungarian matching: the duplicate within the gate is still a duplicate.
+  // Hungarian matching: the same causes.
   EvalOptions hungarian;
   hungarian.matching = MatchingMode::kHungarian;
   const MetricsResult h = Evaluate({frame, without_gt}, hungarian);
   EXPECT_EQ(h.num_matches, 1);
   EXPECT_EQ(h.invalid_causes.duplicate, 1);
-  EXPECT_EQ(h.invalid_causes.near_gt, 2);
+  EXPECT_EQ(h.invalid_causes.near_matched_gt, 2);
+  EXPECT_EQ(h.invalid_causes.near_missed_gt, 1);
   EXPECT_EQ(h.invalid_causes.far_from_gt, 2);
   EXPECT_EQ(h.invalid_causes.no_gt, 1);
 }

@@ -416,9 +416,11 @@ MetricsResult ReferenceAccumulator::Finalize() const {
     result.invalid = Percent(false_positives, records.num_pred_counted);
     // The unmatched counted predictions by their nearest pair: matched = any pair of the same
     // (frame, prediction) matched at the gate.
-    std::set<std::pair<int, int>> matched;
+    std::set<std::pair<int, int>> matched, matched_gt;  // (frame, prediction), (frame, GT person)
     for (size_t r = 0; r < records.pairs.size(); ++r) {
-      if (matches.at_gate[r]) matched.insert({records.pairs[r].frame, records.pairs[r].pred_idx});
+      if (!matches.at_gate[r]) continue;
+      matched.insert({records.pairs[r].frame, records.pairs[r].pred_idx});
+      matched_gt.insert({records.pairs[r].frame, records.pairs[r].gt_idx});
     }
     const double gate = options.match_threshold_mm;
     for (const PairRecord& pair : records.pairs) {
@@ -429,7 +431,7 @@ MetricsResult ReferenceAccumulator::Finalize() const {
       } else if (pair.match.error_mm < gate) {
         ++c.duplicate;
       } else if (pair.match.error_mm < 2 * gate) {
-        ++c.near_gt;
+        ++(matched_gt.count({pair.frame, pair.gt_idx}) > 0 ? c.near_matched_gt : c.near_missed_gt);
       } else {
         ++c.far_from_gt;
       }

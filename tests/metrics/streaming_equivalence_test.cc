@@ -46,7 +46,8 @@ void ExpectIdentical(const MetricsResult& a, const MetricsResult& b, const std::
   EXPECT_EQ(a.num_predictions_total, b.num_predictions_total) << context;
   EXPECT_EQ(a.num_matches, b.num_matches) << context;
   EXPECT_EQ(a.invalid_causes.duplicate, b.invalid_causes.duplicate) << context;
-  EXPECT_EQ(a.invalid_causes.near_gt, b.invalid_causes.near_gt) << context;
+  EXPECT_EQ(a.invalid_causes.near_matched_gt, b.invalid_causes.near_matched_gt) << context;
+  EXPECT_EQ(a.invalid_causes.near_missed_gt, b.invalid_causes.near_missed_gt) << context;
   EXPECT_EQ(a.invalid_causes.far_from_gt, b.invalid_causes.far_from_gt) << context;
   EXPECT_EQ(a.invalid_causes.no_gt, b.invalid_causes.no_gt) << context;
   EXPECT_EQ(a.num_missing_pred_joints, b.num_missing_pred_joints) << context;

@@ -92,11 +92,13 @@ void CheckInBrowser(const fs::path& dir, const std::string& name) {
   // Why the Invalid predictions are not matches: one sentence in the summary note, from
   // summary.json's "invalid_causes", only when there are any.
   const Json& causes = summary["invalid_causes"];
-  const int unmatched = causes["duplicate"].get<int>() + causes["near_gt"].get<int>() +
-                        causes["far_from_gt"].get<int>() + causes["no_gt"].get<int>();
+  const int unmatched = causes["duplicate"].get<int>() + causes["near_matched_gt"].get<int>() +
+                        causes["near_missed_gt"].get<int>() + causes["far_from_gt"].get<int>() +
+                        causes["no_gt"].get<int>();
   const std::string sentence = "Unmatched predictions (Invalid): " + std::to_string(unmatched) + " = " +
                                std::to_string(causes["duplicate"].get<int>()) + " duplicate, " +
-                               std::to_string(causes["near_gt"].get<int>()) + " near a GT person, " +
+                               std::to_string(causes["near_matched_gt"].get<int>()) + " beside a found person, " +
+                               std::to_string(causes["near_missed_gt"].get<int>()) + " near a missed person, " +
                                std::to_string(causes["far_from_gt"].get<int>()) + " far from every GT person, " +
                                std::to_string(causes["no_gt"].get<int>()) + " without GT.";
   const size_t note_at = dom.find("id=\"summary-note\"");
