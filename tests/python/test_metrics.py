@@ -59,6 +59,9 @@ def test_missed_person_and_false_positive():
     summary = rpt.metrics.evaluate(gt, predictions, gt_joints=COCO, joint_names=COCO)
     assert summary["invalid"] == pytest.approx(100 / 3)  # 1 of 3 predictions matches nobody
     assert summary["recall500"] == 100.0
+    # ... and it stands 3 m from the only GT person of its frame: far from every GT person
+    assert summary["invalid_causes"] == {"duplicate": 0, "near_matched_gt": 0, "near_missed_gt": 0,
+                                         "far_from_gt": 1, "no_gt": 0}
 
 
 def test_options_change_the_metric():
