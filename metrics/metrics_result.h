@@ -48,7 +48,7 @@ struct PcpPartResult {
 };
 
 // Why the counted predictions that are not matches (Invalid's numerator) are not, by their nearest
-// GT person (MPJPE) and the gate G = match_threshold_mm; the four counts sum to the false positives.
+// GT person (MPJPE) and the gate G = match_threshold_mm; the five counts sum to the false positives.
 struct InvalidCauses {
   int duplicate = 0;        // nearest GT within G, but matched to another prediction (a second copy)
   int near_matched_gt = 0;  // nearest GT at G to 2G and matched to another prediction: a ghost beside a found person
