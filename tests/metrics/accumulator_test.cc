@@ -272,6 +272,13 @@ TEST(MetricsAccumulator, PredictionsInFrameWithoutGtBothSwitchSettings) {
 TEST(MetricsAccumulator, InvalidPredictionsByCauseAtTheEdgesOfEachRange) {
   // A prediction d mm from a GT person on every joint (|(0.6, 0, 0.8)| d).
   auto at = [](double x_m, double d_mm) { return Shifted(PersonAt(x_m), {0.0006 * d_mm, 0.0, 0.0008 * d_mm}); };
+  auto expect_causes = [](const MetricsResult& r, const InvalidCauses& expected, const std::string& what) {
+    EXPECT_EQ(r.invalid_causes.duplicate, expected.duplicate) << what;
+    EXPECT_EQ(r.invalid_causes.near_matched_gt, expected.near_matched_gt) << what;
+    EXPECT_EQ(r.invalid_causes.near_missed_gt, expected.near_missed_gt) << what;
+    EXPECT_EQ(r.invalid_causes.far_from_gt, expected.far_from_gt) << what;
+    EXPECT_EQ(r.invalid_causes.no_gt, expected.no_gt) << what;
+  };
   Frame frame;
   frame.Gt(PersonAt(0.0));
   frame.Gt(PersonAt(10.0));       // nobody predicts it within the gate
@@ -286,11 +293,8 @@ TEST(MetricsAccumulator, InvalidPredictionsByCauseAtTheEdgesOfEachRange) {
   without_gt.Pred(PersonAt(0.0));
   const MetricsResult r = Evaluate({frame, without_gt});
   EXPECT_EQ(r.num_matches, 1);
-  EXPECT_EQ(r.invalid_causes.duplicate, 1);
-  EXPECT_EQ(r.invalid_causes.near_matched_gt, 2);
-  EXPECT_EQ(r.invalid_causes.near_missed_gt, 1);
-  EXPECT_EQ(r.invalid_causes.far_from_gt, 2);
-  EXPECT_EQ(r.invalid_causes.no_gt, 1);
+  expect_causes(r, {.duplicate = 1, .near_matched_gt = 2, .near_missed_gt = 1, .far_from_gt = 2, .no_gt = 1},
+                "gate 500 mm");
   EXPECT_EQ(r.invalid_causes.Total(), 7);
   EXPECT_NEAR(r.invalid, 100.0 * 7 / 8, kTol);  // the seven causes over the eight counted predictions
 
@@ -301,29 +305,23 @@ TEST(MetricsAccumulator, InvalidPredictionsByCauseAtTheEdgesOfEachRange) {
   wide.match_threshold_mm = 1000;
   const MetricsResult w = Evaluate({frame, without_gt}, wide);
   EXPECT_EQ(w.num_matches, 2);
-  EXPECT_EQ(w.invalid_causes.duplicate, 3);
-  EXPECT_EQ(w.invalid_causes.near_matched_gt, 1);
-  EXPECT_EQ(w.invalid_causes.near_missed_gt, 0);
-  EXPECT_EQ(w.invalid_causes.far_from_gt, 1);
-  EXPECT_EQ(w.invalid_causes.no_gt, 1);
+  expect_causes(w, {.duplicate = 3, .near_matched_gt = 1, .near_missed_gt = 0, .far_from_gt = 1, .no_gt = 1},
+                "gate 1000 mm");
 
   // Frames without GT not counted: neither in Invalid nor among its causes.
   EvalOptions skip;
   skip.count_preds_without_gt = false;
-  const MetricsResult s = Evaluate({frame, without_gt}, skip);
-  EXPECT_EQ(s.invalid_causes.no_gt, 0);
-  EXPECT_EQ(s.invalid_causes.Total(), 6);
+  expect_causes(Evaluate({frame, without_gt}, skip),
+                {.duplicate = 1, .near_matched_gt = 2, .near_missed_gt = 1, .far_from_gt = 2, .no_gt = 0},
+                "frames without GT skipped");
 
   // Hungarian matching: the same causes.
   EvalOptions hungarian;
   hungarian.matching = MatchingMode::kHungarian;
   const MetricsResult h = Evaluate({frame, without_gt}, hungarian);
   EXPECT_EQ(h.num_matches, 1);
-  EXPECT_EQ(h.invalid_causes.duplicate, 1);
-  EXPECT_EQ(h.invalid_causes.near_matched_gt, 2);
-  EXPECT_EQ(h.invalid_causes.near_missed_gt, 1);
-  EXPECT_EQ(h.invalid_causes.far_from_gt, 2);
-  EXPECT_EQ(h.invalid_causes.no_gt, 1);
+  expect_causes(h, {.duplicate = 1, .near_matched_gt = 2, .near_missed_gt = 1, .far_from_gt = 2, .no_gt = 1},
+                "Hungarian");
 }
 
 TEST(MetricsAccumulator, FrameWithoutGtMayOmitJointNames) {
