@@ -91,14 +91,9 @@ int LimitAmbiguousPairs(const PreparedViews& views, std::span<const ViewGeometry
     for (AmbiguousPair* e = first; e != last; ++e) {
       const PosePair& pair = (*pairs)[e->pair];
       const int other = pair.a == ambiguous_pose ? pair.b : pair.a;
-      const Eigen::Vector3d other_direction = (geometry[views.view_of[other]].center - center).normalized();
-      // In the pair's order (a, b), as the person budget computes it.
-      e->quality = pair.a == ambiguous_pose
-                       ? PairQuality(direction, other_direction, row,
-                                     core_sqrt_scores + static_cast<size_t>(other) * num_core_joints, num_core_joints)
-                       : PairQuality(other_direction, direction,
-                                     core_sqrt_scores + static_cast<size_t>(other) * num_core_joints, row,
-                                     num_core_joints);
+      // The quality does not depend on the pair's order (|da x db| = |db x da|, products commute).
+      e->quality = PairQuality(direction, (geometry[views.view_of[other]].center - center).normalized(), row,
+                               core_sqrt_scores + static_cast<size_t>(other) * num_core_joints, num_core_joints);
     }
     std::nth_element(first, first + (limit - 1), last, [](const AmbiguousPair& x, const AmbiguousPair& y) {
       return x.quality != y.quality ? x.quality > y.quality : x.pair < y.pair;
