@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "metrics/eval_records.h"
 
+#include <algorithm>
+
 namespace rpt::metrics {
 
 std::vector<MatchRecord> NearestMatchRecords(const FrameRecords& frame) {
@@ -11,6 +13,11 @@ std::vector<MatchRecord> NearestMatchRecords(const FrameRecords& frame) {
     records.push_back(MatchRecord{pair.gt_idx, pair.error_mm, pair.score});
   }
   return records;
+}
+
+bool IsMatchedPrediction(const FrameRecords& frame, int p) {
+  return std::any_of(frame.pairs.begin(), frame.pairs.end(),
+                     [p](const PairRecord& pair) { return pair.pred_idx == p && (pair.flags & kMatch) != 0; });
 }
 
 }  // namespace rpt::metrics

@@ -63,6 +63,10 @@ struct FrameRecords {
   std::vector<Shelf14> legacy_predictions;
 };
 
+// Whether prediction p is a match at the gate (kMatch): in any of the frame's pairs, as Hungarian
+// matching may pair it with a GT person other than its nearest.
+bool IsMatchedPrediction(const FrameRecords& frame, int p);
+
 // The frame's nearest-GT pairs as MatchRecords (gt_id = kept-GT index), prediction order: the input
 // of greedy matching and AP.
 std::vector<MatchRecord> NearestMatchRecords(const FrameRecords& frame);

@@ -10,11 +10,7 @@ namespace rpt::metrics {
 void InvalidTotals::Fold(const FrameRecords& frame) {
   if (!frame.counted) return;
   for (int p = 0; p < frame.num_predictions; ++p) {
-    // A match may be a pair other than the nearest one (Hungarian matching lists those after).
-    const bool matched = std::any_of(frame.pairs.begin(), frame.pairs.end(), [p](const PairRecord& pair) {
-      return pair.pred_idx == p && (pair.flags & kMatch) != 0;
-    });
-    if (matched) continue;
+    if (IsMatchedPrediction(frame, p)) continue;
     const PairRecord& nearest = frame.pairs[p];  // prediction p's nearest-GT pair
     if (nearest.gt_idx < 0) {
       ++causes.no_gt;
