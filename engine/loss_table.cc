@@ -2,10 +2,34 @@
 #include "engine/loss_table.h"
 
 #include <algorithm>
+#include <cmath>
 
+#include "core/pipeline/box_iou.h"
 #include "metrics/person_error.h"
 
 namespace rpt::engine {
+namespace {
+
+// What one 2D detection shows (UnmatchedSource's rules).
+enum class Shows { kNobody, kLabelled2dOnly, kLabelled3d };
+
+// The box of the detection's joints with a positive confidence; false with fewer than two.
+bool JointsBox(const Poses2D& view, int detection, Eigen::Vector4d* box) {
+  const auto person = view.Person(detection);
+  int joints = 0;
+  *box << 1e300, 1e300, -1e300, -1e300;
+  for (int j = 0; j < view.num_joints; ++j) {
+    if (!(person(2, j) > 0) || !std::isfinite(person(0, j)) || !std::isfinite(person(1, j))) continue;
+    (*box)[0] = std::min((*box)[0], person(0, j));
+    (*box)[1] = std::min((*box)[1], person(1, j));
+    (*box)[2] = std::max((*box)[2], person(0, j));
+    (*box)[3] = std::max((*box)[3], person(1, j));
+    ++joints;
+  }
+  return joints >= 2;
+}
+
+}  // namespace
 
 const char* LossKey(Loss loss) {
   switch (loss) {
@@ -16,6 +40,16 @@ const char* LossKey(Loss loss) {
     case Loss::kMergedWrongly: return "merged_wrongly";
     case Loss::kRejected: return "rejected";
     case Loss::kPlacedOff: return "placed_off";
+  }
+  return "?";
+}
+
+const char* UnmatchedSourceKey(UnmatchedSource source) {
+  switch (source) {
+    case UnmatchedSource::kLabelled3d: return "labelled_3d";
+    case UnmatchedSource::kLabelled2dOnly: return "labelled_2d_only";
+    case UnmatchedSource::kPartly2dOnly: return "partly_2d_only";
+    case UnmatchedSource::kUnlabelled: return "unlabelled";
   }
   return "?";
 }
@@ -34,6 +68,9 @@ void LossTable::Merge(const LossTable& other) {
   merged_own_pairs_only += other.merged_own_pairs_only;
   rejected_by_verify += other.rejected_by_verify;
   rejected_by_postprocess += other.rejected_by_postprocess;
+  unmatched_with_2d_labels += other.unmatched_with_2d_labels;
+  unmatched_by_projection += other.unmatched_by_projection;
+  for (int k = 0; k < kNumUnmatchedSources; ++k) unmatched_by_source[k] += other.unmatched_by_source[k];
 }
 
 LossAccumulator::LossAccumulator(const SequenceHeader& header, const JointNames& output_joints,
@@ -96,7 +133,75 @@ void LossAccumulator::LabelDetections(const SequenceFrame& frame) {
   }
 }
 
-void LossAccumulator::Add(const SequenceFrame& frame, const FrameTrace& trace, const metrics::FrameRecords& records) {
+void LossAccumulator::CountUnmatched(const SequenceFrame& frame, const FrameTrace& trace, const Poses3D& predictions,
+                                    const metrics::FrameRecords& records, const std::vector<int>& owner) {
+  // What a box (a detection's or a projection's joints) in view v shows: its best label.
+  const auto best_label = [&](size_t v, const Eigen::Vector4d& box) {
+    double best_iou = options_.label_min_iou;
+    Shows best = Shows::kNobody;
+    if (v >= frame.labels_2d.size()) return best;
+    for (const PersonLabel2D& label : frame.labels_2d[v]) {
+      if (label.box_px.isZero()) continue;  // no box
+      const double iou = BoxIou(box, label.box_px);
+      if (iou < best_iou) continue;
+      best_iou = iou;
+      best = label.gt_person >= 0 ? Shows::kLabelled3d : Shows::kLabelled2dOnly;
+    }
+    return best;
+  };
+  std::array<int, 3> shown{};  // per Shows: detections or views
+  const auto show = [&](Shows what) { ++shown[static_cast<int>(what)]; };
+  const auto& filtered = trace.pairs[FrameTrace::kFilter];
+  const int merged = static_cast<int>(trace.after_postprocess.size());
+  for (int q = 0; q < records.num_predictions && q < predictions.num_persons(); ++q) {
+    if (metrics::IsMatchedPrediction(records, q)) continue;
+    ++table_.unmatched_with_2d_labels;
+    shown.fill(0);
+    if (q < merged) {  // merged from pairs: the persons after postprocess come first, in order (triangulator.cc)
+      const int g = trace.after_postprocess[q];
+      for (size_t i = 0; i < filtered.size() && i < trace.group_of_pair.size(); ++i) {
+        if (trace.group_of_pair[i] != g) continue;
+        for (const int pose : filtered[i]) {
+          const size_t v = static_cast<size_t>(trace.pose_view[pose]);
+          Eigen::Vector4d box;
+          if (owner[pose] >= 0) {
+            show(Shows::kLabelled3d);
+          } else if (v < frame.views.size() && JointsBox(frame.views[v], trace.pose_person[pose], &box)) {
+            show(best_label(v, box));
+          } else {
+            show(Shows::kNobody);
+          }
+        }
+      }
+    } else {  // placed from one view or carried by tracking: where it lands in each image
+      ++table_.unmatched_by_projection;
+      const auto person = predictions.Person(q);
+      for (size_t c = 0; c < cameras_.size(); ++c) {
+        const Camera& camera = cameras_[c];
+        Eigen::Vector4d box(1e300, 1e300, -1e300, -1e300);
+        int inside = 0;
+        for (int j = 0; j < predictions.num_joints; ++j) {
+          Eigen::Vector2d uv;
+          if (!(person(3, j) > 0) || !camera.Project(person.col(j).head<3>(), &uv)) continue;
+          if (uv.x() < 0 || uv.y() < 0 || uv.x() >= camera.width || uv.y() >= camera.height) continue;
+          box << std::min(box[0], uv.x()), std::min(box[1], uv.y()), std::max(box[2], uv.x()), std::max(box[3], uv.y());
+          ++inside;
+        }
+        if (inside >= 2) show(best_label(c, box));
+      }
+    }
+    const int views = shown[0] + shown[1] + shown[2];
+    const int two_d_only = shown[static_cast<int>(Shows::kLabelled2dOnly)];
+    const UnmatchedSource source = shown[static_cast<int>(Shows::kLabelled3d)] > 0 ? UnmatchedSource::kLabelled3d
+                                   : views > 0 && two_d_only == views            ? UnmatchedSource::kLabelled2dOnly
+                                   : two_d_only > 0                              ? UnmatchedSource::kPartly2dOnly
+                                                                                 : UnmatchedSource::kUnlabelled;
+    ++table_.unmatched_by_source[static_cast<int>(source)];
+  }
+}
+
+void LossAccumulator::Add(const SequenceFrame& frame, const FrameTrace& trace, const Poses3D& predictions,
+                          const metrics::FrameRecords& records) {
   LabelDetections(frame);
   // The GT person of each traced pose (-1: none).
   std::vector<int> owner(trace.pose_view.size(), -1);
@@ -201,6 +306,7 @@ void LossAccumulator::Add(const SequenceFrame& frame, const FrameTrace& trace, c
     ++table_[loss];
     last_.push_back(loss);
   }
+  if (!frame.labels_2d.empty() && records.counted) CountUnmatched(frame, trace, predictions, records, owner);
 }
 
 }  // namespace rpt::engine

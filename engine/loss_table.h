@@ -49,6 +49,32 @@ inline constexpr int kNumLosses = 7;
 // "found", "fewer_than_2_views", "pair_filtered", ... (the keys of the JSON and CSV).
 const char* LossKey(Loss loss);
 
+// The unmatched predictions (those Invalid counts: no match within metrics.match_threshold_mm, in
+// frames Invalid counts) of frames that carry 2D person labels (SequenceFrame::labels_2d; MVOR
+// labels people in 2D that have no 3D pose), by what they show in the images. A prediction merged
+// from pose pairs is judged by the detections it was triangulated from; any other (placed from one
+// view, or carried by tracking) by its projection into each camera where at least two of its joints
+// land in the image. A detection or projection shows a 3D-labelled person when its joints' box
+// overlaps (IoU >= LossTableOptions::label_min_iou) such a person's 2D label best, or, for a
+// detection, when it is paired with one (above); it shows a person labelled in 2D only when the
+// label it overlaps best has no 3D pose. First that applies:
+//
+//   labelled_3d         one of them shows a 3D-labelled person (a misplaced or mixed person, or a
+//                       ghost made with a labelled person's detection)
+//   labelled_2d_only    each shows a person labelled in 2D only: by all appearance a real person
+//                       the 3D labels leave out
+//   partly_2d_only      some show a person labelled in 2D only, the others nobody labelled
+//   unlabelled          none shows a labelled person (false detections, or people nobody labelled)
+enum class UnmatchedSource : int {
+  kLabelled3d = 0,
+  kLabelled2dOnly,
+  kPartly2dOnly,
+  kUnlabelled,
+};
+inline constexpr int kNumUnmatchedSources = 4;
+// "labelled_3d", "labelled_2d_only", ... (the keys of the JSON).
+const char* UnmatchedSourceKey(UnmatchedSource source);
+
 // The steps that can drop a person's last true pair, in pipeline order.
 inline constexpr std::array<const char*, 5> kPairDroppers = {"undistort", "prefilter", "triangulate_core",
                                                              "room_check", "filter"};
@@ -72,6 +98,11 @@ struct LossTable {
   // pairs), or all hold only its true pairs (the detections themselves triangulate that far off).
   long merged_mixed = 0, merged_own_pairs_only = 0;
   long rejected_by_verify = 0, rejected_by_postprocess = 0;
+  // The unmatched predictions of the frames with 2D labels, by UnmatchedSource (they sum to
+  // unmatched_with_2d_labels; no frame with 2D labels: all 0).
+  long unmatched_with_2d_labels = 0;
+  std::array<long, kNumUnmatchedSources> unmatched_by_source{};
+  long unmatched_by_projection = 0;  // of those, judged by their projection (not merged from pairs)
 
   long& operator[](Loss loss) { return count[static_cast<int>(loss)]; }
   long operator[](Loss loss) const { return count[static_cast<int>(loss)]; }
@@ -81,6 +112,7 @@ struct LossTable {
 struct LossTableOptions {
   detector_stats::AssociationOptions association;  // as `rpt detector-stats` (--gate)
   int min_joints_in_image = 2;                      // as `rpt detector-stats --min-joints-in-image`
+  double label_min_iou = 0.3;  // a detection shows a labelled person from this box IoU with its 2D label
 };
 
 // Follows the GT persons of one sequence, frame by frame.
@@ -91,9 +123,10 @@ class LossAccumulator {
   LossAccumulator(const SequenceHeader& header, const JointNames& output_joints, const metrics::EvalOptions& eval,
                   const LossTableOptions& options = {});
 
-  // One frame: its input, what the triangulator did (`trace`) and the metrics' records of the
-  // frame's output (MetricsAccumulator::LastFrame()).
-  void Add(const SequenceFrame& frame, const FrameTrace& trace, const metrics::FrameRecords& records);
+  // One frame: its input, what the triangulator did (`trace`), its output (`predictions`) and the
+  // metrics' records of that output (MetricsAccumulator::LastFrame()).
+  void Add(const SequenceFrame& frame, const FrameTrace& trace, const Poses3D& predictions,
+           const metrics::FrameRecords& records);
 
   const LossTable& table() const { return table_; }
 
@@ -103,6 +136,10 @@ class LossAccumulator {
  private:
   // Per view, the GT person (frame index) of each detection, -1 for none.
   void LabelDetections(const SequenceFrame& frame);
+  // The unmatched predictions of a frame with 2D labels into table_.unmatched_by_source;
+  // `owner` is the GT person of each traced pose (-1: none).
+  void CountUnmatched(const SequenceFrame& frame, const FrameTrace& trace, const Poses3D& predictions,
+                      const metrics::FrameRecords& records, const std::vector<int>& owner);
 
   std::vector<Camera> cameras_;
   LossTableOptions options_;

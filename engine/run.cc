@@ -83,7 +83,7 @@ void Emit(int index, const SequenceFrame& frame, const Poses3D& triangulated, co
     if (persons.num_persons() == 0) ++run->frames_with_gt_without_prediction;
   }
   if (run->metrics) run->metrics->Add(frame.id, frame.gt, header.gt_joints, persons, output_joints);
-  if (run->losses) run->losses->Add(frame, trace, run->metrics->LastFrame());
+  if (run->losses) run->losses->Add(frame, trace, persons, run->metrics->LastFrame());
   if (*checker) (*checker)->Add(frame);
   if (sink != nullptr) sink->Frame(FrameOutput{index, &frame, &persons, &stats});
 }

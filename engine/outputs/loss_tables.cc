@@ -57,6 +57,20 @@ void PrintLossTable(std::ostream& out, const LossTable& table) {
                   PercentOfWhole(row.persons, table.gt_persons));
     out << line;
   }
+  if (table.unmatched_with_2d_labels == 0) return;
+  const auto& by = table.unmatched_by_source;
+  const auto n = [&](UnmatchedSource source) { return by[static_cast<int>(source)]; };
+  std::snprintf(line, sizeof(line),
+                "unmatched predictions in frames with 2D labels, by what they show in the images: %ld = %ld a "
+                "3D-labelled person\n",
+                table.unmatched_with_2d_labels, n(UnmatchedSource::kLabelled3d));
+  out << line;
+  std::snprintf(line, sizeof(line),
+                "  + %ld a person labelled in 2D only + %ld partly such a person + %ld nobody labelled (%ld judged by "
+                "their projection: not merged from pairs)\n",
+                n(UnmatchedSource::kLabelled2dOnly), n(UnmatchedSource::kPartly2dOnly), n(UnmatchedSource::kUnlabelled),
+                table.unmatched_by_projection);
+  out << line;
 }
 
 nlohmann::ordered_json LossTableJson(const LossTable& table) {
@@ -73,6 +87,14 @@ nlohmann::ordered_json LossTableJson(const LossTable& table) {
   }
   j["categories"] = std::move(categories);
   j["details"] = std::move(details);
+  // Predictions, not GT persons: only for frames with 2D labels (engine/loss_table.h).
+  nlohmann::ordered_json unmatched;
+  unmatched["predictions"] = table.unmatched_with_2d_labels;
+  for (int k = 0; k < kNumUnmatchedSources; ++k) {
+    unmatched[UnmatchedSourceKey(static_cast<UnmatchedSource>(k))] = table.unmatched_by_source[k];
+  }
+  unmatched["by_projection"] = table.unmatched_by_projection;
+  j["unmatched_with_2d_labels"] = std::move(unmatched);
   return j;
 }
 

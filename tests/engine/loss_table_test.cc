@@ -5,6 +5,7 @@
 // ones are exactly the persons Recall@500 counts.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -45,10 +46,30 @@ struct SceneFrame {
   std::vector<Eigen::Matrix4Xd> gt;
   std::vector<Poses2D> views;  // one per camera
   double time_s = kNoTime;
+  std::vector<std::vector<PersonLabel2D>> labels_2d;  // per camera (empty: the frame has no 2D labels)
 };
 
+// A 2D label of `person` (gt_person: its GT index, -1 for a person labelled in 2D only) in every
+// camera of `cameras` given: the box of its projected joints.
+void AddLabel(const std::vector<Camera>& cameras, const std::vector<int>& in, const Eigen::Matrix4Xd& person,
+              int gt_person, SceneFrame* frame) {
+  frame->labels_2d.resize(cameras.size());
+  for (const int c : in) {
+    PersonLabel2D label;
+    label.gt_person = gt_person;
+    label.box_px << 1e300, 1e300, -1e300, -1e300;
+    for (int j = 0; j < person.cols(); ++j) {
+      Eigen::Vector2d uv;
+      if (!cameras[c].Project(person.col(j).head<3>(), &uv)) continue;
+      label.box_px << std::min(label.box_px[0], uv.x()), std::min(label.box_px[1], uv.y()),
+          std::max(label.box_px[2], uv.x()), std::max(label.box_px[3], uv.y());
+    }
+    frame->labels_2d[c].push_back(label);
+  }
+}
+
 SceneFrame NewFrame(int num_cameras, std::vector<Eigen::Matrix4Xd> gt, double time_s = kNoTime) {
-  SceneFrame frame{std::move(gt), std::vector<Poses2D>(num_cameras), time_s};
+  SceneFrame frame{std::move(gt), std::vector<Poses2D>(num_cameras), time_s, {}};
   for (Poses2D& view : frame.views) view.Clear(static_cast<int>(CocoBodyJoints().size()));
   return frame;
 }
@@ -68,6 +89,7 @@ LossTable Losses(const std::vector<Camera>& cameras, const std::vector<SceneFram
     frame.gt.Clear(static_cast<int>(CocoBodyJoints().size()));
     for (const Eigen::Matrix4Xd& person : frames[f].gt) frame.gt.AddPerson() = person;
     frame.views = frames[f].views;
+    frame.labels_2d = frames[f].labels_2d;
     sequence.frames.push_back(std::move(frame));
   }
   RunOptions run_options;
@@ -80,6 +102,15 @@ LossTable Losses(const std::vector<Camera>& cameras, const std::vector<SceneFram
   const LossTable table = run.losses.value_or(LossTable{});
   if (result != nullptr) *result = std::move(run);
   return table;
+}
+
+// The unmatched predictions by source: "total: labelled_3d labelled_2d_only partly_2d_only unlabelled
+// (by_projection)".
+std::string DescribeUnmatched(const LossTable& table) {
+  const auto& by = table.unmatched_by_source;
+  return std::to_string(table.unmatched_with_2d_labels) + ": " + std::to_string(by[0]) + " " + std::to_string(by[1]) +
+         " " + std::to_string(by[2]) + " " + std::to_string(by[3]) + " (" +
+         std::to_string(table.unmatched_by_projection) + ")";
 }
 
 // Every category and detail as "key=count" (the non-zero ones), to compare a whole table at once.
@@ -221,8 +252,98 @@ TEST(LossTableTest, FramesAndSequencesAddUp) {
   EXPECT_EQ(json["details"]["pair_filtered"]["filter"], 1);
 }
 
+TEST(LossTableTest, UnmatchedPredictionsAreSplitByTheLabelsTheirDetectionsShow) {
+  const std::vector<Camera> cameras = RingCameras(4);
+  const std::vector<int> all = {0, 1, 2, 3};
+  // a: labelled in 3D and found. b: labelled in 2D only, in every view. c: labelled nowhere. d:
+  // labelled in 2D only in views 0 and 1. All four are detected in every view.
+  const Eigen::Matrix4Xd a = StandingPerson(0, 0), b = StandingPerson(1.4, 0.9), c = StandingPerson(-1.4, 0.9),
+                         d = StandingPerson(0, -1.5);
+  SceneFrame frame = NewFrame(4, {a});
+  for (int v = 0; v < 4; ++v) {
+    for (const Eigen::Matrix4Xd* person : {&a, &b, &c, &d}) AddDetection(cameras[v], *person, &frame.views[v]);
+  }
+  AddLabel(cameras, all, a, 0, &frame);
+  AddLabel(cameras, all, b, -1, &frame);
+  AddLabel(cameras, {0, 1}, d, -1, &frame);
+  RunResult run;
+  const LossTable table = Losses(cameras, {frame}, {}, &run);
+  EXPECT_EQ(Describe(table), "gt=1 triangulable=1 found=1");
+  EXPECT_EQ(DescribeUnmatched(table), "3: 0 1 1 1 (0)");
+  EXPECT_EQ(run.metrics.invalid_causes.Total(), 3);  // the same predictions Invalid counts
+  const nlohmann::ordered_json json = LossTableJson(table)["unmatched_with_2d_labels"];
+  EXPECT_EQ(json.dump(), R"({"predictions":3,"labelled_3d":0,"labelled_2d_only":1,"partly_2d_only":1,"unlabelled":1,"by_projection":0})");
+
+  // Without 2D labels in the frame nothing is counted.
+  frame.labels_2d.clear();
+  EXPECT_EQ(DescribeUnmatched(Losses(cameras, {frame})), "0: 0 0 0 0 (0)");
+}
+
+TEST(LossTableTest, AnUnmatchedPredictionMadeFromALabelledPersonsDetectionsIsLabelled3d) {
+  const std::vector<Camera> cameras = RingCameras(4);
+  // As DetectionsThatAgreeOnTheWrongPlaceAreMergedOff: its detections are the GT person's (paired
+  // with it), placed 0.6 m off. The frame has 2D labels, none of them a box: the pairing decides.
+  const Eigen::Matrix4Xd person = StandingPerson(0, 0), reported = StandingPerson(0.6, 0);
+  SceneFrame frame = NewFrame(4, {person});
+  for (int c = 0; c < 4; ++c) AddDetection(cameras[c], reported, &frame.views[c]);
+  frame.labels_2d.resize(4);
+  EXPECT_EQ(DescribeUnmatched(Losses(cameras, {frame})), "1: 1 0 0 0 (0)");
+}
+
+TEST(LossTableTest, ASecondDetectionInsideALabelledPersonsBoxIsLabelled3d) {
+  const std::vector<Camera> cameras = RingCameras(4);
+  // The person is detected in every view and found; views 0 and 1 also report it a second time,
+  // as if 0.45 m higher (a detector's duplicate): those two triangulate to a ghost above it. The
+  // duplicates are not paired with the person (the pairing is one to one) but lie in its 2D label.
+  const Eigen::Matrix4Xd person = StandingPerson(0, 0);
+  SceneFrame frame = NewFrame(4, {person});
+  for (int c = 0; c < 4; ++c) AddDetection(cameras[c], person, &frame.views[c]);
+  const Eigen::Matrix4Xd raised = person + Eigen::Vector4d(0, 0, 0.45, 0).replicate(1, person.cols());
+  for (int c = 0; c < 2; ++c) AddDetection(cameras[c], raised, &frame.views[c]);
+  AddLabel(cameras, {0, 1, 2, 3}, person, 0, &frame);
+  RunResult run;
+  EXPECT_EQ(DescribeUnmatched(Losses(cameras, {frame}, {}, &run)), "1: 1 0 0 0 (0)");
+  EXPECT_EQ(run.metrics.invalid_causes.duplicate, 1);
+}
+
+TEST(LossTableTest, ACarriedPersonIsJudgedInTheViewsItLandsIn) {
+  const std::vector<Camera> cameras = RingCameras(6);
+  // Near camera 0, out of the images of cameras 0, 1 and 5: seen by cameras 2-4 in frame 0 and
+  // carried in frame 1, where a 2D-only label stands where it projects in views 2-4. The views
+  // that do not see it have no say.
+  const Eigen::Vector3d near = 0.85 * cameras[0].Center();
+  const Eigen::Matrix4Xd person = StandingPerson(near.x(), near.y());
+  for (int c = 0; c < 6; ++c) {
+    int inside = 0;
+    for (int j = 0; j < person.cols(); ++j) {
+      Eigen::Vector2d uv;
+      inside += cameras[c].Project(person.col(j).head<3>(), &uv) && uv.x() >= 0 && uv.y() >= 0 &&
+                uv.x() < cameras[c].width && uv.y() < cameras[c].height;
+    }
+    ASSERT_EQ(inside, c >= 2 && c <= 4 ? 17 : 0) << "camera " << c;
+  }
+  SceneFrame first = NewFrame(6, {person}, 0.0), second = NewFrame(6, {}, 0.04);
+  for (int c = 2; c <= 4; ++c) AddDetection(cameras[c], person, &first.views[c]);
+  AddLabel(cameras, {2, 3, 4}, person, -1, &second);
+  EXPECT_EQ(Describe(Losses(cameras, {first})), "gt=1 triangulable=1 found=1");
+  EXPECT_EQ(DescribeUnmatched(Losses(cameras, {first, second})), "1: 0 1 0 0 (1)");
+}
+
+TEST(LossTableTest, ACarriedPersonIsJudgedByItsProjection) {
+  const std::vector<Camera> cameras = RingCameras(4);
+  // Frame 0: the person is seen and found. Frame 1: no detection and no GT person, so tracking
+  // carries it (an unmatched prediction); a 2D-only label stands where it projects in views 0-2.
+  const Eigen::Matrix4Xd person = StandingPerson(0, 0);
+  SceneFrame first = NewFrame(4, {person}, 0.0), second = NewFrame(4, {}, 0.04);
+  for (int c = 0; c < 4; ++c) AddDetection(cameras[c], person, &first.views[c]);
+  AddLabel(cameras, {0, 1, 2}, person, -1, &second);
+  EXPECT_EQ(DescribeUnmatched(Losses(cameras, {first, second})), "1: 0 0 1 0 (1)");
+  AddLabel(cameras, {3}, person, -1, &second);  // now in every view
+  EXPECT_EQ(DescribeUnmatched(Losses(cameras, {first, second})), "1: 0 1 0 0 (1)");
+}
+
 // Real data: the categories sum to the GT persons, and the found ones are Recall@500's.
-void ExpectConsistentOnRealData(const InputSpec& spec) {
+void ExpectConsistentOnRealData(const InputSpec& spec, bool has_2d_labels) {
   Input input = OpenInput(spec);
   RunOptions options;
   options.loss_table = true;
@@ -237,6 +358,12 @@ void ExpectConsistentOnRealData(const InputSpec& spec) {
   EXPECT_EQ(table.in_no_view + table.in_one_view, table[Loss::kFewerThanTwoViews]);
   EXPECT_LE(table.triangulable, table.gt_persons);
   EXPECT_GT(table[Loss::kFound], 0);
+  // The unmatched predictions by what they show: every one once, when the frames have 2D labels.
+  long unmatched = 0;
+  for (const long count : table.unmatched_by_source) unmatched += count;
+  EXPECT_EQ(unmatched, table.unmatched_with_2d_labels);
+  EXPECT_LE(table.unmatched_by_projection, table.unmatched_with_2d_labels);
+  EXPECT_EQ(table.unmatched_with_2d_labels, has_2d_labels ? run.metrics.invalid_causes.Total() : 0);
 }
 
 TEST(LossTableTest, MvorCategoriesSumToTheGtPersons) {
@@ -245,7 +372,7 @@ TEST(LossTableTest, MvorCategoriesSumToTheGtPersons) {
   InputSpec spec;
   spec.dataset = "mvor";
   spec.root = test::SharedData("mvor").string();
-  ExpectConsistentOnRealData(spec);
+  ExpectConsistentOnRealData(spec, true);
 }
 
 TEST(LossTableTest, Shelf4daCategoriesSumToTheGtPersons) {
@@ -253,7 +380,7 @@ TEST(LossTableTest, Shelf4daCategoriesSumToTheGtPersons) {
   InputSpec spec;
   spec.dataset = "shelf-4da";
   spec.root = test::SharedData("shelf/4d_association").string();
-  ExpectConsistentOnRealData(spec);
+  ExpectConsistentOnRealData(spec, false);
 }
 
 }  // namespace
