@@ -108,6 +108,30 @@ for key, row in tables[0].items():
 PY
 }
 
+# What MVOR's unmatched predictions show in its 2D labels (its loss-table run's summary.json).
+unmatched_labels_table() {
+  echo "## What the unmatched predictions show (MVOR's 2D labels)"
+  echo
+  echo "\`rpt eval --loss-table\` (docs/diagnostics.md, section 4): MVOR labels every person in 2D and gives only"
+  echo "some a 3D pose; each unmatched prediction by the labels its detections (or, when not merged from"
+  echo "pairs, its projections) overlap; folder mvor-openpose-losses, \`loss_table.unmatched_with_2d_labels\`"
+  echo "in summary.json."
+  echo
+  python3 - "$OUT/real/mvor-openpose-losses/summary.json" <<'PY'
+import json, sys
+u = json.load(open(sys.argv[1]))["loss_table"]["unmatched_with_2d_labels"]
+rows = [("labelled_3d", "labelled_3d: a detection of a 3D-labelled person (misplaced, mixed, or a ghost using it)"),
+        ("labelled_2d_only", "labelled_2d_only: each detection overlaps a person labelled in 2D only"),
+        ("partly_2d_only", "partly_2d_only: some do, the others overlap nobody labelled"),
+        ("unlabelled", "unlabelled: no detection overlaps a labelled person")]
+print("| the unmatched prediction shows | MVOR, shipped OpenPose |")
+print("|---|---|")
+for key, label in rows:
+    print(f"| {label} | {u[key]} |")
+print(f"| **all unmatched** (of them judged by their projection) | {u['predictions']} ({u['by_projection']}) |")
+PY
+}
+
 invalid_causes_table() {
   echo "## Why predictions are Invalid"
   echo
@@ -184,6 +208,8 @@ real_results() {
     loss_table
     echo
     invalid_causes_table
+    echo
+    unmatched_labels_table
   } > "$OUT/real/README.md"
   echo "wrote $OUT/real/README.md"
 }
