@@ -112,7 +112,7 @@ PY
 unmatched_labels_table() {
   echo "## What the unmatched predictions show (MVOR's 2D labels)"
   echo
-  echo "\`rpt eval --loss-table\` (docs/diagnostics.md, section 4): MVOR labels every person in 2D and gives only"
+  echo "\`rpt eval --loss-table\` (docs/diagnostics.md, section 4): MVOR labels people in 2D and gives only"
   echo "some a 3D pose; each unmatched prediction by the labels its detections (or, when not merged from"
   echo "pairs, its projections) overlap; folder mvor-openpose-losses, \`loss_table.unmatched_with_2d_labels\`"
   echo "in summary.json."
