@@ -10,23 +10,28 @@
 namespace rpt::engine {
 namespace {
 
-// What one 2D detection shows (UnmatchedSource's rules).
+// What a detection, or a prediction's projection into one view, shows (UnmatchedSource's rules).
 enum class Shows { kNobody, kLabelled2dOnly, kLabelled3d };
 
-// The box of the detection's joints with a positive confidence; false with fewer than two.
-bool JointsBox(const Poses2D& view, int detection, Eigen::Vector4d* box) {
+// The box (x0, y0, x1, y1) of the points added, and how many there were.
+struct PointsBox {
+  Eigen::Vector4d box{1e300, 1e300, -1e300, -1e300};
+  int points = 0;
+  void Add(double x, double y) {
+    box << std::min(box[0], x), std::min(box[1], y), std::max(box[2], x), std::max(box[3], y);
+    ++points;
+  }
+};
+
+// The box of the detection's joints with a positive confidence.
+PointsBox JointsBox(const Poses2D& view, int detection) {
   const auto person = view.Person(detection);
-  int joints = 0;
-  *box << 1e300, 1e300, -1e300, -1e300;
+  PointsBox box;
   for (int j = 0; j < view.num_joints; ++j) {
     if (!(person(2, j) > 0) || !std::isfinite(person(0, j)) || !std::isfinite(person(1, j))) continue;
-    (*box)[0] = std::min((*box)[0], person(0, j));
-    (*box)[1] = std::min((*box)[1], person(1, j));
-    (*box)[2] = std::max((*box)[2], person(0, j));
-    (*box)[3] = std::max((*box)[3], person(1, j));
-    ++joints;
+    box.Add(person(0, j), person(1, j));
   }
-  return joints >= 2;
+  return box;
 }
 
 }  // namespace
@@ -163,14 +168,13 @@ void LossAccumulator::CountUnmatched(const SequenceFrame& frame, const FrameTrac
         if (trace.group_of_pair[i] != g) continue;
         for (const int pose : filtered[i]) {
           const size_t v = static_cast<size_t>(trace.pose_view[pose]);
-          Eigen::Vector4d box;
           if (owner[pose] >= 0) {
             show(Shows::kLabelled3d);
-          } else if (v < frame.views.size() && JointsBox(frame.views[v], trace.pose_person[pose], &box)) {
-            show(best_label(v, box));
-          } else {
-            show(Shows::kNobody);
+            continue;
           }
+          // A box of fewer than 2 joints has no area: it overlaps no label.
+          show(v < frame.views.size() ? best_label(v, JointsBox(frame.views[v], trace.pose_person[pose]).box)
+                                      : Shows::kNobody);
         }
       }
     } else {  // placed from one view or carried by tracking: where it lands in each image
@@ -178,16 +182,14 @@ void LossAccumulator::CountUnmatched(const SequenceFrame& frame, const FrameTrac
       const auto person = predictions.Person(q);
       for (size_t c = 0; c < cameras_.size(); ++c) {
         const Camera& camera = cameras_[c];
-        Eigen::Vector4d box(1e300, 1e300, -1e300, -1e300);
-        int inside = 0;
+        PointsBox inside;  // the joints that land in the image
         for (int j = 0; j < predictions.num_joints; ++j) {
           Eigen::Vector2d uv;
           if (!(person(3, j) > 0) || !camera.Project(person.col(j).head<3>(), &uv)) continue;
           if (uv.x() < 0 || uv.y() < 0 || uv.x() >= camera.width || uv.y() >= camera.height) continue;
-          box << std::min(box[0], uv.x()), std::min(box[1], uv.y()), std::max(box[2], uv.x()), std::max(box[3], uv.y());
-          ++inside;
+          inside.Add(uv.x(), uv.y());
         }
-        if (inside >= 2) show(best_label(c, box));
+        if (inside.points >= 2) show(best_label(c, inside.box));  // a view that does not see it has no say
       }
     }
     const int views = shown[0] + shown[1] + shown[2];
