@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # Speed of another revision against this build, in one run: builds REV's rpt in a temporary git
-# worktree, then alternates `rpt bench` of both, ROUNDS
-# rounds, pinned to one core, and prints per scene and step the medians, the speed-up, the
-# per-round speed-ups of the frame median and both MPJPEs (scripts/bench_simd_before_after.py).
-# On a shared, drifting machine only such same-run comparisons mean anything.
+# worktree, then alternates `rpt bench` of both for ROUNDS rounds, pinned to one core, and prints
+# per scene and step the medians, the speed-up, the per-round speed-ups of the frame median and
+# both MPJPEs (scripts/bench_simd_before_after.py). On a shared, drifting machine only such
+# same-run comparisons mean anything. BUILD_DIR (default build) must hold this revision's rpt.
 # Usage: bash scripts/bench_against.sh REV [ROUNDS] [BUILD_DIR] [-- --scene NAME ...]
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -56,16 +56,25 @@ NATIVE=$(grep -E '^RPT_MARCH_NATIVE:' "$BUILD/CMakeCache.txt" | cut -d= -f2-)
   python3 scripts/bench_simd_before_after.py "$RPT" --pin "$PIN"  # 5 rounds of --repeat 10
   echo '```'
   echo
-  # The newest commit that changed the pipeline (core/), and the one that changed it before.
+  # The newest commit that changed the pipeline (core/), and the one that changed it before (or
+  # BENCH_AGAINST).
   PIPELINE=$(git log -1 --format=%h HEAD -- core)
-  BASE=${BENCH_AGAINST:-$(git log -1 --format=%h "$PIPELINE^" -- core)}
+  BASE=${BENCH_AGAINST:-$(git log -1 --format=%h "$PIPELINE^" -- core 2> /dev/null || true)}
   echo "## Against the previous pipeline commit (same run)"
   echo
-  echo "The pipeline (core/) last changed in $PIPELINE; before that in $BASE, built and run alternately with this"
+  if [ -n "${BENCH_AGAINST:-}" ]; then
+    echo "Against $BASE (\`BENCH_AGAINST\`), built and run alternately with this"
+  else
+    echo "The pipeline (core/) last changed in $PIPELINE; before that in $BASE, built and run alternately with this"
+  fi
   echo "build (\`bash scripts/bench_against.sh $BASE 5 $BUILD\`; \`BENCH_AGAINST=REV\` picks another revision)."
   echo
   echo '```'
-  bash scripts/bench_against.sh "$BASE" 5 "$BUILD" 2>/dev/null || echo "($BASE could not be built or run here)"
+  if [ -n "$BASE" ]; then
+    bash scripts/bench_against.sh "$BASE" 5 "$BUILD" 2>/dev/null || echo "($BASE could not be built or run here)"
+  else
+    echo "(no earlier pipeline commit)"
+  fi
   echo '```'
   echo
   echo "## Scaling (cameras with 4 people; people with 5 cameras)"
