@@ -2,7 +2,8 @@
 // The loss table (engine/loss_table.h): hand-made scenes in which each GT person is lost at a known
 // step, with the exact counts of every category and detail; and on the real MVOR and Shelf-4DA
 // fixtures (skipped without ../shared/data) the categories sum to the GT persons and the found
-// ones are exactly the persons Recall@500 counts.
+// ones are exactly the persons Recall@500 counts. Also the unmatched predictions by what they show
+// in the 2D labels: scenes with labels of known kinds, and on MVOR the count equals Invalid's.
 #include <gtest/gtest.h>
 
 #include <algorithm>
