@@ -20,4 +20,9 @@ bool IsMatchedPrediction(const FrameRecords& frame, int p) {
                      [p](const PairRecord& pair) { return pair.pred_idx == p && (pair.flags & kMatch) != 0; });
 }
 
+bool IsMatchedGt(const FrameRecords& frame, int g) {
+  return std::any_of(frame.pairs.begin(), frame.pairs.end(),
+                     [g](const PairRecord& pair) { return pair.gt_idx == g && (pair.flags & kMatch) != 0; });
+}
+
 }  // namespace rpt::metrics

@@ -66,6 +66,8 @@ struct FrameRecords {
 // Whether prediction p is a match at the gate (kMatch): in any of the frame's pairs, as Hungarian
 // matching may pair it with a GT person other than its nearest.
 bool IsMatchedPrediction(const FrameRecords& frame, int p);
+// Whether kept GT person g (kept-GT index) is matched at the gate (kMatch) by any prediction.
+bool IsMatchedGt(const FrameRecords& frame, int g);
 
 // The frame's nearest-GT pairs as MatchRecords (gt_id = kept-GT index), prediction order: the input
 // of greedy matching and AP.

@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Invalid: counted predictions that are not matches at the gate, over counted predictions; and
 // those predictions by cause (InvalidCauses), from each one's nearest-GT pair.
-#include <algorithm>
-
 #include "metrics/reducers/reducers.h"
 
 namespace rpt::metrics {
@@ -17,11 +15,7 @@ void InvalidTotals::Fold(const FrameRecords& frame) {
     } else if (nearest.error_mm < gate_mm) {
       ++causes.duplicate;
     } else if (nearest.error_mm < 2 * gate_mm) {
-      const int g = nearest.gt_idx;
-      const bool gt_matched = std::any_of(frame.pairs.begin(), frame.pairs.end(), [g](const PairRecord& pair) {
-        return pair.gt_idx == g && (pair.flags & kMatch) != 0;
-      });
-      ++(gt_matched ? causes.near_matched_gt : causes.near_missed_gt);
+      ++(IsMatchedGt(frame, nearest.gt_idx) ? causes.near_matched_gt : causes.near_missed_gt);
     } else {
       ++causes.far_from_gt;
     }
