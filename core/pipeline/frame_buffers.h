@@ -12,6 +12,7 @@
 #include "core/pipeline/pipeline_types.h"
 #include "core/pipeline/prefilter.h"
 #include "core/pipeline/proposal_scoring.h"
+#include "core/pipeline/refine.h"
 #include "core/pipeline/score.h"
 #include "core/pipeline/single_view.h"
 #include "core/pipeline/track.h"
@@ -33,6 +34,7 @@ struct FrameBuffers {
   Proposals full;                // triangulate_full
   TriangulateFullScratch triangulate_full_scratch;
   MergeScratch merge_scratch;
+  RefineScratch refine_scratch;
   VerifyScratch verify_scratch;
   SingleViewScratch single_view_scratch;
   Poses3D lifted;                // single_view: this frame's persons placed from one view

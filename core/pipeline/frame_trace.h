@@ -26,7 +26,7 @@ struct FrameTrace {
   // when grouping dropped it (its pose belongs to a stronger group, its group was a mirrored
   // duplicate or too small).
   std::vector<int> group_of_pair;
-  // The person merge made of each kept group (group g -> person g), before verification.
+  // The person merge made of each kept group (group g -> person g), after refine, before verification.
   Poses3D merged;
   // The persons left after verify and after postprocess, as indices into `merged`.
   std::vector<int> after_verify, after_postprocess;

@@ -280,6 +280,28 @@ void VisitFields(Visitor& v, Self& o) {
     OptionSpec{.help = "keep the highest-scoring candidate when the distance filter drops all of them"});
 }
 
+// Step 11a (an addition): re-triangulate each merged joint from all of its person's views (refine.h).
+struct RefineOptions {
+  bool enabled = false;  // off until its kernel is fast (docs/algorithm.md, step 11a)
+  int iterations = 2;         // reweighting passes from the merged joint
+  double scale_factor = 1.0;  // the weights' scale s, in units of the frame's score kernel scale S
+  double cutoff = 3.0;        // views whose ray is farther than cutoff x s get no weight
+};
+
+template <class Visitor, OptionsOf<RefineOptions> Self>
+void VisitFields(Visitor& v, Self& o) {
+  v("enabled", o.enabled,
+    OptionSpec{.help = "re-triangulate each merged joint from all of its person's views (robust weights)"});
+  v("iterations", o.iterations,
+    OptionSpec{.help = "reweighting passes, starting from the merged joint", .min = 1, .max = 100});
+  v("scale_factor", o.scale_factor,
+    OptionSpec{.help = "scale s of the weights c / (1 + (d / s)^2), in units of the frame's score kernel scale",
+               .min = 1e-6, .max = 1e6});
+  v("cutoff", o.cutoff,
+    OptionSpec{.help = "views whose ray passes farther than cutoff x s from the joint get no weight", .min = 0,
+               .max = 1e6});
+}
+
 // Step 11b (an addition): re-score each person against all views, drop unsupported ones.
 struct VerifyOptions {
   bool enabled = true;
@@ -546,6 +568,7 @@ struct TriangulatorOptions {
   FilterOptions filter;
   GroupOptions group;
   MergeOptions merge;
+  RefineOptions refine;
   VerifyOptions verify;
   SingleViewOptions single_view;
   PostprocessOptions postprocess;
@@ -580,6 +603,7 @@ void VisitSections(Visitor& v, Self& o) {
   v("filter", o.filter);
   v("group", o.group);
   v("merge", o.merge);
+  v("refine", o.refine);
   v("verify", o.verify);
   v("postprocess", o.postprocess);
   v("single_view", o.single_view);

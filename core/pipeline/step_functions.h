@@ -28,6 +28,7 @@
 #include "core/pipeline/options.h"
 #include "core/pipeline/postprocess.h"
 #include "core/pipeline/prefilter.h"
+#include "core/pipeline/refine.h"
 #include "core/pipeline/remember.h"
 #include "core/pipeline/room_check.h"
 #include "core/pipeline/score.h"
@@ -109,6 +110,7 @@ RPT_BIND_STEP(kFilter, Filter, filter);
 RPT_BIND_STEP(kGroup, Group, group);
 RPT_BIND_STEP(kTriangulateFull, TriangulateFull, triangulate);
 RPT_BIND_STEP(kMerge, Merge, merge);
+RPT_BIND_STEP(kRefine, Refine, refine);
 RPT_BIND_STEP(kVerify, Verify, verify);
 RPT_BIND_STEP(kPostprocess, Postprocess, postprocess);
 RPT_BIND_STEP(kSingleView, SingleView, single_view);

@@ -191,6 +191,13 @@ void Triangulator::Process(std::span<const Poses2D> views, double timestamp_s, P
                                   &buf.triangulate_full_scratch, &buf.full, stats);
   persons->Clear(num_joints);
   run.Run<Step::kMerge>(steps::MergeInput{.proposals = buf.full, .groups = buf.groups}, &buf.merge_scratch, persons);
+  run.Run<Step::kRefine>(steps::RefineInput{.views = buf.prepared,
+                                            .geometry = m.geometry,
+                                            .proposals = buf.full,
+                                            .groups = buf.groups,
+                                            .min_joint_score = opt.merge.min_joint_score,
+                                            .kernel = buf.kernel},
+                         &buf.refine_scratch, persons);
   if (trace != nullptr) {
     // Verify and postprocess keep persons in order and move their track ids with them (all -1
     // until tracking): each person carries its merged index through them, then -1 again.

@@ -105,8 +105,8 @@ TEST(StepTable, DocsStepTableAgrees) {
 }
 
 TEST(StepTable, DocsHeadingsAgree) {
-  // "## 6-7. Reprojection and scoring", "### 15. Bone lengths", "## Undistortion".
-  const std::regex numbered(R"(^#{2,3} ([0-9]+(?:-[0-9]+)?b?)\. (.+)$)");
+  // "## 6-7. Reprojection and scoring", "### 15. Bone lengths", "## 11a. ...", "## Undistortion".
+  const std::regex numbered(R"(^#{2,3} ([0-9]+(?:-[0-9]+)?[ab]?)\. (.+)$)");
   std::map<std::string, std::string> title_of;  // number -> title
   std::set<std::string> plain;                   // unnumbered heading titles
   for (const std::string& line : ReadLines(kSourceDir / "docs/algorithm.md")) {

@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: MIT
+// Step 11a (`refine`, an addition): re-triangulate each merged joint from every view of its person
+// at once, robustly.
+//
+// The merge (step 11) averages pair proposals: each is the midpoint of two rays, so a person seen
+// in v views gets its joint from up to top_k of the v(v-1)/2 pairs, and each view's noise enters
+// through the pairs that happen to be kept. Here each joint of a merged person is fitted to the
+// rays of all the person's views that the merge could use for it (the views of the group's pairs
+// whose joint score is at least merge.min_joint_score: limb pruning, robust views and the score
+// kernels have had their say): the point with the least weighted sum of squared distances to those
+// rays, starting from the merged joint and iteratively reweighted (`iterations` times) with
+//   w_v = c_v / (1 + (d_v / s)^2),  s = scale_factor x S,
+// where c_v is the view's 2D confidence, d_v the distance of its ray from the current point and S
+// the frame's score kernel scale (ScoreKernel::scale_m, metres at the joint). A view farther than
+// cutoff x s gets no weight (a wrong view that the scores let through). A joint keeps the merged
+// position when fewer than 2 views remain or their rays are nearly parallel. The joint's score
+// is not changed.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "core/pipeline/options.h"
+#include "core/pipeline/pipeline_types.h"
+#include "core/pipeline/proposal_scoring.h"
+#include "core/poses.h"
+
+namespace rpt {
+
+// Scratch buffers reused across frames; per joint arrays hold the person's joints side by side.
+struct RefineScratch {
+  std::vector<int> poses;        // the person's 2D poses (its group's pairs)
+  std::vector<double> weight;    // per pose (index into `poses`) and joint: 2D confidence where a pair
+                                 // the merge could use has the joint, else 0
+  std::vector<double> inv_norm_sq;  // per pose and joint: 1 / |ray|^2 (0 where weight is 0)
+  std::vector<double> origin_dot;   // per pose and joint: ray . camera centre
+  std::vector<double> x, y, z;      // per joint: the current point
+  std::vector<double> sums;         // per joint: the normal equations (refine.cc's kSums arrays of n)
+  std::vector<uint8_t> changed;     // per joint: moved by an iteration
+};
+namespace steps {
+
+struct RefineInput {
+  const PreparedViews& views;
+  std::span<const ViewGeometry> geometry;  // per camera
+  const Proposals& proposals;              // triangulate_full's: person i was merged from group i
+  const Groups& groups;
+  double min_joint_score;                  // merge.min_joint_score: the pairs the merge could use
+  const ScoreKernel& kernel;               // the frame's kernels (step 6-7): scale_m
+};
+
+// Moves the joints of `persons` (merge's output: person i from group i) to their multi-view fit.
+// Returns the number of joints moved.
+int Refine(const RefineOptions& options, const RefineInput& in, RefineScratch* scratch, Poses3D* persons);
+
+}  // namespace steps
+
+}  // namespace rpt

@@ -1,0 +1,180 @@
+// SPDX-License-Identifier: MIT
+// Step 11a (refine): each merged joint fitted to the rays of all its person's views, with
+// confidence and robust (Cauchy) weights; hand-computed cases at the step, a noise-free scene
+// through the Triangulator.
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "core/pipeline/refine.h"
+#include "core/pipeline/triangulator.h"
+#include "tests/pipeline/test_scene.h"
+
+namespace rpt {
+namespace {
+
+// One joint seen by several cameras: each view has one pose whose ray for the joint starts at the
+// camera centre; the person was merged from the pairs listed.
+struct OneJointScene {
+  std::vector<ViewGeometry> geometry;
+  PreparedViews views;
+  Proposals proposals;
+  Groups groups;
+  ScoreKernel kernel;
+
+  void AddView(const Eigen::Vector3d& center, const Eigen::Vector3d& ray, double confidence) {
+    ViewGeometry g{};  // only the centre is read
+    g.P.setZero();
+    g.Rt.setZero();
+    g.R_t.setZero();
+    g.center = center;
+    geometry.push_back(g);
+    views.view_of.push_back(static_cast<int>(views.view_of.size()));
+    views.all_columns.stride = 1;
+    views.all_columns.rx.push_back(ray.x());
+    views.all_columns.ry.push_back(ray.y());
+    views.all_columns.rz.push_back(ray.z());
+    views.all_columns.score.push_back(confidence);
+  }
+  void AddPair(int a, int b, double joint_score) {
+    proposals.pairs.push_back({a, b});
+    proposals.score.push_back(joint_score);
+  }
+  // Refines the person at `merged`; returns the refined joint and the step's count.
+  Eigen::Vector3d Refine(const RefineOptions& options, const Eigen::Vector3d& merged, int* moved = nullptr,
+                         double joint_score = 0.8) {
+    proposals.num_joints = 1;
+    views.num_joints = 1;
+    groups.begin = {0, static_cast<int>(proposals.pairs.size())};
+    Poses3D persons;
+    persons.Clear(1);
+    auto person = persons.AddPerson();
+    person.col(0) << merged, joint_score;
+    RefineScratch scratch;
+    const int count = steps::Refine(options,
+                                    steps::RefineInput{.views = views, .geometry = geometry, .proposals = proposals,
+                                                       .groups = groups, .min_joint_score = 0.1, .kernel = kernel},
+                                    &scratch, &persons);
+    if (moved != nullptr) *moved = count;
+    EXPECT_EQ(persons.Person(0)(3, 0), joint_score) << "the joint's score is not changed";
+    return persons.Person(0).col(0).head<3>();
+  }
+};
+
+RefineOptions On(int iterations) {
+  RefineOptions options;
+  options.enabled = true;
+  options.iterations = iterations;
+  return options;
+}
+
+// Two perpendicular rays 0.1 m apart along z: the x axis (confidence 0.9) and the line x = 0,
+// z = 0.1 (confidence 0.3). The weighted least-squares point is on the common perpendicular at
+// z = 0.1 w_b / (w_a + w_b).
+OneJointScene SkewRays() {
+  OneJointScene scene;
+  scene.kernel.scale_m = 0.1;  // s = scale_factor (1) x 0.1 m
+  scene.AddView({-5, 0, 0}, {2, 0, 0}, 0.9);  // an unnormalised ray, as undistort writes them
+  scene.AddView({0, -5, 0.1}, {0, 1, 0}, 0.3);
+  scene.AddPair(0, 1, 0.8);
+  return scene;
+}
+
+TEST(Refine, WeighsEachViewByItsConfidenceAndItsDistance) {
+  // From the midpoint z = 0.05 both rays are 0.05 m away: equal Cauchy factors 1 / (1 + 0.25), so
+  // one pass weighs by confidence alone: z = 0.1 x 0.3 / (0.9 + 0.3) = 0.025.
+  OneJointScene scene = SkewRays();
+  int moved = 0;
+  const Eigen::Vector3d once = scene.Refine(On(1), {0, 0, 0.05}, &moved);
+  EXPECT_EQ(moved, 1);
+  EXPECT_NEAR(once.x(), 0.0, 1e-12);
+  EXPECT_NEAR(once.y(), 0.0, 1e-12);
+  EXPECT_NEAR(once.z(), 0.025, 1e-12);
+  // The second pass starts at z = 0.025: distances 0.025 and 0.075 m, weights 0.9 / 1.0625 and
+  // 0.3 / 1.5625 = 0.192, z = 0.1 x 0.192 / (0.9 / 1.0625 + 0.192) = 0.0184782608...
+  const Eigen::Vector3d twice = scene.Refine(On(2), {0, 0, 0.05});
+  EXPECT_NEAR(twice.z(), 0.018478260869565215, 1e-12);
+}
+
+// Three rays through the origin and a fourth passing 0.5 m from it.
+OneJointScene ThreeAgreeOneWrong(double wrong_pair_score) {
+  OneJointScene scene;
+  scene.kernel.scale_m = 0.1;
+  scene.AddView({-4, 0, 1}, {4, 0, -1}, 0.8);
+  scene.AddView({0, -4, 1.5}, {0, 4, -1.5}, 0.6);
+  scene.AddView({3, 3, 2}, {-3, -3, -2}, 0.9);
+  scene.AddView({0, 4, 1}, {0.5, -4, -1}, 0.7);  // through (0.5, 0, 0): passes about 0.49 m from the origin
+  scene.AddPair(0, 1, 0.8);
+  scene.AddPair(0, 2, 0.8);
+  scene.AddPair(1, 2, 0.8);
+  scene.AddPair(0, 3, wrong_pair_score);
+  return scene;
+}
+
+TEST(Refine, AViewBeyondTheCutoffGetsNoWeight) {
+  OneJointScene scene = ThreeAgreeOneWrong(0.5);
+  const Eigen::Vector3d merged(0.02, -0.01, 0.03);
+  // Cutoff 3 x 0.1 m: the wrong ray is out, the three others meet exactly at the origin.
+  EXPECT_LT(scene.Refine(On(2), merged).norm(), 1e-12);
+  // Without the cutoff the wrong ray pulls the point away.
+  RefineOptions no_cutoff = On(2);
+  no_cutoff.cutoff = 100;
+  EXPECT_GT(scene.Refine(no_cutoff, merged).norm(), 0.01);
+}
+
+TEST(Refine, UsesOnlyViewsOfPairsTheMergeCouldUse) {
+  RefineOptions options = On(2);
+  options.cutoff = 100;
+  const Eigen::Vector3d merged(0.02, -0.01, 0.03);
+  // The wrong view's only pair scores the joint below merge.min_joint_score (0.1): not used.
+  OneJointScene below = ThreeAgreeOneWrong(0.05);
+  EXPECT_LT(below.Refine(options, merged).norm(), 1e-12);
+  OneJointScene above = ThreeAgreeOneWrong(0.1);
+  EXPECT_GT(above.Refine(options, merged).norm(), 0.01);
+}
+
+TEST(Refine, KeepsTheMergedJointWhenTheRaysDoNotFixIt) {
+  const Eigen::Vector3d merged(0.3, 0.2, 0.1);
+  // Two rays 0.05 degrees apart: depth is not fixed.
+  OneJointScene parallel;
+  parallel.kernel.scale_m = 10;  // both well inside the cutoff
+  parallel.AddView({-5, 0, 0}, {1, 0, 0}, 0.9);
+  parallel.AddView({-5, 0.01, 0}, {1, -0.01 / 5 + std::tan(0.05 * M_PI / 180), 0}, 0.9);
+  parallel.AddPair(0, 1, 0.8);
+  int moved = -1;
+  EXPECT_EQ(parallel.Refine(On(2), merged, &moved), merged);
+  EXPECT_EQ(moved, 0);
+  // One ray only (the other beyond the cutoff), a missing joint, the step off: unchanged.
+  OneJointScene skew = SkewRays();
+  RefineOptions tight = On(2);
+  tight.cutoff = 0.3;  // 0.03 m: from z = 0.005 only the first ray is near
+  EXPECT_EQ(skew.Refine(tight, {0, 0, 0.005}, &moved), Eigen::Vector3d(0, 0, 0.005));
+  EXPECT_EQ(moved, 0);
+  EXPECT_EQ(skew.Refine(On(2), {0, 0, 0.05}, &moved, 0.0), Eigen::Vector3d(0, 0, 0.05));
+  EXPECT_EQ(moved, 0);
+  RefineOptions off = On(2);
+  off.enabled = false;
+  EXPECT_EQ(skew.Refine(off, {0, 0, 0.05}, &moved), Eigen::Vector3d(0, 0, 0.05));
+  EXPECT_EQ(moved, 0);
+}
+
+// Through the whole pipeline, on noise-free projections: every joint stays exact and is counted.
+TEST(Refine, NoiseFreeSceneStaysExact) {
+  const auto cameras = test::RingCameras(4);
+  const Eigen::Matrix4Xd body = test::StandingPerson(0.2, -0.1, 0.7);
+  const auto views = test::ProjectPersons(cameras, {body});
+  TriangulatorOptions options;
+  options.refine.enabled = true;
+  options.track.enabled = false;
+  options.clip_speed.enabled = false;
+  Triangulator tri(cameras, CocoBodyJoints(), options);
+  Poses3D persons;
+  FrameStats stats;
+  tri.Process(views, 0.0, &persons, &stats);
+  ASSERT_EQ(persons.num_persons(), 1);
+  for (int j = 0; j < 17; ++j) EXPECT_LT((persons.Person(0).col(j).head<3>() - body.col(j).head<3>()).norm(), 1e-9) << j;
+  EXPECT_EQ(stats.count[static_cast<int>(Step::kRefine)], persons.num_joints) << "every joint, derived ones included";
+}
+
+}  // namespace
+}  // namespace rpt
