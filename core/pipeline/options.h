@@ -282,8 +282,8 @@ void VisitFields(Visitor& v, Self& o) {
 
 // Step 11a (an addition): re-triangulate each merged joint from all of its person's views (refine.h).
 struct RefineOptions {
-  bool enabled = false;  // off until its kernel is fast (docs/algorithm.md, step 11a)
-  int iterations = 2;         // reweighting passes from the merged joint
+  bool enabled = true;
+  int iterations = 1;         // reweighting passes from the merged joint (a second: a little more accuracy, more time)
   double scale_factor = 1.0;  // the weights' scale s, in units of the frame's score kernel scale S
   double cutoff = 3.0;        // views whose ray is farther than cutoff x s get no weight
 };

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 
+#include "core/pipeline/simd_kernels.h"
+
 namespace rpt {
 namespace {
 
@@ -10,8 +12,80 @@ namespace {
 // sin^2 of their angle) do not fix a point in depth.
 constexpr double kMinConditioning = 1e-4;
 
-// The normal equations of one joint, A x = b with A symmetric (a00 .. a22), and the views used.
+// The normal equations of one joint, A x = b with A symmetric (a00 .. a22), and the views used:
+// simd::kRefineSums arrays of n, in this order.
 enum Sum { kA00, kA01, kA02, kA11, kA12, kA22, kB0, kB1, kB2, kUsed, kSums };
+static_assert(kSums == simd::kRefineSums);
+
+// The columns of one pose the step copies (padded), in this order.
+enum Column { kRx, kRy, kRz, kConfidence, kColumns };
+
+// simd::RefinePrepareView's reference.
+void PrepareViewScalar(const double* rx, const double* ry, const double* rz, const double* confidence,
+                       const double* person_score, double min_score, double cx, double cy, double cz, int n,
+                       double* weight, double* inv_norm_sq, double* origin_dot) {
+  for (int j = 0; j < n; ++j) {
+    const bool usable = weight[j] >= min_score && confidence[j] > 0 && person_score[j] > 0;
+    const double norm_sq = rx[j] * rx[j] + ry[j] * ry[j] + rz[j] * rz[j];
+    inv_norm_sq[j] = usable && norm_sq > 0 ? 1.0 / norm_sq : 0.0;
+    weight[j] = inv_norm_sq[j] > 0 ? confidence[j] : 0.0;
+    origin_dot[j] = rx[j] * cx + ry[j] * cy + rz[j] * cz;
+  }
+}
+
+// simd::RefineAccumulate's reference: the same operations in the same order, joint by joint.
+void AccumulateScalar(const simd::RefineParams& p, const simd::RefineView& view, const double* x, const double* y,
+                      const double* z, int n, double* sums) {
+  double* a00 = sums + kA00 * n;
+  double* a01 = sums + kA01 * n;
+  double* a02 = sums + kA02 * n;
+  double* a11 = sums + kA11 * n;
+  double* a12 = sums + kA12 * n;
+  double* a22 = sums + kA22 * n;
+  double* b0 = sums + kB0 * n;
+  double* b1 = sums + kB1 * n;
+  double* b2 = sums + kB2 * n;
+  double* used = sums + kUsed * n;
+  for (int j = 0; j < n; ++j) {
+    const double rx = view.rx[j], ry = view.ry[j], rz = view.rz[j];
+    const double tx = x[j] - view.cx, ty = y[j] - view.cy, tz = z[j] - view.cz;
+    const double along = rx * tx + ry * ty + rz * tz;
+    const double distance_sq = tx * tx + ty * ty + tz * tz - along * along * view.inv_norm_sq[j];
+    const double robust = view.weight[j] / (1.0 + distance_sq * p.inv_scale_sq);
+    const double w = distance_sq <= p.cutoff_sq ? robust : 0.0;
+    const double u = w * view.inv_norm_sq[j];  // w times the ray's outer product over |ray|^2
+    const double urx = u * rx, ury = u * ry, urz = u * rz;
+    a00[j] += w - urx * rx;
+    a01[j] -= urx * ry;
+    a02[j] -= urx * rz;
+    a11[j] += w - ury * ry;
+    a12[j] -= ury * rz;
+    a22[j] += w - urz * rz;
+    b0[j] += w * view.cx - urx * view.origin_dot[j];
+    b1[j] += w * view.cy - ury * view.origin_dot[j];
+    b2[j] += w * view.cz - urz * view.origin_dot[j];
+    used[j] += w > 0 ? 1.0 : 0.0;
+  }
+}
+
+// simd::RefineSolve's reference: A^-1 b by cofactors where the joint is fixed.
+void SolveScalar(const double* sums, int n, double min_conditioning, double* x, double* y, double* z, double* changed) {
+  for (int j = 0; j < n; ++j) {
+    auto at = [&](int k) { return sums[static_cast<size_t>(k) * n + j]; };
+    const double a00 = at(kA00), a01 = at(kA01), a02 = at(kA02), a11 = at(kA11), a12 = at(kA12), a22 = at(kA22);
+    const double c00 = a11 * a22 - a12 * a12, c01 = a02 * a12 - a01 * a22, c02 = a01 * a12 - a02 * a11;
+    const double c11 = a00 * a22 - a02 * a02, c12 = a01 * a02 - a00 * a12, c22 = a00 * a11 - a01 * a01;
+    const double det = a00 * c00 + a01 * c01 + a02 * c02;
+    const double third = (a00 + a11 + a22) / 3.0;
+    if (!(at(kUsed) >= 2 && det > min_conditioning * third * third * third)) continue;
+    const double b0 = at(kB0), b1 = at(kB1), b2 = at(kB2);
+    const double inv_det = 1.0 / det;
+    x[j] = (c00 * b0 + c01 * b1 + c02 * b2) * inv_det;
+    y[j] = (c01 * b0 + c11 * b1 + c12 * b2) * inv_det;
+    z[j] = (c02 * b0 + c12 * b1 + c22 * b2) * inv_det;
+    changed[j] = 1.0;
+  }
+}
 
 }  // namespace
 
@@ -25,122 +99,88 @@ int steps::Refine(const RefineOptions& options, const RefineInput& in, RefineScr
   if (groups.size() != persons->num_persons() || n != persons->num_joints || columns.stride != n) return 0;
   const double scale = options.scale_factor * in.kernel.scale_m;
   if (!(scale > 0)) return 0;
-  const double inv_scale_sq = 1.0 / (scale * scale);
-  const double cutoff_sq = options.cutoff * options.cutoff * scale * scale;
+  const simd::RefineParams params{.inv_scale_sq = 1.0 / (scale * scale),
+                                  .cutoff_sq = options.cutoff * options.cutoff * scale * scale};
+  const bool use_simd = simd::Enabled();
+  const double min_score = std::max(in.min_joint_score, 1e-300);  // as the merge: score 0 = invalid
+  // Every per-joint array holds `padded` values, the joints beyond n zero (no view, no change).
+  const int padded = (n + simd::kRefineAlign - 1) / simd::kRefineAlign * simd::kRefineAlign;
+  const size_t row = static_cast<size_t>(padded);
   RefineScratch& s = *scratch;
-  s.x.resize(n);
-  s.y.resize(n);
-  s.z.resize(n);
-  s.sums.resize(static_cast<size_t>(kSums) * n);
-  double* const sum = s.sums.data();
+  s.x.assign(row, 0.0);
+  s.y.assign(row, 0.0);
+  s.z.assign(row, 0.0);
+  s.person_score.assign(row, 0.0);
+  s.changed.resize(row);
+  s.sums.resize(kSums * row);
   int moved = 0;
   for (int p = 0; p < persons->num_persons(); ++p) {
     const int first = groups.begin[p], last = groups.begin[p + 1];
-    // The person's poses; per pose and joint, its confidence where a pair the merge could use has it.
     s.poses.clear();
     for (int k = first; k < last; ++k)
       for (const int pose : {proposals.pairs[k].a, proposals.pairs[k].b})
         if (std::find(s.poses.begin(), s.poses.end(), pose) == s.poses.end()) s.poses.push_back(pose);
     const int num_poses = static_cast<int>(s.poses.size());
-    s.weight.assign(static_cast<size_t>(num_poses) * n, 0.0);
+    // Per pose: its rays and confidences (padded copies), and first the best joint score of its
+    // pairs (in `weight` until the preparation below turns it into the weight).
+    s.columns.assign(kColumns * num_poses * row, 0.0);
+    s.weight.assign(num_poses * row, 0.0);
+    s.inv_norm_sq.resize(num_poses * row);
+    s.origin_dot.resize(num_poses * row);
+    for (int q = 0; q < num_poses; ++q) {
+      const size_t at = static_cast<size_t>(s.poses[q]) * n;
+      double* own = s.columns.data() + kColumns * q * row;
+      std::copy_n(columns.rx.data() + at, n, own + kRx * row);
+      std::copy_n(columns.ry.data() + at, n, own + kRy * row);
+      std::copy_n(columns.rz.data() + at, n, own + kRz * row);
+      std::copy_n(columns.score.data() + at, n, own + kConfidence * row);
+    }
     for (int k = first; k < last; ++k) {
       const double* score = proposals.score.data() + static_cast<size_t>(k) * n;
       for (const int pose : {proposals.pairs[k].a, proposals.pairs[k].b}) {
-        const int q = static_cast<int>(std::find(s.poses.begin(), s.poses.end(), pose) - s.poses.begin());
-        const double* confidence = columns.score.data() + static_cast<size_t>(pose) * n;
-        double* weight = s.weight.data() + static_cast<size_t>(q) * n;
-        for (int j = 0; j < n; ++j)
-          if (score[j] >= in.min_joint_score && score[j] > 0 && confidence[j] > 0) weight[j] = confidence[j];
+        const size_t q = std::find(s.poses.begin(), s.poses.end(), pose) - s.poses.begin();
+        double* best = s.weight.data() + q * row;
+        for (int j = 0; j < n; ++j) best[j] = std::max(best[j], score[j]);
       }
     }
     auto person = persons->Person(p);
-    s.inv_norm_sq.resize(static_cast<size_t>(num_poses) * n);
-    s.origin_dot.resize(static_cast<size_t>(num_poses) * n);
+    for (int j = 0; j < n; ++j) s.person_score[j] = person(3, j);
     for (int q = 0; q < num_poses; ++q) {
-      const size_t at = static_cast<size_t>(s.poses[q]) * n;
-      const double *rx = columns.rx.data() + at, *ry = columns.ry.data() + at, *rz = columns.rz.data() + at;
+      const double* own = s.columns.data() + kColumns * q * row;
       const Eigen::Vector3d& c = in.geometry[in.views.view_of[s.poses[q]]].center;
-      double* weight = s.weight.data() + static_cast<size_t>(q) * n;
-      double* inv_norm_sq = s.inv_norm_sq.data() + static_cast<size_t>(q) * n;
-      double* origin_dot = s.origin_dot.data() + static_cast<size_t>(q) * n;
-      for (int j = 0; j < n; ++j) {
-        if (person(3, j) <= 0) weight[j] = 0;  // missing after the merge: stays missing
-        const double norm_sq = rx[j] * rx[j] + ry[j] * ry[j] + rz[j] * rz[j];
-        inv_norm_sq[j] = weight[j] > 0 && norm_sq > 0 ? 1.0 / norm_sq : 0.0;
-        if (inv_norm_sq[j] == 0) weight[j] = 0;
-        origin_dot[j] = rx[j] * c.x() + ry[j] * c.y() + rz[j] * c.z();
-      }
+      (use_simd ? simd::RefinePrepareView : PrepareViewScalar)(
+          own + kRx * row, own + kRy * row, own + kRz * row, own + kConfidence * row, s.person_score.data(), min_score,
+          c.x(), c.y(), c.z(), padded, s.weight.data() + q * row, s.inv_norm_sq.data() + q * row,
+          s.origin_dot.data() + q * row);
     }
     for (int j = 0; j < n; ++j) {
       s.x[j] = person(0, j);
       s.y[j] = person(1, j);
       s.z[j] = person(2, j);
     }
-    std::vector<uint8_t>& changed = s.changed;
-    changed.assign(n, 0);
+    std::fill(s.changed.begin(), s.changed.end(), 0.0);
     for (int it = 0; it < options.iterations; ++it) {
       std::fill(s.sums.begin(), s.sums.end(), 0.0);
-      double* __restrict a00 = sum + kA00 * n;
-      double* __restrict a01 = sum + kA01 * n;
-      double* __restrict a02 = sum + kA02 * n;
-      double* __restrict a11 = sum + kA11 * n;
-      double* __restrict a12 = sum + kA12 * n;
-      double* __restrict a22 = sum + kA22 * n;
-      double* __restrict b0 = sum + kB0 * n;
-      double* __restrict b1 = sum + kB1 * n;
-      double* __restrict b2 = sum + kB2 * n;
-      double* __restrict used = sum + kUsed * n;
-      const double* __restrict x = s.x.data();
-      const double* __restrict y = s.y.data();
-      const double* __restrict z = s.z.data();
       for (int q = 0; q < num_poses; ++q) {
-        const size_t at = static_cast<size_t>(s.poses[q]) * n;
-        const double* __restrict rx = columns.rx.data() + at;
-        const double* __restrict ry = columns.ry.data() + at;
-        const double* __restrict rz = columns.rz.data() + at;
+        const double* own = s.columns.data() + kColumns * q * row;
         const Eigen::Vector3d& c = in.geometry[in.views.view_of[s.poses[q]]].center;
-        const double cx = c.x(), cy = c.y(), cz = c.z();
-        const double* __restrict weight = s.weight.data() + static_cast<size_t>(q) * n;
-        const double* __restrict inv_norm_sq = s.inv_norm_sq.data() + static_cast<size_t>(q) * n;
-        const double* __restrict origin_dot = s.origin_dot.data() + static_cast<size_t>(q) * n;
-        for (int j = 0; j < n; ++j) {  // branch-free, lanes across joints (weight 0: no view)
-          const double tx = x[j] - cx, ty = y[j] - cy, tz = z[j] - cz;
-          const double along = rx[j] * tx + ry[j] * ty + rz[j] * tz;
-          const double distance_sq = tx * tx + ty * ty + tz * tz - along * along * inv_norm_sq[j];
-          const double robust = weight[j] / (1.0 + distance_sq * inv_scale_sq);
-          const double inside = static_cast<double>(distance_sq <= cutoff_sq);  // 0 or 1, no branch
-          const double w = robust * inside;
-          const double u = w * inv_norm_sq[j];  // w times the ray's outer product over |ray|^2
-          a00[j] += w - u * rx[j] * rx[j];
-          a01[j] -= u * rx[j] * ry[j];
-          a02[j] -= u * rx[j] * rz[j];
-          a11[j] += w - u * ry[j] * ry[j];
-          a12[j] -= u * ry[j] * rz[j];
-          a22[j] += w - u * rz[j] * rz[j];
-          b0[j] += w * cx - u * rx[j] * origin_dot[j];
-          b1[j] += w * cy - u * ry[j] * origin_dot[j];
-          b2[j] += w * cz - u * rz[j] * origin_dot[j];
-          used[j] += static_cast<double>(w > 0);
-        }
+        const simd::RefineView view{.rx = own + kRx * row,
+                                    .ry = own + kRy * row,
+                                    .rz = own + kRz * row,
+                                    .weight = s.weight.data() + q * row,
+                                    .inv_norm_sq = s.inv_norm_sq.data() + q * row,
+                                    .origin_dot = s.origin_dot.data() + q * row,
+                                    .cx = c.x(),
+                                    .cy = c.y(),
+                                    .cz = c.z()};
+        (use_simd ? simd::RefineAccumulate : AccumulateScalar)(params, view, s.x.data(), s.y.data(), s.z.data(),
+                                                               padded, s.sums.data());
       }
-      for (int j = 0; j < n; ++j) {
-        const double a00 = sum[kA00 * n + j], a01 = sum[kA01 * n + j], a02 = sum[kA02 * n + j];
-        const double a11 = sum[kA11 * n + j], a12 = sum[kA12 * n + j], a22 = sum[kA22 * n + j];
-        const double c00 = a11 * a22 - a12 * a12, c01 = a02 * a12 - a01 * a22, c02 = a01 * a12 - a02 * a11;
-        const double c11 = a00 * a22 - a02 * a02, c12 = a01 * a02 - a00 * a12, c22 = a00 * a11 - a01 * a01;
-        const double det = a00 * c00 + a01 * c01 + a02 * c02;
-        const double third_trace = (a00 + a11 + a22) / 3.0;
-        if (!(sum[kUsed * n + j] >= 2 && det > kMinConditioning * third_trace * third_trace * third_trace)) continue;
-        const double b0 = sum[kB0 * n + j], b1 = sum[kB1 * n + j], b2 = sum[kB2 * n + j];
-        const double inv_det = 1.0 / det;
-        s.x[j] = (c00 * b0 + c01 * b1 + c02 * b2) * inv_det;
-        s.y[j] = (c01 * b0 + c11 * b1 + c12 * b2) * inv_det;
-        s.z[j] = (c02 * b0 + c12 * b1 + c22 * b2) * inv_det;
-        changed[j] = 1;
-      }
+      (use_simd ? simd::RefineSolve : SolveScalar)(s.sums.data(), padded, kMinConditioning, s.x.data(), s.y.data(),
+                                                   s.z.data(), s.changed.data());
     }
     for (int j = 0; j < n; ++j) {
-      if (!changed[j]) continue;
+      if (s.changed[j] == 0) continue;
       person(0, j) = s.x[j];
       person(1, j) = s.y[j];
       person(2, j) = s.z[j];

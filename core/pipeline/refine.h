@@ -17,7 +17,6 @@
 // is not changed.
 #pragma once
 
-#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -28,17 +27,20 @@
 
 namespace rpt {
 
-// Scratch buffers reused across frames; per joint arrays hold the person's joints side by side.
+// Scratch buffers reused across frames. Per-joint arrays hold the person's joints side by side,
+// padded to simd::kRefineAlign with zeros (the kernels run over whole vectors).
 struct RefineScratch {
-  std::vector<int> poses;        // the person's 2D poses (its group's pairs)
-  std::vector<double> weight;    // per pose (index into `poses`) and joint: 2D confidence where a pair
-                                 // the merge could use has the joint, else 0
+  std::vector<int> poses;           // the person's 2D poses (its group's pairs)
+  std::vector<double> columns;      // per pose: its rays (x, y, z) and 2D confidences, copied
+  std::vector<double> weight;       // per pose and joint: 2D confidence where usable, else 0
   std::vector<double> inv_norm_sq;  // per pose and joint: 1 / |ray|^2 (0 where weight is 0)
   std::vector<double> origin_dot;   // per pose and joint: ray . camera centre
   std::vector<double> x, y, z;      // per joint: the current point
-  std::vector<double> sums;         // per joint: the normal equations (refine.cc's kSums arrays of n)
-  std::vector<uint8_t> changed;     // per joint: moved by an iteration
+  std::vector<double> person_score; // per joint: the merged joint's score (0: missing)
+  std::vector<double> sums;         // per joint: the normal equations (simd::kRefineSums arrays)
+  std::vector<double> changed;      // per joint: 1 once a pass moved it
 };
+
 namespace steps {
 
 struct RefineInput {

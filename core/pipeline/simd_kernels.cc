@@ -479,6 +479,115 @@ double PixelDistanceSumImpl(const double* uv, const PoseColumns& c, int n, int* 
   return sum;
 }
 
+// steps::Refine's view preparation (refine.cc, PrepareViewScalar) for joints [j, j + Lanes(d)).
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE void RefinePrepareLanes(D d, const double* rx, const double* ry, const double* rz,
+                                   const double* confidence, const double* person_score, double min_score, double cx,
+                                   double cy, double cz, size_t j, double* weight, double* inv_norm_sq,
+                                   double* origin_dot) {
+  const V x = hn::LoadU(d, rx + j), y = hn::LoadU(d, ry + j), z = hn::LoadU(d, rz + j);
+  const V c = hn::LoadU(d, confidence + j), zero = hn::Zero(d);
+  const auto usable = hn::And(hn::And(hn::Ge(hn::LoadU(d, weight + j), hn::Set(d, min_score)), hn::Gt(c, zero)),
+                              hn::Gt(hn::LoadU(d, person_score + j), zero));
+  const V norm_sq = hn::Add(hn::Add(hn::Mul(x, x), hn::Mul(y, y)), hn::Mul(z, z));
+  const auto valid = hn::And(usable, hn::Gt(norm_sq, zero));
+  const V inv = hn::IfThenElseZero(valid, hn::Div(hn::Set(d, 1.0), norm_sq));
+  hn::StoreU(inv, d, inv_norm_sq + j);
+  hn::StoreU(hn::IfThenElseZero(hn::Gt(inv, zero), c), d, weight + j);
+  const V dot = hn::Add(hn::Add(hn::Mul(x, hn::Set(d, cx)), hn::Mul(y, hn::Set(d, cy))), hn::Mul(z, hn::Set(d, cz)));
+  hn::StoreU(dot, d, origin_dot + j);
+}
+
+static_assert(kRefineAlign % (HWY_MAX_BYTES / sizeof(double)) == 0, "whole vectors over the padded joints");
+
+void RefinePrepareViewImpl(const double* rx, const double* ry, const double* rz, const double* confidence,
+                           const double* person_score, double min_score, double cx, double cy, double cz, int n,
+                           double* weight, double* inv_norm_sq, double* origin_dot) {
+  const hn::ScalableTag<double> d;
+  for (size_t j = 0; j < static_cast<size_t>(n); j += hn::Lanes(d))  // n: a multiple of kRefineAlign
+    RefinePrepareLanes(d, rx, ry, rz, confidence, person_score, min_score, cx, cy, cz, j, weight, inv_norm_sq,
+                       origin_dot);
+}
+
+// steps::Refine's accumulation (refine.cc, AccumulateScalar) for joints [j, j + Lanes(d)).
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE void RefineAccumulateLanes(D d, const RefineParams& p, const RefineView& view, const double* x,
+                                      const double* y, const double* z, size_t n, size_t j, double* sums) {
+  auto load = [&](const double* at) { return hn::LoadU(d, at + j); };
+  const V rx = load(view.rx), ry = load(view.ry), rz = load(view.rz);
+  const V inv_norm_sq = load(view.inv_norm_sq), origin_dot = load(view.origin_dot);
+  const V tx = hn::Sub(load(x), hn::Set(d, view.cx));
+  const V ty = hn::Sub(load(y), hn::Set(d, view.cy));
+  const V tz = hn::Sub(load(z), hn::Set(d, view.cz));
+  const V along = hn::Add(hn::Add(hn::Mul(rx, tx), hn::Mul(ry, ty)), hn::Mul(rz, tz));
+  const V distance_sq = hn::Sub(hn::Add(hn::Add(hn::Mul(tx, tx), hn::Mul(ty, ty)), hn::Mul(tz, tz)),
+                                hn::Mul(hn::Mul(along, along), inv_norm_sq));
+  const V robust =
+      hn::Div(load(view.weight), hn::Add(hn::Set(d, 1.0), hn::Mul(distance_sq, hn::Set(d, p.inv_scale_sq))));
+  const V w = hn::IfThenElseZero(hn::Le(distance_sq, hn::Set(d, p.cutoff_sq)), robust);
+  const V u = hn::Mul(w, inv_norm_sq);
+  const V urx = hn::Mul(u, rx), ury = hn::Mul(u, ry), urz = hn::Mul(u, rz);
+  auto add = [&](int k, V value) {
+    double* at = sums + static_cast<size_t>(k) * n + j;
+    hn::StoreU(hn::Add(hn::LoadU(d, at), value), d, at);
+  };
+  auto sub = [&](int k, V value) {
+    double* at = sums + static_cast<size_t>(k) * n + j;
+    hn::StoreU(hn::Sub(hn::LoadU(d, at), value), d, at);
+  };
+  add(0, hn::Sub(w, hn::Mul(urx, rx)));
+  sub(1, hn::Mul(urx, ry));
+  sub(2, hn::Mul(urx, rz));
+  add(3, hn::Sub(w, hn::Mul(ury, ry)));
+  sub(4, hn::Mul(ury, rz));
+  add(5, hn::Sub(w, hn::Mul(urz, rz)));
+  add(6, hn::Sub(hn::Mul(w, hn::Set(d, view.cx)), hn::Mul(urx, origin_dot)));
+  add(7, hn::Sub(hn::Mul(w, hn::Set(d, view.cy)), hn::Mul(ury, origin_dot)));
+  add(8, hn::Sub(hn::Mul(w, hn::Set(d, view.cz)), hn::Mul(urz, origin_dot)));
+  add(9, hn::IfThenElseZero(hn::Gt(w, hn::Zero(d)), hn::Set(d, 1.0)));
+}
+
+void RefineAccumulateImpl(const RefineParams& p, const RefineView& view, const double* x, const double* y,
+                          const double* z, int n, double* sums) {
+  const hn::ScalableTag<double> d;
+  for (size_t j = 0; j < static_cast<size_t>(n); j += hn::Lanes(d))
+    RefineAccumulateLanes(d, p, view, x, y, z, static_cast<size_t>(n), j, sums);
+}
+
+// steps::Refine's solve (refine.cc, SolveScalar) for joints [j, j + Lanes(d)).
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE void RefineSolveLanes(D d, const double* sums, size_t n, size_t j, double min_conditioning, double* x,
+                                 double* y, double* z, double* changed) {
+  auto at = [&](int k) { return hn::LoadU(d, sums + static_cast<size_t>(k) * n + j); };
+  const V a00 = at(0), a01 = at(1), a02 = at(2), a11 = at(3), a12 = at(4), a22 = at(5);
+  const V c00 = hn::Sub(hn::Mul(a11, a22), hn::Mul(a12, a12));
+  const V c01 = hn::Sub(hn::Mul(a02, a12), hn::Mul(a01, a22));
+  const V c02 = hn::Sub(hn::Mul(a01, a12), hn::Mul(a02, a11));
+  const V c11 = hn::Sub(hn::Mul(a00, a22), hn::Mul(a02, a02));
+  const V c12 = hn::Sub(hn::Mul(a01, a02), hn::Mul(a00, a12));
+  const V c22 = hn::Sub(hn::Mul(a00, a11), hn::Mul(a01, a01));
+  const V det = hn::Add(hn::Add(hn::Mul(a00, c00), hn::Mul(a01, c01)), hn::Mul(a02, c02));
+  const V third = hn::Div(hn::Add(hn::Add(a00, a11), a22), hn::Set(d, 3.0));
+  const V bound = hn::Mul(hn::Mul(hn::Mul(hn::Set(d, min_conditioning), third), third), third);
+  const auto solve = hn::And(hn::Ge(at(9), hn::Set(d, 2.0)), hn::Gt(det, bound));
+  const V b0 = at(6), b1 = at(7), b2 = at(8);
+  const V inv_det = hn::Div(hn::Set(d, 1.0), det);
+  const V nx = hn::Mul(hn::Add(hn::Add(hn::Mul(c00, b0), hn::Mul(c01, b1)), hn::Mul(c02, b2)), inv_det);
+  const V ny = hn::Mul(hn::Add(hn::Add(hn::Mul(c01, b0), hn::Mul(c11, b1)), hn::Mul(c12, b2)), inv_det);
+  const V nz = hn::Mul(hn::Add(hn::Add(hn::Mul(c02, b0), hn::Mul(c12, b1)), hn::Mul(c22, b2)), inv_det);
+  hn::StoreU(hn::IfThenElse(solve, nx, hn::LoadU(d, x + j)), d, x + j);
+  hn::StoreU(hn::IfThenElse(solve, ny, hn::LoadU(d, y + j)), d, y + j);
+  hn::StoreU(hn::IfThenElse(solve, nz, hn::LoadU(d, z + j)), d, z + j);
+  hn::StoreU(hn::IfThenElse(solve, hn::Set(d, 1.0), hn::LoadU(d, changed + j)), d, changed + j);
+}
+
+void RefineSolveImpl(const double* sums, int n, double min_conditioning, double* x, double* y, double* z,
+                     double* changed) {
+  const hn::ScalableTag<double> d;
+  for (size_t j = 0; j < static_cast<size_t>(n); j += hn::Lanes(d))
+    RefineSolveLanes(d, sums, static_cast<size_t>(n), j, min_conditioning, x, y, z, changed);
+}
+
 // steps::Undistort's pinhole path (undistort.cc: the inverse of K, then SetFromNormalized) for
 // joints [i, i + Lanes(d)). R_t * (x, y, 1) follows Eigen's evaluation of a 3x3 matrix times a
 // vector on the SSE2 baseline: rows 0-1 column by column ((a + b) + c), row 2 as a + (b + c).
@@ -620,6 +729,9 @@ HWY_EXPORT(MergeGroupImpl);
 HWY_EXPORT(PixelDistanceSumImpl);
 HWY_EXPORT(RankMedianImpl);
 HWY_EXPORT(UndistortPinholeImpl);
+HWY_EXPORT(RefinePrepareViewImpl);
+HWY_EXPORT(RefineAccumulateImpl);
+HWY_EXPORT(RefineSolveImpl);
 HWY_EXPORT(TargetImpl);
 HWY_EXPORT(DoubleLanesImpl);
 
@@ -663,6 +775,23 @@ double RankMedian(const double* values, int n) { return HWY_DYNAMIC_DISPATCH(Ran
 
 void UndistortPinhole(const PinholeView& view, const double* uvs, int n, const KeypointFields& out) {
   HWY_DYNAMIC_DISPATCH(UndistortPinholeImpl)(view, uvs, n, out);
+}
+
+void RefinePrepareView(const double* rx, const double* ry, const double* rz, const double* confidence,
+                       const double* person_score, double min_score, double cx, double cy, double cz, int n,
+                       double* weight, double* inv_norm_sq, double* origin_dot) {
+  HWY_DYNAMIC_DISPATCH(RefinePrepareViewImpl)(rx, ry, rz, confidence, person_score, min_score, cx, cy, cz, n, weight,
+                                              inv_norm_sq, origin_dot);
+}
+
+void RefineAccumulate(const RefineParams& p, const RefineView& view, const double* x, const double* y, const double* z,
+                      int n, double* sums) {
+  HWY_DYNAMIC_DISPATCH(RefineAccumulateImpl)(p, view, x, y, z, n, sums);
+}
+
+void RefineSolve(const double* sums, int n, double min_conditioning, double* x, double* y, double* z,
+                 double* changed) {
+  HWY_DYNAMIC_DISPATCH(RefineSolveImpl)(sums, n, min_conditioning, x, y, z, changed);
 }
 
 bool Enabled() {

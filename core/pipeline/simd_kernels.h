@@ -2,7 +2,8 @@
 // SIMD kernels of the hot steps, one lane per joint: the undistortion of a pinhole camera's pose
 // (before step 1), mid-point triangulation of a pose pair
 // (steps 4 and 10), its reprojection residuals, their median and joint scores (steps 6-7 and 10), the pre-filter's
-// pixel distance (step 2), the group distance (step 9) and the merge of a group (step 11).
+// pixel distance (step 2), the group distance (step 9), the merge of a group (step 11) and the
+// multi-view refinement (step 11a).
 // Structure of arrays in (KeypointColumns, pipeline_types.h), the steps' own arrays out.
 //
 // Each kernel is compiled for several instruction sets (Highway, simd_kernels.cc, private to
@@ -123,6 +124,42 @@ void UndistortPinhole(const PinholeView& view, const double* uvs, int n, const K
 // (the median of a pair's joint residuals in the score step): bit-identical, NaN included.
 inline constexpr int kRankMedianMax = 32;
 double RankMedian(const double* values, int n);
+
+// The kernels of steps::Refine (refine.h) run over whole vectors: their n is a multiple of
+// kRefineAlign (a multiple of the lane count of every instruction set compiled: 8 doubles with
+// AVX-512) and their arrays are padded.
+inline constexpr int kRefineAlign = 8;
+// One reweighting pass of steps::Refine for one view of a person, lanes across joints:
+// for every joint j in [0, n) adds the view's ray to the joint's normal equations at the current
+// point (x, y, z)[j]. sums holds kRefineSums arrays of n: a00 a01 a02 a11 a12 a22 (the symmetric
+// matrix), b0 b1 b2, and the count of views used. A view with weight 0 adds nothing.
+inline constexpr int kRefineSums = 10;
+struct RefineParams {
+  double inv_scale_sq;  // 1 / s^2
+  double cutoff_sq;     // (cutoff x s)^2
+};
+struct RefineView {
+  const double* rx;
+  const double* ry;
+  const double* rz;           // the view's rays (unnormalised)
+  const double* weight;       // 2D confidence where usable, else 0
+  const double* inv_norm_sq;  // 1 / |ray|^2 (0 where weight is 0)
+  const double* origin_dot;   // ray . camera centre
+  double cx, cy, cz;          // camera centre
+};
+// Before the passes, per view of the person: where the joint is usable (best >= min_score: a pair
+// the merge could use has it; confidence > 0; person_score > 0: the merged joint exists; a ray of
+// nonzero length) inv_norm_sq = 1 / |ray|^2 and weight = confidence, else both 0; origin_dot =
+// ray . camera centre. `weight` holds `best` on entry (RefineView's arrays, written here).
+void RefinePrepareView(const double* rx, const double* ry, const double* rz, const double* confidence,
+                       const double* person_score, double min_score, double cx, double cy, double cz, int n,
+                       double* weight, double* inv_norm_sq, double* origin_dot);
+void RefineAccumulate(const RefineParams& p, const RefineView& view, const double* x, const double* y, const double* z,
+                      int n, double* sums);
+// Then the solve of every joint: where at least 2 views were used and the matrix is well
+// conditioned (det > min_conditioning x (trace / 3)^3), (x, y, z)[j] = A^-1 b and changed[j] = 1.
+void RefineSolve(const double* sums, int n, double min_conditioning, double* x, double* y, double* z,
+                 double* changed);
 
 // Whether the steps use these kernels (the default) or their scalar code: for comparisons and tests.
 // The environment variable RPT_SIMD=off starts a process with the scalar code; RPT_SIMD=<name>
