@@ -53,9 +53,11 @@ struct KeypointColumns {
       }
     }
   }
-  // Every column to `size` values (a column that grows gets zeros; none allocates below its capacity).
+  // Every column to `size` values and kSlack more (a column that grows gets zeros; none allocates
+  // below its capacity). The slack lets a kernel read whole vectors past a pose's last joint.
+  static constexpr size_t kSlack = 8;
   void Resize(size_t size) {
-    for (auto* c : {&u, &v, &score, &sqrt_score, &rx, &ry, &rz}) c->resize(size);
+    for (auto* c : {&u, &v, &score, &sqrt_score, &rx, &ry, &rz}) c->resize(size + kSlack);
   }
   // Value `at` of every column from `kp`.
   void Set(size_t at, const Keypoint& kp) {

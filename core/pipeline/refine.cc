@@ -17,9 +17,6 @@ constexpr double kMinConditioning = 1e-4;
 enum Sum { kA00, kA01, kA02, kA11, kA12, kA22, kB0, kB1, kB2, kUsed, kSums };
 static_assert(kSums == simd::kRefineSums);
 
-// The columns of one pose the step copies (padded), in this order.
-enum Column { kRx, kRy, kRz, kConfidence, kColumns };
-
 // simd::RefinePrepareView's reference.
 void PrepareViewScalar(const double* rx, const double* ry, const double* rz, const double* confidence,
                        const double* person_score, double min_score, double cx, double cy, double cz, int n,
@@ -97,6 +94,7 @@ int steps::Refine(const RefineOptions& options, const RefineInput& in, RefineScr
   const int n = proposals.num_joints;
   // Person i was merged from group i, over the prepared poses' joints (their columns).
   if (groups.size() != persons->num_persons() || n != persons->num_joints || columns.stride != n) return 0;
+  static_assert(simd::kRefineAlign <= KeypointColumns::kSlack + 1, "reads past a pose stay in the columns");
   const double scale = options.scale_factor * in.kernel.scale_m;
   if (!(scale > 0)) return 0;
   const simd::RefineParams params{.inv_scale_sq = 1.0 / (scale * scale),
@@ -106,6 +104,8 @@ int steps::Refine(const RefineOptions& options, const RefineInput& in, RefineScr
   // Every per-joint array holds `padded` values, the joints beyond n zero (no view, no change).
   const int padded = (n + simd::kRefineAlign - 1) / simd::kRefineAlign * simd::kRefineAlign;
   const size_t row = static_cast<size_t>(padded);
+  // The columns end in their slack (undistort sizes them with KeypointColumns::Resize).
+  if (columns.rx.size() < static_cast<size_t>(in.views.num_poses()) * n + (padded - n)) return 0;
   RefineScratch& s = *scratch;
   s.x.assign(row, 0.0);
   s.y.assign(row, 0.0);
@@ -121,37 +121,35 @@ int steps::Refine(const RefineOptions& options, const RefineInput& in, RefineScr
       for (const int pose : {proposals.pairs[k].a, proposals.pairs[k].b})
         if (std::find(s.poses.begin(), s.poses.end(), pose) == s.poses.end()) s.poses.push_back(pose);
     const int num_poses = static_cast<int>(s.poses.size());
-    // Per pose: its rays and confidences (padded copies), and first the best joint score of its
-    // pairs (in `weight` until the preparation below turns it into the weight).
-    s.columns.assign(kColumns * num_poses * row, 0.0);
+    // Per pose and joint the best joint score of its pairs (in `weight` until the preparation
+    // below turns it into the weight; padded with zeros: the joints beyond n are never usable).
     s.weight.assign(num_poses * row, 0.0);
     s.inv_norm_sq.resize(num_poses * row);
     s.origin_dot.resize(num_poses * row);
-    for (int q = 0; q < num_poses; ++q) {
-      const size_t at = static_cast<size_t>(s.poses[q]) * n;
-      double* own = s.columns.data() + kColumns * q * row;
-      std::copy_n(columns.rx.data() + at, n, own + kRx * row);
-      std::copy_n(columns.ry.data() + at, n, own + kRy * row);
-      std::copy_n(columns.rz.data() + at, n, own + kRz * row);
-      std::copy_n(columns.score.data() + at, n, own + kConfidence * row);
-    }
     for (int k = first; k < last; ++k) {
       const double* score = proposals.score.data() + static_cast<size_t>(k) * n;
       for (const int pose : {proposals.pairs[k].a, proposals.pairs[k].b}) {
         const size_t q = std::find(s.poses.begin(), s.poses.end(), pose) - s.poses.begin();
         double* best = s.weight.data() + q * row;
-        for (int j = 0; j < n; ++j) best[j] = std::max(best[j], score[j]);
+        if (use_simd) {
+          simd::RefineBestScore(score, n, best);
+        } else {
+          for (int j = 0; j < n; ++j) best[j] = std::max(best[j], score[j]);
+        }
       }
     }
     auto person = persons->Person(p);
     for (int j = 0; j < n; ++j) s.person_score[j] = person(3, j);
+    // The kernels read each pose's columns in place, `padded` values from its first joint: past
+    // its last joint they read the next pose's or the columns' slack (KeypointColumns::kSlack),
+    // which lanes of weight 0 ignore.
     for (int q = 0; q < num_poses; ++q) {
-      const double* own = s.columns.data() + kColumns * q * row;
+      const size_t at = static_cast<size_t>(s.poses[q]) * n;
       const Eigen::Vector3d& c = in.geometry[in.views.view_of[s.poses[q]]].center;
       (use_simd ? simd::RefinePrepareView : PrepareViewScalar)(
-          own + kRx * row, own + kRy * row, own + kRz * row, own + kConfidence * row, s.person_score.data(), min_score,
-          c.x(), c.y(), c.z(), padded, s.weight.data() + q * row, s.inv_norm_sq.data() + q * row,
-          s.origin_dot.data() + q * row);
+          columns.rx.data() + at, columns.ry.data() + at, columns.rz.data() + at, columns.score.data() + at,
+          s.person_score.data(), min_score, c.x(), c.y(), c.z(), padded, s.weight.data() + q * row,
+          s.inv_norm_sq.data() + q * row, s.origin_dot.data() + q * row);
     }
     for (int j = 0; j < n; ++j) {
       s.x[j] = person(0, j);
@@ -162,11 +160,11 @@ int steps::Refine(const RefineOptions& options, const RefineInput& in, RefineScr
     for (int it = 0; it < options.iterations; ++it) {
       std::fill(s.sums.begin(), s.sums.end(), 0.0);
       for (int q = 0; q < num_poses; ++q) {
-        const double* own = s.columns.data() + kColumns * q * row;
+        const size_t at = static_cast<size_t>(s.poses[q]) * n;
         const Eigen::Vector3d& c = in.geometry[in.views.view_of[s.poses[q]]].center;
-        const simd::RefineView view{.rx = own + kRx * row,
-                                    .ry = own + kRy * row,
-                                    .rz = own + kRz * row,
+        const simd::RefineView view{.rx = columns.rx.data() + at,
+                                    .ry = columns.ry.data() + at,
+                                    .rz = columns.rz.data() + at,
                                     .weight = s.weight.data() + q * row,
                                     .inv_norm_sq = s.inv_norm_sq.data() + q * row,
                                     .origin_dot = s.origin_dot.data() + q * row,

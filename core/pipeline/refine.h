@@ -31,7 +31,6 @@ namespace rpt {
 // padded to simd::kRefineAlign with zeros (the kernels run over whole vectors).
 struct RefineScratch {
   std::vector<int> poses;           // the person's 2D poses (its group's pairs)
-  std::vector<double> columns;      // per pose: its rays (x, y, z) and 2D confidences, copied
   std::vector<double> weight;       // per pose and joint: 2D confidence where usable, else 0
   std::vector<double> inv_norm_sq;  // per pose and joint: 1 / |ray|^2 (0 where weight is 0)
   std::vector<double> origin_dot;   // per pose and joint: ray . camera centre

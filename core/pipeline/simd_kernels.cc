@@ -479,6 +479,22 @@ double PixelDistanceSumImpl(const double* uv, const PoseColumns& c, int n, int* 
   return sum;
 }
 
+// std::max(best, score) lane by lane for joints [j, j + Lanes(d)).
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE void RefineBestScoreLanes(D d, const double* score, size_t j, double* best) {
+  const V b = hn::LoadU(d, best + j), s = hn::LoadU(d, score + j);
+  hn::StoreU(hn::IfThenElse(hn::Lt(b, s), s, b), d, best + j);
+}
+
+void RefineBestScoreImpl(const double* score, int n, double* best) {
+  const hn::ScalableTag<double> d;
+  const hn::CappedTag<double, 1> d1;
+  const size_t N = hn::Lanes(d), joints = static_cast<size_t>(n);
+  size_t j = 0;
+  for (; j + N <= joints; j += N) RefineBestScoreLanes(d, score, j, best);
+  for (; j < joints; ++j) RefineBestScoreLanes(d1, score, j, best);
+}
+
 // steps::Refine's view preparation (refine.cc, PrepareViewScalar) for joints [j, j + Lanes(d)).
 template <class D, class V = hn::Vec<D>>
 HWY_INLINE void RefinePrepareLanes(D d, const double* rx, const double* ry, const double* rz,
@@ -729,6 +745,7 @@ HWY_EXPORT(MergeGroupImpl);
 HWY_EXPORT(PixelDistanceSumImpl);
 HWY_EXPORT(RankMedianImpl);
 HWY_EXPORT(UndistortPinholeImpl);
+HWY_EXPORT(RefineBestScoreImpl);
 HWY_EXPORT(RefinePrepareViewImpl);
 HWY_EXPORT(RefineAccumulateImpl);
 HWY_EXPORT(RefineSolveImpl);
@@ -776,6 +793,8 @@ double RankMedian(const double* values, int n) { return HWY_DYNAMIC_DISPATCH(Ran
 void UndistortPinhole(const PinholeView& view, const double* uvs, int n, const KeypointFields& out) {
   HWY_DYNAMIC_DISPATCH(UndistortPinholeImpl)(view, uvs, n, out);
 }
+
+void RefineBestScore(const double* score, int n, double* best) { HWY_DYNAMIC_DISPATCH(RefineBestScoreImpl)(score, n, best); }
 
 void RefinePrepareView(const double* rx, const double* ry, const double* rz, const double* confidence,
                        const double* person_score, double min_score, double cx, double cy, double cz, int n,

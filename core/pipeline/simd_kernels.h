@@ -147,6 +147,9 @@ struct RefineView {
   const double* origin_dot;   // ray . camera centre
   double cx, cy, cz;          // camera centre
 };
+// best[j] = (best[j] < score[j] ? score[j] : best[j]) for j in [0, n) (std::max, NaN included):
+// the best joint score of a pose's pairs. Any n (a partial last vector runs lane by lane).
+void RefineBestScore(const double* score, int n, double* best);
 // Before the passes, per view of the person: where the joint is usable (best >= min_score: a pair
 // the merge could use has it; confidence > 0; person_score > 0: the merged joint exists; a ray of
 // nonzero length) inv_norm_sq = 1 / |ray|^2 and weight = confidence, else both 0; origin_dot =

@@ -48,6 +48,7 @@ struct OneJointScene {
                          double joint_score = 0.8) {
     proposals.num_joints = 1;
     views.num_joints = 1;
+    views.all_columns.Resize(views.view_of.size());  // the slack the undistort step leaves
     groups.begin = {0, static_cast<int>(proposals.pairs.size())};
     Poses3D persons;
     persons.Clear(1);
@@ -196,6 +197,7 @@ TEST(Refine, KernelsEqualTheScalarCodeBitForBit) {
         views.all_columns.score.push_back(uniform(rng) < -0.7 ? 0.0 : 0.6 + 0.3 * uniform(rng));
       }
     }
+    views.all_columns.Resize(static_cast<size_t>(kViews) * kJoints);  // the slack the undistort step leaves
     Proposals proposals;
     proposals.num_joints = kJoints;
     for (int a = 0; a < kViews; ++a)
