@@ -7,6 +7,8 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -53,11 +55,14 @@ struct KeypointColumns {
       }
     }
   }
-  // Every column to `size` values and kSlack more (a column that grows gets zeros; none allocates
-  // below its capacity). The slack lets a kernel read whole vectors past a pose's last joint.
+  // Every column to `size` values and kSlack zeros more (a column that grows gets zeros; none
+  // allocates below its capacity). The slack lets a kernel read whole vectors past a pose's last joint.
   static constexpr size_t kSlack = 8;
   void Resize(size_t size) {
-    for (auto* c : {&u, &v, &score, &sqrt_score, &rx, &ry, &rz}) c->resize(size + kSlack);
+    for (auto* c : {&u, &v, &score, &sqrt_score, &rx, &ry, &rz}) {
+      c->resize(size + kSlack);
+      std::fill(c->begin() + static_cast<std::ptrdiff_t>(size), c->end(), 0.0);
+    }
   }
   // Value `at` of every column from `kp`.
   void Set(size_t at, const Keypoint& kp) {
