@@ -49,7 +49,7 @@ NATIVE=$(grep -E '^RPT_MARCH_NATIVE:' "$BUILD/CMakeCache.txt" | cut -d= -f2-)
   echo "## SIMD kernels against the scalar steps (same run)"
   echo
   echo "The scalar steps stay selectable (\`RPT_SIMD=off\`) for this comparison; both give the same results."
-  echo "Kernels run in undistort (pinhole cameras, as here), prefilter, triangulate_core, score, group, triangulate_full and merge; the other"
+  echo "Kernels run in undistort (pinhole cameras, as here), prefilter, triangulate_core, score, triangulate_full, merge and refine; the other"
   echo "steps' ratios show what the machine's drift between the two processes alone does."
   echo
   echo '```'

@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <limits>
 
-#include "core/pipeline/simd_kernels.h"
 
 namespace rpt {
 
@@ -40,7 +39,6 @@ int steps::Group(const GroupOptions& options, const GroupInput& in, GroupScratch
   int* const small_groups = &counters->small_groups;
   const int num = proposals->size();
   const int n = proposals->num_joints;
-  const bool use_simd = simd::Enabled();
   GroupScratch& s = *scratch;
   s.order.resize(num);
   for (int k = 0; k < num; ++k) s.order[k] = k;
@@ -55,6 +53,7 @@ int steps::Group(const GroupOptions& options, const GroupInput& in, GroupScratch
 
   s.center_sum.clear();
   s.center_count.clear();
+  s.center.clear();
   for (int k : s.order) {
     const Eigen::Vector3d* xyz = proposals->xyz.data() + static_cast<size_t>(k) * n;
     const double* score = proposals->score.data() + static_cast<size_t>(k) * n;
@@ -69,22 +68,20 @@ int steps::Group(const GroupOptions& options, const GroupInput& in, GroupScratch
     int best_group = -1;
     double best_distance = options.max_distance_m;
     const int num_groups = static_cast<int>(s.size.size());
+    const double bound_sq = 9.0 * options.max_distance_m * options.max_distance_m;
     for (int g = 0; g < num_groups; ++g) {
       // Cheap bound first: the mean joint distance is at least the distance of the centres (when
       // both cover the same joints); 3x leaves room for different joint subsets.
-      const Eigen::Vector3d group_center = s.center_sum[g] / s.center_count[g];
-      if ((group_center - center).squaredNorm() > 9.0 * options.max_distance_m * options.max_distance_m) continue;
+      if ((s.center[g] - center).squaredNorm() > bound_sq) continue;
+      // Scalar: a short row of core joints, summed in joint order (a SIMD kernel that has to keep
+      // that order was slower, results/bench.md).
       int common = 0;
       double sum = 0;
       const size_t g0 = static_cast<size_t>(g) * n;
-      if (use_simd) {
-        sum = simd::DistanceSum(xyz->data(), s.running_mean[g0].data(), score, s.count.data() + g0, n, &common);
-      } else {
-        for (int i = 0; i < n; ++i) {
-          if (score[i] <= 0 || s.count[g0 + i] == 0) continue;
-          sum += (xyz[i] - s.running_mean[g0 + i]).norm();
-          ++common;
-        }
+      for (int i = 0; i < n; ++i) {
+        if (score[i] <= 0 || s.count[g0 + i] == 0) continue;
+        sum += (xyz[i] - s.running_mean[g0 + i]).norm();
+        ++common;
       }
       if (common < 2) continue;
       const double distance = sum / common;
@@ -101,6 +98,7 @@ int steps::Group(const GroupOptions& options, const GroupInput& in, GroupScratch
       s.size.push_back(0);
       s.center_sum.push_back(Eigen::Vector3d::Zero());
       s.center_count.push_back(0);
+      s.center.push_back(Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN()));  // no member centre yet: never skipped
     }
     for (int i = 0; i < n; ++i) {
       if (score[i] <= 0) continue;
@@ -112,6 +110,7 @@ int steps::Group(const GroupOptions& options, const GroupInput& in, GroupScratch
     if (valid > 0) {
       s.center_sum[best_group] += center;
       ++s.center_count[best_group];
+      s.center[best_group] = s.center_sum[best_group] / s.center_count[best_group];
     }
     ++s.size[best_group];
     proposals->group[k] = best_group;

@@ -33,6 +33,7 @@ struct GroupScratch {
   std::vector<int> size;             // per group
   std::vector<Eigen::Vector3d> center_sum;  // per group: sum of member centres
   std::vector<int> center_count;
+  std::vector<Eigen::Vector3d> center;  // per group: center_sum / center_count
   std::vector<int> renumber;
   std::vector<double> strength;  // per group: sum of pair scores
   std::vector<int> owner;        // per 2D pose: owning group

@@ -304,38 +304,6 @@ void ScoreJointsImpl(const JointKernel& kernel, const ResidualViews& rv, const P
   }
 }
 
-template <class D, class V = hn::Vec<D>>
-HWY_INLINE void DistanceSumLanes(D d, const double* xyz, const double* mean, const double* score, const int* count,
-                                 size_t i, double* sum, int* common) {
-  const hn::Rebind<int32_t, D> d32;
-  const hn::RebindToSigned<D> di;
-  V x, y, z, mx, my, mz;
-  hn::LoadInterleaved3(d, xyz + 3 * i, x, y, z);
-  hn::LoadInterleaved3(d, mean + 3 * i, mx, my, mz);
-  const V dx = hn::Sub(x, mx), dy = hn::Sub(y, my), dz = hn::Sub(z, mz);
-  const auto counted = hn::RebindMask(d, hn::Gt(hn::PromoteTo(di, hn::LoadU(d32, count + i)), hn::Zero(di)));
-  const auto valid = hn::And(hn::Gt(hn::LoadU(d, score + i), hn::Zero(d)), counted);
-  // The norm as Eigen's (x^2 + y^2) + z^2; invalid joints add +0, which leaves the sum's bits.
-  const V norm = hn::IfThenElseZero(valid, hn::Sqrt(hn::Add(hn::Add(hn::Mul(dx, dx), hn::Mul(dy, dy)), hn::Mul(dz, dz))));
-  HWY_ALIGN double lanes[hn::MaxLanes(d)];
-  hn::Store(norm, d, lanes);
-  for (size_t l = 0; l < hn::Lanes(d); ++l) *sum += lanes[l];  // joint order, as the scalar loop
-  *common += static_cast<int>(hn::CountTrue(d, valid));
-}
-
-double DistanceSumImpl(const double* xyz, const double* mean, const double* score, const int* count, int n,
-                       int* common) {
-  const hn::ScalableTag<double> d;
-  const hn::CappedTag<double, 1> d1;
-  const size_t N = hn::Lanes(d), joints = static_cast<size_t>(n);
-  double sum = 0;
-  *common = 0;
-  size_t i = 0;
-  for (; i + N <= joints; i += N) DistanceSumLanes(d, xyz, mean, score, count, i, &sum, common);
-  for (; i < joints; ++i) DistanceSumLanes(d1, xyz, mean, score, count, i, &sum, common);
-  return sum;
-}
-
 // Merge of joints [j, j + Lanes(d)) of one group: steps::Merge's loop lane by lane (merge.h). `dist`
 // holds members x Lanes(d) squared distances: NaN = not (or no longer) a candidate.
 template <class D, class V = hn::Vec<D>>
@@ -740,7 +708,6 @@ void EnsureEnvironmentRead() { static const bool read = ReadEnvironment(); (void
 HWY_EXPORT(TriangulatePairImpl);
 HWY_EXPORT(PairResidualsImpl);
 HWY_EXPORT(ScoreJointsImpl);
-HWY_EXPORT(DistanceSumImpl);
 HWY_EXPORT(MergeGroupImpl);
 HWY_EXPORT(PixelDistanceSumImpl);
 HWY_EXPORT(RankMedianImpl);
@@ -768,11 +735,6 @@ void ScoreJoints(const JointKernel& kernel, const ResidualViews& rv, const PoseC
                  int n, const double* xyz, const double* gap, const double* residual, double* score,
                  double* geometric) {
   HWY_DYNAMIC_DISPATCH(ScoreJointsImpl)(kernel, rv, a, b, n, xyz, gap, residual, score, geometric);
-}
-
-double DistanceSum(const double* xyz, const double* mean, const double* score, const int* count, int n,
-                   int* common) {
-  return HWY_DYNAMIC_DISPATCH(DistanceSumImpl)(xyz, mean, score, count, n, common);
 }
 
 double PixelDistanceSum(const double* uv, const PoseColumns& c, int n, int* count) {

@@ -77,12 +77,6 @@ void ScoreJoints(const JointKernel& kernel, const ResidualViews& rv, const PoseC
                  int n, const double* xyz, const double* gap, const double* residual, double* score,
                  double* geometric);
 
-// Sum over joints i in [0, n) with score[i] > 0 and count[i] > 0 of |xyz_i - mean_i| (points x y z
-// interleaved, as Eigen::Vector3d), added in joint order; *common = the number of such joints.
-// The group step's distance of a proposal from a group.
-double DistanceSum(const double* xyz, const double* mean, const double* score, const int* count, int n,
-                   int* common);
-
 // Sum over joints i in [0, n) with c.score[i] > 0 and uv_i seen (x not NaN) of the pixel distance
 // |uv_i - (c.u[i], c.v[i])| (uv: u v interleaved, as Eigen::Vector2d), added in joint order;
 // *count = the number of such joints. The pre-filter's distance of a pose from a previous person.

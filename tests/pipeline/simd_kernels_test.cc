@@ -249,40 +249,6 @@ TEST(SimdKernels, ResidualsAndScoresEqualTheScalarKernelsBitForBit) {
   });
 }
 
-TEST(SimdKernels, DistanceSumEqualsTheGroupStepsScalarLoopBitForBit) {
-  simd::ForEachPathForTest([&] {
-    std::mt19937 rng(5);
-    std::uniform_real_distribution<double> pos(-3, 3), unit(0, 1);
-    int compared = 0;
-    for (int round = 0; round < 200; ++round) {
-      for (const int n : kJointCounts) {
-        std::vector<Eigen::Vector3d> xyz(n), mean(n);
-        std::vector<double> score(n);
-        std::vector<int> count(n);
-        for (int i = 0; i < n; ++i) {
-          xyz[i] = Eigen::Vector3d(pos(rng), pos(rng), pos(rng));
-          mean[i] = xyz[i] + 0.1 * Eigen::Vector3d(pos(rng), pos(rng), pos(rng));
-          score[i] = unit(rng) < 0.2 ? 0.0 : unit(rng);
-          count[i] = unit(rng) < 0.2 ? 0 : 1 + static_cast<int>(5 * unit(rng));
-        }
-        double expected = 0;
-        int expected_common = 0;
-        for (int i = 0; i < n; ++i) {
-          if (score[i] <= 0 || count[i] == 0) continue;
-          expected += (xyz[i] - mean[i]).norm();
-          ++expected_common;
-        }
-        int common = -1;
-        const double sum = simd::DistanceSum(xyz.data()->data(), mean.data()->data(), score.data(), count.data(), n, &common);
-        ASSERT_EQ(common, expected_common) << simd::ActivePath();
-        ASSERT_TRUE(SameBits(sum, expected)) << simd::ActivePath() << " " << sum << " vs " << expected;
-        ++compared;
-      }
-    }
-    EXPECT_EQ(compared, 200 * 8);
-  });
-}
-
 TEST(SimdKernels, PixelDistanceSumEqualsThePrefiltersScalarLoopBitForBit) {
   simd::ForEachPathForTest([&] {
     std::mt19937 rng(13);
