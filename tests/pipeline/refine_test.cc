@@ -10,7 +10,6 @@
 
 #include "core/pipeline/refine.h"
 #include "core/pipeline/simd_kernels.h"
-#include "core/pipeline/triangulator.h"
 #include "tests/pipeline/test_scene.h"
 
 namespace rpt {
@@ -246,10 +245,8 @@ TEST(Refine, NoiseFreeSceneStaysExact) {
   options.refine.enabled = true;
   options.track.enabled = false;
   options.clip_speed.enabled = false;
-  Triangulator tri(cameras, CocoBodyJoints(), options);
-  Poses3D persons;
   FrameStats stats;
-  tri.Process(views, 0.0, &persons, &stats);
+  const Poses3D persons = test::ProcessOneFrame(cameras, views, options, &stats);
   ASSERT_EQ(persons.num_persons(), 1);
   for (int j = 0; j < 17; ++j) EXPECT_LT((persons.Person(0).col(j).head<3>() - body.col(j).head<3>()).norm(), 1e-9) << j;
   EXPECT_EQ(stats.count[static_cast<int>(Step::kRefine)], persons.num_joints) << "every joint, derived ones included";

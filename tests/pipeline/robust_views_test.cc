@@ -3,7 +3,6 @@
 // views that agree; where all views agree nothing changes.
 #include <gtest/gtest.h>
 
-#include "core/pipeline/triangulator.h"
 #include "tests/pipeline/test_scene.h"
 
 namespace rpt {
@@ -20,11 +19,7 @@ Poses3D Triangulate(const std::vector<Camera>& cameras, const std::vector<Poses2
   options.triangulate.robust_min_m = 0.05;
   options.track.enabled = false;
   options.clip_speed.enabled = false;
-  Triangulator tri(cameras, CocoBodyJoints(), options);
-  Poses3D persons;
-  FrameStats stats;
-  tri.Process(views, 0.0, &persons, &stats);
-  return persons;
+  return test::ProcessOneFrame(cameras, views, options);
 }
 
 // Three views see the left wrist; one reports it 30 px off (about 0.16 m at the person's 4.3 m).

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include "core/pipeline/triangulator.h"
 #include "core/pipeline/undistort.h"
 
 namespace rpt::test {
@@ -88,6 +89,15 @@ void UndistortCocoViews(const std::vector<Camera>& cameras, const std::vector<Po
                     .core_joints = *core,
                     .num_output_joints = 17},
                    prepared);
+}
+
+Poses3D ProcessOneFrame(const std::vector<Camera>& cameras, const std::vector<Poses2D>& views,
+                        const TriangulatorOptions& options, FrameStats* stats) {
+  Triangulator tri(cameras, CocoBodyJoints(), options);
+  Poses3D persons;
+  FrameStats local;
+  tri.Process(views, 0.0, &persons, stats != nullptr ? stats : &local);
+  return persons;
 }
 
 }  // namespace rpt::test

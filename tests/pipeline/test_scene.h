@@ -7,6 +7,8 @@
 
 #include "core/camera.h"
 #include "core/joints.h"
+#include "core/pipeline/frame_stats.h"
+#include "core/pipeline/options.h"
 #include "core/pipeline/pipeline_types.h"
 #include "core/pipeline/view_geometry.h"
 #include "core/poses.h"
@@ -30,5 +32,10 @@ std::vector<Poses2D> ProjectPersons(const std::vector<Camera>& cameras, const st
 // geometry, the default core joints and the views undistorted with the default options.
 void UndistortCocoViews(const std::vector<Camera>& cameras, const std::vector<Poses2D>& views,
                         std::vector<ViewGeometry>* geometry, std::vector<int>* core, PreparedViews* prepared);
+
+// The persons of one frame of COCO-17 `views` of `cameras` (at time 0) through a new Triangulator
+// with `options`; its stats in `stats` when given.
+Poses3D ProcessOneFrame(const std::vector<Camera>& cameras, const std::vector<Poses2D>& views,
+                        const TriangulatorOptions& options, FrameStats* stats = nullptr);
 
 }  // namespace rpt::test

@@ -80,9 +80,7 @@ TEST(Triangulator, EmptyFramesAndFramesWithOneViewGiveNobody) {
   views[2].Clear(17);
   TriangulatorOptions no_track;
   no_track.track.enabled = false;
-  Triangulator tri2(cameras, CocoBodyJoints(), no_track);
-  tri2.Process(views, 0.0, &persons, &stats);
-  EXPECT_EQ(persons.num_persons(), 0);
+  EXPECT_EQ(test::ProcessOneFrame(cameras, views, no_track).num_persons(), 0);
 }
 
 TEST(Triangulator, RejectsBadConfigurationAndShapes) {
