@@ -117,6 +117,7 @@ int steps::Group(const GroupOptions& options, const GroupInput& in, GroupScratch
   }
 
   const int num_groups = static_cast<int>(s.size.size());
+  s.lost_members.assign(num_groups, 0);
   if (options.exclusive_poses) {
     s.strength.assign(num_groups, 0.0);
     for (int k = 0; k < num; ++k) s.strength[proposals->group[k]] += proposals->pair_score[k];
@@ -136,20 +137,35 @@ int steps::Group(const GroupOptions& options, const GroupInput& in, GroupScratch
       int& g = proposals->group[k];
       if (s.owner[proposals->pairs[k].a] == g && s.owner[proposals->pairs[k].b] == g) continue;
       --s.size[g];
+      s.lost_members[g] = 1;
       g = -1;
       ++*conflicting;
     }
   }
 
   if (options.drop_mirrored && num_groups > 1) {
-    // Group means over the surviving members, and strengths.
-    s.mean.assign(static_cast<size_t>(num_groups) * n, Eigen::Vector3d::Zero());
-    s.mean_count.assign(static_cast<size_t>(num_groups) * n, 0);
+    // Group means over the surviving members, and strengths. A group that lost no member to
+    // exclusive_poses has its mean already (the running mean of the assignment); the others are
+    // summed again over their survivors, in the same (visiting) order.
+    s.mean.assign(s.running_mean.begin(), s.running_mean.end());
+    s.mean_count.assign(s.count.begin(), s.count.end());
     s.strength.assign(num_groups, 0.0);
+    bool any_lost = false;
+    for (int g = 0; g < num_groups; ++g) {
+      if (!s.lost_members[g]) continue;
+      any_lost = true;
+      for (int i = 0; i < n; ++i) {
+        s.mean[static_cast<size_t>(g) * n + i].setZero();
+        s.mean_count[static_cast<size_t>(g) * n + i] = 0;
+      }
+    }
     for (int k = 0; k < num; ++k) {
+      if (proposals->group[k] >= 0) s.strength[proposals->group[k]] += proposals->pair_score[k];
+    }
+    for (int k : s.order) {
+      if (!any_lost) break;
       const int g = proposals->group[k];
-      if (g < 0) continue;
-      s.strength[g] += proposals->pair_score[k];
+      if (g < 0 || !s.lost_members[g]) continue;
       for (int i = 0; i < n; ++i) {
         const size_t idx = static_cast<size_t>(k) * n + i;
         if (proposals->score[idx] <= 0) continue;
@@ -157,8 +173,12 @@ int steps::Group(const GroupOptions& options, const GroupInput& in, GroupScratch
         ++s.mean_count[static_cast<size_t>(g) * n + i];
       }
     }
-    for (size_t i = 0; i < s.mean.size(); ++i) {
-      if (s.mean_count[i] > 0) s.mean[i] /= s.mean_count[i];
+    for (int g = 0; g < num_groups && any_lost; ++g) {
+      if (!s.lost_members[g]) continue;
+      for (int i = 0; i < n; ++i) {
+        const size_t gi = static_cast<size_t>(g) * n + i;
+        if (s.mean_count[gi] > 0) s.mean[gi] /= s.mean_count[gi];
+      }
     }
     for (int a = 0; a < num_groups; ++a) {
       for (int b = a + 1; b < num_groups; ++b) {

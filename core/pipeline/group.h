@@ -39,6 +39,7 @@ struct GroupScratch {
   std::vector<int> owner;        // per 2D pose: owning group
   std::vector<Eigen::Vector3d> mean;  // per group and joint (members only)
   std::vector<int> mean_count;
+  std::vector<char> lost_members;  // per group: exclusive_poses removed some of its proposals
 };
 
 // min_group_size with the automatic value (0) resolved for `num_cameras`: 1 below 10 cameras, 2

@@ -821,6 +821,42 @@ TEST(Group, MirroredDuplicateOfAPersonIsDropped) {
   EXPECT_EQ(steps::Group(options, {.num_poses = 5, .mirror = mirror}, &scratch, &p, &groups, &counters), 2);
 }
 
+TEST(Group, MirrorCheckUsesTheProposalsExclusivePosesLeft) {
+  // Joints: 0 = left, 1 = right. The person (poses 0, 1, 2) as in the test above; a mirrored
+  // duplicate (3, 4) that four weak phantoms reusing the person's pose 2 join, each pulling the
+  // group's running mean along x (to 0.274 m). exclusive_poses gives pose 2 to the person and
+  // removes the phantoms: over what is left the duplicate is the mirrored person (distance 0),
+  // while the mean with the phantoms would be 0.274 m away, above max_distance_m (0.25).
+  Proposals p;
+  p.Clear(2);
+  auto add = [&](int a, int b, double x, double left_y, double score) {
+    p.Add(PosePair{a, b});
+    p.xyz[p.xyz.size() - 2] = Eigen::Vector3d(x, left_y, 1);
+    p.xyz[p.xyz.size() - 1] = Eigen::Vector3d(x, -left_y, 1);
+    p.score[p.score.size() - 2] = p.score[p.score.size() - 1] = 1.0;
+    p.pair_score.back() = score;
+  };
+  add(0, 1, 0, 0.2, 0.95);
+  add(0, 2, 0, 0.21, 0.94);
+  add(1, 2, 0, 0.19, 0.93);
+  add(3, 4, 0, -0.2, 0.99);
+  for (int i = 0; i < 4; ++i) add(2, 5 + i, std::vector<double>{0.2, 0.3, 0.4, 0.47}[i], -0.2, 0.3 - 0.01 * i);
+  Groups groups;
+  GroupScratch scratch;
+  FrameStats counters;
+  GroupOptions options;
+  const std::vector<int> mirror = {1, 0};
+  EXPECT_EQ(steps::Group(options, {.num_poses = 9, .mirror = mirror}, &scratch, &p, &groups, &counters), 1);
+  EXPECT_EQ(counters.conflicting_proposals, 4);
+  EXPECT_EQ(counters.mirrored_groups, 1);
+  for (int k = 0; k < 3; ++k) EXPECT_EQ(p.group[k], 0) << k;
+  for (int k = 3; k < 8; ++k) EXPECT_EQ(p.group[k], -1) << k;
+  // Without exclusive_poses the phantoms stay, and the mean they pull keeps the duplicate apart.
+  options.exclusive_poses = false;
+  EXPECT_EQ(steps::Group(options, {.num_poses = 9, .mirror = mirror}, &scratch, &p, &groups, &counters), 2);
+  EXPECT_EQ(counters.mirrored_groups, 0);
+}
+
 TEST(JointSide, ReadsTheSideToken) {
   EXPECT_EQ(JointSide("wrist_left"), 1);
   EXPECT_EQ(JointSide("hand_thumb_1_right"), -1);
