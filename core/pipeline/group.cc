@@ -40,12 +40,12 @@ int steps::Group(const GroupOptions& options, const GroupInput& in, GroupScratch
   const int num = proposals->size();
   const int n = proposals->num_joints;
   GroupScratch& s = *scratch;
+  // Visiting order: by decreasing pair score, ties by index (sorted as (-score, index) keys).
+  s.keyed.resize(num);
+  for (int k = 0; k < num; ++k) s.keyed[k] = {-proposals->pair_score[k], k};
+  std::sort(s.keyed.begin(), s.keyed.end());
   s.order.resize(num);
-  for (int k = 0; k < num; ++k) s.order[k] = k;
-  std::sort(s.order.begin(), s.order.end(), [&](int x, int y) {
-    const double sx = proposals->pair_score[x], sy = proposals->pair_score[y];
-    return sx > sy || (sx == sy && x < y);
-  });
+  for (int k = 0; k < num; ++k) s.order[k] = s.keyed[k].second;
   s.sum.clear();
   s.running_mean.clear();
   s.count.clear();

@@ -16,6 +16,7 @@
 
 #include <Eigen/Core>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "core/pipeline/frame_stats.h"
@@ -26,7 +27,8 @@ namespace rpt {
 
 // Scratch buffers reused across frames.
 struct GroupScratch {
-  std::vector<int> order;
+  std::vector<std::pair<double, int>> keyed;  // (-pair score, proposal), sorted
+  std::vector<int> order;                      // proposals in visiting order
   std::vector<Eigen::Vector3d> sum;  // per group and joint
   std::vector<Eigen::Vector3d> running_mean;  // per group and joint: sum / count
   std::vector<int> count;            // per group and joint

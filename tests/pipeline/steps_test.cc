@@ -763,6 +763,33 @@ TEST(Group, ClustersByPersonAndDropsSmallGroups) {
   EXPECT_EQ(groups.members.size(), 5u);
 }
 
+TEST(Group, EqualPairScoresAreVisitedInIndexOrder) {
+  // Groups are numbered in creation order, and proposals are visited by decreasing pair score,
+  // ties by index: of two far-apart proposals with equal scores the first makes group 0; a third,
+  // stronger one, is visited first.
+  Proposals p;
+  p.Clear(2);
+  auto add = [&](Eigen::Vector3d x, double score) {
+    const int k = p.size();
+    p.Add(PosePair{2 * k, 2 * k + 1});
+    p.xyz[p.xyz.size() - 2] = x;
+    p.xyz[p.xyz.size() - 1] = x + Eigen::Vector3d(0, 0, 0.5);
+    p.score[p.score.size() - 2] = p.score[p.score.size() - 1] = 1.0;
+    p.pair_score.back() = score;
+  };
+  add({0, 0, 0}, 0.8);
+  add({2, 0, 0}, 0.8);
+  add({4, 0, 0}, 0.9);
+  Groups groups;
+  GroupScratch scratch;
+  FrameStats counters;
+  const std::vector<int> no_mirror = {0, 1};
+  ASSERT_EQ(steps::Group(GroupOptions{}, {.num_poses = 6, .mirror = no_mirror}, &scratch, &p, &groups, &counters), 3);
+  EXPECT_EQ(p.group[2], 0);
+  EXPECT_EQ(p.group[0], 1);
+  EXPECT_EQ(p.group[1], 2);
+}
+
 TEST(Group, ExclusivePosesRemovePhantomsThatReuseAPersonsPoses) {
   // Person A: poses 0,1,2 (three views) -> proposals (0,1), (0,2), (1,2) near the origin.
   // Phantom: pair (2, 3) -- pose 2 belongs to A -- triangulated 1.5 m away.
