@@ -83,10 +83,11 @@ def main():
               f"against the {simd_path} kernels; medians of {args.rounds} alternating "
               f"rounds of `rpt bench --repeat {args.repeat}`, us per frame")
     print()
-    header = f"{'step (us)':<18}" + "".join(f"{name:>30}" for name in scenes)
-    print(header)
     column = f"{before_name} -> {after_name} (speed-up)"
-    print(f"{'':<18}" + "".join(f"{column:>30}" for _ in scenes))
+    width = max(30, len(column) + 2)  # columns stay apart whatever the names
+    header = f"{'step (us)':<18}" + "".join(f"{name:>{width}}" for name in scenes)
+    print(header)
+    print(f"{'':<18}" + "".join(f"{column:>{width}}" for _ in scenes))
     rows = [(step, "step_time_us_median", step) for step in steps] + [("total (median)", "frame_time_us_median", None)]
     for label, key, step in rows:
         cells = []
@@ -94,19 +95,19 @@ def main():
             before, after = median(True, i, key, step), median(False, i, key, step)
             ran = before is not None and after is not None and after >= 0.05  # else: a step that did not run
             cell = f"{before:.2f} -> {after:.2f} ({before / after:.2f}x)" if ran else "-"
-            cells.append(f"{cell:>30}")
+            cells.append(f"{cell:>{width}}")
         print(f"{label:<18}" + "".join(cells))
     # Per-round ratios of the frame medians (the host's drift hits both sides of a round alike).
     cells = []
     for i in range(len(scenes)):
         ratios = [b["scenes"][i]["frame_time_us_median"] / a["scenes"][i]["frame_time_us_median"]
                   for b, a in zip(runs[True], runs[False])]
-        cells.append(f"{f'{statistics.median(ratios):.2f}x ({min(ratios):.2f}-{max(ratios):.2f})':>30}")
+        cells.append(f"{f'{statistics.median(ratios):.2f}x ({min(ratios):.2f}-{max(ratios):.2f})':>{width}}")
     print(f"{'speed-up per round':<18}" + "".join(cells))
     cells = []
     for i in range(len(scenes)):
         mpjpe = f"{runs[True][0]['scenes'][i]['mpjpe_mm']:.4f} -> {runs[False][0]['scenes'][i]['mpjpe_mm']:.4f}"
-        cells.append(f"{mpjpe:>30}")
+        cells.append(f"{mpjpe:>{width}}")
     print(f"{'MPJPE (mm)':<18}" + "".join(cells))
     return 0
 
