@@ -24,7 +24,8 @@ int Tracks::FindSlot(int track_id) const {
 
 const double* Tracks::LastPose(int track_id, double* timestamp_s) const {
   const int s = track_id >= 0 ? FindSlot(track_id) : -1;
-  if (s < 0) return nullptr;
+  // A track started this frame has no pose yet; its slot may hold an ended track's buffer.
+  if (s < 0 || slots[s].pose.empty()) return nullptr;
   *timestamp_s = slots[s].timestamp_s;
   return slots[s].pose.data();
 }

@@ -40,7 +40,8 @@ struct Tracks {
   void EndTracks();
   // The slot of track `track_id`, -1 when it has none.
   int FindSlot(int track_id) const;
-  // The stored pose (num_joints x 4, column-major) and time of a track, or nullptr.
+  // The stored pose (num_joints x 4, column-major) and time of a track, or nullptr (no such track,
+  // or one started this frame).
   const double* LastPose(int track_id, double* timestamp_s) const;
   // Stores the poses of the first `num_detected` persons as their tracks' last poses (and the time
   // as supported_s when the person has a multi-view joint and no joint lifted from one view).

@@ -78,6 +78,35 @@ TEST(Track, LostPersonCoastsThenEnds) {
   EXPECT_NE(later.track_ids[0], id);
 }
 
+TEST(ClipSpeed, NewTrackInAnEndedTracksSlotIsNotClipped) {
+  // A track ends; a person appearing 4.2 m from its last pose 0.16 s later starts a new track in
+  // the freed slot. The slot still holds the ended track's pose and time, which are not the new
+  // track's: nothing is clipped (at 10 m/s the stale pose would have pulled it 2.6 m back).
+  Tracks tracks;
+  TrackOptions options;
+  options.max_missing_frames = 2;
+  FrameStats stats;
+  Poses3D first = Persons({test::StandingPerson(-2, 0)});
+  RunTrack(options, &tracks, &first, &stats);
+  tracks.Commit(first, 1, 0.0);
+  for (int f = 1; f <= 3; ++f) {
+    Poses3D empty = Persons({});
+    RunTrack(options, &tracks, &empty, &stats);
+    tracks.Commit(empty, 0, f * 0.04);
+  }
+  const Eigen::Matrix4Xd body = test::StandingPerson(2.2, 0);
+  Poses3D later = Persons({body});
+  stats.Reset();
+  ASSERT_EQ(RunTrack(options, &tracks, &later, &stats), 1);
+  ASSERT_EQ(stats.new_tracks, 1);
+  ASSERT_EQ(tracks.slots.size(), 1u) << "the ended track's slot is reused";
+  double time = -1;
+  EXPECT_EQ(tracks.LastPose(later.track_ids[0], &time), nullptr) << "a new track has no last pose";
+  const steps::ClipSpeedInput input{.tracks = tracks, .timestamp_s = 0.16, .num_detected = 1};
+  EXPECT_EQ(steps::ClipSpeed(ClipSpeedOptions{}, input, &later), 0);
+  EXPECT_LT((later.Person(0) - body).norm(), 1e-12);
+}
+
 TEST(Track, FarPersonStartsNewTrack) {
   Tracks tracks;
   TrackOptions options;
