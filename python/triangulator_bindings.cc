@@ -61,6 +61,7 @@ py::dict StatsDict(const FrameStats& stats) {
   d["filled_joints"] = stats.filled_joints;
   d["new_tracks"] = stats.new_tracks;
   d["coasting_tracks"] = stats.coasting_tracks;
+  d["held_joints"] = stats.held_joints;
   d["bone_length_corrections"] = stats.bone_length_corrections;
   d["noise_m"] = stats.noise_m;
   return d;

@@ -449,6 +449,9 @@ struct TrackOptions {
   double max_gap_s = 1.0;
   double max_distance_m = 0.5;  // mean core-joint distance to continue a track
   int max_missing_frames = 3;   // a lost person is still returned (last pose) this many frames
+  // A joint post-processing filled from its neighbour keeps, instead, its offset from that
+  // neighbour in the track's last output (when both were present there).
+  bool hold_missing_joints = true;
 };
 
 template <class Visitor, OptionsOf<TrackOptions> Self>
@@ -462,6 +465,9 @@ void VisitFields(Visitor& v, Self& o) {
                .unit = "s", .min = 0, .max = 1e9});
   v("max_missing_frames", o.max_missing_frames,
     OptionSpec{.help = "a lost person is still returned (last pose) this many frames", .min = 0, .max = 1e6});
+  v("hold_missing_joints", o.hold_missing_joints,
+    OptionSpec{.help = "a missing joint of a tracked person keeps its offset from its neighbour joint in the "
+                       "track's last output (else it sits on the neighbour)"});
 }
 
 // Step 14.

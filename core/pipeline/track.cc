@@ -50,8 +50,59 @@ void Tracks::Commit(const Poses3D& persons, int num_detected, double timestamp_s
   }
 }
 
-int steps::Track(const TrackOptions& options, std::span<const int> match_joints, Tracks* tracks, TrackScratch* scratch,
+namespace {
+
+// Mean distance of `person` from a track's last pose over `joints` scored above `min_score` in
+// both; `*common` = how many.
+double MeanDistance(const Eigen::Ref<const Eigen::Matrix4Xd>& person, const double* last, std::span<const int> joints,
+                    double min_score, int* common) {
+  double sum = 0;
+  *common = 0;
+  for (int j : joints) {
+    const double* q = last + 4 * j;
+    if (person(3, j) <= min_score || q[3] <= min_score) continue;
+    sum += (person.col(j).head<3>() - Eigen::Vector3d(q[0], q[1], q[2])).norm();
+    ++*common;
+  }
+  return sum / std::max(*common, 1);
+}
+
+// hold_missing_joints for one person of a continued track (`last`: its last output): returns the
+// joints held.
+int HoldMissingJoints(std::span<const int> neighbour, const double* last, Eigen::Map<Eigen::Matrix4Xd> person,
+                      std::span<const uint8_t> provenance, std::vector<char>* settled) {
+  const int n = static_cast<int>(person.cols());
+  const auto filled = static_cast<uint8_t>(JointProvenance::kFilled);
+  settled->resize(n);
+  for (int j = 0; j < n; ++j) (*settled)[j] = provenance[j] != filled;
+  int held = 0;
+  // A filled joint is placed once its neighbour is (passes as in post-processing's fill).
+  for (int pass = 0; pass < 6; ++pass) {
+    bool changed = false;
+    for (int j = 0; j < n; ++j) {
+      const int nb = neighbour[j];
+      if ((*settled)[j] || nb < 0 || !(*settled)[nb]) continue;
+      const double* lj = last + 4 * j;
+      const double* ln = last + 4 * nb;
+      if (lj[3] > 0 && ln[3] > 0) {
+        person.col(j).head<3>() = person.col(nb).head<3>() + Eigen::Vector3d(lj[0] - ln[0], lj[1] - ln[1], lj[2] - ln[2]);
+        ++held;
+      } else {
+        person.col(j).head<3>() = person.col(nb).head<3>();  // on its neighbour, wherever that was placed
+      }
+      (*settled)[j] = 1;
+      changed = true;
+    }
+    if (!changed) break;
+  }
+  return held;
+}
+
+}  // namespace
+
+int steps::Track(const TrackOptions& options, const TrackInput& in, Tracks* tracks, TrackScratch* scratch,
                  Poses3D* persons, FrameStats* stats) {
+  const std::span<const int> match_joints = in.match_joints;
   std::vector<Tracks::Slot>& slots = tracks->slots;
   const int num_detected = persons->num_persons();
   const int n = persons->num_joints;
@@ -64,16 +115,11 @@ int steps::Track(const TrackOptions& options, std::span<const int> match_joints,
     for (int s = 0; s < num_slots; ++s) {
       const Tracks::Slot& t = slots[s];
       if (t.id < 0 || static_cast<int>(t.pose.size()) != 4 * n) continue;
-      double sum = 0;
+      // Observed joints first: a filled joint sits wherever its fill put it, in either pose.
       int common = 0;
-      for (int j : match_joints) {
-        const double* q = t.pose.data() + 4 * j;
-        if (person(3, j) <= 0 || q[3] <= 0) continue;
-        sum += (person.col(j).head<3>() - Eigen::Vector3d(q[0], q[1], q[2])).norm();
-        ++common;
-      }
+      double distance = MeanDistance(person, t.pose.data(), match_joints, in.unobserved_score, &common);
+      if (common < 3) distance = MeanDistance(person, t.pose.data(), match_joints, 0.0, &common);
       if (common < 3) continue;
-      const double distance = sum / common;
       if (distance < options.max_distance_m) candidates.emplace_back(distance, p, s);
     }
   }
@@ -90,7 +136,12 @@ int steps::Track(const TrackOptions& options, std::span<const int> match_joints,
   }
   for (int p = 0; p < num_detected; ++p) {
     if (person_slot[p] >= 0) {
-      persons->track_ids[p] = slots[person_slot[p]].id;
+      const Tracks::Slot& t = slots[person_slot[p]];
+      persons->track_ids[p] = t.id;
+      const std::span<const uint8_t> provenance = persons->PersonProvenance(p);
+      if (options.hold_missing_joints && !in.neighbour.empty() && !provenance.empty()) {
+        stats->held_joints += HoldMissingJoints(in.neighbour, t.pose.data(), persons->Person(p), provenance, &scratch->settled);
+      }
       continue;
     }
     // New track: reuse a free slot when there is one (keeps its buffer).

@@ -1,11 +1,17 @@
 // SPDX-License-Identifier: MIT
 // Step 13: assign persistent track ids over time.
 //
-// Each person is compared with the last pose of every live track (mean distance over the
-// joints valid in both, at least 3). Pairs below max_distance_m are assigned greedily by
-// increasing distance; unassigned persons start new tracks. A track that finds no person is
-// kept for max_missing_frames frames, during which its last pose is returned ("coasting"), then
-// it ends. Tracking does not smooth.
+// Each person is compared with the last pose of every live track: the mean distance over the
+// match joints observed in both (score above the unobserved score: not filled), or, when fewer
+// than 3 are, over those valid in both (at least 3). Pairs below max_distance_m are assigned
+// greedily by increasing distance; unassigned persons start new tracks. A track that finds no
+// person is kept for max_missing_frames frames, during which its last pose is returned
+// ("coasting"), then it ends. Tracking does not smooth.
+//
+// With hold_missing_joints, a joint of a continued track that post-processing filled from its
+// neighbour (provenance kFilled) is placed at the neighbour's current position plus the offset
+// between the two in the track's last output, when both were present there; otherwise it stays
+// on its neighbour. Chains (a filled elbow and wrist) are placed from the torso outwards.
 #pragma once
 
 #include <limits>
@@ -53,16 +59,23 @@ struct TrackScratch {
   std::vector<std::tuple<double, int, int>> candidates;  // (distance, person, slot)
   std::vector<int> person_slot;
   std::vector<char> slot_used;
+  std::vector<char> settled;  // per joint of a person: placed (observed, or held / refilled)
 };
 
 namespace steps {
 
-// Sets persons->track_ids of the frame's persons (post-processing's output) and appends the
-// coasting persons after them. `match_joints` (the core joints) are the joints compared.
-// Counts stats->new_tracks and stats->coasting_tracks. Returns the number of persons (detected
-// and coasting).
-int Track(const TrackOptions& options, std::span<const int> match_joints, Tracks* tracks, TrackScratch* scratch,
-          Poses3D* persons, FrameStats* stats);
+struct TrackInput {
+  std::span<const int> match_joints = {};  // the joints compared (the core joints)
+  std::span<const int> neighbour = {};     // per joint: the joint post-processing fills it from, -1 = none (no hold)
+  double unobserved_score = 0;        // joints scored at or below this were filled, not observed
+};
+
+// Sets persons->track_ids of the frame's persons (post-processing's output), holds the missing
+// joints of continued tracks (above) and appends the coasting persons. Counts stats->new_tracks,
+// stats->coasting_tracks and stats->held_joints. Returns the number of persons (detected and
+// coasting).
+int Track(const TrackOptions& options, const TrackInput& in, Tracks* tracks, TrackScratch* scratch, Poses3D* persons,
+          FrameStats* stats);
 
 }  // namespace steps
 

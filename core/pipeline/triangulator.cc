@@ -259,7 +259,12 @@ void Triangulator::Process(std::span<const Poses2D> views, double timestamp_s, P
   // The temporal steps need track ids: without tracking they do not run (zero time and count).
   const bool tracking = opt.track.enabled;
   const int num_detected = persons->num_persons();  // track appends the coasting persons after them
-  if (tracking) run.Run<Step::kTrack>(m.core_joints, &state.tracks, &buf.track_scratch, persons, stats);
+  if (tracking) {
+    run.Run<Step::kTrack>(steps::TrackInput{.match_joints = m.core_joints,
+                                            .neighbour = m.neighbour,
+                                            .unobserved_score = m.unobserved_score},
+                          &state.tracks, &buf.track_scratch, persons, stats);
+  }
   if (tracking && opt.clip_speed.enabled) {
     run.Run<Step::kClipSpeed>(
         steps::ClipSpeedInput{.tracks = state.tracks, .timestamp_s = timestamp_s, .num_detected = num_detected},

@@ -56,6 +56,7 @@ TEST(StepCountAccumulator, CountersFollowTheirNames) {
   stats.bone_length_corrections = 11;
   stats.single_view_implausible = 12;
   stats.single_view_tracked = 13;
+  stats.held_joints = 14;
   const auto counters = Counters(stats);
   for (int c = 0; c < kNumCounters; ++c) EXPECT_EQ(counters[c], c + 1) << kCounterNames[c];
 }

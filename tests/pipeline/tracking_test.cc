@@ -4,6 +4,7 @@
 
 #include "core/joints.h"
 #include "core/pipeline/clip_speed.h"
+#include "core/pipeline/postprocess.h"
 #include "core/pipeline/track.h"
 #include "tests/pipeline/test_scene.h"
 
@@ -27,7 +28,8 @@ Poses3D Persons(const std::vector<Eigen::Matrix4Xd>& bodies) {
 int RunTrack(const TrackOptions& options, Tracks* tracks, Poses3D* persons, FrameStats* stats) {
   TrackScratch scratch;
   const int num_detected = persons->num_persons();
-  const int count = steps::Track(options, Core(), tracks, &scratch, persons, stats);
+  const std::vector<int> core = Core();
+  const int count = steps::Track(options, {.match_joints = core}, tracks, &scratch, persons, stats);
   EXPECT_EQ(count, persons->num_persons()) << "count: detected and coasting persons";
   return num_detected;
 }
@@ -105,6 +107,142 @@ TEST(ClipSpeed, NewTrackInAnEndedTracksSlotIsNotClipped) {
   const steps::ClipSpeedInput input{.tracks = tracks, .timestamp_s = 0.16, .num_detected = 1};
   EXPECT_EQ(steps::ClipSpeed(ClipSpeedOptions{}, input, &later), 0);
   EXPECT_LT((later.Person(0) - body).norm(), 1e-12);
+}
+
+// The fill rule of the COCO body (post-processing's neighbours).
+std::vector<int> CocoNeighbours() {
+  std::vector<int> out;
+  for (const auto& name : CocoBodyJoints()) out.push_back(FindJoint(CocoBodyJoints(), NeighbourJoint(name)));
+  return out;
+}
+
+// `body` with joints `missing` filled as post-processing fills them: on their neighbour, at the
+// filled score, provenance kFilled (from the torso outwards).
+Poses3D WithFilledJoints(const Eigen::Matrix4Xd& body, const std::vector<int>& missing, double filled_score) {
+  Poses3D persons = Persons({body});
+  auto person = persons.Person(0);
+  for (int j : missing) person(3, j) = 0;
+  FillMissingJoints(CocoNeighbours(), filled_score, person, persons.PersonProvenance(0));
+  return persons;
+}
+
+constexpr int kShoulderL = 5, kElbowL = 7, kWristL = 9;
+
+TEST(Track, HoldsAFilledJointAtItsOffsetInTheTracksLastPose) {
+  ASSERT_EQ(CocoNeighbours()[kWristL], kElbowL);
+  ASSERT_EQ(CocoNeighbours()[kElbowL], kShoulderL);
+  const std::vector<int> core = Core();
+  const std::vector<int> neighbour = CocoNeighbours();
+  const steps::TrackInput input{.match_joints = core, .neighbour = neighbour, .unobserved_score = 0.05};
+  TrackOptions options;
+  TrackScratch scratch;
+  Tracks tracks;
+  FrameStats stats;
+  Eigen::Matrix4Xd body = test::StandingPerson(0, 0);
+  body.col(kWristL).head<3>() += Eigen::Vector3d(0.05, -0.02, 0.1);  // a pose of its own
+  Poses3D first = Persons({body});
+  steps::Track(options, input, &tracks, &scratch, &first, &stats);
+  tracks.Commit(first, 1, 0.0);
+  EXPECT_EQ(stats.held_joints, 0);
+
+  // The person moves 0.1 m; its left wrist is missing and filled onto the elbow.
+  const Eigen::Vector3d shift(0.1, 0.0, 0.0);
+  Eigen::Matrix4Xd moved = body;
+  moved.topRows(3).colwise() += shift;
+  Poses3D second = WithFilledJoints(moved, {kWristL}, 0.05);
+  ASSERT_EQ(second.Provenance(0, kWristL), JointProvenance::kFilled);
+  stats.Reset();
+  steps::Track(options, input, &tracks, &scratch, &second, &stats);
+  ASSERT_EQ(second.track_ids[0], first.track_ids[0]);
+  EXPECT_EQ(stats.held_joints, 1);
+  EXPECT_LT((second.Person(0).col(kWristL).head<3>() - moved.col(kWristL).head<3>()).norm(), 1e-12)
+      << "elbow now + (wrist - elbow) in the last pose";
+  EXPECT_EQ(second.Person(0)(3, kWristL), 0.05) << "still a filled joint: its score stays";
+  EXPECT_EQ(second.Provenance(0, kWristL), JointProvenance::kFilled);
+  for (int j = 0; j < 17; ++j) {
+    if (j != kWristL) {
+      EXPECT_LT((second.Person(0).col(j) - moved.col(j)).norm(), 1e-12) << j;
+    }
+  }
+
+  // Elbow and wrist missing: the elbow is held from the shoulder, then the wrist from the elbow.
+  tracks.Commit(second, 1, 0.04);
+  moved.topRows(3).colwise() += shift;
+  Poses3D third = WithFilledJoints(moved, {kElbowL, kWristL}, 0.05);
+  stats.Reset();
+  steps::Track(options, input, &tracks, &scratch, &third, &stats);
+  EXPECT_EQ(stats.held_joints, 2);
+  for (int j : {kElbowL, kWristL}) EXPECT_LT((third.Person(0).col(j).head<3>() - moved.col(j).head<3>()).norm(), 1e-12) << j;
+
+  // Off: the joints stay where post-processing put them.
+  tracks.Commit(third, 1, 0.08);
+  moved.topRows(3).colwise() += shift;
+  Poses3D off = WithFilledJoints(moved, {kElbowL, kWristL}, 0.05);
+  const Poses3D filled = off;
+  options.hold_missing_joints = false;
+  stats.Reset();
+  steps::Track(options, input, &tracks, &scratch, &off, &stats);
+  EXPECT_EQ(stats.held_joints, 0);
+  EXPECT_LT((off.Person(0) - filled.Person(0)).norm(), 1e-12);
+}
+
+TEST(Track, AJointTheLastPoseLacksFollowsItsHeldNeighbour) {
+  // The last pose has the elbow but no wrist. Both missing now: the elbow is held (shoulder + its
+  // offset), the wrist cannot be and sits on the elbow where the hold put it, not on the shoulder
+  // where post-processing's fill had put the elbow.
+  const std::vector<int> core = Core();
+  const std::vector<int> neighbour = CocoNeighbours();
+  const steps::TrackInput input{.match_joints = core, .neighbour = neighbour, .unobserved_score = 0.05};
+  TrackScratch scratch;
+  Tracks tracks;
+  FrameStats stats;
+  const Eigen::Matrix4Xd body = test::StandingPerson(0, 0);
+  Poses3D first = Persons({body});
+  first.Person(0)(3, kWristL) = 0;  // missing, not filled (post-processing off, say)
+  steps::Track(TrackOptions{}, input, &tracks, &scratch, &first, &stats);
+  tracks.Commit(first, 1, 0.0);
+  Poses3D second = WithFilledJoints(body, {kElbowL, kWristL}, 0.05);
+  ASSERT_LT((second.Person(0).col(kWristL).head<3>() - body.col(kShoulderL).head<3>()).norm(), 1e-12);
+  stats.Reset();
+  steps::Track(TrackOptions{}, input, &tracks, &scratch, &second, &stats);
+  EXPECT_EQ(stats.held_joints, 1);
+  const auto person = second.Person(0);
+  EXPECT_LT((person.col(kElbowL).head<3>() - body.col(kElbowL).head<3>()).norm(), 1e-12);
+  EXPECT_LT((person.col(kWristL).head<3>() - body.col(kElbowL).head<3>()).norm(), 1e-12);
+}
+
+TEST(Track, ComparesObservedJointsBeforeFilledOnes) {
+  // Six core joints filled far from where the track held them, six observed 2 cm off: observed
+  // joints decide (mean 0.02 m, the track continues); with every valid joint the mean would be
+  // above max_distance_m.
+  const std::vector<int> core = Core();
+  ASSERT_GE(core.size(), 12u);
+  const steps::TrackInput input{.match_joints = core, .unobserved_score = 0.05};
+  TrackScratch scratch;
+  Tracks tracks;
+  FrameStats stats;
+  const Eigen::Matrix4Xd body = test::StandingPerson(0, 0);
+  Poses3D first = Persons({body});
+  steps::Track(TrackOptions{}, input, &tracks, &scratch, &first, &stats);
+  tracks.Commit(first, 1, 0.0);
+  Eigen::Matrix4Xd next = body;
+  next.topRows(3).colwise() += Eigen::Vector3d(0.02, 0, 0);
+  for (int c = 0; c < 6; ++c) {
+    next.col(core[c]).head<3>() += Eigen::Vector3d(0, 0, 1.5);
+    next(3, core[c]) = 0.05;
+  }
+  Poses3D second = Persons({next});
+  stats.Reset();
+  steps::Track(TrackOptions{}, input, &tracks, &scratch, &second, &stats);
+  EXPECT_EQ(stats.new_tracks, 0);
+  EXPECT_EQ(second.track_ids[0], first.track_ids[0]);
+  // Fewer than 3 observed in common: every valid joint counts (and here breaks the track).
+  for (int c = 6; c < static_cast<int>(core.size()) - 2; ++c) second.Person(0)(3, core[c]) = 0.05;
+  tracks.Commit(first, 1, 0.04);
+  Poses3D third = second;
+  stats.Reset();
+  steps::Track(TrackOptions{}, input, &tracks, &scratch, &third, &stats);
+  EXPECT_EQ(stats.new_tracks, 1);
 }
 
 TEST(Track, FarPersonStartsNewTrack) {
