@@ -107,8 +107,12 @@ int steps::BoneLengths(const BoneLengthOptions& options, const BoneLengthsInput&
       ++track.observed[l];
     }
     stats->bone_length_corrections += marked;
-    if (marked > 0 && unobserved_score > 0)
+    if (marked > 0 && unobserved_score > 0) {
       stats->filled_joints += FillMissingJoints(in.neighbour, unobserved_score, person, persons->PersonProvenance(p));
+      double last_time = 0;
+      const double* last = in.tracks != nullptr ? in.tracks->LastPose(persons->track_ids[p], &last_time) : nullptr;
+      if (last != nullptr) HoldFilledJoints(in.neighbour, last, person, persons->PersonProvenance(p), &scratch->settled);
+    }
   }
   return checked;
 }

@@ -27,6 +27,7 @@
 #include "core/pipeline/frame_stats.h"
 #include "core/pipeline/options.h"
 #include "core/pipeline/pipeline_types.h"
+#include "core/pipeline/track.h"
 #include "core/pipeline/track_states.h"
 #include "core/poses.h"
 
@@ -53,6 +54,7 @@ struct BoneLengthsScratch {
   std::vector<int> num_bad;      // per joint: active disagreeing limbs
   std::vector<char> distal_bad;  // per joint: distal joint of an active disagreeing limb
   std::vector<double> median;    // scratch for the median
+  std::vector<char> settled;     // per joint: HoldFilledJoints' scratch
 };
 
 namespace steps {
@@ -63,6 +65,7 @@ struct BoneLengthsInput {
   double unobserved_score;              // joints at or below are not observations; marked joints are
                                         // filled with this score when > 0 (post-processing's fill)
   int num_detected;                     // the persons detected this frame (the coasting ones follow them)
+  const Tracks* tracks = nullptr;       // with track.hold_missing_joints: marked joints are held (track.h)
 };
 
 // Checks the detected persons of `persons` (the frame's output so far). Adds marked joints to

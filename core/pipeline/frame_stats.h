@@ -33,7 +33,8 @@ struct FrameStats {
                               // joints marked missing by bone_lengths)
   int new_tracks = 0;         // tracking: tracks started this frame
   int coasting_tracks = 0;    // tracking: lost persons returned with their last pose
-  int held_joints = 0;        // tracking (hold_missing_joints): filled joints placed at their track's offset
+  int held_joints = 0;        // tracking (hold_missing_joints): filled joints the track step placed at
+                              // their track's offset (bone_lengths' refills are held too, not counted)
   int bone_length_corrections = 0;  // bone_lengths: joints marked missing (bones disagree with their track)
   double noise_m = 0;         // adaptive scoring: the estimated detection noise (m), 0 with a fixed scale
 

@@ -25,6 +25,36 @@ int FillMissingJoints(std::span<const int> neighbour, double filled_score, Eigen
   return filled;
 }
 
+int HoldFilledJoints(std::span<const int> neighbour, const double* last, Eigen::Map<Eigen::Matrix4Xd> person,
+                      std::span<const uint8_t> provenance, std::vector<char>* settled) {
+  const int n = static_cast<int>(person.cols());
+  const auto filled = static_cast<uint8_t>(JointProvenance::kFilled);
+  settled->resize(n);
+  for (int j = 0; j < n; ++j) (*settled)[j] = provenance[j] != filled;
+  int held = 0;
+  // A filled joint is placed once its neighbour is (passes as in post-processing's fill).
+  for (int pass = 0; pass < 6; ++pass) {
+    bool changed = false;
+    for (int j = 0; j < n; ++j) {
+      const int nb = neighbour[j];
+      if ((*settled)[j] || nb < 0 || !(*settled)[nb]) continue;
+      const double* lj = last + 4 * j;
+      const double* ln = last + 4 * nb;
+      if (lj[3] > 0 && ln[3] > 0) {
+        person.col(j).head<3>() = person.col(nb).head<3>() + Eigen::Vector3d(lj[0] - ln[0], lj[1] - ln[1], lj[2] - ln[2]);
+        ++held;
+      } else {
+        person.col(j).head<3>() = person.col(nb).head<3>();  // on its neighbour, wherever that was placed
+      }
+      (*settled)[j] = 1;
+      changed = true;
+    }
+    if (!changed) break;
+  }
+  return held;
+}
+
+
 int steps::Postprocess(const PostprocessOptions& options, const PostprocessInput& in, Poses3D* persons,
                        FrameStats* stats) {
   if (!options.enabled) return persons->num_persons();

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <span>
+#include <vector>
 
 #include "core/pipeline/frame_stats.h"
 #include "core/pipeline/options.h"
@@ -24,6 +25,14 @@ namespace rpt {
 // Returns the number of joints filled.
 int FillMissingJoints(std::span<const int> neighbour, double filled_score, Eigen::Map<Eigen::Matrix4Xd> person,
                       std::span<uint8_t> provenance);
+
+// track.hold_missing_joints for one person whose track's last output is `last` (num_joints x 4,
+// column-major): every filled joint (provenance kFilled) goes to its neighbour's position plus
+// the offset between the two in `last` when both are present there, else onto its neighbour as
+// placed, from the torso outwards (a joint once its neighbour is placed). `settled` is scratch.
+// Returns the joints placed at an offset.
+int HoldFilledJoints(std::span<const int> neighbour, const double* last, Eigen::Map<Eigen::Matrix4Xd> person,
+                     std::span<const uint8_t> provenance, std::vector<char>* settled);
 
 namespace steps {
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "core/pipeline/track.h"
 
+#include "core/pipeline/postprocess.h"
+
 #include <algorithm>
 #include <limits>
 
@@ -67,37 +69,6 @@ double MeanDistance(const Eigen::Ref<const Eigen::Matrix4Xd>& person, const doub
   return sum / std::max(*common, 1);
 }
 
-// hold_missing_joints for one person of a continued track (`last`: its last output): returns the
-// joints held.
-int HoldMissingJoints(std::span<const int> neighbour, const double* last, Eigen::Map<Eigen::Matrix4Xd> person,
-                      std::span<const uint8_t> provenance, std::vector<char>* settled) {
-  const int n = static_cast<int>(person.cols());
-  const auto filled = static_cast<uint8_t>(JointProvenance::kFilled);
-  settled->resize(n);
-  for (int j = 0; j < n; ++j) (*settled)[j] = provenance[j] != filled;
-  int held = 0;
-  // A filled joint is placed once its neighbour is (passes as in post-processing's fill).
-  for (int pass = 0; pass < 6; ++pass) {
-    bool changed = false;
-    for (int j = 0; j < n; ++j) {
-      const int nb = neighbour[j];
-      if ((*settled)[j] || nb < 0 || !(*settled)[nb]) continue;
-      const double* lj = last + 4 * j;
-      const double* ln = last + 4 * nb;
-      if (lj[3] > 0 && ln[3] > 0) {
-        person.col(j).head<3>() = person.col(nb).head<3>() + Eigen::Vector3d(lj[0] - ln[0], lj[1] - ln[1], lj[2] - ln[2]);
-        ++held;
-      } else {
-        person.col(j).head<3>() = person.col(nb).head<3>();  // on its neighbour, wherever that was placed
-      }
-      (*settled)[j] = 1;
-      changed = true;
-    }
-    if (!changed) break;
-  }
-  return held;
-}
-
 }  // namespace
 
 int steps::Track(const TrackOptions& options, const TrackInput& in, Tracks* tracks, TrackScratch* scratch,
@@ -140,7 +111,7 @@ int steps::Track(const TrackOptions& options, const TrackInput& in, Tracks* trac
       persons->track_ids[p] = t.id;
       const std::span<const uint8_t> provenance = persons->PersonProvenance(p);
       if (options.hold_missing_joints && !in.neighbour.empty() && !provenance.empty()) {
-        stats->held_joints += HoldMissingJoints(in.neighbour, t.pose.data(), persons->Person(p), provenance, &scratch->settled);
+        stats->held_joints += HoldFilledJoints(in.neighbour, t.pose.data(), persons->Person(p), provenance, &scratch->settled);
       }
       continue;
     }

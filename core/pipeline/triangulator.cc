@@ -274,7 +274,8 @@ void Triangulator::Process(std::span<const Poses2D> views, double timestamp_s, P
     run.Run<Step::kBoneLengths>(steps::BoneLengthsInput{.limbs = m.all_limbs,
                                                         .neighbour = m.neighbour,
                                                         .unobserved_score = m.unobserved_score,
-                                                        .num_detected = num_detected},
+                                                        .num_detected = num_detected,
+                                                        .tracks = opt.track.hold_missing_joints ? &state.tracks : nullptr},
                                 &state.bone_lengths, &buf.bone_lengths_scratch, persons, stats);
   }
   if (tracking && opt.smooth.mode == SmoothMode::kCausal) {

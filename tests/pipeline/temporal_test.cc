@@ -256,6 +256,40 @@ TEST(BoneLengths, MarksExactlyTheCorruptedJoint) {
   }
 }
 
+TEST(BoneLengths, AMarkedJointIsHeldAtItsTracksOffset) {
+  // With the track's last output at hand (track.hold_missing_joints), the marked wrist goes to
+  // the elbow plus the wrist's offset from it in that output, not onto the elbow.
+  const Skeleton s = BodySkeleton();
+  const int wrist = FindJoint(CocoBodyJoints(), "wrist_left");
+  const int elbow = FindJoint(CocoBodyJoints(), "elbow_left");
+  BoneLengthOptions options;
+  options.enabled = true;
+  BoneLengthHistory history;
+  std::mt19937_64 rng(5);
+  FrameStats stats;
+  Poses3D last;
+  for (int f = 0; f < 30; ++f) {
+    last = Walker(f, 0.01, &rng);
+    CheckBones(options, s, 0.05, 1, &history, &last, &stats);
+  }
+  Tracks tracks;
+  tracks.slots.push_back(Tracks::Slot{.id = 0, .timestamp_s = 29 * 0.04,
+                                      .pose = std::vector<double>(last.data.begin(), last.data.end())});
+  Poses3D frame = Walker(30, 0.01, &rng);
+  frame.Person(0).col(wrist).head<3>() += Eigen::Vector3d(0, 0.3, 0);
+  BoneLengthsScratch scratch;
+  steps::BoneLengths(options,
+                     {.limbs = s.limbs, .neighbour = s.neighbour, .unobserved_score = 0.05, .num_detected = 1,
+                      .tracks = &tracks},
+                     &history, &scratch, &frame, &stats);
+  EXPECT_EQ(stats.bone_length_corrections, 1);
+  EXPECT_EQ(frame.Person(0)(3, wrist), 0.05);
+  EXPECT_EQ(frame.Provenance(0, wrist), JointProvenance::kFilled);
+  const Eigen::Vector3d offset = last.Person(0).col(wrist).head<3>() - last.Person(0).col(elbow).head<3>();
+  EXPECT_LT((frame.Person(0).col(wrist).head<3>() - (frame.Person(0).col(elbow).head<3>() + offset)).norm(), 1e-12);
+  EXPECT_GT(offset.norm(), 0.2) << "a forearm away from where the neighbour fill puts it";
+}
+
 TEST(BoneLengths, CleanTracksFilledJointsAndCoastingPersonsAreNeverCorrected) {
   const Skeleton s = BodySkeleton();
   const int wrist = FindJoint(CocoBodyJoints(), "wrist_right");
