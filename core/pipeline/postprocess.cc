@@ -30,12 +30,19 @@ int HoldFilledJoints(std::span<const int> neighbour, const double* last, Eigen::
   const int n = static_cast<int>(person.cols());
   const auto filled = static_cast<uint8_t>(JointProvenance::kFilled);
   settled->resize(n);
-  for (int j = 0; j < n; ++j) (*settled)[j] = provenance[j] != filled;
+  int first = n, last_filled = -1;  // the filled joints lie in [first, last_filled]
+  for (int j = 0; j < n; ++j) {
+    (*settled)[j] = provenance[j] != filled;
+    if (!(*settled)[j]) {
+      first = std::min(first, j);
+      last_filled = j;
+    }
+  }
   int held = 0;
   // A filled joint is placed once its neighbour is (passes as in post-processing's fill).
-  for (int pass = 0; pass < 6; ++pass) {
+  for (int pass = 0; pass < 6 && first <= last_filled; ++pass) {
     bool changed = false;
-    for (int j = 0; j < n; ++j) {
+    for (int j = first; j <= last_filled; ++j) {
       const int nb = neighbour[j];
       if ((*settled)[j] || nb < 0 || !(*settled)[nb]) continue;
       const double* lj = last + 4 * j;
@@ -53,7 +60,6 @@ int HoldFilledJoints(std::span<const int> neighbour, const double* last, Eigen::
   }
   return held;
 }
-
 
 int steps::Postprocess(const PostprocessOptions& options, const PostprocessInput& in, Poses3D* persons,
                        FrameStats* stats) {
