@@ -55,14 +55,14 @@ void Tracks::Commit(const Poses3D& persons, int num_detected, double timestamp_s
 namespace {
 
 // Mean distance of `person` from a track's last pose over `joints` scored above `min_score` in
-// both; `*common` = how many.
+// the person and above `min_last` in the last pose; `*common` = how many.
 double MeanDistance(const Eigen::Ref<const Eigen::Matrix4Xd>& person, const double* last, std::span<const int> joints,
-                    double min_score, int* common) {
+                    double min_score, double min_last, int* common) {
   double sum = 0;
   *common = 0;
   for (int j : joints) {
     const double* q = last + 4 * j;
-    if (person(3, j) <= min_score || q[3] <= min_score) continue;
+    if (person(3, j) <= min_score || q[3] <= min_last) continue;
     sum += (person.col(j).head<3>() - Eigen::Vector3d(q[0], q[1], q[2])).norm();
     ++*common;
   }
@@ -86,10 +86,14 @@ int steps::Track(const TrackOptions& options, const TrackInput& in, Tracks* trac
     for (int s = 0; s < num_slots; ++s) {
       const Tracks::Slot& t = slots[s];
       if (t.id < 0 || static_cast<int>(t.pose.size()) != 4 * n) continue;
-      // Observed joints first: a filled joint sits wherever its fill put it, in either pose.
+      // Observed joints first: a filled joint sits wherever its fill put it, in either pose. Then
+      // the joints observed now against the last pose's valid ones (its held joints are near
+      // where they were), then every valid joint.
+      const double unobserved = in.unobserved_score;
       int common = 0;
-      double distance = MeanDistance(person, t.pose.data(), match_joints, in.unobserved_score, &common);
-      if (common < 3) distance = MeanDistance(person, t.pose.data(), match_joints, 0.0, &common);
+      double distance = MeanDistance(person, t.pose.data(), match_joints, unobserved, unobserved, &common);
+      if (common < 3) distance = MeanDistance(person, t.pose.data(), match_joints, unobserved, 0.0, &common);
+      if (common < 3) distance = MeanDistance(person, t.pose.data(), match_joints, 0.0, 0.0, &common);
       if (common < 3) continue;
       if (distance < options.max_distance_m) candidates.emplace_back(distance, p, s);
     }

@@ -2,8 +2,9 @@
 // Step 13: assign persistent track ids over time.
 //
 // Each person is compared with the last pose of every live track: the mean distance over the
-// match joints observed in both (score above the unobserved score: not filled), or, when fewer
-// than 3 are, over those valid in both (at least 3). Pairs below max_distance_m are assigned
+// match joints observed in both (score above the unobserved score: not filled); when fewer than
+// 3 are, over those observed in the person and valid in the last pose; then over those valid in
+// both (at least 3). Pairs below max_distance_m are assigned
 // greedily by increasing distance; unassigned persons start new tracks. A track that finds no
 // person is kept for max_missing_frames frames, during which its last pose is returned
 // ("coasting"), then it ends. Tracking does not smooth.

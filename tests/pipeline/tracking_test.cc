@@ -245,6 +245,35 @@ TEST(Track, ComparesObservedJointsBeforeFilledOnes) {
   EXPECT_EQ(stats.new_tracks, 1);
 }
 
+TEST(Track, ComparesJointsObservedNowWithTheLastPosesHeldOnes) {
+  // The last output observed only 2 core joints (the others held, score 0.05, where they were);
+  // now 6 are observed 2 cm off and 6 filled 1.5 m away. Observed in both: 2, too few; observed
+  // now against the last output's valid joints: mean 0.02 m, the track continues (over every
+  // valid joint the mean would be 0.76 m).
+  const std::vector<int> core = Core();
+  ASSERT_GE(core.size(), 12u);
+  const steps::TrackInput input{.match_joints = core, .unobserved_score = 0.05};
+  TrackScratch scratch;
+  Tracks tracks;
+  FrameStats stats;
+  const Eigen::Matrix4Xd body = test::StandingPerson(0, 0);
+  Poses3D first = Persons({body});
+  steps::Track(TrackOptions{}, input, &tracks, &scratch, &first, &stats);
+  for (int c = 2; c < static_cast<int>(core.size()); ++c) first.Person(0)(3, core[c]) = 0.05;
+  tracks.Commit(first, 1, 0.0);
+  Eigen::Matrix4Xd next = body;
+  next.topRows(3).colwise() += Eigen::Vector3d(0.02, 0, 0);
+  for (int c = 0; c < 6; ++c) {
+    next.col(core[c]).head<3>() += Eigen::Vector3d(0, 0, 1.5);
+    next(3, core[c]) = 0.05;
+  }
+  Poses3D second = Persons({next});
+  stats.Reset();
+  steps::Track(TrackOptions{}, input, &tracks, &scratch, &second, &stats);
+  EXPECT_EQ(stats.new_tracks, 0);
+  EXPECT_EQ(second.track_ids[0], first.track_ids[0]);
+}
+
 TEST(Track, FarPersonStartsNewTrack) {
   Tracks tracks;
   TrackOptions options;
