@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "core/pipeline/track.h"
 
-#include "core/pipeline/postprocess.h"
-
 #include <algorithm>
 #include <limits>
+
+#include "core/pipeline/postprocess.h"
 
 namespace rpt {
 

@@ -4,10 +4,10 @@
 // Each person is compared with the last pose of every live track: the mean distance over the
 // match joints observed in both (score above the unobserved score: not filled); when fewer than
 // 3 are, over those observed in the person and valid in the last pose; then over those valid in
-// both (at least 3). Pairs below max_distance_m are assigned
-// greedily by increasing distance; unassigned persons start new tracks. A track that finds no
-// person is kept for max_missing_frames frames, during which its last pose is returned
-// ("coasting"), then it ends. Tracking does not smooth.
+// both (at least 3). Pairs below max_distance_m are assigned greedily by increasing distance;
+// unassigned persons start new tracks. A track that finds no person is kept for
+// max_missing_frames frames, during which its last pose is returned ("coasting"), then it ends.
+// Tracking does not smooth.
 //
 // With hold_missing_joints, a joint of a continued track that post-processing filled from its
 // neighbour (provenance kFilled) is placed at the neighbour's current position plus the offset
@@ -67,8 +67,9 @@ namespace steps {
 
 struct TrackInput {
   std::span<const int> match_joints = {};  // the joints compared (the core joints)
-  std::span<const int> neighbour = {};     // per joint: the joint post-processing fills it from, -1 = none (no hold)
-  double unobserved_score = 0;        // joints scored at or below this were filled, not observed
+  std::span<const int> neighbour = {};     // per joint: the joint post-processing fills it from,
+                                           // -1 = none; empty: no joint is held
+  double unobserved_score = 0;             // joints scored at or below this were filled, not observed
 };
 
 // Sets persons->track_ids of the frame's persons (post-processing's output), holds the missing
