@@ -12,7 +12,7 @@ void AddExportOptions(CLI::App* command, ExportArgs* args) {
                       "joints x 4), h5 (predictions.h5, the same arrays in HDF5) (default json; docs/own_data.md)");
   command->add_flag("--no-predictions", args->no_predictions, "write no 3D persons at all (long runs)");
   command->add_flag("--no-filled-joints", args->no_filled_joints,
-                    "write joints filled from a neighbour (provenance 'filled') as missing");
+                    "write joints no view saw, placed from a neighbour (provenance 'filled'), as missing");
   command->add_option("--trc-axes", args->trc_axes, "world axes of the TRC files: z-up (as is) or y-up (OpenSim)")
       ->check(CLI::IsMember({"z-up", "y-up"}))
       ->capture_default_str();

@@ -24,7 +24,7 @@ enum class TrcAxes { kZUp, kYUp };
 
 struct ExportOptions {
   std::vector<ExportFormat> formats = {ExportFormat::kJson};  // empty: no predictions at all
-  // Joints filled from a neighbour (JointProvenance::kFilled) are written; false: written as missing.
+  // Joints no view saw, placed from a neighbour (JointProvenance::kFilled), are written; false: written as missing.
   bool filled_joints = true;
   TrcAxes trc_axes = TrcAxes::kZUp;
   bool trc_millimetres = false;  // TRC coordinates in mm instead of m
