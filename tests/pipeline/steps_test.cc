@@ -763,6 +763,17 @@ TEST(Group, ClustersByPersonAndDropsSmallGroups) {
   EXPECT_EQ(groups.members.size(), 5u);
 }
 
+// Adds a two-joint proposal of poses a and b, its joints at `first` and `second` (both scored 1),
+// with pair score `score` (the group tests' proposals).
+void AddTwoJointProposal(Proposals* p, int a, int b, const Eigen::Vector3d& first, const Eigen::Vector3d& second,
+                         double score) {
+  p->Add(PosePair{a, b});
+  p->xyz[p->xyz.size() - 2] = first;
+  p->xyz[p->xyz.size() - 1] = second;
+  p->score[p->score.size() - 2] = p->score[p->score.size() - 1] = 1.0;
+  p->pair_score.back() = score;
+}
+
 TEST(Group, EqualPairScoresAreVisitedInIndexOrder) {
   // Groups are numbered in creation order, and proposals are visited by decreasing pair score,
   // ties by index: of two far-apart proposals with equal scores the first makes group 0; a third,
@@ -770,12 +781,7 @@ TEST(Group, EqualPairScoresAreVisitedInIndexOrder) {
   Proposals p;
   p.Clear(2);
   auto add = [&](Eigen::Vector3d x, double score) {
-    const int k = p.size();
-    p.Add(PosePair{2 * k, 2 * k + 1});
-    p.xyz[p.xyz.size() - 2] = x;
-    p.xyz[p.xyz.size() - 1] = x + Eigen::Vector3d(0, 0, 0.5);
-    p.score[p.score.size() - 2] = p.score[p.score.size() - 1] = 1.0;
-    p.pair_score.back() = score;
+    AddTwoJointProposal(&p, 2 * p.size(), 2 * p.size() + 1, x, x + Eigen::Vector3d(0, 0, 0.5), score);
   };
   add({0, 0, 0}, 0.8);
   add({2, 0, 0}, 0.8);
@@ -796,11 +802,7 @@ TEST(Group, ExclusivePosesRemovePhantomsThatReuseAPersonsPoses) {
   Proposals p;
   p.Clear(2);
   auto add = [&](int a, int b, Eigen::Vector3d x, double score) {
-    p.Add(PosePair{a, b});
-    p.xyz[p.xyz.size() - 2] = x;
-    p.xyz[p.xyz.size() - 1] = x + Eigen::Vector3d(0, 0, 0.5);
-    p.score[p.score.size() - 2] = p.score[p.score.size() - 1] = 1.0;
-    p.pair_score.back() = score;
+    AddTwoJointProposal(&p, a, b, x, x + Eigen::Vector3d(0, 0, 0.5), score);
   };
   add(0, 1, {0, 0, 0}, 0.95);
   add(0, 2, {0.02, 0, 0}, 0.94);
@@ -825,11 +827,7 @@ TEST(Group, MirroredDuplicateOfAPersonIsDropped) {
   Proposals p;
   p.Clear(2);
   auto add = [&](int a, int b, double left_y, double score) {
-    p.Add(PosePair{a, b});
-    p.xyz[p.xyz.size() - 2] = Eigen::Vector3d(0, left_y, 1);
-    p.xyz[p.xyz.size() - 1] = Eigen::Vector3d(0, -left_y, 1);
-    p.score[p.score.size() - 2] = p.score[p.score.size() - 1] = 1.0;
-    p.pair_score.back() = score;
+    AddTwoJointProposal(&p, a, b, Eigen::Vector3d(0, left_y, 1), Eigen::Vector3d(0, -left_y, 1), score);
   };
   add(0, 1, 0.2, 0.95);
   add(0, 2, 0.21, 0.94);
@@ -857,11 +855,7 @@ TEST(Group, MirrorCheckUsesTheProposalsExclusivePosesLeft) {
   Proposals p;
   p.Clear(2);
   auto add = [&](int a, int b, double x, double left_y, double score) {
-    p.Add(PosePair{a, b});
-    p.xyz[p.xyz.size() - 2] = Eigen::Vector3d(x, left_y, 1);
-    p.xyz[p.xyz.size() - 1] = Eigen::Vector3d(x, -left_y, 1);
-    p.score[p.score.size() - 2] = p.score[p.score.size() - 1] = 1.0;
-    p.pair_score.back() = score;
+    AddTwoJointProposal(&p, a, b, Eigen::Vector3d(x, left_y, 1), Eigen::Vector3d(x, -left_y, 1), score);
   };
   add(0, 1, 0, 0.2, 0.95);
   add(0, 2, 0, 0.21, 0.94);

@@ -211,66 +211,65 @@ TEST(Track, AJointTheLastPoseLacksFollowsItsHeldNeighbour) {
   EXPECT_LT((person.col(kWristL).head<3>() - body.col(kElbowL).head<3>()).norm(), 1e-12);
 }
 
-TEST(Track, ComparesObservedJointsBeforeFilledOnes) {
-  // Six core joints filled far from where the track held them, six observed 2 cm off: observed
-  // joints decide (mean 0.02 m, the track continues); with every valid joint the mean would be
-  // above max_distance_m.
-  const std::vector<int> core = Core();
-  ASSERT_GE(core.size(), 12u);
-  const steps::TrackInput input{.match_joints = core, .unobserved_score = 0.05};
-  TrackScratch scratch;
-  Tracks tracks;
-  FrameStats stats;
-  const Eigen::Matrix4Xd body = test::StandingPerson(0, 0);
-  Poses3D first = Persons({body});
-  steps::Track(TrackOptions{}, input, &tracks, &scratch, &first, &stats);
-  tracks.Commit(first, 1, 0.0);
+// `body` 2 cm further along x, with the first six of `core` filled (score 0.05) 1.5 m above.
+Eigen::Matrix4Xd MovedWithSixFarFilledJoints(const Eigen::Matrix4Xd& body, const std::vector<int>& core) {
   Eigen::Matrix4Xd next = body;
   next.topRows(3).colwise() += Eigen::Vector3d(0.02, 0, 0);
   for (int c = 0; c < 6; ++c) {
     next.col(core[c]).head<3>() += Eigen::Vector3d(0, 0, 1.5);
     next(3, core[c]) = 0.05;
   }
-  Poses3D second = Persons({next});
-  stats.Reset();
-  steps::Track(TrackOptions{}, input, &tracks, &scratch, &second, &stats);
-  EXPECT_EQ(stats.new_tracks, 0);
-  EXPECT_EQ(second.track_ids[0], first.track_ids[0]);
-  // Fewer than 3 observed in common: every valid joint counts (and here breaks the track).
-  for (int c = 6; c < static_cast<int>(core.size()) - 2; ++c) second.Person(0)(3, core[c]) = 0.05;
-  tracks.Commit(first, 1, 0.04);
-  Poses3D third = second;
-  stats.Reset();
-  steps::Track(TrackOptions{}, input, &tracks, &scratch, &third, &stats);
-  EXPECT_EQ(stats.new_tracks, 1);
+  return next;
 }
 
-TEST(Track, ComparesJointsObservedNowWithTheLastPosesHeldOnes) {
+// Matching a person to a track: the core joints, a track of a standing person at the origin.
+class TrackMatching : public ::testing::Test {
+ protected:
+  void SetUp() override { ASSERT_GE(core_.size(), 12u); }
+  // Runs the track step on `persons` (stats reset first).
+  void Run(Poses3D* persons) {
+    stats_.Reset();
+    steps::Track(TrackOptions{}, input_, &tracks_, &scratch_, persons, &stats_);
+  }
+  const std::vector<int> core_ = Core();
+  const steps::TrackInput input_{.match_joints = core_, .unobserved_score = 0.05};
+  const Eigen::Matrix4Xd body_ = test::StandingPerson(0, 0);
+  TrackScratch scratch_;
+  Tracks tracks_;
+  FrameStats stats_;
+};
+
+TEST_F(TrackMatching, ComparesObservedJointsBeforeFilledOnes) {
+  // Six core joints filled far from where the track held them, six observed 2 cm off: observed
+  // joints decide (mean 0.02 m, the track continues); with every valid joint the mean would be
+  // above max_distance_m.
+  Poses3D first = Persons({body_});
+  Run(&first);
+  tracks_.Commit(first, 1, 0.0);
+  Poses3D second = Persons({MovedWithSixFarFilledJoints(body_, core_)});
+  Run(&second);
+  EXPECT_EQ(stats_.new_tracks, 0);
+  EXPECT_EQ(second.track_ids[0], first.track_ids[0]);
+  // Fewer than 3 observed in common: every valid joint counts (and here breaks the track).
+  for (int c = 6; c < static_cast<int>(core_.size()) - 2; ++c) second.Person(0)(3, core_[c]) = 0.05;
+  tracks_.Commit(first, 1, 0.04);
+  Poses3D third = second;
+  Run(&third);
+  EXPECT_EQ(stats_.new_tracks, 1);
+}
+
+TEST_F(TrackMatching, ComparesJointsObservedNowWithTheLastPosesHeldOnes) {
   // The last output observed only 2 core joints (the others held, score 0.05, where they were);
   // now 6 are observed 2 cm off and 6 filled 1.5 m away. Observed in both: 2, too few; observed
   // now against the last output's valid joints: mean 0.02 m, the track continues (over every
   // valid joint the mean would be 0.76 m).
-  const std::vector<int> core = Core();
-  ASSERT_GE(core.size(), 12u);
-  const steps::TrackInput input{.match_joints = core, .unobserved_score = 0.05};
-  TrackScratch scratch;
-  Tracks tracks;
-  FrameStats stats;
-  const Eigen::Matrix4Xd body = test::StandingPerson(0, 0);
-  Poses3D first = Persons({body});
-  steps::Track(TrackOptions{}, input, &tracks, &scratch, &first, &stats);
-  for (int c = 2; c < static_cast<int>(core.size()); ++c) first.Person(0)(3, core[c]) = 0.05;
-  tracks.Commit(first, 1, 0.0);
-  Eigen::Matrix4Xd next = body;
-  next.topRows(3).colwise() += Eigen::Vector3d(0.02, 0, 0);
-  for (int c = 0; c < 6; ++c) {
-    next.col(core[c]).head<3>() += Eigen::Vector3d(0, 0, 1.5);
-    next(3, core[c]) = 0.05;
-  }
-  Poses3D second = Persons({next});
-  stats.Reset();
-  steps::Track(TrackOptions{}, input, &tracks, &scratch, &second, &stats);
-  EXPECT_EQ(stats.new_tracks, 0);
+  Poses3D first = Persons({body_});
+  Run(&first);
+  for (int c = 2; c < static_cast<int>(core_.size()); ++c) first.Person(0)(3, core_[c]) = 0.05;
+  tracks_.Commit(first, 1, 0.0);
+  Poses3D second = Persons({MovedWithSixFarFilledJoints(body_, core_)});
+  Run(&second);
+  EXPECT_EQ(stats_.new_tracks, 0);
   EXPECT_EQ(second.track_ids[0], first.track_ids[0]);
 }
 
