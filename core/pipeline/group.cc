@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <limits>
 
-
 namespace rpt {
 
 namespace {
@@ -93,12 +92,13 @@ int steps::Group(const GroupOptions& options, const GroupInput& in, GroupScratch
     if (best_group < 0) {
       best_group = num_groups;
       s.sum.resize(s.sum.size() + n, Eigen::Vector3d::Zero());
-      s.running_mean.resize(s.running_mean.size() + n);
+      s.running_mean.resize(s.running_mean.size() + n, Eigen::Vector3d::Zero());  // the mirror check copies it
       s.count.resize(s.count.size() + n, 0);
       s.size.push_back(0);
       s.center_sum.push_back(Eigen::Vector3d::Zero());
       s.center_count.push_back(0);
-      s.center.push_back(Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN()));  // no member centre yet: never skipped
+      // No member centre yet: NaN, which the bound never skips.
+      s.center.push_back(Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN()));
     }
     for (int i = 0; i < n; ++i) {
       if (score[i] <= 0) continue;
@@ -162,22 +162,23 @@ int steps::Group(const GroupOptions& options, const GroupInput& in, GroupScratch
     for (int k = 0; k < num; ++k) {
       if (proposals->group[k] >= 0) s.strength[proposals->group[k]] += proposals->pair_score[k];
     }
-    for (int k : s.order) {
-      if (!any_lost) break;
-      const int g = proposals->group[k];
-      if (g < 0 || !s.lost_members[g]) continue;
-      for (int i = 0; i < n; ++i) {
-        const size_t idx = static_cast<size_t>(k) * n + i;
-        if (proposals->score[idx] <= 0) continue;
-        s.mean[static_cast<size_t>(g) * n + i] += proposals->xyz[idx];
-        ++s.mean_count[static_cast<size_t>(g) * n + i];
+    if (any_lost) {
+      for (int k : s.order) {
+        const int g = proposals->group[k];
+        if (g < 0 || !s.lost_members[g]) continue;
+        for (int i = 0; i < n; ++i) {
+          const size_t idx = static_cast<size_t>(k) * n + i;
+          if (proposals->score[idx] <= 0) continue;
+          s.mean[static_cast<size_t>(g) * n + i] += proposals->xyz[idx];
+          ++s.mean_count[static_cast<size_t>(g) * n + i];
+        }
       }
-    }
-    for (int g = 0; g < num_groups && any_lost; ++g) {
-      if (!s.lost_members[g]) continue;
-      for (int i = 0; i < n; ++i) {
-        const size_t gi = static_cast<size_t>(g) * n + i;
-        if (s.mean_count[gi] > 0) s.mean[gi] /= s.mean_count[gi];
+      for (int g = 0; g < num_groups; ++g) {
+        if (!s.lost_members[g]) continue;
+        for (int i = 0; i < n; ++i) {
+          const size_t gi = static_cast<size_t>(g) * n + i;
+          if (s.mean_count[gi] > 0) s.mean[gi] /= s.mean_count[gi];
+        }
       }
     }
     for (int a = 0; a < num_groups; ++a) {
