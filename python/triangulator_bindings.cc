@@ -62,6 +62,7 @@ py::dict StatsDict(const FrameStats& stats) {
   d["new_tracks"] = stats.new_tracks;
   d["coasting_tracks"] = stats.coasting_tracks;
   d["held_joints"] = stats.held_joints;
+  d["one_view_joints"] = stats.one_view_joints;
   d["bone_length_corrections"] = stats.bone_length_corrections;
   d["noise_m"] = stats.noise_m;
   return d;

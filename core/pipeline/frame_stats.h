@@ -33,6 +33,7 @@ struct FrameStats {
                               // joints marked missing by bone_lengths)
   int new_tracks = 0;         // tracking: tracks started this frame
   int coasting_tracks = 0;    // tracking: lost persons returned with their last pose
+  int one_view_joints = 0;    // refine (one_view_joints): joints placed from the one view that saw them
   int held_joints = 0;        // tracking (hold_missing_joints): filled joints the track step placed at
                               // their track's offset (bone_lengths' refills are held too, not counted)
   int bone_length_corrections = 0;  // bone_lengths: joints marked missing (bones disagree with their track)

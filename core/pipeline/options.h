@@ -286,6 +286,9 @@ struct RefineOptions {
   int iterations = 1;         // reweighting passes from the merged joint (a second: a little more accuracy, more time)
   double scale_factor = 1.0;  // the weights' scale s, in units of the frame's score kernel scale S
   double cutoff = 3.0;        // views whose ray is farther than cutoff x s get no weight
+  // A joint no pair triangulated that exactly one of the person's views detected is placed on that
+  // view's ray at its neighbour's depth (provenance lifted) instead of being filled later.
+  bool one_view_joints = true;
 };
 
 template <class Visitor, OptionsOf<RefineOptions> Self>
@@ -300,6 +303,9 @@ void VisitFields(Visitor& v, Self& o) {
   v("cutoff", o.cutoff,
     OptionSpec{.help = "views whose ray passes farther than cutoff x s from the joint get no weight", .min = 0,
                .max = 1e6});
+  v("one_view_joints", o.one_view_joints,
+    OptionSpec{.help = "a joint only one of its person's views detected goes on that view's ray at its neighbour's "
+                       "depth (provenance lifted)"});
 }
 
 // Step 11b (an addition): re-score each person against all views, drop unsupported ones.

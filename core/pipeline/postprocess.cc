@@ -29,10 +29,15 @@ int HoldFilledJoints(std::span<const int> neighbour, const double* last, Eigen::
                       std::span<const uint8_t> provenance, std::vector<char>* settled) {
   const int n = static_cast<int>(person.cols());
   const auto filled = static_cast<uint8_t>(JointProvenance::kFilled);
+  const auto lifted = static_cast<uint8_t>(JointProvenance::kLifted);
   settled->resize(n);
-  int first = n, last_filled = -1;  // the filled joints lie in [first, last_filled]
+  int first = n, last_filled = -1;  // the joints to place lie in [first, last_filled]
   for (int j = 0; j < n; ++j) {
-    (*settled)[j] = provenance[j] != filled;
+    // Filled joints, and joints placed from one view beside a joint that was not (refine's
+    // one_view_joints; a person single_view placed has every joint lifted and keeps them).
+    const int nb = neighbour[j];
+    const bool one_view = provenance[j] == lifted && nb >= 0 && provenance[nb] != lifted;
+    (*settled)[j] = provenance[j] != filled && !one_view;
     if (!(*settled)[j]) {
       first = std::min(first, j);
       last_filled = j;
@@ -50,7 +55,7 @@ int HoldFilledJoints(std::span<const int> neighbour, const double* last, Eigen::
       if (lj[3] > 0 && ln[3] > 0) {
         person.col(j).head<3>() = person.col(nb).head<3>() + Eigen::Vector3d(lj[0] - ln[0], lj[1] - ln[1], lj[2] - ln[2]);
         ++held;
-      } else {
+      } else if (provenance[j] == filled) {
         person.col(j).head<3>() = person.col(nb).head<3>();  // on its neighbour, wherever that was placed
       }
       (*settled)[j] = 1;
@@ -68,13 +73,19 @@ int steps::Postprocess(const PostprocessOptions& options, const PostprocessInput
   int kept = 0;
   for (int p = 0; p < persons->num_persons(); ++p) {
     auto person = persons->Person(p);
+    // Joints placed from one view (refine.one_view_joints; single_view's persons are marked only
+    // after this step) neither decide about the person nor outweigh a triangulated joint.
+    const std::span<const uint8_t> provenance = persons->PersonProvenance(p);
+    auto lifted = [&](int j) {
+      return !provenance.empty() && provenance[j] == static_cast<uint8_t>(JointProvenance::kLifted);
+    };
     int replaced = 0;
     if (options.replace_wrong_joints) {
       for (const ResolvedLimb& limb : in.limbs) {
         if (person(3, limb.a) <= 0 || person(3, limb.b) <= 0) continue;
         const double length_sq = (person.col(limb.a).head<3>() - person.col(limb.b).head<3>()).squaredNorm();
         if (length_sq < limb.min_length_sq() || length_sq > limb.max_length_sq()) {
-          person(3, limb.b) = 0;
+          person(3, lifted(limb.a) && !lifted(limb.b) ? limb.a : limb.b) = 0;
           ++replaced;
         }
       }
@@ -83,7 +94,7 @@ int steps::Postprocess(const PostprocessOptions& options, const PostprocessInput
     Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = Eigen::Vector3d::Constant(-1e300);
     Eigen::Vector3d center = Eigen::Vector3d::Zero();
     for (int j = 0; j < n; ++j) {
-      if (person(3, j) <= 0) continue;
+      if (person(3, j) <= 0 || lifted(j)) continue;
       const Eigen::Vector3d x = person.col(j).head<3>();
       lo = lo.cwiseMin(x);
       hi = hi.cwiseMax(x);

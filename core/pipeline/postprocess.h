@@ -5,7 +5,9 @@
 // fewer than min_valid_joints joints, a bounding-box diagonal outside [min_extent_m,
 // max_extent_m], or a centre outside the room (core/room.h) plus room_margin_m (drop_outside_room) are
 // dropped; missing joints take the position of their neighbour joint (fill_missing_joints) with
-// score filled_joint_score.
+// score filled_joint_score. Joints placed from one view (provenance kLifted: refine's
+// one_view_joints) do not count in the person checks, and of an implausible limb with one such
+// end that end is marked missing (else the distal joint).
 #pragma once
 
 #include <span>
@@ -27,10 +29,11 @@ int FillMissingJoints(std::span<const int> neighbour, double filled_score, Eigen
                       std::span<uint8_t> provenance);
 
 // track.hold_missing_joints for one person whose track's last output is `last` (num_joints x 4,
-// column-major): every filled joint (provenance kFilled) goes to its neighbour's position plus
-// the offset between the two in `last` when both are present there, else onto its neighbour as
-// placed, from the torso outwards (a joint once its neighbour is placed). `settled` is scratch.
-// Returns the joints placed at an offset.
+// column-major): every filled joint (provenance kFilled), and every joint placed from one view
+// (kLifted) whose neighbour was not, goes to its neighbour's position plus the offset between the
+// two in `last` when both are present there; else a filled joint goes onto its neighbour as
+// placed and a lifted one stays. From the torso outwards (a joint once its neighbour is placed).
+// `settled` is scratch. Returns the joints placed at an offset.
 int HoldFilledJoints(std::span<const int> neighbour, const double* last, Eigen::Map<Eigen::Matrix4Xd> person,
                      std::span<const uint8_t> provenance, std::vector<char>* settled);
 

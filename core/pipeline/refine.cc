@@ -86,7 +86,44 @@ void SolveScalar(const double* sums, int n, double min_conditioning, double* x, 
 
 }  // namespace
 
-int steps::Refine(const RefineOptions& options, const RefineInput& in, RefineScratch* scratch, Poses3D* persons) {
+namespace {
+
+// options.one_view_joints for person p (refine.h): returns the joints placed.
+int PlaceOneViewJoints(const steps::RefineInput& in, std::span<const int> poses, int p, Poses3D* persons) {
+  const KeypointColumns& columns = in.views.all_columns;
+  const int n = persons->num_joints;
+  auto person = persons->Person(p);
+  const std::span<uint8_t> provenance = persons->PersonProvenance(p);
+  const auto triangulated = static_cast<uint8_t>(JointProvenance::kTriangulated);
+  int placed = 0;
+  for (int j = 0; j < n; ++j) {
+    const int nb = in.neighbour[j];
+    if (person(3, j) > 0 || nb < 0 || !(person(3, nb) > 0) || provenance[nb] != triangulated) continue;
+    int seen = 0;
+    size_t at = 0;
+    for (const int pose : poses) {
+      const size_t k = static_cast<size_t>(pose) * n + j;
+      if (!(columns.score[k] > 0)) continue;
+      ++seen;
+      at = k;
+    }
+    if (seen != 1) continue;  // none, or views that disagree (no pair kept it)
+    const Eigen::Vector3d ray(columns.rx[at], columns.ry[at], columns.rz[at]);
+    const Eigen::Vector3d& center = in.geometry[in.views.view_of[at / n]].center;
+    const double t = ray.dot(person.col(nb).head<3>() - center) / ray.squaredNorm();
+    if (!(t > 0)) continue;
+    person.col(j).head<3>() = center + t * ray;
+    person(3, j) = 0.5 * columns.score[at];
+    provenance[j] = static_cast<uint8_t>(JointProvenance::kLifted);
+    ++placed;
+  }
+  return placed;
+}
+
+}  // namespace
+
+int steps::Refine(const RefineOptions& options, const RefineInput& in, RefineScratch* scratch, Poses3D* persons,
+                  FrameStats* stats) {
   if (!options.enabled) return 0;
   const Proposals& proposals = in.proposals;
   const Groups& groups = in.groups;
@@ -183,6 +220,10 @@ int steps::Refine(const RefineOptions& options, const RefineInput& in, RefineScr
       person(1, j) = s.y[j];
       person(2, j) = s.z[j];
       ++moved;
+    }
+    if (options.one_view_joints && static_cast<int>(in.neighbour.size()) == n &&
+        !persons->PersonProvenance(p).empty()) {
+      stats->one_view_joints += PlaceOneViewJoints(in, s.poses, p, persons);
     }
   }
   return moved;

@@ -15,11 +15,20 @@
 // cutoff x s gets no weight (a wrong view that the scores let through). A joint keeps the merged
 // position when fewer than 2 views remain or their rays are nearly parallel. The joint's score
 // is not changed.
+//
+// One-view joints (options.one_view_joints, default on): a joint the merge left missing (no
+// pair triangulated it) that exactly one of the person's views detected, whose neighbour joint
+// (the joint post-processing would fill it from) was triangulated, is placed on that view's ray
+// at the point nearest the neighbour (its depth is the neighbour's), with score half its 2D
+// confidence and provenance kLifted. Post-processing does not count such joints in its person
+// checks and drops them first from implausible limbs (postprocess.h); tracking holds them
+// (track.h) where the track's last output has them.
 #pragma once
 
 #include <span>
 #include <vector>
 
+#include "core/pipeline/frame_stats.h"
 #include "core/pipeline/options.h"
 #include "core/pipeline/pipeline_types.h"
 #include "core/pipeline/proposal_scoring.h"
@@ -49,11 +58,14 @@ struct RefineInput {
   const Groups& groups;
   double min_joint_score;                  // merge.min_joint_score: the pairs the merge could use
   const ScoreKernel& kernel;               // the frame's kernels (step 6-7): scale_m
+  std::span<const int> neighbour = {};     // per joint: the joint post-processing fills it from, -1 = none
 };
 
-// Moves the joints of `persons` (merge's output: person i from group i) to their multi-view fit.
-// Returns the number of joints moved.
-int Refine(const RefineOptions& options, const RefineInput& in, RefineScratch* scratch, Poses3D* persons);
+// Moves the joints of `persons` (merge's output: person i from group i) to their multi-view fit,
+// and with options.one_view_joints places the joints one view saw (below; counted in
+// stats->one_view_joints). Returns the number of joints moved.
+int Refine(const RefineOptions& options, const RefineInput& in, RefineScratch* scratch, Poses3D* persons,
+           FrameStats* stats);
 
 }  // namespace steps
 

@@ -196,8 +196,9 @@ void Triangulator::Process(std::span<const Poses2D> views, double timestamp_s, P
                                             .proposals = buf.full,
                                             .groups = buf.groups,
                                             .min_joint_score = opt.merge.min_joint_score,
-                                            .kernel = buf.kernel},
-                         &buf.refine_scratch, persons);
+                                            .kernel = buf.kernel,
+                                            .neighbour = m.neighbour},
+                         &buf.refine_scratch, persons, stats);
   if (trace != nullptr) {
     // Verify and postprocess keep persons in order and move their track ids with them (all -1
     // until tracking): each person carries its merged index through them, then -1 again.

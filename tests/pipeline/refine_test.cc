@@ -54,10 +54,11 @@ struct OneJointScene {
     auto person = persons.AddPerson();
     person.col(0) << merged, joint_score;
     RefineScratch scratch;
+    FrameStats stats;
     const int count = steps::Refine(options,
                                     steps::RefineInput{.views = views, .geometry = geometry, .proposals = proposals,
                                                        .groups = groups, .min_joint_score = 0.1, .kernel = kernel},
-                                    &scratch, &persons);
+                                    &scratch, &persons, &stats);
     if (moved != nullptr) *moved = count;
     EXPECT_EQ(persons.Person(0)(3, 0), joint_score) << "the joint's score is not changed";
     return persons.Person(0).col(0).head<3>();
@@ -214,11 +215,12 @@ TEST(Refine, KernelsEqualTheScalarCodeBitForBit) {
       persons.AddPerson() = merged;
       RefineScratch scratch;
       RefineOptions options = On(iterations);
+      FrameStats stats;
       simd::SetEnabled(simd_on);
       const int moved = steps::Refine(options,
                                       steps::RefineInput{.views = views, .geometry = geometry, .proposals = proposals,
                                                          .groups = groups, .min_joint_score = 0.1, .kernel = kernel},
-                                      &scratch, &persons);
+                                      &scratch, &persons, &stats);
       simd::SetEnabled(true);
       return std::make_pair(moved, persons.data);
     };
@@ -237,6 +239,57 @@ TEST(Refine, KernelsEqualTheScalarCodeBitForBit) {
 }
 
 // Through the whole pipeline, on noise-free projections: every joint stays exact and is counted.
+// The left wrist seen by camera 0 only: on camera 0's ray through it, at the left elbow's depth.
+TEST(Refine, AJointOneViewSawGoesOnItsRayAtItsNeighboursDepth) {
+  constexpr int kElbow = 7, kWrist = 9, kShoulder = 5;
+  const auto cameras = test::RingCameras(3);
+  const Eigen::Matrix4Xd body = test::StandingPerson(0.2, -0.1, 0.7);
+  auto views = test::ProjectPersons(cameras, {body});
+  views[0].Person(0)(2, kWrist) = 0.8;
+  views[1].Person(0)(2, kWrist) = 0;
+  views[2].Person(0)(2, kWrist) = 0;
+  TriangulatorOptions options;
+  options.track.enabled = false;
+  FrameStats stats;
+  Poses3D persons = test::ProcessOneFrame(cameras, views, options, &stats);
+  ASSERT_EQ(persons.num_persons(), 1);
+  const Eigen::Vector3d center = cameras[0].Center();
+  const Eigen::Vector3d ray = body.col(kWrist).head<3>() - center;
+  const Eigen::Vector3d elbow = persons.Person(0).col(kElbow).head<3>();
+  const Eigen::Vector3d expected = center + ray * (ray.dot(elbow - center) / ray.squaredNorm());
+  EXPECT_LT((persons.Person(0).col(kWrist).head<3>() - expected).norm(), 1e-9);
+  EXPECT_GT((expected - body.col(kWrist).head<3>()).norm(), 0.01) << "a guessed depth, not the truth";
+  EXPECT_NEAR(persons.Person(0)(3, kWrist), 0.4, 1e-12) << "half its 2D confidence";
+  EXPECT_EQ(persons.Provenance(0, kWrist), JointProvenance::kLifted);
+  EXPECT_EQ(stats.one_view_joints, 1);
+
+  // Off: the wrist is filled onto the elbow.
+  options.refine.one_view_joints = false;
+  persons = test::ProcessOneFrame(cameras, views, options, &stats);
+  EXPECT_EQ(persons.Provenance(0, kWrist), JointProvenance::kFilled);
+  EXPECT_EQ(stats.one_view_joints, 0);
+
+  // The elbow seen by camera 0 only as well: the elbow goes on its ray (its neighbour, the
+  // shoulder, was triangulated); the wrist, whose neighbour was not, is filled.
+  views[1].Person(0)(2, kElbow) = 0;
+  views[2].Person(0)(2, kElbow) = 0;
+  options.refine.one_view_joints = true;
+  persons = test::ProcessOneFrame(cameras, views, options, &stats);
+  EXPECT_EQ(persons.Provenance(0, kElbow), JointProvenance::kLifted);
+  EXPECT_EQ(persons.Provenance(0, kShoulder), JointProvenance::kTriangulated);
+  EXPECT_EQ(persons.Provenance(0, kWrist), JointProvenance::kFilled);
+  EXPECT_EQ(stats.one_view_joints, 1);
+
+  // Two views saw the wrist, 200 px apart from agreeing: no pair kept it, and the views disagree,
+  // so neither is taken (it is filled).
+  views = test::ProjectPersons(cameras, {body});
+  views[0].Person(0)(2, kWrist) = 0;
+  views[2].Person(0)(0, kWrist) += 200;
+  persons = test::ProcessOneFrame(cameras, views, options, &stats);
+  EXPECT_EQ(persons.Provenance(0, kWrist), JointProvenance::kFilled);
+  EXPECT_EQ(stats.one_view_joints, 0);
+}
+
 TEST(Refine, NoiseFreeSceneStaysExact) {
   const auto cameras = test::RingCameras(4);
   const Eigen::Matrix4Xd body = test::StandingPerson(0.2, -0.1, 0.7);

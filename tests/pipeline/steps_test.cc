@@ -1006,6 +1006,51 @@ TEST(Postprocess, DropsInvalidPersonsAndFillsMissingJoints) {
   EXPECT_EQ(steps::Postprocess(off, input, &persons, &stats), 3);
 }
 
+TEST(Postprocess, JointsPlacedFromOneViewNeitherDecideNorOutweigh) {
+  const JointNames names = AddDerivedJoints(CocoBodyJoints());
+  std::vector<int> neighbour;
+  for (const auto& n : names) neighbour.push_back(FindJoint(names, NeighbourJoint(n)));
+  std::vector<ResolvedLimb> limbs;
+  for (const auto& l : LimbsFor(names)) {
+    limbs.push_back(ResolvedLimb{FindJoint(names, l.a), FindJoint(names, l.b), l.min_length_m, l.max_length_m});
+  }
+  const int elbow = FindJoint(names, "elbow_left"), wrist = FindJoint(names, "wrist_left");
+  const Room room{.size_m = Eigen::Vector3d(10, 10, 0)};
+  const steps::PostprocessInput input{.neighbour = neighbour, .limbs = limbs, .room = room};
+  const auto lifted = static_cast<uint8_t>(JointProvenance::kLifted);
+  // A lifted elbow mirrored about the shoulder: the upper arm keeps its length, the forearm is
+  // implausible. The elbow (the forearm's proximal end) is dropped and filled onto the shoulder;
+  // the triangulated wrist (its distal end) stays where it is.
+  const int shoulder = FindJoint(names, "shoulder_left");
+  Poses3D persons;
+  persons.Clear(static_cast<int>(names.size()));
+  const Eigen::Matrix4Xd body = test::StandingPerson(0, 0);
+  persons.AddPerson().leftCols(17) = body;
+  const Eigen::Vector3d moved = 2 * body.col(shoulder).head<3>() - body.col(elbow).head<3>();
+  persons.Person(0).col(elbow).head<3>() = moved;
+  persons.PersonProvenance(0)[elbow] = lifted;
+  for (const ResolvedLimb& limb : limbs) {
+    if (limb.a == elbow && limb.b == wrist) {
+      ASSERT_GT((moved - body.col(wrist).head<3>()).squaredNorm(), limb.max_length_sq()) << "forearm implausible";
+    }
+    if (limb.a == shoulder && limb.b == elbow) {
+      const double length_sq = (moved - body.col(shoulder).head<3>()).squaredNorm();
+      ASSERT_TRUE(length_sq >= limb.min_length_sq() && length_sq <= limb.max_length_sq()) << "upper arm plausible";
+    }
+  }
+  FrameStats stats;
+  ASSERT_EQ(steps::Postprocess(PostprocessOptions{}, input, &persons, &stats), 1);
+  EXPECT_EQ(persons.Provenance(0, elbow), JointProvenance::kFilled);
+  EXPECT_EQ(persons.Provenance(0, wrist), JointProvenance::kTriangulated);
+  EXPECT_EQ(Eigen::Vector4d(persons.Person(0).col(wrist)), Eigen::Vector4d(body.col(wrist)));
+  // Five triangulated joints and more lifted ones: too few to make a person (min_valid_joints 6).
+  Poses3D few;
+  few.Clear(static_cast<int>(names.size()));
+  few.AddPerson().leftCols(17) = body;
+  for (int j = 5; j < 17; ++j) few.PersonProvenance(0)[j] = lifted;
+  EXPECT_EQ(steps::Postprocess(PostprocessOptions{}, input, &few, &stats), 0);
+}
+
 TEST(Postprocess, DropsPersonsOutsideTheRoomPlusItsOwnMargin) {
   // The room reaches x = 5; the person's centre is at x = 5.3.
   const Room room{.size_m = Eigen::Vector3d(10, 10, 0)};

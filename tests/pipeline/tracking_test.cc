@@ -222,6 +222,47 @@ Eigen::Matrix4Xd MovedWithSixFarFilledJoints(const Eigen::Matrix4Xd& body, const
   return next;
 }
 
+TEST(Track, HoldsAJointPlacedFromOneViewButNotAPersonPlacedFromOne) {
+  const std::vector<int> core = Core();
+  const std::vector<int> neighbour = CocoNeighbours();
+  const steps::TrackInput input{.match_joints = core, .neighbour = neighbour, .unobserved_score = 0.05};
+  TrackScratch scratch;
+  Tracks tracks;
+  FrameStats stats;
+  const Eigen::Matrix4Xd body = test::StandingPerson(0, 0);
+  Poses3D first = Persons({body});
+  steps::Track(TrackOptions{}, input, &tracks, &scratch, &first, &stats);
+  tracks.Commit(first, 1, 0.0);
+  // The wrist placed from one view 10 cm off (its elbow triangulated): held at its offset.
+  Poses3D second = Persons({body});
+  second.Person(0).col(kWristL).head<3>() += Eigen::Vector3d(0.1, 0, 0);
+  second.PersonProvenance(0)[kWristL] = static_cast<uint8_t>(JointProvenance::kLifted);
+  stats.Reset();
+  steps::Track(TrackOptions{}, input, &tracks, &scratch, &second, &stats);
+  EXPECT_EQ(stats.held_joints, 1);
+  EXPECT_LT((second.Person(0).col(kWristL).head<3>() - body.col(kWristL).head<3>()).norm(), 1e-12);
+  // A person single_view placed (every joint lifted, 10 cm off) with its wrist filled onto the
+  // elbow: its lifted joints stay, the filled wrist is held from the lifted elbow.
+  tracks.Commit(first, 1, 0.04);
+  Poses3D lifted = Persons({body});
+  lifted.Person(0).topRows(3).colwise() += Eigen::Vector3d(0.1, 0, 0);
+  for (uint8_t& source : lifted.PersonProvenance(0)) source = static_cast<uint8_t>(JointProvenance::kLifted);
+  lifted.Person(0).col(kWristL).head<3>() = lifted.Person(0).col(kElbowL).head<3>();
+  lifted.Person(0)(3, kWristL) = 0.05;
+  lifted.PersonProvenance(0)[kWristL] = static_cast<uint8_t>(JointProvenance::kFilled);
+  const Poses3D before = lifted;
+  stats.Reset();
+  steps::Track(TrackOptions{}, input, &tracks, &scratch, &lifted, &stats);
+  EXPECT_EQ(stats.held_joints, 1);
+  for (int j = 0; j < 17; ++j) {
+    if (j == kWristL) continue;
+    EXPECT_EQ(Eigen::Vector4d(lifted.Person(0).col(j)), Eigen::Vector4d(before.Person(0).col(j))) << j;
+  }
+  const Eigen::Vector3d offset = body.col(kWristL).head<3>() - body.col(kElbowL).head<3>();
+  EXPECT_LT((lifted.Person(0).col(kWristL).head<3>() - (before.Person(0).col(kElbowL).head<3>() + offset)).norm(),
+            1e-12);
+}
+
 // Matching a person to a track: the core joints, a track of a standing person at the origin.
 class TrackMatching : public ::testing::Test {
  protected:
