@@ -46,7 +46,7 @@ enum class JointProvenance : uint8_t {
   kTriangulated = 0,  // from the views of this frame (steps 1-12)
   kFilled = 1,        // missing, given its neighbour's position (postprocess.fill_missing_joints, bone_lengths)
   kSmoothed = 2,      // triangulated, then moved by a temporal step (clip_speed, smooth, offline smoothing)
-  kLifted = 3,        // placed from one view at a guessed depth (single_view, step 12b)
+  kLifted = 3,        // placed from one view at a guessed depth (refine.one_view_joints; single_view, step 12b)
   kPredicted = 4,     // a coasting person's: its last pose carried on (track, no detection this frame)
 };
 inline constexpr int kNumJointProvenances = 5;
