@@ -305,7 +305,7 @@ void VisitFields(Visitor& v, Self& o) {
                .max = 1e6});
   v("one_view_joints", o.one_view_joints,
     OptionSpec{.help = "a joint only one of its person's views detected goes on that view's ray at its neighbour's "
-                       "depth (provenance lifted)"});
+                       "depth (provenance lifted; with refine.enabled)"});
 }
 
 // Step 11b (an addition): re-score each person against all views, drop unsupported ones.
