@@ -209,7 +209,9 @@ TEST(AtomicOutputs, InterruptedEvalRemovesItsTemporariesAndExits130) {
   };
   for (const Case c : {Case{SIGINT, false}, Case{SIGINT, true}, Case{SIGTERM, true}}) {
     SCOPED_TRACE("signal " + std::to_string(c.signal_number) + (c.while_writing ? " while writing" : " early"));
-    const pid_t child = StartEval(151, out);
+    // Early: a run long enough (5000 frames, seconds) that 100 ms into it is surely before it
+    // writes; 151 frames could end within them on a fast or idle machine.
+    const pid_t child = StartEval(c.while_writing ? 151 : 5000, out);
     if (c.while_writing) {
       ASSERT_TRUE(WaitUntilWriting(out, child)) << "the run ended before it wrote anything";
     } else {
