@@ -84,10 +84,6 @@ void SolveScalar(const double* sums, int n, double min_conditioning, double* x, 
   }
 }
 
-}  // namespace
-
-namespace {
-
 // options.one_view_joints for person p (refine.h): returns the joints placed.
 int PlaceOneViewJoints(const steps::RefineInput& in, std::span<const int> poses, int p, Poses3D* persons) {
   const KeypointColumns& columns = in.views.all_columns;
