@@ -128,22 +128,40 @@ Poses3D WithFilledJoints(const Eigen::Matrix4Xd& body, const std::vector<int>& m
 
 constexpr int kShoulderL = 5, kElbowL = 7, kWristL = 9;
 
-TEST(Track, HoldsAFilledJointAtItsOffsetInTheTracksLastPose) {
-  ASSERT_EQ(CocoNeighbours()[kWristL], kElbowL);
-  ASSERT_EQ(CocoNeighbours()[kElbowL], kShoulderL);
-  const std::vector<int> core = Core();
-  const std::vector<int> neighbour = CocoNeighbours();
-  const steps::TrackInput input{.match_joints = core, .neighbour = neighbour, .unobserved_score = 0.05};
-  TrackOptions options;
-  TrackScratch scratch;
-  Tracks tracks;
-  FrameStats stats;
-  Eigen::Matrix4Xd body = test::StandingPerson(0, 0);
+// The track step on frames of one person: the core joints matched, the COCO fill rule for held
+// joints, a standing person at the origin.
+class TrackStep : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    ASSERT_GE(core_.size(), 12u);
+    ASSERT_EQ(neighbour_[kWristL], kElbowL);
+    ASSERT_EQ(neighbour_[kElbowL], kShoulderL);
+  }
+  // Runs the track step on `persons` (stats reset first).
+  void Run(Poses3D* persons, const TrackOptions& options = {}) {
+    stats_.Reset();
+    steps::Track(options, input_, &tracks_, &scratch_, persons, &stats_);
+  }
+  // Starts the track with `persons` at time 0.
+  void Start(Poses3D* persons) {
+    Run(persons);
+    tracks_.Commit(*persons, 1, 0.0);
+  }
+  const std::vector<int> core_ = Core();
+  const std::vector<int> neighbour_ = CocoNeighbours();
+  const steps::TrackInput input_{.match_joints = core_, .neighbour = neighbour_, .unobserved_score = 0.05};
+  const Eigen::Matrix4Xd body_ = test::StandingPerson(0, 0);
+  TrackScratch scratch_;
+  Tracks tracks_;
+  FrameStats stats_;
+};
+
+TEST_F(TrackStep, HoldsAFilledJointAtItsOffsetInTheTracksLastPose) {
+  Eigen::Matrix4Xd body = body_;
   body.col(kWristL).head<3>() += Eigen::Vector3d(0.05, -0.02, 0.1);  // a pose of its own
   Poses3D first = Persons({body});
-  steps::Track(options, input, &tracks, &scratch, &first, &stats);
-  tracks.Commit(first, 1, 0.0);
-  EXPECT_EQ(stats.held_joints, 0);
+  Start(&first);
+  EXPECT_EQ(stats_.held_joints, 0);
 
   // The person moves 0.1 m; its left wrist is missing and filled onto the elbow.
   const Eigen::Vector3d shift(0.1, 0.0, 0.0);
@@ -151,10 +169,9 @@ TEST(Track, HoldsAFilledJointAtItsOffsetInTheTracksLastPose) {
   moved.topRows(3).colwise() += shift;
   Poses3D second = WithFilledJoints(moved, {kWristL}, 0.05);
   ASSERT_EQ(second.Provenance(0, kWristL), JointProvenance::kFilled);
-  stats.Reset();
-  steps::Track(options, input, &tracks, &scratch, &second, &stats);
+  Run(&second);
   ASSERT_EQ(second.track_ids[0], first.track_ids[0]);
-  EXPECT_EQ(stats.held_joints, 1);
+  EXPECT_EQ(stats_.held_joints, 1);
   EXPECT_LT((second.Person(0).col(kWristL).head<3>() - moved.col(kWristL).head<3>()).norm(), 1e-12)
       << "elbow now + (wrist - elbow) in the last pose";
   EXPECT_EQ(second.Person(0)(3, kWristL), 0.05) << "still a filled joint: its score stays";
@@ -166,46 +183,37 @@ TEST(Track, HoldsAFilledJointAtItsOffsetInTheTracksLastPose) {
   }
 
   // Elbow and wrist missing: the elbow is held from the shoulder, then the wrist from the elbow.
-  tracks.Commit(second, 1, 0.04);
+  tracks_.Commit(second, 1, 0.04);
   moved.topRows(3).colwise() += shift;
   Poses3D third = WithFilledJoints(moved, {kElbowL, kWristL}, 0.05);
-  stats.Reset();
-  steps::Track(options, input, &tracks, &scratch, &third, &stats);
-  EXPECT_EQ(stats.held_joints, 2);
+  Run(&third);
+  EXPECT_EQ(stats_.held_joints, 2);
   for (int j : {kElbowL, kWristL}) EXPECT_LT((third.Person(0).col(j).head<3>() - moved.col(j).head<3>()).norm(), 1e-12) << j;
 
   // Off: the joints stay where post-processing put them.
-  tracks.Commit(third, 1, 0.08);
+  tracks_.Commit(third, 1, 0.08);
   moved.topRows(3).colwise() += shift;
   Poses3D off = WithFilledJoints(moved, {kElbowL, kWristL}, 0.05);
   const Poses3D filled = off;
+  TrackOptions options;
   options.hold_missing_joints = false;
-  stats.Reset();
-  steps::Track(options, input, &tracks, &scratch, &off, &stats);
-  EXPECT_EQ(stats.held_joints, 0);
+  Run(&off, options);
+  EXPECT_EQ(stats_.held_joints, 0);
   EXPECT_LT((off.Person(0) - filled.Person(0)).norm(), 1e-12);
 }
 
-TEST(Track, AJointTheLastPoseLacksFollowsItsHeldNeighbour) {
+TEST_F(TrackStep, AJointTheLastPoseLacksFollowsItsHeldNeighbour) {
   // The last pose has the elbow but no wrist. Both missing now: the elbow is held (shoulder + its
   // offset), the wrist cannot be and sits on the elbow where the hold put it, not on the shoulder
   // where post-processing's fill had put the elbow.
-  const std::vector<int> core = Core();
-  const std::vector<int> neighbour = CocoNeighbours();
-  const steps::TrackInput input{.match_joints = core, .neighbour = neighbour, .unobserved_score = 0.05};
-  TrackScratch scratch;
-  Tracks tracks;
-  FrameStats stats;
-  const Eigen::Matrix4Xd body = test::StandingPerson(0, 0);
+  const Eigen::Matrix4Xd& body = body_;
   Poses3D first = Persons({body});
   first.Person(0)(3, kWristL) = 0;  // missing, not filled (post-processing off, say)
-  steps::Track(TrackOptions{}, input, &tracks, &scratch, &first, &stats);
-  tracks.Commit(first, 1, 0.0);
+  Start(&first);
   Poses3D second = WithFilledJoints(body, {kElbowL, kWristL}, 0.05);
   ASSERT_LT((second.Person(0).col(kWristL).head<3>() - body.col(kShoulderL).head<3>()).norm(), 1e-12);
-  stats.Reset();
-  steps::Track(TrackOptions{}, input, &tracks, &scratch, &second, &stats);
-  EXPECT_EQ(stats.held_joints, 1);
+  Run(&second);
+  EXPECT_EQ(stats_.held_joints, 1);
   const auto person = second.Person(0);
   EXPECT_LT((person.col(kElbowL).head<3>() - body.col(kElbowL).head<3>()).norm(), 1e-12);
   EXPECT_LT((person.col(kWristL).head<3>() - body.col(kElbowL).head<3>()).norm(), 1e-12);
@@ -222,28 +230,20 @@ Eigen::Matrix4Xd MovedWithSixFarFilledJoints(const Eigen::Matrix4Xd& body, const
   return next;
 }
 
-TEST(Track, HoldsAJointPlacedFromOneViewButNotAPersonPlacedFromOne) {
-  const std::vector<int> core = Core();
-  const std::vector<int> neighbour = CocoNeighbours();
-  const steps::TrackInput input{.match_joints = core, .neighbour = neighbour, .unobserved_score = 0.05};
-  TrackScratch scratch;
-  Tracks tracks;
-  FrameStats stats;
-  const Eigen::Matrix4Xd body = test::StandingPerson(0, 0);
+TEST_F(TrackStep, HoldsAJointPlacedFromOneViewButNotAPersonPlacedFromOne) {
+  const Eigen::Matrix4Xd& body = body_;
   Poses3D first = Persons({body});
-  steps::Track(TrackOptions{}, input, &tracks, &scratch, &first, &stats);
-  tracks.Commit(first, 1, 0.0);
+  Start(&first);
   // The wrist placed from one view 10 cm off (its elbow triangulated): held at its offset.
   Poses3D second = Persons({body});
   second.Person(0).col(kWristL).head<3>() += Eigen::Vector3d(0.1, 0, 0);
   second.PersonProvenance(0)[kWristL] = static_cast<uint8_t>(JointProvenance::kLifted);
-  stats.Reset();
-  steps::Track(TrackOptions{}, input, &tracks, &scratch, &second, &stats);
-  EXPECT_EQ(stats.held_joints, 1);
+  Run(&second);
+  EXPECT_EQ(stats_.held_joints, 1);
   EXPECT_LT((second.Person(0).col(kWristL).head<3>() - body.col(kWristL).head<3>()).norm(), 1e-12);
   // A person single_view placed (every joint lifted, 10 cm off) with its wrist filled onto the
   // elbow: its lifted joints stay, the filled wrist is held from the lifted elbow.
-  tracks.Commit(first, 1, 0.04);
+  tracks_.Commit(first, 1, 0.04);
   Poses3D lifted = Persons({body});
   lifted.Person(0).topRows(3).colwise() += Eigen::Vector3d(0.1, 0, 0);
   for (uint8_t& source : lifted.PersonProvenance(0)) source = static_cast<uint8_t>(JointProvenance::kLifted);
@@ -251,9 +251,8 @@ TEST(Track, HoldsAJointPlacedFromOneViewButNotAPersonPlacedFromOne) {
   lifted.Person(0)(3, kWristL) = 0.05;
   lifted.PersonProvenance(0)[kWristL] = static_cast<uint8_t>(JointProvenance::kFilled);
   const Poses3D before = lifted;
-  stats.Reset();
-  steps::Track(TrackOptions{}, input, &tracks, &scratch, &lifted, &stats);
-  EXPECT_EQ(stats.held_joints, 1);
+  Run(&lifted);
+  EXPECT_EQ(stats_.held_joints, 1);
   for (int j = 0; j < 17; ++j) {
     if (j == kWristL) continue;
     EXPECT_EQ(Eigen::Vector4d(lifted.Person(0).col(j)), Eigen::Vector4d(before.Person(0).col(j))) << j;
@@ -263,30 +262,12 @@ TEST(Track, HoldsAJointPlacedFromOneViewButNotAPersonPlacedFromOne) {
             1e-12);
 }
 
-// Matching a person to a track: the core joints, a track of a standing person at the origin.
-class TrackMatching : public ::testing::Test {
- protected:
-  void SetUp() override { ASSERT_GE(core_.size(), 12u); }
-  // Runs the track step on `persons` (stats reset first).
-  void Run(Poses3D* persons) {
-    stats_.Reset();
-    steps::Track(TrackOptions{}, input_, &tracks_, &scratch_, persons, &stats_);
-  }
-  const std::vector<int> core_ = Core();
-  const steps::TrackInput input_{.match_joints = core_, .unobserved_score = 0.05};
-  const Eigen::Matrix4Xd body_ = test::StandingPerson(0, 0);
-  TrackScratch scratch_;
-  Tracks tracks_;
-  FrameStats stats_;
-};
-
-TEST_F(TrackMatching, ComparesObservedJointsBeforeFilledOnes) {
+TEST_F(TrackStep, ComparesObservedJointsBeforeFilledOnes) {
   // Six core joints filled far from where the track held them, six observed 2 cm off: observed
   // joints decide (mean 0.02 m, the track continues); with every valid joint the mean would be
   // above max_distance_m.
   Poses3D first = Persons({body_});
-  Run(&first);
-  tracks_.Commit(first, 1, 0.0);
+  Start(&first);
   Poses3D second = Persons({MovedWithSixFarFilledJoints(body_, core_)});
   Run(&second);
   EXPECT_EQ(stats_.new_tracks, 0);
@@ -299,7 +280,7 @@ TEST_F(TrackMatching, ComparesObservedJointsBeforeFilledOnes) {
   EXPECT_EQ(stats_.new_tracks, 1);
 }
 
-TEST_F(TrackMatching, ComparesJointsObservedNowWithTheLastPosesHeldOnes) {
+TEST_F(TrackStep, ComparesJointsObservedNowWithTheLastPosesHeldOnes) {
   // The last output observed only 2 core joints (the others held, score 0.05, where they were);
   // now 6 are observed 2 cm off and 6 filled 1.5 m away. Observed in both: 2, too few; observed
   // now against the last output's valid joints: mean 0.02 m, the track continues (over every
