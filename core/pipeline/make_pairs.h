@@ -8,10 +8,17 @@
 
 namespace rpt {
 
+// Whether make_pairs writes the pairs out. The pre-filter, when it acts (PrefilterActs), builds
+// the pairs it keeps from its classification of the poses and never reads the full list: with 31
+// cameras and 8 people that list has 30,000 pairs of which a few thousand are kept.
+enum class PairListing { kAll, kCountOnly };
+
 namespace steps {
 
-// Appends all cross-view pairs (view(a) < view(b)) to `pairs` (cleared first). Returns the count.
-int MakePairs(const PreparedViews& views, std::vector<PosePair>* pairs);
+// The number of cross-view pairs (view(a) < view(b)); with PairListing::kAll they are written to
+// `pairs` (cleared first) by view pair, then pose a, then pose b; with kCountOnly `pairs` is
+// cleared and left empty.
+int MakePairs(const PreparedViews& views, PairListing listing, std::vector<PosePair>* pairs);
 
 }  // namespace steps
 

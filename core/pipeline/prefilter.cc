@@ -42,6 +42,18 @@ const double* CoreSqrtScores(const PreparedViews& views, std::span<const int> co
   return scratch->core_sqrt_scores.data();
 }
 
+// Keeps the pairs whose `keep` entry is set, in order; returns how many. Branch-free: which pairs
+// a budget drops follows no pattern a branch predictor could learn.
+int CompactKept(const std::vector<char>& keep, std::vector<PosePair>* pairs) {
+  int kept = 0;
+  for (size_t k = 0; k < pairs->size(); ++k) {
+    (*pairs)[kept] = (*pairs)[k];
+    kept += keep[k] != 0 ? 1 : 0;
+  }
+  pairs->resize(kept);
+  return kept;
+}
+
 // A pair's quality for the budgets: sin of the angle between the unit directions from a person's
 // last centre to the two cameras (da, db) x the 2D confidence both poses share on the core joints
 // (their rows sa, sb of CoreSqrtScores).
@@ -100,12 +112,7 @@ int LimitAmbiguousPairs(const PreparedViews& views, std::span<const ViewGeometry
     });
     for (AmbiguousPair* e = first + limit; e != last; ++e) scratch->keep[e->pair] = 0;
   }
-  int kept = 0;
-  for (size_t k = 0; k < pairs->size(); ++k) {
-    if (scratch->keep[k]) (*pairs)[kept++] = (*pairs)[k];
-  }
-  pairs->resize(kept);
-  return kept;
+  return CompactKept(scratch->keep, pairs);
 }
 
 // Keeps at most max_pairs_per_person of the pairs matched to each previous person (see the header).
@@ -117,7 +124,7 @@ int ApplyPairBudget(const PreparedViews& views, std::span<const ViewGeometry> ge
   const std::vector<int>& match = scratch->match;
   const size_t budget = static_cast<size_t>(options.max_pairs_per_person);
 
-  // Pairs per person (both sides match the same person after the filter above): counting sort.
+  // Pairs per person (a matched to it; b too, or b ambiguous near it): counting sort.
   scratch->bucket_begin.assign(num_previous + 1, 0);
   for (const PosePair& pair : *pairs) {
     if (match[pair.a] >= 0) ++scratch->bucket_begin[match[pair.a] + 1];
@@ -199,12 +206,7 @@ int ApplyPairBudget(const PreparedViews& views, std::span<const ViewGeometry> ge
       for (size_t i = 0; i < take; ++i) scratch->keep[scratch->rest[i].second] = 1;
     }
   }
-  int kept = 0;
-  for (size_t k = 0; k < pairs->size(); ++k) {
-    if (scratch->keep[k]) (*pairs)[kept++] = (*pairs)[k];
-  }
-  pairs->resize(kept);
-  return kept;
+  return CompactKept(scratch->keep, pairs);
 }
 
 }  // namespace
@@ -218,7 +220,7 @@ int steps::Prefilter(const PrefilterOptions& options, const PrefilterInput& in, 
   const double timestamp_s = in.timestamp_s;
   std::vector<int>* match = &scratch->match;
   const int num_previous = previous.size();
-  if (!options.enabled || num_previous == 0) return static_cast<int>(pairs->size());
+  if (!PrefilterActs(options, previous)) return static_cast<int>(pairs->size());
 
   const int num_core = static_cast<int>(core_joints.size());
   constexpr double kPersonSizeM = 1.8;
@@ -320,27 +322,73 @@ int steps::Prefilter(const PrefilterOptions& options, const PrefilterInput& in, 
   // Kept: both matched to the same person, both free, and an ambiguous pose with a free or
   // ambiguous one or with a pose matched to a person within twice the radius of it (one of the
   // persons it is ambiguous between); dropped: matched to different persons, one matched and the
-  // other free, an ambiguous pose with a pose matched to a person far from it. The common test is
-  // branch-free: with 31 cameras there are tens of thousands of pairs, kept and dropped in no
-  // order a branch predictor could learn; ambiguous poses are few.
-  int kept = 0;
-  for (const PosePair& pair : *pairs) {
-    const int a = (*match)[pair.a], b = (*match)[pair.b];
-    bool keep = a == b;
-    if ((a == kPoseAmbiguous) | (b == kPoseAmbiguous)) {
-      const int ambiguous_pose = a == kPoseAmbiguous ? pair.a : pair.b;
-      const int other = a == kPoseAmbiguous ? b : a;
-      keep = other < 0 || ((scratch->near[static_cast<size_t>(ambiguous_pose) * words + other / 64] >> (other % 64)) & 1);
-      if (keep && other >= 0 && limit_ambiguous) {
-        const int bucket = scratch->ambiguous_slot[ambiguous_pose] * num_previous + other;
-        ++scratch->ambiguous_count[bucket];
-        scratch->ambiguous.push_back({.bucket = bucket, .quality = 0, .pair = kept});
+  // other free, an ambiguous pose with a pose matched to a person far from it. The kept pairs are
+  // listed directly, in make_pairs' order (view pair, pose a, pose b), without visiting the
+  // dropped ones: a pose matched to person q meets, in each later view, only the pose matched to
+  // q there and the view's unmatched (free or ambiguous) poses; with 31 cameras tens of thousands
+  // of pairs become a few thousand candidates.
+  scratch->person_pose.assign(static_cast<size_t>(num_views) * num_previous, -1);
+  scratch->unmatched.clear();
+  scratch->unmatched_begin.resize(num_views + 1);
+  for (int v = 0; v < num_views; ++v) {
+    scratch->unmatched_begin[v] = static_cast<int>(scratch->unmatched.size());
+    for (int g = views.view_begin[v]; g < views.view_begin[v + 1]; ++g) {
+      if ((*match)[g] >= 0) {
+        scratch->person_pose[static_cast<size_t>(v) * num_previous + (*match)[g]] = g;
+      } else {
+        scratch->unmatched.push_back(g);
       }
     }
-    (*pairs)[kept] = pair;
-    kept += keep ? 1 : 0;
   }
-  pairs->resize(kept);
+  scratch->unmatched_begin[num_views] = static_cast<int>(scratch->unmatched.size());
+  const auto near = [&](int pose, int person) {
+    return ((scratch->near[static_cast<size_t>(pose) * words + person / 64] >> (person % 64)) & 1) != 0;
+  };
+  // An ambiguous pose's pair with a pose matched to `person`: counted for LimitAmbiguousPairs.
+  const auto note_ambiguous = [&](int ambiguous_pose, int person) {
+    if (!limit_ambiguous) return;
+    const int bucket = scratch->ambiguous_slot[ambiguous_pose] * num_previous + person;
+    ++scratch->ambiguous_count[bucket];
+    scratch->ambiguous.push_back({.bucket = bucket, .quality = 0, .pair = static_cast<int>(pairs->size())});
+  };
+  pairs->clear();
+  for (int va = 0; va < num_views; ++va) {
+    for (int vb = va + 1; vb < num_views; ++vb) {
+      const int* unmatched_first = scratch->unmatched.data() + scratch->unmatched_begin[vb];
+      const int* unmatched_last = scratch->unmatched.data() + scratch->unmatched_begin[vb + 1];
+      for (int a = views.view_begin[va]; a < views.view_begin[va + 1]; ++a) {
+        const int ma = (*match)[a];
+        if (ma == kPoseAmbiguous) {  // every pose of vb but those matched to persons far from a
+          for (int b = views.view_begin[vb]; b < views.view_begin[vb + 1]; ++b) {
+            const int mb = (*match)[b];
+            if (mb >= 0 && !near(a, mb)) continue;
+            if (mb >= 0) note_ambiguous(a, mb);
+            pairs->push_back(PosePair{a, b});
+          }
+          continue;
+        }
+        // a is free or matched to ma: the pose of vb matched to ma, merged in order into vb's
+        // unmatched poses (free ones pair with a free a; ambiguous ones with a free a, or with a
+        // matched one when ma is among the persons they are ambiguous between).
+        int partner = ma >= 0 ? scratch->person_pose[static_cast<size_t>(vb) * num_previous + ma] : -1;
+        for (const int* it = unmatched_first; it != unmatched_last; ++it) {
+          const int b = *it;
+          if (partner >= 0 && partner < b) {
+            pairs->push_back(PosePair{a, partner});
+            partner = -1;
+          }
+          if ((*match)[b] == kPoseFree) {
+            if (ma == kPoseFree) pairs->push_back(PosePair{a, b});
+          } else if (ma < 0 || near(b, ma)) {
+            if (ma >= 0) note_ambiguous(b, ma);
+            pairs->push_back(PosePair{a, b});
+          }
+        }
+        if (partner >= 0) pairs->push_back(PosePair{a, partner});
+      }
+    }
+  }
+  int kept = static_cast<int>(pairs->size());
   if (limit_ambiguous && num_ambiguous > 0) {
     kept = LimitAmbiguousPairs(views, geometry, core_joints, previous, options, scratch, pairs);
   }

@@ -82,7 +82,15 @@ struct PrefilterScratch {
   std::vector<int> ambiguous_count;        // per ambiguous pose and previous person: its pairs with that person
   std::vector<AmbiguousPair> ambiguous;    // the pairs of an ambiguous pose with a matched one, in pair order
   std::vector<AmbiguousPair> ambiguous_sorted;  // the same, by bucket
+  std::vector<int> person_pose;      // per view and previous person: the pose matched to it (-1: none)
+  std::vector<int> unmatched;        // the free and ambiguous poses, by view, ascending
+  std::vector<int> unmatched_begin;  // per view + 1: offsets into `unmatched`
 };
+
+// Whether the pre-filter acts on this frame: enabled, and there are previous persons.
+inline bool PrefilterActs(const PrefilterOptions& options, const PreviousPersons& previous) {
+  return options.enabled && previous.size() > 0;
+}
 
 namespace steps {
 
@@ -94,8 +102,9 @@ struct PrefilterInput {
   double timestamp_s;                      // this frame's time: the radius grows with the time since `previous`
 };
 
-// Classifies every pose into scratch->match, then compacts `pairs` (make_pairs' output).
-// Returns the number of pairs kept. Does nothing (keeps all) when there are no previous persons.
+// When it acts, classifies every pose into scratch->match and writes the kept cross-view pairs to
+// `pairs` (replacing its content: make_pairs need not list them, see PairListing), in make_pairs'
+// order. Returns the number of pairs kept. Otherwise leaves `pairs` (make_pairs' list) as it is.
 int Prefilter(const PrefilterOptions& options, const PrefilterInput& in, PrefilterScratch* scratch,
               std::vector<PosePair>* pairs);
 

@@ -134,7 +134,10 @@ void Triangulator::Process(std::span<const Poses2D> views, double timestamp_s, P
                                                   .core_joints = m.core_joints,
                                                   .num_output_joints = num_joints},
                             &buf.prepared);
-  run.Run<Step::kMakePairs>(buf.prepared, &buf.pairs);
+  // The pre-filter, when it acts, lists the pairs it keeps itself; a trace records them all.
+  const PairListing listing = PrefilterActs(opt.prefilter, state.previous) && trace == nullptr ? PairListing::kCountOnly
+                                                                                                 : PairListing::kAll;
+  run.Run<Step::kMakePairs>(buf.prepared, listing, &buf.pairs);
   if (trace != nullptr) {
     trace->Clear();
     trace->pose_view = buf.prepared.view_of;

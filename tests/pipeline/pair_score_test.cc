@@ -74,7 +74,7 @@ PairTally TallyPairs(const DetectorOptions& detector_options, const ScoreOptions
                       .core_joints = core,
                       .num_output_joints = static_cast<int>(output.size())},
                      &prepared);
-    steps::MakePairs(prepared, &pairs);
+    steps::MakePairs(prepared, PairListing::kAll, &pairs);
     steps::TriangulateCore(TriangulateOptions{},
                            {.views = prepared, .geometry = geometry, .pairs = pairs, .joints = core}, &proposals);
     steps::Score(score, {.views = prepared, .geometry = geometry, .core_joints = core, .core_limbs = no_limbs}, &noise,

@@ -68,7 +68,7 @@ struct HandScene {
       }
     }
     test::UndistortCocoViews(cameras, views, &geometry, &core, &prepared);
-    steps::MakePairs(prepared, &pairs);
+    steps::MakePairs(prepared, PairListing::kAll, &pairs);
   }
 
   // Triangulates every pair, then puts each proposal's joints at the true points with ray gap

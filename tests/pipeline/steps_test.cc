@@ -200,8 +200,12 @@ TEST(MakePairs, EveryCrossViewPairOnce) {
   extra = test::ProjectPersons({f.cameras[1]}, {test::StandingPerson(0, 1.5)})[0].Person(0);
   f.Prepare();
   std::vector<PosePair> pairs;
-  EXPECT_EQ(steps::MakePairs(f.prepared, &pairs), 2 * 3);
+  EXPECT_EQ(steps::MakePairs(f.prepared, PairListing::kAll, &pairs), 2 * 3);
+  ASSERT_EQ(pairs.size(), 6u);
   for (const PosePair& p : pairs) EXPECT_LT(f.prepared.view_of[p.a], f.prepared.view_of[p.b]);
+  // Counted, not listed (the pre-filter lists what it keeps): the same count, no pair.
+  EXPECT_EQ(steps::MakePairs(f.prepared, PairListing::kCountOnly, &pairs), 2 * 3);
+  EXPECT_TRUE(pairs.empty());
 }
 
 TEST(Prefilter, KeepsBothOrNeitherMatchedDropsOneSided) {
@@ -209,7 +213,7 @@ TEST(Prefilter, KeepsBothOrNeitherMatchedDropsOneSided) {
   StepFixture f(2, {a, b, c});
   f.Prepare();
   std::vector<PosePair> pairs;
-  steps::MakePairs(f.prepared, &pairs);
+  steps::MakePairs(f.prepared, PairListing::kAll, &pairs);
   ASSERT_EQ(pairs.size(), 9u);
   // Previous frame knew a and b (slightly moved), not c.
   PreviousPersons previous;
@@ -232,7 +236,7 @@ TEST(Prefilter, KeepsBothOrNeitherMatchedDropsOneSided) {
   }
   EXPECT_EQ(match[f.prepared.view_begin[0] + 2], kPoseFree);
   // Disabled: everything stays.
-  steps::MakePairs(f.prepared, &pairs);
+  steps::MakePairs(f.prepared, PairListing::kAll, &pairs);
   PrefilterOptions off;
   off.enabled = false;
   EXPECT_EQ(steps::Prefilter(off, input, &scratch, &pairs), 9);
@@ -260,7 +264,7 @@ TEST(Prefilter, PairBudgetKeepsEveryPosesTwoBestPairsThenTheBestOthers) {
     centre += person.col(c).head<3>() / static_cast<double>(f.core.size());
   }
   std::vector<PosePair> all;
-  steps::MakePairs(f.prepared, &all);
+  steps::MakePairs(f.prepared, PairListing::kAll, &all);
   ASSERT_EQ(all.size(), 10u);
   // The rule by hand: quality of every pair, best first (ties: the earlier pair).
   std::vector<std::pair<double, int>> order;
@@ -402,7 +406,7 @@ TEST(Prefilter, PairBudgetOnTwelveViewsKeepsThePairsOfTheRule) {
   ASSERT_EQ(f.prepared.num_poses(), 24);
   const PreviousPersons previous = PreviousOf(f, persons);
   std::vector<PosePair> all;
-  steps::MakePairs(f.prepared, &all);
+  steps::MakePairs(f.prepared, PairListing::kAll, &all);
   std::vector<std::vector<int>> bucket(2);  // each person's own pairs; the mixed ones are dropped
   for (int k = 0; k < static_cast<int>(all.size()); ++k) {
     const int pa = f.prepared.person_of[all[k].a], pb = f.prepared.person_of[all[k].b];
@@ -461,7 +465,7 @@ TEST(Prefilter, AnAmbiguousPosePairsOnlyWithThePersonsItIsAmbiguousBetween) {
   ASSERT_EQ(f.prepared.num_poses(), 12);
   const PreviousPersons previous = PreviousOf(f, {person, beside, elsewhere});
   std::vector<PosePair> all, pairs;
-  steps::MakePairs(f.prepared, &all);
+  steps::MakePairs(f.prepared, PairListing::kAll, &all);
   ASSERT_EQ(all.size(), 54u);  // 6 view pairs x 3 x 3
   PrefilterScratch scratch;
   const int kept = RunPrefilter(f, previous, PrefilterOptions{}, all, &pairs, &scratch);
@@ -506,6 +510,66 @@ TEST(Prefilter, AnAmbiguousPosePairsOnlyWithThePersonsItIsAmbiguousBetween) {
   }
 }
 
+// The pairs the pre-filter lists are those of its rule, in make_pairs' order, whatever the mix
+// of matched, free and ambiguous poses (budgets off): both matched to one person, both free, or
+// an ambiguous pose with a free or ambiguous one or with a pose matched to a person near it
+// (scratch.near). A crowd of five known from the last frame, two of them moved, a newcomer, and
+// a known person far from the crowd.
+TEST(Prefilter, ListsThePairsOfItsRuleInMakePairsOrder) {
+  std::vector<Eigen::Matrix4Xd> persons;
+  for (int i = 0; i < 5; ++i) persons.push_back(test::StandingPerson(0.55 * (i % 3) - 0.5, 0.6 * (i / 3) - 0.3, i));
+  persons.push_back(test::StandingPerson(2.0, 1.5));    // a newcomer, away from the crowd
+  persons.push_back(test::StandingPerson(-2.0, -1.5));  // known, far from the crowd's ambiguous poses
+  StepFixture f(6, persons);
+  f.Prepare();
+  std::vector<Eigen::Matrix4Xd> last(persons.begin(), persons.begin() + 5);
+  last.push_back(persons[6]);
+  last[1].row(0).array() += 0.27;  // halfway to person 2: person 1 is ambiguous between the two
+  last[3].row(1).array() -= 0.2;
+  const PreviousPersons previous = PreviousOf(f, last);
+  std::vector<PosePair> all, pairs;
+  steps::MakePairs(f.prepared, PairListing::kAll, &all);
+  PrefilterOptions options;
+  options.max_pairs_per_person = 0;
+  options.max_pairs_per_ambiguous_pose = 0;
+  PrefilterScratch scratch;
+  const int kept = RunPrefilter(f, previous, options, all, &pairs, &scratch);
+  const std::vector<int>& match = scratch.match;
+  const int words = (previous.size() + 63) / 64;
+  const auto near = [&](int pose, int person) {
+    return ((scratch.near[static_cast<size_t>(pose) * words + person / 64] >> (person % 64)) & 1) != 0;
+  };
+  std::vector<PosePair> want;
+  int ambiguous_second = 0, ambiguous_before_partner = 0, far_from_ambiguous = 0;
+  for (const PosePair& pair : all) {
+    const int a = match[pair.a], b = match[pair.b];
+    far_from_ambiguous += b == kPoseAmbiguous && a >= 0 && !near(pair.b, a) ? 1 : 0;
+    bool keep = a == b;
+    if (a == kPoseAmbiguous) keep = b < 0 || near(pair.a, b);
+    if (b == kPoseAmbiguous) keep = a < 0 || near(pair.b, a);
+    if (!keep) continue;
+    want.push_back(pair);
+    ambiguous_second += b == kPoseAmbiguous && a >= 0 ? 1 : 0;
+    // a kept ambiguous b listed before the pose of b's view matched to a's person
+    for (int g = pair.b + 1; b == kPoseAmbiguous && a >= 0 && f.prepared.view_of[g] == f.prepared.view_of[pair.b]; ++g) {
+      ambiguous_before_partner += match[g] == a ? 1 : 0;
+    }
+  }
+  ASSERT_EQ(kept, static_cast<int>(want.size()));
+  ASSERT_EQ(pairs.size(), want.size());
+  for (size_t i = 0; i < want.size(); ++i) {
+    EXPECT_TRUE(pairs[i].a == want[i].a && pairs[i].b == want[i].b) << "kept pair " << i;
+  }
+  // The scene has every case the listing handles.
+  const auto count = [&](int m) { return std::count(match.begin(), match.end(), m); };
+  EXPECT_GT(count(kPoseFree), 1);
+  EXPECT_GT(count(kPoseAmbiguous), 1);
+  EXPECT_GT(ambiguous_second, 0);
+  EXPECT_GT(ambiguous_before_partner, 0);
+  EXPECT_GT(far_from_ambiguous, 0);
+  EXPECT_LT(kept, static_cast<int>(all.size()) / 2);
+}
+
 // Of the pairs of an ambiguous pose with the poses matched to one person, only the
 // max_pairs_per_ambiguous_pose best are kept (prefilter.h), best = sin of the angle between the
 // two cameras' directions from that person's last centre x the 2D confidence the poses share on
@@ -528,7 +592,7 @@ TEST(Prefilter, AnAmbiguousPoseKeepsOnlyItsBestPairsWithEachPerson) {
   ASSERT_EQ(f.prepared.num_poses(), 12);
   const PreviousPersons previous = PreviousOf(f, {person, beside, elsewhere});
   std::vector<PosePair> all, pairs;
-  steps::MakePairs(f.prepared, &all);
+  steps::MakePairs(f.prepared, PairListing::kAll, &all);
   // The quality of the ambiguous pose's pair with `person` in view v, at person's last centre.
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();
   for (int c : f.core) centre += person.col(c).head<3>();
@@ -593,7 +657,7 @@ TEST(TriangulateCore, ExactRecoveryWithMidpointAndDlt) {
   StepFixture f(4, {test::StandingPerson(0.5, 0.3, 1.0)});
   f.Prepare();
   std::vector<PosePair> pairs;
-  steps::MakePairs(f.prepared, &pairs);
+  steps::MakePairs(f.prepared, PairListing::kAll, &pairs);
   for (TriangulationMethod method : {TriangulationMethod::kMidpoint, TriangulationMethod::kDlt}) {
     Proposals proposals;
     TriangulateOptions options;
@@ -616,7 +680,7 @@ TEST(TriangulateCore, PairsWithTooFewCommonJointsYieldNoProposal) {
   }
   f.Prepare();
   std::vector<PosePair> pairs;
-  steps::MakePairs(f.prepared, &pairs);
+  steps::MakePairs(f.prepared, PairListing::kAll, &pairs);
   Proposals proposals;
   TriangulateOptions options;
   options.min_core_joints = 4;
@@ -655,7 +719,7 @@ TEST(ScoreProposals, CorrectPairsScoreOneMismatchedPairsScoreLow) {
   StepFixture f(2, {test::StandingPerson(-1.2, 0), test::StandingPerson(1.2, 0.3, 2.0)});
   f.Prepare();
   std::vector<PosePair> pairs;
-  steps::MakePairs(f.prepared, &pairs);
+  steps::MakePairs(f.prepared, PairListing::kAll, &pairs);
   Proposals proposals;
   steps::TriangulateCore(TriangulateOptions{}, CoreInput(f, pairs, f.core), &proposals);
   Score(f, ScoreOptions{}, {}, &proposals);
@@ -680,7 +744,7 @@ TEST(ScoreProposals, ModesConfidenceAndLimbPruning) {
   f.views[1].Person(0)(2, 10) = 0.5;
   f.Prepare();
   std::vector<PosePair> pairs;
-  steps::MakePairs(f.prepared, &pairs);
+  steps::MakePairs(f.prepared, PairListing::kAll, &pairs);
   const int wrist_left_slot = 6, wrist_right_slot = 7;  // order of DefaultCoreJoints()
   auto run = [&](ScoreOptions options, std::vector<ResolvedLimb> limbs = {}) {
     Proposals p;
