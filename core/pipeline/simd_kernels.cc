@@ -305,7 +305,8 @@ void ScoreJointsImpl(const JointKernel& kernel, const ResidualViews& rv, const P
 }
 
 // Merge of joints [j, j + Lanes(d)) of one group: steps::Merge's loop lane by lane (merge.h). `dist`
-// holds members x Lanes(d) squared distances: NaN = not (or no longer) a candidate.
+// holds members x Lanes(d) squared distances (NaN = not, or no longer, a candidate), then members x 3
+// x Lanes(d) coordinates (the members' x, y, z de-interleaved by the first pass).
 template <class D, class V = hn::Vec<D>>
 HWY_INLINE void MergeLanes(D d, const MergeParams& p, const double* xyz, const double* score, int members, size_t n,
                            size_t j, double* dist, double* out) {
@@ -314,11 +315,18 @@ HWY_INLINE void MergeLanes(D d, const MergeParams& p, const double* xyz, const d
   const V min_score = hn::Set(d, p.min_score);
   // Candidates (score >= min_score): their count, sum (member order) and the best-scoring one.
   V count = zero, sx = zero, sy = zero, sz = zero, best_score = hn::Set(d, -1.0), bx = zero, by = zero, bz = zero;
+  // The members' coordinates de-interleaved once, into `cache` (x, y, z per member): the passes
+  // below read them again.
+  double* const cache = dist + static_cast<size_t>(members) * N;
   for (int m = 0; m < members; ++m) {
     const size_t at = static_cast<size_t>(m) * n + j;
     const V sc = hn::LoadU(d, score + at);
     V x, y, z;
     hn::LoadInterleaved3(d, xyz + 3 * at, x, y, z);
+    double* const c = cache + static_cast<size_t>(m) * 3 * N;
+    hn::StoreU(x, d, c);
+    hn::StoreU(y, d, c + N);
+    hn::StoreU(z, d, c + 2 * N);
     const auto valid = hn::Ge(sc, min_score);
     count = hn::Add(count, hn::IfThenElseZero(valid, one));
     sx = hn::Add(sx, hn::IfThenElseZero(valid, x));
@@ -338,8 +346,8 @@ HWY_INLINE void MergeLanes(D d, const MergeParams& p, const double* xyz, const d
   for (int m = 0; m < members; ++m) {
     const size_t at = static_cast<size_t>(m) * n + j;
     const V sc = hn::LoadU(d, score + at);
-    V x, y, z;
-    hn::LoadInterleaved3(d, xyz + 3 * at, x, y, z);
+    const double* const c = cache + static_cast<size_t>(m) * 3 * N;
+    const V x = hn::LoadU(d, c), y = hn::LoadU(d, c + N), z = hn::LoadU(d, c + 2 * N);
     const V dx = hn::Sub(x, mx), dy = hn::Sub(y, my), dz = hn::Sub(z, mz);
     const V dsq = hn::Add(hn::Add(hn::Mul(dx, dx), hn::Mul(dy, dy)), hn::Mul(dz, dz));
     auto kept = hn::Ge(sc, min_score);
@@ -367,8 +375,8 @@ HWY_INLINE void MergeLanes(D d, const MergeParams& p, const double* xyz, const d
         const V dm = hn::LoadU(d, dist + static_cast<size_t>(m) * N);
         const auto less = hn::Lt(dm, low);  // false for NaN: not a candidate
         if (hn::AllFalse(d, less)) continue;
-        V x, y, z;
-        hn::LoadInterleaved3(d, xyz + 3 * at, x, y, z);
+        const double* const c = cache + static_cast<size_t>(m) * 3 * N;
+        const V x = hn::LoadU(d, c), y = hn::LoadU(d, c + N), z = hn::LoadU(d, c + 2 * N);
         low = hn::IfThenElse(less, dm, low);
         low_m = hn::IfThenElse(less, hn::Set(d, static_cast<double>(m)), low_m);
         lx = hn::IfThenElse(less, x, lx);
@@ -742,7 +750,7 @@ double PixelDistanceSum(const double* uv, const PoseColumns& c, int n, int* coun
 }
 
 size_t MergeScratchSize(int members) {
-  return static_cast<size_t>(members) * HWY_DYNAMIC_DISPATCH(DoubleLanesImpl)();
+  return static_cast<size_t>(members) * 4 * HWY_DYNAMIC_DISPATCH(DoubleLanesImpl)();  // distances, x, y, z
 }
 
 void MergeGroup(const MergeParams& p, const double* xyz, const double* score, int members, int n, double* dist,
