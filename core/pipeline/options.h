@@ -60,10 +60,14 @@ struct PrefilterOptions {
   double person_speed_m_s = 2.0;   // assumed top speed of a person, widens the radius over time
   double ambiguity_ratio = 1.5;    // second-closest person must be this much farther for a match
   // With many cameras a tracked person yields k(k-1)/2 pairs; keep only this many per person: first
-  // the two best pairs of each of its poses, then the best others. Best = sin of the angle between
-  // the two viewing rays at the person x the 2D confidence both poses share on the core joints.
-  // 0: keep all.
+  // the best_pairs_per_pose best pairs of each of its poses, then the best others. Best = sin of the
+  // angle between the two viewing rays at the person x the 2D confidence both poses share on the
+  // core joints. 0: keep all.
   int max_pairs_per_person = 30;
+  // Pairs of each pose a person's budget keeps before the best others (even above the budget): two,
+  // so that a pose stays with its person when the score filter drops one of them. 1 is faster with
+  // many cameras and can leave a pose to another group (docs/algorithm.md, step 2).
+  int best_pairs_per_pose = 2;
   // An ambiguous pose pairs with every pose matched to a person it is near (one per view); keep
   // only this many of those pairs per person, the best as above. 0: keep all.
   int max_pairs_per_ambiguous_pose = 4;
@@ -81,9 +85,13 @@ void VisitFields(Visitor& v, Self& o) {
   v("ambiguity_ratio", o.ambiguity_ratio,
     OptionSpec{.help = "the second-closest person must be this much farther for a match", .min = 1, .max = 1000});
   v("max_pairs_per_person", o.max_pairs_per_person,
-    OptionSpec{.help = "pairs kept per tracked person: each pose's two best, then the best others; best = sin of "
-                       "the ray angle at the person x shared 2D confidence (0: keep all)",
+    OptionSpec{.help = "pairs kept per tracked person: each pose's best_pairs_per_pose best, then the best others; "
+                       "best = sin of the ray angle at the person x shared 2D confidence (0: keep all)",
                .min = 0, .max = 1e9});
+  v("best_pairs_per_pose", o.best_pairs_per_pose,
+    OptionSpec{.help = "pairs of each pose that max_pairs_per_person keeps first, even above it (1 is faster with "
+                       "many cameras, 2 keeps a pose with its person when the score filter drops one pair)",
+               .min = 1, .max = 4});
   v("max_pairs_per_ambiguous_pose", o.max_pairs_per_ambiguous_pose,
     OptionSpec{.help = "pairs kept between an ambiguous pose and the poses matched to one person it is near; best "
                        "as for max_pairs_per_person (0: keep all)",

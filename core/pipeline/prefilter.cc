@@ -115,6 +115,41 @@ int LimitAmbiguousPairs(const PreparedViews& views, std::span<const ViewGeometry
   return CompactKept(scratch->keep, pairs);
 }
 
+// Of one person's budget entries (pairs, best first by (-quality, pair index)), marks in
+// scratch->keep the kPerPose best of every pose; returns how many it marked.
+template <int kPerPose>
+size_t KeepEachPosesBest(const std::vector<std::pair<double, int>>& entries, const std::vector<PosePair>& pairs,
+                         PrefilterScratch* scratch) {
+  const int num_entries = static_cast<int>(entries.size());
+  const auto offer = [&entries](std::array<int, kMaxBestPairsPerPose>& best, int e) {
+    for (int t = 0; t < kPerPose; ++t) {
+      if (best[t] < 0 || entries[e] < entries[best[t]]) {
+        for (int u = kPerPose - 1; u > t; --u) best[u] = best[u - 1];
+        best[t] = e;
+        return;
+      }
+    }
+  };
+  for (int e = 0; e < num_entries; ++e) {
+    const PosePair& pair = pairs[entries[e].second];
+    offer(scratch->best[pair.a], e);
+    offer(scratch->best[pair.b], e);
+  }
+  size_t used = 0;
+  for (int e = 0; e < num_entries; ++e) {
+    const PosePair& pair = pairs[entries[e].second];
+    const std::array<int, kMaxBestPairsPerPose>& best_a = scratch->best[pair.a];
+    const std::array<int, kMaxBestPairsPerPose>& best_b = scratch->best[pair.b];
+    bool among_best = false;
+    for (int t = 0; t < kPerPose; ++t) among_best |= best_a[t] == e || best_b[t] == e;
+    if (among_best) {
+      scratch->keep[entries[e].second] = 1;
+      ++used;
+    }
+  }
+  return used;
+}
+
 // Keeps at most max_pairs_per_person of the pairs matched to each previous person (see the header).
 int ApplyPairBudget(const PreparedViews& views, std::span<const ViewGeometry> geometry, std::span<const int> core_joints,
                     const PreviousPersons& previous, const PrefilterOptions& options, PrefilterScratch* scratch,
@@ -143,7 +178,7 @@ int ApplyPairBudget(const PreparedViews& views, std::span<const ViewGeometry> ge
   }
 
   scratch->keep.assign(pairs->size(), 1);
-  scratch->best_two.resize(views.num_poses());
+  scratch->best.resize(views.num_poses());
   const int num_core_joints = static_cast<int>(core_joints.size());
   const double* core_sqrt_scores = CoreSqrtScores(views, core_joints, scratch);
   scratch->directions.resize(static_cast<size_t>(num_views));
@@ -164,36 +199,20 @@ int ApplyPairBudget(const PreparedViews& views, std::span<const ViewGeometry> ge
                       core_sqrt_scores + static_cast<size_t>(pair.b) * num_core_joints, num_core_joints);
       scratch->budget.emplace_back(-quality, k);  // best first: (-quality, pair index) ascending
       scratch->keep[k] = 0;
-      scratch->best_two[pair.a] = scratch->best_two[pair.b] = {-1, -1};
+      scratch->best[pair.a].fill(-1);
+      scratch->best[pair.b].fill(-1);
     }
-    // Every pose of the person keeps its two best pairs (so the person's group claims all its
-    // poses even if the score filter drops one), then the budget fills by quality. The entries
-    // are totally ordered (pair indices differ), so "the two best of each pose" and "the best of
-    // the rest" are exact selections: no sort of the whole bucket.
+    // Every pose of the person keeps its best_pairs_per_pose best pairs (so the person's group
+    // claims all its poses even if the score filter drops one), then the budget fills by quality.
+    // The entries are totally ordered (pair indices differ), so "the best of each pose" and "the
+    // best of the rest" are exact selections: no sort of the whole bucket.
     const std::vector<std::pair<double, int>>& entries = scratch->budget;
-    const int num_entries = static_cast<int>(entries.size());
-    const auto offer = [&entries](std::array<int, 2>& two, int e) {
-      if (two[0] < 0 || entries[e] < entries[two[0]]) {
-        two[1] = two[0];
-        two[0] = e;
-      } else if (two[1] < 0 || entries[e] < entries[two[1]]) {
-        two[1] = e;
-      }
-    };
-    for (int e = 0; e < num_entries; ++e) {
-      const PosePair& pair = (*pairs)[entries[e].second];
-      offer(scratch->best_two[pair.a], e);
-      offer(scratch->best_two[pair.b], e);
-    }
     size_t used = 0;
-    for (int e = 0; e < num_entries; ++e) {
-      const PosePair& pair = (*pairs)[entries[e].second];
-      const std::array<int, 2>& two_a = scratch->best_two[pair.a];
-      const std::array<int, 2>& two_b = scratch->best_two[pair.b];
-      if (two_a[0] == e || two_a[1] == e || two_b[0] == e || two_b[1] == e) {
-        scratch->keep[entries[e].second] = 1;
-        ++used;
-      }
+    switch (std::clamp(options.best_pairs_per_pose, 1, kMaxBestPairsPerPose)) {  // unrolled per count
+      case 1: used = KeepEachPosesBest<1>(entries, *pairs, scratch); break;
+      case 2: used = KeepEachPosesBest<2>(entries, *pairs, scratch); break;
+      case 3: used = KeepEachPosesBest<3>(entries, *pairs, scratch); break;
+      default: used = KeepEachPosesBest<4>(entries, *pairs, scratch); break;
     }
     if (used >= budget) continue;  // the usual case with many views: the poses' best pairs fill it
     scratch->rest.clear();

@@ -17,9 +17,9 @@
 //
 // Pair budget (an addition to the paper): a person matched in k views yields k(k-1)/2 pairs, 465
 // with 31 cameras, far more than the merge needs (it keeps the top-k closest proposals per
-// joint). Of the pairs matched to one person only max_pairs_per_person are kept: first the two
-// best pairs of every pose (so no pose of the person is left unclaimed, even if the score filter
-// drops one), then the best remaining ones. Quality = sin of the angle at which the viewing rays
+// joint). Of the pairs matched to one person only max_pairs_per_person are kept: first the
+// best_pairs_per_pose (2) best pairs of every pose (so no pose of the person is left unclaimed,
+// even if the score filter drops one), then the best remaining ones. Quality = sin of the angle at which the viewing rays
 // meet at the person's last position x the 2D confidence both poses share on the core joints.
 //
 // Ambiguous pairs (an addition too): an ambiguous pose near person q pairs with every pose matched
@@ -62,6 +62,8 @@ struct AmbiguousPair {
   int pair;  // index into the pairs
 };
 
+inline constexpr int kMaxBestPairsPerPose = 4;  // PrefilterOptions::best_pairs_per_pose at most
+
 struct PrefilterScratch {
   std::vector<int> match;         // per pose: person index, kPoseFree or kPoseAmbiguous
   std::vector<double> distance;   // per pose: distance to the matched person (px)
@@ -73,9 +75,10 @@ struct PrefilterScratch {
   std::vector<int> bucket_fill;
   std::vector<Eigen::Vector3d> directions;  // per view: unit vector from the person to the camera
   std::vector<std::pair<double, int>> budget;  // (-quality, pair index) of one person's pairs
-  std::vector<std::pair<double, int>> rest;    // the entries of `budget` not among any pose's two best
+  std::vector<std::pair<double, int>> rest;    // the entries of `budget` not among any pose's best
   std::vector<char> keep;                      // per pair
-  std::vector<std::array<int, 2>> best_two;    // per pose: its two best entries of `budget` (-1: none)
+  std::vector<std::array<int, kMaxBestPairsPerPose>> best;  // per pose: its best entries of `budget`, best
+                                                             // first (-1: none)
   std::vector<double> core_sqrt_scores;    // per pose and core joint: sqrt(score), when the core columns lack them
   std::vector<int> ambiguous_slot;         // per pose: its number among the ambiguous poses (-1: not ambiguous)
   std::vector<int> ambiguous_pose;         // per ambiguous pose number: the pose

@@ -343,10 +343,10 @@ int RunPrefilter(const StepFixture& f, const PreviousPersons& previous, const Pr
 // The pair budget worked out the slow way the header states it, for the pairs `bucket` (indices
 // into `pairs`) of one person whose last core joints have the mean `centre`: sorted best first
 // (quality as in the test above, from the prepared views' sqrt scores; ties: the earlier pair),
-// kept while one of the two poses has fewer than two kept pairs, then the best others up to
-// `budget`. Sets keep[k] for the kept ones.
+// kept while one of the two poses has fewer than `per_pose` kept pairs, then the best others up
+// to `budget`. Sets keep[k] for the kept ones.
 void BudgetByHand(const StepFixture& f, const std::vector<PosePair>& pairs, const std::vector<int>& bucket,
-                  const Eigen::Vector3d& centre, int budget, std::vector<bool>* keep) {
+                  const Eigen::Vector3d& centre, int budget, int per_pose, std::vector<bool>* keep) {
   std::vector<std::pair<double, int>> order;
   for (int k : bucket) {
     const PosePair& pair = pairs[k];
@@ -360,7 +360,7 @@ void BudgetByHand(const StepFixture& f, const std::vector<PosePair>& pairs, cons
   std::vector<int> covered(f.prepared.num_poses(), 0);
   int used = 0;
   for (const auto& [quality, k] : order) {
-    if (covered[pairs[k].a] >= 2 && covered[pairs[k].b] >= 2) continue;
+    if (covered[pairs[k].a] >= per_pose && covered[pairs[k].b] >= per_pose) continue;
     ++covered[pairs[k].a];
     ++covered[pairs[k].b];
     (*keep)[k] = true;
@@ -382,9 +382,9 @@ Eigen::Vector3d CoreCentre(const Eigen::Matrix4Xd& person, const std::vector<int
   return sum / static_cast<double>(core.size());
 }
 
-// Every joint of every view its own confidence in [0.3, 1) (a fixed pseudo-random pattern).
-void VaryConfidences(StepFixture* f) {
-  uint32_t state = 12345;
+// Every joint of every view its own confidence in [0.3, 1) (a fixed pseudo-random pattern per seed).
+void VaryConfidences(StepFixture* f, uint32_t seed = 12345) {
+  uint32_t state = seed;
   for (Poses2D& view : f->views) {
     for (int p = 0; p < view.num_persons(); ++p) {
       for (int j = 0; j < view.num_joints; ++j) {
@@ -396,7 +396,7 @@ void VaryConfidences(StepFixture* f) {
 }
 
 // Twelve cameras, two persons, a confidence per joint: every person has 66 pairs, and each
-// budget keeps exactly the pairs of the rule, in make_pairs' order; also when the pre-filter's core
+// budget (and count of each pose's best pairs) keeps exactly the pairs of the rule, in make_pairs' order; also when the pre-filter's core
 // joints are not the undistort step's (their sqrt scores are then gathered, not read from its columns).
 TEST(Prefilter, PairBudgetOnTwelveViewsKeepsThePairsOfTheRule) {
   const std::vector<Eigen::Matrix4Xd> persons = {test::StandingPerson(-0.6, 0), test::StandingPerson(0.6, 0.3, 1.0)};
@@ -414,13 +414,14 @@ TEST(Prefilter, PairBudgetOnTwelveViewsKeepsThePairsOfTheRule) {
   }
   ASSERT_EQ(bucket[0].size(), 66u);
   ASSERT_EQ(bucket[1].size(), 66u);
-  for (const int budget : {1, 13, 30, 50, 65, 66, 0}) {
+  for (const auto& [budget, per_pose] : std::vector<std::pair<int, int>>{
+           {1, 2}, {13, 2}, {30, 2}, {50, 2}, {65, 2}, {66, 2}, {0, 2}, {1, 1}, {13, 1}, {30, 1}, {13, 3}, {30, 4}}) {
     std::vector<bool> expected(all.size(), false);
     for (int p = 0; p < 2; ++p) {
       if (budget == 0 || budget >= 66) {  // off, or not over the budget: all kept
         for (int k : bucket[p]) expected[k] = true;
       } else {
-        BudgetByHand(f, all, bucket[p], CoreCentre(persons[p], f.core), budget, &expected);
+        BudgetByHand(f, all, bucket[p], CoreCentre(persons[p], f.core), budget, per_pose, &expected);
       }
     }
     std::vector<PosePair> want;
@@ -430,20 +431,56 @@ TEST(Prefilter, PairBudgetOnTwelveViewsKeepsThePairsOfTheRule) {
     StepFixture other_core = f;  // the undistort step's core joints in another order
     std::reverse(other_core.prepared.core_joints.begin(), other_core.prepared.core_joints.end());
     for (const StepFixture* fixture : {&f, &other_core}) {
-      const std::string where = "budget " + std::to_string(budget) + (fixture == &f ? "" : ", gathered");
+      const std::string where = "budget " + std::to_string(budget) + ", " + std::to_string(per_pose) + " per pose" +
+                                (fixture == &f ? "" : ", gathered");
       std::vector<PosePair> pairs;
       PrefilterScratch scratch;
       PrefilterOptions options;
       options.max_pairs_per_person = budget;
+      options.best_pairs_per_pose = per_pose;
       const int kept = RunPrefilter(*fixture, previous, options, all, &pairs, &scratch);
       ASSERT_EQ(kept, static_cast<int>(want.size())) << where;
       ASSERT_EQ(pairs.size(), want.size()) << where;
       for (size_t i = 0; i < want.size(); ++i) {
         EXPECT_TRUE(pairs[i].a == want[i].a && pairs[i].b == want[i].b) << where << ", kept pair " << i;
       }
-      if (budget == 30) {
+      if (budget == 30 && per_pose <= 2) {
         EXPECT_EQ(kept, 60);  // two persons, each exactly at the budget
       }
+      if (budget == 1) {  // the poses' best pairs alone: at least 6 (1 per pose) or 12 (2) per person
+        EXPECT_GE(kept, 2 * 6 * per_pose);
+      }
+    }
+  }
+}
+
+// Each pose's best pairs alone (budget 1), over many confidence patterns: whatever order a pose's
+// pairs come in (its best after its second best, ...), the kept pairs are the rule's.
+TEST(Prefilter, EveryPosesBestPairsWhateverTheOrderTheyComeIn) {
+  const std::vector<Eigen::Matrix4Xd> persons = {test::StandingPerson(0, 0)};
+  for (uint32_t seed = 1; seed <= 40; ++seed) {
+    StepFixture f(9, persons);
+    VaryConfidences(&f, seed);
+    f.Prepare();
+    const PreviousPersons previous = PreviousOf(f, persons);
+    std::vector<PosePair> all;
+    steps::MakePairs(f.prepared, PairListing::kAll, &all);
+    std::vector<int> bucket(all.size());
+    for (size_t k = 0; k < all.size(); ++k) bucket[k] = static_cast<int>(k);
+    for (const int per_pose : {2, 3, 4}) {
+      std::vector<bool> expected(all.size(), false);
+      BudgetByHand(f, all, bucket, CoreCentre(persons[0], f.core), 1, per_pose, &expected);
+      std::vector<PosePair> pairs;
+      PrefilterScratch scratch;
+      PrefilterOptions options;
+      options.max_pairs_per_person = 1;
+      options.best_pairs_per_pose = per_pose;
+      RunPrefilter(f, previous, options, all, &pairs, &scratch);
+      std::vector<bool> got(all.size(), false);
+      for (const PosePair& pair : pairs) {
+        for (size_t k = 0; k < all.size(); ++k) got[k] = got[k] || (all[k].a == pair.a && all[k].b == pair.b);
+      }
+      ASSERT_EQ(got, expected) << "seed " << seed << ", " << per_pose << " per pose";
     }
   }
 }
