@@ -161,6 +161,32 @@ TEST(Triangulator, PrefilterUsesLastFrameAndResetForgetsIt) {
   EXPECT_EQ(stats.count[static_cast<int>(Step::kPrefilter)], 24);
 }
 
+// Recording a trace makes make_pairs list every pair even where the pre-filter lists what it keeps
+// itself (PairListing): over a tracked sequence the persons are the same either way, and the
+// traced list is as long as make_pairs' count.
+TEST(Triangulator, TracedAndUntracedRunsAgreeWhileThePrefilterActs) {
+  const auto cameras = test::RingCameras(5);
+  Triangulator traced(cameras, CocoBodyJoints(), TriangulatorOptions{});
+  Triangulator plain(cameras, CocoBodyJoints(), TriangulatorOptions{});
+  const int make_pairs = static_cast<int>(Step::kMakePairs), prefilter = static_cast<int>(Step::kPrefilter);
+  for (int f = 0; f < 6; ++f) {
+    const double t = 0.04 * f;
+    const auto views = test::ProjectPersons(cameras, {test::StandingPerson(-1 + 0.05 * f, 0),
+                                                      test::StandingPerson(0.8, 0.4 - 0.05 * f, 1.0),
+                                                      test::StandingPerson(0.1, -1.2, 2.0)});
+    Poses3D with_trace, without;
+    FrameStats traced_stats, plain_stats;
+    FrameTrace trace;
+    traced.Process(views, t, &with_trace, &traced_stats, &trace);
+    plain.Process(views, t, &without, &plain_stats);
+    EXPECT_EQ(with_trace.data, without.data) << "frame " << f;
+    EXPECT_EQ(with_trace.track_ids, without.track_ids) << "frame " << f;
+    EXPECT_EQ(plain_stats.count[make_pairs], 90) << "frame " << f;  // 10 view pairs x 3 x 3
+    EXPECT_EQ(static_cast<int>(trace.pairs[FrameTrace::kMakePairs].size()), traced_stats.count[make_pairs]);
+    EXPECT_EQ(plain_stats.count[prefilter], f == 0 ? 90 : 30) << "frame " << f;  // then each person's own 10
+  }
+}
+
 // Continuity: only frames at most track.max_gap_s after the last one use it.
 TEST(Triangulator, UnknownTimesAndLargeGapsStartAfresh) {
   const auto cameras = test::RingCameras(4);
