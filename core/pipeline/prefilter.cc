@@ -42,8 +42,7 @@ const double* CoreSqrtScores(const PreparedViews& views, std::span<const int> co
   return scratch->core_sqrt_scores.data();
 }
 
-// Keeps the pairs whose `keep` entry is set, in order; returns how many. Branch-free: which pairs
-// a budget drops follows no pattern a branch predictor could learn.
+// Keeps the pairs whose `keep` entry is set, in order; returns how many.
 int CompactKept(const std::vector<char>& keep, std::vector<PosePair>* pairs) {
   int kept = 0;
   for (size_t k = 0; k < pairs->size(); ++k) {
