@@ -139,8 +139,9 @@ TEST_F(AblationTest, NoPostprocessingKeepsMissingJointsAndInvalidPersons) {
       for (int j = 0; j < persons.num_joints; ++j) {
         if (person(3, j) > 0) continue;
         bool present = false;
-        for (int k = neighbour[j], steps = 0; k >= 0 && steps < persons.num_joints && !present; k = neighbour[k], ++steps) {
+        for (int k = neighbour[j], steps = 0; k >= 0 && steps < persons.num_joints && !present; ++steps) {
           present = person(3, k) > 0;
+          k = neighbour[k];
         }
         count += present ? 1 : 0;
       }

@@ -396,8 +396,9 @@ void VaryConfidences(StepFixture* f, uint32_t seed = 12345) {
 }
 
 // Twelve cameras, two persons, a confidence per joint: every person has 66 pairs, and each
-// budget (and count of each pose's best pairs) keeps exactly the pairs of the rule, in make_pairs' order; also when the pre-filter's core
-// joints are not the undistort step's (their sqrt scores are then gathered, not read from its columns).
+// budget (and count of each pose's best pairs) keeps exactly the pairs of the rule, in make_pairs'
+// order; also when the pre-filter's core joints are not the undistort step's (their sqrt scores
+// are then gathered, not read from its columns).
 TEST(Prefilter, PairBudgetOnTwelveViewsKeepsThePairsOfTheRule) {
   const std::vector<Eigen::Matrix4Xd> persons = {test::StandingPerson(-0.6, 0), test::StandingPerson(0.6, 0.3, 1.0)};
   StepFixture f(12, persons);
@@ -588,7 +589,9 @@ TEST(Prefilter, ListsThePairsOfItsRuleInMakePairsOrder) {
     want.push_back(pair);
     ambiguous_second += b == kPoseAmbiguous && a >= 0 ? 1 : 0;
     // a kept ambiguous b listed before the pose of b's view matched to a's person
-    for (int g = pair.b + 1; b == kPoseAmbiguous && a >= 0 && f.prepared.view_of[g] == f.prepared.view_of[pair.b]; ++g) {
+    for (int g = pair.b + 1; b == kPoseAmbiguous && a >= 0 && g < f.prepared.num_poses() &&
+                             f.prepared.view_of[g] == f.prepared.view_of[pair.b];
+         ++g) {
       ambiguous_before_partner += match[g] == a ? 1 : 0;
     }
   }
