@@ -13,6 +13,7 @@
 #include <unordered_set>
 
 #include "core/errors.h"
+#include "core/printable_text.h"
 #include "datasets/io/hdf5_file.h"
 #include "datasets/input_warnings.h"
 #include "datasets/readers/generic_common.h"
@@ -37,7 +38,10 @@ using io::ShapeText;
 void CheckFormat(io::Hdf5Reader& reader, hid_t group, const std::string& place, const std::string& format) {
   const std::string found = reader.HasAttribute(group, place, "format") ? reader.StringAttribute(group, place, "format") : "";
   if (found != format) {
-    reader.Fail(place, "attribute format is '" + found + "', expected '" + format + "' (not written by rpt?)");
+    // A damaged file can hold any bytes there (even a heap address HDF5 returned): quoted inside the
+    // one-line message, newlines and tabs included, escaped.
+    reader.Fail(place, "attribute format is '" + PrintableText(found, LineBreaks::kEscape) + "', expected '" + format +
+                           "' (not written by rpt?)");
   }
   const double version = reader.NumberAttribute(group, place, "version");
   if (version != kVersion && version != kVersionWithoutChecksums) {
@@ -368,7 +372,8 @@ std::vector<std::unique_ptr<FrameSource>> OpenSequencesHdf5(const std::filesyste
       } else if (model == "fisheye") {
         camera.model = DistortionModel::kFisheye;
       } else {
-        reader.Fail(name + "/camera_models", "camera " + std::to_string(c) + ": unknown model '" + model + "'");
+        reader.Fail(name + "/camera_models", "camera " + std::to_string(c) + ": unknown model '" +
+                                                 PrintableText(model, LineBreaks::kEscape) + "'");
       }
       camera.width = sizes[2 * c];
       camera.height = sizes[2 * c + 1];

@@ -183,6 +183,21 @@ TEST(Hdf5CacheCorruption, DamagedAttributesAreInputErrors) {
   }
 }
 
+// A format tag with a line break in it (a damaged file can hold any bytes there; a damaged string
+// can even come back as heap memory): the message quotes it escaped, on one line.
+TEST(Hdf5CacheCorruption, AFormatTagIsQuotedOnOneLine) {
+  test::TempDir dir;
+  ByteVec bytes = ValidCache(dir);
+  const std::string tag = "rpt-sequences";
+  const std::vector<std::size_t> places = Find(bytes, ByteVec(tag.begin(), tag.end()));
+  ASSERT_FALSE(places.empty());
+  for (const std::size_t place : places) bytes[place + 4] = '\n';  // "rpt-\nequences"
+  const auto damaged = dir.Write("damaged.h5", bytes);
+  const std::string message = test::InputErrorOf([&] { MaterializeAll(OpenSequencesHdf5(damaged)); });
+  EXPECT_THAT(message, HasSubstr("attribute format is 'rpt-\\x0aequences'")) << message;
+  EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+}
+
 // Dataspace dimensions rewritten in the file's bytes: the dataset claims far more elements than the
 // file stores. The reader must refuse before allocating for the claim.
 TEST(Hdf5CacheCorruption, DimensionsThatLieAreInputErrors) {
