@@ -127,6 +127,12 @@ std::vector<int> MirrorIndices(const JointNames& names) {
   return mirror;
 }
 
+std::vector<int> NeighbourIndices(const JointNames& names) {
+  std::vector<int> neighbour(names.size());
+  for (size_t j = 0; j < names.size(); ++j) neighbour[j] = FindJoint(names, NeighbourJoint(names[j]));
+  return neighbour;
+}
+
 int FindJoint(const JointNames& names, std::string_view name) {
   for (size_t i = 0; i < names.size(); ++i) {
     if (names[i] == name) return static_cast<int>(i);

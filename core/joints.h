@@ -49,6 +49,9 @@ int FindJoint(const JointNames& names, std::string_view name);
 // face_12 -> nose, hand_index_2_left -> hand_index_1_left). Empty when there is none.
 std::string NeighbourJoint(std::string_view name);
 
+// For each joint, the index of its NeighbourJoint in `names` (-1 when none or absent).
+std::vector<int> NeighbourIndices(const JointNames& names);
+
 // A limb between two joints with its plausible length range (metres).
 struct LimbSpec {
   std::string a;  // proximal joint (closer to the torso)

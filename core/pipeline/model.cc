@@ -12,7 +12,6 @@
 #include "core/pipeline/view_geometry.h"
 
 namespace rpt {
-namespace {
 
 std::vector<ResolvedLimb> ResolveLimbs(const std::vector<LimbSpec>& limbs, const JointNames& names) {
   std::vector<ResolvedLimb> out;
@@ -22,6 +21,8 @@ std::vector<ResolvedLimb> ResolveLimbs(const std::vector<LimbSpec>& limbs, const
   }
   return out;
 }
+
+namespace {
 
 std::vector<DerivedJointRule> ResolveDerivedJoints(const JointNames& input_joints, const JointNames& output_joints) {
   std::vector<DerivedJointRule> derived;
@@ -68,10 +69,8 @@ TriangulatorModel BuildModel(std::vector<Camera> cameras, JointNames input_joint
   }
   JointNames core_names;
   for (int j : m.core_joints) core_names.push_back(m.output_joints[j]);
-  for (int j = 0; j < m.num_output_joints(); ++j) {
-    m.all_joints.push_back(j);
-    m.neighbour.push_back(FindJoint(m.output_joints, NeighbourJoint(m.output_joints[j])));
-  }
+  for (int j = 0; j < m.num_output_joints(); ++j) m.all_joints.push_back(j);
+  m.neighbour = NeighbourIndices(m.output_joints);
   m.core_limbs = ResolveLimbs(LimbsFor(core_names), core_names);
   m.core_mirror = MirrorIndices(core_names);
   m.all_limbs = ResolveLimbs(LimbsFor(m.output_joints), m.output_joints);

@@ -51,6 +51,9 @@ struct TriangulatorModel {
   int num_output_joints() const { return static_cast<int>(output_joints.size()); }
 };
 
+// The limbs whose two joints are both in `names`, as indices into it.
+std::vector<ResolvedLimb> ResolveLimbs(const std::vector<LimbSpec>& limbs, const JointNames& names);
+
 // Validates the inputs (ConfigError on bad options, cameras or joint lists) and resolves them.
 TriangulatorModel BuildModel(std::vector<Camera> cameras, JointNames input_joints, TriangulatorOptions options);
 

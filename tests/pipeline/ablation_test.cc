@@ -126,8 +126,7 @@ TEST_F(AblationTest, NoPostprocessingKeepsMissingJointsAndInvalidPersons) {
   const RunResult base = Run([](auto&) {});
   const RunResult off = Run([](auto& o) { o.postprocess.enabled = false; });
   const JointNames output = Triangulator(scene_->cameras, scene_->joint_names, TriangulatorOptions{}).output_joints();
-  std::vector<int> neighbour;
-  for (const std::string& name : output) neighbour.push_back(FindJoint(output, NeighbourJoint(name)));
+  const std::vector<int> neighbour = NeighbourIndices(output);
   int filled = 0, missing_off = 0, fillable_missing = 0;
   for (const auto& s : base.stats) filled += s.filled_joints;
   for (const auto& s : off.stats) EXPECT_EQ(s.filled_joints + s.replaced_joints, 0);

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/joints.h"
+#include "core/pipeline/model.h"
 #include "core/pipeline/filter.h"
 #include "core/pipeline/group.h"
 #include "core/pipeline/make_pairs.h"
@@ -1052,12 +1053,8 @@ TEST(Merge, DistanceFilterTopKAndWeighting) {
 
 TEST(Postprocess, DropsInvalidPersonsAndFillsMissingJoints) {
   const JointNames names = AddDerivedJoints(CocoBodyJoints());
-  std::vector<int> neighbour;
-  for (const auto& n : names) neighbour.push_back(FindJoint(names, NeighbourJoint(n)));
-  std::vector<ResolvedLimb> limbs;
-  for (const auto& l : LimbsFor(names)) {
-    limbs.push_back(ResolvedLimb{FindJoint(names, l.a), FindJoint(names, l.b), l.min_length_m, l.max_length_m});
-  }
+  const std::vector<int> neighbour = NeighbourIndices(names);
+  const std::vector<ResolvedLimb> limbs = ResolveLimbs(LimbsFor(names), names);
   Poses3D persons;
   persons.Clear(static_cast<int>(names.size()));
   auto add = [&](const Eigen::Matrix4Xd& body) {
@@ -1112,12 +1109,8 @@ TEST(Postprocess, DropsInvalidPersonsAndFillsMissingJoints) {
 
 TEST(Postprocess, JointsPlacedFromOneViewNeitherDecideNorOutweigh) {
   const JointNames names = AddDerivedJoints(CocoBodyJoints());
-  std::vector<int> neighbour;
-  for (const auto& n : names) neighbour.push_back(FindJoint(names, NeighbourJoint(n)));
-  std::vector<ResolvedLimb> limbs;
-  for (const auto& l : LimbsFor(names)) {
-    limbs.push_back(ResolvedLimb{FindJoint(names, l.a), FindJoint(names, l.b), l.min_length_m, l.max_length_m});
-  }
+  const std::vector<int> neighbour = NeighbourIndices(names);
+  const std::vector<ResolvedLimb> limbs = ResolveLimbs(LimbsFor(names), names);
   const int elbow = FindJoint(names, "elbow_left"), wrist = FindJoint(names, "wrist_left");
   const Room room{.size_m = Eigen::Vector3d(10, 10, 0)};
   const steps::PostprocessInput input{.neighbour = neighbour, .limbs = limbs, .room = room};

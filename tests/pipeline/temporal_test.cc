@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/joints.h"
+#include "core/pipeline/model.h"
 #include "core/pipeline/bone_lengths.h"
 #include "core/pipeline/smooth.h"
 #include "core/pipeline/triangulator.h"
@@ -177,10 +178,8 @@ struct Skeleton {
 Skeleton BodySkeleton() {
   const JointNames& names = CocoBodyJoints();
   Skeleton s;
-  for (const LimbSpec& limb : LimbsFor(names)) {
-    s.limbs.push_back(ResolvedLimb{FindJoint(names, limb.a), FindJoint(names, limb.b), limb.min_length_m, limb.max_length_m});
-  }
-  for (const std::string& name : names) s.neighbour.push_back(FindJoint(names, NeighbourJoint(name)));
+  s.limbs = ResolveLimbs(LimbsFor(names), names);
+  s.neighbour = NeighbourIndices(names);
   return s;
 }
 

@@ -110,11 +110,7 @@ TEST(ClipSpeed, NewTrackInAnEndedTracksSlotIsNotClipped) {
 }
 
 // The fill rule of the COCO body (post-processing's neighbours).
-std::vector<int> CocoNeighbours() {
-  std::vector<int> out;
-  for (const auto& name : CocoBodyJoints()) out.push_back(FindJoint(CocoBodyJoints(), NeighbourJoint(name)));
-  return out;
-}
+std::vector<int> CocoNeighbours() { return NeighbourIndices(CocoBodyJoints()); }
 
 // `body` with joints `missing` filled as post-processing fills them: on their neighbour, at the
 // filled score, provenance kFilled (from the torso outwards).
