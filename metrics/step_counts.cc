@@ -8,7 +8,7 @@ std::array<int, kNumCounters> Counters(const FrameStats& stats) {
           stats.unsupported_persons, stats.single_view_persons, stats.replaced_joints,       stats.filled_joints,
           stats.new_tracks,          stats.coasting_tracks,     stats.bone_length_corrections,
           stats.single_view_implausible, stats.single_view_tracked, stats.held_joints,
-          stats.one_view_joints};
+          stats.one_view_joints,     stats.duplicate_persons};
 }
 
 void StepCountAccumulator::Add(const FrameStats& stats) {

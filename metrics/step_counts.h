@@ -16,12 +16,12 @@
 namespace rpt::metrics {
 
 // The extra counters of FrameStats, by name (the member names).
-inline constexpr int kNumCounters = 15;
+inline constexpr int kNumCounters = 16;
 inline constexpr std::array<std::string_view, kNumCounters> kCounterNames = {
     "pruned_limbs",        "small_groups",        "conflicting_proposals", "mirrored_groups",
     "unsupported_persons", "single_view_persons", "replaced_joints",       "filled_joints",
     "new_tracks",          "coasting_tracks",     "bone_length_corrections", "single_view_implausible",
-    "single_view_tracked", "held_joints",         "one_view_joints"};
+    "single_view_tracked", "held_joints",         "one_view_joints",       "duplicate_persons"};
 
 struct StepCountSummary {
   long frames = 0;

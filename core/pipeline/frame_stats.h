@@ -24,6 +24,7 @@ struct FrameStats {
   int conflicting_proposals = 0;  // proposals removed because their 2D poses belong to another person
   int mirrored_groups = 0;    // groups dropped as left/right-swapped duplicates of another group
   int unsupported_persons = 0;  // verify: persons dropped because more views see nobody there than see them
+  int duplicate_persons = 0;    // verify: persons dropped as another, stronger person made from other views
   int single_view_persons = 0;  // single_view: persons placed from one view
   int single_view_tracked = 0;      // single_view: of the persons placed, those at their track's depth
   int single_view_implausible = 0;  // single_view with ground_prior: poses not lifted (no floor point,

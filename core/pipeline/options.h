@@ -321,6 +321,9 @@ struct VerifyOptions {
   bool enabled = true;
   int min_empty_views = 2;             // drop when this many views (and more than support it) see nobody there
   double min_inside_fraction = 0.8;    // a view is "empty" only if this share of the joints lands in the image
+  // A person whose core joints lie this close (mean distance over the joints both have) to a
+  // stronger person's, and made from none of its views, is that person again: dropped. 0 = off.
+  double duplicate_distance_m = 0.25;
 };
 
 template <class Visitor, OptionsOf<VerifyOptions> Self>
@@ -330,6 +333,10 @@ void VisitFields(Visitor& v, Self& o) {
     OptionSpec{.help = "empty views needed (and more than supporting ones) to drop a person", .min = 1, .max = 1e6});
   v("min_inside_fraction", o.min_inside_fraction,
     OptionSpec{.help = "a view is empty only if this share of the joints lands in the image", .min = 0, .max = 1});
+  v("duplicate_distance_m", o.duplicate_distance_m,
+    OptionSpec{.help = "mean core-joint distance under which a person from none of a stronger person's views duplicates it "
+                       "and is dropped (0 = off)",
+               .unit = "m", .min = 0, .max = 10});
 }
 
 // Step 12b (an addition, off by default): persons seen by one camera only, placed at the depth

@@ -5,6 +5,70 @@
 
 namespace rpt {
 
+namespace {
+
+// Mean distance between persons a and b over the core joints valid (score > 0) in both; a
+// negative value with fewer than 2 such joints.
+double MeanCoreDistance(const Poses3D& persons, std::span<const int> core_joints, int a, int b) {
+  const auto pa = persons.Person(a), pb = persons.Person(b);
+  double sum = 0;
+  int common = 0;
+  for (const int j : core_joints) {
+    if (pa(3, j) <= 0 || pb(3, j) <= 0) continue;
+    sum += (pa.col(j).head<3>() - pb.col(j).head<3>()).norm();
+    ++common;
+  }
+  return common >= 2 ? sum / common : -1.0;
+}
+
+// Marks scratch->duplicate[p] for every person p within duplicate_distance_m of a stronger kept
+// person made from none of p's views. Stronger: made from more views, then from more pairs, then
+// the earlier person. Needs the groups (person i merged from group i, whose pairs are the
+// proposals groups.begin[i] .. begin[i + 1] of triangulate_full).
+void MarkDuplicates(const VerifyOptions& options, const steps::VerifyInput& in, VerifyScratch* scratch,
+                    const Poses3D& persons) {
+  const int num_persons = persons.num_persons();
+  const int num_views = static_cast<int>(in.geometry.size());
+  VerifyScratch& s = *scratch;
+  s.views_of.assign(static_cast<size_t>(num_persons) * num_views, 0);
+  s.num_views.assign(num_persons, 0);
+  s.by_strength.resize(num_persons);
+  for (int p = 0; p < num_persons; ++p) {
+    char* const views_of = s.views_of.data() + static_cast<size_t>(p) * num_views;
+    for (int m = in.groups.begin[p]; m < in.groups.begin[p + 1]; ++m) {
+      views_of[in.views.view_of[in.proposals.pairs[m].a]] = 1;
+      views_of[in.views.view_of[in.proposals.pairs[m].b]] = 1;
+    }
+    for (int v = 0; v < num_views; ++v) s.num_views[p] += views_of[v];
+    s.by_strength[p] = p;
+  }
+  const auto pairs = [&](int p) { return in.groups.begin[p + 1] - in.groups.begin[p]; };
+  std::sort(s.by_strength.begin(), s.by_strength.end(), [&](int a, int b) {
+    if (s.num_views[a] != s.num_views[b]) return s.num_views[a] > s.num_views[b];
+    if (pairs(a) != pairs(b)) return pairs(a) > pairs(b);
+    return a < b;
+  });
+  for (int i = 1; i < num_persons; ++i) {
+    const int p = s.by_strength[i];
+    const char* const views_p = s.views_of.data() + static_cast<size_t>(p) * num_views;
+    for (int i_stronger = 0; i_stronger < i; ++i_stronger) {
+      const int q = s.by_strength[i_stronger];
+      if (s.duplicate[q]) continue;
+      const char* const views_q = s.views_of.data() + static_cast<size_t>(q) * num_views;
+      bool shared_view = false;
+      for (int v = 0; v < num_views && !shared_view; ++v) shared_view = views_p[v] && views_q[v];
+      if (shared_view) continue;
+      const double distance = MeanCoreDistance(persons, in.core_joints, p, q);
+      if (distance >= 0 && distance < options.duplicate_distance_m) {
+        s.duplicate[p] = 1;
+        break;
+      }
+    }
+  }
+}
+
+}  // namespace
+
 int steps::Verify(const VerifyOptions& options, const VerifyInput& in, VerifyScratch* scratch, Poses3D* persons,
                   FrameStats* stats) {
   const PreparedViews& views = in.views;
@@ -14,9 +78,17 @@ int steps::Verify(const VerifyOptions& options, const VerifyInput& in, VerifyScr
   if (!options.enabled || persons->num_persons() == 0) return persons->num_persons();
   const int num_views = static_cast<int>(geometry.size());
   const bool by_group = groups.size() == persons->num_persons();
+  scratch->duplicate.assign(persons->num_persons(), 0);
+  if (by_group && options.duplicate_distance_m > 0 && persons->num_persons() > 1) {
+    MarkDuplicates(options, in, scratch, *persons);
+  }
   bool have_boxes = false;  // pose boxes are computed when first needed
   int kept = 0;
   for (int p = 0; p < persons->num_persons(); ++p) {
+    if (scratch->duplicate[p]) {
+      ++stats->duplicate_persons;
+      continue;
+    }
     const auto person = persons->Person(p);
     int support = 0, empty = 0;
     scratch->own_view.assign(num_views, 0);

@@ -10,6 +10,13 @@
 // cameras (a phantom from 2 of 3 views has at most one empty view) the check cannot decide and
 // keeps the person. Only persons that could be dropped (enough views outside their own) are
 // projected, so the step costs next to nothing when every person is seen by most cameras.
+//
+// Duplicates first (duplicate_distance_m): a person whose core joints lie within that mean distance
+// of a stronger person's (made from more views, then from more pairs) and who was made from none of
+// that person's views is the same person again, from poses whose pairs with the stronger
+// person's poses did not survive the pair budget: dropped. Persons sharing a view are kept apart:
+// two poses in one view are two people to that camera. exclusive_poses (group step) already
+// parts groups that share a pose; this catches those that share nothing.
 #pragma once
 
 #include <span>
@@ -26,7 +33,11 @@ namespace rpt {
 
 struct VerifyScratch {
   ViewVerdictScratch verdict;
-  std::vector<char> own_view;  // per view: holds one of the person's own poses
+  std::vector<char> own_view;       // per view: holds one of the person's own poses
+  std::vector<char> views_of;       // per person and view: the person's own views
+  std::vector<int> num_views;       // per person: how many views it was made from
+  std::vector<int> by_strength;     // persons, strongest first
+  std::vector<char> duplicate;      // per person: dropped as a duplicate
 };
 
 namespace steps {
@@ -41,7 +52,8 @@ struct VerifyInput {
 };
 
 // Removes dropped persons from `persons` (merge's output; their track ids are not assigned yet)
-// and counts them in stats->unsupported_persons. Returns the number of persons kept.
+// and counts them in stats->duplicate_persons and stats->unsupported_persons. Returns the number
+// of persons kept.
 int Verify(const VerifyOptions& options, const VerifyInput& in, VerifyScratch* scratch, Poses3D* persons,
            FrameStats* stats);
 

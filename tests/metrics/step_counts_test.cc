@@ -58,6 +58,7 @@ TEST(StepCountAccumulator, CountersFollowTheirNames) {
   stats.single_view_tracked = 13;
   stats.held_joints = 14;
   stats.one_view_joints = 15;
+  stats.duplicate_persons = 16;
   const auto counters = Counters(stats);
   for (int c = 0; c < kNumCounters; ++c) EXPECT_EQ(counters[c], c + 1) << kCounterNames[c];
 }

@@ -13,20 +13,28 @@
 namespace rpt {
 namespace {
 
-// Five ring cameras see `detected`; the persons to verify are `candidates`, each merged from the
-// pair (view 0, view 1) of pose `source` (an index into `detected`).
+// A person to verify: `body`, merged from the pairs `view_pairs` of pose `source` (an index into
+// `detected`; every detected person is seen by every camera here).
+struct Candidate {
+  Eigen::Matrix4Xd body;
+  int source = 0;
+  std::vector<std::pair<int, int>> view_pairs = {{0, 1}};
+};
+
+// `num_cameras` ring cameras see `detected`; the persons to verify are `candidates`.
 struct VerifyFixture {
-  VerifyFixture(std::vector<Eigen::Matrix4Xd> detected, std::vector<std::pair<Eigen::Matrix4Xd, int>> candidates)
-      : cameras(test::RingCameras(5)) {
+  VerifyFixture(std::vector<Eigen::Matrix4Xd> detected, std::vector<Candidate> candidates, int num_cameras = 5)
+      : cameras(test::RingCameras(num_cameras)) {
     test::UndistortCocoViews(cameras, test::ProjectPersons(cameras, detected), &geometry, &core, &prepared);
     persons.Clear(17);
     proposals.Clear(17);
     groups.begin = {0};
-    for (const auto& [body, source] : candidates) {
-      persons.AddPerson() = body;
-      // Pose `source` in view 0 and in view 1 (every detected person is seen by every camera here).
-      proposals.Add(PosePair{prepared.view_begin[0] + source, prepared.view_begin[1] + source});
-      groups.members.push_back(proposals.size() - 1);
+    for (const Candidate& candidate : candidates) {
+      persons.AddPerson() = candidate.body;
+      for (const auto& [va, vb] : candidate.view_pairs) {
+        proposals.Add(PosePair{prepared.view_begin[va] + candidate.source, prepared.view_begin[vb] + candidate.source});
+        groups.members.push_back(proposals.size() - 1);
+      }
       groups.begin.push_back(proposals.size());
     }
   }
@@ -43,6 +51,7 @@ struct VerifyFixture {
                                     .kernel = kernel},
                                    &scratch, &persons, &stats);
     dropped = stats.unsupported_persons;
+    duplicates = stats.duplicate_persons;
     return kept;
   }
   std::vector<Camera> cameras;
@@ -54,7 +63,14 @@ struct VerifyFixture {
   Poses3D persons;
   VerifyScratch scratch;
   int dropped = 0;
+  int duplicates = 0;
 };
+
+// `body` moved by `dx` metres along x.
+Eigen::Matrix4Xd Shifted(Eigen::Matrix4Xd body, double dx) {
+  body.row(0).array() += dx;
+  return body;
+}
 
 TEST(Verify, KeepsPersonsTheOtherViewsSee) {
   const auto a = test::StandingPerson(-1, 0), b = test::StandingPerson(1, 0.5);
@@ -91,6 +107,69 @@ TEST(Verify, AnOccludedPersonIsNotAPhantom) {
   VerifyFixture f({a, c}, {{hidden, 0}});
   EXPECT_EQ(f.Run(), 1);
   EXPECT_EQ(f.dropped, 0);
+}
+
+TEST(Verify, DropsAWeakerCopyOfAPersonFromOtherViews) {
+  // Person a seen by all five cameras, merged twice: from views 0-2 and from views 3-4 (whose
+  // pairs with views 0-2 did not survive), 0.1 m apart. The copy from fewer views goes, whichever
+  // comes first.
+  const auto a = test::StandingPerson(0, 0);
+  const Candidate strong{a, 0, {{0, 1}, {1, 2}}}, weak{Shifted(a, 0.1), 0, {{3, 4}}};
+  for (const bool weak_first : {false, true}) {
+    VerifyFixture f({a}, weak_first ? std::vector<Candidate>{weak, strong} : std::vector<Candidate>{strong, weak});
+    ASSERT_EQ(f.Run(), 1) << weak_first;
+    EXPECT_EQ(f.duplicates, 1);
+    EXPECT_EQ(f.dropped, 0);
+    EXPECT_LT((f.persons.Person(0) - a).norm(), 1e-12) << "the copy from three views is kept";
+  }
+}
+
+TEST(Verify, ADuplicateIsWithinTheDistanceAndSharesNoView) {
+  const auto a = test::StandingPerson(0, 0);
+  const auto run = [&](double dx, std::vector<std::pair<int, int>> weak_pairs, double distance = 0.25) {
+    VerifyFixture f({a}, {{a, 0, {{0, 1}, {1, 2}}}, {Shifted(a, dx), 0, std::move(weak_pairs)}});
+    VerifyOptions options;
+    options.duplicate_distance_m = distance;
+    f.Run(options);
+    return f.duplicates;
+  };
+  // A pure shift moves every joint by dx: the mean joint distance is dx.
+  EXPECT_EQ(run(0.24, {{3, 4}}), 1);
+  EXPECT_EQ(run(0.26, {{3, 4}}), 0) << "farther than duplicate_distance_m: another person";
+  EXPECT_EQ(run(0.24, {{3, 4}}, 0.2), 0) << "the option sets the distance";
+  EXPECT_EQ(run(0.1, {{2, 3}}), 0) << "view 2 holds a pose of each: two people to that camera";
+  EXPECT_EQ(run(0.1, {{3, 4}}, 0.0), 0) << "0 turns the check off";
+  // Joints missing in the copy (confidence 0, left anywhere) are not compared.
+  auto partial = Shifted(a, 0.1);
+  partial.rightCols(8).row(3).setZero();
+  partial.rightCols(8).topRows(3).array() += 5.0;
+  VerifyFixture f({a}, {{a, 0, {{0, 1}, {1, 2}}}, {partial, 0, {{3, 4}}}});
+  f.Run();
+  EXPECT_EQ(f.duplicates, 1);
+}
+
+TEST(Verify, TheStrongerOfTwoDuplicatesHasMoreViewsThenMorePairs) {
+  // Six cameras: the first person from views 0-2 in two pairs, the second from views 3-5 in three.
+  const auto a = test::StandingPerson(0, 0);
+  VerifyFixture f({a}, {{a, 0, {{0, 1}, {1, 2}}}, {Shifted(a, 0.1), 0, {{3, 4}, {4, 5}, {3, 5}}}}, 6);
+  ASSERT_EQ(f.Run(), 1);
+  EXPECT_EQ(f.duplicates, 1);
+  EXPECT_LT((f.persons.Person(0) - Shifted(a, 0.1)).norm(), 1e-12) << "three pairs beat two";
+  // Equal views and pairs: the earlier person stays.
+  VerifyFixture tie({a}, {{Shifted(a, 0.1), 0, {{0, 1}}}, {a, 0, {{2, 3}}}});
+  ASSERT_EQ(tie.Run(), 1);
+  EXPECT_LT((tie.persons.Person(0) - Shifted(a, 0.1)).norm(), 1e-12);
+}
+
+TEST(Verify, APersonIsComparedWithTheKeptPersonsOnly) {
+  // b duplicates a (0.2 m), c duplicates b (0.2 m) but not a (0.4 m): b goes, c stays, as does a.
+  const auto a = test::StandingPerson(0, 0);
+  const auto b = Shifted(a, 0.2), c = Shifted(a, 0.4);
+  VerifyFixture f({a, c}, {{a, 0, {{0, 1}, {1, 2}}}, {b, 0, {{3, 4}}}, {c, 1, {{5, 6}}}}, 7);
+  ASSERT_EQ(f.Run(), 2);
+  EXPECT_EQ(f.duplicates, 1);
+  EXPECT_LT((f.persons.Person(0) - a).norm(), 1e-12);
+  EXPECT_LT((f.persons.Person(1) - c).norm(), 1e-12);
 }
 
 }  // namespace
