@@ -64,10 +64,11 @@ struct PrefilterOptions {
   // angle between the two viewing rays at the person x the 2D confidence both poses share on the
   // core joints. 0: keep all.
   int max_pairs_per_person = 30;
-  // Pairs of each pose a person's budget keeps before the best others (even above the budget): two,
-  // so that a pose stays with its person when the score filter drops one of them. 1 is faster with
-  // many cameras and can leave a pose to another group (docs/algorithm.md, step 2).
-  int best_pairs_per_pose = 2;
+  // Pairs of each pose a person's budget keeps before the best others (even above the budget). One:
+  // with 31 cameras a fifth faster than two; a pose whose only pair the score filter drops can then
+  // form a copy of its person with others like it, which verify drops (duplicate_distance_m). Two
+  // keep a little more of the person's pairs (docs/algorithm.md, step 2).
+  int best_pairs_per_pose = 1;
   // An ambiguous pose pairs with every pose matched to a person it is near (one per view); keep
   // only this many of those pairs per person, the best as above. 0: keep all.
   int max_pairs_per_ambiguous_pose = 4;
@@ -90,7 +91,7 @@ void VisitFields(Visitor& v, Self& o) {
                .min = 0, .max = 1e9});
   v("best_pairs_per_pose", o.best_pairs_per_pose,
     OptionSpec{.help = "pairs of each pose that max_pairs_per_person keeps first, even above it (1 is faster with "
-                       "many cameras, 2 keeps a pose with its person when the score filter drops one pair)",
+                       "many cameras, 2 keeps more of each person's pairs)",
                .min = 1, .max = 4});
   v("max_pairs_per_ambiguous_pose", o.max_pairs_per_ambiguous_pose,
     OptionSpec{.help = "pairs kept between an ambiguous pose and the poses matched to one person it is near; best "

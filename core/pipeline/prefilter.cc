@@ -202,7 +202,7 @@ int ApplyPairBudget(const PreparedViews& views, std::span<const ViewGeometry> ge
       scratch->best[pair.b].fill(-1);
     }
     // Every pose of the person keeps its best_pairs_per_pose best pairs (so the person's group
-    // claims all its poses even if the score filter drops one), then the budget fills by quality.
+    // can claim all its poses), then the budget fills by quality.
     // The entries are totally ordered (pair indices differ), so "the best of each pose" and "the
     // best of the rest" are exact selections: no sort of the whole bucket.
     const std::vector<std::pair<double, int>>& entries = scratch->budget;

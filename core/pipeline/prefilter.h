@@ -18,8 +18,8 @@
 // Pair budget (an addition to the paper): a person matched in k views yields k(k-1)/2 pairs, 465
 // with 31 cameras, far more than the merge needs (it keeps the top-k closest proposals per
 // joint). Of the pairs matched to one person only max_pairs_per_person are kept: first the
-// best_pairs_per_pose (2) best pairs of every pose (so no pose of the person is left unclaimed,
-// even if the score filter drops one), then the best remaining ones. Quality = sin of the angle
+// best_pairs_per_pose (1) best pairs of every pose (so no pose of the person is left unclaimed),
+// then the best remaining ones. Quality = sin of the angle
 // at which the viewing rays meet at the person's last position x the 2D confidence both poses
 // share on the core joints.
 //

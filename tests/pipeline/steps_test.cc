@@ -299,6 +299,7 @@ TEST(Prefilter, PairBudgetKeepsEveryPosesTwoBestPairsThenTheBestOthers) {
     PrefilterScratch scratch;
     PrefilterOptions options;
     options.max_pairs_per_person = budget;
+    options.best_pairs_per_pose = 2;  // the rule above
     const int kept = steps::Prefilter(
         options, {.views = f.prepared, .geometry = f.geometry, .core_joints = f.core, .previous = previous, .timestamp_s = 0},
         &scratch, &pairs);
