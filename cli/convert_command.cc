@@ -15,6 +15,7 @@
 #include "datasets/readers/generic_labels.h"
 #include "datasets/readers/hdf5_cache.h"
 #include "engine/input.h"
+#include "core/printable_text.h"
 
 namespace rpt::cli {
 namespace {
@@ -32,7 +33,7 @@ Detections CollectDetections(const std::vector<Sequence>& sequences) {
   for (const Sequence& s : sequences) {
     if (detections.joints.empty()) detections.joints = s.detection_joints;
     if (!s.detection_joints.empty() && s.detection_joints != detections.joints) {
-      throw InputError("sequence '" + s.name + "' has other detection joints than the first sequence");
+      throw InputError("sequence " + QuoteName(s.name) + " has other detection joints than the first sequence");
     }
     for (const SequenceFrame& f : s.frames) {
       if (f.views.empty()) continue;

@@ -28,6 +28,7 @@
 #include "datasets/detector_stats/statistics.h"
 #include "datasets/synthetic/detector_options.h"
 #include "datasets/synthetic/simulate_detections.h"
+#include "core/printable_text.h"
 
 namespace rpt::cli {
 namespace {
@@ -49,7 +50,7 @@ std::string Describe(const engine::InputSpec& input) {
   for (const std::string& param : input.params) text += " " + param;
   if (input.simulate) {
     const std::string profile = input.simulate_perfect ? "perfect" : input.detector.empty() ? "realistic" : input.detector;
-    text += ", simulated detector '" + profile + "', seed " + std::to_string(input.seed);
+    text += ", simulated detector " + QuoteName(profile) + ", seed " + std::to_string(input.seed);
   } else if (!input.detections.empty()) {
     text += ", detections " + input.detections;
   } else {
@@ -85,7 +86,7 @@ void RunComparison(const DetectorStatsArgs& args) {
   }
   for (size_t i = 0; i < args.compare.size(); ++i) {
     for (size_t k = 0; k < i; ++k) {
-      if (args.compare[i] == args.compare[k]) throw ConfigError("--compare lists '" + args.compare[i] + "' twice");
+      if (args.compare[i] == args.compare[k]) throw ConfigError("--compare lists " + QuoteName(args.compare[i]) + " twice");
     }
   }
   InputWarnings input_warnings;

@@ -45,7 +45,7 @@ bool CheckSubcommand(CLI::App& app, int argc, char** argv) {
   const std::string closest = rpt::ClosestName(given, names);
   std::fprintf(stderr, "error: unknown subcommand '%s'%s\nRun with --help for the list.\n",
                rpt::PrintableText(given, rpt::LineBreaks::kEscape).c_str(),
-               closest.empty() ? "" : ("; did you mean '" + closest + "'?").c_str());
+               closest.empty() ? "" : ("; did you mean " + rpt::QuoteName(closest) + "?").c_str());
   return false;
 }
 

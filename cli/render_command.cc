@@ -57,7 +57,7 @@ struct RenderArgs {
 void CheckImageSize(const Camera& camera, const std::string& sequence, double max_megapixels) {
   const double megapixels = static_cast<double>(camera.width) * camera.height / 1e6;
   if (megapixels <= max_megapixels) return;
-  throw InputError("sequence '" + sequence + "', camera '" + camera.name + "': image " + std::to_string(camera.width) +
+  throw InputError("sequence " + QuoteName(sequence) + ", camera " + QuoteName(camera.name) + ": image " + std::to_string(camera.width) +
                    " x " + std::to_string(camera.height) + " px (" + std::to_string(static_cast<long long>(megapixels)) +
                    " megapixels), above --max-megapixels (" + FormatOption(max_megapixels) +
                    "); raise it if the camera is genuine");
@@ -106,7 +106,7 @@ std::vector<const Sequence*> SelectSequences(const std::vector<Sequence>& sequen
     const Sequence* found = nullptr;
     for (const Sequence& s : sequences) found = s.name == name ? &s : found;
     if (found == nullptr) {
-      throw ConfigError("--sequence: the input has no sequence '" + name + "'" + DidYouMean(name, names) +
+      throw ConfigError("--sequence: the input has no sequence " + QuoteName(name) + DidYouMean(name, names) +
                         " (sequences: " + Join(names) + ")");
     }
     out.push_back(found);

@@ -179,8 +179,8 @@ std::string MergeScript(const SlurmSweep& sweep, const std::string& rpt, const s
 void SubmitSlurmSweep(const SlurmSweep& sweep) {
   for (const std::string& option : sweep.sbatch_options) {
     if (option.find_first_of("\n\r") != std::string::npos || option.empty()) {
-      throw ConfigError("--slurm-option '" + PrintableText(option, LineBreaks::kEscape) +
-                        "': expected one sbatch option, e.g. time=01:00:00");
+      throw ConfigError("--slurm-option " + QuoteName(option) +
+                        ": expected one sbatch option, e.g. time=01:00:00");
     }
   }
   std::error_code ec;

@@ -51,4 +51,6 @@ std::string PrintableText(std::string_view text, LineBreaks line_breaks) {
   return out;
 }
 
+std::string QuoteName(std::string_view name) { return "'" + PrintableText(name, LineBreaks::kEscape) + "'"; }
+
 }  // namespace rpt

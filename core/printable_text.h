@@ -19,4 +19,9 @@ enum class LineBreaks { kKeep, kEscape };
 
 std::string PrintableText(std::string_view text, LineBreaks line_breaks = LineBreaks::kKeep);
 
+// A name from the input (a frame id, a camera, a joint, a key, a path) for a message or a line:
+// in single quotes, PrintableText with line breaks escaped, so a crafted name can neither split
+// the line nor act on the terminal.
+std::string QuoteName(std::string_view name);
+
 }  // namespace rpt

@@ -5,6 +5,7 @@
 #include <unordered_set>
 
 #include "core/errors.h"
+#include "core/printable_text.h"
 
 namespace rpt {
 
@@ -45,12 +46,12 @@ AttachReport AttachDetections(const Detections& detections, const std::string& s
       for (size_t v = 0; v < found.views.size(); ++v) {
         const auto cam = place.camera_index->find(found.cameras[v]);
         if (cam == place.camera_index->end()) {
-          throw InputError(source + ": frame '" + found.frame_id + "': camera '" + found.cameras[v] +
-                           "' is not a camera of sequence '" + place.sequence->name + "'");
+          throw InputError(source + ": frame " + QuoteName(found.frame_id) + ": camera " + QuoteName(found.cameras[v]) +
+                           " is not a camera of sequence " + QuoteName(place.sequence->name));
         }
         if (found.views[v].num_persons() > 0 && found.views[v].num_joints != num_joints) {
-          throw InputError(source + ": frame '" + found.frame_id + "', camera '" + found.cameras[v] +
-                           "': " + std::to_string(found.views[v].num_joints) + " joints, expected " +
+          throw InputError(source + ": frame " + QuoteName(found.frame_id) + ", camera " + QuoteName(found.cameras[v]) +
+                           ": " + std::to_string(found.views[v].num_joints) + " joints, expected " +
                            std::to_string(num_joints));
         }
         place.frame->views[cam->second] = found.views[v];
@@ -80,11 +81,11 @@ AttachReport AttachDetections(const Detections& detections, const std::string& s
 
 void CountUnattachedFrames(const AttachReport& report, const std::string& source, InputWarnings* warnings) {
   warnings->AddUnused(
-      source, "detection frames whose id is no frame of the input, ignored (first '" + report.first_unused_frame + "')",
+      source, "detection frames whose id is no frame of the input, ignored (first " + QuoteName(report.first_unused_frame) + ")",
       report.unused_frames);
   warnings->AddUnused(
       source,
-      "frames of the input absent from it, triangulated without detections (first '" + report.first_frame_without + "')",
+      "frames of the input absent from it, triangulated without detections (first " + QuoteName(report.first_frame_without) + ")",
       report.frames_without);
 }
 
@@ -92,8 +93,8 @@ InputError NoFrameMatchesError(const std::string& source, size_t num_detection_f
                                const std::string& first_detection_id, const std::string& sequence_name,
                                const std::string& first_frame_id) {
   return InputError(source + ": none of its " + std::to_string(num_detection_frames) + " frame ids" +
-                    (num_detection_frames == 0 ? "" : " (e.g. '" + first_detection_id + "')") +
-                    " matches a frame of sequence '" + sequence_name + "' (e.g. '" + first_frame_id + "')");
+                    (num_detection_frames == 0 ? "" : " (e.g. " + QuoteName(first_detection_id) + ")") +
+                    " matches a frame of sequence " + QuoteName(sequence_name) + " (e.g. " + QuoteName(first_frame_id) + ")");
 }
 
 }  // namespace rpt

@@ -2,6 +2,7 @@
 #include "datasets/frame_source.h"
 
 #include "core/errors.h"
+#include "core/printable_text.h"
 
 #include <utility>
 
@@ -53,7 +54,7 @@ Sequence Materialize(FrameSource& source, long max_frames) {
   Sequence sequence;
   static_cast<SequenceHeader&>(sequence) = source.header();
   auto too_many = [&] {
-    return InputError("sequence '" + sequence.name + "': more than the " + std::to_string(max_frames) +
+    return InputError("sequence " + QuoteName(sequence.name) + ": more than the " + std::to_string(max_frames) +
                       " frames expected (" + (source.num_frames() > max_frames ? std::to_string(source.num_frames())
                                                                                  : std::string("more")) +
                       ")");

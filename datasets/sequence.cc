@@ -5,12 +5,13 @@
 #include <set>
 
 #include "core/errors.h"
+#include "core/printable_text.h"
 
 namespace rpt {
 namespace {
 
 std::string Where(const std::string& source, const SequenceFrame& frame) {
-  return source + ": frame '" + frame.id + "'";
+  return source + ": frame " + QuoteName(frame.id);
 }
 
 }  // namespace
@@ -53,7 +54,7 @@ void ValidateFrame(const SequenceHeader& sequence, const SequenceFrame& frame, c
   for (size_t v = 0; v < frame.views.size(); ++v) {
     const Poses2D& view = frame.views[v];
     // Built on error only: a valid frame is checked without allocating (the per-frame path).
-    const auto where = [&] { return Where(source, frame) + ", camera '" + sequence.cameras[v].name + "'"; };
+    const auto where = [&] { return Where(source, frame) + ", camera " + QuoteName(sequence.cameras[v].name); };
     if (view.num_persons() > 0 && view.num_joints != static_cast<int>(sequence.detection_joints.size())) {
       throw InputError(where() + ": detections have " + std::to_string(view.num_joints) + " joints, expected " +
                        std::to_string(sequence.detection_joints.size()));

@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "core/errors.h"
+#include "core/printable_text.h"
 
 namespace rpt::engine {
 
@@ -41,12 +42,12 @@ class AttachedDetections::Source final : public FrameSource {
     for (size_t v = 0; v < found.views.size(); ++v) {
       const auto camera = camera_index_.find(found.cameras[v]);
       if (camera == camera_index_.end()) {
-        throw InputError(file_->source_ + ": frame '" + found.frame_id + "': camera '" + found.cameras[v] +
-                         "' is not a camera of sequence '" + header_.name + "'");
+        throw InputError(file_->source_ + ": frame " + QuoteName(found.frame_id) + ": camera " + QuoteName(found.cameras[v]) +
+                         " is not a camera of sequence " + QuoteName(header_.name));
       }
       if (found.views[v].num_persons() > 0 && found.views[v].num_joints != num_joints) {
-        throw InputError(file_->source_ + ": frame '" + found.frame_id + "', camera '" + found.cameras[v] +
-                         "': " + std::to_string(found.views[v].num_joints) + " joints, expected " +
+        throw InputError(file_->source_ + ": frame " + QuoteName(found.frame_id) + ", camera " + QuoteName(found.cameras[v]) +
+                         ": " + std::to_string(found.views[v].num_joints) + " joints, expected " +
                          std::to_string(num_joints));
       }
       frame->views[camera->second].data = found.views[v].data;  // capacity of the caller's buffer reused
@@ -64,8 +65,8 @@ class AttachedDetections::Source final : public FrameSource {
     if (frames_with_ == 0 && frames_seen_ > 0) {
       const Detections& d = file_->detections_;
       throw InputError(file_->source_ + ": none of its " + std::to_string(d.frames.size()) + " frame ids" +
-                       (d.frames.empty() ? "" : " (e.g. '" + d.frames.front().frame_id + "')") +
-                       " matches a frame of sequence '" + header_.name + "' (e.g. '" + first_frame_id_ + "')");
+                       (d.frames.empty() ? "" : " (e.g. " + QuoteName(d.frames.front().frame_id) + ")") +
+                       " matches a frame of sequence " + QuoteName(header_.name) + " (e.g. " + QuoteName(first_frame_id_) + ")");
     }
   }
 
@@ -106,7 +107,7 @@ InputWarnings AttachedDetections::Unused() const {
     if (unused++ == 0) first = detections_.frames[i].frame_id;
   }
   InputWarnings warnings;
-  warnings.AddUnused(source_, "detection frames whose id is no frame of the input, ignored (first '" + first + "')",
+  warnings.AddUnused(source_, "detection frames whose id is no frame of the input, ignored (first " + QuoteName(first) + ")",
                      unused);
   long absent = 0;
   std::string first_absent;
@@ -115,8 +116,8 @@ InputWarnings AttachedDetections::Unused() const {
     absent += a.count;
   }
   warnings.AddUnused(source_,
-                     "frames of the input absent from it, triangulated without detections (first '" + first_absent +
-                         "')",
+                     "frames of the input absent from it, triangulated without detections (first " + QuoteName(first_absent) +
+                         ")",
                      absent);
   return warnings;
 }

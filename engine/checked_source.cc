@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "core/errors.h"
+#include "core/printable_text.h"
 
 namespace rpt::engine {
 
@@ -18,7 +19,7 @@ CheckedSource::CheckedSource(std::unique_ptr<FrameSource> frames, bool check_ids
 bool CheckedSource::Pull(SequenceFrame* frame) {
   if (!frames_->Pull(frame)) return false;
   if (check_ids_ && !id_hashes_.insert(std::hash<std::string>{}(frame->id)).second) {
-    throw InputError(frames_->header().name + ": frame '" + frame->id + "': repeated frame id");
+    throw InputError(frames_->header().name + ": frame " + QuoteName(frame->id) + ": repeated frame id");
   }
   return true;
 }

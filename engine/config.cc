@@ -13,6 +13,7 @@
 #include "core/options_check.h"
 #include "core/text.h"
 #include "datasets/io/json_file.h"
+#include "core/printable_text.h"
 
 namespace rpt::engine {
 namespace {
@@ -176,7 +177,7 @@ void LoadConfigFile(const std::filesystem::path& path, Config* config) {
       if (value.is_object() || value.is_null()) {
         if (!ForOption(*config, key, [](const auto&, const OptionSpec&) {})) UnknownOption(where, key);
         throw ConfigError(
-            OptionMessage(where, key, "'" + io::JsonExcerpt(value) + "' is not a value (a string, number, boolean or list)"));
+            OptionMessage(where, key, QuoteName(io::JsonExcerpt(value)) + " is not a value (a string, number, boolean or list)"));
       }
       SetConfigOption(key, JsonValueText(value), where, config);
     }

@@ -12,6 +12,7 @@
 #include "datasets/readers/shelf_4da.h"
 #include "datasets/readers/shelf_campus.h"
 #include "datasets/synthetic/synthetic_dataset.h"
+#include "core/printable_text.h"
 
 namespace rpt::engine {
 
@@ -57,7 +58,7 @@ const DatasetEntry& FindDataset(const std::string& name) {
     if (entry.info.name == name) return entry;
     AppendItem(&known, entry.info.name);
   }
-  throw ConfigError("unknown dataset '" + name + "' (known: " + known + "; see `rpt datasets`)");
+  throw ConfigError("unknown dataset " + QuoteName(name) + " (known: " + known + "; see `rpt datasets`)");
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "core/nan.h"
+#include "core/printable_text.h"
 
 namespace rpt::engine {
 // Not an anonymous namespace: DetectionChecker::State, a class with linkage, holds these types.
@@ -515,7 +516,7 @@ std::vector<CheckWarning> DetectionWarnings(const SequenceCheck& check) {
   for (const auto& [code, count] : per_code) {
     if (count > kMaxCameraWarningsShown) {
       warnings.push_back({code, seq + ": " + std::to_string(count - kMaxCameraWarningsShown) +
-                                    " more cameras with the warning '" + code + "' (" + std::to_string(count) +
+                                    " more cameras with the warning " + QuoteName(code) + " (" + std::to_string(count) +
                                     " in all; the first " + std::to_string(kMaxCameraWarningsShown) + " above)"});
     }
   }

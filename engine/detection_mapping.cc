@@ -11,6 +11,7 @@
 #include "core/text.h"
 #include "datasets/readers/detections_file.h"
 #include "datasets/readers/generic_common.h"
+#include "core/printable_text.h"
 
 namespace rpt::engine {
 namespace {
@@ -60,9 +61,9 @@ std::map<std::string, std::string> Renames(const DetectionMapping& m) {
                         ": expected FROM=TO (the detections' camera name = the calibration's)");
     }
     const std::string from = rename.substr(0, eq), to = rename.substr(eq + 1);
-    if (!renames.emplace(from, to).second) throw ConfigError("--rename-camera: camera '" + from + "' renamed twice");
+    if (!renames.emplace(from, to).second) throw ConfigError("--rename-camera: camera " + QuoteName(from) + " renamed twice");
     if (!targets.insert(to).second) {
-      throw ConfigError("--rename-camera: two cameras renamed to '" + to + "' (one calibration camera each)");
+      throw ConfigError("--rename-camera: two cameras renamed to " + QuoteName(to) + " (one calibration camera each)");
     }
   }
   return renames;
@@ -198,15 +199,15 @@ Detections ReadMappedDetections(const std::string& path, const DetectionMapping&
     }
     const std::set<std::string> unique(frame.cameras.begin(), frame.cameras.end());
     if (unique.size() != frame.cameras.size()) {
-      throw InputError(path + ": frame '" + frame.frame_id + "': --rename-camera gives two views the same camera (" +
+      throw InputError(path + ": frame " + QuoteName(frame.frame_id) + ": --rename-camera gives two views the same camera (" +
                        Join(frame.cameras, ", ") + ")");
     }
     names.insert(unique.begin(), unique.end());
   }
   for (const auto& [from, to] : renames) {
     if (used.count(from) == 0) {
-      throw ConfigError("--rename-camera " + from + "=" + to + ": " + path + " names no camera '" + from +
-                        "' (its cameras after renaming: " + Join(std::vector<std::string>(names.begin(), names.end())) +
+      throw ConfigError("--rename-camera " + from + "=" + to + ": " + path + " names no camera " + QuoteName(from) +
+                        " (its cameras after renaming: " + Join(std::vector<std::string>(names.begin(), names.end())) +
                         ")");
     }
   }

@@ -36,7 +36,7 @@ std::vector<CheckWarning> ResultWarnings(const RunResult& run) {
     std::string message = text;
     const int empty = FirstEmptyStep(run.counts);
     if (empty >= 0) {
-      message += "; nothing is left after step '" + std::string(kSteps[empty].key) + "' (see the count / frame column)";
+      message += "; nothing is left after step " + QuoteName(std::string(kSteps[empty].key)) + " (see the count / frame column)";
     }
     warnings.push_back({"no_predictions", message});
     return warnings;  // the other result warnings would only repeat it

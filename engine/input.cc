@@ -12,6 +12,7 @@
 #include "engine/attached_detections.h"
 #include "engine/checked_source.h"
 #include "engine/dataset_registry.h"
+#include "core/printable_text.h"
 
 namespace rpt::engine {
 namespace {
@@ -66,8 +67,8 @@ bool IsVoxelPoseCache(const std::string& path) {
 }
 
 std::string NoDetectionsMessage(const std::string& sequence) {
-  return "sequence '" + sequence +
-         "' has no 2D detections: pass --detections FILE, --simulate, or the dataset's own cache "
+  return "sequence " + QuoteName(sequence) +
+         " has no 2D detections: pass --detections FILE, --simulate, or the dataset's own cache "
          "(e.g. --param detections=voxelpose)";
 }
 

@@ -13,6 +13,7 @@
 #include "datasets/io/json_file.h"
 #include "datasets/io/json_output.h"
 #include "datasets/io/text_file.h"
+#include "core/printable_text.h"
 
 namespace rpt::engine {
 namespace {
@@ -45,7 +46,7 @@ class AdapterValidator {
     if (!object.is_object()) Fail(where, "expected an object, got " + Describe(object));
     for (const auto& [key, value] : object.items()) {
       if (std::find(known.begin(), known.end(), key) == known.end()) {
-        Fail(io::JsonPointerJoin(where, key), "unknown key '" + key + "'" + DidYouMean(key, known));
+        Fail(io::JsonPointerJoin(where, key), "unknown key " + QuoteName(key) + DidYouMean(key, known));
       }
     }
   }
@@ -83,7 +84,7 @@ const char* OffsetStatisticName(OffsetStatistic statistic) {
   return statistic == OffsetStatistic::kMean ? "mean" : "median";
 }
 
-std::string JointAdapter::Name() const { return path.empty() ? "the adapter" : "the adapter '" + path + "'"; }
+std::string JointAdapter::Name() const { return path.empty() ? "the adapter" : "the adapter " + QuoteName(path); }
 
 JointAdapter ReadJointAdapter(const std::filesystem::path& path) {
   const std::string source = path.string();
@@ -116,7 +117,7 @@ JointAdapter ReadJointAdapter(const std::filesystem::path& path) {
     v.Keys(joint, where, kAdapterJointKeys);
     const std::string name = v.String(v.Required(joint, "name", where), where + "/name");
     if (name.empty()) v.Fail(where + "/name", "empty joint name");
-    if (FindJoint(adapter.joints, name) >= 0) v.Fail(where + "/name", "joint '" + name + "' appears twice");
+    if (FindJoint(adapter.joints, name) >= 0) v.Fail(where + "/name", "joint " + QuoteName(name) + " appears twice");
     const Json& offset = v.Required(joint, "offset_m", where);
     if (!offset.is_array() || offset.size() != 3) {
       v.Fail(where + "/offset_m", "expected 3 numbers (x right, y forward, z up; metres), got " +
@@ -220,7 +221,7 @@ std::string FitDescription(const JointAdapterFitInfo& fit) {
   std::string text = fit.dataset.empty() ? "input" : fit.dataset;
   for (const std::string& param : fit.params) text += " " + param;
   text += ": " + std::to_string(fit.frames) + " frames";
-  if (!fit.frame_ids.empty()) text += " ('" + fit.frame_ids.front() + "' to '" + fit.frame_ids.back() + "')";
+  if (!fit.frame_ids.empty()) text += " (" + QuoteName(fit.frame_ids.front()) + " to " + QuoteName(fit.frame_ids.back()) + ")";
   text += ", " + std::to_string(fit.matched_persons) + " matched persons";
   return text;
 }
@@ -233,7 +234,7 @@ void CheckAdapterJoints(const JointAdapter& adapter, const JointNames& joints) {
     for (size_t j = 0; j < n && difference.empty(); ++j) {
       if (adapter.joints[j] != joints[j]) {
         difference = "joint " + std::to_string(j) + " (/joints/" + std::to_string(j) + "/name) is '" +
-                     adapter.joints[j] + "', the predictions' is '" + joints[j] + "'";
+                     adapter.joints[j] + "', the predictions' is " + QuoteName(joints[j]);
       }
     }
     if (difference.empty()) {

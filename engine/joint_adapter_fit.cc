@@ -8,6 +8,7 @@
 #include "core/errors.h"
 #include "engine/input.h"
 #include "metrics/accumulator.h"
+#include "core/printable_text.h"
 
 namespace rpt::engine {
 namespace {
@@ -75,8 +76,8 @@ class AdapterFitSink final : public FrameSink {
         adapter.joints = s.output_joints;
         all.emplace(static_cast<int>(s.output_joints.size()));
       } else if (s.output_joints != adapter.joints) {
-        throw ConfigError("sequences '" + sequences_.front().name + "' and '" + s.name +
-                          "' have different prediction joints: fit an adapter per sequence");
+        throw ConfigError("sequences " + QuoteName(sequences_.front().name) + " and " + QuoteName(s.name) +
+                          " have different prediction joints: fit an adapter per sequence");
       }
       all->Merge(*s.fit);
       adapter.fit.sequences.push_back(s.name);

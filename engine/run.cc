@@ -23,6 +23,7 @@
 #include "engine/joint_adapter.h"
 #include "engine/thread_count.h"
 #include "metrics/accumulator.h"
+#include "core/printable_text.h"
 
 namespace rpt::engine {
 namespace {
@@ -162,10 +163,10 @@ void RunSequence(int index, FrameSource& source, const RunOptions& options, cons
       triangulator.Process(s.frame.views.empty() ? no_views : s.frame.views, s.frame.timestamp_s, &s.persons,
                            &s.stats, run->losses ? &s.trace : nullptr);
     } catch (const InputError& e) {  // e.g. more persons in a view than triangulate.max_persons_per_view
-      throw InputError(header.name + ": frame '" + s.frame.id + "': " + e.what());
+      throw InputError(header.name + ": frame " + QuoteName(s.frame.id) + ": " + e.what());
     } catch (const std::bad_alloc&) {
-      throw InputError(header.name + ": frame '" + s.frame.id +
-                       "': out of memory triangulating the frame (lower triangulate.max_pairs_per_frame or "
+      throw InputError(header.name + ": frame " + QuoteName(s.frame.id) +
+                       ": out of memory triangulating the frame (lower triangulate.max_pairs_per_frame or "
                        "triangulate.max_persons_per_view to refuse such frames early)");
     }
     if (!offline) return 1;
@@ -258,8 +259,8 @@ metrics::EvalOptions EvalOptionsFor(const metrics::EvalOptions& options,
   resolved.evaluated_joints = headers.front()->evaluated_joints;
   for (const SequenceHeader* h : headers) {
     if (h->evaluated_joints != resolved.evaluated_joints) {
-      throw ConfigError("sequences '" + headers.front()->name + "' and '" + h->name +
-                        "' evaluate different joints; set metrics.evaluated_joints");
+      throw ConfigError("sequences " + QuoteName(headers.front()->name) + " and " + QuoteName(h->name) +
+                        " evaluate different joints; set metrics.evaluated_joints");
     }
   }
   return resolved;

@@ -13,6 +13,7 @@
 #include "datasets/dataset_params.h"
 #include "datasets/io/json_file.h"
 #include "engine/dataset_registry.h"
+#include "core/printable_text.h"
 
 namespace rpt::engine {
 namespace {
@@ -37,7 +38,7 @@ class Validator {
   void CheckKeys(const Json& object, const std::string& where, const std::vector<std::string>& known) const {
     for (const auto& [key, value] : object.items()) {
       if (std::find(known.begin(), known.end(), key) == known.end()) {
-        Fail(io::JsonPointerJoin(where, key), "unknown key '" + key + "'" + DidYouMean(key, known));
+        Fail(io::JsonPointerJoin(where, key), "unknown key " + QuoteName(key) + DidYouMean(key, known));
       }
     }
   }
@@ -99,7 +100,7 @@ ThresholdEvaluation ReadEvaluation(const Validator& v, const Json& e, const std:
   if (!input.dataset.empty()) {
     const std::vector<std::string> known = DatasetNames();
     if (std::find(known.begin(), known.end(), input.dataset) == known.end()) {
-      v.Fail(where + "/dataset", "unknown dataset '" + input.dataset + "'" + DidYouMean(input.dataset, known) +
+      v.Fail(where + "/dataset", "unknown dataset " + QuoteName(input.dataset) + DidYouMean(input.dataset, known) +
                                      "; known: " + Join(known));
     }
   }
@@ -153,7 +154,7 @@ ThresholdEvaluation ReadEvaluation(const Validator& v, const Json& e, const std:
       const std::string metric_where = io::JsonPointerJoin(bound_where, metric);
       const std::vector<std::string>& known = ThresholdMetricNames();
       if (std::find(known.begin(), known.end(), metric) == known.end()) {
-        v.Fail(metric_where, "unknown metric '" + metric + "'" + DidYouMean(metric, known) + "; known: " + Join(known));
+        v.Fail(metric_where, "unknown metric " + QuoteName(metric) + DidYouMean(metric, known) + "; known: " + Join(known));
       }
       if (!limit.is_number()) v.Fail(metric_where, "expected a number, got " + Validator::Describe(limit));
       evaluation.checks.push_back({metric, bound, limit.get<double>()});

@@ -16,6 +16,7 @@
 #include "python/bindings.h"
 #include "python/json_objects.h"
 #include "python/option_values.h"
+#include "core/printable_text.h"
 
 namespace rpt::python {
 namespace {
@@ -44,9 +45,9 @@ Camera MakeCamera(const std::string& name, int width, int height, py::handle K, 
   for (const auto& [value, text] : models) {
     if (text == model) camera.model = value, known = true;
   }
-  if (!known) throw ConfigError("model: '" + model + "' is not none | opencv | h36m | fisheye");
+  if (!known) throw ConfigError("model: " + QuoteName(model) + " is not none | opencv | h36m | fisheye");
   if (const std::string problem = camera.Validate(); !problem.empty()) {
-    throw InputError("camera '" + name + "': " + problem);
+    throw InputError("camera " + QuoteName(name) + ": " + problem);
   }
   return camera;
 }
@@ -134,7 +135,7 @@ void RegisterCameras(py::module_& m, py::module_& cameras) {
           "to_json", [](const Camera& c) { return PythonOf(camera_json::CameraJson(c, "Camera.to_json", c.name)); },
           "The camera as our cameras JSON object (T = camera centre; docs/cameras.md)")
       .def("__repr__", [](const Camera& c) {
-        return "Camera('" + c.name + "', " + std::to_string(c.width) + "x" + std::to_string(c.height) + ", " +
+        return "Camera(" + QuoteName(c.name) + ", " + std::to_string(c.width) + "x" + std::to_string(c.height) + ", " +
                ModelText(c.model) + ")";
       });
 

@@ -20,6 +20,7 @@
 #include "python/bindings.h"
 #include "python/datasets_types.h"
 #include "python/option_values.h"
+#include "core/printable_text.h"
 
 namespace rpt::python {
 namespace {
@@ -191,7 +192,7 @@ void RegisterDatasets(py::module_& datasets, py::module_& synthetic) {
       .def_property_readonly("room", &RoomTuple, "((centre x, y, z), (size x, y, z)) in metres")
       .def_property_readonly("fps", [](const SequenceHeader& h) { return h.fps > 0 ? py::cast(h.fps) : py::none(); })
       .def("__repr__", [](const SequenceHeader& h) {
-        return "SequenceInfo('" + h.name + "', " + std::to_string(h.cameras.size()) + " cameras)";
+        return "SequenceInfo(" + QuoteName(h.name) + ", " + std::to_string(h.cameras.size()) + " cameras)";
       });
 
   py::class_<Sequence, SequenceHeader, std::shared_ptr<Sequence>>(
@@ -206,7 +207,7 @@ void RegisterDatasets(py::module_& datasets, py::module_& synthetic) {
            })
       .def_property_readonly("warnings", [](const Sequence& s) { return engine::InputWarningLines(s.warnings); })
       .def("__repr__", [](const Sequence& s) {
-        return "Sequence('" + s.name + "', " + std::to_string(s.cameras.size()) + " cameras, " +
+        return "Sequence(" + QuoteName(s.name) + ", " + std::to_string(s.cameras.size()) + " cameras, " +
                std::to_string(s.frames.size()) + " frames)";
       });
 
@@ -229,7 +230,7 @@ void RegisterDatasets(py::module_& datasets, py::module_& synthetic) {
           "gt_ids", [](const Frame& f) { return TrackIdsArray(f.frame.gt); },
           "the dataset's person ids of the ground truth (-1: none)")
       .def_property_readonly("cameras", [](const Frame& f) { return f.sequence->cameras; })
-      .def("__repr__", [](const Frame& f) { return "Frame('" + f.frame.id + "')"; });
+      .def("__repr__", [](const Frame& f) { return "Frame(" + QuoteName(f.frame.id) + ")"; });
 
   py::class_<Dataset>(datasets, "Dataset", "An opened input: iterate for its frames, or load() its sequences")
       .def_property_readonly("sequences", &Dataset::Headers, "one SequenceInfo per sequence")
@@ -281,7 +282,7 @@ void RegisterDatasets(py::module_& datasets, py::module_& synthetic) {
           d["params"] = params;
           return d;
         }
-        throw ConfigError("unknown dataset '" + name + "'");
+        throw ConfigError("unknown dataset " + QuoteName(name));
       },
       py::arg("name"), "description, on-disk layout and parameters of a reader");
 

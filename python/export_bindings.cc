@@ -21,6 +21,7 @@
 #include "engine/outputs/predictions_writer.h"
 #include "engine/outputs/trc_export.h"
 #include "python/bindings.h"
+#include "core/printable_text.h"
 
 namespace rpt::python {
 namespace {
@@ -95,9 +96,9 @@ std::vector<std::filesystem::path> Write(const std::filesystem::path& dir, py::h
   options.formats = engine::ParseExportFormats(format_text);
   options.filled_joints = filled_joints;
   if (trc_axes != "z-up" && trc_axes != "y-up")
-    throw ConfigError("export.write: trc_axes: '" + trc_axes + "' is not z-up | y-up");
+    throw ConfigError("export.write: trc_axes: " + QuoteName(trc_axes) + " is not z-up | y-up");
   if (trc_units != "m" && trc_units != "mm")
-    throw ConfigError("export.write: trc_units: '" + trc_units + "' is not m | mm");
+    throw ConfigError("export.write: trc_units: " + QuoteName(trc_units) + " is not m | mm");
   options.trc_axes = trc_axes == "y-up" ? engine::TrcAxes::kYUp : engine::TrcAxes::kZUp;
   options.trc_millimetres = trc_units == "mm";
 

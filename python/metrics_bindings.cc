@@ -22,6 +22,7 @@
 #include "python/bindings.h"
 #include "python/json_objects.h"
 #include "python/option_values.h"
+#include "core/printable_text.h"
 
 namespace rpt::python {
 namespace {
@@ -107,7 +108,7 @@ py::object Evaluate(py::handle gt, py::handle predictions, py::handle options, p
     const Sequence& sequence = *sequences[i];
     const Predictions& prediction = runs[i];
     if (prediction.persons.size() != sequence.frames.size()) {
-      throw InputError("metrics.evaluate: sequence '" + sequence.name + "' has " +
+      throw InputError("metrics.evaluate: sequence " + QuoteName(sequence.name) + " has " +
                        std::to_string(sequence.frames.size()) + " frames, its predictions " +
                        std::to_string(prediction.persons.size()));
     }
@@ -126,8 +127,8 @@ py::object Evaluate(py::handle gt, py::handle predictions, py::handle options, p
     for (size_t f = 0; f < sequence.frames.size(); ++f) {
       const SequenceFrame& frame = sequence.frames[f];
       if (prediction.frame_ids[f] != frame.id) {
-        throw InputError("metrics.evaluate: sequence '" + sequence.name + "', frame " + std::to_string(f) + ": '" +
-                         frame.id + "' in the ground truth, '" + prediction.frame_ids[f] + "' in the predictions");
+        throw InputError("metrics.evaluate: sequence " + QuoteName(sequence.name) + ", frame " + std::to_string(f) + ": '" +
+                         frame.id + "' in the ground truth, " + QuoteName(prediction.frame_ids[f]) + " in the predictions");
       }
       const Poses3D& persons = prediction.persons[f];
       sequence_timing.Add(prediction.stats[f]);

@@ -16,6 +16,7 @@
 #include "core/errors.h"
 #include "core/option_codec.h"
 #include "core/option_spec.h"
+#include "core/printable_text.h"
 
 namespace rpt::python {
 
@@ -63,7 +64,7 @@ void SetOptionFields(const py::dict& values, std::string_view where, std::string
         known += (known.empty() ? "" : ", ") + std::string(name);
       };
       VisitFields(lister, *options);
-      throw ConfigError(std::string(where) + ": unknown option '" + full_key + "' (known: " + known + ")");
+      throw ConfigError(std::string(where) + ": unknown option " + QuoteName(full_key) + " (known: " + known + ")");
     }
   }
 }

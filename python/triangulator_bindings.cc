@@ -20,6 +20,7 @@
 #include "python/arrays.h"
 #include "python/bindings.h"
 #include "python/datasets_types.h"
+#include "core/printable_text.h"
 
 namespace rpt::python {
 namespace {
@@ -100,7 +101,7 @@ class PyTriangulator {
   Predictions ProcessSequence(const Sequence& sequence) {
     std::unique_lock lock = Lock();
     if (sequence.cameras.size() != header_.cameras.size() || sequence.detection_joints != header_.detection_joints) {
-      throw InputError("process_sequence: sequence '" + sequence.name + "' has " +
+      throw InputError("process_sequence: sequence " + QuoteName(sequence.name) + " has " +
                        std::to_string(sequence.cameras.size()) + " cameras and " +
                        std::to_string(sequence.detection_joints.size()) +
                        " detection joints; the triangulator was made for " + std::to_string(header_.cameras.size()) +
@@ -193,7 +194,7 @@ class PyTriangulator {
       try {
         triangulator_.Process(frame.views.empty() ? no_views : frame.views, frame.timestamp_s, &persons_, &stats_);
       } catch (const InputError& e) {
-        throw InputError(out->sequence + ": frame '" + frame.id + "': " + e.what());
+        throw InputError(out->sequence + ": frame " + QuoteName(frame.id) + ": " + e.what());
       }
       out->frame_ids.push_back(frame.id);
       out->timestamps_s.push_back(frame.timestamp_s);
@@ -290,7 +291,7 @@ void RegisterTriangulator(py::module_& m) {
           },
           "the triangulator's time per frame (steady clock, microseconds)")
       .def("__repr__", [](const Predictions& p) {
-        return "Predictions('" + p.sequence + "', " + std::to_string(p.persons.size()) + " frames)";
+        return "Predictions(" + QuoteName(p.sequence) + ", " + std::to_string(p.persons.size()) + " frames)";
       });
 
   py::class_<PyTriangulator>(m, "Triangulator",

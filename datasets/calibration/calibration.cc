@@ -18,6 +18,7 @@
 #include "datasets/readers/fourda_calibration.h"
 #include "datasets/readers/panoptic.h"
 #include "datasets/readers/voxelpose_calibration.h"
+#include "core/printable_text.h"
 
 namespace rpt {
 namespace {
@@ -107,7 +108,7 @@ void CheckUniqueNames(const std::vector<Camera>& cameras, const std::string& sou
   std::set<std::string> names;
   for (const Camera& camera : cameras) {
     if (!names.insert(camera.name).second)
-      throw InputError(source + ": camera name '" + camera.name + "' appears twice");
+      throw InputError(source + ": camera name " + QuoteName(camera.name) + " appears twice");
   }
 }
 
@@ -205,7 +206,7 @@ void WriteCalibration(const fs::path& path, const std::vector<Camera>& cameras,
   if (cameras.empty()) throw InputError(source + ": no cameras to write");
   for (std::size_t c = 0; c < cameras.size(); ++c) {
     const Camera& camera = cameras[c];
-    const std::string where = source + ": cannot write camera " + std::to_string(c) + " ('" + camera.name + "')";
+    const std::string where = source + ": cannot write camera " + std::to_string(c) + " (" + QuoteName(camera.name) + ")";
     if (camera.name.empty()) throw InputError(where + ": the name is empty");
     if (!IsValidUtf8(camera.name)) throw InputError(where + ": the name is not valid UTF-8");
     if (const std::string error = camera.Validate(); !error.empty())

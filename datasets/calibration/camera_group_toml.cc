@@ -15,6 +15,7 @@
 #include "datasets/calibration/rodrigues.h"
 #include "datasets/camera_plausibility.h"
 #include "datasets/io/text_file.h"
+#include "core/printable_text.h"
 
 namespace rpt {
 namespace {
@@ -205,7 +206,7 @@ Calibration ReadCameraGroupToml(const fs::path& path, const CalibrationReadOptio
     const CameraTable camera_table(*table, key, source);
     Camera camera = ReadCamera(camera_table, key, MetresPerUnit(options.units), source, warnings);
     if (!names.insert(camera.name).second) {
-      throw InputError(camera_table.Where("name") + ": camera name '" + camera.name + "' appears twice");
+      throw InputError(camera_table.Where("name") + ": camera name " + QuoteName(camera.name) + " appears twice");
     }
     any_fisheye |= camera.model == DistortionModel::kFisheye;
     calibration.cameras.push_back(std::move(camera));
@@ -220,7 +221,7 @@ void WriteCameraGroupToml(const fs::path& path, const std::vector<Camera>& camer
   for (std::size_t c = 0; c < cameras.size(); ++c) {
     const Camera& camera = cameras[c];
     const std::vector<double> dist =
-        opencv_conventions::DistortionCoefficients(camera, source + ": camera '" + camera.name + "'");
+        opencv_conventions::DistortionCoefficients(camera, source + ": camera " + QuoteName(camera.name));
     const Eigen::Vector3d r = RodriguesFromRotation(camera.R);
     const Eigen::Vector3d t = camera.t / MetresPerUnit(units);
     text += "[cam_" + std::to_string(c + 1) + "]\n";

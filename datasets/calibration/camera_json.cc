@@ -10,6 +10,7 @@
 #include "datasets/io/input_limits.h"
 #include "datasets/io/json_file.h"
 #include "datasets/io/json_output.h"
+#include "core/printable_text.h"
 
 namespace rpt::camera_json {
 namespace {
@@ -42,7 +43,7 @@ Camera ParseCamera(const json& root, const std::string& pointer, const std::stri
   } else if (type == "h36m") {
     model = DistortionModel::kH36M;
   } else if (!type.empty() && type != "pinhole" && type != "opencv" && type != "perspective") {
-    Fail(source, pointer + "/type", "unknown camera type '" + type + "' (known: fisheye, pinhole, h36m)");
+    Fail(source, pointer + "/type", "unknown camera type " + QuoteName(type) + " (known: fisheye, pinhole, h36m)");
   }
 
   std::vector<double> dc;
@@ -106,7 +107,7 @@ std::vector<Camera> ParseCameras(const json& root, const std::string& pointer, c
     CountImplausibleCamera(cameras.back(), source, warnings);
     if (!names.insert(cameras.back().name).second) {
       Fail(source, io::JsonPointerJoin(pointer, c) + "/name",
-           "camera name '" + cameras.back().name + "' appears twice");
+           "camera name " + QuoteName(cameras.back().name) + " appears twice");
     }
   }
   return cameras;

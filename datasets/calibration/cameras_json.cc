@@ -8,6 +8,7 @@
 #include "datasets/io/json_file.h"
 #include "datasets/io/json_output.h"
 #include "datasets/io/text_file.h"
+#include "core/printable_text.h"
 
 namespace rpt {
 
@@ -41,7 +42,7 @@ void WriteCamerasJson(const std::filesystem::path& path, const std::vector<Camer
   std::string text = "{\"cameras\": [\n";
   for (std::size_t c = 0; c < cameras.size(); ++c) {
     const nlohmann::ordered_json camera =
-        camera_json::CameraJson(cameras[c], source, "camera " + std::to_string(c) + " ('" + cameras[c].name + "')");
+        camera_json::CameraJson(cameras[c], source, "camera " + std::to_string(c) + " (" + QuoteName(cameras[c].name) + ")");
     text += "  " + io::DumpJson(camera, -1) + (c + 1 < cameras.size() ? ",\n" : "\n");
   }
   text += "]}\n";

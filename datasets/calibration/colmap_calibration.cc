@@ -7,6 +7,7 @@
 #include "core/errors.h"
 #include "datasets/camera_plausibility.h"
 #include "datasets/readers/colmap_text.h"
+#include "core/printable_text.h"
 
 namespace rpt {
 
@@ -44,7 +45,7 @@ Calibration ReadColmapCalibration(const std::filesystem::path& path, const Calib
     camera.name = std::filesystem::path(image.name).replace_extension().string();
     if (camera.name.empty()) throw InputError(where + ": the image has no NAME");
     if (!names.insert(camera.name).second) {
-      throw InputError(where + ": a second image named '" + camera.name + "' (camera names must be unique)");
+      throw InputError(where + ": a second image named " + QuoteName(camera.name) + " (camera names must be unique)");
     }
     camera.R = ColmapQuaternionToRotation(image.qvec_wxyz);
     camera.t = image.tvec * MetresPerUnit(options.units);

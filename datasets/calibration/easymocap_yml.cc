@@ -10,6 +10,7 @@
 #include "datasets/calibration/rodrigues.h"
 #include "datasets/camera_plausibility.h"
 #include "datasets/io/text_file.h"
+#include "core/printable_text.h"
 
 namespace rpt {
 namespace {
@@ -25,7 +26,7 @@ constexpr double kRotationAgreement = 1e-6;  // max |R(R_) - Rot_| accepted when
 Eigen::Matrix3d ReadRotation(const File& extri, const std::string& name, InputWarnings* warnings, std::string* form) {
   const std::string r_key = "R_" + name, rot_key = "Rot_" + name;
   const bool has_r = extri.Find(r_key) != nullptr, has_rot = extri.Find(rot_key) != nullptr;
-  if (!has_r && !has_rot) throw InputError(extri.source + ": " + r_key + ": missing (camera '" + name + "' of names)");
+  if (!has_r && !has_rot) throw InputError(extri.source + ": " + r_key + ": missing (camera " + QuoteName(name) + " of names)");
   if (!has_r) {
     *form = "Rot_ (3x3 matrix)";
     return Rotation(extri.Numbers(rot_key, 9, "3x3"), extri.source, extri.source + ": " + rot_key, warnings);
@@ -55,8 +56,8 @@ void CheckKeyName(const std::string& name, const std::string& source) {
     return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' || c == '_';
   });
   if (!ok) {
-    throw InputError(source + ": cannot write camera '" + name +
-                     "' in the EasyMocap layout: its name becomes part of keys (K_<name>), which allow only letters, "
+    throw InputError(source + ": cannot write camera " + QuoteName(name) +
+                     " in the EasyMocap layout: its name becomes part of keys (K_<name>), which allow only letters, "
                      "digits, '-' and '_'; rename it or write json or toml");
   }
 }
@@ -103,7 +104,7 @@ Calibration ReadEasyMocapCalibration(const fs::path& path, const CalibrationRead
   std::set<std::string> seen, forms;
   bool missing_distortion = false;
   for (const std::string& name : names) {
-    if (!seen.insert(name).second) throw InputError(intri.source + ": names: camera '" + name + "' appears twice");
+    if (!seen.insert(name).second) throw InputError(intri.source + ": names: camera " + QuoteName(name) + " appears twice");
     Camera camera;
     camera.name = name;
     camera.K = Matrix3(intri.Numbers("K_" + name, 9, "3x3"));
@@ -121,7 +122,7 @@ Calibration ReadEasyMocapCalibration(const fs::path& path, const CalibrationRead
     forms.insert(form);
     const std::vector<double> t = extri.Numbers("T_" + name, 3, "3x1");
     camera.t = Eigen::Vector3d(t[0], t[1], t[2]) * metres_per_unit;
-    const std::string where = intri.source + ": camera '" + name + "'";
+    const std::string where = intri.source + ": camera " + QuoteName(name);
     CompleteImageSize(&camera, options.image_width, options.image_height, intri.source, where, warnings);
     if (const std::string error = camera.Validate(); !error.empty()) throw InputError(where + ": " + error);
     CountImplausibleCamera(camera, intri.source, warnings);
@@ -142,8 +143,8 @@ void WriteEasyMocapCameras(const fs::path& intri_path, const fs::path& extri_pat
   for (const Camera& camera : cameras) {
     CheckKeyName(camera.name, intri_path.string());
     if (camera.model == DistortionModel::kFisheye) {
-      throw InputError(intri_path.string() + ": cannot write camera '" + camera.name +
-                       "' in the EasyMocap layout: EasyMocap has no fisheye model (write toml, json or one camera per "
+      throw InputError(intri_path.string() + ": cannot write camera " + QuoteName(camera.name) +
+                       " in the EasyMocap layout: EasyMocap has no fisheye model (write toml, json or one camera per "
                        "OpenCV file)");
     }
     names.push_back(camera.name);
@@ -153,7 +154,7 @@ void WriteEasyMocapCameras(const fs::path& intri_path, const fs::path& extri_pat
   for (const Camera& camera : cameras) {
     const std::string& name = camera.name;
     intri.Matrix("K_" + name, 3, 3, RowMajor(camera.K));
-    const std::vector<double> dist = DistortionCoefficients(camera, intri_path.string() + ": camera '" + name + "'");
+    const std::vector<double> dist = DistortionCoefficients(camera, intri_path.string() + ": camera " + QuoteName(name));
     intri.Matrix("dist_" + name, 1, static_cast<int>(dist.size()), dist);
     intri.Integer("H_" + name, camera.height);
     intri.Integer("W_" + name, camera.width);

@@ -10,6 +10,7 @@
 #include "datasets/calibration/rodrigues.h"
 #include "datasets/camera_plausibility.h"
 #include "datasets/io/text_file.h"
+#include "core/printable_text.h"
 
 namespace rpt {
 
@@ -265,7 +266,7 @@ Calibration ReadOpenCVCalibration(const fs::path& path, const CalibrationReadOpt
 
 void WriteOpenCVCamera(const fs::path& path, const Camera& camera, LengthUnit units) {
   const std::string source = path.string();
-  const std::string where = source + ": camera '" + camera.name + "'";
+  const std::string where = source + ": camera " + QuoteName(camera.name);
   const std::vector<double> dist = DistortionCoefficients(camera, where);
   file_storage::Writer out(path.extension() == ".xml", source);
   out.String("camera_name", camera.name);

@@ -9,6 +9,7 @@
 #include "core/errors.h"
 #include "core/joints.h"
 #include "core/text.h"
+#include "core/printable_text.h"
 
 namespace rpt::detector_stats {
 namespace {
@@ -96,7 +97,7 @@ void StatsAccumulator::Add(const Sequence& sequence) {
     global.push_back(index);
   }
   if (joints.empty()) {
-    throw InputError("detector statistics: sequence '" + sequence.name + "': none of the joints " + Join(requested) +
+    throw InputError("detector statistics: sequence " + QuoteName(sequence.name) + ": none of the joints " + Join(requested) +
                      " is in both its ground truth and its detections");
   }
   const int num_joints = static_cast<int>(joints.size());

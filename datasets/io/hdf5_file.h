@@ -22,6 +22,7 @@
 #include "datasets/io/file_digest.h"
 #include "datasets/io/hdf5_preflight.h"
 #include "datasets/io/inflate_budget.h"
+#include "core/printable_text.h"
 
 namespace rpt::io {
 
@@ -507,21 +508,21 @@ class Hdf5Reader {
 
   // Opens attribute `name` of `object` and checks it holds one element.
   Hdf5Id OpenAttribute(hid_t object, const std::string& place, const std::string& name) const {
-    if (!HasAttribute(object, place, name)) Fail(place, "attribute '" + name + "' missing");
+    if (!HasAttribute(object, place, name)) Fail(place, "attribute " + QuoteName(name) + " missing");
     Hdf5Id attribute(H5Aopen(object, name.c_str(), H5P_DEFAULT), H5Aclose);
-    if (!attribute.valid()) Fail(place, "cannot open attribute '" + name + "' (damaged?)");
+    if (!attribute.valid()) Fail(place, "cannot open attribute " + QuoteName(name) + " (damaged?)");
     Hdf5Id space(H5Aget_space(attribute.get()), H5Sclose);
     const hssize_t points = space.valid() ? H5Sget_simple_extent_npoints(space.get()) : -1;
-    if (points != 1) Fail(place, "attribute '" + name + "' must hold one value, it holds " + std::to_string(points));
+    if (points != 1) Fail(place, "attribute " + QuoteName(name) + " must hold one value, it holds " + std::to_string(points));
     return attribute;
   }
 
   std::string StringAttribute(hid_t object, const std::string& place, const std::string& name) const {
     Hdf5Id attribute = OpenAttribute(object, place, name);
     Hdf5Id type(H5Aget_type(attribute.get()), H5Tclose);
-    if (!type.valid() || H5Tget_class(type.get()) != H5T_STRING) Fail(place, "attribute '" + name + "' is not a string");
+    if (!type.valid() || H5Tget_class(type.get()) != H5T_STRING) Fail(place, "attribute " + QuoteName(name) + " is not a string");
     const htri_t variable = H5Tis_variable_str(type.get());
-    if (variable < 0) Fail(place, "attribute '" + name + "': unreadable string type (damaged?)");
+    if (variable < 0) Fail(place, "attribute " + QuoteName(name) + ": unreadable string type (damaged?)");
     if (variable > 0) {
       Hdf5Id memory_type(H5Tcopy(H5T_C_S1), H5Tclose);
       H5Tset_size(memory_type.get(), H5T_VARIABLE);
@@ -529,22 +530,22 @@ class Hdf5Reader {
       const herr_t read = H5Aread(attribute.get(), memory_type.get(), &text);
       std::string out = text ? std::string(text, strnlen(text, kMaxStringWidth)) : "";
       H5free_memory(text);
-      if (read < 0) Fail(place, "cannot read attribute '" + name + "'");
+      if (read < 0) Fail(place, "cannot read attribute " + QuoteName(name));
       return out;
     }
     const size_t width = H5Tget_size(type.get());
-    if (width == 0 || width > kMaxStringWidth) Fail(place, "attribute '" + name + "' has string width " + std::to_string(width));
+    if (width == 0 || width > kMaxStringWidth) Fail(place, "attribute " + QuoteName(name) + " has string width " + std::to_string(width));
     std::vector<char> buffer(width + 1, '\0');
-    if (H5Aread(attribute.get(), type.get(), buffer.data()) < 0) Fail(place, "cannot read attribute '" + name + "'");
+    if (H5Aread(attribute.get(), type.get(), buffer.data()) < 0) Fail(place, "cannot read attribute " + QuoteName(name));
     return std::string(buffer.data(), strnlen(buffer.data(), width));
   }
 
   double NumberAttribute(hid_t object, const std::string& place, const std::string& name) const {
     Hdf5Id attribute = OpenAttribute(object, place, name);
     Hdf5Id type(H5Aget_type(attribute.get()), H5Tclose);
-    if (!type.valid() || !IsStandardNumber(type.get())) Fail(place, "attribute '" + name + "' is not a number");
+    if (!type.valid() || !IsStandardNumber(type.get())) Fail(place, "attribute " + QuoteName(name) + " is not a number");
     double value = 0;
-    if (H5Aread(attribute.get(), H5T_NATIVE_DOUBLE, &value) < 0) Fail(place, "cannot read attribute '" + name + "'");
+    if (H5Aread(attribute.get(), H5T_NATIVE_DOUBLE, &value) < 0) Fail(place, "cannot read attribute " + QuoteName(name));
     return value;
   }
 

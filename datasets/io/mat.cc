@@ -8,6 +8,7 @@
 
 #include "core/errors.h"
 #include "datasets/io/binary.h"
+#include "core/printable_text.h"
 
 namespace rpt::io {
 namespace {
@@ -445,7 +446,7 @@ const MatValue& MatValue::Field(const std::string& field, std::size_t element) c
     if (!names.empty()) names += ", ";
     names += s;
   }
-  Fail("struct has no field '" + field + "' (fields: " + names + ")");
+  Fail("struct has no field " + QuoteName(field) + " (fields: " + names + ")");
 }
 
 const MatValue& MatFile::Get(const std::string& name) const {
@@ -456,7 +457,7 @@ const MatValue& MatFile::Get(const std::string& name) const {
     if (!names.empty()) names += ", ";
     names += n;
   }
-  throw InputError(source + ": variable '" + name + "' not found (variables: " + names + ")");
+  throw InputError(source + ": variable " + QuoteName(name) + " not found (variables: " + names + ")");
 }
 
 MatFile ParseMat(std::span<const std::uint8_t> bytes, const std::string& source) {

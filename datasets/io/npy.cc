@@ -12,6 +12,7 @@
 #include "datasets/io/number_text.h"
 #include "datasets/io/binary.h"
 #include "datasets/io/pickle.h"
+#include "core/printable_text.h"
 
 namespace rpt::io {
 namespace {
@@ -76,7 +77,7 @@ class LiteralParser {
       if (word == "False") return MakeBool(false);
       if (word == "None") return MakeNone();
       pos_ = start;
-      Fail("unknown name '" + std::string(word.substr(0, 40)) + "'");
+      Fail("unknown name " + QuoteName(std::string(word.substr(0, 40))));
     }
     Fail(std::string("unexpected character '") + c + "'");
   }
@@ -174,7 +175,7 @@ class LiteralParser {
     const std::string token(text_.substr(start, pos_ - start));
     if (pos_ < text_.size() && (text_[pos_] == 'L' || text_[pos_] == 'l')) ++pos_;  // Python 2 long
     if (token.empty() || token == "-" || token == "+") Fail("bad number");
-    const std::string problem = "bad number '" + token.substr(0, 40) + "' (malformed or out of range)";
+    const std::string problem = "bad number " + QuoteName(token.substr(0, 40)) + " (malformed or out of range)";
     if (is_float) {
       double d = 0;
       if (!io::ParseNumber(token, &d)) Fail(problem);
@@ -194,7 +195,7 @@ DType DescrImpl(const PyValue& descr, const std::string& where, std::size_t dept
   if (depth > kMaxDescrDepth) throw InputError(where + ": descr nests too deeply");
   if (descr.kind == PyKind::kStr) {
     auto t = ParseTypeStr(descr.text);
-    if (!t) throw InputError(where + ": unsupported dtype descr '" + descr.text.substr(0, 40) + "'");
+    if (!t) throw InputError(where + ": unsupported dtype descr " + QuoteName(descr.text.substr(0, 40)));
     return *t;
   }
   if (descr.kind != PyKind::kList) {
@@ -233,7 +234,7 @@ DType DescrImpl(const PyValue& descr, const std::string& where, std::size_t dept
     std::size_t count = 1;
     for (auto d : field.shape) {
       if (d < 0 || !detail::CheckedMul(count, static_cast<std::size_t>(d), &count)) {
-        throw InputError(where + ": field '" + field.name + "' has a bad or overflowing shape");
+        throw InputError(where + ": field " + QuoteName(field.name) + " has a bad or overflowing shape");
       }
     }
     std::size_t size = 0;
@@ -244,7 +245,7 @@ DType DescrImpl(const PyValue& descr, const std::string& where, std::size_t dept
     offset = size;
     // Empty names are numpy's padding entries ('', '|V4').
     if (field.name.empty()) continue;
-    if (!names.insert(field.name).second) throw InputError(where + ": duplicate field name '" + field.name + "'");
+    if (!names.insert(field.name).second) throw InputError(where + ": duplicate field name " + QuoteName(field.name));
     record.fields.push_back(std::move(field));
   }
   record.item_size = offset;
@@ -279,7 +280,7 @@ PyView ParseNpyImpl(Bytes bytes, const std::string& source) {
   if (header->kind != PyKind::kDict) throw InputError(where + ": expected a dict");
   PyView h(header, where);
   for (const char* key : {"descr", "fortran_order", "shape"}) {
-    if (!h.Has(key)) throw InputError(where + ": missing key '" + key + "'");
+    if (!h.Has(key)) throw InputError(where + ": missing key " + QuoteName(key));
   }
   DType dtype = DTypeFromDescr(h.Key("descr").value(), where);
   const bool fortran = h.Key("fortran_order").AsBool();
@@ -382,7 +383,7 @@ std::vector<ZipEntry> ListZip(Bytes z, const std::string& source) {
     ZipEntry entry;
     entry.name.assign(reinterpret_cast<const char*>(c + 46), name_len);
     p += 46 + name_len + extra_len + comment_len;
-    const std::string member = source + ": member '" + entry.name + "'";
+    const std::string member = source + ": member " + QuoteName(entry.name);
     if (csize == 0xFFFFFFFFu || usize == 0xFFFFFFFFu || local == 0xFFFFFFFFu) throw InputError(member + ": zip64 entries are not supported");
     if (flags & 1) throw InputError(member + ": encrypted ZIP members are not supported");
     if (method != 0 && method != 8) {
@@ -411,7 +412,7 @@ std::vector<ZipEntry> ListZip(Bytes z, const std::string& source) {
 
 std::vector<std::uint8_t> ExtractZip(Bytes z, const ZipEntry& entry, const std::string& source,
                                      InflateBudget* budget) {
-  const std::string member = source + ": member '" + entry.name + "'";
+  const std::string member = source + ": member " + QuoteName(entry.name);
   const Bytes raw = z.subspan(entry.data_offset, entry.compressed_size);
   std::vector<std::uint8_t> out;
   if (entry.method == 0) {

@@ -10,6 +10,7 @@
 #include "core/errors.h"
 #include "core/utf8.h"
 #include "datasets/io/json_output.h"
+#include "core/printable_text.h"
 
 namespace rpt::io {
 namespace {
@@ -107,7 +108,7 @@ void NpzWriter::BeginArray(const std::string& name, const std::string& descr, co
   expected_bytes_ = count * ItemSize(descr);
   member.size = header.size() + expected_bytes_;
   if (member.size > kZipLimit || member.local_offset > kZipLimit) {
-    Fail("member '" + member.name + "' would reach " + std::to_string(member.local_offset + member.size) +
+    Fail("member " + QuoteName(member.name) + " would reach " + std::to_string(member.local_offset + member.size) +
          " bytes; an NPZ without zip64 holds at most 4 GiB (use --export h5)");
   }
   std::vector<char> local;

@@ -13,6 +13,7 @@
 
 #include "core/errors.h"
 #include "datasets/io/binary.h"
+#include "core/printable_text.h"
 
 namespace rpt::io {
 namespace {
@@ -372,7 +373,7 @@ class Vm {
       if (!out) Fail("encode: text is not representable in latin-1");
       return *out;
     }
-    Fail("encode: unsupported encoding '" + enc + "'");
+    Fail("encode: unsupported encoding " + QuoteName(enc));
   }
 
   // Items of an iterable argument (list, tuple, set; a dict yields its keys).
@@ -459,7 +460,7 @@ class Vm {
       want_args(1, 3);
       if (a[0]->kind != PyKind::kStr) Fail(std::string("dtype: expected a type string, got ") + PyKindName(a[0]->kind));
       auto parsed = ParseTypeStr(a[0]->text);
-      if (!parsed) Fail("dtype: unsupported type string '" + a[0]->text.substr(0, 40) + "'");
+      if (!parsed) Fail("dtype: unsupported type string " + QuoteName(a[0]->text.substr(0, 40)));
       auto node = std::make_shared<PyValue>();
       node->kind = PyKind::kDType;
       node->dtype = std::make_shared<DType>(*parsed);
@@ -587,7 +588,7 @@ class Vm {
         if (name->kind != PyKind::kStr) Fail("dtype state: field name must be a str");
         auto k = KeyString(*name);
         auto it = s[4]->key_index.find(*k);
-        if (it == s[4]->key_index.end()) Fail("dtype state: no description for field '" + name->text + "'");
+        if (it == s[4]->key_index.end()) Fail("dtype state: no description for field " + QuoteName(name->text));
         const PyValue& desc = *s[4]->entries[it->second].second;
         if (desc.kind != PyKind::kTuple || desc.items.size() < 2) Fail("dtype state: bad field description");
         const DType& ft = DTypeArg(*desc.items[0], "dtype field");
@@ -604,7 +605,7 @@ class Vm {
         }
         const std::size_t size = ft.item_size;
         if (offset < 0 || static_cast<std::size_t>(offset) > dtype.item_size || size > dtype.item_size - static_cast<std::size_t>(offset)) {
-          Fail("dtype state: field '" + field.name + "' lies outside the record");
+          Fail("dtype state: field " + QuoteName(field.name) + " lies outside the record");
         }
         field.offset = static_cast<std::size_t>(offset);
         fields.push_back(std::move(field));
@@ -671,7 +672,7 @@ class Vm {
     if (canonical.empty()) {
       std::string shown = module + "." + name;
       if (shown.size() > 200) shown = shown.substr(0, 200) + "...";
-      Fail("global '" + shown + "' is not allowed (only numpy arrays/dtypes/scalars, collections.defaultdict/"
+      Fail("global " + QuoteName(shown) + " is not allowed (only numpy arrays/dtypes/scalars, collections.defaultdict/"
            "OrderedDict and builtin containers may be loaded)");
     }
     auto node = std::make_shared<PyValue>();

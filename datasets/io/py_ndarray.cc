@@ -14,6 +14,7 @@
 #include <limits>
 
 #include "core/errors.h"
+#include "core/printable_text.h"
 
 namespace rpt::io {
 namespace {
@@ -295,7 +296,7 @@ std::vector<double> NdArray::ToDoubles() const {
 
 NdArray NdArray::Field(std::string_view name) const {
   const DTypeField* field = dtype.FindField(name);
-  if (!field) throw InputError(Describe() + ": no field '" + std::string(name) + "'");
+  if (!field) throw InputError(Describe() + ": no field " + QuoteName(std::string(name)));
   NdArray out;
   out.dtype = field->dtype;
   out.shape = shape;
@@ -303,7 +304,7 @@ NdArray NdArray::Field(std::string_view name) const {
   const std::size_t records = Size();
   const std::size_t field_bytes = field->dtype.item_size * field->ElementCount();
   if (field->offset + field_bytes > dtype.item_size || records * dtype.item_size > data.size()) {
-    throw InputError(Describe() + ": field '" + std::string(name) + "' lies outside the record");
+    throw InputError(Describe() + ": field " + QuoteName(std::string(name)) + " lies outside the record");
   }
   out.data.resize(records * field_bytes);
   for (std::size_t r = 0; r < records; ++r) {

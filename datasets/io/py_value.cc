@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "core/errors.h"
+#include "core/printable_text.h"
 
 namespace rpt::io {
 namespace {
@@ -477,7 +478,7 @@ PyView PyView::Field(std::string_view name) const {
       if (!names.empty()) names += ", ";
       names += f.name;
     }
-    Fail("structured array has no field '" + std::string(name) + "' (fields: " + names + ")");
+    Fail("structured array has no field " + QuoteName(std::string(name)) + " (fields: " + names + ")");
   }
   auto node = std::make_shared<PyValue>();
   node->kind = PyKind::kNdArray;

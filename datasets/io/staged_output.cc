@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "core/printable_text.h"
 
 namespace rpt::io {
 namespace {
@@ -287,7 +288,7 @@ fs::path CreateFolderInside(const fs::path& root, const fs::path& relative) {
   fs::path folder = root;
   for (const fs::path& name : relative) {
     if (name == "." || name == ".." || name.empty()) {
-      throw std::logic_error("CreateFolderInside: " + relative.string() + " holds '" + name.string() + "'");
+      throw std::logic_error("CreateFolderInside: " + relative.string() + " holds " + QuoteName(name.string()));
     }
     folder /= name;
     std::error_code ec;

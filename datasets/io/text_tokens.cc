@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "core/errors.h"
+#include "core/printable_text.h"
 
 namespace rpt::io {
 namespace {
@@ -61,7 +62,7 @@ bool TextTokens::AtEnd() {
 void TextTokens::ExpectEnd(const std::string& what) {
   if (AtEnd()) return;
   const std::string_view token = Next();
-  Fail("'" + Shown(token) + "' after the end of " + what);
+  Fail(QuoteName(Shown(token)) + " after the end of " + what);
 }
 
 std::int64_t TextTokens::MaxTokensLeft() const {
@@ -87,11 +88,11 @@ void TextTokens::FailAtEnd(const std::string& what) const {
 
 void TextTokens::FailInt(std::string_view token, std::int64_t min_value, std::int64_t max_value,
                          const std::string& what) const {
-  Fail(what + ": '" + Shown(token) + "' is not an integer " + IntegerRangeText(min_value, max_value));
+  Fail(what + ": " + QuoteName(Shown(token)) + " is not an integer " + IntegerRangeText(min_value, max_value));
 }
 
 void TextTokens::FailNumber(std::string_view token, const std::string& what) const {
-  Fail(what + ": '" + Shown(token) + "' is not a finite number");
+  Fail(what + ": " + QuoteName(Shown(token)) + " is not a finite number");
 }
 
 void TextTokens::FailCount(std::int64_t count, std::int64_t tokens_each, const std::string& what) const {

@@ -14,6 +14,7 @@
 #include "datasets/io/number_text.h"
 #include "datasets/readers/generic_detections.h"
 #include "datasets/readers/generic_internal.h"
+#include "core/printable_text.h"
 
 namespace rpt {
 namespace {
@@ -84,7 +85,7 @@ std::unordered_map<std::int64_t, ViewKey> AnnotationImages(const CocoDetectionsO
     } else {
       const std::string file_name = io::JsonString(root, pointer + "/file_name", source);
       if (!mapper->Apply(file_name, source + ": " + pointer + "/file_name", &key.frame_id, &key.camera)) {
-        throw InputError(source + ": " + pointer + "/file_name: '" + file_name + "' does not match the pattern '" +
+        throw InputError(source + ": " + pointer + "/file_name: " + QuoteName(file_name) + " does not match the pattern '" +
                          options.file_name_mapping.pattern + "' (or give the image \"frame_id\" and \"camera\")");
       }
     }
@@ -92,7 +93,7 @@ std::unordered_map<std::int64_t, ViewKey> AnnotationImages(const CocoDetectionsO
     const auto [it, fresh] = image_of_view.emplace(std::make_pair(key.frame_id, key.camera), id);
     if (!fresh) {
       throw InputError(source + ": images " + std::to_string(it->second) + " and " + std::to_string(id) +
-                       " both map to frame '" + key.frame_id + "', camera '" + key.camera + "'");
+                       " both map to frame " + QuoteName(key.frame_id) + ", camera " + QuoteName(key.camera));
     }
   }
   return views;

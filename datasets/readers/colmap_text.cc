@@ -10,6 +10,7 @@
 #include "core/errors.h"
 #include "datasets/io/number_text.h"
 #include "datasets/input_warnings.h"
+#include "core/printable_text.h"
 
 namespace rpt {
 namespace {
@@ -70,14 +71,14 @@ class NumberedLines {
 
 double ParseDouble(const std::string& token, const std::string& what, const std::string& where) {
   double value = 0;
-  if (!io::ParseNumber(token, &value)) throw InputError(where + ": " + what + " '" + token + "' is not a number");
+  if (!io::ParseNumber(token, &value)) throw InputError(where + ": " + what + " " + QuoteName(token) + " is not a number");
   if (!std::isfinite(value)) throw InputError(where + ": " + what + " is NaN or infinite");
   return value;
 }
 
 int ParseColmapInt(const std::string& token, const std::string& what, const std::string& where) {
   int value = 0;
-  if (!io::ParseInteger(token, &value)) throw InputError(where + ": " + what + " '" + token + "' is not an integer");
+  if (!io::ParseInteger(token, &value)) throw InputError(where + ": " + what + " " + QuoteName(token) + " is not an integer");
   return value;
 }
 

@@ -7,6 +7,7 @@
 
 #include "core/errors.h"
 #include "core/text.h"
+#include "core/printable_text.h"
 
 namespace rpt {
 
@@ -28,7 +29,7 @@ std::unique_ptr<FrameSource> OpenDetectionFrames(std::vector<Camera> cameras, De
     for (const std::string& name : frame.cameras) {
       const auto it = camera_idx.find(name);
       if (it == camera_idx.end()) {
-        throw InputError(source + ": frame '" + frame.frame_id + "': camera '" + name + "' is not in the calibration " +
+        throw InputError(source + ": frame " + QuoteName(frame.frame_id) + ": camera " + QuoteName(name) + " is not in the calibration " +
                          calibration_file.string() + " (cameras: " + Join(names, ", ") + ")");
       }
       (*view_camera)[f].push_back(it->second);

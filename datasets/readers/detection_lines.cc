@@ -18,6 +18,7 @@
 #include "datasets/io/input_limits.h"
 #include "datasets/io/json_pull.h"
 #include "datasets/readers/generic_common.h"
+#include "core/printable_text.h"
 
 namespace rpt {
 namespace {
@@ -51,7 +52,7 @@ class KeyCounts {
   void Report(const std::string& source, const std::string& objects, InputWarnings* warnings) const {
     for (const auto& [name, count] : counts_) {
       warnings->AddUnused(source,
-                          objects + " with the unknown key '" + Utf8Excerpt(name, kMaxKeyBytes) + "'" +
+                          objects + " with the unknown key " + QuoteName(Utf8Excerpt(name, kMaxKeyBytes)) +
                               DidYouMean(name, known_) + ", not read",
                           count);
     }
@@ -256,7 +257,7 @@ class DetectionLineSource final : public FrameSource {
     const std::size_t kept = std::min(num_recent_, kRecentIds);
     for (std::size_t i = 0; i < kept; ++i) {
       if (recent_ids_[i] == hash)
-        Fail("/id", "frame id '" + id + "' repeats one of the last " + std::to_string(kRecentIds) + " frames");
+        Fail("/id", "frame id " + QuoteName(id) + " repeats one of the last " + std::to_string(kRecentIds) + " frames");
     }
     recent_ids_[num_recent_++ % kRecentIds] = hash;
   }
@@ -281,12 +282,12 @@ class DetectionLineSource final : public FrameSource {
           const std::string_view name = json_.String();
           const auto it = camera_idx_.find(name);
           if (it == camera_idx_.end()) {
-            Fail(ViewPointer(v) + "/camera", "camera '" + std::string(name) + "' is not in the calibration " +
+            Fail(ViewPointer(v) + "/camera", "camera " + QuoteName(std::string(name)) + " is not in the calibration " +
                                                  calibration_file_ + " (cameras: " + Join(camera_names_, ", ") + ")");
           }
           camera = it->second;
           if (camera_seen_[camera])
-            Fail(ViewPointer(v) + "/camera", "camera '" + std::string(name) + "' appears twice in this frame");
+            Fail(ViewPointer(v) + "/camera", "camera " + QuoteName(std::string(name)) + " appears twice in this frame");
           camera_seen_[camera] = true;
         } else if (key == "poses") {
           if (has_poses) Fail(ViewPointer(v) + "/poses", "given twice");

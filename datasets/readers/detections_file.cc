@@ -9,6 +9,7 @@
 #include "datasets/readers/generic_detections.h"
 #include "datasets/readers/generic_internal.h"
 #include "datasets/readers/hdf5_cache.h"
+#include "core/printable_text.h"
 
 namespace rpt {
 
@@ -60,7 +61,7 @@ DetectionsFormat DetectionsFormatOf(const std::filesystem::path& path) {
                      SupportedDetectionFormats());
   }
   if (extension == ".pkl" || extension == ".pickle") return DetectionsFormat::kVoxelPosePickle;
-  throw InputError(source + ": unknown detection format '" + extension + "'; supported:\n" + SupportedDetectionFormats());
+  throw InputError(source + ": unknown detection format " + QuoteName(extension) + "; supported:\n" + SupportedDetectionFormats());
 }
 
 const char* DetectionsFormatName(DetectionsFormat format) {

@@ -20,6 +20,7 @@
 #include "datasets/io/pickle.h"
 #include "datasets/readers/colmap_text.h"
 #include "datasets/readers/h36m_ego_common.h"
+#include "core/printable_text.h"
 
 namespace rpt {
 namespace {
@@ -108,7 +109,7 @@ std::vector<SequenceDir> FindSequences(const EgoHumansOptions& options) {
     if (!found) {
       std::string names;
       for (const SequenceDir& s : all) names += (names.empty() ? "" : ", ") + s.big + "/" + s.seq;
-      throw InputError(PathName(options.root) + ": unknown sequence '" + wanted + "' (found " + names + ")");
+      throw InputError(PathName(options.root) + ": unknown sequence " + QuoteName(wanted) + " (found " + names + ")");
     }
   }
   return out;
@@ -171,7 +172,7 @@ std::vector<Camera> ReadExoCameras(const EgoHumansOptions& options, const Sequen
     by_name[name] = &c;
   }
   for (const std::string& wanted : options.cameras) {
-    if (!by_name.count(wanted)) throw InputError(PathName(cameras_path) + ": unknown exo camera '" + wanted + "'");
+    if (!by_name.count(wanted)) throw InputError(PathName(cameras_path) + ": unknown exo camera " + QuoteName(wanted));
   }
 
   std::vector<Camera> out;
@@ -197,8 +198,8 @@ std::vector<Camera> ReadExoCameras(const EgoHumansOptions& options, const Sequen
         if (image.name.substr(0, image.name.find('/')) != name) continue;
         const auto stamp = TimeStampOf(image.name);
         if (!stamp) {
-          throw InputError(PathName(images_path) + ":" + std::to_string(image.line) + ": image name '" + image.name +
-                           "' is not <camera>/<time stamp>.jpg");
+          throw InputError(PathName(images_path) + ":" + std::to_string(image.line) + ": image name " + QuoteName(image.name) +
+                           " is not <camera>/<time stamp>.jpg");
         }
         const long long distance = std::llabs(static_cast<long long>(*stamp) - reference_time_stamp);
         if (distance < best_distance) best = &image, best_distance = distance;
@@ -208,7 +209,7 @@ std::vector<Camera> ReadExoCameras(const EgoHumansOptions& options, const Sequen
       pose_file = PathName(images_path);
       where = pose_file + ":" + std::to_string(best->line);
     }
-    const std::string composed = " composed with " + PathName(transforms_path) + "['" + options.anchor + "']";
+    const std::string composed = " composed with " + PathName(transforms_path) + "[" + QuoteName(options.anchor) + "]";
     SetPose(cam_from_colmap * colmap_from_anchor, pose_file + composed, where + composed, warnings, &camera);
     h36m_ego::CheckCamera(camera, where);
     out.push_back(std::move(camera));
@@ -234,7 +235,7 @@ std::vector<int> GtTimeStamps(const EgoHumansOptions& options, const SequenceDir
       first_other = name;
     }
   }
-  warnings->AddUnused(PathName(gt_dir), "entries not named <time stamp>.npy ignored (e.g. '" + first_other + "')",
+  warnings->AddUnused(PathName(gt_dir), "entries not named <time stamp>.npy ignored (e.g. " + QuoteName(first_other) + ")",
                       others);
   std::sort(out.begin(), out.end());
   if (out.empty()) throw InputError(PathName(gt_dir) + ": no %05d.npy files");

@@ -10,6 +10,7 @@
 
 #include "core/errors.h"
 #include "datasets/io/number_text.h"
+#include "core/printable_text.h"
 
 namespace rpt {
 namespace path_template {
@@ -61,7 +62,7 @@ std::vector<TemplatePart> ParseTemplate(const std::string& text, const std::stri
   std::vector<TemplatePart> parts;
   std::string literal;
   auto fail = [&](const std::string& why) {
-    throw ConfigError(what + ": template '" + text + "': " + why);
+    throw ConfigError(what + ": template " + QuoteName(text) + ": " + why);
   };
   for (size_t i = 0; i < text.size(); ++i) {
     const char c = text[i];
@@ -128,12 +129,12 @@ std::string Expand(const std::vector<TemplatePart>& parts, const std::smatch& ma
     }
     long long number = 0;
     if (!io::ParseInteger(value, &number) || number < 0) {
-      throw InputError(source + ": '" + text + "': capture group " + std::to_string(part.group) + " is '" + value +
-                       "', not a non-negative integer");
+      throw InputError(source + ": " + QuoteName(text) + ": capture group " + std::to_string(part.group) + " is " + QuoteName(value) +
+                       ", not a non-negative integer");
     }
     number += part.offset;
     if (number < 0) {
-      throw InputError(source + ": '" + text + "': frame number " + value + " " + std::to_string(part.offset) +
+      throw InputError(source + ": " + QuoteName(text) + ": frame number " + value + " " + std::to_string(part.offset) +
                        " is negative");
     }
     std::string digits = std::to_string(number);
@@ -162,11 +163,11 @@ void CheckJointNames(const JointNames& names, const std::string& where) {
   for (size_t j = 0; j < names.size(); ++j) {
     const std::string& name = names[j];
     if (name.empty()) throw InputError(where + ": joint " + std::to_string(j) + " has an empty name");
-    if (!seen.insert(name).second) throw InputError(where + ": joint name '" + name + "' appears twice");
+    if (!seen.insert(name).second) throw InputError(where + ": joint name " + QuoteName(name) + " appears twice");
     if (!IsKnownJointName(name)) {
       const std::string suggestion = Suggestion(name);
-      throw InputError(where + ": unknown joint name '" + name + "'" +
-                       (suggestion.empty() ? std::string() : " (did you mean '" + suggestion + "'?)") +
+      throw InputError(where + ": unknown joint name " + QuoteName(name) +
+                       (suggestion.empty() ? std::string() : " (did you mean " + QuoteName(suggestion) + "?)") +
                        "; names follow core/joints.h (nose, eye_left, shoulder_right, ...), custom joints need the "
                        "prefix 'extra_'");
     }
@@ -184,7 +185,7 @@ PathMapper::PathMapper(const PathMapping& mapping, const std::string& what) {
   try {
     impl->pattern = std::regex(mapping.pattern, std::regex::ECMAScript);
   } catch (const std::regex_error& e) {
-    throw ConfigError(what + ": pattern '" + mapping.pattern + "' is not a valid regular expression (" + e.what() + ")");
+    throw ConfigError(what + ": pattern " + QuoteName(mapping.pattern) + " is not a valid regular expression (" + e.what() + ")");
   }
   impl->frame_id = ParseTemplate(mapping.frame_id, what + " frame id");
   impl->camera = ParseTemplate(mapping.camera, what + " camera");

@@ -13,6 +13,7 @@
 #include "datasets/io/text_file.h"
 #include "datasets/readers/generic_common.h"
 #include "datasets/readers/generic_internal.h"
+#include "core/printable_text.h"
 
 namespace rpt {
 namespace {
@@ -65,7 +66,7 @@ void ValidateDetections(const Detections& detections, const std::string& source)
   const int num_joints = static_cast<int>(detections.joints.size());
   std::unordered_set<std::string> frame_ids;
   for (const FrameDetections& frame : detections.frames) {
-    const std::string where = source + ": frame '" + frame.frame_id + "'";
+    const std::string where = source + ": frame " + QuoteName(frame.frame_id);
     if (frame.frame_id.empty()) throw InputError(source + ": a frame has an empty id");
     if (!frame_ids.insert(frame.frame_id).second) throw InputError(where + ": duplicate frame id");
     if (frame.cameras.size() != frame.views.size()) {
@@ -74,7 +75,7 @@ void ValidateDetections(const Detections& detections, const std::string& source)
     }
     std::unordered_set<std::string> cameras;
     for (size_t v = 0; v < frame.views.size(); ++v) {
-      const std::string view_where = where + ", camera '" + frame.cameras[v] + "'";
+      const std::string view_where = where + ", camera " + QuoteName(frame.cameras[v]);
       if (frame.cameras[v].empty()) throw InputError(where + ": view " + std::to_string(v) + " has no camera name");
       if (!cameras.insert(frame.cameras[v]).second) throw InputError(view_where + ": camera appears twice");
       const Poses2D& view = frame.views[v];
@@ -130,7 +131,7 @@ Detections ReadGenericDetections(const std::filesystem::path& path) {
     FrameDetections& frame = detections.frames.emplace_back();
     frame.frame_id = generic_internal::IdString(root, pointer + "/id", source);
     if (const auto [it, fresh] = frame_of_id.emplace(frame.frame_id, f); !fresh) {
-      Fail(source, pointer + "/id", "frame id '" + frame.frame_id + "' also used by /frames/" + std::to_string(it->second));
+      Fail(source, pointer + "/id", "frame id " + QuoteName(frame.frame_id) + " also used by /frames/" + std::to_string(it->second));
     }
     const auto views_it = frames[f].find("views");
     if (views_it == frames[f].end()) Fail(source, pointer + "/views", "missing");
@@ -144,7 +145,7 @@ Detections ReadGenericDetections(const std::filesystem::path& path) {
       unknown_view.Count(views[v]);
       std::string camera = io::JsonString(root, view_pointer + "/camera", source);
       if (camera.empty()) Fail(source, view_pointer + "/camera", "empty camera name");
-      if (!cameras.insert(camera).second) Fail(source, view_pointer + "/camera", "camera '" + camera + "' appears twice in this frame");
+      if (!cameras.insert(camera).second) Fail(source, view_pointer + "/camera", "camera " + QuoteName(camera) + " appears twice in this frame");
       const auto poses = views[v].find("poses");
       if (poses == views[v].end()) Fail(source, view_pointer + "/poses", "missing (write [] for no detections)");
       frame.cameras.push_back(std::move(camera));

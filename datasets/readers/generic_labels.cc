@@ -22,6 +22,7 @@
 #include "datasets/readers/detections_file.h"
 #include "datasets/readers/generic_common.h"
 #include "datasets/readers/generic_internal.h"
+#include "core/printable_text.h"
 
 namespace rpt {
 namespace {
@@ -53,8 +54,8 @@ std::string CameraDifference(const std::vector<Camera>& a, const std::vector<Cam
   for (size_t c = 0; c < a.size(); ++c) {
     const Camera& x = a[c];
     const Camera& y = b[c];
-    const std::string where = "camera " + std::to_string(c) + " ('" + x.name + "')";
-    if (x.name != y.name) return "camera " + std::to_string(c) + " is '" + x.name + "' vs '" + y.name + "'";
+    const std::string where = "camera " + std::to_string(c) + " (" + QuoteName(x.name) + ")";
+    if (x.name != y.name) return "camera " + std::to_string(c) + " is " + QuoteName(x.name) + " vs " + QuoteName(y.name);
     if (x.width != y.width || x.height != y.height) return where + ": image size differs";
     if (x.model != y.model) return where + ": distortion model differs";
     if (!NearAll(x.K, y.K)) return where + ": K differs";
@@ -247,7 +248,7 @@ std::vector<std::unique_ptr<FrameSource>> OpenLabels(const std::filesystem::path
 
     const std::string id = IdString(root, pointer + "/id", source);
     if (const auto [seen, fresh] = label_of_id.emplace(id, i); !fresh) {
-      Fail(source, pointer + "/id", "id '" + id + "' is also used by label " + std::to_string(seen->second));
+      Fail(source, pointer + "/id", "id " + QuoteName(id) + " is also used by label " + std::to_string(seen->second));
     }
     SequenceHeader& header = build.header;
     const json& cameras = io::JsonAt(root, pointer + "/cameras", source);
@@ -265,16 +266,16 @@ std::vector<std::unique_ptr<FrameSource>> OpenLabels(const std::filesystem::path
         const std::string difference =
             CameraDifference(header.cameras, camera_json::ParseCameras(root, pointer + "/cameras", source, nullptr));
         if (!difference.empty()) {
-          throw InputError(source + ": labels '" + build.first_label_id + "' and '" + id + "' (" + pointer +
-                           ") of sequence '" + header.name + "' have different cameras (" + difference +
+          throw InputError(source + ": labels " + QuoteName(build.first_label_id) + " and " + QuoteName(id) + " (" + pointer +
+                           ") of sequence " + QuoteName(header.name) + " have different cameras (" + difference +
                            "); give them different \"scene\" values");
         }
       }
       if (ground_truth) {
         const json& joints = io::JsonAt(root, pointer + "/joints", source);
         if (joints != build.first_joints && ParseJointNames(root, pointer + "/joints", source) != header.gt_joints) {
-          throw InputError(source + ": labels '" + build.first_label_id + "' and '" + id + "' (" + pointer +
-                           ") of sequence '" + header.name + "' have different \"joints\"");
+          throw InputError(source + ": labels " + QuoteName(build.first_label_id) + " and " + QuoteName(id) + " (" + pointer +
+                           ") of sequence " + QuoteName(header.name) + " have different \"joints\"");
         }
       }
     }
@@ -331,7 +332,7 @@ std::vector<std::unique_ptr<FrameSource>> OpenLabels(const std::filesystem::path
       const LabelRef& label = build.labels[f];
       throw InputError(source + ": label '" +
                        IdString(file->Parse(label), "/" + std::to_string(label.index) + "/id", source) +
-                       "' of sequence '" + header.name + "' has no \"timestamp\" while others have one");
+                       "' of sequence " + QuoteName(header.name) + " has no \"timestamp\" while others have one");
     }
     header.fps = build.fps.value_or(options.fps);
     if (none) {
@@ -360,7 +361,7 @@ std::vector<std::unique_ptr<FrameSource>> OpenLabels(const std::filesystem::path
         std::make_unique<IndexedFrameSource>(std::move(header), count, std::move(convert), std::move(build.warnings)));
   }
   if (sources.empty()) {
-    throw InputError(source + ": no labels" + (options.split.empty() ? std::string() : " in split '" + options.split + "'"));
+    throw InputError(source + ": no labels" + (options.split.empty() ? std::string() : " in split " + QuoteName(options.split)));
   }
   return sources;
 }
@@ -376,15 +377,15 @@ int WriteLabels(const std::filesystem::path& path, const std::vector<Sequence>& 
   std::vector<OrderedJson> labels;
   std::unordered_set<std::string> ids;
   for (const Sequence& sequence : sequences) {
-    CheckJointNames(sequence.gt_joints, source + ": cannot write sequence '" + sequence.name + "'");
+    CheckJointNames(sequence.gt_joints, source + ": cannot write sequence " + QuoteName(sequence.name));
     OrderedJson cameras = OrderedJson::array();
     for (const Camera& camera : sequence.cameras)
       cameras.push_back(
-          camera_json::CameraJson(camera, source, "sequence '" + sequence.name + "', camera '" + camera.name + "'"));
+          camera_json::CameraJson(camera, source, "sequence " + QuoteName(sequence.name) + ", camera " + QuoteName(camera.name)));
     const OrderedJson joints = sequence.gt_joints;
     const int num_joints = static_cast<int>(sequence.gt_joints.size());
     for (const SequenceFrame& frame : sequence.frames) {
-      const std::string where = "sequence '" + sequence.name + "', frame '" + frame.id + "'";
+      const std::string where = "sequence " + QuoteName(sequence.name) + ", frame " + QuoteName(frame.id);
       if (!ids.insert(frame.id).second) throw InputError(source + ": cannot write " + where + ": duplicate frame id");
       if (frame.gt.num_persons() > 0 && frame.gt.num_joints != num_joints) {
         throw InputError(source + ": cannot write " + where + ": " + std::to_string(frame.gt.num_joints) +

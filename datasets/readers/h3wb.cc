@@ -26,6 +26,7 @@
 #include "datasets/readers/h3wb_internal.h"
 #include "datasets/readers/human36m.h"
 #include "datasets/readers/human36m_internal.h"
+#include "core/printable_text.h"
 
 namespace rpt {
 namespace h3wb {
@@ -91,7 +92,7 @@ Options ParseH3wbOptions(const DatasetRequest& request) {
   }
   if (params.format == H3wbFormat::kAuto) {
     const std::string ext = o.file.extension().string();
-    if (ext != ".npz" && ext != ".json") throw ConfigError("h3wb: cannot tell the format of '" + o.file.string() + "' (pass --param format=json|npz)");
+    if (ext != ".npz" && ext != ".json") throw ConfigError("h3wb: cannot tell the format of " + QuoteName(o.file.string()) + " (pass --param format=json|npz)");
     o.npz = ext == ".npz";
   } else {
     o.npz = params.format == H3wbFormat::kNpz;
@@ -192,9 +193,9 @@ std::vector<Clip> ReadNpzClips(const Options& options, bool want_2d) {
   std::vector<Clip> out;
   for (const std::string& subject : options.subjects) {
     const auto actions = train.Find(subject);
-    if (!actions) train.Fail("unknown subject '" + subject + "' (file has " + SubjectList(train) + ")");
+    if (!actions) train.Fail("unknown subject " + QuoteName(subject) + " (file has " + SubjectList(train) + ")");
     const auto subject_meta = metadata.Find(subject);
-    if (!subject_meta) metadata.Fail("unknown subject '" + subject + "' (file has " + SubjectList(metadata) + ")");
+    if (!subject_meta) metadata.Fail("unknown subject " + QuoteName(subject) + " (file has " + SubjectList(metadata) + ")");
     std::vector<Camera> cameras;
     InputWarnings camera_warnings;  // taken over by the subject's first clip
     for (const std::string& id : Human36mCameraIds()) {

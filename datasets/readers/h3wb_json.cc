@@ -25,6 +25,7 @@
 #include "datasets/readers/h36m_ego_common.h"
 #include "datasets/readers/human36m.h"
 #include "datasets/readers/human36m_internal.h"
+#include "core/printable_text.h"
 
 namespace rpt::h3wb {
 namespace {
@@ -470,7 +471,7 @@ std::vector<Clip> ReadJsonClips(const Options& options, bool want_2d) {
     if (!any) {
       std::string known;
       for (const std::string& s : seen_subjects) known += (known.empty() ? "" : ", ") + s;
-      throw InputError(source + ": unknown subject '" + subject + "' (file has " + (known.empty() ? "none" : known) + ")");
+      throw InputError(source + ": unknown subject " + QuoteName(subject) + " (file has " + (known.empty() ? "none" : known) + ")");
     }
   }
   return out;

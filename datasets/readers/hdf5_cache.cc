@@ -40,8 +40,8 @@ void CheckFormat(io::Hdf5Reader& reader, hid_t group, const std::string& place, 
   if (found != format) {
     // A damaged file can hold any bytes there (even a heap address HDF5 returned): quoted inside the
     // one-line message, newlines and tabs included, escaped.
-    reader.Fail(place, "attribute format is '" + PrintableText(found, LineBreaks::kEscape) + "', expected '" + format +
-                           "' (not written by rpt?)");
+    reader.Fail(place, "attribute format is " + QuoteName(found) + ", expected " + QuoteName(format) +
+                           " (not written by rpt?)");
   }
   const double version = reader.NumberAttribute(group, place, "version");
   if (version != kVersion && version != kVersionWithoutChecksums) {
@@ -151,7 +151,7 @@ void FillViews(const std::vector<T>& values, const Hdf5Reader& reader, const std
         // "<file>: /detections/keypoints: person 3 (frame 'f', camera 'c'), joint 'nose'" for messages.
         const auto where = [&] {
           return reader.source() + ": " + name + ": person " + std::to_string(i / stride) + " (frame '" +
-                 frame.frame_id + "', camera '" + frame.cameras[v] + "'), joint '" +
+                 frame.frame_id + "', camera " + QuoteName(frame.cameras[v]) + "), joint '" +
                  detections->joints[(i % stride) / 3] + "'";
         };
         if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(static_cast<double>(values[i + 2]))) {
@@ -208,7 +208,7 @@ Detections ReadDetectionsHdf5(const std::filesystem::path& path) {
     FrameDetections& frame = detections.frames[f];
     frame.frame_id = frame_ids[f];
     if (frame.frame_id.empty()) reader.Fail(name + "/frame_ids", "frame " + std::to_string(f) + " has an empty id");
-    if (!seen_ids.insert(frame.frame_id).second) reader.Fail(name + "/frame_ids", "frame id '" + frame.frame_id + "' appears twice");
+    if (!seen_ids.insert(frame.frame_id).second) reader.Fail(name + "/frame_ids", "frame id " + QuoteName(frame.frame_id) + " appears twice");
     for (std::int64_t v = view_offsets[f]; v < view_offsets[f + 1]; ++v) {
       const std::int32_t c = view_cameras[static_cast<size_t>(v)];
       if (c < 0 || static_cast<size_t>(c) >= cameras.size()) {
@@ -216,7 +216,7 @@ Detections ReadDetectionsHdf5(const std::filesystem::path& path) {
                                                 std::to_string(static_cast<long long>(cameras.size()) - 1));
       }
       if (std::find(frame.cameras.begin(), frame.cameras.end(), cameras[c]) != frame.cameras.end()) {
-        reader.Fail(name + "/view_cameras", "frame '" + frame.frame_id + "' has camera '" + cameras[c] + "' twice");
+        reader.Fail(name + "/view_cameras", "frame " + QuoteName(frame.frame_id) + " has camera " + QuoteName(cameras[c]) + " twice");
       }
       frame.cameras.push_back(cameras[c]);
     }
@@ -257,8 +257,8 @@ void WriteSequencesHdf5(const std::filesystem::path& path, const std::vector<Seq
   for (const Sequence& sequence : sequences) {
     Sequence without_views = sequence;  // views are not stored; validate cameras and GT only
     for (SequenceFrame& frame : without_views.frames) frame.views.clear();
-    ValidateSequence(without_views, path.string() + ": cannot write sequence '" + sequence.name + "'");
-    CheckJointNames(sequence.gt_joints, path.string() + ": cannot write sequence '" + sequence.name + "'");
+    ValidateSequence(without_views, path.string() + ": cannot write sequence " + QuoteName(sequence.name));
+    CheckJointNames(sequence.gt_joints, path.string() + ": cannot write sequence " + QuoteName(sequence.name));
   }
   Hdf5Writer writer(path, options.add_to_existing);
   Hdf5Id root = writer.Group("/sequences");
@@ -386,7 +386,7 @@ std::vector<std::unique_ptr<FrameSource>> OpenSequencesHdf5(const std::filesyste
       }
       camera.R = AcceptRotation(
           camera.R, reader.source(),
-          reader.source() + ": " + name + "/camera_R: camera " + std::to_string(c) + " ('" + camera.name + "')",
+          reader.source() + ": " + name + "/camera_R: camera " + std::to_string(c) + " (" + QuoteName(camera.name) + ")",
           &warnings);
       std::copy(dist.begin() + 5 * c, dist.begin() + 5 * c + 5, camera.dist.begin());
     }

@@ -19,6 +19,7 @@
 #include "datasets/io/npy.h"
 #include "datasets/readers/h36m_ego_common.h"
 #include "datasets/readers/human36m_internal.h"
+#include "core/printable_text.h"
 
 namespace rpt {
 namespace {
@@ -361,7 +362,7 @@ std::vector<std::unique_ptr<FrameSource>> OpenFromLabels(const Human36mOptions& 
       known += (i ? ", " : "") + subject_names.At(i).AsStr();
       if (subject_names.At(i).AsStr() == subject) s = i;
     }
-    if (s == subject_names.Size()) subject_names.Fail("unknown subject '" + subject + "' (file has " + known + ")");
+    if (s == subject_names.Size()) subject_names.Fail("unknown subject " + QuoteName(subject) + " (file has " + known + ")");
     InputWarnings camera_warnings;
     const std::vector<Camera> cameras = SubjectCameras(options, &labels, subject, &camera_warnings);
     bool any = false;

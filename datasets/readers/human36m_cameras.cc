@@ -18,6 +18,7 @@
 #include "datasets/readers/h36m_ego_common.h"
 #include "datasets/readers/human36m.h"
 #include "datasets/readers/human36m_internal.h"
+#include "core/printable_text.h"
 
 namespace rpt {
 namespace h36m_ego {
@@ -45,7 +46,7 @@ std::vector<Camera> LearnableTriCameras(const io::PyView& labels, const std::str
     known += (i ? ", " : "") + name;
     if (name == subject) subject_idx = i;
   }
-  if (subject_idx == subjects.Size()) subjects.Fail("unknown subject '" + subject + "' (file has " + known + ")");
+  if (subject_idx == subjects.Size()) subjects.Fail("unknown subject " + QuoteName(subject) + " (file has " + known + ")");
   const io::PyView camera_names = labels.Key("camera_names");
   const std::size_t num_cameras = camera_names.Size();
   const io::PyView cameras = labels.Key("cameras");
@@ -63,7 +64,7 @@ std::vector<Camera> LearnableTriCameras(const io::PyView& labels, const std::str
   std::vector<Camera> out;
   for (std::size_t c = 0; c < num_cameras; ++c) {
     const std::string& id = camera_names.At(c).AsStr();
-    if (H36mCameraIndex(id) < 0) camera_names.At(c).Fail("unknown Human3.6M camera id '" + id + "'");
+    if (H36mCameraIndex(id) < 0) camera_names.At(c).Fail("unknown Human3.6M camera id " + QuoteName(id));
     const std::size_t k = subject_idx * num_cameras + c;
     // File convention: R world->camera (float32), t = -R C in millimetres, K 3x3, dist (k1 k2 p1 p2 k3).
     const Eigen::Matrix3d R =
@@ -130,15 +131,15 @@ std::vector<Camera> MetadataXmlCameras(const std::filesystem::path& path, const 
     }
     double value = 0;
     if (!io::ParseFiniteNumber(std::string_view(text).substr(i, end - i), &value)) {
-      throw InputError(where + ": value " + std::to_string(w0.size()) + " ('" + text.substr(i, std::min<std::size_t>(end - i, 40)) +
-                       "') is not a finite number");
+      throw InputError(where + ": value " + std::to_string(w0.size()) + " (" + QuoteName(text.substr(i, std::min<std::size_t>(end - i, 40))) +
+                       ") is not a finite number");
     }
     w0.push_back(value);
     i = end;
   }
   if (w0.size() != 300) throw InputError(where + ": expected 300 numbers, got " + std::to_string(w0.size()));
   const int s = SubjectNumber(subject);
-  if (s < 1 || s > 11) throw InputError(where + ": unknown subject '" + subject + "' (the block holds S1..S11)");
+  if (s < 1 || s > 11) throw InputError(where + ": unknown subject " + QuoteName(subject) + " (the block holds S1..S11)");
   std::vector<Camera> out;
   for (int c = 0; c < 4; ++c) {
     const double* e = &w0[static_cast<std::size_t>(6 * (c * 11 + (s - 1)))];

@@ -20,6 +20,7 @@
 #include "datasets/io/json_file.h"
 #include "datasets/io/number_text.h"
 #include "datasets/readers/coco_detections.h"
+#include "core/printable_text.h"
 
 namespace rpt {
 namespace {
@@ -43,10 +44,10 @@ std::filesystem::path FindFile(const std::filesystem::path& root, std::initializ
 std::vector<int> ParseDays(const std::string& text, const std::string& what) {
   std::vector<int> days;
   for (const std::string& item : SplitList(text)) {
-    if (item.size() != 1 || item[0] < '1' || item[0] > '4') throw ConfigError(what + ": '" + item + "' is not a day 1-4");
+    if (item.size() != 1 || item[0] < '1' || item[0] > '4') throw ConfigError(what + ": " + QuoteName(item) + " is not a day 1-4");
     days.push_back(item[0] - '0');
   }
-  if (days.empty()) throw ConfigError(what + ": no day selected by '" + text + "'");
+  if (days.empty()) throw ConfigError(what + ": no day selected by " + QuoteName(text));
   std::sort(days.begin(), days.end());
   days.erase(std::unique(days.begin(), days.end()), days.end());
   return days;
@@ -117,7 +118,7 @@ double SecondsOfDay(const std::string& text, const std::string& where) {
   double second = 0;
   if (std::sscanf(text.c_str(), "%d-%d-%d %d:%d:%lf", &year, &month, &day, &hour, &minute, &second) != 6 ||
       hour < 0 || hour > 23 || minute < 0 || minute > 59 || !(second >= 0 && second < 61)) {
-    throw InputError(where + ": '" + text + "' is not a time 'YYYY-MM-DD hh:mm:ss.ffffff'");
+    throw InputError(where + ": " + QuoteName(text) + " is not a time 'YYYY-MM-DD hh:mm:ss.ffffff'");
   }
   return hour * 3600.0 + minute * 60.0 + second;
 }
@@ -129,10 +130,10 @@ int FrameNumber(const std::string& file_name, const std::string& where) {
   const std::string digits = file_name.substr(slash == std::string::npos ? 0 : slash + 1,
                                               dot == std::string::npos ? std::string::npos : dot - slash - 1);
   if (digits.empty() || digits.size() > 9 || !std::all_of(digits.begin(), digits.end(), ::isdigit)) {
-    throw InputError(where + ": file name '" + file_name + "' does not end in a frame number");
+    throw InputError(where + ": file name " + QuoteName(file_name) + " does not end in a frame number");
   }
   int frame = 0;
-  if (!io::ParseInteger(digits, &frame)) throw InputError(where + ": file name '" + file_name + "': bad frame number");
+  if (!io::ParseInteger(digits, &frame)) throw InputError(where + ": file name " + QuoteName(file_name) + ": bad frame number");
   return frame;
 }
 
@@ -257,7 +258,7 @@ std::vector<std::unique_ptr<FrameSource>> OpenMvor(const DatasetRequest& request
 
   std::error_code ec;
   if (!std::filesystem::is_directory(request.root, ec)) {
-    throw InputError("mvor: root '" + request.root.string() + "' is not a directory");
+    throw InputError("mvor: root " + QuoteName(request.root.string()) + " is not a directory");
   }
   const std::filesystem::path path = FindFile(request.root, {std::filesystem::path("annotations") / kAnnotationFile, kAnnotationFile});
   auto files = std::make_shared<MvorFiles>();
@@ -406,12 +407,12 @@ std::vector<std::unique_ptr<FrameSource>> OpenMvor(const DatasetRequest& request
         attached.insert(frame);
         for (size_t v = 0; v < found.views.size(); ++v) {
           if (!files->camera_index.count(found.cameras[v])) {
-            throw InputError(detections_source + ": frame '" + found.frame_id + "': camera '" + found.cameras[v] +
-                             "' is not a camera of sequence 'mvor/day" + std::to_string(day) + "'");
+            throw InputError(detections_source + ": frame " + QuoteName(found.frame_id) + ": camera " + QuoteName(found.cameras[v]) +
+                             " is not a camera of sequence 'mvor/day" + std::to_string(day) + "'");
           }
           if (found.views[v].num_persons() > 0 && found.views[v].num_joints != num_joints) {
-            throw InputError(detections_source + ": frame '" + found.frame_id + "', camera '" + found.cameras[v] +
-                             "': " + std::to_string(found.views[v].num_joints) + " joints, expected " +
+            throw InputError(detections_source + ": frame " + QuoteName(found.frame_id) + ", camera " + QuoteName(found.cameras[v]) +
+                             ": " + std::to_string(found.views[v].num_joints) + " joints, expected " +
                              std::to_string(num_joints));
           }
         }

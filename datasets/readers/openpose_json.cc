@@ -13,6 +13,7 @@
 #include "datasets/readers/generic_detections.h"
 #include "datasets/readers/generic_internal.h"
 #include "datasets/readers/openpose_body25.h"
+#include "core/printable_text.h"
 
 namespace rpt {
 namespace {
@@ -166,16 +167,16 @@ Detections ReadOpenPoseFolder(const std::filesystem::path& dir, const OpenPoseFo
   }
   if (ec) throw InputError(source + ": cannot list the folder: " + ec.message());
   if (files.empty()) {
-    throw InputError(source + ": no file matches the pattern '" + options.mapping.pattern +
-                     "' (paths relative to the folder, e.g. <camera>/<video>_000000000000_keypoints.json)");
+    throw InputError(source + ": no file matches the pattern " + QuoteName(options.mapping.pattern) +
+                     " (paths relative to the folder, e.g. <camera>/<video>_000000000000_keypoints.json)");
   }
   std::sort(files.begin(), files.end(), [](const RawFile& a, const RawFile& b) {
     return std::tie(a.frame_id, a.camera, a.path) < std::tie(b.frame_id, b.camera, b.path);
   });
   for (size_t i = 1; i < files.size(); ++i) {
     if (files[i].frame_id == files[i - 1].frame_id && files[i].camera == files[i - 1].camera) {
-      throw InputError(source + ": files '" + files[i - 1].path.string() + "' and '" + files[i].path.string() +
-                       "' both map to frame '" + files[i].frame_id + "', camera '" + files[i].camera + "'");
+      throw InputError(source + ": files " + QuoteName(files[i - 1].path.string()) + " and " + QuoteName(files[i].path.string()) +
+                       " both map to frame " + QuoteName(files[i].frame_id) + ", camera " + QuoteName(files[i].camera));
     }
   }
 
@@ -183,7 +184,7 @@ Detections ReadOpenPoseFolder(const std::filesystem::path& dir, const OpenPoseFo
   InputWarnings warnings;
   warnings.AddUnused(
       source,
-      "files not matching the pattern '" + options.mapping.pattern + "' ignored (e.g. '" + first_unmatched + "')",
+      "files not matching the pattern " + QuoteName(options.mapping.pattern) + " ignored (e.g. " + QuoteName(first_unmatched) + ")",
       unmatched);
   bool any_face_or_hand = false, any_body25 = false;
   for (RawFile& file : files) {

@@ -16,6 +16,7 @@
 #include "datasets/input_warnings.h"
 #include "datasets/io/json_file.h"
 #include "datasets/io/number_text.h"
+#include "core/printable_text.h"
 
 namespace rpt {
 namespace {
@@ -69,7 +70,7 @@ std::vector<Camera> ReadPanopticCameras(const std::filesystem::path& path, const
       names.push_back(io::JsonString(root, io::JsonPointerJoin("/cameras", i) + "/name", source));
   }
   if (names.empty()) {
-    throw ConfigError(dataset_params::ParamKey("panoptic", "cameras") + ": no cameras selected by '" + selection + "'");
+    throw ConfigError(dataset_params::ParamKey("panoptic", "cameras") + ": no cameras selected by " + QuoteName(selection));
   }
   std::vector<Camera> cameras;
   for (const std::string& name : names) {
@@ -77,8 +78,8 @@ std::vector<Camera> ReadPanopticCameras(const std::filesystem::path& path, const
     if (it == by_name.end()) {
       std::string available;
       for (const std::string& hd : hd_names) available += (available.empty() ? "" : ", ") + hd;
-      throw InputError(source + ": camera '" + name +
-                       "' not found; HD cameras: " + (available.empty() ? "(none)" : available) + " (plus " +
+      throw InputError(source + ": camera " + QuoteName(name) +
+                       " not found; HD cameras: " + (available.empty() ? "(none)" : available) + " (plus " +
                        std::to_string(list.size() - hd_names.size()) + " VGA/Kinect cameras)");
     }
     const std::string base = io::JsonPointerJoin("/cameras", it->second);
@@ -92,7 +93,7 @@ std::vector<Camera> ReadPanopticCameras(const std::filesystem::path& path, const
     const std::vector<double> t = io::JsonMatrix(root, base + "/t", source, 3, 1);
     const Eigen::Matrix3d R =
         AcceptRotation(Matrix3FromRowMajor(io::JsonMatrix(root, base + "/R", source, 3, 3).data()), source,
-                       source + ": " + base + "/R (camera '" + name + "')", warnings);
+                       source + ": " + base + "/R (camera " + QuoteName(name) + ")", warnings);
     Camera camera =
         ConvertPanopticCamera(name, static_cast<int>(resolution[0]), static_cast<int>(resolution[1]),
                               Matrix3FromRowMajor(io::JsonMatrix(root, base + "/K", source, 3, 3).data()),
@@ -137,7 +138,7 @@ std::vector<PoseFile> ListPoseFiles(const std::filesystem::path& folder, InputWa
   }
   warnings->AddUnused(
       folder.string(),
-      "entries not named " + std::string(kPosePrefix) + "<number>.json ignored (e.g. '" + first_other + "')", others);
+      "entries not named " + std::string(kPosePrefix) + "<number>.json ignored (e.g. " + QuoteName(first_other) + ")", others);
   std::sort(files.begin(), files.end(),
             [](const PoseFile& a, const PoseFile& b) { return a.path.filename() < b.path.filename(); });
   if (files.empty()) throw InputError(folder.string() + ": no " + std::string(kPosePrefix) + "*.json files");
@@ -272,12 +273,12 @@ std::vector<std::unique_ptr<FrameSource>> OpenPanoptic(const DatasetRequest& req
   const PanopticParams params = ParseDatasetParams<PanopticParams>("panoptic", request);
   std::error_code ec;
   if (!std::filesystem::is_directory(request.root, ec)) {
-    throw InputError("panoptic: root '" + request.root.string() + "' is not a directory");
+    throw InputError("panoptic: root " + QuoteName(request.root.string()) + " is not a directory");
   }
   // All sequence folders are checked before any is read, so a typo fails fast.
   for (const std::string& name : params.sequences) {
     if (!std::filesystem::is_directory(request.root / name, ec)) {
-      throw InputError("panoptic: sequence '" + name + "' not found: " + (request.root / name).string() +
+      throw InputError("panoptic: sequence " + QuoteName(name) + " not found: " + (request.root / name).string() +
                        " is not a directory");
     }
   }

@@ -16,6 +16,7 @@
 #include "datasets/readers/openpose_body25.h"
 #include "datasets/readers/openpose_paf_association.h"
 #include "datasets/readers/shelf_campus.h"
+#include "core/printable_text.h"
 
 namespace rpt {
 namespace {
@@ -150,7 +151,7 @@ std::vector<std::unique_ptr<FrameSource>> OpenShelf4da(const DatasetRequest& req
   }
   std::error_code ec;
   if (!std::filesystem::is_directory(request.root, ec)) {
-    throw InputError(std::string(kName) + ": root '" + request.root.string() + "' is not a directory");
+    throw InputError(std::string(kName) + ": root " + QuoteName(request.root.string()) + " is not a directory");
   }
 
   SequenceHeader header;

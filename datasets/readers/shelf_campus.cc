@@ -15,6 +15,7 @@
 #include "datasets/io/number_text.h"
 #include "datasets/readers/voxelpose_calibration.h"
 #include "datasets/readers/voxelpose_detections.h"
+#include "core/printable_text.h"
 
 namespace rpt {
 namespace {
@@ -94,7 +95,7 @@ std::string ShelfCampusFrameId(const std::string& prefix, int frame) {
 int ParseNonNegative(const std::string& text, const std::string& what) {
   int value = 0;
   if (!io::ParseInteger(text, &value) || value < 0) {
-    throw ConfigError(what + ": '" + text + "' is not a non-negative integer");
+    throw ConfigError(what + ": " + QuoteName(text) + " is not a non-negative integer");
   }
   return value;
 }
@@ -131,7 +132,7 @@ std::vector<int> SelectActors(const std::string& text, size_t num_actors, const 
     }
     actors.push_back(p);
   }
-  if (actors.empty()) throw ConfigError(what + ": no actors selected by '" + text + "'");
+  if (actors.empty()) throw ConfigError(what + ": no actors selected by " + QuoteName(text));
   std::sort(actors.begin(), actors.end());
   actors.erase(std::unique(actors.begin(), actors.end()), actors.end());
   return actors;
@@ -186,7 +187,7 @@ std::vector<std::unique_ptr<FrameSource>> OpenShelfCampus(const ShelfCampusSpec&
 
   std::error_code ec;
   if (!std::filesystem::is_directory(request.root, ec)) {
-    throw InputError(spec.name + ": root '" + request.root.string() + "' is not a directory");
+    throw InputError(spec.name + ": root " + QuoteName(request.root.string()) + " is not a directory");
   }
 
   SequenceHeader header;

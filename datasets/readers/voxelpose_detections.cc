@@ -11,6 +11,7 @@
 #include "core/joints.h"
 #include "datasets/io/number_text.h"
 #include "datasets/io/pickle.h"
+#include "core/printable_text.h"
 
 namespace rpt {
 namespace {
@@ -77,7 +78,7 @@ VoxelPoseDetectionsFile::VoxelPoseDetectionsFile(const std::filesystem::path& pa
     const io::PyView& key = items_[i].first;
     if (!key.IsStr()) root.Fail("key " + io::Repr(key.value()) + " is not a string \"{camera}_{frame}\"");
     if (!SplitKey(key.AsStr(), &parsed[i].first, &parsed[i].second)) {
-      root.Fail("key '" + key.AsStr() + "' is not of the form \"{camera}_{frame}\"");
+      root.Fail("key " + QuoteName(key.AsStr()) + " is not of the form \"{camera}_{frame}\"");
     }
   }
   if (cameras_.empty()) {

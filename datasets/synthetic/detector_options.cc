@@ -3,6 +3,7 @@
 
 #include "core/errors.h"
 #include "core/text.h"
+#include "core/printable_text.h"
 
 namespace rpt::synthetic {
 
@@ -147,7 +148,7 @@ DetectorOptions DetectorProfile(const std::string& name) {
   if (name == "clean") return DetectorOptions::Clean();
   if (name == "realistic") return DetectorOptions::Realistic();
   if (name == "hard") return DetectorOptions::Hard();
-  throw ConfigError("unknown detector profile '" + name + "' (one of " + Join(DetectorProfileNames(), ", ") +
+  throw ConfigError("unknown detector profile " + QuoteName(name) + " (one of " + Join(DetectorProfileNames(), ", ") +
                     "; 'none' = perfect)");
 }
 

@@ -12,6 +12,7 @@
 #include "datasets/io/json_output.h"
 #include "datasets/io/npz_writer.h"
 #include "datasets/io/staged_output.h"
+#include "core/printable_text.h"
 
 namespace rpt::engine {
 namespace {
@@ -115,8 +116,8 @@ JointNames ArrayFrames::joints() const {
     if (s == nullptr) continue;
     if (first == nullptr) first = s.get();
     if (s->joints != first->joints) {
-      throw InputError("--export npz/h5: sequence '" + s->name + "' has other output joints than '" + first->name +
-                       "'; the arrays need one joint list (export the sequences in separate runs)");
+      throw InputError("--export npz/h5: sequence " + QuoteName(s->name) + " has other output joints than " + QuoteName(first->name) +
+                       "; the arrays need one joint list (export the sequences in separate runs)");
     }
   }
   return first == nullptr ? JointNames{} : first->joints;

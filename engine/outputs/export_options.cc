@@ -5,6 +5,7 @@
 #include <array>
 
 #include "core/errors.h"
+#include "core/printable_text.h"
 
 namespace rpt::engine {
 namespace {
@@ -51,10 +52,10 @@ std::vector<ExportFormat> ParseExportFormats(const std::string& text) {
     const auto it =
         std::find_if(kFormats.begin(), kFormats.end(), [&](const FormatNames& f) { return f.name == name; });
     if (it == kFormats.end()) {
-      throw ConfigError("--export " + text + ": '" + name + "' is not one of json, csv, trc, npz, h5");
+      throw ConfigError("--export " + text + ": " + QuoteName(name) + " is not one of json, csv, trc, npz, h5");
     }
     if (std::find(formats.begin(), formats.end(), it->format) != formats.end()) {
-      throw ConfigError("--export " + text + ": '" + name + "' given twice");
+      throw ConfigError("--export " + text + ": " + QuoteName(name) + " given twice");
     }
     formats.push_back(it->format);
     start = comma + 1;

@@ -11,6 +11,7 @@
 #include "datasets/io/text_file.h"
 #include "engine/outputs/file_names.h"
 #include "engine/outputs/text_escaping.h"
+#include "core/printable_text.h"
 
 namespace rpt::engine {
 TrcExport::TrcExport(std::filesystem::path dir, int num_sequences, ExportOptions options)
@@ -80,8 +81,8 @@ void TrcExport::Frame(const FrameOutput& frame) {
   for (int p = 0; p < persons.num_persons(); ++p) {
     if (persons.track_ids[p] < 0) continue;
     if (!std::isfinite(time_s)) {
-      throw InputError("--export trc: sequence '" + s.name + "', frame '" + frame.input->id +
-                       "': the frame's time is unknown (a TRC row needs one; give --fps)");
+      throw InputError("--export trc: sequence " + QuoteName(s.name) + ", frame " + QuoteName(frame.input->id) +
+                       ": the frame's time is unknown (a TRC row needs one; give --fps)");
     }
     std::ofstream& out = TrackStream(&s, persons.track_ids[p], frame_idx, time_s);
     Track& track = s.tracks[persons.track_ids[p]];

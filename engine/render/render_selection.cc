@@ -11,6 +11,7 @@
 #include "core/closest_name.h"
 #include "core/errors.h"
 #include "core/text.h"
+#include "core/printable_text.h"
 
 namespace rpt::engine {
 namespace {
@@ -49,7 +50,7 @@ FrameRange ParseFrameRange(const std::string& text, long num_frames, const std::
     range.end = std::min(range.end, num_frames);
   }
   if (range.first >= num_frames) {
-    throw ConfigError(where + "sequence '" + sequence + "' has " + std::to_string(num_frames) + " frames (0 to " +
+    throw ConfigError(where + "sequence " + QuoteName(sequence) + " has " + std::to_string(num_frames) + " frames (0 to " +
                       std::to_string(num_frames - 1) + ")");
   }
   if (range.end <= range.first) throw ConfigError(where + "the range is empty");
@@ -74,8 +75,8 @@ std::vector<int> SelectCameras(const std::vector<std::string>& selection, const 
     if (found < 0 && index >= 0 && index < static_cast<long>(cameras.size())) found = static_cast<int>(index);
     if (found < 0) {
       const std::string closest = ClosestName(wanted, names);
-      throw ConfigError("--cameras: sequence '" + sequence + "' has no camera '" + wanted + "'" +
-                        (closest.empty() ? "" : "; did you mean '" + closest + "'?") + " (cameras: " + Join(names) +
+      throw ConfigError("--cameras: sequence " + QuoteName(sequence) + " has no camera " + QuoteName(wanted) +
+                        (closest.empty() ? "" : "; did you mean " + QuoteName(closest) + "?") + " (cameras: " + Join(names) +
                         ", or their indices 0 to " + std::to_string(cameras.size() - 1) + ")");
     }
     out.push_back(found);

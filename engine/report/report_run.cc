@@ -9,6 +9,7 @@
 #include "core/errors.h"
 #include "engine/outputs/text_escaping.h"
 #include "datasets/io/json_file.h"
+#include "core/printable_text.h"
 
 namespace rpt::engine {
 namespace {
@@ -51,7 +52,7 @@ OrderedJson ReadPerJoint(const std::filesystem::path& path) {
       try {
         return std::stod(text);
       } catch (const std::exception&) {
-        throw InputError(path.string() + ":" + std::to_string(line_number) + ": '" + text + "' is not a number");
+        throw InputError(path.string() + ":" + std::to_string(line_number) + ": " + QuoteName(text) + " is not a number");
       }
     };
     rows.push_back({{"joint", fields[0]}, {"mean_error_mm", number(fields[1])}, {"pck100", number(fields[2])},
@@ -166,8 +167,8 @@ bool SplitPredictions(const RecordedPredictions& predictions, const std::vector<
   for (size_t s = 0; s < sequences.size(); ++s) {
     for (const SequenceFrame& frame : sequences[s].frames) {
       if (frame.id != predictions.frame_ids[k]) {
-        *why = "frame " + std::to_string(k) + " of predictions.json is '" + predictions.frame_ids[k] +
-               "', the input's is '" + frame.id + "'";
+        *why = "frame " + std::to_string(k) + " of predictions.json is " + QuoteName(predictions.frame_ids[k]) +
+               ", the input's is " + QuoteName(frame.id);
         return false;
       }
       (*per_sequence)[s].push_back(predictions.frames[k++]);

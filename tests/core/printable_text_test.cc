@@ -28,6 +28,14 @@ TEST(PrintableText, InvalidBytesAndControlCharactersAreEscaped) {
   EXPECT_EQ(PrintableText("\x80\xe2\x82\xac"), "\\x80\xe2\x82\xac") << "stray continuation, then a valid euro sign";
 }
 
+TEST(QuoteName, QuotesAndKeepsANameOnOneLine) {
+  EXPECT_EQ(QuoteName("cam 1"), "'cam 1'");
+  EXPECT_EQ(QuoteName("Z\xc3\xbcrich"), "'Z\xc3\xbcrich'");
+  EXPECT_EQ(QuoteName("a\nb\tc\rd"), "'a\\x0ab\\x09c\\x0dd'");
+  EXPECT_EQ(QuoteName("\x1b[31mred"), "'\\x1b[31mred'");
+  EXPECT_EQ(QuoteName(""), "''");
+}
+
 // The same check decides which strings the JSON and XML writers replace; it must agree with the
 // escaping above.
 TEST(PrintableText, IsValidUtf8AgreesWithTheEscaping) {

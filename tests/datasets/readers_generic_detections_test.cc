@@ -88,6 +88,18 @@ TEST(GenericDetections, MalformedFilesNameFileAndPointer) {
                 ReadGenericDetections(write(R"({"joints": ["nose"], "frames": [{"id": "a", "views": []}, {"id": "a", "views": []}]})"));
               }),
               HasSubstr("/frames/1/id: frame id 'a' also used by /frames/0"));
+  // Names from the file stay on the message's one line: a line break in them is escaped.
+  const std::string split_names = InputErrorOf([&] {
+    ReadGenericDetections(write(
+        R"({"joints": ["nose"], "frames": [{"id": "a\nb", "views": [{"camera": "c\td", "poses": []}, {"camera": "c\td", "poses": []}]}, {"id": "a\nb", "views": []}]})"));
+  });
+  EXPECT_THAT(split_names, HasSubstr("camera 'c\\x09d' appears twice"));
+  EXPECT_EQ(split_names.find_first_of("\n\t"), std::string::npos) << split_names;
+  EXPECT_THAT(InputErrorOf([&] {
+                ReadGenericDetections(write(
+                    R"({"joints": ["nose"], "frames": [{"id": "a\nb", "views": []}, {"id": "a\nb", "views": []}]})"));
+              }),
+              HasSubstr("frame id 'a\\x0ab' also used by /frames/0"));
   EXPECT_THAT(InputErrorOf([&] { ReadGenericDetections(write(R"({"version": 1.3, "people": []})")); }),
               HasSubstr("single OpenPose file"));
 }
