@@ -42,6 +42,18 @@ void MarkDuplicates(const VerifyOptions& options, const steps::VerifyInput& in, 
     for (int v = 0; v < num_views; ++v) s.num_views[p] += views_of[v];
     s.by_strength[p] = p;
   }
+  // Two persons share no view only if their view counts add up to at most the views: else (most
+  // frames, where every person is seen by most cameras) there is nothing to compare.
+  int fewest = num_views + 1, second_fewest = num_views + 1;
+  for (int p = 0; p < num_persons; ++p) {
+    if (s.num_views[p] < fewest) {
+      second_fewest = fewest;
+      fewest = s.num_views[p];
+    } else if (s.num_views[p] < second_fewest) {
+      second_fewest = s.num_views[p];
+    }
+  }
+  if (fewest + second_fewest > num_views) return;
   const auto pairs = [&](int p) { return in.groups.begin[p + 1] - in.groups.begin[p]; };
   std::sort(s.by_strength.begin(), s.by_strength.end(), [&](int a, int b) {
     if (s.num_views[a] != s.num_views[b]) return s.num_views[a] > s.num_views[b];
