@@ -145,7 +145,9 @@ TEST(Hdf5CacheChecksum, ChangedValuesOfEveryDatasetAreRefused) {
   }
   ASSERT_GE(datasets.size(), 10u);
   int checked = 0;
-  for (const auto& [name, offset] : datasets) {
+  for (const auto& dataset : datasets) {
+    const std::string& name = dataset.first;  // not a structured binding: clang before 16 cannot capture one
+    const auto offset = dataset.second;
     if (offset == HADDR_UNDEF) continue;  // empty dataset: no data to damage
     ByteVec bytes = valid;
     bytes[offset] ^= 0x01;  // the first stored value
