@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <functional>
+#include <limits>
 #include <vector>
 
 #include "core/joints.h"
@@ -197,6 +198,62 @@ TEST_F(AblationTest, DltTriangulationIsCloseToMidpoint) {
   }
   EXPECT_GT(compared, 100);
   EXPECT_LT(max_diff, 0.5);
+}
+
+// Mean distance between two output persons over the joints both have.
+double MeanJointDistance(const Poses3D& persons, int p, int q) {
+  const auto a = persons.Person(p), b = persons.Person(q);
+  double sum = 0;
+  int common = 0;
+  for (int j = 0; j < persons.num_joints; ++j) {
+    if (a(3, j) <= 0 || b(3, j) <= 0) continue;
+    sum += (a.col(j).head<3>() - b.col(j).head<3>()).norm();
+    ++common;
+  }
+  return common > 0 ? sum / common : std::numeric_limits<double>::infinity();
+}
+
+// With 31 cameras the pair budget keeps one pair per pose first; some of a person's poses then pair
+// only among themselves and make a copy of the person from views of their own. Verification drops
+// it (verify.duplicate_distance_m); the scene's people never come that close (hips >= 0.8 m apart).
+TEST(DuplicatePersons, VerificationDropsTheCopiesOfAPersonMadeFromViewsOfTheirOwn) {
+  synthetic::SceneOptions scene_options;
+  scene_options.rig.num_cameras = 31;
+  scene_options.num_people = 8;
+  scene_options.num_frames = 60;
+  const synthetic::Scene scene = synthetic::GenerateScene(scene_options);
+  const synthetic::DetectorSimulator detector(synthetic::DetectorOptions::Realistic(), scene.joint_names, 1);
+  std::vector<std::vector<Poses2D>> frames(scene_options.num_frames);
+  for (int f = 0; f < scene_options.num_frames; ++f) {
+    detector.Detect(scene.cameras, scene.gt[f], scene.joint_names, f, &frames[f]);
+  }
+  // Frames with two persons closer than 0.25 m, and the persons verification dropped as copies.
+  const auto run = [&](double duplicate_distance_m, int* dropped) {
+    TriangulatorOptions options;
+    options.room_check.center_m = scene.room_center_m;
+    options.room_check.size_m = scene.room_size_m;
+    options.verify.duplicate_distance_m = duplicate_distance_m;
+    Triangulator tri(scene.cameras, scene.joint_names, options);
+    int close_frames = 0;
+    *dropped = 0;
+    for (size_t f = 0; f < frames.size(); ++f) {
+      Poses3D persons;
+      FrameStats stats;
+      tri.Process(frames[f], f / scene.fps, &persons, &stats);
+      *dropped += stats.duplicate_persons;
+      bool close = false;
+      for (int p = 0; p < persons.num_persons(); ++p) {
+        for (int q = p + 1; q < persons.num_persons(); ++q) close |= MeanJointDistance(persons, p, q) < 0.25;
+      }
+      close_frames += close ? 1 : 0;
+    }
+    return close_frames;
+  };
+  int dropped_off = 0, dropped_on = 0;
+  EXPECT_GT(run(0.0, &dropped_off), 0) << "the scene makes copies (else this test shows nothing)";
+  EXPECT_EQ(dropped_off, 0);
+  EXPECT_EQ(run(0.25, &dropped_on), 0);
+  EXPECT_GT(dropped_on, 0);
 }
 
 }  // namespace
