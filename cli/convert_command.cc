@@ -10,12 +10,12 @@
 #include "cli/commands.h"
 #include "cli/input_options.h"
 #include "core/errors.h"
+#include "core/printable_text.h"
 #include "datasets/io/staged_output.h"
 #include "datasets/readers/generic_detections.h"
 #include "datasets/readers/generic_labels.h"
 #include "datasets/readers/hdf5_cache.h"
 #include "engine/input.h"
-#include "core/printable_text.h"
 
 namespace rpt::cli {
 namespace {

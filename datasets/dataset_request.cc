@@ -6,8 +6,8 @@
 
 #include "core/errors.h"
 #include "core/option_codec.h"
-#include "datasets/io/number_text.h"
 #include "core/printable_text.h"
+#include "datasets/io/number_text.h"
 
 namespace rpt {
 namespace {

@@ -11,9 +11,9 @@
 #include "core/errors.h"
 #include "core/option_codec.h"
 #include "core/options_check.h"
+#include "core/printable_text.h"
 #include "core/text.h"
 #include "datasets/io/json_file.h"
-#include "core/printable_text.h"
 
 namespace rpt::engine {
 namespace {

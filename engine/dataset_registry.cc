@@ -2,6 +2,7 @@
 #include "engine/dataset_registry.h"
 
 #include "core/errors.h"
+#include "core/printable_text.h"
 #include "core/text.h"
 #include "datasets/readers/egohumans.h"
 #include "datasets/readers/generic_labels.h"
@@ -12,7 +13,6 @@
 #include "datasets/readers/shelf_4da.h"
 #include "datasets/readers/shelf_campus.h"
 #include "datasets/synthetic/synthetic_dataset.h"
-#include "core/printable_text.h"
 
 namespace rpt::engine {
 

@@ -8,10 +8,10 @@
 
 #include "core/closest_name.h"
 #include "core/errors.h"
+#include "core/printable_text.h"
 #include "core/text.h"
 #include "datasets/readers/detections_file.h"
 #include "datasets/readers/generic_common.h"
-#include "core/printable_text.h"
 
 namespace rpt::engine {
 namespace {

@@ -6,13 +6,13 @@
 #include <utility>
 
 #include "core/errors.h"
+#include "core/printable_text.h"
 #include "datasets/calibration/calibration.h"
 #include "datasets/readers/detection_frames.h"
 #include "datasets/synthetic/simulated_source.h"
 #include "engine/attached_detections.h"
 #include "engine/checked_source.h"
 #include "engine/dataset_registry.h"
-#include "core/printable_text.h"
 
 namespace rpt::engine {
 namespace {

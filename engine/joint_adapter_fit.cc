@@ -6,9 +6,9 @@
 
 #include "core/body_frame.h"
 #include "core/errors.h"
+#include "core/printable_text.h"
 #include "engine/input.h"
 #include "metrics/accumulator.h"
-#include "core/printable_text.h"
 
 namespace rpt::engine {
 namespace {

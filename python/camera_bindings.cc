@@ -10,13 +10,13 @@
 
 #include "core/errors.h"
 #include "core/option_codec.h"
+#include "core/printable_text.h"
 #include "datasets/calibration/calibration.h"
 #include "datasets/calibration/camera_json.h"
 #include "python/arrays.h"
 #include "python/bindings.h"
 #include "python/json_objects.h"
 #include "python/option_values.h"
-#include "core/printable_text.h"
 
 namespace rpt::python {
 namespace {

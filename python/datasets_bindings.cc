@@ -11,6 +11,7 @@
 #include <string>
 
 #include "core/errors.h"
+#include "core/printable_text.h"
 #include "datasets/synthetic/detector_options.h"
 #include "datasets/synthetic/simulate_detections.h"
 #include "datasets/synthetic/synthetic_dataset.h"
@@ -20,7 +21,6 @@
 #include "python/bindings.h"
 #include "python/datasets_types.h"
 #include "python/option_values.h"
-#include "core/printable_text.h"
 
 namespace rpt::python {
 namespace {

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "core/printable_text.h"
 #include "engine/frame_sink.h"
 #include "engine/outputs/array_frames.h"
 #include "engine/outputs/csv_export.h"
@@ -21,7 +22,6 @@
 #include "engine/outputs/predictions_writer.h"
 #include "engine/outputs/trc_export.h"
 #include "python/bindings.h"
-#include "core/printable_text.h"
 
 namespace rpt::python {
 namespace {

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "core/printable_text.h"
 #include "engine/detection_checks.h"
 #include "engine/diagnostics.h"
 #include "engine/outputs/results_writer.h"
@@ -22,7 +23,6 @@
 #include "python/bindings.h"
 #include "python/json_objects.h"
 #include "python/option_values.h"
-#include "core/printable_text.h"
 
 namespace rpt::python {
 namespace {

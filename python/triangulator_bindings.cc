@@ -7,6 +7,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <mutex>
@@ -16,11 +17,12 @@
 #include "core/errors.h"
 #include "core/pipeline/offline_smoother.h"
 #include "core/pipeline/triangulator.h"
+#include "core/printable_text.h"
 #include "engine/run.h"
+#include "metrics/step_counts.h"
 #include "python/arrays.h"
 #include "python/bindings.h"
 #include "python/datasets_types.h"
-#include "core/printable_text.h"
 
 namespace rpt::python {
 namespace {
@@ -50,21 +52,9 @@ py::dict StatsDict(const FrameStats& stats) {
   py::dict d;
   d["total_us"] = stats.total_us;
   d["steps"] = steps;
-  d["pruned_limbs"] = stats.pruned_limbs;
-  d["small_groups"] = stats.small_groups;
-  d["conflicting_proposals"] = stats.conflicting_proposals;
-  d["mirrored_groups"] = stats.mirrored_groups;
-  d["unsupported_persons"] = stats.unsupported_persons;
-  d["single_view_persons"] = stats.single_view_persons;
-  d["single_view_implausible"] = stats.single_view_implausible;
-  d["single_view_tracked"] = stats.single_view_tracked;
-  d["replaced_joints"] = stats.replaced_joints;
-  d["filled_joints"] = stats.filled_joints;
-  d["new_tracks"] = stats.new_tracks;
-  d["coasting_tracks"] = stats.coasting_tracks;
-  d["held_joints"] = stats.held_joints;
-  d["one_view_joints"] = stats.one_view_joints;
-  d["bone_length_corrections"] = stats.bone_length_corrections;
+  // The extra counters under their names (the FrameStats members), from the one list of them.
+  const std::array<int, metrics::kNumCounters> counters = metrics::Counters(stats);
+  for (int c = 0; c < metrics::kNumCounters; ++c) d[py::str(std::string(metrics::kCounterNames[c]))] = counters[c];
   d["noise_m"] = stats.noise_m;
   return d;
 }

@@ -8,6 +8,7 @@
 #include <set>
 
 #include "core/errors.h"
+#include "core/printable_text.h"
 #include "core/utf8.h"
 #include "datasets/calibration/camera_group_toml.h"
 #include "datasets/calibration/cameras_json.h"
@@ -18,7 +19,6 @@
 #include "datasets/readers/fourda_calibration.h"
 #include "datasets/readers/panoptic.h"
 #include "datasets/readers/voxelpose_calibration.h"
-#include "core/printable_text.h"
 
 namespace rpt {
 namespace {

@@ -11,11 +11,11 @@
 #include <set>
 
 #include "core/errors.h"
+#include "core/printable_text.h"
 #include "datasets/calibration/opencv_yml.h"
 #include "datasets/calibration/rodrigues.h"
 #include "datasets/camera_plausibility.h"
 #include "datasets/io/text_file.h"
-#include "core/printable_text.h"
 
 namespace rpt {
 namespace {

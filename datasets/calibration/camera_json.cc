@@ -6,11 +6,11 @@
 #include <unordered_set>
 
 #include "core/errors.h"
+#include "core/printable_text.h"
 #include "datasets/camera_plausibility.h"
 #include "datasets/io/input_limits.h"
 #include "datasets/io/json_file.h"
 #include "datasets/io/json_output.h"
-#include "core/printable_text.h"
 
 namespace rpt::camera_json {
 namespace {

@@ -4,11 +4,11 @@
 #include <string>
 
 #include "core/errors.h"
+#include "core/printable_text.h"
 #include "datasets/calibration/camera_json.h"
 #include "datasets/io/json_file.h"
 #include "datasets/io/json_output.h"
 #include "datasets/io/text_file.h"
-#include "core/printable_text.h"
 
 namespace rpt {
 

@@ -5,9 +5,9 @@
 #include <set>
 
 #include "core/errors.h"
+#include "core/printable_text.h"
 #include "datasets/camera_plausibility.h"
 #include "datasets/readers/colmap_text.h"
-#include "core/printable_text.h"
 
 namespace rpt {
 

@@ -4,13 +4,13 @@
 #include <set>
 
 #include "core/errors.h"
+#include "core/printable_text.h"
 #include "datasets/calibration/file_storage.h"
 #include "datasets/calibration/image_size.h"
 #include "datasets/calibration/opencv_yml.h"
 #include "datasets/calibration/rodrigues.h"
 #include "datasets/camera_plausibility.h"
 #include "datasets/io/text_file.h"
-#include "core/printable_text.h"
 
 namespace rpt {
 namespace {

@@ -8,8 +8,8 @@
 
 #include "core/errors.h"
 #include "core/joints.h"
-#include "core/text.h"
 #include "core/printable_text.h"
+#include "core/text.h"
 
 namespace rpt::detector_stats {
 namespace {

@@ -19,10 +19,10 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "core/printable_text.h"
 #include "datasets/io/file_digest.h"
 #include "datasets/io/hdf5_preflight.h"
 #include "datasets/io/inflate_budget.h"
-#include "core/printable_text.h"
 
 namespace rpt::io {
 

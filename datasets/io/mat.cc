@@ -7,8 +7,8 @@
 #include <cstring>
 
 #include "core/errors.h"
-#include "datasets/io/binary.h"
 #include "core/printable_text.h"
+#include "datasets/io/binary.h"
 
 namespace rpt::io {
 namespace {

@@ -8,9 +8,9 @@
 #include <stdexcept>
 
 #include "core/errors.h"
+#include "core/printable_text.h"
 #include "core/utf8.h"
 #include "datasets/io/json_output.h"
-#include "core/printable_text.h"
 
 namespace rpt::io {
 namespace {

@@ -12,8 +12,8 @@
 #include <unordered_set>
 
 #include "core/errors.h"
-#include "datasets/io/binary.h"
 #include "core/printable_text.h"
+#include "datasets/io/binary.h"
 
 namespace rpt::io {
 namespace {

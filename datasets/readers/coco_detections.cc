@@ -9,12 +9,12 @@
 
 #include "core/errors.h"
 #include "core/options_check.h"
+#include "core/printable_text.h"
 #include "datasets/input_warnings.h"
 #include "datasets/io/json_file.h"
 #include "datasets/io/number_text.h"
 #include "datasets/readers/generic_detections.h"
 #include "datasets/readers/generic_internal.h"
-#include "core/printable_text.h"
 
 namespace rpt {
 namespace {

@@ -6,8 +6,8 @@
 #include <utility>
 
 #include "core/errors.h"
-#include "core/text.h"
 #include "core/printable_text.h"
+#include "core/text.h"
 
 namespace rpt {
 

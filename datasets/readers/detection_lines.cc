@@ -13,12 +13,12 @@
 
 #include "core/closest_name.h"
 #include "core/errors.h"
+#include "core/printable_text.h"
 #include "core/text.h"
 #include "core/utf8.h"
 #include "datasets/io/input_limits.h"
 #include "datasets/io/json_pull.h"
 #include "datasets/readers/generic_common.h"
-#include "core/printable_text.h"
 
 namespace rpt {
 namespace {

@@ -6,10 +6,10 @@
 #include <string>
 
 #include "core/errors.h"
+#include "core/printable_text.h"
 #include "datasets/readers/generic_detections.h"
 #include "datasets/readers/generic_internal.h"
 #include "datasets/readers/hdf5_cache.h"
-#include "core/printable_text.h"
 
 namespace rpt {
 

@@ -9,8 +9,8 @@
 #include <unordered_set>
 
 #include "core/errors.h"
-#include "datasets/io/number_text.h"
 #include "core/printable_text.h"
+#include "datasets/io/number_text.h"
 
 namespace rpt {
 namespace path_template {

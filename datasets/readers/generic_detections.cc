@@ -6,6 +6,7 @@
 #include <unordered_set>
 
 #include "core/errors.h"
+#include "core/printable_text.h"
 #include "datasets/input_warnings.h"
 #include "datasets/io/input_limits.h"
 #include "datasets/io/json_file.h"
@@ -13,7 +14,6 @@
 #include "datasets/io/text_file.h"
 #include "datasets/readers/generic_common.h"
 #include "datasets/readers/generic_internal.h"
-#include "core/printable_text.h"
 
 namespace rpt {
 namespace {

@@ -17,11 +17,11 @@
 
 #include "core/closest_name.h"
 #include "core/errors.h"
+#include "core/printable_text.h"
 #include "core/utf8.h"
 #include "datasets/input_warnings.h"
 #include "datasets/io/json_file.h"
 #include "datasets/io/json_output.h"
-#include "core/printable_text.h"
 
 namespace rpt::generic_internal {
 

@@ -13,6 +13,7 @@
 
 #include "core/errors.h"
 #include "core/options_check.h"
+#include "core/printable_text.h"
 #include "datasets/calibration/camera_json.h"
 #include "datasets/input_warnings.h"
 #include "datasets/io/binary.h"
@@ -22,7 +23,6 @@
 #include "datasets/readers/detections_file.h"
 #include "datasets/readers/generic_common.h"
 #include "datasets/readers/generic_internal.h"
-#include "core/printable_text.h"
 
 namespace rpt {
 namespace {

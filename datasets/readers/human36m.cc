@@ -15,11 +15,11 @@
 #include <utility>
 
 #include "core/errors.h"
+#include "core/printable_text.h"
 #include "datasets/io/hdf5_file.h"
 #include "datasets/io/npy.h"
 #include "datasets/readers/h36m_ego_common.h"
 #include "datasets/readers/human36m_internal.h"
-#include "core/printable_text.h"
 
 namespace rpt {
 namespace {

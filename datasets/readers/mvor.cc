@@ -16,11 +16,11 @@
 
 #include "core/errors.h"
 #include "core/option_codec.h"
+#include "core/printable_text.h"
 #include "datasets/detections.h"
 #include "datasets/io/json_file.h"
 #include "datasets/io/number_text.h"
 #include "datasets/readers/coco_detections.h"
-#include "core/printable_text.h"
 
 namespace rpt {
 namespace {

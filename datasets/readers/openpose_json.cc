@@ -8,12 +8,12 @@
 #include <utility>
 
 #include "core/errors.h"
+#include "core/printable_text.h"
 #include "datasets/input_warnings.h"
 #include "datasets/io/json_file.h"
 #include "datasets/readers/generic_detections.h"
 #include "datasets/readers/generic_internal.h"
 #include "datasets/readers/openpose_body25.h"
-#include "core/printable_text.h"
 
 namespace rpt {
 namespace {

@@ -11,12 +11,12 @@
 
 #include "core/errors.h"
 #include "core/option_codec.h"
+#include "core/printable_text.h"
 #include "datasets/calibration/row_major.h"
 #include "datasets/camera_plausibility.h"
 #include "datasets/input_warnings.h"
 #include "datasets/io/json_file.h"
 #include "datasets/io/number_text.h"
-#include "core/printable_text.h"
 
 namespace rpt {
 namespace {

@@ -11,12 +11,12 @@
 #include <optional>
 
 #include "core/errors.h"
+#include "core/printable_text.h"
 #include "datasets/readers/fourda_calibration.h"
 #include "datasets/readers/fourda_text.h"
 #include "datasets/readers/openpose_body25.h"
 #include "datasets/readers/openpose_paf_association.h"
 #include "datasets/readers/shelf_campus.h"
-#include "core/printable_text.h"
 
 namespace rpt {
 namespace {

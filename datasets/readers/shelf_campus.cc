@@ -10,12 +10,12 @@
 
 #include "core/errors.h"
 #include "core/option_codec.h"
+#include "core/printable_text.h"
 #include "datasets/detections.h"
 #include "datasets/io/mat.h"
 #include "datasets/io/number_text.h"
 #include "datasets/readers/voxelpose_calibration.h"
 #include "datasets/readers/voxelpose_detections.h"
-#include "core/printable_text.h"
 
 namespace rpt {
 namespace {

@@ -9,9 +9,9 @@
 
 #include "core/errors.h"
 #include "core/joints.h"
+#include "core/printable_text.h"
 #include "datasets/io/number_text.h"
 #include "datasets/io/pickle.h"
-#include "core/printable_text.h"
 
 namespace rpt {
 namespace {

@@ -2,8 +2,8 @@
 #include "datasets/synthetic/detector_options.h"
 
 #include "core/errors.h"
-#include "core/text.h"
 #include "core/printable_text.h"
+#include "core/text.h"
 
 namespace rpt::synthetic {
 

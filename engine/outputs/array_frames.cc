@@ -9,10 +9,10 @@
 
 #include "core/errors.h"
 #include "core/nan.h"
+#include "core/printable_text.h"
 #include "datasets/io/json_output.h"
 #include "datasets/io/npz_writer.h"
 #include "datasets/io/staged_output.h"
-#include "core/printable_text.h"
 
 namespace rpt::engine {
 namespace {

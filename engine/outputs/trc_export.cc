@@ -7,11 +7,11 @@
 #include <cstring>
 
 #include "core/errors.h"
+#include "core/printable_text.h"
 #include "datasets/io/staged_output.h"
 #include "datasets/io/text_file.h"
 #include "engine/outputs/file_names.h"
 #include "engine/outputs/text_escaping.h"
-#include "core/printable_text.h"
 
 namespace rpt::engine {
 TrcExport::TrcExport(std::filesystem::path dir, int num_sequences, ExportOptions options)

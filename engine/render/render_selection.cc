@@ -10,8 +10,8 @@
 
 #include "core/closest_name.h"
 #include "core/errors.h"
-#include "core/text.h"
 #include "core/printable_text.h"
+#include "core/text.h"
 
 namespace rpt::engine {
 namespace {

@@ -126,6 +126,9 @@ def test_stats_per_step(scene):
     assert list(stats["steps"])[:2] == ["undistort", "make_pairs"]
     assert stats["steps"]["merge"]["count"] == 4  # the four people of the scene, each found once
     assert stats["total_us"] > 0
+    # every extra counter of the CLI's step table, under its name (verification dropped no copy here)
+    assert stats["duplicate_persons"] == 0 and stats["unsupported_persons"] == 0
+    assert {"pruned_limbs", "conflicting_proposals", "held_joints", "one_view_joints"} <= set(stats)
 
 
 def test_offline_smoothing_equals_the_clis(scene, tmp_path):
