@@ -5,9 +5,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <cerrno>
-#include <csignal>
-#include <cstring>
 #include <fstream>
 #include <functional>
 #include <mutex>
@@ -18,25 +15,11 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "datasets/io/child_process.h"
 #include "datasets/io/hdf5_file.h"
 
 #if defined(__linux__) || defined(__FreeBSD__)
-#include <fcntl.h>
-#include <poll.h>
-#include <sys/wait.h>
-#include <unistd.h>
-#define RPT_HDF5_PREFLIGHT_FORK 1
-#endif
-
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_UNDEFINED__)
-#define RPT_SANITIZED 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(undefined_behavior_sanitizer)
-#define RPT_SANITIZED 1
-#endif
-#endif
-#ifdef RPT_SANITIZED
-#include <sanitizer/common_interface_defs.h>
+#define RPT_HDF5_PREFLIGHT_FORK 1  // io::RunInChild can fork here
 #endif
 
 namespace rpt::io {
@@ -187,34 +170,6 @@ std::optional<std::tuple<std::size_t, std::uintmax_t, std::uint64_t>> PassKey(co
   return std::make_tuple(std::hash<std::string>{}(bytes), size, inflate_limit);
 }
 
-[[noreturn]] void RunChild(const std::filesystem::path& path, std::uint64_t inflate_limit) {
-  // Silent, and killed by what would kill it: no handler of the parent's (interrupt clean-up,
-  // a fuzzer's crash report) runs here.
-  const int null = open("/dev/null", O_WRONLY);
-  if (null >= 0) {
-    dup2(null, STDOUT_FILENO);
-    dup2(null, STDERR_FILENO);
-  }
-  for (const int signal : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT, SIGINT, SIGTERM, SIGHUP, SIGPIPE}) {
-    std::signal(signal, SIG_DFL);
-  }
-#ifdef RPT_SANITIZED
-  __sanitizer_set_death_callback(nullptr);
-#endif
-  int code = kWalkFailed;
-  try {
-    code = WalkHdf5Metadata(path, inflate_limit) ? kWalked : kReportedError;
-  } catch (...) {
-    code = kWalkFailed;
-  }
-  _exit(code);
-}
-
-std::string SignalName(int signal) {
-  const char* name = strsignal(signal);
-  return "signal " + std::to_string(signal) + (name ? std::string(", ") + name : std::string());
-}
-
 std::string LibraryVersion() {
   unsigned major = 0, minor = 0, release = 0;
   H5get_libversion(&major, &minor, &release);
@@ -265,61 +220,38 @@ void PreflightHdf5(const std::string& source, const std::filesystem::path& path,
     const std::lock_guard<std::mutex> lock(PassedFiles().mutex);
     if (PassedFiles().files.count(*key)) return;
   }
-  // The child holds the write end of a pipe until it ends: the parent waits on the pipe, which
-  // poll() can bound in time, then reaps the child.
-  int pipe_ends[2];
-  if (pipe2(pipe_ends, O_CLOEXEC) != 0) return;  // no pipe (descriptor limit): read without the walk
-  const pid_t child = fork();
-  if (child < 0) {  // no child to walk in (process limit, memory): read without the walk
-    close(pipe_ends[0]);
-    close(pipe_ends[1]);
-    return;
-  }
-  if (child == 0) {
-    close(pipe_ends[0]);
-    RunChild(path, inflate_limit);
-  }
-  close(pipe_ends[1]);
-  const auto deadline = std::chrono::steady_clock::now() + limit;
-  bool ended = false;
-  while (!ended) {
-    const auto left =
-        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
-    if (left.count() <= 0) break;
-    pollfd wait_for_end{pipe_ends[0], POLLIN, 0};
-    const int ready = poll(&wait_for_end, 1, static_cast<int>(std::min<long long>(left.count(), 1 << 30)));
-    if (ready < 0 && errno != EINTR) {
-      ended = true;  // cannot wait with a limit: wait for the child without one
-      break;
-    }
-    char byte;
-    ended = ready > 0 && read(pipe_ends[0], &byte, 1) <= 0;  // end of file: the child has ended
-  }
-  close(pipe_ends[0]);
-  if (!ended) kill(child, SIGKILL);
-  int status = 0;
-  while (waitpid(child, &status, 0) < 0) {
-    if (errno != EINTR) return;  // the child was reaped elsewhere (SIGCHLD ignored): no verdict
-  }
-  if (!ended) {
-    throw InputError(source + ": the HDF5 library did not finish walking the file's metadata within " +
-                     (limit.count() >= 1000 && limit.count() % 1000 == 0 ? std::to_string(limit.count() / 1000) + " s"
-                                                                         : std::to_string(limit.count()) + " ms") +
-                     ": the file is damaged (a loop in its structures?) or on a stalled disk; rpt did not read it");
-  }
-  if (WIFEXITED(status)) {
-    const int code = WEXITSTATUS(status);
-    if (code == kWalked || code == kReportedError || code == kWalkFailed) {
-      if (key) {
-        const std::lock_guard<std::mutex> lock(PassedFiles().mutex);
-        if (PassedFiles().files.size() >= kRememberedFiles) PassedFiles().files.clear();
-        PassedFiles().files.insert(*key);
+  const ChildOutcome outcome = RunInChild(
+      [&] {
+        try {
+          return WalkHdf5Metadata(path, inflate_limit) ? kWalked : kReportedError;
+        } catch (...) {
+          return kWalkFailed;
+        }
+      },
+      limit);
+  switch (outcome.kind) {
+    case ChildOutcome::Kind::kNotRun:
+      return;  // no child to walk in (process or descriptor limit, memory): read without the walk
+    case ChildOutcome::Kind::kTimedOut:
+      throw InputError(source + ": the HDF5 library did not finish walking the file's metadata within " +
+                       LimitText(limit) +
+                       ": the file is damaged (a loop in its structures?) or on a stalled disk; rpt did not read it");
+    case ChildOutcome::Kind::kExited:
+      if (outcome.exit_code == kWalked || outcome.exit_code == kReportedError || outcome.exit_code == kWalkFailed) {
+        if (key) {
+          const std::lock_guard<std::mutex> lock(PassedFiles().mutex);
+          if (PassedFiles().files.size() >= kRememberedFiles) PassedFiles().files.clear();
+          PassedFiles().files.insert(*key);
+        }
+        return;
       }
-      return;
-    }
+      break;
+    case ChildOutcome::Kind::kSignaled:
+      break;
   }
-  const std::string how = WIFSIGNALED(status) ? "crashed (" + SignalName(WTERMSIG(status)) + ")"
-                                              : "failed (exit code " + std::to_string(WEXITSTATUS(status)) + ")";
+  const std::string how = outcome.kind == ChildOutcome::Kind::kSignaled
+                              ? "crashed (" + SignalName(outcome.signal) + ")"
+                              : "failed (exit code " + std::to_string(outcome.exit_code) + ")";
   throw InputError(source + ": the HDF5 library (" + LibraryVersion() + ") " + how +
                    " walking the file's groups and attributes: the file is damaged; rpt did not read it");
 #else
