@@ -181,5 +181,16 @@ TEST(FuzzRegressions, OpenCVYamlWithAKeylessColonIsAnInputError) {
   EXPECT_FALSE(accepted);
 }
 
+// Found by scripts/fuzz.sh (calibration_easymocap, a timeout): OpenCV 4.6's YAML parser loops
+// forever on this text; the parse runs in a child process bounded in time
+// (file_storage::kParseLimit), and the file is an input error after it.
+TEST(FuzzRegressions, OpenCVYamlThatLoopsTheParserIsAnInputError) {
+  const std::string text = "%YAML:1.:\n   - cam_a\n   - cam_b\n\"  - cam_a\n   - cam_d\nK_cam_a: L!";
+  bool accepted = true;
+  EXPECT_NO_THROW(accepted =
+                      RunFuzzTarget(*FindFuzzTarget("calibration_easymocap"), Bytes(text.begin(), text.end())));
+  EXPECT_FALSE(accepted);
+}
+
 }  // namespace
 }  // namespace rpt::fuzz

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "core/errors.h"
+#include "datasets/io/child_process.h"
 
 namespace rpt::file_storage {
 namespace {
@@ -167,7 +168,7 @@ std::vector<std::string> File::Strings(const std::string& key) const {
   return value->strings;
 }
 
-File ReadFile(const std::filesystem::path& path) {
+File ReadFile(const std::filesystem::path& path, std::chrono::milliseconds parse_limit) {
   File file;
   file.source = path.string();
   std::ifstream in(path, std::ios::binary);
@@ -186,6 +187,26 @@ File ReadFile(const std::filesystem::path& path) {
   if (!known_start) {
     text = "%YAML:1.0\n" + text;
     line_offset = 1;
+  }
+  // First in a child process: OpenCV's parsers can loop forever (or crash) on a damaged file. Any
+  // ending of the child but a timeout or a crash lets the parse below run and report.
+  const io::ChildOutcome trial = io::RunInChild(
+      [&text] {
+        try {
+          const cv::FileStorage storage(text, cv::FileStorage::READ | cv::FileStorage::MEMORY);
+          return 0;
+        } catch (...) {
+          return 1;
+        }
+      },
+      parse_limit);
+  if (trial.kind == io::ChildOutcome::Kind::kTimedOut) {
+    throw InputError(file.source + ": OpenCV's FileStorage parser did not finish within " + io::LimitText(parse_limit) +
+                     ": the file is damaged; rpt did not read it");
+  }
+  if (trial.kind == io::ChildOutcome::Kind::kSignaled) {
+    throw InputError(file.source + ": OpenCV's FileStorage parser crashed (" + io::SignalName(trial.signal) +
+                     "): the file is damaged; rpt did not read it");
   }
   try {
     cv::FileStorage storage(text, cv::FileStorage::READ | cv::FileStorage::MEMORY);

@@ -5,6 +5,7 @@
 // the line or the node.
 #pragma once
 
+#include <chrono>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -50,10 +51,14 @@ struct File {
   std::vector<std::string> Strings(const std::string& key) const;
 };
 
+// OpenCV 4.6's YAML parser loops forever on some damaged files (e.g. "   - a\n\"\nK"): the text is
+// parsed in a child process first (io::RunInChild), bounded by this limit.
+inline constexpr std::chrono::milliseconds kParseLimit{5000};
+
 // Reads a FileStorage file (YAML with or without the %YAML header, XML, JSON). Throws InputError
-// "<path>: file not found", "<path>:<line>: <OpenCV's parse error>" or "<path>: not an OpenCV
-// FileStorage file (...)".
-File ReadFile(const std::filesystem::path& path);
+// "<path>: file not found", "<path>:<line>: <OpenCV's parse error>", "<path>: not an OpenCV
+// FileStorage file (...)", or "<path>: OpenCV's FileStorage parser did not finish (crashed) ...".
+File ReadFile(const std::filesystem::path& path, std::chrono::milliseconds parse_limit = kParseLimit);
 
 // A FileStorage text being written; YAML, or XML when `xml`. Keys OpenCV refuses (only letters,
 // digits, '-', '_' and ' ') throw InputError "<source>: cannot write <key>: ...".

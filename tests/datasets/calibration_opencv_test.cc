@@ -7,6 +7,7 @@
 
 #include "core/errors.h"
 #include "datasets/calibration/calibration.h"
+#include "datasets/calibration/file_storage.h"
 #include "tests/datasets/calibration_test_util.h"
 #include "tests/datasets/io_test_util.h"
 #include "tests/error_message.h"
@@ -110,6 +111,21 @@ distortion_coefficients:
   const auto bad =
       WriteCalibrationText(dir.path() / "bad.yaml", "image_width: 1280\ncamera_matrix:\n  rows: 3\n   data: [1, 2\n");
   EXPECT_THAT(test::InputErrorOf([&] { ReadCalibration(bad); }), HasSubstr(bad.string() + ":4: "));
+}
+
+// Found by the fuzzer (calibration_easymocap): OpenCV 4.6's YAML parser loops forever on this
+// text (an indented sequence, then a line with an unterminated quote). The parse runs in a child
+// process first; past its limit the file is refused.
+TEST(CalibrationOpenCV, AFileThatLoopsOpenCVsParserIsRefusedAfterTheLimit) {
+  test::TempDir dir;
+  const auto looping = WriteCalibrationText(dir.path() / "looping.yml", "   - a\n\"\nK");
+  EXPECT_EQ(test::InputErrorOf([&] { file_storage::ReadFile(looping, std::chrono::milliseconds(300)); }),
+            looping.string() + ": OpenCV's FileStorage parser did not finish within 300 ms: the file is damaged; rpt "
+                               "did not read it");
+  // A damaged file the parser does finish is still reported with OpenCV's error and its line.
+  const auto bad = WriteCalibrationText(dir.path() / "bad.yml", "   - a\n\"\n");
+  EXPECT_THAT(test::InputErrorOf([&] { file_storage::ReadFile(bad, std::chrono::milliseconds(300)); }),
+              HasSubstr(bad.string()));
 }
 
 TEST(CalibrationOpenCV, StereoFilesGiveTwoCamerasTheFirstAtTheOrigin) {
