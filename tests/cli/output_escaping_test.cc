@@ -68,6 +68,17 @@ TEST(OutputEscaping, TerminalTextKeepsNothingATerminalActsOn) {
             "Z\xc3\xbcrich \xe2\x9c\x93 \xf0\x9f\x98\x80");
 }
 
+// A name quoted into a one-line message (errors and warnings of the readers): one line, safe.
+TEST(OutputEscaping, QuotedNamesAreOneTerminalSafeLine) {
+  for (const std::string& s : HostileStrings()) {
+    const std::string quoted = QuoteName(s);
+    ASSERT_GE(quoted.size(), 2u);
+    EXPECT_EQ(quoted.front(), '\'');
+    EXPECT_EQ(quoted.back(), '\'');
+    ExpectTerminalSafe(quoted, false, s);
+  }
+}
+
 TEST(OutputEscaping, HtmlTextHasNoMarkup) {
   EXPECT_EQ(HtmlText("<!--<script>"), "&lt;!--&lt;script&gt;");
   EXPECT_EQ(HtmlText("a & 'b' \"c\"\n"), "a &amp; &apos;b&apos; &quot;c&quot;\\x0a");
