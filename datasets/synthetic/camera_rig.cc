@@ -175,13 +175,15 @@ std::vector<Camera> MakeCameraRig(const RigOptions& options, uint64_t seed) {
       azimuth = azimuth_offset + 2.0 * std::numbers::pi * i / n + rng.Normal(0.0, 0.03);
       radius = options.radius_m * (1.0 + rng.Uniform(-0.02, 0.02));
       height = options.height_m + rng.Uniform(-0.05, 0.05);
-      target += Eigen::Vector3d(rng.Normal(0.0, 0.05), rng.Normal(0.0, 0.05), rng.Normal(0.0, 0.03));
+      const double dz = rng.Normal(0.0, 0.03), dy = rng.Normal(0.0, 0.05), dx = rng.Normal(0.0, 0.05);  // random.h
+      target += Eigen::Vector3d(dx, dy, dz);
       roll = rng.Normal(0.0, 0.005);
     } else {
       azimuth = azimuth_offset + 2.0 * std::numbers::pi * (i + rng.Uniform(-0.35, 0.35)) / n;
       radius = options.radius_m * rng.Uniform(0.75, 1.25);
       height = std::max(0.5, options.height_m + rng.Uniform(-0.8, 0.8));
-      target += Eigen::Vector3d(rng.Uniform(-0.5, 0.5), rng.Uniform(-0.5, 0.5), rng.Uniform(-0.3, 0.3));
+      const double dz = rng.Uniform(-0.3, 0.3), dy = rng.Uniform(-0.5, 0.5), dx = rng.Uniform(-0.5, 0.5);  // random.h
+      target += Eigen::Vector3d(dx, dy, dz);
       roll = rng.Normal(0.0, 0.03);
     }
     const Eigen::Vector3d center(options.look_at_m.x() + radius * std::cos(azimuth),

@@ -120,7 +120,10 @@ bool DetectPerson(const DetectorOptions& options, const ViewContext& view, const
     Eigen::Vector2d error = Eigen::Vector2d::Zero();
     const bool outlier = options.outlier_probability > 0.0 && rng.Bernoulli(options.outlier_probability);
     const double joint_sigma = outlier ? outlier_sigma : sigma;
-    if (joint_sigma > 0.0) error = Eigen::Vector2d(rng.Normal(), rng.Normal()) * joint_sigma;
+    if (joint_sigma > 0.0) {
+      const double dy = rng.Normal(), dx = rng.Normal();  // in this order (random.h)
+      error = Eigen::Vector2d(dx, dy) * joint_sigma;
+    }
     const bool dropped = options.joint_dropout > 0.0 && rng.Bernoulli(options.joint_dropout);
     const double jitter = options.score_jitter > 0.0 ? options.score_jitter * rng.Normal() : 0.0;
     if (dropped) {
@@ -178,7 +181,8 @@ bool DetectPersonFitted(const DetectorOptions& options, const ViewContext& view,
   const double person_factor = fitted.person_spread > 0.0 ? std::exp(fitted.person_spread * rng.Normal()) : 1.0;
   Eigen::Vector2d shift = Eigen::Vector2d::Zero();
   if (fitted.person_shift_m > 0.0) {
-    shift = Eigen::Vector2d(rng.Normal(), rng.Normal()) * (fitted.person_shift_m * pixels_per_metre);
+    const double dy = rng.Normal(), dx = rng.Normal();  // in this order (random.h)
+    shift = Eigen::Vector2d(dx, dy) * (fitted.person_shift_m * pixels_per_metre);
   }
   for (int k = 0; k < num_joints; ++k) {
     if (!visible[k]) {

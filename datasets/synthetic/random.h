@@ -1,6 +1,11 @@
 // SPDX-License-Identifier: MIT
 // Seeded random numbers with hand-written distributions, so synthetic data is bit-identical on
 // every platform and standard library (std::normal_distribution & co. are implementation-defined).
+//
+// Draw once per statement: the arguments of one call (Eigen::Vector2d(rng.Normal(), rng.Normal()))
+// are evaluated in an unspecified order, GCC the last first and clang the first first, so such a
+// call draws different numbers per compiler. The readers draw into variables, in GCC's order where
+// a call used to draw several (the order that made every published number).
 #pragma once
 
 #include <cstdint>

@@ -37,7 +37,10 @@ constexpr double kBlockedTimeout = 2.0;   // s, then a new waypoint
 struct Box2 {
   Vector2d lo, hi;
   bool Contains(const Vector2d& p) const { return (p.array() >= lo.array()).all() && (p.array() <= hi.array()).all(); }
-  Vector2d Sample(Rng& rng) const { return Vector2d(rng.Uniform(lo.x(), hi.x()), rng.Uniform(lo.y(), hi.y())); }
+  Vector2d Sample(Rng& rng) const {
+    const double y = rng.Uniform(lo.y(), hi.y()), x = rng.Uniform(lo.x(), hi.x());  // in this order (random.h)
+    return Vector2d(x, y);
+  }
 };
 
 Box2 ShrunkRoom(const Eigen::Vector3d& center, const Eigen::Vector3d& size, double margin) {
