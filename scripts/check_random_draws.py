@@ -10,6 +10,7 @@ of an `if`, in a braced list, or in the branches of `?:` (and of `&&` / `||`) ar
 allowed.
 
 usage: check_random_draws.py FILE_OR_DIR...   (C++ sources; exit 1 and one line per finding)
+       check_random_draws.py --self-test      (the checker on its own cases)
 """
 import os
 import re
@@ -79,6 +80,31 @@ def findings(text):
     return result
 
 
+# The checker's own cases: (source line, flagged?).
+SELF_TEST = [
+    ('error = Eigen::Vector2d(rng.Normal(), rng.Normal()) * sigma;', True),
+    ('double a = rng.Normal() + rng.Normal();', True),
+    ('g(h(rng.Normal()), rng.Uniform());', True),
+    ('const double y = rng.Normal(), x = rng.Normal();', False),
+    ('double b = ok ? rng.Uniform() : rng.Uniform();', False),
+    ('if (rng.Bernoulli(0.5)) x = rng.Uniform(1, 2);', False),
+    ('auto v = Vec{rng.Normal(), rng.Normal()};', False),
+    ('bool c = rng.Bernoulli(0.1) && rng.Bernoulli(0.2);', False),
+    ('// Vector2d(rng.Normal(), rng.Normal()) in a comment', False),
+    ('x = rng.Normal();\ny = rng.Normal();', False),
+]
+
+
+def self_test():
+    failed = 0
+    for source, flagged in SELF_TEST:
+        got = bool(findings('void f(Rng& rng) {\n' + source + '\n}\n'))
+        if got != flagged:
+            print(f'self-test: {source!r} flagged={got}, expected {flagged}')
+            failed += 1
+    return 1 if failed else 0
+
+
 def main(paths):
     files = []
     for path in paths:
@@ -99,4 +125,6 @@ def main(paths):
 
 
 if __name__ == '__main__':
+    if sys.argv[1:] == ['--self-test']:
+        sys.exit(self_test())
     sys.exit(main(sys.argv[1:] or ['datasets/synthetic', 'bench']))
