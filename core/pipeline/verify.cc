@@ -21,27 +21,32 @@ double MeanCoreDistance(const Poses3D& persons, std::span<const int> core_joints
   return common >= 2 ? sum / common : -1.0;
 }
 
-// Marks scratch->duplicate[p] for every person p within duplicate_distance_m of a stronger kept
-// person made from none of p's views. Stronger: made from more views, then from more pairs, then
-// the earlier person. Needs the groups (person i merged from group i, whose pairs are the
+// Fills scratch->views_of (per person and view: made from one of that view's poses) and
+// scratch->num_views; all zero without groups (person i merged from group i, whose pairs are the
 // proposals groups.begin[i] .. begin[i + 1] of triangulate_full).
-void MarkDuplicates(const VerifyOptions& options, const steps::VerifyInput& in, VerifyScratch* scratch,
-                    const Poses3D& persons) {
-  const int num_persons = persons.num_persons();
+void MarkOwnViews(const steps::VerifyInput& in, bool by_group, int num_persons, VerifyScratch* scratch) {
   const int num_views = static_cast<int>(in.geometry.size());
   VerifyScratch& s = *scratch;
   s.views_of.assign(static_cast<size_t>(num_persons) * num_views, 0);
   s.num_views.assign(num_persons, 0);
-  s.by_strength.resize(num_persons);
-  for (int p = 0; p < num_persons; ++p) {
+  for (int p = 0; p < num_persons && by_group; ++p) {
     char* const views_of = s.views_of.data() + static_cast<size_t>(p) * num_views;
     for (int m = in.groups.begin[p]; m < in.groups.begin[p + 1]; ++m) {
       views_of[in.views.view_of[in.proposals.pairs[m].a]] = 1;
       views_of[in.views.view_of[in.proposals.pairs[m].b]] = 1;
     }
     for (int v = 0; v < num_views; ++v) s.num_views[p] += views_of[v];
-    s.by_strength[p] = p;
   }
+}
+
+// Marks scratch->duplicate[p] for every person p within duplicate_distance_m of a stronger kept
+// person made from none of p's views (scratch->views_of). Stronger: made from more views, then
+// from more pairs, then the earlier person.
+void MarkDuplicates(const VerifyOptions& options, const steps::VerifyInput& in, VerifyScratch* scratch,
+                    const Poses3D& persons) {
+  const int num_persons = persons.num_persons();
+  const int num_views = static_cast<int>(in.geometry.size());
+  VerifyScratch& s = *scratch;
   // Two persons share no view only if their view counts add up to at most the views: else (most
   // frames, where every person is seen by most cameras) there is nothing to compare.
   int fewest = num_views + 1, second_fewest = num_views + 1;
@@ -54,6 +59,8 @@ void MarkDuplicates(const VerifyOptions& options, const steps::VerifyInput& in, 
     }
   }
   if (fewest + second_fewest > num_views) return;
+  s.by_strength.resize(num_persons);
+  for (int p = 0; p < num_persons; ++p) s.by_strength[p] = p;
   const auto pairs = [&](int p) { return in.groups.begin[p + 1] - in.groups.begin[p]; };
   std::sort(s.by_strength.begin(), s.by_strength.end(), [&](int a, int b) {
     if (s.num_views[a] != s.num_views[b]) return s.num_views[a] > s.num_views[b];
@@ -85,11 +92,10 @@ int steps::Verify(const VerifyOptions& options, const VerifyInput& in, VerifyScr
                   FrameStats* stats) {
   const PreparedViews& views = in.views;
   const std::span<const ViewGeometry> geometry = in.geometry;
-  const Proposals& proposals = in.proposals;
-  const Groups& groups = in.groups;
   if (!options.enabled || persons->num_persons() == 0) return persons->num_persons();
   const int num_views = static_cast<int>(geometry.size());
-  const bool by_group = groups.size() == persons->num_persons();
+  const bool by_group = in.groups.size() == persons->num_persons();
+  MarkOwnViews(in, by_group, persons->num_persons(), scratch);
   scratch->duplicate.assign(persons->num_persons(), 0);
   if (by_group && options.duplicate_distance_m > 0 && persons->num_persons() > 1) {
     MarkDuplicates(options, in, scratch, *persons);
@@ -102,20 +108,13 @@ int steps::Verify(const VerifyOptions& options, const VerifyInput& in, VerifyScr
       continue;
     }
     const auto person = persons->Person(p);
-    int support = 0, empty = 0;
-    scratch->own_view.assign(num_views, 0);
-    if (by_group) {
-      for (int m = groups.begin[p]; m < groups.begin[p + 1]; ++m) {
-        scratch->own_view[views.view_of[proposals.pairs[m].a]] = 1;
-        scratch->own_view[views.view_of[proposals.pairs[m].b]] = 1;
-      }
-      for (int v = 0; v < num_views; ++v) support += scratch->own_view[v];
-    }
+    const char* const own_view = scratch->views_of.data() + static_cast<size_t>(p) * num_views;
+    int support = scratch->num_views[p], empty = 0;
     // Empty views can only come from the other views: skip persons that cannot be dropped.
     const int others = num_views - support;
     const bool can_drop = others >= options.min_empty_views && others > support;
     for (int v = 0; can_drop && v < num_views; ++v) {
-      if (scratch->own_view[v]) continue;
+      if (own_view[v]) continue;
       if (!have_boxes) {
         PoseBoxes(views, &scratch->verdict.boxes);
         have_boxes = true;

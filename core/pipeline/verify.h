@@ -33,8 +33,7 @@ namespace rpt {
 
 struct VerifyScratch {
   ViewVerdictScratch verdict;
-  std::vector<char> own_view;       // per view: holds one of the person's own poses
-  std::vector<char> views_of;       // per person and view: the person's own views
+  std::vector<char> views_of;       // per person and view: holds one of the person's own poses
   std::vector<int> num_views;       // per person: how many views it was made from
   std::vector<int> by_strength;     // persons, strongest first
   std::vector<char> duplicate;      // per person: dropped as a duplicate

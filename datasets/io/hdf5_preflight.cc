@@ -18,10 +18,6 @@
 #include "datasets/io/child_process.h"
 #include "datasets/io/hdf5_file.h"
 
-#if defined(__linux__) || defined(__FreeBSD__)
-#define RPT_HDF5_PREFLIGHT_FORK 1  // io::RunInChild can fork here
-#endif
-
 namespace rpt::io {
 namespace {
 
@@ -139,7 +135,6 @@ herr_t VisitObject(hid_t root, const char* name, const H5O_info_t* info, void* d
   return 0;
 }
 
-#ifdef RPT_HDF5_PREFLIGHT_FORK
 // Files that passed, remembered by their bytes (small files only): the readers open a cache up to
 // three times (probe, labels, detections) and a fuzzer reads thousands of small files, while a
 // larger file's walk costs little beside reading it. The bytes, not the name and time stamp: a
@@ -175,17 +170,14 @@ std::string LibraryVersion() {
   H5get_libversion(&major, &minor, &release);
   return std::to_string(major) + "." + std::to_string(minor) + "." + std::to_string(release);
 }
-#endif
 
 }  // namespace
 
 void SetHdf5Preflight(bool enabled) { preflight_enabled = enabled; }
 
 void ForgetPassedHdf5Files() {
-#ifdef RPT_HDF5_PREFLIGHT_FORK
   const std::lock_guard<std::mutex> lock(PassedFiles().mutex);
   PassedFiles().files.clear();
-#endif
 }
 bool Hdf5PreflightEnabled() { return preflight_enabled; }
 
@@ -213,7 +205,6 @@ bool WalkHdf5Metadata(const std::filesystem::path& path, std::uint64_t inflate_l
 
 void PreflightHdf5(const std::string& source, const std::filesystem::path& path, std::uint64_t inflate_limit,
                    std::chrono::milliseconds limit) {
-#ifdef RPT_HDF5_PREFLIGHT_FORK
   if (!preflight_enabled) return;
   const auto key = PassKey(path, inflate_limit);
   if (key) {
@@ -254,9 +245,6 @@ void PreflightHdf5(const std::string& source, const std::filesystem::path& path,
                               : "failed (exit code " + std::to_string(outcome.exit_code) + ")";
   throw InputError(source + ": the HDF5 library (" + LibraryVersion() + ") " + how +
                    " walking the file's groups and attributes: the file is damaged; rpt did not read it");
-#else
-  (void)source, (void)path, (void)inflate_limit, (void)limit;
-#endif
 }
 
 }  // namespace rpt::io
