@@ -74,6 +74,8 @@ TriangulatorModel BuildModel(std::vector<Camera> cameras, JointNames input_joint
   m.core_limbs = ResolveLimbs(LimbsFor(core_names), core_names);
   m.core_mirror = MirrorIndices(core_names);
   m.all_limbs = ResolveLimbs(LimbsFor(m.output_joints), m.output_joints);
+  m.core_limb_columns = ToLimbColumns(m.core_limbs);
+  m.all_limb_columns = ToLimbColumns(m.all_limbs);
   m.typical_limbs = ResolveTypicalLimbs(m.output_joints);
   m.ground_joints = ResolveGroundJoints(m.output_joints);
   m.room = Room{m.resolved.room_check.center_m, m.resolved.room_check.size_m};

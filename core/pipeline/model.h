@@ -36,6 +36,8 @@ struct TriangulatorModel {
   std::vector<int> all_joints;         // 0 .. num_output_joints-1
   std::vector<ResolvedLimb> core_limbs;  // indexed by core slot
   std::vector<ResolvedLimb> all_limbs;   // indexed by output joint
+  LimbColumns core_limb_columns;         // core_limbs and all_limbs as columns (limb pruning's kernel)
+  LimbColumns all_limb_columns;
   std::vector<int> neighbour;          // per output joint, -1 = none
   std::vector<TypicalLimb> typical_limbs;  // single_view: limbs with typical lengths
   GroundJoints ground_joints;              // single_view's ground prior: ankles, hips, shoulders

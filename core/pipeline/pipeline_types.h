@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace rpt {
@@ -158,5 +159,24 @@ struct ResolvedLimb {
   double min_length_sq() const { return min_length_m * min_length_m; }
   double max_length_sq() const { return max_length_m * max_length_m; }
 };
+
+// The same limbs as columns, for the SIMD limb-pruning kernel (simd::ImplausibleLimbs): joint
+// indices as 64-bit lanes (gather indices) and the squared bounds computed once.
+struct LimbColumns {
+  std::vector<int64_t> a, b;
+  std::vector<double> min_sq, max_sq;
+  size_t size() const { return a.size(); }
+};
+
+inline LimbColumns ToLimbColumns(std::span<const ResolvedLimb> limbs) {
+  LimbColumns out;
+  for (const ResolvedLimb& limb : limbs) {
+    out.a.push_back(limb.a);
+    out.b.push_back(limb.b);
+    out.min_sq.push_back(limb.min_length_sq());
+    out.max_sq.push_back(limb.max_length_sq());
+  }
+  return out;
+}
 
 }  // namespace rpt

@@ -17,7 +17,10 @@
 // The pair score (step 6-7 only) is in score.h.
 #pragma once
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <span>
 
 #include "core/fast_math.h"
@@ -72,6 +75,45 @@ RPT_ALWAYS_INLINE double JointResidual(const ViewGeometry& ga, const ViewGeometr
   return adaptive ? 0.5 * (ea * za * scale_a + eb * zb * scale_b) : 0.5 * (ea * scale_a + eb * scale_b);
 }
 
+// Limb pruning: in limb order (proximal before distal), a limb whose two joints are scored
+// (score > 0) and whose length lies outside its range invalidates its distal joint (score 0).
+// Returns the joints invalidated. Done 64 limbs at a time: first, without branches, which limbs
+// are implausible and have both joints scored at the start; then, in limb order, only those, each
+// tested again as an earlier limb may have invalidated its proximal joint. The same result as the
+// plain loop: pruning only lowers scores to 0, and a length never depends on a score. With
+// `limb_columns` (the same limbs as columns; may be null) the first pass is the SIMD kernel, for
+// kMinLimbsForKernel limbs or more at a time (below that, the call and its gathers cost more than
+// the scalar loop: 16 body limbs ran 0.5-0.9 us slower per frame in each of score and
+// triangulate_full, 133 whole-body joints 3 us faster).
+inline constexpr size_t kMinLimbsForKernel = 32;
+RPT_ALWAYS_INLINE int PruneImplausibleLimbs(std::span<const ResolvedLimb> limbs, const LimbColumns* limb_columns,
+                                            const Eigen::Vector3d* xyz, double* score) {
+  int pruned = 0;
+  const size_t num_limbs = limbs.size();
+  for (size_t begin = 0; begin < num_limbs; begin += 64) {
+    const size_t end = std::min(num_limbs, begin + 64);
+    uint64_t implausible = 0;
+    const bool kernel = limb_columns != nullptr && end - begin >= kMinLimbsForKernel;
+    if (kernel)
+      implausible = simd::ImplausibleLimbs(*limb_columns, begin, end, reinterpret_cast<const double*>(xyz), score);
+    for (size_t l = begin; l < end && !kernel; ++l) {
+      const ResolvedLimb& limb = limbs[l];
+      const double length_sq = (xyz[limb.a] - xyz[limb.b]).squaredNorm();
+      const bool outside = (length_sq < limb.min_length_sq()) | (length_sq > limb.max_length_sq());
+      const bool scored = (score[limb.a] > 0) & (score[limb.b] > 0);  // (an unscored joint's xyz is not set)
+      implausible |= static_cast<uint64_t>(outside & scored) << (l - begin);
+    }
+    while (implausible != 0) {
+      const ResolvedLimb& limb = limbs[begin + static_cast<size_t>(std::countr_zero(implausible))];
+      implausible &= implausible - 1;
+      if (score[limb.a] <= 0 || score[limb.b] <= 0) continue;
+      score[limb.b] = 0;
+      ++pruned;
+    }
+  }
+  return pruned;
+}
+
 // What scoring reads of proposal k: the geometry of its two views, its two 2D poses, and the
 // index of its first joint in the per-joint arrays.
 struct ProposalViews {
@@ -95,10 +137,12 @@ RPT_ALWAYS_INLINE ProposalViews ViewsOf(const PreparedViews& views, std::span<co
 // `joints` maps the proposal's joint slots to prepared-pose joints, `limbs` are indexed by slot;
 // `residual` (may be null: computed here) holds the joints' residuals. `columns` (may be null:
 // scalar code) are the keypoint columns of exactly the joints `joints` (the SIMD kernel reads
-// them). Returns the joints invalidated by limb pruning.
+// them); with them, `limb_columns` (may be null) lets limb pruning use its kernel too. Returns
+// the joints invalidated by limb pruning.
 RPT_ALWAYS_INLINE int ScoreJointsOfProposal(const ScoreKernel& kernel, const PreparedViews& views,
                                             const ProposalViews& pv, std::span<const int> joints,
-                                            std::span<const ResolvedLimb> limbs, const double* residual,
+                                            std::span<const ResolvedLimb> limbs, const LimbColumns* limb_columns,
+                                            const double* residual,
                                             const KeypointColumns* columns, Proposals* proposals, int k) {
   const int n = proposals->num_joints;
   const PosePair& pair = proposals->pairs[k];
@@ -143,18 +187,7 @@ RPT_ALWAYS_INLINE int ScoreJointsOfProposal(const ScoreKernel& kernel, const Pre
     }
     score[i] = geometric[i] = FastExpNeg(exponent);
   }
-  int pruned = 0;
-  if (kernel.prune_limbs) {
-    for (const ResolvedLimb& limb : limbs) {
-      if (score[limb.a] <= 0 || score[limb.b] <= 0) continue;
-      const double length_sq = (xyz[limb.a] - xyz[limb.b]).squaredNorm();
-      if (length_sq < limb.min_length_sq() || length_sq > limb.max_length_sq()) {
-        score[limb.b] = 0;
-        ++pruned;
-      }
-    }
-  }
-  return pruned;
+  return kernel.prune_limbs ? PruneImplausibleLimbs(limbs, columns != nullptr ? limb_columns : nullptr, xyz, score) : 0;
 }
 
 }  // namespace rpt

@@ -130,7 +130,8 @@ int steps::Score(const ScoreOptions& options, const ScoreInput& in, NoiseScale* 
   for (int k = 0; k < proposals->size(); ++k) {
     const ProposalViews pv = ViewsOf(views, geometry, *proposals, k);
     const double* residual = adaptive ? scratch->residual.data() + pv.base : nullptr;
-    pruned += ScoreJointsOfProposal(*kernel, views, pv, joints, in.core_limbs, residual, columns, proposals, k);
+    pruned += ScoreJointsOfProposal(*kernel, views, pv, joints, in.core_limbs, in.core_limb_columns, residual, columns,
+                                    proposals, k);
     // Pair score over the joints both views saw; joint score gets the 2D confidence.
     double* score = proposals->score.data() + pv.base;
     int seen = 0;

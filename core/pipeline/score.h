@@ -42,6 +42,7 @@ struct ScoreInput {
   std::span<const ViewGeometry> geometry;    // per camera
   std::span<const int> core_joints;          // proposal slot -> prepared-pose joint
   std::span<const ResolvedLimb> core_limbs;  // limbs between core joints, indexed by slot
+  const LimbColumns* core_limb_columns = nullptr;  // the same as columns (null: scalar pruning)
 };
 
 // Scores `proposals` (triangulate_core's, after the room check). With the adaptive scale the

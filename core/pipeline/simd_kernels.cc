@@ -455,6 +455,38 @@ double PixelDistanceSumImpl(const double* uv, const PoseColumns& c, int n, int* 
   return sum;
 }
 
+// ImplausibleLimbs for limbs [l, l + Lanes(d)): the lanes' bits.
+template <class D>
+HWY_INLINE uint64_t ImplausibleLimbLanes(D d, const LimbColumns& t, size_t l, const double* xyz, const double* score) {
+  const hn::RebindToSigned<D> di;
+  const auto a = hn::LoadU(di, t.a.data() + l), b = hn::LoadU(di, t.b.data() + l);
+  const auto a3 = hn::Add(hn::Add(a, a), a), b3 = hn::Add(hn::Add(b, b), b);
+  const auto dx = hn::Sub(hn::GatherIndex(d, xyz, a3), hn::GatherIndex(d, xyz, b3));
+  const auto dy = hn::Sub(hn::GatherIndex(d, xyz + 1, a3), hn::GatherIndex(d, xyz + 1, b3));
+  const auto dz = hn::Sub(hn::GatherIndex(d, xyz + 2, a3), hn::GatherIndex(d, xyz + 2, b3));
+  const auto length_sq = hn::Add(hn::Add(hn::Mul(dx, dx), hn::Mul(dy, dy)), hn::Mul(dz, dz));
+  const auto outside =
+      hn::Or(hn::Lt(length_sq, hn::LoadU(d, t.min_sq.data() + l)), hn::Gt(length_sq, hn::LoadU(d, t.max_sq.data() + l)));
+  const auto zero = hn::Zero(d);
+  const auto scored = hn::And(hn::Gt(hn::GatherIndex(d, score, a), zero), hn::Gt(hn::GatherIndex(d, score, b), zero));
+  uint8_t bits[8] = {};
+  hn::StoreMaskBits(d, hn::And(outside, scored), bits);
+  return bits[0];
+}
+
+uint64_t ImplausibleLimbsImpl(const LimbColumns& limbs, size_t begin, size_t end, const double* xyz,
+                              const double* score) {
+  const hn::ScalableTag<double> d;
+  const hn::CappedTag<double, 1> d1;
+  const size_t N = hn::Lanes(d);
+  static_assert(HWY_MAX_BYTES / 8 <= 8, "a vector's lanes fit one byte of mask bits");
+  uint64_t bits = 0;
+  size_t l = begin;
+  for (; l + N <= end; l += N) bits |= ImplausibleLimbLanes(d, limbs, l, xyz, score) << (l - begin);
+  for (; l < end; ++l) bits |= ImplausibleLimbLanes(d1, limbs, l, xyz, score) << (l - begin);
+  return bits;
+}
+
 // std::max(best, score) lane by lane for joints [j, j + Lanes(d)).
 template <class D, class V = hn::Vec<D>>
 HWY_INLINE void RefineBestScoreLanes(D d, const double* score, size_t j, double* best) {
@@ -719,6 +751,7 @@ HWY_EXPORT(ScoreJointsImpl);
 HWY_EXPORT(MergeGroupImpl);
 HWY_EXPORT(PixelDistanceSumImpl);
 HWY_EXPORT(RankMedianImpl);
+HWY_EXPORT(ImplausibleLimbsImpl);
 HWY_EXPORT(UndistortPinholeImpl);
 HWY_EXPORT(RefineBestScoreImpl);
 HWY_EXPORT(RefinePrepareViewImpl);
@@ -756,6 +789,10 @@ size_t MergeScratchSize(int members) {
 void MergeGroup(const MergeParams& p, const double* xyz, const double* score, int members, int n, double* dist,
                 double* out) {
   HWY_DYNAMIC_DISPATCH(MergeGroupImpl)(p, xyz, score, members, n, dist, out);
+}
+
+uint64_t ImplausibleLimbs(const LimbColumns& limbs, size_t begin, size_t end, const double* xyz, const double* score) {
+  return HWY_DYNAMIC_DISPATCH(ImplausibleLimbsImpl)(limbs, begin, end, xyz, score);
 }
 
 double RankMedian(const double* values, int n) { return HWY_DYNAMIC_DISPATCH(RankMedianImpl)(values, n); }

@@ -2,8 +2,8 @@
 // SIMD kernels of the hot steps, one lane per joint: the undistortion of a pinhole camera's pose
 // (before step 1), mid-point triangulation of a pose pair
 // (steps 4 and 10), its reprojection residuals, their median and joint scores (steps 6-7 and 10), the pre-filter's
-// pixel distance (step 2), the group distance (step 9), the merge of a group (step 11) and the
-// multi-view refinement (step 11a).
+// pixel distance (step 2), the group distance (step 9), the merge of a group (step 11), the
+// multi-view refinement (step 11a), and, one lane per limb, limb pruning's length test.
 // Structure of arrays in (KeypointColumns, pipeline_types.h), the steps' own arrays out.
 //
 // Each kernel is compiled for several instruction sets (Highway, simd_kernels.cc, private to
@@ -16,6 +16,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
@@ -113,6 +114,12 @@ struct KeypointFields {
   double *u, *v, *score, *sqrt_score, *rx, *ry, *rz, *x, *y;
 };
 void UndistortPinhole(const PinholeView& view, const double* uvs, int n, const KeypointFields& out);
+
+// Pass 1 of limb pruning (PruneImplausibleLimbs, proposal_scoring.h), lanes across limbs: bit
+// l - begin of the result is set where limb l in [begin, end) (at most 64 limbs) has both joints
+// scored (score > 0) and a squared length ((dx^2 + dy^2) + dz^2 of xyz, x y z interleaved)
+// below min_sq or above max_sq.
+uint64_t ImplausibleLimbs(const LimbColumns& limbs, size_t begin, size_t end, const double* xyz, const double* score);
 
 // RankMedianScalar (median.h) of values[0..n), n in [1, kRankMedianMax], with the same comparisons
 // (the median of a pair's joint residuals in the score step): bit-identical, NaN included.

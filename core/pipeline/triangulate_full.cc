@@ -188,7 +188,7 @@ int steps::TriangulateFull(const TriangulateOptions& options, const TriangulateF
   int pruned = 0;
   for (int k = 0; k < proposals->size(); ++k) {
     const ProposalViews pv = ViewsOf(views, in.geometry, *proposals, k);
-    pruned += ScoreJointsOfProposal(in.kernel, views, pv, in.all_joints, in.limbs, nullptr,
+    pruned += ScoreJointsOfProposal(in.kernel, views, pv, in.all_joints, in.limbs, in.limb_columns, nullptr,
                                     all_columns ? &views.all_columns : nullptr, proposals, k);
     if (!in.kernel.use_confidence) continue;
     double* score = proposals->score.data() + pv.base;

@@ -47,6 +47,7 @@ struct TriangulateFullInput {
   std::span<const int> core_joints;        // core slot -> output joint
   std::span<const int> all_joints;         // 0 .. num_output_joints - 1
   std::span<const ResolvedLimb> limbs;     // limbs between output joints
+  const LimbColumns* limb_columns = nullptr;  // the same as columns (null: scalar pruning)
   const ScoreKernel& kernel;               // the frame's kernels (step 6-7)
 };
 

@@ -170,7 +170,8 @@ void Triangulator::Process(std::span<const Poses2D> views, double timestamp_s, P
   }
   run.Run<Step::kScore>(
       steps::ScoreInput{
-          .views = buf.prepared, .geometry = m.geometry, .core_joints = m.core_joints, .core_limbs = m.core_limbs},
+          .views = buf.prepared, .geometry = m.geometry, .core_joints = m.core_joints, .core_limbs = m.core_limbs,
+          .core_limb_columns = &m.core_limb_columns},
       &state.noise, &buf.score_scratch, &buf.core, &buf.kernel, stats);
   run.Run<Step::kFilter>(&buf.core);
   if (trace != nullptr) {
@@ -190,6 +191,7 @@ void Triangulator::Process(std::span<const Poses2D> views, double timestamp_s, P
                                                               .core_joints = m.core_joints,
                                                               .all_joints = m.all_joints,
                                                               .limbs = m.all_limbs,
+                                                              .limb_columns = &m.all_limb_columns,
                                                               .kernel = buf.kernel},
                                   &buf.triangulate_full_scratch, &buf.full, stats);
   persons->Clear(num_joints);

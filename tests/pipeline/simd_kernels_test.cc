@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstring>
 #include <functional>
@@ -283,6 +284,58 @@ TEST(SimdKernels, PixelDistanceSumEqualsThePrefiltersScalarLoopBitForBit) {
       }
     }
     EXPECT_EQ(compared, 200 * 8);
+  });
+}
+
+// Limb pruning's first pass (simd::ImplausibleLimbs) against the scalar test of each limb, on
+// random limbs with lengths exactly at their bounds, non-finite points and unscored joints, for
+// every chunk size up to 64 and every instruction set.
+TEST(SimdKernels, ImplausibleLimbsEqualsTheScalarTestBitForBit) {
+  simd::ForEachPathForTest([&] {
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<double> pos(-1, 1), unit(0, 1);
+    int compared = 0, implausible = 0, at_bound = 0;
+    for (int round = 0; round < 100; ++round) {
+      const int n = 133, num_limbs = 1 + round % 64;
+      std::vector<Eigen::Vector3d> xyz(n);
+      std::vector<double> score(n);
+      for (int i = 0; i < n; ++i) {
+        xyz[i] = Eigen::Vector3d(pos(rng), pos(rng), pos(rng));
+        if (unit(rng) < 0.03) xyz[i].y() = std::numeric_limits<double>::quiet_NaN();
+        const double kind = unit(rng);
+        score[i] = kind < 0.1 ? 0.0 : (kind < 0.13 ? -0.5 : unit(rng));
+      }
+      std::vector<ResolvedLimb> limbs;
+      std::uniform_int_distribution<int> joint(0, n - 1);
+      for (int l = 0; l < num_limbs; ++l) {
+        ResolvedLimb limb{joint(rng), joint(rng), 0.3 + 0.5 * unit(rng), 0.9 + 0.8 * unit(rng)};
+        const double length = (xyz[limb.a] - xyz[limb.b]).norm();
+        const double kind = unit(rng);  // a length exactly at a bound, both ways
+        if (kind < 0.1) limb.min_length_m = length;
+        if (kind > 0.9) limb.max_length_m = length;
+        limbs.push_back(limb);
+      }
+      const LimbColumns columns = ToLimbColumns(limbs);
+      for (const size_t begin : {size_t{0}, static_cast<size_t>(num_limbs / 3)}) {
+        const size_t end = static_cast<size_t>(num_limbs);
+        uint64_t expected = 0;
+        for (size_t l = begin; l < end; ++l) {
+          const ResolvedLimb& limb = limbs[l];
+          const double length_sq = (xyz[limb.a] - xyz[limb.b]).squaredNorm();
+          if (length_sq == limb.min_length_sq() || length_sq == limb.max_length_sq()) ++at_bound;
+          if (score[limb.a] > 0 && score[limb.b] > 0 &&
+              (length_sq < limb.min_length_sq() || length_sq > limb.max_length_sq()))
+            expected |= uint64_t{1} << (l - begin);
+        }
+        const uint64_t bits = simd::ImplausibleLimbs(columns, begin, end, xyz.data()->data(), score.data());
+        ASSERT_EQ(bits, expected) << simd::ActivePath() << " round " << round << " begin " << begin;
+        implausible += std::popcount(bits);
+        ++compared;
+      }
+    }
+    EXPECT_EQ(compared, 200);
+    EXPECT_GT(implausible, 200);  // the cases hold both outcomes
+    EXPECT_GT(at_bound, 50);
   });
 }
 
