@@ -616,7 +616,8 @@ void RefineSolveImpl(const double* sums, int n, double min_conditioning, double*
 // joints [i, i + Lanes(d)). R_t * (x, y, 1) follows Eigen's evaluation of a 3x3 matrix times a
 // vector on the SSE2 baseline: rows 0-1 column by column ((a + b) + c), row 2 as a + (b + c).
 template <class D, class V = hn::Vec<D>>
-HWY_INLINE void UndistortPinholeLanes(D d, const PinholeView& g, const double* uvs, size_t i, const KeypointFields& out) {
+HWY_INLINE void UndistortPinholeLanes(D d, const PinholeView& g, const double* uvs, size_t i, const KeypointFields& out,
+                                      V* box) {
   V u, v, s;
   hn::LoadInterleaved3(d, uvs + 3 * i, u, v, s);
   const auto valid = hn::And(hn::And(hn::Ge(s, hn::Set(d, g.min_score)), hn::IsFinite(s)),
@@ -640,23 +641,53 @@ HWY_INLINE void UndistortPinholeLanes(D d, const PinholeView& g, const double* u
   hn::StoreU(hn::IfThenElseZero(valid, rz), d, out.rz + i);
   hn::StoreU(hn::IfThenElseZero(valid, x), d, out.x + i);
   hn::StoreU(hn::IfThenElseZero(valid, y), d, out.y + i);
+  // The box of the joints kept with a positive score, as std::min / std::max would update it.
+  const auto boxed = hn::And(valid, hn::Gt(score, hn::Zero(d)));
+  box[0] = hn::IfThenElse(hn::And(boxed, hn::Lt(pu, box[0])), pu, box[0]);
+  box[1] = hn::IfThenElse(hn::And(boxed, hn::Lt(pv, box[1])), pv, box[1]);
+  box[2] = hn::IfThenElse(hn::And(boxed, hn::Lt(box[2], pu)), pu, box[2]);
+  box[3] = hn::IfThenElse(hn::And(boxed, hn::Lt(box[3], pv)), pv, box[3]);
+}
+
+// The box of `lanes` folded into box_out (min u, min v, max u, max v).
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE void FoldBox(D d, const V* lanes, double* box_out) {
+  HWY_ALIGN double values[HWY_MAX_BYTES / 8];
+  for (int k = 0; k < 4; ++k) {
+    hn::Store(lanes[k], d, values);
+    for (size_t lane = 0; lane < hn::Lanes(d); ++lane) {
+      const double value = values[lane];
+      box_out[k] = k < 2 ? std::min(box_out[k], value) : std::max(box_out[k], value);
+    }
+  }
 }
 
 template <class D>
-HWY_INLINE void UndistortPinholeJoints(D d, const PinholeView& g, const double* uvs, size_t n, const KeypointFields& out) {
+HWY_INLINE void UndistortPinholeJoints(D d, const PinholeView& g, const double* uvs, size_t n, const KeypointFields& out,
+                                       double* box) {
   const hn::CappedTag<double, 1> d1;
   const size_t N = hn::Lanes(d);
+  const double empty[4] = {1e300, 1e300, -1e300, -1e300};
+  hn::Vec<D> lanes[4];
+  hn::Vec<decltype(d1)> lane[4];
+  for (int k = 0; k < 4; ++k) {
+    lanes[k] = hn::Set(d, empty[k]);
+    lane[k] = hn::Set(d1, empty[k]);
+    box[k] = empty[k];
+  }
   size_t i = 0;
-  for (; i + N <= n; i += N) UndistortPinholeLanes(d, g, uvs, i, out);
-  for (; i < n; ++i) UndistortPinholeLanes(d1, g, uvs, i, out);
+  for (; i + N <= n; i += N) UndistortPinholeLanes(d, g, uvs, i, out, lanes);
+  for (; i < n; ++i) UndistortPinholeLanes(d1, g, uvs, i, out, lane);
+  FoldBox(d, lanes, box);
+  FoldBox(d1, lane, box);
 }
 
-void UndistortPinholeImpl(const PinholeView& g, const double* uvs, int n, const KeypointFields& out) {
+void UndistortPinholeImpl(const PinholeView& g, const double* uvs, int n, const KeypointFields& out, double* box) {
   const size_t joints = static_cast<size_t>(n);
   if (hn::Lanes(hn::ScalableTag<double>()) > 4 && n < 32) {  // short rows: see TriangulatePairImpl
-    UndistortPinholeJoints(hn::CappedTag<double, 4>(), g, uvs, joints, out);
+    UndistortPinholeJoints(hn::CappedTag<double, 4>(), g, uvs, joints, out, box);
   } else {
-    UndistortPinholeJoints(hn::ScalableTag<double>(), g, uvs, joints, out);
+    UndistortPinholeJoints(hn::ScalableTag<double>(), g, uvs, joints, out, box);
   }
 }
 
@@ -797,8 +828,8 @@ uint64_t ImplausibleLimbs(const LimbColumns& limbs, size_t begin, size_t end, co
 
 double RankMedian(const double* values, int n) { return HWY_DYNAMIC_DISPATCH(RankMedianImpl)(values, n); }
 
-void UndistortPinhole(const PinholeView& view, const double* uvs, int n, const KeypointFields& out) {
-  HWY_DYNAMIC_DISPATCH(UndistortPinholeImpl)(view, uvs, n, out);
+void UndistortPinhole(const PinholeView& view, const double* uvs, int n, const KeypointFields& out, double* box) {
+  HWY_DYNAMIC_DISPATCH(UndistortPinholeImpl)(view, uvs, n, out, box);
 }
 
 void RefineBestScore(const double* score, int n, double* best) { HWY_DYNAMIC_DISPATCH(RefineBestScoreImpl)(score, n, best); }

@@ -113,7 +113,9 @@ struct PinholeView {
 struct KeypointFields {
   double *u, *v, *score, *sqrt_score, *rx, *ry, *rz, *x, *y;
 };
-void UndistortPinhole(const PinholeView& view, const double* uvs, int n, const KeypointFields& out);
+// box: the minimum u, minimum v, maximum u and maximum v of the joints written with a score above 0
+// (1e300, 1e300, -1e300, -1e300 when none), as std::min / std::max in joint order give them.
+void UndistortPinhole(const PinholeView& view, const double* uvs, int n, const KeypointFields& out, double* box);
 
 // Pass 1 of limb pruning (PruneImplausibleLimbs, proposal_scoring.h), lanes across limbs: bit
 // l - begin of the result is set where limb l in [begin, end) (at most 64 limbs) has both joints

@@ -67,6 +67,9 @@ int steps::Undistort(const UndistortOptions& options, const UndistortInput& in, 
       if (out.keypoints.size() < base + num_output_joints) out.keypoints.resize(base + num_output_joints);
       if (columns.u.size() < base + num_output_joints) columns.Resize(base + num_output_joints);
       Keypoint* kps = out.keypoints.data() + base;
+      // The box of the joints with a positive score: the kernel's joints from the kernel.
+      double box[4] = {1e300, 1e300, -1e300, -1e300};  // min u, min v, max u, max v
+      int box_from = 0;                                  // joints [box_from, output) still to add
       if (pinhole_kernel) {
         const int n = view.num_joints;
         double* const xy = out.pinhole_scratch.data();
@@ -75,7 +78,8 @@ int steps::Undistort(const UndistortOptions& options, const UndistortInput& in, 
                                           .sqrt_score = columns.sqrt_score.data() + base,
                                           .rx = columns.rx.data() + base, .ry = columns.ry.data() + base,
                                           .rz = columns.rz.data() + base, .x = xy, .y = xy + n};
-        simd::UndistortPinhole(pinhole, person.data(), n, fields);
+        simd::UndistortPinhole(pinhole, person.data(), n, fields, box);
+        box_from = n;
         for (int j = 0; j < n; ++j) {
           Keypoint& kp = kps[j];
           kp.u = fields.u[j];
@@ -128,8 +132,8 @@ int steps::Undistort(const UndistortOptions& options, const UndistortInput& in, 
       int core_valid = 0;
       for (int c : in.core_joints) core_valid += kps[c].score > 0 ? 1 : 0;
       if (core_valid < options.min_core_joints) continue;  // its slots go to the next pose
-      double min_u = 1e300, min_v = 1e300, max_u = -1e300, max_v = -1e300;
-      for (int j = 0; j < num_output_joints; ++j) {
+      double min_u = box[0], min_v = box[1], max_u = box[2], max_v = box[3];
+      for (int j = box_from; j < num_output_joints; ++j) {
         if (kps[j].score <= 0) continue;
         min_u = std::min(min_u, kps[j].u);
         max_u = std::max(max_u, kps[j].u);

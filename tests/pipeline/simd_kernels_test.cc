@@ -531,39 +531,43 @@ TEST(SimdKernels, UndistortPinholeEqualsTheScalarUndistortBitForBit) {
     const steps::UndistortInput input{
         .views = views, .cameras = cameras, .geometry = geometry, .derived = {}, .core_joints = core,
         .num_output_joints = joints};
-    UndistortOptions options;
-    options.min_core_joints = 1;
-    PreparedViews scalar;
-    simd::SetEnabled(false);
-    const int poses = steps::Undistort(options, input, &scalar);
-    simd::SetEnabled(true);
-    ASSERT_EQ(poses, 12) << "every pose kept";
-    simd::ForEachPathForTest([&] {
-      PreparedViews vectorised;
-      ASSERT_EQ(steps::Undistort(options, input, &vectorised), poses);
-      ASSERT_EQ(vectorised.keypoints.size(), scalar.keypoints.size());
-      for (size_t k = 0; k < scalar.keypoints.size(); ++k) {
-        const Keypoint &a = vectorised.keypoints[k], &b = scalar.keypoints[k];
-        const double fa[] = {a.u, a.v, a.score, a.sqrt_score, a.ray.x(), a.ray.y(), a.ray.z(), a.x, a.y};
-        const double fb[] = {b.u, b.v, b.score, b.sqrt_score, b.ray.x(), b.ray.y(), b.ray.z(), b.x, b.y};
-        for (int f = 0; f < 9; ++f) {
-          ASSERT_TRUE(SameBits(fa[f], fb[f])) << simd::ActivePath() << " " << joints << " joints, keypoint " << k
-                                              << " field " << f << ": " << fa[f] << " vs " << fb[f];
+    for (const double min_joint_score : {UndistortOptions{}.min_joint_score, 0.0}) {  // 0: score-0 joints kept
+      UndistortOptions options;
+      options.min_core_joints = 1;
+      options.min_joint_score = min_joint_score;
+      PreparedViews scalar;
+      simd::SetEnabled(false);
+      const int poses = steps::Undistort(options, input, &scalar);
+      simd::SetEnabled(true);
+      ASSERT_EQ(poses, 12) << "every pose kept";
+      simd::ForEachPathForTest([&] {
+        PreparedViews vectorised;
+        ASSERT_EQ(steps::Undistort(options, input, &vectorised), poses);
+        ASSERT_EQ(vectorised.keypoints.size(), scalar.keypoints.size());
+        for (size_t k = 0; k < scalar.keypoints.size(); ++k) {
+          const Keypoint &a = vectorised.keypoints[k], &b = scalar.keypoints[k];
+          const double fa[] = {a.u, a.v, a.score, a.sqrt_score, a.ray.x(), a.ray.y(), a.ray.z(), a.x, a.y};
+          const double fb[] = {b.u, b.v, b.score, b.sqrt_score, b.ray.x(), b.ray.y(), b.ray.z(), b.x, b.y};
+          for (int f = 0; f < 9; ++f) {
+            ASSERT_TRUE(SameBits(fa[f], fb[f])) << simd::ActivePath() << " " << joints << " joints, keypoint " << k
+                                                << " field " << f << ": " << fa[f] << " vs " << fb[f];
+          }
         }
-      }
-      EXPECT_EQ(vectorised.bbox_diag, scalar.bbox_diag);
-      for (const KeypointColumns PreparedViews::*columns : {&PreparedViews::all_columns, &PreparedViews::core_columns}) {
-        const KeypointColumns &a = vectorised.*columns, &b = scalar.*columns;
-        EXPECT_EQ(a.stride, b.stride);
-        for (const std::vector<double> KeypointColumns::*field :
-             {&KeypointColumns::u, &KeypointColumns::v, &KeypointColumns::score, &KeypointColumns::sqrt_score,
-              &KeypointColumns::rx, &KeypointColumns::ry, &KeypointColumns::rz}) {
-          ASSERT_EQ((a.*field).size(), (b.*field).size());
-          EXPECT_EQ(std::memcmp((a.*field).data(), (b.*field).data(), (b.*field).size() * sizeof(double)), 0)
-              << simd::ActivePath() << " " << joints << " joints: a column differs";
+        EXPECT_EQ(vectorised.bbox_diag, scalar.bbox_diag);
+        for (const KeypointColumns PreparedViews::*columns :
+             {&PreparedViews::all_columns, &PreparedViews::core_columns}) {
+          const KeypointColumns &a = vectorised.*columns, &b = scalar.*columns;
+          EXPECT_EQ(a.stride, b.stride);
+          for (const std::vector<double> KeypointColumns::*field :
+               {&KeypointColumns::u, &KeypointColumns::v, &KeypointColumns::score, &KeypointColumns::sqrt_score,
+                &KeypointColumns::rx, &KeypointColumns::ry, &KeypointColumns::rz}) {
+            ASSERT_EQ((a.*field).size(), (b.*field).size());
+            EXPECT_EQ(std::memcmp((a.*field).data(), (b.*field).data(), (b.*field).size() * sizeof(double)), 0)
+                << simd::ActivePath() << " " << joints << " joints: a column differs";
+          }
         }
-      }
-    });
+      });
+    }
   }
 }
 
