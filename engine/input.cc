@@ -44,6 +44,15 @@ void CheckInputSpec(const InputSpec& spec) {
   if (spec.simulate_perfect && !spec.detector.empty() && spec.detector != "perfect") {
     throw ConfigError("--simulate-perfect (deprecated) contradicts --detector " + spec.detector);
   }
+  // The synthetic dataset's own detector is replaced by --simulate's: its noise would be ignored.
+  if (spec.simulate && spec.labels.empty() && spec.dataset == "synthetic") {
+    for (const std::string& assignment : spec.params) {
+      if (assignment.rfind("noise=", 0) != 0) continue;
+      throw ConfigError("--param " + assignment + " has no effect with --simulate, whose detector (--detector, default " +
+                        "realistic) replaces the dataset's: give --detector " + assignment.substr(6) +
+                        " with --simulate, or --param " + assignment + " without it");
+    }
+  }
 }
 
 // The reader request: --labels FILE is the generic labels reader with the file as its root, so

@@ -85,6 +85,8 @@ TEST(DetectorStatsCommand, BadArgumentsExitWithCode2) {
   EXPECT_EQ(test::RunRpt("detector-stats --dataset synthetic --detector hard").exit_code, 2) << "needs --simulate";
   EXPECT_EQ(test::RunRpt("detector-stats --dataset synthetic --simulate --detector noisy").exit_code, 2);
   EXPECT_EQ(test::RunRpt("detector-stats --dataset synthetic --param noise=noisy").exit_code, 2);
+  EXPECT_EQ(test::RunRpt("detector-stats --dataset synthetic --simulate --param noise=clean").exit_code, 2)
+      << "the dataset's noise would be ignored";
   EXPECT_EQ(test::RunRpt("detector-stats --dataset synthetic --joints ankle_left,unknown").exit_code, 0);
   EXPECT_EQ(test::RunRpt("detector-stats --dataset synthetic --joints unknown").exit_code, 2);
   EXPECT_EQ(test::RunRpt("detector-stats --dataset synthetic --simulate --simulate-perfect --detector hard").exit_code, 2);

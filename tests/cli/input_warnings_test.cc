@@ -130,6 +130,22 @@ TEST(InputWarnings, ScoresAboveOneGiveALineForTheDetectionFile) {
   fs::remove_all(dir);
 }
 
+// --simulate replaces the synthetic dataset's detector with its own (--detector): a --param noise
+// beside it used to be ignored without a word (the numbers were the realistic detector's).
+TEST(InputWarnings, SyntheticNoiseWithSimulateIsAnErrorNotIgnored) {
+  const test::CommandResult r =
+      test::RunRpt("eval --quiet --dataset synthetic --param frames=2 --param noise=clean --simulate --out " +
+                   test::TempDir("noise_with_simulate").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--param noise=clean has no effect with --simulate"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("give --detector clean with --simulate, or --param noise=clean without it"), std::string::npos)
+      << r.err;
+  EXPECT_EQ(test::RunRpt("eval --quiet --dataset synthetic --param frames=2 --simulate --detector clean --out " +
+                         test::TempDir("detector_with_simulate").string())
+                .exit_code,
+            0);
+}
+
 TEST(InputWarnings, ConvertCarriesTheCorrectedValuesIntoTheCacheAndWarns) {
   const fs::path dir = test::TempDir("tolerance_convert");
   const Files files = WriteFiles(dir, 3);
