@@ -1141,11 +1141,11 @@ TEST(Postprocess, JointsPlacedFromOneViewNeitherDecideNorOutweigh) {
   EXPECT_EQ(persons.Provenance(0, elbow), JointProvenance::kFilled);
   EXPECT_EQ(persons.Provenance(0, wrist), JointProvenance::kTriangulated);
   EXPECT_EQ(Eigen::Vector4d(persons.Person(0).col(wrist)), Eigen::Vector4d(body.col(wrist)));
-  // Three triangulated joints and more lifted ones: too few to make a person (min_valid_joints 4).
+  // Five triangulated joints and more lifted ones: too few to make a person (min_valid_joints 6).
   Poses3D few;
   few.Clear(static_cast<int>(names.size()));
   few.AddPerson().leftCols(17) = body;
-  for (int j = 3; j < 17; ++j) few.PersonProvenance(0)[j] = lifted;
+  for (int j = 5; j < 17; ++j) few.PersonProvenance(0)[j] = lifted;
   EXPECT_EQ(steps::Postprocess(PostprocessOptions{}, input, &few, &stats), 0);
 }
 
