@@ -44,8 +44,10 @@ void CheckInputSpec(const InputSpec& spec) {
   if (spec.simulate_perfect && !spec.detector.empty() && spec.detector != "perfect") {
     throw ConfigError("--simulate-perfect (deprecated) contradicts --detector " + spec.detector);
   }
-  // The synthetic dataset's own detector is replaced by --simulate's: its noise would be ignored.
-  if (spec.simulate && spec.labels.empty() && spec.dataset == "synthetic") {
+  // The synthetic dataset's own detector is replaced by --simulate's: without a --detector naming
+  // it, the noise asked for would be ignored unseen.
+  if (spec.simulate && spec.detector.empty() && !spec.simulate_perfect && spec.labels.empty() &&
+      spec.dataset == "synthetic") {
     for (const std::string& assignment : spec.params) {
       if (assignment.rfind("noise=", 0) != 0) continue;
       throw ConfigError("--param " + assignment + " has no effect with --simulate, whose detector (--detector, default " +

@@ -131,7 +131,8 @@ TEST(InputWarnings, ScoresAboveOneGiveALineForTheDetectionFile) {
 }
 
 // --simulate replaces the synthetic dataset's detector with its own (--detector): a --param noise
-// beside it used to be ignored without a word (the numbers were the realistic detector's).
+// beside it, with no --detector, used to be ignored without a word (the numbers were the
+// realistic detector's).
 TEST(InputWarnings, SyntheticNoiseWithSimulateIsAnErrorNotIgnored) {
   const test::CommandResult r =
       test::RunRpt("eval --quiet --dataset synthetic --param frames=2 --param noise=clean --simulate --out " +
@@ -142,6 +143,12 @@ TEST(InputWarnings, SyntheticNoiseWithSimulateIsAnErrorNotIgnored) {
       << r.err;
   EXPECT_EQ(test::RunRpt("eval --quiet --dataset synthetic --param frames=2 --simulate --detector clean --out " +
                          test::TempDir("detector_with_simulate").string())
+                .exit_code,
+            0);
+  // A --detector named beside it says which detector runs (detector-stats --compare's tests rely on it).
+  EXPECT_EQ(test::RunRpt("eval --quiet --dataset synthetic --param frames=2 --param noise=clean --simulate --detector "
+                         "hard --out " +
+                         test::TempDir("noise_and_detector_with_simulate").string())
                 .exit_code,
             0);
 }
