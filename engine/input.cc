@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <new>
+#include <string_view>
 #include <utility>
 
 #include "core/errors.h"
@@ -48,10 +49,11 @@ void CheckInputSpec(const InputSpec& spec) {
   // it, the noise asked for would be ignored unseen.
   if (spec.simulate && spec.detector.empty() && !spec.simulate_perfect && spec.labels.empty() &&
       spec.dataset == "synthetic") {
+    constexpr std::string_view kNoise = "noise=";
     for (const std::string& assignment : spec.params) {
-      if (assignment.rfind("noise=", 0) != 0) continue;
+      if (!assignment.starts_with(kNoise)) continue;
       throw ConfigError("--param " + assignment + " has no effect with --simulate, whose detector (--detector, default " +
-                        "realistic) replaces the dataset's: give --detector " + assignment.substr(6) +
+                        "realistic) replaces the dataset's: give --detector " + assignment.substr(kNoise.size()) +
                         " with --simulate, or --param " + assignment + " without it");
     }
   }

@@ -165,7 +165,6 @@ struct ResolvedLimb {
 struct LimbColumns {
   std::vector<int64_t> a, b;
   std::vector<double> min_sq, max_sq;
-  size_t size() const { return a.size(); }
 };
 
 inline LimbColumns ToLimbColumns(std::span<const ResolvedLimb> limbs) {

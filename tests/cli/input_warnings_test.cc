@@ -134,23 +134,25 @@ TEST(InputWarnings, ScoresAboveOneGiveALineForTheDetectionFile) {
 // beside it, with no --detector, used to be ignored without a word (the numbers were the
 // realistic detector's).
 TEST(InputWarnings, SyntheticNoiseWithSimulateIsAnErrorNotIgnored) {
+  const fs::path dir = test::TempDir("noise_with_simulate");
   const test::CommandResult r =
       test::RunRpt("eval --quiet --dataset synthetic --param frames=2 --param noise=clean --simulate --out " +
-                   test::TempDir("noise_with_simulate").string());
+                   (dir / "refused").string());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("--param noise=clean has no effect with --simulate"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("give --detector clean with --simulate, or --param noise=clean without it"), std::string::npos)
       << r.err;
   EXPECT_EQ(test::RunRpt("eval --quiet --dataset synthetic --param frames=2 --simulate --detector clean --out " +
-                         test::TempDir("detector_with_simulate").string())
+                         (dir / "detector").string())
                 .exit_code,
             0);
   // A --detector named beside it says which detector runs (detector-stats --compare's tests rely on it).
   EXPECT_EQ(test::RunRpt("eval --quiet --dataset synthetic --param frames=2 --param noise=clean --simulate --detector "
                          "hard --out " +
-                         test::TempDir("noise_and_detector_with_simulate").string())
+                         (dir / "noise_and_detector").string())
                 .exit_code,
             0);
+  fs::remove_all(dir);
 }
 
 TEST(InputWarnings, ConvertCarriesTheCorrectedValuesIntoTheCacheAndWarns) {

@@ -33,14 +33,14 @@ struct Chain {
   std::vector<ResolvedLimb> limbs;
 };
 
-void ForScalarAndEveryKernel(const std::function<void(const std::string&, bool)>& body) {
+void ForScalarAndKernelFirstPass(const std::function<void(const std::string&, bool)>& body) {
   body("scalar first pass", false);
   simd::ForEachPathForTest([&] { body("SIMD " + simd::ActivePath(), true); });
 }
 
 TEST(LimbPruning, AnImplausibleLimbInvalidatesItsDistalJointInLimbOrder) {
   static_assert(kMinLimbsForKernel <= 69);
-  ForScalarAndEveryKernel([](const std::string& path, bool kernel) {
+  ForScalarAndKernelFirstPass([](const std::string& path, bool kernel) {
     Chain c;
     c.xyz[10] += Eigen::Vector3d(0, 2, 0);  // limbs 9-10 and 10-11 both 2.06 m long
     c.xyz[64] += Eigen::Vector3d(0, 0, 3);  // limbs 63-64 (first chunk) and 64-65 (second)
@@ -60,7 +60,7 @@ TEST(LimbPruning, AnImplausibleLimbInvalidatesItsDistalJointInLimbOrder) {
 }
 
 TEST(LimbPruning, TooShortAndTooLongLimbsArePrunedWhereverTheyAre) {
-  ForScalarAndEveryKernel([](const std::string& path, bool kernel) {
+  ForScalarAndKernelFirstPass([](const std::string& path, bool kernel) {
     Chain c;
     // Shift the tail from joint 21 on by -0.2 m: limb 20-21 is 0.3 m (too short). Then move joint
     // 68 out by 0.2 m: limb 67-68 is 0.7 m (too long), limb 68-69 0.3 m, but 68 is invalidated.
