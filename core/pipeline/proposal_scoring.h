@@ -50,29 +50,39 @@ double KernelScaleM(const ScoreOptions& options, double noise_m);
 // The kernels of `options` at the detection noise level `noise_m` (used by the adaptive scale).
 ScoreKernel MakeScoreKernel(const ScoreOptions& options, double noise_m);
 
-// Squared reprojection error (px^2) of `point` against keypoint `kp`, and the point's depth in
-// the view (z); a huge error when the point is behind the camera.
-RPT_ALWAYS_INLINE double ReprojectionErrorSq(const ViewGeometry& g, const Eigen::Vector3d& point, const Keypoint& kp,
-                                             double* depth) {
+// Reprojection error of `point` against keypoint `kp` and the point's depth in the view (z). With
+// `times_depth` the error times the depth (px m), computed without a division as the length of
+// (h_x - u h_z, h_y - v h_z) for the homogeneous projection h; else the error in pixels. Returns 0
+// when the point is behind the camera (depth <= 0; the caller tests the depth).
+RPT_ALWAYS_INLINE double ReprojectionError(const ViewGeometry& g, const Eigen::Vector3d& point, const Keypoint& kp,
+                                           bool times_depth, double* depth) {
   const Eigen::Vector3d h = g.P.leftCols<3>() * point + g.P.col(3);
   *depth = h.z();
-  if (h.z() <= 0) return 1e12;
-  const double inv_z = 1.0 / h.z();
-  const double du = h.x() * inv_z - kp.u, dv = h.y() * inv_z - kp.v;
-  return du * du + dv * dv;
+  if (h.z() <= 0) return 0;
+  double du, dv;
+  if (times_depth) {
+    du = h.x() - kp.u * h.z();
+    dv = h.y() - kp.v * h.z();
+  } else {
+    const double inv_z = 1.0 / h.z();
+    du = h.x() * inv_z - kp.u;
+    dv = h.y() * inv_z - kp.v;
+  }
+  return std::sqrt(du * du + dv * dv);
 }
 
 // Residual of joint i of a proposal: the mean reprojection error over both views, in metres at
-// the joint (adaptive: `scale` = 1 / focal length) or relative to the pose's box (fixed:
-// `scale` = 1 / box diagonal); implausibly large when the point is behind a camera.
+// the joint (adaptive: the error times the depth, times `scale` = 1 / focal length) or relative to
+// the pose's box (fixed: `scale` = 1 / box diagonal); implausibly large when the point is behind a
+// camera.
 RPT_ALWAYS_INLINE double JointResidual(const ViewGeometry& ga, const ViewGeometry& gb, const Eigen::Vector3d& point,
                                        const Keypoint& ka, const Keypoint& kb, double scale_a, double scale_b,
                                        bool adaptive) {
   double za = 1, zb = 1;
-  const double ea = std::sqrt(ReprojectionErrorSq(ga, point, ka, &za));
-  const double eb = std::sqrt(ReprojectionErrorSq(gb, point, kb, &zb));
+  const double ea = ReprojectionError(ga, point, ka, adaptive, &za);
+  const double eb = ReprojectionError(gb, point, kb, adaptive, &zb);
   if (za <= 0 || zb <= 0) return 1e6;
-  return adaptive ? 0.5 * (ea * za * scale_a + eb * zb * scale_b) : 0.5 * (ea * scale_a + eb * scale_b);
+  return 0.5 * (ea * scale_a + eb * scale_b);
 }
 
 // Limb pruning: in limb order (proximal before distal), a limb whose two joints are scored

@@ -92,12 +92,13 @@ HWY_INLINE V ExpNeg(D d, V x) {
   return hn::IfThenElseZero(hn::And(in_range, positive), hn::Mul(p, scale));
 }
 
-// Reprojection error (px) of (x, y, z) against (u, v) in the view of projection P (column-major
-// 3x4), and the depth: ReprojectionErrorSq then its square root, lane by lane. The sums follow
+// ReprojectionError (proposal_scoring.h) of (x, y, z) against (u, v) in the view of projection P
+// (column-major 3x4), and the depth, lane by lane; `times_depth` as there (the error times the
+// depth, without a division); behind the camera the caller discards the lane. The sums follow
 // Eigen's evaluation of P.leftCols<3>() * point in the scalar code (SSE2 baseline): rows 0-1 as
 // one packet, column by column ((a + b) + c), row 2 as an unrolled reduction (a + (b + c)).
 template <class D, class V = hn::Vec<D>>
-HWY_INLINE V ReprojectionError(D d, const double* P, V x, V y, V z, V u, V v, V* depth) {
+HWY_INLINE V ReprojectionError(D d, const double* P, V x, V y, V z, V u, V v, bool times_depth, V* depth) {
   const V hx = hn::Add(hn::Add(hn::Add(hn::Mul(hn::Set(d, P[0]), x), hn::Mul(hn::Set(d, P[3]), y)),
                                hn::Mul(hn::Set(d, P[6]), z)),
                        hn::Set(d, P[9]));
@@ -108,11 +109,16 @@ HWY_INLINE V ReprojectionError(D d, const double* P, V x, V y, V z, V u, V v, V*
                                hn::Add(hn::Mul(hn::Set(d, P[5]), y), hn::Mul(hn::Set(d, P[8]), z))),
                        hn::Set(d, P[11]));
   *depth = hz;
-  const V inv_z = hn::Div(hn::Set(d, 1.0), hz);
-  const V du = hn::Sub(hn::Mul(hx, inv_z), u);
-  const V dv = hn::Sub(hn::Mul(hy, inv_z), v);
-  const V sq = hn::IfThenElse(hn::Le(hz, hn::Zero(d)), hn::Set(d, 1e12), hn::Add(hn::Mul(du, du), hn::Mul(dv, dv)));
-  return hn::Sqrt(sq);
+  V du, dv;
+  if (times_depth) {
+    du = hn::Sub(hx, hn::Mul(u, hz));
+    dv = hn::Sub(hy, hn::Mul(v, hz));
+  } else {
+    const V inv_z = hn::Div(hn::Set(d, 1.0), hz);
+    du = hn::Sub(hn::Mul(hx, inv_z), u);
+    dv = hn::Sub(hn::Mul(hy, inv_z), v);
+  }
+  return hn::Sqrt(hn::Add(hn::Mul(du, du), hn::Mul(dv, dv)));
 }
 
 // JointResidual (proposal_scoring.h) of joints [i, i + Lanes(d)).
@@ -122,12 +128,9 @@ HWY_INLINE V Residual(D d, const ResidualViews& rv, const PoseColumns& a, const 
   V x, y, z;
   hn::LoadInterleaved3(d, xyz + 3 * i, x, y, z);
   V za, zb;
-  const V ea = ReprojectionError(d, rv.Pa, x, y, z, hn::LoadU(d, a.u + i), hn::LoadU(d, a.v + i), &za);
-  const V eb = ReprojectionError(d, rv.Pb, x, y, z, hn::LoadU(d, b.u + i), hn::LoadU(d, b.v + i), &zb);
-  const V half = hn::Set(d, 0.5);
-  const V sa = hn::Set(d, rv.scale_a), sb = hn::Set(d, rv.scale_b);
-  const V r = rv.adaptive ? hn::Mul(half, hn::Add(hn::Mul(hn::Mul(ea, za), sa), hn::Mul(hn::Mul(eb, zb), sb)))
-                          : hn::Mul(half, hn::Add(hn::Mul(ea, sa), hn::Mul(eb, sb)));
+  const V ea = ReprojectionError(d, rv.Pa, x, y, z, hn::LoadU(d, a.u + i), hn::LoadU(d, a.v + i), rv.adaptive, &za);
+  const V eb = ReprojectionError(d, rv.Pb, x, y, z, hn::LoadU(d, b.u + i), hn::LoadU(d, b.v + i), rv.adaptive, &zb);
+  const V r = hn::Mul(hn::Set(d, 0.5), hn::Add(hn::Mul(ea, hn::Set(d, rv.scale_a)), hn::Mul(eb, hn::Set(d, rv.scale_b))));
   const auto behind = hn::Or(hn::Le(za, hn::Zero(d)), hn::Le(zb, hn::Zero(d)));
   return hn::IfThenElse(behind, hn::Set(d, 1e6), r);
 }
