@@ -20,8 +20,9 @@ RPT_ALWAYS_INLINE bool TriangulateMidpoint(const Eigen::Vector3d& c1, const Eige
   const double d = d1.dot(w0), e = d2.dot(w0);
   const double denom = a * c - b * b;
   if (!(denom > 1e-12 * a * c)) return false;  // parallel rays (also catches NaN)
-  const double s = (b * e - c * d) / denom;
-  const double t = (a * e - b * d) / denom;
+  const double inv_denom = 1.0 / denom;  // one division for both
+  const double s = (b * e - c * d) * inv_denom;
+  const double t = (a * e - b * d) * inv_denom;
   if (s <= 0 || t <= 0) return false;
   const Eigen::Vector3d p1 = c1 + s * d1;
   const Eigen::Vector3d p2 = c2 + t * d2;

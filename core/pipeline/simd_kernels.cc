@@ -151,8 +151,9 @@ HWY_INLINE void TriangulateLanes(D d, const double* ca, const PoseColumns& a, co
   const V denom = hn::Sub(hn::Mul(A, C), hn::Mul(B, B));
   auto ok = hn::Gt(denom, hn::Mul(hn::Mul(hn::Set(d, 1e-12), A), C));  // false for NaN
   ok = hn::And(ok, hn::And(hn::Gt(hn::LoadU(d, a.score + i), zero), hn::Gt(hn::LoadU(d, b.score + i), zero)));
-  const V s = hn::Div(hn::Sub(hn::Mul(B, E), hn::Mul(C, Dd)), denom);
-  const V t = hn::Div(hn::Sub(hn::Mul(A, E), hn::Mul(B, Dd)), denom);
+  const V inv_denom = hn::Div(hn::Set(d, 1.0), denom);  // one division for both, as TriangulateMidpoint
+  const V s = hn::Mul(hn::Sub(hn::Mul(B, E), hn::Mul(C, Dd)), inv_denom);
+  const V t = hn::Mul(hn::Sub(hn::Mul(A, E), hn::Mul(B, Dd)), inv_denom);
   ok = hn::And(ok, hn::And(hn::Gt(s, zero), hn::Gt(t, zero)));
   const V p1x = hn::Add(hn::Set(d, ca[0]), hn::Mul(s, d1x)), p2x = hn::Add(hn::Set(d, cb[0]), hn::Mul(t, d2x));
   const V p1y = hn::Add(hn::Set(d, ca[1]), hn::Mul(s, d1y)), p2y = hn::Add(hn::Set(d, cb[1]), hn::Mul(t, d2y));
