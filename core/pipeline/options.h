@@ -325,6 +325,10 @@ struct VerifyOptions {
   // A person whose core joints lie this close (mean distance over the joints both have) to a
   // stronger person's, and made from none of its views, is that person again: dropped. 0 = off.
   double duplicate_distance_m = 0.25;
+  // A person with fewer joints than another, at least 2 of whose joints each lie this close to the
+  // other's same joint, is a part of that person (a body whose poses formed two groups): dropped.
+  // 0 = off.
+  double part_distance_m = 0.15;
 };
 
 template <class Visitor, OptionsOf<VerifyOptions> Self>
@@ -337,6 +341,10 @@ void VisitFields(Visitor& v, Self& o) {
   v("duplicate_distance_m", o.duplicate_distance_m,
     OptionSpec{.help = "mean core-joint distance under which a person from none of a stronger person's views duplicates it "
                        "and is dropped (0 = off)",
+               .unit = "m", .min = 0, .max = 10});
+  v("part_distance_m", o.part_distance_m,
+    OptionSpec{.help = "a person with fewer joints than another and 2 joints this close to the other's same joints is "
+                       "a part of it and is dropped (0 = off)",
                .unit = "m", .min = 0, .max = 10});
 }
 

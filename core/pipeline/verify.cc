@@ -86,6 +86,35 @@ void MarkDuplicates(const VerifyOptions& options, const steps::VerifyInput& in, 
   }
 }
 
+// Marks scratch->duplicate[p] for every person p that is a part of a person with more joints
+// (score > 0) not marked before: at least 2 of p's joints each within part_distance_m of that
+// person's same joint.
+void MarkParts(const VerifyOptions& options, VerifyScratch* scratch, const Poses3D& persons) {
+  const int num_persons = persons.num_persons();
+  const int n = persons.num_joints;
+  VerifyScratch& s = *scratch;
+  s.num_joints.assign(num_persons, 0);
+  for (int p = 0; p < num_persons; ++p) {
+    const auto person = persons.Person(p);
+    for (int j = 0; j < n; ++j) s.num_joints[p] += person(3, j) > 0 ? 1 : 0;
+  }
+  const double max_sq = options.part_distance_m * options.part_distance_m;
+  for (int p = 0; p < num_persons; ++p) {
+    if (s.duplicate[p]) continue;
+    const auto part = persons.Person(p);
+    for (int q = 0; q < num_persons && !s.duplicate[p]; ++q) {
+      if (q == p || s.duplicate[q] || s.num_joints[q] <= s.num_joints[p]) continue;
+      const auto whole = persons.Person(q);
+      int same = 0;
+      for (int j = 0; j < n && same < 2; ++j) {
+        if (part(3, j) <= 0 || whole(3, j) <= 0) continue;
+        same += (part.col(j).head<3>() - whole.col(j).head<3>()).squaredNorm() < max_sq ? 1 : 0;
+      }
+      if (same >= 2) s.duplicate[p] = 1;
+    }
+  }
+}
+
 }  // namespace
 
 int steps::Verify(const VerifyOptions& options, const VerifyInput& in, VerifyScratch* scratch, Poses3D* persons,
@@ -100,6 +129,7 @@ int steps::Verify(const VerifyOptions& options, const VerifyInput& in, VerifyScr
   if (by_group && options.duplicate_distance_m > 0 && persons->num_persons() > 1) {
     MarkDuplicates(options, in, scratch, *persons);
   }
+  if (options.part_distance_m > 0 && persons->num_persons() > 1) MarkParts(options, scratch, *persons);
   bool have_boxes = false;  // pose boxes are computed when first needed
   int kept = 0;
   for (int p = 0; p < persons->num_persons(); ++p) {

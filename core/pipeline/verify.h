@@ -17,6 +17,12 @@
 // person's poses did not survive the pair budget: dropped. Persons sharing a view are kept apart:
 // two poses in one view are two people to that camera. exclusive_poses (group step) already
 // parts groups that share a pose; this catches those that share nothing.
+//
+// Then parts (part_distance_m): a person with fewer joints (score > 0) than another kept person,
+// at least 2 of whose joints each lie within part_distance_m of that person's same joint, is a
+// part of it: a body whose poses formed two groups (e.g. an arm and the legs apart from the rest,
+// when the rest got wrong legs). Two people cannot hold the same joint at one spot. Dropped and
+// counted with the duplicates.
 #pragma once
 
 #include <span>
@@ -36,7 +42,8 @@ struct VerifyScratch {
   std::vector<char> views_of;       // per person and view: holds one of the person's own poses
   std::vector<int> num_views;       // per person: how many views it was made from
   std::vector<int> by_strength;     // persons, strongest first
-  std::vector<char> duplicate;      // per person: dropped as a duplicate
+  std::vector<char> duplicate;      // per person: dropped as a duplicate or a part
+  std::vector<int> num_joints;      // per person: joints with score > 0
 };
 
 namespace steps {
@@ -51,7 +58,7 @@ struct VerifyInput {
 };
 
 // Removes dropped persons from `persons` (merge's output; their track ids are not assigned yet)
-// and counts them in stats->duplicate_persons and stats->unsupported_persons. Returns the number
+// and counts them in stats->duplicate_persons (duplicates and parts) and stats->unsupported_persons. Returns the number
 // of persons kept.
 int Verify(const VerifyOptions& options, const VerifyInput& in, VerifyScratch* scratch, Poses3D* persons,
            FrameStats* stats);

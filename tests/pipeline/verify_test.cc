@@ -172,5 +172,52 @@ TEST(Verify, APersonIsComparedWithTheKeptPersonsOnly) {
   EXPECT_LT((f.persons.Person(1) - c).norm(), 1e-12);
 }
 
+// A part of `whole`: its right elbow and wrist (joints 8, 10) moved `near_dx` along x, its knee and
+// ankles (14-16) moved `far_dx`, no other joint (score 0).
+Eigen::Matrix4Xd PartOf(const Eigen::Matrix4Xd& whole, double near_dx, double far_dx) {
+  Eigen::Matrix4Xd part = Shifted(whole, far_dx);
+  part.row(3).setZero();
+  for (const int j : {14, 15, 16}) part(3, j) = 1;
+  for (const int j : {8, 10}) {
+    part.col(j) = whole.col(j);
+    part(0, j) += near_dx;
+    part(3, j) = 1;
+  }
+  return part;
+}
+
+TEST(Verify, APersonWithFewerJointsTwoOfThemOnAnothersIsAPartOfIt) {
+  // Person a from views 0-2; a second person from views 1 and 3 (sharing view 1, so it is not a
+  // duplicate) holding a's right arm and legs 0.6 m away: a's body split into two groups. The
+  // phantom check is off (min_empty_views 100): only the part rule can drop it.
+  const auto a = test::StandingPerson(0, 0);
+  const auto run = [&](const Eigen::Matrix4Xd& other, bool other_first, double distance = 0.15) {
+    const Candidate whole{a, 0, {{0, 1}, {1, 2}}}, second{other, 0, {{1, 3}}};
+    VerifyFixture f({a}, other_first ? std::vector<Candidate>{second, whole} : std::vector<Candidate>{whole, second});
+    VerifyOptions options;
+    options.min_empty_views = 100;
+    options.part_distance_m = distance;
+    const int kept = f.Run(options);
+    EXPECT_EQ(f.dropped, 0);
+    if (kept == 1) EXPECT_LT((f.persons.Person(0) - a).norm(), 1e-12) << "the whole person is kept";
+    EXPECT_EQ(kept + f.duplicates, 2);
+    return f.duplicates;
+  };
+  for (const bool other_first : {false, true}) {
+    SCOPED_TRACE(other_first);
+    EXPECT_EQ(run(PartOf(a, 0.14, 0.6), other_first), 1) << "5 joints, 2 of them within 0.15 m of a's";
+    EXPECT_EQ(run(PartOf(a, 0.16, 0.6), other_first), 0) << "farther than part_distance_m";
+    EXPECT_EQ(run(PartOf(a, 0.16, 0.6), other_first, 0.17), 1) << "the option sets the distance";
+    EXPECT_EQ(run(PartOf(a, 0.14, 0.6), other_first, 0.0), 0) << "0 turns the check off";
+    auto one_near = PartOf(a, 0.14, 0.6);
+    one_near(0, 8) += 0.1;  // the elbow 0.24 m off: one joint on a's is not enough
+    EXPECT_EQ(run(one_near, other_first), 0);
+    // As many joints as a (every other joint 0.6 m off): not fewer, so not a part of a.
+    auto full = Shifted(a, 0.6);
+    for (const int j : {8, 10}) full(0, j) = a(0, j) + 0.14;
+    EXPECT_EQ(run(full, other_first), 0);
+  }
+}
+
 }  // namespace
 }  // namespace rpt
