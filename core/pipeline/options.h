@@ -437,7 +437,7 @@ void VisitFields(Visitor& v, Self& o) {
 // Step 12.
 struct PostprocessOptions {
   bool enabled = true;
-  int min_valid_joints = 6;         // persons with fewer valid joints are dropped
+  int min_valid_joints = 4;         // persons with fewer valid joints are dropped
   double min_extent_m = 0.2;        // drop persons whose bounding box diagonal is smaller
   double max_extent_m = 3.0;        // ... or larger
   bool drop_outside_room = true;    // drop persons whose centre is outside the room (+ room_margin_m)

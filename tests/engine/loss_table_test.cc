@@ -203,12 +203,13 @@ TEST(LossTableTest, PersonThatThreeEmptyViewsContradictIsRejectedByVerify) {
   EXPECT_EQ(Describe(Losses(cameras, {frame})), "gt=1 triangulable=1 rejected=1 rejected/verify=1");
 }
 
-TEST(LossTableTest, PersonWithFiveJointsIsRejectedByPostprocess) {
+TEST(LossTableTest, PersonWithThreeJointsIsRejectedByPostprocess) {
   const std::vector<Camera> cameras = RingCameras(4);
   const Eigen::Matrix4Xd person = StandingPerson(0, 0);
   SceneFrame frame = NewFrame(4, {person});
-  // Five joints of one side: no derived joint, fewer than postprocess.min_valid_joints (6).
-  const std::vector<std::string> left = {"shoulder_left", "elbow_left", "wrist_left", "hip_left", "knee_left"};
+  // Three joints of one side: no derived joint, fewer than postprocess.min_valid_joints (4).
+  ASSERT_EQ(TriangulatorOptions{}.postprocess.min_valid_joints, 4);
+  const std::vector<std::string> left = {"shoulder_left", "hip_left", "knee_left"};
   for (int c = 0; c < 4; ++c) AddDetection(cameras[c], person, &frame.views[c], 0, left);
   EXPECT_EQ(Describe(Losses(cameras, {frame})), "gt=1 triangulable=1 rejected=1 rejected/postprocess=1");
 }

@@ -1141,12 +1141,21 @@ TEST(Postprocess, JointsPlacedFromOneViewNeitherDecideNorOutweigh) {
   EXPECT_EQ(persons.Provenance(0, elbow), JointProvenance::kFilled);
   EXPECT_EQ(persons.Provenance(0, wrist), JointProvenance::kTriangulated);
   EXPECT_EQ(Eigen::Vector4d(persons.Person(0).col(wrist)), Eigen::Vector4d(body.col(wrist)));
-  // Five triangulated joints and more lifted ones: too few to make a person (min_valid_joints 6).
-  Poses3D few;
-  few.Clear(static_cast<int>(names.size()));
-  few.AddPerson().leftCols(17) = body;
-  for (int j = 5; j < 17; ++j) few.PersonProvenance(0)[j] = lifted;
-  EXPECT_EQ(steps::Postprocess(PostprocessOptions{}, input, &few, &stats), 0);
+  // Three triangulated joints from head to feet (nose, both ankles: an extent the extent check
+  // keeps) and lifted ones: too few to make a person (min_valid_joints 4); four are enough.
+  ASSERT_EQ(PostprocessOptions{}.min_valid_joints, 4);
+  for (const int triangulated : {3, 4}) {
+    Poses3D few;
+    few.Clear(static_cast<int>(names.size()));
+    few.AddPerson().leftCols(17) = body;
+    for (int j = 0; j < 17; ++j) few.PersonProvenance(0)[j] = lifted;
+    for (const int j : {0, 15, 16, 11}) {
+      if (j == 11 && triangulated == 3) continue;
+      few.PersonProvenance(0)[j] = static_cast<uint8_t>(JointProvenance::kTriangulated);
+    }
+    EXPECT_EQ(steps::Postprocess(PostprocessOptions{}, input, &few, &stats), triangulated == 4 ? 1 : 0)
+        << triangulated << " triangulated joints";
+  }
 }
 
 TEST(Postprocess, DropsPersonsOutsideTheRoomPlusItsOwnMargin) {
