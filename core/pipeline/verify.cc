@@ -87,8 +87,8 @@ void MarkDuplicates(const VerifyOptions& options, const steps::VerifyInput& in, 
 }
 
 // Marks scratch->duplicate[p] for every person p that is a part of a person with more joints
-// (score > 0) not marked before: at least 2 of p's joints each within part_distance_m of that
-// person's same joint.
+// (score > 0) not marked before it (in person order): at least 2 of p's joints each within
+// part_distance_m of that person's same joint.
 void MarkParts(const VerifyOptions& options, VerifyScratch* scratch, const Poses3D& persons) {
   const int num_persons = persons.num_persons();
   const int n = persons.num_joints;

@@ -18,9 +18,9 @@
 // two poses in one view are two people to that camera. exclusive_poses (group step) already
 // parts groups that share a pose; this catches those that share nothing.
 //
-// Then parts (part_distance_m): a person with fewer joints (score > 0) than another kept person,
-// at least 2 of whose joints each lie within part_distance_m of that person's same joint, is a
-// part of it: a body whose poses formed two groups (e.g. an arm and the legs apart from the rest,
+// Then parts (part_distance_m): a person with fewer joints (score > 0) than another person not
+// dropped before it (as a duplicate, or as a part, in person order), at least 2 of whose joints
+// each lie within part_distance_m of that person's same joint, is a part of it: a body whose poses formed two groups (e.g. an arm and the legs apart from the rest,
 // when the rest got wrong legs). Two people cannot hold the same joint at one spot. Dropped and
 // counted with the duplicates.
 #pragma once
@@ -58,8 +58,8 @@ struct VerifyInput {
 };
 
 // Removes dropped persons from `persons` (merge's output; their track ids are not assigned yet)
-// and counts them in stats->duplicate_persons (duplicates and parts) and stats->unsupported_persons. Returns the number
-// of persons kept.
+// and counts them in stats->duplicate_persons (duplicates and parts) and
+// stats->unsupported_persons. Returns the number of persons kept.
 int Verify(const VerifyOptions& options, const VerifyInput& in, VerifyScratch* scratch, Poses3D* persons,
            FrameStats* stats);
 
