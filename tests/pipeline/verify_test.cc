@@ -199,7 +199,9 @@ TEST(Verify, APersonWithFewerJointsTwoOfThemOnAnothersIsAPartOfIt) {
     options.part_distance_m = distance;
     const int kept = f.Run(options);
     EXPECT_EQ(f.dropped, 0);
-    if (kept == 1) EXPECT_LT((f.persons.Person(0) - a).norm(), 1e-12) << "the whole person is kept";
+    if (kept == 1) {
+      EXPECT_LT((f.persons.Person(0) - a).norm(), 1e-12) << "the whole person is kept";
+    }
     EXPECT_EQ(kept + f.duplicates, 2);
     return f.duplicates;
   };
