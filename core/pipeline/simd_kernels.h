@@ -2,8 +2,9 @@
 // SIMD kernels of the hot steps, one lane per joint: the undistortion of a pinhole camera's pose
 // (before step 1), mid-point triangulation of a pose pair
 // (steps 4 and 10), its reprojection residuals, their median and joint scores (steps 6-7 and 10), the pre-filter's
-// pixel distance (step 2), the group distance (step 9), the merge of a group (step 11), the
-// multi-view refinement (step 11a), and, one lane per limb, limb pruning's length test.
+// pixel distance (step 2), the merge of a group (step 11), the multi-view refinement (step 11a),
+// and, one lane per limb, limb pruning's length test. (The group step's distance stays scalar:
+// docs/algorithm.md.)
 // Structure of arrays in (KeypointColumns, pipeline_types.h), the steps' own arrays out.
 //
 // Each kernel is compiled for several instruction sets (Highway, simd_kernels.cc, private to
