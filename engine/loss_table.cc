@@ -3,8 +3,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <stdexcept>
 
 #include "core/pipeline/box_iou.h"
+#include "core/triangulation.h"
 #include "metrics/person_error.h"
 
 namespace rpt::engine {
@@ -59,6 +62,19 @@ const char* UnmatchedSourceKey(UnmatchedSource source) {
   return "?";
 }
 
+void PartLosses::Merge(const PartLosses& other) {
+  evaluated += other.evaluated;
+  wrong += other.wrong;
+  beyond_best_pair += other.beyond_best_pair;
+  wrong_beyond_best_pair += other.wrong_beyond_best_pair;
+}
+
+PartLosses LossTable::AllParts() const {
+  PartLosses all;
+  for (const PartLosses& part : parts) all.Merge(part);
+  return all;
+}
+
 void LossTable::Merge(const LossTable& other) {
   gt_persons += other.gt_persons;
   triangulable += other.triangulable;
@@ -76,6 +92,7 @@ void LossTable::Merge(const LossTable& other) {
   unmatched_with_2d_labels += other.unmatched_with_2d_labels;
   unmatched_by_projection += other.unmatched_by_projection;
   for (int k = 0; k < kNumUnmatchedSources; ++k) unmatched_by_source[k] += other.unmatched_by_source[k];
+  for (int k = 0; k < kNumPcpParts; ++k) parts[k].Merge(other.parts[k]);
 }
 
 LossAccumulator::LossAccumulator(const SequenceHeader& header, const JointNames& output_joints,
@@ -91,6 +108,15 @@ LossAccumulator::LossAccumulator(const SequenceHeader& header, const JointNames&
     det_index_.push_back(d);
   }
   pred_eval_ = metrics::FindJointNames(evaluated, output_joints);
+  det_eval_ = metrics::FindJointNames(evaluated, header.detection_joints);
+  for (const Camera& camera : cameras_) {
+    Eigen::Matrix<double, 3, 4> rt;
+    rt << camera.R, camera.t;
+    world_to_camera_.push_back(rt);
+  }
+  pcp_layout_ = metrics::MakeGenericPcpLayout(evaluated);
+  pcp_alpha_ = eval.pcp_alpha;
+  if (pcp_layout_.parts.size() != kNumPcpParts) throw std::logic_error("loss table: kNumPcpParts is not the number of PCP parts");
 }
 
 void LossAccumulator::LabelDetections(const SequenceFrame& frame) {
@@ -202,6 +228,80 @@ void LossAccumulator::CountUnmatched(const SequenceFrame& frame, const FrameTrac
   }
 }
 
+void LossAccumulator::CountParts(const SequenceFrame& frame, const metrics::FrameRecords& records) {
+  const int num_eval = static_cast<int>(det_eval_.size());
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (size_t k = 0; k < records.kept_gt_idx.size() && k < records.pcp_nearest.size(); ++k) {
+    const int p = records.kept_gt_idx[k];
+    // Its detections: the first one labelled p in each view, undistorted.
+    own_views_.clear();
+    own_xy_.clear();
+    for (size_t c = 0; c < label_.size() && c < cameras_.size(); ++c) {
+      const auto it = std::find(label_[c].begin(), label_[c].end(), p);
+      if (it == label_[c].end()) continue;
+      own_views_.push_back(static_cast<int>(c));
+      const auto detection = frame.views[c].Person(static_cast<int>(it - label_[c].begin()));
+      for (int e = 0; e < num_eval; ++e) {
+        const int d = det_eval_[e];
+        const bool present = d >= 0 && detection(2, d) > 0 && std::isfinite(detection(0, d)) &&
+                             std::isfinite(detection(1, d));
+        own_xy_.push_back(present ? cameras_[c].PixelToNormalized(Eigen::Vector2d(detection(0, d), detection(1, d)))
+                                  : Eigen::Vector2d(nan, nan));
+      }
+    }
+    // Every pair of them, every joint both hold (mm, as the metrics).
+    pair_points_mm_.clear();
+    const int views = static_cast<int>(own_views_.size());
+    for (int a = 0; a < views; ++a) {
+      for (int b = a + 1; b < views; ++b) {
+        for (int e = 0; e < num_eval; ++e) {
+          const Eigen::Vector2d& xa = own_xy_[static_cast<size_t>(a) * num_eval + e];
+          const Eigen::Vector2d& xb = own_xy_[static_cast<size_t>(b) * num_eval + e];
+          Eigen::Vector3d point(nan, nan, nan);
+          if (xa.allFinite() && xb.allFinite() &&
+              TriangulateDlt(world_to_camera_[own_views_[a]], xa, world_to_camera_[own_views_[b]], xb, &point)) {
+            point *= 1000.0;
+          } else {
+            point.setConstant(nan);
+          }
+          pair_points_mm_.push_back(point);
+        }
+      }
+    }
+    const size_t num_pairs = pair_points_mm_.size() / std::max(1, num_eval);
+    const metrics::EvalPerson& gt = records.gt[k];
+    // The GT endpoint (mean of its two joints) and the distance of the nearest pair's endpoint to it.
+    const auto gt_endpoint = [&](const std::array<int, 2>& joints) {
+      return Eigen::Vector3d(0.5 * (gt.xyz_mm.col(joints[0]) + gt.xyz_mm.col(joints[1])));
+    };
+    const auto nearest_pair = [&](const std::array<int, 2>& joints, const Eigen::Vector3d& target) {
+      double best = std::numeric_limits<double>::infinity();
+      for (size_t i = 0; i < num_pairs; ++i) {
+        const Eigen::Vector3d& first = pair_points_mm_[i * num_eval + joints[0]];
+        const Eigen::Vector3d& second = pair_points_mm_[i * num_eval + joints[1]];
+        if (!first.allFinite() || !second.allFinite()) continue;
+        best = std::min(best, (0.5 * (first + second) - target).norm());
+      }
+      return best;
+    };
+    const std::vector<metrics::PartOutcome>& outcomes = records.pcp_nearest[k];
+    for (int part = 0; part < kNumPcpParts && part < static_cast<int>(outcomes.size()); ++part) {
+      if (outcomes[part] == metrics::PartOutcome::kNotEvaluated) continue;
+      const metrics::GenericPcpLayout::Part& layout = pcp_layout_.parts[part];
+      const Eigen::Vector3d gt_a = gt_endpoint(layout.a), gt_b = gt_endpoint(layout.b);
+      // PCP's test (metrics/pcp.h IsPartCorrect) with the nearest pair's endpoints.
+      const bool reached =
+          0.5 * (nearest_pair(layout.a, gt_a) + nearest_pair(layout.b, gt_b)) <= pcp_alpha_ * (gt_a - gt_b).norm();
+      const bool wrong = outcomes[part] == metrics::PartOutcome::kWrong;
+      PartLosses& counts = table_.parts[part];
+      ++counts.evaluated;
+      counts.wrong += wrong ? 1 : 0;
+      counts.beyond_best_pair += reached ? 0 : 1;
+      counts.wrong_beyond_best_pair += wrong && !reached ? 1 : 0;
+    }
+  }
+}
+
 void LossAccumulator::Add(const SequenceFrame& frame, const FrameTrace& trace, const Poses3D& predictions,
                           const metrics::FrameRecords& records) {
   LabelDetections(frame);
@@ -309,6 +409,7 @@ void LossAccumulator::Add(const SequenceFrame& frame, const FrameTrace& trace, c
     last_.push_back(loss);
   }
   if (!frame.labels_2d.empty() && records.counted) CountUnmatched(frame, trace, predictions, records, owner);
+  CountParts(frame, records);
 }
 
 }  // namespace rpt::engine

@@ -33,6 +33,7 @@
 #include "datasets/sequence.h"
 #include "metrics/eval_options.h"
 #include "metrics/eval_records.h"
+#include "metrics/pcp.h"
 
 namespace rpt::engine {
 
@@ -79,6 +80,23 @@ const char* UnmatchedSourceKey(UnmatchedSource source);
 inline constexpr std::array<const char*, 5> kPairDroppers = {"undistort", "prefilter", "triangulate_core",
                                                              "room_check", "filter"};
 
+// The PCP parts (metrics/pcp.h GenericPcpParts(): each part of each kept GT person that PCP
+// evaluates) and how far the person's own detections (above) could take them. For each endpoint,
+// every pair of two of its detections (two views, both holding the endpoint's joints) is
+// triangulated (core/triangulation.h TriangulateDlt on the undistorted coordinates) and the point
+// nearest the GT endpoint is taken; a part is *beyond its best pair* when even these nearest points
+// miss PCP's gate. Where the detections agree with each other but not with the dataset's joint (an
+// elbow every view places 0.2 m from its label), no triangulation of them reaches the part; a mean
+// of pairs erring in opposite directions can, so it is a reference, not a strict bound.
+struct PartLosses {
+  long evaluated = 0;               // PCP's denominator
+  long wrong = 0;                   // wrong in the output (against the nearest prediction, as PCP)
+  long beyond_best_pair = 0;        // no pair of the person's detections reaches it
+  long wrong_beyond_best_pair = 0;  // both
+  void Merge(const PartLosses& other);
+};
+inline constexpr int kNumPcpParts = 10;  // GenericPcpParts().size()
+
 // The counts over a run (or one sequence). Every kept GT person is in exactly one category, so the
 // categories sum to gt_persons; the details split some categories further.
 struct LossTable {
@@ -103,6 +121,8 @@ struct LossTable {
   long unmatched_with_2d_labels = 0;
   std::array<long, kNumUnmatchedSources> unmatched_by_source{};
   long unmatched_by_projection = 0;  // of those, judged by their projection (not merged from pairs)
+  std::array<PartLosses, kNumPcpParts> parts{};  // GenericPcpParts() order
+  PartLosses AllParts() const;                    // the sum over the parts
 
   long& operator[](Loss loss) { return count[static_cast<int>(loss)]; }
   long operator[](Loss loss) const { return count[static_cast<int>(loss)]; }
@@ -140,17 +160,26 @@ class LossAccumulator {
   // `owner` is the GT person of each traced pose (-1: none).
   void CountUnmatched(const SequenceFrame& frame, const FrameTrace& trace, const Poses3D& predictions,
                       const metrics::FrameRecords& records, const std::vector<int>& owner);
+  // The PCP parts of the frame's kept GT persons into table_.parts (after LabelDetections).
+  void CountParts(const SequenceFrame& frame, const metrics::FrameRecords& records);
 
   std::vector<Camera> cameras_;
   LossTableOptions options_;
   std::vector<int> gt_index_, det_index_;  // per association joint: GT / detection joint index
   std::vector<int> pred_eval_;             // per evaluated joint: output joint index (-1: none)
+  std::vector<int> det_eval_;              // per evaluated joint: detection joint index (-1: none)
+  std::vector<Eigen::Matrix<double, 3, 4>> world_to_camera_;  // per camera: [R | t]
+  metrics::GenericPcpLayout pcp_layout_;   // on the evaluated joints
+  double pcp_alpha_ = 0.5;
   double min_pred_score_ = 0;
   LossTable table_;
   std::vector<Loss> last_;
   // Per frame scratch.
   std::vector<std::vector<int>> label_;  // [view][detection]
   std::vector<int> detecting_views_;     // per GT person of the frame
+  std::vector<int> own_views_;           // CountParts: the views with a detection of the person
+  std::vector<Eigen::Vector2d> own_xy_;  // CountParts: [view][evaluated joint], undistorted (NaN: none)
+  std::vector<Eigen::Vector3d> pair_points_mm_;  // CountParts: [pair][evaluated joint] (NaN: none)
 };
 
 }  // namespace rpt::engine

@@ -108,6 +108,28 @@ for key, row in tables[0].items():
 PY
 }
 
+# How many of the wrong PCP parts the detections could have given (the loss-table runs' summary.json).
+parts_table() {
+  echo "## PCP parts within reach of the detections"
+  echo
+  echo "\`rpt eval --loss-table\` (docs/diagnostics.md, section 4): the parts PCP evaluates, those wrong in the"
+  echo "output, and those no pair of two views of the person's own detections triangulates within PCP's"
+  echo "test (beyond the best pair: a property of the detections and labels); folders mvor-openpose-losses"
+  echo "and shelf4da-openpose-losses, \`loss_table.parts\` in summary.json."
+  echo
+  python3 - "$OUT/real/mvor-openpose-losses/summary.json" "$OUT/real/shelf4da-openpose-losses/summary.json" <<'PY'
+import json, sys
+runs = [json.load(open(path))["loss_table"]["parts"] for path in sys.argv[1:]]
+print("| parts | MVOR, shipped OpenPose | Shelf, 4D-Association OpenPose |")
+print("|---|---|---|")
+print("| evaluated | " + " | ".join(str(r["evaluated"]) for r in runs) + " |")
+print("| wrong in the output (PCP) | " + " | ".join(f"{r['wrong']} ({r['pcp']:.2f} %)" for r in runs) + " |")
+print("| beyond the best pair (PCP with only those wrong) | " +
+      " | ".join(f"{r['beyond_best_pair']} ({r['pcp_best_pair']:.2f} %)" for r in runs) + " |")
+print("| wrong and beyond the best pair | " + " | ".join(str(r["wrong_beyond_best_pair"]) for r in runs) + " |")
+PY
+}
+
 # What MVOR's unmatched predictions show in its 2D labels (its loss-table run's summary.json).
 unmatched_labels_table() {
   echo "## What the unmatched predictions show (MVOR's 2D labels)"
@@ -206,6 +228,8 @@ real_results() {
     adapter_table
     echo
     loss_table
+    echo
+    parts_table
     echo
     invalid_causes_table
     echo

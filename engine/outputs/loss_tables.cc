@@ -9,6 +9,45 @@ namespace {
 
 double PercentOfWhole(long part, long whole) { return whole > 0 ? 100.0 * static_cast<double>(part) / whole : 0.0; }
 
+// PCP with every part that `beyond` parts of `parts.evaluated` miss.
+double PcpWithout(const PartLosses& parts, long beyond) {
+  return PercentOfWhole(parts.evaluated - beyond, parts.evaluated);
+}
+
+void PrintPartLosses(std::ostream& out, const LossTable& table) {
+  const PartLosses all = table.AllParts();
+  if (all.evaluated == 0) return;
+  char line[200];
+  std::snprintf(line, sizeof(line),
+                "PCP parts: %ld evaluated, %ld wrong (PCP %.2f %%); %ld beyond the best pair of the person's own "
+                "detections (PCP %.2f %% with each\n",
+                all.evaluated, all.wrong, PcpWithout(all, all.wrong), all.beyond_best_pair,
+                PcpWithout(all, all.beyond_best_pair));
+  out << line;
+  std::snprintf(line, sizeof(line),
+                "endpoint from its best pair), %ld of the wrong ones\n", all.wrong_beyond_best_pair);
+  out << line;
+  std::snprintf(line, sizeof(line), "  %-20s %9s %7s %16s %22s\n", "part", "evaluated", "wrong", "beyond_best_pair",
+                "wrong_beyond_best_pair");
+  out << line;
+  for (int k = 0; k < kNumPcpParts; ++k) {
+    const PartLosses& part = table.parts[k];
+    if (part.evaluated == 0) continue;
+    std::snprintf(line, sizeof(line), "  %-20s %9ld %7ld %16ld %22ld\n", metrics::GenericPcpParts()[k].name.c_str(),
+                  part.evaluated, part.wrong, part.beyond_best_pair, part.wrong_beyond_best_pair);
+    out << line;
+  }
+}
+
+nlohmann::ordered_json PartLossesJson(const PartLosses& parts) {
+  nlohmann::ordered_json j;
+  j["evaluated"] = parts.evaluated;
+  j["wrong"] = parts.wrong;
+  j["beyond_best_pair"] = parts.beyond_best_pair;
+  j["wrong_beyond_best_pair"] = parts.wrong_beyond_best_pair;
+  return j;
+}
+
 }  // namespace
 
 std::vector<LossRow> LossRows(const LossTable& t) {
@@ -57,6 +96,7 @@ void PrintLossTable(std::ostream& out, const LossTable& table) {
                   PercentOfWhole(row.persons, table.gt_persons));
     out << line;
   }
+  PrintPartLosses(out, table);
   if (table.unmatched_with_2d_labels == 0) return;
   const auto& by = table.unmatched_by_source;
   const auto n = [&](UnmatchedSource source) { return by[static_cast<int>(source)]; };
@@ -95,6 +135,17 @@ nlohmann::ordered_json LossTableJson(const LossTable& table) {
   }
   unmatched["by_projection"] = table.unmatched_by_projection;
   j["unmatched_with_2d_labels"] = std::move(unmatched);
+  // Parts, not persons (engine/loss_table.h PartLosses).
+  const PartLosses all = table.AllParts();
+  nlohmann::ordered_json parts = PartLossesJson(all);
+  parts["pcp"] = PcpWithout(all, all.wrong);
+  parts["pcp_best_pair"] = PcpWithout(all, all.beyond_best_pair);
+  nlohmann::ordered_json per_part = nlohmann::ordered_json::object();
+  for (int k = 0; k < kNumPcpParts; ++k) {
+    if (table.parts[k].evaluated > 0) per_part[metrics::GenericPcpParts()[k].name] = PartLossesJson(table.parts[k]);
+  }
+  parts["per_part"] = std::move(per_part);
+  j["parts"] = std::move(parts);
   return j;
 }
 

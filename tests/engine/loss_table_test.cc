@@ -344,8 +344,67 @@ TEST(LossTableTest, ACarriedPersonIsJudgedByItsProjection) {
   EXPECT_EQ(DescribeUnmatched(Losses(cameras, {first, second})), "1: 0 1 0 0 (1)");
 }
 
+// The PCP parts as "evaluated/wrong/beyond_best_pair/wrong_beyond_best_pair", all parts and then
+// the parts with a count other than evaluated, by name.
+std::string DescribeParts(const LossTable& table) {
+  const auto counts = [](const PartLosses& part) {
+    return std::to_string(part.evaluated) + "/" + std::to_string(part.wrong) + "/" +
+           std::to_string(part.beyond_best_pair) + "/" + std::to_string(part.wrong_beyond_best_pair);
+  };
+  std::string text = counts(table.AllParts());
+  for (int k = 0; k < kNumPcpParts; ++k) {
+    const PartLosses& part = table.parts[k];
+    if (part.wrong + part.beyond_best_pair > 0) text += " " + metrics::GenericPcpParts()[k].name + "=" + counts(part);
+  }
+  return text;
+}
+
+TEST(LossTableTest, PartsOfAPersonSeenExactlyAreCorrectAndWithinReach) {
+  const std::vector<Camera> cameras = RingCameras(4);
+  const Eigen::Matrix4Xd person = StandingPerson(0, 0);
+  SceneFrame frame = NewFrame(4, {person});
+  for (int c = 0; c < 4; ++c) AddDetection(cameras[c], person, &frame.views[c]);
+  EXPECT_EQ(DescribeParts(Losses(cameras, {frame})), "10/0/0/0");
+}
+
+TEST(LossTableTest, AWristEveryViewPlacesOffItsLabelIsBeyondTheBestPair) {
+  const std::vector<Camera> cameras = RingCameras(4);
+  const Eigen::Matrix4Xd detected = StandingPerson(0, 0);
+  // The dataset labels the left wrist 80 % of the way up the forearm; every view agrees on the
+  // wrist where it is: the forearm is wrong in the output and no pair of views places it better.
+  Eigen::Matrix4Xd labelled = detected;
+  const int elbow = FindJoint(CocoBodyJoints(), "elbow_left"), wrist = FindJoint(CocoBodyJoints(), "wrist_left");
+  labelled.col(wrist).head<3>() = detected.col(elbow).head<3>() +
+                                  0.2 * (detected.col(wrist).head<3>() - detected.col(elbow).head<3>());
+  SceneFrame frame = NewFrame(4, {labelled});
+  for (int c = 0; c < 4; ++c) AddDetection(cameras[c], detected, &frame.views[c]);
+  EXPECT_EQ(DescribeParts(Losses(cameras, {frame})), "10/1/1/1 lower_arm_left=1/1/1/1");
+}
+
+TEST(LossTableTest, PartsOfAPersonLeftOutAreWrongButWithinReach) {
+  const std::vector<Camera> cameras = RingCameras(5);
+  const Eigen::Matrix4Xd person = StandingPerson(0, 0);
+  SceneFrame frame = NewFrame(5, {person});
+  // Exact in two views, rejected by verify (the three empty views contradict it): nothing is output.
+  AddDetection(cameras[0], person, &frame.views[0]);
+  AddDetection(cameras[1], person, &frame.views[1]);
+  const std::string all_wrong =
+      "10/10/0/0 upper_arm_left=1/1/0/0 upper_arm_right=1/1/0/0 lower_arm_left=1/1/0/0 lower_arm_right=1/1/0/0 "
+      "upper_leg_left=1/1/0/0 upper_leg_right=1/1/0/0 lower_leg_left=1/1/0/0 lower_leg_right=1/1/0/0 "
+      "torso=1/1/0/0 head=1/1/0/0";
+  EXPECT_EQ(DescribeParts(Losses(cameras, {frame})), all_wrong);
+  // Its detection in one view only: no pair, so every part is beyond reach.
+  frame.views[1].Clear(static_cast<int>(CocoBodyJoints().size()));
+  std::string all_beyond = all_wrong;
+  for (size_t at = 0; (at = all_beyond.find("1/1/0/0", at)) != std::string::npos;) all_beyond.replace(at, 7, "1/1/1/1");
+  EXPECT_EQ(DescribeParts(Losses(cameras, {frame})), "10/10/10/10" + all_beyond.substr(9));
+}
+
 // Real data: the categories sum to the GT persons, and the found ones are Recall@500's.
-void ExpectConsistentOnRealData(const InputSpec& spec, bool has_2d_labels) {
+// `parts_beyond_best_pair`: of all parts, those no pair of the person's detections reaches (a
+// property of the detections and labels alone, not of the triangulator's options).
+void ExpectConsistentOnRealData(const InputSpec& spec, bool has_2d_labels, long parts_evaluated,
+                                long parts_beyond_best_pair) {
   Input input = OpenInput(spec);
   RunOptions options;
   options.loss_table = true;
@@ -366,6 +425,12 @@ void ExpectConsistentOnRealData(const InputSpec& spec, bool has_2d_labels) {
   EXPECT_EQ(unmatched, table.unmatched_with_2d_labels);
   EXPECT_LE(table.unmatched_by_projection, table.unmatched_with_2d_labels);
   EXPECT_EQ(table.unmatched_with_2d_labels, has_2d_labels ? run.metrics.invalid_causes.Total() : 0);
+  // The parts are PCP's: its denominator, and its value from the wrong ones.
+  const PartLosses parts = table.AllParts();
+  EXPECT_NEAR(100.0 * (parts.evaluated - parts.wrong) / parts.evaluated, run.metrics.pcp, 1e-9);
+  EXPECT_LE(parts.wrong_beyond_best_pair, std::min(parts.wrong, parts.beyond_best_pair));
+  EXPECT_EQ(parts.evaluated, parts_evaluated);
+  EXPECT_EQ(parts.beyond_best_pair, parts_beyond_best_pair);
 }
 
 TEST(LossTableTest, MvorCategoriesSumToTheGtPersons) {
@@ -374,7 +439,7 @@ TEST(LossTableTest, MvorCategoriesSumToTheGtPersons) {
   InputSpec spec;
   spec.dataset = "mvor";
   spec.root = test::SharedData("mvor").string();
-  ExpectConsistentOnRealData(spec, true);
+  ExpectConsistentOnRealData(spec, true, 5305, 2912);
 }
 
 TEST(LossTableTest, Shelf4daCategoriesSumToTheGtPersons) {
@@ -382,7 +447,7 @@ TEST(LossTableTest, Shelf4daCategoriesSumToTheGtPersons) {
   InputSpec spec;
   spec.dataset = "shelf-4da";
   spec.root = test::SharedData("shelf/4d_association").string();
-  ExpectConsistentOnRealData(spec, false);
+  ExpectConsistentOnRealData(spec, false, 5100, 68);
 }
 
 }  // namespace
