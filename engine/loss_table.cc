@@ -69,6 +69,13 @@ void PartLosses::Merge(const PartLosses& other) {
   wrong_beyond_best_pair += other.wrong_beyond_best_pair;
 }
 
+void JointReferences::Merge(const JointReferences& other) {
+  joints += other.joints;
+  output_mm += other.output_mm;
+  all_views_mm += other.all_views_mm;
+  best_pair_mm += other.best_pair_mm;
+}
+
 PartLosses LossTable::AllParts() const {
   PartLosses all;
   for (const PartLosses& part : parts) all.Merge(part);
@@ -93,6 +100,7 @@ void LossTable::Merge(const LossTable& other) {
   unmatched_by_projection += other.unmatched_by_projection;
   for (int k = 0; k < kNumUnmatchedSources; ++k) unmatched_by_source[k] += other.unmatched_by_source[k];
   for (int k = 0; k < kNumPcpParts; ++k) parts[k].Merge(other.parts[k]);
+  joints.Merge(other.joints);
 }
 
 LossAccumulator::LossAccumulator(const SequenceHeader& header, const JointNames& output_joints,
@@ -228,6 +236,46 @@ void LossAccumulator::CountUnmatched(const SequenceFrame& frame, const FrameTrac
   }
 }
 
+void LossAccumulator::AddJointReferences(const metrics::FrameRecords& records, int k, size_t num_pairs) {
+  const metrics::PairRecord* match = nullptr;
+  for (const metrics::PairRecord& pair : records.pairs) {
+    if (pair.gt_idx == k && (pair.flags & metrics::kMatch)) match = &pair;
+  }
+  if (match == nullptr) return;
+  const int num_eval = static_cast<int>(det_eval_.size());
+  const int views = static_cast<int>(own_views_.size());
+  const metrics::EvalPerson& gt = records.gt[k];
+  for (int e = 0; e < num_eval && e < match->joint_errors.size(); ++e) {
+    if (!gt.valid(e) || !std::isfinite(match->joint_errors[e])) continue;
+    // All views: minimise sum_v w_v |(I - r_v r_v^T)(X - c_v)|^2 over the unit rays r_v.
+    Eigen::Matrix3d a = Eigen::Matrix3d::Zero();
+    Eigen::Vector3d b = Eigen::Vector3d::Zero();
+    int seen = 0;
+    for (int v = 0; v < views; ++v) {
+      const size_t at = static_cast<size_t>(v) * num_eval + e;
+      if (!own_xy_[at].allFinite() || !(own_confidence_[at] > 0)) continue;
+      const Camera& camera = cameras_[own_views_[v]];
+      const Eigen::Vector3d ray = (camera.R.transpose() * own_xy_[at].homogeneous()).normalized();
+      const Eigen::Matrix3d p = own_confidence_[at] * (Eigen::Matrix3d::Identity() - ray * ray.transpose());
+      a += p;
+      b += p * camera.Center();
+      ++seen;
+    }
+    if (seen < 2 || !(std::abs(a.determinant()) > 1e-12)) continue;
+    double best_pair = std::numeric_limits<double>::infinity();
+    for (size_t i = 0; i < num_pairs; ++i) {
+      const Eigen::Vector3d& point = pair_points_mm_[i * num_eval + e];
+      if (point.allFinite()) best_pair = std::min(best_pair, (point - gt.xyz_mm.col(e)).norm());
+    }
+    if (!std::isfinite(best_pair)) continue;
+    const Eigen::Vector3d all_views = 1000.0 * a.inverse() * b;
+    ++table_.joints.joints;
+    table_.joints.output_mm += match->joint_errors[e];
+    table_.joints.all_views_mm += (all_views - gt.xyz_mm.col(e)).norm();
+    table_.joints.best_pair_mm += best_pair;
+  }
+}
+
 void LossAccumulator::CountParts(const SequenceFrame& frame, const metrics::FrameRecords& records) {
   const int num_eval = static_cast<int>(det_eval_.size());
   const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -236,6 +284,7 @@ void LossAccumulator::CountParts(const SequenceFrame& frame, const metrics::Fram
     // Its detections: the first one labelled p in each view, undistorted.
     own_views_.clear();
     own_xy_.clear();
+    own_confidence_.clear();
     for (size_t c = 0; c < label_.size() && c < cameras_.size(); ++c) {
       const auto it = std::find(label_[c].begin(), label_[c].end(), p);
       if (it == label_[c].end()) continue;
@@ -247,6 +296,7 @@ void LossAccumulator::CountParts(const SequenceFrame& frame, const metrics::Fram
                              std::isfinite(detection(1, d));
         own_xy_.push_back(present ? cameras_[c].PixelToNormalized(Eigen::Vector2d(detection(0, d), detection(1, d)))
                                   : Eigen::Vector2d(nan, nan));
+        own_confidence_.push_back(present ? std::min(1.0, detection(2, d)) : 0.0);
       }
     }
     // Every pair of them, every joint both hold (mm, as the metrics).
@@ -284,6 +334,7 @@ void LossAccumulator::CountParts(const SequenceFrame& frame, const metrics::Fram
       }
       return best;
     };
+    AddJointReferences(records, static_cast<int>(k), num_pairs);
     const std::vector<metrics::PartOutcome>& outcomes = records.pcp_nearest[k];
     for (int part = 0; part < kNumPcpParts && part < static_cast<int>(outcomes.size()); ++part) {
       if (outcomes[part] == metrics::PartOutcome::kNotEvaluated) continue;

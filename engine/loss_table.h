@@ -97,6 +97,21 @@ struct PartLosses {
 };
 inline constexpr int kNumPcpParts = 10;  // GenericPcpParts().size()
 
+// The joint errors of the matched GT persons (matched at metrics.match_threshold_mm) against two
+// references made from their own detections, over the same joints: each evaluated joint with a
+// valid GT position, a predicted one, and a detection in two or more of the person's views.
+//   all_views: the point nearest the rays of all those views, each weighted by its 2D confidence
+//              (least squares): plain triangulation that is told the association.
+//   best_pair: the pair of two of those views whose triangulation lands nearest the GT joint,
+//              chosen with the GT: a bound that no method reaches.
+struct JointReferences {
+  long joints = 0;
+  double output_mm = 0;     // sums over the joints (mm); divide by `joints` for the mean
+  double all_views_mm = 0;
+  double best_pair_mm = 0;
+  void Merge(const JointReferences& other);
+};
+
 // The counts over a run (or one sequence). Every kept GT person is in exactly one category, so the
 // categories sum to gt_persons; the details split some categories further.
 struct LossTable {
@@ -123,6 +138,7 @@ struct LossTable {
   long unmatched_by_projection = 0;  // of those, judged by their projection (not merged from pairs)
   std::array<PartLosses, kNumPcpParts> parts{};  // GenericPcpParts() order
   PartLosses AllParts() const;                    // the sum over the parts
+  JointReferences joints;
 
   long& operator[](Loss loss) { return count[static_cast<int>(loss)]; }
   long operator[](Loss loss) const { return count[static_cast<int>(loss)]; }
@@ -162,6 +178,8 @@ class LossAccumulator {
                       const metrics::FrameRecords& records, const std::vector<int>& owner);
   // The PCP parts of the frame's kept GT persons into table_.parts (after LabelDetections).
   void CountParts(const SequenceFrame& frame, const metrics::FrameRecords& records);
+  // The joints of kept GT person k into table_.joints (CountParts' detections and pairs).
+  void AddJointReferences(const metrics::FrameRecords& records, int k, size_t num_pairs);
 
   std::vector<Camera> cameras_;
   LossTableOptions options_;
@@ -179,6 +197,7 @@ class LossAccumulator {
   std::vector<int> detecting_views_;     // per GT person of the frame
   std::vector<int> own_views_;           // CountParts: the views with a detection of the person
   std::vector<Eigen::Vector2d> own_xy_;  // CountParts: [view][evaluated joint], undistorted (NaN: none)
+  std::vector<double> own_confidence_;   // CountParts: [view][evaluated joint], 2D confidence (0: none)
   std::vector<Eigen::Vector3d> pair_points_mm_;  // CountParts: [pair][evaluated joint] (NaN: none)
 };
 

@@ -128,6 +128,20 @@ print("| beyond the best pair (PCP with only those wrong) | " +
       " | ".join(f"{r['beyond_best_pair']} ({r['pcp_best_pair']:.2f} %)" for r in runs) + " |")
 print("| wrong and beyond the best pair | " + " | ".join(str(r["wrong_beyond_best_pair"]) for r in runs) + " |")
 PY
+  echo
+  echo "Mean joint error (mm) over the joints of matched persons that 2 or more of their views detected,"
+  echo "\`loss_table.joint_references\`: the output, a confidence-weighted fit of all those views (told the"
+  echo "association), and the best pair per joint (chosen with the GT: a bound)."
+  echo
+  python3 - "$OUT/real/mvor-openpose-losses/summary.json" "$OUT/real/shelf4da-openpose-losses/summary.json" <<'PY'
+import json, sys
+runs = [json.load(open(path))["loss_table"]["joint_references"] for path in sys.argv[1:]]
+print("| joints | MVOR, shipped OpenPose | Shelf, 4D-Association OpenPose |")
+print("|---|---|---|")
+print("| compared | " + " | ".join(str(r["joints"]) for r in runs) + " |")
+for key, label in [("output_mm", "output"), ("all_views_mm", "all views fitted"), ("best_pair_mm", "best pair per joint")]:
+    print(f"| {label} | " + " | ".join(f"{r[key]:.1f}" for r in runs) + " |")
+PY
 }
 
 # What MVOR's unmatched predictions show in its 2D labels (its loss-table run's summary.json).

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "engine/outputs/loss_tables.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <sstream>
 
@@ -37,6 +38,22 @@ void PrintPartLosses(std::ostream& out, const LossTable& table) {
                   part.evaluated, part.wrong, part.beyond_best_pair, part.wrong_beyond_best_pair);
     out << line;
   }
+}
+
+void PrintJointReferences(std::ostream& out, const JointReferences& joints) {
+  if (joints.joints == 0) return;
+  const double n = static_cast<double>(joints.joints);
+  char line[200];
+  std::snprintf(line, sizeof(line),
+                "joint errors over the %ld joints of matched persons that 2 or more of their views detected: output "
+                "%.1f mm;\n",
+                joints.joints, joints.output_mm / n);
+  out << line;
+  std::snprintf(line, sizeof(line),
+                "  all those views fitted (confidence-weighted rays) %.1f mm; best pair per joint, chosen with the GT, "
+                "%.1f mm\n",
+                joints.all_views_mm / n, joints.best_pair_mm / n);
+  out << line;
 }
 
 nlohmann::ordered_json PartLossesJson(const PartLosses& parts) {
@@ -97,6 +114,7 @@ void PrintLossTable(std::ostream& out, const LossTable& table) {
     out << line;
   }
   PrintPartLosses(out, table);
+  PrintJointReferences(out, table.joints);
   if (table.unmatched_with_2d_labels == 0) return;
   const auto& by = table.unmatched_by_source;
   const auto n = [&](UnmatchedSource source) { return by[static_cast<int>(source)]; };
@@ -146,6 +164,14 @@ nlohmann::ordered_json LossTableJson(const LossTable& table) {
   }
   parts["per_part"] = std::move(per_part);
   j["parts"] = std::move(parts);
+  // Joints of matched persons (engine/loss_table.h JointReferences): mean errors, mm.
+  nlohmann::ordered_json joints;
+  const double n = static_cast<double>(std::max(1L, table.joints.joints));
+  joints["joints"] = table.joints.joints;
+  joints["output_mm"] = table.joints.output_mm / n;
+  joints["all_views_mm"] = table.joints.all_views_mm / n;
+  joints["best_pair_mm"] = table.joints.best_pair_mm / n;
+  j["joint_references"] = std::move(joints);
   return j;
 }
 

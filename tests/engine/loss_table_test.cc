@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <string>
 #include <vector>
@@ -190,8 +191,9 @@ TEST(LossTableTest, DetectionsThatAgreeOnTheWrongPlaceAreMergedOff) {
   const Eigen::Matrix4Xd person = StandingPerson(0, 0), reported = StandingPerson(0.6, 0);
   SceneFrame frame = NewFrame(4, {person});
   for (int c = 0; c < 4; ++c) AddDetection(cameras[c], reported, &frame.views[c]);
-  EXPECT_EQ(Describe(Losses(cameras, {frame})),
-            "gt=1 triangulable=1 merged_wrongly=1 merged_wrongly/own_pairs_only=1");
+  const LossTable table = Losses(cameras, {frame});
+  EXPECT_EQ(Describe(table), "gt=1 triangulable=1 merged_wrongly=1 merged_wrongly/own_pairs_only=1");
+  EXPECT_EQ(table.joints.joints, 0);  // its nearest prediction is no match: no joint to compare
 }
 
 TEST(LossTableTest, PersonThatThreeEmptyViewsContradictIsRejectedByVerify) {
@@ -398,6 +400,40 @@ TEST(LossTableTest, PartsOfAPersonLeftOutAreWrongButWithinReach) {
   std::string all_beyond = all_wrong;
   for (size_t at = 0; (at = all_beyond.find("1/1/0/0", at)) != std::string::npos;) all_beyond.replace(at, 7, "1/1/1/1");
   EXPECT_EQ(DescribeParts(Losses(cameras, {frame})), "10/10/10/10" + all_beyond.substr(9));
+}
+
+// The mean joint errors of the references: "joints: output all_views best_pair" (mm, 3 decimals).
+std::string DescribeJoints(const LossTable& table) {
+  const JointReferences& r = table.joints;
+  const double n = static_cast<double>(std::max(1L, r.joints));
+  char text[120];
+  std::snprintf(text, sizeof(text), "%ld: %.3f %.3f %.3f", r.joints, r.output_mm / n, r.all_views_mm / n,
+                r.best_pair_mm / n);
+  return text;
+}
+
+TEST(LossTableTest, JointReferencesOfDetectionsThatAgreeOnAShiftedPersonAreTheShift) {
+  const std::vector<Camera> cameras = RingCameras(4);
+  // Every view reports the person 0.1 m beside its labels: each reference, and the output, 100 mm off.
+  const Eigen::Matrix4Xd person = StandingPerson(0, 0), reported = StandingPerson(0.1, 0);
+  SceneFrame frame = NewFrame(4, {person});
+  for (int c = 0; c < 4; ++c) AddDetection(cameras[c], reported, &frame.views[c]);
+  EXPECT_EQ(DescribeJoints(Losses(cameras, {frame})), "13: 100.000 100.000 100.000");
+}
+
+TEST(LossTableTest, OneViewOffMovesTheAllViewsFitButNotTheBestPair) {
+  const std::vector<Camera> cameras = RingCameras(3);
+  const Eigen::Matrix4Xd person = StandingPerson(0, 0);
+  SceneFrame frame = NewFrame(3, {person});
+  AddDetection(cameras[0], person, &frame.views[0]);
+  AddDetection(cameras[1], person, &frame.views[1]);
+  AddDetection(cameras[2], person, &frame.views[2], 15);  // 15 px off: still paired and merged
+  const LossTable table = Losses(cameras, {frame});
+  ASSERT_EQ(table.joints.joints, 13);
+  EXPECT_NEAR(table.joints.best_pair_mm, 0.0, 1e-6);  // views 0 and 1 are exact
+  // The third view pulls every joint of the fit off by the same amount: its ray is off by 15 px.
+  EXPECT_GT(table.joints.all_views_mm / 13, 5.0);
+  EXPECT_LT(table.joints.all_views_mm / 13, 50.0);
 }
 
 // Real data: the categories sum to the GT persons, and the found ones are Recall@500's.
