@@ -103,7 +103,7 @@ inline constexpr int kNumPcpParts = 10;  // GenericPcpParts().size()
 //   all_views: the point nearest the rays of all those views, each weighted by its 2D confidence
 //              (least squares): plain triangulation that is told the association.
 //   best_pair: the pair of two of those views whose triangulation lands nearest the GT joint,
-//              chosen with the GT: a bound that no method reaches.
+//              chosen with the GT: optimistic for one pair (a mean of several can come closer).
 struct JointReferences {
   long joints = 0;
   double output_mm = 0;     // sums over the joints (mm); divide by `joints` for the mean

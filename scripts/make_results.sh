@@ -131,7 +131,7 @@ PY
   echo
   echo "Mean joint error (mm) over the joints of matched persons that 2 or more of their views detected,"
   echo "\`loss_table.joint_references\`: the output, a confidence-weighted fit of all those views (told the"
-  echo "association), and the best pair per joint (chosen with the GT: a bound)."
+  echo "association), and the best pair per joint (chosen with the GT: optimistic for one pair)."
   echo
   python3 - "$OUT/real/mvor-openpose-losses/summary.json" "$OUT/real/shelf4da-openpose-losses/summary.json" <<'PY'
 import json, sys
