@@ -66,7 +66,36 @@
         head.appendChild(cell);
         values.insertCell().textContent = typeof value === 'number' ? fmt(value, 1) : '';
       }
+      // With --loss-table: the same parts if only those beyond the best pair of the person's own
+      // detections were wrong (summary.json "loss_table.parts.per_part", docs/diagnostics.md).
+      const lossParts = ((data.summary || {}).loss_table || {}).parts;
+      const perPart = lossParts && typeof lossParts.per_part === 'object' ? lossParts.per_part : null;
+      if (perPart) {
+        const reach = partsTable.tBodies[0].insertRow();
+        reach.insertCell().textContent = 'best pair of the detections';
+        for (const name of Object.keys(parts)) {
+          const counts = perPart[name];
+          const ok = counts && typeof counts.evaluated === 'number' && counts.evaluated > 0 &&
+              typeof counts.beyond_best_pair === 'number';
+          reach.insertCell().textContent = ok ? fmt(100 * (counts.evaluated - counts.beyond_best_pair) / counts.evaluated, 1) : '';
+        }
+      }
       partsTable.hidden = false;
+    }
+    // With --loss-table: where the GT persons are lost, and the joint references (docs/diagnostics.md).
+    const losses = (data.summary || {}).loss_table;
+    if (losses && typeof losses === 'object' && losses.categories && typeof losses.categories === 'object') {
+      const c = losses.categories;
+      const n = (key) => (typeof c[key] === 'number' ? c[key] : 0);
+      el('summary-note').textContent += ' Where the ' + fmt(losses.gt_persons, 0) + ' GT persons are lost (--loss-table): ' +
+          n('found') + ' found, ' + n('fewer_than_2_views') + ' detected in fewer than 2 views, ' + n('pair_filtered') +
+          ' pair filtered, ' + n('grouped_wrongly') + ' grouped wrongly, ' + n('merged_wrongly') + ' merged wrongly, ' +
+          n('rejected') + ' rejected, ' + n('placed_off') + ' placed off.';
+      const r = losses.joint_references;
+      if (r && typeof r.joints === 'number' && r.joints > 0) {
+        el('summary-note').textContent += ' Mean joint error over ' + r.joints + ' joints: output ' + fmt(r.output_mm, 1) +
+            ' mm, all views fitted ' + fmt(r.all_views_mm, 1) + ' mm, best pair per joint ' + fmt(r.best_pair_mm, 1) + ' mm.';
+      }
     }
     const list = el('warnings');
     const warnings = (data.warnings || []).concat((data.summary || {}).warnings || []);

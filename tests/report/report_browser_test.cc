@@ -75,7 +75,7 @@ void CheckInBrowser(const fs::path& dir, const std::string& name) {
   EXPECT_EQ(dom.find("<canvas id=\"plot-frames\"") == std::string::npos, false);
   // PCP per part: one column per part of summary.json's "pcp_parts" (underscores as spaces), its value
   // with one decimal.
-  const Json summary = Json::parse(ReadAll(dir / "summary.json"));
+  const nlohmann::ordered_json summary = nlohmann::ordered_json::parse(ReadAll(dir / "summary.json"));  // the file's order
   const std::string parts = PcpPartsTable(dom);
   ASSERT_FALSE(parts.empty()) << "no PCP-per-part table";
   EXPECT_EQ(parts.find("hidden"), std::string::npos);
@@ -91,7 +91,7 @@ void CheckInBrowser(const fs::path& dir, const std::string& name) {
 
   // Why the Invalid predictions are not matches: one sentence in the summary note, from
   // summary.json's "invalid_causes", only when there are any.
-  const Json& causes = summary["invalid_causes"];
+  const auto& causes = summary["invalid_causes"];
   const int unmatched = causes["duplicate"].get<int>() + causes["near_matched_gt"].get<int>() +
                         causes["near_missed_gt"].get<int>() + causes["far_from_gt"].get<int>() +
                         causes["no_gt"].get<int>();
@@ -106,6 +106,31 @@ void CheckInBrowser(const fs::path& dir, const std::string& name) {
   const std::string note = dom.substr(note_at, dom.find("</p>", note_at) - note_at);
   EXPECT_EQ(note.find(sentence) != std::string::npos, unmatched > 0) << note << "\nexpected: " << sentence;
   EXPECT_EQ(note.find("Unmatched predictions") != std::string::npos, unmatched > 0) << note;
+
+  // With --loss-table: a row of the PCP-per-part table (the parts within reach of the best pair,
+  // from summary.json's "loss_table.parts.per_part") and the categories in the summary note.
+  const bool losses = summary.contains("loss_table");
+  EXPECT_EQ(parts.find("best pair of the detections") != std::string::npos, losses);
+  EXPECT_EQ(note.find("GT persons are lost") != std::string::npos, losses) << note;
+  if (losses) {
+    const auto& table = summary["loss_table"];
+    const auto& categories = table["categories"];
+    EXPECT_NE(note.find("Where the " + std::to_string(table["gt_persons"].get<int>()) + " GT persons are lost (--loss-table): " +
+                        std::to_string(categories["found"].get<int>()) + " found, "),
+              std::string::npos)
+        << note;
+    // The reach row follows the PCP row, part by part.
+    std::string reach = "<td>best pair of the detections</td>";
+    for (const auto& [part, value] : summary["pcp_parts"].items()) {
+      const auto& counts = table["parts"]["per_part"][part];
+      const double evaluated = counts["evaluated"].get<double>();
+      char cell[32];
+      std::snprintf(cell, sizeof cell, "<td>%.1f</td>",
+                    100.0 * (evaluated - counts["beyond_best_pair"].get<double>()) / evaluated);
+      reach += cell;
+    }
+    EXPECT_NE(parts.find(reach), std::string::npos) << parts << "\nexpected: " << reach;
+  }
 
   // Screenshots (two more Chromium runs, about a third of this test's time each) for the synthetic
   // run always, for the fixtures when RPT_REPORT_SCREENSHOTS asks for them (docs/report.md).
@@ -130,8 +155,8 @@ TEST(ReportBrowser, ShelfFixture) {
   RPT_REQUIRE_CHROMIUM();
   RPT_REQUIRE_SHARED_DATA("shelf/4d_association");
   const fs::path dir = TempDir("report_browser_shelf");
-  ASSERT_TRUE(EvalAndReport("--dataset shelf-4da --root " + SharedData("shelf/4d_association").string(), dir,
-                            "--max-frames 60"));
+  ASSERT_TRUE(EvalAndReport("--dataset shelf-4da --root " + SharedData("shelf/4d_association").string() + " --loss-table",
+                            dir, "--max-frames 60"));
   CheckInBrowser(dir, "shelf");
 }
 
