@@ -377,8 +377,9 @@ HWY_INLINE void MergeLanes(D d, const MergeParams& p, const double* xyz, const d
       for (int m = 0; m < members; ++m) {
         const size_t at = static_cast<size_t>(m) * n + j;
         const V dm = hn::LoadU(d, dist + static_cast<size_t>(m) * N);
+        // No early exit when no lane is less: that branch mispredicted so often that blending
+        // every member costs less (merge 9.9 -> 7.5 us on the whole-body frame).
         const auto less = hn::Lt(dm, low);  // false for NaN: not a candidate
-        if (hn::AllFalse(d, less)) continue;
         const double* const c = cache + static_cast<size_t>(m) * 3 * N;
         const V x = hn::LoadU(d, c), y = hn::LoadU(d, c + N), z = hn::LoadU(d, c + 2 * N);
         low = hn::IfThenElse(less, dm, low);
