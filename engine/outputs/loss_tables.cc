@@ -19,14 +19,13 @@ void PrintPartLosses(std::ostream& out, const LossTable& table) {
   const PartLosses all = table.AllParts();
   if (all.evaluated == 0) return;
   char line[200];
-  std::snprintf(line, sizeof(line),
-                "PCP parts: %ld evaluated, %ld wrong (PCP %.2f %%); %ld beyond the best pair of the person's own "
-                "detections (PCP %.2f %% with each\n",
-                all.evaluated, all.wrong, PcpWithout(all, all.wrong), all.beyond_best_pair,
-                PcpWithout(all, all.beyond_best_pair));
+  std::snprintf(line, sizeof(line), "PCP parts: %ld evaluated, %ld wrong (PCP %.2f %%)\n", all.evaluated, all.wrong,
+                PcpWithout(all, all.wrong));
   out << line;
   std::snprintf(line, sizeof(line),
-                "endpoint from its best pair), %ld of the wrong ones\n", all.wrong_beyond_best_pair);
+                "  beyond the best pair of the person's own detections: %ld (PCP %.2f %% if only those were wrong), "
+                "%ld of them wrong\n",
+                all.beyond_best_pair, PcpWithout(all, all.beyond_best_pair), all.wrong_beyond_best_pair);
   out << line;
   std::snprintf(line, sizeof(line), "  %-20s %9s %7s %16s %22s\n", "part", "evaluated", "wrong", "beyond_best_pair",
                 "wrong_beyond_best_pair");
@@ -45,14 +44,14 @@ void PrintJointReferences(std::ostream& out, const JointReferences& joints) {
   const double n = static_cast<double>(joints.joints);
   char line[200];
   std::snprintf(line, sizeof(line),
-                "joint errors over the %ld joints of matched persons that 2 or more of their views detected: output "
-                "%.1f mm;\n",
-                joints.joints, joints.output_mm / n);
+                "joint errors over the %ld joints of matched persons that 2 or more of their views detected (mean, "
+                "mm):\n",
+                joints.joints);
   out << line;
   std::snprintf(line, sizeof(line),
-                "  all those views fitted (confidence-weighted rays) %.1f mm; best pair per joint, chosen with the GT, "
-                "%.1f mm\n",
-                joints.all_views_mm / n, joints.best_pair_mm / n);
+                "  output %.1f, all those views fitted (confidence-weighted rays) %.1f, best pair per joint (chosen "
+                "with the GT) %.1f\n",
+                joints.output_mm / n, joints.all_views_mm / n, joints.best_pair_mm / n);
   out << line;
 }
 

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -125,6 +126,17 @@ TEST(EvalDiagnostics, LossTableIsPrintedAndWrittenOnlyWhenAsked) {
   const std::string csv = test::ReadAll(out / "losses.csv");
   EXPECT_EQ(csv.rfind("category,detail,persons,percent_of_gt\nfound,,", 0), 0u) << csv;
   EXPECT_NE(csv.find("\nall,,120,100.00\n"), std::string::npos) << csv;
+  // The PCP parts (10 per GT person here) and the joint references, printed as summary.json has them.
+  const Json& parts = table.at("parts");
+  EXPECT_EQ(parts.at("evaluated").get<long>(), 10 * gt);
+  char line[120];
+  std::snprintf(line, sizeof line, "PCP parts: %ld evaluated, %ld wrong (PCP %.2f %%)\n", parts.at("evaluated").get<long>(),
+                parts.at("wrong").get<long>(), summary.at("pcp").get<double>());
+  EXPECT_NE(r.out.find(line), std::string::npos) << r.out << "\nexpected: " << line;
+  const Json& joints = table.at("joint_references");
+  EXPECT_GT(joints.at("joints").get<long>(), 0);
+  std::snprintf(line, sizeof line, "  output %.1f, all those views fitted", joints.at("output_mm").get<double>());
+  EXPECT_NE(r.out.find(line), std::string::npos) << r.out << "\nexpected: " << line;
 
   const test::CommandResult json = test::RunRpt(eval + " --loss-table --json");
   ASSERT_EQ(json.exit_code, 0) << json.err;
