@@ -86,8 +86,8 @@ inline constexpr std::array<const char*, 5> kPairDroppers = {"undistort", "prefi
 // triangulated (core/triangulation.h TriangulateDlt on the undistorted coordinates) and the point
 // nearest the GT endpoint is taken; a part is *beyond its best pair* when even these nearest points
 // miss PCP's gate. Where the detections agree with each other but not with the dataset's joint (an
-// elbow every view places 0.2 m from its label), no triangulation of them reaches the part; a mean
-// of pairs erring in opposite directions can, so it is a reference, not a strict bound.
+// elbow every view places 0.2 m from its label), no pair of them reaches the part; a mean of
+// several pairs erring in opposite directions can, so it is a reference, not a strict bound.
 struct PartLosses {
   long evaluated = 0;               // PCP's denominator
   long wrong = 0;                   // wrong in the output (against the nearest prediction, as PCP)
