@@ -119,28 +119,27 @@ parts_table() {
   echo
   python3 - "$OUT/real/mvor-openpose-losses/summary.json" "$OUT/real/shelf4da-openpose-losses/summary.json" <<'PY'
 import json, sys
-runs = [json.load(open(path))["loss_table"]["parts"] for path in sys.argv[1:]]
-print("| parts | MVOR, shipped OpenPose | Shelf, 4D-Association OpenPose |")
-print("|---|---|---|")
-print("| evaluated | " + " | ".join(str(r["evaluated"]) for r in runs) + " |")
-print("| wrong in the output (PCP) | " + " | ".join(f"{r['wrong']} ({r['pcp']:.2f} %)" for r in runs) + " |")
-print("| beyond the best pair (PCP with only those wrong) | " +
-      " | ".join(f"{r['beyond_best_pair']} ({r['pcp_best_pair']:.2f} %)" for r in runs) + " |")
-print("| wrong and beyond the best pair | " + " | ".join(str(r["wrong_beyond_best_pair"]) for r in runs) + " |")
-PY
-  echo
-  echo "Mean joint error (mm) over the joints of matched persons that 2 or more of their views detected,"
-  echo "\`loss_table.joint_references\`: the output, a confidence-weighted fit of all those views (told the"
-  echo "association), and the best pair per joint (chosen with the GT: optimistic for one pair)."
-  echo
-  python3 - "$OUT/real/mvor-openpose-losses/summary.json" "$OUT/real/shelf4da-openpose-losses/summary.json" <<'PY'
-import json, sys
-runs = [json.load(open(path))["loss_table"]["joint_references"] for path in sys.argv[1:]]
-print("| joints | MVOR, shipped OpenPose | Shelf, 4D-Association OpenPose |")
-print("|---|---|---|")
-print("| compared | " + " | ".join(str(r["joints"]) for r in runs) + " |")
-for key, label in [("output_mm", "output"), ("all_views_mm", "all views fitted"), ("best_pair_mm", "best pair per joint")]:
-    print(f"| {label} | " + " | ".join(f"{r[key]:.1f}" for r in runs) + " |")
+tables = [json.load(open(path))["loss_table"] for path in sys.argv[1:]]
+def table(first, rows):
+    print(f"| {first} | MVOR, shipped OpenPose | Shelf, 4D-Association OpenPose |")
+    print("|---|---|---|")
+    for label, cell in rows:
+        print(f"| {label} | " + " | ".join(cell(t) for t in tables) + " |")
+table("parts", [
+    ("evaluated", lambda t: str(t["parts"]["evaluated"])),
+    ("wrong in the output (PCP)", lambda t: f"{t['parts']['wrong']} ({t['parts']['pcp']:.2f} %)"),
+    ("beyond the best pair (PCP with only those wrong)",
+     lambda t: f"{t['parts']['beyond_best_pair']} ({t['parts']['pcp_best_pair']:.2f} %)"),
+    ("wrong and beyond the best pair", lambda t: str(t["parts"]["wrong_beyond_best_pair"]))])
+print()
+print("Mean joint error (mm) over the joints of matched persons that 2 or more of their views detected,")
+print("`loss_table.joint_references`: the output, a confidence-weighted fit of all those views (told the")
+print("association), and the best pair per joint (chosen with the GT: optimistic for one pair).")
+print()
+table("joints", [("compared", lambda t: str(t["joint_references"]["joints"]))] +
+      [(label, lambda t, key=key: f"{t['joint_references'][key]:.1f}")
+       for key, label in [("output_mm", "output"), ("all_views_mm", "all views fitted"),
+                          ("best_pair_mm", "best pair per joint")]])
 PY
 }
 

@@ -20,8 +20,9 @@
 //
 // Then parts (part_distance_m): a person with fewer joints (score > 0) than another person not
 // dropped before it (as a duplicate, or as a part, in person order), at least 2 of whose joints
-// each lie within part_distance_m of that person's same joint, is a part of it: a body whose poses formed two groups (e.g. an arm and the legs apart from the rest,
-// when the rest got wrong legs). Two people cannot hold the same joint at one spot. Dropped and
+// each lie within part_distance_m of that person's same joint, is a part of it: a body whose
+// poses formed two groups (e.g. an arm and the legs apart from the rest, when the rest got wrong
+// legs). Two people cannot hold the same joint at one spot. Dropped and
 // counted with the duplicates.
 #pragma once
 
