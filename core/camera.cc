@@ -302,6 +302,11 @@ std::string Camera::Validate() const {
       std::ostringstream s;
       s << "K is singular (fx = " << K(0, 0) << ", fy = " << K(1, 1) << ")";
       report(s.str());
+    } else if (K(0, 0) < 0 || K(1, 1) < 0) {
+      // A negative focal length mirrors the image: no calibration tool writes one.
+      std::ostringstream s;
+      s << "focal lengths must be positive (fx = " << K(0, 0) << ", fy = " << K(1, 1) << ")";
+      report(s.str());
     }
   }
 

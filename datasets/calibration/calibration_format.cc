@@ -6,6 +6,7 @@
 
 #include "core/errors.h"
 #include "datasets/calibration/calibration.h"
+#include "datasets/calibration/opencv_yml.h"
 #include "datasets/calibration/file_storage.h"
 #include "datasets/io/json_file.h"
 
@@ -81,9 +82,10 @@ CalibrationFormat DetectCalibrationFormat(const fs::path& path) {
   if (fs::is_directory(path, ec)) {
     if (IsRegularFile(path / "cameras.txt") && IsRegularFile(path / "images.txt")) return CalibrationFormat::kColmap;
     if (IsRegularFile(path / "intri.yml") && IsRegularFile(path / "extri.yml")) return CalibrationFormat::kEasyMocap;
+    if (!OpenCVFilesIn(path).empty()) return CalibrationFormat::kOpenCV;
     throw InputError(path.string() +
-                     ": a folder, but it holds neither cameras.txt + images.txt (COLMAP) nor intri.yml + "
-                     "extri.yml (EasyMocap)");
+                     ": a folder, but it holds neither cameras.txt + images.txt (COLMAP), intri.yml + "
+                     "extri.yml (EasyMocap) nor OpenCV files, one per camera (*.yml, *.yaml, *.xml)");
   }
   if (!IsRegularFile(path)) throw InputError(path.string() + ": file not found");
   const std::string name = Lower(path.filename().string());

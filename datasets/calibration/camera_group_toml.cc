@@ -202,9 +202,11 @@ Calibration ReadCameraGroupToml(const fs::path& path, const CalibrationReadOptio
   if (tables.empty()) throw InputError(source + ": no camera table (expected [cam_1] with name, size, matrix, ...)");
   std::set<std::string> names;
   bool any_fisheye = false;
+  int rotation_vectors = 0, rotation_matrices = 0;
   for (const auto& [key, table] : tables) {
     const CameraTable camera_table(*table, key, source);
     Camera camera = ReadCamera(camera_table, key, MetresPerUnit(options.units), source, warnings);
+    (camera_table.Numbers("rotation").size() == 9 ? rotation_matrices : rotation_vectors) += 1;
     if (!names.insert(camera.name).second) {
       throw InputError(camera_table.Where("name") + ": camera name " + QuoteName(camera.name) + " appears twice");
     }
@@ -212,6 +214,8 @@ Calibration ReadCameraGroupToml(const fs::path& path, const CalibrationReadOptio
     calibration.cameras.push_back(std::move(camera));
   }
   if (any_fisheye) d.notes.emplace_back("fisheye cameras (fisheye = true)");
+  const std::string matrix = "3x3 matrix (9 numbers, row by row)";
+  if (rotation_matrices > 0) d.rotation = rotation_vectors > 0 ? d.rotation + " or " + matrix : matrix;
   return calibration;
 }
 

@@ -2,7 +2,9 @@
 #include "datasets/calibration/opencv_yml.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <system_error>
 
 #include "core/errors.h"
 #include "core/printable_text.h"
@@ -60,7 +62,7 @@ std::vector<double> DistortionCoefficients(const Camera& camera, const std::stri
 
 Eigen::Matrix3d Rotation(const std::vector<double>& numbers, const std::string& source, const std::string& where,
                          InputWarnings* warnings) {
-  if (numbers.size() == 3) return RotationFromRodrigues(Eigen::Vector3d(numbers[0], numbers[1], numbers[2]));
+  if (numbers.size() == 3) return RotationFromStoredRodrigues(Eigen::Vector3d(numbers[0], numbers[1], numbers[2]), where);
   if (numbers.size() != 9) {
     throw InputError(where + ": expected a 3x3 rotation matrix or a 3x1 Rodrigues vector, got " +
                      std::to_string(numbers.size()) + " numbers");
@@ -79,6 +81,22 @@ Eigen::Matrix3d Matrix3(const std::vector<double>& v) {
 }
 
 }  // namespace opencv_conventions
+
+std::vector<std::filesystem::path> OpenCVFilesIn(const std::filesystem::path& dir) {
+  namespace fs = std::filesystem;
+  std::vector<std::filesystem::path> files;
+  std::error_code ec;
+  for (auto it = fs::directory_iterator(dir, ec); !ec && it != fs::directory_iterator(); it.increment(ec)) {
+    std::string extension = it->path().extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if ((extension == ".yml" || extension == ".yaml" || extension == ".xml") && it->is_regular_file(ec)) {
+      files.push_back(it->path());
+    }
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
 
 namespace {
 
@@ -141,7 +159,9 @@ Camera ReadIntrinsics(const Nodes& nodes, const std::string& suffix, bool fishey
   std::string key;
   const File* file = nodes.Find(Suffixed(kIntrinsicsKeys, suffix), &key);
   if (file == nullptr) {
-    throw InputError(nodes.first().source + ": no camera matrix (expected one of camera_matrix, K, M, cameraMatrix" +
+    std::string keys;
+    for (const std::string& k : kIntrinsicsKeys) keys += (keys.empty() ? "" : ", ") + k;
+    throw InputError(nodes.first().source + ": no camera matrix (expected one of " + keys +
                      (suffix.empty() ? std::string() : " with the suffix " + suffix) + ")");
   }
   camera.K = Matrix3(file->Numbers(key, 9, "3x3"));
@@ -214,6 +234,24 @@ std::vector<File> ReadFileAndPartner(const fs::path& path, std::vector<fs::path>
 
 Calibration ReadOpenCVCalibration(const fs::path& path, const CalibrationReadOptions& options,
                                   InputWarnings* warnings) {
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) {
+    // One file per camera (what calibrateCamera users save), read in name order.
+    const std::vector<fs::path> files = OpenCVFilesIn(path);
+    if (files.empty()) throw InputError(path.string() + ": a folder without OpenCV files (*.yml, *.yaml, *.xml)");
+    Calibration all = ReadOpenCVCalibration(files.front(), options, warnings);
+    for (size_t i = 1; i < files.size(); ++i) {
+      Calibration one = ReadOpenCVCalibration(files[i], options, warnings);
+      for (Camera& camera : one.cameras) all.cameras.push_back(std::move(camera));
+      all.description.files.insert(all.description.files.end(), one.description.files.begin(),
+                                   one.description.files.end());
+      if (one.description.distortion != all.description.distortion) {
+        all.description.distortion = "per file: OpenCV radial-tangential or fisheye";
+      }
+    }
+    all.description.notes.emplace_back("one file per camera in the folder " + path.string());
+    return all;
+  }
   Calibration calibration;
   CalibrationDescription& d = calibration.description;
   const Nodes nodes(ReadFileAndPartner(path, &d.files));

@@ -40,10 +40,14 @@
 
 namespace rpt {
 
-// Reads an OpenCV FileStorage file as above; translations in `options.units` (default: metres,
-// assumed). Throws InputError naming the file and the node.
+// Reads an OpenCV FileStorage file as above, or every OpenCVFilesIn a folder (one camera per file,
+// in name order); translations in `options.units` (default: metres, assumed). Throws InputError
+// naming the file and the node.
 Calibration ReadOpenCVCalibration(const std::filesystem::path& path, const CalibrationReadOptions& options,
                                   InputWarnings* warnings);
+
+// The *.yml, *.yaml and *.xml files (any case) directly in `dir`, sorted by name.
+std::vector<std::filesystem::path> OpenCVFilesIn(const std::filesystem::path& dir);
 
 // Writes one camera as above (camera_name, image_width, image_height, camera_matrix,
 // distortion_coefficients 1x5 or 1x4 with fisheye_model: 1, R 3x3, T 3x1 in `units`); XML when

@@ -22,7 +22,7 @@ Eigen::Matrix3d ReadFourDaRotation(const nlohmann::json& root, const std::string
     throw InputError(source + ": " + pointer + ": expected 3 numbers (Rodrigues vector) or 9 (row-major matrix), got " +
                      std::to_string(r.size()));
   }
-  return RotationFromRodrigues(Eigen::Vector3d(r[0], r[1], r[2]));
+  return RotationFromStoredRodrigues(Eigen::Vector3d(r[0], r[1], r[2]), source + ": " + pointer);
 }
 
 int FourDaImageSide(double value, const std::string& where) {

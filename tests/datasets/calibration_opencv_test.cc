@@ -2,6 +2,8 @@
 // OpenCV cv::FileStorage calibrations (datasets/calibration/opencv_yml.h, easymocap_yml.h):
 // single files as calibrateCamera / stereoCalibrate / ROS write them, EasyMocap's intri.yml +
 // extri.yml, the writers, round trips through our JSON, units and errors with file and place.
+#include <filesystem>
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -268,6 +270,47 @@ TEST(CalibrationOpenCV, MalformedFilesNameTheFileAndTheNode) {
   EXPECT_THAT(read("syntax.yml", "%YAML:1.0\n---\nK: [1, 2,\n  3\nT: {\n"), HasSubstr("syntax.yml:"));
   EXPECT_THAT(read("binary.yml", std::string("%YAML:1.0\nK: \0", 14)), HasSubstr("binary.yml: not a text file"));
   EXPECT_THAT(read("list.yml", "%YAML:1.0\n- 1\n- 2\n"), HasSubstr("list.yml"));
+  // The message lists every key the reader accepts (intrinsic_matrix too).
+  EXPECT_THAT(read("no_k2.yml", "%YAML:1.0\nimage_width: 10\n"),
+              HasSubstr("expected one of camera_matrix, K, M, cameraMatrix, intrinsic_matrix)"));
+  // Rx(90 deg) written in degrees: an angle of 90 "radians" is more than a full turn.
+  EXPECT_THAT(read("degrees.yml", "%YAML:1.0\n" + Matrix("K", 3, 3, kK) + Matrix("rvec", 3, 1, "90., 0., 0.") +
+                                      Matrix("tvec", 3, 1, "0., 1.5, 4.")),
+              HasSubstr("degrees.yml: rvec: a rotation vector of length 90 (its angle in radians) turns more than a "
+                        "full turn (2 pi = 6.283): angles in degrees?"));
+  // Just under a full turn is a rotation (no tool writes it, but it is one); just over is refused.
+  EXPECT_NO_THROW(ReadCalibration(WriteCalibrationText(dir.path() / "turn.yml", "%YAML:1.0\n" + Matrix("K", 3, 3, kK) +
+                                                         Matrix("rvec", 3, 1, "6.28, 0., 0.") +
+                                                         Matrix("tvec", 3, 1, "0., 1.5, 4."))));
+  EXPECT_THAT(read("over.yml", "%YAML:1.0\n" + Matrix("K", 3, 3, kK) + Matrix("rvec", 3, 1, "0., 6.29, 0.") +
+                                   Matrix("tvec", 3, 1, "0., 1.5, 4.")),
+              HasSubstr("over.yml: rvec: a rotation vector of length 6.29"));
+  EXPECT_THAT(read("negative_f.yml", "%YAML:1.0\n" + Matrix("K", 3, 3, "-1000., 0., 960., 0., 1000., 540., 0., 0., 1.")),
+              HasSubstr("focal lengths must be positive (fx = -1000, fy = 1000)"));
+}
+
+TEST(CalibrationOpenCV, AFolderOfOneFilePerCameraIsTheRigInFileNameOrder) {
+  test::TempDir dir;
+  const auto folder = dir.path() / "calib";
+  std::filesystem::create_directories(folder);
+  WriteCalibrationText(folder / "b_side.yml", kCalibrateCameraYml);
+  WriteCalibrationText(folder / "a_front.YAML",
+                       "%YAML:1.0\n---\nimage_width: 1920\nimage_height: 1080\n" + Matrix("K", 3, 3, kK) +
+                           Matrix("rvec", 3, 1, kRvec) + Matrix("tvec", 3, 1, "0., 1.5, 4."));
+  WriteCalibrationText(folder / "notes.txt", "not a calibration");
+  EXPECT_EQ(DetectCalibrationFormat(folder), CalibrationFormat::kOpenCV);
+  const Calibration calibration = ReadCalibration(folder);
+  ASSERT_EQ(calibration.cameras.size(), 2u);
+  EXPECT_EQ(calibration.cameras[0].name, "a_front");
+  EXPECT_EQ(calibration.cameras[1].name, "b_side");
+  for (const Camera& camera : calibration.cameras) test::ExpectHandBuiltCamera(camera);
+  EXPECT_EQ(calibration.description.files,
+            (std::vector<std::filesystem::path>{folder / "a_front.YAML", folder / "b_side.yml"}));
+  // A folder with no OpenCV file names the three layouts it looked for.
+  const auto empty = dir.path() / "empty";
+  std::filesystem::create_directories(empty);
+  EXPECT_THAT(test::InputErrorOf([&] { ReadCalibration(empty); }),
+              HasSubstr("nor OpenCV files, one per camera (*.yml, *.yaml, *.xml)"));
 }
 
 }  // namespace

@@ -63,6 +63,19 @@ TEST(CalibrationToml, Pose2SimFileIsWorldToCameraWithARodriguesVector) {
   EXPECT_TRUE(warnings.empty());
   EXPECT_EQ(calibration.description.rotation, "Rodrigues vector (axis * angle, radians)");
   EXPECT_TRUE(calibration.description.units_assumed);
+  // The same rotation as a 3x3 matrix (row by row) is said to be one; in degrees it is refused.
+  std::string matrix = kPose2Sim;
+  const std::string rotation = "rotation = [ 1.5707963267948966, 0.0, 0.0]";
+  matrix.replace(matrix.find(rotation), rotation.size(), "rotation = [ [1, 0, 0], [0, 0, -1], [0, 1, 0]]");
+  const Calibration as_matrix = ReadCalibration(WriteCalibrationText(dir.path() / "matrix.toml", matrix));
+  test::ExpectHandBuiltCamera(as_matrix.cameras[0]);
+  EXPECT_EQ(as_matrix.description.rotation, "3x3 matrix (9 numbers, row by row)");
+  std::string degrees = kPose2Sim;
+  degrees.replace(degrees.find(rotation), rotation.size(), "rotation = [ 90.0, 0.0, 0.0]");
+  const auto degrees_path = WriteCalibrationText(dir.path() / "degrees.toml", degrees);
+  EXPECT_THAT(test::InputErrorOf([&] { ReadCalibration(degrees_path); }),
+              HasSubstr("degrees.toml:6: [cam_01].rotation: a rotation vector of length 90 (its angle in radians) "
+                        "turns more than a full turn"));
 }
 
 TEST(CalibrationToml, AniposeMillimetresAreReadWithTheUnitsOptionAndWarnedWithout) {
