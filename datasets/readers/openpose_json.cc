@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 #include <tuple>
 #include <utility>
 
@@ -141,6 +142,22 @@ std::vector<int> Targets(const std::vector<std::string>& names, const JointNames
   return targets;
 }
 
+// OpenPose writes a file per camera and frame, also when it sees nobody: a camera with no file
+// for a frame that other cameras have is counted per camera (it sees nobody there).
+void CountMissingFiles(Detections& detections, const std::string& source) {
+  std::set<std::string> cameras;
+  for (const FrameDetections& frame : detections.frames) cameras.insert(frame.cameras.begin(), frame.cameras.end());
+  for (const std::string& camera : cameras) {
+    long missing = 0;
+    for (const FrameDetections& frame : detections.frames) {
+      missing += std::find(frame.cameras.begin(), frame.cameras.end(), camera) == frame.cameras.end() ? 1 : 0;
+    }
+    detections.warnings.AddMissing(
+        source, "frames without a file of camera " + QuoteName(camera) + " (other cameras have one; it sees nobody there)",
+        missing);
+  }
+}
+
 }  // namespace
 
 Detections ReadOpenPoseFolder(const std::filesystem::path& dir, const OpenPoseFolderOptions& options) {
@@ -232,6 +249,7 @@ Detections ReadOpenPoseFolder(const std::filesystem::path& dir, const OpenPoseFo
       if (!(person_joints.row(2).array() > 0).any()) view.data.resize(view.data.size() - 3 * num_joints);
     }
   }
+  CountMissingFiles(detections, source);
   ValidateDetections(detections, source);
   return detections;
 }

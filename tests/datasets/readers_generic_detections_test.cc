@@ -210,13 +210,18 @@ TEST(OpenPose, Body25FolderMapsToCocoNamesAndFeet) {
   EXPECT_DOUBLE_EQ(at("foot_heel_right")(0), 124);     // 24
   EXPECT_DOUBLE_EQ(at("wrist_right")(2), 0.0);
   EXPECT_DOUBLE_EQ(at("foot_big_toe_left")(2), 1.0);
-  // notes.txt does not match the pattern: ignored and counted; 3 scores clamped (3 persons in 2 files).
-  ASSERT_EQ(d.warnings.items().size(), 2u);
+  // notes.txt does not match the pattern: ignored and counted; 3 scores clamped (3 persons in 2 files);
+  // Camera1 has no file for frame 1, which Camera0 has (OpenPose writes one for every frame).
+  ASSERT_EQ(d.warnings.items().size(), 3u);
   EXPECT_EQ(d.warnings.items()[0].Line(), dir.path().string() + ": 1 files not matching the pattern '" +
                                               OpenPoseFolderOptions{}.mapping.pattern +
                                               "' ignored (e.g. 'Camera1/notes.txt')");
   EXPECT_EQ(d.warnings.items()[1].what, test::kScoresClamped);
   EXPECT_EQ(d.warnings.items()[1].count, 3);
+  EXPECT_EQ(d.warnings.items()[2].Line(), dir.path().string() +
+                                              ": 1 frames without a file of camera 'Camera1' (other cameras have "
+                                              "one; it sees nobody there)");
+  EXPECT_EQ(d.warnings.items()[2].kind, InputWarningKind::kMissing);
 
   options.joints = OpenPoseJointSet::kBody;
   EXPECT_EQ(ReadOpenPoseFolder(dir.path(), options).joints, CocoBodyJoints());
