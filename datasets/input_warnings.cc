@@ -18,15 +18,17 @@ std::string InputWarning::Line() const {
   return PrintableText(s.str());
 }
 
-void InputWarnings::Add(const std::string& source, std::string_view what, std::string_view measure, double value) {
+void InputWarnings::Add(const std::string& source, std::string_view what, std::string_view measure, double value,
+                        long count) {
+  if (count <= 0) return;
   for (InputWarning& w : items_) {
     if (w.source == source && w.what == what) {
-      ++w.count;
+      w.count += count;
       if (value > w.worst) w.worst = value;
       return;
     }
   }
-  items_.push_back(InputWarning{source, std::string(what), std::string(measure), 1, value});
+  items_.push_back(InputWarning{source, std::string(what), std::string(measure), count, value});
 }
 
 void InputWarnings::AddCount(const std::string& source, std::string_view what, long count, InputWarningKind kind) {

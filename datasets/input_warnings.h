@@ -49,8 +49,9 @@ struct InputWarning {
 // Counted corrections and unused input, aggregated by (source, what).
 class InputWarnings {
  public:
-  // One more correction of kind `what` under `source`; `value` is the deviation `measure` measures.
-  void Add(const std::string& source, std::string_view what, std::string_view measure, double value);
+  // `count` more corrections (or implausible values kept) of kind `what` under `source`; `value`
+  // is the largest deviation among them, as `measure` measures it.
+  void Add(const std::string& source, std::string_view what, std::string_view measure, double value, long count = 1);
   // `count` more items of input under `source` that are not used, of kind `what` (a plural noun
   // phrase saying what happens to them, e.g. "entries of another category than person skipped").
   // A count of 0 adds nothing.
