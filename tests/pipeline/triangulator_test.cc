@@ -96,6 +96,22 @@ TEST(Triangulator, RejectsBadConfigurationAndShapes) {
   } catch (const ConfigError& e) {
     EXPECT_NE(std::string(e.what()).find("tail"), std::string::npos);
   }
+  // Upper-body input with the default core joints: the message gives the default ones it has.
+  const JointNames upper_body = {"nose", "shoulder_left", "shoulder_right", "elbow_left", "elbow_right",
+                                 "wrist_left", "wrist_right", "hip_left", "hip_right"};
+  try {
+    Triangulator(cameras, upper_body, TriangulatorOptions{});
+    FAIL() << "expected ConfigError";
+  } catch (const ConfigError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "triangulate.core_joints: the default core joints include 'knee_left', which the input joints do not "
+              "have; set triangulate.core_joints to joints the input has, e.g. the default ones it has: "
+              "shoulder_left,shoulder_right,hip_left,hip_right,elbow_left,elbow_right,wrist_left,wrist_right");
+  }
+  TriangulatorOptions given;
+  given.triangulate.core_joints = {"shoulder_left", "shoulder_right", "hip_left", "hip_right",
+                                   "elbow_left",    "elbow_right",    "wrist_left", "wrist_right"};
+  EXPECT_NO_THROW(Triangulator(cameras, upper_body, given));
   EXPECT_THROW(Triangulator({cameras[0]}, CocoBodyJoints(), TriangulatorOptions{}), ConfigError);
   EXPECT_THROW(Triangulator(cameras, {"nose", "nose"}, TriangulatorOptions{}), ConfigError);
   TriangulatorOptions too_many;
