@@ -3,6 +3,11 @@
 
 #include <cstdio>
 
+#include <cmath>
+#include <memory>
+#include <string>
+
+#include "cli/field_options.h"
 #include "core/text.h"
 #include "datasets/synthetic/detector_options.h"
 
@@ -81,16 +86,30 @@ void AddStrictOption(CLI::App* command, engine::InputSpec* spec) {
                     "corrections such as scores clamped to 1 are still accepted");
 }
 
+}  // namespace
+
 void AddCamerasOptions(CLI::App* command, engine::InputSpec* spec) {
   command->add_option("--cameras", spec->cameras,
                       "calibration file instead of --dataset / --labels (our JSON, OpenCV yml/xml, EasyMocap "
                       "intri/extri, Pose2Sim/anipose toml, COLMAP, VoxelPose, Panoptic, 4D-Association; "
                       "docs/cameras.md): the frames are those of --detections");
+  // How it is read: --cameras-format, --cameras-units, --cameras-image-width, --cameras-image-height
+  // (the options of `rpt cameras show`), parsed once the command line is read.
+  auto read = std::make_shared<FieldOptions<CalibrationReadOptions>>(command, "cameras-", "with --cameras, reading: ");
+  command->parse_complete_callback([spec, read] { spec->camera_read = read->Parse(); });
   command->add_option("--fps", spec->fps, "with --cameras: frame rate of the detection frames (default: times unknown)")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Validator(
+          [](std::string& text) -> std::string {
+            double rate = 0;
+            try {
+              rate = std::stod(text);
+            } catch (const std::exception&) {
+              return "expected a number of frames per second, got " + text;
+            }
+            return std::isfinite(rate) && rate > 0 ? "" : "expected a frame rate above 0 (frames per second), got " + text;
+          },
+          ""));
 }
-
-}  // namespace
 
 void AddDetectionInputOptions(CLI::App* command, engine::InputSpec* spec) {
   spec->ground_truth = false;

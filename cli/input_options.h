@@ -17,6 +17,11 @@ void AddInputOptions(CLI::App* command, engine::InputSpec* spec);
 // --param, --labels, --cameras, --fps, --detections, --strict; sets spec->ground_truth = false.
 void AddDetectionInputOptions(CLI::App* command, engine::InputSpec* spec);
 
+// --cameras (a calibration file instead of a dataset), how it is read (--cameras-format,
+// --cameras-units, --cameras-image-width, --cameras-image-height) and --fps; part of
+// AddDetectionInputOptions, and of the commands that show what the input holds (rpt inspect).
+void AddCamerasOptions(CLI::App* command, engine::InputSpec* spec);
+
 // Prints every entry as "warning: <line>" on stderr.
 void PrintInputWarnings(const InputWarnings& warnings);
 

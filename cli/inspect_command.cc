@@ -129,6 +129,7 @@ void RegisterInspectCommand(CLI::App& app) {
   auto args = std::make_shared<InspectArgs>();
   CLI::App* command = app.add_subcommand("inspect", "Show cameras, counts and GT-to-detection distances of an input");
   AddInputOptions(command, &args->input);
+  AddCamerasOptions(command, &args->input);
   command->add_flag("--json", args->json, "print the report as JSON");
   command->callback([args] { RunInspect(*args); });
 }

@@ -150,7 +150,7 @@ namespace {
 // --cameras FILE --detections FILE: one sequence of the detection frames, named after the
 // detections file (a VoxelPose cache's frame ids "<name>_<frame>" unless --voxelpose-prefix).
 std::vector<std::unique_ptr<FrameSource>> OpenDetectionsOnCameras(const InputSpec& spec, InputWarnings* opened) {
-  Calibration calibration = ReadCalibration(spec.cameras, {}, opened);
+  Calibration calibration = ReadCalibration(spec.cameras, spec.camera_read, opened);
   std::filesystem::path path(spec.detections);
   DetectionFramesOptions options;
   options.name = (path.has_filename() ? path : path.parent_path()).stem().string();

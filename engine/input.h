@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "datasets/calibration/calibration.h"
 #include "datasets/detections.h"
 #include "datasets/frame_source.h"
 #include "datasets/input_warnings.h"
@@ -30,6 +31,7 @@ struct InputSpec {
   // A calibration file (any format datasets/calibration reads) instead of a dataset or labels: the
   // frames are those of the detections file (datasets/readers/detection_frames.h).
   std::string cameras;
+  CalibrationReadOptions camera_read;  // how `cameras` is read (format, units, image size)
   double fps = 0;                   // with `cameras`: frame rate of the detection frames; 0 = times unknown
   std::string detections;           // detections file or folder (ReadDetectionsFile)
   DetectionMapping mapping;         // how its entries become frame ids, cameras and joints (--map-*, --coco-*, ...)

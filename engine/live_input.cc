@@ -39,7 +39,7 @@ Input OpenLiveInput(const InputSpec& spec, const LiveInputOptions& options, std:
   CheckLiveSpec(spec);
   if (options.path.empty()) throw ConfigError("--follow: give a path (a named pipe or a file) or - for standard input");
   InputWarnings opened;
-  Calibration calibration = ReadCalibration(spec.cameras, {}, &opened);
+  Calibration calibration = ReadCalibration(spec.cameras, spec.camera_read, &opened);
   // A line is read whole, like a file: the same limit bounds it.
   if (options.spin_us < 0) throw ConfigError("--spin-us " + std::to_string(options.spin_us) + ": expected a time >= 0");
   auto lines = std::make_unique<io::LineReader>(options.path, io::MaxInputBytes(), std::move(stop));

@@ -465,5 +465,69 @@ TEST_F(Triangulate, BadInputExitsWith2NamingFileAndPlace) {
   EXPECT_EQ(tri_param.exit_code, 2);
 }
 
+// The mistakes of someone's own first run: each said, none silently wrong.
+TEST_F(Triangulate, OwnDataMistakesAreSaidNotSilent) {
+  const std::vector<std::string> ids = Ids("take_", kFrames);
+  const Detections detections = Coco17(scene_, ids);
+  WriteGenericDetections(dir_ / "detections.json", detections);
+  const std::string input = " --detections " + (dir_ / "detections.json").string();
+  const std::string cameras = " --cameras " + (dir_ / "cameras.json").string();
+  // A calibration in millimetres is read with --cameras-units (the options of `rpt cameras show`):
+  // the same persons as from metres.
+  WriteCalibration(dir_ / "cameras_mm.toml", scene_.cameras, {.units = LengthUnit::kMillimetres});
+  const test::CommandResult metres = test::RunRpt("triangulate" + cameras + input + " --fps 25 --quiet --out " +
+                                                  (dir_ / "m").string());
+  ASSERT_EQ(metres.exit_code, 0) << metres.err;
+  const test::CommandResult mm =
+      test::RunRpt("triangulate --cameras " + (dir_ / "cameras_mm.toml").string() + " --cameras-units mm" + input +
+                   " --fps 25 --quiet --out " + (dir_ / "mm").string());
+  ASSERT_EQ(mm.exit_code, 0) << mm.err;
+  const Json a = ReadJson(dir_ / "m" / "predictions.json"), b = ReadJson(dir_ / "mm" / "predictions.json");
+  ASSERT_EQ(a["frames"].size(), b["frames"].size());
+  for (size_t f = 0; f < a["frames"].size(); ++f) {
+    ASSERT_EQ(a["frames"][f]["persons"].size(), b["frames"][f]["persons"].size());
+    for (size_t p = 0; p < a["frames"][f]["persons"].size(); ++p) {
+      for (size_t j = 0; j < a["frames"][f]["persons"][p].size(); ++j) {
+        for (int k = 0; k < 3; ++k) {
+          EXPECT_NEAR(a["frames"][f]["persons"][p][j][k].get<double>(), b["frames"][f]["persons"][p][j][k].get<double>(),
+                      1e-6);
+        }
+      }
+    }
+  }
+  // Without it, the same file is read as metres: 1000 times too far, and the warning says so.
+  const test::CommandResult as_metres = test::RunRpt("triangulate --cameras " + (dir_ / "cameras_mm.toml").string() +
+                                                     input + " --quiet --out " + (dir_ / "as_m").string());
+  EXPECT_NE(as_metres.err.find("check the units"), std::string::npos) << as_metres.err;
+  // The calibration's images at half the detections' size: joints beyond the image are counted.
+  std::vector<Camera> small = scene_.cameras;
+  for (Camera& camera : small) {
+    camera.width /= 4;
+    camera.height /= 4;
+  }
+  WriteCalibration(dir_ / "small.json", small);
+  const test::CommandResult outside = test::RunRpt("triangulate --cameras " + (dir_ / "small.json").string() + input +
+                                                   " --quiet --out " + (dir_ / "small").string());
+  EXPECT_NE(outside.err.find("detected joints beyond the " + std::to_string(small[0].width) + "x" +
+                             std::to_string(small[0].height) + " image of camera '" + small[0].name +
+                             "' by more than a tenth of its side"),
+            std::string::npos)
+      << outside.err;
+  EXPECT_EQ(metres.err.find("beyond the"), std::string::npos) << "the right image size warns of nothing:\n" << metres.err;
+  // A frame rate of 0 or infinity is refused in words, not as a range of 300 digits.
+  for (const std::string rate : {"0", "inf", "-3"}) {
+    const test::CommandResult fps = test::RunRpt("triangulate" + cameras + input + " --fps " + rate);
+    EXPECT_EQ(fps.exit_code, 2) << rate;
+    EXPECT_NE(fps.err.find("--fps: expected a frame rate above 0 (frames per second), got " + rate), std::string::npos)
+        << fps.err;
+  }
+  // inspect takes the same flags and shows the cameras and detections read.
+  const test::CommandResult inspect = test::RunRpt("inspect" + cameras + input);
+  EXPECT_EQ(inspect.exit_code, 0) << inspect.err;
+  EXPECT_NE(inspect.out.find(std::to_string(kFrames) + " frames (" + std::to_string(kFrames) + " with detections)"),
+            std::string::npos)
+      << inspect.out;
+}
+
 }  // namespace
 }  // namespace rpt
