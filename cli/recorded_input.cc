@@ -4,6 +4,8 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
+#include <system_error>
 
 #include "cli/input_options.h"
 #include "core/errors.h"
@@ -47,8 +49,16 @@ std::optional<std::vector<Sequence>> ReloadRecordedInput(const engine::RecordedR
     *why = std::string("cannot parse the recorded command: ") + e.what();
     return std::nullopt;
   }
+  // Relative paths are the run's: taken from the folder it ran in, when run.json records one that
+  // exists (else from the current folder).
+  std::filesystem::path base;
+  const auto recorded_dir = run.run_info.find("working_directory");
+  if (recorded_dir != run.run_info.end() && recorded_dir->is_string()) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(recorded_dir->get<std::string>(), ec)) base = recorded_dir->get<std::string>();
+  }
   bool unreadable = false;
-  const std::vector<std::string> problems = engine::InputDigestProblems(run.run_info, input, &unreadable);
+  const std::vector<std::string> problems = engine::InputDigestProblems(run.run_info, input, &unreadable, base);
   if (!problems.empty() && require_same_input) {
     throw InputError("--require-same-input: the input on disk is not verified as the run's:\n  " + Join(problems, "\n  "));
   }
@@ -60,7 +70,8 @@ std::optional<std::vector<Sequence>> ReloadRecordedInput(const engine::RecordedR
   try {
     InputWarnings input_warnings;  // already recorded in run.json
     // The run's frames are the frames of predictions.json: a larger input is not the run's.
-    return engine::LoadInput(input, {}, &input_warnings, static_cast<long>(run.predictions.frames.size()));
+    return engine::LoadInput(engine::RebasedInput(input, base), {}, &input_warnings,
+                             static_cast<long>(run.predictions.frames.size()));
   } catch (const std::exception& e) {
     if (problems.empty()) {
       *why = e.what();

@@ -33,12 +33,30 @@ std::vector<std::pair<std::string, std::string>> InputDigests(const InputSpec& s
   return digests;
 }
 
+namespace {
+
+// `path` read from `base` when it is relative.
+std::string From(const std::filesystem::path& base, const std::string& path) {
+  if (base.empty() || path.empty() || std::filesystem::path(path).is_absolute()) return path;
+  return (base / path).string();
+}
+
+}  // namespace
+
+InputSpec RebasedInput(InputSpec spec, const std::filesystem::path& base) {
+  for (std::string* path : {&spec.root, &spec.labels, &spec.cameras, &spec.detections, &spec.mapping.coco_images}) {
+    *path = From(base, *path);
+  }
+  return spec;
+}
+
 std::vector<std::string> InputDigestProblems(const nlohmann::ordered_json& run_info, const InputSpec& spec,
-                                             bool* unreadable) {
+                                             bool* unreadable, const std::filesystem::path& base) {
   *unreadable = false;
   std::vector<std::string> problems;
   const auto recorded = run_info.find("input_digests");
-  for (const std::string& path : InputPaths(spec)) {
+  for (const std::string& given : InputPaths(spec)) {
+    const std::string path = From(base, given);
     std::error_code ec;
     const std::filesystem::file_status status = std::filesystem::status(path, ec);
     if (!std::filesystem::is_regular_file(status) && !std::filesystem::is_directory(status)) {
@@ -47,7 +65,7 @@ std::vector<std::string> InputDigestProblems(const nlohmann::ordered_json& run_i
       continue;
     }
     const nlohmann::ordered_json* digest = nullptr;
-    if (recorded != run_info.end() && recorded->is_object() && recorded->contains(path)) digest = &(*recorded)[path];
+    if (recorded != run_info.end() && recorded->is_object() && recorded->contains(given)) digest = &(*recorded)[given];
     if (digest == nullptr || !digest->is_string() || digest->get<std::string>().empty()) {
       problems.push_back(path + ": run.json records no digest of it (written by an older rpt, or edited): it cannot be "
                          "verified as the run's input");

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <filesystem>
 #include <string>
 #include <utility>
 #include <vector>
@@ -24,8 +25,12 @@ std::vector<std::pair<std::string, std::string>> InputDigests(const InputSpec& s
 // What keeps the input of `spec` from being verified as the one run.json's "input_digests" records,
 // one line per path ("<path>: changed since the run (...)", "<path>: run.json records no digest of
 // it ..."); empty when every path matches. Sets *unreadable when a path is missing or not a regular
-// file or folder (a FIFO would block a reader).
+// file or folder (a FIFO would block a reader). Relative paths are read from `base` (the folder
+// the run ran in; empty: the current folder) and looked up in run.json as they were given.
 std::vector<std::string> InputDigestProblems(const nlohmann::ordered_json& run_info, const InputSpec& spec,
-                                             bool* unreadable);
+                                             bool* unreadable, const std::filesystem::path& base = {});
+
+// `spec` with its relative input paths (InputPaths) taken from `base`; unchanged when `base` is empty.
+InputSpec RebasedInput(InputSpec spec, const std::filesystem::path& base);
 
 }  // namespace rpt::engine

@@ -290,6 +290,7 @@ OrderedJson RunInfoJson(const RunInfo& info) {
   j["date_utc"] = info.date_utc;
   j["command"] = info.command_line;
   j["argv"] = info.command_args;
+  j["working_directory"] = info.working_directory;
   j["cpu"] = info.cpu;
   j["hardware_threads"] = info.hardware_threads;
   j["threads"] = info.threads;

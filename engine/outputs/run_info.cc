@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "engine/outputs/run_info.h"
 
+#include <filesystem>
+#include <system_error>
+
 #include <unistd.h>
 
 #include <ctime>
@@ -52,6 +55,9 @@ RunInfo CollectRunInfo(int threads) {
   info.build_type = RPT_BUILD_TYPE;
   info.command_line = CurrentCommandLine();
   info.command_args = CurrentCommandArgs();
+  std::error_code ec;
+  const std::filesystem::path cwd = std::filesystem::current_path(ec);
+  if (!ec) info.working_directory = cwd.string();
   char date[32];
   const std::time_t now = std::time(nullptr);
   std::strftime(date, sizeof(date), "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));

@@ -154,6 +154,25 @@ TEST(ReportCommand, ReloadsInputWhosePathHoldsASpace) {
   fs::remove_all(dir);
 }
 
+// Relative input paths are the run's: `rpt report` re-loads them from the folder the run ran in
+// (run.json's "working_directory"), wherever it is started.
+TEST(ReportCommand, ReloadsRelativeInputPathsFromTheRunsFolder) {
+  const fs::path dir = fs::absolute(TempDir("report_relative"));
+  const CommandResult convert =
+      RunRpt("convert --dataset synthetic --param frames=6 --param cameras=3 --out " + (dir / "cache.h5").string());
+  ASSERT_EQ(convert.exit_code, 0) << convert.err;
+  const CommandResult eval =
+      RunRpt("eval --labels cache.h5 --detections cache.h5 --quiet --out run", "cd '" + dir.string() + "' && ");
+  ASSERT_EQ(eval.exit_code, 0) << eval.err;
+  const Json run = Json::parse(ReadAll(dir / "run" / "run.json"));
+  EXPECT_EQ(fs::path(run["working_directory"].get<std::string>()), fs::canonical(dir));
+  const CommandResult r = RunRpt("report " + (dir / "run").string(), "cd / && ");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err.find("could not be re-loaded"), std::string::npos) << r.err;
+  EXPECT_TRUE(ReportData(ReadAll(dir / "run" / "report.html"))["input_loaded"].get<bool>());
+  fs::remove_all(dir);
+}
+
 TEST(ReportCommand, BadInputExitsTwoNamingTheFile) {
   const fs::path dir = TempDir("report_bad");
   CommandResult r = RunRpt("report " + (dir / "missing").string());
