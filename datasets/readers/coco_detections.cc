@@ -155,7 +155,8 @@ Detections ReadCocoDetections(const std::filesystem::path& path, const CocoDetec
       const auto mvor = MvorView(image_id);
       if (!mvor) {
         throw InputError(source + ": " + pointer + "/image_id: image id " + std::to_string(image_id) +
-                         " is not an MVOR multi-view id (day * 1e10 + cam * 1e7 + frame); use the annotation-images mapping");
+                         " is not an MVOR multi-view id (day * 1e10 + cam * 1e7 + frame); give the annotation file that lists "
+                         "the images (--coco-images FILE) to map image ids to frames and cameras");
       }
       key = *mvor;
     } else {

@@ -2,6 +2,7 @@
 // librpt_image_codecs.so: OpenCV's image and video files behind the function table of
 // image_codecs.h. The only file that links imgcodecs and videoio; rpt loads it with dlopen when
 // `rpt render` runs (image_codecs.cc).
+#include <opencv2/core/utils/logger.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/videoio.hpp>
 
@@ -34,5 +35,8 @@ constexpr rpt::engine::ImageCodecs kCodecs{rpt::engine::kImageCodecsVersion, Rea
 }  // namespace
 
 extern "C" __attribute__((visibility("default"))) const rpt::engine::ImageCodecs* rpt_image_codecs() {
+  // A file that cannot be read is rpt's warning (one line per camera), not OpenCV's log line per
+  // image on stderr.
+  cv::utils::logging::setLogLevel(cv::utils::logging::LOG_LEVEL_ERROR);
   return &kCodecs;
 }
