@@ -2,6 +2,7 @@
 #include "core/pipeline/triangulator.h"
 
 #include <algorithm>
+#include <cmath>
 #include <chrono>
 #include <string>
 #include <utility>
@@ -263,7 +264,9 @@ void Triangulator::Process(std::span<const Poses2D> views, double timestamp_s, P
   run.Done(Step::kSingleView);
 
   // The temporal steps need track ids: without tracking they do not run (zero time and count).
-  const bool tracking = opt.track.enabled;
+  // A frame without a time continues no track and starts none (its persons' track ids stay -1):
+  // numbering them anew every frame looked like tracks.
+  const bool tracking = opt.track.enabled && std::isfinite(timestamp_s);
   const int num_detected = persons->num_persons();  // track appends the coasting persons after them
   if (tracking) {
     run.Run<Step::kTrack>(steps::TrackInput{.match_joints = m.core_joints,
