@@ -40,9 +40,14 @@ py::array_t<double> CheckedArray(py::handle object, const std::string& what, std
     }
     if (is_float32) array = py::array_t<double>(array);  // converted copy
   } else {
-    // Lists and other sequences: numpy converts them (and raises for what is not numbers).
-    array = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(object);
-    if (!array) throw py::error_already_set();
+    // Lists and other sequences: numpy converts them; what is not numbers, or ragged, is this
+    // argument's ValueError (py::array_t::ensure clears numpy's error and leaves none to raise).
+    try {
+      array = py::module_::import("numpy").attr("ascontiguousarray")(object, py::arg("dtype") = "float64");
+    } catch (py::error_already_set& e) {
+      if (!e.matches(PyExc_ValueError) && !e.matches(PyExc_TypeError)) throw;
+      throw py::value_error(what + ": not an array of numbers (" + std::string(py::str(e.value())) + ")");
+    }
   }
   if (array.ndim() != static_cast<py::ssize_t>(shape.size())) {
     throw py::value_error(what + ": shape " + ShapeText(array) + ", expected " + std::to_string(shape.size()) +

@@ -6,6 +6,7 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <sstream>
 #include <string>
 
 #include "core/errors.h"
@@ -46,9 +47,21 @@ Camera MakeCamera(const std::string& name, int width, int height, py::handle K, 
     if (text == model) camera.model = value, known = true;
   }
   if (!known) throw ConfigError("model: " + QuoteName(model) + " is not none | opencv | h36m | fisheye");
-  if (const std::string problem = camera.Validate(); !problem.empty()) {
-    throw InputError("camera " + QuoteName(name) + ": " + problem);
+  // Coefficients the model does not use would be ignored without a word (an OpenCV dist passed
+  // without model= gave the pinhole's pixels).
+  const int used = camera.model == DistortionModel::kNone ? 0 : camera.model == DistortionModel::kFisheye ? 4 : 5;
+  for (int i = used; i < 5; ++i) {
+    if (camera.dist[static_cast<size_t>(i)] == 0.0) continue;
+    if (used == 0) {
+      throw py::value_error("dist: non-zero coefficients, but model=" + QuoteName(model) +
+                            " uses none (pass model='opencv' for k1 k2 p1 p2 k3, 'fisheye' for k1 k2 k3 k4)");
+    }
+    std::ostringstream message;
+    message << "dist: coefficient " << i + 1 << " is " << camera.dist[static_cast<size_t>(i)] << ", but model="
+            << QuoteName(model) << " uses the first " << used;
+    throw py::value_error(message.str());
   }
+  if (const std::string problem = camera.Validate(); !problem.empty()) throw InputError(problem);  // names the camera
   return camera;
 }
 

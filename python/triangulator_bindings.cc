@@ -27,9 +27,21 @@
 namespace rpt::python {
 namespace {
 
+// Frame i of n as Python indexes a sequence (negative from the end); IndexError outside.
+size_t FrameIndex(long i, size_t n) {
+  const long count = static_cast<long>(n);
+  if (i < 0) i += count;
+  if (i < 0 || i >= count) throw py::index_error("frame index out of range");
+  return static_cast<size_t>(i);
+}
+
 double TimeOf(py::handle timestamp) {
   if (timestamp.is_none()) return kUnknownTime;
-  const double t = timestamp.cast<double>();
+  if (!py::hasattr(timestamp, "__float__")) {  // numbers, numpy scalars
+    throw py::type_error("timestamp: expected seconds (a number) or None, got " +
+                         py::str(py::type::of(timestamp).attr("__name__")).cast<std::string>());
+  }
+  const double t = timestamp.attr("__float__")().cast<double>();
   if (std::isinf(t)) throw py::value_error("timestamp: must be finite seconds, or None (unknown)");
   return t;
 }
@@ -243,10 +255,7 @@ void RegisterTriangulator(py::module_& m) {
           "__getitem__",
           [](py::object self, long i) {
             const Predictions& p = self.cast<const Predictions&>();
-            const long n = static_cast<long>(p.persons.size());
-            if (i < 0) i += n;
-            if (i < 0 || i >= n) throw py::index_error("frame index out of range");
-            const Poses3D& persons = p.persons[static_cast<size_t>(i)];
+            const Poses3D& persons = p.persons[FrameIndex(i, p.persons.size())];
             return py::make_tuple(PersonsView(persons, self), TrackIdsArray(persons));
           },
           "(persons (P, J, 4), track ids (P,)) of frame i; persons is a read-only view of the stored result "
@@ -265,13 +274,15 @@ void RegisterTriangulator(py::module_& m) {
           "seconds per frame, NaN when unknown")
       .def(
           "provenance",
-          [](py::object self, size_t i) {
-            return ProvenanceView(self.cast<const Predictions&>().persons.at(i), self);
+          [](py::object self, long i) {
+            const Predictions& p = self.cast<const Predictions&>();
+            return ProvenanceView(p.persons[FrameIndex(i, p.persons.size())], self);
           },
           py::arg("frame"),
           "(P, J) provenance codes of frame i (0 triangulated, 1 filled, 2 smoothed, 3 lifted, 4 predicted)")
       .def(
-          "stats", [](const Predictions& p, size_t i) { return StatsDict(p.stats.at(i)); }, py::arg("frame"))
+          "stats", [](const Predictions& p, long i) { return StatsDict(p.stats[FrameIndex(i, p.stats.size())]); },
+          py::arg("frame"))
       .def_property_readonly(
           "frame_time_us",
           [](const Predictions& p) {

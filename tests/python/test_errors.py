@@ -92,6 +92,23 @@ def test_nan_and_bad_scores_raise_input_error(rig):
         triangulator.process(views)
     with pytest.raises(ValueError, match=r"timestamp: must be finite"):
         triangulator.process(good_views(rig), float("inf"))
+    with pytest.raises(TypeError, match=r"^timestamp: expected seconds \(a number\) or None, got str$"):
+        triangulator.process(good_views(rig), "x")
+    assert triangulator.process(good_views(rig), np.float64(2.0))[0].shape == (1, 20, 4)  # numpy scalars are numbers
+    # A ragged list of views is the argument's ValueError, not an internal error.
+    ragged = [[[[1.0, 2.0, 0.5]] * JOINTS, [[1.0, 2.0]] * JOINTS]] + good_views(rig)[1:]
+    with pytest.raises(ValueError, match=r"not an array of numbers"):
+        triangulator.process(ragged)
+
+
+def test_frames_index_like_a_python_sequence(predictions):
+    last = len(predictions) - 1
+    assert np.array_equal(predictions.provenance(-1), predictions.provenance(last))
+    assert predictions.stats(-1) == predictions.stats(last)
+    for bad in (len(predictions), -len(predictions) - 1):
+        for call in (lambda: predictions[bad], lambda: predictions.provenance(bad), lambda: predictions.stats(bad)):
+            with pytest.raises(IndexError, match=r"^frame index out of range$"):
+                call()
 
 
 def test_empty_arrays(rig):
@@ -176,8 +193,18 @@ def test_camera_errors():
         rpt.Camera(width=10, height=10, K=np.eye(2))
     with pytest.raises(ValueError, match=r"K: contains NaN"):
         rpt.Camera(width=10, height=10, K=np.full((3, 3), np.nan))
-    with pytest.raises(rpt.InputError, match=r"camera 'a': "):
+    with pytest.raises(rpt.InputError, match=r"^camera 'a' \(none\): image size must be positive, got 0x10$"):
         rpt.Camera(name="a", width=0, height=10, K=np.eye(3))
+    # A ragged list is this argument's ValueError (it was an internal error).
+    with pytest.raises(ValueError, match=r"^K: not an array of numbers \("):
+        rpt.Camera(width=10, height=10, K=[[1, 0, 0], [0, 1, 0], [0, 0]])
+    # Coefficients the model would ignore are refused, not dropped.
+    K = [[1000, 0, 960], [0, 1000, 540], [0, 0, 1]]
+    with pytest.raises(ValueError, match=r"dist: non-zero coefficients, but model='none' uses none"):
+        rpt.Camera(width=1920, height=1080, K=K, dist=[0.3, 0.1, 0, 0, 0.05])
+    with pytest.raises(ValueError, match=r"dist: coefficient 5 is 0.05, but model='fisheye' uses the first 4"):
+        rpt.Camera(width=1920, height=1080, K=K, dist=[0.3, 0.1, 0, 0, 0.05], model="fisheye")
+    assert rpt.Camera(width=1920, height=1080, K=K, dist=[0.3, 0.1, 0, 0, 0.05], model="opencv").model == "opencv"
     with pytest.raises(rpt.ConfigError, match=r"cameras.load: format: 'yaml' is not one of auto, json, opencv"):
         rpt.cameras.load("x.yml", format="yaml")
     camera = rpt.Camera(width=10, height=10, K=np.eye(3))
