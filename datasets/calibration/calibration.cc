@@ -14,6 +14,7 @@
 #include "datasets/calibration/cameras_json.h"
 #include "datasets/calibration/colmap_calibration.h"
 #include "datasets/calibration/easymocap_yml.h"
+#include "datasets/calibration/file_storage.h"
 #include "datasets/calibration/opencv_yml.h"
 #include "datasets/camera_plausibility.h"
 #include "datasets/readers/fourda_calibration.h"
@@ -165,9 +166,15 @@ Calibration ReadCalibration(const fs::path& path, const CalibrationReadOptions& 
     case CalibrationFormat::kJson:
       calibration = ReadCamerasJson(path, warnings);
       break;
-    case CalibrationFormat::kOpenCV:
-      calibration = ReadOpenCVCalibration(path, options, warnings);
+    case CalibrationFormat::kOpenCV: {
+      // A FileStorage file with a `names` list is the several cameras an opencv write of a rig
+      // gives (the EasyMocap layout in one file): read as such, so format opencv reads back.
+      std::error_code ec;
+      calibration = !fs::is_directory(path, ec) && file_storage::ReadFile(path).Find("names") != nullptr
+                        ? ReadEasyMocapCalibration(path, options, warnings)
+                        : ReadOpenCVCalibration(path, options, warnings);
       break;
+    }
     case CalibrationFormat::kEasyMocap:
       calibration = ReadEasyMocapCalibration(path, options, warnings);
       break;

@@ -212,6 +212,8 @@ TEST(CalibrationOpenCV, WritersRoundTripThroughOurJson) {
     const Calibration back = ReadCalibration(dir.path() / name);
     EXPECT_EQ(back.description.format, CalibrationFormat::kEasyMocap) << name;
     test::ExpectSameProjections(rig, back.cameras);
+    // Written with format opencv, read back with format opencv (not only auto).
+    test::ExpectSameProjections(rig, ReadCalibration(dir.path() / name, {.format = CalibrationFormat::kOpenCV}).cameras);
     WriteCalibration(dir.path() / "via.json", back.cameras);
     test::ExpectSameProjections(rig, ReadCalibration(dir.path() / "via.json").cameras);
   }
