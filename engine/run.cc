@@ -2,6 +2,7 @@
 #include "engine/run.h"
 
 #include <algorithm>
+#include <cmath>
 #include <atomic>
 #include <chrono>
 #include <exception>
@@ -36,6 +37,10 @@ struct SequenceRun {
   metrics::StepCountAccumulator counts;
   std::optional<LossAccumulator> losses;
   long gt_persons = 0, output_persons = 0, frames_with_gt = 0, frames_with_gt_without_prediction = 0;
+  // Frames whose time is not after the last known time before them (tracks end there), and the
+  // largest step back (s).
+  long times_not_after = 0;
+  double largest_step_back_s = 0;
 };
 
 // The run's joint adapter (RunOptions::adapter) on one sequence: each frame's persons copied and
@@ -157,8 +162,16 @@ void RunSequence(int index, FrameSource& source, const RunOptions& options, cons
   FrameStages stages;
   stages.read = [&](long frame) { return source.Pull(&slot(frame).frame); };
   stages.complete = [&](long frame) { source.Complete(frame, &slot(frame).frame); };
+  double last_time_s = kUnknownTime;
   stages.process = [&](long frame) -> long {
     FrameSlot& s = slot(frame);
+    if (const double t = s.frame.timestamp_s; std::isfinite(t)) {
+      if (std::isfinite(last_time_s) && !(t > last_time_s)) {
+        ++run->times_not_after;
+        run->largest_step_back_s = std::max(run->largest_step_back_s, last_time_s - t);
+      }
+      last_time_s = t;
+    }
     try {
       triangulator.Process(s.frame.views.empty() ? no_views : s.frame.views, s.frame.timestamp_s, &s.persons,
                            &s.stats, run->losses ? &s.trace : nullptr);
@@ -293,6 +306,11 @@ RunResult Run(Input& input, const RunOptions& options, FrameSink* sink) {
     });
   }
   result.warnings = input.Warnings();
+  for (int i = 0; i < count; ++i) {
+    result.warnings.Add(input.header(i).name,
+                        "frames whose time is not after the previous frame's (tracks end there, and start anew)",
+                        "largest step back in s", runs[i].largest_step_back_s, runs[i].times_not_after);
+  }
   input.CheckStrict();
 
   result.evaluated = eval.has_value();

@@ -317,6 +317,40 @@ TEST(RunTest, WithoutMetricsNoGroundTruthIsNeeded) {
   EXPECT_EQ(predictions.sequences()[0].persons.size(), 30u);
 }
 
+// A time that goes back (or repeats) ends the tracks: counted in one warning with the largest
+// step back; a frame without a time gets no track ids and does not count.
+TEST(RunTest, TimesThatGoBackAreCountedAndStartTracksAnew) {
+  std::vector<Sequence> whole = MakeSyntheticDataset(Scene(8));
+  const double times[] = {0, 0.04, 0.08, 0.02, 0.02, 0.12, kUnknownTime, 0.10};
+  for (size_t f = 0; f < 8; ++f) whole[0].frames[f].timestamp_s = times[f];
+  RunOptions options;
+  options.eval.reset();
+  PredictionsCollector predictions(1);
+  const RunResult run = engine::Run(std::span<const Sequence>(whole), options, &predictions);
+  const std::string what = "frames whose time is not after the previous frame's (tracks end there, and start anew)";
+  const auto it = std::find_if(run.warnings.items().begin(), run.warnings.items().end(),
+                               [&](const InputWarning& w) { return w.what == what; });
+  ASSERT_NE(it, run.warnings.items().end());
+  EXPECT_EQ(it->source, whole[0].name);
+  EXPECT_EQ(it->count, 3) << "0.02 after 0.08, 0.02 after 0.02, 0.10 after 0.12";
+  EXPECT_NEAR(it->worst, 0.06, 1e-12);
+  const auto& tracks = predictions.sequences()[0].persons;
+  ASSERT_EQ(tracks.size(), 8u);
+  auto ids = [&](size_t f) { return std::vector<int>(tracks[f].track_ids.begin(), tracks[f].track_ids.end()); };
+  const std::vector<int> before = ids(2);
+  for (int id : ids(3)) {
+    EXPECT_GE(id, 0);
+    EXPECT_EQ(std::count(before.begin(), before.end(), id), 0) << "frame 3 continues no track of frame 2";
+  }
+  for (int id : ids(6)) EXPECT_EQ(id, -1) << "no time: not tracked";
+  EXPECT_EQ(ids(1), ids(0)) << "increasing times keep the tracks";
+  // In order: no such warning.
+  for (size_t f = 0; f < 8; ++f) whole[0].frames[f].timestamp_s = 0.04 * static_cast<double>(f);
+  PredictionsCollector unused(1);
+  const RunResult ordered = engine::Run(std::span<const Sequence>(whole), options, &unused);
+  for (const InputWarning& w : ordered.warnings.items()) EXPECT_NE(w.what, what);
+}
+
 TEST(RunTest, ASinkSeesTheSequenceBeginItsFramesInOrderThenTheEnd) {
   const std::vector<Sequence> whole = MakeSyntheticDataset(Scene(5));
   OrderSink sink;
