@@ -93,7 +93,14 @@ int RunFollow(const TriangulateArgs& args) {
   DetectionLinesCounts counts;
   std::optional<engine::Input> input;
   try {
-    input.emplace(engine::OpenLiveInput(args.input, {args.follow, args.skip_bad_lines, args.spin_us}, stop, &counts));
+    const TriangulateOptions& limits = config.triangulator.triangulate;
+    input.emplace(engine::OpenLiveInput(args.input,
+                                        {.path = args.follow,
+                                         .skip_bad_lines = args.skip_bad_lines,
+                                         .spin_us = args.spin_us,
+                                         .max_persons_per_view = limits.max_persons_per_view,
+                                         .max_pairs_per_frame = limits.max_pairs_per_frame},
+                                        stop, &counts));
   } catch (const InputError&) {
     if (on_interrupt.signal_number() == 0) throw;
     std::fprintf(stderr, "interrupted (%s) before the joints line: nothing triangulated\n",

@@ -6,6 +6,7 @@
 // frame ids are checked for repeats by the source within a window of recent frames, not kept.
 #pragma once
 
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -26,6 +27,10 @@ struct LiveInputOptions {
   std::string path;             // "-" = standard input; else a named pipe or a file
   bool skip_bad_lines = false;  // count bad lines instead of stopping at the first
   int spin_us = kDefaultSpinUs;  // polling without sleeping before each wait for input, in microseconds
+  // The triangulator's triangulate.max_persons_per_view and max_pairs_per_frame: a larger frame is
+  // a bad line (skipped with skip_bad_lines).
+  int max_persons_per_view = std::numeric_limits<int>::max();
+  long long max_pairs_per_frame = std::numeric_limits<long long>::max();
 };
 
 // Opens the stream and reads its joints line (waiting for it), on the calibration spec.cameras

@@ -9,6 +9,7 @@
 
 #include "core/errors.h"
 #include "core/pipeline/frame_buffers.h"
+#include "core/pipeline/frame_size.h"
 #include "core/pipeline/model.h"
 #include "core/pipeline/step_functions.h"
 #include "core/pipeline/temporal_state.h"
@@ -99,26 +100,12 @@ void Triangulator::Process(std::span<const Poses2D> views, double timestamp_s, P
       throw InputError("view " + std::to_string(v) + " has poses with " + std::to_string(views[v].num_joints) +
                        " joints, expected " + std::to_string(num_inputs));
     }
-    // Association cost grows with the square of the persons per view: refuse before any work.
-    if (views[v].num_persons() > opt.triangulate.max_persons_per_view) {
-      throw InputError("view " + std::to_string(v) + " (camera '" + m.cameras[v].name + "') has " +
-                       std::to_string(views[v].num_persons()) + " 2D poses, above triangulate.max_persons_per_view (" +
-                       std::to_string(opt.triangulate.max_persons_per_view) +
-                       "); raise it with --set triangulate.max_persons_per_view=N if this is a real scene");
-    }
   }
-  // Every pose of a view pairs with every pose of each later view: the pair buffers grow with
-  // (persons x views)^2. Counted before anything is allocated.
-  long long num_pairs = 0, poses_before = 0;
-  for (const Poses2D& view : views) {
-    num_pairs += poses_before * view.num_persons();
-    poses_before += view.num_persons();
-  }
-  if (num_pairs > opt.triangulate.max_pairs_per_frame) {
-    throw InputError(std::to_string(poses_before) + " 2D poses in " + std::to_string(views.size()) + " views make " +
-                     std::to_string(num_pairs) + " pairs across views, above triangulate.max_pairs_per_frame (" +
-                     std::to_string(opt.triangulate.max_pairs_per_frame) +
-                     "); raise it with --set triangulate.max_pairs_per_frame=N if this is a real scene");
+  // Association grows with the square of the poses: refuse a frame too large before any work.
+  if (const std::string problem = FrameSizeProblem(views, m.cameras, opt.triangulate.max_persons_per_view,
+                                                   opt.triangulate.max_pairs_per_frame);
+      !problem.empty()) {
+    throw InputError(problem);
   }
   stats->Reset();
   StepRunner run(opt, stats);

@@ -16,6 +16,7 @@
 #include "core/printable_text.h"
 #include "core/text.h"
 #include "core/utf8.h"
+#include "core/pipeline/frame_size.h"
 #include "datasets/io/input_limits.h"
 #include "datasets/io/json_pull.h"
 #include "datasets/readers/generic_common.h"
@@ -81,6 +82,8 @@ class DetectionLineSource final : public FrameSource {
         source_(lines_->source()),
         calibration_file_(calibration_file.string()),
         skip_bad_lines_(options.skip_bad_lines),
+        max_persons_per_view_(options.max_persons_per_view),
+        max_pairs_per_frame_(options.max_pairs_per_frame),
         counts_(counts != nullptr ? counts : &own_counts_),
         frame_keys_({"id", "time", "views"}),
         view_keys_({"camera", "poses"}) {
@@ -114,6 +117,11 @@ class DetectionLineSource final : public FrameSource {
         }
         if (IsBlank(line)) continue;
         ParseFrame(line, frame);
+        if (const std::string problem =
+                FrameSizeProblem(frame->views, header_.cameras, max_persons_per_view_, max_pairs_per_frame_);
+            !problem.empty()) {
+          throw InputError(problem);
+        }
       } catch (const InputError& e) {
         const std::string message = source_ + ":" + std::to_string(lines_->line_number()) + ": " + e.what();
         if (!skip_bad_lines_) throw InputError(message);
@@ -360,6 +368,8 @@ class DetectionLineSource final : public FrameSource {
   std::string source_;
   std::string calibration_file_;
   bool skip_bad_lines_;
+  int max_persons_per_view_;
+  long long max_pairs_per_frame_;
   DetectionLinesCounts own_counts_;
   DetectionLinesCounts* counts_;
   SequenceHeader header_;

@@ -15,13 +15,15 @@
 //
 // Each line is parsed straight into the frame buffer (io::JsonPull): no document is built and a
 // warm source allocates nothing. A bad line (not JSON, another shape, an unknown camera, a frame id
-// seen in the last kRecentIds frames, a line above the length limit) is an InputError
+// seen in the last kRecentIds frames, a line above the length limit, a frame above the size
+// limits) is an InputError
 // "<source>:<line>: <place>: <what>"; with skip_bad_lines it is skipped and counted instead
 // (reported once the stream ends, as unused input). Blank lines are ignored.
 #pragma once
 
 #include <cstddef>
 #include <filesystem>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -40,6 +42,10 @@ struct DetectionLinesOptions {
   std::string name;  // the sequence's name
   double fps = 0;    // rate of the lines without "time"; 0 = their times are unknown
   bool skip_bad_lines = false;
+  // A frame larger than these (core/pipeline/frame_size.h; the triangulator's options) is a bad
+  // line: with skip_bad_lines one burst of false detections does not end the stream.
+  int max_persons_per_view = std::numeric_limits<int>::max();
+  long long max_pairs_per_frame = std::numeric_limits<long long>::max();
 };
 
 // What the stream held, kept up to date by the source (read it once the run is over).

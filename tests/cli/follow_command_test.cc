@@ -304,6 +304,31 @@ TEST_F(Follow, SkipBadLinesCountsThem) {
   EXPECT_NE(strict.err.find("error: stdin:3: column 1: "), std::string::npos) << strict.err;
 }
 
+// A frame the triangulator would refuse for its size is a bad line: named by its line, and with
+// --skip-bad-lines skipped, so one burst of false detections does not end the stream.
+TEST_F(Follow, AFrameTooLargeIsABadLine) {
+  std::string pose = "[";
+  for (size_t j = 0; j < detections_.joints.size(); ++j) pose += std::string(j > 0 ? ", " : "") + "[100, 200, 0.9]";
+  pose += "]";
+  std::string poses = pose;
+  for (int p = 1; p < 5; ++p) poses += ", " + pose;  // 5 poses; the scene's frames have 3 people
+  const std::string crowd = "{\"views\": [{\"camera\": \"cam0\", \"poses\": [" + poses + "]}]}";
+  const fs::path file =
+      LinesFile("crowd.jsonl", {FrameLine(detections_, 0, true), crowd, FrameLine(detections_, 1, true)});
+  const std::string run = "triangulate --follow - --cameras " + Cameras() +
+                          " --set triangulate.max_persons_per_view=4 < " + file.string();
+  const test::CommandResult stopped = test::RunRpt(run);
+  EXPECT_EQ(stopped.exit_code, 2);
+  EXPECT_NE(stopped.err.find("error: stdin:3: view 0 (camera 'cam0') has 5 2D poses, above "
+                             "triangulate.max_persons_per_view (4)"),
+            std::string::npos)
+      << stopped.err;
+  const test::CommandResult skipped = test::RunRpt(run + " --skip-bad-lines");
+  EXPECT_EQ(skipped.exit_code, 0) << skipped.err;
+  EXPECT_EQ(std::count(skipped.out.begin(), skipped.out.end(), '\n'), 1 + 2) << skipped.out;
+  EXPECT_NE(skipped.err.find("1 bad line(s) skipped"), std::string::npos) << skipped.err;
+}
+
 TEST_F(Follow, CtrlCEndsCleanlyAfterTheFramesInHand) {
   Child child("triangulate --follow - --cameras " + Cameras(), dir_ / "err.txt");
   child.WriteLine(JointsLine(detections_));
