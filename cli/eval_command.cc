@@ -13,6 +13,7 @@
 #include "cli/export_args.h"
 #include "engine/diagnostics.h"
 #include "engine/input.h"
+#include "engine/output_place.h"
 #include "engine/joint_adapter.h"
 #include "engine/outputs/loss_tables.h"
 #include "engine/outputs/step_tables.h"
@@ -53,6 +54,9 @@ void RunEval(const EvalArgs& args) {
                    args.input.dataset.empty() ? "another input" : ("dataset " + args.input.dataset).c_str());
     }
   }
+  const std::string out_dir =
+      !args.out.empty() ? args.out : "out/eval-" + (args.input.dataset.empty() ? "labels" : args.input.dataset);
+  engine::CheckOutputOutsideInput(out_dir, args.input);  // before anything is read
   engine::Input input = engine::OpenInput(args.input);
   const InputWarnings opened = input.Warnings();  // what the files read up front corrected or left unused
   PrintInputWarnings(opened);
@@ -67,8 +71,6 @@ void RunEval(const EvalArgs& args) {
   options.progress = ReportTo(progress.get());
   engine::RunInfo info = engine::CollectRunInfo(0);
   info.input_digests = engine::InputDigests(args.input);  // compared by `rpt report` before it re-loads the input
-  const std::string out_dir =
-      !args.out.empty() ? args.out : "out/eval-" + (args.input.dataset.empty() ? "labels" : args.input.dataset);
   engine::RunFolder folder(out_dir, info.run_id, input.size(), exports);
   // Streamed: each frame is checked and triangulated, written, then dropped.
   const engine::RunResult run = engine::Run(input, options, folder.sink());

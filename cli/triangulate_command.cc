@@ -28,6 +28,7 @@
 #include "core/printable_text.h"
 #include "datasets/io/json_output.h"
 #include "engine/input.h"
+#include "engine/output_place.h"
 #include "engine/input_digests.h"
 #include "engine/live_input.h"
 #include "engine/live_latency.h"
@@ -117,7 +118,10 @@ int RunFollow(const TriangulateArgs& args) {
   engine::LiveLatency latency(&counts);
   engine::RunInfo info = engine::CollectRunInfo(1);
   std::optional<engine::RunFolder> folder;
-  if (!args.out.empty()) folder.emplace(args.out, info.run_id, input->size(), exports);
+  if (!args.out.empty()) {
+    engine::CheckOutputOutsideInput(args.out, args.input);
+    folder.emplace(args.out, info.run_id, input->size(), exports);
+  }
   engine::SinkList sinks({&lines, &latency, folder ? folder->sink() : nullptr});
   const engine::RunResult run = engine::Run(*input, options, &sinks);
   PrintInputWarnings(run.warnings.Except(opened));
@@ -157,6 +161,7 @@ void RunTriangulate(const TriangulateArgs& args) {
   engine::RunInfo info = engine::CollectRunInfo(0);
   info.input_digests = engine::InputDigests(args.input);  // compared by `rpt report` and `rpt render --run`
   const std::string out_dir = !args.out.empty() ? args.out : DefaultOutDir(args.input, input);
+  engine::CheckOutputOutsideInput(out_dir, args.input);
   engine::RunFolder folder(out_dir, info.run_id, input.size(), exports);
   const engine::RunResult run = engine::Run(input, options, folder.sink());
   progress.reset();

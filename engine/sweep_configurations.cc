@@ -3,9 +3,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cstdio>
+
+#include "core/closest_name.h"
 #include "core/errors.h"
 #include "core/option_codec.h"
+#include "core/printable_text.h"
 #include "core/text.h"
+#include "datasets/io/file_digest.h"
 #include "datasets/io/json_file.h"
 #include "engine/json_text.h"
 
@@ -28,9 +33,20 @@ std::vector<SweepConfiguration> ReadSweepList(const std::string& path) {
     if (!item.is_object()) {
       throw InputError(path + ": " + pointer + ": expected {\"name\", \"set\"}, got " + item.type_name());
     }
+    for (const auto& [key, value] : item.items()) {
+      if (key == "name" || key == "set") continue;
+      throw InputError(path + ": " + io::JsonPointerJoin(pointer, key) + ": " +
+                       UnknownNameProblem("key", key, {"name", "set"}, "a configuration has \"name\" and \"set\""));
+    }
     SweepConfiguration configuration;
+    configuration.origin = path + ": " + pointer;
     configuration.name =
         item.contains("name") ? io::JsonString(root, pointer + "/name", path) : "config " + std::to_string(i);
+    for (size_t earlier = 0; earlier < configurations.size(); ++earlier) {
+      if (configurations[earlier].name != configuration.name) continue;
+      throw InputError(path + ": " + pointer + "/name: " + QuoteName(configuration.name) + " names configuration " +
+                       std::to_string(earlier + 1) + " too (names tell the rows apart)");
+    }
     if (item.contains("set")) {
       const nlohmann::json& set = item["set"];
       if (!set.is_object()) {
@@ -65,8 +81,34 @@ std::vector<SweepConfiguration> ExpandSweepGrid(const std::vector<std::string>& 
   for (SweepConfiguration& configuration : configurations) {
     for (const auto& [key, value] : configuration.overrides) AppendItem(&configuration.name, key + "=" + value, " ");
     if (configuration.name.empty()) configuration.name = "default";
+    configuration.origin = "--grid";
   }
   return configurations;
+}
+
+nlohmann::ordered_json SweepIdentity(const std::vector<SweepConfiguration>& all, const std::string& base_config,
+                                     const InputSpec& input) {
+  nlohmann::ordered_json identity;
+  nlohmann::ordered_json configurations = nlohmann::ordered_json::array();
+  for (const SweepConfiguration& c : all) {
+    nlohmann::ordered_json set = nlohmann::ordered_json::object();
+    for (const auto& [key, value] : c.overrides) set[key] = value;
+    configurations.push_back({{"name", c.name}, {"set", set}});
+  }
+  identity["configurations"] = configurations;
+  char digest[16];
+  std::snprintf(digest, sizeof(digest), "crc32:%08x", io::Crc32(0, base_config));
+  identity["base_config"] = digest;
+  identity["input"] = {{"dataset", input.dataset},
+                       {"root", input.root},
+                       {"params", input.params},
+                       {"labels", input.labels},
+                       {"cameras", input.cameras},
+                       {"detections", input.detections},
+                       {"simulate", input.simulate || input.simulate_perfect},
+                       {"detector", input.simulate_perfect ? std::string("perfect") : input.detector},
+                       {"seed", input.seed}};
+  return identity;
 }
 
 }  // namespace rpt::engine

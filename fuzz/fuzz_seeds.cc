@@ -421,6 +421,8 @@ std::map<std::string, std::vector<std::pair<std::string, Bytes>>> MakeFuzzSeeds(
   {"set": {"filter.min_match_score": 0.9, "triangulate.core_joints": ["nose", "hip_left"]}}, {"name": "default"}])")},
                          {"object.json", Of(R"({"configurations": [{"name": "a", "set": {"merge.top_k": 0}}]})")}};
   seeds["sweep_shard"] = {{"sweep-shard-1-of-1.json", Of(R"({"total": 2, "shard": "1/1", "base": {"filter.min_match_score": "0.9"},
+  "sweep": {"configurations": [{"name": "a", "set": {"merge.top_k": "0"}}, {"name": "b", "set": {}}], "base_config": "crc32:00000000",
+            "input": {"dataset": "synthetic", "params": ["frames=2"]}},
   "rows": [{"index": 0, "name": "a", "set": {"merge.top_k": "0"}, "default": true, "summary": {"mpjpe_mm": 50.5, "recall500": null}},
            {"index": 1, "name": "b", "summary": {"mpjpe_mm": 51}}]})")}};
   seeds["run_folder"] = {{"summary.json", Of(std::string(1, '\0') + R"({"mpjpe_mm": 50.5, "gt_persons": 2})")},

@@ -181,6 +181,16 @@ std::string SweepHtml(const OrderedJson& sweep) {
   if (sweep.contains("run") && sweep["run"].contains("command")) {
     html << "<p>Command: <code>" << HtmlText(JsonValueText(sweep["run"]["command"])) << "</code></p>\n";
   }
+  if (sweep.contains("shard_runs") && sweep["shard_runs"].is_array()) {  // a merged sweep: its shards
+    html << "<p>Shards:</p>\n<ul class=\"shards\">\n";
+    for (const OrderedJson& run : sweep["shard_runs"]) {
+      if (!run.is_object() || !run.contains("command")) continue;
+      html << "<li><code>" << HtmlText(JsonValueText(run["command"])) << "</code>"
+           << (run.contains("git_revision") ? " (revision " + HtmlText(JsonValueText(run["git_revision"])) + ")" : "")
+           << "</li>\n";
+    }
+    html << "</ul>\n";
+  }
   html << "<table id=\"sweep\">\n<thead>\n<tr><th class=\"name\">configuration</th>";
   for (const std::string& option : options) html << "<th class=\"option\">" << HtmlText(option) << "</th>";
   for (const Headline& h : metrics) html << "<th>" << HtmlText(TitleOf(h.key)) << "</th>";

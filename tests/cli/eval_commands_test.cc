@@ -118,6 +118,57 @@ TEST(SweepCommand, ShardsMergeIntoTheFullTable) {
     EXPECT_EQ(joined["rows"][i]["name"], whole["rows"][i]["name"]);
     EXPECT_EQ(joined["rows"][i]["summary"]["mpjpe_mm"], whole["rows"][i]["summary"]["mpjpe_mm"]);
   }
+  // The merged file keeps what each shard recorded of its run, and what it is a shard of.
+  ASSERT_EQ(joined["shard_runs"].size(), 2u);
+  EXPECT_NE(joined["shard_runs"][1]["command"].get<std::string>().find("--shard 2/2"), std::string::npos);
+  EXPECT_EQ(joined["sweep"], ReadJson(out / "sweep-shard-1-of-2.json")["sweep"]);
+  EXPECT_NE(test::ReadAll(out / "m" / "sweep.html").find("--shard 2/2"), std::string::npos) << "the page lists the shards";
+  // A shard of another sweep (other frames, other base options, another grid) is refused, named.
+  const std::vector<std::pair<std::string, std::string>> others = {
+      {"--dataset synthetic --param frames=21 --grid filter.min_match_score=0.8,0.9,0.95", "/sweep/input"},
+      {"--dataset synthetic --param frames=20 --set merge.top_k=2 --grid filter.min_match_score=0.8,0.9,0.95",
+       "/sweep/base_config"},
+      {"--dataset synthetic --param frames=20 --grid filter.min_match_score=0.8,0.9,0.97", "/sweep/configurations"}};
+  for (const auto& [other, part] : others) {
+    ASSERT_EQ(test::RunRpt("sweep " + other + " --shard 2/2 --out " + (out / "other").string()).exit_code, 0) << other;
+    const test::CommandResult mixed = test::RunRpt("merge " + (out / "sweep-shard-1-of-2.json").string() + " " +
+                                                   (out / "other" / "sweep-shard-2-of-2.json").string() + " --out " +
+                                                   (out / "mixed").string());
+    EXPECT_EQ(mixed.exit_code, 2) << other;
+    EXPECT_NE(mixed.err.find((out / "other" / "sweep-shard-2-of-2.json").string() + ": a shard of another sweep than " +
+                             (out / "sweep-shard-1-of-2.json").string() + " (their " + part + " differ)"),
+              std::string::npos)
+        << mixed.err;
+  }
+  // Missing configurations are counted from 1, as --shard counts.
+  const test::CommandResult missing =
+      test::RunRpt("merge " + (out / "sweep-shard-1-of-2.json").string() + " --out " + (out / "m1").string());
+  EXPECT_NE(missing.err.find("counted from 1 as --shard counts: 2 of 3"), std::string::npos) << missing.err;
+  fs::remove_all(out);
+}
+
+// A --list file's typos are errors that name the file and the place, not rows of defaults.
+TEST(SweepCommand, ListFileTyposNameTheFileAndTheConfiguration) {
+  const fs::path out = test::TempDir("sweep_list");
+  const auto run = [&](const std::string& list) {
+    std::ofstream(out / "list.json") << list;
+    return test::RunRpt("sweep --dataset synthetic --param frames=5 --list " + (out / "list.json").string() +
+                        " --out " + (out / "s").string());
+  };
+  const test::CommandResult key = run(R"([{"name": "a"}, {"name": "b", "sett": {"merge.top_k": 0}}])");
+  EXPECT_EQ(key.exit_code, 2);
+  EXPECT_NE(key.err.find("list.json: /1/sett: unknown key 'sett' (did you mean 'set'?)"), std::string::npos) << key.err;
+  const test::CommandResult twice = run(R"([{"name": "a"}, {"name": "a", "set": {"merge.top_k": 0}}])");
+  EXPECT_EQ(twice.exit_code, 2);
+  EXPECT_NE(twice.err.find("list.json: /1/name: 'a' names configuration 1 too"), std::string::npos) << twice.err;
+  const test::CommandResult option = run(R"({"configurations": [{"name": "a"}, {"name": "b", "set": {"merge.topk": 0}}]})");
+  EXPECT_EQ(option.exit_code, 2);
+  EXPECT_NE(option.err.find("list.json: /configurations/1 (configuration 'b'): "), std::string::npos) << option.err;
+  EXPECT_NE(option.err.find("merge.topk"), std::string::npos) << option.err;
+  const test::CommandResult grid =
+      test::RunRpt("sweep --dataset synthetic --param frames=5 --grid merge.top_k=3,3 --out " + (out / "g").string());
+  EXPECT_EQ(grid.exit_code, 2);
+  EXPECT_NE(grid.err.find("--grid: configuration 'merge.top_k=3' twice"), std::string::npos) << grid.err;
   fs::remove_all(out);
 }
 

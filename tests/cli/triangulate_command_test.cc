@@ -465,6 +465,37 @@ TEST_F(Triangulate, BadInputExitsWith2NamingFileAndPlace) {
   EXPECT_EQ(tri_param.exit_code, 2);
 }
 
+// An output folder that is, lies in or holds an input folder is refused before anything is read or
+// written: the run folder is swapped in as a whole, which would move the input's files.
+TEST_F(Triangulate, AnOutputFolderInTheInputIsRefused) {
+  const std::vector<std::string> ids = Ids("", kFrames);
+  WriteOpenPoseFolder(dir_ / "openpose", Coco17(scene_, ids));
+  const auto files = [&] {
+    std::vector<std::string> names;
+    for (const auto& entry : fs::recursive_directory_iterator(dir_ / "openpose")) {
+      names.push_back(entry.path().lexically_relative(dir_).string());
+    }
+    std::sort(names.begin(), names.end());
+    return names;
+  };
+  const std::vector<std::string> before = files();
+  const std::string run = "triangulate --cameras " + (dir_ / "cameras.json").string() + " --detections " +
+                          (dir_ / "openpose").string() + " --quiet --out ";
+  const std::vector<std::pair<fs::path, std::string>> cases = {{dir_ / "openpose", "is the input"},
+                                                               {dir_ / "openpose" / "run", "lies inside the input folder"},
+                                                               {dir_, "holds the input"}};
+  for (const auto& [out, what] : cases) {
+    const test::CommandResult r = test::RunRpt(run + out.string());
+    EXPECT_EQ(r.exit_code, 2) << out;
+    EXPECT_NE(r.err.find("--out '" + out.string() + "': " + what + " '" + (dir_ / "openpose").string() +
+                         "'; rpt does not write into its input"),
+              std::string::npos)
+        << r.err;
+  }
+  EXPECT_EQ(files(), before) << "the input folder is as it was";
+  EXPECT_EQ(test::RunRpt(run + (dir_ / "elsewhere").string()).exit_code, 0) << "beside it is fine";
+}
+
 // The mistakes of someone's own first run: each said, none silently wrong.
 TEST_F(Triangulate, OwnDataMistakesAreSaidNotSilent) {
   const std::vector<std::string> ids = Ids("take_", kFrames);
