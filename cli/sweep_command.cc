@@ -26,6 +26,7 @@
 #include "cli/config_args.h"
 #include "cli/input_options.h"
 #include "engine/input.h"
+#include "engine/output_place.h"
 #include "cli/progress.h"
 #include "cli/slurm_submit.h"
 #include "engine/outputs/results_writer.h"
@@ -136,12 +137,18 @@ void RunSweep(const SweepArgs& args) {
   if (args.grid.empty() == args.list.empty()) throw ConfigError("give either --grid key=v1,v2 (repeatable) or --list FILE");
   const std::vector<engine::SweepConfiguration> all =
       args.list.empty() ? engine::ExpandSweepGrid(args.grid) : engine::ReadSweepList(args.list);
+  for (size_t i = 1; i < all.size(); ++i) {  // a list file checks its own names; a grid can repeat a value
+    for (size_t j = 0; j < i; ++j) {
+      if (all[i].name == all[j].name) throw ConfigError(all[i].origin + ": configuration " + QuoteName(all[i].name) + " twice");
+    }
+  }
   if (args.slurm > 0) {
     SubmitToSlurm(args, all);
     return;
   }
   if (!args.slurm_options.empty() || args.slurm_dry_run) throw ConfigError("--slurm-option and --slurm-dry-run need --slurm N");
   const auto [shard, shards] = ParseShard(args.shard);
+  engine::CheckOutputOutsideInput(args.out, args.input);
   std::vector<int> mine;
   for (int i = shard - 1; i < static_cast<int>(all.size()); i += shards) mine.push_back(i);
 
@@ -165,7 +172,11 @@ void RunSweep(const SweepArgs& args) {
         config_args.overrides.push_back(key + "=" + value);
       }
     }
-    configs.push_back(ResolveConfig(config_args));
+    try {
+      configs.push_back(ResolveConfig(config_args));
+    } catch (const ConfigError& e) {  // name the configuration and where it was given
+      throw ConfigError(all[i].origin + " (configuration " + QuoteName(all[i].name) + "): " + e.what());
+    }
     inputs.push_back(input);
     is_default.push_back(input.params == args.input.params && engine::DumpConfig(configs.back(), false) == base_config);
   }
@@ -246,6 +257,7 @@ void RunSweep(const SweepArgs& args) {
   engine::RunInfo info = engine::CollectRunInfo(threads);
   info.input_warnings = engine::InputWarningLines(warnings);
   file["run"] = engine::RunInfoJson(info);
+  file["sweep"] = engine::SweepIdentity(all, base_config, args.input);
   file["base"] = base;
   file["rows"] = rows;
   const std::string stem = shards == 1 ? "sweep" : "sweep-shard-" + std::to_string(shard) + "-of-" + std::to_string(shards);
@@ -299,11 +311,35 @@ void RunMerge(const std::vector<std::string>& inputs, const std::string& out) {
   std::map<int, OrderedJson> by_index;
   OrderedJson base = OrderedJson::object();
   std::int64_t total = -1;
+  // The sweep the first shard belongs to (its configurations, base options and input): every other
+  // shard must record the same, or the table would mix rows of different sweeps.
+  nlohmann::json sweep;
+  std::string sweep_source;
+  OrderedJson shard_runs = OrderedJson::array();
   for (const std::string& path : inputs) {
     const nlohmann::json shard = io::LoadJsonFile(path);
     if (!shard.is_object() || !shard.contains("rows") || !shard.contains("total")) {
       throw InputError(path + ": not a sweep shard file (expected an object with \"total\" and \"rows\")");
     }
+    if (!shard.contains("sweep")) {
+      throw InputError(path + ": records no \"sweep\" (what it is a shard of; written by an older rpt): it cannot be told "
+                       "apart from a shard of another sweep; run the shards again");
+    }
+    if (sweep_source.empty()) {
+      sweep = shard["sweep"];
+      sweep_source = path;
+    } else if (shard["sweep"] != sweep) {
+      std::string part = "configurations";
+      for (const char* key : {"input", "base_config", "configurations"}) {
+        if (!shard["sweep"].contains(key) || shard["sweep"][key] != sweep.value(key, nlohmann::json())) {
+          part = key;
+          break;
+        }
+      }
+      throw InputError(path + ": a shard of another sweep than " + sweep_source + " (their /sweep/" + part +
+                       " differ): merge the shards of one sweep");
+    }
+    if (shard.contains("run")) shard_runs.push_back(OrderedJson::parse(shard["run"].dump()));
     // Configuration indices are ints; the bound also keeps the check for missing ones short.
     const std::int64_t shard_total = io::JsonIntIn(shard, "/total", path, 0, std::numeric_limits<int>::max());
     if (total >= 0 && shard_total != total) {
@@ -320,7 +356,8 @@ void RunMerge(const std::vector<std::string>& inputs, const std::string& out) {
       int index = 0;
       OrderedJson row = CheckedShardRow(shard, io::JsonPointerJoin("/rows", i), path, total, &index);
       if (!by_index.emplace(index, std::move(row)).second) {
-        throw InputError(path + ": configuration " + std::to_string(index) + " appears in two shard files");
+        throw InputError(path + ": configuration " + std::to_string(index + 1) + " of " + std::to_string(total) +
+                         " appears in two shard files");
       }
     }
   }
@@ -331,18 +368,22 @@ void RunMerge(const std::vector<std::string>& inputs, const std::string& out) {
     int named = 0;
     for (int i = 0; i < total && named < 20; ++i) {
       if (!by_index.count(i)) {
-        AppendItem(&missing, std::to_string(i));
+        AppendItem(&missing, std::to_string(i + 1));
         ++named;
       }
     }
     if (missing_count > named) missing += ", ... (" + std::to_string(missing_count) + " in all)";
-    throw InputError("merge: configurations missing (shard files absent?): " + missing);
+    throw InputError("merge: configurations missing (shard files absent?), counted from 1 as --shard counts: " +
+                     missing + " of " + std::to_string(total));
   }
   OrderedJson rows = OrderedJson::array();
   for (auto& [index, row] : by_index) rows.push_back(row);
   OrderedJson file;
   file["total"] = total;
   file["shard"] = "1/1";
+  file["run"] = engine::RunInfoJson(engine::CollectRunInfo(1));  // the merge; the shards' runs follow
+  file["shard_runs"] = shard_runs;
+  file["sweep"] = OrderedJson::parse(sweep.dump());
   file["base"] = base;
   file["rows"] = rows;
   WriteSweepFiles(out, file, "sweep", /*whole_folder=*/true);
