@@ -6,6 +6,7 @@
 // 1 at the end). Entries whose data is missing (e.g. ../shared/data on a machine without it) are
 // reported as skipped, or as failures with --fail-on-skip. --junit FILE writes one JUnit testcase per
 // check for CI systems.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -129,6 +130,13 @@ void RunEvaluation(const engine::ThresholdEvaluation& e, bool strict, InputWarni
 // Exit status of the check (0 all pass, 1 a check failed, an evaluation failed or, with --fail-on-skip, was skipped).
 int RunCheck(const CheckArgs& args) {
   const engine::ThresholdsFile file = engine::ReadThresholdsFile(args.thresholds);
+  if (!args.only.empty() &&
+      std::none_of(file.evaluations.begin(), file.evaluations.end(),
+                   [&](const engine::ThresholdEvaluation& e) { return e.name.find(args.only) != std::string::npos; })) {
+    // A typo would otherwise check nothing and pass.
+    throw ConfigError("--only " + QuoteName(args.only) + ": no evaluation of " + args.thresholds +
+                      " has it in its name");
+  }
   CheckReport report;
   // Evaluations often read the same files: one line per file and kind for the whole check.
   InputWarnings warnings;

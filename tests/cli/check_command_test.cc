@@ -95,6 +95,18 @@ TEST_F(CheckCommandTest, AFailingEvaluationIsNamedAndTheOthersStillRun) {
       << run.result.out;
 }
 
+// --only with a text no evaluation has checks nothing: in CI that typo would pass, so it is an error.
+TEST_F(CheckCommandTest, OnlyMatchingNothingIsAnError) {
+  const std::string json = std::string(R"({"evaluations": [)") + kTinyEvaluation + "]}";
+  const CheckRun typo = RunCheck(dir_, "thresholds.json", json, "--only tyni");
+  EXPECT_EQ(typo.result.exit_code, 2) << typo.result.out;
+  EXPECT_NE(typo.result.err.find("--only 'tyni': no evaluation of " + typo.file.string() + " has it in its name"),
+            std::string::npos)
+      << typo.result.err;
+  const CheckRun matching = RunCheck(dir_, "thresholds.json", json, "--only tin");
+  EXPECT_EQ(matching.result.exit_code, 0) << matching.result.out << matching.result.err;
+}
+
 TEST_F(CheckCommandTest, FailOnSkipTurnsSkippedEvaluationsIntoFailures) {
   const std::string json = std::string(R"({"evaluations": [)") + kTinyEvaluation +
                            R"(, {"name": "absent data", "dataset": "shelf", "root": "no/such/folder",
