@@ -158,6 +158,12 @@ void RunSweep(const SweepArgs& args) {
   std::vector<engine::Config> configs;
   std::vector<engine::InputSpec> inputs;
   std::vector<bool> is_default;  // the configuration is the base one (sweep.html's deltas are against it)
+  std::vector<bool> measured_differently;  // its metrics options differ from the base's: no deltas
+  const auto metrics_text = [](const engine::Config& config) {
+    engine::Config metrics_only;
+    metrics_only.metrics = config.metrics;
+    return engine::DumpConfig(metrics_only, false);
+  };
   bool per_config_input = false;
   const engine::Config base_options = ResolveConfig(args.config);
   const std::string base_config = engine::DumpConfig(base_options, false);
@@ -179,6 +185,13 @@ void RunSweep(const SweepArgs& args) {
     }
     inputs.push_back(input);
     is_default.push_back(input.params == args.input.params && engine::DumpConfig(configs.back(), false) == base_config);
+    measured_differently.push_back(metrics_text(configs.back()) != metrics_text(base_options));
+    if (measured_differently.back()) {
+      std::fprintf(stderr,
+                   "warning: configuration %s changes a metrics option: it is measured differently from the others, "
+                   "so sweep.html shows no difference for it\n",
+                   PrintableText(QuoteName(all[i].name)).c_str());
+    }
   }
   // One warning line per file and kind, not one per configuration: configurations that load their
   // own input read the same files again (MergeRepeated).
@@ -241,6 +254,7 @@ void RunSweep(const SweepArgs& args) {
                     {"name", all[mine[c]].name},
                     {"set", set},
                     {"default", static_cast<bool>(is_default[c])},
+                    {"measured_differently", static_cast<bool>(measured_differently[c])},
                     {"summary", summaries[c]}});
   }
   // The base configuration's value of every varied option (sweep.html shows them greyed where a
@@ -294,6 +308,9 @@ OrderedJson CheckedShardRow(const nlohmann::json& shard, const std::string& poin
   io::JsonString(shard, pointer + "/name", source);
   if (io::JsonFind(shard, pointer + "/set")) ObjectAt(shard, pointer + "/set", source, "an object {option: value}");
   if (io::JsonFind(shard, pointer + "/default")) io::JsonBool(shard, pointer + "/default", source);
+  if (io::JsonFind(shard, pointer + "/measured_differently")) {
+    io::JsonBool(shard, pointer + "/measured_differently", source);
+  }
   const nlohmann::json& summary = ObjectAt(shard, pointer + "/summary", source, "an object of metrics");
   for (const auto& [key, value] : summary.items()) {
     const bool column = key.rfind("legacy_pcp", 0) == 0 ||

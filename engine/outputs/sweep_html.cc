@@ -217,7 +217,11 @@ std::string SweepHtml(const OrderedJson& sweep) {
       }
       html << FixedDecimals(v, DecimalsOf(h.key));
       const double base_value = Value(rows[baseline.row], h.key);
-      if (i != baseline.row && std::isfinite(base_value)) {
+      const bool comparable =
+          !row.value("measured_differently", false) && !rows[baseline.row].value("measured_differently", false);
+      if (i != baseline.row && !comparable) {
+        html << " <span class=\"delta incomparable\" title=\"measured with other metrics options\">n/a</span>";
+      } else if (i != baseline.row && std::isfinite(base_value)) {
         const double delta = v - base_value;
         html << " <span class=\"delta " << Verdict(delta, h) << "\" data-delta=\"" << FixedDecimals(delta, 4) << "\">"
              << DeltaText(delta, h.key) << "</span>";

@@ -150,9 +150,43 @@ TEST(SweepHtml, WithoutADefaultRowDeltasAreAgainstTheFirst) {
   EXPECT_NE(AllText(html).find("the first row: no configuration equals the default"), std::string::npos);
 }
 
+// A row measured with other metrics options (e.g. fewer evaluated joints) shows its values but no
+// difference: a lower MPJPE over 4 joints is not better than one over 13.
+TEST(SweepHtml, ARowMeasuredDifferentlyShowsNoDifference) {
+  nlohmann::ordered_json sweep;
+  sweep["rows"] = {Row("default", nlohmann::ordered_json::object(), true, {{"mpjpe_mm", 50.0}}),
+                   Row("arms", {{"metrics.evaluated_joints", "wrist_left,wrist_right"}}, false, {{"mpjpe_mm", 44.0}}),
+                   Row("other", {{"merge.top_k", "0"}}, false, {{"mpjpe_mm", 51.0}})};
+  sweep["rows"][1]["measured_differently"] = true;
+  const XmlElement html = test::XmlReader::Parse(engine::SweepHtml(sweep), test::Markup::kDocument);
+  const std::vector<const XmlElement*> rows = TableRows(html);
+  ASSERT_EQ(rows.size(), 3u);
+  const XmlElement& arms = MetricCell(*rows[1], "mpjpe_mm")->children.at(0);
+  EXPECT_EQ(Attribute(arms, "class"), "delta incomparable");
+  EXPECT_EQ(arms.text, "n/a");
+  EXPECT_EQ(MetricCell(*rows[1], "mpjpe_mm")->text, "44.0 ");  // the value, then the "n/a" span
+  EXPECT_EQ(Attribute(MetricCell(*rows[2], "mpjpe_mm")->children.at(0), "data-delta"), "1.0000");
+}
+
 nlohmann::json ReadJson(const fs::path& path) {
   std::ifstream in(path);
   return nlohmann::json::parse(in);
+}
+
+// The sweep says which configurations change how they are measured, and marks their rows.
+TEST(SweepHtml, SweepMarksConfigurationsThatChangeTheMetrics) {
+  const fs::path out = test::TempDir("sweep_measured");
+  const test::CommandResult r = test::RunRpt(
+      "sweep --dataset synthetic --param frames=5 --grid metrics.match_threshold_mm=500,300 --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("warning: configuration 'metrics.match_threshold_mm=300' changes a metrics option"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(r.err.find("'metrics.match_threshold_mm=500' changes"), std::string::npos) << "500 is the default";
+  const nlohmann::json sweep = ReadJson(out / "sweep.json");
+  EXPECT_FALSE(sweep["rows"][0]["measured_differently"].get<bool>());
+  EXPECT_TRUE(sweep["rows"][1]["measured_differently"].get<bool>());
+  fs::remove_all(out);
 }
 
 TEST(SweepHtml, WrittenBySweepAndMergeWithDeltasMatchingSweepJson) {
