@@ -64,7 +64,12 @@ const DatasetEntry& FindDataset(const std::string& name) {
 }  // namespace
 
 std::vector<std::unique_ptr<FrameSource>> OpenDataset(const DatasetRequest& request) {
-  return FindDataset(request.dataset).open(request);
+  const DatasetEntry& entry = FindDataset(request.dataset);
+  if (request.root.empty() && request.dataset != "synthetic") {  // the generated scene reads no files
+    throw ConfigError("--dataset " + request.dataset + " needs --root DIR, the folder holding the dataset in its "
+                      "original layout (`rpt datasets` shows what it reads there)");
+  }
+  return entry.open(request);
 }
 
 std::vector<Sequence> ReadDataset(const DatasetRequest& request) { return MaterializeAll(OpenDataset(request)); }

@@ -157,6 +157,10 @@ ThresholdEvaluation ReadEvaluation(const Validator& v, const Json& e, const std:
         v.Fail(metric_where, "unknown metric " + QuoteName(metric) + DidYouMean(metric, known) + "; known: " + Join(known));
       }
       if (!limit.is_number()) v.Fail(metric_where, "expected a number, got " + Validator::Describe(limit));
+      if (metric == "legacy_pcp" && evaluation.config.metrics.legacy_pcp == metrics::LegacyPcpLayout::kNone) {
+        v.Fail(metric_where, "legacy_pcp is computed only with metrics.legacy_pcp set (add \"set\": "
+                             "{\"metrics.legacy_pcp\": \"shelf\"} or \"campus\")");
+      }
       evaluation.checks.push_back({metric, bound, limit.get<double>()});
     }
   }

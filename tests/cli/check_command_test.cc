@@ -60,6 +60,8 @@ TEST_F(CheckCommandTest, InvalidFilesExitWith2NamingFileAndJsonPathBeforeAnythin
       {R"({"name": "x", "dataset": "synthetic", "set": {"merge.no_such_option": 1}})", "/evaluations/1/set: "},
       {R"({"name": "x", "dataset": "synthetic", "params": {"cameras": [1]}})",
        "/evaluations/1/params/cameras: expected"},
+      {R"({"name": "x", "dataset": "synthetic", "min": {"legacy_pcp": 90}})",
+       "/evaluations/1/min/legacy_pcp: legacy_pcp is computed only with metrics.legacy_pcp set"},
       {R"({"name": "x", "dataset": "synthetic", "params": {"camras": 3}})",
        "/evaluations/1/params/camras: unknown parameter 'camras' (did you mean 'cameras'?) (synthetic has: cameras, "
        "people"},

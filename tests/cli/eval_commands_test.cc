@@ -147,6 +147,18 @@ TEST(SweepCommand, ShardsMergeIntoTheFullTable) {
   fs::remove_all(out);
 }
 
+// A dataset read from disk without --root says what is missing (it said "root '' is not a directory").
+TEST(EvalCommand, ADatasetWithoutRootSaysSo) {
+  const test::CommandResult r = test::RunRpt("eval --dataset mvor");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--dataset mvor needs --root DIR"), std::string::npos) << r.err;
+  EXPECT_EQ(test::RunRpt("eval --dataset synthetic --param frames=2 --quiet --out " +
+                         (test::TempDir("no_root") / "out").string())
+                .exit_code,
+            0)
+      << "the generated scene reads no files";
+}
+
 // A --list file's typos are errors that name the file and the place, not rows of defaults.
 TEST(SweepCommand, ListFileTyposNameTheFileAndTheConfiguration) {
   const fs::path out = test::TempDir("sweep_list");
