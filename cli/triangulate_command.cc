@@ -80,6 +80,20 @@ void CheckFollowArgs(const TriangulateArgs& args) {
   }
 }
 
+// The camera-agreement warnings of every sequence (engine/camera_agreement.h), printed on stderr;
+// returned for run.json.
+std::vector<std::string> PrintCameraAgreement(const engine::RunResult& run) {
+  std::vector<std::string> lines;
+  for (const engine::SequenceResult& sequence : run.sequences) {
+    for (std::string& line : engine::CameraAgreementWarnings(sequence.name, sequence.camera_agreement)) {
+      std::fprintf(stderr, "warning: %s\n", line.c_str());
+      lines.push_back(std::move(line));
+    }
+  }
+  std::fflush(stderr);
+  return lines;
+}
+
 // --follow: the live input through the same run loop, the frame lines on stdout, the summary on
 // stderr. Returns the exit code: 0 at the end of the input, 128 + the signal after Ctrl-C.
 int RunFollow(const TriangulateArgs& args) {
@@ -113,6 +127,7 @@ int RunFollow(const TriangulateArgs& args) {
   engine::RunOptions options;
   options.triangulator = config.triangulator;
   options.eval.reset();  // no ground truth: no metrics
+  options.camera_agreement = true;
   options.threads = 1;
   engine::FrameLinesWriter lines(STDOUT_FILENO, "stdout", exports);
   engine::LiveLatency latency(&counts);
@@ -125,9 +140,11 @@ int RunFollow(const TriangulateArgs& args) {
   engine::SinkList sinks({&lines, &latency, folder ? folder->sink() : nullptr});
   const engine::RunResult run = engine::Run(*input, options, &sinks);
   PrintInputWarnings(run.warnings.Except(opened));
+  const std::vector<std::string> agreement = PrintCameraAgreement(run);
   if (folder) {
     info.threads = run.threads;
     info.input_warnings = engine::InputWarningLines(run.warnings);
+    info.input_warnings.insert(info.input_warnings.end(), agreement.begin(), agreement.end());
     folder->Finish(run, config, info);
   }
   const int signal_number = on_interrupt.signal_number();
@@ -155,6 +172,7 @@ void RunTriangulate(const TriangulateArgs& args) {
   engine::RunOptions options;
   options.triangulator = config.triangulator;
   options.eval.reset();  // no ground truth: no metrics
+  options.camera_agreement = true;
   options.threads = args.threads;
   std::unique_ptr<Progress> progress = ProgressOf(input, !args.quiet);
   options.progress = ReportTo(progress.get());
@@ -166,8 +184,10 @@ void RunTriangulate(const TriangulateArgs& args) {
   const engine::RunResult run = engine::Run(input, options, folder.sink());
   progress.reset();
   PrintInputWarnings(run.warnings.Except(opened));
+  const std::vector<std::string> agreement = PrintCameraAgreement(run);
   info.threads = run.threads;
   info.input_warnings = engine::InputWarningLines(run.warnings);
+  info.input_warnings.insert(info.input_warnings.end(), agreement.begin(), agreement.end());
   folder.Finish(run, config, info);
   if (args.json) {
     std::cout << io::DumpJson(engine::TriangulationSummaryJson(run), 2) << "\n";

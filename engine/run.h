@@ -30,6 +30,7 @@
 #include "datasets/frame_source.h"
 #include "datasets/input_warnings.h"
 #include "datasets/sequence.h"
+#include "engine/camera_agreement.h"
 #include "engine/detection_checks.h"
 #include "engine/frame_sink.h"
 #include "engine/loss_table.h"
@@ -53,6 +54,9 @@ struct RunOptions {
   // Where the GT persons are lost (engine/loss_table.h); needs `eval`. Recording what the
   // association did costs time, which counts in the frames' total (not in any step's).
   bool loss_table = false;
+  // Compare each frame's persons with every camera's detections (engine/camera_agreement.h): the
+  // check of the calibration a run without ground truth has.
+  bool camera_agreement = false;
   // A joint-definition adapter (engine/joint_adapter.h): applied to every frame's persons after
   // triangulation, before they are measured and written; null = none. The run refuses (ConfigError)
   // predictions of other joints and a frame the adapter was fitted on. Its time is outside the
@@ -76,6 +80,7 @@ struct SequenceResult {
   metrics::TimingSummary timing;
   std::optional<SequenceCheck> check;     // when RunOptions::checks is set
   std::optional<LossTable> losses;        // when RunOptions::loss_table is set
+  std::vector<CameraAgreement> camera_agreement;  // when RunOptions::camera_agreement is set
   long adapted_persons = 0;               // persons the adapter moved (RunOptions::adapter)
   long unadapted_persons = 0;             // persons it left as they were: no body frame
 };

@@ -351,6 +351,34 @@ TEST(RunTest, TimesThatGoBackAreCountedAndStartTracksAnew) {
   for (const InputWarning& w : ordered.warnings.items()) EXPECT_NE(w.what, what);
 }
 
+// Without ground truth the persons are compared with each camera's detections: two cameras whose
+// calibrations are swapped are named, the others and a right rig are not.
+TEST(RunTest, CamerasWhoseDetectionsDisagreeWithThePersonsAreNamed) {
+  SyntheticParams params = Scene(60);
+  params.cameras = 5;
+  std::vector<Sequence> whole = MakeSyntheticDataset(params);
+  RunOptions options;
+  options.eval.reset();
+  options.camera_agreement = true;
+  const auto warnings = [&](const std::vector<Sequence>& input) {
+    const RunResult run = engine::Run(std::span<const Sequence>(input), options, nullptr);
+    return CameraAgreementWarnings(run.sequences[0].name, run.sequences[0].camera_agreement);
+  };
+  EXPECT_TRUE(warnings(whole).empty());
+  const RunResult right = engine::Run(std::span<const Sequence>(whole), options, nullptr);
+  for (const CameraAgreement& camera : right.sequences[0].camera_agreement) {
+    EXPECT_GE(camera.in_view, kMinAgreementPersons) << camera.camera;
+    EXPECT_GE(static_cast<double>(camera.agreeing) / camera.in_view, 0.8) << camera.camera;
+  }
+  std::swap(whole[0].cameras[0], whole[0].cameras[1]);  // each camera's calibration under the other's detections
+  std::swap(whole[0].cameras[0].name, whole[0].cameras[1].name);
+  const std::vector<std::string> swapped = warnings(whole);
+  ASSERT_EQ(swapped.size(), 2u);
+  EXPECT_NE(swapped[0].find(", camera 'cam0': only "), std::string::npos) << swapped[0];
+  EXPECT_NE(swapped[1].find(", camera 'cam1': only "), std::string::npos) << swapped[1];
+  EXPECT_NE(swapped[0].find("is its calibration right, or is its name another camera's?"), std::string::npos);
+}
+
 TEST(RunTest, ASinkSeesTheSequenceBeginItsFramesInOrderThenTheEnd) {
   const std::vector<Sequence> whole = MakeSyntheticDataset(Scene(5));
   OrderSink sink;
