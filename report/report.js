@@ -19,10 +19,11 @@
   el('subtitle').textContent = [run.date_utc, run.git_revision && 'revision ' + run.git_revision, run.command]
       .filter(Boolean).join(' \u00b7 ');
 
-  const COLUMNS = [['pcp', 'PCP', '%', 1], ['pck100', 'PCK@100', '%', 1], ['pck500', 'PCK@500', '%', 1],
-                   ['mpjpe_mm', 'MPJPE', 'mm', 1], ['recall100', 'Recall@100', '%', 1],
-                   ['recall500', 'Recall@500', '%', 1], ['invalid', 'Invalid', '%', 1], ['f1', 'F1', '%', 1],
-                   ['fps', 'FPS', '1/s', 0], ['frames', 'Frames', '', 0]];
+  const ACCURACY = [['pcp', 'PCP', '%', 1], ['pck100', 'PCK@100', '%', 1], ['pck500', 'PCK@500', '%', 1],
+                    ['mpjpe_mm', 'MPJPE', 'mm', 1], ['recall100', 'Recall@100', '%', 1],
+                    ['recall500', 'Recall@500', '%', 1], ['invalid', 'Invalid', '%', 1], ['f1', 'F1', '%', 1]];
+  // A run without ground truth (rpt triangulate) has no accuracy: its columns are left out.
+  const COLUMNS = (data.evaluated === false ? [] : ACCURACY).concat([['fps', 'FPS', '1/s', 0], ['frames', 'Frames', '', 0]]);
   (function summary() {
     const table = el('summary-table');
     let html = '<thead><tr><th>run</th>' + COLUMNS.map((c) => `<th>${c[1]}${c[2] ? ' (' + c[2] + ')' : ''}</th>`).join('') + '</tr></thead><tbody>';
@@ -127,16 +128,16 @@
     plots += 1;
   }
   const joints = data.per_joint || [];
-  plot('plot-joints', {
+  // Plots that need ground truth are left out of a run without it (rpt triangulate).
+  const hasGt = data.evaluated !== false;
+  if (!hasGt) for (const id of ['plot-joints', 'plot-recall']) el(id).closest('figure').hidden = true;
+  if (hasGt) plot('plot-joints', {
     type: 'bar',
     data: { labels: joints.map((j) => j.joint),
             datasets: [{ label: 'mean error (mm)', data: joints.map((j) => j.mean_error_mm), backgroundColor: '#4f86c6' }] },
     options: { plugins: { legend: { display: false } }, scales: { y: { beginAtZero: true, title: { display: true, text: 'mm' } } } },
   });
-  // Plots that need ground truth say so when the run had none.
-  const NO_GT = ': not available, the run has no ground truth (rpt triangulate)';
-  if (data.evaluated === false) {
-    for (const id of ['plot-joints', 'plot-recall']) el(id).closest('figure').querySelector('figcaption').textContent += NO_GT;
+  if (!hasGt) {
     el('plot-frames').closest('figure').querySelector('figcaption').firstChild.textContent =
         'Persons triangulated over frames (no ground truth) ';
   }
@@ -148,7 +149,7 @@
   const recallPoints = curve.threshold_mm.map((t, i) => ({ x: t, y: curve.recall[i] }));
   // The paper's two recall points, for reference.
   const paperPoints = data.paper ? [{ x: 100, y: data.paper.recall100 }, { x: 500, y: data.paper.recall500 }] : [];
-  plot('plot-recall', {
+  if (hasGt) plot('plot-recall', {
     type: 'scatter',
     data: { datasets: [{ label: 'this run', data: recallPoints, showLine: true, borderColor: '#2f6fb0', pointRadius: 0 }]
         .concat(data.paper ? [{ label: 'paper', data: paperPoints, pointRadius: 5, pointStyle: 'rectRot', backgroundColor: '#c0392b' }] : []) },
@@ -159,12 +160,14 @@
   plot('plot-step-times', {
     type: 'bar',
     data: { labels: steps.map((s) => s.step), datasets: [{ data: steps.map((s) => s.time_us_median), backgroundColor: '#6aa84f' }] },
-    options: { indexAxis: 'y', plugins: { legend: { display: false } }, scales: { x: { title: { display: true, text: 'us' } } } },
+    options: { indexAxis: 'y', plugins: { legend: { display: false } },
+               scales: { x: { title: { display: true, text: 'us' } }, y: { ticks: { autoSkip: false, font: { size: 9 } } } } },
   });
   plot('plot-step-counts', {
     type: 'bar',
     data: { labels: steps.map((s) => s.step), datasets: [{ data: steps.map((s) => s.count_per_frame), backgroundColor: '#b07aa1' }] },
-    options: { indexAxis: 'y', plugins: { legend: { display: false } }, scales: { x: { title: { display: true, text: 'items per frame' } } } },
+    options: { indexAxis: 'y', plugins: { legend: { display: false } },
+               scales: { x: { title: { display: true, text: 'items per frame' } }, y: { ticks: { autoSkip: false, font: { size: 9 } } } } },
   });
 
   const sequences = data.sequences || [];
@@ -196,10 +199,10 @@
           { label: 'missed GT', data: missed, showLine: true, stepped: true, borderColor: '#ff2d2d', backgroundColor: '#ff2d2d', pointRadius: 0, borderWidth: 1, yAxisID: 'count' },
           { label: 'invalid predictions', data: invalid, showLine: true, stepped: true, borderColor: '#f58231', backgroundColor: '#f58231', pointRadius: 0, borderWidth: 1, yAxisID: 'count' },
         ]).concat([
-          { label: 'selected frame', data: [], pointRadius: 6, pointStyle: 'triangle', backgroundColor: '#000', yAxisID: 'y' },
+          { label: 'selected frame', data: [], pointRadius: 6, pointStyle: 'triangle', backgroundColor: '#000', yAxisID: data.evaluated === false ? 'count' : 'y' },
         ]) },
         options: {
-          scales: { x: { title: { display: true, text: 'frame' } }, y: { beginAtZero: true, title: { display: true, text: 'mm' } },
+          scales: { x: { title: { display: true, text: 'frame' } }, y: { display: data.evaluated !== false, beginAtZero: true, title: { display: true, text: 'mm' } },
                     count: { position: 'right', beginAtZero: true, grid: { drawOnChartArea: false }, title: { display: true, text: 'persons' } } },
           onClick: (event) => {
             const hits = framesChart.getElementsAtEventForMode(event, 'nearest', { axis: 'x', intersect: false }, true);
@@ -231,9 +234,14 @@
   function markFrame() {
     if (!framesChart || !scenes.length) return;
     const scene = scenes[current];
-    const set = framesChart.data.datasets[3];
+    // The last series marks the frame shown: on the MPJPE (mm) axis with ground truth, else on
+    // the persons-triangulated (count) axis.
+    const datasets = framesChart.data.datasets;
+    const set = datasets[datasets.length - 1];
     const seq = sequences[scene.sequence];
-    set.data = scene.sequence === framesChart.rptSequence ? [{ x: scene.frame, y: seq.mpjpe_mm[scene.frame] === null ? 0 : seq.mpjpe_mm[scene.frame] }] : [];
+    const series = data.evaluated === false ? seq.num_predictions : seq.mpjpe_mm;
+    const y = series && series[scene.frame] !== null && series[scene.frame] !== undefined ? series[scene.frame] : 0;
+    set.data = scene.sequence === framesChart.rptSequence ? [{ x: scene.frame, y: y }] : [];
     framesChart.update('none');
   }
   el('prev').addEventListener('click', () => showScene(Math.max(0, current - 1)));

@@ -234,6 +234,26 @@ TEST(ReportBrowser, RunWhoseInputIsGone) {
   EXPECT_NE(dom.find("Frames: not available"), std::string::npos);
 }
 
+// A run without ground truth (rpt triangulate): the frames plot marks the frame shown on the
+// persons axis. It threw (the marker was the 4th series, which such a run does not have) and the
+// page stopped drawing.
+TEST(ReportBrowser, TriangulateRunWithoutGroundTruth) {
+  RPT_REQUIRE_CHROMIUM();
+  const fs::path dir = TempDir("report_browser_triangulate");
+  const CommandResult run = RunRpt("triangulate --dataset synthetic --param frames=20 --quiet --out " + dir.string());
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const CommandResult r = RunRpt("report " + dir.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string dom = DumpDom(dir / "report.html", "?scene=3");
+  ASSERT_FALSE(dom.empty()) << "chromium printed no DOM";
+  const size_t errors_at = dom.find("id=\"rpt-errors\"");
+  EXPECT_EQ(BodyAttribute(dom, "data-rpt-errors"), "0")
+      << "console errors: " << dom.substr(errors_at, dom.find("</pre>", errors_at) - errors_at);
+  EXPECT_EQ(BodyAttribute(dom, "data-rpt-ready"), "1");
+  EXPECT_NE(BodyAttribute(dom, "data-rpt-skeletons"), "0");
+  fs::remove_all(dir);
+}
+
 // Cameras at T = 1e308 and 2e6 m (accepted with warnings): the viewer drew a grid of 1e308 lines
 // (RangeError) and stopped; now the page has no console error and draws the near cameras.
 TEST(ReportBrowser, FarCamerasDoNotBreakTheViewer) {
