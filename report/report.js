@@ -6,8 +6,8 @@
   'use strict';
   const data = JSON.parse(document.getElementById('rpt-data').textContent);
   const body = document.body;
-  const PALETTE = ['#e6194b', '#3cb44b', '#4363d8', '#f58231', '#911eb4', '#42d4f4', '#f032e6', '#bfef45',
-                   '#fabed4', '#469990', '#dcbeff', '#9a6324', '#fffac8', '#aaffc3', '#ffd8b1'];
+  // The tracks' colours as rpt render draws them (engine/track_palette.h, in the page's data).
+  const PALETTE = data.track_palette && data.track_palette.length ? data.track_palette : ['#1f77b4'];
   const GT_COLOUR = '#b8c4cf', MISSED_COLOUR = '#ff2d2d', DETECTION_COLOUR = '#9aa3ad', CAMERA_COLOUR = '#7fa7d1';
   const trackColour = (id) => (id >= 0 ? PALETTE[id % PALETTE.length] : '#f58231');
   const fmt = (v, digits) => (v === null || v === undefined || Number.isNaN(v) ? '-' : Number(v).toFixed(digits));

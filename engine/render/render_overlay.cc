@@ -7,6 +7,8 @@
 #include <opencv2/imgproc.hpp>
 #include <utility>
 
+#include "engine/track_palette.h"
+
 namespace rpt::engine {
 namespace {
 
@@ -16,10 +18,6 @@ const cv::Scalar kWhite(255, 255, 255);
 constexpr int kShift = 4;  // sub-pixel bits of the drawing coordinates
 constexpr double kSubpixel = 1 << kShift;
 
-// Tableau 10 without its grey (grey marks unmatched detections), BGR.
-const cv::Scalar kPalette[] = {{180, 119, 31}, {14, 127, 255},  {44, 160, 44},  {40, 39, 214}, {189, 103, 148},
-                               {75, 86, 140},  {194, 119, 227}, {34, 189, 188}, {207, 190, 23}};
-constexpr int kPaletteSize = sizeof(kPalette) / sizeof(kPalette[0]);
 
 // Line widths and sizes grow with the image so that an HD frame reads like a VGA one.
 struct Style {
@@ -197,8 +195,8 @@ void DrawLegend(const OverlayInput& input, const Style& style, cv::Mat* canvas) 
 }  // namespace
 
 cv::Scalar PersonColour(int track_id, int person_idx) {
-  const int key = track_id >= 0 ? track_id : person_idx;
-  return kPalette[((key % kPaletteSize) + kPaletteSize) % kPaletteSize];
+  const Rgb colour = kTrackPalette[TrackPaletteIndex(track_id >= 0 ? track_id : person_idx)];
+  return cv::Scalar(colour.b, colour.g, colour.r);  // OpenCV's BGR
 }
 
 cv::Mat BlankCanvas(const Camera& camera) { return cv::Mat(camera.height, camera.width, CV_8UC3, kWhite); }

@@ -3,9 +3,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "engine/report/report_frame_outcomes.h"
 #include "engine/reprojection.h"
+#include "engine/track_palette.h"
 #include "core/joints.h"
 #include "core/option_codec.h"
 #include "report_assets.h"
@@ -197,6 +199,13 @@ OrderedJson BuildReportData(const RecordedRun& run, const std::vector<Sequence>*
   data["steps"] = Steps(run.summary);
   data["config"] = run.config;
   data["run"] = run.run_info;
+  OrderedJson palette = OrderedJson::array();  // the tracks' colours, as rpt render draws them
+  for (const Rgb& c : kTrackPalette) {
+    char hex[8];
+    std::snprintf(hex, sizeof(hex), "#%02x%02x%02x", c.r, c.g, c.b);
+    palette.push_back(hex);
+  }
+  data["track_palette"] = palette;
   data["max_scene_frames"] = options.max_scene_frames;
   std::vector<std::vector<Poses3D>> predictions;
   std::string why = why_no_input;
