@@ -97,10 +97,15 @@ void PrintReport(const nlohmann::ordered_json& report, const std::vector<std::st
         PrintableText(seq["sequence"].get<std::string>(), LineBreaks::kEscape).c_str(), seq["frames"].get<int>(),
         seq["frames_with_detections"].get<int>(), seq["gt_persons"].get<long>(), seq["gt_joints"].get<int>(),
         seq["detection_joints"].get<int>());
-    std::printf("  room centre (%.2f, %.2f, %.2f) m, size (%.2f, %.2f, %.2f) m\n", seq["room_center_m"][0].get<double>(),
-                seq["room_center_m"][1].get<double>(), seq["room_center_m"][2].get<double>(),
-                seq["room_size_m"][0].get<double>(), seq["room_size_m"][1].get<double>(),
-                seq["room_size_m"][2].get<double>());
+    const auto& size = seq["room_size_m"];
+    if (size[0].get<double>() <= 0 && size[1].get<double>() <= 0 && size[2].get<double>() <= 0) {
+      std::printf("  room: none (nothing is dropped for being outside it; room_check.size_m sets one)\n");
+    } else {
+      std::printf("  room centre (%.2f, %.2f, %.2f) m, size (%.2f, %.2f, %.2f) m\n", seq["room_center_m"][0].get<double>(),
+                  seq["room_center_m"][1].get<double>(), seq["room_center_m"][2].get<double>(),
+                  seq["room_size_m"][0].get<double>(), seq["room_size_m"][1].get<double>(),
+                  seq["room_size_m"][2].get<double>());
+    }
     std::printf("  %-10s %-26s %-11s %-8s %10s %10s %18s %14s\n", "camera", "centre (m)", "image", "model",
                 "detections", "GT comp.", "GT->det px (med)", "rel. to box");
     for (const auto& cam : seq["cameras"]) {

@@ -558,6 +558,7 @@ TEST_F(Triangulate, OwnDataMistakesAreSaidNotSilent) {
   EXPECT_NE(inspect.out.find(std::to_string(kFrames) + " frames (" + std::to_string(kFrames) + " with detections)"),
             std::string::npos)
       << inspect.out;
+  EXPECT_NE(inspect.out.find("  room: none (nothing is dropped for being outside it"), std::string::npos) << inspect.out;
 }
 
 }  // namespace
