@@ -24,7 +24,12 @@ void RegisterDatasetsCommand(CLI::App& app) {
     for (const DatasetEntry& entry : DatasetRegistry()) {
       const DatasetInfo& info = entry.info;
       std::printf("%s: %s\n", info.name.c_str(), info.description.c_str());
-      std::printf("  on disk: %s\n", info.layout.c_str());
+      // A layout of several lines: the later ones under the first.
+      std::string layout = info.layout;
+      for (size_t at = layout.find('\n'); at != std::string::npos; at = layout.find('\n', at + 1)) {
+        layout.insert(at + 1, "           ");
+      }
+      std::printf("  on disk: %s\n", layout.c_str());
       for (const DatasetParam& p : info.params) {
         std::printf("  --param %s=%s  %s [%s]\n", p.name.c_str(), p.default_value.empty() ? "..." : p.default_value.c_str(),
                     p.help.c_str(), p.type.c_str());
