@@ -189,6 +189,17 @@ OrderedJson TriangulationSummaryJson(const RunResult& run) {
   j["step_count_per_frame"] = StepCountsJson(run.counts);
   j["counter_per_frame"] = CountersJson(run.counts);
   j["detection_noise_m"] = run.counts.noise_frames > 0 ? OrderedJson(run.counts.noise_m_median) : OrderedJson(nullptr);
+  // Per camera, how many 3D persons in its view match its detections (engine/camera_agreement.h).
+  OrderedJson agreement = OrderedJson::array();
+  for (const SequenceResult& sequence : run.sequences) {
+    for (const CameraAgreement& camera : sequence.camera_agreement) {
+      agreement.push_back({{"sequence", sequence.name},
+                           {"camera", camera.camera},
+                           {"persons_in_view", camera.in_view},
+                           {"persons_matching", camera.agreeing}});
+    }
+  }
+  if (!agreement.empty()) j["camera_agreement"] = agreement;
   if (run.sequences.size() > 1) {
     j["per_sequence"] = OrderedJson::array();
     for (const SequenceResult& sequence : run.sequences) {

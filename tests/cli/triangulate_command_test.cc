@@ -513,6 +513,13 @@ TEST_F(Triangulate, OwnDataMistakesAreSaidNotSilent) {
       test::RunRpt("triangulate --cameras " + (dir_ / "cameras_mm.toml").string() + " --cameras-units mm" + input +
                    " --fps 25 --quiet --out " + (dir_ / "mm").string());
   ASSERT_EQ(mm.exit_code, 0) << mm.err;
+  // Every camera's persons match its detections (the counts behind the swapped-camera warning).
+  const Json summary = ReadJson(dir_ / "m" / "summary.json");
+  ASSERT_EQ(summary["camera_agreement"].size(), scene_.cameras.size());
+  for (const Json& camera : summary["camera_agreement"]) {
+    EXPECT_GT(camera["persons_in_view"].get<long>(), 0) << camera;
+    EXPECT_GE(camera["persons_matching"].get<double>(), 0.8 * camera["persons_in_view"].get<double>()) << camera;
+  }
   const Json a = ReadJson(dir_ / "m" / "predictions.json"), b = ReadJson(dir_ / "mm" / "predictions.json");
   ASSERT_EQ(a["frames"].size(), b["frames"].size());
   for (size_t f = 0; f < a["frames"].size(); ++f) {
