@@ -318,7 +318,7 @@ std::string Camera::Validate() const {
 
   if (count == 0) return {};
   std::ostringstream out;
-  out << "camera '" << name << "' (" << DistortionModelName(model) << "): " << problems.str();
+  out << "camera '" << name << "' (lens " << DistortionModelName(model) << "): " << problems.str();
   return out.str();
 }
 

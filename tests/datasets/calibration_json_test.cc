@@ -115,7 +115,7 @@ TEST(CalibrationJson, CamerasAFormatCannotHoldAreRefusedNamingTheCamera) {
   rig = test::MakeRig(true);
   rig[2].R(0, 0) = 2;
   EXPECT_THAT(test::InputErrorOf([&] { WriteCalibration(dir.path() / "out.json", rig); }),
-              HasSubstr("out.json: cannot write camera 'cam_c' (opencv): R is not orthonormal"));
+              HasSubstr("out.json: cannot write camera 'cam_c' (lens opencv): R is not orthonormal"));
   EXPECT_THAT(test::InputErrorOf([&] { WriteCalibration(dir.path() / "out.json", {}); }),
               HasSubstr("no cameras to write"));
 }

@@ -193,7 +193,7 @@ def test_camera_errors():
         rpt.Camera(width=10, height=10, K=np.eye(2))
     with pytest.raises(ValueError, match=r"K: contains NaN"):
         rpt.Camera(width=10, height=10, K=np.full((3, 3), np.nan))
-    with pytest.raises(rpt.InputError, match=r"^camera 'a' \(none\): image size must be positive, got 0x10$"):
+    with pytest.raises(rpt.InputError, match=r"^camera 'a' \(lens none\): image size must be positive, got 0x10$"):
         rpt.Camera(name="a", width=0, height=10, K=np.eye(3))
     # A ragged list is this argument's ValueError (it was an internal error).
     with pytest.raises(ValueError, match=r"^K: not an array of numbers \("):
