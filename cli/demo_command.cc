@@ -75,7 +75,8 @@ void RunDemo(DemoOptions o) {
     std::cout << j.dump(2) << "\n";
     return;
   }
-  std::printf("rpt demo: %d cameras, %d people, %d frames, %s joints (%zu out), %s detector, %s lens, seed %llu\n",
+  std::printf("rpt demo: %d cameras, %d people, %d frames, %s joints (%zu in the output, with the derived ones), "
+              "%s simulated detector, lens distortion %s, seed %llu\n",
               o.cameras, o.people, o.frames, o.joints.c_str(), run.sequences.front().output_joints.size(), o.detector.c_str(),
               o.distortion.c_str(), static_cast<unsigned long long>(o.seed));
   std::printf("persons present %ld, found %ld, matched %d (recall@500 %.1f %%, invalid %.1f %%)\n", run.gt_persons,
@@ -88,6 +89,9 @@ void RunDemo(DemoOptions o) {
   std::printf("time per frame: median %.1f us, mean %.1f us (%.0f FPS, 2D to 3D, one thread)\n",
               run.timing.frame_us_median, run.timing.frame_us_mean, run.timing.fps);
   engine::PrintStepTimes(std::cout, run.timing, &run.counts);
+  std::printf("\nNext: your own cameras and detections (rpt triangulate --cameras FILE --detections PATH; "
+              "docs/own_data.md), or a public dataset with its ground truth (rpt eval --dataset NAME --root DIR; "
+              "rpt datasets lists them).\n");
 }
 
 }  // namespace
