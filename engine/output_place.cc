@@ -13,20 +13,22 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Whether `inner` is `outer` or lies below it (both absolute, normalised).
+// Whether `inner` is `outer` or lies below it (both absolute, normalised, no trailing separator).
 bool Within(const fs::path& inner, const fs::path& outer) {
   auto o = outer.begin(), i = inner.begin();
   for (; o != outer.end(); ++o, ++i) {
-    if (o->empty()) continue;  // a trailing separator
     if (i == inner.end() || *i != *o) return false;
   }
   return true;
 }
 
+// `path` absolute, with links resolved where it exists, normalised, without a trailing separator.
 fs::path Resolved(const fs::path& path) {
   std::error_code ec;
   fs::path resolved = fs::weakly_canonical(fs::absolute(path, ec), ec);
-  return ec ? fs::absolute(path).lexically_normal() : resolved;
+  if (ec) resolved = fs::absolute(path).lexically_normal();
+  while (!resolved.has_filename() && resolved.has_relative_path()) resolved = resolved.parent_path();  // "a/b/"
+  return resolved;
 }
 
 }  // namespace

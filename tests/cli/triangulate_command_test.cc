@@ -492,6 +492,9 @@ TEST_F(Triangulate, AnOutputFolderInTheInputIsRefused) {
               std::string::npos)
         << r.err;
   }
+  const test::CommandResult slash = test::RunRpt(run + (dir_ / "openpose").string() + "/");  // a trailing separator
+  EXPECT_EQ(slash.exit_code, 2) << slash.err;
+  EXPECT_NE(slash.err.find("is the input"), std::string::npos) << slash.err;
   EXPECT_EQ(files(), before) << "the input folder is as it was";
   EXPECT_EQ(test::RunRpt(run + (dir_ / "elsewhere").string()).exit_code, 0) << "beside it is fine";
 }
