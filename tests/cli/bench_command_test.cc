@@ -35,6 +35,16 @@ TEST(BenchCommand, ReportsStepsAccuracyAndBaseline) {
   const test::CommandResult text = test::RunRpt("bench --scene few-views --frames 5 --repeat 1 --no-baseline");
   ASSERT_EQ(text.exit_code, 0) << text.err;
   EXPECT_NE(text.out.find("; SIMD " + simd + "\n"), std::string::npos) << text.out;
+  // A scene without a target says so in both target rows (not "0", which read as a 0 us target).
+  const auto row = [&](const std::string& label) {
+    const size_t at = text.out.find("\n" + label + " ");
+    return at == std::string::npos ? std::string() : text.out.substr(at + 1, text.out.find('\n', at + 1) - at - 1);
+  };
+  for (const std::string label : {"target (us)", "target met"}) {
+    const std::string line = row(label);
+    ASSERT_FALSE(line.empty()) << label << " missing:\n" << text.out;
+    EXPECT_EQ(line.back(), '-') << line;
+  }
   EXPECT_EQ(test::RunRpt("bench --scene nosuch").exit_code, 2);
 }
 
