@@ -27,6 +27,7 @@
 #include "core/text.h"
 #include "datasets/io/staged_output.h"
 #include "engine/input.h"
+#include "engine/output_place.h"
 #include "engine/render/image_codecs.h"
 #include "engine/render/render_overlay.h"
 #include "engine/render/render_selection.h"
@@ -297,6 +298,7 @@ void RunRender(const RenderArgs& args) {
     default_name = run.filename().string();
   }
   const std::filesystem::path out_dir = !args.out.empty() ? args.out : "out/render-" + default_name;
+  engine::CheckOutputOutsideInput(out_dir, args.input);  // the input options' (empty with --run)
   const bool png = args.format != "mp4";
   ImageProblems problems;
   long pngs = 0;
