@@ -49,13 +49,14 @@ std::optional<std::vector<Sequence>> ReloadRecordedInput(const engine::RecordedR
     *why = std::string("cannot parse the recorded command: ") + e.what();
     return std::nullopt;
   }
-  // Relative paths are the run's: taken from the folder it ran in, when run.json records one that
-  // exists (else from the current folder).
+  // Relative paths are the run's: taken from the folder it ran in (run.json records it relative to
+  // the run folder), when that folder exists; else from the current folder.
   std::filesystem::path base;
   const auto recorded_dir = run.run_info.find("working_directory");
   if (recorded_dir != run.run_info.end() && recorded_dir->is_string()) {
+    const std::filesystem::path where = run.dir / recorded_dir->get<std::string>();
     std::error_code ec;
-    if (std::filesystem::is_directory(recorded_dir->get<std::string>(), ec)) base = recorded_dir->get<std::string>();
+    if (std::filesystem::is_directory(where, ec)) base = where.lexically_normal();
   }
   bool unreadable = false;
   const std::vector<std::string> problems = engine::InputDigestProblems(run.run_info, input, &unreadable, base);

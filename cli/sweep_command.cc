@@ -167,6 +167,7 @@ void RunSweep(const SweepArgs& args) {
   bool per_config_input = false;
   const engine::Config base_options = ResolveConfig(args.config);
   const std::string base_config = engine::DumpConfig(base_options, false);
+  const std::string base_metrics = metrics_text(base_options);
   for (int i : mine) {
     ConfigArgs config_args = args.config;
     engine::InputSpec input = args.input;
@@ -185,7 +186,7 @@ void RunSweep(const SweepArgs& args) {
     }
     inputs.push_back(input);
     is_default.push_back(input.params == args.input.params && engine::DumpConfig(configs.back(), false) == base_config);
-    measured_differently.push_back(metrics_text(configs.back()) != metrics_text(base_options));
+    measured_differently.push_back(metrics_text(configs.back()) != base_metrics);
     if (measured_differently.back()) {
       std::fprintf(stderr,
                    "warning: configuration %s changes a metrics option: it is measured differently from the others, "
@@ -270,7 +271,7 @@ void RunSweep(const SweepArgs& args) {
   file["shard"] = args.shard;
   engine::RunInfo info = engine::CollectRunInfo(threads);
   info.input_warnings = engine::InputWarningLines(warnings);
-  file["run"] = engine::RunInfoJson(info);
+  file["run"] = engine::RunInfoJson(info, args.out);
   file["sweep"] = engine::SweepIdentity(all, base_config, args.input);
   file["base"] = base;
   file["rows"] = rows;
@@ -398,7 +399,7 @@ void RunMerge(const std::vector<std::string>& inputs, const std::string& out) {
   OrderedJson file;
   file["total"] = total;
   file["shard"] = "1/1";
-  file["run"] = engine::RunInfoJson(engine::CollectRunInfo(1));  // the merge; the shards' runs follow
+  file["run"] = engine::RunInfoJson(engine::CollectRunInfo(1), out);  // the merge; the shards' runs follow
   file["shard_runs"] = shard_runs;
   file["sweep"] = OrderedJson::parse(sweep.dump());
   file["base"] = base;

@@ -2,6 +2,7 @@
 // Small string helpers for messages and listings.
 #pragma once
 
+#include <cstdio>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -20,6 +21,13 @@ inline std::string_view TrimBlanks(std::string_view text) {
   const size_t first = text.find_first_not_of(kBlanks);
   if (first == std::string_view::npos) return {};
   return text.substr(first, text.find_last_not_of(kBlanks) - first + 1);
+}
+
+// A share (0.42) as a rounded percentage for messages ("42 %").
+inline std::string PercentText(double share) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.0f %%", 100.0 * share);
+  return text;
 }
 
 // "a, b, c".

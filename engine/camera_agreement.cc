@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 
 #include "core/printable_text.h"
@@ -76,10 +75,8 @@ std::vector<std::string> CameraAgreementWarnings(const std::string& sequence, co
     if (camera.in_view < kMinAgreementPersons) continue;
     const double share = static_cast<double>(camera.agreeing) / static_cast<double>(camera.in_view);
     if (share >= kMinAgreementShare) continue;
-    char percent[32];
-    std::snprintf(percent, sizeof(percent), "%.0f %%", 100.0 * share);
     lines.push_back(PrintableText(sequence + ", camera " + QuoteName(camera.camera) + ": only " +
-                                  percent + " of the " + std::to_string(camera.in_view) +
+                                  PercentText(share) + " of the " + std::to_string(camera.in_view) +
                                   " 3D persons in its view match its detections (expected most): is its calibration "
                                   "right, or is its name another camera's?"));
   }

@@ -11,6 +11,7 @@
 
 #include "core/nan.h"
 #include "core/printable_text.h"
+#include "core/text.h"
 
 namespace rpt::engine {
 // Not an anonymous namespace: DetectionChecker::State, a class with linkage, holds these types.
@@ -129,12 +130,6 @@ bool HasInput(const SequenceFrame& frame) {
     if (view.num_persons() > 0) return true;
   }
   return false;
-}
-
-std::string PercentText(double share) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%.0f %%", 100.0 * share);
-  return text;
 }
 
 std::string FixedText(double value, int decimals) {

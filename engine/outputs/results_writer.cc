@@ -294,14 +294,19 @@ std::string InvalidCausesLine(const metrics::MetricsResult& m, double gate_mm) {
   return line;
 }
 
-OrderedJson RunInfoJson(const RunInfo& info) {
+OrderedJson RunInfoJson(const RunInfo& info, const std::filesystem::path& written_in) {
   OrderedJson j;
   j["run_id"] = info.run_id;
   j["git_revision"] = info.git_revision;
   j["date_utc"] = info.date_utc;
   j["command"] = info.command_line;
   j["argv"] = info.command_args;
-  j["working_directory"] = info.working_directory;
+  if (!written_in.empty() && !info.working_directory.empty()) {
+    std::error_code ec;
+    const std::filesystem::path folder = std::filesystem::weakly_canonical(std::filesystem::absolute(written_in), ec);
+    const std::filesystem::path relative = std::filesystem::path(info.working_directory).lexically_relative(folder);
+    if (!ec && !relative.empty()) j["working_directory"] = relative.generic_string();
+  }
   j["cpu"] = info.cpu;
   j["hardware_threads"] = info.hardware_threads;
   j["threads"] = info.threads;
@@ -317,8 +322,8 @@ OrderedJson RunInfoJson(const RunInfo& info) {
 namespace {
 
 // The files of one run into `staging`, run.json last.
-void WriteRunFiles(const std::filesystem::path& staging, const RunResult& run, const Config& config,
-                   const RunInfo& info, const OrderedJson& extra_summary,
+void WriteRunFiles(const std::filesystem::path& staging, const std::filesystem::path& target, const RunResult& run,
+                   const Config& config, const RunInfo& info, const OrderedJson& extra_summary,
                    std::vector<std::pair<std::string, int>>* replaced) {
   const auto write_json = [&](const std::string& name, const OrderedJson& value) {
     int count = 0;
@@ -334,7 +339,7 @@ void WriteRunFiles(const std::filesystem::path& staging, const RunResult& run, c
   if (!run.evaluated) {  // no metrics: no summary tables, no per-joint errors
     io::WriteTextFile(staging / "steps.csv", io::NamedBy::kRpt, StepsCsv(run.timing, run.counts));
     io::WriteTextFile(staging / "config.json", io::NamedBy::kRpt, DumpConfig(config, /*with_comments=*/false));
-    write_json("run.json", RunInfoJson(info));  // last: the marker of a complete run
+    write_json("run.json", RunInfoJson(info, target));  // last: the marker of a complete run
     return;
   }
   std::string label;
@@ -368,7 +373,7 @@ void WriteRunFiles(const std::filesystem::path& staging, const RunResult& run, c
     if (ec) throw InputError((staging / "losses.csv").string() + ": cannot remove the earlier run's table: " + ec.message());
   }
   io::WriteTextFile(staging / "config.json", io::NamedBy::kRpt, DumpConfig(config, /*with_comments=*/false));
-  write_json("run.json", RunInfoJson(info));  // last: the marker of a complete run
+  write_json("run.json", RunInfoJson(info, target));  // last: the marker of a complete run
 }
 
 // Removes what `format` writes in `folder` (a file, or the trc folder with its files), links
@@ -435,7 +440,7 @@ void RunFolder::Finish(const RunResult& run, const Config& config, const RunInfo
     for (const ExportFormat format : kExportFormats) {
       if (!exports_.Has(format)) RemoveExport(folder_->path(), format);
     }
-    WriteRunFiles(folder_->path(), run, config, info, extra_summary, &replaced);
+    WriteRunFiles(folder_->path(), folder_->target(), run, config, info, extra_summary, &replaced);
     folder_->Commit();
   } catch (const InputError& e) {
     throw InputError(folder_->NamedAsTarget(e.what()));

@@ -103,6 +103,8 @@ class RunFolder {
 // run.json: run id, git revision, date, command ("command": one line for people; "argv": the
 // argument vector, which keeps paths with spaces whole), machine, threads, build, and
 // "input_warnings" (the readers' correction lines, [] when none).
-nlohmann::ordered_json RunInfoJson(const RunInfo& info);
+// `written_in`: the folder the JSON is written in; "working_directory" is then the folder the command
+// ran in relative to it (omitted without it, or when there is no relative path).
+nlohmann::ordered_json RunInfoJson(const RunInfo& info, const std::filesystem::path& written_in = {});
 
 }  // namespace rpt::engine

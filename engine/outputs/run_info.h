@@ -17,8 +17,9 @@ struct RunInfo {
   std::string build_type;
   std::string command_line;               // for people: "rpt" and the arguments joined by spaces
   std::vector<std::string> command_args;  // the same as the argument vector ("rpt" first), for programs
-  // The folder the command ran in: its relative paths are taken from there (rpt report, rpt render
-  // --run re-load the input from it). Empty when unknown.
+  // The folder the command ran in (absolute; empty when unknown): its relative paths are taken from
+  // there (rpt report, rpt render --run re-load the input from it). Files record it relative to the
+  // folder they are written in (RunInfoJson), so a project moved as a whole still re-loads.
   std::string working_directory;
   std::string date_utc;
   std::string run_id;  // unique per run ("<date>-<pid>-<random>"); every JSON output of the run carries it
