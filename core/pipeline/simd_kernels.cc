@@ -74,7 +74,12 @@ HWY_INLINE V ExpNeg(D d, V x) {
   const hn::RebindToSigned<D> di;
   const auto in_range = hn::Lt(x, hn::Set(d, 700.0));  // false for NaN too
   const V t = hn::Mul(hn::Neg(x), hn::Set(d, 1.4426950408889634));
-  const V n = hn::Round(t);  // to nearest, ties to even: std::nearbyint in the default rounding mode
+  // Round to nearest, ties to even (std::nearbyint in the default rounding mode) by adding 1.5 * 2^52:
+  // the sum's low mantissa bits hold n as an integer, which saves the double -> int64 conversion
+  // that AVX2 lacks (valid for |t| < 2^51; in range |t| < 1010).
+  const V magic = hn::Set(d, 6755399441055744.0);
+  const V shifted = hn::Add(t, magic);
+  const V n = hn::Sub(shifted, magic);
   const V f = hn::Sub(t, n);
   const V l = hn::Mul(hn::Set(d, 0.6931471805599453), f);
   V p = hn::Set(d, 1.0 / 5040);
@@ -85,11 +90,12 @@ HWY_INLINE V ExpNeg(D d, V x) {
   p = hn::Add(hn::Set(d, 0.5), hn::Mul(l, p));
   p = hn::Add(hn::Set(d, 1.0), hn::Mul(l, p));
   p = hn::Add(hn::Set(d, 1.0), hn::Mul(l, p));
-  // Out-of-range lanes would overflow the conversion: give them n = 0 (their result is 0 anyway).
-  const auto exponent = hn::Add(hn::ConvertTo(di, hn::IfThenElseZero(in_range, n)), hn::Set(di, int64_t{1023}));
-  const auto positive = hn::RebindMask(d, hn::Gt(exponent, hn::Zero(di)));
+  // 2^n from the integer bits: (n + 1023) << 52, the sum's upper bits shifted out. For x < 700,
+  // n >= -1010, so n + 1023 >= 13 (FastExpNeg's test for a non-positive exponent never fires);
+  // lanes out of range give 0.
+  const auto exponent = hn::Add(hn::BitCast(di, shifted), hn::Set(di, int64_t{1023}));
   const V scale = hn::BitCast(d, hn::ShiftLeft<52>(exponent));
-  return hn::IfThenElseZero(hn::And(in_range, positive), hn::Mul(p, scale));
+  return hn::IfThenElseZero(in_range, hn::Mul(p, scale));
 }
 
 // ReprojectionError (proposal_scoring.h) of (x, y, z) against (u, v) in the view of projection P

@@ -453,6 +453,25 @@ TEST(SimdKernels, ExpMatchesFastExpNegOverItsWholeRange) {
       ASSERT_TRUE(SameBits(score[i], FastExpNeg(x))) << simd::ActivePath() << " x=" << x;
       ASSERT_NEAR(score[i], std::exp(-x), 1e-8 * std::exp(-x));
     }
+    // Beyond 30 through the reprojection kernel alone (residual given: score = FastExpNeg(residual^2)),
+    // up to the cut-off at 700 and past it, and NaN.
+    std::vector<double> residual(n);
+    for (int i = 0; i < n; ++i) residual[i] = std::sqrt(750.0 * i / (n - 2));
+    residual[n - 1] = std::numeric_limits<double>::quiet_NaN();
+    std::fill(score.begin(), score.end(), 1.0);
+    std::fill(geometric.begin(), geometric.end(), -1.0);
+    simd::ScoreJoints({.use_reprojection = true, .use_ray_gap = false, .inv_residual = 1, .inv_ray_gap = 1},
+                      {.Pa = nullptr, .Pb = nullptr, .scale_a = 1, .scale_b = 1, .adaptive = true}, none, none, n,
+                      xyz.data(), gap.data(), residual.data(), score.data(), geometric.data());
+    int nonzero = 0;
+    for (int i = 0; i < n; ++i) {
+      const double x = residual[i] * residual[i];
+      ASSERT_TRUE(SameBits(score[i], FastExpNeg(x))) << simd::ActivePath() << " x=" << x;
+      if (x < 700) ASSERT_NEAR(score[i], std::exp(-x), 1e-8 * std::exp(-x)) << " x=" << x;
+      else ASSERT_EQ(score[i], 0.0) << " x=" << x;
+      nonzero += score[i] > 0;
+    }
+    EXPECT_GT(nonzero, n * 9 / 10);  // the range up to 700 is covered
   });
 }
 
