@@ -94,7 +94,8 @@ RPT_ALWAYS_INLINE double JointResidual(const ViewGeometry& ga, const ViewGeometr
 // `limb_columns` (the same limbs as columns; may be null) the first pass is the SIMD kernel, for
 // kMinLimbsForKernel limbs or more at a time (below that, the call and its gathers cost more than
 // the scalar loop: 16 body limbs ran 0.5-0.9 us slower per frame in each of score and
-// triangulate_full, the 132 whole-body limbs 3 us faster).
+// triangulate_full, the 132 whole-body limbs 3 us faster, with AVX-512; below AVX-512 the kernel
+// loads the joints one limb at a time, as gathers there cost more than they save).
 inline constexpr size_t kMinLimbsForKernel = 32;
 RPT_ALWAYS_INLINE int PruneImplausibleLimbs(std::span<const ResolvedLimb> limbs, const LimbColumns* limb_columns,
                                             const Eigen::Vector3d* xyz, double* score) {
