@@ -50,6 +50,7 @@ struct TriangulateArgs {
   bool json = false;
   bool quiet = false;
   std::string follow;  // --follow PATH: live input ("-" = standard input)
+  double wait_for_lines_s = 0;  // --wait-for-lines: at the end of a regular file, wait for more
   bool skip_bad_lines = false;
   int spin_us = engine::kDefaultSpinUs;
 };
@@ -63,8 +64,9 @@ constexpr const char* kFollowHelp =
     "optional; cameras are --cameras' names; pixels of the original image, a joint null or of score 0 is\n"
     "missing. Output on stdout, one line per frame as soon as it is done, after a first line with the\n"
     "joints and units: {\"id\", \"time\" (s), \"persons\": [[[x, y, z, score], ...]] (m, world frame),\n"
-    "\"track_ids\", \"provenance\"}. Ends at the end of the input (exit 0) or on Ctrl-C (exit 130), with a\n"
-    "summary on stderr; a bad line is an error naming it (exit 2) unless --skip-bad-lines.";
+    "\"track_ids\", \"provenance\"}. Ends at the end of the input (exit 0; a file still being written:\n"
+    "--wait-for-lines) or on Ctrl-C (exit 130), with a summary on stderr; a bad line is an error naming it\n"
+    "(exit 2) unless --skip-bad-lines.";
 
 std::string DefaultOutDir(const engine::InputSpec& input, const engine::Input& opened) {
   if (!input.dataset.empty()) return "out/triangulate-" + input.dataset;
@@ -113,6 +115,7 @@ int RunFollow(const TriangulateArgs& args) {
                                         {.path = args.follow,
                                          .skip_bad_lines = args.skip_bad_lines,
                                          .spin_us = args.spin_us,
+                                         .wait_for_lines_s = args.wait_for_lines_s,
                                          .max_persons_per_view = limits.max_persons_per_view,
                                          .max_pairs_per_frame = limits.max_pairs_per_frame},
                                         stop, &counts));
@@ -236,13 +239,20 @@ void RegisterTriangulateCommand(CLI::App& app, int* exit_code) {
                       "microseconds (lower latency for lines that follow soon; 0 = sleep at once)")
       ->capture_default_str()
       ->option_text("US");
+  CLI::Option* wait = command->add_option("--wait-for-lines", args->wait_for_lines_s,
+                      "with --follow FILE (a regular file): at its end, wait up to this many seconds for more lines "
+                      "(a detector still writing it, like tail -f; inf = until Ctrl-C) before the run ends; 0 = "
+                      "the file's end ends the run")
+      ->capture_default_str()
+      ->option_text("SECONDS");
   command->footer(kFollowHelp);
-  command->callback([args, exit_code, spin] {
+  command->callback([args, exit_code, spin, wait] {
     if (!args->follow.empty()) {
       *exit_code = RunFollow(*args);
     } else {
       if (args->skip_bad_lines) throw ConfigError("--skip-bad-lines: only with --follow");
       if (spin->count() > 0) throw ConfigError("--spin-us: only with --follow");
+      if (wait->count() > 0) throw ConfigError("--wait-for-lines: only with --follow");
       RunTriangulate(*args);
     }
   });

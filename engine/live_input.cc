@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "core/option_codec.h"
 #include "datasets/calibration/calibration.h"
 #include "datasets/io/input_limits.h"
 #include "engine/checked_source.h"
@@ -42,8 +43,16 @@ Input OpenLiveInput(const InputSpec& spec, const LiveInputOptions& options, std:
   Calibration calibration = ReadCalibration(spec.cameras, spec.camera_read, &opened);
   // A line is read whole, like a file: the same limit bounds it.
   if (options.spin_us < 0) throw ConfigError("--spin-us " + std::to_string(options.spin_us) + ": expected a time >= 0");
+  if (!(options.wait_for_lines_s >= 0))
+    throw ConfigError("--wait-for-lines " + FormatNumber(options.wait_for_lines_s) +
+                      ": expected seconds >= 0 (inf = until Ctrl-C)");
   auto lines = std::make_unique<io::LineReader>(options.path, io::MaxInputBytes(), std::move(stop));
   lines->set_spin(std::chrono::microseconds(options.spin_us));
+  if (options.wait_for_lines_s > 0 && !lines->regular_file())
+    throw ConfigError("--wait-for-lines: " + lines->source() +
+                      " is not a regular file (a pipe or a terminal ends when its writer closes it); it waits at the "
+                      "end of a file only");
+  lines->set_wait_at_end(std::chrono::duration<double>(options.wait_for_lines_s));
   DetectionLinesOptions lines_options;
   lines_options.name = options.path == "-" ? "stdin" : std::filesystem::path(options.path).stem().string();
   lines_options.fps = spec.fps;

@@ -27,6 +27,10 @@ struct LiveInputOptions {
   std::string path;             // "-" = standard input; else a named pipe or a file
   bool skip_bad_lines = false;  // count bad lines instead of stopping at the first
   int spin_us = kDefaultSpinUs;  // polling without sleeping before each wait for input, in microseconds
+  // At the end of a regular file, seconds to wait for more lines (a detector still writing it;
+  // infinity: until the stop request) before the run ends (io::LineReader::set_wait_at_end). 0: the
+  // file's end ends the run. A pipe or standard input from a pipe with a wait is a ConfigError.
+  double wait_for_lines_s = 0;
   // The triangulator's triangulate.max_persons_per_view and max_pairs_per_frame: a larger frame is
   // a bad line (skipped with skip_bad_lines).
   int max_persons_per_view = std::numeric_limits<int>::max();

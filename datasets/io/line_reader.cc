@@ -4,11 +4,13 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <sched.h>
+#include <sys/inotify.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 
 #include "core/errors.h"
@@ -20,7 +22,15 @@ namespace {
 // few calls.
 constexpr std::size_t kReadBytes = 64 * 1024;
 
+// Without inotify, the wait at the end of a growing file looks again this often.
+constexpr int kGrowthPollMs = 10;
+
 std::string LineReaderErrno() { return std::strerror(errno); }
+
+bool IsRegularFile(int fd) {
+  struct stat info {};
+  return fstat(fd, &info) == 0 && S_ISREG(info.st_mode);
+}
 
 }  // namespace
 
@@ -50,6 +60,7 @@ LineReader::LineReader(const std::string& path, std::size_t max_line_bytes, std:
     : source_(path == "-" ? "stdin" : path), max_line_bytes_(max_line_bytes), stop_(std::move(stop)) {
   if (path == "-") {
     fd_ = STDIN_FILENO;
+    regular_file_ = IsRegularFile(fd_);
     return;
   }
   // Non-blocking, so that opening a named pipe does not wait for its writer (the wait is in poll(),
@@ -68,13 +79,65 @@ LineReader::LineReader(const std::string& path, std::size_t max_line_bytes, std:
     close(fd_);
     throw InputError(path + ": cannot read: " + error);
   }
+  regular_file_ = S_ISREG(info.st_mode);
 }
 
 LineReader::LineReader(int fd, std::string source, std::size_t max_line_bytes, std::shared_ptr<const StopRequest> stop)
-    : fd_(fd), source_(std::move(source)), max_line_bytes_(max_line_bytes), stop_(std::move(stop)) {}
+    : fd_(fd), source_(std::move(source)), max_line_bytes_(max_line_bytes), stop_(std::move(stop)) {
+  regular_file_ = IsRegularFile(fd_);
+}
 
 LineReader::~LineReader() {
+  if (watch_fd_ >= 0) close(watch_fd_);
   if (owns_fd_) close(fd_);
+}
+
+bool LineReader::WaitForGrowth() {
+  if (!watch_tried_) {
+    // Watched through /proc, which names the open file (also standard input redirected from a
+    // file); where inotify is missing or full, the wait polls instead.
+    watch_tried_ = true;
+    watch_fd_ = inotify_init1(IN_NONBLOCK | IN_CLOEXEC);
+    const std::string self = "/proc/self/fd/" + std::to_string(fd_);
+    if (watch_fd_ >= 0 && inotify_add_watch(watch_fd_, self.c_str(), IN_MODIFY) < 0) {
+      close(watch_fd_);
+      watch_fd_ = -1;
+    }
+    return true;  // read once more: data written before the watch began is not missed
+  }
+  const bool forever = !(wait_at_end_.count() < 1e9);  // infinity, or longer than anyone waits (no overflow below)
+  const Clock::time_point until =
+      forever ? Clock::time_point::max()
+              : read_time_ + std::chrono::duration_cast<Clock::duration>(wait_at_end_);
+  while (true) {
+    const off_t at = lseek(fd_, 0, SEEK_CUR);
+    struct stat info {};
+    if (at >= 0 && fstat(fd_, &info) == 0 && info.st_size < at)
+      throw InputError(source_ + ": the file shrank from " + std::to_string(at) + " to " +
+                       std::to_string(info.st_size) + " bytes while its end was waited on (truncated?)");
+    if (at >= 0 && info.st_size > at) return true;
+    const Clock::time_point now = Clock::now();
+    if (!forever && now >= until) return false;
+    int timeout_ms = watch_fd_ >= 0 ? -1 : kGrowthPollMs;
+    if (!forever) {
+      // At most an hour per wait (the loop waits again): the milliseconds fit an int.
+      const int left = static_cast<int>(
+          std::min<long long>(std::chrono::ceil<std::chrono::milliseconds>(until - now).count(), 3'600'000));
+      timeout_ms = timeout_ms < 0 ? left : std::min(timeout_ms, left);
+    }
+    pollfd fds[2] = {{watch_fd_, POLLIN, 0}, {stop_ ? stop_->fd() : -1, POLLIN, 0}};
+    if (poll(fds, 2, timeout_ms) < 0 && errno != EINTR)
+      throw InputError(source_ + ": cannot wait for input: " + LineReaderErrno());
+    if (fds[1].revents != 0) {
+      stopped_ = true;
+      return false;
+    }
+    if (fds[0].revents != 0) {  // drain the events: the size test above decides
+      char events[4096];
+      while (read(watch_fd_, events, sizeof(events)) > 0) {
+      }
+    }
+  }
 }
 
 void LineReader::Fill() {
@@ -98,6 +161,11 @@ void LineReader::Fill() {
       return;
     }
     if (count == 0) {
+      if (regular_file_ && wait_at_end_.count() > 0) {
+        if (read_time_ == Clock::time_point{}) read_time_ = Clock::now();  // an empty file: wait from now
+        if (WaitForGrowth()) continue;
+        if (stopped_) return;
+      }
       at_end_ = true;
       return;
     }

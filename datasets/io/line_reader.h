@@ -5,8 +5,11 @@
 // stream and on a StopRequest, so another thread (the interrupt handler, cli/interrupt.h) can end
 // the wait at any time. With a spin time (set_spin) the reader first polls without sleeping for up
 // to that long after each read, so a line that follows soon is taken without the wake-up of a
-// sleeping thread (slow on an idle machine; `rpt triangulate --follow --spin-us`). Memory is bounded: the buffer holds at most one line of max_line_bytes
-// plus one read; a longer line is read through and dropped, and reported as too long.
+// sleeping thread (slow on an idle machine; `rpt triangulate --follow --spin-us`). At the end of a
+// regular file the reader can wait for the file to grow (set_wait_at_end: a detector still writing
+// it, like `tail -f`), woken by inotify when the file is written. Memory is bounded: the buffer
+// holds at most one line of max_line_bytes plus one read; a longer line is read through and
+// dropped, and reported as too long.
 #pragma once
 
 #include <poll.h>
@@ -66,6 +69,14 @@ class LineReader {
 
   // Polls for input without sleeping for up to `spin` before each wait (zero: sleep at once).
   void set_spin(std::chrono::microseconds spin) { spin_ = spin; }
+  // At the end of a regular file, waits up to `idle` seconds (infinity: until the stop request)
+  // for it to grow before the end: lines appended meanwhile are read, and a last line without a
+  // newline waits for its newline. Zero (the default): the file's end is the end. No effect on a
+  // pipe or a terminal (their end is the writer closing them). A file that shrinks while waited
+  // on (truncated) is an InputError.
+  void set_wait_at_end(std::chrono::duration<double> idle) { wait_at_end_ = idle; }
+  // Whether the stream is a regular file (set_wait_at_end applies).
+  bool regular_file() const { return regular_file_; }
 
   const std::string& source() const { return source_; }
   // The number of the line handed out last (1-based; too-long lines count).
@@ -78,7 +89,14 @@ class LineReader {
   void Fill();
   // Waits until the stream or the stop request is readable: polls for up to spin_, then sleeps.
   void Wait(pollfd* fds);
+  // At the end of a regular file: waits for it to grow (true: read again), for the stop request
+  // (sets stopped_) or until wait_at_end_ has passed since the last data (false: the end).
+  bool WaitForGrowth();
 
+  bool regular_file_ = false;
+  std::chrono::duration<double> wait_at_end_{0};
+  int watch_fd_ = -1;  // inotify on the file while waiting at its end (-1: none, or polling)
+  bool watch_tried_ = false;
   int fd_ = -1;
   bool owns_fd_ = false;
   std::string source_;

@@ -15,6 +15,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -367,6 +368,76 @@ TEST_F(Follow, NamesReachTheTerminalEscaped) {
   EXPECT_NE(offline.out.find("results in " + (dir_ / "out_take\\x1b[2J").string()), std::string::npos) << offline.out;
   EXPECT_NE(live.err.find("take\\x1b[2J: 3 lines, 2 frames"), std::string::npos) << live.err;
   EXPECT_NE(live.err.find("results in " + (dir_ / "out_take\\x1b[2J_live").string()), std::string::npos) << live.err;
+}
+
+// A file that a detector is still writing, followed like tail -f: lines appended after the run
+// started are triangulated as they come (a line written in two parts waits for its newline), and
+// Ctrl-C ends the run; with a finite wait, the run ends that long after the last line.
+TEST_F(Follow, AGrowingFileIsFollowedWithWaitForLines) {
+  const Json offline = Offline();
+  const fs::path file = LinesFile("growing.jsonl", {FrameLine(detections_, 0, true)});
+  Child child("triangulate --follow " + file.string() + " --cameras " + Cameras() + " --wait-for-lines inf",
+              dir_ / "err.txt");
+  ASSERT_NE(child.ReadLine(), "<timeout>");  // the header
+  EXPECT_EQ(Json::parse(child.ReadLine()), offline["frames"][0]);
+  const auto append = [&](const std::string& text) {
+    std::ofstream out(file, std::ios::app);
+    out << text;
+  };
+  append(FrameLine(detections_, 1, true) + "\n");
+  const std::string second = child.ReadLine();
+  ASSERT_NE(second, "<timeout>") << "a line appended to the file was not read";
+  EXPECT_EQ(Json::parse(second), offline["frames"][1]);
+  const std::string third = FrameLine(detections_, 2, true);
+  append(third.substr(0, third.size() / 2));
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  append(third.substr(third.size() / 2) + "\n");
+  const std::string line = child.ReadLine();
+  ASSERT_NE(line, "<timeout>");
+  EXPECT_EQ(Json::parse(line), offline["frames"][2]) << "the line written in two parts is read whole";
+  child.Signal(SIGINT);
+  EXPECT_EQ(child.ReadLine(), "<end>");
+  EXPECT_EQ(child.Wait(), 130);
+  const std::string err = test::ReadAll(dir_ / "err.txt");
+  EXPECT_NE(err.find("growing: 4 lines, 3 frames"), std::string::npos) << err;
+
+  // A finite wait: the run ends by itself after it (exit 0), every line triangulated; without
+  // the wait the same file ends at once.
+  const auto start = std::chrono::steady_clock::now();
+  const test::CommandResult waited = test::RunRpt("triangulate --follow " + file.string() + " --cameras " + Cameras() +
+                                                  " --wait-for-lines 0.4");
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  ASSERT_EQ(waited.exit_code, 0) << waited.err;
+  EXPECT_GE(seconds, 0.4) << "the run did not wait at the end of the file";
+  EXPECT_NE(waited.err.find("growing: 4 lines, 3 frames"), std::string::npos) << waited.err;
+  EXPECT_NE(waited.err.find("end of input"), std::string::npos) << waited.err;
+}
+
+// A followed file that shrinks (truncated, rewritten) is an error, not frames read from the
+// middle of other lines; a wait on a pipe, a negative wait, and a wait without --follow too.
+TEST_F(Follow, WaitForLinesMistakes) {
+  const fs::path file = LinesFile("shrinking.jsonl", {FrameLine(detections_, 0, true)});
+  Child child("triangulate --follow " + file.string() + " --cameras " + Cameras() + " --wait-for-lines 60",
+              dir_ / "err.txt");
+  ASSERT_NE(child.ReadLine(), "<timeout>");  // the header
+  ASSERT_NE(child.ReadLine(), "<timeout>");  // frame 0: the run waits at the end now
+  fs::resize_file(file, 10);
+  EXPECT_EQ(child.ReadLine(), "<end>");
+  EXPECT_EQ(child.Wait(), 2);
+  const std::string err = test::ReadAll(dir_ / "err.txt");
+  EXPECT_NE(err.find("shrinking.jsonl: the file shrank from "), std::string::npos) << err;
+  EXPECT_NE(err.find(" to 10 bytes while its end was waited on"), std::string::npos) << err;
+
+  const std::string base = "triangulate --cameras " + Cameras();
+  for (const auto& [args, message] : std::vector<std::pair<std::string, std::string>>{
+           {" --follow - --wait-for-lines 5 < /dev/null", "--wait-for-lines: stdin is not a regular file"},
+           {" --follow " + file.string() + " --wait-for-lines -1", "--wait-for-lines -1.0: expected seconds >= 0"},
+           {" --detections " + (dir_ / "detections.json").string() + " --wait-for-lines 5",
+            "--wait-for-lines: only with --follow"}}) {
+    const test::CommandResult r = test::RunRpt(base + args);
+    EXPECT_EQ(r.exit_code, 2) << args;
+    EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
+  }
 }
 
 TEST_F(Follow, OptionsThatDoNotFit) {
