@@ -82,8 +82,10 @@ class CheckReport {
     AddCases(e, engine::JunitCase::Outcome::kError, what);
   }
 
-  void PrintTotals() const {
+  void PrintTotals(bool fail_on_skip) const {
     std::printf("%d checks, %d failed, %d evaluations skipped", checked_, failures_, skipped_);
+    // A misspelt root is skipped like data that is absent on purpose: say how to make it count.
+    if (skipped_ > 0 && !fail_on_skip) std::printf(" (their data is absent; --fail-on-skip fails them)");
     if (errored_ > 0) std::printf(", %d evaluations failed to run", errored_);
     std::printf("\n");
   }
@@ -137,6 +139,20 @@ int RunCheck(const CheckArgs& args) {
     throw ConfigError("--only " + QuoteName(args.only) + ": no evaluation of " + args.thresholds +
                       " has it in its name");
   }
+  // Parameter values (a frame range, a day) are checked by the readers as they open: every
+  // evaluation whose data is here is opened once before any runs, so that such a mistake in the
+  // file is exit 2 naming its place, not one failed evaluation among the others' results.
+  for (const engine::ThresholdEvaluation& e : file.evaluations) {
+    if (!args.only.empty() && e.name.find(args.only) == std::string::npos) continue;
+    if (!e.required_path.empty() && !fs::exists(e.required_path)) continue;
+    try {
+      engine::OpenInput(e.input);
+    } catch (const ConfigError& error) {
+      throw ConfigError(args.thresholds + ": " + e.json_path + " (" + QuoteName(e.name) + "): " + error.what());
+    } catch (const std::exception&) {
+      // Bad data, not a bad file: reported in the table when the evaluation runs.
+    }
+  }
   CheckReport report;
   // Evaluations often read the same files: one line per file and kind for the whole check.
   InputWarnings warnings;
@@ -156,7 +172,7 @@ int RunCheck(const CheckArgs& args) {
   }
   std::fflush(stdout);  // the table first, then the readers' corrections (stderr)
   PrintInputWarnings(warnings);
-  report.PrintTotals();
+  report.PrintTotals(args.fail_on_skip);
   if (args.json) std::cout << io::DumpJson(report.json(), 2) << "\n";
   if (!args.junit.empty()) engine::WriteJunitXml(args.junit, "rpt check " + args.thresholds, report.cases());
   return report.ExitCode(args.fail_on_skip);

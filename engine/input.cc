@@ -1,24 +1,26 @@
 // SPDX-License-Identifier: MIT
 #include "engine/input.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <new>
 #include <string_view>
 #include <utility>
 
+#include "core/closest_name.h"
 #include "core/errors.h"
 #include "core/printable_text.h"
+#include "core/text.h"
 #include "datasets/calibration/calibration.h"
 #include "datasets/readers/detection_frames.h"
+#include "datasets/synthetic/detector_options.h"
 #include "datasets/synthetic/simulated_source.h"
 #include "engine/attached_detections.h"
 #include "engine/checked_source.h"
 #include "engine/dataset_registry.h"
 
 namespace rpt::engine {
-namespace {
 
-// Throws ConfigError on contradicting input options.
 void CheckInputSpec(const InputSpec& spec) {
   const int named = !spec.dataset.empty() + !spec.labels.empty() + !spec.cameras.empty();
   if (named != 1) {
@@ -57,7 +59,19 @@ void CheckInputSpec(const InputSpec& spec) {
                         " with --simulate, or --param " + assignment + " without it");
     }
   }
+  if (!spec.detector.empty()) {
+    const std::vector<std::string>& profiles = synthetic::DetectorProfileNames();
+    if (std::find(profiles.begin(), profiles.end(), spec.detector) == profiles.end())
+      throw ConfigError("--detector " + QuoteName(spec.detector) + ": unknown profile" +
+                        DidYouMean(spec.detector, profiles) + "; known: " + Join(profiles));
+  }
+  // The synthetic dataset is generated: a folder given to it would be ignored unseen (a typo in a
+  // thresholds file's root would turn its evaluation into a skipped one elsewhere).
+  if (spec.dataset == "synthetic" && spec.labels.empty() && !spec.root.empty())
+    throw ConfigError("--root " + PrintableText(spec.root) + ": the synthetic dataset is generated and reads no folder");
 }
+
+namespace {
 
 // The reader request: --labels FILE is the generic labels reader with the file as its root, so
 // --param reaches it like any reader's.

@@ -9,6 +9,7 @@
 #include "engine/json_text.h"
 #include "engine/outputs/results_writer.h"
 #include "core/errors.h"
+#include "core/option_codec.h"
 #include "core/text.h"
 #include "datasets/dataset_params.h"
 #include "datasets/io/json_file.h"
@@ -132,6 +133,13 @@ ThresholdEvaluation ReadEvaluation(const Validator& v, const Json& e, const std:
     }
     input.params.push_back(key + "=" + JsonValueText(value));
   }
+  // What rpt eval would refuse before reading anything (a detector without simulate, an unknown
+  // profile, a root for the generated dataset), here with the file's place.
+  try {
+    CheckInputSpec(input);
+  } catch (const ConfigError& error) {
+    v.Fail(where, std::string("as rpt eval's options: ") + error.what());
+  }
   evaluation.required_path = !input.root.empty() ? input.root : !input.labels.empty() ? input.labels : input.detections;
 
   std::vector<std::string> overrides;
@@ -162,6 +170,15 @@ ThresholdEvaluation ReadEvaluation(const Validator& v, const Json& e, const std:
                              "{\"metrics.legacy_pcp\": \"shelf\"} or \"campus\")");
       }
       evaluation.checks.push_back({metric, bound, limit.get<double>()});
+    }
+  }
+  // An evaluation without bounds would run and pass whatever it measures.
+  if (evaluation.checks.empty()) v.Fail(where, "no \"min\" or \"max\" bound: the evaluation would check nothing");
+  for (const ThresholdCheck& low : evaluation.checks) {
+    for (const ThresholdCheck& high : evaluation.checks) {
+      if (low.bound != "min" || high.bound != "max" || low.metric != high.metric || low.limit <= high.limit) continue;
+      v.Fail(io::JsonPointerJoin(where + "/min", low.metric),
+             "min " + FormatNumber(low.limit) + " is above max " + FormatNumber(high.limit) + ": the check can never pass");
     }
   }
   return evaluation;
@@ -215,9 +232,18 @@ ThresholdsFile ReadThresholdsFile(const std::string& path) {
   ThresholdsFile file;
   file.path = path;
   const fs::path base = fs::path(path).parent_path();
+  // An empty list would pass in CI without checking anything.
+  if (root["evaluations"].empty()) v.Fail("/evaluations", "no evaluations: the file would check nothing");
   for (size_t i = 0; i < root["evaluations"].size(); ++i) {
     file.evaluations.push_back(
         ReadEvaluation(v, root["evaluations"][i], "/evaluations/" + std::to_string(i), base));
+    // Names tell the checks apart in the table, the JSON and the JUnit cases.
+    const ThresholdEvaluation& added = file.evaluations.back();
+    for (size_t j = 0; j + 1 < file.evaluations.size(); ++j) {
+      if (file.evaluations[j].name == added.name)
+        v.Fail(added.json_path + "/name", "the name " + QuoteName(added.name) + " is also " +
+                                              file.evaluations[j].json_path + "'s: each evaluation needs its own");
+    }
   }
   return file;
 }

@@ -65,6 +65,23 @@ TEST_F(CheckCommandTest, InvalidFilesExitWith2NamingFileAndJsonPathBeforeAnythin
       {R"({"name": "x", "dataset": "synthetic", "params": {"camras": 3}})",
        "/evaluations/1/params/camras: unknown parameter 'camras' (did you mean 'cameras'?) (synthetic has: cameras, "
        "people"},
+      // Files that would pass without checking what they say.
+      {R"({"name": "x", "dataset": "synthetic"})",
+       "/evaluations/1: no \"min\" or \"max\" bound: the evaluation would check nothing"},
+      {R"({"name": "x", "dataset": "synthetic", "min": {"recall500": 90}, "max": {"recall500": 50}})",
+       "/evaluations/1/min/recall500: min 90.0 is above max 50.0: the check can never pass"},
+      {R"({"name": "tiny", "dataset": "synthetic", "min": {"pcp": 1}})",
+       "/evaluations/1/name: the name 'tiny' is also /evaluations/0's"},
+      {R"({"name": "x", "dataset": "synthetic", "detector": "clean", "min": {"pcp": 1}})",
+       "/evaluations/1: as rpt eval's options: --detector needs --simulate"},
+      {R"({"name": "x", "dataset": "synthetic", "simulate": true, "detector": "bogus", "min": {"pcp": 1}})",
+       "/evaluations/1: as rpt eval's options: --detector 'bogus': unknown profile; known: perfect, clean, realistic, "
+       "hard"},
+      {R"({"name": "x", "dataset": "synthetic", "root": "nowhere", "min": {"pcp": 1}})",
+       "/evaluations/1: as rpt eval's options: --root "},  // ... the synthetic dataset is generated and reads no folder
+      // A value the reader refuses when it opens: found before anything runs too.
+      {R"({"name": "x", "dataset": "synthetic", "params": {"frames": "abc"}, "min": {"pcp": 1}})",
+       "/evaluations/1 ('x'): --param frames=abc: synthetic.frames: 'abc' is not an integer"},
   };
   for (const Case& c : cases) {
     const CheckRun run = RunCheck(dir_, "bad.json", std::string(R"({"evaluations": [)") + kTinyEvaluation + ", " +
@@ -74,6 +91,11 @@ TEST_F(CheckCommandTest, InvalidFilesExitWith2NamingFileAndJsonPathBeforeAnythin
         << c.evaluation << "\n" << run.result.err;
     EXPECT_EQ(run.result.out, "") << "nothing runs before the file is valid";
   }
+  const CheckRun empty = RunCheck(dir_, "empty.json", R"({"evaluations": []})");
+  EXPECT_EQ(empty.result.exit_code, 2);
+  EXPECT_NE(empty.result.err.find(empty.file.string() + ": /evaluations: no evaluations: the file would check nothing"),
+            std::string::npos)
+      << empty.result.err;
   const CheckRun top = RunCheck(dir_, "top.json", R"({"evaluation": []})");
   EXPECT_EQ(top.result.exit_code, 2);
   EXPECT_NE(top.result.err.find(": /evaluation: unknown key 'evaluation' (did you mean 'evaluations'?)"),
