@@ -78,7 +78,10 @@ cv::Mat Background(const RenderArgs& args, const Camera& camera, int camera_idx,
                    long frame_idx, ImageProblems* problems) {
   if (args.images.empty()) return engine::BlankCanvas(camera);
   const std::string path = engine::ImagePath(args.images, camera.name, camera_idx, frame.id, frame_idx);
-  cv::Mat image = engine::LoadImageCodecs().read_color(path);
+  // Only a regular file is read: a FIFO (or a link to one) would block the decoder for ever.
+  std::error_code ec;
+  cv::Mat image;
+  if (std::filesystem::is_regular_file(path, ec)) image = engine::LoadImageCodecs().read_color(path);
   if (image.empty()) {
     if (problems->missing++ == 0) problems->first_missing = path;
     return engine::BlankCanvas(camera);

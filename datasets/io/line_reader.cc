@@ -199,30 +199,32 @@ LineReader::Result LineReader::Next(std::string_view* line) {
       std::size_t length = static_cast<std::size_t>(static_cast<const char*>(newline) - start);
       begin_ += length + 1;
       scanned_ = 0;
+      if (dropping_) {  // the end of a line already reported as too long
+        dropping_ = false;
+        continue;
+      }
       ++line_number_;
       // Every line handed out was completed by the last read: a read happens only when no
       // complete line is buffered.
       line_time_ = read_time_;
-      if (dropping_ || length > max_line_bytes_) {
-        dropping_ = false;
-        return Result::kTooLong;
-      }
+      if (length > max_line_bytes_) return Result::kTooLong;
       if (length > 0 && start[length - 1] == '\r') --length;
       *line = std::string_view(start, length);
       return Result::kLine;
     }
     scanned_ = pending;
-    if (dropping_ || scanned_ > max_line_bytes_) {  // a line too long to keep: drop what came of it
+    if (dropping_) {  // the rest of a line already reported: dropped as it comes
+      begin_ = end_ = scanned_ = 0;
+    } else if (scanned_ > max_line_bytes_) {
+      // Reported as soon as it is too long, not at its newline: a line that never ends (a stream
+      // of zeros) would otherwise be read for ever. Its rest is dropped up to its newline.
       dropping_ = true;
       begin_ = end_ = scanned_ = 0;
+      ++line_number_;
+      line_time_ = read_time_;
+      return Result::kTooLong;
     }
     if (at_end_) {
-      if (dropping_) {
-        dropping_ = false;
-        ++line_number_;
-        line_time_ = read_time_;
-        return Result::kTooLong;
-      }
       if (end_ == begin_) return Result::kEnd;
       // The last line, without a newline.
       std::size_t length = end_ - begin_;

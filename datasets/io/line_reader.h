@@ -8,8 +8,9 @@
 // sleeping thread (slow on an idle machine; `rpt triangulate --follow --spin-us`). At the end of a
 // regular file the reader can wait for the file to grow (set_wait_at_end: a detector still writing
 // it, like `tail -f`), woken by inotify when the file is written. Memory is bounded: the buffer
-// holds at most one line of max_line_bytes plus one read; a longer line is read through and
-// dropped, and reported as too long.
+// holds at most one line of max_line_bytes plus one read; a longer line is reported as too long as
+// soon as it passes the limit (a line that never ends is not read for ever), and its rest is
+// dropped up to its newline.
 #pragma once
 
 #include <poll.h>
@@ -47,7 +48,7 @@ class LineReader {
   using Clock = std::chrono::steady_clock;
   enum class Result {
     kLine,     // a line (without its "\n" or "\r\n")
-    kTooLong,  // a line longer than max_line_bytes, read through and dropped
+    kTooLong,  // a line longer than max_line_bytes: reported once it passes the limit; its rest is dropped
     kEnd,      // end of the stream (a last line without "\n" is handed out before)
     kStopped,  // the StopRequest was made
   };

@@ -3,6 +3,8 @@
 
 #include "datasets/io/number_text.h"
 
+#include "datasets/io/binary.h"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -32,12 +34,10 @@ std::string Shown(std::string_view token) {
 TextTokens::TextTokens(std::string text, std::string source) : text_(std::move(text)), source_(std::move(source)) {}
 
 TextTokens TextTokens::FromFile(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path.string() + ": file not found or unreadable");
-  std::ostringstream content;
-  content << in.rdbuf();
-  if (in.bad()) throw InputError(path.string() + ": read error");
-  return TextTokens(std::move(content).str(), path.string());
+  // ReadFileBytes refuses what is not a regular file (a FIFO would block the read for ever) and
+  // files above the input size limit.
+  const std::vector<std::uint8_t> bytes = detail::ReadFileBytes(path);
+  return TextTokens(std::string(bytes.begin(), bytes.end()), path.string());
 }
 
 std::string_view TextTokens::Next() {

@@ -207,6 +207,13 @@ PathMapper::~PathMapper() = default;
 
 bool PathMapper::Apply(const std::string& text, const std::string& source, std::string* frame_id,
                        std::string* camera) const {
+  // std::regex recurses per character: a name of some 40 000 characters overflowed the stack.
+  // No path is longer than PATH_MAX (4096 bytes), so such a name is refused before matching.
+  constexpr size_t kMaxMatchedBytes = 4096;
+  if (text.size() > kMaxMatchedBytes) {
+    throw InputError(source + ": a name of " + std::to_string(text.size()) + " bytes, longer than any file path (" +
+                     std::to_string(kMaxMatchedBytes) + "): not matched against the pattern");
+  }
   std::smatch match;
   if (!std::regex_match(text, match, impl_->pattern)) return false;
   *frame_id = Expand(impl_->frame_id, match, source, text);

@@ -48,7 +48,8 @@ class PathMapper {
   PathMapper& operator=(const PathMapper&) = delete;
 
   // Returns false when the pattern does not match `text`; throws InputError naming `source`
-  // when a numeric field is not a number or its offset makes it negative.
+  // when a numeric field is not a number or its offset makes it negative, or when `text` is
+  // longer than any path (4096 bytes: std::regex would overflow the stack on long texts).
   bool Apply(const std::string& text, const std::string& source, std::string* frame_id, std::string* camera) const;
 
  private:

@@ -3,6 +3,7 @@
 // where the cameras see them, MP4 videos that read back with the right frame count, and its errors.
 // Also the selection helpers (engine/render/render_selection.h).
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <filesystem>
 #include <fstream>
@@ -134,9 +135,11 @@ TEST(RenderCommand, DrawsOnTheImagesOfTheTemplateAndWarnsAboutMissingOnes) {
   InputWarnings warnings;
   const std::vector<Sequence> sequences = engine::LoadInput(SceneInput(), {}, &warnings);
   const Camera& camera = sequences[0].cameras[0];
-  // A solid blue image for camera 0, frame 0 only; camera 1's is missing.
+  // A solid blue image for camera 0, frame 0 only; camera 1's is a FIFO (not read: it would block
+  // the decoder for ever), the others are missing.
   const cv::Mat blue(camera.height, camera.width, CV_8UC3, cv::Scalar(200, 0, 0));
   ASSERT_TRUE(cv::imwrite((out / ("cam0_" + sequences[0].frames[0].id + ".png")).string(), blue));
+  ASSERT_EQ(mkfifo((out / ("cam1_" + sequences[0].frames[0].id + ".png")).c_str(), 0600), 0);
   const test::CommandResult r = test::RunRpt(std::string("render ") + kScene + " --out " + out.string() +
                                              " --images '" + out.string() + "/cam{camera_idx}_{frame_id}.png'");
   ASSERT_EQ(r.exit_code, 0) << r.err;

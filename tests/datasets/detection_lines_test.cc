@@ -6,6 +6,8 @@
 // times) and names the line and place of each kind of bad line.
 #include <gtest/gtest.h>
 
+#include <atomic>
+
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -218,6 +220,36 @@ TEST(LineReader, LinesAsTheyArrive) {
   EXPECT_EQ(lines,
             (std::vector<std::string>{"first", "", "second line", "<too long>", "third", "last without newline"}));
   EXPECT_EQ(results[3], io::LineReader::Result::kTooLong);
+}
+
+// A line that never ends (a stream of zeros) is reported as too long once it passes the limit,
+// while its writer is still writing; its rest is dropped up to its newline and reading goes on.
+TEST(LineReader, ALineThatNeverEndsIsReportedAtTheLimit) {
+  int fds[2];
+  ASSERT_EQ(pipe(fds), 0);
+  std::atomic<bool> reported{false};
+  std::thread writer([&] {
+    const std::string chunk(64, 'a');
+    for (int i = 0; i < 200 && !reported; ++i) {  // until the reader says it, at most 12.8 kB
+      ASSERT_EQ(write(fds[1], chunk.data(), chunk.size()), static_cast<ssize_t>(chunk.size()));
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    EXPECT_TRUE(reported) << "the too-long line was not reported while it was written";
+    const std::string rest = "still the same line\nnext\n";
+    ASSERT_EQ(write(fds[1], rest.data(), rest.size()), static_cast<ssize_t>(rest.size()));
+    close(fds[1]);
+  });
+  io::LineReader reader(fds[0], "pipe", 1000, nullptr);
+  std::string_view line;
+  EXPECT_EQ(reader.Next(&line), io::LineReader::Result::kTooLong);
+  reported = true;
+  EXPECT_EQ(reader.line_number(), 1);
+  ASSERT_EQ(reader.Next(&line), io::LineReader::Result::kLine);
+  EXPECT_EQ(line, "next");
+  EXPECT_EQ(reader.line_number(), 2);
+  EXPECT_EQ(reader.Next(&line), io::LineReader::Result::kEnd);
+  writer.join();
+  close(fds[0]);
 }
 
 TEST(LineReader, PollingBeforeSleepingReadsTheSameLines) {

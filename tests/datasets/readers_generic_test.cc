@@ -388,6 +388,15 @@ TEST(GenericCommon, PathMappingTemplatesPadOffsetAndCheckGroups) {
   const PathMapper text_group({R"(([a-z]+)(\d+))", "{1:3}", "c"}, "t");
   EXPECT_THAT(InputErrorOf([&] { text_group.Apply("abc1", "src", &frame, &camera); }),
               HasSubstr("capture group 1 is 'abc', not a non-negative integer"));
+  // A name far longer than any path is refused, not matched (std::regex overflowed the stack on
+  // a 40 000-character COCO file_name); one at the limit is matched.
+  const PathMapper names({R"(([a-z]+)/([a-z]+)\.png)", "{2}", "{1}"}, "t");
+  const std::string longest = "c/" + std::string(4096 - 6, 'f') + ".png";
+  ASSERT_EQ(longest.size(), 4096u);
+  ASSERT_TRUE(names.Apply(longest, "src", &frame, &camera));
+  EXPECT_EQ(frame.size(), 4090u);
+  EXPECT_THAT(InputErrorOf([&] { names.Apply("c/" + std::string(40011, 'f') + ".png", "ann.json: /images/0/file_name", &frame, &camera); }),
+              HasSubstr("ann.json: /images/0/file_name: a name of 40017 bytes, longer than any file path (4096)"));
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 // small-file cases they explain.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -317,10 +318,14 @@ TEST(Shelf4daReader, MalformedGroundTruthAndCountMismatches) {
   EXPECT_THAT(error(), HasSubstr("0.txt:1: header: 2 frames, "));
   EXPECT_THAT(error(), HasSubstr("gt.txt has 1"));
   fs::remove(gt);
-  EXPECT_THAT(error(), HasSubstr("gt.txt: file not found or unreadable"));
+  EXPECT_THAT(error(), HasSubstr("gt.txt: file not found"));
+  // A FIFO in its place is refused, not read (the read would wait for a writer for ever).
+  ASSERT_EQ(mkfifo(gt.c_str(), 0600), 0);
+  EXPECT_THAT(error(), HasSubstr("gt.txt: not a regular file"));
+  fs::remove(gt);
   WriteText(gt, GtText({{}, {}}));
   fs::remove(dir.path() / "detection" / "0.txt");
-  EXPECT_THAT(error(), HasSubstr("0.txt: file not found or unreadable"));
+  EXPECT_THAT(error(), HasSubstr("0.txt: file not found"));
   EXPECT_EQ(ReadDataset(Request(dir.path(), {{"detections", "none"}}))[0].frames.size(), 2u);
 }
 
