@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <new>
 #include <optional>
 #include <utility>
 
@@ -135,11 +136,37 @@ template <class Json>
 using DomBuilder = Guarded<nlohmann::detail::json_sax_dom_parser<Json>>;
 using SyntaxChecker = Guarded<nlohmann::detail::json_sax_acceptor<nlohmann::json>>;
 
+// Empties `value` from the innermost elements out, without allocating: nlohmann's destructor
+// first copies an array's or object's elements into a new list (to avoid recursion), which when
+// memory has just run out throws std::bad_alloc inside a destructor and ends the process. Depth is
+// bounded by kMaxJsonDepth.
+template <class Json>
+void FreeWithoutAllocating(Json& value) {
+  if (value.is_array()) {
+    while (!value.empty()) {
+      FreeWithoutAllocating(value.back());
+      value.erase(value.size() - 1);
+    }
+  } else if (value.is_object()) {
+    while (!value.empty()) {
+      auto last = value.begin();
+      FreeWithoutAllocating(last.value());
+      value.erase(last);
+    }
+  }
+}
+
 template <class Json>
 Json Parse(std::string_view text, const std::string& source) {
-  Json root;
-  DomBuilder<Json> builder(text, source, root, /*allow_exceptions=*/true);
-  Json::sax_parse(text.begin(), text.end(), &builder);
+  Json root;  // outside the try: still whole in the handler, which frees it without allocating
+  try {
+    DomBuilder<Json> builder(text, source, root, /*allow_exceptions=*/true);
+    Json::sax_parse(text.begin(), text.end(), &builder);
+  } catch (const std::bad_alloc&) {
+    FreeWithoutAllocating(root);
+    throw InputError(source + ": out of memory parsing " + std::to_string(text.size() >> 20) +
+                     " MB of JSON (a document takes several times its file size in memory)");
+  }
   return root;
 }
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <new>
 #include <memory>
 #include <optional>
 #include <unordered_map>
@@ -219,7 +220,14 @@ std::vector<std::unique_ptr<FrameSource>> OpenLabels(const std::filesystem::path
   file->bytes = io::detail::ReadFileBytes(path);
   const std::string& source = file->source;
   io::CheckJsonText(file->text(), source);
-  const auto elements = io::JsonArrayElements(file->text());
+  const auto elements = [&] {
+    try {
+      return io::JsonArrayElements(file->text());
+    } catch (const std::bad_alloc&) {  // 16 bytes per element: a list of millions of numbers
+      throw InputError(source + ": out of memory listing the labels of " + std::to_string(file->text().size() >> 20) +
+                       " MB of JSON");
+    }
+  }();
   if (!elements)
     Fail(source, "/",
          "expected a list of labels, got " + std::string(io::ParseJsonText(file->text(), source).type_name()));

@@ -203,6 +203,31 @@ TEST_F(InputLimits, OutOfMemoryNamesTheInputInsteadOfInternalError) {
   EXPECT_GT(named, 0) << "no run ended naming the file it could not read";
 }
 
+// A JSON file that does not fit in memory as a document (a list of millions of numbers) ended in
+// an abort (exit 134): nlohmann's destructor allocates to free the half-built document. Now the
+// document is freed without allocating and the error names the file (exit 2).
+TEST_F(InputLimits, JsonTooLargeForMemoryNamesTheFileInsteadOfAborting) {
+  {
+    std::ofstream out(Path("big.json"));
+    out << "[0";
+    for (int i = 0; i < 5'000'000; ++i) out << ",0";
+    out << "]";
+  }
+  long base_kb = 0;
+  for (long kb = 20000; kb <= 2000000 && base_kb == 0; kb += 5000) {
+    if (test::RunRpt("config --dump", "ulimit -v " + std::to_string(kb) + "; ").exit_code == 0) base_kb = kb;
+  }
+  ASSERT_GT(base_kb, 0) << "rpt did not start under 2 GB of address space";
+  int named = 0;
+  for (long kb = base_kb + 20000; kb <= base_kb + 140000; kb += 20000) {
+    const test::CommandResult r = test::RunRpt("cameras show " + Path("big.json"), "ulimit -v " + std::to_string(kb) + "; ");
+    EXPECT_NE(r.exit_code, 134) << kb << " kB: " << r.err;
+    EXPECT_FALSE(Contains(r.err, "terminate called")) << kb << " kB: " << r.err;
+    if (r.exit_code == 2 && Contains(r.err, Path("big.json") + ": out of memory parsing 9 MB of JSON")) ++named;
+  }
+  EXPECT_GT(named, 0) << "no run ended naming the file it could not parse";
+}
+
 // Out of memory in the middle of building a page, a run or an image used to abort (exit 134,
 // "terminate called after throwing std::bad_alloc"): the exception unwound through a destructor
 // that allocates (nlohmann::json frees deep values through a heap stack), came from OpenCV as a
