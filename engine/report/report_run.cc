@@ -65,6 +65,7 @@ RecordedPredictions ReadPredictions(const std::filesystem::path& path) {
   const nlohmann::json root = io::LoadJsonFile(path);
   const std::string source = path.string();
   RecordedPredictions out;
+  if (const auto id = root.find("run_id"); id != root.end() && id->is_string()) out.run_id = id->get<std::string>();
   for (const auto& name : io::JsonAt(root, "/joints", source)) {
     if (!name.is_string()) throw InputError(source + ": /joints: expected strings");
     out.joints.push_back(name.get<std::string>());
@@ -139,6 +140,20 @@ RecordedRun ReadRecordedRun(const std::filesystem::path& dir) {
   const bool without_gt = evaluated != run.summary.end() && evaluated->is_boolean() && !evaluated->get<bool>();
   run.per_joint = without_gt ? OrderedJson::array() : ReadPerJoint(dir / "per_joint.csv");
   run.predictions = ReadPredictions(dir / "predictions.json");
+  // The files of one run share its run_id: a predictions.json copied in from another run would give
+  // a page whose plots and 3D frames contradict its summary.
+  std::vector<std::pair<std::string, std::string>> ids;  // file, run_id
+  for (const auto& [file, json] : {std::pair<const char*, const OrderedJson*>{"summary.json", &run.summary},
+                                   {"run.json", &run.run_info}}) {
+    if (const auto id = json->find("run_id"); id != json->end() && id->is_string()) ids.emplace_back(file, id->get<std::string>());
+  }
+  if (!run.predictions.run_id.empty()) ids.emplace_back("predictions.json", run.predictions.run_id);
+  for (const auto& [file, id] : ids) {
+    if (id == ids.front().second) continue;
+    throw InputError(dir.string() + ": " + ids.front().first + " is of run " + QuoteName(ids.front().second) + ", " +
+                     file + " of run " + QuoteName(id) +
+                     ": the folder mixes the files of two runs (re-run the command of run.json into a new folder)");
+  }
   return run;
 }
 

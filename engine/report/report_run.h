@@ -18,6 +18,7 @@
 namespace rpt::engine {
 
 struct RecordedPredictions {
+  std::string run_id;  // "" when the file has none
   JointNames joints;
   std::vector<std::string> frame_ids;  // every frame of every sequence, in run order
   std::vector<Poses3D> frames;         // same order

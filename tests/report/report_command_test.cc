@@ -199,6 +199,18 @@ TEST(ReportCommand, BadInputExitsTwoNamingTheFile) {
   r = RunRpt("report " + dir.string());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("per_joint.csv:2: 'x' is not a number"), std::string::npos) << r.err;
+
+  // The predictions of another run copied in: the page would draw them beside this run's summary.
+  const fs::path other = TempDir("report_other_run");
+  ASSERT_TRUE(EvalAndReport("--dataset synthetic --param frames=3", dir));
+  ASSERT_TRUE(EvalAndReport("--dataset synthetic --param frames=3 --set filter.min_match_score=0.95", other));
+  fs::copy_file(other / "predictions.json", dir / "predictions.json", fs::copy_options::overwrite_existing);
+  r = RunRpt("report " + dir.string());
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find(dir.string() + ": summary.json is of run '"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(", predictions.json of run '"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("the folder mixes the files of two runs"), std::string::npos) << r.err;
+  fs::remove_all(other);
 }
 
 TEST(ReportCommand, MissingJavascriptLibraryNamesThePackage) {
