@@ -102,7 +102,8 @@
     const warnings = (data.warnings || []).concat((data.summary || {}).warnings || []);
     for (const w of warnings) {
       const li = document.createElement('li');
-      li.textContent = typeof w === 'string' ? w : JSON.stringify(w);
+      // Warnings are strings, or objects with a message (summary.json's {code, message}).
+      li.textContent = typeof w === 'string' ? w : (w && typeof w.message === 'string' ? w.message : JSON.stringify(w));
       list.appendChild(li);
     }
   })();

@@ -151,6 +151,22 @@ TEST(ReportBrowser, SyntheticRun) {
   CheckInBrowser(dir, "synthetic");
 }
 
+// The summary's warnings ({code, message} objects) are shown as their messages, not as JSON.
+TEST(ReportBrowser, WarningsShowTheirMessages) {
+  RPT_REQUIRE_CHROMIUM();
+  const fs::path dir = TempDir("report_browser_warnings");
+  ASSERT_TRUE(EvalAndReport("--dataset synthetic --param frames=10 --set filter.min_match_score=0.999", dir));
+  const std::string dom = DumpDom(dir / "report.html");
+  ASSERT_FALSE(dom.empty()) << "chromium printed no DOM";
+  EXPECT_EQ(BodyAttribute(dom, "data-rpt-errors"), "0");
+  const size_t list = dom.find("id=\"warnings\"");
+  ASSERT_NE(list, std::string::npos);
+  const std::string warnings = dom.substr(list, dom.find("</ul>", list) - list);
+  EXPECT_NE(warnings.find("<li>very low recall: Recall@500 is"), std::string::npos) << warnings;
+  EXPECT_EQ(warnings.find("code"), std::string::npos) << "a warning shown as JSON: " << warnings;
+  fs::remove_all(dir);
+}
+
 TEST(ReportBrowser, ShelfFixture) {
   RPT_REQUIRE_CHROMIUM();
   RPT_REQUIRE_SHARED_DATA("shelf/4d_association");
