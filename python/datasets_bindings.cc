@@ -92,7 +92,16 @@ class Dataset {
   bool started_ = false;
 };
 
-std::string ParamText(py::handle value, const std::string& key) { return OptionText(value, "datasets.open", key); }
+// A list or tuple is the comma list the CLI takes (days=[1, 2] is --param days=1,2).
+std::string ParamText(py::handle value, const std::string& key) {
+  if (!py::isinstance<py::list>(value) && !py::isinstance<py::tuple>(value)) return OptionText(value, "datasets.open", key);
+  std::string text;
+  for (py::handle item : value) {
+    if (!text.empty()) text += ",";
+    text += OptionText(item, "datasets.open", key);
+  }
+  return text;
+}
 
 // The input options every opening shares (named so that no reader parameter shadows them: readers
 // have parameters called detections, cameras, fps, seed and labels).

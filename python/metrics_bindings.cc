@@ -83,12 +83,25 @@ py::object Evaluate(py::handle gt, py::handle predictions, py::handle options, p
     sequences.push_back(SequenceOfArrays(py::reinterpret_borrow<py::sequence>(gt), gt_joints.cast<JointNames>()));
     runs.push_back(PredictionsOfArrays(py::reinterpret_borrow<py::sequence>(predictions),
                                        joint_names.cast<JointNames>(), *sequences.back()));
-  } else if (py::isinstance<Sequence>(gt)) {
-    sequences.push_back(gt.cast<std::shared_ptr<Sequence>>());
-    runs.push_back(predictions.cast<Predictions>());
   } else {
-    sequences = gt.cast<std::vector<std::shared_ptr<Sequence>>>();
-    runs = predictions.cast<std::vector<Predictions>>();
+    // pybind11's own cast error says only "Unable to cast Python instance to C++ type".
+    const auto cast = [](py::handle value, const char* argument, const char* expected, auto* out) {
+      try {
+        *out = value.cast<std::remove_pointer_t<decltype(out)>>();
+      } catch (const py::cast_error&) {
+        throw py::type_error(std::string("metrics.evaluate: ") + argument + " must be " + expected + ", got " +
+                             py::str(py::type::of(value).attr("__name__")).cast<std::string>());
+      }
+    };
+    if (py::isinstance<Sequence>(gt)) {
+      sequences.emplace_back();
+      runs.emplace_back();
+      cast(gt, "gt", "an rpt.datasets.Sequence", &sequences.back());
+      cast(predictions, "predictions", "the rpt.Predictions of process_sequence (gt is one Sequence)", &runs.back());
+    } else {
+      cast(gt, "gt", "an rpt.datasets.Sequence, a list of them, or per frame an array", &sequences);
+      cast(predictions, "predictions", "a list of rpt.Predictions (gt is a list of Sequences)", &runs);
+    }
   }
   if (sequences.size() != runs.size()) {
     throw py::value_error("metrics.evaluate: " + std::to_string(sequences.size()) + " sequences, " +

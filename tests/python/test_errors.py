@@ -4,6 +4,7 @@ import numpy as np
 import pytest
 
 import rpt
+from conftest import SHARED_DATA
 
 from conftest import run_cli
 
@@ -221,6 +222,26 @@ def test_metrics_errors(scene, predictions):
     gt[0, 0, 0] = np.nan
     with pytest.raises(ValueError, match=r"gt\[0\]: contains NaN"):
         rpt.metrics.evaluate([gt], [np.zeros((1, 17, 4))], gt_joints=scene.joint_names, joint_names=scene.joint_names)
+    # Wrong types are TypeErrors naming the argument (pybind11 said "Unable to cast Python instance").
+    with pytest.raises(TypeError, match=r"^metrics.evaluate: predictions must be the rpt.Predictions of process_sequence .*got list$"):
+        rpt.metrics.evaluate(scene, [])
+    with pytest.raises(TypeError, match=r"^metrics.evaluate: gt must be an rpt.datasets.Sequence, a list of them, or per frame an array, got Predictions$"):
+        rpt.metrics.evaluate(predictions, scene)
+    with pytest.raises(TypeError, match=r"^metrics.evaluate: predictions must be a list of rpt.Predictions"):
+        rpt.metrics.evaluate([scene], [predictions[0]])
+
+
+def test_dataset_params_take_lists_as_the_cli_takes_comma_lists():
+    # days=[1, 2] was sent as the text "[1, 2]": "mvor.days: '[1' is not a day 1-4".
+    root = SHARED_DATA / "mvor"
+    if not (root / "camma_mvor_2018.json").exists():
+        pytest.skip(f"{root} is absent")
+    frames = lambda dataset: sum(len(s) for s in dataset.load())
+    by_text = frames(rpt.datasets.open("mvor", str(root), days="1,2"))
+    assert by_text > 0
+    assert frames(rpt.datasets.open("mvor", str(root), days=[1, 2])) == by_text
+    assert frames(rpt.datasets.open("mvor", str(root), days=(1, 2))) == by_text
+    assert frames(rpt.datasets.open("mvor", str(root), days=[1])) < by_text
 
 
 def test_export_errors(predictions, tmp_path):
