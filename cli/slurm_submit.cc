@@ -42,13 +42,31 @@ std::string SbatchOptionLines(const SlurmSweep& sweep) {
   return lines;
 }
 
+// A path as the value of an #SBATCH line: double-quoted (sbatch reads "my proj" as one value; a
+// space cut the line there), with % doubled where sbatch expands patterns (--output; `pattern` is
+// appended as is, e.g. "/shard-%a-of-4.log"). A path with a double quote or a control character
+// cannot be written there (a newline would start a directive of its own): ConfigError.
+std::string SbatchPath(const std::string& path, const std::string& what, bool patterns, const std::string& pattern = "") {
+  for (const char c : path) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte < 0x20 || byte == 0x7f || c == '"') {
+      throw ConfigError(what + " " + PrintableText(path, LineBreaks::kEscape) +
+                        ": a path with a double quote or a control character cannot be written into a Slurm job "
+                        "script; choose another folder");
+    }
+  }
+  std::string quoted = "\"";
+  for (const char c : path) quoted += patterns && c == '%' ? std::string("%%") : std::string(1, c);
+  return quoted + pattern + "\"";
+}
+
 std::string Header(const SlurmSweep& sweep, const std::string& name, const std::string& workdir,
-                   const std::string& log) {
+                   const std::string& log_dir, const std::string& log_file) {
   return "#!/bin/bash\n"
          "# Written by `rpt sweep --slurm " + std::to_string(sweep.shards) + "` (docs/sweeps.md).\n"
          "#SBATCH --job-name=" + name + "\n"
-         "#SBATCH --chdir=" + workdir + "\n"
-         "#SBATCH --output=" + log + "\n" + SbatchOptionLines(sweep);
+         "#SBATCH --chdir=" + SbatchPath(workdir, "the working folder", false) + "\n"
+         "#SBATCH --output=" + SbatchPath(log_dir, "--out", true, "/" + log_file) + "\n" + SbatchOptionLines(sweep);
 }
 
 struct Spawned {
@@ -161,7 +179,7 @@ std::string ShardsScript(const SlurmSweep& sweep, const std::string& rpt, const 
   command += " --shard \"${SLURM_ARRAY_TASK_ID}/" + n + "\"";
   // Without --threads a shard takes the CPUs Slurm gave it, not every core of the node.
   if (!sweep.threads_given) command += " --threads \"${SLURM_CPUS_PER_TASK:-1}\"";
-  return Header(sweep, "rpt-sweep", workdir, (fs::path(log_dir) / ("shard-%a-of-" + n + ".log")).string()) +
+  return Header(sweep, "rpt-sweep", workdir, log_dir, "shard-%a-of-" + n + ".log") +
          "#SBATCH --array=1-" + n + "\n" + "set -euo pipefail\n" + command + "\n";
 }
 
@@ -172,7 +190,7 @@ std::string MergeScript(const SlurmSweep& sweep, const std::string& rpt, const s
   command += " --out " + ShellQuote(sweep.out);
   // Submitted with --dependency=afterok:<array>; when a shard fails, Slurm cancels this job instead
   // of leaving it pending for ever.
-  return Header(sweep, "rpt-sweep-merge", workdir, (fs::path(log_dir) / "merge.log").string()) +
+  return Header(sweep, "rpt-sweep-merge", workdir, log_dir, "merge.log") +
          "#SBATCH --kill-on-invalid-dep=yes\n" + "set -euo pipefail\n" + command + "\n";
 }
 
@@ -188,12 +206,15 @@ void SubmitSlurmSweep(const SlurmSweep& sweep) {
   if (ec) throw InputError("cannot find the path of the rpt binary (/proc/self/exe): " + ec.message());
   const fs::path workdir = fs::current_path();
   const fs::path log_dir = fs::absolute(fs::path(sweep.out) / "slurm");
+  // Made before anything is written: a path the scripts cannot hold is refused first.
+  const std::string shards_text = ShardsScript(sweep, rpt.string(), workdir.string(), log_dir.string());
+  const std::string merge_text = MergeScript(sweep, rpt.string(), workdir.string(), log_dir.string());
   fs::create_directories(log_dir, ec);
   if (ec) throw InputError(log_dir.string() + ": cannot create folder: " + ec.message());
   const fs::path shards_script = log_dir / "shards.sbatch";
   const fs::path merge_script = log_dir / "merge.sbatch";
-  io::WriteTextFile(shards_script, io::NamedBy::kRpt, ShardsScript(sweep, rpt.string(), workdir.string(), log_dir.string()));
-  io::WriteTextFile(merge_script, io::NamedBy::kRpt, MergeScript(sweep, rpt.string(), workdir.string(), log_dir.string()));
+  io::WriteTextFile(shards_script, io::NamedBy::kRpt, shards_text);
+  io::WriteTextFile(merge_script, io::NamedBy::kRpt, merge_text);
   std::printf("wrote %s and %s\n", PrintableText(shards_script.string(), LineBreaks::kEscape).c_str(),
               PrintableText(merge_script.string(), LineBreaks::kEscape).c_str());
   if (sweep.dry_run) {

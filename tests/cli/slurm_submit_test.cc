@@ -77,8 +77,8 @@ TEST(SlurmSubmit, DryRunScriptsRunByHandGiveTheUnshardedTable) {
   const std::string merge = test::ReadAll(dir / "cluster" / "slurm" / "merge.sbatch");
   for (const std::string& line : {std::string("#SBATCH --array=1-4\n"), std::string("#SBATCH --time=5\n"),
                                   std::string("#SBATCH --partition=ci\n"),
-                                  "#SBATCH --chdir=" + fs::current_path().string() + "\n",
-                                  "#SBATCH --output=" + (dir / "cluster" / "slurm" / "shard-%a-of-4.log").string() + "\n"}) {
+                                  "#SBATCH --chdir=\"" + fs::current_path().string() + "\"\n",
+                                  "#SBATCH --output=\"" + (dir / "cluster" / "slurm" / "shard-%a-of-4.log").string() + "\"\n"}) {
     EXPECT_NE(shards.find(line), std::string::npos) << line << "\n" << shards;
   }
   EXPECT_NE(shards.find(" --shard \"${SLURM_ARRAY_TASK_ID}/4\" --threads \"${SLURM_CPUS_PER_TASK:-1}\"\n"), std::string::npos)
@@ -105,6 +105,31 @@ TEST(SlurmSubmit, DryRunScriptsRunByHandGiveTheUnshardedTable) {
   ASSERT_EQ(merged["rows"].size(), 6u);
   EXPECT_EQ(AccuracyRows(merged), AccuracyRows(whole));
   EXPECT_EQ(merged["base"], whole["base"]);
+  fs::remove_all(dir);
+}
+
+// Paths in #SBATCH lines are double-quoted (a space cut "--chdir=/my proj" at "proj"), with %
+// doubled in --output (sbatch expands %-patterns there); a path that cannot be written there (a
+// newline would start a directive of its own, e.g. "#SBATCH --partition=INJECTED") is refused
+// before anything is written.
+TEST(SlurmSubmit, PathsInSbatchLinesAreQuotedOrRefused) {
+  const fs::path dir = test::TempDir("slurm_paths");
+  const std::string sweep = "sweep --dataset synthetic --param frames=4 --grid merge.top_k=0,2 --slurm 2 --slurm-dry-run --out ";
+  const fs::path out = dir / "my runs 100%";
+  const test::CommandResult r = test::RunRpt(sweep + "'" + out.string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string shards = test::ReadAll(out / "slurm" / "shards.sbatch");
+  EXPECT_NE(shards.find("#SBATCH --output=\"" + (dir / "my runs 100%%" / "slurm").string() + "/shard-%a-of-2.log\"\n"),
+            std::string::npos)
+      << shards;
+  const test::CommandResult injected =
+      test::RunRpt(sweep + "\"$(printf '%s\\n#SBATCH --partition=INJECTED' '" + (dir / "nl").string() + "')\"");
+  EXPECT_EQ(injected.exit_code, 2) << injected.err;
+  EXPECT_NE(injected.err.find("a path with a double quote or a control character cannot be written into a Slurm job script"),
+            std::string::npos)
+      << injected.err;
+  EXPECT_EQ(injected.err.find('\n'), injected.err.size() - 1) << "the newline is shown escaped: " << injected.err;
+  EXPECT_FALSE(fs::exists(dir / "nl\n#SBATCH --partition=INJECTED")) << "nothing written";
   fs::remove_all(dir);
 }
 
