@@ -6,6 +6,7 @@
 #include <cmath>
 #include <new>
 #include <optional>
+#include <unordered_set>
 #include <utility>
 
 #include "core/errors.h"
@@ -97,6 +98,20 @@ std::string ParseErrorText(const nlohmann::detail::exception& e) {
 // becomes an InputError naming the source, line and column, and that arrays and objects nested
 // deeper than kMaxJsonDepth stop the parse. sax_parse calls the methods of this type (it is a
 // template on the SAX type), so hiding the base's methods is enough.
+// The byte position of the n-th (1-based) object key of `text`: a string followed by ':'.
+std::size_t NthKeyAt(std::string_view text, std::size_t n) {
+  std::size_t keys = 0;
+  for (std::size_t pos = 0; pos < text.size(); ++pos) {
+    if (text[pos] != '"') continue;
+    const std::size_t start = pos;
+    for (++pos; pos < text.size() && text[pos] != '"'; ++pos) pos += text[pos] == '\\' ? 1 : 0;
+    std::size_t next = pos + 1;
+    while (next < text.size() && (text[next] == ' ' || text[next] == '\t' || text[next] == '\n' || text[next] == '\r')) ++next;
+    if (next < text.size() && text[next] == ':' && ++keys == n) return start;
+  }
+  return text.size();
+}
+
 template <class Sax>
 class Guarded : public Sax {
  public:
@@ -106,7 +121,31 @@ class Guarded : public Sax {
 
   bool start_object(std::size_t size) {
     if (++depth_ > kMaxJsonDepth) ThrowTooDeep(text_, source_);
+    // This level's keys start anew (the lists keep their memory for the next object).
+    if (keys_.size() < static_cast<std::size_t>(depth_)) keys_.resize(depth_);
+    keys_[depth_ - 1].small.clear();
+    keys_[depth_ - 1].large.clear();
     return Sax::start_object(size);
+  }
+  // A key given twice in one object: nlohmann keeps the last value unseen (a second "views": []
+  // emptied a frame). Refused naming the line and column of the second.
+  bool key(typename Sax::string_t& name) {
+    ++key_count_;
+    const std::uint64_t hash = std::hash<std::string_view>{}(name);
+    ObjectKeys& keys = keys_[depth_ - 1];
+    bool seen = false;
+    if (keys.large.empty()) {
+      seen = std::find(keys.small.begin(), keys.small.end(), hash) != keys.small.end();
+      keys.small.push_back(hash);
+      if (keys.small.size() > 32) keys.large.insert(keys.small.begin(), keys.small.end());  // many keys: a set
+    } else {
+      seen = !keys.large.insert(hash).second;
+    }
+    if (seen) {
+      ThrowAt(text_, source_, NthKeyAt(text_, key_count_) + 1,
+              "key " + QuoteName(CutText(name, kMaxQuotedBytes)) + " appears twice in this object (the second would replace the first unseen)");
+    }
+    return Sax::key(name);
   }
   bool start_array(std::size_t size) {
     if (++depth_ > kMaxJsonDepth) ThrowTooDeep(text_, source_);
@@ -126,9 +165,15 @@ class Guarded : public Sax {
   }
 
  private:
+  struct ObjectKeys {
+    std::vector<std::uint64_t> small;      // the keys' hashes so far
+    std::unordered_set<std::uint64_t> large;  // the same, once there are many
+  };
   std::string_view text_;
   const std::string& source_;
   int depth_ = 0;
+  std::vector<ObjectKeys> keys_;  // per nesting level
+  std::size_t key_count_ = 0;     // keys so far, to find the position of a repeated one
 };
 
 // Builds the document; and the same errors without the document.

@@ -65,6 +65,26 @@ TEST(Json, ParseErrorsNameLineAndColumn) {
   EXPECT_THAT(test::InputErrorOf([] { LoadJsonFile("/nonexistent/calibration.json"); }), HasSubstr("/nonexistent/calibration.json: file not found"));
 }
 
+// A key given twice in one object is refused at the second (nlohmann kept the last value: a second
+// "views": [] emptied a frame unseen); the same key in different objects, or once per level, is fine.
+TEST(Json, AKeyTwiceInOneObjectIsRefusedAtTheSecond) {
+  EXPECT_THAT(test::InputErrorOf([] {
+                ParseJsonText("{\"frames\": [{\"id\": 1, \"views\": [1],\n \"views\": []}]}", "d.json");
+              }),
+              HasSubstr("d.json:2:2: key 'views' appears twice in this object"));
+  EXPECT_THAT(test::InputErrorOf([] { CheckJsonText("{\"K\": 1, \"a\": {\"K\": 2}, \"K\": 3}", "c.json"); }),
+              HasSubstr("c.json:1:25: key 'K' appears twice"));
+  // Many keys (a set past 32 of them), and the repeat among them.
+  std::string many = "{";
+  for (int i = 0; i < 100; ++i) many += "\"k" + std::to_string(i) + "\": " + std::to_string(i) + ", ";
+  EXPECT_NO_THROW(ParseJsonText(many + "\"last\": 0}", "many.json"));
+  EXPECT_THAT(test::InputErrorOf([&] { ParseJsonText(many + "\"k7\": 0}", "many.json"); }),
+              HasSubstr("key 'k7' appears twice"));
+  const nlohmann::json fine =
+      ParseJsonText(R"([{"id": 1, "a": {"id": 2, "b": {"id": 3}}}, {"id": 4}, {"a": {"id": 5}, "id": 6}])", "fine.json");
+  EXPECT_EQ(fine[2]["id"], 6);
+}
+
 TEST(JsonFixture, ShelfCalibration) {
   RPT_REQUIRE_SHARED_DATA("shelf/calibration_shelf.json");
   const auto path = test::SharedData("shelf/calibration_shelf.json");
