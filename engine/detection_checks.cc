@@ -495,7 +495,24 @@ std::vector<CheckWarning> DetectionWarnings(const SequenceCheck& check) {
                           PercentText(static_cast<double>(camera.empty_frames_gt_in_view) / camera.frames_gt_in_view) +
                           ")"});
     }
-    if (camera.gt_compared >= kMinComparedPersons && camera.rel_median >= kFarRelDistance) {
+    // The median of the other judged cameras' medians (NaN with fewer than two).
+    std::vector<double> others;
+    for (const CameraCheck& other : check.cameras) {
+      if (&other != &camera && other.gt_compared >= kMinComparedPersons && std::isfinite(other.rel_median))
+        others.push_back(other.rel_median);
+    }
+    const double others_median = others.size() >= 2 ? MedianOrNaN(others) : kNaN;
+    const bool judged = camera.gt_compared >= kMinComparedPersons;
+    if (judged && camera.rel_median < kFarRelDistance && camera.rel_median >= kFarRelFloor &&
+        camera.rel_median >= kFarRelFactor * others_median) {
+      camera_warning({"gt_far_from_detections",
+                      where + ": projected GT is far from the detections compared with the other cameras (median " +
+                          FixedText(camera.rel_median, 2) + " of the person's box diagonal, " +
+                          FixedText(camera.px_median, 0) + " px, over " + std::to_string(camera.gt_compared) +
+                          " GT persons; " + FixedText(camera.rel_median / others_median, 1) +
+                          " times the other cameras' " + FixedText(others_median, 3) +
+                          "); check its calibration and that its detections are its own (camera names and order)"});
+    } else if (judged && camera.rel_median >= kFarRelDistance) {
       camera_warning({"gt_far_from_detections",
                       where + ": projected GT is far from the detections (median " + FixedText(camera.rel_median, 2) +
                           " of the person's box diagonal, " + FixedText(camera.px_median, 0) + " px, over " +

@@ -110,6 +110,11 @@ SequenceCheck CheckDetections(const Sequence& sequence, double max_gap_s, const 
 inline constexpr double kEmptyCameraShare = 0.5;
 // A camera whose median relative GT-to-detection distance is at least this.
 inline constexpr double kFarRelDistance = 0.3;
+// Or at least kFarRelFactor times the median of the sequence's other cameras (two or more judged)
+// and at least kFarRelFloor: two swapped cameras of Shelf measure 0.21-0.23 beside 0.03 (under
+// kFarRelDistance); an aligned real camera stays within 1.55 times the others (MVOR, Shelf-4DA 1.05).
+inline constexpr double kFarRelFactor = 3.0;
+inline constexpr double kFarRelFloor = 0.1;
 // GT joint names the detections must share before anything can be compared.
 inline constexpr int kMinSharedJoints = 3;
 // GT persons in view needed before a camera's distance is judged.

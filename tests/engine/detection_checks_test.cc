@@ -154,6 +154,35 @@ TEST(DetectionChecks, WrongRotationOfOneCamera) {
   EXPECT_NE(warnings[0].message.find("camera " + camera.name), std::string::npos) << warnings[0].message;
 }
 
+// Under the absolute threshold but far beyond the other cameras: a camera turned by 0.05 rad
+// (about 0.17 of the box diagonal beside 0.012) is named by the relative rule, as two swapped
+// cameras of Shelf are (0.21-0.23 beside 0.03); a small turn stays under kFarRelFloor.
+TEST(DetectionChecks, ACameraFarBeyondTheOthersIsNamedUnderTheAbsoluteThreshold) {
+  for (const double angle : {0.05, 0.01}) {
+    Sequence s = Synthetic();
+    Camera& camera = s.cameras[2];
+    const Eigen::Vector3d centre = camera.Center();
+    camera.R = Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitY()).toRotationMatrix() * camera.R;
+    camera.t = -camera.R * centre;
+    const SequenceCheck check = CheckDetections(s, kMaxGap);
+    const std::vector<CheckWarning> warnings = DetectionWarnings(check);
+    const double rel = check.cameras[2].rel_median;
+    if (angle == 0.01) {
+      EXPECT_LT(rel, kFarRelFloor) << Describe(check);
+      EXPECT_TRUE(warnings.empty()) << Describe(check);
+      continue;
+    }
+    EXPECT_GT(rel, kFarRelFloor) << Describe(check);
+    EXPECT_LT(rel, kFarRelDistance) << "the absolute rule would name it too: " << Describe(check);
+    ASSERT_EQ(warnings.size(), 1u) << Describe(check);
+    EXPECT_EQ(warnings[0].code, "gt_far_from_detections");
+    EXPECT_NE(warnings[0].message.find("camera " + camera.name + ": projected GT is far from the detections compared "
+                                       "with the other cameras"),
+              std::string::npos)
+        << warnings[0].message;
+  }
+}
+
 TEST(DetectionChecks, SwappedCameraOrderAndAllDetectionsFarAway) {
   Sequence swapped = Synthetic();
   std::swap(swapped.cameras[0], swapped.cameras[1]);
