@@ -7,6 +7,7 @@
 // array and the merge as a job after it (cli/slurm_submit.h; docs/sweeps.md shows a real run).
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
@@ -37,6 +38,7 @@
 #include "cli/threads_option.h"
 #include "engine/thread_count.h"
 #include "core/errors.h"
+#include "core/option_codec.h"
 #include "core/text.h"
 #include "datasets/dataset_request.h"
 #include "datasets/io/json_file.h"
@@ -306,8 +308,25 @@ OrderedJson CheckedShardRow(const nlohmann::json& shard, const std::string& poin
                             std::int64_t total, int* index) {
   ObjectAt(shard, pointer, source, "a row {\"index\", \"name\", \"set\", \"summary\"}");
   *index = static_cast<int>(io::JsonIntIn(shard, pointer + "/index", source, 0, total - 1));
-  io::JsonString(shard, pointer + "/name", source);
+  const std::string name = io::JsonString(shard, pointer + "/name", source);
   if (io::JsonFind(shard, pointer + "/set")) ObjectAt(shard, pointer + "/set", source, "an object {option: value}");
+  // The row must be the configuration its index names in the shard's own sweep (a row whose "set"
+  // says top_k 7 under the name top_k=0 was merged as is).
+  const nlohmann::json* configurations = io::JsonFind(shard, "/sweep/configurations");
+  if (configurations != nullptr && configurations->is_array()) {
+    if (static_cast<std::int64_t>(configurations->size()) != total) {
+      FailAt(source, "/sweep/configurations", "lists " + std::to_string(configurations->size()) +
+                                                  " configurations, /total says " + std::to_string(total));
+    }
+    const nlohmann::json& configuration = (*configurations)[static_cast<size_t>(*index)];
+    const nlohmann::json set = io::JsonFind(shard, pointer + "/set") ? io::JsonAt(shard, pointer + "/set", source)
+                                                                     : nlohmann::json::object();
+    if (configuration.value("name", std::string()) != name || configuration.value("set", nlohmann::json::object()) != set) {
+      FailAt(source, pointer, "is not configuration " + std::to_string(*index + 1) + " of the shard's sweep (/sweep/" +
+                                  "configurations/" + std::to_string(*index) + " is " +
+                                  QuoteName(configuration.value("name", std::string())) + " with other options)");
+    }
+  }
   if (io::JsonFind(shard, pointer + "/default")) io::JsonBool(shard, pointer + "/default", source);
   if (io::JsonFind(shard, pointer + "/measured_differently")) {
     io::JsonBool(shard, pointer + "/measured_differently", source);
@@ -320,6 +339,17 @@ OrderedJson CheckedShardRow(const nlohmann::json& shard, const std::string& poin
     if (column && !value.is_number() && !value.is_null()) {
       FailAt(source, io::JsonPointerJoin(pointer + "/summary", key),
              std::string("expected a number or null, got ") + value.type_name());
+    }
+    // Numbers no run writes: a percentage outside [0, 100], a negative count or error, infinity.
+    if (column && value.is_number()) {
+      const double number = value.get<double>();
+      static const std::vector<std::string> kPercent = {"pcp", "pck100", "pck500", "recall100", "recall500", "invalid", "f1"};
+      const bool percent = std::find(kPercent.begin(), kPercent.end(), key) != kPercent.end() ||
+                           key.rfind("ap", 0) == 0 || key.rfind("legacy_pcp", 0) == 0;
+      if (!std::isfinite(number) || number < 0 || (percent && number > 100)) {
+        FailAt(source, io::JsonPointerJoin(pointer + "/summary", key),
+               FormatNumber(number) + (percent ? " is not a percentage in [0, 100]" : " is not a count or measure >= 0"));
+      }
     }
   }
   return OrderedJson::parse(io::JsonAt(shard, pointer, source).dump());
@@ -334,6 +364,7 @@ void RunMerge(const std::vector<std::string>& inputs, const std::string& out) {
   nlohmann::json sweep;
   std::string sweep_source;
   OrderedJson shard_runs = OrderedJson::array();
+  std::vector<std::pair<std::string, std::string>> revisions;  // shard file, rpt revision that ran it
   for (const std::string& path : inputs) {
     const nlohmann::json shard = io::LoadJsonFile(path);
     if (!shard.is_object() || !shard.contains("rows") || !shard.contains("total")) {
@@ -357,7 +388,11 @@ void RunMerge(const std::vector<std::string>& inputs, const std::string& out) {
       throw InputError(path + ": a shard of another sweep than " + sweep_source + " (their /sweep/" + part +
                        " differ): merge the shards of one sweep");
     }
-    if (shard.contains("run")) shard_runs.push_back(OrderedJson::parse(shard["run"].dump()));
+    if (shard.contains("run")) {
+      shard_runs.push_back(OrderedJson::parse(shard["run"].dump()));
+      const nlohmann::json* revision = io::JsonFind(shard, "/run/git_revision");
+      if (revision != nullptr && revision->is_string()) revisions.emplace_back(path, revision->get<std::string>());
+    }
     // Configuration indices are ints; the bound also keeps the check for missing ones short.
     const std::int64_t shard_total = io::JsonIntIn(shard, "/total", path, 0, std::numeric_limits<int>::max());
     if (total >= 0 && shard_total != total) {
@@ -393,6 +428,16 @@ void RunMerge(const std::vector<std::string>& inputs, const std::string& out) {
     if (missing_count > named) missing += ", ... (" + std::to_string(missing_count) + " in all)";
     throw InputError("merge: configurations missing (shard files absent?), counted from 1 as --shard counts: " +
                      missing + " of " + std::to_string(total));
+  }
+  // Shards run by different builds of rpt (one rebuilt between shards) may not measure alike.
+  for (const auto& [path, revision] : revisions) {
+    if (revision == revisions.front().second) continue;
+    std::fprintf(stderr,
+                 "warning: merge: the shards were run by different revisions of rpt (%s in %s, %s in %s): rows of "
+                 "different builds may not be comparable\n",
+                 PrintableText(revisions.front().second).c_str(), PrintableText(revisions.front().first).c_str(),
+                 PrintableText(revision).c_str(), PrintableText(path).c_str());
+    break;
   }
   OrderedJson rows = OrderedJson::array();
   for (auto& [index, row] : by_index) rows.push_back(row);

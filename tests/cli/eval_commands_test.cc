@@ -140,6 +140,17 @@ TEST(SweepCommand, ShardsMergeIntoTheFullTable) {
               std::string::npos)
         << mixed.err;
   }
+  // Shards run by different builds of rpt are merged with a warning naming both revisions.
+  nlohmann::json rebuilt = ReadJson(out / "sweep-shard-2-of-2.json");
+  rebuilt["run"]["git_revision"] = "0123456789ab";
+  std::ofstream(out / "rebuilt.json") << rebuilt.dump();
+  const test::CommandResult revisions = test::RunRpt("merge " + (out / "sweep-shard-1-of-2.json").string() + " " +
+                                                     (out / "rebuilt.json").string() + " --out " + (out / "mr").string());
+  EXPECT_EQ(revisions.exit_code, 0) << revisions.err;
+  EXPECT_NE(revisions.err.find("warning: merge: the shards were run by different revisions of rpt ("), std::string::npos)
+      << revisions.err;
+  EXPECT_NE(revisions.err.find("0123456789ab in " + (out / "rebuilt.json").string()), std::string::npos) << revisions.err;
+  EXPECT_EQ(merged.err.find("different revisions"), std::string::npos) << "one build: no warning";
   // Missing configurations are counted from 1, as --shard counts.
   const test::CommandResult missing =
       test::RunRpt("merge " + (out / "sweep-shard-1-of-2.json").string() + " --out " + (out / "m1").string());
@@ -223,6 +234,16 @@ TEST(SweepCommand, DamagedShardFileIsAnErrorNamingFileAndPointer) {
       {[](nlohmann::json& j) { j["total"] = "2"; }, "/total: expected an integer, got string"},
       {[](nlohmann::json& j) { j["total"] = -2; }, "/total: -2 is not an integer in [0, 2147483647]"},
       {[](nlohmann::json& j) { j["base"] = nlohmann::json::array(); }, "/base: expected an object {option: base value}"},
+      // Rows that are not what the shard's sweep says they are, numbers no run writes.
+      {[](nlohmann::json& j) { j["rows"][0]["name"] = "other"; }, "/rows/0: is not configuration 1 of the shard's sweep"},
+      {[](nlohmann::json& j) { j["rows"][1]["set"] = {{"filter.min_match_score", "0.1"}}; },
+       "/rows/1: is not configuration 2 of the shard's sweep"},
+      {[](nlohmann::json& j) { j["rows"][0]["summary"]["pcp"] = -50; },
+       "/rows/0/summary/pcp: -50.0 is not a percentage in [0, 100]"},
+      {[](nlohmann::json& j) { j["rows"][0]["summary"]["f1"] = 100.5; },
+       "/rows/0/summary/f1: 100.5 is not a percentage in [0, 100]"},
+      {[](nlohmann::json& j) { j["rows"][1]["summary"]["frames"] = -3; },
+       "/rows/1/summary/frames: -3.0 is not a count or measure >= 0"},
       {[](nlohmann::json& j) { j.erase("rows"); }, "not a sweep shard file"},
       {[](nlohmann::json& j) { j = nlohmann::json::array({j}); }, "not a sweep shard file"},
   };
