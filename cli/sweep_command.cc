@@ -139,6 +139,8 @@ void RunSweep(const SweepArgs& args) {
   if (args.grid.empty() == args.list.empty()) throw ConfigError("give either --grid key=v1,v2 (repeatable) or --list FILE");
   const std::vector<engine::SweepConfiguration> all =
       args.list.empty() ? engine::ExpandSweepGrid(args.grid) : engine::ReadSweepList(args.list);
+  // An empty list would write an empty table and pass.
+  if (all.empty()) throw InputError(args.list + ": no configurations: the sweep would run nothing");
   for (size_t i = 1; i < all.size(); ++i) {  // a list file checks its own names; a grid can repeat a value
     for (size_t j = 0; j < i; ++j) {
       if (all[i].name == all[j].name) throw ConfigError(all[i].origin + ": configuration " + QuoteName(all[i].name) + " twice");
@@ -232,8 +234,22 @@ void RunSweep(const SweepArgs& args) {
         summaries[c] = engine::SummaryJson(engine::Run(shared_input, options));
       }
     } catch (...) {
+      // A configuration that fails when it runs (e.g. core joints the input does not have) is named
+      // with where it was given: one of 23 ablations was not otherwise told apart.
+      const engine::SweepConfiguration& failed = all[mine[c]];
+      const std::string which = failed.origin + " (configuration " + QuoteName(failed.name) + "): ";
+      std::exception_ptr named;
+      try {
+        throw;
+      } catch (const ConfigError& e) {
+        named = std::make_exception_ptr(ConfigError(which + e.what()));
+      } catch (const InputError& e) {
+        named = std::make_exception_ptr(InputError(which + e.what()));
+      } catch (...) {
+        named = std::current_exception();
+      }
       std::lock_guard<std::mutex> lock(error_mutex);
-      if (!error) error = std::current_exception();
+      if (!error) error = named;
     }
     const long finished = ++done;
 #ifdef _OPENMP

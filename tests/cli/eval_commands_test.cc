@@ -188,6 +188,16 @@ TEST(SweepCommand, ListFileTyposNameTheFileAndTheConfiguration) {
   EXPECT_EQ(option.exit_code, 2);
   EXPECT_NE(option.err.find("list.json: /configurations/1 (configuration 'b'): "), std::string::npos) << option.err;
   EXPECT_NE(option.err.find("merge.topk"), std::string::npos) << option.err;
+  const test::CommandResult empty = run("[]");
+  EXPECT_EQ(empty.exit_code, 2);
+  EXPECT_NE(empty.err.find("list.json: no configurations: the sweep would run nothing"), std::string::npos) << empty.err;
+  // A configuration that fails only when it runs is named with its place in the file.
+  const test::CommandResult fails =
+      run(R"([{"name": "ok"}, {"name": "bad joints", "set": {"triangulate.core_joints": ["foo", "bar", "baz"]}}])");
+  EXPECT_EQ(fails.exit_code, 2);
+  EXPECT_NE(fails.err.find("list.json: /1 (configuration 'bad joints'): triangulate.core_joints: joint 'foo'"),
+            std::string::npos)
+      << fails.err;
   const test::CommandResult grid =
       test::RunRpt("sweep --dataset synthetic --param frames=5 --grid merge.top_k=3,3 --out " + (out / "g").string());
   EXPECT_EQ(grid.exit_code, 2);
