@@ -168,12 +168,32 @@ Detections ReadOpenPoseFolder(const std::filesystem::path& dir, const OpenPoseFo
 
   // Collect and map the file names.
   std::vector<RawFile> files;
-  long unmatched = 0;
-  std::string first_unmatched;
-  for (auto it = std::filesystem::recursive_directory_iterator(dir, ec); !ec && it != std::filesystem::recursive_directory_iterator();
-       it.increment(ec)) {
-    if (!it->is_regular_file(ec)) continue;
+  long unmatched = 0, not_regular = 0;
+  std::string first_unmatched, first_not_regular;
+  // Camera folders may be links (cameras gathered from several disks); a folder reached a second
+  // time (a link loop, or two links to one folder) is not read again, but counted; depth is bounded.
+  constexpr int kMaxFolderDepth = 8;
+  std::set<std::filesystem::path> folders = {std::filesystem::weakly_canonical(dir, ec)};
+  long repeated_folders = 0;
+  std::string first_repeated;
+  for (auto it = std::filesystem::recursive_directory_iterator(
+           dir, std::filesystem::directory_options::follow_directory_symlink, ec);
+       !ec && it != std::filesystem::recursive_directory_iterator(); it.increment(ec)) {
+    if (it->is_directory(ec)) {
+      std::error_code canonical_error;
+      const std::filesystem::path folder = std::filesystem::canonical(it->path(), canonical_error);
+      if (canonical_error || !folders.insert(folder).second || it.depth() >= kMaxFolderDepth) {
+        it.disable_recursion_pending();
+        const std::string relative = it->path().lexically_relative(dir).generic_string();
+        if (repeated_folders++ == 0 || relative < first_repeated) first_repeated = relative;
+      }
+      continue;
+    }
     const std::string relative = it->path().lexically_relative(dir).generic_string();
+    if (!it->is_regular_file(ec)) {  // a FIFO, a device, a dangling link: never opened, but said
+      if (not_regular++ == 0 || relative < first_not_regular) first_not_regular = relative;
+      continue;
+    }
     RawFile file;
     file.path = it->path();
     if (mapper.Apply(relative, source, &file.frame_id, &file.camera)) {
@@ -203,6 +223,14 @@ Detections ReadOpenPoseFolder(const std::filesystem::path& dir, const OpenPoseFo
       source,
       "files not matching the pattern " + QuoteName(options.mapping.pattern) + " ignored (e.g. " + QuoteName(first_unmatched) + ")",
       unmatched);
+  warnings.AddUnused(source,
+                     "entries that are not regular files (FIFOs, devices, dangling links) skipped (e.g. " +
+                         QuoteName(first_not_regular) + ")",
+                     not_regular);
+  warnings.AddUnused(source,
+                     "folders reached a second time through a link (a loop, or two links to one folder) not read "
+                     "again (e.g. " + QuoteName(first_repeated) + ")",
+                     repeated_folders);
   bool any_face_or_hand = false, any_body25 = false;
   for (RawFile& file : files) {
     file.people = ReadOpenPoseFile(file.path, source, &warnings);

@@ -2,6 +2,7 @@
 // Generic detections JSON, OpenPose folders, COCO result lists and the ReadDetectionsFile entry point.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <algorithm>
 #include <fstream>
@@ -225,6 +226,37 @@ TEST(OpenPose, Body25FolderMapsToCocoNamesAndFeet) {
 
   options.joints = OpenPoseJointSet::kBody;
   EXPECT_EQ(ReadOpenPoseFolder(dir.path(), options).joints, CocoBodyJoints());
+}
+
+// A camera folder that is a link (cameras gathered from several disks) is read; a file entry that
+// is not a regular file (a FIFO would block the read) is skipped and counted, never opened; a link
+// loop ends.
+TEST(OpenPose, LinkedCameraFoldersAreReadAndOtherEntriesCounted) {
+  test::TempDir dir, elsewhere;
+  const nlohmann::json person = {{"pose_keypoints_2d", Flat(18, 10, 0.5)}};
+  WriteOpenPose(dir, "c0/vid_000000000001_keypoints.json", {person});
+  WriteOpenPose(elsewhere, "c1/vid_000000000001_keypoints.json", {person, person});
+  std::filesystem::create_directory_symlink(elsewhere.path() / "c1", dir.path() / "c1");
+  std::filesystem::create_directory_symlink(dir.path(), dir.path() / "c0" / "loop");
+  ASSERT_EQ(mkfifo((dir.path() / "c0" / "vid_000000000002_keypoints.json").c_str(), 0600), 0);
+  const Detections d = ReadOpenPoseFolder(dir.path());
+  ASSERT_EQ(d.frames.size(), 1u);
+  EXPECT_EQ(d.frames[0].cameras, (std::vector<std::string>{"c0", "c1"}));
+  EXPECT_EQ(d.frames[0].views[1].num_persons(), 2);
+  bool counted = false;
+  for (const auto& item : d.warnings.items()) {
+    counted |= item.Line() == dir.path().string() +
+                                  ": 1 entries that are not regular files (FIFOs, devices, dangling links) skipped "
+                                  "(e.g. 'c0/vid_000000000002_keypoints.json')";
+  }
+  EXPECT_TRUE(counted) << "the FIFO is not said";
+  bool loop = false;
+  for (const auto& item : d.warnings.items()) {
+    loop |= item.Line() == dir.path().string() +
+                               ": 1 folders reached a second time through a link (a loop, or two links to one folder) "
+                               "not read again (e.g. 'c0/loop')";
+  }
+  EXPECT_TRUE(loop) << "the link loop is not said";
 }
 
 TEST(OpenPose, Coco18FolderGivesCoco17) {
