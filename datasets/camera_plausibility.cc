@@ -17,6 +17,20 @@ void CountImplausibleCamera(const Camera& camera, const std::string& source, Inp
   if (!(worst <= kMaxPlausibleDistortion)) {
     warnings->Add(source, "cameras with a distortion coefficient beyond +-100", "max |coefficient|", worst);
   }
+  if (camera.width > 0) {
+    // The horizontal field of view a pinhole of this focal length sees over the image width: a
+    // focal length in millimetres (4.5 "px" over 1920 px: 179.5 degrees) or a corrupt value
+    // (1e12 px: no angle at all) is far outside what lenses give (fisheyes included: their focal
+    // length is about width / pi).
+    const double fov_deg = 2.0 * std::atan(0.5 * camera.width / camera.K(0, 0)) * 180.0 / std::acos(-1.0);
+    if (!(fov_deg <= kMaxPlausibleFieldOfViewDeg)) {
+      warnings->Add(source, "cameras whose focal length gives a field of view over 170 degrees (in millimetres, not pixels?)",
+                    "widest field of view in degrees", fov_deg);
+    } else if (!(fov_deg >= kMinPlausibleFieldOfViewDeg)) {
+      warnings->Add(source, "cameras whose focal length gives a field of view under 1 degree (check the focal length)",
+                    "largest focal length / image width", camera.K(0, 0) / camera.width);
+    }
+  }
   if (camera.width > 0 && camera.height > 0) {
     const double offset = std::max(std::abs(camera.K(0, 2) - 0.5 * camera.width) / camera.width,
                                    std::abs(camera.K(1, 2) - 0.5 * camera.height) / camera.height);

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Cameras that are valid but implausible: further than 1 km from the world origin (a unit mix-up,
 // millimetres read as metres, or a corrupt file: T = 1e300), with a lens distortion coefficient
-// beyond +-100, or with the principal point far from the image centre; rigs whose cameras stand
+// beyond +-100, with the principal point far from the image centre, or with a focal length whose
+// field of view is over 170 or under 1 degree (millimetres for pixels); rigs whose cameras stand
 // at the same spot or span more than 100 m. They are kept (a huge outdoor scene is not
 // impossible) and counted per file as input warnings (datasets/input_warnings.h), so `rpt eval`,
 // `inspect` and `rpt cameras show` print one line per file and kind.
@@ -19,6 +20,10 @@ inline constexpr double kMaxPlausibleCameraDistanceM = 1000.0;  // |T| = |centre
 inline constexpr double kMaxPlausibleDistortion = 100.0;        // any coefficient, in magnitude
 // |cx - width / 2| / width and |cy - height / 2| / height (real lenses: a few per cent).
 inline constexpr double kMaxPlausiblePrincipalOffset = 0.25;
+// The horizontal field of view 2 atan(width / 2 fx): real lenses 5-120 degrees (fisheyes as
+// pinholes about 115); a focal length in millimetres gives nearly 180.
+inline constexpr double kMaxPlausibleFieldOfViewDeg = 170.0;
+inline constexpr double kMinPlausibleFieldOfViewDeg = 1.0;
 inline constexpr double kMinPlausibleCameraSeparationM = 0.01;  // between two camera centres
 // Between the two farthest camera centres: an indoor capture spans 3-20 m, a stadium ~100 m;
 // millimetres read as metres make thousands.

@@ -99,6 +99,14 @@ CalibrationFormat DetectCalibrationFormat(const fs::path& path) {
     const file_storage::File file = file_storage::ReadFile(path);
     return file.Find("names") != nullptr ? CalibrationFormat::kEasyMocap : CalibrationFormat::kOpenCV;
   }
+  // A pickle is none of the calibration formats: Human3.6M's cameras.pkl holds cameras per subject,
+  // which only its dataset reader knows how to pick ("set the format" would send the user nowhere).
+  if (extension == ".pkl" || extension == ".pickle") {
+    throw InputError(path.string() +
+                     ": a Python pickle, which is no calibration format rpt reads as a file (Human3.6M's "
+                     "cameras.pkl is read with its dataset: --dataset human36m --root DIR; convert other cameras to "
+                     "*.json, *.toml or *.yml)");
+  }
   throw InputError(path.string() +
                    ": cannot tell the calibration format from the name (expected *.json, *.toml, "
                    "*.yml, *.yaml, *.xml, cameras.txt / images.txt or a folder); set the format");

@@ -22,6 +22,19 @@ const std::string kHandBuiltCamera = R"({"name": "cam0", "width": 1920, "height"
    "R": [[1, 0, 0], [0, 0, -1], [0, 1, 0]], "T": [[0.0], [-4.0], [1.5]]})";
 const std::string kHandBuiltJson = "{\"cameras\": [\n  " + kHandBuiltCamera + "]}";
 
+// A pickle (Human3.6M's cameras.pkl) is named as such, with where it is read, instead of "set the
+// format", which no format could follow; an unknown extension still says which names are known.
+TEST(CalibrationFormat, APickleSaysWhereItIsReadAnUnknownNameWhatIsKnown) {
+  test::TempDir dir;
+  const auto pickle = WriteCalibrationText(dir.path() / "cameras.pkl", "\x80\x04");
+  EXPECT_THAT(test::InputErrorOf([&] { DetectCalibrationFormat(pickle); }),
+              ::testing::HasSubstr("cameras.pkl: a Python pickle, which is no calibration format rpt reads as a file "
+                                   "(Human3.6M's cameras.pkl is read with its dataset: --dataset human36m"));
+  const auto other = WriteCalibrationText(dir.path() / "cameras.bin", "x");
+  EXPECT_THAT(test::InputErrorOf([&] { DetectCalibrationFormat(other); }),
+              ::testing::HasSubstr("cameras.bin: cannot tell the calibration format from the name"));
+}
+
 TEST(CalibrationJson, HandBuiltCameraProjectsTheKnownPointToTheKnownPixel) {
   test::TempDir dir;
   const auto path = WriteCalibrationText(dir.path() / "cameras.json", kHandBuiltJson);

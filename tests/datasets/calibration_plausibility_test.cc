@@ -3,6 +3,7 @@
 // never silent: principal points far off-centre, two cameras at one spot, rigs that look like
 // millimetres read as metres; ReadCalibration counts them for every format.
 #include <gmock/gmock.h>
+#include <cmath>
 #include <gtest/gtest.h>
 
 #include "datasets/calibration/calibration.h"
@@ -42,6 +43,33 @@ TEST(CameraPlausibility, PrincipalPointFarOffCentreIsCounted) {
   EXPECT_THAT(Lines(warnings),
               ElementsAre("cams: 2 cameras with the principal point more than a quarter of the image from its centre "
                           "(max offset / image side = 0.5)"));
+}
+
+// A focal length in millimetres (4.5 "px" over 1920 px: 179.5 degrees) or corrupt (1e12 px) gave
+// 0 persons, or dropped the camera, without a word; 170 and 1 degree are the bounds.
+TEST(CameraPlausibility, FocalLengthsOutsideAnyLensAreCounted) {
+  Camera camera = test::MakeRig(false)[0];
+  const auto focal_for = [&](double fov_deg) { return 0.5 * camera.width / std::tan(0.5 * fov_deg * std::acos(-1.0) / 180.0); };
+  for (const double fov : {169.9, 1.01, 60.0}) {
+    InputWarnings warnings;
+    camera.K(0, 0) = focal_for(fov);
+    CountImplausibleCamera(camera, "cams", &warnings);
+    EXPECT_TRUE(warnings.empty()) << fov << ": " << testing::PrintToString(Lines(warnings));
+  }
+  InputWarnings warnings;
+  camera.K(0, 0) = 4.5;
+  CountImplausibleCamera(camera, "cams", &warnings);
+  camera.K(0, 0) = focal_for(170.5);
+  CountImplausibleCamera(camera, "cams", &warnings);
+  camera.K(0, 0) = 1e12;
+  CountImplausibleCamera(camera, "cams", &warnings);
+  ASSERT_EQ(warnings.items().size(), 2u) << testing::PrintToString(Lines(warnings));
+  EXPECT_EQ(warnings.items()[0].what,
+            "cameras whose focal length gives a field of view over 170 degrees (in millimetres, not pixels?)");
+  EXPECT_EQ(warnings.items()[0].count, 2);
+  EXPECT_NEAR(warnings.items()[0].worst, 2.0 * std::atan(0.5 * camera.width / 4.5) * 180.0 / std::acos(-1.0), 1e-9);
+  EXPECT_EQ(warnings.items()[1].what, "cameras whose focal length gives a field of view under 1 degree (check the focal length)");
+  EXPECT_DOUBLE_EQ(warnings.items()[1].worst, 1e12 / camera.width);
 }
 
 TEST(CameraPlausibility, CamerasAtOneSpotAndMillimetreRigsAreCounted) {
