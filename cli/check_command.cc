@@ -53,7 +53,7 @@ class CheckReport {
   void Checked(const engine::ThresholdEvaluation& e, const engine::ThresholdCheck& check, double achieved, bool pass) {
     ++checked_;
     failures_ += pass ? 0 : 1;
-    std::printf("%-40s %-22s %6s %10.2f %10.2f  %s\n", Shown(e.name).c_str(), Shown(check.metric).c_str(),
+    std::printf("%-*s %-22s %6s %10.2f %10.2f  %s\n", name_width_, Shown(e.name).c_str(), Shown(check.metric).c_str(),
                 Shown(check.bound).c_str(), check.limit, achieved, pass ? "ok" : "FAILED");
     json_.push_back({{"evaluation", e.name}, {"metric", check.metric}, {"bound", check.bound},
                      {"expected", check.limit}, {"achieved", std::isnan(achieved) ? Json(nullptr) : Json(achieved)},
@@ -68,7 +68,7 @@ class CheckReport {
   void Skipped(const engine::ThresholdEvaluation& e, bool as_failure) {
     ++skipped_;
     const std::string why = e.required_path + " absent";
-    std::printf("%-40s %-22s %6s %10s %10s  %s (%s)\n", Shown(e.name).c_str(), "-", "-", "-", "-",
+    std::printf("%-*s %-22s %6s %10s %10s  %s (%s)\n", name_width_, Shown(e.name).c_str(), "-", "-", "-", "-",
                 as_failure ? "SKIPPED, failing" : "skipped", Shown(why).c_str());
     AddCases(e, as_failure ? engine::JunitCase::Outcome::kFailure : engine::JunitCase::Outcome::kSkipped,
              as_failure ? "skipped (" + why + "), --fail-on-skip" : "skipped (" + why + ")");
@@ -76,10 +76,21 @@ class CheckReport {
 
   void Errored(const engine::ThresholdEvaluation& e, const std::string& what) {
     ++errored_;
-    std::printf("%-40s %-22s %6s %10s %10s  ERROR: %s\n", Shown(e.name).c_str(), "-", "-", "-", "-",
+    std::printf("%-*s %-22s %6s %10s %10s  ERROR: %s\n", name_width_, Shown(e.name).c_str(), "-", "-", "-", "-",
                 PrintableText(what).c_str());
     json_.push_back({{"evaluation", e.name}, {"error", what}, {"pass", false}});
     AddCases(e, engine::JunitCase::Outcome::kError, what);
+  }
+
+  // The name column fits the longest name (at least 40, at most 100 characters): longer names ran
+  // into the metric column.
+  void FitNames(const std::vector<engine::ThresholdEvaluation>& evaluations) {
+    for (const engine::ThresholdEvaluation& e : evaluations)
+      name_width_ = std::max(name_width_, std::min(100, static_cast<int>(Shown(e.name).size())));
+  }
+  void PrintHeader() const {
+    std::printf("%-*s %-22s %6s %10s %10s  %s\n", name_width_, "evaluation", "metric", "bound", "expected", "achieved",
+                "status");
   }
 
   void PrintTotals(bool fail_on_skip) const {
@@ -104,6 +115,7 @@ class CheckReport {
   }
 
   int checked_ = 0, failures_ = 0, skipped_ = 0, errored_ = 0;
+  int name_width_ = 40;
   Json json_ = Json::array();
   std::vector<engine::JunitCase> cases_;
 };
@@ -156,7 +168,8 @@ int RunCheck(const CheckArgs& args) {
   CheckReport report;
   // Evaluations often read the same files: one line per file and kind for the whole check.
   InputWarnings warnings;
-  std::printf("%-40s %-22s %6s %10s %10s  %s\n", "evaluation", "metric", "bound", "expected", "achieved", "status");
+  report.FitNames(file.evaluations);
+  report.PrintHeader();
   for (const engine::ThresholdEvaluation& e : file.evaluations) {
     if (!args.only.empty() && e.name.find(args.only) == std::string::npos) continue;
     if (!e.required_path.empty() && !fs::exists(e.required_path)) {
