@@ -88,6 +88,11 @@ int main(int argc, char** argv) {
   rpt::SkipHdf5CleanupAtExit();          // before any other HDF5 call
   CLI::App app{"rpt: RapidPoseTriangulation, learning-free multi-view multi-person 3D pose triangulation"};
   app.require_subcommand(1);
+  // CLI11 quotes the refused value as given: a value with terminal escapes (ESC ]0; ... BEL) reached
+  // the terminal raw. Its message is printed with control characters escaped, line breaks kept.
+  app.failure_message([](const CLI::App* failed, const CLI::Error& e) {
+    return rpt::PrintableText(CLI::FailureMessage::simple(failed, e));
+  });
   app.set_version_flag("--version", std::string("rpt ") + RPT_VERSION + " (git " + RPT_GIT_REVISION + ")",
                        "print the version and git revision, then exit");
   // Global options, accepted before or after the subcommand (fallthrough).

@@ -20,7 +20,7 @@ inline void AddThreadsOption(CLI::App* command, int* threads, std::string_view w
         "results of 1 thread)";
   }
   command->add_option("--threads", *threads, help + " (0 = automatic: all cores; at most the cores)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::Range(0, 4096));  // (NonNegativeNumber quoted its bound as 309 digits)
 }
 
 }  // namespace rpt::cli

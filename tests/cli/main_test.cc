@@ -46,6 +46,20 @@ TEST(Main, UnknownFlagOfASubcommandSuggestsTheClosest) {
   EXPECT_NE(r.err.find("--thresholdz: did you mean '--thresholds'?"), std::string::npos) << r.err;
 }
 
+// A refused option value reaches the terminal with its control characters escaped (CLI11 quoted it
+// raw: an ESC ]0;...BEL set the terminal's title), and a bound as a short number.
+TEST(Main, RefusedOptionValuesAreShownEscaped) {
+  const test::CommandResult r =
+      test::RunRpt("eval --dataset synthetic --simulate --detector \"$(printf 'x\\033]0;T\\a')\"");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--detector: x\\x1b]0;T\\x07 not in {perfect,clean,realistic,hard}"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find('\x1b'), std::string::npos);
+  EXPECT_NE(r.err.find("\nRun with --help for more information."), std::string::npos) << "line breaks kept: " << r.err;
+  const test::CommandResult threads = test::RunRpt("eval --dataset synthetic --threads 1e400");
+  EXPECT_EQ(threads.exit_code, 2);
+  EXPECT_NE(threads.err.find("--threads: Value 1e400 not in range 0 to 4096"), std::string::npos) << threads.err;
+}
+
 TEST(ClosestName, PicksTheNearestNameWithinATypoDistance) {
   EXPECT_EQ(EditDistance("kitten", "sitting"), 3);
   EXPECT_EQ(ClosestName("evl", {"demo", "eval", "sweep"}), "eval");
