@@ -20,7 +20,14 @@ inline void AddThreadsOption(CLI::App* command, int* threads, std::string_view w
         "results of 1 thread)";
   }
   command->add_option("--threads", *threads, help + " (0 = automatic: all cores; at most the cores)")
-      ->check(CLI::Range(0, 4096));  // (NonNegativeNumber quoted its bound as 309 digits)
+      // Digits only (a count above the cores is clamped with a note); CLI::NonNegativeNumber quoted
+      // its bound, DBL_MAX, as 309 digits when it refused 1e400.
+      ->check(CLI::Validator(
+          [](const std::string& value) {
+            const bool digits = !value.empty() && value.find_first_not_of("0123456789") == std::string::npos;
+            return digits ? std::string() : "'" + value + "' is not a whole number >= 0";
+          },
+          "INT >= 0"));
 }
 
 }  // namespace rpt::cli
