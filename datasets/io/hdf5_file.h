@@ -408,16 +408,17 @@ class Hdf5Reader {
   // caches rpt writes; other files, e.g. Human3.6M's, have none).
   void RequireChecksums() { require_checksums_ = true; }
 
-  // With RequireChecksums: throws InputError naming the dataset when its "crc32" attribute is
-  // missing or differs from `crc` (the checksum of the values read).
-  void VerifyChecksum(hid_t dataset, const std::string& name, std::uint32_t crc) const {
+  // With RequireChecksums: throws InputError naming the object when its "crc32" attribute is
+  // missing or differs from `crc` (the checksum of the `what` read: a dataset's values, a group's
+  // attributes).
+  void VerifyChecksum(hid_t object, const std::string& name, std::uint32_t crc, const std::string& what = "values") const {
     if (!require_checksums_) return;
-    if (!HasAttribute(dataset, name, kChecksumAttribute)) {
+    if (!HasAttribute(object, name, kChecksumAttribute)) {
       Fail(name, std::string("checksum attribute '") + kChecksumAttribute + "' missing (damaged?)");
     }
-    const double stored = NumberAttribute(dataset, name, kChecksumAttribute);
+    const double stored = NumberAttribute(object, name, kChecksumAttribute);
     if (stored != static_cast<double>(crc)) {
-      Fail(name, "checksum mismatch: the values differ from those rpt wrote (damaged file; write the cache again)");
+      Fail(name, "checksum mismatch: the " + what + " differ from those rpt wrote (damaged file; write the cache again)");
     }
   }
 
@@ -485,25 +486,26 @@ class Hdf5Reader {
     return out;
   }
 
-  // Whether `object` has an attribute `name`. The attributes are listed (at most kMaxAttributes)
-  // rather than looked up, and a damaged attribute list is an error naming `place`.
+  // Whether `object` has an attribute `name`: at most kMaxAttributes of them (counted from the
+  // object header), then looked up by name; a damaged attribute list is an error naming `place`.
+  // Not listed with H5Aiterate2: where an attribute message fails to decode, HDF5 1.10 frees the
+  // uninitialised rest of the table it was building (H5A__attr_release_table), which crashed rpt
+  // on a cache whose group attribute had a damaged name length (the walk in a child process, run
+  // with other heap contents, had passed it).
   bool HasAttribute(hid_t object, const std::string& place, const std::string& name) const {
-    struct Listing {
-      std::vector<std::string> names;
-    } listing;
-    const auto collect = [](hid_t, const char* attribute, const H5A_info_t*, void* data) -> herr_t {
-      auto* l = static_cast<Listing*>(data);
-      l->names.emplace_back(attribute ? attribute : "");
-      return l->names.size() > static_cast<size_t>(kMaxAttributes) ? 1 : 0;
-    };
-    hsize_t index = 0;
-    if (H5Aiterate2(object, H5_INDEX_NAME, H5_ITER_NATIVE, &index, collect, &listing) < 0) {
-      Fail(place, "cannot list the attributes (damaged?)");
-    }
-    if (listing.names.size() > static_cast<size_t>(kMaxAttributes)) {
+    H5O_info_t info;
+#if H5_VERSION_GE(1, 12, 0)
+    const herr_t got = H5Oget_info3(object, &info, H5O_INFO_NUM_ATTRS);
+#else
+    const herr_t got = H5Oget_info2(object, &info, H5O_INFO_NUM_ATTRS);
+#endif
+    if (got < 0) Fail(place, "cannot list the attributes (damaged?)");
+    if (info.num_attrs > static_cast<hsize_t>(kMaxAttributes)) {
       Fail(place, "more than " + std::to_string(kMaxAttributes) + " attributes (damaged or not an rpt cache?)");
     }
-    return std::find(listing.names.begin(), listing.names.end(), name) != listing.names.end();
+    const htri_t exists = H5Aexists(object, name.c_str());
+    if (exists < 0) Fail(place, "cannot list the attributes (damaged?)");
+    return exists > 0;
   }
 
   // Opens attribute `name` of `object` and checks it holds one element.

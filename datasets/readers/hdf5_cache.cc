@@ -22,9 +22,12 @@
 namespace rpt {
 namespace {
 
-// Version 2 (written): every dataset carries the CRC-32 of its values (io::NumbersCrc,
-// io::StringsCrc), checked on reading. Version 1 (read): the same layout without checksums.
-constexpr int kVersion = 2;
+// Version 3 (written): every dataset carries the CRC-32 of its values (io::NumbersCrc,
+// io::StringsCrc), and the groups /sequences and /sequences/<i> the CRC-32 of their attributes
+// (AttributesCrc), all checked on reading. Version 2 (read): dataset checksums only. Version 1
+// (read): the same layout without checksums.
+constexpr int kVersion = 3;
+constexpr int kVersionWithoutAttributeChecksums = 2;
 constexpr int kVersionWithoutChecksums = 1;
 constexpr const char* kDetectionsFormat = "rpt-detections";
 constexpr const char* kSequencesFormat = "rpt-sequences";
@@ -35,7 +38,17 @@ using io::Hdf5Reader;
 using io::Hdf5Writer;
 using io::ShapeText;
 
-void CheckFormat(io::Hdf5Reader& reader, hid_t group, const std::string& place, const std::string& format) {
+// The checksum a group's attributes carry (attribute "crc32" of the group, version 3): the group's
+// string attributes as io::StringsCrc continues over them, then its numbers as io::NumbersCrc
+// does (little-endian doubles). /sequences: its count; /sequences/<i>: its name and fps.
+std::uint32_t AttributesCrc(const std::vector<std::string>& strings, const std::vector<double>& numbers) {
+  std::uint32_t crc = io::StringsCrc(strings);
+  for (const double number : numbers) crc = io::Crc32(crc, std::string_view(reinterpret_cast<const char*>(&number), sizeof number));
+  return crc;
+}
+
+// Returns the file's format version (1, 2 or 3) after checking its tag.
+int CheckFormat(io::Hdf5Reader& reader, hid_t group, const std::string& place, const std::string& format) {
   const std::string found = reader.HasAttribute(group, place, "format") ? reader.StringAttribute(group, place, "format") : "";
   if (found != format) {
     // A damaged file can hold any bytes there (even a heap address HDF5 returned): quoted inside the
@@ -44,12 +57,14 @@ void CheckFormat(io::Hdf5Reader& reader, hid_t group, const std::string& place, 
                            " (not written by rpt?)");
   }
   const double version = reader.NumberAttribute(group, place, "version");
-  if (version != kVersion && version != kVersionWithoutChecksums) {
+  if (version != kVersion && version != kVersionWithoutAttributeChecksums && version != kVersionWithoutChecksums) {
     reader.Fail(place, "format version " + std::to_string(version) + " is not supported (this build reads versions " +
-                    std::to_string(kVersionWithoutChecksums) + " and " + std::to_string(kVersion) + ")");
+                    std::to_string(kVersionWithoutChecksums) + " to " + std::to_string(kVersion) + ")");
   }
-  // rpt writes version 2; version 1 is the format other tools (and rpt before checksums) write.
-  if (version == kVersion) reader.RequireChecksums();
+  // rpt writes version 3 (version 2 before its attributes had checksums); version 1 is the format
+  // other tools (and rpt before checksums) write.
+  if (version != kVersionWithoutChecksums) reader.RequireChecksums();
+  return static_cast<int>(version);
 }
 
 // Offsets: offsets[0] = 0, non-decreasing, offsets.back() = total.
@@ -266,6 +281,7 @@ void WriteSequencesHdf5(const std::filesystem::path& path, const std::vector<Seq
   writer.NumberAttribute(root.get(), "/sequences", "version", H5T_STD_I32LE, H5T_NATIVE_INT, kVersion);
   writer.NumberAttribute(root.get(), "/sequences", "count", H5T_STD_I64LE, H5T_NATIVE_INT64,
                          static_cast<std::int64_t>(sequences.size()));
+  writer.Checksum(root.get(), "/sequences", AttributesCrc({}, {static_cast<double>(sequences.size())}));
   for (size_t s = 0; s < sequences.size(); ++s) {
     const Sequence& sequence = sequences[s];
     const std::string name = "/sequences/" + std::to_string(s);
@@ -273,6 +289,7 @@ void WriteSequencesHdf5(const std::filesystem::path& path, const std::vector<Seq
     const hid_t g = group.get();
     writer.StringAttribute(g, name, "name", sequence.name);
     writer.NumberAttribute(g, name, "fps", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, sequence.fps);
+    writer.Checksum(g, name, AttributesCrc({sequence.name}, {sequence.fps}));
     const Room& room = sequence.room;
     writer.Doubles(g, name, "room_center", {3}, {room.center_m.x(), room.center_m.y(), room.center_m.z()});
     writer.Doubles(g, name, "room_size", {3}, {room.size_m.x(), room.size_m.y(), room.size_m.z()});
@@ -333,8 +350,13 @@ std::vector<std::unique_ptr<FrameSource>> OpenSequencesHdf5(const std::filesyste
                                   (reader.Exists("/detections") ? " (it holds detections only)" : " (not an rpt cache?)"));
   }
   Hdf5Id root = reader.OpenGroup("/sequences", "labels");
-  CheckFormat(reader, root.get(), "/sequences", kSequencesFormat);
+  const int version = CheckFormat(reader, root.get(), "/sequences", kSequencesFormat);
+  // Version 3: a group's attributes are compared with the checksum the group carries.
+  const auto verify_attributes = [&](hid_t group, const std::string& place, std::uint32_t crc) {
+    if (version >= kVersion) reader.VerifyChecksum(group, place, crc, "attributes");
+  };
   const double count = reader.NumberAttribute(root.get(), "/sequences", "count");
+  verify_attributes(root.get(), "/sequences", AttributesCrc({}, {count}));
   if (!(count >= 0) || count != std::floor(count) || count > 1e7) reader.Fail("/sequences", "bad attribute count");
 
   std::vector<std::unique_ptr<FrameSource>> sources;
@@ -345,6 +367,7 @@ std::vector<std::unique_ptr<FrameSource>> OpenSequencesHdf5(const std::filesyste
     InputWarnings warnings;
     sequence.name = reader.StringAttribute(group.get(), name, "name");
     sequence.fps = reader.NumberAttribute(group.get(), name, "fps");
+    verify_attributes(group.get(), name, AttributesCrc({sequence.name}, {sequence.fps}));
     if (!std::isfinite(sequence.fps) || sequence.fps < 0) reader.Fail(name, "attribute fps is not a non-negative number");
     const auto center = reader.Doubles(name + "/room_center", Shape({3}));
     const auto size = reader.Doubles(name + "/room_size", Shape({3}));
