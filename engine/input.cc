@@ -188,6 +188,7 @@ Input OpenInput(const InputSpec& spec, const InputNeeds& needs) {
     std::vector<std::unique_ptr<FrameSource>> sources = OpenDetectionsOnCameras(spec, &opened);
     for (auto& source : sources) source = std::make_unique<CheckedSource>(std::move(source));
     Input input(std::move(sources), std::move(opened), spec.strict);
+    input.set_detections_file(spec.detections);
     input.CheckStrict();
     return input;
   }
@@ -226,6 +227,7 @@ Input OpenInput(const InputSpec& spec, const InputNeeds& needs) {
     source = std::make_unique<CheckedSource>(std::move(source));
   }
   Input input(std::move(sources), std::move(opened), spec.strict, std::move(attached), std::move(per_sequence_files));
+  if (!spec.simulate) input.set_detections_file(spec.detections);
   // What the readers found unusable while opening (e.g. files not matching the reader's pattern);
   // the rest is known once the sources are exhausted (the run loop checks again then).
   input.CheckStrict();

@@ -73,6 +73,10 @@ class Input {
   InputWarnings Warnings() const;
   // With --strict: throws InputError listing every unused-input warning reported so far.
   void CheckStrict() const;
+  // The detections file or folder the frames' 2D poses come from (InputSpec::detections; empty for
+  // a dataset's own, simulated or live detections): errors about a frame's detections name it.
+  const std::string& detections_file() const { return detections_file_; }
+  void set_detections_file(std::string path) { detections_file_ = std::move(path); }
   // Every sequence in memory (for the commands that need whole sequences: inspect, render,
   // report, detector-stats, convert); each frame validated once, like a run's.
   // With max_frames >= 0, an input of more frames (all sequences together) is refused before they
@@ -88,6 +92,7 @@ class Input {
   bool strict_ = false;
   std::shared_ptr<AttachedDetections> attached_;
   std::vector<std::shared_ptr<AttachedDetections>> per_sequence_files_;
+  std::string detections_file_;
 };
 
 // Opens the input `spec` names. Throws ConfigError for contradicting options and InputError for

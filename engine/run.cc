@@ -120,9 +120,11 @@ constexpr int kPipelineThreads = static_cast<int>(kPipelineFrames / 2);
 // (engine/frame_pipeline.h). One thread holds one input frame at a time (a window's worth with
 // offline smoothing, which looks 3 x smooth.offline_sigma_s ahead); more threads hold
 // kPipelineFrames (or that window).
+// `detections_file`: where the frames' detections come from (Input::detections_file), named in
+// errors about a frame's detections; may be empty.
 void RunSequence(int index, FrameSource& source, const RunOptions& options, const metrics::EvalOptions* eval,
                  FrameSink* sink, int threads, std::atomic<long>* frames_done, bool report_progress,
-                 SequenceRun* run) {
+                 const std::string& detections_file, SequenceRun* run) {
   const SequenceHeader& header = source.header();
   const TriangulatorOptions tri_options = TriangulatorOptionsFor(options.triangulator, header);
   Triangulator triangulator(header.cameras, header.detection_joints, tri_options);
@@ -180,7 +182,8 @@ void RunSequence(int index, FrameSource& source, const RunOptions& options, cons
       triangulator.Process(s.frame.views.empty() ? no_views : s.frame.views, s.frame.timestamp_s, &s.persons,
                            &s.stats, run->losses ? &s.trace : nullptr);
     } catch (const InputError& e) {  // e.g. more persons in a view than triangulate.max_persons_per_view
-      throw InputError(header.name + ": frame " + QuoteName(s.frame.id) + ": " + e.what());
+      throw InputError((detections_file.empty() ? "" : detections_file + ": ") + header.name + ": frame " +
+                       QuoteName(s.frame.id) + ": " + e.what());
     } catch (const std::bad_alloc&) {
       throw InputError(header.name + ": frame " + QuoteName(s.frame.id) +
                        ": out of memory triangulating the frame (lower triangulate.max_pairs_per_frame or "
@@ -301,13 +304,13 @@ RunResult Run(Input& input, const RunOptions& options, FrameSink* sink) {
     // One sequence: its stages (read, complete, triangulate, measure + write) on several threads.
     result.threads = ClampThreads(options.threads, kPipelineThreads);
     RunSequence(0, input.source(0), options, eval ? &*eval : nullptr, sink, result.threads, &frames_done, true,
-                &runs[0]);
+                input.detections_file(), &runs[0]);
     input.Finished(0);
   } else {
     // Several: one thread per sequence, its stages taking turns.
     result.threads = ForEachSequence(count, options.threads, [&](int i, bool report_progress) {
       RunSequence(i, input.source(i), options, eval ? &*eval : nullptr, sink, 1, &frames_done, report_progress,
-                  &runs[i]);
+                  input.detections_file(), &runs[i]);
       input.Finished(i);
     });
   }

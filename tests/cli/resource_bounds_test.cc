@@ -72,6 +72,18 @@ TEST(MaxPersonsPerView, AFrameAboveTheCapIsAnInputError) {
       "--out " + out.string());
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find("above triangulate.max_persons_per_view (1)"), std::string::npos) << r.err;
+  // From a detections file, the error names it first (it named the sequence and frame only).
+  const std::string labels = (out / "labels.json").string(), detections = (out / "detections.json").string();
+  ASSERT_EQ(test::RunRpt("convert --dataset synthetic --simulate --param frames=3 --param people=3 --labels-out " + labels +
+                         " --detections-out " + detections)
+                .exit_code,
+            0);
+  const test::CommandResult file = test::RunRpt("eval --labels " + labels + " --detections " + detections +
+                                                " --quiet --set triangulate.max_persons_per_view=1 --out " +
+                                                (out / "run").string());
+  EXPECT_EQ(file.exit_code, 2) << file.err;
+  EXPECT_EQ(file.err.rfind("error: " + detections + ": synthetic: frame 'synthetic_000000': view 0 (camera ", 0), 0u)
+      << file.err;
   fs::remove_all(out);
 }
 
