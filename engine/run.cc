@@ -24,6 +24,7 @@
 #include "engine/joint_adapter.h"
 #include "engine/thread_count.h"
 #include "metrics/accumulator.h"
+#include "core/option_codec.h"
 #include "core/printable_text.h"
 
 namespace rpt::engine {
@@ -41,7 +42,30 @@ struct SequenceRun {
   // largest step back (s).
   long times_not_after = 0;
   double largest_step_back_s = 0;
+  // Steps from one known time to the next (forward), those longer than track.max_gap_s (tracks end
+  // at each) and the first kStepSample of them: a video whose times are in milliseconds.
+  long time_steps = 0, steps_beyond_gap = 0;
+  std::vector<double> step_sample;
 };
+
+constexpr size_t kStepSample = 1000;
+
+// Whether a sequence's time steps look like a video's frame times in milliseconds read as
+// seconds: most steps beyond track.max_gap_s, regular (their median absolute deviation within a
+// tenth of the median) and 5-70 s (5-70 ms: 14 to 200 frames per second, what cameras record), or,
+// with a known frame rate, within a tenth of 1000 / fps. Images sampled seconds apart are not
+// (MVOR's, every 75 s, are as regular); every track ends there all the same, as it should.
+bool LooksLikeMilliseconds(const SequenceRun& run, double fps) {
+  if (run.time_steps < 3 || 2 * run.steps_beyond_gap <= run.time_steps) return false;
+  std::vector<double> steps = run.step_sample;
+  const auto middle = steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2);
+  std::nth_element(steps.begin(), middle, steps.end());
+  const double median = *middle;
+  if (fps > 0) return std::abs(median - 1000.0 / fps) <= 0.1 * 1000.0 / fps;
+  for (double& step : steps) step = std::abs(step - median);
+  std::nth_element(steps.begin(), middle, steps.end());
+  return median >= 5 && median <= 70 && *middle <= 0.1 * median;
+}
 
 // The run's joint adapter (RunOptions::adapter) on one sequence: each frame's persons copied and
 // moved before they are measured and written.
@@ -175,6 +199,10 @@ void RunSequence(int index, FrameSource& source, const RunOptions& options, cons
       if (std::isfinite(last_time_s) && !(t > last_time_s)) {
         ++run->times_not_after;
         run->largest_step_back_s = std::max(run->largest_step_back_s, last_time_s - t);
+      } else if (std::isfinite(last_time_s)) {
+        ++run->time_steps;
+        if (t - last_time_s > tri_options.track.max_gap_s) ++run->steps_beyond_gap;
+        if (run->step_sample.size() < kStepSample) run->step_sample.push_back(t - last_time_s);
       }
       last_time_s = t;
     }
@@ -319,6 +347,17 @@ RunResult Run(Input& input, const RunOptions& options, FrameSink* sink) {
     result.warnings.Add(input.header(i).name,
                         "frames whose time is not after the previous frame's (tracks end there, and start anew)",
                         "largest step back in s", runs[i].largest_step_back_s, runs[i].times_not_after);
+    // A time in milliseconds where seconds are expected ends every track after one frame.
+    if (LooksLikeMilliseconds(runs[i], input.header(i).fps)) {
+      result.warnings.Add(input.header(i).name,
+                          "frames more than track.max_gap_s (" + FormatNumber(options.triangulator.track.max_gap_s) +
+                              " s) after the previous frame, at regular steps of milliseconds' size: are the times "
+                              "in milliseconds? They must be seconds; as they are, every track ends after a frame "
+                              "(no tracking, no smoothing)",
+                          "largest step in s",
+                          *std::max_element(runs[i].step_sample.begin(), runs[i].step_sample.end()),
+                          runs[i].steps_beyond_gap);
+    }
   }
   input.CheckStrict();
 

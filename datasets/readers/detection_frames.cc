@@ -53,6 +53,58 @@ void CountJointsOutsideImages(const Detections& detections, const std::vector<st
   }
 }
 
+// The number an id ends in ("000040", "take1_000040" -> 40); -1 for an id without one (or with
+// more than 15 digits).
+long long TrailingNumber(const std::string& id) {
+  size_t first = id.size();
+  while (first > 0 && id[first - 1] >= '0' && id[first - 1] <= '9') --first;
+  const size_t digits = id.size() - first;
+  if (digits == 0 || digits > 15) return -1;
+  return std::stoll(id.substr(first));
+}
+
+// Frame times at `fps` (> 0). When every frame id ends in a number and the numbers increase, frame
+// f is at (its number - the first frame's) / fps, so frames missing from the file (a detector that
+// skipped some, files deleted from an OpenPose folder) leave a gap in time instead of shifting the
+// frames after them; the skipped numbers are counted in a warning. Otherwise frame f is at f / fps
+// (the file's order), and ids whose numbers do not increase (frames out of order) are counted.
+std::vector<double> FrameTimes(const std::vector<FrameDetections>& frames, double fps, const std::string& source,
+                               InputWarnings* warnings) {
+  std::vector<double> times(frames.size());
+  std::vector<long long> numbers(frames.size());
+  bool numbered = true;
+  long not_increasing = 0;
+  long long skipped = 0;
+  std::string first_back;
+  for (size_t f = 0; f < frames.size(); ++f) {
+    numbers[f] = TrailingNumber(frames[f].frame_id);
+    numbered = numbered && numbers[f] >= 0;
+    if (!numbered || f == 0) continue;
+    if (numbers[f] <= numbers[f - 1]) {
+      if (not_increasing++ == 0) first_back = QuoteName(frames[f].frame_id) + " after " + QuoteName(frames[f - 1].frame_id);
+    } else {
+      skipped += numbers[f] - numbers[f - 1] - 1;
+    }
+  }
+  const bool by_number = numbered && not_increasing == 0;
+  for (size_t f = 0; f < frames.size(); ++f) {
+    times[f] = by_number ? static_cast<double>(numbers[f] - numbers[0]) / fps : static_cast<double>(f) / fps;
+  }
+  if (by_number) {
+    warnings->AddMissing(source,
+                         "frame numbers missing between the frame ids (frames the detections skip): the times follow "
+                         "the ids' numbers at --fps, with a gap there",
+                         static_cast<long>(skipped));
+  } else if (numbered) {
+    warnings->AddMissing(source,
+                         "frames whose id's number is not after the previous frame's (first " + first_back +
+                             "): out of order, so the times follow the file's order (frame i at i / --fps) and "
+                             "tracks jump there; sort the frames by time",
+                         not_increasing);
+  }
+  return times;
+}
+
 }  // namespace
 
 std::unique_ptr<FrameSource> OpenDetectionFrames(std::vector<Camera> cameras, Detections detections,
@@ -97,13 +149,14 @@ std::unique_ptr<FrameSource> OpenDetectionFrames(std::vector<Camera> cameras, De
   const int num_joints = static_cast<int>(detections.joints.size());
   auto held = std::make_shared<Detections>(std::move(detections));
   held->warnings = {};  // in the source's warnings
-  const double fps = options.fps;
+  auto times = std::make_shared<const std::vector<double>>(
+      options.fps > 0 ? FrameTimes(held->frames, options.fps, source, &warnings) : std::vector<double>());
   return std::make_unique<IndexedFrameSource>(
       std::move(header), num_frames,
-      [held, view_camera, fps, num_cameras, num_joints](size_t f, SequenceFrame* frame, InputWarnings*) {
+      [held, view_camera, times, num_cameras, num_joints](size_t f, SequenceFrame* frame, InputWarnings*) {
         const FrameDetections& in = held->frames[f];
         frame->id = in.frame_id;
-        frame->timestamp_s = fps > 0 ? static_cast<double>(f) / fps : kUnknownTime;
+        frame->timestamp_s = times->empty() ? kUnknownTime : (*times)[f];
         frame->views.resize(static_cast<size_t>(num_cameras));
         for (Poses2D& view : frame->views) view.Clear(num_joints);
         for (size_t v = 0; v < in.views.size(); ++v) frame->views[(*view_camera)[f][v]] = in.views[v];

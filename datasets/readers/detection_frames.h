@@ -18,9 +18,10 @@ namespace rpt {
 
 struct DetectionFramesOptions {
   std::string name;  // the sequence's name
-  // Frame rate of the detection frames: frame i is at time i / fps. 0 = the times are unknown
-  // (NaN): nothing is carried from frame to frame (no tracking, no smoothing), counted in one
-  // warning that says how to give the rate.
+  // Frame rate of the detection frames: frame i is at time i / fps, or, when every frame id ends
+  // in a number and the numbers increase, at (its number - the first frame's) / fps (frames the
+  // file skips leave a gap in time). 0 = the times are unknown (NaN): nothing is carried from
+  // frame to frame (no tracking, no smoothing), counted in one warning that says how to give the rate.
   double fps = 0;
 };
 

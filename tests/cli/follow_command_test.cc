@@ -279,6 +279,37 @@ TEST_F(Follow, ABadLineIsAnErrorNamingItsLine) {
   EXPECT_NE(r.err.find("the first line is {\"joints\": [names]}"), std::string::npos) << r.err;
 }
 
+// Times in milliseconds where seconds are expected (a tester's stream: 2 people, 180 track ids,
+// no word): every frame is farther than track.max_gap_s from the last, so every track ends; the
+// run says so once at the end. Seconds (the same lines) give no such warning.
+TEST_F(Follow, TimesInMillisecondsAreNamedInAWarning) {
+  std::vector<std::string> seconds, milliseconds;
+  for (int f = 0; f < kFrames; ++f) {
+    Json line = Json::parse(FrameLine(detections_, static_cast<size_t>(f), true));
+    seconds.push_back(line.dump());
+    line["time"] = line["time"].get<double>() * 1000;
+    milliseconds.push_back(line.dump());
+  }
+  const std::string warning = "frames more than track.max_gap_s (1.0 s) after the previous frame, at regular steps "
+                              "of milliseconds' size: are the times in milliseconds?";
+  const test::CommandResult ms = test::RunRpt("triangulate --follow - --cameras " + Cameras() + " < " +
+                                              LinesFile("ms.jsonl", milliseconds).string());
+  EXPECT_EQ(ms.exit_code, 0) << ms.err;
+  EXPECT_NE(ms.err.find("warning: stdin: " + std::to_string(kFrames - 1) + " " + warning), std::string::npos) << ms.err;
+  EXPECT_NE(ms.err.find("(largest step in s = 40)"), std::string::npos) << ms.err;
+  const test::CommandResult s = test::RunRpt("triangulate --follow - --cameras " + Cameras() + " < " +
+                                             LinesFile("s.jsonl", seconds).string());
+  EXPECT_EQ(s.exit_code, 0) << s.err;
+  EXPECT_EQ(s.err.find("max_gap_s"), std::string::npos) << s.err;
+  // With a frame rate the steps are compared with its period: 40 s steps at --fps 25 are 1000 periods.
+  const test::CommandResult fps = test::RunRpt("triangulate --follow - --fps 25 --cameras " + Cameras() + " < " +
+                                               LinesFile("ms.jsonl", milliseconds).string());
+  EXPECT_NE(fps.err.find(warning), std::string::npos) << fps.err;
+  const test::CommandResult other = test::RunRpt("triangulate --follow - --fps 10 --cameras " + Cameras() + " < " +
+                                                 LinesFile("ms.jsonl", milliseconds).string());
+  EXPECT_EQ(other.err.find("max_gap_s"), std::string::npos) << "40 s steps at 10 fps are not milliseconds: " << other.err;
+}
+
 TEST_F(Follow, SkipBadLinesCountsThem) {
   std::vector<std::string> lines;
   for (int f = 0; f < 6; ++f) lines.push_back(FrameLine(detections_, static_cast<size_t>(f), true));

@@ -83,6 +83,53 @@ TEST_F(Triangulate, VoxelPoseCacheEqualsEval) {
   CompareWithEval("pkl", dir_ / "take.pkl", ids);
 }
 
+// Frames missing from the detections (files deleted from an OpenPose folder, a detector that
+// skipped some): with --fps the times follow the numbers the frame ids end in, so the frames after
+// the gap keep their times (they were shifted by the gap, and speed clipping then moved joints by
+// up to 0.4 m); the skipped numbers are counted. Frames out of order are counted, their times
+// follow the file's order.
+TEST_F(Triangulate, FrameTimesFollowTheNumbersOfTheFrameIds) {
+  const std::vector<std::string> ids = Ids("", kFrames);
+  const Detections detections = Coco17(scene_, ids);
+  WriteOpenPoseFolder(dir_ / "openpose", detections);
+  for (const std::string& camera : detections.frames[0].cameras) {
+    for (int f = 5; f <= 7; ++f) {
+      char name[64];
+      std::snprintf(name, sizeof(name), "video_%012d_keypoints.json", f);
+      ASSERT_TRUE(fs::remove(dir_ / "openpose" / camera / name)) << camera << " " << name;
+    }
+  }
+  const std::string cameras = " --cameras " + (dir_ / "cameras.json").string();
+  const test::CommandResult gap = test::RunRpt("triangulate" + cameras + " --detections " + (dir_ / "openpose").string() +
+                                               " --fps 25 --out " + (dir_ / "gap").string());
+  ASSERT_EQ(gap.exit_code, 0) << gap.err;
+  EXPECT_NE(gap.err.find(": 3 frame numbers missing between the frame ids (frames the detections skip): the times "
+                         "follow the ids' numbers at --fps, with a gap there"),
+            std::string::npos)
+      << gap.err;
+  const Json frames = ReadJson(dir_ / "gap" / "predictions.json")["frames"];
+  ASSERT_EQ(frames.size(), static_cast<size_t>(kFrames - 3));
+  for (const Json& frame : frames) {
+    EXPECT_DOUBLE_EQ(frame["time"].get<double>(), std::stoi(frame["id"].get<std::string>()) / kFps) << frame["id"];
+  }
+
+  Detections shuffled = Coco17(scene_, Ids("take_", kFrames));
+  std::swap(shuffled.frames[3], shuffled.frames[9]);
+  WriteGenericDetections(dir_ / "shuffled.json", shuffled);
+  const test::CommandResult out_of_order =
+      test::RunRpt("triangulate" + cameras + " --detections " + (dir_ / "shuffled.json").string() +
+                   " --fps 25 --out " + (dir_ / "shuffled").string());
+  ASSERT_EQ(out_of_order.exit_code, 0) << out_of_order.err;
+  EXPECT_NE(out_of_order.err.find(": 2 frames whose id's number is not after the previous frame's (first 'take_000004' "
+                                  "after 'take_000009'): out of order, so the times follow the file's order"),
+            std::string::npos)
+      << out_of_order.err;
+  const Json order = ReadJson(dir_ / "shuffled" / "predictions.json")["frames"];
+  EXPECT_EQ(order[3]["id"], "take_000009");
+  EXPECT_DOUBLE_EQ(order[3]["time"].get<double>(), 3 / kFps);
+  // Consecutive numbers: no warning (every other test of this file).
+}
+
 TEST_F(Triangulate, LabelsWithDetectionsEqualEval) {
   // --labels FILE --detections FILE: the labels give the cameras, frames and times only.
   const std::vector<std::string> ids = Ids("take_", kFrames);
