@@ -62,7 +62,10 @@ void ValidateFrame(const SequenceHeader& sequence, const SequenceFrame& frame, c
     for (size_t i = 0; i < view.data.size(); i += 3) {
       const double score = view.data[i + 2];
       if (!std::isfinite(view.data[i]) || !std::isfinite(view.data[i + 1]) || !std::isfinite(score)) {
-        throw InputError(where() + ": detection " + std::to_string(i / 3 / view.num_joints) + " contains NaN or infinity");
+        const size_t joint = i / 3 % static_cast<size_t>(view.num_joints);
+        throw InputError(where() + ": detection " + std::to_string(i / 3 / view.num_joints) + ", joint " +
+                         QuoteName(sequence.detection_joints[joint]) +
+                         " contains NaN or infinity (a missing joint has score 0: its coordinates are ignored)");
       }
       if (score < 0 || score > 1) {
         throw InputError(where() + ": detection score " + std::to_string(score) + " outside [0, 1]");

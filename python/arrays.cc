@@ -61,6 +61,14 @@ py::array_t<double> CheckedArray(py::handle object, const std::string& what, std
   return py::reinterpret_borrow<py::array_t<double>>(array);
 }
 
+// A joint of score 0 is missing whatever its coordinates: NaN there (numpy's usual "missing")
+// becomes 0, as JSON's null does; NaN with a score above 0 stays an error (ValidateFrame).
+void ClearCoordinatesOfMissingJoints(double* data, size_t size) {
+  for (size_t i = 0; i + 2 < size; i += 3) {
+    if (data[i + 2] == 0 && !(std::isfinite(data[i]) && std::isfinite(data[i + 1]))) data[i] = data[i + 1] = 0;
+  }
+}
+
 void ViewFromArray(py::handle object, int num_joints, const std::string& what, Poses2D* view) {
   view->Clear(num_joints);
   if (object.is_none()) return;
@@ -74,6 +82,7 @@ void ViewFromArray(py::handle object, int num_joints, const std::string& what, P
                           std::to_string(num_joints));
   }
   view->data.assign(array.data(), array.data() + array.size());
+  ClearCoordinatesOfMissingJoints(view->data.data(), view->data.size());
 }
 
 void ViewsFromPython(py::handle views, int num_cameras, int num_joints, std::vector<Poses2D>* out) {
@@ -84,6 +93,7 @@ void ViewsFromPython(py::handle views, int num_cameras, int num_joints, std::vec
     for (int c = 0; c < num_cameras; ++c) {
       (*out)[c].Clear(num_joints);
       (*out)[c].data.assign(array.data() + c * per_view, array.data() + (c + 1) * per_view);
+      ClearCoordinatesOfMissingJoints((*out)[c].data.data(), (*out)[c].data.size());
     }
     return;
   }

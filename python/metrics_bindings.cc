@@ -12,6 +12,7 @@
 
 #include "core/errors.h"
 #include "core/printable_text.h"
+#include "datasets/readers/generic_common.h"
 #include "engine/detection_checks.h"
 #include "engine/diagnostics.h"
 #include "engine/outputs/results_writer.h"
@@ -80,9 +81,12 @@ py::object Evaluate(py::handle gt, py::handle predictions, py::handle options, p
       throw py::value_error("metrics.evaluate: with arrays, give gt_joints= and joint_names= (the predictions')");
     }
     if (!IsArrayList(predictions)) throw py::type_error("metrics.evaluate: gt are arrays, so must the predictions be");
-    sequences.push_back(SequenceOfArrays(py::reinterpret_borrow<py::sequence>(gt), gt_joints.cast<JointNames>()));
-    runs.push_back(PredictionsOfArrays(py::reinterpret_borrow<py::sequence>(predictions),
-                                       joint_names.cast<JointNames>(), *sequences.back()));
+    const JointNames gt_names = gt_joints.cast<JointNames>(), prediction_names = joint_names.cast<JointNames>();
+    CheckJointNames(gt_names, "metrics.evaluate: gt_joints");
+    CheckJointNames(prediction_names, "metrics.evaluate: joint_names");
+    sequences.push_back(SequenceOfArrays(py::reinterpret_borrow<py::sequence>(gt), gt_names));
+    runs.push_back(PredictionsOfArrays(py::reinterpret_borrow<py::sequence>(predictions), prediction_names,
+                                       *sequences.back()));
   } else {
     // pybind11's own cast error says only "Unable to cast Python instance to C++ type".
     const auto cast = [](py::handle value, const char* argument, const char* expected, auto* out) {

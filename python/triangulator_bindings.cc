@@ -18,6 +18,7 @@
 #include "core/pipeline/offline_smoother.h"
 #include "core/pipeline/triangulator.h"
 #include "core/printable_text.h"
+#include "datasets/readers/generic_common.h"
 #include "engine/run.h"
 #include "metrics/step_counts.h"
 #include "python/arrays.h"
@@ -301,6 +302,9 @@ void RegisterTriangulator(py::module_& m) {
       .def(py::init([](py::handle cameras, const JointNames& joint_names, py::handle options) {
              const engine::Config config = ConfigOf(options);
              std::vector<Camera> list = CamerasOf(cameras);
+             // As every file's joint names: an unknown name ('left_ear' for 'ear_left') would be
+             // carried along unused, and the joints derived from it computed without it.
+             CheckJointNames(joint_names, "rpt.Triangulator: joint_names");
              py::gil_scoped_release release;
              return std::make_unique<PyTriangulator>(std::move(list), joint_names, config.triangulator, "python", 0.0);
            }),

@@ -85,7 +85,10 @@ TEST(SequenceValidation, FrameErrorsNameTheFrameAndCamera) {
 
   sequence = ValidSequence();
   sequence.frames[0].views[1].data[0] = std::numeric_limits<double>::infinity();
-  EXPECT_THAT(ErrorOf(sequence), HasSubstr("camera 'cam_b': detection 0 contains NaN or infinity"));
+  EXPECT_THAT(ErrorOf(sequence), HasSubstr("camera 'cam_b': detection 0, joint 'nose' contains NaN or infinity"));
+  sequence = ValidSequence();
+  sequence.frames[0].views[1].data[4] = std::numeric_limits<double>::quiet_NaN();  // v of the second joint
+  EXPECT_THAT(ErrorOf(sequence), HasSubstr("camera 'cam_b': detection 0, joint 'eye_left' contains NaN or infinity"));
 
   sequence = ValidSequence();
   sequence.frames[1].labels_2d.resize(1);
