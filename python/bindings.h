@@ -19,6 +19,9 @@ namespace rpt::python {
 namespace py = pybind11;
 
 void RegisterErrors(py::module_& m);                                   // errors.cc
+// Each line of `lines` (a reader's corrections and warnings, engine::InputWarningLines) as a Python
+// warning of category rpt.InputWarning (a UserWarning); the GIL must be held. errors.cc
+void WarnInput(const std::vector<std::string>& lines);
 void RegisterCameras(py::module_& m, py::module_& cameras);            // camera_bindings.cc
 void RegisterOptions(py::module_& m);                                  // options_bindings.cc
 void RegisterDatasets(py::module_& datasets, py::module_& synthetic);  // datasets_bindings.cc

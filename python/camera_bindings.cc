@@ -14,6 +14,7 @@
 #include "core/printable_text.h"
 #include "datasets/calibration/calibration.h"
 #include "datasets/calibration/camera_json.h"
+#include "engine/input.h"
 #include "python/arrays.h"
 #include "python/bindings.h"
 #include "python/json_objects.h"
@@ -158,13 +159,19 @@ void RegisterCameras(py::module_& m, py::module_& cameras) {
         CalibrationReadOptions read;
         SetOptionFields(options, "cameras.load", "", &read);
         InputWarnings warnings;
-        py::gil_scoped_release release;
-        return ReadCalibration(path, read, &warnings).cameras;
+        std::vector<Camera> list;
+        {
+          py::gil_scoped_release release;
+          list = ReadCalibration(path, read, &warnings).cameras;
+        }
+        WarnInput(engine::InputWarningLines(warnings));  // what `rpt cameras show` prints
+        return list;
       },
       py::arg("path"),
       "The cameras of a calibration file or folder, any format the CLI reads (json, opencv, easymocap, toml, colmap, "
       "voxelpose, panoptic, 4da). Options: format='auto', units='default' (m | cm | mm), image_width=0, "
-      "image_height=0.");
+      "image_height=0. Corrections and doubts (rotations re-orthonormalised, image sizes guessed, cameras "
+      "implausibly far) are warnings of category rpt.InputWarning, as `rpt cameras show` prints them.");
   cameras.def(
       "save",
       [](const std::filesystem::path& path, const std::vector<Camera>& list, py::kwargs options) {

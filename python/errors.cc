@@ -4,6 +4,7 @@
 //   rpt.InputError(ValueError)    input that cannot be used (the CLI's InputError, exit code 2)
 //   rpt.InputFileNotFoundError(FileNotFoundError, rpt.InputError)   a file or folder named by
 //                                 the input is missing ("<path>: file not found", ...)
+// and the CLI's "warning:" lines as warnings of category rpt.InputWarning(UserWarning).
 #include <Python.h>
 
 #include <string>
@@ -18,6 +19,7 @@ namespace {
 PyObject* config_error = nullptr;
 PyObject* input_error = nullptr;
 PyObject* missing_file_error = nullptr;
+PyObject* input_warning = nullptr;
 
 // The readers' words for a file or folder that is not there (datasets/io, datasets/calibration,
 // datasets/readers): "<path>: file not found", "<path>: folder not found", "<path>: not found",
@@ -48,6 +50,10 @@ void RegisterErrors(py::module_& m) {
   m.add_object("ConfigError", py::handle(config_error));
   m.add_object("InputError", py::handle(input_error));
   m.add_object("InputFileNotFoundError", py::handle(missing_file_error));
+  input_warning = NewException("rpt.InputWarning",
+                               "Input used with a correction or a doubt (the CLI's 'warning:' lines).",
+                               PyExc_UserWarning);
+  m.add_object("InputWarning", py::handle(input_warning));
   py::register_exception_translator([](std::exception_ptr error) {
     try {
       if (error) std::rethrow_exception(error);
@@ -61,6 +67,14 @@ void RegisterErrors(py::module_& m) {
       PyErr_SetString(PyExc_MemoryError, "out of memory");
     }
   });
+}
+
+void WarnInput(const std::vector<std::string>& lines) {
+  for (const std::string& line : lines) {
+    // stacklevel 2: the warning points at the Python line that called rpt. -1: the warning filter
+    // made it an exception (python -W error), which propagates.
+    if (PyErr_WarnEx(input_warning, line.c_str(), 2) < 0) throw py::error_already_set();
+  }
 }
 
 }  // namespace rpt::python

@@ -97,3 +97,17 @@ def test_colmap_text_model(tmp_path):
     uv, in_front = cameras[1].project([[0.0, 0.0, 0.0]])
     np.testing.assert_allclose(uv, [[420.0, 240.0]])  # 500 * 1 / 5 + 320
     assert in_front[0]
+
+
+def test_load_warns_as_cameras_show(tmp_path):
+    # A rig in millimetres read as metres: the CLI warned, rpt.cameras.load said nothing and every
+    # frame then had 0 persons. Its warnings are now rpt.InputWarning, the CLI's lines.
+    (tmp_path / "cameras.txt").write_text("1 PINHOLE 640 480 500 500 320 240\n")
+    (tmp_path / "images.txt").write_text("1 1 0 0 0 0 0 5000 1 a.jpg\n\n2 1 0 0 0 1 0 5000 1 b.jpg\n\n")
+    with pytest.warns(rpt.InputWarning, match=r"2 cameras more than 1 km from the origin") as caught:
+        cameras = rpt.cameras.load(tmp_path, format="colmap")
+    assert len(cameras) == 2
+    assert issubclass(rpt.InputWarning, UserWarning)
+    shown = run_cli("cameras", "show", tmp_path, "--format", "colmap").stderr
+    for warning in caught:
+        assert "warning: " + str(warning.message) in shown
