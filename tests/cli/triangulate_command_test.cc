@@ -130,6 +130,39 @@ TEST_F(Triangulate, FrameTimesFollowTheNumbersOfTheFrameIds) {
   // Consecutive numbers: no warning (every other test of this file).
 }
 
+// Joints at pixel (0, 0) with a confidence (some detectors' "not found"): read as missing and
+// counted; before, two such wrists per pose made the calibration check doubt a right camera.
+TEST_F(Triangulate, JointsAtPixelZeroAreMissing) {
+  const std::vector<std::string> ids = Ids("take_", kFrames);
+  Detections origin = Coco17(scene_, ids), missing = origin;
+  long planted = 0;
+  for (size_t f = 0; f < origin.frames.size(); ++f) {
+    for (size_t v = 0; v < 2 && v < origin.frames[f].views.size(); ++v) {
+      Poses2D& view = origin.frames[f].views[v];
+      for (int p = 0; p < view.num_persons(); ++p) {
+        for (const int j : {9, 10}) {  // the wrists
+          view.Person(p)(0, j) = view.Person(p)(1, j) = 0;
+          view.Person(p)(2, j) = 0.9;
+          missing.frames[f].views[v].Person(p)(2, j) = 0;
+          ++planted;
+        }
+      }
+    }
+  }
+  WriteGenericDetections(dir_ / "origin.json", origin);
+  WriteGenericDetections(dir_ / "missing.json", missing);
+  const std::string cameras = "triangulate --cameras " + (dir_ / "cameras.json").string() + " --fps 25 --detections ";
+  const test::CommandResult r = test::RunRpt(cameras + (dir_ / "origin.json").string() + " --out " + (dir_ / "o").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("warning: origin: " + std::to_string(planted) +
+                       " detected joints at pixel (0, 0) with a score above 0 read as missing"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(r.err.find("is its calibration right"), std::string::npos) << r.err;
+  ASSERT_EQ(test::RunRpt(cameras + (dir_ / "missing.json").string() + " --quiet --out " + (dir_ / "m").string()).exit_code, 0);
+  ExpectSameFrames(ReadJson(dir_ / "m" / "predictions.json"), ReadJson(dir_ / "o" / "predictions.json"), "origin");
+}
+
 TEST_F(Triangulate, LabelsWithDetectionsEqualEval) {
   // --labels FILE --detections FILE: the labels give the cameras, frames and times only.
   const std::vector<std::string> ids = Ids("take_", kFrames);
