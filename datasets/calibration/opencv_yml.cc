@@ -2,6 +2,7 @@
 #include "datasets/calibration/opencv_yml.h"
 
 #include <algorithm>
+#include <map>
 #include <cctype>
 #include <cmath>
 #include <system_error>
@@ -240,9 +241,18 @@ Calibration ReadOpenCVCalibration(const fs::path& path, const CalibrationReadOpt
     const std::vector<fs::path> files = OpenCVFilesIn(path);
     if (files.empty()) throw InputError(path.string() + ": a folder without OpenCV files (*.yml, *.yaml, *.xml)");
     Calibration all = ReadOpenCVCalibration(files.front(), options, warnings);
+    std::map<std::string, fs::path> file_of;  // camera name -> the file that named it first
+    for (const Camera& camera : all.cameras) file_of.emplace(camera.name, files.front());
     for (size_t i = 1; i < files.size(); ++i) {
       Calibration one = ReadOpenCVCalibration(files[i], options, warnings);
-      for (Camera& camera : one.cameras) all.cameras.push_back(std::move(camera));
+      for (Camera& camera : one.cameras) {
+        const auto [it, fresh] = file_of.emplace(camera.name, files[i]);
+        if (!fresh) {
+          throw InputError(files[i].string() + ": camera name " + QuoteName(camera.name) + " appears twice (also in " +
+                           it->second.string() + "); name each file's camera with camera_name");
+        }
+        all.cameras.push_back(std::move(camera));
+      }
       all.description.files.insert(all.description.files.end(), one.description.files.begin(),
                                    one.description.files.end());
       if (one.description.distortion != all.description.distortion) {

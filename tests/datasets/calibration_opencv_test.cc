@@ -313,6 +313,12 @@ TEST(CalibrationOpenCV, AFolderOfOneFilePerCameraIsTheRigInFileNameOrder) {
   std::filesystem::create_directories(empty);
   EXPECT_THAT(test::InputErrorOf([&] { ReadCalibration(empty); }),
               HasSubstr("nor OpenCV files, one per camera (*.yml, *.yaml, *.xml)"));
+  // Two files naming the same camera: both files named (it named the folder only).
+  WriteCalibrationText(folder / "c_copy.yml", "%YAML:1.0\n---\ncamera_name: a_front\n" +
+                                                  kCalibrateCameraYml.substr(std::string("%YAML:1.0\n---\n").size()));
+  EXPECT_THAT(test::InputErrorOf([&] { ReadCalibration(folder); }),
+              HasSubstr((folder / "c_copy.yml").string() + ": camera name 'a_front' appears twice (also in " +
+                        (folder / "a_front.YAML").string() + ")"));
 }
 
 }  // namespace
