@@ -18,6 +18,10 @@ struct FrameDetections {
   std::string frame_id;              // matches SequenceFrame::id
   std::vector<std::string> cameras;  // camera names, one per entry of `views`
   std::vector<Poses2D> views;        // pixels of the original (distorted) image; score 0 = missing
+  // The frame's time in seconds where the file gives one (generic JSON's "time"); kUnknownTime
+  // (NaN) otherwise. Used only without labels (datasets/readers/detection_frames.h): labels carry
+  // the times of their frames.
+  double time_s = kUnknownTime;
 };
 
 struct Detections {

@@ -138,10 +138,16 @@ std::unique_ptr<FrameSource> OpenDetectionFrames(std::vector<Camera> cameras, De
   header.detection_joints = detections.joints;
   header.fps = options.fps;
   InputWarnings warnings = detections.warnings;
-  if (options.fps <= 0 && !detections.frames.empty()) {
+  // The file's own times ("time" of generic JSON) where it gives any; else from --fps.
+  const long frames_with_time = std::count_if(detections.frames.begin(), detections.frames.end(),
+                                              [](const FrameDetections& frame) { return std::isfinite(frame.time_s); });
+  if (frames_with_time > 0) {
+    warnings.AddMissing(source, "frames without a \"time\" where other frames have one: their times are unknown",
+                        static_cast<long>(detections.frames.size()) - frames_with_time);
+  } else if (options.fps <= 0 && !detections.frames.empty()) {
     warnings.AddMissing(source,
                         "frames without times: nothing is carried between frames (no tracking, no smoothing); "
-                        "give the frame rate with --fps",
+                        "give the frame rate with --fps (or a \"time\" per frame)",
                         static_cast<long>(detections.frames.size()));
   }
   const size_t num_frames = detections.frames.size();
@@ -149,8 +155,13 @@ std::unique_ptr<FrameSource> OpenDetectionFrames(std::vector<Camera> cameras, De
   const int num_joints = static_cast<int>(detections.joints.size());
   auto held = std::make_shared<Detections>(std::move(detections));
   held->warnings = {};  // in the source's warnings
-  auto times = std::make_shared<const std::vector<double>>(
-      options.fps > 0 ? FrameTimes(held->frames, options.fps, source, &warnings) : std::vector<double>());
+  std::vector<double> frame_times;
+  if (frames_with_time > 0) {
+    for (const FrameDetections& frame : held->frames) frame_times.push_back(frame.time_s);
+  } else if (options.fps > 0) {
+    frame_times = FrameTimes(held->frames, options.fps, source, &warnings);
+  }
+  auto times = std::make_shared<const std::vector<double>>(std::move(frame_times));
   return std::make_unique<IndexedFrameSource>(
       std::move(header), num_frames,
       [held, view_camera, times, num_cameras, num_joints](size_t f, SequenceFrame* frame, InputWarnings*) {

@@ -117,7 +117,7 @@ Detections ReadGenericDetections(const std::filesystem::path& path) {
   const int num_joints = static_cast<int>(detections.joints.size());
 
   generic_internal::UnknownKeys unknown_top({"joints", "frames"});
-  generic_internal::UnknownKeys unknown_frame({"id", "views"});
+  generic_internal::UnknownKeys unknown_frame({"id", "time", "views"});
   generic_internal::UnknownKeys unknown_view({"camera", "poses"});
   unknown_top.Count(root);
   const json& frames = io::JsonAt(root, "/frames", source);
@@ -132,6 +132,12 @@ Detections ReadGenericDetections(const std::filesystem::path& path) {
     frame.frame_id = generic_internal::IdString(root, pointer + "/id", source);
     if (const auto [it, fresh] = frame_of_id.emplace(frame.frame_id, f); !fresh) {
       Fail(source, pointer + "/id", "frame id " + QuoteName(frame.frame_id) + " also used by /frames/" + std::to_string(it->second));
+    }
+    // "time": seconds, as in the live lines; null or absent = not given.
+    if (const auto time = frames[f].find("time"); time != frames[f].end() && !time->is_null()) {
+      if (!time->is_number()) Fail(source, pointer + "/time", "expected the time in seconds (a number) or null");
+      frame.time_s = time->get<double>();
+      if (!std::isfinite(frame.time_s)) Fail(source, pointer + "/time", "must be finite");
     }
     const auto views_it = frames[f].find("views");
     if (views_it == frames[f].end()) Fail(source, pointer + "/views", "missing");
@@ -180,6 +186,7 @@ int WriteGenericDetections(const std::filesystem::path& path, const Detections& 
       views.push_back({{"camera", frame.cameras[v]}, {"poses", std::move(poses)}});
     }
     json frame_json = {{"id", frame.frame_id}, {"views", std::move(views)}};
+    if (std::isfinite(frame.time_s)) frame_json["time"] = frame.time_s;
     text += io::DumpJson(frame_json, -1, &replaced);
     text += f + 1 < detections.frames.size() ? ",\n" : "\n";
   }

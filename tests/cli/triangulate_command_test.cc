@@ -163,6 +163,35 @@ TEST_F(Triangulate, JointsAtPixelZeroAreMissing) {
   ExpectSameFrames(ReadJson(dir_ / "m" / "predictions.json"), ReadJson(dir_ / "o" / "predictions.json"), "origin");
 }
 
+// A "time" per frame in generic detections JSON (the live lines' key): the frames' times, with or
+// without --fps, so a camera of varying frame rate keeps its clock. It was an unknown key.
+TEST_F(Triangulate, TimesOfTheFramesInGenericJson) {
+  Detections detections = Coco17(scene_, Ids("take_", kFrames));
+  for (size_t f = 0; f < detections.frames.size(); ++f) detections.frames[f].time_s = 100.0 + 0.03 * f * f / kFrames;
+  WriteGenericDetections(dir_ / "timed.json", detections);
+  const std::string input = "triangulate --cameras " + (dir_ / "cameras.json").string() + " --detections " +
+                            (dir_ / "timed.json").string();
+  for (const std::string fps : {"", " --fps 25"}) {
+    const test::CommandResult r = test::RunRpt(input + fps + " --out " + (dir_ / "timed").string());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
+    const Json frames = ReadJson(dir_ / "timed" / "predictions.json")["frames"];
+    ASSERT_EQ(frames.size(), detections.frames.size());
+    for (size_t f = 0; f < frames.size(); ++f) EXPECT_EQ(frames[f]["time"].get<double>(), detections.frames[f].time_s);
+    EXPECT_GE(frames[kFrames - 1]["track_ids"][0].get<int>(), 0) << "times known: tracked" << fps;
+  }
+  // Read back as written; a time that is not a number is an error at its place.
+  EXPECT_EQ(ReadGenericDetections(dir_ / "timed.json").frames[5].time_s, detections.frames[5].time_s);
+  std::string text = test::ReadAll(dir_ / "timed.json");
+  text.replace(text.find("\"time\":"), 7, "\"time\":\"x\",\"t\":");
+  std::ofstream(dir_ / "bad.json") << text;
+  const test::CommandResult bad = test::RunRpt("triangulate --cameras " + (dir_ / "cameras.json").string() +
+                                               " --detections " + (dir_ / "bad.json").string());
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("bad.json: /frames/0/time: expected the time in seconds (a number) or null"), std::string::npos)
+      << bad.err;
+}
+
 TEST_F(Triangulate, LabelsWithDetectionsEqualEval) {
   // --labels FILE --detections FILE: the labels give the cameras, frames and times only.
   const std::vector<std::string> ids = Ids("take_", kFrames);
