@@ -97,4 +97,15 @@ InputError NoFrameMatchesError(const std::string& source, size_t num_detection_f
                     " matches a frame of sequence " + QuoteName(sequence_name) + " (e.g. " + QuoteName(first_frame_id) + ")");
 }
 
+long ReadOriginJointsAsMissing(Poses2D* view) {
+  long count = 0;
+  for (size_t i = 0; i + 2 < view->data.size(); i += 3) {
+    if (view->data[i] == 0 && view->data[i + 1] == 0 && view->data[i + 2] > 0) {
+      view->data[i + 2] = 0;
+      ++count;
+    }
+  }
+  return count;
+}
+
 }  // namespace rpt

@@ -38,6 +38,16 @@ struct AttachReport {
   std::string first_unused_frame;   // id of the first of unused_frames
 };
 
+// Detectors write (0, 0) for a joint they did not find, some of them with its low confidence: a
+// detected joint at exactly pixel (0, 0) with a score above 0 is set to score 0 (missing). Returns
+// how many were; the readers of detection files (ReadDetectionsFile, the live lines) count them
+// under the file as kOriginJointsRead. Simulated detections are not files and keep theirs (a joint
+// clamped into the image's corner).
+long ReadOriginJointsAsMissing(Poses2D* view);
+inline constexpr const char* kOriginJointsRead =
+    "detected joints at pixel (0, 0) with a score above 0 read as missing (what detectors write for a joint they "
+    "did not find)";
+
 // Sets every sequence's detection_joints and its frames' views (camera order of the sequence)
 // from `detections`. Each detection frame goes to the sequence that holds its frame id, so one
 // file may serve several sequences (the scenes of a labels file, MVOR's days) and behaves as if

@@ -8,8 +8,6 @@
 // after the wrapped source's Complete (datasets/frame_source.h).
 #pragma once
 
-#include <atomic>
-
 #include <cstdint>
 #include <memory>
 #include <unordered_set>
@@ -29,17 +27,11 @@ class CheckedSource final : public FrameSource {
   long num_frames() const override { return frames_->num_frames(); }
   bool Pull(SequenceFrame* frame) override;
   void Complete(long frame_idx, SequenceFrame* frame) const override;
-  // The source's warnings, and the detected joints at pixel (0, 0) that Complete read as missing.
-  const InputWarnings& warnings() const override;
+  const InputWarnings& warnings() const override { return frames_->warnings(); }
 
  private:
   std::unique_ptr<FrameSource> frames_;
   bool check_ids_;
-  // Joints at exactly (0, 0) with a score above 0 (detectors that write (0, 0) for a joint they did
-  // not find, with its low confidence): set to score 0 in Complete, counted here (Complete runs on
-  // several threads), and added to a copy of the source's warnings when they are asked for.
-  mutable std::atomic<long> origin_joints_{0};
-  mutable InputWarnings warnings_;
   // Hashes of the frame ids seen (8 bytes a frame instead of the ids themselves).
   std::unordered_set<std::uint64_t> id_hashes_;
 };

@@ -17,6 +17,7 @@
 #include "core/text.h"
 #include "core/utf8.h"
 #include "core/pipeline/frame_size.h"
+#include "datasets/detections.h"
 #include "datasets/io/input_limits.h"
 #include "datasets/io/json_pull.h"
 #include "datasets/readers/generic_common.h"
@@ -309,6 +310,7 @@ class DetectionLineSource final : public FrameSource {
       if (camera < 0) Fail(ViewPointer(v) + "/camera", "missing");
       if (!has_poses) Fail(ViewPointer(v) + "/poses", "missing (write [] for no detections)");
       std::swap(frame->views[camera].data, scratch_.data);  // buffers rotate between views, none is freed
+      origin_joints_ += ReadOriginJointsAsMissing(&frame->views[camera]);
     }
   }
 
@@ -356,6 +358,7 @@ class DetectionLineSource final : public FrameSource {
     }
     frame_keys_.Report(source_, "frame lines", &warnings_);
     view_keys_.Report(source_, "views", &warnings_);
+    warnings_.Add(source_, kOriginJointsRead, "", 0, origin_joints_);
     if (frames_without_time_ > 0) {
       warnings_.AddMissing(source_,
                            "frames without times: nothing is carried between them (no tracking, no smoothing); "
@@ -383,6 +386,7 @@ class DetectionLineSource final : public FrameSource {
   std::array<std::uint64_t, kRecentIds> recent_ids_{};
   std::size_t num_recent_ = 0;
   long frames_without_time_ = 0;
+  long origin_joints_ = 0;  // joints at pixel (0, 0) read as missing (ReadOriginJointsAsMissing)
   KeyCounts header_keys_{{"joints"}};
   KeyCounts frame_keys_;
   KeyCounts view_keys_;

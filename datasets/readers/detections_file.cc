@@ -7,6 +7,7 @@
 
 #include "core/errors.h"
 #include "core/printable_text.h"
+#include "datasets/detections.h"
 #include "datasets/readers/generic_detections.h"
 #include "datasets/readers/generic_internal.h"
 #include "datasets/readers/hdf5_cache.h"
@@ -80,7 +81,9 @@ const char* DetectionsFormatName(DetectionsFormat format) {
   return "?";
 }
 
-Detections ReadDetectionsFile(const std::filesystem::path& path, const DetectionsFileOptions& options) {
+namespace {
+
+Detections ReadDetectionsFormat(const std::filesystem::path& path, const DetectionsFileOptions& options) {
   switch (DetectionsFormatOf(path)) {
     case DetectionsFormat::kOpenPoseFolder:
       return ReadOpenPoseFolder(path, options.openpose);
@@ -94,6 +97,18 @@ Detections ReadDetectionsFile(const std::filesystem::path& path, const Detection
       return ReadVoxelPoseDetections(path, options.voxelpose);
   }
   throw InputError(path.string() + ": unknown detection format");
+}
+
+}  // namespace
+
+Detections ReadDetectionsFile(const std::filesystem::path& path, const DetectionsFileOptions& options) {
+  Detections detections = ReadDetectionsFormat(path, options);
+  long origin = 0;
+  for (FrameDetections& frame : detections.frames) {
+    for (Poses2D& view : frame.views) origin += ReadOriginJointsAsMissing(&view);
+  }
+  detections.warnings.Add(path.string(), kOriginJointsRead, "", 0, origin);
+  return detections;
 }
 
 }  // namespace rpt

@@ -310,6 +310,30 @@ TEST_F(Follow, TimesInMillisecondsAreNamedInAWarning) {
   EXPECT_EQ(other.err.find("max_gap_s"), std::string::npos) << "40 s steps at 10 fps are not milliseconds: " << other.err;
 }
 
+// As in a detections file (Triangulate.JointsAtPixelZeroAreMissing): a joint at pixel (0, 0) with
+// a score is missing, counted at the end; the output equals that of the lines with score 0 there.
+TEST_F(Follow, JointsAtPixelZeroAreMissing) {
+  std::vector<std::string> origin, missing;
+  for (int f = 0; f < kFrames; ++f) {
+    Json line = Json::parse(FrameLine(detections_, static_cast<size_t>(f), true));
+    line["views"][0]["poses"][0][9] = Json{0.0, 0.0, 0.8};
+    origin.push_back(line.dump());
+    line["views"][0]["poses"][0][9] = nullptr;
+    missing.push_back(line.dump());
+  }
+  const test::CommandResult o = test::RunRpt("triangulate --follow - --cameras " + Cameras() + " < " +
+                                             LinesFile("origin.jsonl", origin).string());
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  EXPECT_NE(o.err.find("warning: stdin: " + std::to_string(kFrames) + " detected joints at pixel (0, 0) with a score "
+                       "above 0 read as missing"),
+            std::string::npos)
+      << o.err;
+  const test::CommandResult m = test::RunRpt("triangulate --follow - --cameras " + Cameras() + " < " +
+                                             LinesFile("missing.jsonl", missing).string());
+  ASSERT_EQ(m.exit_code, 0) << m.err;
+  EXPECT_EQ(o.out, m.out);
+}
+
 TEST_F(Follow, SkipBadLinesCountsThem) {
   std::vector<std::string> lines;
   for (int f = 0; f < 6; ++f) lines.push_back(FrameLine(detections_, static_cast<size_t>(f), true));

@@ -130,8 +130,9 @@ TEST_F(Triangulate, FrameTimesFollowTheNumbersOfTheFrameIds) {
   // Consecutive numbers: no warning (every other test of this file).
 }
 
-// Joints at pixel (0, 0) with a confidence (some detectors' "not found"): read as missing and
-// counted; before, two such wrists per pose made the calibration check doubt a right camera.
+// Joints at pixel (0, 0) with a confidence (some detectors' "not found") in a detections file: read
+// as missing and counted; before, two such wrists per pose made the calibration check doubt a
+// right camera. (The live lines: Follow.JointsAtPixelZeroAreMissing.)
 TEST_F(Triangulate, JointsAtPixelZeroAreMissing) {
   const std::vector<std::string> ids = Ids("take_", kFrames);
   Detections origin = Coco17(scene_, ids), missing = origin;
@@ -154,7 +155,7 @@ TEST_F(Triangulate, JointsAtPixelZeroAreMissing) {
   const std::string cameras = "triangulate --cameras " + (dir_ / "cameras.json").string() + " --fps 25 --detections ";
   const test::CommandResult r = test::RunRpt(cameras + (dir_ / "origin.json").string() + " --out " + (dir_ / "o").string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.err.find("warning: origin: " + std::to_string(planted) +
+  EXPECT_NE(r.err.find("warning: " + (dir_ / "origin.json").string() + ": " + std::to_string(planted) +
                        " detected joints at pixel (0, 0) with a score above 0 read as missing"),
             std::string::npos)
       << r.err;
