@@ -5,6 +5,7 @@
 // simulated detector's profiles (datasets/synthetic/).
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <memory>
@@ -153,10 +154,58 @@ Dataset OpenLabels(const std::string& path, const std::string& detections_file, 
   return OpenSpec(spec, {detections_file, simulate, detector, simulate_seed, strict, ground_truth}, params);
 }
 
-Dataset OpenCameras(const std::string& cameras, const std::string& detections, double fps, bool strict) {
+// The CLI's options of `rpt triangulate --cameras FILE --detections FILE` with '_' for '-': how the
+// calibration is read (cameras_format, cameras_units, cameras_image_width, cameras_image_height)
+// and how the detections map onto its cameras and frames (map_pattern, ..., rename_camera).
+void SetCameraInputOptions(const py::kwargs& options, engine::InputSpec* spec) {
+  static constexpr std::string_view kWhere = "datasets.open_cameras";
+  py::dict camera_read;
+  engine::DetectionMapping& m = spec->mapping;
+  const std::vector<std::pair<std::string, std::string*>> texts = {
+      {"map_pattern", &m.pattern},         {"map_frame_id", &m.frame_id},     {"map_camera", &m.camera},
+      {"openpose_joints", &m.openpose_joints}, {"coco_images", &m.coco_images}, {"coco_image_ids", &m.coco_image_ids},
+      {"coco_keypoints", &m.coco_keypoints}, {"voxelpose_prefix", &m.voxelpose_prefix}};
+  for (const auto& [key_object, value] : options) {
+    const std::string key = py::str(key_object).cast<std::string>();
+    if (key.rfind("cameras_", 0) == 0) {
+      camera_read[py::str(key.substr(8))] = value;
+      continue;
+    }
+    const auto text = std::find_if(texts.begin(), texts.end(), [&](const auto& t) { return t.first == key; });
+    if (text != texts.end()) {
+      *text->second = OptionText(value, kWhere, key);
+    } else if (key == "coco_min_score") {
+      if (!PyNumber_Check(value.ptr()) || py::isinstance<py::bool_>(value)) {
+        throw py::type_error(std::string(kWhere) + ": coco_min_score: expected a number, got " +
+                             py::str(py::type::of(value)).cast<std::string>());
+      }
+      m.coco_min_score = py::reinterpret_borrow<py::object>(value).cast<double>();
+    } else if (key == "rename_camera") {  // {"FROM": "TO"} or ["FROM=TO", ...], as --rename-camera
+      if (py::isinstance<py::dict>(value)) {
+        for (const auto& [from, to] : py::reinterpret_borrow<py::dict>(value)) {
+          m.rename_cameras.push_back(OptionText(from, kWhere, key) + "=" + OptionText(to, kWhere, key));
+        }
+      } else if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
+        for (py::handle item : value) m.rename_cameras.push_back(OptionText(item, kWhere, key));
+      } else {
+        m.rename_cameras.push_back(OptionText(value, kWhere, key));
+      }
+    } else {
+      std::string known = "cameras_format, cameras_units, cameras_image_width, cameras_image_height";
+      for (const auto& t : texts) known += ", " + t.first;
+      throw ConfigError(std::string(kWhere) + ": unknown option " + QuoteName(key) + " (known: " + known +
+                        ", coco_min_score, rename_camera)");
+    }
+  }
+  SetOptionFields(camera_read, kWhere, "cameras_", &spec->camera_read);
+}
+
+Dataset OpenCameras(const std::string& cameras, const std::string& detections, double fps, bool strict,
+                    const py::kwargs& options) {
   engine::InputSpec spec;
   spec.cameras = cameras;
   spec.fps = fps;
+  SetCameraInputOptions(options, &spec);
   InputArgs args;
   args.detections_file = detections;
   args.strict = strict;
@@ -264,7 +313,11 @@ void RegisterDatasets(py::module_& datasets, py::module_& synthetic) {
   datasets.def("open_cameras", &OpenCameras, py::arg("cameras"), py::arg("detections"), py::kw_only(),
                py::arg("fps") = 0.0, py::arg("strict") = false,
                "Your own recording as rpt triangulate reads it (--cameras FILE --detections FILE --fps HZ): the "
-               "frames of the detections file, without ground truth.");
+               "frames of the detections file, without ground truth. Other keyword arguments are that command's "
+               "reading options with '_' for '-': cameras_format, cameras_units, cameras_image_width, "
+               "cameras_image_height, map_pattern, map_frame_id, map_camera, openpose_joints, coco_images, "
+               "coco_image_ids, coco_min_score, coco_keypoints, voxelpose_prefix, rename_camera ({'FROM': 'TO'} "
+               "or ['FROM=TO', ...]).");
   datasets.def("names", [] {
     std::vector<std::string> names;
     for (const engine::DatasetEntry& entry : engine::DatasetRegistry()) names.push_back(entry.info.name);

@@ -49,3 +49,30 @@ def test_cameras_and_detections_equal_rpt_triangulate(files, tmp_path):
 def test_missing_detections_file(files):
     with pytest.raises(FileNotFoundError, match=r"nothing.json: file not found"):
         rpt.datasets.open_cameras(str(files / "labels.json"), str(files / "nothing.json"))
+
+
+def test_open_cameras_takes_the_reading_options_of_the_cli(files, tmp_path):
+    # A rig whose detections name the cameras "1".."N" and whose calibration is in millimetres: the
+    # options of `rpt triangulate --cameras` (--rename-camera, --cameras-units), '_' for '-'.
+    cameras = rpt.cameras.load(files / "labels.json")
+    rpt.cameras.save(tmp_path / "mm.yml", cameras, units="mm")
+    detections = json.loads((files / "detections.json").read_text())
+    renames = {c.name: str(i + 1) for i, c in enumerate(cameras)}
+    for frame in detections["frames"]:
+        for view in frame["views"]:
+            view["camera"] = renames[view["camera"]]
+    (tmp_path / "numbered.json").write_text(json.dumps(detections))
+    (expected,) = rpt.datasets.open_cameras(str(files / "labels.json"), str(files / "detections.json"), fps=25).load()
+    (renamed,) = rpt.datasets.open_cameras(str(tmp_path / "mm.yml"), str(tmp_path / "numbered.json"), fps=25,
+                                           cameras_units="mm",
+                                           rename_camera={number: name for name, number in renames.items()}).load()
+    assert [c.name for c in renamed.cameras] == [c.name for c in expected.cameras]
+    for a, b in zip(renamed.cameras, expected.cameras):
+        assert abs(a.t - b.t).max() < 1e-9
+    assert len(renamed) == len(expected)
+    for a, b in zip(renamed, expected):
+        assert all((x == y).all() for x, y in zip(a.views, b.views))
+    with pytest.raises(rpt.ConfigError, match=r"datasets.open_cameras: unknown option 'rename_cameras' \(known: "):
+        rpt.datasets.open_cameras(str(files / "labels.json"), str(files / "detections.json"), rename_cameras={})
+    with pytest.raises(rpt.ConfigError, match=r"cameras_units"):
+        rpt.datasets.open_cameras(str(files / "labels.json"), str(files / "detections.json"), cameras_units="inch")
