@@ -20,7 +20,7 @@ struct DetectionFramesOptions {
   std::string name;  // the sequence's name
   // Frame rate of the detection frames. Where the file gives times (generic JSON's "time"), they
   // are the frames' times (a frame without one: unknown). Else frame i is at time i / fps, or, when every frame id ends
-  // in a number and the numbers increase, at (its number - the first frame's) / fps (frames the
+  // in a number, the numbers increase and most steps are 1, at (its number - the first frame's) / fps (frames the
   // file skips leave a gap in time). 0 = the times are unknown (NaN): nothing is carried from
   // frame to frame (no tracking, no smoothing), counted in one warning that says how to give the rate.
   double fps = 0;

@@ -127,7 +127,18 @@ TEST_F(Triangulate, FrameTimesFollowTheNumbersOfTheFrameIds) {
   const Json order = ReadJson(dir_ / "shuffled" / "predictions.json")["frames"];
   EXPECT_EQ(order[3]["id"], "take_000009");
   EXPECT_DOUBLE_EQ(order[3]["time"].get<double>(), 3 / kFps);
-  // Consecutive numbers: no warning (every other test of this file).
+  // Numbers that are no frame counter (capture times in milliseconds: steps of 40): the file's
+  // order, no gap counted. Consecutive numbers: no warning (every other test of this file).
+  Detections stamped = Coco17(scene_, Ids("take_", kFrames));
+  for (size_t f = 0; f < stamped.frames.size(); ++f) stamped.frames[f].frame_id = "cap_" + std::to_string(1000 + 40 * f);
+  WriteGenericDetections(dir_ / "stamped.json", stamped);
+  const test::CommandResult ms = test::RunRpt("triangulate" + cameras + " --detections " +
+                                              (dir_ / "stamped.json").string() + " --fps 25 --out " +
+                                              (dir_ / "stamped").string());
+  ASSERT_EQ(ms.exit_code, 0) << ms.err;
+  EXPECT_EQ(ms.err.find("warning"), std::string::npos) << ms.err;
+  const Json stamped_frames = ReadJson(dir_ / "stamped" / "predictions.json")["frames"];
+  EXPECT_DOUBLE_EQ(stamped_frames[kFrames - 1]["time"].get<double>(), (kFrames - 1) / kFps);
 }
 
 // Joints at pixel (0, 0) with a confidence (some detectors' "not found") in a detections file: read
