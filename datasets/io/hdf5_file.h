@@ -528,6 +528,10 @@ class Hdf5Reader {
     if (variable > 0) {
       Hdf5Id memory_type(H5Tcopy(H5T_C_S1), H5Tclose);
       H5Tset_size(memory_type.get(), H5T_VARIABLE);
+      // The file's character set (h5py writes UTF-8): HDF5 converts no string between ASCII and
+      // UTF-8, so an ASCII memory type made h5py's attributes unreadable.
+      const H5T_cset_t cset = H5Tget_cset(type.get());
+      if (cset == H5T_CSET_ASCII || cset == H5T_CSET_UTF8) H5Tset_cset(memory_type.get(), cset);
       char* text = nullptr;
       const herr_t read = H5Aread(attribute.get(), memory_type.get(), &text);
       std::string out = text ? std::string(text, strnlen(text, kMaxStringWidth)) : "";

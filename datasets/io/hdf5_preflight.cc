@@ -51,6 +51,7 @@ bool ReadAndReclaim(hid_t type, hid_t space, hsize_t count, std::uint64_t max_by
   Hdf5Id memory_type(variable_string > 0 ? H5Tcopy(H5T_C_S1) : H5Tcopy(type), H5Tclose);
   if (!memory_type.valid()) return false;
   if (variable_string > 0 && H5Tset_size(memory_type.get(), H5T_VARIABLE) < 0) return false;
+  if (variable_string > 0 && H5Tset_cset(memory_type.get(), H5Tget_cset(type)) < 0) return false;  // h5py: UTF-8
   const std::size_t element = H5Tget_size(memory_type.get());
   if (element == 0) return false;
   hsize_t bytes = 0;

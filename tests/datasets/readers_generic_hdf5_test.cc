@@ -78,10 +78,27 @@ class Hdf5Editor {
     const hsize_t n = values.size();
     const hid_t type = H5Tcopy(H5T_C_S1);
     H5Tset_size(type, H5T_VARIABLE);
+    H5Tset_cset(type, H5T_CSET_UTF8);  // as h5py writes a list of str
     const hid_t space = H5Screate_simple(1, &n, nullptr);
     const hid_t dataset = H5Dcreate2(file_, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
     H5Dwrite(dataset, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, pointers.data());
     H5Dclose(dataset);
+    H5Sclose(space);
+    H5Tclose(type);
+  }
+  // Replaces attribute `name` of `object` by a variable-length UTF-8 string, as h5py's
+  // `group.attrs[name] = "text"` writes it.
+  void PutVariableStringAttribute(const std::string& object, const std::string& name, const std::string& value) {
+    H5Adelete_by_name(file_, object.c_str(), name.c_str(), H5P_DEFAULT);
+    const hid_t type = H5Tcopy(H5T_C_S1);
+    H5Tset_size(type, H5T_VARIABLE);
+    H5Tset_cset(type, H5T_CSET_UTF8);
+    const hid_t space = H5Screate(H5S_SCALAR);
+    const hid_t attribute =
+        H5Acreate_by_name(file_, object.c_str(), name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    const char* text = value.c_str();
+    EXPECT_GE(H5Awrite(attribute, type, &text), 0) << object << " " << name;
+    H5Aclose(attribute);
     H5Sclose(space);
     H5Tclose(type);
   }
@@ -353,6 +370,8 @@ TEST(Hdf5Cache, ReadsVariableLengthStrings) {
     Hdf5Editor editor(path);
     editor.PutVariableStrings("/detections/joints", CocoBodyJoints());
     editor.PutVariableStrings("/detections/frame_ids", {"frame_000000", "frame_000001"});
+    // h5py's default for a str attribute; it was "cannot read attribute 'format'".
+    editor.PutVariableStringAttribute("/detections", "format", "rpt-detections");
   }
   test::ExpectDetectionsNear(detections, ReadDetectionsHdf5(path), 0);
 }
