@@ -137,6 +137,10 @@ bool DetectPerson(const DetectorOptions& options, const ViewContext& view, const
       uv.x() = std::clamp(uv.x(), 0.0, static_cast<double>(camera.width));
       uv.y() = std::clamp(uv.y(), 0.0, static_cast<double>(camera.height));
     }
+    if (uv.x() == 0.0 && uv.y() == 0.0) {  // clamped into the corner: what detectors write for "not found",
+      out->col(k).setZero();               // and what the readers of detection files read as missing
+      continue;
+    }
     out->col(k).head<2>() = uv;
     (*out)(2, k) =
         std::clamp(options.score_base - options.score_error_slope * relative_error + jitter, options.score_min, 1.0);
@@ -211,6 +215,10 @@ bool DetectPersonFitted(const DetectorOptions& options, const ViewContext& view,
     Eigen::Vector2d uv = base + shift + draw.error_px;
     uv.x() = std::clamp(uv.x(), 0.0, static_cast<double>(camera.width));
     uv.y() = std::clamp(uv.y(), 0.0, static_cast<double>(camera.height));
+    if (uv.x() == 0.0 && uv.y() == 0.0) {  // the corner: not reported, as above (ReadOriginJointsAsMissing)
+      out->col(k).setZero();
+      continue;
+    }
     out->col(k).head<2>() = uv;
     (*out)(2, k) = std::clamp(draw.score * score_factor[k], options.score_min, 1.0);
   }
