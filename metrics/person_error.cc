@@ -13,8 +13,12 @@ std::vector<int> MapJointNames(const JointNames& wanted, const JointNames& avail
   std::vector<int> indices = FindJointNames(wanted, available);
   for (size_t i = 0; i < wanted.size(); ++i) {
     if (indices[i] < 0) {
+      std::string names;
+      for (size_t a = 0; a < available.size() && a < 20; ++a) names += (a ? ", " : "") + available[a];
+      if (available.size() > 20) names += ", ... (" + std::to_string(available.size()) + " joints)";
       throw ConfigError("metrics: evaluated joint '" + wanted[i] + "' is not among the " + std::string(what) +
-                        " joints");
+                        " joints (" + names + "); choose the joints with --set 'metrics.evaluated_joints=[...]' "
+                        "(labels written by rpt convert do not carry a dataset's own choice)");
     }
   }
   return indices;

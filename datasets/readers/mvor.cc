@@ -185,7 +185,7 @@ struct MvorFiles {
   std::map<std::string, int> camera_index;
 };
 
-void ConvertFrame(const MvorFiles& files, const MvorFrame& in, SequenceFrame* frame) {
+void ConvertFrame(const MvorFiles& files, const MvorFrame& in, SequenceFrame* frame, InputWarnings* warnings) {
   const nlohmann::json& root = files.root;
   const std::string& source = files.source;
   const int num_joints = static_cast<int>(MvorJoints().size());
@@ -230,6 +230,21 @@ void ConvertFrame(const MvorFiles& files, const MvorFrame& in, SequenceFrame* fr
         frame->labels_2d[c].push_back(std::move(out));
       }
     }
+    // Four frames give two 3D persons the same person_id: the later one is not tracked (-1), as
+    // ids name one person each (the generic labels refuse a repeat; the 2D labels above keep the
+    // match they had, to the last).
+    long repeated = 0;
+    for (int p = 1; p < frame->gt.num_persons(); ++p) {
+      for (int q = 0; q < p; ++q) {
+        if (frame->gt.track_ids[p] >= 0 && frame->gt.track_ids[q] == frame->gt.track_ids[p]) {
+          frame->gt.track_ids[p] = -1;
+          ++repeated;
+          break;
+        }
+      }
+    }
+    warnings->Add(source, "3D persons whose person_id repeats another's in their frame, not tracked (id -1)", "", 0,
+                  repeated);
   }
   if (files.detections.joints.empty()) return;
   const int detection_joints = static_cast<int>(files.detections.joints.size());
@@ -453,8 +468,8 @@ std::vector<std::unique_ptr<FrameSource>> OpenMvor(const DatasetRequest& request
                                "wrist_left",    "wrist_right",    "hip_left",   "hip_right"};
     if (paper_joints) header.evaluated_joints.insert(header.evaluated_joints.begin(), "nose");
     auto frames_of = std::make_shared<const std::vector<MvorFrame>>(std::move(*day_frames));
-    auto convert = [files, frames_of](size_t i, SequenceFrame* frame, InputWarnings*) {
-      ConvertFrame(*files, (*frames_of)[i], frame);
+    auto convert = [files, frames_of](size_t i, SequenceFrame* frame, InputWarnings* warnings) {
+      ConvertFrame(*files, (*frames_of)[i], frame, warnings);
     };
     const size_t count = frames_of->size();
     // Corrections are counted once per file: the first day's source carries them.
