@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "core/errors.h"
+#include "core/option_codec.h"
 #include "core/printable_text.h"
 #include "core/text.h"
 
@@ -153,6 +154,25 @@ std::unique_ptr<FrameSource> OpenDetectionFrames(std::vector<Camera> cameras, De
   if (frames_with_time > 0) {
     warnings.AddMissing(source, "frames without a \"time\" where other frames have one: their times are unknown",
                         static_cast<long>(detections.frames.size()) - frames_with_time);
+    // --fps as well: it is the rate exports state (TRC's DataRate, "fps"); say when the times differ.
+    std::vector<double> steps;
+    double last = kUnknownTime;
+    for (const FrameDetections& frame : detections.frames) {
+      if (std::isfinite(frame.time_s) && std::isfinite(last) && frame.time_s > last) steps.push_back(frame.time_s - last);
+      if (std::isfinite(frame.time_s)) last = frame.time_s;
+    }
+    if (options.fps > 0 && !steps.empty()) {
+      const auto middle = steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2);
+      std::nth_element(steps.begin(), middle, steps.end());
+      const double rate = 1.0 / *middle;
+      if (std::abs(rate - options.fps) > 0.1 * options.fps) {
+        warnings.Add(source,
+                     "frame rates given with --fps (" + FormatNumber(options.fps) +
+                         ") that the frames' \"time\" contradict: the times are used, --fps is the rate the exports "
+                         "state (TRC DataRate, \"fps\"); leave it out or give the recording's rate",
+                     "frames per second of the median time step", rate, 1);
+      }
+    }
   } else if (options.fps <= 0 && !detections.frames.empty()) {
     warnings.AddMissing(source,
                         "frames without times: nothing is carried between frames (no tracking, no smoothing); "

@@ -179,7 +179,10 @@ TEST_F(Triangulate, JointsAtPixelZeroAreMissing) {
 // without --fps, so a camera of varying frame rate keeps its clock. It was an unknown key.
 TEST_F(Triangulate, TimesOfTheFramesInGenericJson) {
   Detections detections = Coco17(scene_, Ids("take_", kFrames));
-  for (size_t f = 0; f < detections.frames.size(); ++f) detections.frames[f].time_s = 100.0 + 0.03 * f * f / kFrames;
+  // 25 frames per second with a clock's jitter of a few milliseconds.
+  for (size_t f = 0; f < detections.frames.size(); ++f) {
+    detections.frames[f].time_s = 100.0 + f / kFps + 0.002 * (static_cast<int>(f % 3) - 1);
+  }
   WriteGenericDetections(dir_ / "timed.json", detections);
   const std::string input = "triangulate --cameras " + (dir_ / "cameras.json").string() + " --detections " +
                             (dir_ / "timed.json").string();
@@ -189,9 +192,24 @@ TEST_F(Triangulate, TimesOfTheFramesInGenericJson) {
     EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
     const Json frames = ReadJson(dir_ / "timed" / "predictions.json")["frames"];
     ASSERT_EQ(frames.size(), detections.frames.size());
-    for (size_t f = 0; f < frames.size(); ++f) EXPECT_EQ(frames[f]["time"].get<double>(), detections.frames[f].time_s);
+    for (size_t f = 0; f < frames.size(); ++f) EXPECT_NEAR(frames[f]["time"].get<double>(), detections.frames[f].time_s, 1e-6);
     EXPECT_GE(frames[kFrames - 1]["track_ids"][0].get<int>(), 0) << "times known: tracked" << fps;
   }
+  // --fps that the times contradict (60 Hz times, --fps 30): the times are used, and a warning says
+  // --fps is only the rate the exports state (25 above agrees with its times: no warning).
+  Detections regular = Coco17(scene_, Ids("take_", kFrames));
+  for (size_t f = 0; f < regular.frames.size(); ++f) regular.frames[f].time_s = f / 60.0;
+  WriteGenericDetections(dir_ / "sixty.json", regular);
+  const test::CommandResult contradicted =
+      test::RunRpt("triangulate --cameras " + (dir_ / "cameras.json").string() + " --detections " +
+                   (dir_ / "sixty.json").string() + " --fps 30 --out " + (dir_ / "sixty").string());
+  ASSERT_EQ(contradicted.exit_code, 0) << contradicted.err;
+  EXPECT_NE(contradicted.err.find("sixty.json: 1 frame rates given with --fps (30.0) that the frames' \"time\" "
+                                  "contradict: the times are used"),
+            std::string::npos)
+      << contradicted.err;
+  EXPECT_NE(contradicted.err.find("(frames per second of the median time step = 60)"), std::string::npos)
+      << contradicted.err;
   // Read back as written; a time that is not a number is an error at its place.
   EXPECT_EQ(ReadGenericDetections(dir_ / "timed.json").frames[5].time_s, detections.frames[5].time_s);
   std::string text = test::ReadAll(dir_ / "timed.json");
