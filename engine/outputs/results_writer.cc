@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/errors.h"
+#include "core/printable_text.h"
 #include "core/text.h"
 #include "datasets/io/json_output.h"
 #include "datasets/io/staged_output.h"
@@ -448,6 +449,13 @@ void RunFolder::Finish(const RunResult& run, const Config& config, const RunInfo
   for (const auto& [name, count] : replaced) {
     std::fprintf(stderr, "warning: %s: %d string(s) not valid UTF-8 (frame ids, names); invalid bytes written as U+FFFD\n",
                  (dir_ / name).string().c_str(), count);
+  }
+  // TRC holds tracks only: a run without any (times unknown: no --fps) wrote an empty folder.
+  if (trc_ != nullptr && trc_->files() == 0 && run.output_persons > 0) {
+    std::fprintf(stderr,
+                 "warning: %s: no TRC file written: no person was tracked (TRC holds tracks, and tracking needs the "
+                 "frames' times: give --fps or times)\n",
+                 PrintableText((dir_ / ExportFileName(ExportFormat::kTrc)).string(), LineBreaks::kEscape).c_str());
   }
 }
 

@@ -222,6 +222,23 @@ TEST_F(Triangulate, TimesOfTheFramesInGenericJson) {
       << bad.err;
 }
 
+// TRC holds tracks: without times nobody is tracked, and the run says that no TRC file was
+// written instead of leaving an empty trc/ folder without a word.
+TEST_F(Triangulate, TrcWithoutTimesSaysNothingWasWritten) {
+  WriteGenericDetections(dir_ / "detections.json", Coco17(scene_, Ids("take_", kFrames)));
+  const std::string input =
+      "triangulate --cameras " + (dir_ / "cameras.json").string() + " --detections " + (dir_ / "detections.json").string();
+  const test::CommandResult none = test::RunRpt(input + " --export trc --quiet --out " + (dir_ / "none").string());
+  ASSERT_EQ(none.exit_code, 0) << none.err;
+  EXPECT_NE(none.err.find("warning: " + (dir_ / "none" / "trc").string() + ": no TRC file written: no person was tracked"),
+            std::string::npos)
+      << none.err;
+  const test::CommandResult timed = test::RunRpt(input + " --fps 25 --export trc --quiet --out " + (dir_ / "timed").string());
+  ASSERT_EQ(timed.exit_code, 0) << timed.err;
+  EXPECT_EQ(timed.err.find("no TRC file written"), std::string::npos) << timed.err;
+  EXPECT_FALSE(fs::is_empty(dir_ / "timed" / "trc"));
+}
+
 TEST_F(Triangulate, LabelsWithDetectionsEqualEval) {
   // --labels FILE --detections FILE: the labels give the cameras, frames and times only.
   const std::vector<std::string> ids = Ids("take_", kFrames);
