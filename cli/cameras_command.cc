@@ -64,7 +64,9 @@ void RegisterCamerasCommand(CLI::App& app) {
     InputWarnings warnings;
     const Calibration calibration = ReadCalibration(*in, convert_read->Parse(), &warnings);
     PrintInputWarnings(warnings);
-    WriteCalibration(*out, calibration.cameras, convert_write->Parse());
+    InputWarnings written;
+    WriteCalibration(*out, calibration.cameras, convert_write->Parse(), &written);
+    PrintInputWarnings(written);
     std::printf("%s -> %s: %zu cameras\n", PrintableText(*in).c_str(), PrintableText(*out).c_str(),
                 calibration.cameras.size());
   });

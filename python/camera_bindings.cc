@@ -177,8 +177,12 @@ void RegisterCameras(py::module_& m, py::module_& cameras) {
       [](const std::filesystem::path& path, const std::vector<Camera>& list, py::kwargs options) {
         CalibrationWriteOptions write;
         SetOptionFields(options, "cameras.save", "", &write);
-        py::gil_scoped_release release;
-        WriteCalibration(path, list, write);
+        InputWarnings written;
+        {
+          py::gil_scoped_release release;
+          WriteCalibration(path, list, write, &written);
+        }
+        WarnInput(engine::InputWarningLines(written));
       },
       py::arg("path"), py::arg("cameras"),
       "Writes cameras as json, opencv, easymocap or toml (format='auto': from the file name; units='default').");

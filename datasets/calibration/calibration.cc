@@ -5,6 +5,8 @@
 #include "datasets/calibration/calibration.h"
 
 #include <Eigen/SVD>
+#include <algorithm>
+#include <cmath>
 #include <set>
 
 #include "core/errors.h"
@@ -205,8 +207,8 @@ Calibration ReadCalibration(const fs::path& path, const CalibrationReadOptions& 
   return calibration;
 }
 
-void WriteCalibration(const fs::path& path, const std::vector<Camera>& cameras,
-                      const CalibrationWriteOptions& options) {
+void WriteCalibration(const fs::path& path, const std::vector<Camera>& cameras, const CalibrationWriteOptions& options,
+                      InputWarnings* warnings) {
   const CalibrationFormat format =
       options.format == CalibrationFormat::kAuto ? CalibrationFormatForOutput(path) : options.format;
   const std::string source = path.string();
@@ -220,6 +222,19 @@ void WriteCalibration(const fs::path& path, const std::vector<Camera>& cameras,
       throw InputError(source + ": cannot write " + error);
   }
   CheckUniqueNames(cameras, source + ": cannot write");
+  if (warnings != nullptr && format != CalibrationFormat::kJson) {
+    long skewed = 0;
+    double largest = 0;
+    for (const Camera& camera : cameras) {
+      if (camera.K(0, 1) == 0) continue;
+      ++skewed;
+      largest = std::max(largest, std::abs(camera.K(0, 1)));
+    }
+    warnings->Add(source,
+                  "cameras with a skew (K[0][1]) written, which OpenCV's projectPoints and anipose ignore: they project "
+                  "these cameras differently from rpt (our JSON keeps it exactly)",
+                  "largest |skew| in px", largest, skewed);
+  }
   switch (format) {
     case CalibrationFormat::kJson:
       if (options.units != LengthUnit::kDefault && options.units != LengthUnit::kMetres) {

@@ -168,7 +168,9 @@ Calibration ReadCalibration(const std::filesystem::path& path, const Calibration
 // ConfigError for a format that cannot be written, InputError naming the file and the camera for
 // cameras the format cannot hold (the Human3.6M lens model outside our JSON; fisheye cameras in
 // the EasyMocap layout; non-finite values) and when the file cannot be written.
+// `warnings` (may be null): cameras with a skew (K(0, 1) != 0) written to opencv, easymocap or toml,
+// whose readers (OpenCV's projectPoints, anipose) ignore it and project such a camera differently.
 void WriteCalibration(const std::filesystem::path& path, const std::vector<Camera>& cameras,
-                      const CalibrationWriteOptions& options = {});
+                      const CalibrationWriteOptions& options = {}, InputWarnings* warnings = nullptr);
 
 }  // namespace rpt
