@@ -99,9 +99,12 @@ TEST_F(Triangulate, FrameTimesFollowTheNumbersOfTheFrameIds) {
       ASSERT_TRUE(fs::remove(dir_ / "openpose" / camera / name)) << camera << " " << name;
     }
   }
-  const std::string cameras = " --cameras " + (dir_ / "cameras.json").string();
-  const test::CommandResult gap = test::RunRpt("triangulate" + cameras + " --detections " + (dir_ / "openpose").string() +
-                                               " --fps 25 --out " + (dir_ / "gap").string());
+  // `rpt triangulate` of `detections` at --fps 25 into the folder `out`.
+  const auto triangulate = [&](const fs::path& detections, const std::string& out) {
+    return test::RunRpt("triangulate --cameras " + (dir_ / "cameras.json").string() + " --detections " +
+                        detections.string() + " --fps 25 --out " + (dir_ / out).string());
+  };
+  const test::CommandResult gap = triangulate(dir_ / "openpose", "gap");
   ASSERT_EQ(gap.exit_code, 0) << gap.err;
   EXPECT_NE(gap.err.find(": 3 frame numbers missing between the frame ids (frames the detections skip): the times "
                          "follow the ids' numbers at --fps, with a gap there"),
@@ -116,9 +119,7 @@ TEST_F(Triangulate, FrameTimesFollowTheNumbersOfTheFrameIds) {
   Detections shuffled = Coco17(scene_, Ids("take_", kFrames));
   std::swap(shuffled.frames[3], shuffled.frames[9]);
   WriteGenericDetections(dir_ / "shuffled.json", shuffled);
-  const test::CommandResult out_of_order =
-      test::RunRpt("triangulate" + cameras + " --detections " + (dir_ / "shuffled.json").string() +
-                   " --fps 25 --out " + (dir_ / "shuffled").string());
+  const test::CommandResult out_of_order = triangulate(dir_ / "shuffled.json", "shuffled");
   ASSERT_EQ(out_of_order.exit_code, 0) << out_of_order.err;
   EXPECT_NE(out_of_order.err.find(": 2 frames whose id's number is not after the previous frame's (first 'take_000004' "
                                   "after 'take_000009'): out of order, so the times follow the file's order"),
@@ -132,9 +133,7 @@ TEST_F(Triangulate, FrameTimesFollowTheNumbersOfTheFrameIds) {
   Detections stamped = Coco17(scene_, Ids("take_", kFrames));
   for (size_t f = 0; f < stamped.frames.size(); ++f) stamped.frames[f].frame_id = "cap_" + std::to_string(1000 + 40 * f);
   WriteGenericDetections(dir_ / "stamped.json", stamped);
-  const test::CommandResult ms = test::RunRpt("triangulate" + cameras + " --detections " +
-                                              (dir_ / "stamped.json").string() + " --fps 25 --out " +
-                                              (dir_ / "stamped").string());
+  const test::CommandResult ms = triangulate(dir_ / "stamped.json", "stamped");
   ASSERT_EQ(ms.exit_code, 0) << ms.err;
   EXPECT_EQ(ms.err.find("warning"), std::string::npos) << ms.err;
   const Json stamped_frames = ReadJson(dir_ / "stamped" / "predictions.json")["frames"];
