@@ -41,8 +41,8 @@ struct AttachReport {
 // Detectors write (0, 0) for a joint they did not find, some of them with its low confidence: a
 // detected joint at exactly pixel (0, 0) with a score above 0 is set to score 0 (missing). Returns
 // how many were; the readers of detection files (ReadDetectionsFile, the live lines) count them
-// under the file as kOriginJointsRead. Simulated detections are not files and keep theirs (a joint
-// clamped into the image's corner).
+// under the file as kOriginJointsRead. The simulated detector reports a joint it would clamp into
+// that corner as not found (datasets/synthetic/detector_simulator.cc), so it never writes one.
 long ReadOriginJointsAsMissing(Poses2D* view);
 inline constexpr const char* kOriginJointsRead =
     "detected joints at pixel (0, 0) with a score above 0 read as missing (what detectors write for a joint they "

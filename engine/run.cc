@@ -24,6 +24,7 @@
 #include "engine/joint_adapter.h"
 #include "engine/thread_count.h"
 #include "metrics/accumulator.h"
+#include "metrics/timing.h"
 #include "core/option_codec.h"
 #include "core/printable_text.h"
 
@@ -43,9 +44,11 @@ struct SequenceRun {
   long times_not_after = 0;
   double largest_step_back_s = 0;
   // Steps from one known time to the next (forward), those longer than track.max_gap_s (tracks end
-  // at each) and the first kStepSample of them: a video whose times are in milliseconds.
+  // at each), the longest, and the first kStepSample of them: a video whose times are in
+  // milliseconds.
   long time_steps = 0, steps_beyond_gap = 0;
-  std::vector<double> step_sample;
+  double largest_step_s = 0;
+  std::vector<double> step_sample;  // reserved once: no allocation per frame
 };
 
 constexpr size_t kStepSample = 1000;
@@ -57,14 +60,11 @@ constexpr size_t kStepSample = 1000;
 // (MVOR's, every 75 s, are as regular); every track ends there all the same, as it should.
 bool LooksLikeMilliseconds(const SequenceRun& run, double fps) {
   if (run.time_steps < 3 || 2 * run.steps_beyond_gap <= run.time_steps) return false;
-  std::vector<double> steps = run.step_sample;
-  const auto middle = steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2);
-  std::nth_element(steps.begin(), middle, steps.end());
-  const double median = *middle;
+  const double median = metrics::Median(run.step_sample);
   if (fps > 0) return std::abs(median - 1000.0 / fps) <= 0.1 * 1000.0 / fps;
-  for (double& step : steps) step = std::abs(step - median);
-  std::nth_element(steps.begin(), middle, steps.end());
-  return median >= 5 && median <= 70 && *middle <= 0.1 * median;
+  std::vector<double> deviations = run.step_sample;
+  for (double& step : deviations) step = std::abs(step - median);
+  return median >= 5 && median <= 70 && metrics::Median(std::move(deviations)) <= 0.1 * median;
 }
 
 // The run's joint adapter (RunOptions::adapter) on one sequence: each frame's persons copied and
@@ -157,6 +157,7 @@ void RunSequence(int index, FrameSource& source, const RunOptions& options, cons
   run->result.cameras = static_cast<int>(header.cameras.size());
   run->result.output_joints = output_joints;
   run->timing = metrics::TimingAccumulator(options.warmup_frames);
+  run->step_sample.reserve(kStepSample);
   if (eval != nullptr) run->metrics.emplace(*eval);
   if (options.loss_table) {
     if (eval == nullptr) throw ConfigError("the loss table needs the metrics (ground truth)");
@@ -202,6 +203,7 @@ void RunSequence(int index, FrameSource& source, const RunOptions& options, cons
       } else if (std::isfinite(last_time_s)) {
         ++run->time_steps;
         if (t - last_time_s > tri_options.track.max_gap_s) ++run->steps_beyond_gap;
+        run->largest_step_s = std::max(run->largest_step_s, t - last_time_s);
         if (run->step_sample.size() < kStepSample) run->step_sample.push_back(t - last_time_s);
       }
       last_time_s = t;
@@ -354,9 +356,7 @@ RunResult Run(Input& input, const RunOptions& options, FrameSink* sink) {
                               " s) after the previous frame, at regular steps of milliseconds' size: are the times "
                               "in milliseconds? They must be seconds; as they are, every track ends after a frame "
                               "(no tracking, no smoothing)",
-                          "largest step in s",
-                          *std::max_element(runs[i].step_sample.begin(), runs[i].step_sample.end()),
-                          runs[i].steps_beyond_gap);
+                          "largest step in s", runs[i].largest_step_s, runs[i].steps_beyond_gap);
     }
   }
   input.CheckStrict();

@@ -66,10 +66,10 @@ long long TrailingNumber(const std::string& id) {
 
 // Frame times at `fps` (> 0). When every frame id ends in a number, the numbers increase, and most
 // steps between them are 1 (a frame counter), frame f is at (its number - the first frame's) / fps,
-// so frames missing from the file (a detector that
-// skipped some, files deleted from an OpenPose folder) leave a gap in time instead of shifting the
-// frames after them; the skipped numbers are counted in a warning. Otherwise frame f is at f / fps
-// (the file's order), and ids whose numbers do not increase (frames out of order) are counted.
+// so frames missing from the file (a detector that skipped some, files deleted from an OpenPose
+// folder) leave a gap in time instead of shifting the frames after them; the skipped numbers are
+// counted in a warning. Otherwise frame f is at f / fps (the file's order), and ids whose numbers
+// do not increase (frames out of order) are counted.
 std::vector<double> FrameTimes(const std::vector<FrameDetections>& frames, double fps, const std::string& source,
                                InputWarnings* warnings) {
   std::vector<double> times(frames.size());
@@ -90,13 +90,12 @@ std::vector<double> FrameTimes(const std::vector<FrameDetections>& frames, doubl
   }
   // Frame counters step by 1 between most frames; other numbers (capture times in milliseconds,
   // every 10th frame exported) are not frame indices at --fps.
-  bool counter = false;
+  bool by_number = false;
   if (numbered && not_increasing == 0 && frames.size() >= 2) {
     long ones = 0;
     for (size_t f = 1; f < frames.size(); ++f) ones += numbers[f] - numbers[f - 1] == 1 ? 1 : 0;
-    counter = 2 * ones > static_cast<long>(frames.size() - 1);
+    by_number = 2 * ones > static_cast<long>(frames.size() - 1);
   }
-  const bool by_number = counter;
   for (size_t f = 0; f < frames.size(); ++f) {
     times[f] = by_number ? static_cast<double>(numbers[f] - numbers[0]) / fps : static_cast<double>(f) / fps;
   }
