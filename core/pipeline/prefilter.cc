@@ -114,39 +114,69 @@ int LimitAmbiguousPairs(const PreparedViews& views, std::span<const ViewGeometry
   return CompactKept(scratch->keep, pairs);
 }
 
-// Of one person's budget entries (pairs, best first by (-quality, pair index)), marks in
-// scratch->keep the kPerPose best of every pose; returns how many it marked.
+// A pose's kPerPose best entries of one person's budget, best first (quality -1: none yet): views
+// of its row in PrefilterScratch::best_quality and best_entry.
 template <int kPerPose>
-size_t KeepEachPosesBest(const std::vector<std::pair<double, int>>& entries, const std::vector<PosePair>& pairs,
-                         PrefilterScratch* scratch) {
+struct PoseBest {
+  double* quality;
+  int* entry;
+  // Entries arrive in increasing pair order, so of equal qualities the one already held is the
+  // better (lower pair index): a new entry must be strictly better to enter.
+  void Offer(double q, int e) {
+    if (!(q > quality[kPerPose - 1])) return;
+    int t = kPerPose - 1;
+    for (; t > 0 && q > quality[t - 1]; --t) quality[t] = quality[t - 1], entry[t] = entry[t - 1];
+    quality[t] = q;
+    entry[t] = e;
+  }
+  bool Holds(int e) const {
+    bool holds = false;
+    for (int t = 0; t < kPerPose; ++t) holds |= entry[t] == e;
+    return holds;
+  }
+};
+
+// Of one person's budget entries (pair indices in increasing order, their qualities in
+// scratch->quality), marks in scratch->keep the kPerPose best of every pose (best = higher
+// quality, then lower pair index), then the best of the others until `budget` entries are marked
+// (the best of every pose stay even above it). Qualities are not negative; a NaN one is never
+// among the best. Both selections are exact without sorting the entries.
+template <int kPerPose>
+void KeepBestEntries(const std::vector<int>& entries, const std::vector<PosePair>& pairs, size_t budget,
+                     PrefilterScratch* scratch) {
   const int num_entries = static_cast<int>(entries.size());
-  const auto offer = [&entries](std::array<int, kMaxBestPairsPerPose>& best, int e) {
-    for (int t = 0; t < kPerPose; ++t) {
-      if (best[t] < 0 || entries[e] < entries[best[t]]) {
-        for (int u = kPerPose - 1; u > t; --u) best[u] = best[u - 1];
-        best[t] = e;
-        return;
-      }
-    }
+  const double* quality = scratch->quality.data();
+  const auto best = [scratch](int pose) {
+    return PoseBest<kPerPose>{scratch->best_quality.data() + static_cast<size_t>(pose) * kPerPose,
+                              scratch->best_entry.data() + static_cast<size_t>(pose) * kPerPose};
   };
+  std::fill(scratch->best_quality.begin(), scratch->best_quality.end(), -1.0);  // every pose: none yet
+  std::fill(scratch->best_entry.begin(), scratch->best_entry.end(), -1);
   for (int e = 0; e < num_entries; ++e) {
-    const PosePair& pair = pairs[entries[e].second];
-    offer(scratch->best[pair.a], e);
-    offer(scratch->best[pair.b], e);
+    const PosePair& pair = pairs[entries[e]];
+    best(pair.a).Offer(quality[e], e);
+    best(pair.b).Offer(quality[e], e);
   }
   size_t used = 0;
   for (int e = 0; e < num_entries; ++e) {
-    const PosePair& pair = pairs[entries[e].second];
-    const std::array<int, kMaxBestPairsPerPose>& best_a = scratch->best[pair.a];
-    const std::array<int, kMaxBestPairsPerPose>& best_b = scratch->best[pair.b];
-    bool among_best = false;
-    for (int t = 0; t < kPerPose; ++t) among_best |= best_a[t] == e || best_b[t] == e;
-    if (among_best) {
-      scratch->keep[entries[e].second] = 1;
-      ++used;
-    }
+    const PosePair& pair = pairs[entries[e]];
+    const bool among_best = best(pair.a).Holds(e) || best(pair.b).Holds(e);
+    scratch->keep[entries[e]] = among_best ? 1 : 0;
+    used += among_best ? 1 : 0;
   }
-  return used;
+  if (used >= budget) return;  // the usual case with many views: the poses' best pairs fill it
+  // The best others: the `room` best so far, best first (equal qualities in entry order).
+  const size_t room = budget - used;
+  std::vector<std::pair<double, int>>& top = scratch->top;
+  top.clear();
+  for (int e = 0; e < num_entries; ++e) {
+    if (scratch->keep[entries[e]] || (top.size() == room && !(quality[e] > top.back().first))) continue;
+    if (top.size() < room) top.emplace_back(-1.0, -1);
+    size_t t = top.size() - 1;
+    for (; t > 0 && quality[e] > top[t - 1].first; --t) top[t] = top[t - 1];
+    top[t] = {quality[e], e};
+  }
+  for (const auto& entry : top) scratch->keep[entries[entry.second]] = 1;
 }
 
 // Keeps at most max_pairs_per_person of the pairs matched to each previous person (see the header).
@@ -177,7 +207,9 @@ int ApplyPairBudget(const PreparedViews& views, std::span<const ViewGeometry> ge
   }
 
   scratch->keep.assign(pairs->size(), 1);
-  scratch->best.resize(views.num_poses());
+  const int best_per_pose = std::clamp(options.best_pairs_per_pose, 1, kMaxBestPairsPerPose);
+  scratch->best_quality.resize(static_cast<size_t>(views.num_poses()) * best_per_pose);
+  scratch->best_entry.resize(static_cast<size_t>(views.num_poses()) * best_per_pose);
   const int num_core_joints = static_cast<int>(core_joints.size());
   const double* core_sqrt_scores = CoreSqrtScores(views, core_joints, scratch);
   scratch->directions.resize(static_cast<size_t>(num_views));
@@ -188,40 +220,23 @@ int ApplyPairBudget(const PreparedViews& views, std::span<const ViewGeometry> ge
     const Eigen::Vector3d center = PersonCentre(previous, q);
     for (int v = 0; v < num_views; ++v) scratch->directions[v] = (geometry[v].center - center).normalized();
     // Quality: sin of the ray angle at the person x the 2D confidence both poses share.
-    scratch->budget.clear();
-    for (int i = first; i < last; ++i) {
-      const int k = scratch->bucket[i];
-      const PosePair& pair = (*pairs)[k];
-      const double quality =
+    scratch->entries.assign(scratch->bucket.begin() + first, scratch->bucket.begin() + last);
+    const size_t num_entries = scratch->entries.size();
+    scratch->quality.resize(num_entries);
+    for (size_t e = 0; e < num_entries; ++e) {
+      const PosePair& pair = (*pairs)[scratch->entries[e]];
+      scratch->quality[e] =
           PairQuality(scratch->directions[views.view_of[pair.a]], scratch->directions[views.view_of[pair.b]],
                       core_sqrt_scores + static_cast<size_t>(pair.a) * num_core_joints,
                       core_sqrt_scores + static_cast<size_t>(pair.b) * num_core_joints, num_core_joints);
-      scratch->budget.emplace_back(-quality, k);  // best first: (-quality, pair index) ascending
-      scratch->keep[k] = 0;
-      scratch->best[pair.a].fill(-1);
-      scratch->best[pair.b].fill(-1);
     }
     // Every pose of the person keeps its best_pairs_per_pose best pairs (so the person's group
     // can claim all its poses), then the budget fills by quality.
-    // The entries are totally ordered (pair indices differ), so "the best of each pose" and "the
-    // best of the rest" are exact selections: no sort of the whole bucket.
-    const std::vector<std::pair<double, int>>& entries = scratch->budget;
-    size_t used = 0;
-    switch (std::clamp(options.best_pairs_per_pose, 1, kMaxBestPairsPerPose)) {  // unrolled per count
-      case 1: used = KeepEachPosesBest<1>(entries, *pairs, scratch); break;
-      case 2: used = KeepEachPosesBest<2>(entries, *pairs, scratch); break;
-      case 3: used = KeepEachPosesBest<3>(entries, *pairs, scratch); break;
-      default: used = KeepEachPosesBest<4>(entries, *pairs, scratch); break;
-    }
-    if (used >= budget) continue;  // the usual case with many views: the poses' best pairs fill it
-    scratch->rest.clear();
-    for (const auto& entry : entries) {
-      if (!scratch->keep[entry.second]) scratch->rest.push_back(entry);
-    }
-    if (!scratch->rest.empty()) {
-      const size_t take = std::min(budget - used, scratch->rest.size());
-      std::nth_element(scratch->rest.begin(), scratch->rest.begin() + (take - 1), scratch->rest.end());
-      for (size_t i = 0; i < take; ++i) scratch->keep[scratch->rest[i].second] = 1;
+    switch (best_per_pose) {  // unrolled per count
+      case 1: KeepBestEntries<1>(scratch->entries, *pairs, budget, scratch); break;
+      case 2: KeepBestEntries<2>(scratch->entries, *pairs, budget, scratch); break;
+      case 3: KeepBestEntries<3>(scratch->entries, *pairs, budget, scratch); break;
+      default: KeepBestEntries<4>(scratch->entries, *pairs, budget, scratch); break;
     }
   }
   return CompactKept(scratch->keep, pairs);
@@ -331,6 +346,8 @@ int steps::Prefilter(const PrefilterOptions& options, const PrefilterInput& in, 
   const int num_views = static_cast<int>(views.view_begin.size()) - 1;
   const size_t per_view = static_cast<size_t>(num_previous) * num_core;
   scratch->projected.resize(per_view * num_views);
+  scratch->distance_sum.resize(num_previous);
+  scratch->distance_count.resize(num_previous);
   for (int v = 0; v < num_views; ++v) {
     const ViewGeometry& geo = geometry[v];
     for (size_t idx = 0; idx < per_view; ++idx) {
@@ -354,23 +371,28 @@ int steps::Prefilter(const PrefilterOptions& options, const PrefilterInput& in, 
     uint64_t* near = scratch->near.data() + static_cast<size_t>(g) * words;
     double best = std::numeric_limits<double>::infinity(), second = best;
     int best_q = -1;
+    double* const sums = scratch->distance_sum.data();
+    int* const counts = scratch->distance_count.data();
+    if (columns) {
+      simd::PixelDistanceSums(projected->data(), num_previous, simd::ColumnsOf(views.core_columns, g), num_core, sums,
+                              counts);
+    } else {
+      for (int q = 0; q < num_previous; ++q) {
+        sums[q] = 0;
+        counts[q] = 0;
+        for (int c = 0; c < num_core; ++c) {
+          const Keypoint& kp = kps[core_joints[c]];
+          const Eigen::Vector2d& uv = projected[static_cast<size_t>(q) * num_core + c];
+          if (kp.score <= 0 || std::isnan(uv.x())) continue;
+          const double du = uv.x() - kp.u, dv = uv.y() - kp.v;
+          sums[q] += std::sqrt(du * du + dv * dv);
+          ++counts[q];
+        }
+      }
+    }
     for (int q = 0; q < num_previous; ++q) {
-      double sum = 0;
-      int n = 0;
-      if (columns) {
-        sum = simd::PixelDistanceSum(projected[static_cast<size_t>(q) * num_core].data(),
-                                     simd::ColumnsOf(views.core_columns, g), num_core, &n);
-      }
-      for (int c = 0; c < num_core && !columns; ++c) {
-        const Keypoint& kp = kps[core_joints[c]];
-        const Eigen::Vector2d& uv = projected[static_cast<size_t>(q) * num_core + c];
-        if (kp.score <= 0 || std::isnan(uv.x())) continue;
-        const double du = uv.x() - kp.u, dv = uv.y() - kp.v;
-        sum += std::sqrt(du * du + dv * dv);
-        ++n;
-      }
-      if (n < 3) continue;
-      const double mean = sum / n;
+      if (counts[q] < 3) continue;
+      const double mean = sums[q] / counts[q];
       if (mean < 2 * radius) near[q / 64] |= uint64_t{1} << (q % 64);
       if (mean < best) {
         second = best;

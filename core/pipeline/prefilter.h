@@ -71,15 +71,18 @@ struct PrefilterScratch {
   std::vector<uint64_t> near;     // per pose, (previous persons + 63) / 64 words: bit q set when
                                   // person q is within twice the radius
   std::vector<Eigen::Vector2d> projected;  // per view, person and core joint (NaN = not visible)
+  std::vector<double> distance_sum;        // per previous person: one pose's summed core-joint distance (px)
+  std::vector<int> distance_count;         // and the number of joints summed
   std::vector<int> bucket_begin;           // per bucket + 1 (previous person, or ambiguous pose and person): offsets
   std::vector<int> bucket;                 // pair indices grouped by matched person
   std::vector<int> bucket_fill;
   std::vector<Eigen::Vector3d> directions;  // per view: unit vector from the person to the camera
-  std::vector<std::pair<double, int>> budget;  // (-quality, pair index) of one person's pairs
-  std::vector<std::pair<double, int>> rest;    // the entries of `budget` not among any pose's best
-  std::vector<char> keep;                      // per pair
-  std::vector<std::array<int, kMaxBestPairsPerPose>> best;  // per pose: its best entries of `budget`, best
-                                                             // first (-1: none)
+  std::vector<int> entries;                 // one person's pairs (indices into the pairs), in order
+  std::vector<double> quality;              // per entry: its quality for the budget
+  std::vector<std::pair<double, int>> top;  // (quality, entry): the best entries beyond the poses' best
+  std::vector<char> keep;                   // per pair
+  std::vector<double> best_quality;  // per pose, best_pairs_per_pose slots: its best entries' qualities
+  std::vector<int> best_entry;       // and the entries (best first), while a person's budget is chosen
   std::vector<double> core_sqrt_scores;    // per pose and core joint: sqrt(score), when the core columns lack them
   std::vector<int> ambiguous_slot;         // per pose: its number among the ambiguous poses (-1: not ambiguous)
   std::vector<int> ambiguous_pose;         // per ambiguous pose number: the pose

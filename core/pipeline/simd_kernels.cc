@@ -454,16 +454,19 @@ HWY_INLINE void PixelDistanceLanes(D d, const double* uv, const PoseColumns& c, 
   *count += static_cast<int>(hn::CountTrue(d, valid));
 }
 
-double PixelDistanceSumImpl(const double* uv, const PoseColumns& c, int n, int* count) {
+void PixelDistanceSumsImpl(const double* uv, int persons, const PoseColumns& c, int n, double* sums, int* counts) {
   const hn::CappedTag<double, 4> d;  // rows of core joints: short
   const hn::CappedTag<double, 1> d1;
   const size_t N = hn::Lanes(d), joints = static_cast<size_t>(n);
-  double sum = 0;
-  *count = 0;
-  size_t i = 0;
-  for (; i + N <= joints; i += N) PixelDistanceLanes(d, uv, c, i, &sum, count);
-  for (; i < joints; ++i) PixelDistanceLanes(d1, uv, c, i, &sum, count);
-  return sum;
+  for (int q = 0; q < persons; ++q, uv += 2 * joints) {
+    double sum = 0;
+    int count = 0;
+    size_t i = 0;
+    for (; i + N <= joints; i += N) PixelDistanceLanes(d, uv, c, i, &sum, &count);
+    for (; i < joints; ++i) PixelDistanceLanes(d1, uv, c, i, &sum, &count);
+    sums[q] = sum;
+    counts[q] = count;
+  }
 }
 
 // ImplausibleLimbs for limbs [l, l + Lanes(d)): the lanes' bits.
@@ -806,7 +809,7 @@ HWY_EXPORT(TriangulatePairImpl);
 HWY_EXPORT(PairResidualsImpl);
 HWY_EXPORT(ScoreJointsImpl);
 HWY_EXPORT(MergeGroupImpl);
-HWY_EXPORT(PixelDistanceSumImpl);
+HWY_EXPORT(PixelDistanceSumsImpl);
 HWY_EXPORT(RankMedianImpl);
 HWY_EXPORT(ImplausibleLimbsImpl);
 HWY_EXPORT(UndistortPinholeImpl);
@@ -835,8 +838,8 @@ void ScoreJoints(const JointKernel& kernel, const ResidualViews& rv, const PoseC
   HWY_DYNAMIC_DISPATCH(ScoreJointsImpl)(kernel, rv, a, b, n, xyz, gap, residual, score, geometric);
 }
 
-double PixelDistanceSum(const double* uv, const PoseColumns& c, int n, int* count) {
-  return HWY_DYNAMIC_DISPATCH(PixelDistanceSumImpl)(uv, c, n, count);
+void PixelDistanceSums(const double* uv, int persons, const PoseColumns& c, int n, double* sums, int* counts) {
+  HWY_DYNAMIC_DISPATCH(PixelDistanceSumsImpl)(uv, persons, c, n, sums, counts);
 }
 
 size_t MergeScratchSize(int members) {

@@ -79,10 +79,11 @@ void ScoreJoints(const JointKernel& kernel, const ResidualViews& rv, const PoseC
                  int n, const double* xyz, const double* gap, const double* residual, double* score,
                  double* geometric);
 
-// Sum over joints i in [0, n) with c.score[i] > 0 and uv_i seen (x not NaN) of the pixel distance
-// |uv_i - (c.u[i], c.v[i])| (uv: u v interleaved, as Eigen::Vector2d), added in joint order;
-// *count = the number of such joints. The pre-filter's distance of a pose from a previous person.
-double PixelDistanceSum(const double* uv, const PoseColumns& c, int n, int* count);
+// For each of `persons` rows of n points (uv: u v interleaved, as Eigen::Vector2d, row after row):
+// sums[q] = the sum over joints i in [0, n) with c.score[i] > 0 and uv_i seen (x not NaN) of the
+// pixel distance |uv_i - (c.u[i], c.v[i])|, added in joint order; counts[q] = the number of such
+// joints. The pre-filter's distances of a pose from the previous persons, in one call.
+void PixelDistanceSums(const double* uv, int persons, const PoseColumns& c, int n, double* sums, int* counts);
 
 // steps::Merge of one group (merge.h) over joints [0, n), lanes across joints: the group's `members`
 // proposals start at xyz (x y z interleaved, n points per proposal) and score (n per proposal).

@@ -457,6 +457,44 @@ TEST(Prefilter, PairBudgetOnTwelveViewsKeepsThePairsOfTheRule) {
   }
 }
 
+// Ties in the budget go to the earlier pair. Cameras 0, 1 and 2 stand at one place, 3 and 4 at
+// another: the six pairs across the two places have exactly the same quality, the four within a
+// place quality 0 (their rays meet at angle 0). Each pose's best is then its earliest pair across,
+// and of the others the earliest come first, also when a later equal one would push it out.
+TEST(Prefilter, PairBudgetTiesGoToTheEarlierPair) {
+  const std::vector<Eigen::Matrix4Xd> persons = {test::StandingPerson(0, 0)};
+  StepFixture f(5, persons);
+  for (const auto& [copy, of] : {std::pair{1, 0}, {2, 0}, {4, 3}}) {
+    const std::string name = f.cameras[copy].name;
+    f.cameras[copy] = f.cameras[of];
+    f.cameras[copy].name = name;
+  }
+  for (int v = 0; v < 5; ++v) f.geometry[v] = MakeViewGeometry(f.cameras[v]);
+  f.views = test::ProjectPersons(f.cameras, f.persons);
+  f.Prepare();
+  ASSERT_EQ(f.prepared.num_poses(), 5);
+  std::vector<PosePair> all;
+  steps::MakePairs(f.prepared, PairListing::kAll, &all);
+  ASSERT_EQ(all.size(), 10u);  // pose = view
+  const auto kept_pairs = [&](int budget) {
+    std::vector<PosePair> pairs;
+    PrefilterScratch scratch;
+    PrefilterOptions options;
+    options.max_pairs_per_person = budget;
+    options.best_pairs_per_pose = 1;
+    RunPrefilter(f, PreviousOf(f, persons), options, all, &pairs, &scratch);
+    std::vector<std::pair<int, int>> kept;
+    for (const PosePair& pair : pairs) kept.emplace_back(pair.a, pair.b);
+    return kept;
+  };
+  using Kept = std::vector<std::pair<int, int>>;
+  // Poses 0 and 3 take (0,3), 1 (1,3), 2 (2,3), 4 (0,4).
+  EXPECT_EQ(kept_pairs(1), (Kept{{0, 3}, {0, 4}, {1, 3}, {2, 3}}));
+  // The best others: (1,4) and (2,4), then (0,1) of the pairs of quality 0.
+  EXPECT_EQ(kept_pairs(6), (Kept{{0, 3}, {0, 4}, {1, 3}, {1, 4}, {2, 3}, {2, 4}}));
+  EXPECT_EQ(kept_pairs(7), (Kept{{0, 1}, {0, 3}, {0, 4}, {1, 3}, {1, 4}, {2, 3}, {2, 4}}));
+}
+
 // Each pose's best pairs alone (budget 1), over many confidence patterns: whatever order a pose's
 // pairs come in (its best after its second best, ...), the kept pairs are the rule's.
 TEST(Prefilter, EveryPosesBestPairsWhateverTheOrderTheyComeIn) {
