@@ -142,7 +142,7 @@ struct PoseBest {
 // (the best of every pose stay even above it). Qualities are not negative; a NaN one is never
 // among the best. Both selections are exact without sorting the entries.
 template <int kPerPose>
-void KeepBestEntries(const std::vector<int>& entries, const std::vector<PosePair>& pairs, size_t budget,
+void KeepBestEntries(std::span<const int> entries, const std::vector<PosePair>& pairs, size_t budget,
                      PrefilterScratch* scratch) {
   const int num_entries = static_cast<int>(entries.size());
   const double* quality = scratch->quality.data();
@@ -220,11 +220,10 @@ int ApplyPairBudget(const PreparedViews& views, std::span<const ViewGeometry> ge
     const Eigen::Vector3d center = PersonCentre(previous, q);
     for (int v = 0; v < num_views; ++v) scratch->directions[v] = (geometry[v].center - center).normalized();
     // Quality: sin of the ray angle at the person x the 2D confidence both poses share.
-    scratch->entries.assign(scratch->bucket.begin() + first, scratch->bucket.begin() + last);
-    const size_t num_entries = scratch->entries.size();
-    scratch->quality.resize(num_entries);
-    for (size_t e = 0; e < num_entries; ++e) {
-      const PosePair& pair = (*pairs)[scratch->entries[e]];
+    const std::span<const int> entries(scratch->bucket.data() + first, static_cast<size_t>(last - first));
+    scratch->quality.resize(entries.size());
+    for (size_t e = 0; e < entries.size(); ++e) {
+      const PosePair& pair = (*pairs)[entries[e]];
       scratch->quality[e] =
           PairQuality(scratch->directions[views.view_of[pair.a]], scratch->directions[views.view_of[pair.b]],
                       core_sqrt_scores + static_cast<size_t>(pair.a) * num_core_joints,
@@ -233,10 +232,10 @@ int ApplyPairBudget(const PreparedViews& views, std::span<const ViewGeometry> ge
     // Every pose of the person keeps its best_pairs_per_pose best pairs (so the person's group
     // can claim all its poses), then the budget fills by quality.
     switch (best_per_pose) {  // unrolled per count
-      case 1: KeepBestEntries<1>(scratch->entries, *pairs, budget, scratch); break;
-      case 2: KeepBestEntries<2>(scratch->entries, *pairs, budget, scratch); break;
-      case 3: KeepBestEntries<3>(scratch->entries, *pairs, budget, scratch); break;
-      default: KeepBestEntries<4>(scratch->entries, *pairs, budget, scratch); break;
+      case 1: KeepBestEntries<1>(entries, *pairs, budget, scratch); break;
+      case 2: KeepBestEntries<2>(entries, *pairs, budget, scratch); break;
+      case 3: KeepBestEntries<3>(entries, *pairs, budget, scratch); break;
+      default: KeepBestEntries<4>(entries, *pairs, budget, scratch); break;
     }
   }
   return CompactKept(scratch->keep, pairs);

@@ -77,9 +77,8 @@ struct PrefilterScratch {
   std::vector<int> bucket;                 // pair indices grouped by matched person
   std::vector<int> bucket_fill;
   std::vector<Eigen::Vector3d> directions;  // per view: unit vector from the person to the camera
-  std::vector<int> entries;                 // one person's pairs (indices into the pairs), in order
-  std::vector<double> quality;              // per entry: its quality for the budget
-  std::vector<std::pair<double, int>> top;  // (quality, entry): the best entries beyond the poses' best
+  std::vector<double> quality;              // per pair of one person's bucket: its quality for the budget
+  std::vector<std::pair<double, int>> top;  // (quality, bucket entry): the best beyond the poses' best
   std::vector<char> keep;                   // per pair
   std::vector<double> best_quality;  // per pose, best_pairs_per_pose slots: its best entries' qualities
   std::vector<int> best_entry;       // and the entries (best first), while a person's budget is chosen
