@@ -209,8 +209,8 @@ Calibration ReadCalibration(const fs::path& path, const CalibrationReadOptions& 
 
 void WriteCalibration(const fs::path& path, const std::vector<Camera>& cameras, const CalibrationWriteOptions& options,
                       InputWarnings* warnings) {
-  const CalibrationFormat format =
-      options.format == CalibrationFormat::kAuto ? CalibrationFormatForOutput(path) : options.format;
+  const CalibrationWriteFormat format =
+      options.format == CalibrationWriteFormat::kAuto ? CalibrationFormatForOutput(path) : options.format;
   const std::string source = path.string();
   if (cameras.empty()) throw InputError(source + ": no cameras to write");
   for (std::size_t c = 0; c < cameras.size(); ++c) {
@@ -222,7 +222,7 @@ void WriteCalibration(const fs::path& path, const std::vector<Camera>& cameras, 
       throw InputError(source + ": cannot write " + error);
   }
   CheckUniqueNames(cameras, source + ": cannot write");
-  if (warnings != nullptr && format != CalibrationFormat::kJson) {
+  if (warnings != nullptr && format != CalibrationWriteFormat::kJson) {
     long skewed = 0;
     double largest = 0;
     for (const Camera& camera : cameras) {
@@ -236,31 +236,30 @@ void WriteCalibration(const fs::path& path, const std::vector<Camera>& cameras, 
                   "largest |skew| in px", largest, skewed);
   }
   switch (format) {
-    case CalibrationFormat::kJson:
+    case CalibrationWriteFormat::kJson:
       if (options.units != LengthUnit::kDefault && options.units != LengthUnit::kMetres) {
         throw ConfigError("units: our cameras JSON is always in metres");
       }
       WriteCamerasJson(path, cameras);
       return;
-    case CalibrationFormat::kOpenCV:
+    case CalibrationWriteFormat::kOpenCV:
       if (cameras.size() == 1) {
         WriteOpenCVCamera(path, cameras[0], options.units);
       } else {
         WriteEasyMocapCameras(path, path, cameras, options.units);
       }
       return;
-    case CalibrationFormat::kEasyMocap: {
+    case CalibrationWriteFormat::kEasyMocap: {
       const auto [intri, extri] = EasyMocapOutput(path);
       WriteEasyMocapCameras(intri, extri, cameras, options.units);
       return;
     }
-    case CalibrationFormat::kToml:
+    case CalibrationWriteFormat::kToml:
       WriteCameraGroupToml(path, cameras, options.units);
       return;
-    default:
+    case CalibrationWriteFormat::kAuto:  // resolved above
       break;
   }
-  throw ConfigError("format: " + FormatName(format) + " is read only; write json, opencv, easymocap or toml");
 }
 
 }  // namespace rpt

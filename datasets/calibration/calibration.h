@@ -103,10 +103,23 @@ void VisitFields(Visitor& v, Self& o) {
         .help = "image height for files without image sizes (0 = twice the principal point)", .unit = "px", .min = 0});
 }
 
+// The calibration formats rpt writes (the others are read only).
+enum class CalibrationWriteFormat { kAuto, kJson, kOpenCV, kEasyMocap, kToml };
+template <>
+struct EnumNames<CalibrationWriteFormat> {
+  static constexpr std::array<std::pair<CalibrationWriteFormat, std::string_view>, 5> values = {{
+      {CalibrationWriteFormat::kAuto, "auto"},
+      {CalibrationWriteFormat::kJson, "json"},
+      {CalibrationWriteFormat::kOpenCV, "opencv"},
+      {CalibrationWriteFormat::kEasyMocap, "easymocap"},
+      {CalibrationWriteFormat::kToml, "toml"},
+  }};
+};
+
 struct CalibrationWriteOptions {
   // auto: from the file name (*.json json, *.toml toml, intri.yml easymocap, *.yml / *.yaml /
   // *.xml opencv).
-  CalibrationFormat format = CalibrationFormat::kAuto;
+  CalibrationWriteFormat format = CalibrationWriteFormat::kAuto;
   // Unit of the translations written (opencv, easymocap, toml); default = metres. Our JSON is
   // always in metres.
   LengthUnit units = LengthUnit::kDefault;
@@ -152,7 +165,7 @@ bool IsRegularFile(const std::filesystem::path& path);
 
 // The format a file of this name is written in (CalibrationWriteOptions::format auto). Throws
 // ConfigError for a name whose format cannot be told.
-CalibrationFormat CalibrationFormatForOutput(const std::filesystem::path& path);
+CalibrationWriteFormat CalibrationFormatForOutput(const std::filesystem::path& path);
 
 // Reads the cameras of a calibration file (or folder, for COLMAP and EasyMocap), in rpt's
 // convention, with the description of what was read. Camera names are unique; rotations are exact

@@ -112,13 +112,13 @@ CalibrationFormat DetectCalibrationFormat(const fs::path& path) {
                    "*.yml, *.yaml, *.xml, cameras.txt / images.txt or a folder); set the format");
 }
 
-CalibrationFormat CalibrationFormatForOutput(const fs::path& path) {
+CalibrationWriteFormat CalibrationFormatForOutput(const fs::path& path) {
   const std::string extension = Lower(path.extension().string());
   const std::string stem = Lower(path.stem().string());
-  if (extension == ".json") return CalibrationFormat::kJson;
-  if (extension == ".toml") return CalibrationFormat::kToml;
-  if ((stem == "intri" || stem == "extri") && IsStorageExtension(extension)) return CalibrationFormat::kEasyMocap;
-  if (IsStorageExtension(extension)) return CalibrationFormat::kOpenCV;
+  if (extension == ".json") return CalibrationWriteFormat::kJson;
+  if (extension == ".toml") return CalibrationWriteFormat::kToml;
+  if ((stem == "intri" || stem == "extri") && IsStorageExtension(extension)) return CalibrationWriteFormat::kEasyMocap;
+  if (IsStorageExtension(extension)) return CalibrationWriteFormat::kOpenCV;
   throw ConfigError(path.string() +
                     ": cannot tell the format to write from the name (expected *.json, *.toml, "
                     "*.yml, *.yaml, *.xml or intri.yml); set the format");

@@ -96,6 +96,16 @@ TEST(CamerasCommand, BadFilesAndValuesExit2NamingThem) {
   EXPECT_NE(format.err.find("out.bin"), std::string::npos) << format.err;
   EXPECT_FALSE(fs::exists(dir / "out.bin"));
 
+  // A format rpt only reads is not offered for writing: the help and the error list the written ones.
+  const test::CommandResult read_only = test::RunRpt("cameras convert " + (dir / "cameras.json").string() + " " +
+                                                     (dir / "cameras.txt").string() + " --out-format colmap");
+  EXPECT_EQ(read_only.exit_code, 2);
+  EXPECT_NE(read_only.err.find("--out-format: 'colmap' is not one of auto, json, opencv, easymocap, toml"),
+            std::string::npos)
+      << read_only.err;
+  const test::CommandResult help = test::RunRpt("cameras convert --help");
+  EXPECT_NE(help.out.find("[auto | json | opencv | easymocap | toml, default auto]"), std::string::npos) << help.out;
+
   fs::path broken = dir / "broken.toml";
   std::ofstream(broken) << "[cam_1]\nname = \"a\"\nmatrix = [[1, 0], [0, 1]]\n";
   const test::CommandResult bad = test::RunRpt("cameras show " + broken.string());

@@ -113,10 +113,6 @@ TEST(CalibrationJson, OptionsThatDoNotApplyAreConfigErrors) {
               HasSubstr("always in metres"));
   EXPECT_THAT(test::ConfigErrorOf([&] { WriteCalibration(dir.path() / "out.txt", test::MakeRig(true)); }),
               HasSubstr("cannot tell the format to write"));
-  EXPECT_THAT(test::ConfigErrorOf([&] {
-                WriteCalibration(dir.path() / "out.json", test::MakeRig(true), {.format = CalibrationFormat::kColmap});
-              }),
-              HasSubstr("colmap is read only"));
 }
 
 TEST(CalibrationJson, CamerasAFormatCannotHoldAreRefusedNamingTheCamera) {

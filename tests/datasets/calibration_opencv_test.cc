@@ -259,7 +259,7 @@ TEST(CalibrationOpenCV, CamerasTheLayoutCannotHoldAreRefused) {
   EXPECT_THAT(test::InputErrorOf([&] { WriteCalibration(dir.path() / "h36m.yml", {h36m}); }),
               HasSubstr("the Human3.6M lens model has no OpenCV equivalent"));
   EXPECT_THAT(test::ConfigErrorOf(
-                  [&] { WriteCalibration(dir.path() / "x.yml", rig, {.format = CalibrationFormat::kEasyMocap}); }),
+                  [&] { WriteCalibration(dir.path() / "x.yml", rig, {.format = CalibrationWriteFormat::kEasyMocap}); }),
               HasSubstr("give intri.yml"));
 }
 
