@@ -12,6 +12,7 @@
 #include "core/nan.h"
 #include "core/printable_text.h"
 #include "core/text.h"
+#include "metrics/timing.h"
 
 namespace rpt::engine {
 // Not an anonymous namespace: DetectionChecker::State, a class with linkage, holds these types.
@@ -105,14 +106,8 @@ double MeanRelDistance(const ProjectedView& persons, const Poses2D& view, int mi
   return n > 0 ? sum / n : -1;
 }
 
-double MedianOrNaN(std::vector<double> values) {
-  if (values.empty()) return kNaN;
-  const size_t mid = values.size() / 2;
-  std::nth_element(values.begin(), values.begin() + mid, values.end());
-  const double upper = values[mid];
-  if (values.size() % 2 == 1) return upper;
-  return 0.5 * (upper + *std::max_element(values.begin(), values.begin() + mid));
-}
+// metrics::Median, but NaN (not measured) for no values.
+double MedianOrNaN(const std::vector<double>& values) { return values.empty() ? kNaN : metrics::Median(values); }
 
 // Up to `max` of the indices 0..n-1, evenly spaced (all when max <= 0 or n <= max).
 std::vector<int> EvenlySpaced(int n, int max) {
