@@ -110,6 +110,11 @@ void AddCountColumns(const metrics::MetricsResult& m, OrderedJson* j) {
   (*j)["gt_persons"] = m.num_gt_persons;
   (*j)["predictions"] = m.num_predictions;
   (*j)["matches"] = m.num_matches;
+  // What the metrics left out (docs/metrics.md): GT persons without a valid evaluated joint,
+  // GT-valid joints a matched prediction lacks, matched pairs without a pelvis for alignment.
+  (*j)["dropped_gt_persons"] = m.num_dropped_gt_persons;
+  (*j)["missing_pred_joints"] = m.num_missing_pred_joints;
+  (*j)["unaligned_matches"] = m.num_unaligned_matches;
   for (size_t i = 0; i < metrics::kApThresholdsMm.size(); ++i) {
     (*j)["ap" + std::to_string(static_cast<int>(metrics::kApThresholdsMm[i]))] = Number(m.ap[i]);
   }
