@@ -127,7 +127,7 @@ def table(first, rows):
         print(f"| {label} | " + " | ".join(cell(t) for t in tables) + " |")
 table("parts", [
     ("evaluated", lambda t: str(t["parts"]["evaluated"])),
-    ("wrong in the output (PCP)", lambda t: f"{t['parts']['wrong']} ({t['parts']['pcp']:.2f} %)"),
+    ("wrong in the output", lambda t: f"{t['parts']['wrong']} (PCP {t['parts']['pcp']:.2f} %)"),
     ("beyond the best pair (PCP with only those wrong)",
      lambda t: f"{t['parts']['beyond_best_pair']} ({t['parts']['pcp_best_pair']:.2f} %)"),
     ("wrong and beyond the best pair", lambda t: str(t["parts"]["wrong_beyond_best_pair"]))])
@@ -216,6 +216,10 @@ real_results() {
     echo "summary, per-joint errors, configuration and run information of one \`rpt eval\` command (its"
     echo "command line is in run.json). Paper rows: Bermuth et al., CVPR 2026, tables 'Transfer to ...'"
     echo "(their 2D network, their protocol; FPS on their machine). Our FPS: one thread of the machine in run.json."
+    echo "MVOR: by default rpt evaluates the 8 arm and torso joints MVOR labels in 3D (shoulders, elbows, wrists,"
+    echo "hips); \`--param evaluated=paper\` adds MVOR's head as the nose, as the RPT authors' evaluation code does."
+    echo "Shelf-4DA's FPS is the pipeline's: the reader's grouping of the raw OpenPose candidates into persons"
+    echo "(row \`paf_grouping (reader)\` of its steps.csv) is not in it; \`frame + grouping\` there has both."
     echo
     echo "## Real 2D detections"
     echo
