@@ -19,6 +19,7 @@
 #include "core/pipeline/triangulator.h"
 #include "core/pipeline/offline_smoother.h"
 #include "engine/checked_source.h"
+#include "engine/frame_time_check.h"
 #include "engine/frame_pipeline.h"
 #include "engine/input.h"
 #include "engine/joint_adapter.h"
@@ -39,33 +40,8 @@ struct SequenceRun {
   metrics::StepCountAccumulator counts;
   std::optional<LossAccumulator> losses;
   long gt_persons = 0, output_persons = 0, frames_with_gt = 0, frames_with_gt_without_prediction = 0;
-  // Frames whose time is not after the last known time before them (tracks end there), and the
-  // largest step back (s).
-  long times_not_after = 0;
-  double largest_step_back_s = 0;
-  // Steps from one known time to the next (forward), those longer than track.max_gap_s (tracks end
-  // at each), the longest, and the first kStepSample of them: a video whose times are in
-  // milliseconds.
-  long time_steps = 0, steps_beyond_gap = 0;
-  double largest_step_s = 0;
-  std::vector<double> step_sample;  // reserved once: no allocation per frame
+  std::optional<FrameTimeCheck> times;  // made with the sequence's track.max_gap_s
 };
-
-constexpr size_t kStepSample = 1000;
-
-// Whether a sequence's time steps look like a video's frame times in milliseconds read as
-// seconds: most steps beyond track.max_gap_s, regular (their median absolute deviation within a
-// tenth of the median) and 5-70 s (5-70 ms: 14 to 200 frames per second, what cameras record), or,
-// with a known frame rate, within a tenth of 1000 / fps. Images sampled seconds apart are not
-// (MVOR's, every 75 s, are as regular); every track ends there all the same, as it should.
-bool LooksLikeMilliseconds(const SequenceRun& run, double fps) {
-  if (run.time_steps < 3 || 2 * run.steps_beyond_gap <= run.time_steps) return false;
-  const double median = metrics::Median(run.step_sample);
-  if (fps > 0) return std::abs(median - 1000.0 / fps) <= 0.1 * 1000.0 / fps;
-  std::vector<double> deviations = run.step_sample;
-  for (double& step : deviations) step = std::abs(step - median);
-  return median >= 5 && median <= 70 && metrics::Median(std::move(deviations)) <= 0.1 * median;
-}
 
 // The run's joint adapter (RunOptions::adapter) on one sequence: each frame's persons copied and
 // moved before they are measured and written.
@@ -157,7 +133,7 @@ void RunSequence(int index, FrameSource& source, const RunOptions& options, cons
   run->result.cameras = static_cast<int>(header.cameras.size());
   run->result.output_joints = output_joints;
   run->timing = metrics::TimingAccumulator(options.warmup_frames);
-  run->step_sample.reserve(kStepSample);
+  run->times.emplace(tri_options.track.max_gap_s);
   if (eval != nullptr) run->metrics.emplace(*eval);
   if (options.loss_table) {
     if (eval == nullptr) throw ConfigError("the loss table needs the metrics (ground truth)");
@@ -193,21 +169,9 @@ void RunSequence(int index, FrameSource& source, const RunOptions& options, cons
   FrameStages stages;
   stages.read = [&](long frame) { return source.Pull(&slot(frame).frame); };
   stages.complete = [&](long frame) { source.Complete(frame, &slot(frame).frame); };
-  double last_time_s = kUnknownTime;
   stages.process = [&](long frame) -> long {
     FrameSlot& s = slot(frame);
-    if (const double t = s.frame.timestamp_s; std::isfinite(t)) {
-      if (std::isfinite(last_time_s) && !(t > last_time_s)) {
-        ++run->times_not_after;
-        run->largest_step_back_s = std::max(run->largest_step_back_s, last_time_s - t);
-      } else if (std::isfinite(last_time_s)) {
-        ++run->time_steps;
-        if (t - last_time_s > tri_options.track.max_gap_s) ++run->steps_beyond_gap;
-        run->largest_step_s = std::max(run->largest_step_s, t - last_time_s);
-        if (run->step_sample.size() < kStepSample) run->step_sample.push_back(t - last_time_s);
-      }
-      last_time_s = t;
-    }
+    run->times->Add(s.frame.timestamp_s);
     try {
       triangulator.Process(s.frame.views.empty() ? no_views : s.frame.views, s.frame.timestamp_s, &s.persons,
                            &s.stats, run->losses ? &s.trace : nullptr);
@@ -345,19 +309,9 @@ RunResult Run(Input& input, const RunOptions& options, FrameSink* sink) {
     });
   }
   result.warnings = input.Warnings();
+  // Times going back end tracks; a time in milliseconds where seconds are expected ends every track.
   for (int i = 0; i < count; ++i) {
-    result.warnings.Add(input.header(i).name,
-                        "frames whose time is not after the previous frame's (tracks end there, and start anew)",
-                        "largest step back in s", runs[i].largest_step_back_s, runs[i].times_not_after);
-    // A time in milliseconds where seconds are expected ends every track after one frame.
-    if (LooksLikeMilliseconds(runs[i], input.header(i).fps)) {
-      result.warnings.Add(input.header(i).name,
-                          "frames more than track.max_gap_s (" + FormatNumber(options.triangulator.track.max_gap_s) +
-                              " s) after the previous frame, at regular steps of milliseconds' size: are the times "
-                              "in milliseconds? They must be seconds; as they are, every track ends after a frame "
-                              "(no tracking, no smoothing)",
-                          "largest step in s", runs[i].largest_step_s, runs[i].steps_beyond_gap);
-    }
+    if (runs[i].times) runs[i].times->AddWarnings(input.header(i).name, input.header(i).fps, &result.warnings);
   }
   input.CheckStrict();
 

@@ -19,6 +19,8 @@
 #include "core/pipeline/triangulator.h"
 #include "core/printable_text.h"
 #include "datasets/readers/generic_common.h"
+#include "engine/frame_time_check.h"
+#include "engine/input.h"
 #include "engine/run.h"
 #include "metrics/step_counts.h"
 #include "python/arrays.h"
@@ -76,7 +78,7 @@ class PyTriangulator {
  public:
   PyTriangulator(std::vector<Camera> cameras, JointNames joints, const TriangulatorOptions& options, std::string name,
                  double fps)
-      : triangulator_(cameras, joints, options) {
+      : triangulator_(cameras, joints, options), process_times_(options.track.max_gap_s) {
     header_.name = std::move(name);
     header_.cameras = std::move(cameras);
     header_.detection_joints = std::move(joints);
@@ -97,6 +99,7 @@ class PyTriangulator {
       triangulator_.Process(frame_.views, frame_.timestamp_s, &persons_, &stats_);
     }
     ++calls_;
+    WarnAboutProcessTimes();
     return py::make_tuple(PersonsArray(persons_), TrackIdsArray(persons_));
   }
 
@@ -111,8 +114,12 @@ class PyTriangulator {
                        " and " + std::to_string(header_.detection_joints.size()));
     }
     Predictions out = Begin(sequence.name, sequence.fps);
-    py::gil_scoped_release release;
-    Run(sequence.frames, &out);
+    InputWarnings warnings;
+    {
+      py::gil_scoped_release release;
+      Run(sequence.frames, &out, &warnings);
+    }
+    WarnInput(engine::InputWarningLines(warnings));
     return out;
   }
 
@@ -143,8 +150,12 @@ class PyTriangulator {
     }
     if (converted.empty()) throw py::value_error("process_sequence: no frames");
     Predictions out = Begin(header_.name, header_.fps);
-    py::gil_scoped_release release;
-    Run(converted, &out);
+    InputWarnings warnings;
+    {
+      py::gil_scoped_release release;
+      Run(converted, &out, &warnings);
+    }
+    WarnInput(engine::InputWarningLines(warnings));
     return out;
   }
 
@@ -152,6 +163,8 @@ class PyTriangulator {
     std::unique_lock lock = Lock();
     triangulator_.Reset();
     calls_ = 0;
+    process_times_ = engine::FrameTimeCheck(triangulator_.options().track.max_gap_s);
+    warned_step_back_ = warned_milliseconds_ = false;
   }
 
   const Triangulator& triangulator() const { return triangulator_; }
@@ -179,9 +192,31 @@ class PyTriangulator {
     return out;
   }
 
+  // process(): the times seen so far, each of the two warnings given once (rpt.InputWarning; until
+  // reset()): a time not after the last one at once, milliseconds when the 10th, 100th and 1000th
+  // step are looked at (the check sorts its sample: not every frame).
+  void WarnAboutProcessTimes() {
+    process_times_.Add(frame_.timestamp_s);
+    InputWarnings warnings;
+    const std::string source = "Triangulator.process";
+    if (!warned_step_back_ && process_times_.times_not_after() > 0) {
+      warned_step_back_ = true;
+      process_times_.AddStepBackWarning(source, &warnings);
+    }
+    const long steps = process_times_.steps();
+    if (!warned_milliseconds_ && (steps == 10 || steps == 100 || steps == 1000) &&
+        process_times_.LooksLikeMilliseconds(header_.fps)) {
+      warned_milliseconds_ = true;
+      process_times_.AddMillisecondsWarning(source, header_.fps, &warnings);
+    }
+    if (!warnings.empty()) WarnInput(engine::InputWarningLines(warnings));
+  }
+
   // The loop of engine::Run's sequences (engine/run.cc, RunSequence): each frame triangulated in
-  // order, through the offline smoother when smooth.mode = offline.
-  void Run(std::span<const SequenceFrame> frames, Predictions* out) {
+  // order, through the offline smoother when smooth.mode = offline; the frame times' warnings
+  // (engine::FrameTimeCheck) into *warnings.
+  void Run(std::span<const SequenceFrame> frames, Predictions* out, InputWarnings* warnings) {
+    engine::FrameTimeCheck times(triangulator_.options().track.max_gap_s);
     const auto start = std::chrono::steady_clock::now();
     const TriangulatorOptions& options = triangulator_.options();
     const bool offline = options.track.enabled && options.smooth.mode == SmoothMode::kOffline;
@@ -194,6 +229,7 @@ class PyTriangulator {
     Poses3D smoothed;
     FrameStats smoothed_stats;
     for (const SequenceFrame& frame : frames) {
+      times.Add(frame.timestamp_s);
       try {
         triangulator_.Process(frame.views.empty() ? no_views : frame.views, frame.timestamp_s, &persons_, &stats_);
       } catch (const InputError& e) {
@@ -221,6 +257,7 @@ class PyTriangulator {
       }
     }
     out->wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    times.AddWarnings(out->sequence, out->fps, warnings);
   }
 
   Triangulator triangulator_;
@@ -230,6 +267,8 @@ class PyTriangulator {
   Poses3D persons_;
   FrameStats stats_;
   long calls_ = 0;
+  engine::FrameTimeCheck process_times_;  // process()'s frames (WarnAboutProcessTimes)
+  bool warned_step_back_ = false, warned_milliseconds_ = false;
 };
 
 std::vector<Camera> CamerasOf(py::handle cameras) {

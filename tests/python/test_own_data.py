@@ -76,3 +76,27 @@ def test_open_cameras_takes_the_reading_options_of_the_cli(files, tmp_path):
         rpt.datasets.open_cameras(str(files / "labels.json"), str(files / "detections.json"), rename_cameras={})
     with pytest.raises(rpt.ConfigError, match=r"cameras_units"):
         rpt.datasets.open_cameras(str(files / "labels.json"), str(files / "detections.json"), cameras_units="inch")
+
+
+def test_times_in_milliseconds_and_going_back_are_warned_as_runs_warn():
+    """process() and process_sequence() say what `rpt triangulate` says of frame times: milliseconds
+    where seconds are expected end every track after one frame; a time going back ends them."""
+    import warnings
+
+    scene = rpt.synthetic.scene(cameras=3, people=2, frames=30, noise="clean")
+    triangulator = rpt.Triangulator(scene.cameras, scene.joint_names)
+    with pytest.warns(rpt.InputWarning, match=r"are the times in milliseconds\?") as caught:
+        for k in range(30):
+            triangulator.process(scene[k].views, 40.0 * k)  # a 25 fps video's times in ms
+    assert sum("milliseconds" in str(w.message) for w in caught) == 1, "once, not per frame"
+
+    triangulator.reset()
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", rpt.InputWarning)  # seconds: nothing to say
+        for k in range(30):
+            triangulator.process(scene[k].views, 0.04 * k)
+    with pytest.warns(rpt.InputWarning, match=r"1 frames whose time is not after the previous frame's"):
+        triangulator.process(scene[0].views, 0.0)
+
+    with pytest.warns(rpt.InputWarning, match=r"are the times in milliseconds\?"):
+        triangulator.process_sequence([(scene[k].views, 40.0 * k) for k in range(30)])

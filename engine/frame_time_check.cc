@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: MIT
+#include "engine/frame_time_check.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/option_codec.h"
+#include "datasets/sequence.h"
+#include "metrics/timing.h"
+
+namespace rpt::engine {
+
+FrameTimeCheck::FrameTimeCheck(double max_gap_s) : max_gap_s_(max_gap_s), last_time_s_(kUnknownTime) {
+  step_sample_.reserve(kStepSample);
+}
+
+void FrameTimeCheck::Add(double t) {
+  if (!std::isfinite(t)) return;
+  if (std::isfinite(last_time_s_) && !(t > last_time_s_)) {
+    ++times_not_after_;
+    largest_step_back_s_ = std::max(largest_step_back_s_, last_time_s_ - t);
+  } else if (std::isfinite(last_time_s_)) {
+    ++steps_;
+    if (t - last_time_s_ > max_gap_s_) ++steps_beyond_gap_;
+    largest_step_s_ = std::max(largest_step_s_, t - last_time_s_);
+    if (step_sample_.size() < kStepSample) step_sample_.push_back(t - last_time_s_);
+  }
+  last_time_s_ = t;
+}
+
+bool FrameTimeCheck::LooksLikeMilliseconds(double fps) const {
+  if (steps_ < 3 || 2 * steps_beyond_gap_ <= steps_) return false;
+  const double median = metrics::Median(step_sample_);
+  if (fps > 0) return std::abs(median - 1000.0 / fps) <= 0.1 * 1000.0 / fps;
+  std::vector<double> deviations = step_sample_;
+  for (double& step : deviations) step = std::abs(step - median);
+  return median >= 5 && median <= 70 && metrics::Median(std::move(deviations)) <= 0.1 * median;
+}
+
+void FrameTimeCheck::AddWarnings(const std::string& source, double fps, InputWarnings* warnings) const {
+  AddStepBackWarning(source, warnings);
+  AddMillisecondsWarning(source, fps, warnings);
+}
+
+void FrameTimeCheck::AddStepBackWarning(const std::string& source, InputWarnings* warnings) const {
+  warnings->Add(source, "frames whose time is not after the previous frame's (tracks end there, and start anew)",
+                "largest step back in s", largest_step_back_s_, times_not_after_);
+}
+
+void FrameTimeCheck::AddMillisecondsWarning(const std::string& source, double fps, InputWarnings* warnings) const {
+  if (LooksLikeMilliseconds(fps)) {
+    warnings->Add(source,
+                  "frames more than track.max_gap_s (" + FormatNumber(max_gap_s_) +
+                      " s) after the previous frame, at regular steps of milliseconds' size: are the times in "
+                      "milliseconds? They must be seconds; as they are, every track ends after a frame (no tracking, "
+                      "no smoothing)",
+                  "largest step in s", largest_step_s_, steps_beyond_gap_);
+  }
+}
+
+}  // namespace rpt::engine

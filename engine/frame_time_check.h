@@ -1,0 +1,53 @@
+// SPDX-License-Identifier: MIT
+// The times of one sequence's frames as they pass the triangulator: steps back (tracks end
+// there and start anew) and steps that look like a video's frame times in milliseconds read as
+// seconds (every track then ends after one frame). engine::Run and Python's Triangulator warn
+// with them.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "datasets/input_warnings.h"
+
+namespace rpt::engine {
+
+class FrameTimeCheck {
+ public:
+  // Steps longer than `max_gap_s` (track.max_gap_s) end every track. Reserves the step sample
+  // once: Add allocates nothing.
+  explicit FrameTimeCheck(double max_gap_s);
+
+  // The next frame's time (s); unknown (not finite) times are skipped.
+  void Add(double timestamp_s);
+
+  // Whether the steps look like milliseconds read as seconds: most steps beyond max_gap_s, regular
+  // (their median absolute deviation within a tenth of the median) and 5-70 s (5-70 ms: 14 to 200
+  // frames per second, what cameras record), or, with a known frame rate (fps > 0), within a tenth
+  // of 1000 / fps. Images sampled seconds apart are not (MVOR's, every 75 s, are as regular);
+  // every track ends there all the same, as it should. Needs 3 steps at least.
+  bool LooksLikeMilliseconds(double fps) const;
+
+  // The sequence's warnings under `source`: frames whose time is not after the previous one, and
+  // milliseconds (LooksLikeMilliseconds); none when neither happened.
+  void AddWarnings(const std::string& source, double fps, InputWarnings* warnings) const;
+  // Each of the two alone.
+  void AddStepBackWarning(const std::string& source, InputWarnings* warnings) const;
+  void AddMillisecondsWarning(const std::string& source, double fps, InputWarnings* warnings) const;
+
+  long steps() const { return steps_; }                        // forward steps between known times
+  long times_not_after() const { return times_not_after_; }    // frames whose time is not after the last
+
+ private:
+  static constexpr size_t kStepSample = 1000;  // the first steps, for the medians
+
+  double max_gap_s_;
+  double last_time_s_;
+  long times_not_after_ = 0;
+  double largest_step_back_s_ = 0;
+  long steps_ = 0, steps_beyond_gap_ = 0;
+  double largest_step_s_ = 0;
+  std::vector<double> step_sample_;
+};
+
+}  // namespace rpt::engine
