@@ -89,6 +89,13 @@ std::unique_ptr<FrameSource> OpenSyntheticSequence(const SyntheticParams& params
 }
 
 std::vector<std::unique_ptr<FrameSource>> OpenSynthetic(const DatasetRequest& request) {
+  // The datasets read from disk take frame indices (frames=0-12); a generated scene takes a count.
+  if (const auto frames = request.params.find("frames");
+      frames != request.params.end() && frames->second.find_first_of("-,:") != std::string::npos) {
+    throw ConfigError("--param frames=" + frames->second + ": " + kName +
+                      ".frames is the number of frames to generate (frames=N: frames 0 to N-1); frame indices such as "
+                      "'0-12' select frames of the datasets read from disk");
+  }
   std::unique_ptr<FrameSource> scene = OpenSyntheticSequence(ParseDatasetParams<SyntheticParams>(kName, request));
   std::vector<std::unique_ptr<FrameSource>> sources;
   sources.push_back(request.ground_truth ? std::move(scene) : std::make_unique<DetectionsOnlySource>(std::move(scene)));

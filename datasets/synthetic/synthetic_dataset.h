@@ -54,7 +54,7 @@ template <class Visitor, OptionsOf<SyntheticParams> Self>
 void VisitFields(Visitor& v, Self& o) {
   v("cameras", o.cameras, OptionSpec{.help = "number of cameras", .min = 2, .max = 64});
   v("people", o.people, OptionSpec{.help = "number of people", .min = 1, .max = 30});
-  v("frames", o.frames, OptionSpec{.help = "number of frames", .min = 1, .max = 10000000});
+  v("frames", o.frames, OptionSpec{.help = "number of frames to generate (a count, not indices)", .min = 1, .max = 10000000});
   v("fps", o.fps, OptionSpec{.help = "frames per second", .unit = "Hz", .min = 1, .max = 1000});
   v("joints", o.joints, OptionSpec{.help = "body (17 COCO) or wholebody (133 COCO-WholeBody)"});
   v("layout", o.layout, OptionSpec{.help = "camera placement"});

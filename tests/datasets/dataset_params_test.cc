@@ -168,6 +168,17 @@ TEST(DatasetParams, EveryReaderListsParsableDefaults) {
   EXPECT_EQ(MaterializeAll(OpenSynthetic(request)).front().frames.size(), 2u);
 }
 
+// `--param frames` of a generated scene is a count, of a dataset on disk frame indices: a range
+// given to the synthetic reader is refused saying so, whatever its form.
+TEST(DatasetParams, SyntheticFramesAreACountNotIndices) {
+  for (const std::string frames : {"0-12", "0,5", "0-30:2"}) {
+    EXPECT_THAT(test::ErrorMessage<ConfigError>([&] { MaterializeAll(OpenSynthetic(Request({{"frames", frames}}))); }),
+                HasSubstr("--param frames=" + frames + ": synthetic.frames is the number of frames to generate "
+                          "(frames=N: frames 0 to N-1)"));
+  }
+  EXPECT_EQ(MaterializeAll(OpenSynthetic(Request({{"frames", "13"}}))).front().frames.size(), 13u);
+}
+
 // `rpt demo --seed` takes any uint64; so does the synthetic reader (it used to stop at 2^31 - 1).
 TEST(DatasetParams, SyntheticSeedTakesTheFullRange) {
   const DatasetRequest request = Request({{"frames", "1"}, {"seed", "3000000000"}});
