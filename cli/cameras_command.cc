@@ -28,7 +28,7 @@ void PrintCameras(const fs::path& path, const Calibration& calibration) {
   for (const Camera& c : calibration.cameras) {
     const std::string size = std::to_string(c.width) + "x" + std::to_string(c.height);
     const Eigen::Vector3d centre = c.Center();
-    std::printf("  %-16s %11s  %-9s %8.3f %8.3f %8.3f  %8.1f %8.1f  %8.1f %8.1f\n", PrintableText(c.name).c_str(),
+    std::printf("  %-16s %11s  %-9s %8.3f %8.3f %8.3f  %8.1f %8.1f  %8.1f %8.1f\n", PrintableText(c.name, LineBreaks::kEscape).c_str(),
                 size.c_str(), DistortionModelName(c.model), centre.x(), centre.y(), centre.z(), c.K(0, 0), c.K(1, 1),
                 c.K(0, 2), c.K(1, 2));
   }

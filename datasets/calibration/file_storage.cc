@@ -12,6 +12,7 @@
 #include <string>
 
 #include "core/errors.h"
+#include "core/printable_text.h"
 #include "datasets/io/child_process.h"
 
 namespace rpt::file_storage {
@@ -235,6 +236,20 @@ struct Writer::Impl {
   cv::FileStorage storage;
   std::string source;
 
+  // Throws InputError naming `key` when `value` holds a control character: OpenCV writes it as it
+  // is, and its reader cuts the text there ("cam\x01x" came back as "cam").
+  void CheckText(const std::string& key, const std::string& value) const {
+    const bool control = std::any_of(value.begin(), value.end(), [](char c) {
+      const auto byte = static_cast<unsigned char>(c);
+      return byte < 0x20 || byte == 0x7f;
+    });
+    if (control) {
+      throw InputError(source + ": cannot write " + key + " " + QuoteName(value) +
+                       ": OpenCV's files cannot hold control characters (its reader cuts the text there); rename it "
+                       "or write json or toml");
+    }
+  }
+
   // Runs `write`; a cv::Exception (a key OpenCV refuses) becomes an InputError naming the key.
   template <class Write>
   void Guard(const std::string& key, Write&& write) {
@@ -268,10 +283,12 @@ void Writer::Integer(const std::string& key, int value) {
 
 // write() rather than <<, which reads strings starting with '[', '{', ']' or '}' as structure marks.
 void Writer::String(const std::string& key, const std::string& value) {
+  impl_->CheckText(key, value);
   impl_->Guard(key, [&] { impl_->storage.write(key, value); });
 }
 
 void Writer::Strings(const std::string& key, const std::vector<std::string>& values) {
+  for (const std::string& value : values) impl_->CheckText(key, value);
   impl_->Guard(key, [&] {
     impl_->storage.startWriteStruct(key, cv::FileNode::SEQ);
     for (const std::string& value : values) impl_->storage.write("", value);

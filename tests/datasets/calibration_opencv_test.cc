@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "core/errors.h"
+#include "core/printable_text.h"
 #include "datasets/calibration/calibration.h"
 #include "datasets/calibration/file_storage.h"
 #include "tests/datasets/calibration_test_util.h"
@@ -261,6 +262,17 @@ TEST(CalibrationOpenCV, CamerasTheLayoutCannotHoldAreRefused) {
   EXPECT_THAT(test::ConfigErrorOf(
                   [&] { WriteCalibration(dir.path() / "x.yml", rig, {.format = CalibrationWriteFormat::kEasyMocap}); }),
               HasSubstr("give intri.yml"));
+  // A control character in a name: OpenCV's reader cut "cam\x01x" to "cam"; refused, nothing written.
+  for (const std::string name : {std::string("cam\x01x"), std::string("cam\tb")}) {
+    for (const std::string file : {"one.yml", "one.xml"}) {
+      Camera named = test::MakeRig(false)[0];
+      named.name = name;
+      EXPECT_THAT(test::InputErrorOf([&] { WriteCalibration(dir.path() / file, {named}); }),
+                  HasSubstr("cannot write camera_name " + QuoteName(name) +
+                            ": OpenCV's files cannot hold control characters"));
+      EXPECT_FALSE(std::filesystem::exists(dir.path() / file)) << file;
+    }
+  }
 }
 
 TEST(CalibrationOpenCV, MalformedFilesNameTheFileAndTheNode) {
