@@ -130,4 +130,15 @@ std::vector<ViewReprojection> ReprojectFrame(const std::vector<Camera>& cameras,
   return out;
 }
 
+ViewError MeanPredictionError(const ViewReprojection& view) {
+  double sum = 0;
+  long count = 0;
+  for (const ReprojectedPerson& p : view.predictions) {
+    for (size_t j = 0; j < p.error_px.size(); ++j) {
+      if (p.status[j] == JointReprojection::kMeasured) sum += p.error_px[j], ++count;
+    }
+  }
+  return {.mean_px = count > 0 ? sum / static_cast<double>(count) : kNaN, .joints = count};
+}
+
 }  // namespace rpt::engine

@@ -48,6 +48,14 @@ struct ViewReprojection {
   std::vector<int> gt_of_detection;            // per detection: the matched GT person or -1 (all -1 without GT)
 };
 
+// The mean reprojection error of a view: over every measured joint of its predictions (not the
+// mean of the persons' means). `rpt render`'s legend and report.html's caption both show it.
+struct ViewError {
+  double mean_px = 0;  // NaN when no joint was measured
+  long joints = 0;
+};
+ViewError MeanPredictionError(const ViewReprojection& view);
+
 struct ReprojectionOptions {
   double gate_relative = 0.5;         // a match needs a mean joint distance <= this x the projected box diagonal
   int min_common_joints = 2;          // joints present in both the projection and the detection

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The colours of tracks in everything rpt draws (rpt render's overlays, report.html's 3D view and
 // camera views): one list, so that a person has the same colour in both. Tableau 10 without its
-// grey (grey marks unmatched detections), as RGB.
+// grey (grey marks detections and the GT) and its red (red marks a missed GT person in the report:
+// a red track read as missed), as RGB.
 #pragma once
 
 #include <array>
@@ -13,10 +14,9 @@ struct Rgb {
   std::uint8_t r, g, b;
 };
 
-inline constexpr std::array<Rgb, 9> kTrackPalette = {{{31, 119, 180},
+inline constexpr std::array<Rgb, 8> kTrackPalette = {{{31, 119, 180},
                                                       {255, 127, 14},
                                                       {44, 160, 44},
-                                                      {214, 39, 40},
                                                       {148, 103, 189},
                                                       {140, 86, 75},
                                                       {227, 119, 194},

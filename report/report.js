@@ -132,6 +132,8 @@
   // Plots that need ground truth are left out of a run without it (rpt triangulate).
   const hasGt = data.evaluated !== false;
   if (!hasGt) for (const id of ['plot-joints', 'plot-recall']) el(id).closest('figure').hidden = true;
+  // Without ground truth nothing is invalid or missed, and no GT is drawn: those legend entries go.
+  if (!hasGt) document.querySelectorAll('.legend .gt-only').forEach((node) => node.remove());
   if (hasGt) plot('plot-joints', {
     type: 'bar',
     data: { labels: joints.map((j) => j.joint),
@@ -154,8 +156,11 @@
     type: 'scatter',
     data: { datasets: [{ label: 'this run', data: recallPoints, showLine: true, borderColor: '#2f6fb0', pointRadius: 0 }]
         .concat(data.paper ? [{ label: 'paper', data: paperPoints, pointRadius: 5, pointStyle: 'rectRot', backgroundColor: '#c0392b' }] : []) },
-    options: { scales: { x: { min: 0, max: 500, title: { display: true, text: 'threshold (mm)' } },
-                         y: { min: 0, max: 100, title: { display: true, text: 'recall (%)' } } } },
+    // A margin past 500 mm and 100 % so that the paper's points are not cut by the plot's edge.
+    options: { scales: { x: { min: 0, max: 520, title: { display: true, text: 'threshold (mm)' },
+                              afterBuildTicks: (axis) => { axis.ticks = [0, 100, 200, 300, 400, 500].map((value) => ({ value })); } },
+                         y: { min: 0, max: 104, title: { display: true, text: 'recall (%)' },
+                              afterBuildTicks: (axis) => { axis.ticks = [0, 20, 40, 60, 80, 100].map((value) => ({ value })); } } } },
   });
   const steps = data.steps || [];
   plot('plot-step-times', {
@@ -189,6 +194,10 @@
       const points = seq.mpjpe_mm.map((v, f) => ({ x: f, y: v }));
       const invalid = seq.num_invalid.map((v, f) => ({ x: f, y: v }));
       const missed = seq.num_gt.map((v, f) => ({ x: f, y: v - seq.num_matched[f] }));
+      // Counts of persons: whole-number ticks, and room above the highest so that its line does not
+      // lie on the plot's border.
+      const counts = data.evaluated === false ? seq.num_predictions : invalid.map((p) => p.y).concat(missed.map((p) => p.y));
+      const countMax = Math.max(1, ...counts) + 1;
       if (framesChart) framesChart.destroy();
       framesChart = new Chart(el('plot-frames'), {
         type: 'scatter',
@@ -203,8 +212,10 @@
           { label: 'selected frame', data: [], pointRadius: 6, pointStyle: 'triangle', backgroundColor: '#000', yAxisID: data.evaluated === false ? 'count' : 'y' },
         ]) },
         options: {
-          scales: { x: { title: { display: true, text: 'frame' } }, y: { display: data.evaluated !== false, beginAtZero: true, title: { display: true, text: 'mm' } },
-                    count: { position: 'right', beginAtZero: true, grid: { drawOnChartArea: false }, title: { display: true, text: 'persons' } } },
+          scales: { x: { title: { display: true, text: 'frame' }, ticks: { precision: 0 } },
+                    y: { display: data.evaluated !== false, beginAtZero: true, title: { display: true, text: 'mm' } },
+                    count: { position: 'right', beginAtZero: true, max: countMax, ticks: { precision: 0 },
+                             grid: { drawOnChartArea: data.evaluated === false }, title: { display: true, text: 'persons' } } },
           onClick: (event) => {
             const hits = framesChart.getElementsAtEventForMode(event, 'nearest', { axis: 'x', intersect: false }, true);
             if (hits.length) openFrame(s, hits[0].index);
@@ -416,12 +427,10 @@
       const v = sc.views[c] || { detections: [], predictions: [], gt: [] };
       for (const gt of v.gt) drawPerson2D(ctx, gt, seq.gt_edges, GT_COLOUR, scale, 1, true);
       for (const det of v.detections) drawPerson2D(ctx, det, seq.detection_edges, DETECTION_COLOUR, scale, 1.5, false);
-      const errors = [];
       v.predictions.forEach((p, i) => {
         const person = sc.predictions[i];
         drawPerson2D(ctx, p.uv, data.prediction_edges, trackColour(p.track_id), scale, 2, person && person.invalid);
         if (p.mean_error_px !== null) {
-          errors.push(p.mean_error_px);
           const anchor = p.uv.find((q) => q);
           if (anchor) {
             ctx.font = '12px system-ui, sans-serif'; ctx.fillStyle = '#fff';
@@ -429,10 +438,11 @@
           }
         }
       });
-      const mean = errors.length ? errors.reduce((a, b) => a + b, 0) / errors.length : null;
+      // The mean over the view's measured joints, as rpt render's legend (not a mean of the persons' means).
       caption.textContent = `${cam.name} (${cam.width}x${cam.height}): ${v.detections.length} detection(s), ` +
           `${v.predictions.filter((p) => p.detection >= 0).length} of ${v.predictions.length} prediction(s) matched, ` +
-          `mean reprojection error ${fmt(mean, 1)} px`;
+          (v.error_joints > 0 ? `reprojection error ${fmt(v.mean_error_px, 1)} px (mean, ${v.error_joints} joints)`
+                              : 'no joint matched a detection');
       drawn += 1;
     });
     return drawn;

@@ -137,16 +137,11 @@ void DrawLabel(const ReprojectedPerson& person, const cv::Scalar& colour, const 
 }
 
 void DrawLegend(const OverlayInput& input, const Style& style, cv::Mat* canvas) {
-  double sum = 0;
-  long count = 0;
-  for (const ReprojectedPerson& p : input.reprojection->predictions) {
-    for (size_t j = 0; j < p.error_px.size(); ++j) {
-      if (p.status[j] == JointReprojection::kMeasured) sum += p.error_px[j], ++count;
-    }
-  }
+  const ViewError view_error = MeanPredictionError(*input.reprojection);
   char error[96];
-  if (count > 0) {
-    std::snprintf(error, sizeof(error), "reprojection error %.1f px (mean, %ld joints)", sum / count, count);
+  if (view_error.joints > 0) {
+    std::snprintf(error, sizeof(error), "reprojection error %.1f px (mean, %ld joints)", view_error.mean_px,
+                  view_error.joints);
   } else {
     std::snprintf(error, sizeof(error), "no joint matched a detection");
   }

@@ -166,7 +166,13 @@ OrderedJson SceneJson(const Sequence& sequence, int s, int f, const Poses3D& pre
     for (const ReprojectedPerson& person : views[c].predictions) projected.push_back(Reprojected(person));
     OrderedJson projected_gt = OrderedJson::array();
     for (const ReprojectedPerson& person : views[c].gt) projected_gt.push_back(Reprojected(person)["uv"]);
-    views_json.push_back({{"detections", detections}, {"predictions", projected}, {"gt", projected_gt}});
+    // The view's mean over its measured joints, as rpt render's legend has it.
+    const ViewError view_error = MeanPredictionError(views[c]);
+    views_json.push_back({{"detections", detections},
+                          {"predictions", projected},
+                          {"gt", projected_gt},
+                          {"mean_error_px", Tenths(view_error.mean_px)},
+                          {"error_joints", view_error.joints}});
   }
   return {{"sequence", s}, {"frame", f},       {"id", frame.id}, {"gt", gt},
           {"predictions", persons}, {"views", views_json}};

@@ -163,5 +163,28 @@ TEST(Reprojection, OneToOneAndCamerasWithoutDetections) {
   }
 }
 
+// A view's mean error is over its measured joints, not over its persons: one person with one
+// joint 10 px off and one with three joints 2 px off give (10 + 3 x 2) / 4 = 4 px (the mean of
+// the persons' means would be 6); joints not measured do not count.
+TEST(Reprojection, TheViewsMeanIsOverItsMeasuredJoints) {
+  ViewReprojection view;
+  const auto person = [](std::vector<double> errors, std::vector<JointReprojection> status) {
+    ReprojectedPerson p;
+    p.error_px = std::move(errors);
+    p.status = std::move(status);
+    return p;
+  };
+  constexpr auto kMeasured = JointReprojection::kMeasured;
+  const double nan = std::nan("");
+  view.predictions.push_back(person({10, nan}, {kMeasured, JointReprojection::kNotDetected}));
+  view.predictions.push_back(person({2, 2, 2}, {kMeasured, kMeasured, kMeasured}));
+  const ViewError error = MeanPredictionError(view);
+  EXPECT_EQ(error.joints, 4);
+  EXPECT_DOUBLE_EQ(error.mean_px, 4.0);
+  const ViewError none = MeanPredictionError(ViewReprojection{});
+  EXPECT_EQ(none.joints, 0);
+  EXPECT_TRUE(std::isnan(none.mean_px));
+}
+
 }  // namespace
 }  // namespace rpt::engine

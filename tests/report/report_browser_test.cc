@@ -69,6 +69,19 @@ void CheckInBrowser(const fs::path& dir, const std::string& name) {
   EXPECT_EQ(BodyAttribute(dom, "data-rpt-gt-skeletons"), std::to_string(gt_evaluated));
   EXPECT_EQ(BodyAttribute(dom, "data-rpt-camera-views"), std::to_string(cameras));
   EXPECT_EQ(BodyAttribute(dom, "data-rpt-frame"), first["id"].get<std::string>());
+  // Each camera's caption gives the view's mean over its measured joints, the number rpt render's
+  // legend shows (the page data's "mean_error_px" and "error_joints" of the view).
+  for (size_t c = 0; c < cameras; ++c) {
+    const Json& view = first["views"][c];
+    char expected[96];
+    if (view["error_joints"].get<long>() > 0) {
+      std::snprintf(expected, sizeof expected, "reprojection error %.1f px (mean, %ld joints)",
+                    view["mean_error_px"].get<double>(), view["error_joints"].get<long>());
+    } else {
+      std::snprintf(expected, sizeof expected, "no joint matched a detection");
+    }
+    EXPECT_NE(dom.find(expected), std::string::npos) << "camera " << c << ": " << expected;
+  }
   const std::string nonblank = BodyAttribute(dom, "data-rpt-nonblank-pixels");
   ASSERT_FALSE(nonblank.empty()) << "the 3D viewer did not draw";
   EXPECT_GT(std::stol(nonblank), 2000) << "the 3D canvas is blank";
@@ -267,6 +280,10 @@ TEST(ReportBrowser, TriangulateRunWithoutGroundTruth) {
       << "console errors: " << dom.substr(errors_at, dom.find("</pre>", errors_at) - errors_at);
   EXPECT_EQ(BodyAttribute(dom, "data-rpt-ready"), "1");
   EXPECT_NE(BodyAttribute(dom, "data-rpt-skeletons"), "0");
+  // No GT: the legends name neither GT nor invalid predictions (the page itself has the words).
+  EXPECT_EQ(dom.find("GT, missed"), std::string::npos);
+  EXPECT_EQ(dom.find("reprojected GT"), std::string::npos);
+  EXPECT_NE(dom.find("2D detection"), std::string::npos);
   fs::remove_all(dir);
 }
 
