@@ -139,6 +139,14 @@ RecordedRun ReadRecordedRun(const std::filesystem::path& dir) {
   const auto evaluated = run.summary.find("evaluated");
   const bool without_gt = evaluated != run.summary.end() && evaluated->is_boolean() && !evaluated->get<bool>();
   run.per_joint = without_gt ? OrderedJson::array() : ReadPerJoint(dir / "per_joint.csv");
+  if (!std::filesystem::exists(dir / "predictions.json")) {
+    const std::vector<std::string> words = RecordedWords(run);
+    if (std::find(words.begin(), words.end(), "--no-predictions") != words.end()) {
+      throw InputError((dir / "predictions.json").string() +
+                       ": not written: the run was made with --no-predictions (run.json), so there are no 3D persons "
+                       "to draw; run its command again without that option");
+    }
+  }
   run.predictions = ReadPredictions(dir / "predictions.json");
   // The files of one run share its run_id: a predictions.json copied in from another run would give
   // a page whose plots and 3D frames contradict its summary.

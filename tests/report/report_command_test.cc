@@ -210,6 +210,15 @@ TEST(ReportCommand, BadInputExitsTwoNamingTheFile) {
   EXPECT_NE(r.err.find(dir.string() + ": summary.json is of run '"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find(", predictions.json of run '"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("the folder mixes the files of two runs"), std::string::npos) << r.err;
+
+  // A run written without predictions: the message says why there is no predictions.json.
+  fs::remove_all(other);
+  const CommandResult bare = RunRpt("eval --dataset synthetic --param frames=3 --no-predictions --quiet --out " + other.string());
+  ASSERT_EQ(bare.exit_code, 0) << bare.err;
+  r = RunRpt("report " + other.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("predictions.json: not written: the run was made with --no-predictions"), std::string::npos)
+      << r.err;
   fs::remove_all(other);
 }
 
