@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <sstream>
 #include <vector>
 
@@ -70,6 +71,15 @@ double Value(const OrderedJson& row, const std::string& key) {
   return summary[key].get<double>();
 }
 
+// `value` as shown (rounded to its decimals): deltas are of the shown values, so that two values
+// shown differently never get a delta of 0 (38.447 and 38.459 show as 38.4 and 38.5: -0.1).
+double Shown(double value, const std::string& key) { return std::stod(FixedDecimals(value, DecimalsOf(key))); }
+
+// Whether a row's numbers can be compared with the baseline's (same metrics options).
+bool Comparable(const OrderedJson& row, const OrderedJson& baseline) {
+  return !row.value("measured_differently", false) && !baseline.value("measured_differently", false);
+}
+
 // "better", "worse" or "same" for `delta` at the display precision.
 std::string Verdict(double delta, const Headline& metric) {
   if (!(std::fabs(delta) >= 0.5 * std::pow(10.0, -DecimalsOf(metric.key)))) return "same";
@@ -82,17 +92,27 @@ std::string DeltaText(double delta, const std::string& key) {
   return (delta > 0 ? "+" : "\u2212") + text;                       // minus sign
 }
 
-// One horizontal bar per row, scaled from 0 to the largest value; a dashed line at the baseline.
+// One horizontal bar per row and a dashed line at the baseline. The bars start at 0, or, when the
+// values lie close together (their spread under a third of the largest), just below the smallest
+// so that their differences show; the chart then says where its axis starts. A row measured with
+// other metrics options is grey (not better or worse).
 std::string BarChart(const OrderedJson& rows, const Headline& metric, size_t baseline) {
   constexpr int kLabelWidth = 330, kBarWidth = 260, kRowHeight = 18, kTextWidth = 70;
-  double max_value = 0;
+  double max_value = 0, min_value = std::numeric_limits<double>::infinity();
   for (const OrderedJson& row : rows) {
     const double v = Value(row, metric.key);
-    if (std::isfinite(v)) max_value = std::max(max_value, v);
+    if (!std::isfinite(v)) continue;
+    max_value = std::max(max_value, v);
+    min_value = std::min(min_value, v);
   }
   if (!(max_value > 0)) max_value = 1;
+  double start = 0;
+  if (min_value > 0 && max_value > min_value && max_value - min_value < max_value / 3) {
+    start = std::max(0.0, min_value - 0.5 * (max_value - min_value));
+  }
+  const auto length = [&](double v) { return std::max(0.0, v - start) / (max_value - start) * kBarWidth; };
   const int width = kLabelWidth + kBarWidth + kTextWidth;
-  const int height = static_cast<int>(rows.size()) * kRowHeight + 6;
+  const int height = static_cast<int>(rows.size()) * kRowHeight + 6 + (start > 0 ? kRowHeight : 0);
   std::ostringstream svg;
   svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"chart\" data-metric=\"" << metric.key << "\" width=\""
       << width << "\" height=\"" << height << "\" viewBox=\"0 0 " << width << " " << height << "\">\n";
@@ -103,13 +123,15 @@ std::string BarChart(const OrderedJson& rows, const Headline& metric, size_t bas
     const std::string shown = Shortened(name, 48);
     const int y = static_cast<int>(i) * kRowHeight + 3;
     const double v = Value(row, metric.key);
-    const std::string verdict = i == baseline ? "baseline" : Verdict(v - base_value, metric);
+    const std::string verdict = i == baseline                          ? "baseline"
+                                : !Comparable(row, rows[baseline]) ? "incomparable"
+                                                                   : Verdict(Shown(v, metric.key) - Shown(base_value, metric.key), metric);
     svg << "<g class=\"bar " << verdict << "\"><title>" << HtmlText(name) << ": "
         << (std::isfinite(v) ? FixedDecimals(v, DecimalsOf(metric.key)) : "-") << "</title>";
     svg << "<text x=\"" << kLabelWidth - 6 << "\" y=\"" << y + 12 << "\" text-anchor=\"end\">" << HtmlText(shown)
         << "</text>";
     if (std::isfinite(v)) {
-      const double w = std::max(0.0, v) / max_value * kBarWidth;
+      const double w = length(v);
       svg << "<rect x=\"" << kLabelWidth << "\" y=\"" << y + 2 << "\" width=\"" << FixedDecimals(w, 1) << "\" height=\""
           << kRowHeight - 5 << "\"/>";
       svg << "<text x=\"" << FixedDecimals(kLabelWidth + w + 4, 1) << "\" y=\"" << y + 12 << "\">"
@@ -119,9 +141,15 @@ std::string BarChart(const OrderedJson& rows, const Headline& metric, size_t bas
     }
     svg << "</g>\n";
   }
+  const int bars_height = static_cast<int>(rows.size()) * kRowHeight + 6;
   if (std::isfinite(base_value)) {
-    const std::string x = FixedDecimals(kLabelWidth + std::max(0.0, base_value) / max_value * kBarWidth, 1);
-    svg << "<line class=\"baseline-mark\" x1=\"" << x << "\" y1=\"0\" x2=\"" << x << "\" y2=\"" << height << "\"/>\n";
+    const std::string x = FixedDecimals(kLabelWidth + length(base_value), 1);
+    svg << "<line class=\"baseline-mark\" x1=\"" << x << "\" y1=\"0\" x2=\"" << x << "\" y2=\"" << bars_height
+        << "\"/>\n";
+  }
+  if (start > 0) {
+    svg << "<text class=\"axis-start\" x=\"" << kLabelWidth << "\" y=\"" << bars_height + 12 << "\">bars start at "
+        << FixedDecimals(start, DecimalsOf(metric.key)) << ", not 0</text>\n";
   }
   svg << "</svg>";
   return svg.str();
@@ -170,14 +198,16 @@ std::string SweepHtml(const OrderedJson& sweep) {
           "figure { margin: 0; } figcaption { font-weight: bold; margin-bottom: 4px; }\n"
           "svg.chart text { font-size: 11px; fill: #222; }\n"
           "g.bar rect { fill: #9e9e9e; } g.better rect { fill: #4caf50; } g.worse rect { fill: #e57373; }\n"
-          "g.baseline rect { fill: #1f77b4; }\n"
+          "g.baseline rect { fill: #1f77b4; } g.incomparable rect { fill: #d0d0d0; }\n"
+          "svg.chart text.axis-start { fill: #777; font-style: italic; }\n"
           "line.baseline-mark { stroke: #1f77b4; stroke-dasharray: 4 3; }\n"
           "</style>\n</head>\n<body>\n<h1>rpt sweep</h1>\n";
   html << "<p>" << rows.size() << " configuration(s). Deltas against <b>"
        << HtmlText(rows.empty() ? "" : rows[baseline.row].at("name").get<std::string>()) << "</b>";
   html << (baseline.is_default ? " (the default configuration: no override changes an option)"
                                : " (the first row: no configuration equals the default)")
-       << "; green is better, red is worse. Grey option values are inherited from the base configuration.</p>\n";
+       << "; green is better, red is worse (light grey bars: measured with other metrics options, not compared). Grey "
+          "option values are inherited from the base configuration.</p>\n";
   if (sweep.contains("run") && sweep["run"].contains("command")) {
     html << "<p>Command: <code>" << HtmlText(JsonValueText(sweep["run"]["command"])) << "</code></p>\n";
   }
@@ -217,13 +247,11 @@ std::string SweepHtml(const OrderedJson& sweep) {
       }
       html << FixedDecimals(v, DecimalsOf(h.key));
       const double base_value = Value(rows[baseline.row], h.key);
-      const bool comparable =
-          !row.value("measured_differently", false) && !rows[baseline.row].value("measured_differently", false);
-      if (i != baseline.row && !comparable) {
+      if (i != baseline.row && !Comparable(row, rows[baseline.row])) {
         html << " <span class=\"delta incomparable\" title=\"measured with other metrics options\">n/a</span>";
       } else if (i != baseline.row && std::isfinite(base_value)) {
-        const double delta = v - base_value;
-        html << " <span class=\"delta " << Verdict(delta, h) << "\" data-delta=\"" << FixedDecimals(delta, 4) << "\">"
+        const double delta = Shown(v, h.key) - Shown(base_value, h.key);
+        html << " <span class=\"delta " << Verdict(delta, h) << "\" data-delta=\"" << FixedDecimals(v - base_value, 4) << "\">"
              << DeltaText(delta, h.key) << "</span>";
       }
       html << "</td>";

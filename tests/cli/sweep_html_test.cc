@@ -166,6 +166,45 @@ TEST(SweepHtml, ARowMeasuredDifferentlyShowsNoDifference) {
   EXPECT_EQ(arms.text, "n/a");
   EXPECT_EQ(MetricCell(*rows[1], "mpjpe_mm")->text, "44.0 ");  // the value, then the "n/a" span
   EXPECT_EQ(Attribute(MetricCell(*rows[2], "mpjpe_mm")->children.at(0), "data-delta"), "1.0000");
+  // Its bar is neither better nor worse either (it was green: 44 < 50).
+  std::vector<std::string> bar_classes;
+  for (const XmlElement* g : FindAll(*FindAll(html, "svg").at(0), "g")) bar_classes.push_back(Attribute(*g, "class"));
+  EXPECT_EQ(bar_classes, (std::vector<std::string>{"bar baseline", "bar incomparable", "bar worse"}));
+}
+
+// Bars of values close together start below the smallest, so that their differences show, and the
+// chart says so; the deltas are those of the shown values (38.447 vs 38.459 shows 38.4 vs 38.5:
+// -0.1, better, not a grey ±0.0).
+TEST(SweepHtml, CloseValuesGetAZoomedAxisAndDeltasOfTheShownValues) {
+  nlohmann::ordered_json sweep;
+  sweep["rows"] = {Row("default", nlohmann::ordered_json::object(), true, {{"mpjpe_mm", 38.459}, {"pcp", 10.0}}),
+                   Row("top 5", {{"merge.top_k", "5"}}, false, {{"mpjpe_mm", 38.447}, {"pcp", 90.0}}),
+                   Row("top 0", {{"merge.top_k", "0"}}, false, {{"mpjpe_mm", 41.0}, {"pcp", 50.0}})};
+  const XmlElement html = test::XmlReader::Parse(engine::SweepHtml(sweep), test::Markup::kDocument);
+  const std::vector<const XmlElement*> rows = TableRows(html);
+  const XmlElement& close = MetricCell(*rows[1], "mpjpe_mm")->children.at(0);
+  EXPECT_EQ(close.text, "\u22120.1");
+  EXPECT_EQ(Attribute(close, "class"), "delta better");
+  // MPJPE 38.447-41.0: the spread 2.553 is under a third of 41, so the bars start at
+  // 38.447 - 2.553 / 2 = 37.17 (shown 37.2); PCP 10-90 starts at 0.
+  std::string mpjpe_note, pcp_note;
+  for (const XmlElement* chart : FindAll(html, "svg")) {
+    std::string note;
+    for (const XmlElement* text : FindAll(*chart, "text")) {
+      if (Attribute(*text, "class") == "axis-start") note = text->text;
+    }
+    (Attribute(*chart, "data-metric") == "pcp" ? pcp_note : mpjpe_note) = note;
+  }
+  EXPECT_EQ(mpjpe_note, "bars start at 37.2, not 0");
+  EXPECT_EQ(pcp_note, "");
+  // The top-0 bar (41.0) is the longest, 260 px; top 5's (38.447) (38.447 - 37.1705) / (41 - 37.1705) of it.
+  for (const XmlElement* chart : FindAll(html, "svg")) {
+    if (Attribute(*chart, "data-metric") != "mpjpe_mm") continue;
+    const std::vector<const XmlElement*> rects = FindAll(*chart, "rect");
+    ASSERT_EQ(rects.size(), 3u);
+    EXPECT_EQ(Attribute(*rects[2], "width"), "260.0");
+    EXPECT_EQ(Attribute(*rects[1], "width"), "86.7");
+  }
 }
 
 nlohmann::json ReadJson(const fs::path& path) {
