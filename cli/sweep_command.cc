@@ -32,6 +32,7 @@
 #include "cli/slurm_submit.h"
 #include "engine/outputs/results_writer.h"
 #include "engine/outputs/run_info.h"
+#include "engine/diagnostics.h"
 #include "engine/run.h"
 #include "engine/outputs/sweep_html.h"
 #include "engine/sweep_configurations.h"
@@ -225,13 +226,21 @@ void RunSweep(const SweepArgs& args) {
       options.triangulator = configs[c].triangulator;
       options.eval = configs[c].metrics;
       options.threads = 1;
+      // The result warnings `rpt eval` would give (no predictions, low recall, ...) go into the
+      // row's summary as in summary.json, and are printed after the table.
+      const auto summarise = [&](const engine::RunResult& run) {
+        summaries[c] = engine::SummaryJson(run);
+        OrderedJson listed = OrderedJson::array();
+        for (const engine::CheckWarning& w : engine::ResultWarnings(run)) listed.push_back({{"code", w.code}, {"message", w.message}});
+        summaries[c]["warnings"] = listed;
+      };
       if (per_config_input) {
         engine::Input input = engine::OpenInput(inputs[c]);
         const engine::RunResult run = engine::Run(input, options);
         config_warnings[c] = run.warnings;
-        summaries[c] = engine::SummaryJson(run);
+        summarise(run);
       } else {
-        summaries[c] = engine::SummaryJson(engine::Run(shared_input, options));
+        summarise(engine::Run(shared_input, options));
       }
     } catch (...) {
       // A configuration that fails when it runs (e.g. core joints the input does not have) is named
@@ -302,6 +311,13 @@ void RunSweep(const SweepArgs& args) {
   }());
   std::printf("%d of %zu configurations; tables in %s/%s.{json,csv,md,html}\n", count, all.size(),
               PrintableText(args.out, LineBreaks::kEscape).c_str(), stem.c_str());
+  std::fflush(stdout);
+  for (const OrderedJson& row : rows) {
+    for (const OrderedJson& w : row["summary"]["warnings"]) {
+      std::fprintf(stderr, "warning: configuration %s: %s\n", QuoteName(row["name"].get<std::string>()).c_str(),
+                   PrintableText(w["message"].get<std::string>()).c_str());
+    }
+  }
 }
 
 [[noreturn]] void FailAt(const std::string& source, const std::string& pointer, const std::string& what) {

@@ -258,7 +258,20 @@ std::string SweepHtml(const OrderedJson& sweep) {
     }
     html << "</tr>\n";
   }
-  html << "</tbody>\n</table>\n<h2>Headline metrics</h2>\n<div class=\"charts\">\n";
+  html << "</tbody>\n</table>\n";
+  // The result warnings of the configurations (as rpt eval prints them: no predictions, low recall).
+  std::ostringstream warned;
+  for (const OrderedJson& row : rows) {
+    const OrderedJson& summary = row.at("summary");
+    if (!summary.contains("warnings") || !summary["warnings"].is_array()) continue;
+    for (const OrderedJson& w : summary["warnings"]) {
+      if (!w.is_object() || !w.contains("message") || !w["message"].is_string()) continue;
+      warned << "<li><b>" << HtmlText(row.at("name").get<std::string>()) << "</b>: "
+             << HtmlText(w["message"].get<std::string>()) << "</li>\n";
+    }
+  }
+  if (!warned.str().empty()) html << "<h2>Warnings</h2>\n<ul id=\"warnings\">\n" << warned.str() << "</ul>\n";
+  html << "<h2>Headline metrics</h2>\n<div class=\"charts\">\n";
   for (const Headline& h : metrics) {
     if (rows.empty()) break;
     html << "<figure>\n<figcaption>" << HtmlText(TitleOf(h.key)) << ", "

@@ -95,6 +95,25 @@ TEST(SweepCommand, TwoConfigurationsGiveTwoRowsThatDifferWhereTheOptionMatters) 
   EXPECT_TRUE(fs::exists(out / "sweep.csv"));
   EXPECT_TRUE(fs::exists(out / "sweep.md"));
   EXPECT_EQ(test::RunRpt("sweep --dataset synthetic --grid merge.topk=1,2 --out " + out.string()).exit_code, 2);
+  EXPECT_TRUE(sweep["rows"][0]["summary"]["warnings"].empty()) << "nothing to say of a good configuration";
+  fs::remove_all(out);
+}
+
+// A configuration that triangulates nobody says so as rpt eval would: a warning after the table,
+// in its row's summary (as in summary.json) and on sweep.html.
+TEST(SweepCommand, AConfigurationWithoutPredictionsIsWarnedAbout) {
+  const fs::path out = test::TempDir("sweep_warned");
+  std::ofstream(out / "list.json") << R"([{"name": "none left", "set": {"postprocess.min_valid_joints": 1000}}, {"name": "fine"}])";
+  const test::CommandResult r = test::RunRpt("sweep --dataset synthetic --param frames=5 --list " +
+                                             (out / "list.json").string() + " --out " + (out / "s").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("warning: configuration 'none left': no predictions at all"), std::string::npos) << r.err;
+  const nlohmann::json sweep = ReadJson(out / "s" / "sweep.json");
+  ASSERT_EQ(sweep["rows"][0]["summary"]["warnings"].size(), 1u);
+  EXPECT_EQ(sweep["rows"][0]["summary"]["warnings"][0]["code"], "no_predictions");
+  EXPECT_TRUE(sweep["rows"][1]["summary"]["warnings"].empty());
+  EXPECT_NE(test::ReadAll(out / "s" / "sweep.html").find("<li><b>none left</b>: no predictions at all"),
+            std::string::npos);
   fs::remove_all(out);
 }
 
