@@ -172,7 +172,7 @@ void RenderSequence(const RenderArgs& args, const Sequence& sequence, const std:
       overlay.reprojection = &views[c];
       overlay.prediction_joints = &output_joints;
       overlay.gt_joints = args.gt ? &sequence.gt_joints : nullptr;
-      overlay.title = sequence.name + "  " + camera.name + "  frame " + frame.id;
+      overlay.title = {sequence.name, "camera " + camera.name, "frame " + frame.id};
       engine::DrawOverlay(overlay, &canvas);
       for (const engine::ReprojectedPerson& p : views[c].predictions) {
         if (p.num_measured > 0)

@@ -109,8 +109,13 @@ void DrawErrors(const ReprojectedPerson& person, const Poses2D& view, const Join
   }
 }
 
+// `text` at `origin` (its baseline's left end), moved inside the image where it would stick out.
 void PutText(cv::Mat* canvas, const std::string& text, cv::Point origin, const cv::Scalar& colour, const Style& style) {
   const double font_scale = 0.45 * style.scale;
+  int baseline = 0;
+  const cv::Size size = cv::getTextSize(text, cv::FONT_HERSHEY_SIMPLEX, font_scale, style.Px(3), &baseline);
+  origin.x = std::clamp(origin.x, 0, std::max(0, canvas->cols - size.width));
+  origin.y = std::clamp(origin.y, size.height, std::max(size.height, canvas->rows - baseline));
   cv::putText(*canvas, text, origin, cv::FONT_HERSHEY_SIMPLEX, font_scale, kWhite, style.Px(3), cv::LINE_AA);
   cv::putText(*canvas, text, origin, cv::FONT_HERSHEY_SIMPLEX, font_scale, colour, style.Px(1), cv::LINE_AA);
 }
@@ -136,6 +141,64 @@ void DrawLabel(const ReprojectedPerson& person, const cv::Scalar& colour, const 
   PutText(canvas, text, origin, colour, style);
 }
 
+// `text` as is when it is at most `width` pixels wide (as `width_of` measures), else cut in the
+// middle with "..." until it fits (the start and the end of a long name tell cameras apart).
+template <class WidthOf>
+std::string FitText(const std::string& text, int width, const WidthOf& width_of) {
+  if (width_of(text) <= width) return text;
+  std::string head = text.substr(0, text.size() / 2), tail = text.substr(text.size() / 2);
+  while (!head.empty() || !tail.empty()) {
+    if (head.size() >= tail.size()) {
+      head.pop_back();
+      while (!head.empty() && (static_cast<unsigned char>(head.back()) & 0xC0) == 0x80) head.pop_back();  // whole UTF-8
+    } else {
+      tail.erase(0, 1);
+      while (!tail.empty() && (static_cast<unsigned char>(tail.front()) & 0xC0) == 0x80) tail.erase(0, 1);
+    }
+    const std::string cut = head + "..." + tail;
+    if (width_of(cut) <= width) return cut;
+  }
+  return "...";
+}
+
+// The image corner for a legend of `size`: of the four, the one whose box holds the fewest of the
+// drawn points (reprojected predictions and GT, detections), so that it covers nobody where it can;
+// top left of equals.
+cv::Point LegendCorner(const OverlayInput& input, const cv::Size& size, const cv::Size& image) {
+  const cv::Point corners[4] = {{0, 0},
+                                {image.width - size.width, 0},
+                                {0, image.height - size.height},
+                                {image.width - size.width, image.height - size.height}};
+  long covered[4] = {0, 0, 0, 0};
+  const auto count = [&](double u, double v) {
+    if (!std::isfinite(u) || !std::isfinite(v)) return;
+    for (int c = 0; c < 4; ++c) {
+      covered[c] += u >= corners[c].x && u < corners[c].x + size.width && v >= corners[c].y &&
+                    v < corners[c].y + size.height;
+    }
+  };
+  const auto count_person = [&](const ReprojectedPerson& p) {
+    for (size_t j = 0; j < p.status.size(); ++j) {
+      if (p.status[j] == JointReprojection::kMeasured || p.status[j] == JointReprojection::kNotDetected) {
+        count(p.uv_px(0, j), p.uv_px(1, j));
+      }
+    }
+  };
+  for (const ReprojectedPerson& p : input.reprojection->predictions) count_person(p);
+  for (const ReprojectedPerson& p : input.reprojection->gt) count_person(p);
+  if (input.detections != nullptr) {
+    for (int d = 0; d < input.detections->num_persons(); ++d) {
+      const auto person = input.detections->Person(d);
+      for (int j = 0; j < input.detections->num_joints; ++j) {
+        if (person(2, j) > 0) count(person(0, j), person(1, j));
+      }
+    }
+  }
+  int best = 0;
+  for (int c = 1; c < 4; ++c) best = covered[c] < covered[best] ? c : best;
+  return corners[best];
+}
+
 void DrawLegend(const OverlayInput& input, const Style& style, cv::Mat* canvas) {
   const ViewError view_error = MeanPredictionError(*input.reprojection);
   char error[96];
@@ -149,26 +212,37 @@ void DrawLegend(const OverlayInput& input, const Style& style, cv::Mat* canvas) 
     std::string text;
     int glyph;  // 0 none, 1 reprojection, 2 detection, 3 GT
   };
-  std::vector<Line> lines = {
-      {input.title, 0}, {"reprojected 3D (colour = track)", 1}, {"2D detection (grey: unmatched)", 2}};
+  const int line_height = style.Px(18), glyph_width = style.Px(30), pad = style.Px(6);
+  const auto text_width_of = [&](const std::string& text) {
+    int baseline = 0;
+    return cv::getTextSize(text, cv::FONT_HERSHEY_SIMPLEX, 0.45 * style.scale, style.Px(1), &baseline).width;
+  };
+  // The title on one line where it fits the image, else a line per part, each cut to fit.
+  std::vector<Line> lines;
+  std::string joined;
+  for (const std::string& part : input.title) joined += (joined.empty() ? "" : "   ") + part;
+  const int max_width = std::max(1, canvas->cols - 2 * pad);
+  if (text_width_of(joined) <= max_width) {
+    lines.push_back({joined, 0});
+  } else {
+    for (const std::string& part : input.title) lines.push_back({FitText(part, max_width, text_width_of), 0});
+  }
+  lines.insert(lines.end(), {{"reprojected 3D (colour = track)", 1}, {"2D detection (grey: unmatched)", 2}});
   if (input.gt_joints != nullptr) lines.push_back({"reprojected ground truth", 3});
   lines.push_back({error, 0});
-  const int line_height = style.Px(18), glyph_width = style.Px(30), pad = style.Px(6);
   int text_width = 0;
   for (const Line& line : lines) {
-    int baseline = 0;
-    const cv::Size size =
-        cv::getTextSize(line.text, cv::FONT_HERSHEY_SIMPLEX, 0.45 * style.scale, style.Px(1), &baseline);
-    text_width = std::max(text_width, size.width + (line.glyph ? glyph_width + pad : 0));
+    text_width = std::max(text_width, text_width_of(line.text) + (line.glyph ? glyph_width + pad : 0));
   }
-  const cv::Rect box = cv::Rect(0, 0, text_width + 2 * pad, static_cast<int>(lines.size()) * line_height + 2 * pad) &
-                       cv::Rect(0, 0, canvas->cols, canvas->rows);
-  cv::Mat region = (*canvas)(box);
+  const cv::Size size(std::min(text_width + 2 * pad, canvas->cols),
+                      std::min(static_cast<int>(lines.size()) * line_height + 2 * pad, canvas->rows));
+  const cv::Point corner = LegendCorner(input, size, canvas->size());
+  cv::Mat region = (*canvas)(cv::Rect(corner, size));
   cv::addWeighted(region, 0.3, cv::Mat(region.size(), region.type(), kWhite), 0.7, 0, region);
   const cv::Scalar sample = PersonColour(0, 0);
   for (size_t i = 0; i < lines.size(); ++i) {
-    const int y = pad + static_cast<int>(i + 1) * line_height - style.Px(5);
-    int x = pad;
+    const int y = corner.y + pad + static_cast<int>(i + 1) * line_height - style.Px(5);
+    int x = corner.x + pad;
     const Eigen::Vector2d a(x, y - style.Px(4)), b(x + glyph_width - pad, y - style.Px(4));
     if (lines[i].glyph == 1) {
       DrawLine(canvas, a, b, sample, style.Px(2.5));

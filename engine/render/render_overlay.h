@@ -7,7 +7,8 @@
 //    when untracked), labelled with the track id and the mean reprojection error in pixels;
 //  * 2D detections: thin limbs and crosses, in the colour of the 3D person they were matched to,
 //    grey when unmatched; a thin line joins each measured joint to its projection (the error);
-//  * reprojected ground truth (optional): thin black limbs and small squares.
+//  * reprojected ground truth (optional): thin black limbs and small squares;
+//  * the legend in the corner whose box holds the fewest drawn points (top left of equals).
 // Limbs are those of core/joints.h (LimbsFor) that exist in each joint set.
 #pragma once
 
@@ -29,7 +30,8 @@ struct OverlayInput {
   const ViewReprojection* reprojection = nullptr;
   const JointNames* prediction_joints = nullptr;
   const JointNames* gt_joints = nullptr;  // nullptr = the GT is not drawn
-  std::string title;                      // first legend line, e.g. "shelf  Camera0  frame 300"
+  std::vector<std::string> title;         // the legend's title, e.g. {"shelf", "camera Camera0", "frame 300"}: one
+                                          // line where it fits, else a line each, cut in the middle to fit
 };
 
 // The colour (BGR) of a reprojected person: by track id when it has one, else by its index.

@@ -265,6 +265,50 @@ TEST_F(RenderRun, DrawsTheRecordedPredictionsOfEvalAndTriangulateRuns) {
 
 // The image and video module (engine/render/image_codecs.h): found where the build put it, its
 // PNG functions read back what they wrote; a missing or foreign module names every place tried.
+// The legend goes to the corner that covers nobody: a person drawn in the top-left corner sends it
+// to the top right (black legend text there, none at the top left); a title longer than the image
+// is cut to fit (no legend text in the image's last columns).
+TEST(RenderOverlay, TheLegendAvoidsThePersonsAndFitsTheImage) {
+  Camera camera;
+  camera.name = "c";
+  camera.width = 640;
+  camera.height = 480;
+  const JointNames joints = {"nose", "neck"};
+  engine::ViewReprojection view;
+  engine::ReprojectedPerson person;
+  person.person_idx = 0;
+  person.track_id = 0;
+  person.uv_px = Eigen::Matrix2Xd(2, 2);
+  person.uv_px << 40, 120, 30, 90;
+  person.status = {engine::JointReprojection::kNotDetected, engine::JointReprojection::kNotDetected};
+  person.error_px = {std::nan(""), std::nan("")};
+  person.mean_error_px = std::nan("");
+  view.predictions.push_back(person);
+  const auto draw = [&](std::vector<std::string> title) {
+    cv::Mat canvas = engine::BlankCanvas(camera);
+    engine::DrawOverlay({.camera = &camera, .reprojection = &view, .prediction_joints = &joints, .title = title},
+                        &canvas);
+    return canvas;
+  };
+  const auto black_pixels = [](const cv::Mat& canvas, const cv::Rect& box) {
+    int black = 0;
+    for (int y = box.y; y < box.y + box.height; ++y) {
+      for (int x = box.x; x < box.x + box.width; ++x) {
+        const cv::Vec3b& p = canvas.at<cv::Vec3b>(y, x);
+        black += p[0] < 60 && p[1] < 60 && p[2] < 60 ? 1 : 0;
+      }
+    }
+    return black;
+  };
+  const cv::Mat short_title = draw({"seq", "camera c", "frame 7"});
+  EXPECT_GT(black_pixels(short_title, cv::Rect(400, 0, 240, 60)), 50) << "the legend at the top right";
+  EXPECT_EQ(black_pixels(short_title, cv::Rect(0, 0, 200, 60)), 0) << "nothing over the person at the top left";
+  const cv::Mat long_title = draw({std::string(400, 'x'), "camera c", "frame 7"});
+  // As wide as the image, the legend covers the person at the top: it goes to the bottom left.
+  EXPECT_GT(black_pixels(long_title, cv::Rect(0, 330, 640, 150)), 200) << "the legend at the bottom";
+  EXPECT_EQ(black_pixels(long_title, cv::Rect(636, 0, 4, 480)), 0) << "the title runs past the image";
+}
+
 TEST(ImageCodecs, TheBuiltModuleWritesAndReadsPngs) {
   const engine::ImageCodecs& codecs = engine::LoadImageCodecs();
   EXPECT_EQ(codecs.version, engine::kImageCodecsVersion);
