@@ -145,6 +145,20 @@
         'Persons triangulated over frames (no ground truth) ';
   }
   const curve = data.recall_curve || { threshold_mm: [], recall: [] };
+  // The plots computed from the re-loaded input have nothing to show without it: their captions say
+  // so (a note appended: a caption may hold controls, e.g. the sequence selector).
+  const noteCaption = (id, text) => {
+    const note = document.createElement('span');
+    note.className = 'caption-note';
+    note.textContent = text;
+    el(id).closest('figure').querySelector('figcaption').appendChild(note);
+  };
+  if (!data.input_loaded) {
+    for (const id of ['plot-recall', 'plot-frames']) noteCaption(id, ': not available (the run\'s input could not be re-loaded)');
+  }
+  if (hasGt && !joints.some((j) => j.mean_error_mm !== null && j.mean_error_mm !== undefined)) {
+    noteCaption('plot-joints', ': no matched person');
+  }
   if (data.input_loaded && data.evaluated !== false && !curve.recall.length) {
     el('plot-recall').closest('figure').querySelector('figcaption').textContent +=
         ': not computed (the curve redoes the greedy matching; this run used metrics.matching = hungarian)';
@@ -504,6 +518,8 @@
   if (!data.input_loaded || !scenes.length) {
     el('viewer').querySelector('h2').textContent = 'Frames: not available';
     el('view3d').hidden = true;
+    // No frames: the slider, the play buttons and the legends go too.
+    for (const node of el('viewer').querySelectorAll('.controls, .legend, #cameras, h3')) node.style.display = 'none';
     el('frame-stats').textContent = 'The run\'s input could not be re-loaded, so the report has no frames (see the warnings above).';
   } else {
     initViewer();

@@ -21,7 +21,7 @@ using OrderedJson = nlohmann::ordered_json;
 // and options in the run's order.
 OrderedJson LoadOrdered(const std::filesystem::path& path) {
   if (!std::filesystem::exists(path)) {
-    throw InputError(path.string() + ": file not found (is this an `rpt eval` output folder?)");
+    throw InputError(path.string() + ": file not found (is this the output folder of `rpt eval` or `rpt triangulate`?)");
   }
   return io::LoadOrderedJsonFile(path);
 }

@@ -261,6 +261,9 @@ TEST(ReportBrowser, RunWhoseInputIsGone) {
   EXPECT_EQ(BodyAttribute(dom, "data-rpt-plots"), "4") << "joints, recall, step times, step counts; no frames";
   EXPECT_EQ(BodyAttribute(dom, "data-rpt-skeletons"), "");
   EXPECT_NE(dom.find("Frames: not available"), std::string::npos);
+  // The plots made from the re-loaded input say why they are empty (the markup, not the script's text).
+  EXPECT_NE(dom.find("<span class=\"caption-note\">: not available (the run's input could not be re-loaded)</span>"),
+            std::string::npos);
 }
 
 // A run without ground truth (rpt triangulate): the frames plot marks the frame shown on the
