@@ -197,8 +197,8 @@ class PyTriangulator {
   // step are looked at (the check sorts its sample: not every frame).
   void WarnAboutProcessTimes() {
     process_times_.Add(frame_.timestamp_s);
-    InputWarnings warnings;
-    const std::string source = "Triangulator.process";
+    InputWarnings warnings;  // empty: allocates nothing unless a warning is given
+    static const std::string source = "Triangulator.process";
     if (!warned_step_back_ && process_times_.times_not_after() > 0) {
       warned_step_back_ = true;
       process_times_.AddStepBackWarning(source, &warnings);

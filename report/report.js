@@ -211,7 +211,7 @@
       // Counts of persons: whole-number ticks, and room above the highest so that its line does not
       // lie on the plot's border.
       const counts = data.evaluated === false ? seq.num_predictions : invalid.map((p) => p.y).concat(missed.map((p) => p.y));
-      const countMax = Math.max(1, ...counts) + 1;
+      const countMax = counts.reduce((a, b) => Math.max(a, b), 1) + 1;  // no spread: a long run has many frames
       if (framesChart) framesChart.destroy();
       framesChart = new Chart(el('plot-frames'), {
         type: 'scatter',
