@@ -294,6 +294,7 @@
     camera3d = new THREE.PerspectiveCamera(45, view.clientWidth / view.clientHeight, 0.05, 500);
     controls = new THREE.OrbitControls(camera3d, renderer.domElement);
     controls.addEventListener('change', render);
+    controls.addEventListener('start', () => { userMoved = true; });
     window.addEventListener('resize', () => {
       renderer.setSize(view.clientWidth, view.clientHeight);
       camera3d.aspect = view.clientWidth / view.clientHeight;
@@ -302,6 +303,28 @@
     });
   }
   function render() { if (renderer) renderer.render(scene3d, camera3d); }
+  // Until the user drags or zooms, each frame is shown with all its persons in view: the view of the
+  // sequence is moved back (never closer) while a joint lies outside it (a person far from the
+  // others opened an empty view, MVOR). At most 20 steps of 25 %: an outlier miles off stays out.
+  let userMoved = false;
+  function keepPersonsInView(sc) {
+    if (userMoved || !camera3d) return;
+    const points = [];
+    for (const person of sc.gt.concat(sc.predictions)) {
+      for (const p of person.joints) if (p) points.push(new THREE.Vector3().fromArray(p));
+    }
+    const inView = (v) => {
+      const q = v.clone().project(camera3d);
+      return Math.abs(q.x) <= 0.95 && Math.abs(q.y) <= 0.95 && q.z > -1 && q.z < 1;
+    };
+    camera3d.updateMatrixWorld();
+    for (let step = 0; step < 20 && !points.every(inView); ++step) {
+      const offset = camera3d.position.clone().sub(controls.target).multiplyScalar(1.25);  // before position changes
+      camera3d.position.copy(controls.target).add(offset);
+      camera3d.updateMatrixWorld();
+    }
+    controls.update();
+  }
 
   function segmentsGeometry(points, edges) {
     const positions = [];
@@ -494,6 +517,7 @@
       skeletons += 1;
     }
     scene3d.add(frameGroup);
+    keepPersonsInView(sc);
     render();
     const matched = sc.gt.filter((g) => g.state === 1).length, kept = sc.gt.filter((g) => g.state >= 0).length;
     const invalid = sc.predictions.filter((p) => p.invalid).length;
