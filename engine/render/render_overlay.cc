@@ -109,19 +109,40 @@ void DrawErrors(const ReprojectedPerson& person, const Poses2D& view, const Join
   }
 }
 
-// `text` at `origin` (its baseline's left end), moved inside the image where it would stick out.
-void PutText(cv::Mat* canvas, const std::string& text, cv::Point origin, const cv::Scalar& colour, const Style& style) {
+// `text` at `origin` (its baseline's left end), moved inside the image where it would stick out, and
+// up (or, at the top, down) past the labels already in `placed` it would overlap; its box is added.
+void PutText(cv::Mat* canvas, const std::string& text, cv::Point origin, const cv::Scalar& colour, const Style& style,
+             std::vector<cv::Rect>* placed) {
   const double font_scale = 0.45 * style.scale;
   int baseline = 0;
   const cv::Size size = cv::getTextSize(text, cv::FONT_HERSHEY_SIMPLEX, font_scale, style.Px(3), &baseline);
-  origin.x = std::clamp(origin.x, 0, std::max(0, canvas->cols - size.width));
-  origin.y = std::clamp(origin.y, size.height, std::max(size.height, canvas->rows - baseline));
+  const auto inside = [&](cv::Point p) {
+    return cv::Point(std::clamp(p.x, 0, std::max(0, canvas->cols - size.width)),
+                     std::clamp(p.y, size.height, std::max(size.height, canvas->rows - baseline)));
+  };
+  const auto box = [&](cv::Point p) { return cv::Rect(p.x, p.y - size.height, size.width, size.height + baseline); };
+  const auto overlaps = [&](cv::Point p) {
+    return std::any_of(placed->begin(), placed->end(), [&](const cv::Rect& r) { return (r & box(p)).area() > 0; });
+  };
+  origin = inside(origin);
+  const int step = size.height + baseline;
+  int direction = -1;  // up, until the image's top stops it
+  for (int tries = 0; tries < 8 && overlaps(origin); ++tries) {  // a crowd: at most 8 lines away
+    cv::Point next = inside({origin.x, origin.y + direction * step});
+    if (next.y == origin.y) {
+      direction = 1;
+      next = inside({origin.x, origin.y + step});
+    }
+    origin = next;
+  }
+  placed->push_back(box(origin));
   cv::putText(*canvas, text, origin, cv::FONT_HERSHEY_SIMPLEX, font_scale, kWhite, style.Px(3), cv::LINE_AA);
   cv::putText(*canvas, text, origin, cv::FONT_HERSHEY_SIMPLEX, font_scale, colour, style.Px(1), cv::LINE_AA);
 }
 
 // "track 3: 4.2 px" above the person's highest projected joint.
-void DrawLabel(const ReprojectedPerson& person, const cv::Scalar& colour, const Style& style, cv::Mat* canvas) {
+void DrawLabel(const ReprojectedPerson& person, const cv::Scalar& colour, const Style& style, cv::Mat* canvas,
+               std::vector<cv::Rect>* placed) {
   int top = -1;
   for (size_t j = 0; j < person.status.size(); ++j) {
     if (!Projected(person.status[j]) || !Drawable(person.uv_px.col(j), *canvas)) continue;
@@ -138,7 +159,7 @@ void DrawLabel(const ReprojectedPerson& person, const cv::Scalar& colour, const 
   }
   const cv::Point origin(static_cast<int>(person.uv_px(0, top)) - style.Px(20),
                          static_cast<int>(person.uv_px(1, top)) - style.Px(10));
-  PutText(canvas, text, origin, colour, style);
+  PutText(canvas, text, origin, colour, style, placed);
 }
 
 // `text` as is when it is at most `width` pixels wide (as `width_of` measures), else cut in the
@@ -162,9 +183,10 @@ std::string FitText(const std::string& text, int width, const WidthOf& width_of)
 }
 
 // The image corner for a legend of `size`: of the four, the one whose box holds the fewest of the
-// drawn points (reprojected predictions and GT, detections), so that it covers nobody where it can;
-// top left of equals.
-cv::Point LegendCorner(const OverlayInput& input, const cv::Size& size, const cv::Size& image) {
+// drawn points (reprojected predictions and GT, detections; a person's label counts as 5), so that it
+// covers nobody where it can; top left of equals.
+cv::Point LegendCorner(const OverlayInput& input, const std::vector<cv::Rect>& labels, const cv::Size& size,
+                       const cv::Size& image) {
   const cv::Point corners[4] = {{0, 0},
                                 {image.width - size.width, 0},
                                 {0, image.height - size.height},
@@ -194,12 +216,15 @@ cv::Point LegendCorner(const OverlayInput& input, const cv::Size& size, const cv
       }
     }
   }
+  for (const cv::Rect& label : labels) {
+    for (int c = 0; c < 4; ++c) covered[c] += (label & cv::Rect(corners[c], size)).area() > 0 ? 5 : 0;
+  }
   int best = 0;
   for (int c = 1; c < 4; ++c) best = covered[c] < covered[best] ? c : best;
   return corners[best];
 }
 
-void DrawLegend(const OverlayInput& input, const Style& style, cv::Mat* canvas) {
+void DrawLegend(const OverlayInput& input, const std::vector<cv::Rect>& labels, const Style& style, cv::Mat* canvas) {
   const ViewError view_error = MeanPredictionError(*input.reprojection);
   char error[96];
   if (view_error.joints > 0) {
@@ -236,7 +261,7 @@ void DrawLegend(const OverlayInput& input, const Style& style, cv::Mat* canvas) 
   }
   const cv::Size size(std::min(text_width + 2 * pad, canvas->cols),
                       std::min(static_cast<int>(lines.size()) * line_height + 2 * pad, canvas->rows));
-  const cv::Point corner = LegendCorner(input, size, canvas->size());
+  const cv::Point corner = LegendCorner(input, labels, size, canvas->size());
   cv::Mat region = (*canvas)(cv::Rect(corner, size));
   cv::addWeighted(region, 0.3, cv::Mat(region.size(), region.type(), kWhite), 0.7, 0, region);
   const cv::Scalar sample = PersonColour(0, 0);
@@ -295,10 +320,11 @@ void DrawOverlay(const OverlayInput& input, cv::Mat* canvas) {
   for (const ReprojectedPerson& p : reprojection.predictions) {
     DrawReprojected(p, limbs, PersonColour(p.track_id, p.person_idx), /*gt=*/false, style, canvas);
   }
+  std::vector<cv::Rect> labels;  // placed so far: a crowd's labels are moved apart
   for (const ReprojectedPerson& p : reprojection.predictions) {
-    DrawLabel(p, PersonColour(p.track_id, p.person_idx), style, canvas);
+    DrawLabel(p, PersonColour(p.track_id, p.person_idx), style, canvas, &labels);
   }
-  DrawLegend(input, style, canvas);
+  DrawLegend(input, labels, style, canvas);
 }
 
 }  // namespace rpt::engine

@@ -8,7 +8,7 @@
 //  * 2D detections: thin limbs and crosses, in the colour of the 3D person they were matched to,
 //    grey when unmatched; a thin line joins each measured joint to its projection (the error);
 //  * reprojected ground truth (optional): thin black limbs and small squares;
-//  * the legend in the corner whose box holds the fewest drawn points (top left of equals).
+//  * the legend in the corner whose box holds the fewest drawn points and labels (top left of equals).
 // Limbs are those of core/joints.h (LimbsFor) that exist in each joint set.
 #pragma once
 

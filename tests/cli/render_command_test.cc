@@ -309,6 +309,47 @@ TEST(RenderOverlay, TheLegendAvoidsThePersonsAndFitsTheImage) {
   EXPECT_EQ(black_pixels(long_title, cv::Rect(636, 0, 4, 480)), 0) << "the title runs past the image";
 }
 
+// Two persons whose labels would fall on the same place: the second is moved clear of the first
+// (the rows of the two tracks' label colours above the persons do not overlap; they did).
+TEST(RenderOverlay, LabelsOfACrowdDoNotOverlap) {
+  Camera camera;
+  camera.name = "c";
+  camera.width = 640;
+  camera.height = 480;
+  const JointNames joints = {"nose", "neck"};
+  engine::ViewReprojection view;
+  for (int track = 0; track < 2; ++track) {
+    engine::ReprojectedPerson person;
+    person.person_idx = track;
+    person.track_id = track;
+    person.uv_px = Eigen::Matrix2Xd(2, 2);
+    person.uv_px << 320, 320, 300, 400;  // both at the same place: labels at the same spot
+    person.status = {engine::JointReprojection::kNotDetected, engine::JointReprojection::kNotDetected};
+    person.error_px = {std::nan(""), std::nan("")};
+    person.mean_error_px = std::nan("");
+    view.predictions.push_back(person);
+  }
+  cv::Mat canvas = engine::BlankCanvas(camera);
+  engine::DrawOverlay({.camera = &camera, .reprojection = &view, .prediction_joints = &joints, .title = {"t"}}, &canvas);
+  // Rows above the persons (y < 295) holding pixels of each track's colour.
+  int first[2] = {-1, -1}, last[2] = {-1, -1};
+  for (int track = 0; track < 2; ++track) {
+    const cv::Scalar colour = engine::PersonColour(track, track);
+    for (int y = 0; y < 295; ++y) {
+      for (int x = 200; x < 440; ++x) {
+        const cv::Vec3b& p = canvas.at<cv::Vec3b>(y, x);
+        if (std::abs(p[0] - colour[0]) + std::abs(p[1] - colour[1]) + std::abs(p[2] - colour[2]) > 30) continue;
+        if (first[track] < 0) first[track] = y;
+        last[track] = y;
+        break;
+      }
+    }
+    ASSERT_GE(first[track], 0) << "track " << track << "'s label is drawn";
+  }
+  EXPECT_TRUE(last[1] < first[0] || last[0] < first[1])
+      << "rows " << first[0] << "-" << last[0] << " and " << first[1] << "-" << last[1];
+}
+
 TEST(ImageCodecs, TheBuiltModuleWritesAndReadsPngs) {
   const engine::ImageCodecs& codecs = engine::LoadImageCodecs();
   EXPECT_EQ(codecs.version, engine::kImageCodecsVersion);
