@@ -464,14 +464,24 @@
       const v = sc.views[c] || { detections: [], predictions: [], gt: [] };
       for (const gt of v.gt) drawPerson2D(ctx, gt, seq.gt_edges, GT_COLOUR, scale, 1, true);
       for (const det of v.detections) drawPerson2D(ctx, det, seq.detection_edges, DETECTION_COLOUR, scale, 1.5, false);
+      const labels = [];  // {x, y (baseline), w} of the labels drawn on this canvas
       v.predictions.forEach((p, i) => {
         const person = sc.predictions[i];
         drawPerson2D(ctx, p.uv, data.prediction_edges, trackColour(p.track_id), scale, 2, person && person.invalid);
         if (p.mean_error_px !== null) {
           const anchor = p.uv.find((q) => q);
           if (anchor) {
-            ctx.font = '12px system-ui, sans-serif'; ctx.fillStyle = '#fff';
-            ctx.fillText(fmt(p.mean_error_px, 1) + ' px', anchor[0] * scale + 6, anchor[1] * scale - 6);
+            // 12 px as shown: the canvas is drawn at up to 720 px and shrunk into its card.
+            const fontPx = Math.max(12, Math.round(12 * canvas.width / Math.max(1, canvas.clientWidth || canvas.width)));
+            ctx.font = fontPx + 'px system-ui, sans-serif'; ctx.fillStyle = '#fff';
+            // Moved up (at most 6 lines) clear of the labels already drawn, as rpt render does.
+            const text = fmt(p.mean_error_px, 1) + ' px', width = ctx.measureText(text).width;
+            const x = anchor[0] * scale + 6;
+            let y = anchor[1] * scale - 6;
+            const hits = (yy) => labels.some((r) => x < r.x + r.w && r.x < x + width && yy - fontPx < r.y && r.y - fontPx < yy);
+            for (let tries = 0; tries < 6 && hits(y); ++tries) y -= fontPx + 2;
+            labels.push({ x, y, w: width });
+            ctx.fillText(text, x, y);
           }
         }
       });
