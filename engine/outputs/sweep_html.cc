@@ -189,7 +189,8 @@ std::string SweepHtml(const OrderedJson& sweep) {
           "table { border-collapse: collapse; font-size: 14px; }\n"
           "th, td { padding: 3px 8px; border-bottom: 1px solid #ddd; text-align: right; white-space: nowrap; }\n"
           "th { background: #f0f0f0; }\n"
-          ".name { text-align: left; white-space: normal; max-width: 28em; }\n"
+          ".name { text-align: left; white-space: normal; max-width: 28em; overflow-wrap: anywhere; }\n"
+          ".table-wrap { overflow-x: auto; max-width: 100%; }\n"
           ".option { text-align: left; }\n"
           ".inherited { color: #999; }\n"
           "tr.baseline td { background: #eef3fa; font-weight: bold; }\n"
@@ -221,7 +222,9 @@ std::string SweepHtml(const OrderedJson& sweep) {
     }
     html << "</ul>\n";
   }
-  html << "<table id=\"sweep\">\n<thead>\n<tr><th class=\"name\">configuration</th>";
+  // The table scrolls sideways on its own when it is wider than the window (many varied options):
+  // the page and its charts stay put.
+  html << "<div class=\"table-wrap\">\n<table id=\"sweep\">\n<thead>\n<tr><th class=\"name\">configuration</th>";
   for (const std::string& option : options) html << "<th class=\"option\">" << HtmlText(option) << "</th>";
   for (const Headline& h : metrics) html << "<th>" << HtmlText(TitleOf(h.key)) << "</th>";
   html << "</tr>\n</thead>\n<tbody>\n";
@@ -258,7 +261,7 @@ std::string SweepHtml(const OrderedJson& sweep) {
     }
     html << "</tr>\n";
   }
-  html << "</tbody>\n</table>\n";
+  html << "</tbody>\n</table>\n</div>\n";
   // The result warnings of the configurations (as rpt eval prints them: no predictions, low recall).
   std::ostringstream warned;
   for (const OrderedJson& row : rows) {
