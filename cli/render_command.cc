@@ -197,13 +197,18 @@ void RenderSequence(const RenderArgs& args, const Sequence& sequence, const std:
   }
   std::printf("%s: frames %ld to %ld, mean reprojection error of the 3D result against the matched detections:\n",
               PrintableText(sequence.name, LineBreaks::kEscape).c_str(), range.first, range.end - 1);
+  // One column of names as wide as the longest (at most 60 characters; a longer name runs on).
+  int width = 12;
+  for (const int c : cameras) {
+    width = std::max(width, std::min(60, static_cast<int>(PrintableText(sequence.cameras[c].name, LineBreaks::kEscape).size())));
+  }
   for (const int c : cameras) {
     const ErrorSum& e = errors[c];
     const std::string name = PrintableText(sequence.cameras[c].name, LineBreaks::kEscape);
     if (e.joints > 0) {
-      std::printf("  %-12s %7.1f px over %ld joints\n", name.c_str(), e.sum_px / e.joints, e.joints);
+      std::printf("  %-*s %7.1f px over %ld joints\n", width, name.c_str(), e.sum_px / e.joints, e.joints);
     } else {
-      std::printf("  %-12s       - (no reprojected joint matched a detection)\n", name.c_str());
+      std::printf("  %-*s       - (no reprojected joint matched a detection)\n", width, name.c_str());
     }
   }
 }
