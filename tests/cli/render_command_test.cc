@@ -263,27 +263,35 @@ TEST_F(RenderRun, DrawsTheRecordedPredictionsOfEvalAndTriangulateRuns) {
   expect_refused("--run " + (dir_ / "nothing").string(), "nothing");
 }
 
-// The image and video module (engine/render/image_codecs.h): found where the build put it, its
-// PNG functions read back what they wrote; a missing or foreign module names every place tried.
-// The legend goes to the corner that covers nobody: a person drawn in the top-left corner sends it
-// to the top right (black legend text there, none at the top left); a title longer than the image
-// is cut to fit (no legend text in the image's last columns).
-TEST(RenderOverlay, TheLegendAvoidsThePersonsAndFitsTheImage) {
+// A 640 x 480 camera and a person of two joints (nose, neck) that no detection measured: what the
+// overlay tests draw.
+Camera OverlayCamera() {
   Camera camera;
   camera.name = "c";
   camera.width = 640;
   camera.height = 480;
-  const JointNames joints = {"nose", "neck"};
-  engine::ViewReprojection view;
+  return camera;
+}
+engine::ReprojectedPerson UnmeasuredPerson(int track, const Eigen::Vector2d& nose, const Eigen::Vector2d& neck) {
   engine::ReprojectedPerson person;
-  person.person_idx = 0;
-  person.track_id = 0;
+  person.person_idx = track;
+  person.track_id = track;
   person.uv_px = Eigen::Matrix2Xd(2, 2);
-  person.uv_px << 40, 120, 30, 90;
+  person.uv_px << nose.x(), neck.x(), nose.y(), neck.y();
   person.status = {engine::JointReprojection::kNotDetected, engine::JointReprojection::kNotDetected};
   person.error_px = {std::nan(""), std::nan("")};
   person.mean_error_px = std::nan("");
-  view.predictions.push_back(person);
+  return person;
+}
+
+// The legend goes to the corner that covers nobody: a person drawn in the top-left corner sends it
+// to the top right (black legend text there, none at the top left); a title longer than the image
+// is cut to fit (no legend text in the image's last columns).
+TEST(RenderOverlay, TheLegendAvoidsThePersonsAndFitsTheImage) {
+  const Camera camera = OverlayCamera();
+  const JointNames joints = {"nose", "neck"};
+  engine::ViewReprojection view;
+  view.predictions.push_back(UnmeasuredPerson(0, {40, 30}, {120, 90}));
   const auto draw = [&](std::vector<std::string> title) {
     cv::Mat canvas = engine::BlankCanvas(camera);
     engine::DrawOverlay({.camera = &camera, .reprojection = &view, .prediction_joints = &joints, .title = title},
@@ -312,22 +320,11 @@ TEST(RenderOverlay, TheLegendAvoidsThePersonsAndFitsTheImage) {
 // Two persons whose labels would fall on the same place: the second is moved clear of the first
 // (the rows of the two tracks' label colours above the persons do not overlap; they did).
 TEST(RenderOverlay, LabelsOfACrowdDoNotOverlap) {
-  Camera camera;
-  camera.name = "c";
-  camera.width = 640;
-  camera.height = 480;
+  const Camera camera = OverlayCamera();
   const JointNames joints = {"nose", "neck"};
   engine::ViewReprojection view;
-  for (int track = 0; track < 2; ++track) {
-    engine::ReprojectedPerson person;
-    person.person_idx = track;
-    person.track_id = track;
-    person.uv_px = Eigen::Matrix2Xd(2, 2);
-    person.uv_px << 320, 320, 300, 400;  // both at the same place: labels at the same spot
-    person.status = {engine::JointReprojection::kNotDetected, engine::JointReprojection::kNotDetected};
-    person.error_px = {std::nan(""), std::nan("")};
-    person.mean_error_px = std::nan("");
-    view.predictions.push_back(person);
+  for (int track = 0; track < 2; ++track) {  // both at the same place: labels at the same spot
+    view.predictions.push_back(UnmeasuredPerson(track, {320, 300}, {320, 400}));
   }
   cv::Mat canvas = engine::BlankCanvas(camera);
   engine::DrawOverlay({.camera = &camera, .reprojection = &view, .prediction_joints = &joints, .title = {"t"}}, &canvas);
@@ -350,6 +347,8 @@ TEST(RenderOverlay, LabelsOfACrowdDoNotOverlap) {
       << "rows " << first[0] << "-" << last[0] << " and " << first[1] << "-" << last[1];
 }
 
+// The image and video module (engine/render/image_codecs.h): found where the build put it, its
+// PNG functions read back what they wrote; a missing or foreign module names every place tried.
 TEST(ImageCodecs, TheBuiltModuleWritesAndReadsPngs) {
   const engine::ImageCodecs& codecs = engine::LoadImageCodecs();
   EXPECT_EQ(codecs.version, engine::kImageCodecsVersion);
