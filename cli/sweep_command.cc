@@ -12,15 +12,12 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <limits>
 #include <map>
-#include <mutex>
 #include <optional>
-
-#ifdef _OPENMP
-#include <omp.h>
-#endif
+#include <tuple>
 
 #include "cli/commands.h"
 #include "core/printable_text.h"
@@ -37,7 +34,7 @@
 #include "engine/outputs/sweep_html.h"
 #include "engine/sweep_configurations.h"
 #include "cli/threads_option.h"
-#include "engine/thread_count.h"
+#include "engine/parallel_for.h"
 #include "core/errors.h"
 #include "core/option_codec.h"
 #include "core/text.h"
@@ -136,6 +133,29 @@ void SubmitToSlurm(const SweepArgs& args, const std::vector<engine::SweepConfigu
   SubmitSlurmSweep(sweep);
 }
 
+// Rows of configurations that failed to run carry "error" (and an empty summary). Each is printed
+// with where the configuration was given (`origin_of`: --grid, a list file's JSON pointer; empty
+// when not known, as in a merge), then the command fails (exit 2), after the tables of the others
+// were written.
+void ThrowIfConfigurationsFailed(const OrderedJson& rows, const std::string& file,
+                                 const std::function<std::string(int)>& origin_of) {
+  int failed = 0;
+  for (const OrderedJson& row : rows) {
+    if (!row.contains("error")) continue;
+    const int index = row["index"].get<int>();
+    const std::string origin = origin_of ? origin_of(index) : std::string();
+    const std::string which = "configuration " + QuoteName(row["name"].get<std::string>()) + ", " +
+                              std::to_string(index + 1) + " of the sweep";
+    std::fprintf(stderr, "error: %s: %s\n",
+                 PrintableText(origin.empty() ? which : origin + " (" + which + ")").c_str(),
+                 PrintableText(row["error"].get<std::string>()).c_str());
+    ++failed;
+  }
+  if (failed == 0) return;
+  throw InputError(std::to_string(failed) + " of " + std::to_string(rows.size()) +
+                   " configurations failed to run (above); the others ran: their rows are in " + file);
+}
+
 void RunSweep(const SweepArgs& args) {
   if (args.grid.empty() == args.list.empty()) throw ConfigError("give either --grid key=v1,v2 (repeatable) or --list FILE");
   const std::vector<engine::SweepConfiguration> all =
@@ -208,19 +228,15 @@ void RunSweep(const SweepArgs& args) {
   std::vector<InputWarnings> config_warnings(mine.size());
 
   std::vector<OrderedJson> summaries(mine.size());
-  std::exception_ptr error;
-  std::mutex error_mutex;
+  // A configuration that fails when it runs (e.g. core joints the input does not have) does not
+  // cost the others: its row records the error, named with where it was given (one of 23
+  // ablations was not otherwise told apart), and the sweep exits 2 once the tables are written.
+  std::vector<std::string> failures(mine.size());
   std::atomic<long> done{0};
   std::optional<Progress> progress;  // ended before the warnings are printed (its bar owns the line)
   progress.emplace("sweep", static_cast<long>(mine.size()));
   const int count = static_cast<int>(mine.size());
-#ifdef _OPENMP
-  const int threads = engine::ClampThreads(args.threads, count);
-#pragma omp parallel for schedule(dynamic) num_threads(threads)
-#else
-  const int threads = 1;
-#endif
-  for (int c = 0; c < count; ++c) {
+  const int threads = engine::ParallelFor(count, args.threads, [&](int c, bool report_progress) {
     try {
       engine::RunOptions options;
       options.triangulator = configs[c].triangulator;
@@ -242,33 +258,16 @@ void RunSweep(const SweepArgs& args) {
       } else {
         summarise(engine::Run(shared_input, options));
       }
-    } catch (...) {
-      // A configuration that fails when it runs (e.g. core joints the input does not have) is named
-      // with where it was given: one of 23 ablations was not otherwise told apart.
-      const engine::SweepConfiguration& failed = all[mine[c]];
-      const std::string which = failed.origin + " (configuration " + QuoteName(failed.name) + "): ";
-      std::exception_ptr named;
-      try {
-        throw;
-      } catch (const ConfigError& e) {
-        named = std::make_exception_ptr(ConfigError(which + e.what()));
-      } catch (const InputError& e) {
-        named = std::make_exception_ptr(InputError(which + e.what()));
-      } catch (...) {
-        named = std::current_exception();
-      }
-      std::lock_guard<std::mutex> lock(error_mutex);
-      if (!error) error = named;
+    } catch (const InputError& e) {
+      failures[c] = e.what();
+    } catch (const ConfigError& e) {
+      failures[c] = e.what();
     }
+    if (!failures[c].empty()) summaries[c] = OrderedJson::object();
     const long finished = ++done;
-#ifdef _OPENMP
-    if (omp_get_thread_num() == 0) progress->Update(finished);
-#else
-    progress->Update(finished);
-#endif
-  }
+    if (report_progress) progress->Update(finished);
+  });
   progress.reset();
-  if (error) std::rethrow_exception(error);
   if (per_config_input) {
     for (const InputWarnings& w : config_warnings) warnings.MergeRepeated(w);
     PrintInputWarnings(warnings);
@@ -284,6 +283,7 @@ void RunSweep(const SweepArgs& args) {
                     {"default", static_cast<bool>(is_default[c])},
                     {"measured_differently", static_cast<bool>(measured_differently[c])},
                     {"summary", summaries[c]}});
+    if (!failures[c].empty()) rows.back()["error"] = failures[c];
   }
   // The base configuration's value of every varied option (sweep.html shows them greyed where a
   // row does not set the option).
@@ -302,22 +302,27 @@ void RunSweep(const SweepArgs& args) {
   file["sweep"] = engine::SweepIdentity(all, base_config, args.input);
   file["base"] = base;
   file["rows"] = rows;
-  const std::string stem = shards == 1 ? "sweep" : "sweep-shard-" + std::to_string(shard) + "-of-" + std::to_string(shards);
-  WriteSweepFiles(args.out, file, stem, /*whole_folder=*/shards == 1);
+  // A shard asked for (also 1/1: a job array of one task) writes its shard file for `rpt merge`.
+  const bool shard_file = args.shard_given;
+  const std::string stem =
+      shard_file ? "sweep-shard-" + std::to_string(shard) + "-of-" + std::to_string(shards) : "sweep";
+  WriteSweepFiles(args.out, file, stem, /*whole_folder=*/!shard_file);
   std::cout << engine::SummaryMarkdown([&] {
     std::vector<std::pair<std::string, OrderedJson>> table;
     for (const OrderedJson& row : rows) table.emplace_back(row["name"].get<std::string>(), row["summary"]);
     return table;
   }());
-  std::printf("%d of %zu configurations; tables in %s/%s.{json,csv,md,html}\n", count, all.size(),
-              PrintableText(args.out, LineBreaks::kEscape).c_str(), stem.c_str());
-  std::fflush(stdout);
+  std::fflush(stdout);  // the table is the data (stdout); where it was written is a status line (stderr)
+  std::fprintf(stderr, "%d of %zu configurations; tables in %s/%s.{json,csv,md,html}\n", count, all.size(),
+               PrintableText(args.out, LineBreaks::kEscape).c_str(), stem.c_str());
   for (const OrderedJson& row : rows) {
+    if (!row["summary"].contains("warnings")) continue;
     for (const OrderedJson& w : row["summary"]["warnings"]) {
       std::fprintf(stderr, "warning: configuration %s: %s\n", QuoteName(row["name"].get<std::string>()).c_str(),
                    PrintableText(w["message"].get<std::string>()).c_str());
     }
   }
+  ThrowIfConfigurationsFailed(rows, args.out + "/" + stem + ".json", [&](int index) { return all[index].origin; });
 }
 
 [[noreturn]] void FailAt(const std::string& source, const std::string& pointer, const std::string& what) {
@@ -360,6 +365,7 @@ OrderedJson CheckedShardRow(const nlohmann::json& shard, const std::string& poin
     }
   }
   if (io::JsonFind(shard, pointer + "/default")) io::JsonBool(shard, pointer + "/default", source);
+  if (io::JsonFind(shard, pointer + "/error")) io::JsonString(shard, pointer + "/error", source);  // it failed to run
   if (io::JsonFind(shard, pointer + "/measured_differently")) {
     io::JsonBool(shard, pointer + "/measured_differently", source);
   }
@@ -388,7 +394,7 @@ OrderedJson CheckedShardRow(const nlohmann::json& shard, const std::string& poin
   return OrderedJson::parse(io::JsonAt(shard, pointer, source).dump());
 }
 
-void RunMerge(const std::vector<std::string>& inputs, const std::string& out) {
+void RunMerge(const std::vector<std::string>& inputs, const std::string& out, bool strict) {
   std::map<int, OrderedJson> by_index;
   OrderedJson base = OrderedJson::object();
   std::int64_t total = -1;
@@ -438,9 +444,25 @@ void RunMerge(const std::vector<std::string>& inputs, const std::string& out) {
     }
     const nlohmann::json& rows = io::JsonAt(shard, "/rows", path);
     if (!rows.is_array()) FailAt(path, "/rows", std::string("expected a list of rows, got ") + rows.type_name());
+    // The rows must be those of the shard the file says it is (a file renamed or edited by hand).
+    int shard_k = 1, shard_n = 1;
+    if (io::JsonFind(shard, "/shard")) {
+      const std::string text = io::JsonString(shard, "/shard", path);
+      try {
+        std::tie(shard_k, shard_n) = ParseShard(text);
+      } catch (const ConfigError&) {
+        FailAt(path, "/shard", QuoteName(text) + " is not k/N with 1 <= k <= N");
+      }
+    }
     for (size_t i = 0; i < rows.size(); ++i) {
       int index = 0;
       OrderedJson row = CheckedShardRow(shard, io::JsonPointerJoin("/rows", i), path, total, &index);
+      if (index % shard_n != shard_k - 1) {
+        FailAt(path, io::JsonPointerJoin("/rows", i) + "/index",
+               "configuration " + std::to_string(index + 1) + " is not one of shard " + std::to_string(shard_k) + "/" +
+                   std::to_string(shard_n) + " (/shard), which runs configurations " + std::to_string(shard_k) +
+                   ", " + std::to_string(shard_k + shard_n) + ", ...");
+      }
       if (!by_index.emplace(index, std::move(row)).second) {
         throw InputError(path + ": configuration " + std::to_string(index + 1) + " of " + std::to_string(total) +
                          " appears in two shard files");
@@ -465,11 +487,11 @@ void RunMerge(const std::vector<std::string>& inputs, const std::string& out) {
   // Shards run by different builds of rpt (one rebuilt between shards) may not measure alike.
   for (const auto& [path, revision] : revisions) {
     if (revision == revisions.front().second) continue;
-    std::fprintf(stderr,
-                 "warning: merge: the shards were run by different revisions of rpt (%s in %s, %s in %s): rows of "
-                 "different builds may not be comparable\n",
-                 PrintableText(revisions.front().second).c_str(), PrintableText(revisions.front().first).c_str(),
-                 PrintableText(revision).c_str(), PrintableText(path).c_str());
+    const std::string message = "merge: the shards were run by different revisions of rpt (" +
+                                revisions.front().second + " in " + revisions.front().first + ", " + revision + " in " +
+                                path + "): rows of different builds may not be comparable";
+    if (strict) throw InputError(message + " (--strict)");
+    std::fprintf(stderr, "warning: %s\n", PrintableText(message).c_str());
     break;
   }
   OrderedJson rows = OrderedJson::array();
@@ -483,8 +505,9 @@ void RunMerge(const std::vector<std::string>& inputs, const std::string& out) {
   file["base"] = base;
   file["rows"] = rows;
   WriteSweepFiles(out, file, "sweep", /*whole_folder=*/true);
-  std::printf("merged %zu configurations from %zu shard files into %s/sweep.{json,csv,md,html}\n", by_index.size(),
-              inputs.size(), PrintableText(out, LineBreaks::kEscape).c_str());
+  std::fprintf(stderr, "merged %zu configurations from %zu shard files into %s/sweep.{json,csv,md,html}\n",
+               by_index.size(), inputs.size(), PrintableText(out, LineBreaks::kEscape).c_str());
+  ThrowIfConfigurationsFailed(rows, out + "/sweep.json", nullptr);
 }
 
 }  // namespace
@@ -528,7 +551,9 @@ void RegisterMergeCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand("merge", "Join the shard files of a sharded sweep into one table");
   command->add_option("shards", *inputs, "sweep-shard-*.json files")->required();
   command->add_option("--out", *out, "output folder")->capture_default_str();
-  command->callback([inputs, out] { RunMerge(*inputs, *out); });
+  auto strict = std::make_shared<bool>(false);
+  command->add_flag("--strict", *strict, "shards run by different revisions of rpt are an error (exit 2), not a warning");
+  command->callback([inputs, out, strict] { RunMerge(*inputs, *out, *strict); });
 }
 
 }  // namespace rpt::cli

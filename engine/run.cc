@@ -6,12 +6,7 @@
 #include <atomic>
 #include <chrono>
 #include <exception>
-#include <mutex>
 #include <new>
-
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 #include "core/errors.h"
 #include "core/joint_offsets.h"
@@ -23,6 +18,7 @@
 #include "engine/frame_pipeline.h"
 #include "engine/input.h"
 #include "engine/joint_adapter.h"
+#include "engine/parallel_for.h"
 #include "engine/thread_count.h"
 #include "metrics/accumulator.h"
 #include "metrics/timing.h"
@@ -214,34 +210,6 @@ void RunSequence(int index, FrameSource& source, const RunOptions& options, cons
   if (sink != nullptr) sink->EndSequence(index);
 }
 
-// Runs body(i, report_progress) for i in 0..count-1 on up to `threads` threads, report_progress
-// true on one thread only; the first exception is rethrown once all finished (exceptions must not
-// cross the OpenMP region). Returns the threads used.
-int ForEachSequence(int count, [[maybe_unused]] int threads, const std::function<void(int, bool)>& body) {
-  std::exception_ptr error;
-  std::mutex error_mutex;
-  int used = 1;
-#ifdef _OPENMP
-  const int team = ClampThreads(threads, count);  // at most the cores and the work
-  used = team;
-#pragma omp parallel for schedule(dynamic) num_threads(team)
-#endif
-  for (int i = 0; i < count; ++i) {
-    try {
-#ifdef _OPENMP
-      body(i, omp_get_thread_num() == 0);
-#else
-      body(i, true);
-#endif
-    } catch (...) {
-      std::lock_guard<std::mutex> lock(error_mutex);
-      if (!error) error = std::current_exception();
-    }
-  }
-  if (error) std::rethrow_exception(error);
-  return used;
-}
-
 // A loaded sequence as a source, without taking it: each frame is copied out when pulled.
 class SequenceView final : public FrameSource {
  public:
@@ -302,7 +270,7 @@ RunResult Run(Input& input, const RunOptions& options, FrameSink* sink) {
     input.Finished(0);
   } else {
     // Several: one thread per sequence, its stages taking turns.
-    result.threads = ForEachSequence(count, options.threads, [&](int i, bool report_progress) {
+    result.threads = ParallelFor(count, options.threads, [&](int i, bool report_progress) {
       RunSequence(i, input.source(i), options, eval ? &*eval : nullptr, sink, 1, &frames_done, report_progress,
                   input.detections_file(), &runs[i]);
       input.Finished(i);

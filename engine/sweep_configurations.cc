@@ -40,8 +40,10 @@ std::vector<SweepConfiguration> ReadSweepList(const std::string& path) {
     }
     SweepConfiguration configuration;
     configuration.origin = path + ": " + pointer;
-    configuration.name =
-        item.contains("name") ? io::JsonString(root, pointer + "/name", path) : "config " + std::to_string(i);
+    // Unnamed: "configuration K", counted from 1 as the messages and --shard count.
+    configuration.name = item.contains("name") ? io::JsonString(root, pointer + "/name", path)
+                                               : "configuration " + std::to_string(i + 1);
+    if (configuration.name.empty()) throw InputError(path + ": " + pointer + "/name: empty (names tell the rows apart)");
     for (size_t earlier = 0; earlier < configurations.size(); ++earlier) {
       if (configurations[earlier].name != configuration.name) continue;
       throw InputError(path + ": " + pointer + "/name: " + QuoteName(configuration.name) + " names configuration " +

@@ -262,6 +262,16 @@ std::string SweepHtml(const OrderedJson& sweep) {
     html << "</tr>\n";
   }
   html << "</tbody>\n</table>\n</div>\n";
+  // Configurations that failed to run (their rows have no metrics).
+  std::ostringstream failed;
+  for (const OrderedJson& row : rows) {
+    if (!row.contains("error") || !row["error"].is_string()) continue;
+    failed << "<li><b>" << HtmlText(row.at("name").get<std::string>()) << "</b>: "
+           << HtmlText(row["error"].get<std::string>()) << "</li>\n";
+  }
+  if (!failed.str().empty()) {
+    html << "<h2>Failed configurations</h2>\n<ul id=\"errors\">\n" << failed.str() << "</ul>\n";
+  }
   // The result warnings of the configurations (as rpt eval prints them: no predictions, low recall).
   std::ostringstream warned;
   for (const OrderedJson& row : rows) {

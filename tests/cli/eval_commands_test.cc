@@ -8,6 +8,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
+#include <thread>
+#include <algorithm>
 
 #include "tests/cli/cli_test_util.h"
 
@@ -177,6 +179,99 @@ TEST(SweepCommand, ShardsMergeIntoTheFullTable) {
   fs::remove_all(out);
 }
 
+// A configuration that fails when it runs costs only its own row: the others are written, its row
+// carries the error (empty CSV fields, a section of sweep.html), and the command exits 2 naming it.
+// `rpt merge` carries the row over and exits 2 too.
+TEST(SweepCommand, AFailingConfigurationKeepsTheOthersRows) {
+  const fs::path out = test::TempDir("sweep_failing");
+  const std::string grid = "--dataset synthetic --param frames=5 --grid triangulate.max_persons_per_view=100,1,102";
+  const test::CommandResult r = test::RunRpt("sweep " + grid + " --out " + (out / "s").string());
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("error: --grid (configuration 'triangulate.max_persons_per_view=1', 2 of the sweep): synthetic: "),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("1 of 3 configurations failed to run (above); the others ran"), std::string::npos) << r.err;
+  const nlohmann::json sweep = ReadJson(out / "s" / "sweep.json");
+  ASSERT_EQ(sweep["rows"].size(), 3u);
+  EXPECT_FALSE(sweep["rows"][0].contains("error"));
+  EXPECT_GT(sweep["rows"][0]["summary"]["recall500"].get<double>(), 90.0);
+  EXPECT_NE(sweep["rows"][1]["error"].get<std::string>().find("above triangulate.max_persons_per_view (1)"),
+            std::string::npos);
+  EXPECT_TRUE(sweep["rows"][1]["summary"].empty());
+  EXPECT_EQ(sweep["rows"][2]["summary"]["recall500"], sweep["rows"][0]["summary"]["recall500"]);
+  const std::string csv = test::ReadAll(out / "s" / "sweep.csv");
+  EXPECT_NE(csv.find("\ntriangulate.max_persons_per_view=1,,,"), std::string::npos) << csv;
+  EXPECT_NE(test::ReadAll(out / "s" / "sweep.html").find("<h2>Failed configurations</h2>"), std::string::npos);
+  for (int k = 1; k <= 2; ++k) {
+    EXPECT_EQ(test::RunRpt("sweep " + grid + " --shard " + std::to_string(k) + "/2 --out " + (out / "sh").string()).exit_code,
+              k == 1 ? 0 : 2);
+  }
+  const test::CommandResult merged = test::RunRpt("merge " + (out / "sh" / "sweep-shard-1-of-2.json").string() + " " +
+                                                  (out / "sh" / "sweep-shard-2-of-2.json").string() + " --out " +
+                                                  (out / "m").string());
+  EXPECT_EQ(merged.exit_code, 2) << merged.err;
+  EXPECT_NE(merged.err.find("error: configuration 'triangulate.max_persons_per_view=1', 2 of the sweep: synthetic: "),
+            std::string::npos)
+      << merged.err;
+  EXPECT_EQ(ReadJson(out / "m" / "sweep.json")["rows"][1]["error"], sweep["rows"][1]["error"]);
+  fs::remove_all(out);
+}
+
+// --shard 1/1 writes its shard file (a job array of one task merges as any other); --threads is
+// recorded as used; a merge of shards of two builds fails with --strict; a file whose rows are not
+// those of its "shard" is refused.
+TEST(SweepCommand, ShardFilesThreadsAndStrictMerge) {
+  const fs::path out = test::TempDir("sweep_shard_one");
+  const std::string grid = "--dataset synthetic --param frames=5 --grid merge.top_k=0,3,5";
+  const test::CommandResult one = test::RunRpt("sweep " + grid + " --shard 1/1 --threads 2 --out " + out.string());
+  ASSERT_EQ(one.exit_code, 0) << one.err;
+  EXPECT_TRUE(fs::exists(out / "sweep-shard-1-of-1.json"));
+  EXPECT_FALSE(fs::exists(out / "sweep.json"));
+  EXPECT_NE(one.err.find("tables in " + out.string() + "/sweep-shard-1-of-1."), std::string::npos)
+      << "where the tables went is a status line (stderr): " << one.err;
+  EXPECT_EQ(one.out.find("tables in"), std::string::npos) << one.out;
+  const nlohmann::json shard = ReadJson(out / "sweep-shard-1-of-1.json");
+  EXPECT_EQ(shard["run"]["threads"], std::min(2u, std::max(1u, std::thread::hardware_concurrency())));
+  ASSERT_EQ(test::RunRpt("merge " + (out / "sweep-shard-1-of-1.json").string() + " --out " + out.string()).exit_code, 0);
+  EXPECT_EQ(ReadJson(out / "sweep.json")["rows"].size(), 3u);
+
+  for (int k = 1; k <= 3; ++k) {
+    ASSERT_EQ(test::RunRpt("sweep " + grid + " --shard " + std::to_string(k) + "/3 --out " + out.string()).exit_code, 0);
+  }
+  nlohmann::json other_build = ReadJson(out / "sweep-shard-3-of-3.json");
+  other_build["run"]["git_revision"] = "0123456789ab";
+  std::ofstream(out / "other_build.json") << other_build.dump();
+  const std::string first_two =
+      (out / "sweep-shard-1-of-3.json").string() + " " + (out / "sweep-shard-2-of-3.json").string() + " ";
+  EXPECT_EQ(test::RunRpt("merge " + first_two + (out / "other_build.json").string() + " --out " + (out / "m").string())
+                .exit_code,
+            0);
+  const test::CommandResult strict =
+      test::RunRpt("merge " + first_two + (out / "other_build.json").string() + " --strict --out " + (out / "m").string());
+  EXPECT_EQ(strict.exit_code, 2);
+  EXPECT_NE(strict.err.find("different revisions of rpt"), std::string::npos) << strict.err;
+  nlohmann::json renamed = ReadJson(out / "sweep-shard-3-of-3.json");
+  renamed["shard"] = "2/3";
+  std::ofstream(out / "renamed.json") << renamed.dump();
+  const test::CommandResult wrong = test::RunRpt("merge " + (out / "sweep-shard-1-of-3.json").string() + " " +
+                                                 (out / "renamed.json").string() + " --out " + (out / "m").string());
+  EXPECT_EQ(wrong.exit_code, 2);
+  EXPECT_NE(wrong.err.find("renamed.json: /rows/0/index: configuration 3 is not one of shard 2/3"), std::string::npos)
+      << wrong.err;
+  fs::remove_all(out);
+}
+
+// --seed seeds the simulated detector only: without --simulate it changed nothing, silently.
+TEST(EvalCommand, SeedWithoutSimulateIsRefused) {
+  const test::CommandResult r = test::RunRpt("eval --dataset synthetic --param frames=2 --seed 5 --quiet");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--seed seeds the simulated detector: it needs --simulate"), std::string::npos) << r.err;
+  EXPECT_EQ(test::RunRpt("eval --dataset synthetic --param frames=2 --simulate --seed 5 --quiet --out " +
+                         (test::TempDir("seeded") / "out").string())
+                .exit_code,
+            0);
+}
+
 // A dataset read from disk without --root says what is missing (it said "root '' is not a directory").
 TEST(EvalCommand, ADatasetWithoutRootSaysSo) {
   const test::CommandResult r = test::RunRpt("eval --dataset mvor");
@@ -214,7 +309,7 @@ TEST(SweepCommand, ListFileTyposNameTheFileAndTheConfiguration) {
   const test::CommandResult fails =
       run(R"([{"name": "ok"}, {"name": "bad joints", "set": {"triangulate.core_joints": ["foo", "bar", "baz"]}}])");
   EXPECT_EQ(fails.exit_code, 2);
-  EXPECT_NE(fails.err.find("list.json: /1 (configuration 'bad joints'): triangulate.core_joints: joint 'foo'"),
+  EXPECT_NE(fails.err.find("list.json: /1 (configuration 'bad joints', 2 of the sweep): triangulate.core_joints: joint 'foo'"),
             std::string::npos)
       << fails.err;
   const test::CommandResult grid =

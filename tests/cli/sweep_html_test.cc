@@ -235,7 +235,7 @@ TEST(SweepHtml, WrittenBySweepAndMergeWithDeltasMatchingSweepJson) {
       "--dataset synthetic --param frames=20 --grid filter.min_match_score=0.95,0.7 --out " + out.string();
   const test::CommandResult r = test::RunRpt("sweep " + grid);
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.out.find("sweep.{json,csv,md,html}"), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find("sweep.{json,csv,md,html}"), std::string::npos) << r.err;
   const nlohmann::json sweep = ReadJson(out / "sweep.json");
   ASSERT_EQ(sweep["rows"].size(), 2u);
   EXPECT_FALSE(sweep["rows"][0]["default"].get<bool>());
