@@ -276,9 +276,11 @@ void RegisterBenchCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand("bench", "Single-threaded speed on the benchmark scenes, with a baseline");
   command->add_option("--scene", args->scenes, "scene name (repeatable; default: the standard scenes)")->take_all();
   command->add_flag("--scaling", args->scaling, "the scaling series over cameras (2..31) and people (1..20)");
-  command->add_option("--frames", args->frames, "frames per scene (default: the scene's)");
+  command->add_option("--frames", args->frames, "frames per scene (default: the scene's)")->check(CLI::Range(1, 1000000));
   command->add_option("--repeat", args->repeat, "timed passes over the frames")->check(CLI::Range(1, 1000))->capture_default_str();
-  command->add_option("--baseline-frames", args->baseline_frames, "frames for the baseline")->capture_default_str();
+  command->add_option("--baseline-frames", args->baseline_frames, "frames for the baseline (none: --no-baseline)")
+      ->check(CLI::Range(1, 1000000))
+      ->capture_default_str();
   command->add_flag("--no-baseline", args->no_baseline, "skip the baseline");
   command->add_option("--detector", args->detector,
                       "simulated detector profile of the scenes (clean: the workload of results/bench.md)")

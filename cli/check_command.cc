@@ -14,6 +14,7 @@
 
 #include "core/printable_text.h"
 #include "datasets/io/json_output.h"
+#include "datasets/io/staged_output.h"
 #include "cli/commands.h"
 #include "engine/outputs/junit_xml.h"
 #include "cli/input_options.h"
@@ -50,14 +51,17 @@ std::string CheckName(const engine::ThresholdCheck& check) {
 // Per evaluation outcome: every check passes, fails, errors or is skipped.
 class CheckReport {
  public:
+  // The table and totals go to `table` (stdout; stderr with --json, whose JSON is then stdout's only content).
+  explicit CheckReport(std::FILE* table) : table_(table) {}
+
   void Checked(const engine::ThresholdEvaluation& e, const engine::ThresholdCheck& check, double achieved, bool pass) {
     ++checked_;
     failures_ += pass ? 0 : 1;
-    std::printf("%-*s %-22s %6s %10.2f %10.2f  %s\n", name_width_, Shown(e.name).c_str(), Shown(check.metric).c_str(),
-                Shown(check.bound).c_str(), check.limit, achieved, pass ? "ok" : "FAILED");
+    std::fprintf(table_, "%-*s %-22s %6s %10.2f %10.2f  %s\n", name_width_, Shown(e.name).c_str(),
+                 Shown(check.metric).c_str(), Shown(check.bound).c_str(), check.limit, achieved, pass ? "ok" : "FAILED");
     json_.push_back({{"evaluation", e.name}, {"metric", check.metric}, {"bound", check.bound},
                      {"expected", check.limit}, {"achieved", std::isnan(achieved) ? Json(nullptr) : Json(achieved)},
-                     {"pass", pass}});
+                     {"status", pass ? "pass" : "fail"}, {"pass", pass}});
     char message[128];
     std::snprintf(message, sizeof(message), "expected %s %g, achieved %.4g", check.bound == "min" ? ">=" : "<=",
                   check.limit, achieved);
@@ -68,17 +72,19 @@ class CheckReport {
   void Skipped(const engine::ThresholdEvaluation& e, bool as_failure) {
     ++skipped_;
     const std::string why = e.required_path + " absent";
-    std::printf("%-*s %-22s %6s %10s %10s  %s (%s)\n", name_width_, Shown(e.name).c_str(), "-", "-", "-", "-",
-                as_failure ? "SKIPPED, failing" : "skipped", Shown(why).c_str());
+    std::fprintf(table_, "%-*s %-22s %6s %10s %10s  %s (%s)\n", name_width_, Shown(e.name).c_str(), "-", "-", "-", "-",
+                 as_failure ? "SKIPPED, failing" : "skipped", Shown(why).c_str());
+    AddJson(e, "skip", why, !as_failure);
     AddCases(e, as_failure ? engine::JunitCase::Outcome::kFailure : engine::JunitCase::Outcome::kSkipped,
              as_failure ? "skipped (" + why + "), --fail-on-skip" : "skipped (" + why + ")");
   }
 
   void Errored(const engine::ThresholdEvaluation& e, const std::string& what) {
     ++errored_;
-    std::printf("%-*s %-22s %6s %10s %10s  ERROR: %s\n", name_width_, Shown(e.name).c_str(), "-", "-", "-", "-",
-                PrintableText(what).c_str());
-    json_.push_back({{"evaluation", e.name}, {"error", what}, {"pass", false}});
+    // One table line, whatever the message (a --strict error lists its warnings on several lines).
+    std::fprintf(table_, "%-*s %-22s %6s %10s %10s  ERROR: %s\n", name_width_, Shown(e.name).c_str(), "-", "-", "-", "-",
+                 Shown(what).c_str());
+    AddJson(e, "error", what, false);
     AddCases(e, engine::JunitCase::Outcome::kError, what);
   }
 
@@ -89,22 +95,28 @@ class CheckReport {
       name_width_ = std::max(name_width_, std::min(100, static_cast<int>(Shown(e.name).size())));
   }
   void PrintHeader() const {
-    std::printf("%-*s %-22s %6s %10s %10s  %s\n", name_width_, "evaluation", "metric", "bound", "expected", "achieved",
-                "status");
+    std::fprintf(table_, "%-*s %-22s %6s %10s %10s  %s\n", name_width_, "evaluation", "metric", "bound", "expected",
+                 "achieved", "status");
   }
 
   void PrintTotals(bool fail_on_skip) const {
-    std::printf("%d checks, %d failed, %d evaluations skipped", checked_, failures_, skipped_);
+    std::fprintf(table_, "%d checks, %d failed, %d evaluations skipped", checked_, failures_, skipped_);
     // A misspelt root is skipped like data that is absent on purpose: say how to make it count.
-    if (skipped_ > 0 && !fail_on_skip) std::printf(" (their data is absent; --fail-on-skip fails them)");
-    if (errored_ > 0) std::printf(", %d evaluations failed to run", errored_);
-    std::printf("\n");
+    if (skipped_ > 0 && !fail_on_skip) std::fprintf(table_, " (their data is absent; --fail-on-skip fails them)");
+    if (errored_ > 0) std::fprintf(table_, ", %d evaluations failed to run", errored_);
+    std::fprintf(table_, "\n");
   }
 
   int ExitCode(bool fail_on_skip) const {
     return failures_ > 0 || errored_ > 0 || (fail_on_skip && skipped_ > 0) ? 1 : 0;
   }
-  const Json& json() const { return json_; }
+  // What --json prints: every check (status pass / fail), every evaluation skipped or failed to run
+  // (status skip / error, with its checks), the totals and the exit code.
+  Json json(bool fail_on_skip) const {
+    return {{"checks", json_},
+            {"totals", {{"checks", checked_}, {"failed", failures_}, {"skipped", skipped_}, {"errors", errored_}}},
+            {"exit_code", ExitCode(fail_on_skip)}};
+  }
   const std::vector<engine::JunitCase>& cases() const { return cases_; }
 
  private:
@@ -114,6 +126,23 @@ class CheckReport {
     for (const engine::ThresholdCheck& check : e.checks) cases_.push_back({e.name, CheckName(check), outcome, message});
   }
 
+  // One JSON entry per check of an evaluation that did not produce numbers (metric null when it has none).
+  void AddJson(const engine::ThresholdEvaluation& e, const char* status, const std::string& message, bool pass) {
+    const auto entry = [&](const engine::ThresholdCheck* check) {
+      json_.push_back({{"evaluation", e.name},
+                       {"metric", check ? Json(check->metric) : Json(nullptr)},
+                       {"bound", check ? Json(check->bound) : Json(nullptr)},
+                       {"expected", check ? Json(check->limit) : Json(nullptr)},
+                       {"achieved", nullptr},
+                       {"status", status},
+                       {"pass", pass},
+                       {"message", message}});
+    };
+    if (e.checks.empty()) entry(nullptr);
+    for (const engine::ThresholdCheck& check : e.checks) entry(&check);
+  }
+
+  std::FILE* table_;
   int checked_ = 0, failures_ = 0, skipped_ = 0, errored_ = 0;
   int name_width_ = 40;
   Json json_ = Json::array();
@@ -165,7 +194,10 @@ int RunCheck(const CheckArgs& args) {
       // Bad data, not a bad file: reported in the table when the evaluation runs.
     }
   }
-  CheckReport report;
+  // The JUnit file's folder is checked before anything runs: a typo there cost the whole run and
+  // turned a regression (exit 1) into exit 2.
+  if (!args.junit.empty()) io::StagedFile probe(args.junit, io::NamedBy::kUser);
+  CheckReport report(args.json ? stderr : stdout);
   // Evaluations often read the same files: one line per file and kind for the whole check.
   InputWarnings warnings;
   report.FitNames(file.evaluations);
@@ -186,7 +218,7 @@ int RunCheck(const CheckArgs& args) {
   std::fflush(stdout);  // the table first, then the readers' corrections (stderr)
   PrintInputWarnings(warnings);
   report.PrintTotals(args.fail_on_skip);
-  if (args.json) std::cout << io::DumpJson(report.json(), 2) << "\n";
+  if (args.json) std::cout << io::DumpJson(report.json(args.fail_on_skip), 2) << "\n";
   if (!args.junit.empty()) engine::WriteJunitXml(args.junit, "rpt check " + args.thresholds, report.cases());
   return report.ExitCode(args.fail_on_skip);
 }
@@ -198,7 +230,9 @@ void RegisterCheckCommand(CLI::App& app, int* exit_code) {
   CLI::App* command = app.add_subcommand("check", "Re-run the evaluations of a thresholds file; exit 1 on a regression");
   command->add_option("--thresholds", args->thresholds, "thresholds JSON (e.g. results/thresholds.json)")->required();
   command->add_option("--only", args->only, "only evaluations whose name contains this text");
-  command->add_flag("--json", args->json, "also print the checks as JSON");
+  command->add_flag("--json", args->json,
+                    "print the checks as JSON on stdout (every check, skip and error with its status, the totals, "
+                    "the exit code); the table goes to stderr");
   command->add_flag("--fail-on-skip", args->fail_on_skip,
                     "evaluations skipped for missing data count as failures (exit 1)");
   command->add_flag("--strict", args->strict,

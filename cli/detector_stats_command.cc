@@ -89,17 +89,19 @@ void RunComparison(const DetectorStatsArgs& args) {
       if (args.compare[i] == args.compare[k]) throw ConfigError("--compare lists " + QuoteName(args.compare[i]) + " twice");
     }
   }
+  engine::InputSpec input = args.input;
+  input.seed_given = false;  // --seed seeds the profiles simulated here, not the input
   InputWarnings input_warnings;
-  const std::vector<Sequence> sequences = engine::LoadInput(args.input, {}, &input_warnings);
+  const std::vector<Sequence> sequences = engine::LoadInput(input, {}, &input_warnings);
   PrintInputWarnings(input_warnings);
   std::vector<engine::DetectorStatsColumn> columns;
   std::vector<engine::InputSpec> inputs;
-  columns.push_back({InputColumnName(args.input), ComputeStats(sequences, args)});
-  inputs.push_back(args.input);
+  columns.push_back({InputColumnName(input), ComputeStats(sequences, args)});
+  inputs.push_back(input);
   for (const std::string& profile : args.compare) {
     // The input as `--simulate --detector PROFILE` would give it (--simulate-perfect is refused
     // above): simulated and described from the same options.
-    engine::InputSpec described = args.input;
+    engine::InputSpec described = input;
     described.simulate = true;
     described.detector = profile;
     described.detections.clear();

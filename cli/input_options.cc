@@ -127,7 +127,9 @@ void AddInputOptions(CLI::App* command, engine::InputSpec* spec) {
       ->check(CLI::IsMember(synthetic::DetectorProfileNames()));
   command->add_flag("--simulate-perfect", spec->simulate_perfect,
                     "deprecated: same as --detector perfect (exact projections, no noise)");
-  command->add_option("--seed", spec->seed, "seed of the simulated detector")->capture_default_str();
+  command->add_option("--seed", spec->seed, "with --simulate: seed of the simulated detector")
+      ->capture_default_str()
+      ->each([spec](const std::string&) { spec->seed_given = true; });
   AddStrictOption(command, spec);
 }
 

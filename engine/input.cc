@@ -44,6 +44,10 @@ void CheckInputSpec(const InputSpec& spec) {
     throw ConfigError(std::string(spec.simulate_perfect ? "--simulate-perfect" : "--detector") +
                       " needs --simulate (the synthetic dataset takes --param noise=PROFILE)");
   }
+  if (!spec.simulate && spec.seed_given) {
+    throw ConfigError("--seed seeds the simulated detector: it needs --simulate (the synthetic dataset's own "
+                      "detections take --param seed=N)");
+  }
   if (spec.simulate_perfect && !spec.detector.empty() && spec.detector != "perfect") {
     throw ConfigError("--simulate-perfect (deprecated) contradicts --detector " + spec.detector);
   }

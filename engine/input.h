@@ -39,6 +39,9 @@ struct InputSpec {
   bool simulate_perfect = false;    // deprecated alias of detector = "perfect"
   std::string detector;             // simulated detector profile; empty = realistic
   uint64_t seed = 1;                // of the simulated detector
+  // --seed (a thresholds file's "seed") was given: without --simulate it seeds nothing, an error
+  // (detector-stats --compare, which simulates itself, clears it).
+  bool seed_given = false;
   bool strict = false;              // unused input is an error (CheckStrict)
   // false: only the detections are wanted (rpt triangulate): readers go without their GT files
   // (DatasetRequest::ground_truth) and frames carry no persons.

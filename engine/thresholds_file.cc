@@ -92,6 +92,7 @@ ThresholdEvaluation ReadEvaluation(const Validator& v, const Json& e, const std:
   evaluation.json_path = where;
   if (!e.contains("name")) v.Fail(where, "missing \"name\"");
   evaluation.name = v.String(e, "name", where);
+  if (evaluation.name.empty()) v.Fail(where + "/name", "empty (the name tells the evaluation apart in the table and JUnit)");
   v.String(e, "description", where);
 
   InputSpec& input = evaluation.input;
@@ -120,6 +121,7 @@ ThresholdEvaluation ReadEvaluation(const Validator& v, const Json& e, const std:
       v.Fail(where + "/seed", "expected a non-negative integer, got " + Validator::Describe(e["seed"]));
     }
     input.seed = e["seed"].get<uint64_t>();
+    input.seed_given = true;
   }
   const std::vector<std::string> param_names = DatasetParamNames(input.dataset);
   for (const auto& [key, value] : v.Object(e, "params", where).items()) {
@@ -191,6 +193,8 @@ const std::vector<std::string>& ThresholdMetricNames() {
     std::vector<std::string> out;
     for (const SummaryColumn& column : SummaryColumns()) out.push_back(column.key);
     out.push_back("legacy_pcp");
+    // What the metrics leave out (summary.json; metrics.md): a gate can bound them too.
+    for (const char* count : {"dropped_gt_persons", "missing_pred_joints", "unaligned_matches"}) out.push_back(count);
     return out;
   }();
   return names;

@@ -17,10 +17,10 @@ std::string JunitXml(const std::string& suite_name, const std::vector<JunitCase>
   const std::string counts = " tests=\"" + std::to_string(cases.size()) + "\" failures=\"" + std::to_string(failures) +
                              "\" errors=\"" + std::to_string(errors) + "\" skipped=\"" + std::to_string(skipped) + "\"";
   std::string xml = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-  xml += "<testsuites name=\"" + XmlText(suite_name) + "\"" + counts + ">\n";
-  xml += "  <testsuite name=\"" + XmlText(suite_name) + "\"" + counts + ">\n";
+  xml += "<testsuites name=\"" + XmlAttributeText(suite_name) + "\"" + counts + ">\n";
+  xml += "  <testsuite name=\"" + XmlAttributeText(suite_name) + "\"" + counts + ">\n";
   for (const JunitCase& c : cases) {
-    xml += "    <testcase classname=\"" + XmlText(c.classname) + "\" name=\"" + XmlText(c.name) + "\"";
+    xml += "    <testcase classname=\"" + XmlAttributeText(c.classname) + "\" name=\"" + XmlAttributeText(c.name) + "\"";
     const char* element = c.outcome == JunitCase::Outcome::kFailure ? "failure"
                           : c.outcome == JunitCase::Outcome::kError ? "error"
                           : c.outcome == JunitCase::Outcome::kSkipped ? "skipped"
@@ -29,7 +29,7 @@ std::string JunitXml(const std::string& suite_name, const std::vector<JunitCase>
       xml += "/>\n";
       continue;
     }
-    xml += ">\n      <" + std::string(element) + " message=\"" + XmlText(c.message) + "\"/>\n    </testcase>\n";
+    xml += ">\n      <" + std::string(element) + " message=\"" + XmlAttributeText(c.message) + "\"/>\n    </testcase>\n";
   }
   xml += "  </testsuite>\n</testsuites>\n";
   return xml;

@@ -26,6 +26,7 @@ using OrderedJson = nlohmann::ordered_json;
 
 OrderedJson Number(double value) { return std::isfinite(value) ? OrderedJson(value) : OrderedJson(nullptr); }
 
+// A value for the tables: "-" when undefined (null), the CSVs use CsvCell.
 std::string Cell(const OrderedJson& value, int decimals = 1) {
   if (value.is_null()) return "-";
   if (value.is_number_integer()) return std::to_string(value.get<long>());
@@ -36,6 +37,10 @@ std::string Cell(const OrderedJson& value, int decimals = 1) {
   }
   return value.is_string() ? value.get<std::string>() : value.dump();
 }
+
+// A value for a CSV file: an undefined one (null in the JSON) is an empty field, which pandas and
+// spreadsheets read as missing ("-" made float() fail).
+std::string CsvCell(const OrderedJson& value, int decimals) { return value.is_null() ? "" : Cell(value, decimals); }
 
 // "legacy_pcp_actor1" for actor id 0: the papers number Shelf/Campus actors from 1.
 std::string LegacyPcpActorKey(int actor_id) { return "legacy_pcp_actor" + std::to_string(actor_id + 1); }
@@ -233,8 +238,8 @@ std::string SummaryCsv(const std::vector<std::pair<std::string, OrderedJson>>& r
   out << "\n";
   for (const auto& [label, j] : rows) {
     out << CsvField(label);
-    for (const SummaryColumn& c : SummaryColumns()) out << "," << (j.contains(c.key) ? Cell(j[c.key], 4) : "");
-    for (const std::string& key : legacy) out << "," << (j.contains(key) ? Cell(j[key], 4) : "");
+    for (const SummaryColumn& c : SummaryColumns()) out << "," << (j.contains(c.key) ? CsvCell(j[c.key], 4) : "");
+    for (const std::string& key : legacy) out << "," << (j.contains(key) ? CsvCell(j[key], 4) : "");
     out << "\n";
   }
   return out.str();
@@ -366,7 +371,7 @@ void WriteRunFiles(const std::filesystem::path& staging, const std::filesystem::
   std::ostringstream joints;
   joints << "joint,mean_error_mm,pck100_pct,count,num_gt\n";
   for (const auto& row : run.metrics.joints) {
-    joints << CsvField(row.name) << "," << Cell(Number(row.mean_error_mm), 2) << "," << Cell(Number(row.pck_100), 2) << ","
+    joints << CsvField(row.name) << "," << CsvCell(Number(row.mean_error_mm), 2) << "," << CsvCell(Number(row.pck_100), 2) << ","
            << row.count << "," << row.num_gt << "\n";
   }
   io::WriteTextFile(staging / "per_joint.csv", io::NamedBy::kRpt, joints.str());

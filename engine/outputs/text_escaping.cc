@@ -137,4 +137,20 @@ std::string XmlText(std::string_view text) {
   return MarkupEntities(PrintableText(io::ValidUtf8(std::string(text)), LineBreaks::kKeep));
 }
 
+std::string XmlAttributeText(std::string_view text) {
+  std::string out;
+  for (const char c : XmlText(text)) {
+    if (c == '\n') {
+      out += "&#10;";
+    } else if (c == '\r') {
+      out += "&#13;";
+    } else if (c == '\t') {
+      out += "&#9;";
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
 }  // namespace rpt::engine

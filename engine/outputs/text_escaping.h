@@ -48,4 +48,8 @@ std::string MarkdownCode(std::string_view text);
 // \xNN (PrintableText), & < > " ' as entities.
 std::string XmlText(std::string_view text);
 
+// XmlText for a quoted attribute value: tab, newline and carriage return as character references
+// too (a parser turns them into spaces otherwise: a multi-line message lost its line breaks).
+std::string XmlAttributeText(std::string_view text);
+
 }  // namespace rpt::engine

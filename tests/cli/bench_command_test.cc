@@ -46,6 +46,13 @@ TEST(BenchCommand, ReportsStepsAccuracyAndBaseline) {
     EXPECT_EQ(line.back(), '-') << line;
   }
   EXPECT_EQ(test::RunRpt("bench --scene nosuch").exit_code, 2);
+  // Counts below 1 were read as "the scene's frames" (0, -5) or as a baseline of 0 frames (a 0.0x
+  // speed-up): refused, a baseline is left out with --no-baseline.
+  for (const char* bad : {"--frames 0", "--frames -5", "--baseline-frames 0", "--baseline-frames -3"}) {
+    const test::CommandResult r = test::RunRpt(std::string("bench --scene few-views --repeat 1 ") + bad);
+    EXPECT_EQ(r.exit_code, 2) << bad;
+    EXPECT_NE(r.err.find("not in range 1 to"), std::string::npos) << bad << ": " << r.err;
+  }
 }
 
 // rpt bench --follow: each scene with numbers at full precision and with 3 decimals, each with the

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "engine/outputs/junit_xml.h"
@@ -175,6 +176,47 @@ TEST_F(CheckCommandTest, JunitHasOneWellFormedTestcasePerCheck) {
   EXPECT_NE(suite.children[4].children[0].attributes.at("message").find("broken_labels.json"), std::string::npos);
 }
 
+// --json: stdout is one JSON document (the table goes to stderr) with every check, skip and
+// error, the totals and the exit code; the JUnit file's folder is checked before anything runs;
+// an empty name is refused.
+TEST_F(CheckCommandTest, JsonIsTheWholeStdoutAndListsSkipsAndErrors) {
+  std::ofstream(dir_ / "broken_labels.json") << "{ not json";
+  const std::string json = std::string(R"({"evaluations": [)") + kTinyEvaluation +
+                           R"(, {"name": "absent data", "dataset": "shelf", "root": "no/such/folder",
+                               "simulate": true, "min": {"pcp": 1}},
+                              {"name": "broken", "labels": "broken_labels.json", "simulate": true,
+                               "min": {"pcp": 1}, "max": {"mpjpe_mm": 100}}]})";
+  const CheckRun run = RunCheck(dir_, "thresholds.json", json, "--json");
+  EXPECT_EQ(run.result.exit_code, 1) << run.result.err;
+  const nlohmann::json result = nlohmann::json::parse(run.result.out);  // throws if the table were there too
+  EXPECT_EQ(result["exit_code"], 1);
+  EXPECT_EQ(result["totals"], nlohmann::json({{"checks", 1}, {"failed", 0}, {"skipped", 1}, {"errors", 1}}));
+  ASSERT_EQ(result["checks"].size(), 4u) << result.dump(1);
+  EXPECT_EQ(result["checks"][0]["status"], "pass");
+  EXPECT_EQ(result["checks"][0]["metric"], "recall500");
+  EXPECT_EQ(result["checks"][1]["status"], "skip");
+  EXPECT_EQ(result["checks"][1]["evaluation"], "absent data");
+  EXPECT_TRUE(result["checks"][1]["pass"].get<bool>()) << "a skip passes unless --fail-on-skip";
+  EXPECT_NE(result["checks"][1]["message"].get<std::string>().find("no/such/folder absent"), std::string::npos);
+  EXPECT_EQ(result["checks"][2]["status"], "error");
+  EXPECT_EQ(result["checks"][2]["metric"], "pcp");
+  EXPECT_EQ(result["checks"][3]["metric"], "mpjpe_mm");
+  EXPECT_FALSE(result["checks"][3]["pass"].get<bool>());
+  EXPECT_NE(run.result.err.find("1 checks, 0 failed, 1 evaluations skipped"), std::string::npos) << run.result.err;
+  const CheckRun failing_skip = RunCheck(dir_, "thresholds.json", json, "--json --fail-on-skip");
+  EXPECT_FALSE(nlohmann::json::parse(failing_skip.result.out)["checks"][1]["pass"].get<bool>());
+
+  const CheckRun junit = RunCheck(dir_, "thresholds.json", json, "--junit " + (dir_ / "no" / "such" / "j.xml").string());
+  EXPECT_EQ(junit.result.exit_code, 2);
+  EXPECT_NE(junit.result.err.find("j.xml: cannot open for writing"), std::string::npos) << junit.result.err;
+  EXPECT_EQ(junit.result.out.find("recall500"), std::string::npos) << "nothing ran: " << junit.result.out;
+
+  const CheckRun unnamed = RunCheck(dir_, "unnamed.json", R"({"evaluations": [{"name": "", "dataset": "synthetic",
+      "min": {"pcp": 1}}]})");
+  EXPECT_EQ(unnamed.result.exit_code, 2);
+  EXPECT_NE(unnamed.result.err.find("/evaluations/0/name: empty"), std::string::npos) << unnamed.result.err;
+}
+
 // Characters XML 1.0 forbids are written visibly as \xNN (XmlText), no longer dropped: a name
 // keeps telling two cases apart.
 TEST(JunitXml, EscapesMarkupAndShowsCharactersXmlForbids) {
@@ -186,6 +228,16 @@ TEST(JunitXml, EscapesMarkupAndShowsCharactersXmlForbids) {
   EXPECT_EQ(testcase.attributes.at("classname"), "a\\x01 \"b\"");
   EXPECT_EQ(testcase.attributes.at("name"), "c 'd' </testcase>");
   EXPECT_EQ(testcase.children.at(0).attributes.at("message"), "x < y && \\x1f z > w");
+}
+
+// A message of several lines (a --strict error lists its warnings) keeps its line breaks in the
+// attribute: written literally, a parser turns them into spaces.
+TEST(JunitXml, AttributesKeepLineBreaksAndTabs) {
+  const std::string xml = engine::JunitXml("s", {{"a\tb", "n", engine::JunitCase::Outcome::kError, "first\nsecond"}});
+  const test::XmlElement testcase = test::XmlReader::Parse(xml).children.at(0).children.at(0);
+  EXPECT_EQ(testcase.attributes.at("classname"), "a\tb");
+  EXPECT_EQ(testcase.children.at(0).attributes.at("message"), "first\nsecond");
+  EXPECT_EQ(xml.find("first\n"), std::string::npos) << xml;
 }
 
 TEST(XmlReader, RejectsMalformedXml) {

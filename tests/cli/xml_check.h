@@ -71,13 +71,32 @@ class XmlReader {
     if (pos_ == start) Fail("expected a name");
     return text_.substr(start, pos_ - start);
   }
-  // Characters up to `stop` (not consumed), entities decoded; '<' is an error.
-  std::string CharacterData(char stop, const char* where) {
+  // Characters up to `stop` (not consumed), entities and decimal character references (&#10;)
+  // decoded; '<' is an error. In an attribute value a literal tab, newline or carriage return
+  // becomes a space, as XML's attribute-value normalisation does (a line break survives only as
+  // a reference).
+  std::string CharacterData(char stop, const char* where, bool attribute = false) {
     std::string value;
     while (pos_ < text_.size() && text_[pos_] != stop) {
       const char c = text_[pos_];
       if (c == '<') Fail(std::string("'<' in ") + where);
       if (static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\n' && c != '\r') Fail("control character");
+      if (c == '&' && pos_ + 1 < text_.size() && text_[pos_ + 1] == '#') {
+        const size_t end = text_.find(';', pos_);
+        if (end == std::string::npos) Fail("unterminated character reference");
+        const std::string digits = text_.substr(pos_ + 2, end - pos_ - 2);
+        if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos) Fail("bad character reference");
+        const int code = std::stoi(digits);
+        if (code < 1 || code > 127) Fail("character reference outside ASCII (not needed by rpt)");
+        value += static_cast<char>(code);
+        pos_ = end + 1;
+        continue;
+      }
+      if (attribute && (c == '\t' || c == '\n' || c == '\r')) {
+        value += ' ';
+        ++pos_;
+        continue;
+      }
       if (c == '&') {
         static const std::map<std::string, char> entities = {
             {"amp", '&'}, {"lt", '<'}, {"gt", '>'}, {"quot", '"'}, {"apos", '\''}};
@@ -98,7 +117,7 @@ class XmlReader {
     const char quote = text_[pos_];
     if (quote != '"' && quote != '\'') Fail("expected a quoted value");
     ++pos_;
-    std::string value = CharacterData(quote, "an attribute value");
+    std::string value = CharacterData(quote, "an attribute value", /*attribute=*/true);
     Expect(quote);
     return value;
   }
