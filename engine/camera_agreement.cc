@@ -21,6 +21,10 @@ CameraAgreementCheck::CameraAgreementCheck(const SequenceHeader& header, const J
 
 void CameraAgreementCheck::Add(long index, const SequenceFrame& frame, const Poses3D& persons) {
   if (index % stride_ != 0 || frame.views.size() != header_.cameras.size()) return;
+  for (size_t c = 0; c < header_.cameras.size(); ++c) {
+    ++cameras_[c].frames;
+    cameras_[c].frames_with_detections += frame.views[c].num_persons() > 0 ? 1 : 0;
+  }
   const int num_joints = persons.num_joints;
   for (int p = 0; p < persons.num_persons(); ++p) {
     const auto person = persons.Person(p);
@@ -75,6 +79,14 @@ std::vector<std::string> CameraAgreementWarnings(const std::string& sequence, co
     if (camera.in_view < kMinAgreementPersons) continue;
     const double share = static_cast<double>(camera.agreeing) / static_cast<double>(camera.in_view);
     if (share >= kMinAgreementShare) continue;
+    if (camera.frames_with_detections == 0) {  // nothing to match: its detections are missing, not misplaced
+      lines.push_back(PrintableText(sequence + ", camera " + QuoteName(camera.camera) + ": no detections in any of the " +
+                                    std::to_string(camera.frames) + " frames compared, while " +
+                                    std::to_string(camera.in_view) +
+                                    " 3D persons were in its view: is its detector output missing, or its name "
+                                    "another camera's?"));
+      continue;
+    }
     lines.push_back(PrintableText(sequence + ", camera " + QuoteName(camera.camera) + ": only " +
                                   PercentText(share) + " of the " + std::to_string(camera.in_view) +
                                   " 3D persons in its view match its detections (expected most): is its calibration "

@@ -38,6 +38,8 @@ struct CameraAgreement {
   std::string camera;
   long in_view = 0;    // persons whose projected box centre is inside the image, in front of it
   long agreeing = 0;   // of those: with a detection within kAgreementDistance
+  long frames = 0;                  // frames compared
+  long frames_with_detections = 0;  // of those: with at least one detection of this camera
 };
 
 class CameraAgreementCheck {

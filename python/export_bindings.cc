@@ -6,6 +6,7 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -79,6 +80,28 @@ struct ExportSinks {
   }
 };
 
+// The TRC files an earlier write left in `trc_dir` (links too, never what they point to): a
+// second write of a notebook cell kept the first run's det_track0.trc beside this run's tracks.
+// Only rpt's *.trc files go; a `trc_dir` that is a link is left to the writer (it replaces it).
+void RemoveEarlierTrcFiles(const std::filesystem::path& trc_dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::is_directory(fs::symlink_status(trc_dir, ec))) return;
+  std::vector<fs::path> earlier;
+  for (const fs::directory_entry& entry : fs::directory_iterator(trc_dir, ec)) {
+    const fs::file_status status = entry.symlink_status(ec);
+    if (entry.path().extension() == ".trc" && (fs::is_regular_file(status) || fs::is_symlink(status))) {
+      earlier.push_back(entry.path());
+    }
+  }
+  if (ec) throw InputError(trc_dir.string() + ": cannot list the earlier TRC files (" + ec.message() + ")");
+  for (const fs::path& path : earlier) {
+    if (!fs::remove(path, ec) && ec) {
+      throw InputError(path.string() + ": cannot remove the earlier run's TRC file (" + ec.message() + ")");
+    }
+  }
+}
+
 std::vector<std::filesystem::path> Write(const std::filesystem::path& dir, py::handle predictions, py::handle formats,
                                          bool filled_joints, const std::string& trc_axes, const std::string& trc_units,
                                          const std::string& run_id) {
@@ -106,6 +129,9 @@ std::vector<std::filesystem::path> Write(const std::filesystem::path& dir, py::h
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) throw InputError(dir.string() + ": cannot create the folder (" + ec.message() + ")");
+  if (std::find(options.formats.begin(), options.formats.end(), engine::ExportFormat::kTrc) != options.formats.end()) {
+    RemoveEarlierTrcFiles(dir / "trc");
+  }
   ExportSinks sinks(dir, run_id, static_cast<int>(runs.size()), options);
   engine::SinkList sink(sinks.all);
   for (size_t s = 0; s < runs.size(); ++s) {

@@ -18,6 +18,7 @@
 #include "core/pipeline/offline_smoother.h"
 #include "core/pipeline/triangulator.h"
 #include "core/printable_text.h"
+#include "datasets/input_warnings.h"
 #include "datasets/readers/generic_common.h"
 #include "engine/frame_time_check.h"
 #include "engine/input.h"
@@ -45,7 +46,11 @@ double TimeOf(py::handle timestamp) {
                          py::str(py::type::of(timestamp).attr("__name__")).cast<std::string>());
   }
   const double t = timestamp.attr("__float__")().cast<double>();
-  if (std::isinf(t)) throw py::value_error("timestamp: must be finite seconds, or None (unknown)");
+  // NaN too: a clock that fails now and then (a division by a zero frame rate) would turn tracking
+  // off on those frames unseen; "unknown" is said with None.
+  if (!std::isfinite(t)) {
+    throw py::value_error("timestamp: must be finite seconds, or None (unknown); got " + std::string(std::isnan(t) ? "nan" : "inf"));
+  }
   return t;
 }
 
@@ -54,6 +59,18 @@ bool IsViewsAndTime(py::handle item) {
   if (!py::isinstance<py::tuple>(item) || py::len(item) != 2) return false;
   const py::handle second = py::reinterpret_borrow<py::tuple>(item)[1];
   return second.is_none() || py::isinstance<py::float_>(second) || py::isinstance<py::int_>(second);
+}
+
+// Scores a little above 1 (a detector's 1.02) are clamped to 1 and counted under `source`, as the
+// file readers and the live input do (AcceptScore); other scores outside [0, 1] are left for
+// ValidateFrame to refuse.
+void ClampScoreOvershoot(const std::string& source, std::vector<Poses2D>* views, InputWarnings* warnings) {
+  for (Poses2D& view : *views) {
+    for (size_t i = 2; i < view.data.size(); i += 3) {
+      double& score = view.data[i];
+      if (score > 1.0 && score <= kMaxScoreOvershoot) score = AcceptScoreSlow(score, source, warnings, source);
+    }
+  }
 }
 
 py::dict StatsDict(const FrameStats& stats) {
@@ -93,6 +110,9 @@ class PyTriangulator {
     frame_.timestamp_s = TimeOf(timestamp);
     frame_.id = std::to_string(calls_);
     ViewsFromPython(views, num_cameras(), num_joints(), &frame_.views);
+    InputWarnings clamped;  // allocates nothing unless a score is clamped
+    ClampScoreOvershoot("Triangulator.process", &frame_.views, &clamped);
+    if (!clamped.empty()) WarnInput(engine::InputWarningLines(clamped));
     ValidateFrame(header_, frame_, "Triangulator.process");
     {
       py::gil_scoped_release release;
@@ -128,6 +148,7 @@ class PyTriangulator {
   Predictions ProcessFrames(const py::iterable& frames) {
     std::unique_lock lock = Lock();
     std::vector<SequenceFrame> converted;
+    InputWarnings clamped;
     for (py::handle item : frames) {
       SequenceFrame& frame = converted.emplace_back();
       const std::string where = "frames[" + std::to_string(converted.size() - 1) + "]";
@@ -146,11 +167,12 @@ class PyTriangulator {
       } else {
         ViewsFromPython(item, num_cameras(), num_joints(), &frame.views);
       }
+      ClampScoreOvershoot("process_sequence", &frame.views, &clamped);
       ValidateFrame(header_, frame, "process_sequence: " + where);
     }
     if (converted.empty()) throw py::value_error("process_sequence: no frames");
     Predictions out = Begin(header_.name, header_.fps);
-    InputWarnings warnings;
+    InputWarnings warnings = std::move(clamped);
     {
       py::gil_scoped_release release;
       Run(converted, &out, &warnings);
@@ -281,6 +303,14 @@ std::vector<Camera> CamerasOf(py::handle cameras) {
     out.push_back(camera.cast<Camera>());
   }
   if (out.empty()) throw py::value_error("cameras: empty list");
+  // As every calibration reader and cameras.save: a camera appended twice gave no persons, unsaid.
+  for (size_t i = 0; i < out.size(); ++i) {
+    for (size_t k = 0; k < i; ++k) {
+      if (out[i].name != out[k].name) continue;
+      throw InputError("cameras: camera name " + QuoteName(out[i].name) + " appears twice (cameras[" +
+                       std::to_string(k) + "] and cameras[" + std::to_string(i) + "])");
+    }
+  }
   return out;
 }
 

@@ -40,13 +40,19 @@ CalibrationFormat DetectJson(const fs::path& path) {
     }
     return CalibrationFormat::kJson;
   }
+  // OpenCV FileStorage written as JSON (cv::FileStorage("x.json", WRITE)): matrices are objects
+  // tagged "type_id": "opencv-matrix".
+  for (const auto& [key, value] : root.items()) {
+    if (value.is_object() && value.value("type_id", nlohmann::json()) == "opencv-matrix") return CalibrationFormat::kOpenCV;
+  }
   const nlohmann::json& first = root.begin().value();
   if (first.is_object() && first.contains("fx")) return CalibrationFormat::kVoxelPose;
   if (first.is_object() && (first.contains("imgSize") || first.contains("RT"))) return CalibrationFormat::kFourDa;
   throw InputError(
       path.string() +
       ": cannot tell which calibration JSON this is: expected \"cameras\" (ours, Panoptic), "
-      "or cameras keyed by id with \"fx\" (VoxelPose) or \"imgSize\" / \"RT\" (4D-Association); set the format");
+      "cameras keyed by id with \"fx\" (VoxelPose) or \"imgSize\" / \"RT\" (4D-Association), or OpenCV "
+      "FileStorage matrices (\"type_id\": \"opencv-matrix\"); set the format (e.g. --format opencv)");
 }
 
 }  // namespace

@@ -131,12 +131,12 @@ void TrcExport::FinishTrack(Sequence* s, int track_id, Track* track) {
   ++s->files;
 }
 
-void TrcExport::WriteFile(const Sequence& s, int track_id, const Track& track) const {
+void TrcExport::WriteFile(const Sequence& s, int track_id, const Track& track) {
   std::string name = s.name + "_track" + std::to_string(track_id) + ".trc";
-  std::error_code ec;
-  if (std::filesystem::exists(std::filesystem::symlink_status(dir_ / name, ec))) {  // the track came back
+  if (written_names_.count(name) > 0) {  // the track came back
     name = s.name + "_track" + std::to_string(track_id) + "_from" + std::to_string(track.first_frame + 1) + ".trc";
   }
+  written_names_.insert(name);
   double rate = s.fps;
   if (!(rate > 0) && track.rows > 1 && track.last_time_s > track.first_time_s) {
     rate = (track.rows - 1) / (track.last_time_s - track.first_time_s);

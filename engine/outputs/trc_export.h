@@ -18,14 +18,16 @@
 // and a track's file (header and rows) is written as soon as a frame comes without it: a track is
 // in every frame from its first to its end, coasting included (core/pipeline/track.h); the rest at
 // EndSequence. Should a track id come back after its file was written, its later rows go to
-// <sequence>_track<id>_from<frame#>.trc. `dir` must hold no TRC files of another run (RunFolder
-// empties it).
+// <sequence>_track<id>_from<frame#>.trc (told by the names this export wrote, not by the files in
+// `dir`: a file of an earlier run there is replaced). `dir` should hold no TRC files of another
+// run (RunFolder empties it; rpt.export.write removes them).
 #pragma once
 
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -71,9 +73,10 @@ class TrcExport final : public FrameSink {
   std::ofstream& TrackStream(Sequence* s, int track_id, long frame_idx, double time_s);
   // Closes the track's part and writes its file.
   void FinishTrack(Sequence* s, int track_id, Track* track);
-  void WriteFile(const Sequence& s, int track_id, const Track& track) const;
+  void WriteFile(const Sequence& s, int track_id, const Track& track);
 
   std::filesystem::path dir_;
+  std::set<std::string> written_names_;  // the file names written, over all sequences
   ExportOptions options_;
   std::vector<Sequence> sequences_;
 };

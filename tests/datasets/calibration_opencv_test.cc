@@ -83,6 +83,17 @@ TEST(CalibrationOpenCV, RodriguesVectorsMillimetresAndXml) {
 </opencv_storage>
 )");
   test::ExpectHandBuiltCamera(ReadCalibration(xml).cameras[0]);
+  // The same written by cv::FileStorage as JSON: told from the other JSON calibrations by its
+  // "opencv-matrix" tags.
+  const auto json = WriteCalibrationText(dir.path() / "cam.json", R"({
+    "image_width": 1920, "image_height": 1080,
+    "cameraMatrix": {"type_id": "opencv-matrix", "rows": 3, "cols": 3, "dt": "d", "data": [1000, 0, 960, 0, 1000, 540, 0, 0, 1]},
+    "distCoeffs": {"type_id": "opencv-matrix", "rows": 1, "cols": 4, "dt": "d", "data": [0, 0, 0, 0]},
+    "R": {"type_id": "opencv-matrix", "rows": 3, "cols": 1, "dt": "d", "data": [1.5707963267948966, 0, 0]},
+    "T": {"type_id": "opencv-matrix", "rows": 3, "cols": 1, "dt": "d", "data": [0, 1.5, 4]}
+})");
+  EXPECT_EQ(DetectCalibrationFormat(json), CalibrationFormat::kOpenCV);
+  test::ExpectHandBuiltCamera(ReadCalibration(json).cameras[0]);
 }
 
 TEST(CalibrationOpenCV, RosCameraInfoWithoutHeaderIsTheWorldOrigin) {

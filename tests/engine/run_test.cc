@@ -377,6 +377,15 @@ TEST(RunTest, CamerasWhoseDetectionsDisagreeWithThePersonsAreNamed) {
   EXPECT_NE(swapped[0].find(", camera 'cam0': only "), std::string::npos) << swapped[0];
   EXPECT_NE(swapped[1].find(", camera 'cam1': only "), std::string::npos) << swapped[1];
   EXPECT_NE(swapped[0].find("is its calibration right, or is its name another camera's?"), std::string::npos);
+  // A camera without any detection has nothing to match: its output is missing, not misplaced.
+  std::swap(whole[0].cameras[0], whole[0].cameras[1]);
+  std::swap(whole[0].cameras[0].name, whole[0].cameras[1].name);
+  for (SequenceFrame& frame : whole[0].frames) frame.views[2].Clear(frame.views[2].num_joints);
+  const std::vector<std::string> silent = warnings(whole);
+  ASSERT_EQ(silent.size(), 1u);
+  EXPECT_NE(silent[0].find(", camera 'cam2': no detections in any of the 60 frames compared, while "), std::string::npos)
+      << silent[0];
+  EXPECT_EQ(silent[0].find("calibration"), std::string::npos) << silent[0];
 }
 
 TEST(RunTest, ASinkSeesTheSequenceBeginItsFramesInOrderThenTheEnd) {

@@ -96,11 +96,28 @@ def test_nan_and_bad_scores_raise_input_error(rig):
     assert np.isfinite(persons).all()
     assert triangulator.process(np.stack(views))[0].shape == persons.shape
     views = good_views(rig)
-    views[0][0, 3, 2] = 1.5
-    with pytest.raises(ValueError, match=r"detection score 1.5.* outside \[0, 1\]"):
+    views[0][0, 3, 2] = 1.7
+    with pytest.raises(ValueError, match=r"detection score 1.7.* outside \[0, 1\]"):
         triangulator.process(views)
-    with pytest.raises(ValueError, match=r"timestamp: must be finite"):
+    # A detector's 1.02 is clamped to 1 and warned about, as the file readers and live lines do.
+    views[0][0, 3, 2] = 1.02
+    triangulator.reset()
+    with pytest.warns(rpt.InputWarning, match=r"^Triangulator.process: 1 scores above 1 clamped to 1 \(largest = 1.02\)"):
+        clamped = triangulator.process(views, 0.0)[0]
+    views[0][0, 3, 2] = 1.0
+    triangulator.reset()
+    assert np.array_equal(clamped, triangulator.process(views, 0.0)[0])
+    with pytest.warns(rpt.InputWarning, match=r"^process_sequence: 2 scores above 1 clamped to 1 \(largest = 1.3\)"):
+        views[0][0, 3, 2] = 1.3
+        views[1][0, 4, 2] = 1.1
+        triangulator.process_sequence([(views, 0.0)])
+    with pytest.raises(ValueError, match=r"timestamp: must be finite seconds, or None \(unknown\); got inf"):
         triangulator.process(good_views(rig), float("inf"))
+    # NaN is not "unknown" (None is): a failing clock would end every track unseen.
+    with pytest.raises(ValueError, match=r"timestamp: must be finite seconds, or None \(unknown\); got nan"):
+        triangulator.process(good_views(rig), float("nan"))
+    with pytest.raises(ValueError, match=r"got nan"):
+        triangulator.process_sequence([(good_views(rig), float("nan"))])
     with pytest.raises(TypeError, match=r"^timestamp: expected seconds \(a number\) or None, got str$"):
         triangulator.process(good_views(rig), "x")
     assert triangulator.process(good_views(rig), np.float64(2.0))[0].shape == (1, 20, 4)  # numpy scalars are numbers
@@ -193,6 +210,12 @@ def test_dataset_errors_are_the_clis(tmp_path):
     assert str(error.value) in done.stderr
     with pytest.raises(rpt.ConfigError, match=r"synthetic.noise: 'loud' is not one of perfect, clean, realistic, hard, none"):
         rpt.synthetic.scene(noise="loud")
+
+
+def test_a_camera_given_twice_is_refused(rig):
+    scene, _ = rig
+    with pytest.raises(rpt.InputError, match=r"^cameras: camera name 'cam0' appears twice \(cameras\[0\] and cameras\[2\]\)$"):
+        rpt.Triangulator([scene.cameras[0], scene.cameras[1], scene.cameras[0]], scene.joint_names)
 
 
 def test_camera_errors():

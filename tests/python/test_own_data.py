@@ -44,6 +44,20 @@ def test_cameras_and_detections_equal_rpt_triangulate(files, tmp_path):
     assert (tmp_path / "py" / "predictions.csv").read_bytes() == (tmp_path / "cli" / "predictions.csv").read_bytes()
     names = sorted(p.name for p in (tmp_path / "cli" / "trc").iterdir())
     assert names and names == sorted(p.name for p in (tmp_path / "py" / "trc").iterdir())
+    # Written again (a notebook cell re-run): the same files, replaced; the first write's TRC files
+    # were kept and this write's tracks went to *_from1.trc. A link left there is removed, never
+    # followed; other files stay.
+    outside = tmp_path / "outside.txt"
+    outside.write_text("keep")
+    (tmp_path / "py" / "trc" / names[0]).unlink()
+    (tmp_path / "py" / "trc" / names[0]).symlink_to(outside)
+    (tmp_path / "py" / "trc" / "notes.txt").write_text("mine")
+    (tmp_path / "py" / "trc" / "stale_track9.trc").write_text("an earlier run's track")
+    rpt.export.write(tmp_path / "py", predictions, ["trc"])
+    assert sorted(p.name for p in (tmp_path / "py" / "trc").iterdir()) == sorted(names + ["notes.txt"])
+    for name in names:
+        assert (tmp_path / "py" / "trc" / name).read_bytes() == (tmp_path / "cli" / "trc" / name).read_bytes()
+    assert not (tmp_path / "py" / "trc" / names[0]).is_symlink() and outside.read_text() == "keep"
 
 
 def test_missing_detections_file(files):
