@@ -17,6 +17,14 @@ void AppendNumber(double value, int decimals, std::string* out) {
     out->append("null");
     return;
   }
+  // From 1e15 on a double has no digits after the point to give: the shortest exact form
+  // ("1e+300"), not a 300-digit fixed number.
+  if (std::fabs(value) >= 1e15) {
+    char number[32];
+    const auto end = std::to_chars(number, number + sizeof(number), value).ptr;
+    out->append(number, end);
+    return;
+  }
   AppendFixedDecimal(value, decimals, out);
 }
 
