@@ -23,6 +23,13 @@
 namespace rpt::python {
 namespace {
 
+// A copy of a camera's matrix that refuses writes: the camera is read-only, and a write into a
+// writeable copy (camera.K[0, 2] += 50) was silently lost.
+py::array ReadOnly(py::array array) {
+  array.attr("setflags")(py::arg("write") = false);
+  return array;
+}
+
 Camera MakeCamera(const std::string& name, int width, int height, py::handle K, py::handle R, py::handle t,
                   py::handle center, py::handle dist, const std::string& model) {
   Camera camera;
@@ -131,15 +138,18 @@ void RegisterCameras(py::module_& m, py::module_& cameras) {
       .def_readonly("name", &Camera::name)
       .def_readonly("width", &Camera::width)
       .def_readonly("height", &Camera::height)
-      .def_property_readonly("K", [](const Camera& c) { return MatrixArray(c.K); })
-      .def_property_readonly("R", [](const Camera& c) { return MatrixArray(c.R); })
-      .def_property_readonly("t", [](const Camera& c) { return MatrixArray(c.t).reshape({3}); })
-      .def_property_readonly("center", [](const Camera& c) { return MatrixArray(c.Center()).reshape({3}); })
+      .def_property_readonly("K", [](const Camera& c) { return ReadOnly(MatrixArray(c.K)); })
+      .def_property_readonly("R", [](const Camera& c) { return ReadOnly(MatrixArray(c.R)); })
+      .def_property_readonly("t", [](const Camera& c) { return ReadOnly(MatrixArray(c.t).reshape({3})); })
+      .def_property_readonly("center", [](const Camera& c) { return ReadOnly(MatrixArray(c.Center()).reshape({3})); })
       .def_property_readonly(
           "dist",
           [](const Camera& c) {
-            return MatrixArray(Eigen::Map<const Eigen::Matrix<double, 5, 1>>(c.dist.data())).reshape({5});
+            return ReadOnly(MatrixArray(Eigen::Map<const Eigen::Matrix<double, 5, 1>>(c.dist.data())).reshape({5}));
           })
+      // A Camera is a value: copies are independent cameras (a deepcopy in a notebook failed).
+      .def("__copy__", [](const Camera& c) { return c; })
+      .def("__deepcopy__", [](const Camera& c, py::dict) { return c; }, py::arg("memo"))
       .def_property_readonly("model", [](const Camera& c) { return ModelText(c.model); })
       .def("project", &Project, py::arg("points"),
            "World points (n, 3) in metres -> (pixels (n, 2) in the distorted image, in_front (n,) bool)")

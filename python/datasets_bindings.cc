@@ -3,7 +3,9 @@
 // with a detections file; detections attached or simulated; every frame validated) as an iterator of
 // frames, or loaded into rpt.Sequence objects; and rpt.synthetic: the generated scenes with the
 // simulated detector's profiles (datasets/synthetic/).
+#include <pybind11/numpy.h>
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
 #include <algorithm>
 #include <cmath>
@@ -70,6 +72,15 @@ class Dataset {
     throw py::stop_iteration();
   }
 
+  // A second loop over the frames found none, silently (a notebook cell run twice).
+  Dataset& Iterate() {
+    if (started_) {
+      throw py::value_error("Dataset: its frames were already pulled (a Dataset is read once, frame by frame); "
+                            "open the dataset again, or load() its sequences to go over them many times");
+    }
+    return *this;
+  }
+
   std::vector<std::shared_ptr<Sequence>> Load() {
     if (started_) throw py::value_error("Dataset.load: frames were already pulled; open the dataset again");
     started_ = true;
@@ -95,6 +106,8 @@ class Dataset {
 
 // A list or tuple is the comma list the CLI takes (days=[1, 2] is --param days=1,2).
 std::string ParamText(py::handle value, const std::string& key) {
+  // A numpy array as the list it holds (its str() was "[1 2]": "'[1' is not a day").
+  if (py::isinstance<py::array>(value)) return ParamText(value.attr("tolist")(), key);
   if (!py::isinstance<py::list>(value) && !py::isinstance<py::tuple>(value)) return OptionText(value, "datasets.open", key);
   std::string text;
   for (py::handle item : value) {
@@ -137,21 +150,23 @@ Dataset OpenSpec(engine::InputSpec spec, const InputArgs& args, const py::kwargs
   }
 }
 
-Dataset Open(const std::string& name, const std::string& root, const std::string& detections_file, bool simulate,
+// Paths are str or os.PathLike (pathlib.Path), as cameras.load and export.write take them.
+Dataset Open(const std::string& name, const std::filesystem::path& root, const std::filesystem::path& detections_file,
+             bool simulate,
              const std::string& detector, std::uint64_t simulate_seed, bool strict, bool ground_truth,
              const py::kwargs& params) {
   engine::InputSpec spec;
   spec.dataset = name;
-  spec.root = root;
-  return OpenSpec(spec, {detections_file, simulate, detector, simulate_seed, strict, ground_truth}, params);
+  spec.root = root.string();
+  return OpenSpec(spec, {detections_file.string(), simulate, detector, simulate_seed, strict, ground_truth}, params);
 }
 
-Dataset OpenLabels(const std::string& path, const std::string& detections_file, bool simulate,
+Dataset OpenLabels(const std::filesystem::path& path, const std::filesystem::path& detections_file, bool simulate,
                    const std::string& detector, std::uint64_t simulate_seed, bool strict, bool ground_truth,
                    const py::kwargs& params) {
   engine::InputSpec spec;
-  spec.labels = path;
-  return OpenSpec(spec, {detections_file, simulate, detector, simulate_seed, strict, ground_truth}, params);
+  spec.labels = path.string();
+  return OpenSpec(spec, {detections_file.string(), simulate, detector, simulate_seed, strict, ground_truth}, params);
 }
 
 // The CLI's options of `rpt triangulate --cameras FILE --detections FILE` with '_' for '-': how the
@@ -200,14 +215,15 @@ void SetCameraInputOptions(const py::kwargs& options, engine::InputSpec* spec) {
   SetOptionFields(camera_read, kWhere, "cameras_", &spec->camera_read);
 }
 
-Dataset OpenCameras(const std::string& cameras, const std::string& detections, double fps, bool strict,
+Dataset OpenCameras(const std::filesystem::path& cameras, const std::filesystem::path& detections, double fps,
+                    bool strict,
                     const py::kwargs& options) {
   engine::InputSpec spec;
-  spec.cameras = cameras;
+  spec.cameras = cameras.string();
   spec.fps = fps;
   SetCameraInputOptions(options, &spec);
   InputArgs args;
-  args.detections_file = detections;
+  args.detections_file = detections.string();
   args.strict = strict;
   args.ground_truth = false;
   return OpenSpec(spec, args, py::kwargs());
@@ -293,7 +309,7 @@ void RegisterDatasets(py::module_& datasets, py::module_& synthetic) {
   py::class_<Dataset>(datasets, "Dataset", "An opened input: iterate for its frames, or load() its sequences")
       .def_property_readonly("sequences", &Dataset::Headers, "one SequenceInfo per sequence")
       .def(
-          "__iter__", [](Dataset& d) -> Dataset& { return d; }, py::return_value_policy::reference_internal)
+          "__iter__", [](Dataset& d) -> Dataset& { return d.Iterate(); }, py::return_value_policy::reference_internal)
       .def("__next__", &Dataset::Next)
       .def("load", &Dataset::Load, "every sequence in memory (validated), as rpt.datasets.Sequence objects")
       .def_property_readonly("warnings", &Dataset::Warnings, "the readers' corrections and unused input");

@@ -71,9 +71,10 @@ void RegisterErrors(py::module_& m) {
 
 void WarnInput(const std::vector<std::string>& lines) {
   for (const std::string& line : lines) {
-    // stacklevel 2: the warning points at the Python line that called rpt. -1: the warning filter
-    // made it an exception (python -W error), which propagates.
-    if (PyErr_WarnEx(input_warning, line.c_str(), 2) < 0) throw py::error_already_set();
+    // stacklevel 1: a C function has no frame of its own, so the warning points at the Python line
+    // that called rpt (2 pointed one frame above it: "sys:1" from a script's top level). -1: the
+    // warning filter made it an exception (python -W error), which propagates.
+    if (PyErr_WarnEx(input_warning, line.c_str(), 1) < 0) throw py::error_already_set();
   }
 }
 

@@ -105,9 +105,24 @@ void RemoveEarlierTrcFiles(const std::filesystem::path& trc_dir) {
 std::vector<std::filesystem::path> Write(const std::filesystem::path& dir, py::handle predictions, py::handle formats,
                                          bool filled_joints, const std::string& trc_axes, const std::string& trc_units,
                                          const std::string& run_id) {
-  std::vector<Predictions> runs = py::isinstance<Predictions>(predictions)
-                                      ? std::vector<Predictions>{predictions.cast<Predictions>()}
-                                      : predictions.cast<std::vector<Predictions>>();
+  std::vector<Predictions> runs;
+  const auto refuse = [](py::handle given) {
+    throw py::type_error("export.write: predictions must be rpt.Predictions (what process_sequence returns) or a list "
+                         "of them, one per sequence, got " +
+                         py::str(py::type::of(given).attr("__name__")).cast<std::string>() +
+                         " (the (persons, track_ids) of process() calls are not a sequence: give the frames to "
+                         "process_sequence instead)");
+  };
+  if (py::isinstance<Predictions>(predictions)) {
+    runs.push_back(predictions.cast<Predictions>());
+  } else if (py::isinstance<py::list>(predictions) || py::isinstance<py::tuple>(predictions)) {
+    for (py::handle item : predictions) {
+      if (!py::isinstance<Predictions>(item)) refuse(item);
+      runs.push_back(item.cast<Predictions>());
+    }
+  } else {
+    refuse(predictions);
+  }
   engine::ExportOptions options;
   std::string format_text;
   if (py::isinstance<py::str>(formats)) {
@@ -149,6 +164,18 @@ std::vector<std::filesystem::path> Write(const std::filesystem::path& dir, py::h
     sink.EndSequence(static_cast<int>(s));
   }
   sinks.Finish();
+  if (sinks.trc) {
+    long persons = 0;
+    for (const Predictions& run : runs) {
+      for (const Poses3D& frame : run.persons) persons += frame.num_persons();
+    }
+    const std::string warning = engine::NoTrcFileWarning(*sinks.trc, dir / "trc", persons,
+                                                         "give process_sequence the frames' timestamps");
+    if (!warning.empty()) {
+      py::gil_scoped_acquire acquire;
+      WarnInput({warning});
+    }
+  }
   return sinks.written;
 }
 

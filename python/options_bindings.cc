@@ -108,14 +108,19 @@ void RegisterOptions(py::module_& m) {
                              "'section.name' (docs/options.md); values are refused like the CLI's --set.")
       .def(py::init([](py::handle values) {
              engine::Config config;
+             if (py::isinstance<engine::Config>(values)) return values.cast<engine::Config>();  // a copy
              if (!values.is_none()) {
-               if (!py::isinstance<py::dict>(values)) throw py::type_error("Options: expected a dict of values");
+               if (!py::isinstance<py::dict>(values)) {
+                 throw py::type_error("Options: expected a dict of values or an rpt.Options, got " +
+                                      py::str(py::type::of(values).attr("__name__")).cast<std::string>());
+               }
                Apply(&config, py::reinterpret_borrow<py::dict>(values), "Options");
              }
              return config;
            }),
            py::arg("values") = py::none(),
-           "Defaults, then `values`: {'section': {'name': value}} or {'section.name': value}")
+           "Defaults, then `values`: {'section': {'name': value}} or {'section.name': value}; or a copy of an "
+           "rpt.Options")
       .def_static(
           "from_json",
           [](const std::filesystem::path& path) {
@@ -175,6 +180,16 @@ void RegisterOptions(py::module_& m) {
       .def("check", &engine::CheckConfig, "Raises ConfigError naming the key of the first invalid setting")
       .def("warnings", &engine::ConfigWarnings, "Valid settings without effect, one line each")
       .def("copy", [](const engine::Config& c) { return c; })
+      .def("__copy__", [](const engine::Config& c) { return c; })
+      .def("__deepcopy__", [](const engine::Config& c, py::dict) { return c; }, py::arg("memo"))
+      // Pickled as its values (to_dict), read back as Options(values) reads them: a sweep's workers
+      // (multiprocessing, joblib) take Options.
+      .def(py::pickle([](const engine::Config& c) { return ToDict(c); },
+                      [](const py::dict& values) {
+                        engine::Config config;
+                        Apply(&config, values, "Options (unpickled)");
+                        return config;
+                      }))
       .def("__eq__",
            [](const engine::Config& a, const engine::Config& b) {
              return engine::DumpConfig(a, false) == engine::DumpConfig(b, false);

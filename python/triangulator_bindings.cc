@@ -91,6 +91,9 @@ py::dict StatsDict(const FrameStats& stats) {
   return d;
 }
 
+// process_sequence looks for Ctrl-C every this many frames (a few milliseconds of work).
+inline constexpr long kSignalCheckFrames = 32;
+
 class PyTriangulator {
  public:
   PyTriangulator(std::vector<Camera> cameras, JointNames joints, const TriangulatorOptions& options, std::string name,
@@ -190,8 +193,16 @@ class PyTriangulator {
   }
 
   const Triangulator& triangulator() const { return triangulator_; }
-  const FrameStats& stats() const { return stats_; }
-  const Poses3D& persons() const { return persons_; }
+  // The last frame's statistics and provenance, read under the same one-call-at-a-time guard: a
+  // second thread read them half-written while a run went on.
+  py::dict StatsOfLastFrame() {
+    std::unique_lock lock = Lock();
+    return StatsDict(stats_);
+  }
+  py::array LastProvenance() {
+    std::unique_lock lock = Lock();
+    return ProvenanceArray(persons_);
+  }
 
  private:
   int num_cameras() const { return static_cast<int>(header_.cameras.size()); }
@@ -250,7 +261,15 @@ class PyTriangulator {
     out->stats.reserve(frames.size());
     Poses3D smoothed;
     FrameStats smoothed_stats;
+    long done = 0;
     for (const SequenceFrame& frame : frames) {
+      // Ctrl-C (Jupyter's "interrupt kernel") waited for the whole sequence: Python's signal
+      // handlers run every kSignalCheckFrames frames (the GIL is taken for it), and a
+      // KeyboardInterrupt they raise ends the call.
+      if (++done % kSignalCheckFrames == 0) {
+        py::gil_scoped_acquire acquire;
+        if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+      }
       times.Add(frame.timestamp_s);
       try {
         triangulator_.Process(frame.views.empty() ? no_views : frame.views, frame.timestamp_s, &persons_, &stats_);
@@ -403,10 +422,10 @@ void RegisterTriangulator(py::module_& m) {
            "then triangulated in C++; returns rpt.Predictions")
       .def("reset", &PyTriangulator::Reset, "Forgets the previous frames (tracks, pre-filter, noise estimate)")
       .def_property_readonly(
-          "stats", [](const PyTriangulator& t) { return StatsDict(t.stats()); },
+          "stats", &PyTriangulator::StatsOfLastFrame,
           "the last frame's time and count per step, and the counters")
       .def_property_readonly(
-          "last_provenance", [](const PyTriangulator& t) { return ProvenanceArray(t.persons()); },
+          "last_provenance", &PyTriangulator::LastProvenance,
           "(P, J) provenance codes of the last process() call")
       .def_property_readonly("joint_names", [](const PyTriangulator& t) { return t.triangulator().input_joints(); })
       .def_property_readonly(

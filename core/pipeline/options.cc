@@ -3,6 +3,7 @@
 
 #include <sstream>
 
+#include "core/joints.h"
 #include "core/options_check.h"
 
 namespace rpt {
@@ -16,7 +17,16 @@ std::string TriangulatorOptions::Check() const {
   if (!error.empty()) return error;
   // Checks between fields.
   std::ostringstream s;
-  if (postprocess.max_extent_m < postprocess.min_extent_m) {
+  // The core joints are counted here as listed (the Triangulator checks again against the input's
+  // joints): a list shorter than what a pose or a pair needs could never triangulate anyone.
+  const size_t core = triangulate.core_joints.empty() ? DefaultCoreJoints().size() : triangulate.core_joints.size();
+  if (triangulate.min_core_joints > static_cast<int>(core)) {
+    s << "triangulate.min_core_joints: " << triangulate.min_core_joints << " exceeds the number of core joints ("
+      << core << ", triangulate.core_joints)";
+  } else if (undistort.min_core_joints > static_cast<int>(core)) {
+    s << "undistort.min_core_joints: " << undistort.min_core_joints << " exceeds the number of core joints (" << core
+      << ", triangulate.core_joints)";
+  } else if (postprocess.max_extent_m < postprocess.min_extent_m) {
     s << "postprocess.max_extent_m: " << postprocess.max_extent_m << " is below postprocess.min_extent_m ("
       << postprocess.min_extent_m << ")";
   } else if (bone_lengths.min_observations > bone_lengths.window) {

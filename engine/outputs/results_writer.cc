@@ -461,11 +461,10 @@ void RunFolder::Finish(const RunResult& run, const Config& config, const RunInfo
                  (dir_ / name).string().c_str(), count);
   }
   // TRC holds tracks only: a run without any (times unknown: no --fps) wrote an empty folder.
-  if (trc_ != nullptr && trc_->files() == 0 && run.output_persons > 0) {
-    std::fprintf(stderr,
-                 "warning: %s: no TRC file written: no person was tracked (TRC holds tracks, and tracking needs the "
-                 "frames' times: give --fps or times)\n",
-                 PrintableText((dir_ / ExportFileName(ExportFormat::kTrc)).string(), LineBreaks::kEscape).c_str());
+  if (trc_ != nullptr) {
+    const std::string warning =
+        NoTrcFileWarning(*trc_, dir_ / ExportFileName(ExportFormat::kTrc), run.output_persons, "give --fps or times");
+    if (!warning.empty()) std::fprintf(stderr, "warning: %s\n", warning.c_str());
   }
 }
 

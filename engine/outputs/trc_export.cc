@@ -164,4 +164,12 @@ void TrcExport::EndSequence(int sequence) {
   s.tracks.clear();
 }
 
+std::string NoTrcFileWarning(const TrcExport& trc, const std::filesystem::path& dir, long persons,
+                             const std::string& how_to_time) {
+  if (trc.files() > 0 || persons <= 0) return "";
+  return PrintableText(dir.string(), LineBreaks::kEscape) +
+         ": no TRC file written: no person was tracked (TRC holds tracks, and tracking needs the frames' times: " +
+         how_to_time + ")";
+}
+
 }  // namespace rpt::engine

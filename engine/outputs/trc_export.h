@@ -81,4 +81,9 @@ class TrcExport final : public FrameSink {
   std::vector<Sequence> sequences_;
 };
 
+// TRC holds tracks only: "<dir>: no TRC file written: no person was tracked (...: <how_to_time>)"
+// when `trc` wrote no file although the run output `persons` > 0 persons (times unknown); else "".
+std::string NoTrcFileWarning(const TrcExport& trc, const std::filesystem::path& dir, long persons,
+                             const std::string& how_to_time);
+
 }  // namespace rpt::engine

@@ -120,10 +120,19 @@ TEST(Triangulator, RejectsBadConfigurationAndShapes) {
     Triangulator(cameras, CocoBodyJoints(), too_many);
     FAIL() << "expected ConfigError";
   } catch (const ConfigError& e) {
-    EXPECT_NE(std::string(e.what()).find("undistort.min_core_joints (13) exceeds the number of core joints (12)"),
+    EXPECT_NE(std::string(e.what()).find("undistort.min_core_joints: 13 exceeds the number of core joints (12, "
+                                         "triangulate.core_joints)"),
               std::string::npos)
         << e.what();
   }
+  // The options alone tell it (Options.check() in Python, `rpt config` before any input is read).
+  EXPECT_NE(too_many.Check().find("undistort.min_core_joints: 13 exceeds"), std::string::npos) << too_many.Check();
+  TriangulatorOptions one_core;
+  one_core.triangulate.core_joints = {"nose"};
+  EXPECT_EQ(one_core.Check(), "triangulate.min_core_joints: 3 exceeds the number of core joints (1, triangulate.core_joints)");
+  one_core.triangulate.min_core_joints = 1;
+  one_core.undistort.min_core_joints = 1;
+  EXPECT_EQ(one_core.Check(), "");
 
   Triangulator tri(cameras, CocoBodyJoints(), TriangulatorOptions{});
   Poses3D persons;

@@ -1,5 +1,7 @@
 """rpt.Camera and rpt.cameras: projection with hand-computed pixels, undistortion, every calibration
 format the CLI reads (written here and read back, the real fixtures when ../shared/data exists)."""
+import copy
+
 import numpy as np
 import pytest
 
@@ -99,6 +101,18 @@ def test_colmap_text_model(tmp_path):
     assert in_front[0]
 
 
+def test_matrices_are_read_only_and_cameras_copy():
+    camera = rpt.Camera(name="c", width=1000, height=800, K=[[500, 0, 500], [0, 500, 400], [0, 0, 1]])
+    for name in ("K", "R", "t", "center", "dist"):
+        array = getattr(camera, name)
+        assert not array.flags.writeable, name
+        with pytest.raises(ValueError, match="read-only"):
+            array[0] = 1  # was a writeable copy: the write was lost unseen
+    twin = copy.deepcopy(camera)
+    assert repr(twin) == repr(camera) and np.array_equal(twin.K, camera.K) and twin is not camera
+    assert copy.copy(camera).name == "c"
+
+
 def test_load_warns_as_cameras_show(tmp_path):
     # A rig in millimetres read as metres: the CLI warned, rpt.cameras.load said nothing and every
     # frame then had 0 persons. Its warnings are now rpt.InputWarning, the CLI's lines.
@@ -111,3 +125,4 @@ def test_load_warns_as_cameras_show(tmp_path):
     shown = run_cli("cameras", "show", tmp_path, "--format", "colmap").stderr
     for warning in caught:
         assert "warning: " + str(warning.message) in shown
+        assert warning.filename == __file__, "the warning points at the caller's line, not sys:1"

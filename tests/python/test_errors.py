@@ -1,5 +1,8 @@
 """Every class of bad input raises the right Python exception with the CLI's words, never crashes:
 arrays of the wrong dtype, shape or layout, NaN, empty arrays; bad options, parameters and files."""
+import signal
+import time
+
 import numpy as np
 import pytest
 
@@ -216,6 +219,73 @@ def test_a_camera_given_twice_is_refused(rig):
     scene, _ = rig
     with pytest.raises(rpt.InputError, match=r"^cameras: camera name 'cam0' appears twice \(cameras\[0\] and cameras\[2\]\)$"):
         rpt.Triangulator([scene.cameras[0], scene.cameras[1], scene.cameras[0]], scene.joint_names)
+
+
+def test_a_dataset_is_read_once():
+    dataset = rpt.datasets.open("synthetic", frames=3)
+    assert sum(1 for _ in dataset) == 3
+    with pytest.raises(ValueError, match=r"^Dataset: its frames were already pulled"):
+        for _ in dataset:  # a second loop silently found no frames
+            pass
+    with pytest.raises(ValueError, match=r"^Dataset.load: frames were already pulled"):
+        dataset.load()
+
+
+def test_export_of_process_results_is_a_type_error(rig, tmp_path):
+    scene, triangulator = rig
+    live = [triangulator.process(frame.views, frame.timestamp) for frame in scene]
+    with pytest.raises(TypeError, match=r"^export.write: predictions must be rpt.Predictions .* got tuple \(the "
+                                        r"\(persons, track_ids\) of process\(\) calls"):
+        rpt.export.write(tmp_path, live)
+    with pytest.raises(TypeError, match=r"got dict"):
+        rpt.export.write(tmp_path, {})
+
+
+def test_trc_of_untracked_persons_warns(rig, tmp_path):
+    scene, _ = rig
+    predictions = rpt.Triangulator.for_sequence(scene).process_sequence([frame.views for frame in scene])  # no times
+    with pytest.warns(rpt.InputWarning, match=r"trc: no TRC file written: no person was tracked .*give "
+                                              r"process_sequence the frames' timestamps"):
+        rpt.export.write(tmp_path, predictions, "trc")
+
+
+def test_paths_and_numpy_lists_as_the_other_calls_take_them(tmp_path):
+    labels, detections = tmp_path / "labels.json", tmp_path / "detections.json"
+    run_cli("convert", "--dataset", "synthetic", "--param", "frames=2", "--labels-out", labels,
+            "--detections-out", detections)
+    assert len(rpt.datasets.open_labels(labels, detections_file=detections).load()[0]) == 2  # pathlib.Path
+    assert len(rpt.datasets.open_cameras(labels, detections).load()[0]) == 2
+    if (SHARED_DATA / "mvor").is_dir():
+        by_list = rpt.datasets.open("mvor", SHARED_DATA / "mvor", days=[1, 2]).sequences
+        by_array = rpt.datasets.open("mvor", SHARED_DATA / "mvor", days=np.array([1, 2])).sequences
+        assert [s.name for s in by_array] == [s.name for s in by_list]
+
+
+def test_ctrl_c_ends_process_sequence():
+    # Python's signal handlers ran only after the whole sequence (Jupyter's interrupt waited).
+    scene = rpt.synthetic.scene(cameras=4, people=3, frames=12000, noise="clean")
+    triangulator = rpt.Triangulator.for_sequence(scene)
+    start = time.perf_counter()
+    triangulator.process_sequence(scene)
+    whole = time.perf_counter() - start
+
+    def interrupt(*_):
+        raise KeyboardInterrupt
+
+    previous = signal.signal(signal.SIGALRM, interrupt)
+    try:
+        triangulator.reset()
+        start = time.perf_counter()
+        signal.setitimer(signal.ITIMER_REAL, 0.01)
+        with pytest.raises(KeyboardInterrupt):
+            triangulator.process_sequence(scene)
+        interrupted = time.perf_counter() - start
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, previous)
+    assert interrupted < whole / 4, (interrupted, whole)
+    triangulator.reset()
+    assert len(triangulator.process_sequence(scene)) == 12000, "usable after the interrupt"
 
 
 def test_camera_errors():

@@ -1,5 +1,7 @@
 """rpt.Options: every key of `rpt config --dump`, typed; round trips through dicts and JSON files."""
+import copy
 import json
+import pickle
 
 import pytest
 
@@ -63,6 +65,29 @@ def test_check_between_fields_names_the_key():
         rpt.Triangulator(rpt.synthetic.scene(frames=1).cameras, ["nose"], options)
     with pytest.raises(rpt.ConfigError, match=r"postprocess.max_extent_m: 0.5 is below"):
         rpt.Options.from_dict(options.to_dict())
+
+
+def test_core_joints_too_few_for_what_a_pose_needs_fail_the_check():
+    # check() said nothing; the Triangulator then refused the same options.
+    options = rpt.Options({"triangulate.core_joints": ["nose"]})
+    with pytest.raises(rpt.ConfigError, match=r"^triangulate.min_core_joints: 3 exceeds the number of core joints "
+                                              r"\(1, triangulate.core_joints\)$"):
+        options.check()
+    options["triangulate.min_core_joints"] = 1
+    with pytest.raises(rpt.ConfigError, match=r"^undistort.min_core_joints: 3 exceeds"):
+        options.check()
+    options["undistort.min_core_joints"] = 1
+    options.check()
+
+
+def test_copied_pickled_and_given_to_options():
+    options = rpt.Options({"filter.min_match_score": 0.6, "room_check.size_m": (6, 7, 3)})
+    for twin in (copy.copy(options), copy.deepcopy(options), pickle.loads(pickle.dumps(options)), rpt.Options(options)):
+        assert twin == options
+        twin["filter.min_match_score"] = 0.7
+        assert options["filter.min_match_score"] == 0.6, "a copy, not the same object"
+    with pytest.raises(TypeError, match=r"^Options: expected a dict of values or an rpt.Options, got list$"):
+        rpt.Options([1])
 
 
 def test_warnings_of_settings_without_effect():
