@@ -57,7 +57,8 @@ void RunEval(const EvalArgs& args) {
   const std::string out_dir =
       !args.out.empty() ? args.out : "out/eval-" + (args.input.dataset.empty() ? "labels" : args.input.dataset);
   engine::CheckOutputOutsideInput(out_dir, args.input);  // before anything is read
-  engine::Input input = engine::OpenInput(args.input);
+  double read_s = 0;
+  engine::Input input = OpenInputTimed(args.input, &read_s);
   const InputWarnings opened = input.Warnings();  // what the files read up front corrected or left unused
   PrintInputWarnings(opened);
   engine::RunOptions options;
@@ -105,6 +106,7 @@ void RunEval(const EvalArgs& args) {
   std::printf("evaluated %ld frames in %.2f s (%.0f frames/s, %d thread(s) over %zu sequence(s))\n", run.frames,
               run.wall_seconds, run.wall_seconds > 0 ? run.frames / run.wall_seconds : 0.0, run.threads,
               run.sequences.size());
+  PrintInputReadTime(read_s);
   bool whole_body = false;  // only worth printing when face or hand joints were evaluated
   for (const auto& g : run.metrics.wholebody) whole_body |= (g.name == "Face" || g.name == "Hands") && g.num_persons > 0;
   for (const auto& g : run.metrics.wholebody) {

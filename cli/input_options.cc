@@ -1,13 +1,18 @@
 // SPDX-License-Identifier: MIT
 #include "cli/input_options.h"
 
+#include <unistd.h>
+
+#include <chrono>
 #include <cstdio>
+#include <filesystem>
 
 #include <cmath>
 #include <memory>
 #include <string>
 
 #include "cli/field_options.h"
+#include "core/printable_text.h"
 #include "core/text.h"
 #include "datasets/synthetic/detector_options.h"
 
@@ -131,6 +136,29 @@ void AddInputOptions(CLI::App* command, engine::InputSpec* spec) {
       ->capture_default_str()
       ->each([spec](const std::string&) { spec->seed_given = true; });
   AddStrictOption(command, spec);
+}
+
+engine::Input OpenInputTimed(const engine::InputSpec& spec, double* seconds) {
+  constexpr std::uintmax_t kAnnouncedBytes = 64u << 20;
+  if (::isatty(STDERR_FILENO)) {
+    for (const std::string& file : {spec.detections, spec.labels}) {
+      std::error_code ec;
+      if (file.empty() || !std::filesystem::is_regular_file(file, ec)) continue;
+      const std::uintmax_t bytes = std::filesystem::file_size(file, ec);
+      if (ec || bytes < kAnnouncedBytes) continue;
+      std::fprintf(stderr, "reading %s (%.0f MB) ...\n", PrintableText(file, LineBreaks::kEscape).c_str(),
+                   static_cast<double>(bytes) / 1e6);
+    }
+  }
+  const auto start = std::chrono::steady_clock::now();
+  engine::Input input = engine::OpenInput(spec);
+  *seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return input;
+}
+
+void PrintInputReadTime(double seconds) {
+  if (seconds < 1.0) return;
+  std::printf("  reading the input took %.2f s before the frames (not in the rate above)\n", seconds);
 }
 
 void PrintInputWarnings(const InputWarnings& warnings) {

@@ -25,4 +25,13 @@ void AddCamerasOptions(CLI::App* command, engine::InputSpec* spec);
 // Prints every entry as "warning: <line>" on stderr.
 void PrintInputWarnings(const InputWarnings& warnings);
 
+// engine::OpenInput, timed: a detections or labels file read whole before the first frame (a
+// long recording's JSON takes seconds to minutes) is announced on a terminal ("reading FILE
+// (N MB) ...") when it is large; *seconds is the time the opening took.
+engine::Input OpenInputTimed(const engine::InputSpec& spec, double* seconds);
+
+// After a run's "... frames in S s (R frames/s ...)" line: when opening the input took a second or
+// more, says so (the run's rate leaves it out).
+void PrintInputReadTime(double seconds);
+
 }  // namespace rpt::cli

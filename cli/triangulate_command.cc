@@ -169,7 +169,8 @@ int RunFollow(const TriangulateArgs& args) {
 void RunTriangulate(const TriangulateArgs& args) {
   const engine::Config config = ResolveConfig(args.config);
   const engine::ExportOptions exports = ExportOptionsOf(args.exports);
-  engine::Input input = engine::OpenInput(args.input);
+  double read_s = 0;
+  engine::Input input = OpenInputTimed(args.input, &read_s);
   const InputWarnings opened = input.Warnings();
   PrintInputWarnings(opened);
   engine::RunOptions options;
@@ -202,6 +203,7 @@ void RunTriangulate(const TriangulateArgs& args) {
     std::printf("triangulated %ld frames in %.2f s (%.0f frames/s, %d thread(s) over %zu sequence(s))\n", run.frames,
                 run.wall_seconds, run.wall_seconds > 0 ? run.frames / run.wall_seconds : 0.0, run.threads,
                 run.sequences.size());
+    PrintInputReadTime(read_s);
     if (!args.quiet) engine::PrintStepTimes(std::cout, run.timing, &run.counts);
     std::printf("results in %s\n", PrintableText(out_dir, LineBreaks::kEscape).c_str());
     std::fflush(stdout);
