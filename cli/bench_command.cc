@@ -41,6 +41,7 @@ struct BenchArgs {
   bool io = false;
   int io_frames = 10000;
   bool follow = false;
+  double follow_rate = 0;  // lines per second; 0: back to back
   std::vector<std::string> scenes;
   bool scaling = false;
   int frames = 0;
@@ -184,8 +185,9 @@ void RunBench(const BenchArgs& args) {
   for (auto& s : scenes) {
     if (args.frames > 0) s.frames = args.frames;
   }
+  if (args.follow_rate > 0 && !args.follow) throw ConfigError("--follow-rate paces the lines of --follow: add --follow");
   if (args.follow) {
-    RunFollowBench(scenes, args.repeat, args.detector, config, args.json);
+    RunFollowBench(scenes, args.repeat, args.follow_rate, args.detector, config, args.json);
     return;
   }
 
@@ -290,6 +292,10 @@ void RegisterBenchCommand(CLI::App& app) {
   command->add_flag("--follow", args->follow,
                     "time the live input instead (triangulate --follow): lines fed one at a time through a pipe, "
                     "median line in -> line out latency vs. the triangulation time (default scene: shelf-like)");
+  command->add_option("--follow-rate", args->follow_rate,
+                      "with --follow: feed the lines at this many per second, as a camera does (default 0: each as soon "
+                      "as the output line of the one before is back)")
+      ->check(CLI::Range(0.0, 100000.0));
   command->add_flag("--io", args->io, "time reading an HDF5 detection cache instead (see --io-frames)");
   command->add_option("--io-frames", args->io_frames, "frames in the --io cache (5 views each)")
       ->check(CLI::Range(1, 10000000))

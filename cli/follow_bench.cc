@@ -136,7 +136,7 @@ struct FollowResult {
   double pipes_added_us_p90 = 0;
 };
 
-FollowResult BenchFollow(const bench::BenchScene& scene, Digits digits, int spin_us, int repeat,
+FollowResult BenchFollow(const bench::BenchScene& scene, Digits digits, int spin_us, int repeat, double rate,
                          const std::string& detector, const engine::Config& config) {
   const std::chrono::microseconds spin(spin_us);
   const Sequence sequence = bench::MakeBenchSequence(scene, 1, detector);
@@ -182,7 +182,13 @@ FollowResult BenchFollow(const bench::BenchScene& scene, Digits digits, int spin
   std::string buffer;
   try {
     ReadLine(out.fds[0], &buffer, spin);  // the joints line
+    const Clock::time_point first = Clock::now();
     for (size_t k = 0; k < lines.size(); ++k) {
+      // At a camera's pace: line k at first + k / rate (at once when the run has fallen behind).
+      if (rate > 0) {
+        std::this_thread::sleep_until(first + std::chrono::duration_cast<Clock::duration>(
+                                                  std::chrono::duration<double>(static_cast<double>(k) / rate)));
+      }
       const Clock::time_point start = Clock::now();
       WriteAll(in.fds[1], lines[k]);
       ReadLine(out.fds[0], &buffer, spin);
@@ -218,7 +224,7 @@ FollowResult BenchFollow(const bench::BenchScene& scene, Digits digits, int spin
 
 }  // namespace
 
-void RunFollowBench(const std::vector<bench::BenchScene>& scenes, int repeat, const std::string& detector,
+void RunFollowBench(const std::vector<bench::BenchScene>& scenes, int repeat, double rate, const std::string& detector,
                     const engine::Config& config, bool json) {
   constexpr double kTargetAddedUs = 100;  // issue 20: --follow adds at most 100 us per frame on shelf-like
   std::vector<FollowResult> results;
@@ -226,7 +232,7 @@ void RunFollowBench(const std::vector<bench::BenchScene>& scenes, int repeat, co
     for (const int spin_us : {engine::kDefaultSpinUs, 0}) {
       for (const Digits digits : {Digits::kFull, Digits::kThreeDecimals}) {
         if (!json) std::fprintf(stderr, "benchmarking --follow on %s ...\n", scene.name.c_str());
-        results.push_back(BenchFollow(scene, digits, spin_us, repeat, detector, config));
+        results.push_back(BenchFollow(scene, digits, spin_us, repeat, rate, detector, config));
       }
     }
   }
@@ -234,6 +240,7 @@ void RunFollowBench(const std::vector<bench::BenchScene>& scenes, int repeat, co
   if (json) {
     Json j;
     j["repeat"] = repeat;
+    j["lines_per_s"] = rate > 0 ? Json(rate) : Json(nullptr);  // null: back to back
     j["revision"] = info.git_revision;
     j["cpu"] = info.cpu;
     j["target_added_us"] = kTargetAddedUs;
@@ -256,11 +263,17 @@ void RunFollowBench(const std::vector<bench::BenchScene>& scenes, int repeat, co
     std::cout << j.dump(2) << "\n";
     return;
   }
+  char pace[96];
+  if (rate > 0) {
+    std::snprintf(pace, sizeof(pace), "at %g lines per second (--follow-rate), each", rate);
+  } else {
+    std::snprintf(pace, sizeof(pace), "each");
+  }
   std::printf(
-      "rpt bench --follow: lines fed one at a time through a pipe, each after the output line of the one before;\n"
+      "rpt bench --follow: lines fed one at a time through a pipe, %s after the output line of the one before;\n"
       "both ends poll for --spin-us before they sleep; medians over %d passes after a warm-up pass;\n"
       "revision %s; %s\n\n",
-      repeat, info.git_revision.c_str(), info.cpu.c_str());
+      pace, repeat, info.git_revision.c_str(), info.cpu.c_str());
   std::printf("%-40s", "(us per frame)");
   for (const auto& r : results) std::printf(" %14s", r.scene.name.c_str());
   std::printf("\n%-40s", "numbers written with");

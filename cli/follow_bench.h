@@ -22,7 +22,9 @@
 namespace rpt::cli {
 
 // `repeat` timed passes over each scene's frames after one warm-up pass; prints a table, or JSON.
-void RunFollowBench(const std::vector<bench::BenchScene>& scenes, int repeat, const std::string& detector,
+// `rate` > 0: the lines are also paced at that many per second (a camera's; the pipeline idles
+// between frames), each still only after the output line of the one before.
+void RunFollowBench(const std::vector<bench::BenchScene>& scenes, int repeat, double rate, const std::string& detector,
                     const engine::Config& config, bool json);
 
 }  // namespace rpt::cli

@@ -3,6 +3,8 @@
 // live in results/bench.md, not in tests).
 #include <gtest/gtest.h>
 
+#include <chrono>
+
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -61,6 +63,7 @@ TEST(BenchCommand, FollowTimesEachWayOfWaiting) {
   const test::CommandResult r = test::RunRpt("bench --follow --scene few-views --frames 20 --repeat 2 --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j["lines_per_s"].is_null()) << "back to back";
   ASSERT_EQ(j["scenes"].size(), 4u);
   const std::vector<std::pair<int, std::string>> expected = {
       {200, "full precision"}, {200, "3 decimals"}, {0, "full precision"}, {0, "3 decimals"}};
@@ -74,6 +77,23 @@ TEST(BenchCommand, FollowTimesEachWayOfWaiting) {
     EXPECT_GE(s["latency_in_process_us_median"].get<double>(), s["triangulation_us_median"].get<double>()) << i;
     EXPECT_GE(s["added_in_process_us_median"].get<double>(), 0.0) << i;
   }
+}
+
+// --follow-rate paces the lines as a camera does: 4 runs of 20 lines at 100 per second take at least
+// 4 x 19 / 100 s; back to back is the default (null in the JSON).
+TEST(BenchCommand, FollowRatePacesTheLines) {
+  const auto start = std::chrono::steady_clock::now();
+  const test::CommandResult paced =
+      test::RunRpt("bench --follow --follow-rate 100 --scene few-views --frames 10 --repeat 1 --json");
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  ASSERT_EQ(paced.exit_code, 0) << paced.err;
+  EXPECT_EQ(nlohmann::json::parse(paced.out)["lines_per_s"], 100.0);
+  EXPECT_GE(seconds, 4 * 19 / 100.0);
+  const test::CommandResult text = test::RunRpt("bench --follow --follow-rate 100 --scene few-views --frames 5 --repeat 1");
+  EXPECT_NE(text.out.find("at 100 lines per second (--follow-rate)"), std::string::npos) << text.out;
+  const test::CommandResult alone = test::RunRpt("bench --follow-rate 30 --scene few-views --frames 5");
+  EXPECT_EQ(alone.exit_code, 2);
+  EXPECT_NE(alone.err.find("--follow-rate paces the lines of --follow"), std::string::npos) << alone.err;
 }
 
 TEST(BenchCommand, HdfCacheRoundTripTiming) {
