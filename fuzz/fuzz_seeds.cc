@@ -413,12 +413,12 @@ std::map<std::string, std::vector<std::pair<std::string, Bytes>>> MakeFuzzSeeds(
   seeds["egohumans_gt"] = {{"00001.npy", EgohumansGt()}};
   seeds["egohumans_poses2d"] = {{"00001.npy", EgohumansPoses2d()}, {"nobody.npy", test::NpyOfObjectList({})}};
   AddCalibrationSeeds(&seeds);
-  seeds["config"] = {{"config.json", Of(R"({"filter": {"min_match_score": 0.9}, "triangulate": {"core_joints": ["nose", "hip_left"]},
+  seeds["config"] = {{"config.json", Of(R"({"filter": {"min_match_score": 0.9}, "triangulate": {"core_joints": ["nose", "hip_left", "hip_right"]},
   "room_check": {"size_m": [8, 8, 3]}})")}};
   seeds["thresholds"] = {{"thresholds.json", Of(R"({"description": "fuzz", "evaluations": [{"name": "synthetic",
   "dataset": "synthetic", "params": {"frames": 2}, "min": {"recall500": 50}, "max": {"mpjpe_mm": 100}}]})")}};
   seeds["sweep_list"] = {{"list.json", Of(R"([{"name": "no prefilter", "set": {"prefilter.enabled": false}},
-  {"set": {"filter.min_match_score": 0.9, "triangulate.core_joints": ["nose", "hip_left"]}}, {"name": "default"}])")},
+  {"set": {"filter.min_match_score": 0.9, "triangulate.core_joints": ["nose", "hip_left", "hip_right"]}}, {"name": "default"}])")},
                          {"object.json", Of(R"({"configurations": [{"name": "a", "set": {"merge.top_k": 0}}]})")}};
   seeds["sweep_shard"] = {{"sweep-shard-1-of-1.json", Of(R"({"total": 2, "shard": "1/1", "base": {"filter.min_match_score": "0.9"},
   "sweep": {"configurations": [{"name": "a", "set": {"merge.top_k": "0"}}, {"name": "b", "set": {}}], "base_config": "crc32:00000000",

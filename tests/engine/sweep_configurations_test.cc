@@ -25,7 +25,7 @@ TEST(SweepConfigurations, ListItemsKeepTheirOrderNamesAndValueTexts) {
   ASSERT_EQ(list.size(), 3u);
   EXPECT_EQ(list[0].name, "no prefilter");
   EXPECT_EQ(list[0].overrides, (Overrides{{"prefilter.enabled", "false"}}));
-  EXPECT_EQ(list[1].name, "config 1");  // unnamed: its index
+  EXPECT_EQ(list[1].name, "configuration 2");  // unnamed: its place, counted from 1
   EXPECT_EQ(list[1].overrides,
             (Overrides{{"filter.min_match_score", "0.9"}, {"triangulate.core_joints", R"(["nose","hip_left"])"}}));
   EXPECT_EQ(list[2].name, "default");

@@ -89,7 +89,7 @@ TEST(Triangulator, RejectsBadConfigurationAndShapes) {
   bad.filter.min_match_score = 1.5;
   EXPECT_THROW(Triangulator(cameras, CocoBodyJoints(), bad), ConfigError);
   TriangulatorOptions unknown;
-  unknown.triangulate.core_joints = {"shoulder_left", "tail"};
+  unknown.triangulate.core_joints = {"shoulder_left", "shoulder_right", "tail"};
   try {
     Triangulator(cameras, CocoBodyJoints(), unknown);
     FAIL() << "expected ConfigError";
