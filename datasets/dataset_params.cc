@@ -12,6 +12,15 @@ std::string ParamKey(std::string_view dataset, std::string_view key) {
   return std::string(dataset) + "." + std::string(key);
 }
 
+std::string RepeatedNameProblem(const std::vector<std::string>& names) {
+  for (size_t i = 1; i < names.size(); ++i) {
+    for (size_t k = 0; k < i; ++k) {
+      if (names[i] == names[k]) return QuoteName(names[i]) + " is listed twice";
+    }
+  }
+  return "";
+}
+
 std::string UnknownParamProblem(std::string_view dataset, const std::string& key,
                                 const std::vector<std::string>& known) {
   return UnknownNameProblem("parameter", key, known,

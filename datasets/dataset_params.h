@@ -41,6 +41,10 @@ namespace dataset_params {
 // "<dataset>.<key>": how messages name a parameter ("panoptic.every").
 std::string ParamKey(std::string_view dataset, std::string_view key);
 
+// "" when every name of `names` is distinct, else "'<name>' is listed twice" for the first repeated
+// one: a camera or sequence given twice was read twice (one view weighed double).
+std::string RepeatedNameProblem(const std::vector<std::string>& names);
+
 // "unknown parameter '<key>' (did you mean 'x'?) (<dataset> has: a, b)".
 std::string UnknownParamProblem(std::string_view dataset, const std::string& key,
                                 const std::vector<std::string>& known);

@@ -97,10 +97,36 @@ bool IsVoxelPoseCache(const std::string& path) {
   return extension == ".pkl" || extension == ".pickle";
 }
 
-std::string NoDetectionsMessage(const std::string& sequence) {
-  return "sequence " + QuoteName(sequence) +
-         " has no 2D detections: pass --detections FILE, --simulate, or the dataset's own cache "
-         "(e.g. --param detections=voxelpose)";
+// The reader's own sources of 2D detections: its "detections" parameter's values other than none
+// ("openpose" for mvor, "voxelpose" for shelf); empty when it has none.
+std::vector<std::string> OwnDetectionValues(const std::string& dataset) {
+  std::vector<std::string> values;
+  for (const DatasetEntry& entry : DatasetRegistry()) {
+    if (entry.info.name != dataset) continue;
+    for (const DatasetParam& param : entry.info.params) {
+      if (param.name != "detections") continue;
+      std::string rest = param.type;  // "none | voxelpose"
+      while (!rest.empty()) {
+        const size_t bar = rest.find('|');
+        std::string value = rest.substr(0, bar);
+        value.erase(0, value.find_first_not_of(' '));
+        value.erase(value.find_last_not_of(' ') + 1);
+        if (!value.empty() && value != "none") values.push_back(value);
+        rest = bar == std::string::npos ? "" : rest.substr(bar + 1);
+      }
+    }
+  }
+  return values;
+}
+
+std::string NoDetectionsMessage(const std::string& sequence, const std::string& dataset) {
+  std::string message =
+      "sequence " + QuoteName(sequence) + " has no 2D detections: pass --detections FILE or --simulate";
+  const std::vector<std::string> own = OwnDetectionValues(dataset);
+  if (own.empty()) return message;
+  message += ", or the dataset's own (";
+  for (size_t i = 0; i < own.size(); ++i) message += (i ? " or " : "") + std::string("--param detections=") + own[i];
+  return message + ")";
 }
 
 }  // namespace
@@ -226,7 +252,7 @@ Input OpenInput(const InputSpec& spec, const InputNeeds& needs) {
   }
   for (auto& source : sources) {
     if (needs.detections && source->header().detection_joints.empty()) {
-      throw InputError(NoDetectionsMessage(source->header().name));
+      throw InputError(NoDetectionsMessage(source->header().name, spec.dataset));
     }
     source = std::make_unique<CheckedSource>(std::move(source));
   }

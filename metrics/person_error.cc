@@ -17,7 +17,7 @@ std::vector<int> MapJointNames(const JointNames& wanted, const JointNames& avail
       for (size_t a = 0; a < available.size() && a < 20; ++a) names += (a ? ", " : "") + available[a];
       if (available.size() > 20) names += ", ... (" + std::to_string(available.size()) + " joints)";
       throw ConfigError("metrics: evaluated joint '" + wanted[i] + "' is not among the " + std::string(what) +
-                        " joints (" + names + "); choose the joints with --set 'metrics.evaluated_joints=[...]' "
+                        " joints (" + names + "); choose the joints with --set metrics.evaluated_joints=NAME,NAME,... "
                         "(labels written by rpt convert do not carry a dataset's own choice)");
     }
   }

@@ -72,6 +72,9 @@ std::vector<Camera> ReadPanopticCameras(const std::filesystem::path& path, const
   if (names.empty()) {
     throw ConfigError(dataset_params::ParamKey("panoptic", "cameras") + ": no cameras selected by " + QuoteName(selection));
   }
+  if (const std::string repeated = dataset_params::RepeatedNameProblem(names); !repeated.empty()) {
+    throw ConfigError(dataset_params::ParamKey("panoptic", "cameras") + ": " + repeated);
+  }
   std::vector<Camera> cameras;
   for (const std::string& name : names) {
     const auto it = by_name.find(name);
@@ -249,8 +252,9 @@ Camera ConvertPanopticCamera(const std::string& name, int width, int height, con
 }
 
 std::string PanopticParams::Check() const {
-  return sequences.empty() ? dataset_params::ParamKey("panoptic", "sequences") + ": no sequences selected"
-                           : std::string();
+  if (sequences.empty()) return dataset_params::ParamKey("panoptic", "sequences") + ": no sequences selected";
+  const std::string repeated = dataset_params::RepeatedNameProblem(sequences);
+  return repeated.empty() ? std::string() : dataset_params::ParamKey("panoptic", "sequences") + ": " + repeated;
 }
 
 DatasetInfo PanopticInfo() {

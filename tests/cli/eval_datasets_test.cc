@@ -118,8 +118,19 @@ TEST(EvalDatasets, StreamedDatasetWithoutDetectionsIsRefused) {
   const test::CommandResult r = test::RunRpt("eval --dataset panoptic --root " + test::SharedData("panoptic").string() +
                                              " --param sequences=160906_band1 --quiet --out " + out.string());
   EXPECT_EQ(r.exit_code, 2) << r.err;
-  EXPECT_NE(r.err.find("sequence 'panoptic/160906_band1' has no 2D detections"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("sequence 'panoptic/160906_band1' has no 2D detections: pass --detections FILE or --simulate\n"),
+            std::string::npos)
+      << "Panoptic has no detections of its own to suggest: " << r.err;
   EXPECT_FALSE(fs::exists(out / "summary.json"));
+  // A reader with its own detections names them (it suggested detections=voxelpose, which MVOR refuses).
+  RPT_REQUIRE_SHARED_DATA("mvor");
+  const test::CommandResult mvor = test::RunRpt("eval --dataset mvor --root " + test::SharedData("mvor").string() +
+                                                " --param detections=none --quiet --out " + out.string());
+  EXPECT_EQ(mvor.exit_code, 2);
+  EXPECT_NE(mvor.err.find("has no 2D detections: pass --detections FILE or --simulate, or the dataset's own "
+                          "(--param detections=openpose)"),
+            std::string::npos)
+      << mvor.err;
   fs::remove_all(out);
 }
 

@@ -481,6 +481,13 @@ TEST(PanopticReader, BadParamsAreConfigErrors) {
               ReadDataset(Request(dir.path(), {{"sequences", ","}}));
             }),
             "panoptic.sequences: no sequences selected");
+  // Given twice, a camera was one view weighed double and a sequence was read twice (the run then
+  // failed late, "cannot merge accumulators").
+  EXPECT_EQ(test::ErrorMessage<ConfigError>([&] {
+              ReadDataset(Request(dir.path(), {{"sequences", "seqA,seqA"}}));
+            }),
+            "panoptic.sequences: 'seqA' is listed twice");
+  EXPECT_THAT(config_error({{"cameras", "00_00,00_00"}}), HasSubstr("panoptic.cameras: '00_00' is listed twice"));
 }
 
 }  // namespace

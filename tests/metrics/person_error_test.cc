@@ -30,7 +30,7 @@ TEST(MapJointNames, UnknownNameThrowsConfigErrorNamingIt) {
     EXPECT_NE(std::string(error.what()).find("prediction"), std::string::npos) << error.what();
     // It lists what there is and says how to choose (labels converted from MVOR lack its choice).
     EXPECT_NE(std::string(error.what()).find("prediction joints (a, b); choose the joints with --set "
-                                             "'metrics.evaluated_joints=[...]'"),
+                                             "metrics.evaluated_joints=NAME,NAME,..."),
               std::string::npos)
         << error.what();
   }
