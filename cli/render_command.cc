@@ -111,7 +111,7 @@ std::vector<const Sequence*> SelectSequences(const std::vector<Sequence>& sequen
     for (const Sequence& s : sequences) found = s.name == name ? &s : found;
     if (found == nullptr) {
       throw ConfigError("--sequence: the input has no sequence " + QuoteName(name) + DidYouMean(name, names) +
-                        " (sequences: " + Join(names) + ")");
+                        " (sequences: " + JoinNames(names) + ")");
     }
     out.push_back(found);
   }

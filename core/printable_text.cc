@@ -53,4 +53,13 @@ std::string PrintableText(std::string_view text, LineBreaks line_breaks) {
 
 std::string QuoteName(std::string_view name) { return "'" + PrintableText(name, LineBreaks::kEscape) + "'"; }
 
+std::string JoinNames(const std::vector<std::string>& names, std::string_view separator) {
+  std::string out;
+  for (size_t i = 0; i < names.size(); ++i) {
+    if (i > 0) out += separator;
+    out += PrintableText(names[i], LineBreaks::kEscape);
+  }
+  return out;
+}
+
 }  // namespace rpt

@@ -10,6 +10,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace rpt {
 
@@ -23,5 +24,9 @@ std::string PrintableText(std::string_view text, LineBreaks line_breaks = LineBr
 // in single quotes, PrintableText with line breaks escaped, so a crafted name can neither split
 // the line nor act on the terminal.
 std::string QuoteName(std::string_view name);
+
+// Names from the input listed in a message ("cam0, cam1"): each PrintableText with line breaks
+// escaped, unquoted (a name's newline split the message and could forge a line of its own).
+std::string JoinNames(const std::vector<std::string>& names, std::string_view separator = ", ");
 
 }  // namespace rpt

@@ -200,14 +200,14 @@ Detections ReadMappedDetections(const std::string& path, const DetectionMapping&
     const std::set<std::string> unique(frame.cameras.begin(), frame.cameras.end());
     if (unique.size() != frame.cameras.size()) {
       throw InputError(path + ": frame " + QuoteName(frame.frame_id) + ": --rename-camera gives two views the same camera (" +
-                       Join(frame.cameras, ", ") + ")");
+                       JoinNames(frame.cameras, ", ") + ")");
     }
     names.insert(unique.begin(), unique.end());
   }
   for (const auto& [from, to] : renames) {
     if (used.count(from) == 0) {
       throw ConfigError("--rename-camera " + from + "=" + to + ": " + path + " names no camera " + QuoteName(from) +
-                        " (its cameras after renaming: " + Join(std::vector<std::string>(names.begin(), names.end())) +
+                        " (its cameras after renaming: " + JoinNames(std::vector<std::string>(names.begin(), names.end())) +
                         ")");
     }
   }

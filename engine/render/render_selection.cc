@@ -76,7 +76,7 @@ std::vector<int> SelectCameras(const std::vector<std::string>& selection, const 
     if (found < 0) {
       const std::string closest = ClosestName(wanted, names);
       throw ConfigError("--cameras: sequence " + QuoteName(sequence) + " has no camera " + QuoteName(wanted) +
-                        (closest.empty() ? "" : "; did you mean " + QuoteName(closest) + "?") + " (cameras: " + Join(names) +
+                        (closest.empty() ? "" : "; did you mean " + QuoteName(closest) + "?") + " (cameras: " + JoinNames(names) +
                         ", or their indices 0 to " + std::to_string(cameras.size() - 1) + ")");
     }
     out.push_back(found);

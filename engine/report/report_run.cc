@@ -2,11 +2,14 @@
 #include "engine/report/report_run.h"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <limits>
 #include <fstream>
 #include <sstream>
 
 #include "core/errors.h"
+#include "core/option_codec.h"
 #include "engine/outputs/text_escaping.h"
 #include "datasets/io/json_file.h"
 #include "core/printable_text.h"
@@ -87,7 +90,24 @@ RecordedPredictions ReadPredictions(const std::filesystem::path& path) {
     for (size_t p = 0; p < persons.size(); ++p) {
       const std::vector<double> values =
           io::JsonMatrix(root, pointer + "/persons/" + std::to_string(p), source, num_joints, 4);
-      auto person = poses.AddPerson(static_cast<int>(track_ids[p]));
+      // A track id rpt writes: -1 (untracked) or a non-negative int. Another value (1e30, 2.5) was
+      // cast to some other id, shown on the page and in the images as a different track.
+      const double track_id = track_ids[p];
+      if (!(track_id >= -1 && track_id <= std::numeric_limits<int>::max() && track_id == std::floor(track_id))) {
+        const std::string at = pointer + "/track_ids/" + std::to_string(p);
+        throw InputError(source + ": " + at + ": " + io::JsonExcerpt(root.at(nlohmann::json::json_pointer(at))) +
+                         " is not a track id (-1 or an integer from 0 to " +
+                         std::to_string(std::numeric_limits<int>::max()) + ")");
+      }
+      // Joint scores rpt writes lie in [0, 1].
+      for (int j = 0; j < num_joints; ++j) {
+        const double score = values[4 * j + 3];
+        if (!(score >= 0 && score <= 1)) {
+          throw InputError(source + ": " + pointer + "/persons/" + std::to_string(p) + "/" + std::to_string(j) +
+                           "/3: score " + FormatNumber(score) + " outside [0, 1]");
+        }
+      }
+      auto person = poses.AddPerson(static_cast<int>(track_id));
       for (int j = 0; j < num_joints; ++j) {
         for (int k = 0; k < 4; ++k) person(k, j) = values[4 * j + k];
       }

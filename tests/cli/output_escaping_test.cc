@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -19,6 +20,7 @@
 #include "engine/outputs/results_writer.h"
 #include "engine/outputs/sweep_html.h"
 #include "engine/report/report_html.h"
+#include "tests/cli/cli_test_util.h"
 #include "tests/cli/xml_check.h"
 #include "tests/hostile_strings.h"
 
@@ -27,6 +29,7 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 using test::HostileStrings;
+namespace fs = std::filesystem;
 
 // What a terminal must never receive raw: C0 controls (but newline and tab when
 // `line_breaks_allowed`), DEL, C1 controls, bidirectional overrides, noncharacters, invalid UTF-8.
@@ -77,6 +80,30 @@ TEST(OutputEscaping, QuotedNamesAreOneTerminalSafeLine) {
     EXPECT_EQ(quoted.back(), '\'');
     ExpectTerminalSafe(quoted, false, s);
   }
+}
+
+// Names listed in a message ("(cameras: a, b)"): one line, safe, each name as PrintableText.
+TEST(OutputEscaping, ListedNamesAreOneTerminalSafeLine) {
+  const std::vector<std::string> hostile = HostileStrings();
+  ExpectTerminalSafe(JoinNames(hostile), false, "the hostile names joined");
+  EXPECT_EQ(JoinNames({"cam0", "cam4\nresults in x\t"}), "cam0, cam4\\x0aresults in x\\x09");
+  // End to end: a calibration camera named with a line break, listed in triangulate's error.
+  const fs::path dir = test::TempDir("listed_names");
+  ASSERT_EQ(test::RunRpt("convert --dataset synthetic --param frames=1 --labels-out " + (dir / "labels.json").string() +
+                         " --detections-out " + (dir / "detections.json").string())
+                .exit_code,
+            0);
+  std::string labels = test::ReadAll(dir / "labels.json");
+  const size_t at = labels.find("\"cam4\"");
+  ASSERT_NE(at, std::string::npos);
+  labels.replace(at, 6, "\"cam4\\nresults in x\"");
+  std::ofstream(dir / "labels.json") << labels;
+  const test::CommandResult r = test::RunRpt("triangulate --cameras " + (dir / "labels.json").string() + " --detections " +
+                                             (dir / "detections.json").string() + " --out " + (dir / "out").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("(cameras: cam0, cam1, cam2, cam3, cam4\\x0aresults in x)"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("\nresults in x"), std::string::npos) << r.err;
+  fs::remove_all(dir);
 }
 
 TEST(OutputEscaping, HtmlTextHasNoMarkup) {

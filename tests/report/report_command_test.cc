@@ -195,6 +195,25 @@ TEST(ReportCommand, BadInputExitsTwoNamingTheFile) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("predictions.json: /frames/0/persons/0"), std::string::npos) << r.err;
 
+  // A track id rpt would not write (it became another id on the page and in rpt render), a score
+  // above 1.
+  for (const auto& [value, expected] : std::vector<std::pair<std::string, std::string>>{
+           {"1e30", "/frames/0/track_ids/0: 1e+30 is not a track id (-1 or an integer from 0 to 2147483647)"},
+           {"2147483648", "/frames/0/track_ids/0: 2147483648 is not a track id"},
+           {"2.5", "/frames/0/track_ids/0: 2.5 is not a track id"},
+           {"-2", "/frames/0/track_ids/0: -2 is not a track id"}}) {
+    std::ofstream(dir / "predictions.json") << R"({"joints": ["nose"], "frames": [{"id": "a", "persons": [[[1, 2, 3, 0.5]]], "track_ids": [)"
+                                            << value << "]}]}";
+    r = RunRpt("report " + dir.string());
+    EXPECT_EQ(r.exit_code, 2) << value;
+    EXPECT_NE(r.err.find("predictions.json: " + expected), std::string::npos) << r.err;
+  }
+  std::ofstream(dir / "predictions.json") << R"({"joints": ["nose"], "frames": [{"id": "a", "persons": [[[1, 2, 3, 1e308]]], "track_ids": [0]}]})";
+  r = RunRpt("report " + dir.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("predictions.json: /frames/0/persons/0/0/3: score 1e+308 outside [0, 1]"), std::string::npos)
+      << r.err;
+
   std::ofstream(dir / "per_joint.csv") << "joint,mean_error_mm,pck100_pct,count,num_gt\nnose,12.5,x,3,4\n";
   r = RunRpt("report " + dir.string());
   EXPECT_EQ(r.exit_code, 2);
