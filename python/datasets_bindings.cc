@@ -96,6 +96,7 @@ class Dataset {
   }
 
   std::vector<std::string> Warnings() const { return engine::InputWarningLines(input_.Warnings()); }
+  bool Started() const { return started_; }
 
  private:
   engine::Input input_;
@@ -312,7 +313,15 @@ void RegisterDatasets(py::module_& datasets, py::module_& synthetic) {
           "__iter__", [](Dataset& d) -> Dataset& { return d.Iterate(); }, py::return_value_policy::reference_internal)
       .def("__next__", &Dataset::Next)
       .def("load", &Dataset::Load, "every sequence in memory (validated), as rpt.datasets.Sequence objects")
-      .def_property_readonly("warnings", &Dataset::Warnings, "the readers' corrections and unused input");
+      .def_property_readonly("warnings", &Dataset::Warnings, "the readers' corrections and unused input")
+      .def("__repr__", [](const Dataset& d) {
+        const std::vector<SequenceHeader> headers = d.Headers();
+        std::string names;
+        for (size_t i = 0; i < headers.size() && i < 3; ++i) names += (i ? ", " : "") + QuoteName(headers[i].name);
+        if (headers.size() > 3) names += ", ...";
+        return "Dataset(" + std::to_string(headers.size()) + " sequence(s): " + names +
+               (d.Started() ? "; frames pulled)" : ")");
+      });
 
   datasets.def("open", &Open, py::arg("name"), py::arg("root") = "", py::kw_only(), py::arg("detections_file") = "",
                py::arg("simulate") = false, py::arg("detector") = "", py::arg("simulate_seed") = 1,

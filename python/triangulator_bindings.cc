@@ -431,7 +431,11 @@ void RegisterTriangulator(py::module_& m) {
       .def_property_readonly(
           "output_joint_names", [](const PyTriangulator& t) { return t.triangulator().output_joints(); },
           "the joints of the persons: the input joints, then the derived ones")
-      .def_property_readonly("cameras", [](const PyTriangulator& t) { return t.triangulator().cameras(); });
+      .def_property_readonly("cameras", [](const PyTriangulator& t) { return t.triangulator().cameras(); })
+      .def("__repr__", [](const PyTriangulator& t) {
+        return "Triangulator(" + std::to_string(t.triangulator().cameras().size()) + " cameras, " +
+               std::to_string(t.triangulator().input_joints().size()) + " joints)";
+      });
 }
 
 }  // namespace rpt::python

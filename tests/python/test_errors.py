@@ -27,6 +27,7 @@ def good_views(rig):
 
 def test_good_views_pass(rig):
     _, triangulator = rig
+    assert repr(triangulator) == "Triangulator(3 cameras, 17 joints)"
     persons, track_ids = triangulator.process(good_views(rig), 0.0)
     assert persons.shape == (1, 20, 4)  # 17 joints and the 3 derived ones
     assert track_ids.shape == (1,)
@@ -223,7 +224,9 @@ def test_a_camera_given_twice_is_refused(rig):
 
 def test_a_dataset_is_read_once():
     dataset = rpt.datasets.open("synthetic", frames=3)
+    assert repr(dataset) == "Dataset(1 sequence(s): 'synthetic')"
     assert sum(1 for _ in dataset) == 3
+    assert repr(dataset) == "Dataset(1 sequence(s): 'synthetic'; frames pulled)"
     with pytest.raises(ValueError, match=r"^Dataset: its frames were already pulled"):
         for _ in dataset:  # a second loop silently found no frames
             pass
