@@ -280,6 +280,15 @@ void RegisterDatasets(py::module_& datasets, py::module_& synthetic) {
              if (i < 0 || i >= n) throw py::index_error("frame index out of range");
              return Frame{s, s->frames[static_cast<size_t>(i)]};
            })
+      // sequence[a:b]: those frames as a list of Frame (process_sequence takes it).
+      .def("__getitem__",
+           [](const std::shared_ptr<Sequence>& s, const py::slice& slice) {
+             size_t start = 0, stop = 0, step = 0, length = 0;
+             if (!slice.compute(s->frames.size(), &start, &stop, &step, &length)) throw py::error_already_set();
+             py::list frames;
+             for (size_t k = 0; k < length; ++k) frames.append(Frame{s, s->frames[start + k * step]});
+             return frames;
+           })
       .def_property_readonly("warnings", [](const Sequence& s) { return engine::InputWarningLines(s.warnings); })
       .def("__repr__", [](const Sequence& s) {
         return "Sequence(" + QuoteName(s.name) + ", " + std::to_string(s.cameras.size()) + " cameras, " +

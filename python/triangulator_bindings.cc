@@ -349,6 +349,20 @@ void RegisterTriangulator(py::module_& m) {
           },
           "(persons (P, J, 4), track ids (P,)) of frame i; persons is a read-only view of the stored result "
           "(no copy; .copy() to change it)")
+      .def(
+          "__getitem__",
+          [](py::object self, const py::slice& slice) {
+            const Predictions& p = self.cast<const Predictions&>();
+            size_t start = 0, stop = 0, step = 0, length = 0;
+            if (!slice.compute(p.persons.size(), &start, &stop, &step, &length)) throw py::error_already_set();
+            py::list frames;
+            for (size_t k = 0; k < length; ++k) {
+              const Poses3D& persons = p.persons[start + k * step];
+              frames.append(py::make_tuple(PersonsView(persons, self), TrackIdsArray(persons)));
+            }
+            return frames;
+          },
+          "predictions[a:b]: a list of the (persons, track ids) of those frames")
       .def_readonly("sequence", &Predictions::sequence)
       .def_readonly("joint_names", &Predictions::joints)
       .def_readonly("frame_ids", &Predictions::frame_ids)

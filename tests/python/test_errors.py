@@ -139,6 +139,17 @@ def test_frames_index_like_a_python_sequence(predictions):
         for call in (lambda: predictions[bad], lambda: predictions.provenance(bad), lambda: predictions.stats(bad)):
             with pytest.raises(IndexError, match=r"^frame index out of range$"):
                 call()
+    # Slices as Python sequences slice (they were pybind11's overload error).
+    part = predictions[1:4]
+    assert len(part) == 3 and np.array_equal(part[0][0], predictions[1][0])
+    assert len(predictions[::-1]) == len(predictions) and np.array_equal(predictions[::-1][0][1], predictions[-1][1])
+
+
+def test_sequences_slice_into_frames_process_sequence_takes(scene):
+    frames = scene[2:5]
+    assert [frame.id for frame in frames] == [scene[i].id for i in range(2, 5)]
+    assert len(rpt.Triangulator.for_sequence(scene).process_sequence(frames)) == 3
+    assert scene[10:2] == []
 
 
 def test_empty_arrays(rig):
