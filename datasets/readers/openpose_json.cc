@@ -176,10 +176,12 @@ Detections ReadOpenPoseFolder(const std::filesystem::path& dir, const OpenPoseFo
   std::set<std::filesystem::path> folders = {std::filesystem::weakly_canonical(dir, ec)};
   long repeated_folders = 0;
   std::string first_repeated;
+  std::filesystem::path last_folder;
   for (auto it = std::filesystem::recursive_directory_iterator(
            dir, std::filesystem::directory_options::follow_directory_symlink, ec);
        !ec && it != std::filesystem::recursive_directory_iterator(); it.increment(ec)) {
     if (it->is_directory(ec)) {
+      last_folder = it->path();  // the one the iterator enters next: named should listing it fail
       std::error_code canonical_error;
       const std::filesystem::path folder = std::filesystem::canonical(it->path(), canonical_error);
       if (canonical_error || !folders.insert(folder).second || it.depth() >= kMaxFolderDepth) {
@@ -202,7 +204,12 @@ Detections ReadOpenPoseFolder(const std::filesystem::path& dir, const OpenPoseFo
       first_unmatched = relative;  // the first by name: the same line whatever the listing order
     }
   }
-  if (ec) throw InputError(source + ": cannot list the folder: " + ec.message());
+  if (ec) {
+    throw InputError(source + ": cannot list " +
+                     (last_folder.empty() ? std::string("the folder")
+                                          : "its folder " + QuoteName(last_folder.lexically_relative(dir).generic_string())) +
+                     ": " + ec.message());
+  }
   if (files.empty()) {
     throw InputError(source + ": no file matches the pattern " + QuoteName(options.mapping.pattern) +
                      " (paths relative to the folder, e.g. <camera>/<video>_000000000000_keypoints.json)");
