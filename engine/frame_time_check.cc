@@ -28,18 +28,29 @@ void FrameTimeCheck::Add(double t) {
   last_time_s_ = t;
 }
 
-bool FrameTimeCheck::LooksLikeMilliseconds(double fps) const {
-  if (steps_ < 3 || 2 * steps_beyond_gap_ <= steps_) return false;
+FrameTimeCheck::Unit FrameTimeCheck::LikelyUnit(double fps) const {
+  if (steps_ < 3 || 2 * steps_beyond_gap_ <= steps_) return Unit::kSeconds;
   const double median = metrics::Median(step_sample_);
-  if (fps > 0) return std::abs(median - 1000.0 / fps) <= 0.1 * 1000.0 / fps;
+  constexpr Unit kUnits[] = {Unit::kMilliseconds, Unit::kMicroseconds, Unit::kNanoseconds};
+  constexpr double kPerSecond[] = {1e3, 1e6, 1e9};
+  if (fps > 0) {
+    for (int u = 0; u < 3; ++u) {
+      if (std::abs(median - kPerSecond[u] / fps) <= 0.1 * kPerSecond[u] / fps) return kUnits[u];
+    }
+    return Unit::kSeconds;
+  }
   std::vector<double> deviations = step_sample_;
   for (double& step : deviations) step = std::abs(step - median);
-  return median >= 5 && median <= 70 && metrics::Median(std::move(deviations)) <= 0.1 * median;
+  if (metrics::Median(std::move(deviations)) > 0.1 * median) return Unit::kSeconds;
+  for (int u = 0; u < 3; ++u) {  // 14 to 200 frames per second
+    if (median >= 5e-3 * kPerSecond[u] && median <= 7e-2 * kPerSecond[u]) return kUnits[u];
+  }
+  return Unit::kSeconds;
 }
 
 void FrameTimeCheck::AddWarnings(const std::string& source, double fps, InputWarnings* warnings) const {
   AddStepBackWarning(source, warnings);
-  AddMillisecondsWarning(source, fps, warnings);
+  AddUnitWarning(source, fps, warnings);
 }
 
 void FrameTimeCheck::AddStepBackWarning(const std::string& source, InputWarnings* warnings) const {
@@ -47,15 +58,17 @@ void FrameTimeCheck::AddStepBackWarning(const std::string& source, InputWarnings
                 "largest step back in s", largest_step_back_s_, times_not_after_);
 }
 
-void FrameTimeCheck::AddMillisecondsWarning(const std::string& source, double fps, InputWarnings* warnings) const {
-  if (LooksLikeMilliseconds(fps)) {
-    warnings->Add(source,
-                  "frames more than track.max_gap_s (" + FormatNumber(max_gap_s_) +
-                      " s) after the previous frame, at regular steps of milliseconds' size: are the times in "
-                      "milliseconds? They must be seconds; as they are, every track ends after a frame (no tracking, "
-                      "no smoothing)",
-                  "largest step in s", largest_step_s_, steps_beyond_gap_);
-  }
+void FrameTimeCheck::AddUnitWarning(const std::string& source, double fps, InputWarnings* warnings) const {
+  const Unit unit = LikelyUnit(fps);
+  if (unit == Unit::kSeconds) return;
+  const std::string name = unit == Unit::kMilliseconds   ? "milliseconds"
+                           : unit == Unit::kMicroseconds ? "microseconds"
+                                                         : "nanoseconds";
+  warnings->Add(source,
+                "frames more than track.max_gap_s (" + FormatNumber(max_gap_s_) + " s) after the previous frame, at " +
+                    "regular steps of " + name + "' size: are the times in " + name +
+                    "? They must be seconds; as they are, every track ends after a frame (no tracking, no smoothing)",
+                "largest step in s", largest_step_s_, steps_beyond_gap_);
 }
 
 }  // namespace rpt::engine

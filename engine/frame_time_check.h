@@ -21,19 +21,22 @@ class FrameTimeCheck {
   // The next frame's time (s); unknown (not finite) times are skipped.
   void Add(double timestamp_s);
 
-  // Whether the steps look like milliseconds read as seconds: most steps beyond max_gap_s, regular
-  // (their median absolute deviation within a tenth of the median) and 5-70 s (5-70 ms: 14 to 200
-  // frames per second, what cameras record), or, with a known frame rate (fps > 0), within a tenth
-  // of 1000 / fps. Images sampled seconds apart are not (MVOR's, every 75 s, are as regular);
-  // every track ends there all the same, as it should. Needs 3 steps at least.
-  bool LooksLikeMilliseconds(double fps) const;
+  // The unit the times look like, read as seconds: most steps beyond max_gap_s, regular (their
+  // median absolute deviation within a tenth of the median) and of a camera's frame interval (14 to
+  // 200 frames per second) in milliseconds (5-70), microseconds (5e3-7e4) or nanoseconds (5e6-7e7),
+  // or, with a known frame rate (fps > 0), within a tenth of 1000 / fps, 1e6 / fps or 1e9 / fps.
+  // Else seconds: images sampled seconds apart (MVOR's, every 75 s, are as regular) end every track
+  // all the same, as they should; milliseconds of a camera below 14 frames per second cannot be
+  // told from such images without the frame rate. Needs 3 steps at least.
+  enum class Unit { kSeconds, kMilliseconds, kMicroseconds, kNanoseconds };
+  Unit LikelyUnit(double fps) const;
 
   // The sequence's warnings under `source`: frames whose time is not after the previous one, and
-  // milliseconds (LooksLikeMilliseconds); none when neither happened.
+  // times in another unit (LikelyUnit); none when neither happened.
   void AddWarnings(const std::string& source, double fps, InputWarnings* warnings) const;
   // Each of the two alone.
   void AddStepBackWarning(const std::string& source, InputWarnings* warnings) const;
-  void AddMillisecondsWarning(const std::string& source, double fps, InputWarnings* warnings) const;
+  void AddUnitWarning(const std::string& source, double fps, InputWarnings* warnings) const;
 
   long steps() const { return steps_; }                        // forward steps between known times
   long times_not_after() const { return times_not_after_; }    // frames whose time is not after the last

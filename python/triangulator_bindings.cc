@@ -189,7 +189,7 @@ class PyTriangulator {
     triangulator_.Reset();
     calls_ = 0;
     process_times_ = engine::FrameTimeCheck(triangulator_.options().track.max_gap_s);
-    warned_step_back_ = warned_milliseconds_ = false;
+    warned_step_back_ = warned_unit_ = false;
   }
 
   const Triangulator& triangulator() const { return triangulator_; }
@@ -237,10 +237,10 @@ class PyTriangulator {
       process_times_.AddStepBackWarning(source, &warnings);
     }
     const long steps = process_times_.steps();
-    if (!warned_milliseconds_ && (steps == 10 || steps == 100 || steps == 1000) &&
-        process_times_.LooksLikeMilliseconds(header_.fps)) {
-      warned_milliseconds_ = true;
-      process_times_.AddMillisecondsWarning(source, header_.fps, &warnings);
+    if (!warned_unit_ && (steps == 10 || steps == 100 || steps == 1000) &&
+        process_times_.LikelyUnit(header_.fps) != engine::FrameTimeCheck::Unit::kSeconds) {
+      warned_unit_ = true;
+      process_times_.AddUnitWarning(source, header_.fps, &warnings);
     }
     if (!warnings.empty()) WarnInput(engine::InputWarningLines(warnings));
   }
@@ -309,7 +309,7 @@ class PyTriangulator {
   FrameStats stats_;
   long calls_ = 0;
   engine::FrameTimeCheck process_times_;  // process()'s frames (WarnAboutProcessTimes)
-  bool warned_step_back_ = false, warned_milliseconds_ = false;
+  bool warned_step_back_ = false, warned_unit_ = false;
 };
 
 std::vector<Camera> CamerasOf(py::handle cameras) {
