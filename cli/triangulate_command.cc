@@ -96,6 +96,12 @@ std::vector<std::string> PrintCameraAgreement(const engine::RunResult& run) {
   return lines;
 }
 
+// A live run's warning as it happens (its end, where the counts are printed, may be hours away).
+void PrintAtOnce(const std::string& line) {
+  std::fprintf(stderr, "warning: %s (said as it happens; counted at the end)\n", PrintableText(line).c_str());
+  std::fflush(stderr);
+}
+
 // --follow: the live input through the same run loop, the frame lines on stdout, the summary on
 // stderr. Returns the exit code: 0 at the end of the input, 128 + the signal after Ctrl-C.
 int RunFollow(const TriangulateArgs& args) {
@@ -117,7 +123,12 @@ int RunFollow(const TriangulateArgs& args) {
                                          .spin_us = args.spin_us,
                                          .wait_for_lines_s = args.wait_for_lines_s,
                                          .max_persons_per_view = limits.max_persons_per_view,
-                                         .max_pairs_per_frame = limits.max_pairs_per_frame},
+                                         .max_pairs_per_frame = limits.max_pairs_per_frame,
+                                         .on_first_bad_line =
+                                             [](const std::string& error) {
+                                               PrintAtOnce("a bad line skipped (the first of --skip-bad-lines): " +
+                                                           error);
+                                             }},
                                         stop, &counts));
   } catch (const InputError&) {
     if (on_interrupt.signal_number() == 0) throw;
@@ -132,6 +143,7 @@ int RunFollow(const TriangulateArgs& args) {
   options.eval.reset();  // no ground truth: no metrics
   options.camera_agreement = true;
   options.threads = 1;
+  options.early_warning = PrintAtOnce;  // times going back or in ms: said now, counted at the end
   engine::FrameLinesWriter lines(STDOUT_FILENO, "stdout", exports);
   engine::LiveLatency latency(&counts);
   engine::RunInfo info = engine::CollectRunInfo(1);

@@ -53,6 +53,17 @@ void FrameTimeCheck::AddWarnings(const std::string& source, double fps, InputWar
   AddUnitWarning(source, fps, warnings);
 }
 
+void FrameTimeCheck::AddEarlyWarnings(const std::string& source, double fps, InputWarnings* warnings) {
+  if (!warned_step_back_ && times_not_after_ > 0) {
+    warned_step_back_ = true;
+    AddStepBackWarning(source, warnings);
+  }
+  if (!warned_unit_ && (steps_ == 10 || steps_ == 100 || steps_ == 1000) && LikelyUnit(fps) != Unit::kSeconds) {
+    warned_unit_ = true;
+    AddUnitWarning(source, fps, warnings);
+  }
+}
+
 void FrameTimeCheck::AddStepBackWarning(const std::string& source, InputWarnings* warnings) const {
   warnings->Add(source, "frames whose time is not after the previous frame's (tracks end there, and start anew)",
                 "largest step back in s", largest_step_back_s_, times_not_after_);

@@ -38,6 +38,11 @@ class FrameTimeCheck {
   void AddStepBackWarning(const std::string& source, InputWarnings* warnings) const;
   void AddUnitWarning(const std::string& source, double fps, InputWarnings* warnings) const;
 
+  // Warnings as they happen, for a run whose end may be hours away (a live stream, Python's
+  // process()): a time not after the last at once, the unit when the 10th, 100th and 1000th step
+  // are looked at (LikelyUnit sorts its sample: not every frame); each once. Call after Add.
+  void AddEarlyWarnings(const std::string& source, double fps, InputWarnings* warnings);
+
   long steps() const { return steps_; }                        // forward steps between known times
   long times_not_after() const { return times_not_after_; }    // frames whose time is not after the last
 
@@ -51,6 +56,7 @@ class FrameTimeCheck {
   long steps_ = 0, steps_beyond_gap_ = 0;
   double largest_step_s_ = 0;
   std::vector<double> step_sample_;
+  bool warned_step_back_ = false, warned_unit_ = false;  // AddEarlyWarnings
 };
 
 }  // namespace rpt::engine

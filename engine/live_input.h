@@ -6,6 +6,7 @@
 // frame ids are checked for repeats by the source within a window of recent frames, not kept.
 #pragma once
 
+#include <functional>
 #include <limits>
 #include <memory>
 #include <string>
@@ -35,6 +36,8 @@ struct LiveInputOptions {
   // a bad line (skipped with skip_bad_lines).
   int max_persons_per_view = std::numeric_limits<int>::max();
   long long max_pairs_per_frame = std::numeric_limits<long long>::max();
+  // With skip_bad_lines: the first bad line's error as soon as it is skipped; may be empty.
+  std::function<void(const std::string& error)> on_first_bad_line;
 };
 
 // Opens the stream and reads its joints line (waiting for it), on the calibration spec.cameras

@@ -168,6 +168,11 @@ void RunSequence(int index, FrameSource& source, const RunOptions& options, cons
   stages.process = [&](long frame) -> long {
     FrameSlot& s = slot(frame);
     run->times->Add(s.frame.timestamp_s);
+    if (options.early_warning) {
+      InputWarnings early;  // empty: allocates nothing unless a warning is given
+      run->times->AddEarlyWarnings(header.name, header.fps, &early);
+      for (const std::string& line : InputWarningLines(early)) options.early_warning(line);
+    }
     try {
       triangulator.Process(s.frame.views.empty() ? no_views : s.frame.views, s.frame.timestamp_s, &s.persons,
                            &s.stats, run->losses ? &s.trace : nullptr);

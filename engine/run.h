@@ -68,6 +68,11 @@ struct RunOptions {
   int threads = 0;
   // Called with the frames done so far (all sequences), by one thread at a time; may be empty.
   std::function<void(long frames_done)> progress;
+  // Called with a warning line as soon as the run sees it, for a run whose end may be hours away
+  // (a live stream): frame times not after the last, times in another unit than seconds
+  // (FrameTimeCheck::AddEarlyWarnings); each kind once per sequence. The run's warnings still
+  // count them all at the end. May be empty.
+  std::function<void(const std::string& line)> early_warning;
 };
 
 // One sequence of a run.

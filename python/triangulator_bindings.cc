@@ -189,7 +189,6 @@ class PyTriangulator {
     triangulator_.Reset();
     calls_ = 0;
     process_times_ = engine::FrameTimeCheck(triangulator_.options().track.max_gap_s);
-    warned_step_back_ = warned_unit_ = false;
   }
 
   const Triangulator& triangulator() const { return triangulator_; }
@@ -225,23 +224,12 @@ class PyTriangulator {
     return out;
   }
 
-  // process(): the times seen so far, each of the two warnings given once (rpt.InputWarning; until
-  // reset()): a time not after the last one at once, milliseconds when the 10th, 100th and 1000th
-  // step are looked at (the check sorts its sample: not every frame).
+  // process(): the times seen so far, each of the two warnings given once as it happens
+  // (rpt.InputWarning; until reset(): FrameTimeCheck::AddEarlyWarnings).
   void WarnAboutProcessTimes() {
     process_times_.Add(frame_.timestamp_s);
     InputWarnings warnings;  // empty: allocates nothing unless a warning is given
-    static const std::string source = "Triangulator.process";
-    if (!warned_step_back_ && process_times_.times_not_after() > 0) {
-      warned_step_back_ = true;
-      process_times_.AddStepBackWarning(source, &warnings);
-    }
-    const long steps = process_times_.steps();
-    if (!warned_unit_ && (steps == 10 || steps == 100 || steps == 1000) &&
-        process_times_.LikelyUnit(header_.fps) != engine::FrameTimeCheck::Unit::kSeconds) {
-      warned_unit_ = true;
-      process_times_.AddUnitWarning(source, header_.fps, &warnings);
-    }
+    process_times_.AddEarlyWarnings("Triangulator.process", header_.fps, &warnings);
     if (!warnings.empty()) WarnInput(engine::InputWarningLines(warnings));
   }
 
@@ -309,7 +297,6 @@ class PyTriangulator {
   FrameStats stats_;
   long calls_ = 0;
   engine::FrameTimeCheck process_times_;  // process()'s frames (WarnAboutProcessTimes)
-  bool warned_step_back_ = false, warned_unit_ = false;
 };
 
 std::vector<Camera> CamerasOf(py::handle cameras) {

@@ -83,6 +83,7 @@ class DetectionLineSource final : public FrameSource {
         source_(lines_->source()),
         calibration_file_(calibration_file.string()),
         skip_bad_lines_(options.skip_bad_lines),
+        on_first_bad_line_(options.on_first_bad_line),
         max_persons_per_view_(options.max_persons_per_view),
         max_pairs_per_frame_(options.max_pairs_per_frame),
         counts_(counts != nullptr ? counts : &own_counts_),
@@ -126,7 +127,10 @@ class DetectionLineSource final : public FrameSource {
       } catch (const InputError& e) {
         const std::string message = source_ + ":" + std::to_string(lines_->line_number()) + ": " + e.what();
         if (!skip_bad_lines_) throw InputError(message);
-        if (counts_->bad_lines++ == 0) counts_->first_bad_line = message;
+        if (counts_->bad_lines++ == 0) {
+          counts_->first_bad_line = message;
+          if (on_first_bad_line_) on_first_bad_line_(message);
+        }
         continue;
       }
       ++counts_->frames;
@@ -371,6 +375,7 @@ class DetectionLineSource final : public FrameSource {
   std::string source_;
   std::string calibration_file_;
   bool skip_bad_lines_;
+  std::function<void(const std::string&)> on_first_bad_line_;
   int max_persons_per_view_;
   long long max_pairs_per_frame_;
   DetectionLinesCounts own_counts_;

@@ -23,6 +23,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <string>
@@ -46,6 +47,9 @@ struct DetectionLinesOptions {
   // line: with skip_bad_lines one burst of false detections does not end the stream.
   int max_persons_per_view = std::numeric_limits<int>::max();
   long long max_pairs_per_frame = std::numeric_limits<long long>::max();
+  // With skip_bad_lines: called with the first bad line's error as soon as it is skipped (a live
+  // stream's end, where the count is printed, may be hours away); may be empty.
+  std::function<void(const std::string& error)> on_first_bad_line;
 };
 
 // What the stream held, kept up to date by the source (read it once the run is over).

@@ -310,6 +310,33 @@ TEST_F(Follow, TimesInMillisecondsAreNamedInAWarning) {
   EXPECT_EQ(other.err.find("max_gap_s"), std::string::npos) << "40 s steps at 10 fps are not milliseconds: " << other.err;
 }
 
+// A live stream's end, where the warnings are counted, may be hours away: the first bad line and
+// times in milliseconds are said as they happen (here: before the input ends).
+TEST_F(Follow, WarningsAreSaidAsTheyHappen) {
+  Child child("triangulate --follow - --skip-bad-lines --cameras " + Cameras(), dir_ / "err.txt");
+  child.WriteLine(JointsLine(detections_));
+  for (int f = 0; f < 12; ++f) {
+    if (f == 3) child.WriteLine("not a frame");
+    Json line = Json::parse(FrameLine(detections_, static_cast<size_t>(f), true));
+    line["time"] = line["time"].get<double>() * 1000;
+    child.WriteLine(line.dump());
+    ASSERT_NE(child.ReadLine(), "<timeout>") << "frame " << f;
+  }
+  const std::string early = test::ReadAll(dir_ / "err.txt");  // the input is still open
+  EXPECT_NE(early.find("warning: a bad line skipped (the first of --skip-bad-lines): stdin:5: "), std::string::npos)
+      << early;
+  EXPECT_NE(early.find("warning: stdin: 10 frames more than track.max_gap_s (1.0 s) after the previous frame, at "
+                       "regular steps of milliseconds' size"),
+            std::string::npos)
+      << "checked at the 10th step: " << early;
+  EXPECT_NE(early.find("(said as it happens; counted at the end)"), std::string::npos) << early;
+  child.CloseInput();
+  EXPECT_EQ(child.Wait(), 0);
+  const std::string all = test::ReadAll(dir_ / "err.txt");
+  EXPECT_NE(all.find("warning: stdin: 11 frames more than track.max_gap_s"), std::string::npos) << "the count at the end: " << all;
+  EXPECT_NE(all.find("warning: stdin: 1 bad lines skipped"), std::string::npos) << all;
+}
+
 // As in a detections file (Triangulate.JointsAtPixelZeroAreMissing): a joint at pixel (0, 0) with
 // a score is missing, counted at the end; the output equals that of the lines with score 0 there.
 TEST_F(Follow, JointsAtPixelZeroAreMissing) {
