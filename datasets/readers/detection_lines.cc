@@ -118,6 +118,14 @@ class DetectionLineSource final : public FrameSource {
                            " MB (the limit of --max-input-mb)");
         }
         if (IsBlank(line)) continue;
+        // The joints line again, as written the first time: the detector restarted (a supervisor's
+        // loop). Its frame ids may start over: the window of recent ids starts anew; its times going
+        // back end the tracks, as any step back does.
+        if (TrimBlanks(line) == joints_line_) {
+          ++restarts_;
+          num_recent_ = 0;
+          continue;
+        }
         ParseFrame(line, frame);
         if (const std::string problem =
                 FrameSizeProblem(frame->views, header_.cameras, max_persons_per_view_, max_pairs_per_frame_);
@@ -157,6 +165,7 @@ class DetectionLineSource final : public FrameSource {
       throw InputError(where + ": no joints line: the stream must start with {\"joints\": [names]}");
     }
     if (result == io::LineReader::Result::kTooLong) throw InputError(where + ": the joints line is too long");
+    joints_line_.assign(TrimBlanks(line));
     try {
       json_.Reset(line);
       json_.BeginObject();
@@ -225,7 +234,8 @@ class DetectionLineSource final : public FrameSource {
         has_views = true;
         ParseViews(frame);
       } else if (key == "joints") {
-        Fail("/joints", "a joints line after the first line: the joints are given once, on the first line");
+        Fail("/joints", "a joints line after the first line that is not the first line again (a restarted writer "
+                        "repeats it as it was): the joints are given once, on the first line");
       } else {
         frame_keys_.Count(key);
         json_.Skip();
@@ -360,6 +370,12 @@ class DetectionLineSource final : public FrameSource {
       warnings_.AddUnused(source_, "bad lines skipped (the first: " + counts_->first_bad_line + ")",
                           counts_->bad_lines);
     }
+    if (restarts_ > 0) {
+      warnings_.Add(source_,
+                    "restarts of the writer (its joints line again): frame ids counted anew after each, tracks "
+                    "ended at a time step back",
+                    "", 0, restarts_);
+    }
     frame_keys_.Report(source_, "frame lines", &warnings_);
     view_keys_.Report(source_, "views", &warnings_);
     warnings_.Add(source_, kOriginJointsRead, "", 0, origin_joints_);
@@ -389,6 +405,8 @@ class DetectionLineSource final : public FrameSource {
   Poses2D scratch_;
   std::vector<bool> camera_seen_;
   std::array<std::uint64_t, kRecentIds> recent_ids_{};
+  std::string joints_line_;  // the first line, trimmed: seen again, the writer restarted
+  long restarts_ = 0;
   std::size_t num_recent_ = 0;
   long frames_without_time_ = 0;
   long origin_joints_ = 0;  // joints at pixel (0, 0) read as missing (ReadOriginJointsAsMissing)

@@ -310,6 +310,30 @@ TEST_F(Follow, TimesInMillisecondsAreNamedInAWarning) {
   EXPECT_EQ(other.err.find("max_gap_s"), std::string::npos) << "40 s steps at 10 fps are not milliseconds: " << other.err;
 }
 
+// A detector restarted by its supervisor (`while true; do detector; done | rpt ...`) writes its
+// joints line again and counts its frame ids from the start: a restart, not a bad line (it ended the
+// run, or --skip-bad-lines dropped up to 1024 frames).
+TEST_F(Follow, AWriterThatRestartsIsFollowedOn) {
+  std::vector<std::string> lines;  // after the joints line LinesFile writes
+  for (int pass = 0; pass < 2; ++pass) {
+    if (pass == 1) lines.push_back(" " + JointsLine(detections_));  // blanks around it are no difference
+    for (int f = 0; f < 5; ++f) lines.push_back(FrameLine(detections_, static_cast<size_t>(f), true));
+  }
+  const test::CommandResult r = test::RunRpt("triangulate --follow - --cameras " + Cameras() + " < " +
+                                             LinesFile("restart.jsonl", lines).string());
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("12 lines, 10 frames"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("warning: stdin: 1 restarts of the writer (its joints line again)"), std::string::npos) << r.err;
+  // Other joints after the first line are still an error.
+  lines[5] = Json{{"joints", {"nose"}}}.dump();
+  const test::CommandResult other = test::RunRpt("triangulate --follow - --cameras " + Cameras() + " < " +
+                                                 LinesFile("other.jsonl", lines).string());
+  EXPECT_EQ(other.exit_code, 2);
+  EXPECT_NE(other.err.find("stdin:7: /joints: a joints line after the first line that is not the first line again"),
+            std::string::npos)
+      << other.err;
+}
+
 // A live stream's end, where the warnings are counted, may be hours away: the first bad line and
 // times in milliseconds are said as they happen (here: before the input ends).
 TEST_F(Follow, WarningsAreSaidAsTheyHappen) {
