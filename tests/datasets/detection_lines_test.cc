@@ -383,8 +383,9 @@ TEST(DetectionLines, BadLinesNameTheLineAndThePlace) {
       {"{\"views\": [], \"views\": []}", "live:2: /views: given twice"},
       {"{\"id\": \"\", \"views\": []}", "live:2: /id: empty id"},
       {"{\"id\": 1.5, \"views\": []}", "live:2: /id: expected a string or an integer id"},
-      {"{\"joints\": [\"nose\"]}",
-       "live:2: /joints: a joints line after the first line: the joints are given once, on the first line"},
+      {"{\"joints\": [\"neck\"]}",  // the first line again would be a restart (Follow.AWriterThatRestartsIsFollowedOn)
+       "live:2: /joints: a joints line after the first line that is not the first line again (a restarted writer "
+       "repeats it as it was): the joints are given once, on the first line"},
       {"{\"views\": []} x", "live:2: column 15: unexpected 'x' after the end of the JSON value"},
   };
   for (const auto& [line, message] : cases) {
