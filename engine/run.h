@@ -71,7 +71,8 @@ struct RunOptions {
   // Called with a warning line as soon as the run sees it, for a run whose end may be hours away
   // (a live stream): frame times not after the last, times in another unit than seconds
   // (FrameTimeCheck::AddEarlyWarnings); each kind once per sequence. The run's warnings still
-  // count them all at the end. May be empty.
+  // count them all at the end. Called by one thread per sequence (sequences running in parallel
+  // may call it at the same time). May be empty.
   std::function<void(const std::string& line)> early_warning;
 };
 
