@@ -144,6 +144,11 @@ Dataset OpenSpec(engine::InputSpec spec, const InputArgs& args, const py::kwargs
   try {
     py::gil_scoped_release release;
     return Dataset(engine::OpenInput(spec));
+  } catch (const ConfigError& e) {
+    // The CLI's words name its flag ("--param dayz=1: ..."); here the argument was a keyword.
+    const std::string what = e.what();
+    if (what.rfind("--param ", 0) == 0) throw ConfigError("datasets: keyword argument " + what.substr(8));
+    throw;
   } catch (const InputError& e) {
     std::error_code ec;
     if (!named.empty() && !std::filesystem::exists(named, ec)) throw MissingInputError(e.what());
