@@ -131,7 +131,12 @@ std::vector<std::filesystem::path> Write(const std::filesystem::path& dir, py::h
     for (const std::string& f : formats.cast<std::vector<std::string>>())
       format_text += (format_text.empty() ? "" : ",") + f;
   }
-  options.formats = engine::ParseExportFormats(format_text);
+  try {
+    options.formats = engine::ParseExportFormats(format_text);
+  } catch (const ConfigError& e) {  // the CLI's words name its flag ("--export xlsx: ...")
+    const std::string what = e.what();
+    throw ConfigError(what.rfind("--export ", 0) == 0 ? "export.write: formats " + what.substr(9) : what);
+  }
   options.filled_joints = filled_joints;
   if (trc_axes != "z-up" && trc_axes != "y-up")
     throw ConfigError("export.write: trc_axes: " + QuoteName(trc_axes) + " is not z-up | y-up");
