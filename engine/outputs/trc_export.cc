@@ -76,6 +76,10 @@ void TrcExport::Frame(const FrameOutput& frame) {
   const long frame_idx = s.frames++;
   const Poses3D& persons = *frame.persons;
   const double time_s = frame.input->timestamp_s;
+  if (std::isfinite(time_s)) {
+    if (s.timed_frames++ == 0) s.first_time_s = time_s;
+    s.last_time_s = time_s;
+  }
   const double scale = options_.trc_millimetres ? 1000.0 : 1.0;
   char number[64];
   for (int p = 0; p < persons.num_persons(); ++p) {
@@ -140,6 +144,11 @@ void TrcExport::WriteFile(const Sequence& s, int track_id, const Track& track) {
   double rate = s.fps;
   if (!(rate > 0) && track.rows > 1 && track.last_time_s > track.first_time_s) {
     rate = (track.rows - 1) / (track.last_time_s - track.first_time_s);
+  }
+  // A track of one frame has no rate of its own: the sequence's (it was written as 0, which a
+  // reader dividing by the rate cannot take; MVOR's images, 75 s apart, give such tracks).
+  if (!(rate > 0) && s.timed_frames > 1 && s.last_time_s > s.first_time_s) {
+    rate = static_cast<double>(s.timed_frames - 1) / (s.last_time_s - s.first_time_s);
   }
   char line[256];
   io::WriteTextFile(dir_ / name, io::NamedBy::kRpt, [&](std::ostream& out) {

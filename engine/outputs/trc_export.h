@@ -11,7 +11,8 @@
 //   <frame index + 1>  <time_s>  x  y  z ...
 // Tab-separated; a missing joint (or a filled one without ExportOptions::filled_joints) has empty
 // fields. Axes per ExportOptions::trc_axes (y up for OpenSim: (x, z, -y)), units per
-// trc_millimetres. The data rate is the sequence's fps, else the track's mean rate from its times.
+// trc_millimetres. The data rate is the sequence's fps, else the track's mean rate from its times,
+// else (a track of one frame) the sequence's mean rate from the times of its frames so far.
 // A frame with an unknown time is an InputError naming the sequence and the frame (a TRC row needs
 // a time: give --fps). Streams, and memory holds the live tracks only: each track's rows go to a
 // part file beside its target (at most kMaxOpenTrcParts open at once, others reopened to append),
@@ -66,6 +67,8 @@ class TrcExport final : public FrameSink {
     JointNames joints;
     double fps = 0;
     long frames = 0;
+    long timed_frames = 0;  // frames with a known time, from first_time_s to last_time_s
+    double first_time_s = 0, last_time_s = 0;
     std::map<int, Track> tracks;  // the live ones
     int open = 0;
     long files = 0;

@@ -95,6 +95,32 @@ TEST(TrcExport, WritesATracksFileWhenItEndsAndAReturningIdToAFileOfItsOwn) {
   fs::remove_all(dir);
 }
 
+// Without a frame rate: a track's rate from its own times; a track of one frame (MVOR's images give
+// such tracks) the sequence's mean rate from the frames so far (it was 0); a sequence of one frame
+// has none.
+TEST(TrcExport, OneFrameTracksWithoutFrameRateGetTheSequencesRate) {
+  const fs::path dir = TempDir("trc_rate");
+  TrcExport trc(dir / "trc", 1, ExportOptions{});
+  SequenceHeader header = SequenceS();
+  header.fps = 0;
+  trc.BeginSequence(0, header, {"a"});
+  Feed(&trc, 0, {0});      // frame 0 at 0 s: track 0 of one frame, ends in frame 1
+  Feed(&trc, 1, {1});      // track 1: frames 1-2
+  Feed(&trc, 2, {1});
+  Feed(&trc, 3, {2});      // frames 0.1 s apart: 10 frames a second so far
+  Feed(&trc, 4, {});
+  trc.EndSequence(0);
+  EXPECT_EQ(Lines(dir / "trc" / "s_track0.trc").at(2), "10\t10\t1\t1\tm\t10\t1\t1") << "written at frame 1: 2 frames";
+  EXPECT_EQ(Lines(dir / "trc" / "s_track1.trc").at(2), "10\t10\t2\t1\tm\t10\t2\t2") << "its own times";
+  EXPECT_EQ(Lines(dir / "trc" / "s_track2.trc").at(2), "10\t10\t1\t1\tm\t10\t4\t1") << "the sequence's, frames 0-4";
+  TrcExport single(dir / "single", 1, ExportOptions{});
+  single.BeginSequence(0, header, {"a"});
+  Feed(&single, 0, {0});
+  single.EndSequence(0);
+  EXPECT_EQ(Lines(dir / "single" / "s_track0.trc").at(2), "0\t0\t1\t1\tm\t0\t1\t1");
+  fs::remove_all(dir);
+}
+
 // Joint names come from the input ("extra_" + anything is a valid joint name): a tab or line break
 // in one must not add a column or a line to the tab-separated header.
 TEST(TrcExport, JointNamesFromTheInputKeepTheHeadersColumns) {
