@@ -110,7 +110,13 @@ void RunEval(const EvalArgs& args) {
   bool whole_body = false;  // only worth printing when face or hand joints were evaluated
   for (const auto& g : run.metrics.wholebody) whole_body |= (g.name == "Face" || g.name == "Hands") && g.num_persons > 0;
   for (const auto& g : run.metrics.wholebody) {
-    if (whole_body) std::printf("  whole-body MPJPE %-6s %.1f mm\n", g.name.c_str(), g.mpjpe_mm);
+    if (!whole_body) break;
+    if (g.num_persons > 0) {
+      std::printf("  whole-body MPJPE %-6s %.1f mm (%d joints, %d persons)\n", g.name.c_str(), g.mpjpe_mm, g.num_joints,
+                  g.num_persons);
+    } else {
+      std::printf("  whole-body MPJPE %-6s - (no matched person with these joints)\n", g.name.c_str());
+    }
   }
   if (adapter) {
     std::printf("joint adapter %s, fitted on %s: moved %ld persons, left %ld without a body frame as they were\n",

@@ -137,6 +137,11 @@ void AddCountColumns(const metrics::MetricsResult& m, OrderedJson* j) {
     OrderedJson groups;
     for (const auto& g : m.wholebody) groups[g.name] = Number(g.mpjpe_mm);
     (*j)["wholebody_mpjpe_mm"] = groups;
+    // What each group's number is over (metrics.md, section 5): a group of fewer joints than its
+    // name says (body-only predictions: "All" over 17) or of no person is visible.
+    OrderedJson counts;
+    for (const auto& g : m.wholebody) counts[g.name] = {{"joints", g.num_joints}, {"persons", g.num_persons}};
+    (*j)["wholebody_counts"] = counts;
   }
   if (m.legacy_pcp) {
     (*j)["legacy_pcp"] = Number(m.legacy_pcp->average_pcp);

@@ -272,6 +272,30 @@ TEST(EvalCommand, SeedWithoutSimulateIsRefused) {
             0);
 }
 
+// Whole-body groups say what each number is over: joints and matched persons, in summary.json and
+// on the terminal; with body-only predictions "All" is over their 17 joints.
+TEST(EvalCommand, WholeBodyGroupsNameTheirJointsAndPersons) {
+  const fs::path out = test::TempDir("wholebody_counts");
+  const test::CommandResult whole = test::RunRpt(
+      "eval --dataset synthetic --param frames=3 --param people=2 --param joints=wholebody --out " + out.string());
+  ASSERT_EQ(whole.exit_code, 0) << whole.err;
+  const nlohmann::json counts = ReadJson(out / "summary.json")["wholebody_counts"];
+  EXPECT_EQ(counts["All"]["joints"], 133);
+  EXPECT_EQ(counts["Body"]["joints"], 23);
+  EXPECT_EQ(counts["Face"]["joints"], 68);
+  EXPECT_EQ(counts["Hands"]["joints"], 42);
+  EXPECT_EQ(counts["Face"]["persons"], 6) << "2 people x 3 frames, all matched";
+  EXPECT_NE(whole.out.find("whole-body MPJPE Face"), std::string::npos) << whole.out;
+  EXPECT_NE(whole.out.find("(68 joints, 6 persons)"), std::string::npos) << whole.out;
+  const test::CommandResult body = test::RunRpt("eval --dataset synthetic --param frames=3 --param people=2 --out " +
+                                                (out / "body").string());
+  ASSERT_EQ(body.exit_code, 0) << body.err;
+  const nlohmann::json body_counts = ReadJson(out / "body" / "summary.json")["wholebody_counts"];
+  EXPECT_EQ(body_counts["All"]["joints"], 17);
+  EXPECT_EQ(body_counts["Face"]["persons"], 0);
+  fs::remove_all(out);
+}
+
 // A dataset read from disk without --root says what is missing (it said "root '' is not a directory").
 TEST(EvalCommand, ADatasetWithoutRootSaysSo) {
   const test::CommandResult r = test::RunRpt("eval --dataset mvor");
