@@ -26,6 +26,17 @@ struct Style {
   double scale;
 };
 
+// Per joint of `names`, the size of its dot, marker and limbs relative to a body joint's: face and
+// hand points (COCO-WholeBody's face_*, hand_*) a third, so that a face or hand shows its points
+// instead of one solid disc.
+std::vector<double> JointSizes(const JointNames& names) {
+  std::vector<double> sizes(names.size(), 1.0);
+  for (size_t j = 0; j < names.size(); ++j) {
+    if (names[j].rfind("face_", 0) == 0 || names[j].rfind("hand_", 0) == 0) sizes[j] = 1.0 / 3.0;
+  }
+  return sizes;
+}
+
 // The limbs (pairs of joint indices) of core/joints.h that exist in `names`.
 std::vector<std::pair<int, int>> LimbIndices(const JointNames& names) {
   std::vector<std::pair<int, int>> out;
@@ -62,6 +73,7 @@ void DrawLine(cv::Mat* canvas, const Eigen::Vector2d& a, const Eigen::Vector2d& 
 void DrawDetection(const Poses2D& view, int d, const JointNames& joints, const std::vector<std::pair<int, int>>& limbs,
                    const cv::Scalar& colour, const Style& style, cv::Mat* canvas) {
   const auto person = view.Person(d);
+  const std::vector<double> sizes = JointSizes(joints);
   for (const auto& [a, b] : limbs) {
     if (person(2, a) > 0 && person(2, b) > 0) {
       DrawLine(canvas, person.col(a).head<2>(), person.col(b).head<2>(), colour, style.Px(1));
@@ -71,28 +83,31 @@ void DrawDetection(const Poses2D& view, int d, const JointNames& joints, const s
     const Eigen::Vector2d uv = person.col(j).head<2>();
     if (!(person(2, j) > 0) || !Drawable(uv, *canvas)) continue;
     cv::drawMarker(*canvas, cv::Point(static_cast<int>(std::lround(uv.x())), static_cast<int>(std::lround(uv.y()))),
-                   colour, cv::MARKER_TILTED_CROSS, style.Px(7), style.Px(1), cv::LINE_AA);
+                   colour, cv::MARKER_TILTED_CROSS, style.Px(7 * sizes[j]), style.Px(1), cv::LINE_AA);
   }
 }
 
 // The reprojected person's limbs and joints; GT (`gt`) thin and black with squares.
 void DrawReprojected(const ReprojectedPerson& person, const std::vector<std::pair<int, int>>& limbs,
-                     const cv::Scalar& colour, bool gt, const Style& style, cv::Mat* canvas) {
+                     const std::vector<double>& sizes, const cv::Scalar& colour, bool gt, const Style& style,
+                     cv::Mat* canvas) {
+  const auto size_of = [&](size_t j) { return j < sizes.size() ? sizes[j] : 1.0; };
   for (const auto& [a, b] : limbs) {
     if (Projected(person.status[a]) && Projected(person.status[b])) {
-      DrawLine(canvas, person.uv_px.col(a), person.uv_px.col(b), colour, style.Px(gt ? 1 : 2.5));
+      const double size = std::min(size_of(a), size_of(b));
+      DrawLine(canvas, person.uv_px.col(a), person.uv_px.col(b), colour, style.Px(gt ? 1 : 2.5 * size));
     }
   }
   for (size_t j = 0; j < person.status.size(); ++j) {
     const Eigen::Vector2d uv = person.uv_px.col(j);
     if (!Projected(person.status[j]) || !Drawable(uv, *canvas)) continue;
     if (gt) {
-      const int half = style.Px(2.5);
+      const int half = style.Px(2.5 * size_of(j));
       const cv::Point c(static_cast<int>(std::lround(uv.x())), static_cast<int>(std::lround(uv.y())));
       cv::rectangle(*canvas, c - cv::Point(half, half), c + cv::Point(half, half), colour, cv::FILLED);
     } else {
-      cv::circle(*canvas, Fixed(uv), static_cast<int>(std::lround(style.Px(4) * kSubpixel)), colour, cv::FILLED,
-                 cv::LINE_AA, kShift);
+      cv::circle(*canvas, Fixed(uv), static_cast<int>(std::lround(style.Px(4 * size_of(j)) * kSubpixel)), colour,
+                 cv::FILLED, cv::LINE_AA, kShift);
     }
   }
 }
@@ -300,7 +315,8 @@ void DrawOverlay(const OverlayInput& input, cv::Mat* canvas) {
   const ViewReprojection& reprojection = *input.reprojection;
   if (input.gt_joints != nullptr) {
     const auto limbs = LimbIndices(*input.gt_joints);
-    for (const ReprojectedPerson& p : reprojection.gt) DrawReprojected(p, limbs, kBlack, /*gt=*/true, style, canvas);
+    const std::vector<double> sizes = JointSizes(*input.gt_joints);
+    for (const ReprojectedPerson& p : reprojection.gt) DrawReprojected(p, limbs, sizes, kBlack, /*gt=*/true, style, canvas);
   }
   if (input.detections != nullptr && input.detection_joints != nullptr) {
     const auto limbs = LimbIndices(*input.detection_joints);
@@ -317,8 +333,9 @@ void DrawOverlay(const OverlayInput& input, cv::Mat* canvas) {
     }
   }
   const auto limbs = LimbIndices(*input.prediction_joints);
+  const std::vector<double> sizes = JointSizes(*input.prediction_joints);
   for (const ReprojectedPerson& p : reprojection.predictions) {
-    DrawReprojected(p, limbs, PersonColour(p.track_id, p.person_idx), /*gt=*/false, style, canvas);
+    DrawReprojected(p, limbs, sizes, PersonColour(p.track_id, p.person_idx), /*gt=*/false, style, canvas);
   }
   std::vector<cv::Rect> labels;  // placed so far: a crowd's labels are moved apart
   for (const ReprojectedPerson& p : reprojection.predictions) {
