@@ -55,6 +55,24 @@ std::string Suggestion(std::string_view name) {
   std::string lower(name);
   std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
   if (lower != name && IsKnownJointName(lower)) return lower;
+  // OpenPose and Human3.6M style: LShoulder -> shoulder_left, RBigToe -> foot_big_toe_right,
+  // RFoot -> ankle_right (Human3.6M's foot is the ankle), MidHip / Hip -> hip_middle.
+  const auto snake = [](std::string_view camel) {
+    std::string out;
+    for (const char c : camel) {
+      if (std::isupper(static_cast<unsigned char>(c)) && !out.empty()) out += '_';
+      out += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    }
+    return out;
+  };
+  if (name == "MidHip" || name == "Hip") return "hip_middle";
+  if (name.size() > 2 && (name[0] == 'L' || name[0] == 'R') && std::isupper(static_cast<unsigned char>(name[1]))) {
+    std::string base = snake(name.substr(1));
+    if (base == "foot") base = "ankle";
+    const std::string candidate = base + (name[0] == 'L' ? "_left" : "_right");
+    if (IsKnownJointName(candidate)) return candidate;
+    if (IsKnownJointName("foot_" + candidate)) return "foot_" + candidate;
+  }
   return "";
 }
 

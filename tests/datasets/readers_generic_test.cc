@@ -23,6 +23,7 @@ using engine::ReadDataset;
 namespace {
 
 using ::testing::HasSubstr;
+using ::testing::Not;
 using test::InputErrorOf;
 using test::WriteText;
 
@@ -360,6 +361,14 @@ TEST(GenericCommon, JointNamesAreCheckedWithSuggestions) {
   EXPECT_THAT(InputErrorOf([] { CheckJointNames({"nose", "left_big_toe"}, "f.json: /joints"); }),
               HasSubstr("f.json: /joints: unknown joint name 'left_big_toe' (did you mean 'foot_big_toe_left'?)"));
   EXPECT_THAT(InputErrorOf([] { CheckJointNames({"Nose"}, "x"); }), HasSubstr("(did you mean 'nose'?)"));
+  // OpenPose's and Human3.6M's spellings.
+  for (const auto& [given, meant] : std::vector<std::pair<std::string, std::string>>{
+           {"LShoulder", "shoulder_left"}, {"RWrist", "wrist_right"}, {"RBigToe", "foot_big_toe_right"},
+           {"LFoot", "ankle_left"}, {"MidHip", "hip_middle"}, {"Hip", "hip_middle"}}) {
+    EXPECT_THAT(InputErrorOf([&] { CheckJointNames({given}, "x"); }), HasSubstr("(did you mean '" + meant + "'?)"))
+        << given;
+  }
+  EXPECT_THAT(InputErrorOf([] { CheckJointNames({"LTail"}, "x"); }), Not(HasSubstr("did you mean")));
   EXPECT_THAT(InputErrorOf([] { CheckJointNames({"nose", "nose"}, "x"); }), HasSubstr("'nose' appears twice"));
   EXPECT_THAT(InputErrorOf([] { CheckJointNames({}, "x"); }), HasSubstr("x: the joint list is empty"));
 }
