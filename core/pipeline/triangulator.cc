@@ -96,6 +96,14 @@ void Triangulator::Process(std::span<const Poses2D> views, double timestamp_s, P
                      std::to_string(m.cameras.size()) + " cameras");
   }
   for (size_t v = 0; v < views.size(); ++v) {
+    // A Poses2D filled by hand: data whose length is not whole persons of num_joints (or a negative
+    // count) was dropped unseen or ended in std::length_error.
+    const long long values = static_cast<long long>(views[v].data.size());
+    if (views[v].num_joints < 0 || (views[v].num_joints == 0 && values > 0) ||
+        (views[v].num_joints > 0 && values % (3LL * views[v].num_joints) != 0)) {
+      throw InputError("view " + std::to_string(v) + ": " + std::to_string(values) + " values for poses of " +
+                       std::to_string(views[v].num_joints) + " joints (3 per joint and person)");
+    }
     if (views[v].num_persons() > 0 && views[v].num_joints != num_inputs) {
       throw InputError("view " + std::to_string(v) + " has poses with " + std::to_string(views[v].num_joints) +
                        " joints, expected " + std::to_string(num_inputs));

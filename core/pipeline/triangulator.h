@@ -34,6 +34,8 @@ struct TriangulatorModel;
 struct FrameBuffers;
 struct TemporalState;
 
+// Not thread-safe: calls on one object must not overlap. Use one Triangulator per thread; they
+// share nothing.
 class Triangulator {
  public:
   Triangulator(std::vector<Camera> cameras, JointNames input_joints, TriangulatorOptions options);

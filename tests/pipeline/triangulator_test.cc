@@ -143,6 +143,21 @@ TEST(Triangulator, RejectsBadConfigurationAndShapes) {
   wrong_joints[0].Clear(5);
   wrong_joints[0].AddPerson();
   EXPECT_THROW(tri.Process(wrong_joints, 0, &persons, &stats), InputError);
+  // A Poses2D filled by hand with a length that is not whole persons (it was dropped unseen), or a
+  // negative joint count (std::length_error).
+  std::vector<Poses2D> ragged(3);
+  ragged[1].num_joints = static_cast<int>(CocoBodyJoints().size());
+  ragged[1].data.assign(3 * ragged[1].num_joints + 2, 1.0);
+  try {
+    tri.Process(ragged, 0, &persons, &stats);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "view 1: 53 values for poses of 17 joints (3 per joint and person)");
+  }
+  ragged[1].num_joints = -1;
+  EXPECT_THROW(tri.Process(ragged, 0, &persons, &stats), InputError);
+  ragged[1].num_joints = 0;
+  EXPECT_THROW(tri.Process(ragged, 0, &persons, &stats), InputError);
 }
 
 // 1600 persons in one view took 4.7 s and 1 GB for one frame (issue 10): association is quadratic
