@@ -64,6 +64,32 @@ OrderedJson ReadPerJoint(const std::filesystem::path& path) {
   return rows;
 }
 
+// A person of predictions.json: num_joints rows of x, y, z, score. A joint the export did not write
+// (a filled one with --no-filled-joints) is [null, null, null, 0]: missing, score 0 (report and
+// render refused such runs: "found null in row 9").
+std::vector<double> PersonValues(const nlohmann::json& root, const std::string& pointer, const std::string& source,
+                                 int num_joints) {
+  const nlohmann::json& rows = io::JsonAt(root, pointer, source);
+  std::vector<double> values(4 * static_cast<size_t>(num_joints), 0.0);
+  const auto fail = [&]() -> void {
+    throw InputError(source + ": " + pointer + ": expected " + std::to_string(num_joints) +
+                     "x4 array of numbers (a joint not written: null, null, null, 0)");
+  };
+  if (!rows.is_array() || rows.size() != static_cast<size_t>(num_joints)) fail();
+  for (int j = 0; j < num_joints; ++j) {
+    const nlohmann::json& row = rows[static_cast<size_t>(j)];
+    if (!row.is_array() || row.size() != 4) fail();
+    if (row[0].is_null() && row[1].is_null() && row[2].is_null() && row[3].is_number() && row[3].get<double>() == 0) {
+      continue;  // not written: missing
+    }
+    for (int k = 0; k < 4; ++k) {
+      if (!row[static_cast<size_t>(k)].is_number()) fail();
+      values[4 * static_cast<size_t>(j) + k] = row[static_cast<size_t>(k)].get<double>();
+    }
+  }
+  return values;
+}
+
 RecordedPredictions ReadPredictions(const std::filesystem::path& path) {
   const nlohmann::json root = io::LoadJsonFile(path);
   const std::string source = path.string();
@@ -88,8 +114,7 @@ RecordedPredictions ReadPredictions(const std::filesystem::path& path) {
     Poses3D poses;
     poses.Clear(num_joints);
     for (size_t p = 0; p < persons.size(); ++p) {
-      const std::vector<double> values =
-          io::JsonMatrix(root, pointer + "/persons/" + std::to_string(p), source, num_joints, 4);
+      const std::vector<double> values = PersonValues(root, pointer + "/persons/" + std::to_string(p), source, num_joints);
       // A track id rpt writes: -1 (untracked) or a non-negative int. Another value (1e30, 2.5) was
       // cast to some other id, shown on the page and in the images as a different track.
       const double track_id = track_ids[p];

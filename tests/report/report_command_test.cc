@@ -179,6 +179,24 @@ TEST(ReportCommand, ReloadsRelativeInputPathsFromTheRunsFolder) {
   fs::remove_all(moved);
 }
 
+// A run exported with --no-filled-joints writes a filled joint as [null, null, null, 0]: report and
+// render read it as missing (they refused the run: "found null in row 9").
+TEST(ReportCommand, ReadsJointsTheExportDidNotWrite) {
+  const fs::path dir = TempDir("report_unwritten");
+  ASSERT_TRUE(EvalAndReport("--dataset synthetic --param frames=3", dir));
+  nlohmann::json predictions = nlohmann::json::parse(ReadAll(dir / "predictions.json"));
+  predictions["frames"][0]["persons"][0][2] = {nullptr, nullptr, nullptr, 0};
+  std::ofstream(dir / "predictions.json") << predictions.dump();
+  CommandResult r = RunRpt("report " + dir.string());
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  predictions["frames"][0]["persons"][0][2] = {nullptr, nullptr, nullptr, 0.5};  // a score without a place
+  std::ofstream(dir / "predictions.json") << predictions.dump();
+  r = RunRpt("report " + dir.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("predictions.json: /frames/0/persons/0: expected 20x4 array of numbers"), std::string::npos)
+      << r.err;
+}
+
 TEST(ReportCommand, BadInputExitsTwoNamingTheFile) {
   const fs::path dir = TempDir("report_bad");
   CommandResult r = RunRpt("report " + (dir / "missing").string());
