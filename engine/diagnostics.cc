@@ -46,6 +46,16 @@ std::vector<CheckWarning> ResultWarnings(const RunResult& run) {
                   frames_with_gt, 100.0 * without_prediction / frames_with_gt);
     warnings.push_back({"frames_without_predictions", text});
   }
+  // A whole-body group the detector gave nothing of (OpenPose without face points): its joints are
+  // neighbours' copies, and its number measures the filling, not a triangulation.
+  for (const metrics::GroupResult& group : run.metrics.wholebody) {
+    if (group.num_persons == 0 || group.filled_share < kMinFilledShareWarned) continue;
+    std::snprintf(text, sizeof(text),
+                  "whole-body group %s: %.0f %% of its measured joints were filled from a neighbour, not "
+                  "triangulated (did the detector give these points?): its MPJPE measures the filling",
+                  group.name.c_str(), 100.0 * group.filled_share);
+    warnings.push_back({"wholebody_group_filled", text});
+  }
   const double recall = run.metrics.recall_500;
   if (std::isfinite(recall) && recall < kMinRecall500) {
     std::snprintf(text, sizeof(text),

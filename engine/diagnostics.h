@@ -17,6 +17,7 @@ namespace rpt::engine {
 
 // Result warning triggers.
 inline constexpr double kMinRecall500 = 50.0;                 // %, below: "low_recall"
+inline constexpr double kMinFilledShareWarned = 0.9;          // of a whole-body group: "wholebody_group_filled"
 inline constexpr double kMaxShareFramesWithoutPrediction = 0.3;  // of frames with GT persons
 
 struct EvalDiagnostics {

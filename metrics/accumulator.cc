@@ -148,7 +148,7 @@ PairRecord MetricsAccumulator::MakePair(const Poses3D& gt, int gt_idx, const Eva
   if (options_.wholebody_groups) {
     for (size_t k = 0; k < layout_.gt_group.size(); ++k) {
       double sum = 0.0;
-      int count = 0;
+      int count = 0, filled = 0;
       if (aligned) {
         for (size_t i = 0; i < layout_.gt_group[k].size(); ++i) {
           const Eigen::Vector3d g = JointMmOrNaN(gt, gt_idx, layout_.gt_group[k][i], options_.min_gt_score);
@@ -157,9 +157,12 @@ PairRecord MetricsAccumulator::MakePair(const Poses3D& gt, int gt_idx, const Eva
           if (g.hasNaN() || p.hasNaN()) continue;  // GT-invalid or not predicted
           sum += ((p - pred_offset) - (g - gt_offset)).norm();
           ++count;
+          filled += predictions.Provenance(pred_idx, layout_.pred_group[k][i]) == JointProvenance::kFilled ? 1 : 0;
         }
       }
       record.group_errors.push_back(count > 0 ? sum / count : kNaN);
+      record.group_joints.push_back(count);
+      record.group_filled.push_back(filled);
     }
   }
   record.pcp = EvaluateGenericPcp(pcp_layout_, gt_person, &pred_person, options_.pcp_alpha);

@@ -41,6 +41,8 @@ struct PairRecord {
   Eigen::ArrayXd joint_errors;         // absolute, evaluated joints (NaN GT-invalid, +inf missing)
   Eigen::ArrayXd report_joint_errors;  // aligned if set
   std::vector<double> group_errors;    // per whole-body group mean (NaN = no joint)
+  std::vector<int> group_joints;       // per group: the joints in that mean
+  std::vector<int> group_filled;       // of those: filled from a neighbour, not triangulated
   std::vector<PartOutcome> pcp;        // generic PCP outcomes of this pair
 };
 

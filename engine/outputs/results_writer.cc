@@ -140,7 +140,9 @@ void AddCountColumns(const metrics::MetricsResult& m, OrderedJson* j) {
     // What each group's number is over (metrics.md, section 5): a group of fewer joints than its
     // name says (body-only predictions: "All" over 17) or of no person is visible.
     OrderedJson counts;
-    for (const auto& g : m.wholebody) counts[g.name] = {{"joints", g.num_joints}, {"persons", g.num_persons}};
+    for (const auto& g : m.wholebody) {
+      counts[g.name] = {{"joints", g.num_joints}, {"persons", g.num_persons}, {"filled_share", g.filled_share}};
+    }
     (*j)["wholebody_counts"] = counts;
   }
   if (m.legacy_pcp) {

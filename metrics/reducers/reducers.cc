@@ -19,6 +19,8 @@ MetricTotals::MetricTotals(const EvalOptions& options) {
   if (options.legacy_pcp != LegacyPcpLayout::kNone) legacy_pcp.evaluator.emplace(options);
   wholebody.sum_mm.assign(num_groups, 0.0);
   wholebody.count.assign(num_groups, 0);
+  wholebody.joints.assign(num_groups, 0);
+  wholebody.filled.assign(num_groups, 0);
 }
 
 void MetricTotals::Fold(const FrameRecords& frame) {

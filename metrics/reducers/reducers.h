@@ -121,6 +121,7 @@ struct LegacyPcpTotals {
 struct WholeBodyTotals {
   std::vector<double> sum_mm;  // of the pairs' group means
   std::vector<int> count;
+  std::vector<long> joints, filled;   // the joints measured, and of those filled (not triangulated)
   std::vector<int> group_num_joints;  // of the last frame that gave both joint lists; empty before
   void Fold(const FrameRecords& frame);
   void Merge(const WholeBodyTotals& other);

@@ -13,6 +13,8 @@ void WholeBodyTotals::Fold(const FrameRecords& frame) {
       if (std::isnan(pair.group_errors[k])) continue;
       sum_mm[k] += pair.group_errors[k];
       ++count[k];
+      joints[k] += pair.group_joints[k];
+      filled[k] += pair.group_filled[k];
     }
   }
 }
@@ -21,6 +23,8 @@ void WholeBodyTotals::Merge(const WholeBodyTotals& other) {
   for (size_t k = 0; k < sum_mm.size(); ++k) {
     sum_mm[k] += other.sum_mm[k];
     count[k] += other.count[k];
+    joints[k] += other.joints[k];
+    filled[k] += other.filled[k];
   }
   if (!other.group_num_joints.empty()) group_num_joints = other.group_num_joints;
 }
@@ -35,6 +39,7 @@ void ReduceWholeBody(const MetricTotals& totals, const EvalOptions& options, Met
     group.num_persons = wholebody.count[k];
     group.num_joints = wholebody.group_num_joints.empty() ? 0 : wholebody.group_num_joints[k];
     group.mpjpe_mm = wholebody.count[k] > 0 ? wholebody.sum_mm[k] / wholebody.count[k] : kNaN;
+    group.filled_share = wholebody.joints[k] > 0 ? static_cast<double>(wholebody.filled[k]) / wholebody.joints[k] : 0.0;
     result->wholebody.push_back(group);
   }
 }

@@ -293,6 +293,33 @@ TEST(EvalCommand, WholeBodyGroupsNameTheirJointsAndPersons) {
   const nlohmann::json body_counts = ReadJson(out / "body" / "summary.json")["wholebody_counts"];
   EXPECT_EQ(body_counts["All"]["joints"], 17);
   EXPECT_EQ(body_counts["Face"]["persons"], 0);
+  EXPECT_LT(counts["Face"]["filled_share"].get<double>(), 0.1);
+  EXPECT_EQ(whole.err.find("wholebody_group_filled"), std::string::npos);
+  EXPECT_EQ(whole.err.find("filled from a neighbour"), std::string::npos) << whole.err;
+  // A detector without face points (OpenPose run without --face): the face joints are all neighbours'
+  // copies, and the Face number measures that filling: said, not shown as a face error alone.
+  ASSERT_EQ(test::RunRpt("convert --dataset synthetic --param frames=3 --param people=2 --param joints=wholebody "
+                         "--labels-out " + (out / "labels.json").string() + " --detections-out " +
+                         (out / "detections.json").string())
+                .exit_code,
+            0);
+  nlohmann::json detections = ReadJson(out / "detections.json");
+  for (auto& frame : detections["frames"]) {
+    for (auto& view : frame["views"]) {
+      for (auto& pose : view["poses"]) {
+        for (int j = 23; j <= 90; ++j) pose[j] = nullptr;  // COCO-WholeBody's face
+      }
+    }
+  }
+  std::ofstream(out / "no_face.json") << detections.dump();
+  const test::CommandResult no_face = test::RunRpt("eval --labels " + (out / "labels.json").string() + " --detections " +
+                                                   (out / "no_face.json").string() + " --out " + (out / "nf").string());
+  ASSERT_EQ(no_face.exit_code, 0) << no_face.err;
+  EXPECT_NE(no_face.err.find("warning: whole-body group Face: 100 % of its measured joints were filled from a "
+                             "neighbour, not triangulated"),
+            std::string::npos)
+      << no_face.err;
+  EXPECT_EQ(ReadJson(out / "nf" / "summary.json")["wholebody_counts"]["Face"]["filled_share"], 1.0);
   fs::remove_all(out);
 }
 
