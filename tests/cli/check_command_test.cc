@@ -211,6 +211,13 @@ TEST_F(CheckCommandTest, JsonIsTheWholeStdoutAndListsSkipsAndErrors) {
   EXPECT_NE(junit.result.err.find("j.xml: cannot open for writing"), std::string::npos) << junit.result.err;
   EXPECT_EQ(junit.result.out.find("recall500"), std::string::npos) << "nothing ran: " << junit.result.out;
 
+  // The counts of what the metrics leave out (summary.json) are metrics too.
+  const CheckRun counts = RunCheck(dir_, "counts.json", R"({"evaluations": [{"name": "counts", "dataset": "synthetic",
+      "params": {"frames": 5}, "max": {"missing_pred_joints": 0, "dropped_gt_persons": 0, "unaligned_matches": 0}}]})",
+                                   "--json");
+  EXPECT_EQ(counts.result.exit_code, 0) << counts.result.err;
+  EXPECT_EQ(nlohmann::json::parse(counts.result.out)["totals"]["checks"], 3);
+
   const CheckRun unnamed = RunCheck(dir_, "unnamed.json", R"({"evaluations": [{"name": "", "dataset": "synthetic",
       "min": {"pcp": 1}}]})");
   EXPECT_EQ(unnamed.result.exit_code, 2);
