@@ -73,6 +73,11 @@ void ClampScoreOvershoot(const std::string& source, std::vector<Poses2D>* views,
   }
 }
 
+// predictions[i]: (persons, a read-only view kept alive by `owner`; track ids).
+py::tuple FrameTuple(const Poses3D& persons, py::handle owner) {
+  return py::make_tuple(PersonsView(persons, owner), TrackIdsArray(persons));
+}
+
 py::dict StatsDict(const FrameStats& stats) {
   py::dict steps;
   for (int s = 0; s < kNumSteps; ++s) {
@@ -332,7 +337,7 @@ void RegisterTriangulator(py::module_& m) {
           [](py::object self, long i) {
             const Predictions& p = self.cast<const Predictions&>();
             const Poses3D& persons = p.persons[FrameIndex(i, p.persons.size())];
-            return py::make_tuple(PersonsView(persons, self), TrackIdsArray(persons));
+            return FrameTuple(persons, self);
           },
           "(persons (P, J, 4), track ids (P,)) of frame i; persons is a read-only view of the stored result "
           "(no copy; .copy() to change it)")
@@ -345,7 +350,7 @@ void RegisterTriangulator(py::module_& m) {
             py::list frames;
             for (size_t k = 0; k < length; ++k) {
               const Poses3D& persons = p.persons[start + k * step];
-              frames.append(py::make_tuple(PersonsView(persons, self), TrackIdsArray(persons)));
+              frames.append(FrameTuple(persons, self));
             }
             return frames;
           },
