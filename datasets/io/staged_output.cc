@@ -42,10 +42,48 @@ void Unregister(Registry& registry, const fs::path& path) {
 }
 
 // `<target>.tmp-<pid>-<n>`, followed by the target's extension when asked (call with the lock held).
+// A name near the file system's limit (255 bytes) is shortened first (at a UTF-8 character
+// boundary), so any name that may exist can be written.
 fs::path NextTemporaryName(Registry& registry, const fs::path& target, bool keep_extension = false) {
-  return target.parent_path() /
-         (target.filename().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
-          std::to_string(registry.next_number++) + (keep_extension ? target.extension().string() : std::string()));
+  const std::string suffix = ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(registry.next_number++) +
+                             (keep_extension ? target.extension().string() : std::string());
+  std::string name = target.filename().string();
+  constexpr size_t kNameMax = 255;
+  if (name.size() + suffix.size() > kNameMax) {
+    size_t keep = suffix.size() < kNameMax ? kNameMax - suffix.size() : 0;
+    while (keep > 0 && (static_cast<unsigned char>(name[keep]) & 0xC0) == 0x80) --keep;  // not inside a character
+    name.resize(keep);
+  }
+  return target.parent_path() / (name + suffix);
+}
+
+// The descriptor a name stands for when it is one of this process's own open files: `-`,
+// /dev/stdout, /dev/stderr, /dev/fd/N, /proc/self/fd/N, /proc/<our pid>/fd/N, or a link (chain)
+// to one of those; -1 otherwise. Writing to such a name must go to the descriptor: renaming over
+// it would replace a system link (/dev/stdout) with a file, and opening it anew would truncate a
+// log that stdout is redirected to.
+int OwnDescriptor(const fs::path& name) {
+  if (name == "-") return 1;
+  const std::string self_fd = "/proc/" + std::to_string(::getpid()) + "/fd/";
+  fs::path at = name;
+  for (int hops = 0; hops < 40; ++hops) {
+    const std::string text = at.lexically_normal().string();
+    if (text == "/dev/stdout") return 1;
+    if (text == "/dev/stderr") return 2;
+    for (const std::string& prefix : {std::string("/dev/fd/"), std::string("/proc/self/fd/"),
+                                     std::string("/proc/thread-self/fd/"), self_fd}) {
+      if (text.size() > prefix.size() && text.compare(0, prefix.size(), prefix) == 0 &&
+          text.find_first_not_of("0123456789", prefix.size()) == std::string::npos && text.size() - prefix.size() < 9) {
+        return std::stoi(text.substr(prefix.size()));
+      }
+    }
+    std::error_code ec;
+    if (!fs::is_symlink(fs::symlink_status(at, ec))) return -1;
+    const fs::path next = fs::read_symlink(at, ec);
+    if (ec) return -1;
+    at = next.is_absolute() ? next : at.parent_path() / next;
+  }
+  return -1;
 }
 
 bool IsDeviceOrFifo(const fs::file_status& status) {
@@ -139,6 +177,20 @@ void RemoveRegisteredFile(const fs::path& path) {
 
 StagedFile::StagedFile(const fs::path& target, NamedBy named_by, bool keep_extension) : target_(target) {
   std::error_code ec;
+  if (named_by == NamedBy::kUser) descriptor_ = OwnDescriptor(target_);
+  if (descriptor_ >= 0) {  // staged in the temporary folder, copied to the descriptor by Commit()
+    if (::fcntl(descriptor_, F_GETFD) < 0) {
+      throw InputError(target_.string() + ": cannot open for writing (file descriptor " + std::to_string(descriptor_) +
+                       " is not open)");
+    }
+    fs::path folder = fs::temp_directory_path(ec);
+    if (ec) folder = "/tmp";
+    ::close(CreateRegisteredFile(folder / ("rpt-fd" + std::to_string(descriptor_) +
+                                           (keep_extension ? target_.extension().string() : std::string())),
+                                 &temporary_, keep_extension));
+    pending_ = true;
+    return;
+  }
   const fs::file_status entry = fs::symlink_status(target_, ec);  // the name itself: a link is not followed
   if (fs::is_directory(entry)) throw InputError(target_.string() + ": is a folder, expected a file");
   if (named_by == NamedBy::kUser && fs::exists(entry) && !fs::is_regular_file(entry) &&
@@ -158,6 +210,12 @@ StagedFile::~StagedFile() {
 
 void StagedFile::Commit() {
   if (!pending_) return;  // written in place
+  if (descriptor_ >= 0) {
+    CopyToDescriptor();
+    RemoveRegisteredFile(temporary_);
+    pending_ = false;
+    return;
+  }
   if (!SyncToDisk(temporary_, /*folder=*/false)) {
     throw InputError(target_.string() + ": write failed (" + ErrnoText() + ")");
   }
@@ -168,6 +226,33 @@ void StagedFile::Commit() {
   }
   Unregister(registry, temporary_);
   pending_ = false;
+}
+
+void StagedFile::CopyToDescriptor() const {
+  const int in = ::open(temporary_.c_str(), O_RDONLY | O_CLOEXEC | O_NOFOLLOW);
+  if (in < 0) throw InputError(target_.string() + ": write failed (" + ErrnoText() + ")");
+  char buffer[1 << 16];
+  for (;;) {
+    const ssize_t got = ::read(in, buffer, sizeof buffer);
+    if (got == 0) break;
+    if (got < 0 && errno == EINTR) continue;
+    for (ssize_t done = 0; got > 0 && done < got;) {
+      const ssize_t put = ::write(descriptor_, buffer + done, static_cast<size_t>(got - done));
+      if (put < 0 && errno == EINTR) continue;
+      if (put <= 0) {
+        const std::string error = ErrnoText();
+        ::close(in);
+        throw InputError(target_.string() + ": write failed (" + error + ")");
+      }
+      done += put;
+    }
+    if (got < 0) {
+      const std::string error = ErrnoText();
+      ::close(in);
+      throw InputError(target_.string() + ": write failed (" + error + ")");
+    }
+  }
+  ::close(in);
 }
 
 StagedFolder::StagedFolder(const fs::path& target) : target_(target) {

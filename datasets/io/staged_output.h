@@ -22,7 +22,10 @@ enum class NamedBy {
   kRpt,   // a file rpt names inside an output folder (a run, sweep or render folder, RUN_DIR/report.html):
           // whatever is at the name (a link, a FIFO, a device) is replaced by the new file
   kUser,  // the path the user gave for the file itself (--out FILE, --junit FILE): a device or FIFO
-          // there, or a link to one (/dev/stdout, /dev/full), is written to in place
+          // there, or a link to one (/dev/null, /dev/full, a named pipe), is written to in place; one of
+          // the process's own open files (`-`, /dev/stdout, /dev/stderr, /dev/fd/N, /proc/self/fd/N, or a
+          // link to one) gets the complete file written to that descriptor by Commit(), whatever it is
+          // (a pipe, a terminal, a log file stdout is redirected to: appended there, never truncated)
 };
 
 // A file written under a temporary name in the target's folder, then renamed over the target by
@@ -45,8 +48,11 @@ class StagedFile {
   void Commit();
 
  private:
+  void CopyToDescriptor() const;
+
   std::filesystem::path target_;
   std::filesystem::path temporary_;
+  int descriptor_ = -1;   // the process's own file the target names (NamedBy::kUser), else -1
   bool pending_ = false;  // a registered temporary exists
 };
 

@@ -2,6 +2,7 @@
 // io::StagedFile / io::StagedFolder: outputs appear complete or not at all, temporaries never stay.
 #include "datasets/io/staged_output.h"
 
+#include <fcntl.h>
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -342,6 +343,79 @@ TEST(RemoveTemporariesForExit, RemovesWhatIsBeingWritten) {
   EXPECT_EQ(Read(root / "kept.txt"), "old");
   EXPECT_TRUE(fs::is_empty(root / "run"));
   fs::remove_all(root);
+}
+
+TEST(StagedOutput, OwnOutputNamesWriteToTheDescriptor) {
+  // In a child whose stdout is a log file with a line in it (as `rpt check --junit /dev/stdout > log`):
+  // every name of the process's own stdout appends the whole file to the log; nothing is renamed
+  // over a link, nothing is created in /dev or /proc, the log is not truncated.
+  const fs::path dir = FreshDir("own_fd");
+  const fs::path log = dir / "log";
+  fs::create_symlink("/proc/self/fd/1", dir / "mystdout");
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (fd < 0 || ::dup2(fd, 1) < 0) ::_exit(90);
+    if (::write(1, "before\n", 7) != 7 || ::chdir(dir.c_str()) != 0) ::_exit(91);
+    // The system's /dev/stdout is such a link (to /proc/self/fd/1): `mystdout` stands for it, so
+    // that a broken build fails this test without replacing the machine's /dev/stdout.
+    try {
+      for (const char* name : {"link", "/dev/fd/1", "-", "/proc/self/fd/1"}) {
+        const fs::path target = std::string(name) == "link" ? dir / "mystdout" : fs::path(name);
+        WriteTextFile(target, NamedBy::kUser, std::string(name) + "\n");
+      }
+      StagedFile unused(dir / "mystdout", NamedBy::kUser);  // not committed: nothing written
+      std::ofstream(unused.path()) << "never\n";
+    } catch (...) {
+      ::_exit(92);
+    }
+    ::_exit(0);
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status));
+  ASSERT_EQ(WEXITSTATUS(status), 0);
+  EXPECT_EQ(Read(log), "before\nlink\n/dev/fd/1\n-\n/proc/self/fd/1\n");
+  EXPECT_TRUE(fs::is_symlink(fs::symlink_status(dir / "mystdout")));
+  EXPECT_EQ(Entries(dir), (std::vector<std::string>{"log", "mystdout"}));
+  // A descriptor that is not open is an error naming the file, before anything is written.
+  try {
+    StagedFile closed("/dev/fd/987", NamedBy::kUser);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("/dev/fd/987: cannot open for writing (file descriptor 987 is not open)"),
+              std::string::npos)
+        << error.what();
+  }
+  // Named by rpt inside an output folder, such a link is replaced as every link is.
+  WriteTextFile(dir / "mystdout", NamedBy::kRpt, "file\n");
+  EXPECT_FALSE(fs::is_symlink(fs::symlink_status(dir / "mystdout")));
+  EXPECT_EQ(Read(dir / "mystdout"), "file\n");
+  fs::remove_all(dir);
+}
+
+TEST(StagedOutput, NamesNearTheLengthLimitAreWritten) {
+  const fs::path dir = FreshDir("long_names");
+  const std::string longest(255, 'N');
+  std::string utf8;  // 254 bytes of two-byte characters: shortened at a character boundary
+  while (utf8.size() < 254) utf8 += "\xc3\xa9";
+  for (const std::string& name : {longest, utf8, std::string(245, 'F')}) {
+    WriteTextFile(dir / name, NamedBy::kUser, "old");
+    WriteTextFile(dir / name, NamedBy::kUser, "new");
+    EXPECT_EQ(Read(dir / name), "new") << name.size();
+  }
+  const fs::path folder = dir / std::string(250, 'D');
+  fs::create_directories(folder);
+  {
+    StagedFolder staged(folder);
+    EXPECT_FALSE(staged.in_place());
+    WriteTextFile(staged.path() / "summary.json", NamedBy::kRpt, "{}");
+    staged.Commit();
+  }
+  EXPECT_EQ(Read(folder / "summary.json"), "{}");
+  EXPECT_EQ(Entries(dir).size(), 4u);  // no temporary left
+  fs::remove_all(dir);
 }
 
 TEST(JsonOutput, EscapesQuotesAndReplacesInvalidUtf8) {
