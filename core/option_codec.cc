@@ -50,9 +50,7 @@ bool InRange(double value, const OptionSpec& spec) {
 // A bound of a range: integers without a fraction ("1000000000"), others as FormatNumber.
 std::string BoundText(double value) {
   if (value == std::floor(value) && std::abs(value) < 1e15) {
-    char text[32];
-    std::snprintf(text, sizeof(text), "%.0f", value);
-    return text;
+    return FixedText(value, 0);
   }
   return FormatNumber(value);
 }

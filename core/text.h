@@ -2,9 +2,10 @@
 // Small string helpers for messages and listings.
 #pragma once
 
-#include <cstdio>
+#include <charconv>
 #include <string>
 #include <string_view>
+#include <system_error>
 #include <vector>
 
 namespace rpt {
@@ -23,12 +24,33 @@ inline std::string_view TrimBlanks(std::string_view text) {
   return text.substr(first, text.find_last_not_of(kBlanks) - first + 1);
 }
 
-// A share (0.42) as a rounded percentage for messages ("42 %").
-inline std::string PercentText(double share) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%.0f %%", 100.0 * share);
-  return text;
+// Numbers as text and back without the C library's locale: printf and strtod follow LC_NUMERIC,
+// which a host program (Python's locale.setlocale, a GUI toolkit) may set to a decimal comma.
+
+// `value` with `decimals` digits after the point: printf's "%.*f" in the C locale.
+inline std::string FixedText(double value, int decimals) {
+  char text[400];
+  const auto result = std::to_chars(text, text + sizeof(text), value, std::chars_format::fixed, decimals);
+  return result.ec == std::errc() ? std::string(text, result.ptr) : std::string("?");
 }
+
+// `value` with `significant` digits: printf's "%.*g" in the C locale.
+inline std::string GeneralText(double value, int significant) {
+  char text[64];
+  const auto result = std::to_chars(text, text + sizeof(text), value, std::chars_format::general, significant);
+  return result.ec == std::errc() ? std::string(text, result.ptr) : std::string("?");
+}
+
+// The whole of `text` as a number (decimal point, optional exponent, "inf"/"nan"); false when it
+// is not one or lies beyond the double range.
+inline bool ParseNumber(std::string_view text, double* value) {
+  if (text.size() > 1 && text[0] == '+' && text[1] != '-') text.remove_prefix(1);  // from_chars takes no '+'
+  const auto result = std::from_chars(text.data(), text.data() + text.size(), *value);
+  return result.ec == std::errc() && result.ptr == text.data() + text.size();
+}
+
+// A share (0.42) as a rounded percentage for messages ("42 %").
+inline std::string PercentText(double share) { return FixedText(100.0 * share, 0) + " %"; }
 
 // "a, b, c".
 inline std::string Join(const std::vector<std::string>& items, std::string_view separator = ", ") {

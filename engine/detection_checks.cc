@@ -127,12 +127,6 @@ bool HasInput(const SequenceFrame& frame) {
   return false;
 }
 
-std::string FixedText(double value, int decimals) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%.*f", decimals, value);
-  return text;
-}
-
 // Keeps every stride-th of the items offered (by their running index), doubling the stride
 // whenever more than `max_kept` are kept: a sample spread over a stream of unknown length, in
 // bounded memory. With max_kept = 0, or while at most max_kept items came, it keeps all.

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "core/errors.h"
+#include "core/text.h"
 
 namespace rpt::io {
 namespace {
@@ -37,9 +38,7 @@ void CheckCameraCount(std::uint64_t count, const std::string& where) {
 }
 
 std::string MegabytesText(std::uint64_t bytes) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%.1f", static_cast<double>(bytes) / (1 << 20));
-  return text;
+  return FixedText(static_cast<double>(bytes) / (1 << 20), 1);
 }
 
 }  // namespace rpt::io

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "datasets/io/json_pull.h"
 
+#include <locale.h>
+#include <stdlib.h>
+
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -172,9 +175,11 @@ double JsonPull::NumberSlow() {
   double value = 0;
   const auto [end, error] = std::from_chars(number.data(), number.data() + number.size(), value);
   if (error == std::errc::result_out_of_range) {
-    // Beyond the double range (1e400) or below its smallest value (1e-400): strtod says which.
+    // Beyond the double range (1e400) or below its smallest value (1e-400): strtod says which, read
+    // in the C locale (the process's LC_NUMERIC may want a decimal comma).
+    static const locale_t c_locale = ::newlocale(LC_ALL_MASK, "C", static_cast<locale_t>(nullptr));
     const std::string copy(number);
-    value = std::strtod(copy.c_str(), nullptr);
+    value = ::strtod_l(copy.c_str(), nullptr, c_locale);
   } else if (error != std::errc() || end != number.data() + number.size()) {
     pos_ = start;
     Fail("expected a number");

@@ -10,6 +10,7 @@
 
 #include "core/errors.h"
 #include "core/printable_text.h"
+#include "core/text.h"
 
 namespace rpt::io {
 namespace {
@@ -57,9 +58,7 @@ void ReprInto(const PyValue& v, std::string& out, std::size_t max_length, std::s
     case PyKind::kBool: out += v.bool_value ? "True" : "False"; break;
     case PyKind::kInt: out += std::to_string(v.int_value); break;
     case PyKind::kFloat: {
-      char buf[32];
-      std::snprintf(buf, sizeof(buf), "%.17g", v.float_value);
-      out += buf;
+      out += GeneralText(v.float_value, 17);
       break;
     }
     case PyKind::kStr: quoted(v.text, false); break;

@@ -6,6 +6,7 @@
 
 #include "engine/outputs/results_writer.h"
 #include "engine/outputs/text_escaping.h"
+#include "engine/outputs/fixed_decimal.h"
 
 namespace rpt::engine {
 
@@ -28,16 +29,19 @@ void CsvExport::Frame(const FrameOutput& frame) {
   const Poses3D& persons = *frame.persons;
   if (persons.num_persons() == 0) return;
   // What every row of the frame starts with.
-  char time[48] = "";
-  if (std::isfinite(frame.input->timestamp_s)) std::snprintf(time, sizeof(time), "%.6f", frame.input->timestamp_s);
-  const std::string prefix = s.name + "," + std::to_string(frame_idx) + "," + CsvField(frame.input->id) + "," + time + ",";
-  char numbers[160];
+  std::string prefix = s.name + "," + std::to_string(frame_idx) + "," + CsvField(frame.input->id) + ",";
+  if (std::isfinite(frame.input->timestamp_s)) AppendFixedDecimal(frame.input->timestamp_s, 6, &prefix);
+  prefix += ",";
+  std::string numbers;
   for (int p = 0; p < persons.num_persons(); ++p) {
     const auto person = persons.Person(p);
     for (int j = 0; j < persons.num_joints; ++j) {
       if (!JointWritten(persons, p, j, options_)) continue;
-      std::snprintf(numbers, sizeof(numbers), "%.6f,%.6f,%.6f,%.4f,", person(0, j), person(1, j), person(2, j),
-                    person(3, j));
+      numbers.clear();
+      for (int k = 0; k < 4; ++k) {  // printf's "%.6f,%.6f,%.6f,%.4f," in the C locale, whatever LC_NUMERIC says
+        AppendFixedDecimal(person(k, j), k < 3 ? 6 : 4, &numbers);
+        numbers += ',';
+      }
       out << prefix << persons.track_ids[p] << "," << s.joints[j] << "," << numbers
           << ProvenanceName(persons.Provenance(p, j)) << "\n";
     }

@@ -30,11 +30,7 @@ OrderedJson Number(double value) { return std::isfinite(value) ? OrderedJson(val
 std::string Cell(const OrderedJson& value, int decimals = 1) {
   if (value.is_null()) return "-";
   if (value.is_number_integer()) return std::to_string(value.get<long>());
-  if (value.is_number()) {
-    char text[64];
-    std::snprintf(text, sizeof(text), "%.*f", decimals, value.get<double>());
-    return text;
-  }
+  if (value.is_number()) return FixedText(value.get<double>(), decimals);
   return value.is_string() ? value.get<std::string>() : value.dump();
 }
 

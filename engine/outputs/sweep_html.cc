@@ -12,6 +12,7 @@
 #include "engine/json_text.h"
 #include "engine/outputs/results_writer.h"
 #include "engine/outputs/text_escaping.h"
+#include "core/text.h"
 
 namespace rpt::engine {
 namespace {
@@ -56,12 +57,6 @@ std::string Shortened(const std::string& name, size_t max_characters) {
   return characters <= max_characters ? name : name.substr(0, cut) + "...";
 }
 
-std::string FixedDecimals(double value, int decimals) {
-  char text[64];
-  std::snprintf(text, sizeof(text), "%.*f", decimals, value);
-  return text;
-}
-
 int DecimalsOf(const std::string& key) { return key == "frame_time_us_median" ? 0 : 1; }
 
 // The metric of a row, or NaN when the row does not report it.
@@ -73,7 +68,11 @@ double Value(const OrderedJson& row, const std::string& key) {
 
 // `value` as shown (rounded to its decimals): deltas are of the shown values, so that two values
 // shown differently never get a delta of 0 (38.447 and 38.459 show as 38.4 and 38.5: -0.1).
-double Shown(double value, const std::string& key) { return std::stod(FixedDecimals(value, DecimalsOf(key))); }
+double Shown(double value, const std::string& key) {
+  double shown = value;
+  ParseNumber(FixedText(value, DecimalsOf(key)), &shown);
+  return shown;
+}
 
 // Whether a row's numbers can be compared with the baseline's (same metrics options).
 bool Comparable(const OrderedJson& row, const OrderedJson& baseline) {
@@ -87,8 +86,8 @@ std::string Verdict(double delta, const Headline& metric) {
 }
 
 std::string DeltaText(double delta, const std::string& key) {
-  const std::string text = FixedDecimals(std::fabs(delta), DecimalsOf(key));
-  if (text == FixedDecimals(0.0, DecimalsOf(key))) return "\u00b1" + text;  // plus-minus sign
+  const std::string text = FixedText(std::fabs(delta), DecimalsOf(key));
+  if (text == FixedText(0.0, DecimalsOf(key))) return "\u00b1" + text;  // plus-minus sign
   return (delta > 0 ? "+" : "\u2212") + text;                       // minus sign
 }
 
@@ -127,15 +126,15 @@ std::string BarChart(const OrderedJson& rows, const Headline& metric, size_t bas
                                 : !Comparable(row, rows[baseline]) ? "incomparable"
                                                                    : Verdict(Shown(v, metric.key) - Shown(base_value, metric.key), metric);
     svg << "<g class=\"bar " << verdict << "\"><title>" << HtmlText(name) << ": "
-        << (std::isfinite(v) ? FixedDecimals(v, DecimalsOf(metric.key)) : "-") << "</title>";
+        << (std::isfinite(v) ? FixedText(v, DecimalsOf(metric.key)) : "-") << "</title>";
     svg << "<text x=\"" << kLabelWidth - 6 << "\" y=\"" << y + 12 << "\" text-anchor=\"end\">" << HtmlText(shown)
         << "</text>";
     if (std::isfinite(v)) {
       const double w = length(v);
-      svg << "<rect x=\"" << kLabelWidth << "\" y=\"" << y + 2 << "\" width=\"" << FixedDecimals(w, 1) << "\" height=\""
+      svg << "<rect x=\"" << kLabelWidth << "\" y=\"" << y + 2 << "\" width=\"" << FixedText(w, 1) << "\" height=\""
           << kRowHeight - 5 << "\"/>";
-      svg << "<text x=\"" << FixedDecimals(kLabelWidth + w + 4, 1) << "\" y=\"" << y + 12 << "\">"
-          << FixedDecimals(v, DecimalsOf(metric.key)) << "</text>";
+      svg << "<text x=\"" << FixedText(kLabelWidth + w + 4, 1) << "\" y=\"" << y + 12 << "\">"
+          << FixedText(v, DecimalsOf(metric.key)) << "</text>";
     } else {
       svg << "<text x=\"" << kLabelWidth + 4 << "\" y=\"" << y + 12 << "\">-</text>";
     }
@@ -143,13 +142,13 @@ std::string BarChart(const OrderedJson& rows, const Headline& metric, size_t bas
   }
   const int bars_height = static_cast<int>(rows.size()) * kRowHeight + 6;
   if (std::isfinite(base_value)) {
-    const std::string x = FixedDecimals(kLabelWidth + length(base_value), 1);
+    const std::string x = FixedText(kLabelWidth + length(base_value), 1);
     svg << "<line class=\"baseline-mark\" x1=\"" << x << "\" y1=\"0\" x2=\"" << x << "\" y2=\"" << bars_height
         << "\"/>\n";
   }
   if (start > 0) {
     svg << "<text class=\"axis-start\" x=\"" << kLabelWidth << "\" y=\"" << bars_height + 12 << "\">bars start at "
-        << FixedDecimals(start, DecimalsOf(metric.key)) << ", not 0</text>\n";
+        << FixedText(start, DecimalsOf(metric.key)) << ", not 0</text>\n";
   }
   svg << "</svg>";
   return svg.str();
@@ -248,13 +247,13 @@ std::string SweepHtml(const OrderedJson& sweep) {
         html << "-</td>";
         continue;
       }
-      html << FixedDecimals(v, DecimalsOf(h.key));
+      html << FixedText(v, DecimalsOf(h.key));
       const double base_value = Value(rows[baseline.row], h.key);
       if (i != baseline.row && !Comparable(row, rows[baseline.row])) {
         html << " <span class=\"delta incomparable\" title=\"measured with other metrics options\">n/a</span>";
       } else if (i != baseline.row && std::isfinite(base_value)) {
         const double delta = Shown(v, h.key) - Shown(base_value, h.key);
-        html << " <span class=\"delta " << Verdict(delta, h) << "\" data-delta=\"" << FixedDecimals(v - base_value, 4) << "\">"
+        html << " <span class=\"delta " << Verdict(delta, h) << "\" data-delta=\"" << FixedText(v - base_value, 4) << "\">"
              << DeltaText(delta, h.key) << "</span>";
       }
       html << "</td>";

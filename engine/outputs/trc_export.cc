@@ -12,6 +12,8 @@
 #include "datasets/io/text_file.h"
 #include "engine/outputs/file_names.h"
 #include "engine/outputs/text_escaping.h"
+#include "core/text.h"
+#include "engine/outputs/fixed_decimal.h"
 
 namespace rpt::engine {
 TrcExport::TrcExport(std::filesystem::path dir, int num_sequences, ExportOptions options)
@@ -81,7 +83,7 @@ void TrcExport::Frame(const FrameOutput& frame) {
     s.last_time_s = time_s;
   }
   const double scale = options_.trc_millimetres ? 1000.0 : 1.0;
-  char number[64];
+  std::string number;
   for (int p = 0; p < persons.num_persons(); ++p) {
     if (persons.track_ids[p] < 0) continue;
     if (!std::isfinite(time_s)) {
@@ -92,7 +94,8 @@ void TrcExport::Frame(const FrameOutput& frame) {
     Track& track = s.tracks[persons.track_ids[p]];
     ++track.rows;
     track.last_frame = frame_idx;
-    std::snprintf(number, sizeof(number), "%ld\t%.6f", frame_idx + 1, time_s);
+    number.assign(std::to_string(frame_idx + 1)).push_back('\t');  // C-locale numbers whatever LC_NUMERIC says
+    AppendFixedDecimal(time_s, 6, &number);
     out << number;
     const auto person = persons.Person(p);
     for (int j = 0; j < persons.num_joints; ++j) {
@@ -106,7 +109,11 @@ void TrcExport::Frame(const FrameOutput& frame) {
         z = -y;
         y = up;
       }
-      std::snprintf(number, sizeof(number), "\t%.6f\t%.6f\t%.6f", x * scale, y * scale, z * scale);
+      number.clear();
+      for (const double value : {x * scale, y * scale, z * scale}) {
+        number.push_back('\t');
+        AppendFixedDecimal(value, 6, &number);
+      }
       out << number;
     }
     out << "\n";
@@ -150,13 +157,14 @@ void TrcExport::WriteFile(const Sequence& s, int track_id, const Track& track) {
   if (!(rate > 0) && s.timed_frames > 1 && s.last_time_s > s.first_time_s) {
     rate = static_cast<double>(s.timed_frames - 1) / (s.last_time_s - s.first_time_s);
   }
-  char line[256];
   io::WriteTextFile(dir_ / name, io::NamedBy::kRpt, [&](std::ostream& out) {
     out << "PathFileType\t4\t(X/Y/Z)\t" << name << "\n";
     out << "DataRate\tCameraRate\tNumFrames\tNumMarkers\tUnits\tOrigDataRate\tOrigDataStartFrame\tOrigNumFrames\n";
-    std::snprintf(line, sizeof(line), "%.6g\t%.6g\t%ld\t%zu\t%s\t%.6g\t%ld\t%ld\n", rate, rate, track.rows,
-                  s.joints.size(), options_.trc_millimetres ? "mm" : "m", rate, track.first_frame + 1, track.rows);
-    out << line << "Frame#\tTime";
+    const std::string rate_text = GeneralText(rate, 6);  // printf's "%.6g" in the C locale
+    out << rate_text << "\t" << rate_text << "\t" << track.rows << "\t" << s.joints.size() << "\t"
+        << (options_.trc_millimetres ? "mm" : "m") << "\t" << rate_text << "\t" << track.first_frame + 1 << "\t"
+        << track.rows << "\n";
+    out << "Frame#\tTime";
     for (const std::string& joint : s.joints) out << "\t" << TrcField(joint) << "\t\t";
     out << "\n\t";
     for (size_t j = 1; j <= s.joints.size(); ++j) out << "\tX" << j << "\tY" << j << "\tZ" << j;

@@ -13,6 +13,7 @@
 #include "engine/outputs/text_escaping.h"
 #include "datasets/io/json_file.h"
 #include "core/printable_text.h"
+#include "core/text.h"
 
 namespace rpt::engine {
 namespace {
@@ -52,11 +53,11 @@ OrderedJson ReadPerJoint(const std::filesystem::path& path) {
     }
     auto number = [&](const std::string& text) -> OrderedJson {
       if (text == "-" || text.empty()) return nullptr;
-      try {
-        return std::stod(text);
-      } catch (const std::exception&) {
+      double value = 0;
+      if (!ParseNumber(text, &value)) {
         throw InputError(path.string() + ":" + std::to_string(line_number) + ": " + QuoteName(text) + " is not a number");
       }
+      return value;
     };
     rows.push_back({{"joint", fields[0]}, {"mean_error_mm", number(fields[1])}, {"pck100", number(fields[2])},
                     {"count", number(fields[3])}});
