@@ -30,6 +30,7 @@ struct ConvertArgs {
 
 Detections CollectDetections(const std::vector<Sequence>& sequences) {
   Detections detections;
+  detections.unlisted_cameras_unavailable = true;  // a view without data this frame is left out
   for (const Sequence& s : sequences) {
     if (detections.joints.empty()) detections.joints = s.detection_joints;
     if (!s.detection_joints.empty() && s.detection_joints != detections.joints) {
@@ -39,7 +40,9 @@ Detections CollectDetections(const std::vector<Sequence>& sequences) {
       if (f.views.empty()) continue;
       FrameDetections frame;
       frame.frame_id = f.id;
+      frame.time_s = f.timestamp_s;  // for a run with --cameras instead of the labels
       for (size_t v = 0; v < f.views.size(); ++v) {
+        if (f.views[v].unavailable) continue;
         frame.cameras.push_back(s.cameras[v].name);
         frame.views.push_back(f.views[v]);
       }

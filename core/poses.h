@@ -19,11 +19,16 @@ namespace rpt {
 struct Poses2D {
   int num_joints = 0;
   std::vector<double> data;  // num_persons * num_joints * 3
+  // The camera delivered nothing for this frame (dropped, not started yet, not processed): it has
+  // no persons and neither supports nor contradicts a person the other views see. A view that is
+  // not unavailable and has no persons looked and saw nobody.
+  bool unavailable = false;
 
   int num_persons() const { return num_joints > 0 ? static_cast<int>(data.size()) / (3 * num_joints) : 0; }
   void Clear(int joints) {
     num_joints = joints;
     data.clear();
+    unavailable = false;
   }
   // Appends a person with all joints missing and returns its joints (3 x num_joints).
   Eigen::Map<Eigen::Matrix3Xd> AddPerson() {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "datasets/detections.h"
 
+#include <algorithm>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -8,6 +9,45 @@
 #include "core/printable_text.h"
 
 namespace rpt {
+
+void MarkUnavailableViews(const Detections& detections, bool frame_in_file, std::span<const char> listed,
+                          std::span<const char> mentioned, std::span<Poses2D> views) {
+  for (size_t c = 0; c < views.size(); ++c) {
+    const bool is_listed = frame_in_file && c < listed.size() && listed[c];
+    const bool is_mentioned = c < mentioned.size() && mentioned[c];
+    views[c].unavailable = !is_listed && (!is_mentioned || detections.unlisted_cameras_unavailable);
+  }
+}
+
+std::unique_ptr<Detections> WithUnlistedCamerasUnavailable(const Detections& detections) {
+  if (detections.unlisted_cameras_unavailable) return nullptr;
+  std::vector<std::string> cameras;  // in the order of their first mention
+  std::unordered_set<std::string> seen;
+  for (const FrameDetections& frame : detections.frames) {
+    for (const std::string& camera : frame.cameras) {
+      if (seen.insert(camera).second) cameras.push_back(camera);
+    }
+  }
+  auto out = std::make_unique<Detections>(detections);
+  out->unlisted_cameras_unavailable = true;
+  const int num_joints = static_cast<int>(detections.joints.size());
+  for (FrameDetections& frame : out->frames) {
+    for (const std::string& camera : cameras) {
+      if (std::find(frame.cameras.begin(), frame.cameras.end(), camera) != frame.cameras.end()) continue;
+      frame.cameras.push_back(camera);  // it looked and saw nobody
+      frame.views.emplace_back().Clear(num_joints);
+    }
+  }
+  return out;
+}
+
+std::vector<char> CamerasMentioned(const Detections& detections, const std::vector<std::string>& cameras) {
+  std::unordered_set<std::string> names;
+  for (const FrameDetections& frame : detections.frames) names.insert(frame.cameras.begin(), frame.cameras.end());
+  std::vector<char> mentioned(cameras.size(), 0);
+  for (size_t c = 0; c < cameras.size(); ++c) mentioned[c] = names.count(cameras[c]) ? 1 : 0;
+  return mentioned;
+}
 
 AttachReport AttachDetections(const Detections& detections, const std::string& source, std::span<Sequence> sequences,
                               InputWarnings* warnings) {
@@ -26,11 +66,17 @@ AttachReport AttachDetections(const Detections& detections, const std::string& s
   }
 
   const int num_joints = static_cast<int>(detections.joints.size());
-  for (Sequence& sequence : sequences) {
+  std::vector<std::vector<char>> mentioned(sequences.size());
+  for (size_t s = 0; s < sequences.size(); ++s) {
+    Sequence& sequence = sequences[s];
     sequence.detection_joints = detections.joints;
+    std::vector<std::string> names;
+    for (const Camera& camera : sequence.cameras) names.push_back(camera.name);
+    mentioned[s] = CamerasMentioned(detections, names);
     for (SequenceFrame& frame : sequence.frames) {
       frame.views.assign(sequence.cameras.size(), Poses2D{});
       for (Poses2D& view : frame.views) view.Clear(num_joints);
+      MarkUnavailableViews(detections, /*frame_in_file=*/false, {}, mentioned[s], frame.views);  // until attached
     }
   }
   AttachReport report;
@@ -43,6 +89,7 @@ AttachReport AttachDetections(const Detections& detections, const std::string& s
     }
     for (const Place& place : it->second) {
       attached.insert(place.frame);
+      std::vector<char> listed(place.frame->views.size(), 0);
       for (size_t v = 0; v < found.views.size(); ++v) {
         const auto cam = place.camera_index->find(found.cameras[v]);
         if (cam == place.camera_index->end()) {
@@ -55,7 +102,10 @@ AttachReport AttachDetections(const Detections& detections, const std::string& s
                            std::to_string(num_joints));
         }
         place.frame->views[cam->second] = found.views[v];
+        listed[cam->second] = 1;
       }
+      const size_t s = static_cast<size_t>(place.sequence - sequences.data());
+      MarkUnavailableViews(detections, /*frame_in_file=*/true, listed, mentioned[s], place.frame->views);
     }
   }
 

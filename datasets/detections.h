@@ -3,6 +3,7 @@
 // they attach to a Sequence.
 #pragma once
 
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -28,7 +29,28 @@ struct Detections {
   JointNames joints;                   // joint names of every Poses2D
   std::vector<FrameDetections> frames;
   InputWarnings warnings;              // corrections the reader applied (one line per file and kind)
+  // What a camera left out of a frame means: true where the format lists the cameras that were
+  // processed (generic JSON, the live lines, OpenPose folders, rpt's HDF5 cache): the camera has no
+  // data for that frame (Poses2D::unavailable), and so has every camera of a frame the file leaves
+  // out; false where a format lists only cameras with detections (COCO result lists): it saw
+  // nobody. A camera the file mentions in no frame at all has no data in any frame either way.
+  bool unlisted_cameras_unavailable = false;
 };
+
+// Marks the views of a frame that the detections give no data for: `listed[c]` says whether the
+// frame lists camera c (`frame_in_file`: whether the file has the frame at all), `mentioned[c]`
+// whether any frame of the file does. The views must be empty already (Clear).
+void MarkUnavailableViews(const Detections& detections, bool frame_in_file, std::span<const char> listed,
+                          std::span<const char> mentioned, std::span<Poses2D> views);
+
+// `detections` for a format where a camera left out of a frame has no data there (generic JSON,
+// rpt's HDF5 cache): where unlisted_cameras_unavailable is false, each frame also lists, with no
+// persons, every camera the file mentions in some frame. Returns nullptr when nothing changes
+// (the caller writes `detections` itself).
+std::unique_ptr<Detections> WithUnlistedCamerasUnavailable(const Detections& detections);
+
+// mentioned[c] for `cameras` (by name): whether any frame of `detections` lists the camera.
+std::vector<char> CamerasMentioned(const Detections& detections, const std::vector<std::string>& cameras);
 
 struct AttachReport {
   int frames_with_detections = 0;  // input frames listed in the detections (possibly with no person)

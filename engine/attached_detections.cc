@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "engine/attached_detections.h"
 
+#include <algorithm>
 #include <utility>
 
 #include "core/errors.h"
@@ -14,7 +15,13 @@ class AttachedDetections::Source final : public FrameSource {
   Source(std::unique_ptr<FrameSource> frames, AttachedDetections* file, size_t index)
       : frames_(std::move(frames)), file_(file), index_(index), header_(frames_->header()) {
     header_.detection_joints = file_->detections_.joints;
-    for (size_t c = 0; c < header_.cameras.size(); ++c) camera_index_[header_.cameras[c].name] = static_cast<int>(c);
+    std::vector<std::string> names;
+    for (size_t c = 0; c < header_.cameras.size(); ++c) {
+      camera_index_[header_.cameras[c].name] = static_cast<int>(c);
+      names.push_back(header_.cameras[c].name);
+    }
+    mentioned_ = CamerasMentioned(file_->detections_, names);
+    listed_.resize(names.size());
   }
 
   const SequenceHeader& header() const override { return header_; }
@@ -34,11 +41,13 @@ class AttachedDetections::Source final : public FrameSource {
     if (it == file_->frame_index_.end()) {
       AttachedDetections::Absent& absent = file_->absent_[index_];
       if (absent.count++ == 0) absent.first = frame->id;
+      MarkUnavailableViews(file_->detections_, /*frame_in_file=*/false, listed_, mentioned_, frame->views);
       return true;
     }
     const FrameDetections& found = file_->detections_.frames[it->second];
     file_->used_[it->second].store(true, std::memory_order_relaxed);
     ++frames_with_;
+    std::fill(listed_.begin(), listed_.end(), 0);
     for (size_t v = 0; v < found.views.size(); ++v) {
       const auto camera = camera_index_.find(found.cameras[v]);
       if (camera == camera_index_.end()) {
@@ -51,7 +60,9 @@ class AttachedDetections::Source final : public FrameSource {
                          std::to_string(num_joints));
       }
       frame->views[camera->second].data = found.views[v].data;  // capacity of the caller's buffer reused
+      listed_[camera->second] = 1;
     }
+    MarkUnavailableViews(file_->detections_, /*frame_in_file=*/true, listed_, mentioned_, frame->views);
     return true;
   }
 
@@ -75,6 +86,8 @@ class AttachedDetections::Source final : public FrameSource {
   size_t index_;  // into file_->absent_
   SequenceHeader header_;
   std::unordered_map<std::string, int> camera_index_;
+  std::vector<char> mentioned_;  // per camera: listed in some frame of the file
+  std::vector<char> listed_;     // per camera: listed in the frame being pulled
   long frames_seen_ = 0, frames_with_ = 0;
   std::string first_frame_id_;
   bool finished_ = false;

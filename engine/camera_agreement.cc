@@ -22,6 +22,7 @@ CameraAgreementCheck::CameraAgreementCheck(const SequenceHeader& header, const J
 void CameraAgreementCheck::Add(long index, const SequenceFrame& frame, const Poses3D& persons) {
   if (index % stride_ != 0 || frame.views.size() != header_.cameras.size()) return;
   for (size_t c = 0; c < header_.cameras.size(); ++c) {
+    if (frame.views[c].unavailable) continue;
     ++cameras_[c].frames;
     cameras_[c].frames_with_detections += frame.views[c].num_persons() > 0 ? 1 : 0;
   }
@@ -34,6 +35,7 @@ void CameraAgreementCheck::Add(long index, const SequenceFrame& frame, const Pos
     }
     if (triangulated < kMinAgreementJoints) continue;
     for (size_t c = 0; c < header_.cameras.size(); ++c) {
+      if (frame.views[c].unavailable) continue;  // no data: it did not look
       const Camera& camera = header_.cameras[c];
       double min_u = std::numeric_limits<double>::infinity(), min_v = min_u, max_u = -min_u, max_v = -min_u;
       double sum_u = 0, sum_v = 0;
@@ -52,8 +54,12 @@ void CameraAgreementCheck::Add(long index, const SequenceFrame& frame, const Pos
       const double centre_u = sum_u / seen, centre_v = sum_v / seen;
       if (!(centre_u >= 0 && centre_u < camera.width && centre_v >= 0 && centre_v < camera.height)) continue;
       const double diagonal = std::max(1.0, std::hypot(max_u - min_u, max_v - min_v));
-      ++cameras_[c].in_view;
       const Poses2D& view = frame.views[c];
+      if (view.num_persons() == 0) {
+        ++cameras_[c].in_view_without_detections;
+        continue;
+      }
+      ++cameras_[c].in_view;
       bool agrees = false;
       for (int d = 0; d < view.num_persons() && !agrees; ++d) {
         const auto detection = view.Person(d);
@@ -76,21 +82,23 @@ void CameraAgreementCheck::Add(long index, const SequenceFrame& frame, const Pos
 std::vector<std::string> CameraAgreementWarnings(const std::string& sequence, const std::vector<CameraAgreement>& cameras) {
   std::vector<std::string> lines;
   for (const CameraAgreement& camera : cameras) {
-    if (camera.in_view < kMinAgreementPersons) continue;
-    const double share = static_cast<double>(camera.agreeing) / static_cast<double>(camera.in_view);
-    if (share >= kMinAgreementShare) continue;
     if (camera.frames_with_detections == 0) {  // nothing to match: its detections are missing, not misplaced
+      if (camera.in_view_without_detections < kMinAgreementPersons) continue;
       lines.push_back(PrintableText(sequence + ", camera " + QuoteName(camera.camera) + ": no detections in any of the " +
                                     std::to_string(camera.frames) + " frames compared, while " +
-                                    std::to_string(camera.in_view) +
+                                    std::to_string(camera.in_view_without_detections) +
                                     " 3D persons were in its view: is its detector output missing, or its name "
                                     "another camera's?"));
       continue;
     }
+    if (camera.in_view < kMinAgreementPersons) continue;
+    const double share = static_cast<double>(camera.agreeing) / static_cast<double>(camera.in_view);
+    if (share >= kMinAgreementShare) continue;
     lines.push_back(PrintableText(sequence + ", camera " + QuoteName(camera.camera) + ": only " +
                                   PercentText(share) + " of the " + std::to_string(camera.in_view) +
-                                  " 3D persons in its view match its detections (expected most): is its calibration "
-                                  "right, or is its name another camera's?"));
+                                  " 3D persons in its view (in frames where it detected someone) match its detections "
+                                  "(expected most): is its calibration right, its pixel scale (detections from a "
+                                  "resized image?), or is its name another camera's?"));
   }
   return lines;
 }

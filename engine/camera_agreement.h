@@ -36,9 +36,13 @@ inline constexpr long kAgreementFrames = 300;
 
 struct CameraAgreement {
   std::string camera;
-  long in_view = 0;    // persons whose projected box centre is inside the image, in front of it
+  // Persons whose projected box centre is inside the image, in front of it, in frames where the
+  // camera has detections (a frame where it detected nobody, or has no data, says nothing about
+  // its calibration).
+  long in_view = 0;
   long agreeing = 0;   // of those: with a detection within kAgreementDistance
-  long frames = 0;                  // frames compared
+  long in_view_without_detections = 0;  // the same in frames where it detected nobody
+  long frames = 0;                  // frames compared where the camera has data (not Poses2D::unavailable)
   long frames_with_detections = 0;  // of those: with at least one detection of this camera
 };
 

@@ -71,7 +71,10 @@ void ClearCoordinatesOfMissingJoints(double* data, size_t size) {
 
 void ViewFromArray(py::handle object, int num_joints, const std::string& what, Poses2D* view) {
   view->Clear(num_joints);
-  if (object.is_none()) return;
+  if (object.is_none()) {  // the camera delivered nothing this frame (an empty array: it saw nobody)
+    view->unavailable = true;
+    return;
+  }
   const py::array_t<double> array = CheckedArray(object, what, {-1, -1, 3});
   if (array.shape(0) > 0 && array.shape(1) != num_joints) {
     throw py::value_error(what + ": " + std::to_string(array.shape(1)) + " joints, expected " +

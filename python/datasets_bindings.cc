@@ -35,7 +35,11 @@ py::list ViewsList(const SequenceFrame& frame, const SequenceHeader& header, py:
   py::list views;
   const int joints = static_cast<int>(header.detection_joints.size());
   for (size_t c = 0; c < header.cameras.size(); ++c) {
-    views.append(c < frame.views.size() ? ViewOf(frame.views[c], joints, owner) : ViewArray(Poses2D{}, joints));
+    if (c < frame.views.size() && frame.views[c].unavailable) {
+      views.append(py::none());  // no data from this camera in this frame
+    } else {
+      views.append(c < frame.views.size() ? ViewOf(frame.views[c], joints, owner) : ViewArray(Poses2D{}, joints));
+    }
   }
   return views;
 }

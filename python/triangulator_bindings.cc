@@ -18,6 +18,7 @@
 #include "core/pipeline/offline_smoother.h"
 #include "core/pipeline/triangulator.h"
 #include "core/printable_text.h"
+#include "datasets/detections.h"
 #include "datasets/input_warnings.h"
 #include "datasets/readers/generic_common.h"
 #include "engine/frame_time_check.h"
@@ -64,13 +65,18 @@ bool IsViewsAndTime(py::handle item) {
 // Scores a little above 1 (a detector's 1.02) are clamped to 1 and counted under `source`, as the
 // file readers and the live input do (AcceptScore); other scores outside [0, 1] are left for
 // ValidateFrame to refuse.
-void ClampScoreOvershoot(const std::string& source, std::vector<Poses2D>* views, InputWarnings* warnings) {
+// Joints at exactly pixel (0, 0) with a score above 0 (what detectors write for a joint they did
+// not find) are read as missing and counted, as the file readers and the live input do.
+void CorrectDetectorOutput(const std::string& source, std::vector<Poses2D>* views, InputWarnings* warnings) {
+  long origin = 0;
   for (Poses2D& view : *views) {
     for (size_t i = 2; i < view.data.size(); i += 3) {
       double& score = view.data[i];
       if (score > 1.0 && score <= kMaxScoreOvershoot) score = AcceptScoreSlow(score, source, warnings, source);
     }
+    origin += ReadOriginJointsAsMissing(&view);
   }
+  if (origin > 0) warnings->Add(source, kOriginJointsRead, "", 0, origin);
 }
 
 // predictions[i]: (persons, a read-only view kept alive by `owner`; track ids).
@@ -119,7 +125,7 @@ class PyTriangulator {
     frame_.id = std::to_string(calls_);
     ViewsFromPython(views, num_cameras(), num_joints(), &frame_.views);
     InputWarnings clamped;  // allocates nothing unless a score is clamped
-    ClampScoreOvershoot("Triangulator.process", &frame_.views, &clamped);
+    CorrectDetectorOutput("Triangulator.process", &frame_.views, &clamped);
     if (!clamped.empty()) WarnInput(engine::InputWarningLines(clamped));
     ValidateFrame(header_, frame_, "Triangulator.process");
     {
@@ -175,7 +181,7 @@ class PyTriangulator {
       } else {
         ViewsFromPython(item, num_cameras(), num_joints(), &frame.views);
       }
-      ClampScoreOvershoot("process_sequence", &frame.views, &clamped);
+      CorrectDetectorOutput("process_sequence", &frame.views, &clamped);
       ValidateFrame(header_, frame, "process_sequence: " + where);
     }
     if (converted.empty()) throw py::value_error("process_sequence: no frames");

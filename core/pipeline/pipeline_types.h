@@ -85,6 +85,7 @@ struct PreparedViews {
   std::vector<double> bbox_diag;   // per pose: bounding-box diagonal of its valid joints (px)
   std::vector<Keypoint> keypoints; // per pose and joint
   std::vector<int> view_begin;     // num_views + 1 offsets into the pose list
+  std::vector<char> unavailable;   // per view: Poses2D::unavailable (no data this frame)
   // The keypoints again as columns: all joints, and the core joints (`core_joints`, the undistort
   // input's) in their slot order.
   KeypointColumns all_columns;

@@ -104,6 +104,10 @@ void Triangulator::Process(std::span<const Poses2D> views, double timestamp_s, P
       throw InputError("view " + std::to_string(v) + ": " + std::to_string(values) + " values for poses of " +
                        std::to_string(views[v].num_joints) + " joints (3 per joint and person)");
     }
+    if (views[v].unavailable && views[v].num_persons() > 0) {
+      throw InputError("view " + std::to_string(v) + " is marked unavailable (no data this frame) but has " +
+                       std::to_string(views[v].num_persons()) + " poses");
+    }
     if (views[v].num_persons() > 0 && views[v].num_joints != num_inputs) {
       throw InputError("view " + std::to_string(v) + " has poses with " + std::to_string(views[v].num_joints) +
                        " joints, expected " + std::to_string(num_inputs));

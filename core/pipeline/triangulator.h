@@ -44,7 +44,9 @@ class Triangulator {
   Triangulator& operator=(Triangulator&&) noexcept;
 
   // Triangulates one multi-view frame. `views.size()` must equal the number of cameras and each
-  // non-empty view must have input_joints().size() joints (else InputError). `timestamp_s` is the
+  // non-empty view must have input_joints().size() joints (else InputError). A view marked
+  // Poses2D::unavailable (the camera delivered nothing this frame) must be empty: verification and
+  // the single-view step do not count it as a camera that saw nobody. `timestamp_s` is the
   // frame's time in seconds, NaN when unknown: a frame more than options().track.max_gap_s after
   // the last one, or with an unknown time, starts afresh (no pre-filter, tracks end, nothing
   // coasts). The detection noise estimate of the adaptive score carries over regardless.

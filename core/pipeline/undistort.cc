@@ -42,6 +42,7 @@ int steps::Undistort(const UndistortOptions& options, const UndistortInput& in, 
   out.person_of.clear();
   out.bbox_diag.clear();
   out.view_begin.clear();
+  out.unavailable.clear();
   // The keypoints are written into the slots of the last frame (every field of every joint of a
   // pose is written below), so the slots are initialised only when the frame needs more of them.
   size_t used = 0;
@@ -51,6 +52,7 @@ int steps::Undistort(const UndistortOptions& options, const UndistortInput& in, 
   for (int v = 0; v < num_views; ++v) {
     out.view_begin.push_back(out.num_poses());
     const Poses2D& view = views[v];
+    out.unavailable.push_back(view.unavailable ? 1 : 0);
     const Camera& camera = in.cameras[v];
     const ViewGeometry& g = in.geometry[v];
     const bool distorted = camera.HasDistortion();

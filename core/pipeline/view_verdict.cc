@@ -48,6 +48,9 @@ ViewVerdict JudgeView(const PreparedViews& views, const ViewGeometry& geo, int v
   }
   if (projected_box != nullptr) *projected_box = box;
   if (inside < 3) return ViewVerdict::kUnseen;
+  if (static_cast<size_t>(view) < views.unavailable.size() && views.unavailable[view]) {
+    return ViewVerdict::kUnseen;  // no data this frame: it did not look
+  }
   double best = std::numeric_limits<double>::infinity();
   bool occupied = false;
   for (int g = views.view_begin[view]; g < views.view_begin[view + 1]; ++g) {

@@ -10,6 +10,7 @@
 //     does not agree (an occluder, or the person hidden behind someone), or
 //   * is empty: at least `min_inside_fraction` of the person's joints land in the image and no
 //     detection is there. Detectors rarely miss a person in plain view.
+// A view without data this frame (Poses2D::unavailable) did not look: unseen.
 #pragma once
 
 #include <Eigen/Core>

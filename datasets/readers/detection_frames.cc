@@ -190,15 +190,21 @@ std::unique_ptr<FrameSource> OpenDetectionFrames(std::vector<Camera> cameras, De
     frame_times = FrameTimes(held->frames, options.fps, source, &warnings);
   }
   auto times = std::make_shared<const std::vector<double>>(std::move(frame_times));
+  auto mentioned = std::make_shared<const std::vector<char>>(CamerasMentioned(*held, names));
   return std::make_unique<IndexedFrameSource>(
       std::move(header), num_frames,
-      [held, view_camera, times, num_cameras, num_joints](size_t f, SequenceFrame* frame, InputWarnings*) {
+      [held, view_camera, times, mentioned, num_cameras, num_joints](size_t f, SequenceFrame* frame, InputWarnings*) {
         const FrameDetections& in = held->frames[f];
         frame->id = in.frame_id;
         frame->timestamp_s = times->empty() ? kUnknownTime : (*times)[f];
         frame->views.resize(static_cast<size_t>(num_cameras));
         for (Poses2D& view : frame->views) view.Clear(num_joints);
-        for (size_t v = 0; v < in.views.size(); ++v) frame->views[(*view_camera)[f][v]] = in.views[v];
+        std::vector<char> listed(static_cast<size_t>(num_cameras), 0);
+        for (size_t v = 0; v < in.views.size(); ++v) {
+          frame->views[(*view_camera)[f][v]] = in.views[v];
+          listed[(*view_camera)[f][v]] = 1;
+        }
+        MarkUnavailableViews(*held, /*frame_in_file=*/true, listed, *mentioned, frame->views);
       },
       std::move(warnings));
 }

@@ -243,6 +243,9 @@ class DetectionLineSource final : public FrameSource {
     }
     json_.End();
     if (!has_views) Fail("/views", "missing (write [] for a frame without detections)");
+    // "views" lists the cameras processed for this frame: the others have no data (they neither
+    // support nor contradict a person the listed ones see).
+    for (size_t c = 0; c < frame->views.size(); ++c) frame->views[c].unavailable = !camera_seen_[c];
     if (!has_id) {
       char digits[24];
       const auto end = std::to_chars(digits, digits + sizeof(digits), lines_->line_number()).ptr;

@@ -107,6 +107,7 @@ Detections ReadGenericDetections(const std::filesystem::path& path) {
     throw InputError(source + ": this is a single OpenPose file; give the folder holding all OpenPose files instead");
   }
   Detections detections;
+  detections.unlisted_cameras_unavailable = true;  // "views" lists the cameras processed in the frame
   const json& joints = io::JsonAt(root, "/joints", source);
   if (!joints.is_array()) Fail(source, "/joints", "expected a list of joint names");
   for (size_t j = 0; j < joints.size(); ++j) {
@@ -164,7 +165,10 @@ Detections ReadGenericDetections(const std::filesystem::path& path) {
   return detections;
 }
 
-int WriteGenericDetections(const std::filesystem::path& path, const Detections& detections) {
+int WriteGenericDetections(const std::filesystem::path& path, const Detections& given) {
+  // "views" lists the cameras processed for a frame: cameras that saw nobody are written with [].
+  const std::unique_ptr<Detections> normalised = WithUnlistedCamerasUnavailable(given);
+  const Detections& detections = normalised ? *normalised : given;
   const std::string source = Source(path);
   ValidateDetections(detections, source + ": cannot write");
   const int num_joints = static_cast<int>(detections.joints.size());

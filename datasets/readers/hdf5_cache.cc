@@ -22,11 +22,14 @@
 namespace rpt {
 namespace {
 
-// Version 3 (written): every dataset carries the CRC-32 of its values (io::NumbersCrc,
-// io::StringsCrc), and the groups /sequences and /sequences/<i> the CRC-32 of their attributes
-// (AttributesCrc), all checked on reading. Version 2 (read): dataset checksums only. Version 1
-// (read): the same layout without checksums.
-constexpr int kVersion = 3;
+// Version 4 (written): version 3's layout; a camera a frame of /detections does not list has no
+// data in that frame (Detections::unlisted_cameras_unavailable; cameras that saw nobody are listed
+// with no persons). Version 3 (read): every dataset carries the CRC-32 of its values
+// (io::NumbersCrc, io::StringsCrc), and the groups /sequences and /sequences/<i> the CRC-32 of
+// their attributes (AttributesCrc), all checked on reading; an unlisted camera saw nobody.
+// Version 2 (read): dataset checksums only. Version 1 (read): the same layout without checksums.
+constexpr int kVersion = 4;
+constexpr int kVersionWithAttributeChecksums = 3;
 constexpr int kVersionWithoutAttributeChecksums = 2;
 constexpr int kVersionWithoutChecksums = 1;
 constexpr const char* kDetectionsFormat = "rpt-detections";
@@ -47,7 +50,7 @@ std::uint32_t AttributesCrc(const std::vector<std::string>& strings, const std::
   return crc;
 }
 
-// Returns the file's format version (1, 2 or 3) after checking its tag.
+// Returns the file's format version (1 to 4) after checking its tag.
 int CheckFormat(io::Hdf5Reader& reader, hid_t group, const std::string& place, const std::string& format) {
   const std::string found = reader.HasAttribute(group, place, "format") ? reader.StringAttribute(group, place, "format") : "";
   if (found != format) {
@@ -57,12 +60,13 @@ int CheckFormat(io::Hdf5Reader& reader, hid_t group, const std::string& place, c
                            " (not written by rpt?)");
   }
   const double version = reader.NumberAttribute(group, place, "version");
-  if (version != kVersion && version != kVersionWithoutAttributeChecksums && version != kVersionWithoutChecksums) {
+  if (version != kVersion && version != kVersionWithAttributeChecksums && version != kVersionWithoutAttributeChecksums &&
+      version != kVersionWithoutChecksums) {
     reader.Fail(place, "format version " + std::to_string(version) + " is not supported (this build reads versions " +
                     std::to_string(kVersionWithoutChecksums) + " to " + std::to_string(kVersion) + ")");
   }
-  // rpt writes version 3 (version 2 before its attributes had checksums); version 1 is the format
-  // other tools (and rpt before checksums) write.
+  // rpt writes version 4 (3 before unlisted cameras meant no data, 2 before its attributes had
+  // checksums); version 1 is the format other tools (and rpt before checksums) write.
   if (version != kVersionWithoutChecksums) reader.RequireChecksums();
   return static_cast<int>(version);
 }
@@ -88,7 +92,10 @@ void SkipHdf5CleanupAtExit() { io::SkipHdf5CleanupAtExit(); }
 // -----------------------------------------------------------------------------------------------
 // Detections
 
-void WriteDetectionsHdf5(const std::filesystem::path& path, const Detections& detections, const Hdf5WriteOptions& options) {
+void WriteDetectionsHdf5(const std::filesystem::path& path, const Detections& given, const Hdf5WriteOptions& options) {
+  // Version 4: an unlisted camera has no data; cameras that saw nobody are listed with no persons.
+  const std::unique_ptr<Detections> normalised = WithUnlistedCamerasUnavailable(given);
+  const Detections& detections = normalised ? *normalised : given;
   const Hdf5Quiet quiet;
   ValidateDetections(detections, path.string() + ": cannot write");
   const size_t num_joints = detections.joints.size();
@@ -191,9 +198,10 @@ Detections ReadDetectionsHdf5(const std::filesystem::path& path) {
                           (reader.Exists("/sequences") ? " (it holds labels only)" : " (not an rpt cache?)"));
   }
   Hdf5Id group = reader.OpenGroup(name, "detections");
-  CheckFormat(reader, group.get(), name, kDetectionsFormat);
+  const int version = CheckFormat(reader, group.get(), name, kDetectionsFormat);
 
   Detections detections;
+  detections.unlisted_cameras_unavailable = version >= kVersion;
   detections.joints = reader.Strings(name + "/joints");
   CheckJointNames(detections.joints, reader.source() + ": " + name + "/joints");
   const std::vector<std::string> cameras = reader.Strings(name + "/cameras");
@@ -353,7 +361,7 @@ std::vector<std::unique_ptr<FrameSource>> OpenSequencesHdf5(const std::filesyste
   const int version = CheckFormat(reader, root.get(), "/sequences", kSequencesFormat);
   // Version 3: a group's attributes are compared with the checksum the group carries.
   const auto verify_attributes = [&](hid_t group, const std::string& place, std::uint32_t crc) {
-    if (version >= kVersion) reader.VerifyChecksum(group, place, crc, "attributes");
+    if (version >= kVersionWithAttributeChecksums) reader.VerifyChecksum(group, place, crc, "attributes");
   };
   const double count = reader.NumberAttribute(root.get(), "/sequences", "count");
   verify_attributes(root.get(), "/sequences", AttributesCrc({}, {count}));

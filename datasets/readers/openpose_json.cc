@@ -143,7 +143,8 @@ std::vector<int> Targets(const std::vector<std::string>& names, const JointNames
 }
 
 // OpenPose writes a file per camera and frame, also when it sees nobody: a camera with no file
-// for a frame that other cameras have is counted per camera (it sees nobody there).
+// for a frame that other cameras have is counted per camera (it has no data there: dropped or not
+// processed, Detections::unlisted_cameras_unavailable).
 void CountMissingFiles(Detections& detections, const std::string& source) {
   std::set<std::string> cameras;
   for (const FrameDetections& frame : detections.frames) cameras.insert(frame.cameras.begin(), frame.cameras.end());
@@ -153,7 +154,8 @@ void CountMissingFiles(Detections& detections, const std::string& source) {
       missing += std::find(frame.cameras.begin(), frame.cameras.end(), camera) == frame.cameras.end() ? 1 : 0;
     }
     detections.warnings.AddMissing(
-        source, "frames without a file of camera " + QuoteName(camera) + " (other cameras have one; it sees nobody there)",
+        source, "frames without a file of camera " + QuoteName(camera) +
+                    " (other cameras have one; no data from it there: it neither supports nor contradicts a person)",
         missing);
   }
 }
@@ -253,6 +255,7 @@ Detections ReadOpenPoseFolder(const std::filesystem::path& dir, const OpenPoseFo
                            : OpenPoseJointSet::kBody;
   }
   Detections detections;
+  detections.unlisted_cameras_unavailable = true;  // a file per camera and frame: no file, no data
   detections.joints = JointsOf(set);
   detections.warnings = std::move(warnings);
   const JointNames& joints = detections.joints;

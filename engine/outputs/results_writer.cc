@@ -210,7 +210,8 @@ OrderedJson TriangulationSummaryJson(const RunResult& run) {
       agreement.push_back({{"sequence", sequence.name},
                            {"camera", camera.camera},
                            {"persons_in_view", camera.in_view},
-                           {"persons_matching", camera.agreeing}});
+                           {"persons_matching", camera.agreeing},
+                           {"persons_in_view_without_detections", camera.in_view_without_detections}});
     }
   }
   if (!agreement.empty()) j["camera_agreement"] = agreement;

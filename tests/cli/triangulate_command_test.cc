@@ -592,10 +592,62 @@ TEST(TriangulateDataset, WithoutGroundTruthEqualsEval) {
   fs::remove_all(dir);
 }
 
+// Cameras 2-4 of five drop out for frames 4-11 (left out of those frames of the detections) while
+// cameras 0 and 1 still see both people: a camera with no data does not vote against them in
+// verification, so the persons stay, as with a calibration of cameras 0 and 1 only. Written as
+// cameras that looked and saw nobody (`"poses": []`), three empty views outvote two and the
+// persons go.
+TEST_F(Triangulate, CamerasWithoutDataInAFrameDoNotRemoveThePersonsTheOthersSee) {
+  engine::InputSpec spec;
+  spec.dataset = "synthetic";
+  spec.params = {"frames=16", "people=2", "cameras=5", "noise=perfect"};
+  InputWarnings warnings;
+  const Sequence scene = engine::LoadInput(spec, {}, &warnings).at(0);
+  WriteCalibration(dir_ / "five.json", scene.cameras);
+  const std::vector<std::string> ids = Ids("take_", 16);
+  const Detections all = Coco17(scene, ids);
+  Detections dropped = all, empty = all;
+  for (int f = 4; f < 12; ++f) {
+    dropped.frames[f].cameras.resize(2);
+    dropped.frames[f].views.resize(2);
+    for (size_t v = 2; v < empty.frames[f].views.size(); ++v) empty.frames[f].views[v].Clear(17);
+  }
+  dropped.unlisted_cameras_unavailable = empty.unlisted_cameras_unavailable = true;
+  WriteGenericDetections(dir_ / "all.json", all);
+  WriteGenericDetections(dir_ / "dropped.json", dropped);
+  WriteGenericDetections(dir_ / "empty.json", empty);
+  // Persons per frame of `rpt triangulate` (without tracking, so nothing coasts).
+  const auto persons = [&](const std::string& name) {
+    const test::CommandResult run =
+        test::RunRpt("triangulate --quiet --cameras " + (dir_ / "five.json").string() + " --detections " +
+                     (dir_ / (name + ".json")).string() + " --out " + (dir_ / name).string());
+    EXPECT_EQ(run.exit_code, 0) << run.err;
+    const Json predictions = ReadJson(dir_ / name / "predictions.json");
+    std::vector<size_t> counts;
+    for (const Json& frame : predictions["frames"]) counts.push_back(frame["persons"].size());
+    return counts;
+  };
+  const std::vector<size_t> full = persons("all"), without = persons("dropped"), nobody = persons("empty");
+  ASSERT_EQ(full, std::vector<size_t>(16, 2));
+  EXPECT_EQ(without, full);
+  for (int f = 4; f < 12; ++f) EXPECT_EQ(nobody[f], 0u) << f;
+  // The same through the HDF5 cache: the cameras left out stay without data.
+  WriteDetectionsHdf5(dir_ / "dropped.h5", dropped);
+  const test::CommandResult cached =
+      test::RunRpt("triangulate --quiet --cameras " + (dir_ / "five.json").string() + " --detections " +
+                   (dir_ / "dropped.h5").string() + " --out " + (dir_ / "cached").string());
+  ASSERT_EQ(cached.exit_code, 0) << cached.err;
+  const Json cached_predictions = ReadJson(dir_ / "cached" / "predictions.json");
+  std::vector<size_t> cached_counts;
+  for (const Json& frame : cached_predictions["frames"]) cached_counts.push_back(frame["persons"].size());
+  EXPECT_EQ(cached_counts, full);
+}
+
 TEST_F(Triangulate, BadInputExitsWith2NamingFileAndPlace) {
   const std::vector<std::string> ids = Ids("take_", kFrames);
   Detections detections = Coco17(scene_, ids);
   detections.frames[3].cameras[1] = "cam9";
+  detections.unlisted_cameras_unavailable = true;  // written as it is (no other frame lists cam9)
   WriteGenericDetections(dir_ / "bad.json", detections);
   const std::string cameras = " --cameras " + (dir_ / "cameras.json").string();
   const test::CommandResult unknown = test::RunRpt("triangulate" + cameras + " --detections " + (dir_ / "bad.json").string());

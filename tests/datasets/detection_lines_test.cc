@@ -347,12 +347,15 @@ TEST(DetectionLines, FramesAsWritten) {
   EXPECT_EQ(frame.timestamp_s, 1.5);
   ASSERT_EQ(frame.views.size(), 2u);
   EXPECT_EQ(frame.views[0].num_persons(), 0);
+  EXPECT_TRUE(frame.views[0].unavailable) << "camera a is not in the line: no data from it";
+  EXPECT_FALSE(frame.views[1].unavailable);
   EXPECT_EQ(frame.views[1].data, (std::vector<double>{1, 2, 0.5, 0, 0, 0}));
   ASSERT_TRUE(stream.source->Next(&frame));
   EXPECT_EQ(frame.id, "4") << "the line number";
   EXPECT_EQ(frame.timestamp_s, 0.1) << "frame 1 at 10 fps";
   EXPECT_EQ(frame.views[0].data, (std::vector<double>{3, 4, 1, 5, 6, 0, 0, 0, 0, 7, 8, 1})) << "1.2 clamped to 1";
   EXPECT_EQ(frame.views[1].num_persons(), 0);
+  EXPECT_FALSE(frame.views[0].unavailable || frame.views[1].unavailable) << "both listed (b with null: nobody)";
   ASSERT_TRUE(stream.source->Next(&frame));
   EXPECT_EQ(frame.id, "x");
   EXPECT_TRUE(std::isnan(frame.timestamp_s));

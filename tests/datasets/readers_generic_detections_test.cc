@@ -221,8 +221,10 @@ TEST(OpenPose, Body25FolderMapsToCocoNamesAndFeet) {
   EXPECT_EQ(d.warnings.items()[1].count, 3);
   EXPECT_EQ(d.warnings.items()[2].Line(), dir.path().string() +
                                               ": 1 frames without a file of camera 'Camera1' (other cameras have "
-                                              "one; it sees nobody there)");
+                                              "one; no data from it there: it neither supports nor contradicts a "
+                                              "person)");
   EXPECT_EQ(d.warnings.items()[2].kind, InputWarningKind::kMissing);
+  EXPECT_TRUE(d.unlisted_cameras_unavailable);
 
   options.joints = OpenPoseJointSet::kBody;
   EXPECT_EQ(ReadOpenPoseFolder(dir.path(), options).joints, CocoBodyJoints());

@@ -162,12 +162,23 @@ TEST(Hdf5Cache, EmptyDetectionsAndFramesWithoutViews) {
   detections.frames[1].cameras = {"c"};
   detections.frames[1].views.resize(1);
   detections.frames[1].views[0].Clear(17);
+  detections.unlisted_cameras_unavailable = true;  // frame "no_views": no camera has data
   WriteDetectionsHdf5(path, detections);
   const Detections read = ReadDetectionsHdf5(path);
+  EXPECT_TRUE(read.unlisted_cameras_unavailable);
   ASSERT_EQ(read.frames.size(), 2u);
   EXPECT_TRUE(read.frames[0].views.empty());
   ASSERT_EQ(read.frames[1].views.size(), 1u);
   EXPECT_EQ(read.frames[1].views[0].num_persons(), 0);
+  // Detections where an unlisted camera saw nobody (a COCO result list) are written with that
+  // camera listed, empty, in every frame: read back, it still saw nobody there.
+  detections.unlisted_cameras_unavailable = false;
+  WriteDetectionsHdf5(path, detections);
+  const Detections listed = ReadDetectionsHdf5(path);
+  ASSERT_EQ(listed.frames.size(), 2u);
+  EXPECT_EQ(listed.frames[0].cameras, std::vector<std::string>{"c"});
+  ASSERT_EQ(listed.frames[0].views.size(), 1u);
+  EXPECT_EQ(listed.frames[0].views[0].num_persons(), 0);
 }
 
 TEST(Hdf5Cache, SequencesAndDetectionsShareOneFile) {

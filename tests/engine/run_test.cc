@@ -376,7 +376,7 @@ TEST(RunTest, CamerasWhoseDetectionsDisagreeWithThePersonsAreNamed) {
   ASSERT_EQ(swapped.size(), 2u);
   EXPECT_NE(swapped[0].find(", camera 'cam0': only "), std::string::npos) << swapped[0];
   EXPECT_NE(swapped[1].find(", camera 'cam1': only "), std::string::npos) << swapped[1];
-  EXPECT_NE(swapped[0].find("is its calibration right, or is its name another camera's?"), std::string::npos);
+  EXPECT_NE(swapped[0].find("is its calibration right, its pixel scale (detections from a resized image?), or is its name another camera's?"), std::string::npos);
   // A camera without any detection has nothing to match: its output is missing, not misplaced.
   std::swap(whole[0].cameras[0], whole[0].cameras[1]);
   std::swap(whole[0].cameras[0].name, whole[0].cameras[1].name);
@@ -386,6 +386,22 @@ TEST(RunTest, CamerasWhoseDetectionsDisagreeWithThePersonsAreNamed) {
   EXPECT_NE(silent[0].find(", camera 'cam2': no detections in any of the 60 frames compared, while "), std::string::npos)
       << silent[0];
   EXPECT_EQ(silent[0].find("calibration"), std::string::npos) << silent[0];
+  // A camera with detections in every other frame only (the others without data, or seeing nobody)
+  // is judged on the frames where it detected someone: they all match, nothing is named.
+  for (const bool unavailable : {true, false}) {
+    std::vector<Sequence> intermittent = MakeSyntheticDataset(params);
+    for (size_t f = 1; f < intermittent[0].frames.size(); f += 2) {
+      Poses2D& view = intermittent[0].frames[f].views[3];
+      view.Clear(view.num_joints);
+      view.unavailable = unavailable;
+    }
+    EXPECT_TRUE(warnings(intermittent).empty()) << unavailable << ": " << warnings(intermittent)[0];
+    const RunResult run = engine::Run(std::span<const Sequence>(intermittent), options, nullptr);
+    const CameraAgreement& camera = run.sequences[0].camera_agreement[3];
+    EXPECT_GE(static_cast<double>(camera.agreeing) / camera.in_view, 0.8);
+    EXPECT_EQ(camera.frames, unavailable ? 30 : 60);
+    EXPECT_EQ(camera.in_view_without_detections > 0, !unavailable);
+  }
 }
 
 TEST(RunTest, ASinkSeesTheSequenceBeginItsFramesInOrderThenTheEnd) {

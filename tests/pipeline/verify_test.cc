@@ -3,6 +3,7 @@
 // other views (view_verdict.h). Step 12b's use of the same verdict: single_view_test.cc.
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <vector>
 
 #include "core/pipeline/undistort.h"
@@ -23,9 +24,13 @@ struct Candidate {
 
 // `num_cameras` ring cameras see `detected`; the persons to verify are `candidates`.
 struct VerifyFixture {
-  VerifyFixture(std::vector<Eigen::Matrix4Xd> detected, std::vector<Candidate> candidates, int num_cameras = 5)
+  // `edit` changes the projected views before they are prepared.
+  VerifyFixture(std::vector<Eigen::Matrix4Xd> detected, std::vector<Candidate> candidates, int num_cameras = 5,
+                const std::function<void(std::vector<Poses2D>*)>& edit = nullptr)
       : cameras(test::RingCameras(num_cameras)) {
-    test::UndistortCocoViews(cameras, test::ProjectPersons(cameras, detected), &geometry, &core, &prepared);
+    std::vector<Poses2D> views = test::ProjectPersons(cameras, detected);
+    if (edit) edit(&views);
+    test::UndistortCocoViews(cameras, views, &geometry, &core, &prepared);
     persons.Clear(17);
     proposals.Clear(17);
     groups.begin = {0};
@@ -97,6 +102,28 @@ TEST(Verify, DropsAPersonWhereEveryOtherCameraSeesNobody) {
   VerifyOptions four;
   four.min_empty_views = 4;
   EXPECT_EQ(strict.Run(four), 2);
+}
+
+TEST(Verify, ACameraWithoutDataThisFrameDoesNotVoteAgainstAPerson) {
+  // Cameras 2-4 drop out while 0 and 1 still see the person: as empty views (looked, saw nobody)
+  // three cameras outvote the two; as unavailable views (no data) they do not vote, and the
+  // person stays.
+  const auto a = test::StandingPerson(0.2, -0.1);
+  const auto empty_2_to_4 = [](bool unavailable) {
+    return [unavailable](std::vector<Poses2D>* views) {
+      for (size_t v = 2; v < views->size(); ++v) {
+        (*views)[v].Clear((*views)[v].num_joints);
+        (*views)[v].unavailable = unavailable;
+      }
+    };
+  };
+  VerifyFixture empty({a}, {{a, 0}}, 5, empty_2_to_4(false));
+  EXPECT_EQ(empty.Run(), 0);
+  EXPECT_EQ(empty.dropped, 1);
+  VerifyFixture unavailable({a}, {{a, 0}}, 5, empty_2_to_4(true));
+  ASSERT_EQ(unavailable.prepared.unavailable, (std::vector<char>{0, 0, 1, 1, 1}));
+  EXPECT_EQ(unavailable.Run(), 1);
+  EXPECT_EQ(unavailable.dropped, 0);
 }
 
 TEST(Verify, AnOccludedPersonIsNotAPhantom) {

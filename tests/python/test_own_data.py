@@ -3,6 +3,8 @@ read by rpt.datasets.open_labels / open_cameras, give what `rpt eval --labels` a
 `rpt triangulate --cameras` give."""
 import json
 
+import numpy as np
+
 import pytest
 
 import rpt
@@ -114,3 +116,49 @@ def test_times_in_milliseconds_and_going_back_are_warned_as_runs_warn():
 
     with pytest.warns(rpt.InputWarning, match=r"are the times in milliseconds\?"):
         triangulator.process_sequence([(scene[k].views, 40.0 * k) for k in range(30)])
+
+
+def test_a_camera_without_data_is_none_and_does_not_vote_against_persons(tmp_path):
+    """None is a camera with no data in the frame (dropped out); an empty array one that looked and
+    saw nobody. Cameras 2-4 of five: as None the persons cameras 0 and 1 see stay (verification does
+    not count them), as empty arrays three empty views outvote two and the persons go. A frame of a
+    generic detections file that leaves those cameras out gives None for them."""
+    sequence = rpt.datasets.open("synthetic", cameras=5, people=2, frames=3, noise="perfect").load()[0]
+    frame = sequence[1]
+    full_views = list(frame.views)
+    empty = np.zeros((0,) + full_views[0].shape[1:])
+
+    def persons(views):
+        triangulator = rpt.Triangulator.for_sequence(sequence)
+        return len(triangulator.process(views, None)[0])
+
+    assert persons(full_views) == 2
+    assert persons(full_views[:2] + [None, None, None]) == 2
+    assert persons(full_views[:2] + [empty, empty, empty]) == 0
+
+    run_cli("convert", "--dataset", "synthetic", "--param", "cameras=5", "--param", "people=2", "--param", "frames=3",
+            "--param", "noise=perfect", "--labels-out", tmp_path / "labels.json",
+            "--detections-out", tmp_path / "detections.json")
+    detections = json.loads((tmp_path / "detections.json").read_text())
+    detections["frames"][1]["views"] = detections["frames"][1]["views"][:2]
+    (tmp_path / "dropped.json").write_text(json.dumps(detections))
+    read = rpt.datasets.open_cameras(tmp_path / "labels.json", tmp_path / "dropped.json", fps=25).load()[0]
+    views = list(read[1].views)
+    assert views[2] is None and views[3] is None and views[4] is None
+    assert views[0] is not None and len(views[0]) == 2
+    assert persons(views) == 2
+
+
+def test_joints_at_pixel_origin_are_missing_in_process_as_in_the_files():
+    sequence = rpt.datasets.open("synthetic", cameras=5, people=2, frames=2, noise="perfect").load()[0]
+    views = [np.array(view) for view in sequence[0].views]
+    for view in views:
+        view[:, 5] = [0.0, 0.0, 0.8]  # a detector's "not found" for shoulder_left
+    triangulator = rpt.Triangulator.for_sequence(sequence)
+    with pytest.warns(rpt.InputWarning, match=r"10 detected joints at pixel \(0, 0\) with a score above 0 read as missing"):
+        persons, _ = triangulator.process(views, 0.0)
+    clean = [np.array(view) for view in sequence[0].views]
+    for view in clean:
+        view[:, 5, 2] = 0.0  # the same joints missing
+    expected, _ = rpt.Triangulator.for_sequence(sequence).process(clean, 0.0)
+    np.testing.assert_array_equal(persons, expected)
