@@ -478,6 +478,10 @@ struct TrackOptions {
   // it into its model (model.h) and judges every frame's continuity with it.
   double max_gap_s = 1.0;
   double max_distance_m = 0.5;  // mean core-joint distance to continue a track
+  // At low frame rates people move further than max_distance_m between frames: a track continues
+  // within max(max_distance_m, max_person_speed_m_s x the time since it was last seen). At 2 fps
+  // walking people (0.8 m/s) got a new id nearly every frame; from 4 fps on the distance decides.
+  double max_person_speed_m_s = 2.0;
   int max_missing_frames = 3;   // a lost person is still returned (last pose) this many frames
   // A joint post-processing filled from its neighbour keeps, instead, its offset from that
   // neighbour in the track's last output (when both were present there).
@@ -490,6 +494,10 @@ void VisitFields(Visitor& v, Self& o) {
   v("max_distance_m", o.max_distance_m,
     OptionSpec{.help = "mean core-joint distance to continue a track", .unit = "m", .min = 0,
                .min_exclusive = true});
+  v("max_person_speed_m_s", o.max_person_speed_m_s,
+    OptionSpec{.help = "at low frame rates: a track continues within max(max_distance_m, this x the time since it "
+                       "was last seen)",
+               .unit = "m/s", .min = 0, .max = 1e6});
   v("max_gap_s", o.max_gap_s,
     OptionSpec{.help = "frames further apart (or with unknown time) start afresh: no coasting, no pre-filter",
                .unit = "s", .min = 0, .max = 1e9});

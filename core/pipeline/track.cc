@@ -95,7 +95,10 @@ int steps::Track(const TrackOptions& options, const TrackInput& in, Tracks* trac
       if (common < 3) distance = MeanDistance(person, t.pose.data(), match_joints, unobserved, 0.0, &common);
       if (common < 3) distance = MeanDistance(person, t.pose.data(), match_joints, 0.0, 0.0, &common);
       if (common < 3) continue;
-      if (distance < options.max_distance_m) candidates.emplace_back(distance, p, s);
+      // Time since the track was last seen (a coasting track keeps the time of its last person).
+      const double since_seen_s = std::max(0.0, in.timestamp_s - t.timestamp_s);
+      const double gate = std::max(options.max_distance_m, options.max_person_speed_m_s * since_seen_s);
+      if (distance < gate) candidates.emplace_back(distance, p, s);
     }
   }
   std::sort(candidates.begin(), candidates.end());

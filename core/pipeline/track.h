@@ -70,6 +70,7 @@ struct TrackInput {
   std::span<const int> neighbour = {};     // per joint: the joint post-processing fills it from,
                                            // -1 = none; empty: no joint is held
   double unobserved_score = 0;             // joints scored at or below this were filled, not observed
+  double timestamp_s = 0;                  // the frame's time (finite: tracking runs on timed frames)
 };
 
 // Sets persons->track_ids of the frame's persons (post-processing's output), holds the missing

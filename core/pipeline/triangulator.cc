@@ -270,7 +270,8 @@ void Triangulator::Process(std::span<const Poses2D> views, double timestamp_s, P
   if (tracking) {
     run.Run<Step::kTrack>(steps::TrackInput{.match_joints = m.core_joints,
                                             .neighbour = m.neighbour,
-                                            .unobserved_score = m.unobserved_score},
+                                            .unobserved_score = m.unobserved_score,
+                                            .timestamp_s = timestamp_s},
                           &state.tracks, &buf.track_scratch, persons, stats);
   }
   if (tracking && opt.clip_speed.enabled) {

@@ -25,11 +25,14 @@ Poses3D Persons(const std::vector<Eigen::Matrix4Xd>& bodies) {
 }
 
 // Step 13 on `persons`; returns the number detected (before the coasting ones).
-int RunTrack(const TrackOptions& options, Tracks* tracks, Poses3D* persons, FrameStats* stats) {
+// `timestamp_s`: the frame's time.
+int RunTrack(const TrackOptions& options, Tracks* tracks, Poses3D* persons, FrameStats* stats,
+             double timestamp_s = 0) {
   TrackScratch scratch;
   const int num_detected = persons->num_persons();
   const std::vector<int> core = Core();
-  const int count = steps::Track(options, {.match_joints = core}, tracks, &scratch, persons, stats);
+  const int count =
+      steps::Track(options, {.match_joints = core, .timestamp_s = timestamp_s}, tracks, &scratch, persons, stats);
   EXPECT_EQ(count, persons->num_persons()) << "count: detected and coasting persons";
   return num_detected;
 }
@@ -304,6 +307,39 @@ TEST(Track, FarPersonStartsNewTrack) {
   EXPECT_EQ(stats.new_tracks, 1);
   EXPECT_NE(frame1.track_ids[0], frame0.track_ids[0]);
   EXPECT_EQ(frame1.num_persons(), 2) << "the old track coasts";
+}
+
+// At 2 fps a person walking 1.6 m/s is 0.8 m further each frame, beyond max_distance_m (0.5): the
+// gate grows to max_person_speed_m_s (2) x 0.5 s = 1 m, and after a missed frame to 2 m. At 25
+// fps the distance decides, as before: 0.8 m in 0.04 s is someone else.
+TEST(Track, AtLowFrameRatesTheGateGrowsWithTheTimeSinceLastSeen) {
+  TrackOptions options;
+  const auto continued = [&](double step_s, double moved_m, int missed_frames) {
+    Tracks tracks;
+    FrameStats stats;
+    Poses3D frame0 = Persons({test::StandingPerson(0, 0)});
+    RunTrack(options, &tracks, &frame0, &stats, 10.0);
+    tracks.Commit(frame0, 1, 10.0);
+    double now = 10.0;
+    for (int k = 0; k < missed_frames; ++k) {  // nobody detected: the track coasts
+      now += step_s;
+      Poses3D none = Persons({});
+      RunTrack(options, &tracks, &none, &stats, now);
+      tracks.Commit(none, 0, now);
+    }
+    now += step_s;
+    Poses3D frame1 = Persons({test::StandingPerson(moved_m, 0)});
+    stats.Reset();
+    RunTrack(options, &tracks, &frame1, &stats, now);
+    return stats.new_tracks == 0 && frame1.track_ids[0] == frame0.track_ids[0];
+  };
+  EXPECT_TRUE(continued(0.5, 0.8, 0));
+  EXPECT_FALSE(continued(0.5, 1.1, 0)) << "beyond 2 m/s x 0.5 s";
+  EXPECT_TRUE(continued(0.5, 1.6, 1)) << "last seen 1 s ago: within 2 m";
+  EXPECT_FALSE(continued(0.04, 0.8, 0)) << "25 fps: 0.8 m > max_distance_m";
+  EXPECT_TRUE(continued(0.04, 0.45, 0));
+  options.max_person_speed_m_s = 0;  // the distance alone, whatever the rate
+  EXPECT_FALSE(continued(0.5, 0.8, 0));
 }
 
 TEST(ClipSpeed, LimitsJointDisplacementPerSecond) {
