@@ -53,14 +53,17 @@ void CheckInputSpec(const InputSpec& spec) {
   }
   // The synthetic dataset's own detector is replaced by --simulate's: without a --detector naming
   // it, the noise asked for would be ignored unseen.
-  if (spec.simulate && spec.detector.empty() && !spec.simulate_perfect && spec.labels.empty() &&
-      spec.dataset == "synthetic") {
+  // With a --detector of another profile, the noise asked for would be ignored unseen as well.
+  if (spec.simulate && !spec.simulate_perfect && spec.labels.empty() && spec.dataset == "synthetic") {
     constexpr std::string_view kNoise = "noise=";
     for (const std::string& assignment : spec.params) {
       if (!assignment.starts_with(kNoise)) continue;
-      throw ConfigError("--param " + assignment + " has no effect with --simulate, whose detector (--detector, default " +
-                        "realistic) replaces the dataset's: give --detector " + assignment.substr(kNoise.size()) +
-                        " with --simulate, or --param " + assignment + " without it");
+      const std::string noise = assignment.substr(kNoise.size());
+      if (noise == spec.detector) continue;
+      throw ConfigError("--param " + assignment + " has no effect with --simulate, whose detector (--detector " +
+                        (spec.detector.empty() ? std::string("realistic, the default") : spec.detector) +
+                        ") replaces the dataset's: give --detector " + noise + " with --simulate, or --param " +
+                        assignment + " without it");
     }
   }
   if (!spec.detector.empty()) {

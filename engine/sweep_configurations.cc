@@ -61,13 +61,49 @@ std::vector<SweepConfiguration> ReadSweepList(const std::string& path) {
   return configurations;
 }
 
+namespace {
+
+// The values of a --grid axis: split at commas outside JSON lists and strings, so a list option
+// is one value (`triangulate.core_joints=[],["hip_left","hip_right"]`: two values); blanks trimmed,
+// empty items dropped.
+std::vector<std::string> SplitGridValues(std::string_view text) {
+  std::vector<std::string> items;
+  int depth = 0;
+  bool in_string = false, escaped = false;
+  size_t start = 0;
+  for (size_t i = 0; i <= text.size(); ++i) {
+    const char c = i < text.size() ? text[i] : ',';
+    if (in_string) {
+      if (escaped) {
+        escaped = false;
+      } else if (c == '\\') {
+        escaped = true;
+      } else if (c == '"') {
+        in_string = false;
+      }
+      if (i < text.size()) continue;
+    }
+    if (c == '"') in_string = true;
+    if (c == '[' || c == '{') ++depth;
+    if ((c == ']' || c == '}') && depth > 0) --depth;
+    if (c == ',' && (depth == 0 || i == text.size())) {
+      const std::string_view item = TrimBlanks(text.substr(start, i - start));
+      if (!item.empty()) items.emplace_back(item);
+      start = i + 1;
+    }
+  }
+  return items;
+}
+
+}  // namespace
+
 std::vector<SweepConfiguration> ExpandSweepGrid(const std::vector<std::string>& grid) {
   std::vector<SweepConfiguration> configurations = {SweepConfiguration{}};
   for (const std::string& axis : grid) {
     const size_t eq = axis.find('=');
     if (eq == std::string::npos) throw ConfigError("--grid " + axis + ": expected key=value1,value2,...");
     const std::string key = axis.substr(0, eq);
-    const std::vector<std::string> values = SplitList(axis.substr(eq + 1));
+    const std::vector<std::string> values = SplitGridValues(axis.substr(eq + 1));
     if (values.empty()) throw ConfigError("--grid " + axis + ": no values");
     std::vector<SweepConfiguration> next;
     next.reserve(configurations.size() * values.size());

@@ -146,10 +146,18 @@ TEST(InputWarnings, SyntheticNoiseWithSimulateIsAnErrorNotIgnored) {
                          (dir / "detector").string())
                 .exit_code,
             0);
-  // A --detector named beside it says which detector runs (detector-stats --compare's tests rely on it).
-  EXPECT_EQ(test::RunRpt("eval --quiet --dataset synthetic --param frames=2 --param noise=clean --simulate --detector "
+  // A --detector of another profile beside it: the noise asked for would be ignored as well.
+  const test::CommandResult other =
+      test::RunRpt("eval --quiet --dataset synthetic --param frames=2 --param noise=clean --simulate --detector hard "
+                   "--out " + (dir / "noise_and_detector").string());
+  EXPECT_EQ(other.exit_code, 2);
+  EXPECT_NE(other.err.find("--param noise=clean has no effect with --simulate, whose detector (--detector hard) replaces "
+                           "the dataset's"),
+            std::string::npos)
+      << other.err;
+  EXPECT_EQ(test::RunRpt("eval --quiet --dataset synthetic --param frames=2 --param noise=hard --simulate --detector "
                          "hard --out " +
-                         (dir / "noise_and_detector").string())
+                         (dir / "same").string())
                 .exit_code,
             0);
   fs::remove_all(dir);

@@ -69,5 +69,15 @@ TEST(SweepConfigurations, GridIsEveryCombinationFirstAxisOutermost) {
   EXPECT_NE(test::ConfigErrorOf([] { ExpandSweepGrid({"a.x="}); }).find("--grid a.x=: no values"), std::string::npos);
 }
 
+TEST(SweepConfigurations, GridValuesMayBeListsAndStringsHoldingCommas) {
+  const std::vector<SweepConfiguration> lists =
+      ExpandSweepGrid({R"(t.core=[], ["hip_left","hip_right"] ,[8,8,3])", R"(n.name="a,b",c)"});
+  ASSERT_EQ(lists.size(), 6u);
+  EXPECT_EQ(lists[0].overrides, (Overrides{{"t.core", "[]"}, {"n.name", R"("a,b")"}}));
+  EXPECT_EQ(lists[2].overrides, (Overrides{{"t.core", R"(["hip_left","hip_right"])"}, {"n.name", R"("a,b")"}}));
+  EXPECT_EQ(lists[5].overrides, (Overrides{{"t.core", "[8,8,3]"}, {"n.name", "c"}}));
+  EXPECT_EQ(ExpandSweepGrid({R"(s.x="a\",b",c)"})[0].overrides, (Overrides{{"s.x", R"("a\",b")"}}));
+}
+
 }  // namespace
 }  // namespace rpt::engine
