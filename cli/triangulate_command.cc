@@ -87,7 +87,11 @@ void CheckFollowArgs(const TriangulateArgs& args) {
 std::vector<std::string> PrintCameraAgreement(const engine::RunResult& run) {
   std::vector<std::string> lines;
   for (const engine::SequenceResult& sequence : run.sequences) {
-    for (std::string& line : engine::CameraAgreementWarnings(sequence.name, sequence.camera_agreement)) {
+    std::vector<std::string> warnings = engine::CameraAgreementWarnings(sequence.name, sequence.camera_agreement);
+    if (std::string upright = engine::UprightWarning(sequence.name, sequence.upright); !upright.empty()) {
+      warnings.push_back(std::move(upright));
+    }
+    for (std::string& line : warnings) {
       std::fprintf(stderr, "warning: %s\n", line.c_str());
       lines.push_back(std::move(line));
     }
@@ -223,7 +227,9 @@ void RunTriangulate(const TriangulateArgs& args) {
   if (run.frames > 0 && run.output_persons == 0) {
     std::fprintf(stderr,
                  "warning: no person was triangulated in any of the %ld frames: check that the cameras and the "
-                 "detections belong together (camera names, pixel units, image sizes; `rpt inspect`)\n",
+                 "detections belong together (camera names, pixel units, image sizes; `rpt inspect`) and the "
+                 "calibration's convention (R and t map world to camera: x_cam = R X + t; in rpt's JSON, T is the "
+                 "camera's centre in the world; docs/cameras.md)\n",
                  run.frames);
   }
 }

@@ -31,6 +31,7 @@
 #include "datasets/input_warnings.h"
 #include "datasets/sequence.h"
 #include "engine/camera_agreement.h"
+#include "engine/upright_check.h"
 #include "engine/detection_checks.h"
 #include "engine/frame_sink.h"
 #include "engine/loss_table.h"
@@ -87,6 +88,7 @@ struct SequenceResult {
   std::optional<SequenceCheck> check;     // when RunOptions::checks is set
   std::optional<LossTable> losses;        // when RunOptions::loss_table is set
   std::vector<CameraAgreement> camera_agreement;  // when RunOptions::camera_agreement is set
+  UprightCount upright;                   // the same (engine/upright_check.h)
   long adapted_persons = 0;               // persons the adapter moved (RunOptions::adapter)
   long unadapted_persons = 0;             // persons it left as they were: no body frame
 };

@@ -23,8 +23,8 @@ constexpr double kMaxOutsideShare = 0.1;
 // calibration's (half-resolution video, normalised coordinates read as pixels) or a wrong image size.
 void CountJointsOutsideImages(const Detections& detections, const std::vector<std::vector<int>>& view_camera,
                               const std::vector<Camera>& cameras, const std::string& source, InputWarnings* warnings) {
-  std::vector<long> outside(cameras.size(), 0);
-  std::vector<double> farthest(cameras.size(), 0.0);
+  std::vector<long> outside(cameras.size(), 0), detected(cameras.size(), 0);
+  std::vector<double> farthest(cameras.size(), 0.0), max_u(cameras.size(), 0.0), max_v(cameras.size(), 0.0);
   for (size_t f = 0; f < detections.frames.size(); ++f) {
     const FrameDetections& frame = detections.frames[f];
     for (size_t v = 0; v < frame.views.size(); ++v) {
@@ -35,6 +35,9 @@ void CountJointsOutsideImages(const Detections& detections, const std::vector<st
         const auto person = view.Person(p);
         for (int j = 0; j < view.num_joints; ++j) {
           if (!(person(2, j) > 0)) continue;
+          ++detected[c];
+          max_u[c] = std::max(max_u[c], person(0, j));
+          max_v[c] = std::max(max_v[c], person(1, j));
           const double beyond = std::max({-person(0, j) / width, (person(0, j) - width) / width,
                                           -person(1, j) / height, (person(1, j) - height) / height});
           if (!(beyond > kMaxOutsideShare)) continue;
@@ -51,6 +54,16 @@ void CountJointsOutsideImages(const Detections& detections, const std::vector<st
                       " by more than a tenth of its side (the calibration's image size, or the detections' pixel "
                       "scale, wrong?)",
                   "farthest beyond the edge, in image sides", farthest[c], outside[c]);
+    // The opposite: every joint in the top-left quarter (detections from a half-size image).
+    constexpr long kMinJointsForScale = 200;
+    if (detected[c] >= kMinJointsForScale && max_u[c] < 0.55 * cameras[c].width && max_v[c] < 0.55 * cameras[c].height) {
+      warnings->Add(source,
+                    "detected joints of camera " + QuoteName(cameras[c].name) + ", all in the top-left quarter of its " +
+                        std::to_string(cameras[c].width) + "x" + std::to_string(cameras[c].height) +
+                        " image (detections from a half-size image? scale them to the calibration's image size)",
+                    "largest u and v, in image sides",
+                    std::max(max_u[c] / cameras[c].width, max_v[c] / cameras[c].height), detected[c]);
+    }
   }
 }
 
@@ -104,6 +117,21 @@ std::vector<double> FrameTimes(const std::vector<FrameDetections>& frames, doubl
                          "frame numbers missing between the frame ids (frames the detections skip): the times follow "
                          "the ids' numbers at --fps, with a gap there",
                          static_cast<long>(skipped));
+  } else if (numbered && not_increasing == 0 && frames.size() >= 3) {
+    // Every id a constant k > 1 after the one before (a detector run on every k-th frame): at
+    // --fps the frames are 1 / fps apart, not k / fps, which halves speeds for k = 2 unseen.
+    const long long step = numbers[1] - numbers[0];
+    bool constant = step > 1 && step <= 10;  // larger steps: capture times (ms), not a frame skip
+    for (size_t f = 2; f < frames.size() && constant; ++f) constant = numbers[f] - numbers[f - 1] == step;
+    if (constant) {
+      warnings->AddMissing(source,
+                           "frames whose id's number is " + std::to_string(step) +
+                               " after the previous frame's (a counter's frames, " + std::to_string(step) +
+                               " apart?): the times follow the file's order, frame i at i / --fps; "
+                               "if the ids count the camera's frames, give --fps as its rate / " +
+                               std::to_string(step),
+                           static_cast<long>(frames.size() - 1));
+    }
   } else if (numbered && not_increasing > 0) {
     warnings->AddMissing(source,
                          "frames whose id's number is not after the previous frame's (first " + first_back +

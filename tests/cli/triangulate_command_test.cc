@@ -138,6 +138,17 @@ TEST_F(Triangulate, FrameTimesFollowTheNumbersOfTheFrameIds) {
   EXPECT_EQ(ms.err.find("warning"), std::string::npos) << ms.err;
   const Json stamped_frames = ReadJson(dir_ / "stamped" / "predictions.json")["frames"];
   EXPECT_DOUBLE_EQ(stamped_frames[kFrames - 1]["time"].get<double>(), (kFrames - 1) / kFps);
+  // Every id 2 after the one before (a detector run on every other frame): the file's order, said.
+  Detections every_other = Coco17(scene_, Ids("take_", kFrames));
+  for (size_t f = 0; f < every_other.frames.size(); ++f) every_other.frames[f].frame_id = "take_" + std::to_string(2 * f);
+  WriteGenericDetections(dir_ / "every_other.json", every_other);
+  const test::CommandResult two = triangulate(dir_ / "every_other.json", "every_other");
+  ASSERT_EQ(two.exit_code, 0) << two.err;
+  EXPECT_NE(two.err.find(": 15 frames whose id's number is 2 after the previous frame's (a counter's frames, 2 apart?): "
+                         "the times follow the file's order, frame i at i / --fps; if the ids count the camera's "
+                         "frames, give --fps as its rate / 2"),
+            std::string::npos)
+      << two.err;
 }
 
 // Joints at pixel (0, 0) with a confidence (some detectors' "not found") in a detections file: read
@@ -762,6 +773,22 @@ TEST_F(Triangulate, OwnDataMistakesAreSaidNotSilent) {
             std::string::npos)
       << outside.err;
   EXPECT_EQ(metres.err.find("beyond the"), std::string::npos) << "the right image size warns of nothing:\n" << metres.err;
+  EXPECT_EQ(metres.err.find("top-left quarter"), std::string::npos) << metres.err;
+  // The calibration's images at twice the detections' size (detections from half-size images):
+  // every joint in the top-left quarter, said per camera.
+  std::vector<Camera> large = scene_.cameras;
+  for (Camera& camera : large) {
+    camera.width *= 2;
+    camera.height *= 2;
+  }
+  WriteCalibration(dir_ / "large.json", large);
+  const test::CommandResult quarter = test::RunRpt("triangulate --cameras " + (dir_ / "large.json").string() + input +
+                                                   " --quiet --out " + (dir_ / "large").string());
+  EXPECT_NE(quarter.err.find(" detected joints of camera '" + large[0].name + "', all in the top-left quarter of its " +
+                             std::to_string(large[0].width) + "x" + std::to_string(large[0].height) +
+                             " image (detections from a half-size image?"),
+            std::string::npos)
+      << quarter.err;
   // A frame rate of 0 or infinity is refused in words, not as a range of 300 digits.
   for (const std::string rate : {"0", "inf", "-3"}) {
     const test::CommandResult fps = test::RunRpt("triangulate" + cameras + input + " --fps " + rate);

@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: MIT
+#include "engine/upright_check.h"
+
+#include "core/printable_text.h"
+#include "core/text.h"
+
+namespace rpt::engine {
+
+UprightCheck::UprightCheck(const JointNames& output_joints) {
+  for (const char* name : {"nose", "eye_left", "eye_right", "ear_left", "ear_right"}) {
+    if (const int j = FindJoint(output_joints, name); j >= 0) head_.push_back(j);
+  }
+  const int left = FindJoint(output_joints, "ankle_left"), right = FindJoint(output_joints, "ankle_right");
+  if (left >= 0 && right >= 0) ankles_ = {left, right};
+}
+
+void UprightCheck::Add(const Poses3D& persons) {
+  if (head_.empty() || ankles_.empty()) return;
+  const auto observed = [&](int p, int j) {
+    return persons.Person(p)(3, j) > 0 && persons.Provenance(p, j) == JointProvenance::kTriangulated;
+  };
+  for (int p = 0; p < persons.num_persons(); ++p) {
+    if (!observed(p, ankles_[0]) || !observed(p, ankles_[1])) continue;
+    double head_z = 0;
+    int heads = 0;
+    for (const int j : head_) {
+      if (!observed(p, j)) continue;
+      head_z += persons.Person(p)(2, j);
+      ++heads;
+    }
+    if (heads == 0) continue;
+    const double ankle_z = 0.5 * (persons.Person(p)(2, ankles_[0]) + persons.Person(p)(2, ankles_[1]));
+    ++count_.judged;
+    count_.upside_down += head_z / heads < ankle_z ? 1 : 0;
+  }
+}
+
+std::string UprightWarning(const std::string& sequence, const UprightCount& count) {
+  if (count.judged < kMinUprightJudged ||
+      static_cast<double>(count.upside_down) <= kMaxUpsideDownShare * static_cast<double>(count.judged)) {
+    return "";
+  }
+  return PrintableText(sequence + ": " + std::to_string(count.upside_down) + " of the " + std::to_string(count.judged) +
+                       " persons with a head and both ankles triangulated (" +
+                       PercentText(static_cast<double>(count.upside_down) / count.judged) +
+                       ") stand on their heads (head below the ankles; rpt's world has z up): do the detections' "
+                       "pixel rows count from the image's top (v down, as OpenCV), and does the calibration's world "
+                       "z point up?");
+}
+
+}  // namespace rpt::engine
