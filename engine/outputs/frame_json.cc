@@ -91,8 +91,8 @@ void AppendFrameJson(const FrameOutput& frame, const ExportOptions& options, std
     out->append(p ? ", [" : "[");
     for (int j = 0; j < persons.num_joints; ++j) {
       out->append(j ? ", [" : "[");
-      if (person(3, j) > 0 && !JointWritten(persons, p, j, options)) {
-        out->append("null, null, null, 0");  // a filled joint, not written
+      if (!JointWritten(persons, p, j, options)) {
+        out->append("null, null, null, 0");  // missing (score 0), or a filled joint not written
       } else {
         for (int row = 0; row < 4; ++row) {
           if (row) out->append(", ");

@@ -6,8 +6,9 @@
 // metres in the world frame with 6 decimals, seconds with 6, scores with 4 (std::to_chars, the text
 // printf's "%.6f" gives; from 1e15 on, which no decimal can refine, the shortest exact form such
 // as 1e+300); coordinates that are not finite are null; provenance codes index
-// ProvenanceNames() (engine/outputs/export_options.h). Without ExportOptions::filled_joints a
-// filled joint is written as missing: [null, null, null, 0]. Appended to a string whose capacity
+// ProvenanceNames() (engine/outputs/export_options.h). A missing joint (score 0) is written as
+// [null, null, null, 0], as NPZ's NaN and CSV's absent row say; without
+// ExportOptions::filled_joints a filled joint is written so too. Appended to a string whose capacity
 // is reused, so a warm writer allocates nothing.
 #pragma once
 
