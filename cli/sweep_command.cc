@@ -301,6 +301,9 @@ void RunSweep(const SweepArgs& args) {
   file["run"] = engine::RunInfoJson(info, args.out);
   file["sweep"] = engine::SweepIdentity(all, base_config, args.input);
   file["base"] = base;
+  // Every option of the base configuration (defaults, --config, --set), as `rpt config --dump`
+  // prints it: what a reader cites, and what the sweep ran with should the --config file change.
+  file["base_options"] = OrderedJson::parse(base_config);
   file["rows"] = rows;
   // A shard asked for (also 1/1: a job array of one task) writes its shard file for `rpt merge`.
   const bool shard_file = args.shard_given;
@@ -396,6 +399,7 @@ OrderedJson CheckedShardRow(const nlohmann::json& shard, const std::string& poin
 
 void RunMerge(const std::vector<std::string>& inputs, const std::string& out, bool strict) {
   std::map<int, OrderedJson> by_index;
+  OrderedJson base_options;  // the first shard's "base_options" (all shards share base_config)
   OrderedJson base = OrderedJson::object();
   std::int64_t total = -1;
   // The sweep the first shard belongs to (its configurations, base options and input): every other
@@ -441,6 +445,9 @@ void RunMerge(const std::vector<std::string>& inputs, const std::string& out, bo
     total = shard_total;
     if (shard.contains("base")) {
       base.update(OrderedJson::parse(ObjectAt(shard, "/base", path, "an object {option: base value}").dump()));
+    }
+    if (shard.contains("base_options") && base_options.is_null()) {
+      base_options = OrderedJson::parse(ObjectAt(shard, "/base_options", path, "an object (rpt config --dump)").dump());
     }
     const nlohmann::json& rows = io::JsonAt(shard, "/rows", path);
     if (!rows.is_array()) FailAt(path, "/rows", std::string("expected a list of rows, got ") + rows.type_name());
@@ -503,6 +510,7 @@ void RunMerge(const std::vector<std::string>& inputs, const std::string& out, bo
   file["shard_runs"] = shard_runs;
   file["sweep"] = OrderedJson::parse(sweep.dump());
   file["base"] = base;
+  if (!base_options.is_null()) file["base_options"] = base_options;  // the shards' base is one (checked above)
   file["rows"] = rows;
   WriteSweepFiles(out, file, "sweep", /*whole_folder=*/true);
   std::fprintf(stderr, "merged %zu configurations from %zu shard files into %s/sweep.{json,csv,md,html}\n",

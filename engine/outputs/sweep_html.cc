@@ -204,8 +204,9 @@ std::string SweepHtml(const OrderedJson& sweep) {
           "</style>\n</head>\n<body>\n<h1>rpt sweep</h1>\n";
   html << "<p>" << rows.size() << " configuration(s). Deltas against <b>"
        << HtmlText(rows.empty() ? "" : rows[baseline.row].at("name").get<std::string>()) << "</b>";
-  html << (baseline.is_default ? " (the default configuration: no override changes an option)"
-                               : " (the first row: no configuration equals the default)")
+  html << (baseline.is_default ? " (the base configuration: no override of the sweep changes an option of it; "
+                                 "its options are sweep.json's <code>base_options</code>)"
+                               : " (the first row: no configuration equals the base configuration)")
        << "; green is better, red is worse (light grey bars: measured with other metrics options, not compared). Grey "
           "option values are inherited from the base configuration.</p>\n";
   if (sweep.contains("run") && sweep["run"].contains("command")) {

@@ -105,6 +105,7 @@ TEST(SlurmSubmit, DryRunScriptsRunByHandGiveTheUnshardedTable) {
   ASSERT_EQ(merged["rows"].size(), 6u);
   EXPECT_EQ(AccuracyRows(merged), AccuracyRows(whole));
   EXPECT_EQ(merged["base"], whole["base"]);
+  EXPECT_EQ(merged["base_options"], whole["base_options"]);
   fs::remove_all(dir);
 }
 

@@ -147,7 +147,7 @@ TEST(SweepHtml, WithoutADefaultRowDeltasAreAgainstTheFirst) {
   const std::vector<const XmlElement*> rows = TableRows(html);
   ASSERT_EQ(rows.size(), 2u);
   EXPECT_EQ(Attribute(MetricCell(*rows[1], "pcp")->children.at(0), "data-delta"), "25.0000");
-  EXPECT_NE(AllText(html).find("the first row: no configuration equals the default"), std::string::npos);
+  EXPECT_NE(AllText(html).find("the first row: no configuration equals the base configuration"), std::string::npos);
 }
 
 // A row measured with other metrics options (e.g. fewer evaluated joints) shows its values but no
@@ -241,6 +241,14 @@ TEST(SweepHtml, WrittenBySweepAndMergeWithDeltasMatchingSweepJson) {
   EXPECT_FALSE(sweep["rows"][0]["default"].get<bool>());
   EXPECT_TRUE(sweep["rows"][1]["default"].get<bool>());
   EXPECT_EQ(sweep["base"]["filter.min_match_score"], "0.7");
+  EXPECT_EQ(sweep["base_options"]["filter"]["min_match_score"], 0.7) << "every option of the base configuration";
+  // Options given with --set (or --config) are in base_options, the sweep's record of what it ran.
+  const fs::path set_out = out / "with_set";
+  ASSERT_EQ(test::RunRpt("sweep --dataset synthetic --param frames=5 --set group.max_distance_m=0.3 --grid "
+                         "merge.top_k=0,3 --out " + set_out.string())
+                .exit_code,
+            0);
+  EXPECT_EQ(ReadJson(set_out / "sweep.json")["base_options"]["group"]["max_distance_m"], 0.3);
   const XmlElement html = test::XmlReader::Parse(test::ReadAll(out / "sweep.html"), test::Markup::kDocument);
   const std::vector<const XmlElement*> rows = TableRows(html);
   ASSERT_EQ(rows.size(), 2u);
