@@ -190,6 +190,7 @@ void RunSweep(const SweepArgs& args) {
     return engine::DumpConfig(metrics_only, false);
   };
   bool per_config_input = false;
+  std::vector<std::vector<std::string>> option_warnings;  // per configuration: settings without effect
   const engine::Config base_options = ResolveConfig(args.config);
   const std::string base_config = engine::DumpConfig(base_options, false);
   const std::string base_metrics = metrics_text(base_options);
@@ -205,7 +206,10 @@ void RunSweep(const SweepArgs& args) {
       }
     }
     try {
-      configs.push_back(ResolveConfig(config_args));
+      // Settings without effect are the configuration's own warnings (in its row, named when
+      // printed), not unnamed lines before the run.
+      configs.push_back(engine::ResolveConfig(config_args.config_file, config_args.overrides));
+      option_warnings.push_back(engine::ConfigWarnings(configs.back()));
     } catch (const ConfigError& e) {  // name the configuration and where it was given
       throw ConfigError(all[i].origin + " (configuration " + QuoteName(all[i].name) + "): " + e.what());
     }
@@ -247,6 +251,7 @@ void RunSweep(const SweepArgs& args) {
       const auto summarise = [&](const engine::RunResult& run) {
         summaries[c] = engine::SummaryJson(run);
         OrderedJson listed = OrderedJson::array();
+        for (const std::string& w : option_warnings[c]) listed.push_back({{"code", "option_without_effect"}, {"message", w}});
         for (const engine::CheckWarning& w : engine::ResultWarnings(run)) listed.push_back({{"code", w.code}, {"message", w.message}});
         summaries[c]["warnings"] = listed;
       };

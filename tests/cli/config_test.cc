@@ -285,6 +285,25 @@ TEST(Config, SettingsWithoutEffectAreWarnings) {
   EXPECT_NE(r.err.find("warning: clip_speed.enabled=true has no effect with track.enabled=false"), std::string::npos)
       << r.err;
   EXPECT_EQ(test::RunRpt("demo --frames 3").err.find("warning"), std::string::npos);
+  // Settings of steps that are off.
+  engine::Config off;
+  engine::ApplyConfigOverride("refine.enabled=false", &off);
+  engine::ApplyConfigOverride("single_view.track_assist=true", &off);
+  engine::ApplyConfigOverride("single_view.ground_prior=true", &off);
+  EXPECT_EQ(engine::ConfigWarnings(off),
+            (std::vector<std::string>{
+                "refine.one_view_joints=true has no effect with refine.enabled=false (the refinement places those "
+                "joints)",
+                "single_view.track_assist=true has no effect with single_view.enabled=false",
+                "single_view.ground_prior=true has no effect with single_view.enabled=false"}));
+  engine::Config untracked;
+  engine::ApplyConfigOverride("single_view.enabled=true", &untracked);
+  engine::ApplyConfigOverride("single_view.track_assist=true", &untracked);
+  engine::ApplyConfigOverride("track.enabled=false", &untracked);
+  engine::ApplyConfigOverride("clip_speed.enabled=false", &untracked);
+  EXPECT_EQ(engine::ConfigWarnings(untracked),
+            (std::vector<std::string>{
+                "single_view.track_assist=true has no effect with track.enabled=false (it needs track ids)"}));
 }
 
 TEST(Config, DocsOptionTablesAreGeneratedFromTheMetadata) {

@@ -182,6 +182,33 @@ TEST(SweepCommand, ShardsMergeIntoTheFullTable) {
 // A configuration that fails when it runs costs only its own row: the others are written, its row
 // carries the error (empty CSV fields, a section of sweep.html), and the command exits 2 naming it.
 // `rpt merge` carries the row over and exits 2 too.
+// A setting without effect in one configuration is that configuration's warning: named when
+// printed, kept in its row of sweep.json (and so on sweep.html), absent from the others.
+TEST(SweepCommand, SettingsWithoutEffectAreTheirConfigurationsWarnings) {
+  const fs::path out = test::TempDir("sweep_no_effect");
+  const test::CommandResult r = test::RunRpt("sweep --dataset synthetic --param frames=5 --grid track.enabled=true,false "
+                                             "--grid smooth.mode=off,causal --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("warning: configuration 'track.enabled=false smooth.mode=causal': smooth.mode=causal has no "
+                       "effect with track.enabled=false (it needs track ids)"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(r.err.find("\nwarning: clip_speed"), std::string::npos) << "no unnamed lines: " << r.err;
+  const nlohmann::json sweep = nlohmann::json::parse(test::ReadAll(out / "sweep.json"));
+  ASSERT_EQ(sweep["rows"].size(), 4u);
+  const auto codes = [&](int row) {
+    std::vector<std::string> found;
+    for (const auto& w : sweep["rows"][row]["summary"]["warnings"]) found.push_back(w["code"]);
+    return std::count(found.begin(), found.end(), "option_without_effect");
+  };
+  EXPECT_EQ(codes(0), 0);
+  EXPECT_EQ(codes(1), 0);
+  EXPECT_EQ(codes(2), 1) << "clip_speed";
+  EXPECT_EQ(codes(3), 2) << "clip_speed and smooth";
+  EXPECT_NE(test::ReadAll(out / "sweep.html").find("smooth.mode=causal has no effect"), std::string::npos);
+  fs::remove_all(out);
+}
+
 TEST(SweepCommand, AFailingConfigurationKeepsTheOthersRows) {
   const fs::path out = test::TempDir("sweep_failing");
   const std::string grid = "--dataset synthetic --param frames=5 --grid triangulate.max_persons_per_view=100,1,102";
