@@ -230,6 +230,7 @@ void RunSweep(const SweepArgs& args) {
       per_config_input ? std::vector<Sequence>{} : engine::LoadInput(args.input, {}, &warnings);
   if (!per_config_input) PrintInputWarnings(warnings);
   std::vector<InputWarnings> config_warnings(mine.size());
+  std::vector<std::vector<std::string>> evaluated_joints(mine.size());  // per configuration, from its metrics
 
   std::vector<OrderedJson> summaries(mine.size());
   // A configuration that fails when it runs (e.g. core joints the input does not have) does not
@@ -250,6 +251,7 @@ void RunSweep(const SweepArgs& args) {
       // row's summary as in summary.json, and are printed after the table.
       const auto summarise = [&](const engine::RunResult& run) {
         summaries[c] = engine::SummaryJson(run);
+        for (const metrics::JointResult& joint : run.metrics.joints) evaluated_joints[c].push_back(joint.name);
         OrderedJson listed = OrderedJson::array();
         for (const std::string& w : option_warnings[c]) listed.push_back({{"code", "option_without_effect"}, {"message", w}});
         for (const engine::CheckWarning& w : engine::ResultWarnings(run)) listed.push_back({{"code", w.code}, {"message", w.message}});
@@ -276,6 +278,27 @@ void RunSweep(const SweepArgs& args) {
   if (per_config_input) {
     for (const InputWarnings& w : config_warnings) warnings.MergeRepeated(w);
     PrintInputWarnings(warnings);
+    // A param.* axis may change what is evaluated (MVOR's param.evaluated adds the head): such a
+    // row is measured differently from the reference (the default row, else the first).
+    int reference = 0;
+    for (int c = 0; c < count; ++c) {
+      if (is_default[c]) {
+        reference = c;
+        break;
+      }
+    }
+    for (int c = 0; c < count; ++c) {
+      if (!failures[c].empty() || !failures[reference].empty() || measured_differently[c] ||
+          evaluated_joints[c] == evaluated_joints[reference]) {
+        continue;
+      }
+      measured_differently[c] = true;
+      std::fprintf(stderr,
+                   "warning: configuration %s evaluates other joints (%s) than %s: it is measured differently from "
+                   "the others, so sweep.html shows no difference for it\n",
+                   PrintableText(QuoteName(all[mine[c]].name)).c_str(), PrintableText(Join(evaluated_joints[c])).c_str(),
+                   PrintableText(QuoteName(all[mine[reference]].name)).c_str());
+    }
   }
 
   OrderedJson rows = OrderedJson::array();

@@ -12,6 +12,7 @@
 #include <algorithm>
 
 #include "tests/cli/cli_test_util.h"
+#include "tests/test_data.h"
 
 namespace rpt {
 namespace {
@@ -206,6 +207,24 @@ TEST(SweepCommand, SettingsWithoutEffectAreTheirConfigurationsWarnings) {
   EXPECT_EQ(codes(2), 1) << "clip_speed";
   EXPECT_EQ(codes(3), 2) << "clip_speed and smooth";
   EXPECT_NE(test::ReadAll(out / "sweep.html").find("smooth.mode=causal has no effect"), std::string::npos);
+  fs::remove_all(out);
+}
+
+// MVOR's param.evaluated=paper adds the head to the evaluated joints: that row is measured
+// differently (no deltas), as a metrics.* axis is.
+TEST(SweepCommand, AParamAxisThatChangesTheEvaluatedJointsIsMeasuredDifferently) {
+  RPT_REQUIRE_SHARED_DATA("mvor/camma_mvor_2018.json");
+  const fs::path out = test::TempDir("sweep_evaluated");
+  const test::CommandResult r = test::RunRpt("sweep --dataset mvor --root " + test::SharedData("mvor").string() +
+                                             " --param days=3 --grid param.evaluated=arms_torso,paper --out " +
+                                             out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("warning: configuration 'param.evaluated=paper' evaluates other joints (nose, shoulder_left"),
+            std::string::npos)
+      << r.err;
+  const nlohmann::json sweep = nlohmann::json::parse(test::ReadAll(out / "sweep.json"));
+  EXPECT_FALSE(sweep["rows"][0]["measured_differently"].get<bool>());
+  EXPECT_TRUE(sweep["rows"][1]["measured_differently"].get<bool>());
   fs::remove_all(out);
 }
 
