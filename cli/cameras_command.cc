@@ -14,6 +14,7 @@
 #include "cli/input_options.h"
 #include "core/printable_text.h"
 #include "datasets/calibration/calibration.h"
+#include "datasets/io/staged_output.h"
 
 namespace rpt::cli {
 namespace {
@@ -65,6 +66,7 @@ void RegisterCamerasCommand(CLI::App& app) {
     const Calibration calibration = ReadCalibration(*in, convert_read->Parse(), &warnings);
     PrintInputWarnings(warnings);
     InputWarnings written;
+    io::CreateParentFolders(*out);
     WriteCalibration(*out, calibration.cameras, convert_write->Parse(), &written);
     PrintInputWarnings(written);
     std::printf("%s -> %s: %zu cameras\n", PrintableText(*in).c_str(), PrintableText(*out).c_str(),

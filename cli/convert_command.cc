@@ -71,6 +71,9 @@ void RunConvert(const ConvertArgs& args) {
   warnings.Merge(detections.warnings);  // empty unless read directly above
   engine::CheckStrict(args.input.strict, warnings);  // engine::LoadInput checked its own; this covers the direct read
   PrintInputWarnings(warnings);
+  for (const std::string& file : {args.out, args.labels_out, args.detections_out}) {
+    if (!file.empty()) io::CreateParentFolders(file);
+  }
   if (!args.out.empty() && (!sequences.empty() || !detections.frames.empty())) {
     // Written beside the cache and renamed over it when complete: an interrupted or failed
     // conversion leaves the old cache as it was.

@@ -394,6 +394,14 @@ ScratchFile::ScratchFile(const fs::path& name_like) { ::close(CreateRegisteredFi
 
 ScratchFile::~ScratchFile() { RemoveRegisteredFile(path_); }
 
+void CreateParentFolders(const fs::path& file) {
+  const fs::path parent = file.parent_path();
+  std::error_code ec;
+  if (parent.empty() || fs::exists(parent, ec)) return;
+  fs::create_directories(parent, ec);
+  if (ec) throw InputError(file.string() + ": cannot create its folder " + parent.string() + " (" + ec.message() + ")");
+}
+
 int RemoveTemporariesForExit() {
   Registry& registry = TheRegistry();
   registry.mutex.lock();  // kept: the process exits next

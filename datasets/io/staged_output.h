@@ -113,6 +113,10 @@ class ScratchFile {
   std::filesystem::path path_;
 };
 
+// Creates the missing folders above a file the user names for a command's output (`rpt convert
+// --labels-out new/labels.json`), as --out creates its folder; throws InputError naming the file.
+void CreateParentFolders(const std::filesystem::path& file);
+
 // Removes every registered temporary (files and folders) and returns how many it removed. Keeps
 // the registry locked for good, so no thread creates or commits a temporary afterwards: call it
 // only right before the process exits.

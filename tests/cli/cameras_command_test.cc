@@ -43,8 +43,8 @@ TEST(CamerasCommand, ConvertsThroughEveryWrittenFormatAndShowsTheCentres) {
   const fs::path dir = test::TempDir("cameras_command");
   const std::vector<Camera> cameras = SceneCameras();
   WriteCalibration(dir / "cameras.json", cameras);
-  for (const std::string out : {"cameras.toml", "cameras.yml", "cameras.xml", "easymocap/intri.yml"}) {
-    fs::create_directories((dir / out).parent_path());
+  // A folder that does not exist yet is created, as --out creates its folder.
+  for (const std::string out : {"cameras.toml", "cameras.yml", "cameras.xml", "easymocap/new/intri.yml"}) {
     const test::CommandResult convert =
         test::RunRpt("cameras convert " + (dir / "cameras.json").string() + " " + (dir / out).string());
     ASSERT_EQ(convert.exit_code, 0) << out << ": " << convert.err;

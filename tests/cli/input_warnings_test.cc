@@ -166,10 +166,12 @@ TEST(InputWarnings, SyntheticNoiseWithSimulateIsAnErrorNotIgnored) {
 TEST(InputWarnings, ConvertCarriesTheCorrectedValuesIntoTheCacheAndWarns) {
   const fs::path dir = test::TempDir("tolerance_convert");
   const Files files = WriteFiles(dir, 3);
-  const fs::path cache = dir / "cache.h5";
+  const fs::path cache = dir / "new" / "cache.h5";  // its folder is created
   const test::CommandResult r = test::RunRpt("convert --labels " + files.labels.string() + " --detections " +
-                                             files.detections.string() + " --out " + cache.string());
+                                             files.detections.string() + " --out " + cache.string() +
+                                             " --detections-out " + (dir / "other" / "d.json").string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(dir / "other" / "d.json"));
   EXPECT_EQ(WarningLines(r.err).size(), 2u) << r.err;
   // The cache holds the corrected values: it reads back without any correction left to make.
   const Detections detections = ReadDetectionsHdf5(cache);
