@@ -12,6 +12,7 @@
 #include "datasets/io/json_file.h"
 #include "datasets/io/json_output.h"
 #include "datasets/io/text_file.h"
+#include "datasets/readers/detections_file.h"
 #include "datasets/readers/generic_common.h"
 #include "datasets/readers/generic_internal.h"
 
@@ -105,6 +106,15 @@ Detections ReadGenericDetections(const std::filesystem::path& path) {
   }
   if (!root.contains("frames") && root.contains("people")) {
     throw InputError(source + ": this is a single OpenPose file; give the folder holding all OpenPose files instead");
+  }
+  if (!root.contains("joints")) {  // another tool's JSON object: say what is read instead
+    const bool mmpose = root.contains("instance_info") || root.contains("meta_info");
+    throw InputError(source + ": /joints: missing: not rpt's generic detections {\"joints\", \"frames\"}" +
+                     (mmpose ? std::string(" (an MMPose inferencer predictions file? rpt reads MMPose output as a COCO "
+                                           "result list [{\"image_id\", \"category_id\", \"keypoints\", "
+                                           "\"score\"}]: convert its instance_info to one)")
+                            : std::string()) +
+                     "; supported:\n" + SupportedDetectionFormats());
   }
   Detections detections;
   detections.unlisted_cameras_unavailable = true;  // "views" lists the cameras processed in the frame

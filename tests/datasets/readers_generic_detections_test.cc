@@ -22,6 +22,7 @@ namespace {
 
 using ::testing::ContainsRegex;
 using ::testing::HasSubstr;
+using ::testing::Not;
 using test::InputErrorOf;
 using test::WriteText;
 
@@ -71,6 +72,15 @@ TEST(GenericDetections, MalformedFilesNameFileAndPointer) {
               HasSubstr("short.json: /frames/0/views/0/poses/0: expected 17 joints (as many as \"joints\" names), got 16"));
 
   auto write = [&](const std::string& text) { return WriteText(dir, "bad.json", text); };
+  // Another tool's JSON object: what it is not, and what is read (MMPose's output named).
+  const std::string mmpose = InputErrorOf([&] {
+    ReadGenericDetections(write(R"({"meta_info": {}, "instance_info": [{"frame_id": 0, "instances": []}]})"));
+  });
+  EXPECT_THAT(mmpose, HasSubstr("bad.json: /joints: missing: not rpt's generic detections {\"joints\", \"frames\"} "
+                                "(an MMPose inferencer predictions file?"));
+  EXPECT_THAT(mmpose, HasSubstr("; supported:\n  a folder of OpenPose JSON files"));
+  EXPECT_THAT(InputErrorOf([&] { ReadGenericDetections(write(R"({"frames": []})")); }),
+              Not(HasSubstr("MMPose")));
   EXPECT_THAT(InputErrorOf([&] { ReadGenericDetections(write(R"({"joints": ["nose", "l_wrist"], "frames": []})")); }),
               HasSubstr("bad.json: /joints: unknown joint name 'l_wrist'"));
   EXPECT_THAT(InputErrorOf([&] {
