@@ -351,11 +351,19 @@ class DetectionLineSource final : public FrameSource {
         const auto joint_pointer = [&] { return pointer(p) + "/" + std::to_string(j); };
         if (json_.Peek() != Kind::kArray) Fail(joint_pointer(), "expected [x, y, score] or null");
         json_.BeginArray();
+        int null_coordinates = 0;  // [null, null, 0]: a writer's NaN position of a missing joint
         for (int row = 0; row < 3; ++row) {
-          if (!json_.NextElement() || json_.Peek() != Kind::kNumber)
-            Fail(joint_pointer(), "expected [x, y, score] or null");
+          if (!json_.NextElement()) Fail(joint_pointer(), "expected [x, y, score] or null");
+          if (row < 2 && null_coordinates == row && json_.Null()) {
+            ++null_coordinates;
+            joints(row, j) = 0;
+            continue;
+          }
+          if (json_.Peek() != Kind::kNumber) Fail(joint_pointer(), "expected [x, y, score] or null");
           joints(row, j) = json_.Number();
         }
+        if (null_coordinates == 1 || (null_coordinates == 2 && joints(2, j) != 0))
+          Fail(joint_pointer(), "expected [x, y, score] or null ([null, null, 0] for a missing joint)");
         if (json_.NextElement()) Fail(joint_pointer(), "expected [x, y, score] or null");
         joints(2, j) = AcceptScore(joints(2, j), source_, &warnings_, [&] { return joint_pointer(); });
       }

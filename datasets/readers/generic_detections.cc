@@ -42,6 +42,11 @@ void ParsePoses(const json& poses, const std::string& pointer, const std::string
     for (int j = 0; j < num_joints; ++j) {
       const json& joint = person[j];
       if (joint.is_null()) continue;  // missing joint: score 0
+      // [null, null, 0]: a writer's NaN position of a joint with score 0 (JSON has no NaN): missing.
+      if (joint.is_array() && joint.size() == 3 && joint[0].is_null() && joint[1].is_null() && joint[2].is_number() &&
+          joint[2].get<double>() == 0) {
+        continue;
+      }
       if (!joint.is_array() || joint.size() != 3 || !joint[0].is_number() || !joint[1].is_number() ||
           !joint[2].is_number()) {
         Fail(source, io::JsonPointerJoin(io::JsonPointerJoin(pointer, p), j), "expected [x, y, score] or null");

@@ -332,7 +332,7 @@ TEST(DetectionLines, FramesAsWritten) {
   options.fps = 10;
   Stream stream(
       "{\"joints\": [\"nose\", \"neck\"]}\n"
-      "{\"id\": 7, \"time\": 1.5, \"views\": [{\"poses\": [[[1, 2, 0.5], null]], \"camera\": \"b\"}]}\n"
+      "{\"id\": 7, \"time\": 1.5, \"views\": [{\"poses\": [[[1, 2, 0.5], [null, null, 0]]], \"camera\": \"b\"}]}\n"
       "\n"
       "{\"views\": [{\"camera\": \"a\", \"poses\": [[[3, 4, 1.2], [5, 6, 0]], [null, [7, 8, 1]]]}, {\"camera\": \"b\", "
       "\"poses\": null}]}\n"

@@ -81,6 +81,14 @@ TEST(GenericDetections, MalformedFilesNameFileAndPointer) {
   EXPECT_THAT(mmpose, HasSubstr("; supported:\n  a folder of OpenPose JSON files"));
   EXPECT_THAT(InputErrorOf([&] { ReadGenericDetections(write(R"({"frames": []})")); }),
               Not(HasSubstr("MMPose")));
+  // [null, null, 0] (a NaN position written as JSON null) is a missing joint; with a score it is not.
+  const Detections nan_written = ReadGenericDetections(
+      write(R"({"joints": ["nose", "neck"], "frames": [{"id": "a", "views": [{"camera": "c", "poses": [[[1, 2, 0.5], [null, null, 0]]]}]}]})"));
+  EXPECT_EQ(nan_written.frames[0].views[0].data, (std::vector<double>{1, 2, 0.5, 0, 0, 0}));
+  EXPECT_THAT(InputErrorOf([&] {
+                ReadGenericDetections(write(R"({"joints": ["nose"], "frames": [{"id": "a", "views": [{"camera": "c", "poses": [[[null, null, 0.4]]]}]}]})"));
+              }),
+              HasSubstr("bad.json: /frames/0/views/0/poses/0/0: expected [x, y, score] or null"));
   EXPECT_THAT(InputErrorOf([&] { ReadGenericDetections(write(R"({"joints": ["nose", "l_wrist"], "frames": []})")); }),
               HasSubstr("bad.json: /joints: unknown joint name 'l_wrist'"));
   EXPECT_THAT(InputErrorOf([&] {
