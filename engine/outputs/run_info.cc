@@ -70,9 +70,24 @@ RunInfo CollectRunInfo(int threads) {
   return info;
 }
 
+namespace {
+
+// `arg` as a POSIX shell reads it back: as it is when it holds only characters no shell treats
+// specially, else in single quotes (a quote inside as '\'').
+std::string ShellQuoted(const std::string& arg) {
+  const bool plain = !arg.empty() && arg.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
+                                                           "0123456789_./=,:@%+-") == std::string::npos;
+  if (plain) return arg;
+  std::string out = "'";
+  for (const char c : arg) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+}  // namespace
+
 std::string CommandLine(int argc, char** argv) {
   std::string out = "rpt";
-  for (int i = 1; i < argc; ++i) out += std::string(" ") + argv[i];
+  for (int i = 1; i < argc; ++i) out += " " + ShellQuoted(argv[i]);
   return out;
 }
 

@@ -32,8 +32,8 @@ struct RunInfo {
 RunInfo CollectRunInfo(int threads);
 
 // The process command ("rpt eval --dataset ..."), for records: call SetCommand once in main().
-// The joined line is for people; a word with a space in it (a path) cannot be told apart there, so
-// programs (rpt report) read the argument vector.
+// The joined line is for people, each argument quoted as a POSIX shell reads it back (a path with
+// a space in single quotes), so it can be pasted; programs (rpt report) read the argument vector.
 std::string CommandLine(int argc, char** argv);
 void SetCommand(int argc, char** argv);
 const std::string& CurrentCommandLine();

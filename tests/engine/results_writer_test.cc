@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "engine/outputs/results_writer.h"
+#include "engine/outputs/run_info.h"
 
 #include <gtest/gtest.h>
 
@@ -157,6 +158,20 @@ TEST(ResultsWriter, LegacyPcpPerActorInJsonCsvAndMarkdown) {
   // Without a legacy PCP nothing changes.
   EXPECT_EQ(SummaryMarkdown({{"plain", plain}}).find("Legacy"), std::string::npos);
   EXPECT_EQ(SummaryCsv({{"plain", plain}}).find("legacy"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace rpt::engine
+
+namespace rpt::engine {
+namespace {
+
+TEST(CommandLine, QuotesWhatAShellWouldSplitOrExpand) {
+  std::vector<std::string> args = {"rpt", "eval", "--root", "../sp ace/d", "--set", "a.b=1", "it's", "", "$HOME"};
+  std::vector<char*> argv;
+  for (std::string& arg : args) argv.push_back(arg.data());
+  EXPECT_EQ(CommandLine(static_cast<int>(argv.size()), argv.data()),
+            "rpt eval --root '../sp ace/d' --set a.b=1 'it'\\''s' '' '$HOME'");
 }
 
 }  // namespace

@@ -125,8 +125,9 @@ TEST(ReportCommand, ReloadsInputWhosePathHoldsASpace) {
   EXPECT_EQ(run["argv"][1], "eval");
   EXPECT_NE(std::find(run["argv"].begin(), run["argv"].end(), Json(cache.string())), run["argv"].end())
       << "the path is one argument: " << run["argv"].dump();
-  EXPECT_EQ(run["command"], "rpt eval --labels " + cache.string() + " --detections " + cache.string() +
-                                " --quiet --out " + out.string());
+  EXPECT_EQ(run["command"], "rpt eval --labels '" + cache.string() + "' --detections '" + cache.string() +
+                                "' --quiet --out " + out.string())
+      << "quoted as a shell reads it back (it can be pasted)";
   CommandResult r = RunRpt("report " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.err.find("could not be re-loaded"), std::string::npos) << r.err;
