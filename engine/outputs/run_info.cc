@@ -87,7 +87,10 @@ std::string ShellQuoted(const std::string& arg) {
 
 std::string CommandLine(int argc, char** argv) {
   std::string out = "rpt";
-  for (int i = 1; i < argc; ++i) out += " " + ShellQuoted(argv[i]);
+  for (int i = 1; i < argc; ++i) {
+    out.push_back(' ');
+    out.append(ShellQuoted(argv[i]));
+  }
   return out;
 }
 
