@@ -13,6 +13,8 @@
 // loop on a live source, engine/live_input.h); the summary goes to stderr.
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <iostream>
@@ -37,6 +39,7 @@
 #include "engine/outputs/run_info.h"
 #include "engine/outputs/step_tables.h"
 #include "engine/run.h"
+#include "metrics/step_counts.h"
 
 namespace rpt::cli {
 namespace {
@@ -213,9 +216,15 @@ void RunTriangulate(const TriangulateArgs& args) {
     std::cout << io::DumpJson(engine::TriangulationSummaryJson(run), 2) << "\n";
     std::cout.flush();
   } else {
-    std::printf("%zu sequence(s), %ld frames, %d cameras, %ld persons triangulated (%.2f per frame)\n",
+    // Tracks started over the run (a person lost longer than track.max_missing_frames comes back
+    // under a new id: a count well above the people in the scene says ids break).
+    const auto new_tracks = std::find(metrics::kCounterNames.begin(), metrics::kCounterNames.end(), "new_tracks");
+    const long tracks = std::lround(run.counts.counter_per_frame[new_tracks - metrics::kCounterNames.begin()] *
+                                    static_cast<double>(run.counts.frames));
+    std::printf("%zu sequence(s), %ld frames, %d cameras, %ld persons triangulated (%.2f per frame), %ld track ids\n",
                 run.sequences.size(), run.frames, run.sequences.empty() ? 0 : run.sequences.front().cameras,
-                run.output_persons, run.frames > 0 ? static_cast<double>(run.output_persons) / run.frames : 0.0);
+                run.output_persons, run.frames > 0 ? static_cast<double>(run.output_persons) / run.frames : 0.0,
+                tracks);
     std::printf("triangulated %ld frames in %.2f s (%.0f frames/s, %d thread(s) over %zu sequence(s))\n", run.frames,
                 run.wall_seconds, run.wall_seconds > 0 ? run.frames / run.wall_seconds : 0.0, run.threads,
                 run.sequences.size());

@@ -593,6 +593,17 @@ TEST_F(Triangulate, AReusedOutputFolderHoldsOnlyTheNewRunsExports) {
   EXPECT_TRUE(fs::exists(out / "notes.txt"));
 }
 
+// The summary line counts the track ids the run started: as many as people when ids hold.
+TEST(TriangulateDataset, TheSummaryLineCountsTheTrackIds) {
+  const fs::path dir = test::TempDir("triangulate_tracks");
+  const test::CommandResult t = test::RunRpt(
+      "triangulate --dataset synthetic --param frames=20 --param people=2 --param noise=perfect --out " +
+      (dir / "tri").string());
+  ASSERT_EQ(t.exit_code, 0) << t.err;
+  EXPECT_NE(t.out.find("40 persons triangulated (2.00 per frame), 2 track ids\n"), std::string::npos) << t.out;
+  fs::remove_all(dir);
+}
+
 TEST(TriangulateDataset, WithoutGroundTruthEqualsEval) {
   const fs::path dir = test::TempDir("triangulate_dataset");
   const std::string input = "--dataset synthetic --param frames=20 --param people=2";
