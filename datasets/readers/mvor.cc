@@ -118,7 +118,7 @@ double SecondsOfDay(const std::string& text, const std::string& where) {
   int year = 0, month = 0, day = 0, hour = 0, minute = 0, seconds_at = 0;
   double second = -1;  // read without the C library, whose strtod would take LC_NUMERIC's decimal comma
   if (std::sscanf(text.c_str(), "%d-%d-%d %d:%d:%n", &year, &month, &day, &hour, &minute, &seconds_at) != 5 ||
-      seconds_at == 0 || !ParseNumber(std::string_view(text).substr(static_cast<size_t>(seconds_at)), &second) ||
+      seconds_at == 0 || !ParseNumber(TrimBlanks(std::string_view(text).substr(static_cast<size_t>(seconds_at))), &second) ||
       hour < 0 || hour > 23 || minute < 0 || minute > 59 || !(second >= 0 && second < 61)) {
     throw InputError(where + ": " + QuoteName(text) + " is not a time 'YYYY-MM-DD hh:mm:ss.ffffff'");
   }
