@@ -25,6 +25,11 @@ using OrderedJson = nlohmann::ordered_json;
 // and options in the run's order.
 OrderedJson LoadOrdered(const std::filesystem::path& path) {
   if (!std::filesystem::exists(path)) {
+    const std::filesystem::path folder = path.parent_path();
+    if (std::filesystem::exists(folder / "sweep.json")) {  // a sweep's folder has its own page
+      throw InputError(path.string() + ": file not found: " + folder.string() +
+                       " is the output folder of `rpt sweep`, whose report is its sweep.html");
+    }
     throw InputError(path.string() + ": file not found (is this the output folder of `rpt eval` or `rpt triangulate`?)");
   }
   return io::LoadOrderedJsonFile(path);

@@ -242,6 +242,10 @@ TEST(SweepHtml, WrittenBySweepAndMergeWithDeltasMatchingSweepJson) {
   EXPECT_TRUE(sweep["rows"][1]["default"].get<bool>());
   EXPECT_EQ(sweep["base"]["filter.min_match_score"], "0.7");
   EXPECT_EQ(sweep["base_options"]["filter"]["min_match_score"], 0.7) << "every option of the base configuration";
+  const test::CommandResult report = test::RunRpt("report " + out.string());
+  EXPECT_EQ(report.exit_code, 2);
+  EXPECT_NE(report.err.find(" is the output folder of `rpt sweep`, whose report is its sweep.html"), std::string::npos)
+      << report.err;
   // Options given with --set (or --config) are in base_options, the sweep's record of what it ran.
   const fs::path set_out = out / "with_set";
   ASSERT_EQ(test::RunRpt("sweep --dataset synthetic --param frames=5 --set group.max_distance_m=0.3 --grid "
