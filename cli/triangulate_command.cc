@@ -13,8 +13,6 @@
 // loop on a live source, engine/live_input.h); the summary goes to stderr.
 #include <unistd.h>
 
-#include <algorithm>
-#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <iostream>
@@ -149,6 +147,7 @@ int RunFollow(const TriangulateArgs& args) {
   options.triangulator = config.triangulator;
   options.eval.reset();  // no ground truth: no metrics
   options.camera_agreement = true;
+  options.upright_check = true;
   options.threads = 1;
   options.early_warning = PrintAtOnce;  // times going back or in ms: said now, counted at the end
   engine::FrameLinesWriter lines(STDOUT_FILENO, "stdout", exports);
@@ -196,6 +195,7 @@ void RunTriangulate(const TriangulateArgs& args) {
   options.triangulator = config.triangulator;
   options.eval.reset();  // no ground truth: no metrics
   options.camera_agreement = true;
+  options.upright_check = true;
   options.threads = args.threads;
   std::unique_ptr<Progress> progress = ProgressOf(input, !args.quiet);
   options.progress = ReportTo(progress.get());
@@ -218,9 +218,7 @@ void RunTriangulate(const TriangulateArgs& args) {
   } else {
     // Tracks started over the run (a person lost longer than track.max_missing_frames comes back
     // under a new id: a count well above the people in the scene says ids break).
-    const auto new_tracks = std::find(metrics::kCounterNames.begin(), metrics::kCounterNames.end(), "new_tracks");
-    const long tracks = std::lround(run.counts.counter_per_frame[new_tracks - metrics::kCounterNames.begin()] *
-                                    static_cast<double>(run.counts.frames));
+    const long tracks = metrics::CounterTotal(run.counts, "new_tracks");
     std::printf("%zu sequence(s), %ld frames, %d cameras, %ld persons triangulated (%.2f per frame), %ld track ids\n",
                 run.sequences.size(), run.frames, run.sequences.empty() ? 0 : run.sequences.front().cameras,
                 run.output_persons, run.frames > 0 ? static_cast<double>(run.output_persons) / run.frames : 0.0,

@@ -141,7 +141,7 @@ void RunSequence(int index, FrameSource& source, const RunOptions& options, cons
   std::optional<CameraAgreementCheck> agreement;
   if (options.camera_agreement) agreement.emplace(header, output_joints, source.num_frames());
   std::optional<UprightCheck> upright;
-  if (options.camera_agreement) upright.emplace(output_joints);
+  if (options.upright_check) upright.emplace(output_joints);
   FrameAdapter adapter(options.adapter.get(), output_joints);
   if (sink != nullptr) sink->BeginSequence(index, header, output_joints);
 

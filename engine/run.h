@@ -58,6 +58,9 @@ struct RunOptions {
   // Compare each frame's persons with every camera's detections (engine/camera_agreement.h): the
   // check of the calibration a run without ground truth has.
   bool camera_agreement = false;
+  // Count the persons standing on their heads (engine/upright_check.h): flipped pixel rows or a
+  // calibration whose world z points down, which the camera agreement cannot see.
+  bool upright_check = false;
   // A joint-definition adapter (engine/joint_adapter.h): applied to every frame's persons after
   // triangulation, before they are measured and written; null = none. The run refuses (ConfigError)
   // predictions of other joints and a frame the adapter was fitted on. Its time is outside the
@@ -88,7 +91,7 @@ struct SequenceResult {
   std::optional<SequenceCheck> check;     // when RunOptions::checks is set
   std::optional<LossTable> losses;        // when RunOptions::loss_table is set
   std::vector<CameraAgreement> camera_agreement;  // when RunOptions::camera_agreement is set
-  UprightCount upright;                   // the same (engine/upright_check.h)
+  UprightCount upright;                   // when RunOptions::upright_check is set
   long adapted_persons = 0;               // persons the adapter moved (RunOptions::adapter)
   long unadapted_persons = 0;             // persons it left as they were: no body frame
 };

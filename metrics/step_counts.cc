@@ -1,6 +1,11 @@
 // SPDX-License-Identifier: MIT
 #include "metrics/step_counts.h"
 
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
 namespace rpt::metrics {
 
 std::array<int, kNumCounters> Counters(const FrameStats& stats) {
@@ -35,6 +40,13 @@ StepCountSummary StepCountAccumulator::Finalize() const {
   summary.noise_frames = noise_m_.count();
   summary.noise_m_median = noise_m_.Median();
   return summary;
+}
+
+long CounterTotal(const StepCountSummary& counts, std::string_view name) {
+  const auto it = std::find(kCounterNames.begin(), kCounterNames.end(), name);
+  if (it == kCounterNames.end()) throw std::logic_error("CounterTotal: no counter " + std::string(name));
+  return std::lround(counts.counter_per_frame[static_cast<size_t>(it - kCounterNames.begin())] *
+                     static_cast<double>(counts.frames));
 }
 
 }  // namespace rpt::metrics

@@ -48,4 +48,8 @@ class StepCountAccumulator {
 // The extra counters of `stats` in kCounterNames order.
 std::array<int, kNumCounters> Counters(const FrameStats& stats);
 
+// The total of counter `name` (one of kCounterNames) over the summarised frames: its mean per
+// frame times the frames, rounded (e.g. "new_tracks": the track ids a run started).
+long CounterTotal(const StepCountSummary& counts, std::string_view name);
+
 }  // namespace rpt::metrics

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <stdexcept>
+
 namespace rpt::metrics {
 namespace {
 
@@ -61,6 +63,20 @@ TEST(StepCountAccumulator, CountersFollowTheirNames) {
   stats.duplicate_persons = 16;
   const auto counters = Counters(stats);
   for (int c = 0; c < kNumCounters; ++c) EXPECT_EQ(counters[c], c + 1) << kCounterNames[c];
+}
+
+TEST(StepCountAccumulator, CounterTotalIsTheSumOverTheFrames) {
+  StepCountAccumulator accumulator;
+  for (const int started : {2, 0, 1}) {
+    FrameStats stats;
+    stats.new_tracks = started;
+    stats.coasting_tracks = 1;
+    accumulator.Add(stats);
+  }
+  const StepCountSummary summary = accumulator.Finalize();
+  EXPECT_EQ(CounterTotal(summary, "new_tracks"), 3);
+  EXPECT_EQ(CounterTotal(summary, "coasting_tracks"), 3);
+  EXPECT_THROW(CounterTotal(summary, "new_track"), std::logic_error);
 }
 
 }  // namespace
