@@ -222,6 +222,7 @@ Input OpenInput(const InputSpec& spec, const InputNeeds& needs) {
     for (auto& source : sources) source = std::make_unique<CheckedSource>(std::move(source));
     Input input(std::move(sources), std::move(opened), spec.strict);
     input.set_detections_file(spec.detections);
+    input.set_cameras_origin(spec.cameras);
     input.CheckStrict();
     return input;
   }
@@ -261,6 +262,7 @@ Input OpenInput(const InputSpec& spec, const InputNeeds& needs) {
   }
   Input input(std::move(sources), std::move(opened), spec.strict, std::move(attached), std::move(per_sequence_files));
   if (!spec.simulate) input.set_detections_file(spec.detections);
+  input.set_cameras_origin(spec.labels.empty() ? spec.root : spec.labels);
   // What the readers found unusable while opening (e.g. files not matching the reader's pattern);
   // the rest is known once the sources are exhausted (the run loop checks again then).
   input.CheckStrict();
@@ -282,6 +284,15 @@ std::vector<Sequence> LoadInput(const InputSpec& spec, const InputNeeds& needs, 
     throw InputError((paths.empty() ? "dataset " + spec.dataset : paths) +
                      ": out of memory reading the input whole (it is too large for this machine's memory)");
   }
+}
+
+std::string TooFewCamerasMessage(const std::vector<Camera>& cameras) {
+  std::string names;
+  for (const Camera& camera : cameras) names += (names.empty() ? "" : ", ") + QuoteName(camera.name);
+  return std::to_string(cameras.size()) + (cameras.size() == 1 ? " camera" : " cameras") +
+         (names.empty() ? "" : " (" + names + ")") +
+         ": rpt triangulates from 2 or more calibrated cameras that see the same persons; give the "
+         "calibration of every camera of the recording";
 }
 
 SimulationOptions SimulationOf(const InputSpec& spec) {

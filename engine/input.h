@@ -80,6 +80,10 @@ class Input {
   // a dataset's own, simulated or live detections): errors about a frame's detections name it.
   const std::string& detections_file() const { return detections_file_; }
   void set_detections_file(std::string path) { detections_file_ = std::move(path); }
+  // Where the sequences' cameras come from (the --cameras file, the labels file or the dataset's
+  // folder; empty for a generated scene or a live input): errors about the cameras name it.
+  const std::string& cameras_origin() const { return cameras_origin_; }
+  void set_cameras_origin(std::string path) { cameras_origin_ = std::move(path); }
   // Every sequence in memory (for the commands that need whole sequences: inspect, render,
   // report, detector-stats, convert); each frame validated once, like a run's.
   // With max_frames >= 0, an input of more frames (all sequences together) is refused before they
@@ -96,6 +100,7 @@ class Input {
   std::shared_ptr<AttachedDetections> attached_;
   std::vector<std::shared_ptr<AttachedDetections>> per_sequence_files_;
   std::string detections_file_;
+  std::string cameras_origin_;
 };
 
 // Opens the input `spec` names. Throws ConfigError for contradicting options and InputError for
@@ -120,6 +125,10 @@ SimulationOptions SimulationOf(const InputSpec& spec);
 // (InputWarningKind::kUnused), one "warning: <line>" per line; corrections within the tolerances
 // are accepted.
 void CheckStrict(bool strict, const InputWarnings& warnings);
+
+// What is wrong with a calibration of fewer than 2 cameras, naming them, for an error that starts
+// with the file or sequence: "1 camera (cam0): rpt triangulates ...".
+std::string TooFewCamerasMessage(const std::vector<Camera>& cameras);
 
 // The lines of `warnings` (InputWarning::Line()), e.g. for run.json.
 std::vector<std::string> InputWarningLines(const InputWarnings& warnings);

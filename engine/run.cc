@@ -263,7 +263,14 @@ RunResult Run(Input& input, const RunOptions& options, FrameSink* sink) {
   const auto start = std::chrono::steady_clock::now();
   const int count = input.size();
   std::vector<const SequenceHeader*> headers;
-  for (int i = 0; i < count; ++i) headers.push_back(&input.header(i));
+  for (int i = 0; i < count; ++i) {
+    headers.push_back(&input.header(i));
+    if (headers.back()->cameras.size() < 2) {
+      const std::string& origin = input.cameras_origin();
+      throw InputError((origin.empty() ? "" : PrintableText(origin, LineBreaks::kEscape) + ": ") + "sequence " +
+                       QuoteName(headers.back()->name) + ": " + TooFewCamerasMessage(headers.back()->cameras));
+    }
+  }
   std::optional<metrics::EvalOptions> eval;
   if (options.eval) eval = EvalOptionsFor(*options.eval, headers);
   // One accumulator for the whole run, fed in sequence order once the sequences are done (its

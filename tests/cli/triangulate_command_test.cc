@@ -814,6 +814,26 @@ TEST_F(Triangulate, OwnDataMistakesAreSaidNotSilent) {
             std::string::npos)
       << inspect.out;
   EXPECT_NE(inspect.out.find("  room: none (nothing is dropped for being outside it"), std::string::npos) << inspect.out;
+  // A calibration of one camera: the file and the camera named, and what is needed (it was "the
+  // triangulator needs at least 2 cameras, got 1"); inspect still shows that camera's detections.
+  const std::vector<Camera> one(scene_.cameras.begin(), scene_.cameras.begin() + 1);
+  WriteCalibration(dir_ / "one.json", one);
+  Detections one_view = detections;
+  for (FrameDetections& frame : one_view.frames) {
+    frame.cameras.resize(1);
+    frame.views.resize(1);
+  }
+  WriteGenericDetections(dir_ / "one_view.json", one_view);
+  const std::string one_input =
+      " --cameras " + (dir_ / "one.json").string() + " --detections " + (dir_ / "one_view.json").string();
+  const test::CommandResult single = test::RunRpt("triangulate" + one_input + " --fps 25 --out " + (dir_ / "one").string());
+  EXPECT_EQ(single.exit_code, 2) << single.err;
+  EXPECT_NE(single.err.find("error: " + (dir_ / "one.json").string() + ": sequence 'one_view': 1 camera ('" +
+                            one[0].name + "'): rpt triangulates from 2 or more calibrated cameras"),
+            std::string::npos)
+      << single.err;
+  EXPECT_FALSE(fs::exists(dir_ / "one")) << "nothing written";
+  EXPECT_EQ(test::RunRpt("inspect" + one_input).exit_code, 0);
 }
 
 }  // namespace
