@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 
 #include "core/joints.h"
 #include "datasets/sequence.h"
@@ -28,5 +29,10 @@ void SimulateDetections(const SimulationOptions& options, Sequence* sequence);
 // with `gt_joints`, and the detector model of the profile.
 JointNames SimulatedDetectionJoints(const SimulationOptions& options, const JointNames& gt_joints);
 synthetic::DetectorOptions SimulatedDetectorModel(const SimulationOptions& options);
+// The frame index the simulator's randomness of a frame depends on: the number its id ends in
+// ("shelf_000300" -> 300, "panoptic_160906_band1_000180" -> 180; at most 18 digits), else its
+// position in the sequence. So a frame's detections do not depend on which other frames were
+// selected (frames=, every=, days=): a subset's run is a subset of the whole run's.
+uint64_t SimulatedFrameIndex(std::string_view frame_id, size_t position);
 
 }  // namespace rpt

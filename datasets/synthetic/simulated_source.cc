@@ -24,8 +24,9 @@ bool SimulatedDetectionsSource::Pull(SequenceFrame* frame) { return frames_->Pul
 
 void SimulatedDetectionsSource::Complete(long frame_idx, SequenceFrame* frame) const {
   frames_->Complete(frame_idx, frame);
-  detector_.Detect(header_.cameras, frame->gt, header_.gt_joints, static_cast<uint64_t>(frame_idx), &frame->views,
-                   nullptr, &frame->labels_2d);
+  detector_.Detect(header_.cameras, frame->gt, header_.gt_joints,
+                   SimulatedFrameIndex(frame->id, static_cast<size_t>(frame_idx)), &frame->views, nullptr,
+                   &frame->labels_2d);
 }
 
 }  // namespace rpt

@@ -19,7 +19,8 @@ class SimulatedDetectionsSource final : public FrameSource {
   const SequenceHeader& header() const override { return header_; }
   long num_frames() const override { return frames_->num_frames(); }
   // The next frame of the wrapped source (its Pull; Complete completes it), its views and 2D
-  // labels replaced by the simulator's in Complete: the frame's randomness depends on its index only.
+  // labels replaced by the simulator's in Complete: the frame's randomness depends on its id's number
+  // only (SimulatedFrameIndex).
   bool Pull(SequenceFrame* frame) override;
   void Complete(long frame_idx, SequenceFrame* frame) const override;
   const InputWarnings& warnings() const override { return frames_->warnings(); }

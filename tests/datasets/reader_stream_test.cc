@@ -324,6 +324,37 @@ std::filesystem::path WriteLongLabels(const TempDir& dir, int labels) {
 // A source of a format read whole (one JSON list) keeps the file, not its converted frames: what
 // it holds once open is well under what its frames take once converted, and pulling every frame
 // through one buffer does not add to it.
+// A frame's simulated detections depend on the number its id ends in, not on its position: the
+// frames 3-6 of a sequence, selected alone (as --param frames=3-6 or every= select), get the
+// detections the whole sequence's run gives them (they were the whole run's frames 0-3).
+TEST(SimulatedDetections, AFramesDetectionsDoNotDependOnTheOtherFramesSelected) {
+  TempDir dir;
+  Sequence whole = MakeLabelSequence("a", 7, "a_");
+  Sequence part = whole;
+  part.frames.erase(part.frames.begin(), part.frames.begin() + 3);
+  WriteLabels(dir.path() / "whole.json", {whole});
+  WriteLabels(dir.path() / "part.json", {part});
+  SimulationOptions simulation;
+  simulation.seed = 5;
+  const auto simulated = [&](const std::string& file) {
+    std::vector<std::unique_ptr<FrameSource>> sources = OpenLabels(dir.path() / file, {}, true);
+    sources[0] = std::make_unique<SimulatedDetectionsSource>(std::move(sources[0]), simulation);
+    return MaterializeAll(std::move(sources)).at(0);
+  };
+  const Sequence a = simulated("whole.json"), b = simulated("part.json");
+  ASSERT_EQ(b.frames.size(), 4u);
+  for (size_t f = 0; f < b.frames.size(); ++f) ExpectSameFrame(a.frames[f + 3], b.frames[f]);
+  // The whole sequence at once (detector-stats --compare, Python) gives the same numbers.
+  Sequence at_once = part;
+  SimulateDetections(simulation, &at_once);
+  for (size_t f = 0; f < b.frames.size(); ++f) ExpectSameFrame(at_once.frames[f], b.frames[f]);
+  // Ids without a number: their position.
+  EXPECT_EQ(SimulatedFrameIndex("take_000300", 2), 300u);
+  EXPECT_EQ(SimulatedFrameIndex("frame7", 2), 7u);
+  EXPECT_EQ(SimulatedFrameIndex("take", 2), 2u);
+  EXPECT_EQ(SimulatedFrameIndex("9999999999999999999999", 2), 999999999999999999u) << "the last 18 digits";
+}
+
 TEST(ReaderMemory, LabelsSourceHoldsTheFileNotTheConvertedFrames) {
   if (HeapInUse() == 0) GTEST_SKIP() << "heap statistics not available (not glibc, or a sanitizer's allocator)";
   TempDir dir;
