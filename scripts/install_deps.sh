@@ -19,11 +19,12 @@ $SUDO apt-get update -qq
 # The build (Ninja: README command 1 builds with it, 14 % faster than Makefiles on 2 cores,
 # CONTRIBUTING.md); the OpenCV modules rpt uses, one package each (cmake/RptFindOpenCV.cmake: Debian's
 # libopencv-dev would add about 120 packages rpt does not use); Highway (libhwy-dev) for the SIMD
-# kernels chosen at run time (core/pipeline/simd_kernels.h); and three.js and Chart.js, which rpt
+# kernels chosen at run time (core/pipeline/simd_kernels.h); RE2 (libre2-dev) for --map-pattern,
+# matched in linear time whatever the pattern; and three.js and Chart.js, which rpt
 # report inlines into report.html at run time (engine/report/report_html.h).
 $SUDO apt-get install -y -qq --no-install-recommends \
   build-essential cmake ninja-build pkg-config ccache \
-  libeigen3-dev nlohmann-json3-dev libcli11-dev libhdf5-dev zlib1g-dev libtomlplusplus-dev libhwy-dev \
+  libeigen3-dev nlohmann-json3-dev libcli11-dev libhdf5-dev zlib1g-dev libtomlplusplus-dev libhwy-dev libre2-dev \
   libopencv-core-dev libopencv-imgproc-dev libopencv-imgcodecs-dev libopencv-videoio-dev \
   libjs-three libjs-chart.js >/dev/null
 if [ "$python" = 1 ]; then

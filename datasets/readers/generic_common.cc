@@ -4,9 +4,10 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
-#include <regex>
 #include <set>
 #include <unordered_set>
+
+#include <re2/re2.h>
 
 #include "core/errors.h"
 #include "core/printable_text.h"
@@ -132,15 +133,15 @@ std::vector<TemplatePart> ParseTemplate(const std::string& text, const std::stri
   return parts;
 }
 
-std::string Expand(const std::vector<TemplatePart>& parts, const std::smatch& match, const std::string& source,
-                   const std::string& text) {
+std::string Expand(const std::vector<TemplatePart>& parts, const std::vector<std::string>& match,
+                   const std::string& source, const std::string& text) {
   std::string out;
   for (const TemplatePart& part : parts) {
     if (part.group < 0) {
       out += part.literal;
       continue;
     }
-    const std::string value = match[part.group].str();
+    const std::string& value = match[static_cast<size_t>(part.group)];
     if (part.width < 0) {
       out += value;
       continue;
@@ -192,24 +193,35 @@ void CheckJointNames(const JointNames& names, const std::string& where) {
   }
 }
 
+// RE2 matches in time linear in the text whatever the pattern (a pattern such as (a+)+b made
+// std::regex backtrack for hours on a name of 40 characters, and a run.json from someone else
+// records the pattern rpt report re-runs); it has no backreferences and no lookaround.
+RE2::Options PatternOptions() {
+  RE2::Options options;
+  options.set_log_errors(false);
+  options.set_encoding(RE2::Options::EncodingLatin1);  // bytes: file names need not be UTF-8
+  options.set_max_mem(8 << 20);
+  return options;
+}
+
 struct PathMapper::Impl {
-  std::regex pattern;
+  explicit Impl(const std::string& pattern) : pattern(pattern, PatternOptions()) {}
+  RE2 pattern;
   std::vector<TemplatePart> frame_id;
   std::vector<TemplatePart> camera;
 };
 
 PathMapper::PathMapper(const PathMapping& mapping, const std::string& what) {
-  auto impl = std::make_unique<Impl>();
-  try {
-    impl->pattern = std::regex(mapping.pattern, std::regex::ECMAScript);
-  } catch (const std::regex_error& e) {
-    throw ConfigError(what + ": pattern " + QuoteName(mapping.pattern) + " is not a valid regular expression (" + e.what() + ")");
+  auto impl = std::make_unique<Impl>(mapping.pattern);
+  if (!impl->pattern.ok()) {
+    throw ConfigError(what + ": pattern " + QuoteName(mapping.pattern) + " is not a valid regular expression (" +
+                      impl->pattern.error() + "; RE2 syntax: no backreferences or lookaround)");
   }
   impl->frame_id = ParseTemplate(mapping.frame_id, what + " frame id");
   impl->camera = ParseTemplate(mapping.camera, what + " camera");
   if (mapping.frame_id.empty()) throw ConfigError(what + ": the frame id template is empty");
   if (mapping.camera.empty()) throw ConfigError(what + ": the camera template is empty");
-  const int groups = static_cast<int>(impl->pattern.mark_count());
+  const int groups = impl->pattern.NumberOfCapturingGroups();
   for (const auto* parts : {&impl->frame_id, &impl->camera}) {
     for (const TemplatePart& part : *parts) {
       if (part.group > groups) {
@@ -225,15 +237,21 @@ PathMapper::~PathMapper() = default;
 
 bool PathMapper::Apply(const std::string& text, const std::string& source, std::string* frame_id,
                        std::string* camera) const {
-  // std::regex recurses per character: a name of some 40 000 characters overflowed the stack.
-  // No path is longer than PATH_MAX (4096 bytes), so such a name is refused before matching.
+  // No path is longer than PATH_MAX (4096 bytes): a longer name is not a file's, refused.
   constexpr size_t kMaxMatchedBytes = 4096;
   if (text.size() > kMaxMatchedBytes) {
     throw InputError(source + ": a name of " + std::to_string(text.size()) + " bytes, longer than any file path (" +
                      std::to_string(kMaxMatchedBytes) + "): not matched against the pattern");
   }
-  std::smatch match;
-  if (!std::regex_match(text, match, impl_->pattern)) return false;
+  const int groups = impl_->pattern.NumberOfCapturingGroups();
+  std::vector<re2::StringPiece> pieces(static_cast<size_t>(groups) + 1);
+  if (!impl_->pattern.Match(text, 0, text.size(), RE2::ANCHOR_BOTH, pieces.data(), static_cast<int>(pieces.size()))) {
+    return false;
+  }
+  std::vector<std::string> match(pieces.size());
+  for (size_t g = 0; g < pieces.size(); ++g) {
+    if (!pieces[g].empty()) match[g].assign(pieces[g].data(), pieces[g].size());  // an unmatched group is ""
+  }
   *frame_id = Expand(impl_->frame_id, match, source, text);
   *camera = Expand(impl_->camera, match, source, text);
   return true;

@@ -32,7 +32,7 @@ void CheckJointNames(const JointNames& names, const std::string& where);
 // "([^/]+)/.*_(\d+)_keypoints\.json", frame_id "shelf_{2:6}", camera "{1}" maps
 // "Camera0/shelf_000000000300_keypoints.json" to ("shelf_000300", "Camera0").
 struct PathMapping {
-  std::string pattern;   // ECMAScript regular expression
+  std::string pattern;   // regular expression, RE2 syntax (no backreferences or lookaround)
   std::string frame_id;  // template of the frame id
   std::string camera;    // template of the camera name
 };
@@ -49,7 +49,7 @@ class PathMapper {
 
   // Returns false when the pattern does not match `text`; throws InputError naming `source`
   // when a numeric field is not a number or its offset makes it negative, or when `text` is
-  // longer than any path (4096 bytes: std::regex would overflow the stack on long texts).
+  // longer than any path (4096 bytes). Matching takes time linear in `text` (RE2).
   bool Apply(const std::string& text, const std::string& source, std::string* frame_id, std::string* camera) const;
 
  private:

@@ -406,6 +406,21 @@ TEST(GenericCommon, PathMappingTemplatesPadOffsetAndCheckGroups) {
   EXPECT_EQ(frame.size(), 4090u);
   EXPECT_THAT(InputErrorOf([&] { names.Apply("c/" + std::string(40011, 'f') + ".png", "ann.json: /images/0/file_name", &frame, &camera); }),
               HasSubstr("ann.json: /images/0/file_name: a name of 40017 bytes, longer than any file path (4096)"));
+  // A pattern that makes a backtracking engine take exponential time ((a+)+b on 40 a's: hours with
+  // std::regex, from a run.json someone else wrote) matches in linear time: this returns at once.
+  const PathMapper nested({R"(([^/]+)/(?:(a+)+b|(\d+)_keypoints\.json))", "{3:6}", "{1}"}, "t");
+  EXPECT_FALSE(nested.Apply("cam0/" + std::string(4000, 'a'), "src", &frame, &camera));
+  ASSERT_TRUE(nested.Apply("cam0/12_keypoints.json", "src", &frame, &camera));
+  EXPECT_EQ(frame, "000012");
+  // Names need not be UTF-8 (file names are bytes).
+  const PathMapper any({R"(([a-z]+)/(.+)\.png)", "{2}", "{1}"}, "t");
+  ASSERT_TRUE(any.Apply("c/fr\xff\xfe.png", "src", &frame, &camera));
+  EXPECT_EQ(frame, "fr\xff\xfe");
+  // What RE2 lacks is refused at once, naming the syntax.
+  EXPECT_THAT(test::ConfigErrorOf([] { PathMapper({R"((a)\1)", "{1}", "c"}, "openpose"); }),
+              HasSubstr("is not a valid regular expression ("));
+  EXPECT_THAT(test::ConfigErrorOf([] { PathMapper({R"((?=a)(a))", "{1}", "c"}, "openpose"); }),
+              HasSubstr("RE2 syntax: no backreferences or lookaround"));
 }
 
 }  // namespace
