@@ -99,7 +99,7 @@ int main(int argc, char** argv) {
   app.fallthrough();
   app.add_option_function<std::uint64_t>(
          "--max-inflate-mb", [](std::uint64_t megabytes) { rpt::io::SetInflateLimitMb(megabytes); },
-         "limit on the data decompressed from one input file (MAT, NPZ, compressed HDF5), in MiB "
+         "limit on the data decompressed from one input file (MAT, NPZ, compressed HDF5; the detections a VoxelPose .pkl decodes to), in MiB "
          "(default: 64 x the file size, at least 64, at most 4096)")
       ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 24));
   app.add_option_function<std::uint64_t>(

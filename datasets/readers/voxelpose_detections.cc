@@ -10,6 +10,7 @@
 #include "core/errors.h"
 #include "core/joints.h"
 #include "core/printable_text.h"
+#include "datasets/io/inflate_budget.h"
 #include "datasets/io/number_text.h"
 #include "datasets/io/pickle.h"
 
@@ -104,6 +105,19 @@ VoxelPoseDetectionsFile::VoxelPoseDetectionsFile(const std::filesystem::path& pa
     per_camera.resize(cameras_.size(), -1);
     per_camera[c->second] = static_cast<int>(i);
   }
+  // A pickle stores an object once however often it is referenced: a 9 KB file whose keys all
+  // refer to one list of 1000 detections decoded to 630 MB. What the keys decode to is charged to
+  // the file's inflate budget (64 x its size, at least 64 MiB; --max-inflate-mb) before any is read.
+  std::uint64_t detections = 0;
+  for (const auto& [key, value] : items_) {
+    if (value.IsList() || value.IsTuple()) detections += value.Size();
+  }
+  std::error_code ec;
+  const std::uint64_t file_bytes = std::filesystem::file_size(path, ec);
+  io::InflateBudget budget(source_, ec ? 0 : file_bytes);
+  budget.Reserve(detections * kCocoJoints * 3 * sizeof(double),
+                 source_ + ": its " + std::to_string(detections) + " detections (objects the file stores once may "
+                 "be referenced many times)");
   std::string names;
   for (const std::string& camera : unknown_cameras) names += (names.empty() ? "'" : ", '") + camera + "'";
   warnings_.AddUnused(source_, "keys of cameras not in the calibration ignored (cameras " + names + ")",
