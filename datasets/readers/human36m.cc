@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -78,6 +79,44 @@ bool ActionSelected(const Human36mOptions& options, const std::string& subject, 
       return false;
   }
   return true;
+}
+
+// Every `exclude` entry must name something: an entry for one of the selected subjects (or for
+// every subject, without "S9/") that matches none of its actions, or whose subject differs from a
+// selected one in case only, is a ConfigError (a typo would exclude nothing, silently). Entries
+// for subjects not selected are part of a list for all subjects (learnable-triangulation's).
+// `actions`: each selected subject's actions in the data, whatever `actions=` selects.
+void CheckExcludes(const Human36mOptions& options, const std::map<std::string, std::vector<std::string>>& actions) {
+  const auto lower = [](std::string text) {
+    for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return text;
+  };
+  for (const std::string& item : options.exclude) {
+    const std::size_t slash = item.find('/');
+    const std::string subject_filter = slash == std::string::npos ? "" : item.substr(0, slash);
+    const std::string action_filter = slash == std::string::npos ? item : item.substr(slash + 1);
+    bool applies = false, matches = false;
+    std::string known;
+    for (const auto& [subject, names] : actions) {
+      if (!subject_filter.empty() && subject_filter != subject) {
+        if (lower(subject_filter) == lower(subject)) {
+          throw ConfigError("human36m.exclude: " + QuoteName(item) + ": no subject " + QuoteName(subject_filter) +
+                            " (did you mean " + QuoteName(subject) + "?)");
+        }
+        continue;
+      }
+      applies = true;
+      for (const std::string& action : names) {
+        matches = matches || Human36mActionMatches(action, action_filter);
+        if (known.size() < 400) known += (known.empty() ? "" : ", ") + action;
+      }
+    }
+    if (applies && !matches) {
+      throw ConfigError("human36m.exclude: " + QuoteName(item) + " matches no action of " +
+                        (subject_filter.empty() ? std::string("the selected subjects") : subject_filter) +
+                        " (actions: " + known + ")");
+    }
+  }
 }
 
 std::optional<std::filesystem::path> FirstExisting(const std::vector<std::filesystem::path>& candidates) {
@@ -287,9 +326,15 @@ Eigen::Matrix<double, 3, 17> AnnotFrameToWorld(const AnnotRows& rows, long long 
 // converted one frame per Next.
 std::vector<std::unique_ptr<FrameSource>> OpenFromAnnot(const Human36mOptions& options) {
   std::vector<std::unique_ptr<FrameSource>> out;
+  std::map<std::string, std::vector<std::string>> actions;
   for (const std::string& subject : options.subjects) {
     const std::filesystem::path subject_dir = options.root / "processed" / subject;
     if (!std::filesystem::is_directory(subject_dir)) throw InputError(PathName(subject_dir) + ": unknown subject (no such directory)");
+    actions[subject] = SortedActionDirs(subject_dir);
+  }
+  CheckExcludes(options, actions);
+  for (const std::string& subject : options.subjects) {
+    const std::filesystem::path subject_dir = options.root / "processed" / subject;
     InputWarnings camera_warnings;
     const std::vector<Camera> cameras = SubjectCameras(options, nullptr, subject, &camera_warnings);
     bool any = false;
@@ -353,6 +398,14 @@ std::vector<std::unique_ptr<FrameSource>> OpenFromLabels(const Human36mOptions& 
     if (!(f >= 0 && f == std::floor(f))) table.Fail("row " + std::to_string(r) + ": frame_idx must be a non-negative integer");
     groups[{static_cast<int>(s), static_cast<int>(a)}].emplace_back(static_cast<long long>(f), r);
   }
+
+  std::map<std::string, std::vector<std::string>> actions;  // of the selected subjects, for CheckExcludes
+  for (const auto& [key, rows] : groups) {
+    const std::string subject = subject_names.At(static_cast<std::size_t>(key.first)).AsStr();
+    if (std::find(options.subjects.begin(), options.subjects.end(), subject) == options.subjects.end()) continue;
+    actions[subject].push_back(h36m_ego::SanitizeName(action_names.At(static_cast<std::size_t>(key.second)).AsStr()));
+  }
+  CheckExcludes(options, actions);
 
   std::vector<std::unique_ptr<FrameSource>> out;
   for (const std::string& subject : options.subjects) {

@@ -313,6 +313,18 @@ TEST(Human36mReader, AnnotH5RecoversWorldSkeleton) {
   EXPECT_LT((other[0].frames[0].gt.Person(0).col(17).head<3>() - RawSkeleton(1).col(14)).norm(), kTol);
   EXPECT_EQ(ReadDataset(Request(dir.path(), {{"subjects", "S9"}, {"max_frames", "1"}}))[0].frames.size(), 1u);
   EXPECT_EQ(ReadDataset(Request(dir.path(), {{"subjects", "S9"}, {"exclude", "S9/Walking-2"}})).size(), 1u);
+  EXPECT_EQ(ReadDataset(Request(dir.path(), {{"subjects", "S9"}, {"exclude", "Walking"}})).size(), 1u);
+  // An entry for another subject belongs to a list for all subjects; a typo or another case, for a
+  // selected one, would exclude nothing: refused, naming the entry and the actions there are.
+  EXPECT_EQ(ReadDataset(Request(dir.path(), {{"subjects", "S9"}, {"exclude", "S11/Walking-2"}})).size(), 2u);
+  EXPECT_THAT(test::ConfigErrorOf([&] {
+                ReadDataset(Request(dir.path(), {{"subjects", "S9"}, {"exclude", "S9/Walkin-2"}}));
+              }),
+              HasSubstr("human36m.exclude: 'S9/Walkin-2' matches no action of S9 (actions: Directions-1, Walking-2)"));
+  EXPECT_THAT(test::ConfigErrorOf([&] {
+                ReadDataset(Request(dir.path(), {{"subjects", "S9"}, {"exclude", "s9/Walking-2"}}));
+              }),
+              HasSubstr("no subject 's9' (did you mean 'S9'?)"));
   EXPECT_EQ(ReadDataset(Request(dir.path(), {{"subjects", "S9"}, {"distortion", "none"}}))[0].cameras[0].model,
             DistortionModel::kNone);
 }
