@@ -121,8 +121,20 @@ Poses3D PersonsFromArray(py::handle object, int num_joints, const std::string& w
   const py::array_t<double> array = CheckedArray(object, what, {-1, num_joints, 4});
   for (py::ssize_t p = 0; p < array.shape(0); ++p) persons.AddPerson();
   std::copy(array.data(), array.data() + array.size(), persons.data.begin());
-  for (const double value : persons.data) {
-    if (!std::isfinite(value)) throw py::value_error(what + ": contains NaN or infinity");
+  // A missing joint (score 0) may have NaN coordinates, as rpt's NPZ and HDF5 exports write it.
+  for (size_t k = 0; k < persons.data.size(); k += 4) {
+    double* joint = persons.data.data() + k;
+    if (joint[3] == 0 && (std::isnan(joint[0]) || std::isnan(joint[1]) || std::isnan(joint[2]))) {
+      joint[0] = joint[1] = joint[2] = 0;
+    }
+    for (int d = 0; d < 4; ++d) {
+      if (!std::isfinite(joint[d])) {
+        const size_t index = k / 4;
+        throw py::value_error(what + ": person " + std::to_string(index / static_cast<size_t>(num_joints)) +
+                              ", joint " + std::to_string(index % static_cast<size_t>(num_joints)) +
+                              ": NaN or infinity (a missing joint has score 0; its coordinates may be NaN)");
+      }
+    }
   }
   return persons;
 }

@@ -336,9 +336,21 @@ def test_metrics_errors(scene, predictions):
     with pytest.raises(ValueError, match=r"with arrays, give gt_joints= and joint_names="):
         rpt.metrics.evaluate([np.zeros((1, 17, 4))], [np.zeros((1, 17, 4))])
     gt = np.zeros((1, 17, 4))
-    gt[0, 0, 0] = np.nan
-    with pytest.raises(ValueError, match=r"gt\[0\]: contains NaN"):
+    gt[0, :, 3] = 1
+    gt[0, 2, 0] = np.nan
+    with pytest.raises(ValueError, match=r"gt\[0\]: person 0, joint 2: NaN or infinity \(a missing joint has score 0"):
         rpt.metrics.evaluate([gt], [np.zeros((1, 17, 4))], gt_joints=scene.joint_names, joint_names=scene.joint_names)
+    # A missing joint (score 0) may be NaN, as rpt's NPZ and HDF5 exports write it: the same
+    # numbers as with zeros there.
+    gt[0, 2] = [np.nan, np.nan, np.nan, 0]
+    pred = gt.copy()
+    pred[0, :, 0] += 0.05
+    pred[0, 4] = [np.nan, np.nan, np.nan, 0]
+    zeros = lambda a: np.where(np.isnan(a), 0.0, a)
+    with_nan = rpt.metrics.evaluate([gt], [pred], gt_joints=scene.joint_names, joint_names=scene.joint_names)
+    with_zeros = rpt.metrics.evaluate([zeros(gt)], [zeros(pred)], gt_joints=scene.joint_names, joint_names=scene.joint_names)
+    assert with_nan["mpjpe_mm"] == with_zeros["mpjpe_mm"]
+    assert with_nan["pcp"] == with_zeros["pcp"]
     # Wrong types are TypeErrors naming the argument (pybind11 said "Unable to cast Python instance").
     with pytest.raises(TypeError, match=r"^metrics.evaluate: predictions must be the rpt.Predictions of process_sequence .*got list$"):
         rpt.metrics.evaluate(scene, [])
