@@ -142,6 +142,18 @@ TEST(ShelfReader, VoxelPoseDetectionsAttach) {
   EXPECT_NEAR(view.Person(0)(0, 0), 278.49, 0.01);
   EXPECT_NEAR(view.Person(0)(1, 0), 70.81, 0.01);
   EXPECT_NEAR(view.Person(0)(2, 0), 0.40, 0.01);
+  // Its detections are of the original frames 0-2, its ground truth of frames 300-302: said.
+  const auto warned = [](const Sequence& sequence) {
+    for (const InputWarning& w : sequence.warnings.items()) {
+      if (w.Line().find("frames of mmpose's 3-frame test subset: its ground truth is Shelf frames 300-302") !=
+          std::string::npos) {
+        return true;
+      }
+    }
+    return false;
+  };
+  EXPECT_TRUE(warned(shelf));
+  EXPECT_FALSE(warned(ReadDataset(Request("shelf", test::SharedData("shelf"), {{"frames", "0-2"}}))[0]));
 }
 
 TEST(ShelfReader, DefaultFramesExceedTheFixture) {
