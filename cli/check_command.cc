@@ -155,6 +155,7 @@ void RunEvaluation(const engine::ThresholdEvaluation& e, bool strict, InputWarni
   options.triangulator = e.config.triangulator;
   options.eval = e.config.metrics;
   options.threads = 1;  // timings comparable across machines with different core counts
+  options.require_frames = true;
   engine::InputSpec input = e.input;
   input.strict = strict;
   engine::Input opened = engine::OpenInput(input);

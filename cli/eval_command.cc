@@ -74,6 +74,7 @@ void RunEval(const EvalArgs& args) {
   info.input_digests = engine::InputDigests(args.input);  // compared by `rpt report` before it re-loads the input
   engine::RunFolder folder(out_dir, info.run_id, input.size(), exports);
   // Streamed: each frame is checked and triangulated, written, then dropped.
+  options.require_frames = true;
   const engine::RunResult run = engine::Run(input, options, folder.sink());
   progress.reset();
   PrintInputWarnings(run.warnings.Except(opened));  // what the sources corrected or left unused, known now

@@ -247,6 +247,7 @@ void RunSweep(const SweepArgs& args) {
       options.triangulator = configs[c].triangulator;
       options.eval = configs[c].metrics;
       options.threads = 1;
+      options.require_frames = true;
       // The result warnings `rpt eval` would give (no predictions, low recall, ...) go into the
       // row's summary as in summary.json, and are printed after the table.
       const auto summarise = [&](const engine::RunResult& run) {

@@ -204,6 +204,7 @@ void RunTriangulate(const TriangulateArgs& args) {
   const std::string out_dir = !args.out.empty() ? args.out : DefaultOutDir(args.input, input);
   engine::CheckOutputOutsideInput(out_dir, args.input);
   engine::RunFolder folder(out_dir, info.run_id, input.size(), exports);
+  options.require_frames = true;
   const engine::RunResult run = engine::Run(input, options, folder.sink());
   progress.reset();
   PrintInputWarnings(run.warnings.Except(opened));

@@ -298,6 +298,19 @@ RunResult Run(Input& input, const RunOptions& options, FrameSink* sink) {
     if (runs[i].times) runs[i].times->AddWarnings(input.header(i).name, input.header(i).fps, &result.warnings);
   }
   input.CheckStrict();
+  if (options.require_frames) {
+    long frames = 0;
+    for (const SequenceRun& run : runs) frames += run.result.frames;
+    if (frames == 0) {
+      const std::string& origin = input.cameras_origin();
+      throw InputError((origin.empty() ? std::string("the input") : PrintableText(origin, LineBreaks::kEscape)) +
+                       ": no frame to triangulate in " + std::to_string(count) +
+                       (count == 1 ? " sequence" : " sequences") +
+                       " (a selection such as --param frames=, every= or days=, or a reader dropping frames without "
+                       "ground truth, such as panoptic's skip_empty, can leave none; so can a detections file without "
+                       "frames)");
+    }
+  }
 
   result.evaluated = eval.has_value();
   std::optional<metrics::MetricsAccumulator> all;

@@ -67,6 +67,10 @@ struct RunOptions {
   // steps' (like the metrics').
   std::shared_ptr<const JointAdapter> adapter;
   int warmup_frames = 0;  // frames per sequence excluded from timing
+  // An input that gives no frame at all is an InputError naming it (eval, triangulate, check and
+  // sweep: a run of 0 frames measured nothing, and exit 0 would pass a script's check); off for a
+  // live stream that ended before its first frame and for the library.
+  bool require_frames = false;
   // Threads: sequences in parallel, or with one sequence its pipeline's stages (at most 8);
   // 0 = automatic (at most the cores, the sequences or 8). 1: one input frame at a time.
   int threads = 0;

@@ -2,6 +2,7 @@
 // The run loop (engine/run.h): frames pulled from frame sources give the numbers of the same
 // frames in memory, whatever the thread count, while one input frame is alive at a time; sinks
 // see every frame in order; the input checks stream.
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -23,6 +24,7 @@
 #include "engine/run.h"
 #include "engine/thread_count.h"
 #include "tests/counting_source.h"
+#include "tests/error_message.h"
 #include "datasets/synthetic/simulate_detections.h"
 
 namespace rpt::engine {
@@ -315,6 +317,21 @@ TEST(RunTest, WithoutMetricsNoGroundTruthIsNeeded) {
   EXPECT_EQ(run.gt_persons, 0);
   EXPECT_GT(run.output_persons, 30) << "two people, triangulated without GT";
   EXPECT_EQ(predictions.sequences()[0].persons.size(), 30u);
+}
+
+// A run of no frame at all measured nothing: with require_frames (eval, triangulate, check, sweep)
+// it is an InputError saying what can leave none (it was exit 0 with every metric '-'); the
+// library runs it.
+TEST(RunTest, AnInputWithoutFramesIsAnErrorWhenFramesAreRequired) {
+  std::vector<Sequence> empty = MakeSyntheticDataset(Scene(5));
+  empty[0].frames.clear();
+  RunOptions options;
+  EXPECT_EQ(engine::Run(std::span<const Sequence>(empty), options).frames, 0);
+  options.require_frames = true;
+  EXPECT_THAT(test::InputErrorOf([&] { engine::Run(std::span<const Sequence>(empty), options); }),
+              ::testing::HasSubstr("the input: no frame to triangulate in 1 sequence (a selection such as"));
+  std::vector<Sequence> one = MakeSyntheticDataset(Scene(1));
+  EXPECT_EQ(engine::Run(std::span<const Sequence>(one), options).frames, 1);
 }
 
 // A time that goes back (or repeats) ends the tracks: counted in one warning with the largest
