@@ -64,6 +64,13 @@ std::vector<Camera> ReadPanopticCameras(const std::filesystem::path& path, const
   }
 
   std::vector<std::string> names = selection == "hd" ? hd_names : SplitList(selection);
+  // The studio has 31 HD cameras (00_00 to 00_30): "hd" takes the ones the file has, and fewer is said.
+  constexpr size_t kStudioHdCameras = 31;
+  if (selection == "hd" && hd_names.size() < kStudioHdCameras && warnings != nullptr) {
+    warnings->AddMissing(source, "HD cameras of the studio's 31 missing from the file: cameras=hd uses the " +
+                                     std::to_string(hd_names.size()) + " it has",
+                         static_cast<long>(kStudioHdCameras - hd_names.size()));
+  }
   if (selection.empty()) {
     if (list.empty()) throw InputError(source + ": /cameras: the list of cameras is empty");
     for (size_t i = 0; i < list.size(); ++i)

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <set>
 
 #include "core/errors.h"
 #include "core/printable_text.h"
@@ -200,6 +201,23 @@ std::vector<std::unique_ptr<FrameSource>> OpenShelf4da(const DatasetRequest& req
         throw InputError(path.string() + ":1: header: " + std::to_string(detections.frames.size()) + " frames, " +
                          count_source + " has " + std::to_string(num_frames));
       }
+    }
+    // A detection file of a camera calibration.json does not have is not read: said, not silent.
+    std::set<std::string> unread;
+    for (const auto& entry : std::filesystem::directory_iterator(request.root / "detection", ec)) {
+      const std::filesystem::path& file = entry.path();
+      if (file.extension() != ".txt") continue;
+      const std::string camera = file.stem().string();
+      if (std::none_of(header.cameras.begin(), header.cameras.end(), [&](const Camera& c) { return c.name == camera; })) {
+        unread.insert(camera);
+      }
+    }
+    if (!unread.empty()) {
+      std::string names;
+      for (const std::string& camera : unread) names += (names.empty() ? "" : ", ") + QuoteName(camera);
+      warnings.AddUnused((request.root / "detection").string(),
+                         "detection files of cameras calibration.json does not have, not read (cameras " + names + ")",
+                         static_cast<long>(unread.size()));
     }
     if (!request.ground_truth) files->frames = SelectFrames(params.frames, num_frames, count_source);
     for (const size_t f : files->frames) {

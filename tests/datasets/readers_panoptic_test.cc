@@ -369,6 +369,17 @@ TEST(PanopticReader, GeneratedFilesMissingJointsEmptyBodiesAndRoots) {
   ASSERT_EQ(hd.cameras.size(), 2u);
   EXPECT_EQ(hd.cameras[0].name, "00_00");
   EXPECT_EQ(hd.cameras[1].name, "00_01");
+  // The studio has 31: the 29 the file lacks are said (a calibration missing a camera was used silently).
+  const auto said = [](const Sequence& s) {
+    for (const InputWarning& w : s.warnings.items()) {
+      if (w.Line().ends_with(": 29 HD cameras of the studio's 31 missing from the file: cameras=hd uses the 2 it has")) {
+        return true;
+      }
+    }
+    return false;
+  };
+  EXPECT_TRUE(said(hd));
+  EXPECT_FALSE(said(ReadDataset(Request(dir.path(), {{"sequences", "seqA"}, {"cameras", "00_00,00_01"}}))[0]));
   const Sequence vga = ReadDataset(Request(dir.path(), {{"sequences", "seqA"}, {"cameras", "01_01"}}))[0];
   EXPECT_EQ(vga.cameras[0].width, 640);
   EXPECT_EQ(vga.cameras[0].dist, (std::array<double, 5>{-0.2, 0.15, 0.001, -0.0005, 0.02}));

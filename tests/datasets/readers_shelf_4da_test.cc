@@ -243,6 +243,17 @@ TEST(Shelf4daReader, ParamsSelectFramesDetectionsNoseAndAssociation) {
                 ReadDataset(Request(dir.path(), {{"fps", "30"}}));
               }),
               HasSubstr("--param fps=30: unknown parameter 'fps' (shelf-4da has:"));
+  // A detection file of a camera the calibration does not have is unused input, named (it was
+  // left unread silently: a calibration missing a camera ran on the others).
+  const std::string what = "detection files of cameras calibration.json does not have, not read (cameras '4')";
+  fs::copy_file(dir.path() / "detection" / "0.txt", dir.path() / "detection" / "4.txt");
+  const Sequence extra = ReadDataset(Request(dir.path(), {}))[0];
+  EXPECT_EQ(FindWarning(top.warnings, "detection", what), nullptr);
+  const InputWarning* unread = FindWarning(extra.warnings, "detection", what);
+  ASSERT_NE(unread, nullptr);
+  EXPECT_EQ(unread->Line(), (dir.path() / "detection").string() +
+                                ": 1 detection files of cameras calibration.json does not have, not read (cameras '4')");
+  EXPECT_EQ(unread->kind, InputWarningKind::kUnused);
 }
 
 TEST(Shelf4daReader, MalformedDetectionFilesNameFileLineAndToken) {
