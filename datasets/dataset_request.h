@@ -52,6 +52,11 @@ struct DatasetInfo {
   std::string description;          // one line
   std::string layout;               // what must be on disk under --root (multi-line ok)
   std::vector<DatasetParam> params;  // accepted --param key=value options
+  // Every frame id the reader gives starts with this and ends in the frame's number
+  // ("panoptic_" for panoptic_160906_band1_000180); empty: ids of no such form. A detections file's
+  // frame of this form that no selected frame uses is one the selection (frames=, every=, days=,
+  // sequences=) left out, not unused input.
+  std::string frame_id_prefix;
 };
 
 struct DatasetRequest {

@@ -115,8 +115,12 @@ std::unique_ptr<FrameSource> AttachedDetections::Wrap(std::unique_ptr<FrameSourc
 InputWarnings AttachedDetections::Unused() const {
   long unused = 0;
   std::string first;
+  const auto selected_out = [&](const std::string& id) {
+    return !dataset_prefix_.empty() && id.size() > dataset_prefix_.size() && id.starts_with(dataset_prefix_) &&
+           id.back() >= '0' && id.back() <= '9';
+  };
   for (size_t i = 0; report_unused_frames_ && i < detections_.frames.size(); ++i) {
-    if (used_[i].load(std::memory_order_relaxed)) continue;
+    if (used_[i].load(std::memory_order_relaxed) || selected_out(detections_.frames[i].frame_id)) continue;
     if (unused++ == 0) first = detections_.frames[i].frame_id;
   }
   InputWarnings warnings;

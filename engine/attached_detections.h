@@ -40,12 +40,17 @@ class AttachedDetections {
   // frames no sequence used, then frames of the sequences absent from the file (one line each,
   // counted over all sequences).
   InputWarnings Unused() const;
+  // Detection frames whose id starts with `prefix` and ends in a digit are ids of the dataset
+  // (DatasetInfo::frame_id_prefix): one no sequence used was left out by the reader's selection
+  // (frames=, every=, days=, sequences=), not reported by Unused(). Empty: every one is reported.
+  void SetDatasetFrameIdPrefix(std::string prefix) { dataset_prefix_ = std::move(prefix); }
 
  private:
   class Source;
   Detections detections_;
   std::string source_;
   bool report_unused_frames_;
+  std::string dataset_prefix_;
   std::unordered_map<std::string, int> frame_index_;  // frame id -> index into detections_.frames
   std::unique_ptr<std::atomic<bool>[]> used_;         // per detection frame: attached to some frame
   // Per wrapped sequence (in the order wrapped): its frames absent from the file, and the first.

@@ -74,4 +74,11 @@ std::vector<std::unique_ptr<FrameSource>> OpenDataset(const DatasetRequest& requ
 
 std::vector<Sequence> ReadDataset(const DatasetRequest& request) { return MaterializeAll(OpenDataset(request)); }
 
+std::string DatasetFrameIdPrefix(const std::string& dataset) {
+  for (const DatasetEntry& entry : DatasetRegistry()) {
+    if (entry.info.name == dataset) return entry.info.frame_id_prefix;
+  }
+  return "";
+}
+
 }  // namespace rpt::engine

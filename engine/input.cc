@@ -251,6 +251,7 @@ Input OpenInput(const InputSpec& spec, const InputNeeds& needs) {
     // One file for all sequences: each frame goes to the sequence that holds its id.
     attached =
         std::make_shared<AttachedDetections>(ReadMappedDetections(spec.detections, spec.mapping), spec.detections);
+    if (spec.labels.empty()) attached->SetDatasetFrameIdPrefix(DatasetFrameIdPrefix(spec.dataset));
     opened.Merge(attached->file_warnings());  // once, however many sequences use it
     for (auto& source : sources) source = attached->Wrap(std::move(source));
   }

@@ -339,6 +339,7 @@ DatasetInfo EgohumansInfo() {
       "<root>/<big_seq>/<seq>/processed_data/poses2d/<camXX>/rgb/%05d.npy (detections=cache)\n"
       "root may also be one <big_seq> or one <seq> directory";
   info.params = DescribeDatasetParams<EgohumansParams>();
+  info.frame_id_prefix = "egohumans_";  // EgoHumansFrameId
   return info;
 }
 

@@ -337,6 +337,7 @@ DatasetInfo H3wbInfo() {
       "<root>/metadata.xml or <root>/cameras.pkl                          Human3.6M cameras for json\n"
       "root may also be the annotation file itself";
   info.params = DescribeDatasetParams<H3wbParams>();
+  info.frame_id_prefix = "h3wb_";  // H3wbFrameId
   return info;
 }
 

@@ -492,6 +492,7 @@ DatasetInfo Human36mInfo() {
       "<root>/processed/<S>/<Action>-<sub>/annot.h5           h36m-fetch labels (labels=annot)\n"
       "<root>/extra/human36m-multiview-labels-GTbboxes.npy    learnable-triangulation labels (labels=npy)";
   info.params = DescribeDatasetParams<Human36mParams>();
+  info.frame_id_prefix = "human36m_";  // FillFrame
   return info;
 }
 

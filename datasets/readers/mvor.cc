@@ -162,6 +162,7 @@ DatasetInfo MvorInfo() {
                 ")\n<root>/detections_results/" + kDetectionsFile + "  (or <root>/" + kDetectionsFile +
                 "; with detections=openpose)";
   info.params = DescribeDatasetParams<MvorParams>();
+  info.frame_id_prefix = "mvor_day";  // MvorFrameId
   return info;
 }
 

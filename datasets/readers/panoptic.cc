@@ -272,6 +272,7 @@ DatasetInfo PanopticInfo() {
       "<root>/<seq>/calibration_<seq>.json\n"
       "<root>/<seq>/hdPose3d_stage1_coco19/body3DScene_%08d.json";
   info.params = DescribeDatasetParams<PanopticParams>();
+  info.frame_id_prefix = "panoptic_";  // PanopticFrameId
   return info;
 }
 

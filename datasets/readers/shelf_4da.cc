@@ -136,6 +136,7 @@ DatasetInfo Shelf4daInfo() {
       "<root>/gt.txt   ground truth (SHELF15 joints in metres, identity per person)\n"
       "<root>/detection/<camera>.txt   OpenPose BODY_25 candidates and PAF scores (only with detections=openpose)";
   info.params = DescribeDatasetParams<Shelf4daParams>();
+  info.frame_id_prefix = std::string(kFramePrefix) + "_";  // ShelfFourDaFrameId
   return info;
 }
 

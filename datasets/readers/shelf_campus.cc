@@ -83,6 +83,7 @@ DatasetInfo MakeInfo(const ShelfCampusSpec& spec) {
                 "<root>/actorsGT.mat   ground truth (actor3D: actors x frames, 14x3 metres or empty)\n" + "<root>/" +
                 spec.detections_file + "   VoxelPose 2D detections (only with detections=voxelpose)";
   info.params = DescribeDatasetParams(DefaultParams(spec));
+  info.frame_id_prefix = spec.name + "_";  // ShelfCampusFrameId
   return info;
 }
 

@@ -18,6 +18,7 @@
 #include "datasets/readers/generic_labels.h"
 #include "datasets/synthetic/synthetic_sequence.h"
 #include "tests/cli/cli_test_util.h"
+#include "tests/test_data.h"
 
 namespace rpt {
 namespace {
@@ -149,6 +150,32 @@ TEST(UnusedInput, StrictAcceptsCorrectionsAndCompleteInput) {
   ASSERT_EQ(lines.size(), 1u) << r.err;
   EXPECT_TRUE(Contains(lines[0], "1 scores above 1 clamped to 1")) << lines[0];
   fs::remove_all(input.dir);
+}
+
+// A detections file of every frame with a dataset whose selection leaves some out (MVOR days=1,
+// Panoptic's every=12): the frames of the dataset's id form that no selected frame uses were left
+// out on purpose, not unused input, also under --strict; a frame of another form is unused.
+TEST(UnusedInput, FramesTheSelectionLeavesOutAreNotUnusedInput) {
+  RPT_REQUIRE_SHARED_DATA("mvor/camma_mvor_2018.json");
+  const fs::path dir = test::TempDir("unused_selection");
+  const std::string root = test::SharedData("mvor").string();
+  const fs::path all = dir / "all.json";
+  ASSERT_EQ(test::RunRpt("convert --dataset mvor --root " + root + " --detections-out " + all.string()).exit_code, 0);
+  const std::string day1 = "eval --quiet --strict --dataset mvor --root " + root +
+                           " --param detections=none --param days=1 --out " + (dir / "out").string() + " --detections ";
+  const test::CommandResult selected = test::RunRpt(day1 + all.string());
+  EXPECT_EQ(selected.exit_code, 0) << selected.err;
+  EXPECT_FALSE(Contains(selected.err, "detection frames whose id is no frame of the input")) << selected.err;
+  nlohmann::json json = nlohmann::json::parse(test::ReadAll(all));
+  json["frames"].push_back(json["frames"][0]);
+  json["frames"].back()["id"] = "take_000001";
+  const fs::path foreign = dir / "foreign.json";
+  std::ofstream(foreign) << json.dump();
+  const test::CommandResult unused = test::RunRpt(day1 + foreign.string());
+  EXPECT_EQ(unused.exit_code, 2);
+  EXPECT_TRUE(Contains(unused.err, ": 1 detection frames whose id is no frame of the input, ignored (first 'take_000001')"))
+      << unused.err;
+  fs::remove_all(dir);
 }
 
 TEST(UnusedInput, StrictOnCheckAndSweep) {
