@@ -71,7 +71,8 @@ void RunEval(const EvalArgs& args) {
   std::unique_ptr<Progress> progress = ProgressOf(input, !args.quiet);
   options.progress = ReportTo(progress.get());
   engine::RunInfo info = engine::CollectRunInfo(0);
-  info.input_digests = engine::InputDigests(args.input);  // compared by `rpt report` before it re-loads the input
+  info.input_digests = engine::InputDigests(args.input);
+  info.input_settings = engine::ResolvedInputSettings(args.input);  // compared by `rpt report` before it re-loads the input
   engine::RunFolder folder(out_dir, info.run_id, input.size(), exports);
   // Streamed: each frame is checked and triangulated, written, then dropped.
   options.require_frames = true;

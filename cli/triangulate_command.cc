@@ -200,7 +200,8 @@ void RunTriangulate(const TriangulateArgs& args) {
   std::unique_ptr<Progress> progress = ProgressOf(input, !args.quiet);
   options.progress = ReportTo(progress.get());
   engine::RunInfo info = engine::CollectRunInfo(0);
-  info.input_digests = engine::InputDigests(args.input);  // compared by `rpt report` and `rpt render --run`
+  info.input_digests = engine::InputDigests(args.input);
+  info.input_settings = engine::ResolvedInputSettings(args.input);  // compared by `rpt report` and `rpt render --run`
   const std::string out_dir = !args.out.empty() ? args.out : DefaultOutDir(args.input, input);
   engine::CheckOutputOutsideInput(out_dir, args.input);
   engine::RunFolder folder(out_dir, info.run_id, input.size(), exports);

@@ -287,6 +287,26 @@ std::vector<Sequence> LoadInput(const InputSpec& spec, const InputNeeds& needs, 
   }
 }
 
+std::vector<std::pair<std::string, std::string>> ResolvedInputSettings(const InputSpec& spec) {
+  std::vector<std::pair<std::string, std::string>> settings;
+  if (spec.cameras.empty()) {
+    const DatasetRequest request = RequestOf(spec);
+    settings.emplace_back("reader", request.dataset);
+    for (const DatasetEntry& entry : DatasetRegistry()) {
+      if (entry.info.name != request.dataset) continue;
+      for (const DatasetParam& param : entry.info.params) {
+        const auto given = request.params.find(param.name);
+        settings.emplace_back("param." + param.name, given != request.params.end() ? given->second : param.default_value);
+      }
+    }
+  }
+  if (spec.simulate) {
+    settings.emplace_back("detector", SimulationOf(spec).detector);
+    settings.emplace_back("seed", std::to_string(spec.seed));
+  }
+  return settings;
+}
+
 std::string TooFewCamerasMessage(const std::vector<Camera>& cameras) {
   std::string names;
   for (const Camera& camera : cameras) names += (names.empty() ? "" : ", ") + QuoteName(camera.name);

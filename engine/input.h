@@ -126,6 +126,12 @@ SimulationOptions SimulationOf(const InputSpec& spec);
 // are accepted.
 void CheckStrict(bool strict, const InputWarnings& warnings);
 
+// What the input options resolve to, for run.json (a default that changes later must not change
+// what an old run folder says it ran on): the reader ("reader"), each of its parameters as given or
+// by default ("param.<name>"), and with --simulate the detector profile and seed ("detector",
+// "seed"); for --cameras FILE only the simulation, if any. Call after OpenInput checked the spec.
+std::vector<std::pair<std::string, std::string>> ResolvedInputSettings(const InputSpec& spec);
+
 // What is wrong with a calibration of fewer than 2 cameras, naming them, for an error that starts
 // with the file or sequence: "1 camera (cam0): rpt triangulates ...".
 std::string TooFewCamerasMessage(const std::vector<Camera>& cameras);

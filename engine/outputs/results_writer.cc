@@ -328,6 +328,9 @@ OrderedJson RunInfoJson(const RunInfo& info, const std::filesystem::path& writte
   j["compiler"] = info.compiler;
   j["build_type"] = info.build_type;
   j["input_warnings"] = info.input_warnings;
+  OrderedJson settings = OrderedJson::object();
+  for (const auto& [key, value] : info.input_settings) settings[key] = value;
+  j["input_settings"] = settings;
   OrderedJson digests = OrderedJson::object();
   for (const auto& [path, digest] : info.input_digests) digests[path] = digest;
   j["input_digests"] = digests;

@@ -26,6 +26,8 @@ struct RunInfo {
   std::vector<std::string> input_warnings;  // corrections the readers applied, one line per file and kind
   // {path, digest} of the input files and folders (engine/input_digests.h); "" = not digested.
   std::vector<std::pair<std::string, std::string>> input_digests;
+  // What the input options resolved to, defaults included (engine::ResolvedInputSettings).
+  std::vector<std::pair<std::string, std::string>> input_settings;
 };
 
 // The run's machine, build and time, and the command stored by SetCommand.

@@ -46,6 +46,13 @@ TEST(EvalCommand, SyntheticRunWritesEveryOutput) {
   const nlohmann::json run = ReadJson(out / "run.json");
   EXPECT_TRUE(run.contains("git_revision"));
   EXPECT_TRUE(run.contains("cpu"));
+  // What the input options resolved to: given, by default, and nothing else.
+  EXPECT_EQ(run["input_settings"]["reader"], "synthetic");
+  EXPECT_EQ(run["input_settings"]["param.frames"], "40");
+  EXPECT_EQ(run["input_settings"]["param.people"], "3");
+  EXPECT_EQ(run["input_settings"]["param.cameras"], "5");
+  EXPECT_EQ(run["input_settings"]["param.noise"], "realistic");
+  EXPECT_FALSE(run["input_settings"].contains("detector")) << "no --simulate";
   EXPECT_EQ(ReadJson(out / "summary.json")["f1"], summary["f1"]);
   EXPECT_NE(test::ReadAll(out / "per_joint.csv").find("wrist_left"), std::string::npos);
   fs::remove_all(out);
@@ -312,10 +319,13 @@ TEST(EvalCommand, SeedWithoutSimulateIsRefused) {
   const test::CommandResult r = test::RunRpt("eval --dataset synthetic --param frames=2 --seed 5 --quiet");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("--seed seeds the simulated detector: it needs --simulate"), std::string::npos) << r.err;
-  EXPECT_EQ(test::RunRpt("eval --dataset synthetic --param frames=2 --simulate --seed 5 --quiet --out " +
-                         (test::TempDir("seeded") / "out").string())
+  const fs::path out = test::TempDir("seeded") / "out";
+  EXPECT_EQ(test::RunRpt("eval --dataset synthetic --param frames=2 --simulate --seed 5 --quiet --out " + out.string())
                 .exit_code,
             0);
+  const nlohmann::json settings = ReadJson(out / "run.json")["input_settings"];
+  EXPECT_EQ(settings["detector"], "realistic") << "the default profile, recorded";
+  EXPECT_EQ(settings["seed"], "5");
 }
 
 // Whole-body groups say what each number is over: joints and matched persons, in summary.json and
