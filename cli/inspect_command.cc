@@ -74,7 +74,15 @@ void RunInspect(const InspectArgs& args) {
     seq["frame_shift"] = engine::ShiftCheckJson(check.shift);
     shift_lines.push_back(engine::ShiftLine(check.shift));
     seq["warnings"] = nlohmann::ordered_json::array();
-    for (const engine::CheckWarning& w : engine::DetectionWarnings(check)) {
+    // Without detections (none given, none of the reader's own) the checks that compare them with
+    // the ground truth would blame frame ids and joint names: one line says what is missing.
+    const std::vector<engine::CheckWarning> checks =
+        s.detection_joints.empty()
+            ? std::vector<engine::CheckWarning>{{"no_detections", s.name + ": no 2D detections (pass --detections FILE "
+                                                                           "or --simulate to compare them with the "
+                                                                           "ground truth): cameras and ground truth only"}}
+            : engine::DetectionWarnings(check);
+    for (const engine::CheckWarning& w : checks) {
       seq["warnings"].push_back({{"code", w.code}, {"message", w.message}});
       warnings.push_back(w.message);
     }

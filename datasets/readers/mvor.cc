@@ -49,8 +49,11 @@ std::vector<int> ParseDays(const std::string& text, const std::string& what) {
     days.push_back(item[0] - '0');
   }
   if (days.empty()) throw ConfigError(what + ": no day selected by " + QuoteName(text));
+  // A day given twice is a mistake in the list (as a camera or sequence given twice is): refused.
+  if (const std::string repeated = dataset_params::RepeatedNameProblem(SplitList(text)); !repeated.empty()) {
+    throw ConfigError(what + ": " + repeated);
+  }
   std::sort(days.begin(), days.end());
-  days.erase(std::unique(days.begin(), days.end()), days.end());
   return days;
 }
 

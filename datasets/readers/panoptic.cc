@@ -282,10 +282,19 @@ std::vector<std::unique_ptr<FrameSource>> OpenPanoptic(const DatasetRequest& req
         "panoptic: the frames are the ground-truth files (hdPose3d_stage1_coco19/body3DScene_*.json) and "
         "the reader has no 2D detections of its own: it cannot run without its ground truth");
   }
-  const PanopticParams params = ParseDatasetParams<PanopticParams>("panoptic", request);
+  PanopticParams params = ParseDatasetParams<PanopticParams>("panoptic", request);
   std::error_code ec;
   if (!std::filesystem::is_directory(request.root, ec)) {
     throw InputError("panoptic: root " + QuoteName(request.root.string()) + " is not a directory");
+  }
+  // A sequence is a folder name: the slash shell completion adds is not part of it (it made the
+  // calibration's path "<seq>/calibration_<seq>/.json"); one inside a name would name another folder.
+  for (std::string& name : params.sequences) {
+    while (name.size() > 1 && name.back() == '/') name.pop_back();
+    if (name.find('/') != std::string::npos) {
+      throw ConfigError(dataset_params::ParamKey("panoptic", "sequences") + ": " + QuoteName(name) +
+                        " is not a folder name directly under the root");
+    }
   }
   // All sequence folders are checked before any is read, so a typo fails fast.
   for (const std::string& name : params.sequences) {

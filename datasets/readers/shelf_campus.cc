@@ -135,7 +135,10 @@ std::vector<int> SelectActors(const std::string& text, size_t num_actors, const 
   }
   if (actors.empty()) throw ConfigError(what + ": no actors selected by " + QuoteName(text));
   std::sort(actors.begin(), actors.end());
-  actors.erase(std::unique(actors.begin(), actors.end()), actors.end());
+  // An actor given twice is a mistake in the list (as a camera or sequence given twice is): refused.
+  if (const auto twice = std::adjacent_find(actors.begin(), actors.end()); twice != actors.end()) {
+    throw ConfigError(what + ": actor " + std::to_string(*twice) + " is listed twice");
+  }
   return actors;
 }
 

@@ -254,7 +254,25 @@ TEST(InspectCommand, ReportsSmallDistancesForConsistentInput) {
   const nlohmann::json j = nlohmann::json::parse(r.out);
   ASSERT_EQ(j[0]["cameras"].size(), 5u);
   for (const auto& camera : j[0]["cameras"]) EXPECT_LT(camera["gt_to_detection_px_median"].get<double>(), 15.0);
+  EXPECT_TRUE(j[0]["warnings"].empty()) << j[0]["warnings"];
   EXPECT_EQ(test::RunRpt("datasets").exit_code, 0);
+}
+
+// Without detections inspect shows cameras and ground truth; it said the frame ids and joint names
+// of the (absent) detections were wrong.
+TEST(InspectCommand, WithoutDetectionsSaysSoAndNothingElse) {
+  const fs::path dir = test::TempDir("inspect_no_detections");
+  ASSERT_EQ(test::RunRpt("convert --dataset synthetic --param frames=3 --labels-out " + (dir / "l.json").string())
+                .exit_code,
+            0);
+  const test::CommandResult r = test::RunRpt("inspect --labels " + (dir / "l.json").string() + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json warnings = nlohmann::json::parse(r.out)[0]["warnings"];
+  ASSERT_EQ(warnings.size(), 1u) << warnings;
+  EXPECT_EQ(warnings[0]["code"], "no_detections");
+  EXPECT_NE(r.err.find("warning: synthetic: no 2D detections (pass --detections FILE or --simulate"), std::string::npos)
+      << r.err;
+  fs::remove_all(dir);
 }
 
 }  // namespace

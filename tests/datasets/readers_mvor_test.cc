@@ -277,6 +277,8 @@ TEST(MvorReader, DistortionFileAppliesTheNumbersAsK1K2K3P1P2) {
 TEST(MvorReader, BadParamsAndFilesAreNamed) {
   test::TempDir dir;
   EXPECT_THAT(test::ConfigErrorOf([&] { ReadDataset(Request(dir.path(), {{"days", "5"}})); }), HasSubstr("days"));
+  EXPECT_THAT(test::ConfigErrorOf([&] { ReadDataset(Request(dir.path(), {{"days", "2,1,2"}})); }),
+              HasSubstr("mvor.days: '2' is listed twice"));
   EXPECT_THAT(test::ConfigErrorOf([&] {
                 ReadDataset(Request(dir.path(), {{"detections", "alphapose"}}));
               }),

@@ -499,6 +499,12 @@ TEST(PanopticReader, BadParamsAreConfigErrors) {
             }),
             "panoptic.sequences: 'seqA' is listed twice");
   EXPECT_THAT(config_error({{"cameras", "00_00,00_00"}}), HasSubstr("panoptic.cameras: '00_00' is listed twice"));
+  // The slash shell completion adds is not part of the name (it made the calibration's path
+  // "seqA/calibration_seqA/.json"); a slash inside names another folder.
+  EXPECT_EQ(ReadDataset(Request(dir.path(), {{"sequences", "seqA/"}, {"cameras", "hd"}}))[0].name,
+            ReadDataset(Request(dir.path(), {{"sequences", "seqA"}, {"cameras", "hd"}}))[0].name);
+  EXPECT_THAT(config_error({{"sequences", "seqA/sub"}}),
+              HasSubstr("panoptic.sequences: 'seqA/sub' is not a folder name directly under the root"));
 }
 
 }  // namespace

@@ -418,6 +418,8 @@ TEST(ShelfReader, BadParamsAreConfigErrors) {
   };
   EXPECT_THAT(config_error({{"frames", "0"}, {"nose_proxy", "middle"}}),
               HasSubstr("shelf.nose_proxy: 'middle' is not one of center, top, bottom"));
+  // An actor given twice is refused like a camera given twice (it was merged silently).
+  EXPECT_THAT(config_error({{"frames", "0"}, {"actors", "1,0,1"}}), HasSubstr("shelf.actors: actor 1 is listed twice"));
   EXPECT_THAT(config_error({{"frames", "0"}, {"detections", "openpose"}}),
               HasSubstr("'openpose' is not one of none, voxelpose"));
   EXPECT_THAT(config_error({{"frames", "0"}, {"fps", "-1"}}), HasSubstr("fps: '-1' is not a number > 0"));
