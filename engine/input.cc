@@ -122,13 +122,15 @@ std::vector<std::string> OwnDetectionValues(const std::string& dataset) {
   return values;
 }
 
-std::string NoDetectionsMessage(const std::string& sequence, const std::string& dataset) {
-  std::string message =
-      "sequence " + QuoteName(sequence) + " has no 2D detections: pass --detections FILE or --simulate";
+std::string NoDetectionsMessage(const std::string& sequence, const std::string& dataset, bool python_names) {
+  std::string message = "sequence " + QuoteName(sequence) + " has no 2D detections: pass " +
+                        (python_names ? "detections_file=FILE or simulate=True" : "--detections FILE or --simulate");
   const std::vector<std::string> own = OwnDetectionValues(dataset);
   if (own.empty()) return message;
   message += ", or the dataset's own (";
-  for (size_t i = 0; i < own.size(); ++i) message += (i ? " or " : "") + std::string("--param detections=") + own[i];
+  for (size_t i = 0; i < own.size(); ++i) {
+    message += (i ? " or " : "") + (python_names ? "detections='" + own[i] + "'" : "--param detections=" + own[i]);
+  }
   return message + ")";
 }
 
@@ -257,7 +259,7 @@ Input OpenInput(const InputSpec& spec, const InputNeeds& needs) {
   }
   for (auto& source : sources) {
     if (needs.detections && source->header().detection_joints.empty()) {
-      throw InputError(NoDetectionsMessage(source->header().name, spec.dataset));
+      throw InputError(NoDetectionsMessage(source->header().name, spec.dataset, needs.python_names));
     }
     source = std::make_unique<CheckedSource>(std::move(source));
   }

@@ -51,6 +51,9 @@ struct InputSpec {
 // What a command needs of its input.
 struct InputNeeds {
   bool detections = true;  // a sequence without any 2D detection is an InputError explaining the options
+  // Messages name the Python module's arguments (detections_file=, simulate=True, detections=)
+  // instead of the command line's flags.
+  bool python_names = false;
 };
 
 // An opened input: one source per sequence. The run loop (engine/run.h) pulls them and calls

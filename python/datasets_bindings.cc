@@ -147,7 +147,7 @@ Dataset OpenSpec(engine::InputSpec spec, const InputArgs& args, const py::kwargs
   const std::string named = !spec.labels.empty() ? spec.labels : spec.root;
   try {
     py::gil_scoped_release release;
-    return Dataset(engine::OpenInput(spec));
+    return Dataset(engine::OpenInput(spec, {.python_names = true}));
   } catch (const ConfigError& e) {
     // The CLI's words name its flag ("--param dayz=1: ..."); here the argument was a keyword.
     const std::string what = e.what();

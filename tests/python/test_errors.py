@@ -227,6 +227,13 @@ def test_dataset_errors_are_the_clis(tmp_path):
     assert str(error.value).replace("datasets: keyword argument ", "--param ") in done.stderr
     with pytest.raises(rpt.ConfigError, match=r"synthetic.noise: 'loud' is not one of perfect, clean, realistic, hard, none"):
         rpt.synthetic.scene(noise="loud")
+    # Labels without detections: the arguments to give are the module's, not the CLI's flags.
+    labels = tmp_path / "labels.json"
+    run_cli("convert", "--dataset", "synthetic", "--param", "frames=2", "--labels-out", labels)
+    with pytest.raises(rpt.InputError, match=r"has no 2D detections: pass detections_file=FILE or simulate=True$"):
+        rpt.datasets.open_labels(labels)
+    done = run_cli("eval", "--labels", labels, check=False)
+    assert "has no 2D detections: pass --detections FILE or --simulate" in done.stderr
 
 
 def test_a_camera_given_twice_is_refused(rig):
