@@ -107,6 +107,9 @@ void PrintAtOnce(const std::string& line) {
   std::fflush(stderr);
 }
 
+// After Ctrl-C, how long the line in hand may wait for a reader that does not take the output.
+constexpr double kStopGraceS = 2.0;
+
 // --follow: the live input through the same run loop, the frame lines on stdout, the summary on
 // stderr. Returns the exit code: 0 at the end of the input, 128 + the signal after Ctrl-C.
 int RunFollow(const TriangulateArgs& args) {
@@ -150,7 +153,8 @@ int RunFollow(const TriangulateArgs& args) {
   options.upright_check = true;
   options.threads = 1;
   options.early_warning = PrintAtOnce;  // times going back or in ms: said now, counted at the end
-  engine::FrameLinesWriter lines(STDOUT_FILENO, "stdout", exports);
+  // A reader that stops taking the output cannot hold a Ctrl-C: 2 s more for the line in hand.
+  engine::FrameLinesWriter lines(STDOUT_FILENO, "stdout", exports, stop, kStopGraceS);
   engine::LiveLatency latency(&counts);
   engine::RunInfo info = engine::CollectRunInfo(1);
   std::optional<engine::RunFolder> folder;
@@ -179,6 +183,13 @@ int RunFollow(const TriangulateArgs& args) {
     std::fprintf(stderr,
                  "per frame (median): triangulation %.1f us, line in -> line out %.1f us (p90 %.1f us, max %.1f us)\n",
                  run.timing.frame_us_median, latency.median_us(), latency.p90_us(), latency.max_us());
+  }
+  if (lines.abandoned()) {
+    std::fprintf(stderr,
+                 "warning: stdout did not take the output for %.0f s after the stop: the last frame's line %s\n",
+                 kStopGraceS,
+                 lines.cut_bytes() > 0 ? ("is cut after " + std::to_string(lines.cut_bytes()) + " bytes").c_str()
+                                       : "was not written");
   }
   if (folder) std::fprintf(stderr, "results in %s\n", PrintableText(args.out, LineBreaks::kEscape).c_str());
   return signal_number != 0 ? 128 + signal_number : 0;

@@ -19,6 +19,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -86,10 +87,12 @@ std::string FrameLine(const Detections& detections, size_t f, bool with_time) {
 // `rpt <args>` with a pipe to its stdin and one from its stdout; stderr into a file.
 class Child {
  public:
-  Child(const std::string& args, const fs::path& err) {
+  // out_pipe_bytes > 0: the output pipe's capacity (F_SETPIPE_SZ; at least a page).
+  Child(const std::string& args, const fs::path& err, int out_pipe_bytes = 0) {
     int in[2], out[2];
     EXPECT_EQ(pipe(in), 0);
     EXPECT_EQ(pipe(out), 0);
+    if (out_pipe_bytes > 0) EXPECT_GT(fcntl(out[1], F_SETPIPE_SZ, out_pipe_bytes), 0);
     pid_ = fork();
     if (pid_ == 0) {
       dup2(in[0], STDIN_FILENO);
@@ -138,16 +141,39 @@ class Child {
     }
   }
   void Signal(int signal_number) { kill(pid_, signal_number); }
+  // Whether the process ended within `seconds` (then Wait() returns its code at once); else it is
+  // killed (SIGKILL) and false returned.
+  bool EndsWithin(double seconds) {
+    const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+    while (std::chrono::steady_clock::now() < until) {
+      if (waitpid(pid_, &status_, WNOHANG) == pid_) {
+        ended_ = true;
+        return true;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    kill(pid_, SIGKILL);
+    return false;
+  }
+  // Everything left in the output pipe, once the process has ended.
+  std::string RestOfOutput() {
+    std::string rest = buffer_;
+    buffer_.clear();
+    char chunk[65536];
+    for (ssize_t n; (n = read(out_, chunk, sizeof(chunk))) > 0;) rest.append(chunk, static_cast<size_t>(n));
+    return rest;
+  }
   // The exit code (-1 when killed by a signal).
   int Wait() {
-    int status = 0;
-    waitpid(pid_, &status, 0);
+    if (!ended_) waitpid(pid_, &status_, 0);
     pid_ = -1;
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return WIFEXITED(status_) ? WEXITSTATUS(status_) : -1;
   }
 
  private:
   pid_t pid_ = -1;
+  int status_ = 0;
+  bool ended_ = false;
   int in_ = -1, out_ = -1;
   std::string buffer_;
 };
@@ -450,6 +476,34 @@ TEST_F(Follow, CtrlCEndsCleanlyAfterTheFramesInHand) {
   const std::string err = test::ReadAll(dir_ / "err.txt");
   EXPECT_NE(err.find("stdin: 4 lines, 3 frames"), std::string::npos) << err;
   EXPECT_NE(err.find("stopped by SIGINT"), std::string::npos) << err;
+}
+
+// A reader that stops taking the output (its pipe full) cannot hold a stop: Ctrl-C ends the run
+// 2 s later (it waited in write() until the reader woke, for ever if it never did); every line the
+// reader gets is complete, and stderr says the last frame's line was not written.
+TEST_F(Follow, CtrlCEndsTheRunWhenTheReaderStopsTakingTheOutput) {
+  Child child("triangulate --follow - --cameras " + Cameras(), dir_ / "err.txt", 4096);
+  child.WriteLine(JointsLine(detections_));
+  for (int f = 0; f < 10; ++f) child.WriteLine(FrameLine(detections_, static_cast<size_t>(f), true));
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));  // it fills the 4 KB pipe and waits
+  child.Signal(SIGTERM);
+  const auto signalled = std::chrono::steady_clock::now();
+  ASSERT_TRUE(child.EndsWithin(30)) << "still running 30 s after SIGTERM";
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - signalled).count(), 10.0);
+  EXPECT_EQ(child.Wait(), 143);
+  const std::string out = child.RestOfOutput();
+  ASSERT_FALSE(out.empty());
+  EXPECT_EQ(out.back(), '\n');
+  std::istringstream lines(out);
+  int count = 0;
+  for (std::string line; std::getline(lines, line); ++count) EXPECT_NO_THROW((void)Json::parse(line)) << line;
+  EXPECT_LT(count, 11) << "the reader took no line: not all were written";
+  const std::string err = test::ReadAll(dir_ / "err.txt");
+  EXPECT_NE(err.find("warning: stdout did not take the output for 2 s after the stop: the last frame's line was not "
+                     "written"),
+            std::string::npos)
+      << err;
+  EXPECT_NE(err.find("stopped by SIGTERM"), std::string::npos) << err;
 }
 
 // Names from someone else (a file and a folder named with a terminal escape sequence) reach the
