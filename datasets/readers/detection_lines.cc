@@ -27,6 +27,56 @@ namespace {
 
 using Kind = io::JsonPull::Kind;
 
+bool JsonBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
+
+// `line` without the blanks JSON allows between tokens (those inside strings stay): how a writer
+// happened to space it does not change what it says.
+std::string WithoutJsonBlanks(std::string_view line) {
+  std::string out;
+  bool in_string = false, escaped = false;
+  for (const char c : line) {
+    if (in_string) {
+      if (escaped) {
+        escaped = false;
+      } else if (c == '\\') {
+        escaped = true;
+      } else if (c == '"') {
+        in_string = false;
+      }
+    } else if (c == '"') {
+      in_string = true;
+    } else if (JsonBlank(c)) {
+      continue;
+    }
+    out.push_back(c);
+  }
+  return out;
+}
+
+// Whether WithoutJsonBlanks(line) == `expected`, stopping at the first difference (a frame line
+// differs from the joints line at its first key): no allocation.
+bool EqualWithoutJsonBlanks(std::string_view line, std::string_view expected) {
+  size_t k = 0;
+  bool in_string = false, escaped = false;
+  for (const char c : line) {
+    if (in_string) {
+      if (escaped) {
+        escaped = false;
+      } else if (c == '\\') {
+        escaped = true;
+      } else if (c == '"') {
+        in_string = false;
+      }
+    } else if (c == '"') {
+      in_string = true;
+    } else if (JsonBlank(c)) {
+      continue;
+    }
+    if (k >= expected.size() || expected[k++] != c) return false;
+  }
+  return k == expected.size();
+}
+
 // Keys of the frame lines (or of their views) that are not read, counted per key like the generic
 // readers' (a misspelt "Time" would otherwise drop its value silently): the first kMaxShownKeys
 // keys by name, the others together. Allocates only for a key not seen before.
@@ -121,7 +171,7 @@ class DetectionLineSource final : public FrameSource {
         // The joints line again, as written the first time: the detector restarted (a supervisor's
         // loop). Its frame ids may start over: the window of recent ids starts anew; its times going
         // back end the tracks, as any step back does.
-        if (TrimBlanks(line) == joints_line_) {
+        if (EqualWithoutJsonBlanks(line, joints_line_)) {
           ++restarts_;
           num_recent_ = 0;
           continue;
@@ -165,7 +215,7 @@ class DetectionLineSource final : public FrameSource {
       throw InputError(where + ": no joints line: the stream must start with {\"joints\": [names]}");
     }
     if (result == io::LineReader::Result::kTooLong) throw InputError(where + ": the joints line is too long");
-    joints_line_.assign(TrimBlanks(line));
+    joints_line_ = WithoutJsonBlanks(line);
     try {
       json_.Reset(line);
       json_.BeginObject();
@@ -416,7 +466,7 @@ class DetectionLineSource final : public FrameSource {
   Poses2D scratch_;
   std::vector<bool> camera_seen_;
   std::array<std::uint64_t, kRecentIds> recent_ids_{};
-  std::string joints_line_;  // the first line, trimmed: seen again, the writer restarted
+  std::string joints_line_;  // the first line without JSON blanks: seen again, the writer restarted
   long restarts_ = 0;
   std::size_t num_recent_ = 0;
   long frames_without_time_ = 0;
