@@ -136,7 +136,8 @@ int RunFollow(const TriangulateArgs& args) {
                                              [](const std::string& error) {
                                                PrintAtOnce("a bad line skipped (the first of --skip-bad-lines): " +
                                                            error);
-                                             }},
+                                             },
+                                         .on_early_warning = PrintAtOnce},
                                         stop, &counts));
   } catch (const InputError&) {
     if (on_interrupt.signal_number() == 0) throw;

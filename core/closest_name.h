@@ -49,6 +49,20 @@ inline std::string DidYouMean(std::string_view name, const std::vector<std::stri
   return closest.empty() ? std::string() : " (did you mean '" + closest + "'?)";
 }
 
+// DidYouMean for a key of a JSON object: also the usual other names of a known key ("timestamp",
+// "ts", "t" for "time"; "frame_id", "frame" for "id"; "cameras" for "views"), which are no typos.
+inline std::string DidYouMeanKey(std::string_view key, const std::vector<std::string>& known) {
+  static const std::vector<std::pair<std::string_view, std::string_view>> kOtherNames = {
+      {"timestamp", "time"}, {"timestamp_s", "time"}, {"time_s", "time"}, {"ts", "time"}, {"t", "time"},
+      {"stamp", "time"},     {"frame_id", "id"},      {"frame", "id"},    {"cameras", "views"}};
+  for (const auto& [other, name] : kOtherNames) {
+    if (key == other && std::find(known.begin(), known.end(), name) != known.end()) {
+      return " (did you mean '" + std::string(name) + "'?)";
+    }
+  }
+  return DidYouMean(key, known);
+}
+
 // "unknown <noun> '<name>' (did you mean 'x'?) (<known>)": the one message for an unknown option
 // key, section or dataset parameter; `known` says what there is ("filter has: min_match_score").
 inline std::string UnknownNameProblem(std::string_view noun, std::string_view name,

@@ -60,6 +60,7 @@ Input OpenLiveInput(const InputSpec& spec, const LiveInputOptions& options, std:
   lines_options.max_persons_per_view = options.max_persons_per_view;
   lines_options.max_pairs_per_frame = options.max_pairs_per_frame;
   lines_options.on_first_bad_line = options.on_first_bad_line;
+  lines_options.on_early_warning = options.on_early_warning;
   return OpenLiveInput(std::move(calibration.cameras), std::move(lines), lines_options, spec.cameras, counts,
                        std::move(opened), spec.strict);
 }

@@ -38,6 +38,8 @@ struct LiveInputOptions {
   long long max_pairs_per_frame = std::numeric_limits<long long>::max();
   // With skip_bad_lines: the first bad line's error as soon as it is skipped; may be empty.
   std::function<void(const std::string& error)> on_first_bad_line;
+  // DetectionLinesOptions::on_early_warning; may be empty.
+  std::function<void(const std::string& warning)> on_early_warning;
 };
 
 // Opens the stream and reads its joints line (waiting for it), on the calibration spec.cameras

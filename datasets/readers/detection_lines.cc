@@ -87,27 +87,31 @@ class KeyCounts {
 
   explicit KeyCounts(std::vector<std::string> known) : known_(std::move(known)) {}
 
-  void Count(std::string_view key) {
+  // Returns true for the first unknown key (said as it happens by the live input).
+  bool Count(std::string_view key) {
     for (auto& [name, count] : counts_) {
       if (name == key) {
         ++count;
-        return;
+        return false;
       }
     }
+    const bool first = counts_.empty() && others_ == 0;
     if (counts_.size() < kMaxShownKeys) {
       counts_.emplace_back(std::string(key), 1);
     } else {
       ++others_;
     }
+    return first;
+  }
+
+  // "<objects> with the unknown key 'k' (did you mean 'x'?), not read"
+  std::string What(std::string_view key, const std::string& objects) const {
+    return objects + " with the unknown key " + QuoteName(Utf8Excerpt(key, kMaxKeyBytes)) + DidYouMeanKey(key, known_) +
+           ", not read";
   }
 
   void Report(const std::string& source, const std::string& objects, InputWarnings* warnings) const {
-    for (const auto& [name, count] : counts_) {
-      warnings->AddUnused(source,
-                          objects + " with the unknown key " + QuoteName(Utf8Excerpt(name, kMaxKeyBytes)) +
-                              DidYouMean(name, known_) + ", not read",
-                          count);
-    }
+    for (const auto& [name, count] : counts_) warnings->AddUnused(source, What(name, objects), count);
     warnings->AddUnused(source, "other unknown keys in " + objects + " (not read)", others_);
   }
 
@@ -134,6 +138,7 @@ class DetectionLineSource final : public FrameSource {
         calibration_file_(calibration_file.string()),
         skip_bad_lines_(options.skip_bad_lines),
         on_first_bad_line_(options.on_first_bad_line),
+        on_early_warning_(options.on_early_warning),
         max_persons_per_view_(options.max_persons_per_view),
         max_pairs_per_frame_(options.max_pairs_per_frame),
         counts_(counts != nullptr ? counts : &own_counts_),
@@ -287,7 +292,10 @@ class DetectionLineSource final : public FrameSource {
         Fail("/joints", "a joints line after the first line that is not the first line again (a restarted writer "
                         "repeats it as it was): the joints are given once, on the first line");
       } else {
-        frame_keys_.Count(key);
+        if (frame_keys_.Count(key) && on_early_warning_) {
+          on_early_warning_(source_ + ":" + std::to_string(lines_->line_number()) + ": " +
+                            frame_keys_.What(key, "frame lines"));
+        }
         json_.Skip();
       }
     }
@@ -303,7 +311,12 @@ class DetectionLineSource final : public FrameSource {
     }
     CheckRepeatedId(frame->id);
     if (!has_time && header_.fps > 0) time_s = static_cast<double>(counts_->frames) / header_.fps;
-    if (std::isnan(time_s)) ++frames_without_time_;
+    if (std::isnan(time_s) && frames_without_time_++ == 0 && header_.fps <= 0 && on_early_warning_) {
+      on_early_warning_(source_ + ":" + std::to_string(lines_->line_number()) +
+                        ": a frame without a time, and no --fps: its time is unknown, so nothing is carried from "
+                        "the frame before (no tracking, no smoothing); give each line a \"time\" (seconds) or "
+                        "--fps");
+    }
     frame->timestamp_s = time_s;
   }
 
@@ -453,6 +466,7 @@ class DetectionLineSource final : public FrameSource {
   std::string calibration_file_;
   bool skip_bad_lines_;
   std::function<void(const std::string&)> on_first_bad_line_;
+  std::function<void(const std::string&)> on_early_warning_;
   int max_persons_per_view_;
   long long max_pairs_per_frame_;
   DetectionLinesCounts own_counts_;

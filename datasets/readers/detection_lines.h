@@ -50,6 +50,10 @@ struct DetectionLinesOptions {
   // With skip_bad_lines: called with the first bad line's error as soon as it is skipped (a live
   // stream's end, where the count is printed, may be hours away); may be empty.
   std::function<void(const std::string& error)> on_first_bad_line;
+  // Called with a warning as soon as the stream shows it, for what is otherwise counted only at its
+  // end (hours away): the first frame line with an unknown key (a "timestamp" instead of "time"),
+  // the first frame without a time when there is no fps (no tracking); may be empty.
+  std::function<void(const std::string& warning)> on_early_warning;
 };
 
 // What the stream held, kept up to date by the source (read it once the run is over).

@@ -75,7 +75,7 @@ class UnknownKeys {
   // `objects`: what holds the keys, plural ("labels", "frames of the detections").
   void Report(const std::string& source, const std::string& objects, InputWarnings* warnings) const {
     for (const std::string& key : order_) {
-      warnings->AddUnused(source, objects + " with the unknown key " + QuoteName(key) + DidYouMean(key, known_) + ", not read",
+      warnings->AddUnused(source, objects + " with the unknown key " + QuoteName(key) + DidYouMeanKey(key, known_) + ", not read",
                           counts_.at(key));
     }
     warnings->AddUnused(source, "other unknown keys in " + objects + " (not read)", others_);

@@ -393,6 +393,32 @@ TEST_F(Follow, WarningsAreSaidAsTheyHappen) {
   EXPECT_NE(all.find("warning: stdin: 1 bad lines skipped"), std::string::npos) << all;
 }
 
+// A misnamed time key turned tracking off for the whole stream, said only at its end: the unknown
+// key (with the name meant) and the frame without a time are said at the first frame.
+TEST_F(Follow, AnUnknownKeyAndAFrameWithoutTimeAreSaidAtOnce) {
+  Child child("triangulate --follow - --cameras " + Cameras(), dir_ / "err.txt");
+  child.WriteLine(JointsLine(detections_));
+  for (int f = 0; f < 3; ++f) {
+    Json line = Json::parse(FrameLine(detections_, static_cast<size_t>(f), true));
+    line["timestamp"] = line["time"];
+    line.erase("time");
+    child.WriteLine(line.dump());
+    ASSERT_NE(child.ReadLine(), "<timeout>") << "frame " << f;
+  }
+  const std::string early = test::ReadAll(dir_ / "err.txt");  // the input is still open
+  EXPECT_NE(early.find("warning: stdin:2: frame lines with the unknown key 'timestamp' (did you mean 'time'?), not "
+                       "read (said as it happens; counted at the end)"),
+            std::string::npos)
+      << early;
+  EXPECT_NE(early.find("warning: stdin:2: a frame without a time, and no --fps"), std::string::npos) << early;
+  child.CloseInput();
+  EXPECT_EQ(child.Wait(), 0);
+  const std::string all = test::ReadAll(dir_ / "err.txt");
+  EXPECT_NE(all.find("warning: stdin: 3 frame lines with the unknown key 'timestamp' (did you mean 'time'?)"),
+            std::string::npos)
+      << all;
+}
+
 // As in a detections file (Triangulate.JointsAtPixelZeroAreMissing): a joint at pixel (0, 0) with
 // a score is missing, counted at the end; the output equals that of the lines with score 0 there.
 TEST_F(Follow, JointsAtPixelZeroAreMissing) {
