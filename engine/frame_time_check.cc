@@ -51,6 +51,7 @@ FrameTimeCheck::Unit FrameTimeCheck::LikelyUnit(double fps) const {
 void FrameTimeCheck::AddWarnings(const std::string& source, double fps, InputWarnings* warnings) const {
   AddStepBackWarning(source, warnings);
   AddUnitWarning(source, fps, warnings);
+  AddPauseWarning(source, fps, warnings);
 }
 
 void FrameTimeCheck::AddEarlyWarnings(const std::string& source, double fps, InputWarnings* warnings) {
@@ -67,6 +68,14 @@ void FrameTimeCheck::AddEarlyWarnings(const std::string& source, double fps, Inp
 void FrameTimeCheck::AddStepBackWarning(const std::string& source, InputWarnings* warnings) const {
   warnings->Add(source, "frames whose time is not after the previous frame's (tracks end there, and start anew)",
                 "largest step back in s", largest_step_back_s_, times_not_after_);
+}
+
+void FrameTimeCheck::AddPauseWarning(const std::string& source, double fps, InputWarnings* warnings) const {
+  if (steps_beyond_gap_ == 0 || 2 * steps_beyond_gap_ > steps_ || LikelyUnit(fps) != Unit::kSeconds) return;
+  warnings->Add(source,
+                "pauses of more than track.max_gap_s (" + FormatNumber(max_gap_s_) +
+                    " s) between frames (every track ended there: the persons after a pause got new track ids)",
+                "longest in s", largest_step_s_, steps_beyond_gap_);
 }
 
 void FrameTimeCheck::AddUnitWarning(const std::string& source, double fps, InputWarnings* warnings) const {

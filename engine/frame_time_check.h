@@ -31,12 +31,15 @@ class FrameTimeCheck {
   enum class Unit { kSeconds, kMilliseconds, kMicroseconds, kNanoseconds };
   Unit LikelyUnit(double fps) const;
 
-  // The sequence's warnings under `source`: frames whose time is not after the previous one, and
-  // times in another unit (LikelyUnit); none when neither happened.
+  // The sequence's warnings under `source`: frames whose time is not after the previous one, times
+  // in another unit (LikelyUnit), and pauses: a minority of steps beyond max_gap_s in seconds (a
+  // stalled detector or camera; every track ends there, so the persons after it get new ids).
+  // When most steps are beyond it the frames are images sampled seconds apart (MVOR's): not a pause.
   void AddWarnings(const std::string& source, double fps, InputWarnings* warnings) const;
-  // Each of the two alone.
+  // Each alone.
   void AddStepBackWarning(const std::string& source, InputWarnings* warnings) const;
   void AddUnitWarning(const std::string& source, double fps, InputWarnings* warnings) const;
+  void AddPauseWarning(const std::string& source, double fps, InputWarnings* warnings) const;
 
   // Warnings as they happen, for a run whose end may be hours away (a live stream, Python's
   // process()): a time not after the last at once, the unit when the 10th, 100th and 1000th step

@@ -48,5 +48,31 @@ TEST(FrameTimeCheck, TheWarningNamesTheUnit) {
   EXPECT_TRUE(none.items().empty());
 }
 
+// A stream at 25 frames/s that pauses twice (3 s, then 1.5 s): every track ended at each pause,
+// said and counted (the track ids changed with no word); images sampled seconds apart (most steps
+// beyond the gap) are no pause, and a pause of exactly max_gap_s ends nothing.
+TEST(FrameTimeCheck, PausesLongerThanTheGapAreCounted) {
+  FrameTimeCheck paused(1.0);
+  double t = 0;
+  for (int f = 0; f < 100; ++f) {
+    t += f == 40 ? 3.0 : f == 70 ? 1.5 : 0.04;
+    paused.Add(t);
+  }
+  InputWarnings warnings;
+  paused.AddWarnings("stdin", 0, &warnings);
+  ASSERT_EQ(warnings.items().size(), 1u);
+  EXPECT_EQ(warnings.items()[0].Line(),
+            "stdin: 2 pauses of more than track.max_gap_s (1.0 s) between frames (every track ended there: the persons "
+            "after a pause got new track ids) (longest in s = 3)");
+  InputWarnings sampled;
+  Steps(0, 75, 20).AddWarnings("mvor", 0, &sampled);
+  EXPECT_TRUE(sampled.items().empty()) << sampled.items()[0].Line();
+  FrameTimeCheck exact(1.0);
+  for (const double time : {0.0, 0.04, 1.04, 1.08}) exact.Add(time);
+  InputWarnings at_gap;
+  exact.AddWarnings("stdin", 0, &at_gap);
+  EXPECT_TRUE(at_gap.items().empty()) << at_gap.items()[0].Line();
+}
+
 }  // namespace
 }  // namespace rpt::engine
