@@ -10,7 +10,7 @@ void AddExportOptions(CLI::App* command, ExportArgs* args) {
                       "files of 3D persons, comma-separated: json (predictions.json), csv (predictions.csv), trc "
                       "(trc/, one file per track for OpenSim), npz (predictions.npz, numpy arrays frames x persons x "
                       "joints x 4), h5 (predictions.h5, the same arrays in HDF5) (default json; docs/own_data.md)");
-  command->add_flag("--no-predictions", args->no_predictions, "write no 3D persons at all (long runs)");
+  command->add_flag("--no-predictions", args->no_predictions, "write no 3D persons to files (no predictions.json, no exports; long runs); --follow still writes its lines to stdout");
   command->add_flag("--no-filled-joints", args->no_filled_joints,
                     "write joints no view saw, placed from a neighbour (provenance 'filled'), as missing");
   command->add_option("--trc-axes", args->trc_axes, "world axes of the TRC files: z-up (as is) or y-up (OpenSim)")

@@ -46,6 +46,17 @@ void AppendUtf8(std::string* out, unsigned code_point) {
 // What a character is, for "expected X, got Y".
 std::string Describe(std::string_view text, std::size_t pos) {
   if (pos >= text.size()) return "the end of the line";
+  const std::string_view rest = text.substr(pos);
+  // What writers put where JSON has no value: Python's json.dumps writes NaN and Infinity; some
+  // editors and Windows tools start a file with a byte-order mark.
+  for (const std::string_view word : {"NaN", "Infinity", "-Infinity"}) {
+    if (rest.starts_with(word)) {
+      return "'" + std::string(word) +
+             "', which is not JSON (a missing joint is [null, null, 0] or has score 0; Python: "
+             "json.dumps(..., allow_nan=False) finds them)";
+    }
+  }
+  if (rest.starts_with("\xEF\xBB\xBF")) return "a UTF-8 byte-order mark (write the text without it)";
   const unsigned char c = static_cast<unsigned char>(text[pos]);
   if (c >= 0x20 && c < 0x7F) return std::string("'") + static_cast<char>(c) + "'";
   char hex[8];

@@ -183,6 +183,18 @@ TEST(JsonPull, ErrorsNameTheColumn) {
   EXPECT_EQ(id.IntegerText(), "7");
   EXPECT_EQ(id.IntegerText(), "") << "12.5 is no integer and stays unread";
   EXPECT_EQ(id.Number(), 12.5);
+  // What writers put where JSON has no value is named with what to write instead.
+  io::JsonPull nan("[1, NaN]");
+  nan.BeginArray();
+  ASSERT_TRUE(nan.NextElement());
+  EXPECT_EQ(nan.Number(), 1);
+  ASSERT_TRUE(nan.NextElement());
+  EXPECT_EQ(test::ErrorMessage([&] { nan.Number(); }),
+            "column 5: expected a number, got 'NaN', which is not JSON (a missing joint is [null, null, 0] or has "
+            "score 0; Python: json.dumps(..., allow_nan=False) finds them)");
+  io::JsonPull bom("\xEF\xBB\xBF{}");
+  EXPECT_EQ(test::ErrorMessage([&] { bom.BeginObject(); }),
+            "column 1: expected an object '{', got a UTF-8 byte-order mark (write the text without it)");
 }
 
 // Lines written to a pipe by a thread, read by a LineReader.
