@@ -20,6 +20,11 @@ enum class LineBreaks { kKeep, kEscape };
 
 std::string PrintableText(std::string_view text, LineBreaks line_breaks = LineBreaks::kKeep);
 
+// Whether text[i] starts a bidirectional override or isolate (U+202A-U+202E, U+2066-U+2069; three
+// bytes in UTF-8), which PrintableText escapes: shown raw, a name holding one reverses the text
+// after it ("16.6 px" reads "xp 6.61").
+bool IsBidiControlAt(std::string_view text, std::size_t i);
+
 // A name from the input (a frame id, a camera, a joint, a key, a path) for a message or a line:
 // in single quotes, PrintableText with line breaks escaped, so a crafted name can neither split
 // the line nor act on the terminal.

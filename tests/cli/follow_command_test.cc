@@ -92,7 +92,9 @@ class Child {
     int in[2], out[2];
     EXPECT_EQ(pipe(in), 0);
     EXPECT_EQ(pipe(out), 0);
-    if (out_pipe_bytes > 0) EXPECT_GT(fcntl(out[1], F_SETPIPE_SZ, out_pipe_bytes), 0);
+    if (out_pipe_bytes > 0) {
+      EXPECT_GT(fcntl(out[1], F_SETPIPE_SZ, out_pipe_bytes), 0);
+    }
     pid_ = fork();
     if (pid_ == 0) {
       dup2(in[0], STDIN_FILENO);
@@ -528,7 +530,9 @@ TEST_F(Follow, CtrlCEndsTheRunWhenTheReaderStopsTakingTheOutput) {
   EXPECT_EQ(out.back(), '\n');
   std::istringstream lines(out);
   int count = 0;
-  for (std::string line; std::getline(lines, line); ++count) EXPECT_NO_THROW((void)Json::parse(line)) << line;
+  for (std::string line; std::getline(lines, line); ++count) {
+    EXPECT_TRUE(Json::accept(line)) << line;
+  }
   EXPECT_LT(count, 11) << "the reader took no line: not all were written";
   const std::string err = test::ReadAll(dir_ / "err.txt");
   EXPECT_NE(err.find("warning: stdout did not take the output for 2 s after the stop: the last frame's line was not "

@@ -274,7 +274,7 @@ TEST(CalibrationOpenCV, CamerasTheLayoutCannotHoldAreRefused) {
                   [&] { WriteCalibration(dir.path() / "x.yml", rig, {.format = CalibrationWriteFormat::kEasyMocap}); }),
               HasSubstr("give intri.yml"));
   // A control character in a name: OpenCV's reader cut "cam\x01x" to "cam"; refused, nothing written.
-  for (const std::string name : {std::string("cam\x01x"), std::string("cam\tb")}) {
+  for (const std::string& name : {std::string("cam\x01x"), std::string("cam\tb")}) {
     for (const std::string file : {"one.yml", "one.xml"}) {
       Camera named = test::MakeRig(false)[0];
       named.name = name;

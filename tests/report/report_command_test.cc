@@ -62,6 +62,25 @@ TEST(ReportCommand, SelfContainedPageWithSampledFrames) {
 // per_joint.csv as the eval writer writes it (CsvField) with hostile joint names: a comma, a quote,
 // a formula, a line break; `rpt report` reads it back with the same rules (issue 19: a comma made
 // the report refuse its own eval's file).
+// A right-to-left override in a name (here a PCP part's and a warning's) is shown as the text
+// "\xe2\x80\xae", as every other output writes it: raw, it turned the rest of a camera's caption
+// around ("reprojection error 16.6 px" read "xp 6.61 rorre noitcejorper").
+TEST(ReportCommand, BidiOverridesInNamesAreShownAsText) {
+  const fs::path dir = TempDir("report_bidi");
+  ASSERT_TRUE(EvalAndReport(kSyntheticRun, dir, "--max-frames 2"));
+  Json summary = Json::parse(ReadAll(dir / "summary.json"));
+  summary["pcp_parts"] = {{"cam1\xe2\x80\xae part", 50.0}, {"isolate \xe2\x81\xa6x\xe2\x81\xa9", 40.0}};
+  std::ofstream(dir / "summary.json") << summary.dump();
+  ASSERT_EQ(RunRpt("report " + dir.string()).exit_code, 0);
+  const std::string html = ReadAll(dir / "report.html");
+  for (const std::string control : {"\xe2\x80\xae", "\xe2\x81\xa6", "\xe2\x81\xa9"}) {
+    EXPECT_EQ(html.find(control), std::string::npos) << "a raw bidirectional control in the page";
+  }
+  const Json data = ReportData(html);
+  EXPECT_TRUE(data.dump().find(R"(cam1\\xe2\\x80\\xae part)") != std::string::npos) << data.dump().substr(0, 3000);
+  EXPECT_TRUE(data.dump().find(R"(isolate \\xe2\\x81\\xa6x\\xe2\\x81\\xa9)") != std::string::npos);
+}
+
 TEST(ReportCommand, ReadsBackPerJointCsvWithCommasInJointNames) {
   const fs::path dir = TempDir("report_per_joint");
   ASSERT_EQ(
