@@ -57,6 +57,16 @@ std::string ScriptJson(std::string json_text) {
                (json_text[i + 2] == '\xa8' || json_text[i + 2] == '\xa9')) {
       out += json_text[i + 2] == '\xa8' ? "\\u2028" : "\\u2029";
       i += 2;
+    } else if (IsBidiControlAt(json_text, i)) {
+      // Shown as the text "\xe2\x80\xae" (a JSON string's "\\xe2..."), as PrintableText writes it:
+      // raw, a name holding one reversed the numbers after it in a caption ("16.6 px": "xp 6.61").
+      for (int k = 0; k < 3; ++k, ++i) {
+        const auto byte = static_cast<unsigned char>(json_text[i]);
+        out += "\\\\x";
+        out += "0123456789abcdef"[byte >> 4];
+        out += "0123456789abcdef"[byte & 0xf];
+      }
+      --i;
     } else {
       out += c;
     }

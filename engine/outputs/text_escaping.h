@@ -17,8 +17,10 @@ namespace rpt::engine {
 std::string HtmlText(std::string_view text);
 
 // JSON text placed inside a <script> element: every '<', '>' and '&' as \u003c, \u003e, \u0026 (so
-// neither "</script" nor "<!--" can end or change the element), U+2028 and U+2029 as \u2028, \u2029.
-// The JSON value is unchanged: these characters only occur inside its strings.
+// neither "</script" nor "<!--" can end or change the element), U+2028 and U+2029 as \u2028, \u2029
+// (the JSON value is unchanged: these characters only occur inside its strings); bidirectional
+// overrides and isolates become the text "\xe2\x80\xae" in their string (the page shows the names
+// next to numbers, as the terminal does).
 std::string ScriptJson(std::string json_text);
 
 // A CSV field (RFC 4180): PrintableText (line breaks escaped, so a field is always one line), then a

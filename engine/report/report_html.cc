@@ -7,7 +7,6 @@
 #include <string_view>
 
 #include "core/errors.h"
-#include "core/printable_text.h"
 #include "engine/outputs/text_escaping.h"
 #include "report_assets.h"
 
@@ -42,32 +41,6 @@ void ReplaceOnce(std::string* text, std::string_view marker, const std::string& 
   text->replace(at, marker.size(), with);
 }
 
-// The JSON text `json` with each bidirectional override or isolate in its strings (outside strings
-// JSON has only ASCII) written as the text "\xe2\x80\xae", as PrintableText writes it for the
-// other outputs: the page shows names from the input (cameras, scenes, frame ids, warnings) next
-// to numbers, and an override in one turned the rest of its caption around ("16.6 px" read
-// "xp 6.61").
-std::string WithBidiControlsVisible(std::string json) {
-  static const char* const kHex = "0123456789abcdef";
-  // Every control starts with the byte 0xe2: most pages have none, and are returned as they are.
-  if (json.find('\xe2') == std::string::npos) return json;
-  std::string out;
-  out.reserve(json.size() + 64);
-  for (size_t i = 0; i < json.size();) {
-    if (!IsBidiControlAt(json, i)) {
-      out.push_back(json[i++]);
-      continue;
-    }
-    for (size_t k = 0; k < 3; ++k, ++i) {  // "\\xe2" in the JSON text is the text "\xe2"
-      const auto c = static_cast<unsigned char>(json[i]);
-      out += "\\\\x";
-      out += kHex[c >> 4];
-      out += kHex[c & 0xf];
-    }
-  }
-  return out;
-}
-
 }  // namespace
 
 std::filesystem::path JavascriptDir() {
@@ -93,8 +66,7 @@ std::string ReportHtml(const nlohmann::ordered_json& data) {
   // Names from the input (cameras, scenes, frame ids, joints, paths) are in there: ScriptJson keeps
   // "<!--<script>" or "</script" in one of them from ending or changing the element.
   ReplaceOnce(&page, "/*RPT_DATA*/",
-              ScriptJson(WithBidiControlsVisible(
-                  data.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace))));
+              ScriptJson(data.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace)));
   return page;
 }
 
