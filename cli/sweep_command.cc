@@ -401,28 +401,8 @@ OrderedJson CheckedShardRow(const nlohmann::json& shard, const std::string& poin
   if (io::JsonFind(shard, pointer + "/measured_differently")) {
     io::JsonBool(shard, pointer + "/measured_differently", source);
   }
-  const nlohmann::json& summary = ObjectAt(shard, pointer + "/summary", source, "an object of metrics");
-  for (const auto& [key, value] : summary.items()) {
-    // The summary column of the key and its unit ("%" bounds it to [0, 100]); legacy_pcp* are PCP.
-    const auto& columns = engine::SummaryColumns();
-    const auto found = std::find_if(columns.begin(), columns.end(),
-                                    [&key = key](const engine::SummaryColumn& c) { return c.key == key; });
-    const bool legacy = key.rfind("legacy_pcp", 0) == 0;
-    if (!legacy && found == columns.end()) continue;  // not a column: kept as written
-    if (!value.is_number() && !value.is_null()) {
-      FailAt(source, io::JsonPointerJoin(pointer + "/summary", key),
-             std::string("expected a number or null, got ") + value.type_name());
-    }
-    // Numbers no run writes: a percentage outside [0, 100], a negative count or measure, infinity.
-    if (value.is_number()) {
-      const double number = value.get<double>();
-      const bool percent = legacy || found->unit == "%";
-      if (!std::isfinite(number) || number < 0 || (percent && number > 100)) {
-        FailAt(source, io::JsonPointerJoin(pointer + "/summary", key),
-               FormatNumber(number) + (percent ? " is not a percentage in [0, 100]" : " is not a count or measure >= 0"));
-      }
-    }
-  }
+  engine::CheckSummaryValues(ObjectAt(shard, pointer + "/summary", source, "an object of metrics"), source,
+                             pointer + "/summary");
   return OrderedJson::parse(io::JsonAt(shard, pointer, source).dump());
 }
 

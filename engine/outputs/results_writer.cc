@@ -10,6 +10,8 @@
 #include "core/errors.h"
 #include "core/printable_text.h"
 #include "core/text.h"
+#include "core/option_codec.h"
+#include "datasets/io/json_file.h"
 #include "datasets/io/json_output.h"
 #include "datasets/io/staged_output.h"
 #include "datasets/io/text_file.h"
@@ -91,6 +93,31 @@ const std::vector<SummaryColumn>& SummaryColumns() {
       {"ap150", "%", "AP@150"},
   };
   return columns;
+}
+
+void CheckSummaryValues(const nlohmann::json& summary, const std::string& source, const std::string& pointer) {
+  if (!summary.is_object()) throw InputError(source + ": " + pointer + ": expected an object of metrics");
+  for (const auto& [key, value] : summary.items()) {
+    // The summary column of the key and its unit ("%" bounds it to [0, 100]); legacy_pcp* are PCP.
+    const auto& columns = SummaryColumns();
+    const auto found =
+        std::find_if(columns.begin(), columns.end(), [&key = key](const SummaryColumn& c) { return c.key == key; });
+    const bool legacy = key.rfind("legacy_pcp", 0) == 0;
+    if (!legacy && found == columns.end()) continue;  // not a column: kept as written
+    const std::string where = source + ": " + io::JsonPointerJoin(pointer, key) + ": ";
+    if (!value.is_number() && !value.is_null()) {
+      throw InputError(where + "expected a number or null, got " + value.type_name());
+    }
+    // Numbers no run writes: a percentage outside [0, 100], a negative count or measure, infinity.
+    if (value.is_number()) {
+      const double number = value.get<double>();
+      const bool percent = legacy || found->unit == "%";
+      if (!std::isfinite(number) || number < 0 || (percent && number > 100)) {
+        throw InputError(where + FormatNumber(number) +
+                         (percent ? " is not a percentage in [0, 100]" : " is not a count or measure >= 0"));
+      }
+    }
+  }
 }
 
 namespace {

@@ -32,6 +32,12 @@ struct SummaryColumn {
 };
 const std::vector<SummaryColumn>& SummaryColumns();
 
+// Throws InputError "<source>: <pointer>/<key>: ..." for a summary value no run writes: a
+// SummaryColumns() key (or legacy_pcp*) that is neither a number nor null, a percentage outside
+// [0, 100], a count or measure below 0 or not finite. Other keys are not looked at. For summaries
+// from someone else: rpt merge's shard rows, rpt report's summary.json.
+void CheckSummaryValues(const nlohmann::json& summary, const std::string& source, const std::string& pointer);
+
 // The summary of a run as one JSON object with SummaryColumns() keys (NaN -> null), plus
 // "wholebody_mpjpe_mm" and "legacy_pcp" (the average over the actors) with "legacy_pcp_actor1",
 // "legacy_pcp_actor2", ... (one per averaged actor) when available, "step_time_us_median",

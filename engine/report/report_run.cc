@@ -10,6 +10,7 @@
 
 #include "core/errors.h"
 #include "core/option_codec.h"
+#include "engine/outputs/results_writer.h"
 #include "engine/outputs/text_escaping.h"
 #include "datasets/io/json_file.h"
 #include "core/printable_text.h"
@@ -184,6 +185,9 @@ RecordedRun ReadRecordedRun(const std::filesystem::path& dir) {
   RecordedRun run;
   run.dir = dir;
   run.summary = LoadOrdered(dir / "summary.json");
+  // A summary from someone else: its numbers go into the page as they are, so ones no run writes
+  // (a string, a percentage above 100, a negative count) are refused as rpt merge refuses them.
+  CheckSummaryValues(nlohmann::json(run.summary), (dir / "summary.json").string(), "");
   run.config = LoadOrdered(dir / "config.json");
   run.run_info = LoadOrdered(dir / "run.json");
   // A run without ground truth (rpt triangulate, summary "evaluated": false) has no per-joint errors.

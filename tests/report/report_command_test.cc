@@ -9,6 +9,7 @@
 #include <fstream>
 #include <regex>
 #include <sstream>
+#include <tuple>
 
 #include "core/printable_text.h"
 #include "engine/outputs/text_escaping.h"
@@ -256,6 +257,23 @@ TEST(ReportCommand, BadInputExitsTwoNamingTheFile) {
   r = RunRpt("report " + dir.string());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("per_joint.csv:2: 'x' is not a number"), std::string::npos) << r.err;
+
+  // A summary whose numbers no run writes (edited by someone): refused as rpt merge refuses them,
+  // not shown as "PCP NaN" or "-5 matches" beside plots that say otherwise.
+  ASSERT_TRUE(EvalAndReport("--dataset synthetic --param frames=3", dir));
+  const std::string good_summary = ReadAll(dir / "summary.json");
+  for (const auto& [key, value, expected] : std::vector<std::tuple<std::string, nlohmann::json, std::string>>{
+           {"pcp", "99.9", "/pcp: expected a number or null, got string"},
+           {"matches", -5, "/matches: -5.0 is not a count or measure >= 0"},
+           {"recall500", 140.0, "/recall500: 140.0 is not a percentage in [0, 100]"}}) {
+    nlohmann::json summary = nlohmann::json::parse(good_summary);
+    summary[key] = value;
+    std::ofstream(dir / "summary.json") << summary.dump();
+    r = RunRpt("report " + dir.string());
+    EXPECT_EQ(r.exit_code, 2) << key;
+    EXPECT_NE(r.err.find("summary.json: " + expected), std::string::npos) << r.err;
+  }
+  std::ofstream(dir / "summary.json") << good_summary;
 
   // The predictions of another run copied in: the page would draw them beside this run's summary.
   const fs::path other = TempDir("report_other_run");
