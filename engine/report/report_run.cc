@@ -10,6 +10,7 @@
 
 #include "core/errors.h"
 #include "core/option_codec.h"
+#include "datasets/io/json_output.h"
 #include "engine/outputs/results_writer.h"
 #include "engine/outputs/text_escaping.h"
 #include "datasets/io/json_file.h"
@@ -244,7 +245,9 @@ bool SplitPredictions(const RecordedPredictions& predictions, const std::vector<
   size_t k = 0;
   for (size_t s = 0; s < sequences.size(); ++s) {
     for (const SequenceFrame& frame : sequences[s].frames) {
-      if (frame.id != predictions.frame_ids[k]) {
+      // predictions.json holds an id that is not UTF-8 (bytes of a file name) with U+FFFD in place
+      // of the bad bytes: compared as written.
+      if (frame.id != predictions.frame_ids[k] && io::ValidUtf8(frame.id) != predictions.frame_ids[k]) {
         *why = "frame " + std::to_string(k) + " of predictions.json is " + QuoteName(predictions.frame_ids[k]) +
                ", the input's is " + QuoteName(frame.id);
         return false;

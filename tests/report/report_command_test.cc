@@ -13,6 +13,7 @@
 
 #include "core/printable_text.h"
 #include "engine/outputs/text_escaping.h"
+#include "engine/report/report_run.h"
 #include "tests/hostile_strings.h"
 #include "tests/report/report_test_util.h"
 
@@ -311,6 +312,25 @@ TEST(ReportCommand, MissingJavascriptLibraryNamesThePackage) {
 
 // A camera at T = 1e308 (accepted with a warning) killed the 3D viewer: the page now lists cameras
 // farther than 1000 km without a position; nearer ones keep theirs.
+// Frame ids from file names that are not UTF-8: predictions.json holds them with U+FFFD in place of
+// the bad bytes, and the re-loaded input's ids are compared as written there (report and render
+// --run refused the run: "frame 0 of predictions.json is 'fr\xef\xbf\xbd...'").
+TEST(ReportRun, FrameIdsThatAreNotUtf8MatchAsPredictionsJsonWroteThem) {
+  engine::RecordedPredictions predictions;
+  predictions.frame_ids = {"fr\xef\xbf\xbd\xef\xbf\xbd" "000", "plain"};
+  predictions.frames.resize(2);
+  std::vector<Sequence> sequences(1);
+  sequences[0].frames.resize(2);
+  sequences[0].frames[0].id = "fr\xff\xfe" "000";
+  sequences[0].frames[1].id = "plain";
+  std::vector<std::vector<Poses3D>> split;
+  std::string why;
+  EXPECT_TRUE(engine::SplitPredictions(predictions, sequences, &split, &why)) << why;
+  sequences[0].frames[1].id = "other";
+  EXPECT_FALSE(engine::SplitPredictions(predictions, sequences, &split, &why));
+  EXPECT_NE(why.find("frame 1 of predictions.json is 'plain', the input's is 'other'"), std::string::npos) << why;
+}
+
 TEST(ReportData, FarCamerasHaveNoPositionInThePage) {
   const fs::path dir = TempDir("report_far_cameras");
   const std::string input = FarCameraInput(dir / "input", {{0, "1e308"}, {2, "2e6"}});
