@@ -27,28 +27,36 @@ namespace {
 
 using Kind = io::JsonPull::Kind;
 
-bool JsonBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
+// Reads JSON text character by character and tells the blanks between tokens (which say nothing)
+// from the characters that count (those inside strings included).
+class JsonBlankFilter {
+ public:
+  bool Keeps(char c) {
+    if (in_string_) {
+      if (escaped_) {
+        escaped_ = false;
+      } else if (c == '\\') {
+        escaped_ = true;
+      } else if (c == '"') {
+        in_string_ = false;
+      }
+      return true;
+    }
+    if (c == '"') in_string_ = true;
+    return c != ' ' && c != '\t' && c != '\r' && c != '\n';
+  }
 
-// `line` without the blanks JSON allows between tokens (those inside strings stay): how a writer
-// happened to space it does not change what it says.
+ private:
+  bool in_string_ = false, escaped_ = false;
+};
+
+// `line` without the blanks JSON allows between tokens: how a writer happened to space it does
+// not change what it says.
 std::string WithoutJsonBlanks(std::string_view line) {
   std::string out;
-  bool in_string = false, escaped = false;
+  JsonBlankFilter filter;
   for (const char c : line) {
-    if (in_string) {
-      if (escaped) {
-        escaped = false;
-      } else if (c == '\\') {
-        escaped = true;
-      } else if (c == '"') {
-        in_string = false;
-      }
-    } else if (c == '"') {
-      in_string = true;
-    } else if (JsonBlank(c)) {
-      continue;
-    }
-    out.push_back(c);
+    if (filter.Keeps(c)) out.push_back(c);
   }
   return out;
 }
@@ -57,22 +65,9 @@ std::string WithoutJsonBlanks(std::string_view line) {
 // differs from the joints line at its first key): no allocation.
 bool EqualWithoutJsonBlanks(std::string_view line, std::string_view expected) {
   size_t k = 0;
-  bool in_string = false, escaped = false;
+  JsonBlankFilter filter;
   for (const char c : line) {
-    if (in_string) {
-      if (escaped) {
-        escaped = false;
-      } else if (c == '\\') {
-        escaped = true;
-      } else if (c == '"') {
-        in_string = false;
-      }
-    } else if (c == '"') {
-      in_string = true;
-    } else if (JsonBlank(c)) {
-      continue;
-    }
-    if (k >= expected.size() || expected[k++] != c) return false;
+    if (filter.Keeps(c) && (k >= expected.size() || expected[k++] != c)) return false;
   }
   return k == expected.size();
 }

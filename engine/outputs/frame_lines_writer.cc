@@ -64,7 +64,7 @@ void FrameLinesWriter::WriteLine() {
       if (ready < 0 && errno != EINTR) {
         throw InputError(name_ + ": cannot wait for the output: " + std::strerror(errno));
       }
-      if (ready <= 0 || (fds[0].revents & (POLLOUT | POLLERR | POLLHUP)) == 0) continue;
+      if (ready <= 0 || (fds[0].revents & (POLLOUT | POLLERR | POLLHUP | POLLNVAL)) == 0) continue;  // write() names an error
     }
     const ssize_t written = write(fd_, data, stop_ != nullptr ? std::min<size_t>(left, PIPE_BUF) : left);
     if (written < 0) {
