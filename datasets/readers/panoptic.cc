@@ -155,8 +155,9 @@ std::vector<PoseFile> ListPoseFiles(const std::filesystem::path& folder, InputWa
   return files;
 }
 
-// The GT persons of one body3DScene file.
-void ReadBodies(const std::filesystem::path& path, Poses3D* gt) {
+// The GT persons of one body3DScene file; bodies whose body centre is not visible are left out as
+// VoxelPose does, counted under the sequence's folder in *warnings.
+void ReadBodies(const std::filesystem::path& path, Poses3D* gt, InputWarnings* warnings) {
   const nlohmann::json root = io::LoadJsonFile(path);
   const std::string source = path.string();
   const nlohmann::json& bodies = io::JsonAt(root, "/bodies", source);
@@ -168,7 +169,13 @@ void ReadBodies(const std::filesystem::path& path, Poses3D* gt) {
     if (!std::all_of(joints.begin(), joints.end(), [](double v) { return std::isfinite(v); })) {
       throw InputError(source + ": " + base + "/joints19: contains NaN or infinity");
     }
-    if (!(joints[4 * kRootJoint + 3] > kVisibleScore)) continue;  // root invisible: dropped as in VoxelPose
+    if (!(joints[4 * kRootJoint + 3] > kVisibleScore)) {  // root invisible: dropped as in VoxelPose
+      warnings->AddMissing(path.parent_path().string(),
+                           "bodies whose body_center has confidence <= 0.1 left out of the ground truth (VoxelPose's "
+                           "rule; a person triangulated there counts as Invalid)",
+                           1);
+      continue;
+    }
     const auto id = io::JsonIntIn(root, base + "/id", source, std::numeric_limits<int>::min(), std::numeric_limits<int>::max());
     auto person = gt->AddPerson(static_cast<int>(id));
     for (int j = 0; j < kJoints; ++j) {
@@ -209,7 +216,7 @@ class PanopticSource final : public FrameSource {
       frame->timestamp_s = static_cast<double>(file.frame) / kHdFps;
       frame->views.clear();
       frame->labels_2d.clear();
-      ReadBodies(file.path, &frame->gt);
+      ReadBodies(file.path, &frame->gt, &warnings_);
       if (params_.skip_empty && frame->gt.num_persons() == 0) continue;
       ++delivered_;
       return true;

@@ -331,11 +331,16 @@ TEST(PanopticReader, GeneratedFilesMissingJointsEmptyBodiesAndRoots) {
   WriteText(poses / "notes.json", "not a pose file");
   WriteText(poses / "body3DScene_0000001x.json", Scene(""));
   const Sequence kept = ReadDataset(Request(dir.path(), base))[0];  // skip_empty=true
-  ASSERT_EQ(kept.warnings.items().size(), 1u);
+  ASSERT_EQ(kept.warnings.items().size(), 2u);
   EXPECT_EQ(
       kept.warnings.items()[0].Line(),
       poses.string() + ": 2 entries not named body3DScene_<number>.json ignored (e.g. 'body3DScene_0000001x.json')");
   EXPECT_EQ(kept.warnings.items()[0].kind, InputWarningKind::kUnused);
+  // The body left out by VoxelPose's rule is counted (it was dropped without a word).
+  EXPECT_EQ(kept.warnings.items()[1].Line(),
+            poses.string() + ": 1 bodies whose body_center has confidence <= 0.1 left out of the ground truth "
+                             "(VoxelPose's rule; a person triangulated there counts as Invalid)");
+  EXPECT_EQ(kept.warnings.items()[1].kind, InputWarningKind::kMissing);
   ASSERT_EQ(kept.frames.size(), 3u);
   EXPECT_EQ(kept.frames[0].id, "panoptic_seqA_000010");
   EXPECT_EQ(kept.frames[1].id, "panoptic_seqA_000012");
@@ -456,8 +461,9 @@ TEST(PanopticReader, RotationsWithSixDigitsAreReorthonormalisedAndCounted) {
   for (const Camera& camera : sequence.cameras) {
     EXPECT_LT((camera.R.transpose() * camera.R - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff(), 1e-12);
   }
-  // Only the two selected cameras are read (the VGA camera's R is not used, so not counted).
-  ASSERT_EQ(sequence.warnings.items().size(), 1u);
+  // Only the two selected cameras are read (the VGA camera's R is not used, so not counted); the
+  // other warning is frame 12's body left out (ReadBodies).
+  ASSERT_EQ(sequence.warnings.items().size(), 2u);
   const InputWarning& w = sequence.warnings.items()[0];
   EXPECT_EQ(w.source, (dir.path() / "seqA" / "calibration_seqA.json").string());
   EXPECT_EQ(w.what, "rotations re-orthonormalised");
@@ -466,7 +472,9 @@ TEST(PanopticReader, RotationsWithSixDigitsAreReorthonormalisedAndCounted) {
   EXPECT_LT(w.worst, 1e-5);
 
   WriteSequence(dir.path());  // 17 digits: exact to round-off, nothing to report
-  EXPECT_TRUE(ReadDataset(Request(dir.path(), params))[0].warnings.empty());
+  const InputWarnings exact = ReadDataset(Request(dir.path(), params))[0].warnings;
+  EXPECT_TRUE(std::none_of(exact.items().begin(), exact.items().end(),
+                           [](const InputWarning& x) { return x.what == "rotations re-orthonormalised"; }));
   // 1e-2 off is a wrong matrix, not rounding.
   WriteSequence(dir.path(), CalibrationJson("[[1.005, 0, 0], [0, 1.005, 0], [0, 0, 1.005]]"));
   EXPECT_THAT(test::InputErrorOf([&] { ReadDataset(Request(dir.path(), params)); }),
