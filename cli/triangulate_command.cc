@@ -164,7 +164,16 @@ int RunFollow(const TriangulateArgs& args) {
     folder.emplace(args.out, info.run_id, input->size(), exports);
   }
   engine::SinkList sinks({&lines, &latency, folder ? folder->sink() : nullptr});
-  const engine::RunResult run = engine::Run(*input, options, &sinks);
+  const engine::RunResult run = [&] {
+    try {
+      return engine::Run(*input, options, &sinks);
+    } catch (const InputError&) {  // a bad line, a reader that closed stdout: how far the stream got
+      std::fprintf(stderr, "%s: %ld lines read, %ld frames written to stdout before the error\n",
+                   PrintableText(input->header(0).name, LineBreaks::kEscape).c_str(), counts.lines,
+                   std::max(0L, lines.lines() - 1));
+      throw;
+    }
+  }();
   PrintInputWarnings(run.warnings.Except(opened));
   const std::vector<std::string> agreement = PrintCameraAgreement(run);
   if (folder) {

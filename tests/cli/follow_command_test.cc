@@ -295,8 +295,11 @@ TEST_F(Follow, ABadLineIsAnErrorNamingItsLine) {
         test::RunRpt("triangulate --follow - --cameras " + Cameras() + " < " + lines.string());
     EXPECT_EQ(r.exit_code, 2) << bad;
     EXPECT_NE(r.err.find("error: " + message), std::string::npos) << bad << "\n" << r.err;
-    // The frame before the bad line was written (the joints line and one frame).
+    // The frame before the bad line was written (the joints line and one frame), and said.
     EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 2) << bad << "\n" << r.out;
+    EXPECT_NE(r.err.find("stdin: 3 lines read, 1 frames written to stdout before the error\nerror: "),
+              std::string::npos)
+        << r.err;
   }
   const fs::path no_joints = dir_ / "no_joints.jsonl";
   std::ofstream(no_joints) << good << "\n";
