@@ -13,7 +13,9 @@
 // loop on a live source, engine/live_input.h); the summary goes to stderr.
 #include <unistd.h>
 
+#include <algorithm>
 #include <csignal>
+#include <filesystem>
 #include <cstdio>
 #include <iostream>
 #include <optional>
@@ -26,6 +28,7 @@
 #include "cli/progress.h"
 #include "cli/threads_option.h"
 #include "core/printable_text.h"
+#include "datasets/io/json_file.h"
 #include "datasets/io/json_output.h"
 #include "engine/input.h"
 #include "engine/output_place.h"
@@ -72,6 +75,34 @@ constexpr const char* kFollowHelp =
 std::string DefaultOutDir(const engine::InputSpec& input, const engine::Input& opened) {
   if (!input.dataset.empty()) return "out/triangulate-" + input.dataset;
   return "out/triangulate-" + (opened.size() == 1 ? opened.header(0).name : std::string("labels"));
+}
+
+// The default output folder is named after the detections ("openpose", "detections"), the same for
+// every take of a lab's layout (takeA/openpose, takeB/openpose): a run there of other input paths is
+// not replaced silently (a loop over takes kept only the last). An explicit --out replaces as
+// documented.
+void CheckDefaultOutputHoldsThisInput(const std::string& out_dir,
+                                      const std::vector<std::pair<std::string, std::string>>& digests) {
+  const std::filesystem::path run_json = std::filesystem::path(out_dir) / "run.json";
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(run_json, ec)) return;
+  nlohmann::json recorded;
+  try {
+    recorded = io::LoadJsonFile(run_json);
+  } catch (const InputError&) {
+    return;  // not a run.json of ours: replaced as any folder is
+  }
+  const auto paths = recorded.find("input_digests");
+  if (paths == recorded.end() || !paths->is_object()) return;
+  std::vector<std::string> before, now;
+  for (auto it = paths->begin(); it != paths->end(); ++it) before.push_back(it.key());
+  for (const auto& [path, digest] : digests) now.push_back(path);
+  std::sort(before.begin(), before.end());
+  std::sort(now.begin(), now.end());
+  if (before == now) return;
+  throw InputError(PrintableText(out_dir, LineBreaks::kEscape) + ": the default output folder holds the run of other input (" +
+                   JoinNames(before) + "); it is named after the detections, the same for every take: give --out DIR "
+                   "(one per take), or remove the folder");
 }
 
 void CheckFollowArgs(const TriangulateArgs& args) {
@@ -225,6 +256,7 @@ void RunTriangulate(const TriangulateArgs& args) {
   info.input_settings = engine::ResolvedInputSettings(args.input);  // compared by `rpt report` and `rpt render --run`
   const std::string out_dir = !args.out.empty() ? args.out : DefaultOutDir(args.input, input);
   engine::CheckOutputOutsideInput(out_dir, args.input);
+  if (args.out.empty()) CheckDefaultOutputHoldsThisInput(out_dir, info.input_digests);
   engine::RunFolder folder(out_dir, info.run_id, input.size(), exports);
   options.require_frames = true;
   const engine::RunResult run = engine::Run(input, options, folder.sink());
@@ -273,7 +305,7 @@ void RegisterTriangulateCommand(CLI::App& app, int* exit_code) {
   AddDetectionInputOptions(command, &args->input);
   AddConfigOptions(command, &args->config);
   AddExportOptions(command, &args->exports);
-  command->add_option("--out", args->out, "output folder (default out/triangulate-<dataset or detections>)");
+  command->add_option("--out", args->out, "output folder (default out/triangulate-<dataset or detections>, which does not replace a run of other input there)");
   AddThreadsOption(command, &args->threads, "sequences triangulated", /*one_sequence_stages=*/true);
   command->add_flag("--json", args->json, "print the summary as one JSON object");
   command->add_flag("--quiet", args->quiet, "no progress, no step table");

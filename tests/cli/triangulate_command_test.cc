@@ -728,6 +728,39 @@ TEST_F(Triangulate, AnOutputFolderInTheInputIsRefused) {
   EXPECT_EQ(test::RunRpt(run + (dir_ / "elsewhere").string()).exit_code, 0) << "beside it is fine";
 }
 
+// The default output folder is named after the detections: takeA/detections.json and
+// takeB/detections.json both go to out/triangulate-detections. A loop over takes kept only the last
+// one's results; now a run there of other input is not replaced (the same input is), and --out is
+// the way.
+TEST_F(Triangulate, TakesOfOneNameDoNotReplaceEachOthersDefaultFolder) {
+  const Detections detections = Coco17(scene_, Ids("take_", kFrames));
+  for (const char* take : {"takeA", "takeB"}) {
+    fs::create_directories(dir_ / take);
+    WriteGenericDetections(dir_ / take / "detections.json", detections);
+  }
+  const std::string in_dir = "cd '" + dir_.string() + "' && ";
+  const auto take = [&](const std::string& name) {
+    return test::RunRpt("triangulate --cameras cameras.json --detections " + name + "/detections.json --fps 25 --quiet",
+                        in_dir);
+  };
+  ASSERT_EQ(take("takeA").exit_code, 0);
+  EXPECT_EQ(take("takeA").exit_code, 0) << "the same input again replaces its own run";
+  const test::CommandResult other = take("takeB");
+  EXPECT_EQ(other.exit_code, 2);
+  EXPECT_NE(other.err.find("out/triangulate-detections: the default output folder holds the run of other input "
+                           "(cameras.json, takeA/detections.json)"),
+            std::string::npos)
+      << other.err;
+  EXPECT_NE(ReadJson(dir_ / "out" / "triangulate-detections" / "run.json")["command"].get<std::string>().find("takeA"),
+            std::string::npos)
+      << "takeA's results are still there";
+  EXPECT_EQ(test::RunRpt("triangulate --cameras cameras.json --detections takeB/detections.json --fps 25 --quiet --out "
+                         "out/takeB",
+                         in_dir)
+                .exit_code,
+            0);
+}
+
 // The mistakes of someone's own first run: each said, none silently wrong.
 TEST_F(Triangulate, OwnDataMistakesAreSaidNotSilent) {
   const std::vector<std::string> ids = Ids("take_", kFrames);
