@@ -117,8 +117,13 @@ void RunConvert(const ConvertArgs& args) {
     frames_with_detections +=
         std::any_of(frame.views.begin(), frame.views.end(), [](const Poses2D& view) { return view.num_persons() > 0; });
   }
-  std::printf("converted %zu sequence(s), %ld frames, %ld frames with detections\n", sequences.size(), frames,
-              frames_with_detections);
+  if (sequences.empty()) {  // --detections alone: no labels, the detection frames are the input
+    std::printf("converted %zu detection frames (%ld with detections; no labels)\n", detections.frames.size(),
+                frames_with_detections);
+  } else {
+    std::printf("converted %zu sequence(s), %ld frames, %ld frames with detections\n", sequences.size(), frames,
+                frames_with_detections);
+  }
 }
 
 }  // namespace

@@ -131,6 +131,14 @@ void WriteDetectionsHdf5(const std::filesystem::path& path, const Detections& gi
   writer.Int64s(group.get(), name, "view_offsets", view_offsets);
   writer.Int32s(group.get(), name, "view_cameras", {view_cameras.size()}, view_cameras);
   writer.Int64s(group.get(), name, "person_offsets", person_offsets);
+  // The frames' times (generic JSON's "time"; NaN = unknown), when any is known: a cache of timed
+  // detections triangulated without labels tracked nothing.
+  if (std::any_of(detections.frames.begin(), detections.frames.end(),
+                  [](const FrameDetections& frame) { return std::isfinite(frame.time_s); })) {
+    std::vector<double> times;
+    for (const FrameDetections& frame : detections.frames) times.push_back(frame.time_s);
+    writer.Doubles(group.get(), name, "times", {times.size()}, times);
+  }
   if (options.float64) {
     std::vector<double> values;
     values.reserve(total_values);
@@ -225,11 +233,20 @@ Detections ReadDetectionsHdf5(const std::filesystem::path& path) {
       "persons x joints x [u, v, score]");
   CheckOffsets(reader, person_offsets, name + "/person_offsets", keypoints_name, static_cast<std::int64_t>(dims[0]));
 
+  // Optional: the frames' times in seconds (NaN = unknown).
+  std::vector<double> times;
+  if (reader.Exists(name + "/times")) {
+    times = reader.Numbers<double>(name + "/times", H5T_NATIVE_DOUBLE, Shape({num_frames}));
+    for (size_t f = 0; f < times.size(); ++f) {
+      if (std::isinf(times[f])) reader.Fail(name + "/times", "element " + std::to_string(f) + " is infinite");
+    }
+  }
   std::unordered_set<std::string> seen_ids;
   detections.frames.resize(frame_ids.size());
   for (size_t f = 0; f < frame_ids.size(); ++f) {
     FrameDetections& frame = detections.frames[f];
     frame.frame_id = frame_ids[f];
+    if (!times.empty()) frame.time_s = times[f];
     if (frame.frame_id.empty()) reader.Fail(name + "/frame_ids", "frame " + std::to_string(f) + " has an empty id");
     if (!seen_ids.insert(frame.frame_id).second) reader.Fail(name + "/frame_ids", "frame id " + QuoteName(frame.frame_id) + " appears twice");
     for (std::int64_t v = view_offsets[f]; v < view_offsets[f + 1]; ++v) {

@@ -144,6 +144,28 @@ TEST(Hdf5Cache, DetectionsRoundTripInFloat32AndFloat64) {
   Hdf5Editor editor(path32);
   EXPECT_EQ(editor.Dims("/detections/keypoints")[1], 133u);
   EXPECT_EQ(editor.Dims("/detections/view_offsets")[0], 8u);
+  for (const FrameDetections& frame : read.frames) EXPECT_TRUE(std::isnan(frame.time_s)) << "no times given, none read";
+}
+
+// The frames' times of timed detections (generic JSON's "time") are kept: a cache of them was read
+// without times, so triangulating it tracked nobody.
+TEST(Hdf5Cache, DetectionTimesAreKept) {
+  test::TempDir dir;
+  Detections detections = test::MakeDetections(4, {"a", "b"}, CocoBodyJoints());
+  for (size_t f = 0; f < detections.frames.size(); ++f) detections.frames[f].time_s = 100.0 + 0.04 * f;
+  detections.frames[2].time_s = kUnknownTime;
+  const auto path = dir.path() / "timed.h5";
+  WriteDetectionsHdf5(path, detections);
+  const Detections read = ReadDetectionsHdf5(path);
+  ASSERT_EQ(read.frames.size(), 4u);
+  EXPECT_EQ(read.frames[0].time_s, 100.0);
+  EXPECT_EQ(read.frames[3].time_s, 100.12);
+  EXPECT_TRUE(std::isnan(read.frames[2].time_s));
+  {
+    Hdf5Editor editor(path);  // a cache written by another tool
+    editor.PutDoubles("/detections/times", {4}, {0, 0.04, INFINITY, 0.12});
+  }
+  EXPECT_THAT(test::InputErrorOf([&] { ReadDetectionsHdf5(path); }), HasSubstr("/detections/times: element 2 is infinite"));
 }
 
 TEST(Hdf5Cache, EmptyDetectionsAndFramesWithoutViews) {
