@@ -225,6 +225,7 @@ Input OpenInput(const InputSpec& spec, const InputNeeds& needs) {
     Input input(std::move(sources), std::move(opened), spec.strict);
     input.set_detections_file(spec.detections);
     input.set_cameras_origin(spec.cameras);
+    input.set_frames_origin(spec.detections);
     input.CheckStrict();
     return input;
   }

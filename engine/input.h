@@ -87,6 +87,9 @@ class Input {
   // folder; empty for a generated scene or a live input): errors about the cameras name it.
   const std::string& cameras_origin() const { return cameras_origin_; }
   void set_cameras_origin(std::string path) { cameras_origin_ = std::move(path); }
+  // Where the frames come from: the detections file with --cameras, else cameras_origin().
+  const std::string& frames_origin() const { return frames_origin_.empty() ? cameras_origin_ : frames_origin_; }
+  void set_frames_origin(std::string path) { frames_origin_ = std::move(path); }
   // Every sequence in memory (for the commands that need whole sequences: inspect, render,
   // report, detector-stats, convert); each frame validated once, like a run's.
   // With max_frames >= 0, an input of more frames (all sequences together) is refused before they
@@ -104,6 +107,7 @@ class Input {
   std::vector<std::shared_ptr<AttachedDetections>> per_sequence_files_;
   std::string detections_file_;
   std::string cameras_origin_;
+  std::string frames_origin_;
 };
 
 // Opens the input `spec` names. Throws ConfigError for contradicting options and InputError for

@@ -302,13 +302,15 @@ RunResult Run(Input& input, const RunOptions& options, FrameSink* sink) {
     long frames = 0;
     for (const SequenceRun& run : runs) frames += run.result.frames;
     if (frames == 0) {
-      const std::string& origin = input.cameras_origin();
+      const std::string& origin = input.frames_origin();
+      const bool detection_frames = !input.detections_file().empty() && origin == input.detections_file();
       throw InputError((origin.empty() ? std::string("the input") : PrintableText(origin, LineBreaks::kEscape)) +
-                       ": no frame to triangulate in " + std::to_string(count) +
-                       (count == 1 ? " sequence" : " sequences") +
-                       " (a selection such as --param frames=, every= or days=, or a reader dropping frames without "
-                       "ground truth, such as panoptic's skip_empty, can leave none; so can a detections file without "
-                       "frames)");
+                       ": no frame to triangulate" +
+                       (detection_frames ? std::string(" (the detections file has no frames)")
+                                         : " in " + std::to_string(count) + (count == 1 ? " sequence" : " sequences") +
+                                               " (a selection such as --param frames=, every= or days=, or a reader "
+                                               "dropping frames without ground truth, such as panoptic's skip_empty, "
+                                               "can leave none)"));
     }
   }
 

@@ -867,6 +867,18 @@ TEST_F(Triangulate, OwnDataMistakesAreSaidNotSilent) {
       << single.err;
   EXPECT_FALSE(fs::exists(dir_ / "one")) << "nothing written";
   EXPECT_EQ(test::RunRpt("inspect" + one_input).exit_code, 0);
+  // A detections file without frames is named (the cameras file was, with --param selections the
+  // command did not use).
+  Detections none = detections;
+  none.frames.clear();
+  WriteGenericDetections(dir_ / "none.json", none);
+  const test::CommandResult empty = test::RunRpt("triangulate" + cameras + " --detections " +
+                                                 (dir_ / "none.json").string() + " --out " + (dir_ / "e").string());
+  EXPECT_EQ(empty.exit_code, 2);
+  EXPECT_NE(empty.err.find("error: " + (dir_ / "none.json").string() +
+                           ": no frame to triangulate (the detections file has no frames)"),
+            std::string::npos)
+      << empty.err;
 }
 
 }  // namespace
