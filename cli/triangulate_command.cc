@@ -27,6 +27,7 @@
 #include "cli/interrupt.h"
 #include "cli/progress.h"
 #include "cli/threads_option.h"
+#include "core/pipeline/steps.h"
 #include "core/printable_text.h"
 #include "datasets/io/json_file.h"
 #include "datasets/io/json_output.h"
@@ -286,7 +287,14 @@ void RunTriangulate(const TriangulateArgs& args) {
     std::printf("results in %s\n", PrintableText(out_dir, LineBreaks::kEscape).c_str());
     std::fflush(stdout);
   }
-  if (run.frames > 0 && run.output_persons == 0) {
+  const bool no_pose = run.counts.count_per_frame[static_cast<size_t>(Step::kUndistort)] == 0;
+  if (run.frames > 0 && run.output_persons == 0 && no_pose) {
+    // Nothing to triangulate: the cameras are not to blame (that warning sent users to the calibration).
+    std::fprintf(stderr,
+                 "warning: no person was triangulated in any of the %ld frames: the detections hold no usable 2D pose "
+                 "in any camera (every view empty, or no pose with enough confident joints)\n",
+                 run.frames);
+  } else if (run.frames > 0 && run.output_persons == 0) {
     std::fprintf(stderr,
                  "warning: no person was triangulated in any of the %ld frames: check that the cameras and the "
                  "detections belong together (camera names, pixel units, image sizes; `rpt inspect`) and the "

@@ -879,6 +879,18 @@ TEST_F(Triangulate, OwnDataMistakesAreSaidNotSilent) {
                            ": no frame to triangulate (the detections file has no frames)"),
             std::string::npos)
       << empty.err;
+  // Frames whose views are all empty: nothing to triangulate, said so (the warning sent the user to
+  // the calibration); with poses but nobody triangulated, the calibration hint stays.
+  Detections blank = detections;
+  for (FrameDetections& frame : blank.frames) {
+    for (Poses2D& view : frame.views) view.Clear(view.num_joints);
+  }
+  WriteGenericDetections(dir_ / "blank.json", blank);
+  const test::CommandResult nobody = test::RunRpt("triangulate" + cameras + " --detections " +
+                                                  (dir_ / "blank.json").string() + " --quiet --out " + (dir_ / "b").string());
+  EXPECT_EQ(nobody.exit_code, 0);
+  EXPECT_NE(nobody.err.find("the detections hold no usable 2D pose in any camera"), std::string::npos) << nobody.err;
+  EXPECT_EQ(nobody.err.find("calibration's convention"), std::string::npos) << nobody.err;
 }
 
 }  // namespace
