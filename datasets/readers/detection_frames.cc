@@ -219,6 +219,18 @@ std::unique_ptr<FrameSource> OpenDetectionFrames(std::vector<Camera> cameras, De
   }
   auto times = std::make_shared<const std::vector<double>>(std::move(frame_times));
   auto mentioned = std::make_shared<const std::vector<char>>(CamerasMentioned(*held, names));
+  // A camera the file never names gave nothing in the whole take (its OpenPose folder absent, a
+  // detector that did not run for it): said, as the most common failure of a multi-camera rig.
+  std::vector<std::string> never;
+  for (size_t c = 0; c < names.size(); ++c) {
+    if (!(*mentioned)[c]) never.push_back(names[c]);
+  }
+  if (!held->frames.empty() && !never.empty()) {
+    warnings.AddMissing(source,
+                        "cameras of the calibration the detections never name, so nothing of theirs in any frame "
+                        "(cameras " + JoinNames(never, ", ") + "): triangulated from the others",
+                        static_cast<long>(never.size()));
+  }
   return std::make_unique<IndexedFrameSource>(
       std::move(header), num_frames,
       [held, view_camera, times, mentioned, num_cameras, num_joints](size_t f, SequenceFrame* frame, InputWarnings*) {

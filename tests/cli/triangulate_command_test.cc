@@ -663,6 +663,27 @@ TEST_F(Triangulate, CamerasWithoutDataInAFrameDoNotRemoveThePersonsTheOthersSee)
   std::vector<size_t> cached_counts;
   for (const Json& frame : cached_predictions["frames"]) cached_counts.push_back(frame["persons"].size());
   EXPECT_EQ(cached_counts, full);
+  // A camera the file never names gave nothing in the whole take: said (it was silent, --strict too,
+  // while a camera missing in some frames was counted).
+  Detections never = all;
+  for (FrameDetections& frame : never.frames) {
+    frame.cameras.pop_back();
+    frame.views.pop_back();
+  }
+  never.unlisted_cameras_unavailable = true;
+  WriteGenericDetections(dir_ / "never.json", never);
+  const test::CommandResult missing =
+      test::RunRpt("triangulate --quiet --strict --cameras " + (dir_ / "five.json").string() + " --detections " +
+                   (dir_ / "never.json").string() + " --out " + (dir_ / "never").string());
+  EXPECT_EQ(missing.exit_code, 0) << "missing information, not unused input: " << missing.err;
+  EXPECT_NE(missing.err.find("never.json: 1 cameras of the calibration the detections never name, so nothing of theirs "
+                             "in any frame (cameras " + scene.cameras.back().name + "): triangulated from the others"),
+            std::string::npos)
+      << missing.err;
+  const test::CommandResult complete =
+      test::RunRpt("triangulate --quiet --cameras " + (dir_ / "five.json").string() + " --detections " +
+                   (dir_ / "all.json").string() + " --out " + (dir_ / "complete").string());
+  EXPECT_EQ(complete.err.find("never name"), std::string::npos) << complete.err;
 }
 
 TEST_F(Triangulate, BadInputExitsWith2NamingFileAndPlace) {
