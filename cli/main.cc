@@ -89,9 +89,10 @@ int main(int argc, char** argv) {
   CLI::App app{"rpt: RapidPoseTriangulation, learning-free multi-view multi-person 3D pose triangulation"};
   app.require_subcommand(1);
   // CLI11 quotes the refused value as given: a value with terminal escapes (ESC ]0; ... BEL) reached
-  // the terminal raw. Its message is printed with control characters escaped, line breaks kept.
+  // the terminal raw. Its message is printed with control characters escaped, line breaks kept,
+  // and starts with "error: " as every other error does (a script greps for it).
   app.failure_message([](const CLI::App* failed, const CLI::Error& e) {
-    return rpt::PrintableText(CLI::FailureMessage::simple(failed, e));
+    return "error: " + rpt::PrintableText(CLI::FailureMessage::simple(failed, e));
   });
   app.set_version_flag("--version", std::string("rpt ") + RPT_VERSION + " (git " + RPT_GIT_REVISION + ")",
                        "print the version and git revision, then exit");

@@ -52,7 +52,8 @@ TEST(Main, RefusedOptionValuesAreShownEscaped) {
   const test::CommandResult r =
       test::RunRpt("eval --dataset synthetic --simulate --detector \"$(printf 'x\\033]0;T\\a')\"");
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("--detector: x\\x1b]0;T\\x07 not in {perfect,clean,realistic,hard}"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("error: --detector: x\\x1b]0;T\\x07 not in {perfect,clean,realistic,hard}"), std::string::npos)
+      << r.err;
   EXPECT_EQ(r.err.find('\x1b'), std::string::npos);
   EXPECT_NE(r.err.find("\nRun with --help for more information."), std::string::npos) << "line breaks kept: " << r.err;
   const test::CommandResult threads = test::RunRpt("eval --dataset synthetic --threads 1e400");
