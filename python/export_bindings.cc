@@ -145,12 +145,41 @@ std::vector<std::filesystem::path> Write(const std::filesystem::path& dir, py::h
   options.trc_axes = trc_axes == "y-up" ? engine::TrcAxes::kYUp : engine::TrcAxes::kZUp;
   options.trc_millimetres = trc_units == "mm";
 
+  // Checked before anything is written, as the CLI writes a run whole or not at all: one joint list
+  // (JSON, NPZ and HDF5 hold one; a mixed list wrote a JSON whose persons did not match its
+  // joints), and distinct sequence names (two takes named 'detections' were one sequence in the CSV
+  // and looked like a track coming back in TRC).
+  for (size_t s = 1; s < runs.size(); ++s) {
+    if (runs[s].joints != runs[0].joints) {
+      throw ConfigError("export.write: sequence " + std::to_string(s) + " (" + QuoteName(runs[s].sequence) +
+                        ") has other output joints than sequence 0 (" + QuoteName(runs[0].sequence) +
+                        "): one write holds one joint list; write them in separate calls");
+    }
+    for (size_t t = 0; t < s; ++t) {
+      if (runs[s].sequence == runs[t].sequence) {
+        throw ConfigError("export.write: sequences " + std::to_string(t) + " and " + std::to_string(s) +
+                          " are both named " + QuoteName(runs[s].sequence) +
+                          ": set each Predictions' .sequence to a name of its own (e.g. the take's folder)");
+      }
+    }
+  }
   py::gil_scoped_release release;
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) throw InputError(dir.string() + ": cannot create the folder (" + ec.message() + ")");
-  if (std::find(options.formats.begin(), options.formats.end(), engine::ExportFormat::kTrc) != options.formats.end()) {
-    RemoveEarlierTrcFiles(dir / "trc");
+  // An earlier write's files this one does not replace go (links too, never what they point to):
+  // the folder holds one write, as the CLI's run folder holds one run.
+  RemoveEarlierTrcFiles(dir / "trc");
+  for (const engine::ExportFormat format : {engine::ExportFormat::kJson, engine::ExportFormat::kCsv,
+                                            engine::ExportFormat::kNpz, engine::ExportFormat::kH5}) {
+    if (std::find(options.formats.begin(), options.formats.end(), format) != options.formats.end()) continue;
+    const std::filesystem::path earlier = dir / std::string(engine::ExportFileName(format));
+    const std::filesystem::file_status status = std::filesystem::symlink_status(earlier, ec);
+    if (std::filesystem::is_regular_file(status) || std::filesystem::is_symlink(status)) {
+      if (!std::filesystem::remove(earlier, ec) && ec) {
+        throw InputError(earlier.string() + ": cannot remove the earlier write's file (" + ec.message() + ")");
+      }
+    }
   }
   ExportSinks sinks(dir, run_id, static_cast<int>(runs.size()), options);
   engine::SinkList sink(sinks.all);

@@ -361,7 +361,9 @@ void RegisterTriangulator(py::module_& m) {
             return frames;
           },
           "predictions[a:b]: a list of the (persons, track ids) of those frames")
-      .def_readonly("sequence", &Predictions::sequence)
+      .def_readwrite("sequence", &Predictions::sequence,
+                     "the sequence's name (the detections file's for open_cameras): set it to tell takes apart in "
+                     "export.write")
       .def_readonly("joint_names", &Predictions::joints)
       .def_readonly("frame_ids", &Predictions::frame_ids)
       .def_readonly("wall_seconds", &Predictions::wall_seconds, "the whole process_sequence call")

@@ -60,6 +60,38 @@ def test_cameras_and_detections_equal_rpt_triangulate(files, tmp_path):
     for name in names:
         assert (tmp_path / "py" / "trc" / name).read_bytes() == (tmp_path / "cli" / "trc" / name).read_bytes()
     assert not (tmp_path / "py" / "trc" / names[0]).is_symlink() and outside.read_text() == "keep"
+    # That write was trc only: the first write's CSV is gone too (it held the earlier run beside
+    # this one's TRC files); a link there is removed, never followed.
+    assert not (tmp_path / "py" / "predictions.csv").exists()
+    (tmp_path / "py" / "predictions.npz").symlink_to(outside)
+    rpt.export.write(tmp_path / "py", predictions, "json")
+    assert sorted(p.name for p in (tmp_path / "py").iterdir()) == ["predictions.json", "trc"]
+    assert sorted(p.name for p in (tmp_path / "py" / "trc").iterdir()) == ["notes.txt"] and outside.read_text() == "keep"
+
+
+def test_export_refuses_what_one_write_cannot_hold(files, tmp_path):
+    dataset = rpt.datasets.open_cameras(str(files / "labels.json"), str(files / "detections.json"), fps=25)
+    (sequence,) = dataset.load()
+    take1 = rpt.Triangulator.for_sequence(sequence).process_sequence(sequence)
+    take2 = rpt.Triangulator.for_sequence(sequence).process_sequence(sequence)
+    # Two takes of one name were one sequence in the CSV: refused before anything is written.
+    with pytest.raises(rpt.ConfigError, match=r"sequences 0 and 1 are both named 'detections': set each Predictions' "
+                                              r"\.sequence"):
+        rpt.export.write(tmp_path / "same", [take1, take2], "csv,trc")
+    assert not (tmp_path / "same").exists()
+    take1.sequence, take2.sequence = "take1", "take2"
+    rpt.export.write(tmp_path / "named", [take1, take2], "csv,trc")
+    assert sorted({line.split(",")[0] for line in (tmp_path / "named" / "predictions.csv").read_text().splitlines()[1:]}) \
+        == ["take1", "take2"]
+    # Other joints: refused before the JSON (whose one joint list they would contradict) is written.
+    body = rpt.synthetic.scene(people=1, frames=5, joints="body")
+    whole = rpt.synthetic.scene(people=1, frames=5, joints="wholebody")
+    a = rpt.Triangulator.for_sequence(body).process_sequence(body)
+    b = rpt.Triangulator.for_sequence(whole).process_sequence(whole)
+    b.sequence = "whole"
+    with pytest.raises(rpt.ConfigError, match=r"sequence 1 \('whole'\) has other output joints than sequence 0"):
+        rpt.export.write(tmp_path / "mixed", [a, b], "json,trc")
+    assert not (tmp_path / "mixed").exists()
 
 
 def test_missing_detections_file(files):
