@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "engine/outputs/trc_export.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -79,7 +80,11 @@ void TrcExport::Frame(const FrameOutput& frame) {
   const Poses3D& persons = *frame.persons;
   const double time_s = frame.input->timestamp_s;
   if (std::isfinite(time_s)) {
-    if (s.timed_frames++ == 0) s.first_time_s = time_s;
+    if (s.timed_frames++ == 0) {
+      s.first_time_s = time_s;
+    } else if (time_s > s.last_time_s && s.steps.size() < kRateSteps) {
+      s.steps.push_back(time_s - s.last_time_s);
+    }
     s.last_time_s = time_s;
   }
   const double scale = options_.trc_millimetres ? 1000.0 : 1.0;
@@ -92,9 +97,15 @@ void TrcExport::Frame(const FrameOutput& frame) {
     }
     std::ofstream& out = TrackStream(&s, persons.track_ids[p], frame_idx, time_s);
     Track& track = s.tracks[persons.track_ids[p]];
+    // With the sequence's fps, Frame# follows the time (a skipped frame leaves a gap); never back.
+    long frame_number = frame_idx + 1;
+    if (s.fps > 0) frame_number = 1 + std::lround((time_s - s.first_time_s) * s.fps);
+    if (track.rows > 0) frame_number = std::max(frame_number, track.last_number + 1);
+    if (track.rows == 0) track.first_number = frame_number;
+    track.last_number = frame_number;
     ++track.rows;
     track.last_frame = frame_idx;
-    number.assign(std::to_string(frame_idx + 1)).push_back('\t');  // C-locale numbers whatever LC_NUMERIC says
+    number.assign(std::to_string(frame_number)).push_back('\t');  // C-locale numbers whatever LC_NUMERIC says
     AppendFixedDecimal(time_s, 6, &number);
     out << number;
     const auto person = persons.Person(p);
@@ -145,24 +156,27 @@ void TrcExport::FinishTrack(Sequence* s, int track_id, Track* track) {
 void TrcExport::WriteFile(const Sequence& s, int track_id, const Track& track) {
   std::string name = s.name + "_track" + std::to_string(track_id) + ".trc";
   if (written_names_.count(name) > 0) {  // the track came back
-    name = s.name + "_track" + std::to_string(track_id) + "_from" + std::to_string(track.first_frame + 1) + ".trc";
+    name = s.name + "_track" + std::to_string(track_id) + "_from" + std::to_string(track.first_number) + ".trc";
   }
   written_names_.insert(name);
   double rate = s.fps;
+  // Without it, the camera's rate: 1 / the median step between the sequence's frame times (a mean
+  // over a pause gave 22.47 for a 25 Hz camera, and tracks of one run different rates).
+  if (!(rate > 0) && !s.steps.empty()) {
+    std::vector<double> steps = s.steps;
+    const auto middle = steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2);
+    std::nth_element(steps.begin(), middle, steps.end());
+    if (*middle > 0) rate = 1.0 / *middle;
+  }
   if (!(rate > 0) && track.rows > 1 && track.last_time_s > track.first_time_s) {
     rate = (track.rows - 1) / (track.last_time_s - track.first_time_s);
-  }
-  // A track of one frame has no rate of its own: the sequence's (it was written as 0, which a
-  // reader dividing by the rate cannot take; MVOR's images, 75 s apart, give such tracks).
-  if (!(rate > 0) && s.timed_frames > 1 && s.last_time_s > s.first_time_s) {
-    rate = static_cast<double>(s.timed_frames - 1) / (s.last_time_s - s.first_time_s);
   }
   io::WriteTextFile(dir_ / name, io::NamedBy::kRpt, [&](std::ostream& out) {
     out << "PathFileType\t4\t(X/Y/Z)\t" << name << "\n";
     out << "DataRate\tCameraRate\tNumFrames\tNumMarkers\tUnits\tOrigDataRate\tOrigDataStartFrame\tOrigNumFrames\n";
-    const std::string rate_text = GeneralText(rate, 6);  // printf's "%.6g" in the C locale
+    const std::string rate_text = GeneralText(rate, 10);  // printf's "%.10g" in the C locale (29.97002997 stays)
     out << rate_text << "\t" << rate_text << "\t" << track.rows << "\t" << s.joints.size() << "\t"
-        << (options_.trc_millimetres ? "mm" : "m") << "\t" << rate_text << "\t" << track.first_frame + 1 << "\t"
+        << (options_.trc_millimetres ? "mm" : "m") << "\t" << rate_text << "\t" << track.first_number << "\t"
         << track.rows << "\n";
     out << "Frame#\tTime";
     for (const std::string& joint : s.joints) out << "\t" << TrcField(joint) << "\t\t";

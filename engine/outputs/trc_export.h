@@ -8,11 +8,15 @@
 //   Frame#  Time  <joint>\t\t\t ...
 //           X1  Y1  Z1  X2 ...
 //   (blank line)
-//   <frame index + 1>  <time_s>  x  y  z ...
+//   <frame number>  <time_s>  x  y  z ...
 // Tab-separated; a missing joint (or a filled one without ExportOptions::filled_joints) has empty
 // fields. Axes per ExportOptions::trc_axes (y up for OpenSim: (x, z, -y)), units per
-// trc_millimetres. The data rate is the sequence's fps, else the track's mean rate from its times,
-// else (a track of one frame) the sequence's mean rate from the times of its frames so far.
+// trc_millimetres. With the sequence's fps the frame number is 1 + (time - the sequence's first
+// time) x fps, rounded (frames the input skipped leave a gap in Frame#, as in Time: a tool that
+// rebuilds time from Frame# / DataRate gets the rows' times), and the data rate is that fps; without
+// it the frame number is the frame's index + 1 and the rate 1 / the median step between the
+// sequence's frame times (the first 1000 steps; a pause does not lower it), else (one timed frame)
+// the track's mean rate. OrigDataStartFrame is the track's first frame number.
 // A frame with an unknown time is an InputError naming the sequence and the frame (a TRC row needs
 // a time: give --fps). Streams, and memory holds the live tracks only: each track's rows go to a
 // part file beside its target (at most kMaxOpenTrcParts open at once, others reopened to append),
@@ -39,6 +43,7 @@
 namespace rpt::engine {
 
 inline constexpr int kMaxOpenTrcParts = 32;
+inline constexpr size_t kRateSteps = 1000;
 
 class TrcExport final : public FrameSink {
  public:
@@ -59,7 +64,8 @@ class TrcExport final : public FrameSink {
     std::filesystem::path part;                // its path
     std::unique_ptr<std::ofstream> out;  // null while closed
     long rows = 0;
-    long first_frame = 0, last_frame = 0;
+    long first_frame = 0, last_frame = 0;  // frame indices in the sequence
+    long first_number = 0, last_number = 0;  // Frame# of the first and last rows
     double first_time_s = 0, last_time_s = 0;
   };
   struct Sequence {
@@ -69,6 +75,7 @@ class TrcExport final : public FrameSink {
     long frames = 0;
     long timed_frames = 0;  // frames with a known time, from first_time_s to last_time_s
     double first_time_s = 0, last_time_s = 0;
+    std::vector<double> steps;  // the first kRateSteps steps between frame times, for the rate
     std::map<int, Track> tracks;  // the live ones
     int open = 0;
     long files = 0;

@@ -121,6 +121,55 @@ TEST(TrcExport, OneFrameTracksWithoutFrameRateGetTheSequencesRate) {
   fs::remove_all(dir);
 }
 
+// Frame `frame_idx` at `time_s`, one person of track 0.
+void FeedAt(TrcExport* trc, long frame_idx, double time_s) {
+  SequenceFrame input;
+  input.id = "f" + std::to_string(frame_idx);
+  input.timestamp_s = time_s;
+  Poses3D persons;
+  persons.Clear(1);
+  persons.AddPerson(0).col(0) << 0, static_cast<double>(frame_idx), 0, 1;
+  FrameStats stats;
+  trc->Frame(FrameOutput{0, &input, &persons, &stats});
+}
+
+// Frames the input skipped (a detector that dropped 3 of them; Panoptic's every=12): with the
+// frame rate, Frame# follows the time, so Frame# / DataRate gives each row's Time (it counted rows:
+// 0.3 s off after the gap); without it, the rate is the median step (a pause no longer lowers it:
+// a mean gave 22.47 for a 25 Hz camera), and the rate's digits are kept (29.97002997, not 29.97).
+TEST(TrcExport, FrameNumbersFollowTheTimesAcrossSkippedFrames) {
+  const fs::path dir = TempDir("trc_skipped");
+  TrcExport trc(dir / "trc", 1, ExportOptions{});
+  SequenceHeader header = SequenceS();  // 10 frames a second
+  trc.BeginSequence(0, header, {"a"});
+  const std::vector<double> times = {100.0, 100.1, 100.2, 100.6, 100.7};
+  for (size_t f = 0; f < times.size(); ++f) FeedAt(&trc, static_cast<long>(f), times[f]);
+  trc.EndSequence(0);
+  const auto rows = Lines(dir / "trc" / "s_track0.trc");
+  ASSERT_EQ(rows.size(), 11u);
+  EXPECT_EQ(rows[2], "10\t10\t5\t1\tm\t10\t1\t5");
+  const std::vector<std::string> numbers = {"1", "2", "3", "7", "8"};
+  for (size_t r = 0; r < numbers.size(); ++r) {
+    EXPECT_EQ(rows[6 + r].substr(0, rows[6 + r].find('\t')), numbers[r]) << rows[6 + r];
+  }
+
+  TrcExport timed(dir / "timed", 1, ExportOptions{});
+  header.fps = 0;
+  timed.BeginSequence(0, header, {"a"});
+  for (size_t f = 0; f < times.size(); ++f) FeedAt(&timed, static_cast<long>(f), times[f]);
+  timed.EndSequence(0);
+  EXPECT_EQ(Lines(dir / "timed" / "s_track0.trc").at(2), "10\t10\t5\t1\tm\t10\t1\t5")
+      << "the median step (0.1 s), not the mean (0.175 s)";
+
+  TrcExport ntsc(dir / "ntsc", 1, ExportOptions{});
+  header.fps = 30000.0 / 1001.0;
+  ntsc.BeginSequence(0, header, {"a"});
+  FeedAt(&ntsc, 0, 0.0);
+  ntsc.EndSequence(0);
+  EXPECT_EQ(Lines(dir / "ntsc" / "s_track0.trc").at(2).substr(0, 12), "29.97002997\t");
+  fs::remove_all(dir);
+}
+
 // Joint names come from the input ("extra_" + anything is a valid joint name): a tab or line break
 // in one must not add a column or a line to the tab-separated header.
 TEST(TrcExport, JointNamesFromTheInputKeepTheHeadersColumns) {
