@@ -267,18 +267,46 @@ void RunTriangulate(const TriangulateArgs& args) {
   info.threads = run.threads;
   info.input_warnings = engine::InputWarningLines(run.warnings);
   info.input_warnings.insert(info.input_warnings.end(), agreement.begin(), agreement.end());
+  // Nobody triangulated: said on stderr after the results, and in --json's warnings.
+  std::string nobody;
+  if (run.frames > 0 && run.output_persons == 0) {
+    nobody = run.counts.count_per_frame[static_cast<size_t>(Step::kUndistort)] == 0
+                 // Nothing to triangulate: the cameras are not to blame (that warning sent users to the calibration).
+                 ? "no person was triangulated in any of the " + std::to_string(run.frames) +
+                       " frames: the detections hold no usable 2D pose in any camera (every view empty, or no pose "
+                       "with enough confident joints)"
+                 : "no person was triangulated in any of the " + std::to_string(run.frames) +
+                       " frames: check that the cameras and the detections belong together (camera names, pixel "
+                       "units, image sizes; `rpt inspect`) and the calibration's convention (R and t map world to "
+                       "camera: x_cam = R X + t; in rpt's JSON, T is the camera's centre in the world; "
+                       "docs/cameras.md)";
+  }
   folder.Finish(run, config, info);
+  // Tracks started over the run (a person lost longer than track.max_missing_frames comes back
+  // under a new id: a count well above the people in the scene says ids break).
+  const long tracks = metrics::CounterTotal(run.counts, "new_tracks");
+  const int cameras = run.sequences.empty() ? 0 : run.sequences.front().cameras;
   if (args.json) {
-    std::cout << io::DumpJson(engine::TriangulationSummaryJson(run), 2) << "\n";
+    // The summary plus what a script aggregating many takes needs: the run, the folder, the counts
+    // the text line gives, and every warning (the input's, the cameras', nobody triangulated).
+    nlohmann::ordered_json summary = engine::TriangulationSummaryJson(run);
+    summary["run_id"] = info.run_id;
+    summary["output"] = out_dir;
+    summary["cameras"] = cameras;
+    summary["track_ids"] = tracks;
+    nlohmann::ordered_json warnings = nlohmann::ordered_json::array();
+    for (const std::string& line : engine::InputWarningLines(run.warnings)) {
+      warnings.push_back({{"code", "input"}, {"message", line}});
+    }
+    for (const std::string& line : agreement) warnings.push_back({{"code", "cameras"}, {"message", line}});
+    if (!nobody.empty()) warnings.push_back({{"code", "no_predictions"}, {"message", nobody}});
+    summary["warnings"] = warnings;
+    std::cout << io::DumpJson(summary, 2) << "\n";
     std::cout.flush();
   } else {
-    // Tracks started over the run (a person lost longer than track.max_missing_frames comes back
-    // under a new id: a count well above the people in the scene says ids break).
-    const long tracks = metrics::CounterTotal(run.counts, "new_tracks");
     std::printf("%zu sequence(s), %ld frames, %d cameras, %ld persons triangulated (%.2f per frame), %ld track ids\n",
-                run.sequences.size(), run.frames, run.sequences.empty() ? 0 : run.sequences.front().cameras,
-                run.output_persons, run.frames > 0 ? static_cast<double>(run.output_persons) / run.frames : 0.0,
-                tracks);
+                run.sequences.size(), run.frames, cameras, run.output_persons,
+                run.frames > 0 ? static_cast<double>(run.output_persons) / run.frames : 0.0, tracks);
     std::printf("triangulated %ld frames in %.2f s (%.0f frames/s, %d thread(s) over %zu sequence(s))\n", run.frames,
                 run.wall_seconds, run.wall_seconds > 0 ? run.frames / run.wall_seconds : 0.0, run.threads,
                 run.sequences.size());
@@ -287,21 +315,7 @@ void RunTriangulate(const TriangulateArgs& args) {
     std::printf("results in %s\n", PrintableText(out_dir, LineBreaks::kEscape).c_str());
     std::fflush(stdout);
   }
-  const bool no_pose = run.counts.count_per_frame[static_cast<size_t>(Step::kUndistort)] == 0;
-  if (run.frames > 0 && run.output_persons == 0 && no_pose) {
-    // Nothing to triangulate: the cameras are not to blame (that warning sent users to the calibration).
-    std::fprintf(stderr,
-                 "warning: no person was triangulated in any of the %ld frames: the detections hold no usable 2D pose "
-                 "in any camera (every view empty, or no pose with enough confident joints)\n",
-                 run.frames);
-  } else if (run.frames > 0 && run.output_persons == 0) {
-    std::fprintf(stderr,
-                 "warning: no person was triangulated in any of the %ld frames: check that the cameras and the "
-                 "detections belong together (camera names, pixel units, image sizes; `rpt inspect`) and the "
-                 "calibration's convention (R and t map world to camera: x_cam = R X + t; in rpt's JSON, T is the "
-                 "camera's centre in the world; docs/cameras.md)\n",
-                 run.frames);
-  }
+  if (!nobody.empty()) std::fprintf(stderr, "warning: %s\n", nobody.c_str());
 }
 
 }  // namespace

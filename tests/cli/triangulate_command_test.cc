@@ -912,6 +912,22 @@ TEST_F(Triangulate, OwnDataMistakesAreSaidNotSilent) {
   EXPECT_EQ(nobody.exit_code, 0);
   EXPECT_NE(nobody.err.find("the detections hold no usable 2D pose in any camera"), std::string::npos) << nobody.err;
   EXPECT_EQ(nobody.err.find("calibration's convention"), std::string::npos) << nobody.err;
+  // --json holds what a script over many takes needs: the run, the folder, the counts of the text
+  // line and the warnings (it had none of them).
+  const test::CommandResult json = test::RunRpt("triangulate" + cameras + " --detections " + (dir_ / "blank.json").string() +
+                                                " --json --out " + (dir_ / "bj").string());
+  ASSERT_EQ(json.exit_code, 0) << json.err;
+  const Json printed = Json::parse(json.out);
+  EXPECT_EQ(printed["run_id"], ReadJson(dir_ / "bj" / "run.json")["run_id"]);
+  EXPECT_EQ(printed["output"], (dir_ / "bj").string());
+  EXPECT_EQ(printed["cameras"], scene_.cameras.size());
+  EXPECT_EQ(printed["track_ids"], 0);
+  ASSERT_FALSE(printed["warnings"].empty());
+  EXPECT_EQ(printed["warnings"].back()["code"], "no_predictions");
+  const Json tracked = Json::parse(
+      test::RunRpt("triangulate" + cameras + input + " --fps 25 --json --out " + (dir_ / "tj").string()).out);
+  EXPECT_GT(tracked["track_ids"].get<long>(), 0);
+  for (const Json& w : tracked["warnings"]) EXPECT_NE(w["code"], "no_predictions") << w;
 }
 
 }  // namespace
