@@ -6,10 +6,12 @@
 namespace rpt::cli {
 
 void AddExportOptions(CLI::App* command, ExportArgs* args) {
-  command->add_option("--export", args->formats,
-                      "files of 3D persons, comma-separated: json (predictions.json), csv (predictions.csv), trc "
-                      "(trc/, one file per track for OpenSim), npz (predictions.npz, numpy arrays frames x persons x "
-                      "joints x 4), h5 (predictions.h5, the same arrays in HDF5) (default json; docs/own_data.md)");
+  command
+      ->add_option("--export", args->formats,
+                   "files of 3D persons, comma-separated: json (predictions.json), csv (predictions.csv), trc "
+                   "(trc/, one file per track for OpenSim), npz (predictions.npz, numpy arrays frames x persons x "
+                   "joints x 4), h5 (predictions.h5, the same arrays in HDF5) (default json; docs/own_data.md)")
+      ->each([args](const std::string&) { args->formats_given = true; });
   command->add_flag("--no-predictions", args->no_predictions, "write no 3D persons to files (no predictions.json, no exports; long runs); --follow still writes its lines to stdout");
   command->add_flag("--no-filled-joints", args->no_filled_joints,
                     "write joints no view saw, placed from a neighbour (provenance 'filled'), as missing");
@@ -24,9 +26,9 @@ void AddExportOptions(CLI::App* command, ExportArgs* args) {
 engine::ExportOptions ExportOptionsOf(const ExportArgs& args) {
   engine::ExportOptions options;
   if (args.no_predictions) {
-    if (!args.formats.empty()) throw ConfigError("--no-predictions contradicts --export " + args.formats);
+    if (args.formats_given) throw ConfigError("--no-predictions contradicts --export " + args.formats);
     options.formats.clear();
-  } else if (!args.formats.empty()) {
+  } else if (args.formats_given) {  // '' is refused as any unknown name (it wrote JSON, the default)
     options.formats = engine::ParseExportFormats(args.formats);
   }
   options.filled_joints = !args.no_filled_joints;

@@ -11,7 +11,8 @@
 namespace rpt::cli {
 
 struct ExportArgs {
-  std::string formats;  // empty: json
+  std::string formats;  // not given: json
+  bool formats_given = false;  // --export was given (an empty value is refused, not the default)
   bool no_predictions = false;
   bool no_filled_joints = false;
   std::string trc_axes = "z-up";

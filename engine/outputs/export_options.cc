@@ -44,6 +44,7 @@ std::string_view ExportFileName(ExportFormat format) {
 }
 
 std::vector<ExportFormat> ParseExportFormats(const std::string& text) {
+  if (text.empty()) throw ConfigError("--export '': no format given (one or more of json, csv, trc, npz, h5)");
   std::vector<ExportFormat> formats;
   size_t start = 0;
   while (start <= text.size()) {

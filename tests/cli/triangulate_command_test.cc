@@ -702,6 +702,11 @@ TEST_F(Triangulate, BadInputExitsWith2NamingFileAndPlace) {
   EXPECT_EQ(no_file.exit_code, 2);
   EXPECT_NE(no_file.err.find("/no/such/cams.yml"), std::string::npos) << no_file.err;
   EXPECT_EQ(test::RunRpt("triangulate" + cameras).exit_code, 2) << "--cameras without --detections";
+  // An empty --export wrote JSON, the default, as if it had not been given.
+  const test::CommandResult no_format = test::RunRpt("triangulate" + cameras + " --detections " +
+                                                     (dir_ / "bad.json").string() + " --export ''");
+  EXPECT_EQ(no_format.exit_code, 2);
+  EXPECT_NE(no_format.err.find("error: --export '': no format given"), std::string::npos) << no_format.err;
   EXPECT_EQ(test::RunRpt("triangulate" + cameras + " --detections " + (dir_ / "bad.json").string() + " --export json,xls")
                 .exit_code,
             2);

@@ -383,6 +383,8 @@ def test_dataset_params_take_lists_as_the_cli_takes_comma_lists():
 def test_export_errors(predictions, tmp_path):
     with pytest.raises(rpt.ConfigError, match=r"^export.write: formats json,xls: 'xls' is not one of json, csv, trc, npz, h5"):
         rpt.export.write(tmp_path, predictions, "json,xls")
+    with pytest.raises(rpt.ConfigError, match=r"^export.write: formats '': no format given"):
+        rpt.export.write(tmp_path, predictions, "")
     with pytest.raises(rpt.ConfigError, match=r"trc_axes: 'x-up' is not z-up \| y-up"):
         rpt.export.write(tmp_path, predictions, "trc", trc_axes="x-up")
 
