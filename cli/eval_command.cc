@@ -133,6 +133,10 @@ void RunEval(const EvalArgs& args) {
   }
   if (run.losses) engine::PrintLossTable(std::cout, *run.losses);
   std::printf("results in %s\n", PrintableText(out_dir, LineBreaks::kEscape).c_str());
+  if (const std::string stale = engine::StaleReportWarning(out_dir); !stale.empty()) {
+    std::fflush(stdout);
+    std::fprintf(stderr, "warning: %s\n", stale.c_str());
+  }
   // Last, so they are what the user sees.
   std::fflush(stdout);
   engine::PrintWarnings(std::cerr, diagnostics);

@@ -315,6 +315,9 @@ void RunTriangulate(const TriangulateArgs& args) {
     std::printf("results in %s\n", PrintableText(out_dir, LineBreaks::kEscape).c_str());
     std::fflush(stdout);
   }
+  if (const std::string stale = engine::StaleReportWarning(out_dir); !stale.empty()) {
+    std::fprintf(stderr, "warning: %s\n", stale.c_str());
+  }
   if (!nobody.empty()) std::fprintf(stderr, "warning: %s\n", nobody.c_str());
 }
 

@@ -95,6 +95,14 @@ const std::vector<SummaryColumn>& SummaryColumns() {
   return columns;
 }
 
+std::string StaleReportWarning(const std::filesystem::path& dir) {
+  std::error_code ec;
+  if (!std::filesystem::exists(std::filesystem::symlink_status(dir / "report.html", ec))) return "";
+  const std::string folder = PrintableText(dir.string(), LineBreaks::kEscape);
+  return folder + "/report.html: the page of the earlier run here (carried over with the folder's other files): "
+                  "`rpt report " + folder + "` makes this run's";
+}
+
 void CheckSummaryValues(const nlohmann::json& summary, const std::string& source, const std::string& pointer) {
   if (!summary.is_object()) throw InputError(source + ": " + pointer + ": expected an object of metrics");
   for (const auto& [key, value] : summary.items()) {

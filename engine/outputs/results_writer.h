@@ -106,6 +106,11 @@ class RunFolder {
   std::unique_ptr<SinkList> sinks_;
 };
 
+// "<dir>/report.html: the page of the earlier run here (carried over with the folder's other files):
+// `rpt report <dir>` makes this run's" when the run folder `dir` holds a report.html (a run never
+// writes one), else "".
+std::string StaleReportWarning(const std::filesystem::path& dir);
+
 // run.json: run id, git revision, date, command ("command": one line for people; "argv": the
 // argument vector, which keeps paths with spaces whole), machine, threads, build, and
 // "input_warnings" (the readers' correction lines, [] when none).

@@ -83,6 +83,22 @@ TEST(ReportCommand, BidiOverridesInNamesAreShownAsText) {
   EXPECT_TRUE(data.dump().find(R"(isolate \\xe2\\x81\\xa6x\\xe2\\x81\\xa9)") != std::string::npos);
 }
 
+// A run into a folder holding a report.html keeps that page (the folder's other files are carried
+// over), which shows the earlier run: said, with the command that makes this run's.
+TEST(ReportCommand, ARerunSaysTheReportIsTheEarlierRuns) {
+  const fs::path dir = TempDir("report_stale");
+  ASSERT_TRUE(EvalAndReport(kSyntheticRun, dir, "--max-frames 2"));
+  const CommandResult again = RunRpt("eval " + std::string(kSyntheticRun) + " --quiet --out " + dir.string());
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_NE(again.err.find("warning: " + dir.string() + "/report.html: the page of the earlier run here"),
+            std::string::npos)
+      << again.err;
+  ASSERT_EQ(RunRpt("report " + dir.string()).exit_code, 0);
+  const fs::path fresh = TempDir("report_stale_fresh");
+  const CommandResult first = RunRpt("eval " + std::string(kSyntheticRun) + " --quiet --out " + fresh.string());
+  EXPECT_EQ(first.err.find("report.html"), std::string::npos) << first.err;
+}
+
 TEST(ReportCommand, ReadsBackPerJointCsvWithCommasInJointNames) {
   const fs::path dir = TempDir("report_per_joint");
   ASSERT_EQ(
