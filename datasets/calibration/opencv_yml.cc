@@ -144,12 +144,24 @@ std::vector<std::string> Suffixed(const std::vector<std::string>& keys, const st
   return out;
 }
 
+// ROS camera_info's (and other tools') lens names, in lower case: OpenCV's fisheye model (the
+// equidistant Kannala-Brandt model with k1..k4) or its radial-tangential one. Another name is an
+// error: read as radial-tangential, a fisheye lens projected up to 17.6 px off, silently.
 bool IsFisheye(const Nodes& nodes) {
   std::string key;
   if (const File* file = nodes.Find({"fisheye_model"}, &key)) return file->Number(key) != 0.0;
   if (const File* file = nodes.Find({"distortion_model"}, &key)) {
-    const std::string model = file->String(key);
-    return model == "fisheye" || model == "equidistant";
+    std::string model = file->String(key);
+    for (char& c : model) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    for (const char* name : {"fisheye", "equidistant", "kannala_brandt", "kannala-brandt"}) {
+      if (model == name) return true;
+    }
+    for (const char* name : {"plumb_bob", "radtan", "radial_tangential", "radial-tangential", "rational_polynomial"}) {
+      if (model == name) return false;
+    }
+    throw InputError(file->source + ": " + key + ": " + QuoteName(file->String(key)) +
+                     " is not a lens model rpt reads (plumb_bob, radtan, rational_polynomial: OpenCV's "
+                     "radial-tangential; fisheye, equidistant, kannala_brandt: OpenCV's fisheye)");
   }
   return false;
 }

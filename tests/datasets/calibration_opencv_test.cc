@@ -6,6 +6,8 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <fstream>
+#include <sstream>
 
 #include "core/errors.h"
 #include "core/printable_text.h"
@@ -121,6 +123,24 @@ distortion_coefficients:
   EXPECT_TRUE(camera.R.isIdentity());
   EXPECT_TRUE(camera.t.isZero());
   EXPECT_THAT(calibration.description.extrinsics, HasSubstr("the camera is the world origin"));
+  // The lens model's name decides the lens, whatever its case; a name rpt does not know is an error
+  // (kannala_brandt, a typo: read as radial-tangential, a fisheye lens was up to 17.6 px off).
+  std::stringstream read;
+  read << std::ifstream(path).rdbuf();
+  const std::string text = read.str();
+  int written = 0;
+  const auto with_model = [&](const std::string& model) {
+    std::string edited = text;
+    edited.replace(edited.find("plumb_bob"), 9, model);
+    edited.replace(edited.find("cols: 5"), 7, "cols: 4");  // a fisheye lens has 4 coefficients
+    edited.replace(edited.find(", 0.0]"), 6, "]");
+    return WriteCalibrationText(dir.path() / ("model" + std::to_string(written++) + ".yaml"), edited);
+  };
+  EXPECT_EQ(ReadCalibration(with_model("Kannala_Brandt")).cameras[0].model, DistortionModel::kFisheye);
+  EXPECT_EQ(ReadCalibration(with_model("EQUIDISTANT")).cameras[0].model, DistortionModel::kFisheye);
+  EXPECT_EQ(ReadCalibration(with_model("radtan")).cameras[0].model, DistortionModel::kOpenCV);
+  EXPECT_THAT(test::InputErrorOf([&] { ReadCalibration(with_model("plumb_bobb")); }),
+              HasSubstr("distortion_model: 'plumb_bobb' is not a lens model rpt reads"));
   // A parse error is reported at the file's own line (the added %YAML header is not counted).
   const auto bad =
       WriteCalibrationText(dir.path() / "bad.yaml", "image_width: 1280\ncamera_matrix:\n  rows: 3\n   data: [1, 2\n");
