@@ -10,6 +10,7 @@
 #include <iterator>
 #include <set>
 
+#include "core/closest_name.h"
 #include "core/errors.h"
 #include "core/printable_text.h"
 #include "datasets/calibration/opencv_yml.h"
@@ -203,7 +204,21 @@ Calibration ReadCameraGroupToml(const fs::path& path, const CalibrationReadOptio
   std::set<std::string> names;
   bool any_fisheye = false;
   int rotation_vectors = 0, rotation_matrices = 0;
+  // Keys of a camera table rpt does not read: a misspelt one (fish_eye = true) changed the lens
+  // without a word, so they are counted, the first named with the key it may mean.
+  static const std::vector<std::string> kCameraKeys = {"name",     "size",        "matrix", "distortions",
+                                                       "rotation", "translation", "fisheye"};
+  long unknown_keys = 0;
+  std::string first_unknown;
   for (const auto& [key, table] : tables) {
+    for (const auto& [item, node] : *table) {
+      const std::string item_key(item.str());
+      if (std::find(kCameraKeys.begin(), kCameraKeys.end(), item_key) != kCameraKeys.end()) continue;
+      if (unknown_keys++ == 0) {
+        first_unknown = QuoteName(item_key) + " in [" + PrintableText(key, LineBreaks::kEscape) + "]" +
+                        DidYouMeanKey(item_key, kCameraKeys);
+      }
+    }
     const CameraTable camera_table(*table, key, source);
     Camera camera = ReadCamera(camera_table, key, MetresPerUnit(options.units), source, warnings);
     (camera_table.Numbers("rotation").size() == 9 ? rotation_matrices : rotation_vectors) += 1;
@@ -212,6 +227,10 @@ Calibration ReadCameraGroupToml(const fs::path& path, const CalibrationReadOptio
     }
     any_fisheye |= camera.model == DistortionModel::kFisheye;
     calibration.cameras.push_back(std::move(camera));
+  }
+  if (warnings != nullptr) {
+    warnings->AddUnused(source, "keys in camera tables rpt does not read, ignored (the first: " + first_unknown + ")",
+                        unknown_keys);
   }
   if (any_fisheye) d.notes.emplace_back("fisheye cameras (fisheye = true)");
   const std::string matrix = "3x3 matrix (9 numbers, row by row)";

@@ -116,6 +116,20 @@ TEST(CalibrationToml, CamerasComeInFileOrderAndFisheyeIsRead) {
   EXPECT_DOUBLE_EQ(calibration.cameras[0].dist[3], -0.0004);
   EXPECT_EQ(calibration.cameras[1].model, DistortionModel::kFisheye);
   EXPECT_DOUBLE_EQ(calibration.cameras[1].dist[3], -0.0004);
+  // A misspelt key changed the lens without a word (fish_eye = true: radial-tangential): said.
+  InputWarnings none;
+  ReadCalibration(WriteCalibrationText(dir.path() / "c2.toml", text), {}, &none);
+  EXPECT_TRUE(none.empty()) << none.items()[0].Line();
+  std::string misspelt = text;
+  misspelt.replace(misspelt.find("fisheye = true"), 14, "fish_eye = true");
+  const auto path = WriteCalibrationText(dir.path() / "m.toml", misspelt);
+  InputWarnings warnings;
+  const Calibration read = ReadCalibration(path, {}, &warnings);
+  EXPECT_EQ(read.cameras[1].model, DistortionModel::kOpenCV);
+  ASSERT_EQ(warnings.items().size(), 1u);
+  EXPECT_EQ(warnings.items()[0].Line(),
+            path.string() + ": 1 keys in camera tables rpt does not read, ignored (the first: 'fish_eye' in [cam_10] "
+                            "(did you mean 'fisheye'?))");
 }
 
 TEST(CalibrationToml, WriterRoundTripsEveryLensModelThroughOurJson) {
