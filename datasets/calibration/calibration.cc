@@ -191,7 +191,16 @@ Calibration ReadCalibration(const fs::path& path, const CalibrationReadOptions& 
       calibration.description = DatasetReaderDescription(format, path);
       break;
     case CalibrationFormat::kPanoptic:
-      calibration.cameras = ReadPanopticCameras(path, "", warnings);
+      try {
+        calibration.cameras = ReadPanopticCameras(path, "", warnings);
+      } catch (const InputError& e) {
+        if (options.format != CalibrationFormat::kAuto) throw;
+        // Told from the content: a JSON of rpt's own layout with a 't' or 'distCoef' key is taken
+        // for Panoptic, and the error did not say so.
+        throw InputError(std::string(e.what()) +
+                         " (the file was read as a CMU Panoptic calibration, told by its cameras' 't', "
+                         "'distCoef' or 'resolution' keys; if it is rpt's JSON, give the format json)");
+      }
       calibration.description = DatasetReaderDescription(format, path);
       break;
     case CalibrationFormat::kFourDa:

@@ -59,6 +59,17 @@ TEST(CalibrationDatasets, PanopticFileIsConvertedToZUpMetres) {
   EXPECT_NEAR(uv.y(), 440, 1e-9);
   EXPECT_EQ(calibration.description.units, LengthUnit::kCentimetres);
   EXPECT_THAT(calibration.description.notes, testing::Contains(HasSubstr("(x, y, z) -> (x, z, -y)")));
+  // rpt's own JSON with a stray 't' is taken for Panoptic: the error says so (it named a missing
+  // 'resolution' only); with the format given the reader's error stays as it is.
+  const auto ours = WriteCalibrationText(dir.path() / "ours.json", R"({"cameras": [{"name": "a", "width": 1920,
+    "height": 1080, "K": [[1000, 0, 960], [0, 1000, 540], [0, 0, 1]], "R": [[1, 0, 0], [0, 1, 0], [0, 0, 1]],
+    "T": [[0], [0], [0]], "t": [[0], [0], [0]]}]})");
+  EXPECT_THAT(test::InputErrorOf([&] { ReadCalibration(ours); }),
+              HasSubstr("/cameras/0/resolution: missing (the file was read as a CMU Panoptic calibration"));
+  CalibrationReadOptions panoptic;
+  panoptic.format = CalibrationFormat::kPanoptic;
+  EXPECT_THAT(test::InputErrorOf([&] { ReadCalibration(ours, panoptic); }),
+              testing::Not(HasSubstr("was read as")));
 }
 
 TEST(CalibrationDatasets, FourDaFileIsWorldToCameraInMetres) {
