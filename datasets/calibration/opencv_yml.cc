@@ -298,6 +298,20 @@ Calibration ReadOpenCVCalibration(const fs::path& path, const CalibrationReadOpt
       d.extrinsics = "world to camera: x_cam = R X + T";
       d.rotation = rotation_key;
     } else {
+      // Keys that look like a pose under another name (rotation_matrix, translation_vector): the
+      // camera would sit at the world origin without a word.
+      std::string posed;
+      for (const auto& [name, value] : nodes.first().nodes) {
+        std::string lower = name;
+        for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        if (lower.find("rot") != std::string::npos || lower.find("trans") != std::string::npos) {
+          posed += (posed.empty() ? "" : ", ") + QuoteName(name);
+        }
+      }
+      if (!posed.empty()) {
+        throw InputError(source + ": no pose rpt reads (R, rvec or rotation with T, tvec, t or translation), but " +
+                         posed + ": rename them, or the camera would be the world origin");
+      }
       d.extrinsics = "none: the camera is the world origin (R = I, T = 0)";
       d.rotation = "none";
     }

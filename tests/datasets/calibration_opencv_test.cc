@@ -141,6 +141,14 @@ distortion_coefficients:
   EXPECT_EQ(ReadCalibration(with_model("radtan")).cameras[0].model, DistortionModel::kOpenCV);
   EXPECT_THAT(test::InputErrorOf([&] { ReadCalibration(with_model("plumb_bobb")); }),
               HasSubstr("distortion_model: 'plumb_bobb' is not a lens model rpt reads"));
+  // A pose under names rpt does not read would leave the camera at the world origin, silently.
+  const auto renamed = WriteCalibrationText(
+      dir.path() / "renamed.yaml",
+      text + "rotation_matrix:\n  rows: 3\n  cols: 3\n  data: [1, 0, 0, 0, 1, 0, 0, 0, 1]\n"
+             "translation_vector:\n  rows: 3\n  cols: 1\n  data: [0.5, 0, 3]\n");
+  EXPECT_THAT(test::InputErrorOf([&] { ReadCalibration(renamed); }),
+              HasSubstr(": no pose rpt reads (R, rvec or rotation with T, tvec, t or translation), but "
+                        "'rotation_matrix', 'translation_vector': rename them"));
   // A parse error is reported at the file's own line (the added %YAML header is not counted).
   const auto bad =
       WriteCalibrationText(dir.path() / "bad.yaml", "image_width: 1280\ncamera_matrix:\n  rows: 3\n   data: [1, 2\n");
