@@ -41,8 +41,10 @@ Camera MakeCamera(const std::string& name, int width, int height, py::handle K, 
   if (!t.is_none() && !center.is_none()) throw py::value_error("give t or center, not both");
   if (!t.is_none()) camera.t = Vector3From(t, "t");
   if (!center.is_none()) camera.t = -camera.R * Vector3From(center, "center");
+  py::ssize_t given = 0;  // coefficients given
   if (!dist.is_none()) {
     const py::array_t<double> d = CheckedArray(dist, "dist", {-1});
+    given = d.size();
     if (d.size() > 5) throw py::value_error("dist: " + std::to_string(d.size()) + " coefficients, at most 5");
     for (py::ssize_t i = 0; i < d.size(); ++i) camera.dist[static_cast<size_t>(i)] = d.at(i);
   }
@@ -55,6 +57,13 @@ Camera MakeCamera(const std::string& name, int width, int height, py::handle K, 
     if (text == model) camera.model = value, known = true;
   }
   if (!known) throw ConfigError("model: " + QuoteName(model) + " is not none | opencv | h36m | fisheye");
+  // 1-3 coefficients were padded with zeros: [k1, k2, k3] made k3 the tangential p1, silently (the
+  // file readers refuse such a list).
+  if (given > 0 && given < 4 && camera.model != DistortionModel::kNone) {
+    throw py::value_error("dist: " + std::to_string(given) + " coefficients; model=" + QuoteName(model) + " takes " +
+                          (camera.model == DistortionModel::kFisheye ? std::string("k1 k2 k3 k4")
+                                                                    : std::string("k1 k2 p1 p2 [k3] (4 or 5)")));
+  }
   // Coefficients the model does not use would be ignored without a word (an OpenCV dist passed
   // without model= gave the pinhole's pixels).
   const int used = camera.model == DistortionModel::kNone ? 0 : camera.model == DistortionModel::kFisheye ? 4 : 5;

@@ -330,6 +330,12 @@ def test_camera_errors():
     with pytest.raises(ValueError, match=r"dist: coefficient 5 is 0.05, but model='fisheye' uses the first 4"):
         rpt.Camera(width=1920, height=1080, K=K, dist=[0.3, 0.1, 0, 0, 0.05], model="fisheye")
     assert rpt.Camera(width=1920, height=1080, K=K, dist=[0.3, 0.1, 0, 0, 0.05], model="opencv").model == "opencv"
+    # Three coefficients were padded with zeros: the third, meant as k3, became the tangential p1.
+    with pytest.raises(ValueError, match=r"dist: 3 coefficients; model='opencv' takes k1 k2 p1 p2 \[k3\] \(4 or 5\)"):
+        rpt.Camera(width=1920, height=1080, K=K, dist=[0.3, 0.1, 0.05], model="opencv")
+    with pytest.raises(ValueError, match=r"dist: 2 coefficients; model='fisheye' takes k1 k2 k3 k4"):
+        rpt.Camera(width=1920, height=1080, K=K, dist=[0.3, 0.1], model="fisheye")
+    assert rpt.Camera(width=1920, height=1080, K=K, dist=[0.3, 0.1, 0, 0], model="opencv").model == "opencv"
     with pytest.raises(rpt.ConfigError, match=r"cameras.load: format: 'yaml' is not one of auto, json, opencv"):
         rpt.cameras.load("x.yml", format="yaml")
     camera = rpt.Camera(width=10, height=10, K=np.eye(3))
