@@ -66,8 +66,9 @@ void RegisterCamerasCommand(CLI::App& app) {
     const Calibration calibration = ReadCalibration(*in, convert_read->Parse(), &warnings);
     PrintInputWarnings(warnings);
     InputWarnings written;
-    io::CreateParentFolders(*out);
+    io::ParentFolders folders(*out);  // removed again when the write fails
     WriteCalibration(*out, calibration.cameras, convert_write->Parse(), &written);
+    folders.Keep();
     PrintInputWarnings(written);
     std::printf("%s -> %s: %zu cameras\n", PrintableText(*in).c_str(), PrintableText(*out).c_str(),
                 calibration.cameras.size());

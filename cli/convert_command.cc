@@ -71,8 +71,9 @@ void RunConvert(const ConvertArgs& args) {
   warnings.Merge(detections.warnings);  // empty unless read directly above
   engine::CheckStrict(args.input.strict, warnings);  // engine::LoadInput checked its own; this covers the direct read
   PrintInputWarnings(warnings);
+  std::vector<std::unique_ptr<io::ParentFolders>> folders;  // removed again, while empty, on failure
   for (const std::string& file : {args.out, args.labels_out, args.detections_out}) {
-    if (!file.empty()) io::CreateParentFolders(file);
+    if (!file.empty()) folders.push_back(std::make_unique<io::ParentFolders>(file));
   }
   if (!args.out.empty() && (!sequences.empty() || !detections.frames.empty())) {
     // Written beside the cache and renamed over it when complete: an interrupted or failed
@@ -110,6 +111,7 @@ void RunConvert(const ConvertArgs& args) {
     if (detections.frames.empty()) throw InputError("the input has no detections to write to " + args.detections_out);
     warn_replaced(args.detections_out, WriteGenericDetections(args.detections_out, detections));
   }
+  for (const auto& created : folders) created->Keep();
   long frames = 0;
   for (const Sequence& s : sequences) frames += static_cast<long>(s.frames.size());
   long frames_with_detections = 0;  // at least one person in some view (frames listed empty do not count)

@@ -394,12 +394,27 @@ ScratchFile::ScratchFile(const fs::path& name_like) { ::close(CreateRegisteredFi
 
 ScratchFile::~ScratchFile() { RemoveRegisteredFile(path_); }
 
-void CreateParentFolders(const fs::path& file) {
-  const fs::path parent = file.parent_path();
+ParentFolders::ParentFolders(const fs::path& file) {
   std::error_code ec;
-  if (parent.empty() || fs::exists(parent, ec)) return;
-  fs::create_directories(parent, ec);
-  if (ec) throw InputError(file.string() + ": cannot create its folder " + parent.string() + " (" + ec.message() + ")");
+  std::vector<fs::path> missing;  // innermost first
+  for (fs::path parent = file.parent_path(); !parent.empty() && !fs::exists(parent, ec); parent = parent.parent_path()) {
+    missing.push_back(parent);
+    if (parent == parent.parent_path()) break;
+  }
+  for (auto it = missing.rbegin(); it != missing.rend(); ++it) {
+    if (!fs::create_directory(*it, ec) && ec) {
+      const fs::path parent = file.parent_path();
+      throw InputError(file.string() + ": cannot create its folder " + parent.string() + " (" + ec.message() + ")");
+    }
+    created_.push_back(*it);
+  }
+}
+
+ParentFolders::~ParentFolders() {
+  for (auto it = created_.rbegin(); it != created_.rend(); ++it) {
+    std::error_code ec;
+    fs::remove(*it, ec);  // only an empty folder goes: one something was written into stays
+  }
 }
 
 int RemoveTemporariesForExit() {

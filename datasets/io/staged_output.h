@@ -115,7 +115,19 @@ class ScratchFile {
 
 // Creates the missing folders above a file the user names for a command's output (`rpt convert
 // --labels-out new/labels.json`), as --out creates its folder; throws InputError naming the file.
-void CreateParentFolders(const std::filesystem::path& file);
+// The destructor removes the folders it created, while they are empty, unless Keep() was called:
+// a command that fails leaves no empty folders behind.
+class ParentFolders {
+ public:
+  explicit ParentFolders(const std::filesystem::path& file);
+  ~ParentFolders();
+  ParentFolders(const ParentFolders&) = delete;
+  ParentFolders& operator=(const ParentFolders&) = delete;
+  void Keep() { created_.clear(); }
+
+ private:
+  std::vector<std::filesystem::path> created_;  // outermost first
+};
 
 // Removes every registered temporary (files and folders) and returns how many it removed. Keeps
 // the registry locked for good, so no thread creates or commits a temporary afterwards: call it

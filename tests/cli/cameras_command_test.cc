@@ -96,6 +96,22 @@ TEST(CamerasCommand, BadFilesAndValuesExit2NamingThem) {
   EXPECT_NE(format.err.find("out.bin"), std::string::npos) << format.err;
   EXPECT_FALSE(fs::exists(dir / "out.bin"));
 
+  // A write that fails leaves no folders it created behind (EasyMocap cannot hold a fisheye lens).
+  std::vector<Camera> fisheye = SceneCameras();
+  fisheye[0].model = DistortionModel::kFisheye;
+  fisheye[0].dist = {0.1, 0, 0, 0, 0};
+  WriteCalibration(dir / "fisheye.json", fisheye);
+  const test::CommandResult refused = test::RunRpt("cameras convert " + (dir / "fisheye.json").string() + " " +
+                                                   (dir / "new" / "sub" / "intri.yml").string());
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_NE(refused.err.find("EasyMocap has no fisheye model"), std::string::npos) << refused.err;
+  EXPECT_FALSE(fs::exists(dir / "new")) << "an empty folder was left behind";
+  EXPECT_EQ(test::RunRpt("cameras convert " + (dir / "cameras.json").string() + " " +
+                         (dir / "new" / "sub" / "intri.yml").string())
+                .exit_code,
+            0);
+  EXPECT_TRUE(fs::exists(dir / "new" / "sub" / "intri.yml"));
+
   // A format rpt only reads is not offered for writing: the help and the error list the written ones.
   const test::CommandResult read_only = test::RunRpt("cameras convert " + (dir / "cameras.json").string() + " " +
                                                      (dir / "cameras.txt").string() + " --out-format colmap");
