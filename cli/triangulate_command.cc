@@ -253,8 +253,8 @@ void RunTriangulate(const TriangulateArgs& args) {
   std::unique_ptr<Progress> progress = ProgressOf(input, !args.quiet);
   options.progress = ReportTo(progress.get());
   engine::RunInfo info = engine::CollectRunInfo(0);
-  info.input_digests = engine::InputDigests(args.input);
-  info.input_settings = engine::ResolvedInputSettings(args.input);  // compared by `rpt report` and `rpt render --run`
+  info.input_digests = engine::InputDigests(args.input);  // compared by `rpt report` and `rpt render --run`
+  info.input_settings = engine::ResolvedInputSettings(args.input);
   const std::string out_dir = !args.out.empty() ? args.out : DefaultOutDir(args.input, input);
   engine::CheckOutputOutsideInput(out_dir, args.input);
   if (args.out.empty()) CheckDefaultOutputHoldsThisInput(out_dir, info.input_digests);

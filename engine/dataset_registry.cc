@@ -74,11 +74,11 @@ std::vector<std::unique_ptr<FrameSource>> OpenDataset(const DatasetRequest& requ
 
 std::vector<Sequence> ReadDataset(const DatasetRequest& request) { return MaterializeAll(OpenDataset(request)); }
 
-std::string DatasetFrameIdPrefix(const std::string& dataset) {
+const DatasetInfo* FindDatasetInfo(const std::string& dataset) {
   for (const DatasetEntry& entry : DatasetRegistry()) {
-    if (entry.info.name == dataset) return entry.info.frame_id_prefix;
+    if (entry.info.name == dataset) return &entry.info;
   }
-  return "";
+  return nullptr;
 }
 
 }  // namespace rpt::engine

@@ -34,7 +34,7 @@ std::vector<std::unique_ptr<FrameSource>> OpenDataset(const DatasetRequest& requ
 // OpenDataset's sources materialised (MaterializeAll): every frame of every sequence in memory.
 // Frames are not validated here (the consumer validates: datasets/sequence.h).
 std::vector<Sequence> ReadDataset(const DatasetRequest& request);
-// The reader's DatasetInfo::frame_id_prefix ("" for an unknown name).
-std::string DatasetFrameIdPrefix(const std::string& dataset);
+// The reader called `dataset`'s description, or nullptr for an unknown name.
+const DatasetInfo* FindDatasetInfo(const std::string& dataset);
 
 }  // namespace rpt::engine

@@ -104,9 +104,8 @@ bool IsVoxelPoseCache(const std::string& path) {
 // ("openpose" for mvor, "voxelpose" for shelf); empty when it has none.
 std::vector<std::string> OwnDetectionValues(const std::string& dataset) {
   std::vector<std::string> values;
-  for (const DatasetEntry& entry : DatasetRegistry()) {
-    if (entry.info.name != dataset) continue;
-    for (const DatasetParam& param : entry.info.params) {
+  if (const DatasetInfo* info = FindDatasetInfo(dataset)) {
+    for (const DatasetParam& param : info->params) {
       if (param.name != "detections") continue;
       std::string rest = param.type;  // "none | voxelpose"
       while (!rest.empty()) {
@@ -254,7 +253,9 @@ Input OpenInput(const InputSpec& spec, const InputNeeds& needs) {
     // One file for all sequences: each frame goes to the sequence that holds its id.
     attached =
         std::make_shared<AttachedDetections>(ReadMappedDetections(spec.detections, spec.mapping), spec.detections);
-    if (spec.labels.empty()) attached->SetDatasetFrameIdPrefix(DatasetFrameIdPrefix(spec.dataset));
+    if (const DatasetInfo* info = FindDatasetInfo(spec.dataset); spec.labels.empty() && info != nullptr) {
+      attached->SetDatasetFrameIdPrefix(info->frame_id_prefix);
+    }
     opened.Merge(attached->file_warnings());  // once, however many sequences use it
     for (auto& source : sources) source = attached->Wrap(std::move(source));
   }
@@ -295,9 +296,8 @@ std::vector<std::pair<std::string, std::string>> ResolvedInputSettings(const Inp
   if (spec.cameras.empty()) {
     const DatasetRequest request = RequestOf(spec);
     settings.emplace_back("reader", request.dataset);
-    for (const DatasetEntry& entry : DatasetRegistry()) {
-      if (entry.info.name != request.dataset) continue;
-      for (const DatasetParam& param : entry.info.params) {
+    if (const DatasetInfo* info = FindDatasetInfo(request.dataset)) {
+      for (const DatasetParam& param : info->params) {
         const auto given = request.params.find(param.name);
         settings.emplace_back("param." + param.name, given != request.params.end() ? given->second : param.default_value);
       }

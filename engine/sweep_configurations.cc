@@ -12,6 +12,7 @@
 #include "core/text.h"
 #include "datasets/io/file_digest.h"
 #include "datasets/io/json_file.h"
+#include "datasets/io/json_string_scanner.h"
 #include "engine/json_text.h"
 
 namespace rpt::engine {
@@ -69,21 +70,11 @@ namespace {
 std::vector<std::string> SplitGridValues(std::string_view text) {
   std::vector<std::string> items;
   int depth = 0;
-  bool in_string = false, escaped = false;
+  io::JsonStringScanner strings;
   size_t start = 0;
   for (size_t i = 0; i <= text.size(); ++i) {
     const char c = i < text.size() ? text[i] : ',';
-    if (in_string) {
-      if (escaped) {
-        escaped = false;
-      } else if (c == '\\') {
-        escaped = true;
-      } else if (c == '"') {
-        in_string = false;
-      }
-      if (i < text.size()) continue;
-    }
-    if (c == '"') in_string = true;
+    if (strings.InString(c) && i < text.size()) continue;
     if (c == '[' || c == '{') ++depth;
     if ((c == ']' || c == '}') && depth > 0) --depth;
     if (c == ',' && (depth == 0 || i == text.size())) {

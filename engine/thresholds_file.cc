@@ -78,9 +78,8 @@ std::vector<std::string> DatasetNames() {
 // The parameter names `dataset` accepts (empty for an unknown dataset).
 std::vector<std::string> DatasetParamNames(const std::string& dataset) {
   std::vector<std::string> names;
-  for (const DatasetEntry& entry : DatasetRegistry()) {
-    if (entry.info.name != dataset) continue;
-    for (const DatasetParam& param : entry.info.params) names.push_back(param.name);
+  if (const DatasetInfo* info = FindDatasetInfo(dataset)) {
+    for (const DatasetParam& param : info->params) names.push_back(param.name);
   }
   return names;
 }

@@ -20,6 +20,7 @@
 #include "datasets/detections.h"
 #include "datasets/io/input_limits.h"
 #include "datasets/io/json_pull.h"
+#include "datasets/io/json_string_scanner.h"
 #include "datasets/readers/generic_common.h"
 
 namespace rpt {
@@ -27,36 +28,19 @@ namespace {
 
 using Kind = io::JsonPull::Kind;
 
-// Reads JSON text character by character and tells the blanks between tokens (which say nothing)
-// from the characters that count (those inside strings included).
-class JsonBlankFilter {
- public:
-  bool Keeps(char c) {
-    if (in_string_) {
-      if (escaped_) {
-        escaped_ = false;
-      } else if (c == '\\') {
-        escaped_ = true;
-      } else if (c == '"') {
-        in_string_ = false;
-      }
-      return true;
-    }
-    if (c == '"') in_string_ = true;
-    return c != ' ' && c != '\t' && c != '\r' && c != '\n';
-  }
-
- private:
-  bool in_string_ = false, escaped_ = false;
-};
+// Whether `c`, the next character of JSON text `strings` walks, counts: the blanks between tokens
+// say nothing (those inside strings do).
+bool Counts(io::JsonStringScanner* strings, char c) {
+  return strings->InString(c) || (c != ' ' && c != '\t' && c != '\r' && c != '\n');
+}
 
 // `line` without the blanks JSON allows between tokens: how a writer happened to space it does
 // not change what it says.
 std::string WithoutJsonBlanks(std::string_view line) {
   std::string out;
-  JsonBlankFilter filter;
+  io::JsonStringScanner strings;
   for (const char c : line) {
-    if (filter.Keeps(c)) out.push_back(c);
+    if (Counts(&strings, c)) out.push_back(c);
   }
   return out;
 }
@@ -65,9 +49,9 @@ std::string WithoutJsonBlanks(std::string_view line) {
 // differs from the joints line at its first key): no allocation.
 bool EqualWithoutJsonBlanks(std::string_view line, std::string_view expected) {
   size_t k = 0;
-  JsonBlankFilter filter;
+  io::JsonStringScanner strings;
   for (const char c : line) {
-    if (filter.Keeps(c) && (k >= expected.size() || expected[k++] != c)) return false;
+    if (Counts(&strings, c) && (k >= expected.size() || expected[k++] != c)) return false;
   }
   return k == expected.size();
 }

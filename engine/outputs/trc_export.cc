@@ -41,19 +41,19 @@ void TrcExport::BeginSequence(int sequence, const SequenceHeader& header, const 
   s.name = FileNameOf(header.name);  // one-to-one, never a path
   s.joints = output_joints;
   s.fps = header.fps;
+  s.steps.reserve(kRateSteps);
   std::error_code ec;
   std::filesystem::create_directories(dir_, ec);
   if (ec) throw InputError(dir_.string() + ": cannot create the folder: " + ec.message());
 }
 
-std::ofstream& TrcExport::TrackStream(Sequence* s, int track_id, long frame_idx, double time_s) {
+std::ofstream& TrcExport::TrackStream(Sequence* s, int track_id, double time_s) {
   auto [it, created] = s->tracks.try_emplace(track_id);
   Track& track = it->second;
   if (created) {
     // A new scratch file (never an existing name, so never through a link), removed with the track.
     track.scratch = std::make_unique<io::ScratchFile>(dir_ / (s->name + "_track" + std::to_string(track_id) + ".trc.part"));
     track.part = track.scratch->path();
-    track.first_frame = frame_idx;
     track.first_time_s = time_s;
   }
   track.last_time_s = time_s;
@@ -95,7 +95,7 @@ void TrcExport::Frame(const FrameOutput& frame) {
       throw InputError("--export trc: sequence " + QuoteName(s.name) + ", frame " + QuoteName(frame.input->id) +
                        ": the frame's time is unknown (a TRC row needs one; give --fps)");
     }
-    std::ofstream& out = TrackStream(&s, persons.track_ids[p], frame_idx, time_s);
+    std::ofstream& out = TrackStream(&s, persons.track_ids[p], time_s);
     Track& track = s.tracks[persons.track_ids[p]];
     // With the sequence's fps, Frame# follows the time (a skipped frame leaves a gap); never back.
     long frame_number = frame_idx + 1;

@@ -64,7 +64,7 @@ class TrcExport final : public FrameSink {
     std::filesystem::path part;                // its path
     std::unique_ptr<std::ofstream> out;  // null while closed
     long rows = 0;
-    long first_frame = 0, last_frame = 0;  // frame indices in the sequence
+    long last_frame = 0;  // the sequence's index of the track's last frame
     long first_number = 0, last_number = 0;  // Frame# of the first and last rows
     double first_time_s = 0, last_time_s = 0;
   };
@@ -80,7 +80,7 @@ class TrcExport final : public FrameSink {
     int open = 0;
     long files = 0;
   };
-  std::ofstream& TrackStream(Sequence* s, int track_id, long frame_idx, double time_s);
+  std::ofstream& TrackStream(Sequence* s, int track_id, double time_s);
   // Closes the track's part and writes its file.
   void FinishTrack(Sequence* s, int track_id, Track* track);
   void WriteFile(const Sequence& s, int track_id, const Track& track);
