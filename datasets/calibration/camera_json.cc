@@ -5,6 +5,7 @@
 #include <cmath>
 #include <unordered_set>
 
+#include "core/closest_name.h"
 #include "core/errors.h"
 #include "core/printable_text.h"
 #include "datasets/camera_plausibility.h"
@@ -26,6 +27,36 @@ OrderedJson MatrixJson(const Eigen::Matrix3d& m) {
   OrderedJson rows = OrderedJson::array();
   for (int r = 0; r < 3; ++r) rows.push_back({m(r, 0), m(r, 1), m(r, 2)});
   return rows;
+}
+
+// The keys of a camera object. A key the reader does not know was ignored without a word: "model":
+// "fisheye" for "type", or "dist" for "DC", gave a pinhole or undistorted camera and 3D off by
+// centimetres; they are counted, the first named with the key it may mean.
+const std::vector<std::string> kCameraKeys = {"name", "K", "DC", "R", "T", "width", "height", "type"};
+
+// The known key another tool's name for it stands for ("dist" is OpenCV's "DC"), else "".
+std::string KnownKeyForOtherName(const std::string& key) {
+  static const std::vector<std::pair<std::string, std::vector<std::string>>> kOtherNames = {
+      {"DC", {"D", "dist", "dist_coeffs", "distCoeffs", "distortion", "distortion_coefficients", "distortions",
+              "k_dist", "dc"}},
+      {"type", {"model", "lens", "camera_type", "camera_model", "distortion_model", "projection", "fisheye"}},
+      {"K", {"intrinsics", "intrinsic", "camera_matrix", "cameraMatrix", "matrix", "k", "M"}},
+      {"R", {"rotation", "rvec", "r", "rot", "rotation_matrix"}},
+      {"T", {"t", "translation", "tvec", "center", "centre", "C", "position"}},
+      {"width", {"image_width", "w"}},
+      {"height", {"image_height", "h"}},
+      {"name", {"id", "camera_name", "camera", "serial"}}};
+  for (const auto& [known, others] : kOtherNames) {
+    if (std::find(others.begin(), others.end(), key) != others.end()) return known;
+  }
+  return "";
+}
+
+// "'model' in /cameras/0 (did you mean 'type'?)"
+std::string UnknownKeyText(const std::string& key, const std::string& pointer) {
+  const std::string known = KnownKeyForOtherName(key);
+  return QuoteName(key) + " in " + pointer +
+         (known.empty() ? DidYouMeanKey(key, kCameraKeys) : " (did you mean '" + known + "'?)");
 }
 
 }  // namespace
@@ -102,13 +133,23 @@ std::vector<Camera> ParseCameras(const json& root, const std::string& pointer, c
   io::CheckCameraCount(list.size(), source + ": " + pointer);
   std::vector<Camera> cameras;
   std::unordered_set<std::string> names;
+  long unknown_keys = 0;
+  std::string first_unknown;
   for (size_t c = 0; c < list.size(); ++c) {
     cameras.push_back(ParseCamera(root, io::JsonPointerJoin(pointer, c), source, warnings));
+    for (const auto& [key, value] : list[c].items()) {
+      if (std::find(kCameraKeys.begin(), kCameraKeys.end(), key) != kCameraKeys.end()) continue;
+      if (unknown_keys++ == 0) first_unknown = UnknownKeyText(key, io::JsonPointerJoin(pointer, c));
+    }
     CountImplausibleCamera(cameras.back(), source, warnings);
     if (!names.insert(cameras.back().name).second) {
       Fail(source, io::JsonPointerJoin(pointer, c) + "/name",
            "camera name " + QuoteName(cameras.back().name) + " appears twice");
     }
+  }
+  if (warnings != nullptr) {
+    warnings->AddUnused(source, "keys in camera objects rpt does not read, ignored (the first: " + first_unknown + ")",
+                        unknown_keys);
   }
   return cameras;
 }

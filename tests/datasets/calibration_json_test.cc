@@ -64,10 +64,39 @@ TEST(CalibrationJson, EveryLensModelRoundTripsExactly) {
   rig.back().model = DistortionModel::kH36M;
   rig.back().dist = {-0.2, 0.24, -0.0016, -0.0007, -0.0028};
   WriteCalibration(dir.path() / "rig.json", rig);
-  const Calibration back = ReadCalibration(dir.path() / "rig.json");
+  InputWarnings warnings;
+  const Calibration back = ReadCalibration(dir.path() / "rig.json", {}, &warnings);
   test::ExpectSameProjections(rig, back.cameras);
   EXPECT_EQ(back.cameras[3].model, DistortionModel::kFisheye);
   EXPECT_EQ(back.cameras[4].model, DistortionModel::kH36M);
+  EXPECT_TRUE(warnings.empty());  // every key the writer writes is one the reader reads
+}
+
+// A key the reader does not know changed the camera without a word ("model": "fisheye" read as a
+// pinhole lens, "dist" as no distortion): such keys are counted as unused input (--strict refuses
+// them), the first named with the key it may mean, another tool's name for it or a typo.
+TEST(CalibrationJson, KeysTheReaderDoesNotKnowAreCountedTheFirstWithTheKeyItMayMean) {
+  test::TempDir dir;
+  std::string other_tool = kHandBuiltCamera;
+  other_tool.replace(other_tool.find("\"DC\""), 4, "\"dist\"");
+  const std::string second = R"({"name": "cam1", "model": "fisheye", "note": "bumped", "width": 1920, "height": 1080,
+   "K": [[1000, 0, 960], [0, 1000, 540], [0, 0, 1]], "R": [[1, 0, 0], [0, 0, -1], [0, 1, 0]], "T": [[1], [-4], [1.5]]})";
+  const auto path = WriteCalibrationText(dir.path() / "cameras.json", "{\"cameras\": [" + other_tool + ", " + second + "]}");
+  InputWarnings warnings;
+  const Calibration read = ReadCalibration(path, {}, &warnings);
+  EXPECT_EQ(read.cameras[1].model, DistortionModel::kNone);
+  ASSERT_EQ(warnings.items().size(), 1u);
+  EXPECT_EQ(warnings.items()[0].Line(), path.string() +
+                                            ": 3 keys in camera objects rpt does not read, ignored (the first: 'dist' "
+                                            "in /cameras/0 (did you mean 'DC'?))");
+  const auto typo = WriteCalibrationText(dir.path() / "typo.json",
+                                         "{\"cameras\": [" + std::string(R"({"name": "c", "tyep": "fisheye",)") +
+                                             kHandBuiltCamera.substr(kHandBuiltCamera.find("\"width\"")) + "]}");
+  InputWarnings typo_warnings;
+  ReadCalibration(typo, {}, &typo_warnings);
+  ASSERT_EQ(typo_warnings.items().size(), 1u);
+  EXPECT_THAT(typo_warnings.items()[0].Line(), HasSubstr("1 keys in camera objects rpt does not read, ignored (the "
+                                                         "first: 'tyep' in /cameras/0 (did you mean 'type'?))"));
 }
 
 TEST(CalibrationJson, ALabelsFileGivesTheCamerasOfItsFirstLabel) {
