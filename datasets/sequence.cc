@@ -5,7 +5,9 @@
 #include <set>
 
 #include "core/errors.h"
+#include "core/option_codec.h"
 #include "core/printable_text.h"
+#include "datasets/input_warnings.h"
 
 namespace rpt {
 namespace {
@@ -68,7 +70,13 @@ void ValidateFrame(const SequenceHeader& sequence, const SequenceFrame& frame, c
                          " contains NaN or infinity (a missing joint has score 0: its coordinates are ignored)");
       }
       if (score < 0 || score > 1) {
-        throw InputError(where() + ": detection score " + std::to_string(score) + " outside [0, 1]");
+        const size_t joint = i / 3 % static_cast<size_t>(view.num_joints);
+        throw InputError(where() + ": detection " + std::to_string(i / 3 / view.num_joints) + ", joint " +
+                         QuoteName(sequence.detection_joints[joint]) + ": score " + FormatNumber(score) +
+                         " outside [0, 1]" +
+                         (score > 1 ? " (values up to " + FormatNumber(kMaxScoreOvershoot) +
+                                          " are clamped to 1 where detections are read)"
+                                    : std::string()));
       }
     }
   }

@@ -29,16 +29,19 @@ py::array_t<double> CheckedArray(py::handle object, const std::string& what, std
   py::array array;
   if (py::isinstance<py::array>(object)) {
     array = py::reinterpret_borrow<py::array>(object);
-    const bool is_float64 = py::isinstance<py::array_t<double>>(object);
-    const bool is_float32 = py::isinstance<py::array_t<float>>(object);
-    if (!is_float64 && !is_float32) {
+    // Real numbers of any width, in any layout: a detector's `keypoints[..., :3]` (a strided slice),
+    // a Fortran-order or float32 array, integer pixels. The data is copied into C++ buffers anyway;
+    // anything but float64 in C order is converted in that copy. Booleans, complex numbers, objects
+    // and strings are no coordinates: refused, naming the argument.
+    const char kind = array.dtype().kind();
+    if (kind != 'f' && kind != 'i' && kind != 'u') {
       throw py::type_error(what + ": dtype " + py::str(array.dtype()).cast<std::string>() +
-                           ", expected float64 or float32");
+                           ", expected real numbers (float64, float32 or integers)");
     }
-    if (!(array.flags() & py::array::c_style)) {
-      throw py::value_error(what + ": the array is not C-contiguous (pass np.ascontiguousarray(...))");
+    const bool is_float64 = py::isinstance<py::array_t<double>>(object);
+    if (!is_float64 || !(array.flags() & py::array::c_style)) {
+      array = py::module_::import("numpy").attr("ascontiguousarray")(array, py::arg("dtype") = "float64");
     }
-    if (is_float32) array = py::array_t<double>(array);  // converted copy
   } else {
     // Lists and other sequences: numpy converts them; what is not numbers, or ragged, is this
     // argument's ValueError (py::array_t::ensure clears numpy's error and leaves none to raise).
@@ -75,6 +78,8 @@ void ViewFromArray(py::handle object, int num_joints, const std::string& what, P
     view->unavailable = true;
     return;
   }
+  // An empty list is a camera that saw nobody, as an array of no persons is (numpy makes it shape (0,)).
+  if ((py::isinstance<py::list>(object) || py::isinstance<py::tuple>(object)) && py::len(object) == 0) return;
   const py::array_t<double> array = CheckedArray(object, what, {-1, -1, 3});
   if (array.shape(0) > 0 && array.shape(1) != num_joints) {
     throw py::value_error(what + ": " + std::to_string(array.shape(1)) + " joints, expected " +

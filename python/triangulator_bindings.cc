@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cmath>
 #include <mutex>
+#include <optional>
 #include <span>
 #include <string>
 
@@ -21,9 +22,12 @@
 #include "datasets/detections.h"
 #include "datasets/input_warnings.h"
 #include "datasets/readers/generic_common.h"
+#include "engine/camera_agreement.h"
+#include "engine/config.h"
 #include "engine/frame_time_check.h"
 #include "engine/input.h"
 #include "engine/run.h"
+#include "engine/upright_check.h"
 #include "metrics/step_counts.h"
 #include "python/arrays.h"
 #include "python/bindings.h"
@@ -42,7 +46,9 @@ size_t FrameIndex(long i, size_t n) {
 
 double TimeOf(py::handle timestamp) {
   if (timestamp.is_none()) return kUnknownTime;
-  if (!py::hasattr(timestamp, "__float__")) {  // numbers, numpy scalars
+  // True has __float__ (1.0): a flag passed where the time goes was taken as second 1.
+  if (!py::hasattr(timestamp, "__float__") || py::isinstance<py::bool_>(timestamp) ||
+      py::isinstance(timestamp, py::module_::import("numpy").attr("bool_"))) {  // numbers, numpy scalars
     throw py::type_error("timestamp: expected seconds (a number) or None, got " +
                          py::str(py::type::of(timestamp).attr("__name__")).cast<std::string>());
   }
@@ -56,10 +62,16 @@ double TimeOf(py::handle timestamp) {
 }
 
 // (views, timestamp): a pair whose second item is a time (a number or None), not a second view.
+// A pair whose first item is a list of views and whose second is no view (a string, a bool: a bad
+// time) is one too, for TimeOf to name: it was read as a frame of two views ("2 views for 4 cameras").
 bool IsViewsAndTime(py::handle item) {
   if (!py::isinstance<py::tuple>(item) || py::len(item) != 2) return false;
-  const py::handle second = py::reinterpret_borrow<py::tuple>(item)[1];
-  return second.is_none() || py::isinstance<py::float_>(second) || py::isinstance<py::int_>(second);
+  const py::tuple pair = py::reinterpret_borrow<py::tuple>(item);
+  const py::handle second = pair[1];
+  if (second.is_none() || py::isinstance<py::float_>(second) || py::isinstance<py::int_>(second)) return true;
+  const bool second_is_view =
+      py::isinstance<py::array>(second) || py::isinstance<py::list>(second) || py::isinstance<py::tuple>(second);
+  return !second_is_view && (py::isinstance<py::list>(pair[0]) || py::isinstance<py::tuple>(pair[0]));
 }
 
 // Scores a little above 1 (a detector's 1.02) are clamped to 1 and counted under `source`, as the
@@ -132,8 +144,9 @@ class PyTriangulator {
       py::gil_scoped_release release;
       triangulator_.Process(frame_.views, frame_.timestamp_s, &persons_, &stats_);
     }
-    ++calls_;
     WarnAboutProcessTimes();
+    CheckCamerasOfProcess();
+    ++calls_;
     return py::make_tuple(PersonsArray(persons_), TrackIdsArray(persons_));
   }
 
@@ -149,11 +162,13 @@ class PyTriangulator {
     }
     Predictions out = Begin(sequence.name, sequence.fps);
     InputWarnings warnings;
+    std::vector<std::string> check_lines;
     {
       py::gil_scoped_release release;
-      Run(sequence.frames, &out, &warnings);
+      Run(sequence.frames, &out, &warnings, &check_lines);
     }
     WarnInput(engine::InputWarningLines(warnings));
+    WarnInput(check_lines);
     return out;
   }
 
@@ -168,18 +183,25 @@ class PyTriangulator {
       const std::string where = "frames[" + std::to_string(converted.size() - 1) + "]";
       frame.id = std::to_string(converted.size() - 1);
       frame.timestamp_s = kUnknownTime;
-      if (py::isinstance<Frame>(item)) {
-        const Frame& f = item.cast<const Frame&>();
-        frame.id = f.frame.id;
-        frame.timestamp_s = f.frame.timestamp_s;
-        frame.views = f.frame.views;
-        if (frame.views.empty()) frame.views.resize(header_.cameras.size());
-      } else if (IsViewsAndTime(item)) {
-        const py::tuple pair = py::reinterpret_borrow<py::tuple>(item);
-        frame.timestamp_s = TimeOf(pair[1]);
-        ViewsFromPython(pair[0], num_cameras(), num_joints(), &frame.views);
-      } else {
-        ViewsFromPython(item, num_cameras(), num_joints(), &frame.views);
+      // The frame's errors of shape, type and time say which frame (only the value checks did).
+      try {
+        if (py::isinstance<Frame>(item)) {
+          const Frame& f = item.cast<const Frame&>();
+          frame.id = f.frame.id;
+          frame.timestamp_s = f.frame.timestamp_s;
+          frame.views = f.frame.views;
+          if (frame.views.empty()) frame.views.resize(header_.cameras.size());
+        } else if (IsViewsAndTime(item)) {
+          const py::tuple pair = py::reinterpret_borrow<py::tuple>(item);
+          frame.timestamp_s = TimeOf(pair[1]);
+          ViewsFromPython(pair[0], num_cameras(), num_joints(), &frame.views);
+        } else {
+          ViewsFromPython(item, num_cameras(), num_joints(), &frame.views);
+        }
+      } catch (const py::value_error& e) {
+        throw py::value_error("process_sequence: " + where + ": " + e.what());
+      } catch (const py::type_error& e) {
+        throw py::type_error("process_sequence: " + where + ": " + e.what());
       }
       CorrectDetectorOutput("process_sequence", &frame.views, &clamped);
       ValidateFrame(header_, frame, "process_sequence: " + where);
@@ -187,11 +209,13 @@ class PyTriangulator {
     if (converted.empty()) throw py::value_error("process_sequence: no frames");
     Predictions out = Begin(header_.name, header_.fps);
     InputWarnings warnings = std::move(clamped);
+    std::vector<std::string> check_lines;
     {
       py::gil_scoped_release release;
-      Run(converted, &out, &warnings);
+      Run(converted, &out, &warnings, &check_lines);
     }
     WarnInput(engine::InputWarningLines(warnings));
+    WarnInput(check_lines);
     return out;
   }
 
@@ -200,6 +224,8 @@ class PyTriangulator {
     triangulator_.Reset();
     calls_ = 0;
     process_times_ = engine::FrameTimeCheck(triangulator_.options().track.max_gap_s);
+    process_agreement_.reset();
+    warned_cameras_ = false;
   }
 
   const Triangulator& triangulator() const { return triangulator_; }
@@ -244,11 +270,44 @@ class PyTriangulator {
     if (!warnings.empty()) WarnInput(engine::InputWarningLines(warnings));
   }
 
+  // process(): the CLI's checks of the persons against each camera's detections (a camera whose
+  // views were passed in another camera's place, engine/camera_agreement.h) and of which way is up
+  // (engine/upright_check.h), over the calls so far; said once, after kCheckCalls calls (and again
+  // at 10x that when nothing was said), until reset().
+  static constexpr long kCheckCalls = 300;
+  void CheckCamerasOfProcess() {
+    if (warned_cameras_) return;
+    if (!process_agreement_) {
+      process_agreement_.emplace(header_, triangulator_.output_joints(), -1);
+      process_upright_.emplace(triangulator_.output_joints());
+    }
+    process_agreement_->Add(calls_, frame_, persons_);
+    process_upright_->Add(persons_);
+    if (calls_ + 1 != kCheckCalls && calls_ + 1 != 10 * kCheckCalls) return;
+    std::vector<std::string> lines = CheckLines("Triangulator.process", process_agreement_->cameras(),
+                                                process_upright_->count());
+    warned_cameras_ = !lines.empty();
+    WarnInput(lines);
+  }
+
+  static std::vector<std::string> CheckLines(const std::string& source,
+                                             const std::vector<engine::CameraAgreement>& cameras,
+                                             const engine::UprightCount& upright) {
+    std::vector<std::string> lines = engine::CameraAgreementWarnings(source, cameras);
+    if (std::string line = engine::UprightWarning(source, upright); !line.empty()) lines.push_back(std::move(line));
+    return lines;
+  }
+
   // The loop of engine::Run's sequences (engine/run.cc, RunSequence): each frame triangulated in
   // order, through the offline smoother when smooth.mode = offline; the frame times' warnings
-  // (engine::FrameTimeCheck) into *warnings.
-  void Run(std::span<const SequenceFrame> frames, Predictions* out, InputWarnings* warnings) {
+  // (engine::FrameTimeCheck) into *warnings; the lines of the CLI's checks of the persons against
+  // the cameras (CheckLines) into *check_lines.
+  void Run(std::span<const SequenceFrame> frames, Predictions* out, InputWarnings* warnings,
+           std::vector<std::string>* check_lines) {
     engine::FrameTimeCheck times(triangulator_.options().track.max_gap_s);
+    engine::CameraAgreementCheck agreement(header_, triangulator_.output_joints(), static_cast<long>(frames.size()));
+    engine::UprightCheck upright(triangulator_.output_joints());
+    long frames_with_time = 0;
     const auto start = std::chrono::steady_clock::now();
     const TriangulatorOptions& options = triangulator_.options();
     const bool offline = options.track.enabled && options.smooth.mode == SmoothMode::kOffline;
@@ -270,11 +329,14 @@ class PyTriangulator {
         if (PyErr_CheckSignals() != 0) throw py::error_already_set();
       }
       times.Add(frame.timestamp_s);
+      frames_with_time += std::isfinite(frame.timestamp_s) ? 1 : 0;
       try {
         triangulator_.Process(frame.views.empty() ? no_views : frame.views, frame.timestamp_s, &persons_, &stats_);
       } catch (const InputError& e) {
         throw InputError(out->sequence + ": frame " + QuoteName(frame.id) + ": " + e.what());
       }
+      agreement.Add(done - 1, frame, persons_);
+      upright.Add(persons_);
       out->frame_ids.push_back(frame.id);
       out->timestamps_s.push_back(frame.timestamp_s);
       if (offline) {
@@ -298,6 +360,13 @@ class PyTriangulator {
     }
     out->wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     times.AddWarnings(out->sequence, out->fps, warnings);
+    if (frames_with_time == 0 && frames.size() > 1 && options.track.enabled) {
+      warnings->AddMissing(out->sequence,
+                           "frames without a timestamp: nothing is carried between frames (no tracking, no "
+                           "smoothing); pass (views, seconds) pairs",
+                           static_cast<long>(frames.size()));
+    }
+    *check_lines = CheckLines(out->sequence, agreement.cameras(), upright.count());
   }
 
   Triangulator triangulator_;
@@ -308,6 +377,9 @@ class PyTriangulator {
   FrameStats stats_;
   long calls_ = 0;
   engine::FrameTimeCheck process_times_;  // process()'s frames (WarnAboutProcessTimes)
+  std::optional<engine::CameraAgreementCheck> process_agreement_;  // process()'s (CheckCamerasOfProcess)
+  std::optional<engine::UprightCheck> process_upright_;
+  bool warned_cameras_ = false;
 };
 
 std::vector<Camera> CamerasOf(py::handle cameras) {
@@ -407,6 +479,7 @@ void RegisterTriangulator(py::module_& m) {
              // As every file's joint names: an unknown name ('left_ear' for 'ear_left') would be
              // carried along unused, and the joints derived from it computed without it.
              CheckJointNames(joint_names, "rpt.Triangulator: joint_names");
+             WarnInput(engine::ConfigWarnings(config));  // settings without effect, as the CLI says them
              py::gil_scoped_release release;
              return std::make_unique<PyTriangulator>(std::move(list), joint_names, config.triangulator, "python", 0.0);
            }),

@@ -33,15 +33,36 @@ def test_good_views_pass(rig):
     assert track_ids.shape == (1,)
 
 
-def test_wrong_dtype_raises_type_error(rig):
+def test_dtypes_that_are_no_real_numbers_raise_type_error(rig):
     _, triangulator = rig
     views = good_views(rig)
-    views[1] = views[1].astype(np.int64)
-    with pytest.raises(TypeError, match=r"views\[1\]: dtype int64, expected float64 or float32"):
-        triangulator.process(views)
     views[1] = np.array([["a"]], dtype=object)
-    with pytest.raises(TypeError, match=r"views\[1\]: dtype object"):
+    with pytest.raises(TypeError, match=r"views\[1\]: dtype object, expected real numbers"):
         triangulator.process(views)
+    views[1] = good_views(rig)[1] > 0
+    with pytest.raises(TypeError, match=r"views\[1\]: dtype bool, expected real numbers"):
+        triangulator.process(views)
+    views[1] = good_views(rig)[1].astype(np.complex128)
+    with pytest.raises(TypeError, match=r"views\[1\]: dtype complex128"):
+        triangulator.process(views)
+
+
+def test_integer_pixels_are_read_as_numbers(rig):
+    """Integer arrays are converted, as lists of integers are (a K of ints was refused as an array and
+    taken as a list)."""
+    _, triangulator = rig
+    views = [np.round(v * [1, 1, 0]).astype(np.int64) for v in good_views(rig)]
+    for v in views:
+        v[..., 2] = 1
+    as_float = [v.astype(np.float64) for v in views]
+    triangulator.reset()
+    expected = triangulator.process(as_float)[0]
+    triangulator.reset()
+    assert np.array_equal(triangulator.process(views)[0], expected)
+    triangulator.reset()
+    assert np.array_equal(triangulator.process([v.tolist() for v in views])[0], expected)
+    K = np.array([[1000, 0, 960], [0, 1000, 540], [0, 0, 1]])
+    assert np.array_equal(rpt.Camera(name="a", width=1920, height=1080, K=K, t=[0, 0, 5]).K, K)
 
 
 def test_float32_is_accepted(rig):
@@ -74,15 +95,34 @@ def test_wrong_number_of_views_raises(rig):
         triangulator.process({"a": 1})
 
 
-def test_non_contiguous_raises(rig):
+def test_any_layout_is_read(rig):
+    """A detector's (n, J, 4) output sliced to x, y, score, a Fortran-order or a float32 strided array:
+    read as the contiguous float64 copy would be."""
     _, triangulator = rig
     views = good_views(rig)
-    wide = np.zeros((1, JOINTS * 2, 3))
-    wide[:, ::2] = views[0]
-    views[0] = wide[:, ::2]
-    assert not views[0].flags.c_contiguous
-    with pytest.raises(ValueError, match=r"views\[0\]: the array is not C-contiguous"):
-        triangulator.process(views)
+    triangulator.reset()
+    expected = triangulator.process(views)[0]
+    with_extra = [np.concatenate([v, np.ones(v.shape[:2] + (1,))], axis=2) for v in views]
+    sliced = [v[:, :, :3] for v in with_extra]
+    assert not sliced[0].flags.c_contiguous
+    triangulator.reset()
+    assert np.array_equal(triangulator.process(sliced)[0], expected)
+    triangulator.reset()
+    assert np.array_equal(triangulator.process([np.asfortranarray(v) for v in views])[0], expected)
+    triangulator.reset()
+    as_float32 = triangulator.process([v.astype(np.float32)[:, :, :3] for v in with_extra])[0]
+    triangulator.reset()
+    assert np.array_equal(as_float32, triangulator.process([v.astype(np.float32) for v in views])[0])
+
+
+def test_an_empty_list_is_a_camera_that_saw_nobody(rig):
+    _, triangulator = rig
+    views = good_views(rig)
+    nobody = [views[0], np.zeros((0, JOINTS, 3)), views[2]]
+    triangulator.reset()
+    expected = triangulator.process(nobody)[0]
+    triangulator.reset()
+    assert np.array_equal(triangulator.process([views[0].tolist(), [], views[2].tolist()])[0], expected)
 
 
 def test_nan_and_bad_scores_raise_input_error(rig):
@@ -101,7 +141,11 @@ def test_nan_and_bad_scores_raise_input_error(rig):
     assert triangulator.process(np.stack(views))[0].shape == persons.shape
     views = good_views(rig)
     views[0][0, 3, 2] = 1.7
-    with pytest.raises(ValueError, match=r"detection score 1.7.* outside \[0, 1\]"):
+    with pytest.raises(ValueError, match=r"camera '.*': detection 0, joint '.*': score 1.7 outside \[0, 1\] "
+                                          r"\(values up to 1.5 are clamped to 1"):
+        triangulator.process(views)
+    views[0][0, 3, 2] = 1.5000001  # written as given, not rounded to a value that would be accepted
+    with pytest.raises(ValueError, match=r"score 1.5000001 outside"):
         triangulator.process(views)
     # A detector's 1.02 is clamped to 1 and warned about, as the file readers and live lines do.
     views[0][0, 3, 2] = 1.02
@@ -125,6 +169,24 @@ def test_nan_and_bad_scores_raise_input_error(rig):
     with pytest.raises(TypeError, match=r"^timestamp: expected seconds \(a number\) or None, got str$"):
         triangulator.process(good_views(rig), "x")
     assert triangulator.process(good_views(rig), np.float64(2.0))[0].shape == (1, 20, 4)  # numpy scalars are numbers
+    # A flag is no time (True has a float value, 1.0).
+    for flag in (True, np.bool_(True)):
+        with pytest.raises(TypeError, match=r"^timestamp: expected seconds \(a number\) or None, got (bool|bool_)$"):
+            triangulator.process(good_views(rig), flag)
+    # process_sequence's errors of a frame say which frame; a (views, "x") pair is a bad time, not a
+    # frame of two views.
+    frames = [(good_views(rig), float(i)) for i in range(4)]
+    frames[2] = (good_views(rig), "x")
+    with pytest.raises(TypeError, match=r"^process_sequence: frames\[2\]: timestamp: expected seconds"):
+        triangulator.process_sequence(frames)
+    frames[2] = (good_views(rig), np.float32(2.0))  # a numpy float32 time (no Python float) is a time
+    assert len(triangulator.process_sequence(frames)) == 4
+    frames[3] = (good_views(rig)[:2], 3.0)
+    with pytest.raises(ValueError, match=r"^process_sequence: frames\[3\]: views: 2 views for 3 cameras$"):
+        triangulator.process_sequence(frames)
+    frames[3] = (good_views(rig)[:2] + [np.zeros((1, 5, 3))], 3.0)
+    with pytest.raises(ValueError, match=r"^process_sequence: frames\[3\]: views\[2\]: 5 joints, expected 17"):
+        triangulator.process_sequence(frames)
     # A ragged list of views is the argument's ValueError, not an internal error.
     ragged = [[[[1.0, 2.0, 0.5]] * JOINTS, [[1.0, 2.0]] * JOINTS]] + good_views(rig)[1:]
     with pytest.raises(ValueError, match=r"not an array of numbers"):

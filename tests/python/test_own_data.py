@@ -194,3 +194,42 @@ def test_joints_at_pixel_origin_are_missing_in_process_as_in_the_files():
         view[:, 5, 2] = 0.0  # the same joints missing
     expected, _ = rpt.Triangulator.for_sequence(sequence).process(clean, 0.0)
     np.testing.assert_array_equal(persons, expected)
+
+
+def test_views_of_two_cameras_exchanged_are_warned_about_as_the_cli_does():
+    """The usual wiring mistake of a detector loop (views in another order than the cameras) gave
+    plausible persons without a word in Python, where `rpt triangulate` names both cameras: the
+    same check (engine/camera_agreement.h) runs at the end of process_sequence and after 300 calls
+    of process."""
+    import warnings
+
+    scene = rpt.synthetic.scene(cameras=5, people=3, frames=300, seed=3, noise="clean")
+    order = [1, 0, 2, 3, 4]
+    frames = [([f.views[i] for i in order], f.timestamp) for f in scene]
+    with pytest.warns(rpt.InputWarning) as caught:
+        rpt.Triangulator(scene.cameras, scene.joint_names).process_sequence(frames)
+    agreement = [str(w.message) for w in caught if "match its detections" in str(w.message)]
+    assert len(agreement) == 2, agreement
+    assert "camera 'cam0': only" in agreement[0] and "camera 'cam1': only" in agreement[1]
+
+    triangulator = rpt.Triangulator(scene.cameras, scene.joint_names)
+    with pytest.warns(rpt.InputWarning) as caught:
+        for views, time in frames:
+            triangulator.process(views, time)
+    assert sum("match its detections" in str(w.message) for w in caught) == 2
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", rpt.InputWarning)  # the right order: nothing to say
+        rpt.Triangulator(scene.cameras, scene.joint_names).process_sequence([(f.views, f.timestamp) for f in scene])
+        triangulator = rpt.Triangulator(scene.cameras, scene.joint_names)
+        for f in scene:
+            triangulator.process(f.views, f.timestamp)
+
+
+def test_settings_without_effect_and_frames_without_times_are_warned_about():
+    scene = rpt.synthetic.scene(cameras=3, people=1, frames=5, noise="clean")
+    with pytest.warns(rpt.InputWarning, match=r"smooth.mode=offline has no effect with track.enabled=false"):
+        rpt.Triangulator(scene.cameras, scene.joint_names, {"smooth.mode": "offline", "track.enabled": False})
+    with pytest.warns(rpt.InputWarning, match=r"^python: 5 frames without a timestamp: nothing is carried between "
+                                              r"frames \(no tracking, no smoothing\)"):
+        rpt.Triangulator(scene.cameras, scene.joint_names).process_sequence([f.views for f in scene])
