@@ -115,6 +115,21 @@ void CheckFollowArgs(const TriangulateArgs& args) {
   }
 }
 
+// A run of frames in which no person was triangulated: what to check; "" when some were.
+std::string NobodyTriangulatedWarning(const engine::RunResult& run) {
+  if (run.frames == 0 || run.output_persons > 0) return "";
+  return run.counts.count_per_frame[static_cast<size_t>(Step::kUndistort)] == 0
+             // Nothing to triangulate: the cameras are not to blame (that warning sent users to the calibration).
+             ? "no person was triangulated in any of the " + std::to_string(run.frames) +
+                   " frames: the detections hold no usable 2D pose in any camera (every view empty, or no pose "
+                   "with enough confident joints)"
+             : "no person was triangulated in any of the " + std::to_string(run.frames) +
+                   " frames: check that the cameras and the detections belong together (camera names, pixel "
+                   "units, image sizes; `rpt inspect`) and the calibration's convention (R and t map world to "
+                   "camera: x_cam = R X + t; in rpt's JSON, T is the camera's centre in the world; "
+                   "docs/cameras.md)";
+}
+
 // The camera-agreement warnings of every sequence (engine/camera_agreement.h), printed on stderr;
 // returned for run.json.
 std::vector<std::string> PrintCameraAgreement(const engine::RunResult& run) {
@@ -233,6 +248,9 @@ int RunFollow(const TriangulateArgs& args) {
                  lines.cut_bytes() > 0 ? ("is cut after " + std::to_string(lines.cut_bytes()) + " bytes").c_str()
                                        : "was not written");
   }
+  if (const std::string nobody = NobodyTriangulatedWarning(run); !nobody.empty()) {
+    std::fprintf(stderr, "warning: %s\n", nobody.c_str());
+  }
   if (folder) std::fprintf(stderr, "results in %s\n", PrintableText(args.out, LineBreaks::kEscape).c_str());
   return signal_number != 0 ? 128 + signal_number : 0;
 }
@@ -268,19 +286,7 @@ void RunTriangulate(const TriangulateArgs& args) {
   info.input_warnings = engine::InputWarningLines(run.warnings);
   info.input_warnings.insert(info.input_warnings.end(), agreement.begin(), agreement.end());
   // Nobody triangulated: said on stderr after the results, and in --json's warnings.
-  std::string nobody;
-  if (run.frames > 0 && run.output_persons == 0) {
-    nobody = run.counts.count_per_frame[static_cast<size_t>(Step::kUndistort)] == 0
-                 // Nothing to triangulate: the cameras are not to blame (that warning sent users to the calibration).
-                 ? "no person was triangulated in any of the " + std::to_string(run.frames) +
-                       " frames: the detections hold no usable 2D pose in any camera (every view empty, or no pose "
-                       "with enough confident joints)"
-                 : "no person was triangulated in any of the " + std::to_string(run.frames) +
-                       " frames: check that the cameras and the detections belong together (camera names, pixel "
-                       "units, image sizes; `rpt inspect`) and the calibration's convention (R and t map world to "
-                       "camera: x_cam = R X + t; in rpt's JSON, T is the camera's centre in the world; "
-                       "docs/cameras.md)";
-  }
+  const std::string nobody = NobodyTriangulatedWarning(run);
   folder.Finish(run, config, info);
   // Tracks started over the run (a person lost longer than track.max_missing_frames comes back
   // under a new id: a count well above the people in the scene says ids break).

@@ -52,6 +52,9 @@ def file_local_names(path):
                 names.append(('type', m.group(1), ''))
             elif m := CONSTANT.match(line):
                 names.append(('constant', m.group(1), ''))
+                # Further declarators of the line (`constexpr int kMin = 0, kMax = 9;`).
+                for other in re.findall(r',\s*([A-Za-z_]\w*)\s*=', line):
+                    names.append(('constant', other, ''))
             elif (m := FUNCTION.match(line)) and m.group(1) not in NOT_NAMES:
                 names.append(('function', m.group(1), ''))
     return names

@@ -10,62 +10,10 @@
 #include "core/option_codec.h"
 #include "core/printable_text.h"
 #include "core/text.h"
+#include "datasets/image_range_check.h"
 
 namespace rpt {
 namespace {
-
-// Detected joints further outside their camera's image than this share of its width (u) or
-// height (v): detectors place joints inside the image, or a little beyond its edge.
-constexpr double kMaxOutsideShare = 0.1;
-
-// Counts, per camera, the detected joints (score > 0) beyond its image by more than
-// kMaxOutsideShare of a side: detections of another image size or pixel scale than the
-// calibration's (half-resolution video, normalised coordinates read as pixels) or a wrong image size.
-void CountJointsOutsideImages(const Detections& detections, const std::vector<std::vector<int>>& view_camera,
-                              const std::vector<Camera>& cameras, const std::string& source, InputWarnings* warnings) {
-  std::vector<long> outside(cameras.size(), 0), detected(cameras.size(), 0);
-  std::vector<double> farthest(cameras.size(), 0.0), max_u(cameras.size(), 0.0), max_v(cameras.size(), 0.0);
-  for (size_t f = 0; f < detections.frames.size(); ++f) {
-    const FrameDetections& frame = detections.frames[f];
-    for (size_t v = 0; v < frame.views.size(); ++v) {
-      const int c = view_camera[f][v];
-      const double width = cameras[c].width, height = cameras[c].height;
-      const Poses2D& view = frame.views[v];
-      for (int p = 0; p < view.num_persons(); ++p) {
-        const auto person = view.Person(p);
-        for (int j = 0; j < view.num_joints; ++j) {
-          if (!(person(2, j) > 0)) continue;
-          ++detected[c];
-          max_u[c] = std::max(max_u[c], person(0, j));
-          max_v[c] = std::max(max_v[c], person(1, j));
-          const double beyond = std::max({-person(0, j) / width, (person(0, j) - width) / width,
-                                          -person(1, j) / height, (person(1, j) - height) / height});
-          if (!(beyond > kMaxOutsideShare)) continue;
-          ++outside[c];
-          farthest[c] = std::max(farthest[c], beyond);
-        }
-      }
-    }
-  }
-  for (size_t c = 0; c < cameras.size(); ++c) {
-    warnings->Add(source,
-                  "detected joints beyond the " + std::to_string(cameras[c].width) + "x" +
-                      std::to_string(cameras[c].height) + " image of camera " + QuoteName(cameras[c].name) +
-                      " by more than a tenth of its side (the calibration's image size, or the detections' pixel "
-                      "scale, wrong?)",
-                  "farthest beyond the edge, in image sides", farthest[c], outside[c]);
-    // The opposite: every joint in the top-left quarter (detections from a half-size image).
-    constexpr long kMinJointsForScale = 200;
-    if (detected[c] >= kMinJointsForScale && max_u[c] < 0.55 * cameras[c].width && max_v[c] < 0.55 * cameras[c].height) {
-      warnings->Add(source,
-                    "detected joints of camera " + QuoteName(cameras[c].name) + ", all in the top-left quarter of its " +
-                        std::to_string(cameras[c].width) + "x" + std::to_string(cameras[c].height) +
-                        " image (detections from a half-size image? scale them to the calibration's image size)",
-                    "largest u and v, in image sides",
-                    std::max(max_u[c] / cameras[c].width, max_v[c] / cameras[c].height), detected[c]);
-    }
-  }
-}
 
 // The number an id ends in ("000040", "take1_000040" -> 40); -1 for an id without one (or with
 // more than 15 digits).
@@ -168,7 +116,15 @@ std::unique_ptr<FrameSource> OpenDetectionFrames(std::vector<Camera> cameras, De
       (*view_camera)[f].push_back(it->second);
     }
   }
-  CountJointsOutsideImages(detections, *view_camera, cameras, source, &detections.warnings);
+  {
+    ImageRangeCheck image_range(cameras);
+    for (size_t f = 0; f < detections.frames.size(); ++f) {
+      for (size_t v = 0; v < detections.frames[f].views.size(); ++v) {
+        image_range.Add((*view_camera)[f][v], detections.frames[f].views[v]);
+      }
+    }
+    image_range.AddWarnings(source, &detections.warnings);
+  }
   SequenceHeader header;
   header.name = options.name;
   header.cameras = std::move(cameras);

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string_view>
 #include <unordered_map>
 #include <utility>
@@ -18,6 +19,7 @@
 #include "core/utf8.h"
 #include "core/pipeline/frame_size.h"
 #include "datasets/detections.h"
+#include "datasets/image_range_check.h"
 #include "datasets/io/input_limits.h"
 #include "datasets/io/json_pull.h"
 #include "datasets/io/json_string_scanner.h"
@@ -130,6 +132,7 @@ class DetectionLineSource final : public FrameSource {
       camera_names_.push_back(cameras[c].name);
     }
     header_.cameras = std::move(cameras);
+    image_range_.emplace(header_.cameras);
     ReadJointsLine();
     num_joints_ = static_cast<int>(header_.detection_joints.size());
     camera_seen_.assign(header_.cameras.size(), false);
@@ -177,6 +180,7 @@ class DetectionLineSource final : public FrameSource {
       }
       ++counts_->frames;
       counts_->frame_line_time = lines_->line_time();
+      CheckImageRange(*frame);
       return true;
     }
     Finish();
@@ -416,9 +420,22 @@ class DetectionLineSource final : public FrameSource {
     }
   }
 
+  // The joints against each camera's image (ImageRangeCheck), as a file's are checked; what the
+  // first kImageRangeFrames frames show is said at once (a stream in normalised coordinates or of
+  // a resized image gives no persons or wrong ones, for hours), the counts again at the end.
+  static constexpr long kImageRangeFrames = 100;
+  void CheckImageRange(const SequenceFrame& frame) {
+    for (size_t c = 0; c < frame.views.size(); ++c) image_range_->Add(static_cast<int>(c), frame.views[c]);
+    if (counts_->frames != kImageRangeFrames || !on_early_warning_) return;
+    InputWarnings early;
+    image_range_->AddWarnings(source_ + " (the first " + std::to_string(kImageRangeFrames) + " frames)", &early);
+    for (const InputWarning& warning : early.items()) on_early_warning_(warning.Line());
+  }
+
   // The stream ended (or was stopped): what was skipped or not read goes into the warnings.
   void Finish() {
     ended_ = true;
+    image_range_->AddWarnings(source_, &warnings_);
     if (counts_->bad_lines > 0) {
       warnings_.AddUnused(source_, "bad lines skipped (the first: " + counts_->first_bad_line + ")",
                           counts_->bad_lines);
@@ -464,6 +481,7 @@ class DetectionLineSource final : public FrameSource {
   std::size_t num_recent_ = 0;
   long frames_without_time_ = 0;
   long origin_joints_ = 0;  // joints at pixel (0, 0) read as missing (ReadOriginJointsAsMissing)
+  std::optional<ImageRangeCheck> image_range_;  // made once the cameras are in header_
   KeyCounts header_keys_{{"joints"}};
   KeyCounts frame_keys_;
   KeyCounts view_keys_;

@@ -12,7 +12,6 @@
 namespace rpt {
 namespace {
 
-constexpr std::int64_t kMaxInt = std::numeric_limits<int>::max();
 // Counts are bounded by TextTokens::CheckCount (what the rest of the file can hold), not here.
 constexpr std::int64_t kAnyCount = std::numeric_limits<std::int64_t>::max();
 constexpr std::int64_t kMaxSkeletonJoints = 10000;
@@ -65,7 +64,7 @@ void ParseDetectionFrame(io::TextTokens& tokens, std::int64_t frame, InputWarnin
 
 FourDaDetections ParseDetections(io::TextTokens& tokens, InputWarnings* warnings) {
   FourDaDetections out;
-  out.skel_type = static_cast<int>(tokens.Int(0, kMaxInt, [] { return std::string("header: skeleton type"); }));
+  out.skel_type = static_cast<int>(tokens.Int(0, std::numeric_limits<int>::max(), [] { return std::string("header: skeleton type"); }));
   if (out.skel_type != kFourDaBody25) {
     tokens.Fail("header: skeleton type " + std::to_string(out.skel_type) + " is not supported (only " +
                 std::to_string(kFourDaBody25) + " = BODY25, OpenPose's 25-joint model)");
@@ -97,7 +96,7 @@ FourDaSkeletons ParseSkeletons(io::TextTokens& tokens) {
       const auto where = [&] { return FramePrefix(f) + ", person " + std::to_string(p); };
       FourDaPerson& person = frame[static_cast<size_t>(p)];
       person.identity = static_cast<int>(
-          tokens.Int(std::numeric_limits<int>::min(), kMaxInt, [&] { return where() + ": identity"; }));
+          tokens.Int(std::numeric_limits<int>::min(), std::numeric_limits<int>::max(), [&] { return where() + ": identity"; }));
       if (!identities.insert(person.identity).second) {
         tokens.Fail(where() + ": identity " + std::to_string(person.identity) + " appears twice in this frame");
       }

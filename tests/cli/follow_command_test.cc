@@ -448,6 +448,47 @@ TEST_F(Follow, JointsAtPixelZeroAreMissing) {
   EXPECT_EQ(o.out, m.out);
 }
 
+// Detections in another pixel frame than the calibration's gave a live run that found nobody, or
+// wrong persons, without a word (the file's run warns): the stream's joints are checked against
+// each camera's image as a file's are, and a run that triangulated nobody says what to check.
+TEST_F(Follow, DetectionsInNormalisedCoordinatesAreNamed) {
+  std::vector<Camera> cameras = ReadCalibration(Cameras()).cameras;
+  std::vector<std::string> normalised;
+  for (int f = 0; f < kFrames; ++f) {
+    Json line = Json::parse(FrameLine(detections_, static_cast<size_t>(f), true));
+    for (Json& view : line["views"]) {
+      const Camera& camera = *std::find_if(cameras.begin(), cameras.end(),
+                                           [&](const Camera& c) { return c.name == view["camera"].get<std::string>(); });
+      for (Json& person : view["poses"]) {
+        for (Json& joint : person) {
+          if (joint.is_null()) continue;
+          joint[0] = joint[0].get<double>() / camera.width;
+          joint[1] = joint[1].get<double>() / camera.height;
+        }
+      }
+    }
+    normalised.push_back(line.dump());
+  }
+  const test::CommandResult r = test::RunRpt("triangulate --follow - --cameras " + Cameras() + " < " +
+                                             LinesFile("normalised.jsonl", normalised).string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const Camera& camera : cameras) {
+    EXPECT_NE(r.err.find(" detected joints of camera '" + camera.name + "', all within 1.5 pixels of the origin"),
+              std::string::npos)
+        << r.err;
+  }
+  EXPECT_NE(r.err.find("warning: no person was triangulated in any of the " + std::to_string(kFrames) + " frames"),
+            std::string::npos)
+      << r.err;
+  // The same stream in pixels: neither is said.
+  std::vector<std::string> pixels;
+  for (int f = 0; f < kFrames; ++f) pixels.push_back(FrameLine(detections_, static_cast<size_t>(f), true));
+  const test::CommandResult p = test::RunRpt("triangulate --follow - --cameras " + Cameras() + " < " +
+                                             LinesFile("pixels.jsonl", pixels).string());
+  ASSERT_EQ(p.exit_code, 0) << p.err;
+  EXPECT_EQ(p.err.find("warning"), std::string::npos) << p.err;
+}
+
 TEST_F(Follow, SkipBadLinesCountsThem) {
   std::vector<std::string> lines;
   for (int f = 0; f < 6; ++f) lines.push_back(FrameLine(detections_, static_cast<size_t>(f), true));
