@@ -2,10 +2,12 @@
 // `rpt convert`: any readable input (dataset or labels, with detections) into one HDF5 cache
 // that loads much faster than JSON; `--labels-out` / `--detections-out` also write the generic
 // JSON interchange files. Every command that takes --labels / --detections accepts the cache.
-// Every output is written beside its file and renamed over it when complete (io::StagedFile).
+// Every output is written beside its file, and all are renamed over their files once all are complete
+// (io::StagedFile).
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 
 #include "cli/commands.h"
 #include "cli/input_options.h"
@@ -75,41 +77,57 @@ void RunConvert(const ConvertArgs& args) {
   for (const std::string& file : {args.out, args.labels_out, args.detections_out}) {
     if (!file.empty()) folders.push_back(std::make_unique<io::ParentFolders>(file));
   }
+  // Every output is written beside its file first and all are renamed over their files at the end,
+  // one after the other: an interrupted or failed conversion leaves every old output as it was (the
+  // cache used to be renamed into place before the JSON files were written: an interrupt then left
+  // a new cache beside old JSON files, and said "finished outputs unchanged").
+  std::vector<std::unique_ptr<io::StagedFile>> staged;
+  // Runs `write` on the temporary of `file`; its errors name the file, not the temporary.
+  const auto stage = [&staged](const std::string& file, const std::function<void(const std::filesystem::path&)>& write) {
+    staged.push_back(std::make_unique<io::StagedFile>(file, io::NamedBy::kUser));
+    const std::string temporary = staged.back()->path().string();
+    try {
+      write(staged.back()->path());
+    } catch (const InputError& e) {
+      std::string message = e.what();
+      for (size_t at; (at = message.find(temporary)) != std::string::npos;) message.replace(at, temporary.size(), file);
+      throw InputError(message);
+    }
+  };
   if (!args.out.empty() && (!sequences.empty() || !detections.frames.empty())) {
-    // Written beside the cache and renamed over it when complete: an interrupted or failed
-    // conversion leaves the old cache as it was.
     std::error_code ec;
     const auto status = std::filesystem::status(args.out, ec);
     if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) {
       throw InputError(args.out + ": not a regular file (an HDF5 cache cannot be written to a device or pipe)");
     }
-    io::StagedFile cache(args.out, io::NamedBy::kUser);
-    try {
+    stage(args.out, [&](const std::filesystem::path& path) {
       Hdf5WriteOptions options;
       options.float64 = args.float64;
       if (!sequences.empty()) {
-        WriteSequencesHdf5(cache.path(), sequences, options);
+        WriteSequencesHdf5(path, sequences, options);
         options.add_to_existing = true;
       }
-      if (!detections.frames.empty()) WriteDetectionsHdf5(cache.path(), detections, options);
-    } catch (const InputError& e) {  // name the cache, not its temporary
-      std::string message = e.what();
-      const std::string temporary = cache.path().string();
-      for (size_t at; (at = message.find(temporary)) != std::string::npos;) message.replace(at, temporary.size(), args.out);
-      throw InputError(message);
-    }
-    cache.Commit();
+      if (!detections.frames.empty()) WriteDetectionsHdf5(path, detections, options);
+    });
   }
-  const auto warn_replaced = [](const std::string& file, int replaced) {
-    if (replaced > 0) {
-      std::fprintf(stderr, "warning: %s: %d string(s) not valid UTF-8 (frame ids, names); invalid bytes written as U+FFFD\n",
-                   file.c_str(), replaced);
-    }
-  };
-  if (!args.labels_out.empty()) warn_replaced(args.labels_out, WriteLabels(args.labels_out, sequences));
+  std::vector<std::pair<std::string, int>> replaced;  // per JSON output: strings not valid UTF-8
+  if (!args.labels_out.empty()) {
+    stage(args.labels_out, [&](const std::filesystem::path& path) {
+      replaced.emplace_back(args.labels_out, WriteLabels(path, sequences));
+    });
+  }
   if (!args.detections_out.empty()) {
     if (detections.frames.empty()) throw InputError("the input has no detections to write to " + args.detections_out);
-    warn_replaced(args.detections_out, WriteGenericDetections(args.detections_out, detections));
+    stage(args.detections_out, [&](const std::filesystem::path& path) {
+      replaced.emplace_back(args.detections_out, WriteGenericDetections(path, detections));
+    });
+  }
+  for (const auto& file : staged) file->Commit();
+  for (const auto& [file, count] : replaced) {
+    if (count > 0) {
+      std::fprintf(stderr, "warning: %s: %d string(s) not valid UTF-8 (frame ids, names); invalid bytes written as U+FFFD\n",
+                   file.c_str(), count);
+    }
   }
   for (const auto& created : folders) created->Keep();
   long frames = 0;

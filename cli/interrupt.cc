@@ -87,6 +87,10 @@ StopOnInterrupt::~StopOnInterrupt() {
 int StopOnInterrupt::signal_number() const { return Hook().signal_number.load(); }
 
 void InstallInterruptHandler() {
+  // A file size limit (ulimit -f) sends SIGXFSZ, whose default action killed rpt without a word
+  // and left its temporaries; ignored, the write fails with EFBIG instead, which is the error naming
+  // the file (exit 2) that every other failed write gives, and the temporaries are removed.
+  signal(SIGXFSZ, SIG_IGN);
   const sigset_t signals = InterruptSignals();
   pthread_sigmask(SIG_BLOCK, &signals, nullptr);
   std::thread(WaitForInterrupt, signals).detach();

@@ -8,6 +8,7 @@
 
 #include "cli/commands.h"
 #include "engine/config.h"
+#include "engine/output_place.h"
 #include "engine/report/report_data.h"
 #include "engine/report/report_html.h"
 #include "engine/report/report_run.h"
@@ -29,6 +30,7 @@ struct ReportArgs {
 
 void RunReport(const ReportArgs& args) {
   const engine::RecordedRun run = engine::ReadRecordedRun(args.run_dir);
+  if (!args.out.empty()) engine::CheckOutputOutsideRunFolder(args.out, run.dir);
   engine::Config config;
   engine::LoadConfigFile(run.dir / "config.json", &config);
   std::string why_no_input;

@@ -63,6 +63,8 @@ const DatasetEntry& FindDataset(const std::string& name) {
 
 }  // namespace
 
+void CheckDatasetName(const std::string& dataset) { FindDataset(dataset); }
+
 std::vector<std::unique_ptr<FrameSource>> OpenDataset(const DatasetRequest& request) {
   const DatasetEntry& entry = FindDataset(request.dataset);
   if (request.root.empty() && request.dataset != "synthetic") {  // the generated scene reads no files

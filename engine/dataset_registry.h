@@ -34,6 +34,8 @@ std::vector<std::unique_ptr<FrameSource>> OpenDataset(const DatasetRequest& requ
 // OpenDataset's sources materialised (MaterializeAll): every frame of every sequence in memory.
 // Frames are not validated here (the consumer validates: datasets/sequence.h).
 std::vector<Sequence> ReadDataset(const DatasetRequest& request);
+// Throws ConfigError for an unknown dataset name, listing the known ones (as OpenDataset does).
+void CheckDatasetName(const std::string& dataset);
 // The reader called `dataset`'s description, or nullptr for an unknown name.
 const DatasetInfo* FindDatasetInfo(const std::string& dataset);
 

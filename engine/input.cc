@@ -27,6 +27,7 @@ void CheckInputSpec(const InputSpec& spec) {
     throw ConfigError(std::string("give one of --dataset NAME (with --root DIR), --labels FILE") +
                       (spec.ground_truth ? "" : " or --cameras FILE (with --detections)"));
   }
+  CheckDatasetAndRoot(spec);
   if (!spec.cameras.empty()) {
     if (spec.detections.empty()) throw ConfigError("--cameras needs --detections FILE (the frames are its frames)");
     if (!spec.params.empty()) {
@@ -72,9 +73,14 @@ void CheckInputSpec(const InputSpec& spec) {
       throw ConfigError("--detector " + QuoteName(spec.detector) + ": unknown profile" +
                         DidYouMean(spec.detector, profiles) + "; known: " + Join(profiles));
   }
+}
+
+void CheckDatasetAndRoot(const InputSpec& spec) {
+  if (spec.dataset.empty() || !spec.labels.empty()) return;
+  CheckDatasetName(spec.dataset);
   // The synthetic dataset is generated: a folder given to it would be ignored unseen (a typo in a
   // thresholds file's root would turn its evaluation into a skipped one elsewhere).
-  if (spec.dataset == "synthetic" && spec.labels.empty() && !spec.root.empty())
+  if (spec.dataset == "synthetic" && !spec.root.empty())
     throw ConfigError("--root " + PrintableText(spec.root) + ": the synthetic dataset is generated and reads no folder");
 }
 

@@ -118,6 +118,8 @@ Input OpenInput(const InputSpec& spec, const InputNeeds& needs = {});
 // Throws ConfigError on input options that contradict each other or name nothing known (what
 // OpenInput checks before reading anything): a thresholds file checks its evaluations with it.
 void CheckInputSpec(const InputSpec& spec);
+// Of those checks, the dataset's: an unknown name, a --root the synthetic dataset does not read.
+void CheckDatasetAndRoot(const InputSpec& spec);
 
 // Opens and materialises (Input::Materialize, up to max_frames when >= 0), with --strict applied to the
 // whole input. Running out of memory is an InputError naming the input.

@@ -34,12 +34,15 @@ fs::path Resolved(const fs::path& path) {
 }  // namespace
 
 void CheckOutputOutsideInput(const fs::path& out, const InputSpec& spec) {
+  // The input's own mistakes first (an unknown dataset, a --root the synthetic dataset does not
+  // read): they were said as "the output lies inside the input folder".
+  CheckDatasetAndRoot(spec);
   const fs::path place = Resolved(out);
   for (const std::string& input : InputPaths(spec)) {
-    std::error_code ec;
     const fs::path resolved = Resolved(input);
-    const bool folder = fs::is_directory(resolved, ec);
-    const bool clash = folder ? Within(place, resolved) || Within(resolved, place) : place == resolved;
+    // A file inside the output folder too: a take folder holding the detector's predictions.json
+    // and cameras.json, given as --out, had the input replaced by the run's own predictions.json.
+    const bool clash = Within(place, resolved) || Within(resolved, place);
     if (!clash) continue;
     throw ConfigError("--out " + QuoteName(out.string()) + ": " +
                       (place == resolved ? std::string("is the input ")
@@ -48,6 +51,18 @@ void CheckOutputOutsideInput(const fs::path& out, const InputSpec& spec) {
                       QuoteName(input) +
                       "; rpt does not write into its input (the output folder is replaced as a whole): choose "
                       "a folder elsewhere");
+  }
+}
+
+void CheckOutputOutsideRunFolder(const fs::path& out, const fs::path& run_dir) {
+  const fs::path place = Resolved(out), run = Resolved(run_dir);
+  std::error_code ec;
+  if (place == run || (Within(place, run) && place.extension() != ".html" && fs::exists(place, ec))) {
+    throw ConfigError("--out " + QuoteName(out.string()) + ": " +
+                      (place == run ? std::string("is the run folder ") : std::string("is a file of the run folder ")) +
+                      QuoteName(run_dir.string()) +
+                      ", which this command reads: choose another name (the default is " +
+                      QuoteName((run_dir / "report.html").string()) + ")");
   }
 }
 

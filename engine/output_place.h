@@ -13,7 +13,12 @@ namespace rpt::engine {
 
 // Throws ConfigError naming the option and the input when `out` is a folder input of `spec`
 // (--root, an OpenPose folder given as --detections, --coco-images, ...), lies inside one, holds
-// one, or is an input file.
+// one, or holds an input file.
 void CheckOutputOutsideInput(const std::filesystem::path& out, const InputSpec& spec);
+
+// Throws ConfigError naming the option when the page `out` of `rpt report` (a file) is the run
+// folder `run_dir` or an existing file in it other than a page (*.html): `--out RUN/predictions.json`
+// replaced the predictions the report had just read.
+void CheckOutputOutsideRunFolder(const std::filesystem::path& out, const std::filesystem::path& run_dir);
 
 }  // namespace rpt::engine

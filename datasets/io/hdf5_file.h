@@ -9,6 +9,7 @@
 #include <hdf5.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -23,6 +24,7 @@
 #include "datasets/io/file_digest.h"
 #include "datasets/io/hdf5_preflight.h"
 #include "datasets/io/inflate_budget.h"
+#include "datasets/io/staged_output.h"
 
 namespace rpt::io {
 
@@ -118,7 +120,7 @@ inline constexpr const char* kChecksumAttribute = "crc32";
 // Creates (or adds to) an HDF5 file; every error names the file and the object path.
 class Hdf5Writer {
  public:
-  Hdf5Writer(const std::filesystem::path& path, bool add_to_existing) : source_(path.string()) {
+  Hdf5Writer(const std::filesystem::path& path, bool add_to_existing) : source_(path.string()), path_(path) {
     if (add_to_existing) {
       if (H5Fis_hdf5(path.c_str()) <= 0) Fail("", "cannot add to it: not an existing HDF5 file");
       std::error_code ec;
@@ -165,7 +167,7 @@ class Hdf5Writer {
     if (!dataset.valid()) Fail(place, "cannot create dataset");
     const hsize_t count = std::accumulate(dims.begin(), dims.end(), hsize_t{1}, std::multiplies<>());
     if (count > 0 && H5Dwrite(dataset.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0) {
-      Fail(place, "write failed");
+      Fail(place, "write failed (" + WriteFailureReason(path_, errno) + ")");
     }
     return dataset;
   }
@@ -224,12 +226,13 @@ class Hdf5Writer {
   }
 
   void Close() {
-    if (H5Fflush(file_.get(), H5F_SCOPE_GLOBAL) < 0) Fail("", "flush failed");
+    if (H5Fflush(file_.get(), H5F_SCOPE_GLOBAL) < 0) Fail("", "flush failed (" + WriteFailureReason(path_, errno) + ")");
     file_ = Hdf5Id();
   }
 
  private:
   std::string source_;
+  std::filesystem::path path_;
   Hdf5Id file_;
 };
 

@@ -88,13 +88,13 @@ void NpzWriter::Fail(const std::string& what) const { throw InputError(staged_.t
 
 std::uint64_t NpzWriter::Position() {
   const std::streamoff at = out_.tellp();
-  if (at < 0) Fail(std::string("write failed: ") + std::strerror(errno));
+  if (at < 0) Fail("write failed (" + WriteFailureReason(staged_.path(), errno) + ")");
   return static_cast<std::uint64_t>(at);
 }
 
 void NpzWriter::Put(const void* data, std::size_t bytes) {
   out_.write(static_cast<const char*>(data), static_cast<std::streamsize>(bytes));
-  if (!out_) Fail(std::string("write failed: ") + std::strerror(errno));
+  if (!out_) Fail("write failed (" + WriteFailureReason(staged_.path(), errno) + ")");
 }
 
 void NpzWriter::BeginArray(const std::string& name, const std::string& descr, const std::vector<std::int64_t>& shape) {
@@ -172,7 +172,7 @@ void NpzWriter::EndArray() {
   out_.seekp(static_cast<std::streamoff>(member.local_offset + 14));
   Put(crc.data(), crc.size());
   out_.seekp(static_cast<std::streamoff>(end));
-  if (!out_) Fail(std::string("write failed: ") + std::strerror(errno));
+  if (!out_) Fail("write failed (" + WriteFailureReason(staged_.path(), errno) + ")");
   open_member_ = false;
 }
 
@@ -238,7 +238,7 @@ void NpzWriter::Commit() {
   PutU16(&directory, 0);  // comment
   Put(directory.data(), directory.size());
   out_.close();
-  if (!out_) Fail(std::string("write failed: ") + std::strerror(errno));
+  if (!out_) Fail("write failed (" + WriteFailureReason(staged_.path(), errno) + ")");
   staged_.Commit();
 }
 

@@ -3,6 +3,7 @@
 
 #include <fcntl.h>
 #include <sys/stat.h>
+#include <sys/statvfs.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -91,6 +92,24 @@ bool IsDeviceOrFifo(const fs::file_status& status) {
 }
 
 std::string ErrnoText() { return std::strerror(errno); }
+
+}  // namespace
+
+std::string WriteFailureReason(const fs::path& file, int saved_errno) {
+  switch (saved_errno) {
+    case ENOSPC: case EDQUOT: case EFBIG: case EIO: case EROFS: case EACCES: case EPERM: case EISDIR: case ENXIO:
+    case EPIPE:
+      return std::strerror(saved_errno);
+    default:
+      break;
+  }
+  struct statvfs space {};
+  const fs::path folder = file.has_parent_path() ? file.parent_path() : fs::path(".");
+  if (::statvfs(folder.c_str(), &space) == 0 && space.f_bavail == 0) return std::strerror(ENOSPC);
+  return "reason unknown";
+}
+
+namespace {
 
 // Flushes a file's (or a folder's) data and entries to disk.
 bool SyncToDisk(const fs::path& path, bool folder) {
@@ -217,7 +236,7 @@ void StagedFile::Commit() {
     return;
   }
   if (!SyncToDisk(temporary_, /*folder=*/false)) {
-    throw InputError(target_.string() + ": write failed (" + ErrnoText() + ")");
+    throw InputError(target_.string() + ": write failed (" + WriteFailureReason(temporary_, errno) + ")");
   }
   Registry& registry = TheRegistry();
   std::lock_guard<std::mutex> lock(registry.mutex);

@@ -28,6 +28,13 @@ enum class NamedBy {
           // (a pipe, a terminal, a log file stdout is redirected to: appended there, never truncated)
 };
 
+// Why a write to `file` failed, for "write failed (<reason>)": strerror of `saved_errno` when it is
+// an error a write gives (no space, quota, file too large, I/O, read-only, permission); otherwise
+// (a stream's failure leaves errno to whatever call came last: "No such file or directory" was said
+// of a full disk) "No space left on device" when the file's file system has no free block left,
+// else "reason unknown".
+std::string WriteFailureReason(const std::filesystem::path& file, int saved_errno);
+
 // A file written under a temporary name in the target's folder, then renamed over the target by
 // Commit(). Destroyed without Commit(), the temporary is removed and the target stays as it was.
 // A link at the target is replaced (the file it points to is not touched); so is a device or FIFO

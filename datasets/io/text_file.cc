@@ -15,7 +15,7 @@ void WriteTextFile(const std::filesystem::path& path, NamedBy named_by,
   if (!out) throw InputError(path.string() + ": cannot open for writing");
   write(out);
   out.close();
-  if (!out) throw InputError(path.string() + ": write failed");
+  if (!out) throw InputError(path.string() + ": write failed (" + WriteFailureReason(staged.path(), errno) + ")");
   staged.Commit();
 }
 

@@ -68,7 +68,7 @@ DatasetInfo SyntheticInfo() {
   DatasetInfo info;
   info.name = kName;
   info.description = "generated scene (walking people, camera rig) with a simulated 2D detector; no files needed";
-  info.layout = "nothing on disk (--root is ignored)";
+  info.layout = "nothing on disk (generated; --root is refused)";
   info.params = DescribeDatasetParams<SyntheticParams>();
   return info;
 }

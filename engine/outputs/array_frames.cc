@@ -106,7 +106,7 @@ void ArrayFrames::Frame(const FrameOutput& frame) {
 void ArrayFrames::EndSequence(int sequence) {
   Sequence& s = *sequences_[sequence];
   s.out.flush();
-  if (!s.out) throw InputError(s.path.string() + ": write failed: " + std::strerror(errno));
+  if (!s.out) throw InputError(s.path.string() + ": write failed (" + io::WriteFailureReason(s.path, errno) + ")");
   s.out.close();
 }
 

@@ -32,7 +32,7 @@ std::ostream& PartFiles::Open(int sequence) {
 void PartFiles::Close(int sequence) {
   Part& part = parts_[sequence];
   part.out.flush();
-  if (!part.out) throw InputError(part.path.string() + ": write failed: " + std::strerror(errno));
+  if (!part.out) throw InputError(part.path.string() + ": write failed (" + io::WriteFailureReason(part.path, errno) + ")");
   part.out.close();
 }
 

@@ -66,7 +66,7 @@ void PredictionsWriter::Frame(const FrameOutput& frame) {
 void PredictionsWriter::EndSequence(int sequence) {
   Part& part = *parts_[sequence];
   part.out.flush();
-  if (!part.out) throw InputError(part.path.string() + ": write failed: " + std::strerror(errno));
+  if (!part.out) throw InputError(part.path.string() + ": write failed (" + io::WriteFailureReason(part.path, errno) + ")");
   part.out.close();
 }
 

@@ -62,7 +62,7 @@ std::ofstream& TrcExport::TrackStream(Sequence* s, int track_id, double time_s) 
       for (auto& [id, other] : s->tracks) {
         if (other.out == nullptr) continue;
         other.out->flush();
-        if (!*other.out) throw InputError(other.part.string() + ": write failed: " + std::strerror(errno));
+        if (!*other.out) throw InputError(other.part.string() + ": write failed (" + io::WriteFailureReason(other.part, errno) + ")");
         other.out.reset();
       }
       s->open = 0;
@@ -145,7 +145,7 @@ void TrcExport::Frame(const FrameOutput& frame) {
 void TrcExport::FinishTrack(Sequence* s, int track_id, Track* track) {
   if (track->out != nullptr) {
     track->out->flush();
-    if (!*track->out) throw InputError(track->part.string() + ": write failed: " + std::strerror(errno));
+    if (!*track->out) throw InputError(track->part.string() + ": write failed (" + io::WriteFailureReason(track->part, errno) + ")");
     track->out.reset();
     --s->open;
   }

@@ -736,17 +736,31 @@ TEST_F(Triangulate, AnOutputFolderInTheInputIsRefused) {
   const std::vector<std::string> before = files();
   const std::string run = "triangulate --cameras " + (dir_ / "cameras.json").string() + " --detections " +
                           (dir_ / "openpose").string() + " --quiet --out ";
-  const std::vector<std::pair<fs::path, std::string>> cases = {{dir_ / "openpose", "is the input"},
-                                                               {dir_ / "openpose" / "run", "lies inside the input folder"},
-                                                               {dir_, "holds the input"}};
-  for (const auto& [out, what] : cases) {
+  // The folder that holds the calibration file is refused too (the first input it holds is named).
+  const std::vector<std::tuple<fs::path, std::string, fs::path>> cases = {
+      {dir_ / "openpose", "is the input", dir_ / "openpose"},
+      {dir_ / "openpose" / "run", "lies inside the input folder", dir_ / "openpose"},
+      {dir_, "holds the input", dir_ / "cameras.json"}};
+  for (const auto& [out, what, input] : cases) {
     const test::CommandResult r = test::RunRpt(run + out.string());
     EXPECT_EQ(r.exit_code, 2) << out;
-    EXPECT_NE(r.err.find("--out '" + out.string() + "': " + what + " '" + (dir_ / "openpose").string() +
+    EXPECT_NE(r.err.find("--out '" + out.string() + "': " + what + " '" + input.string() +
                          "'; rpt does not write into its input"),
               std::string::npos)
         << r.err;
   }
+  // A take folder holding the detector's predictions.json, given as --out: the run's own
+  // predictions.json replaced the detections (exit 0; the next run failed on them).
+  fs::create_directories(dir_ / "take");
+  WriteGenericDetections(dir_ / "take" / "predictions.json", Coco17(scene_, ids));
+  const std::string detections_before = test::ReadAll(dir_ / "take" / "predictions.json");
+  const test::CommandResult take = test::RunRpt("triangulate --cameras " + (dir_ / "cameras.json").string() +
+                                                " --detections " + (dir_ / "take" / "predictions.json").string() +
+                                                " --quiet --out " + (dir_ / "take").string());
+  EXPECT_EQ(take.exit_code, 2) << take.err;
+  EXPECT_NE(take.err.find("holds the input '" + (dir_ / "take" / "predictions.json").string() + "'"), std::string::npos)
+      << take.err;
+  EXPECT_EQ(test::ReadAll(dir_ / "take" / "predictions.json"), detections_before);
   const test::CommandResult slash = test::RunRpt(run + (dir_ / "openpose").string() + "/");  // a trailing separator
   EXPECT_EQ(slash.exit_code, 2) << slash.err;
   EXPECT_NE(slash.err.find("is the input"), std::string::npos) << slash.err;

@@ -292,6 +292,20 @@ TEST(ReportCommand, BadInputExitsTwoNamingTheFile) {
   }
   std::ofstream(dir / "summary.json") << good_summary;
 
+  // --out naming a file of the run folder the report reads (or the folder): refused before anything
+  // is written (`--out RUN/predictions.json` replaced the predictions with the page, exit 0). A page
+  // of another name in the folder is fine.
+  const std::string predictions_before = ReadAll(dir / "predictions.json");
+  for (const fs::path& out : {dir / "predictions.json", dir, dir / "." / "summary.json"}) {
+    r = RunRpt("report " + dir.string() + " --out " + out.string());
+    EXPECT_EQ(r.exit_code, 2) << out;
+    EXPECT_NE(r.err.find("--out '" + out.string() + "': is "), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("which this command reads"), std::string::npos) << r.err;
+  }
+  EXPECT_EQ(ReadAll(dir / "predictions.json"), predictions_before);
+  r = RunRpt("report " + dir.string() + " --out " + (dir / "second.html").string());
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+
   // The predictions of another run copied in: the page would draw them beside this run's summary.
   const fs::path other = TempDir("report_other_run");
   ASSERT_TRUE(EvalAndReport("--dataset synthetic --param frames=3", dir));
