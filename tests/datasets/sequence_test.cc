@@ -18,6 +18,7 @@ namespace rpt {
 namespace {
 
 using ::testing::HasSubstr;
+using ::testing::EndsWith;
 
 // A valid sequence: three cameras, two frames of two persons with views and 2D labels.
 Sequence ValidSequence() {
@@ -81,7 +82,11 @@ TEST(SequenceValidation, FrameErrorsNameTheFrameAndCamera) {
 
   sequence = ValidSequence();
   sequence.frames[0].views[1].data[5] = 1.2;
-  EXPECT_THAT(ErrorOf(sequence), HasSubstr("src: frame 's_000000', camera 'cam_b': detection score 1.2"));
+  EXPECT_THAT(ErrorOf(sequence), HasSubstr("src: frame 's_000000', camera 'cam_b': detection 0, joint 'eye_left': "
+                                           "score 1.2 outside [0, 1] (values up to 1.5 are clamped to 1 where "
+                                           "detections are read)"));
+  sequence.frames[0].views[1].data[5] = -0.25;
+  EXPECT_THAT(ErrorOf(sequence), EndsWith("joint 'eye_left': score -0.25 outside [0, 1]"));
 
   sequence = ValidSequence();
   sequence.frames[0].views[1].data[0] = std::numeric_limits<double>::infinity();
