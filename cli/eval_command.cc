@@ -65,6 +65,7 @@ void RunEval(const EvalArgs& args) {
   options.triangulator = config.triangulator;
   options.eval = config.metrics;
   options.checks = engine::DetectionCheckOptions{};
+  options.camera_sync = true;
   options.loss_table = args.loss_table;
   options.adapter = adapter;
   options.threads = args.threads;

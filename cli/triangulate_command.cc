@@ -130,7 +130,8 @@ std::string NobodyTriangulatedWarning(const engine::RunResult& run) {
                    "docs/cameras.md)";
 }
 
-// The camera-agreement warnings of every sequence (engine/camera_agreement.h), printed on stderr;
+// The camera-agreement, upright and camera-sync warnings of every sequence (engine/camera_agreement.h,
+// upright_check.h, camera_sync_check.h), printed on stderr;
 // returned for run.json.
 std::vector<std::string> PrintCameraAgreement(const engine::RunResult& run) {
   std::vector<std::string> lines;
@@ -139,6 +140,7 @@ std::vector<std::string> PrintCameraAgreement(const engine::RunResult& run) {
     if (std::string upright = engine::UprightWarning(sequence.name, sequence.upright); !upright.empty()) {
       warnings.push_back(std::move(upright));
     }
+    warnings.insert(warnings.end(), sequence.camera_sync.begin(), sequence.camera_sync.end());
     for (std::string& line : warnings) {
       std::fprintf(stderr, "warning: %s\n", line.c_str());
       lines.push_back(std::move(line));
@@ -198,6 +200,7 @@ int RunFollow(const TriangulateArgs& args) {
   options.triangulator = config.triangulator;
   options.eval.reset();  // no ground truth: no metrics
   options.camera_agreement = true;
+  options.camera_sync = true;
   options.upright_check = true;
   options.threads = 1;
   options.early_warning = PrintAtOnce;  // times going back or in ms: said now, counted at the end
@@ -266,6 +269,7 @@ void RunTriangulate(const TriangulateArgs& args) {
   options.triangulator = config.triangulator;
   options.eval.reset();  // no ground truth: no metrics
   options.camera_agreement = true;
+  options.camera_sync = true;
   options.upright_check = true;
   options.threads = args.threads;
   std::unique_ptr<Progress> progress = ProgressOf(input, !args.quiet);

@@ -75,6 +75,9 @@ EvalDiagnostics Diagnose(const RunResult& run) {
   for (const SequenceCheck& check : diagnostics.checks) {
     for (CheckWarning& w : DetectionWarnings(check)) diagnostics.warnings.push_back(std::move(w));
   }
+  for (const SequenceResult& sequence : run.sequences) {
+    for (const std::string& line : sequence.camera_sync) diagnostics.warnings.push_back({"camera_sync", line});
+  }
   for (CheckWarning& w : ResultWarnings(run)) diagnostics.warnings.push_back(std::move(w));
   return diagnostics;
 }

@@ -74,12 +74,14 @@ class FrameAdapter {
 void Emit(int index, const SequenceFrame& frame, const Poses3D& triangulated, const FrameStats& stats,
           const FrameTrace& trace, const SequenceHeader& header, const JointNames& output_joints, SequenceRun* run,
           std::optional<DetectionChecker>* checker, std::optional<CameraAgreementCheck>* agreement,
-          std::optional<UprightCheck>* upright, FrameAdapter* adapter, FrameSink* sink) {
+          std::optional<UprightCheck>* upright, std::optional<CameraSyncCheck>* sync, FrameAdapter* adapter,
+          FrameSink* sink) {
   const Poses3D& persons = adapter->Apply(frame, triangulated, &run->result);
   run->timing.Add(stats, frame.paf_grouping_us);
   run->counts.Add(stats);
   if (*agreement) (*agreement)->Add(run->result.frames, frame, persons);
   if (*upright) (*upright)->Add(persons);
+  if (*sync) (*sync)->Add(frame);
   ++run->result.frames;
   run->gt_persons += frame.gt.num_persons();
   run->output_persons += persons.num_persons();
@@ -142,6 +144,8 @@ void RunSequence(int index, FrameSource& source, const RunOptions& options, cons
   if (options.camera_agreement) agreement.emplace(header, output_joints, source.num_frames());
   std::optional<UprightCheck> upright;
   if (options.upright_check) upright.emplace(output_joints);
+  std::optional<CameraSyncCheck> sync;
+  if (options.camera_sync) sync.emplace(header, source.num_frames(), tri_options.track.max_gap_s);
   FrameAdapter adapter(options.adapter.get(), output_joints);
   if (sink != nullptr) sink->BeginSequence(index, header, output_joints);
 
@@ -198,8 +202,8 @@ void RunSequence(int index, FrameSource& source, const RunOptions& options, cons
   };
   stages.emit = [&](long frame) {
     FrameSlot& s = slot(frame);
-    Emit(index, s.frame, s.persons, s.stats, s.trace, header, output_joints, run, &checker, &agreement, &upright, &adapter,
-         sink);
+    Emit(index, s.frame, s.persons, s.stats, s.trace, header, output_joints, run, &checker, &agreement, &upright, &sync,
+         &adapter, sink);
     const long done = ++*frames_done;
     if (report_progress && options.progress) options.progress(done);
   };
@@ -213,6 +217,7 @@ void RunSequence(int index, FrameSource& source, const RunOptions& options, cons
   if (checker) run->result.check = checker->Finish();
   if (agreement) run->result.camera_agreement = agreement->cameras();
   if (upright) run->result.upright = upright->count();
+  if (sync) run->result.camera_sync = CameraSyncWarnings(header.name, header.cameras, sync->pairs(), sync->frame_step_s());
   run->result.timing = run->timing.Finalize();
   if (run->metrics) run->result.metrics = run->metrics->Finalize();
   if (run->losses) run->result.losses = run->losses->table();

@@ -23,6 +23,7 @@
 #include "datasets/input_warnings.h"
 #include "datasets/readers/generic_common.h"
 #include "engine/camera_agreement.h"
+#include "engine/camera_sync_check.h"
 #include "engine/config.h"
 #include "engine/frame_time_check.h"
 #include "engine/input.h"
@@ -307,6 +308,7 @@ class PyTriangulator {
     engine::FrameTimeCheck times(triangulator_.options().track.max_gap_s);
     engine::CameraAgreementCheck agreement(header_, triangulator_.output_joints(), static_cast<long>(frames.size()));
     engine::UprightCheck upright(triangulator_.output_joints());
+    engine::CameraSyncCheck sync(header_, static_cast<long>(frames.size()), triangulator_.options().track.max_gap_s);
     long frames_with_time = 0;
     const auto start = std::chrono::steady_clock::now();
     const TriangulatorOptions& options = triangulator_.options();
@@ -337,6 +339,7 @@ class PyTriangulator {
       }
       agreement.Add(done - 1, frame, persons_);
       upright.Add(persons_);
+      if (!frame.views.empty()) sync.Add(frame);
       out->frame_ids.push_back(frame.id);
       out->timestamps_s.push_back(frame.timestamp_s);
       if (offline) {
@@ -367,6 +370,9 @@ class PyTriangulator {
                            static_cast<long>(frames.size()));
     }
     *check_lines = CheckLines(out->sequence, agreement.cameras(), upright.count());
+    for (std::string& line : engine::CameraSyncWarnings(out->sequence, header_.cameras, sync.pairs(), sync.frame_step_s())) {
+      check_lines->push_back(std::move(line));
+    }
   }
 
   Triangulator triangulator_;

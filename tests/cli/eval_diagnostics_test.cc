@@ -188,6 +188,34 @@ TEST(EvalDiagnostics, DetectionsShiftedByThreeFrames) {
   }
 }
 
+// One camera's detections 6 frames ahead of the others' (its frame f holds what it saw at f + 6):
+// named with the offset (engine/camera_sync_check.h), which the shift of all detections against
+// the GT cannot see.
+TEST(EvalDiagnostics, OneCameraSixFramesAheadIsNamed) {
+  const Case c = EvalEdited("camera_sync", nullptr, [](Json* d) {
+    Json& frames = (*d)["frames"];
+    const Json original = frames;
+    for (size_t i = 0; i < frames.size(); ++i) {
+      for (Json& view : frames[i]["views"]) {
+        if (view["camera"] != "cam2") continue;
+        view["poses"] = Json::array();
+        if (i + 6 >= original.size()) continue;
+        for (const Json& other : original[i + 6]["views"]) {
+          if (other["camera"] == "cam2") view["poses"] = other["poses"];
+        }
+      }
+    }
+  });
+  const std::vector<std::string> codes = Codes(c.summary);
+  EXPECT_EQ(Count(codes, "camera_sync"), 1) << c.result.err;
+  EXPECT_NE(c.result.err.find("warning: synthetic, camera 'cam2': its detections agree best with the other cameras' of "
+                              "about "),
+            std::string::npos)
+      << c.result.err;
+  EXPECT_NE(c.result.err.find(" later (epipolar distance to 4 cameras"), std::string::npos) << c.result.err;
+  EXPECT_EQ(Count(codes, "detections_frame_shifted"), 0) << c.result.err;
+}
+
 TEST(EvalDiagnostics, WrongCameraRotation) {
   // cam2 turned by 0.2 rad (11 degrees) about its vertical image axis in every label.
   const Case c = EvalEdited("rotation", [](Json* labels) {

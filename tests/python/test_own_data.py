@@ -233,3 +233,20 @@ def test_settings_without_effect_and_frames_without_times_are_warned_about():
     with pytest.warns(rpt.InputWarning, match=r"^python: 5 frames without a timestamp: nothing is carried between "
                                               r"frames \(no tracking, no smoothing\)"):
         rpt.Triangulator(scene.cameras, scene.joint_names).process_sequence([f.views for f in scene])
+
+
+def test_a_camera_whose_frames_are_off_the_others_is_named_by_process_sequence():
+    """The CLI's check of each camera's frames against the others' (engine/camera_sync_check.h):
+    camera 2's views of frame i taken from frame i + 3 (its clock 3 frames early)."""
+    import warnings
+
+    scene = rpt.synthetic.scene(cameras=5, people=3, frames=200, noise="clean")
+    frames = [(list(f.views), f.timestamp) for f in scene]
+    shifted = [([v if c != 2 else (frames[i + 3][0][2] if i + 3 < len(frames) else None)
+                 for c, v in enumerate(views)], t) for i, (views, t) in enumerate(frames)]
+    with pytest.warns(rpt.InputWarning, match=r"camera 'cam2': its detections agree best with the other cameras' of "
+                                              r"about 3 frames \(0.12 s\) later"):
+        rpt.Triangulator(scene.cameras, scene.joint_names).process_sequence(shifted)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", rpt.InputWarning)
+        rpt.Triangulator(scene.cameras, scene.joint_names).process_sequence(frames)
