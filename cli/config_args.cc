@@ -10,7 +10,8 @@ void AddConfigOptions(CLI::App* command, ConfigArgs* args) {
   command
       ->add_option("--set", args->overrides,
                    "override one option, e.g. --set prefilter.enabled=false; lists as JSON or comma list: "
-                   "--set 'triangulate.core_joints=[\"hip_left\",\"hip_right\"]' or ...=hip_left,hip_right "
+                   "--set 'triangulate.core_joints=[\"shoulder_left\",\"shoulder_right\",\"hip_left\",\"hip_right\"]' "
+                   "or ...=shoulder_left,shoulder_right,hip_left,hip_right "
                    "(repeatable, after --config)")
       ->take_all();
 }

@@ -21,8 +21,10 @@ void RegisterConfigCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand("config", "Print the configuration: every triangulator and metric option");
   command->footer(
       "Options are set with --config FILE (JSON, any subset of sections and keys) and --set section.key=value\n"
-      "(repeatable, after the file). List values: JSON (--set 'triangulate.core_joints=[\"hip_left\",\"hip_right\"]')\n"
-      "or comma lists (--set triangulate.core_joints=hip_left,hip_right); 3-vectors: [8,8,3] or 8,8,3.\n"
+      "(repeatable, after the file). List values: JSON\n"
+      "(--set 'triangulate.core_joints=[\"shoulder_left\",\"shoulder_right\",\"hip_left\",\"hip_right\"]') or comma\n"
+      "lists (--set triangulate.core_joints=shoulder_left,shoulder_right,hip_left,hip_right); \"\" is the empty list;\n"
+      "3-vectors: [8,8,3] or 8,8,3.\n"
       "Every option with its default, range and meaning: docs/options.md (rpt config --markdown).");
   command->add_flag("--dump", options->dump, "print the resolved configuration as JSON (default action)");
   CLI::Option* comments = command->add_flag(

@@ -287,6 +287,13 @@ void RunRender(const RenderArgs& args) {
   } else {
     const engine::Config config = ResolveConfig(args.config);
     InputWarnings warnings;
+    // render's --cameras selects the cameras drawn; a calibration (as triangulate's --cameras
+    // FILE) comes with --labels, or the run folder of `rpt triangulate` with --run.
+    if (args.input.dataset.empty() && args.input.labels.empty()) {
+      throw ConfigError("give --run DIR (a folder of `rpt eval` or `rpt triangulate`), --dataset NAME (with --root DIR) "
+                        "or --labels FILE; render's --cameras selects the cameras to draw (names or indices), it names "
+                        "no calibration file");
+    }
     input.sequences = engine::LoadInput(args.input, {}, &warnings);
     PrintInputWarnings(warnings);
     // Run only the sequences drawn.

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// `rpt report RUN_DIR`: one self-contained report.html for an `rpt eval` output folder (docs/report.md).
+// `rpt report RUN_DIR`: one self-contained report.html for an `rpt eval` or `rpt triangulate` output folder
+// (docs/report.md).
 // Reads the recorded files, re-loads the run's input from the command line in run.json (for GT,
 // cameras and detections; without it the report keeps the recorded tables and says why), evaluates
 // the recorded predictions frame by frame with the run's config.json, and writes the page.
@@ -62,8 +63,10 @@ void RunReport(const ReportArgs& args) {
 void RegisterReportCommand(CLI::App& app) {
   auto args = std::make_shared<ReportArgs>();
   CLI::App* command = app.add_subcommand(
-      "report", "Write one self-contained report.html (plots, 3D viewer, camera overlays) for an `rpt eval` folder");
-  command->add_option("RUN_DIR", args->run_dir, "output folder of `rpt eval`")->required();
+      "report",
+      "Write one self-contained report.html (plots, 3D viewer, camera overlays) for an `rpt eval` or `rpt triangulate` "
+      "folder");
+  command->add_option("RUN_DIR", args->run_dir, "output folder of `rpt eval` or `rpt triangulate`")->required();
   command->add_option("--out", args->out, "the page to write (default RUN_DIR/report.html)");
   command->add_flag("--require-same-input", args->require_same_input,
                     "refuse (exit 2) when the input on disk differs from the digests run.json records (default: warn)");

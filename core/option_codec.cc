@@ -164,6 +164,7 @@ bool ReadJsonString(std::string_view text, size_t* i, std::string* out) {
 // a comma list.
 bool ReadList(std::string_view text, std::vector<ListItem>* items) {
   const std::string_view t = TrimBlanks(text);
+  if (t == "\"\"") return true;  // "" (what a shell passes for `=""` inside single quotes): the empty list
   if (t.empty() || t.front() != '[') {
     for (std::string& item : SplitList(t)) items->push_back({std::move(item), false});
     return true;

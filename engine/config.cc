@@ -225,17 +225,19 @@ std::string ConfigMarkdown() {
          "* Values are read alike by `--set`, config files and the datasets' `--param` (see\n"
          "  [datasets.md](datasets.md#parameters)). Booleans are `true`/`false`, `yes`/`no`, `on`/`off` or\n"
          "  `1`/`0`. Integers are whole numbers (`3`; not `3.0` or `1e3`), numbers finite (`0.5`, `1e3`; not\n"
-         "  `nan` or `inf`). Lists are JSON lists (`--set 'triangulate.core_joints=[\"hip_left\", \"hip_right\"]'`)\n"
-         "  or comma lists (`--set triangulate.core_joints=hip_left,hip_right`; empty items are dropped, `\"\"` is\n"
-         "  the empty list); 3-vectors likewise (`[8, 8, 3]` or `8,8,3`). Blanks around a value or an item are\n"
+         "  `nan` or `inf`). Lists are JSON lists\n"
+         "  (`--set 'triangulate.core_joints=[\"shoulder_left\", \"shoulder_right\", \"hip_left\", \"hip_right\"]'`)\n"
+         "  or comma lists (`--set triangulate.core_joints=shoulder_left,shoulder_right,hip_left,hip_right`; empty\n"
+         "  items are dropped, `\"\"` is the empty list); 3-vectors likewise (`[8, 8, 3]` or `8,8,3`). Blanks around a value or an item are\n"
          "  ignored. In a config file a JSON string is read like the text of `--set` (`\"yes\"`, `\"8,8,3\"`), any\n"
          "  other JSON value as JSON writes it (`true`, `3`, `[8, 8, 3]`; `3.0` is not an integer).\n"
          "* Unknown keys, values of the wrong type and values outside the range are errors (exit code 2)\n"
          "  naming the place and the key, `<where>: <key>: '<value>' is not <value column>`:\n"
          "  `--set filter.min_match_score=1.5: filter.min_match_score: '1.5' is not a number in [0, 1]`; in a\n"
          "  config file `<where>` is the file and the JSON pointer. Unknown keys get a \"did you mean\".\n"
-         "  Settings that are valid but have no effect (such as `clip_speed.enabled=true` with\n"
-         "  `track.enabled=false`) print a warning.\n";
+         "  Settings changed from their defaults that are valid but have no effect (such as\n"
+         "  `smooth.mode=causal` with `track.enabled=false`) print a warning; a default that another setting\n"
+         "  makes useless (`clip_speed.enabled` with `track.enabled=false`) does not.\n";
   const std::vector<OptionText> options = OptionTexts(Config{});
   const std::vector<ConfigOptionInfo> infos = ConfigOptions();
   for (size_t i = 0; i < options.size(); ++i) {

@@ -41,6 +41,17 @@ std::vector<CheckWarning> ResultWarnings(const RunResult& run) {
     warnings.push_back({"no_predictions", message});
     return warnings;  // the other result warnings would only repeat it
   }
+  // No GT person in any frame: a labels file without "bodies3D" (or of another split) looked like
+  // a triangulator whose every prediction is Invalid (F1 0), exit 0 and no word.
+  if (run.gt_persons == 0) {
+    std::snprintf(text, sizeof(text),
+                  "no ground truth: the input has no 3D GT person in any of its %ld frames, so every one of the %ld "
+                  "predictions counts as Invalid and F1 is 0; check the labels (their 3D persons, the split), or "
+                  "triangulate without ground truth with `rpt triangulate`",
+                  run.frames, run.output_persons);
+    warnings.push_back({"no_ground_truth", text});
+    return warnings;  // the other result warnings would only repeat it
+  }
   if (frames_with_gt > 0 && without_prediction >= kMaxShareFramesWithoutPrediction * frames_with_gt) {
     std::snprintf(text, sizeof(text), "%ld of %ld frames with GT persons (%.0f %%) have no prediction", without_prediction,
                   frames_with_gt, 100.0 * without_prediction / frames_with_gt);

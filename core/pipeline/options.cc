@@ -37,22 +37,29 @@ std::string TriangulatorOptions::Check() const {
 }
 
 std::vector<std::string> TriangulatorOptions::Warnings() const {
+  // Only settings changed from their defaults: turning tracking off (an ablation) warned about
+  // clip_speed.enabled=true, which nobody had set.
+  const TriangulatorOptions defaults;
   std::vector<std::string> warnings;
   if (!track.enabled) {
     const std::string why = " has no effect with track.enabled=false (it needs track ids)";
-    if (clip_speed.enabled) warnings.push_back("clip_speed.enabled=true" + why);
-    if (bone_lengths.enabled) warnings.push_back("bone_lengths.enabled=true" + why);
-    if (smooth.mode != SmoothMode::kOff) warnings.push_back("smooth.mode=" + std::string(EnumName(smooth.mode)) + why);
-    if (single_view.enabled && single_view.track_assist) warnings.push_back("single_view.track_assist=true" + why);
+    if (clip_speed.enabled && !defaults.clip_speed.enabled) warnings.push_back("clip_speed.enabled=true" + why);
+    if (bone_lengths.enabled && !defaults.bone_lengths.enabled) warnings.push_back("bone_lengths.enabled=true" + why);
+    if (smooth.mode != SmoothMode::kOff && smooth.mode != defaults.smooth.mode) {
+      warnings.push_back("smooth.mode=" + std::string(EnumName(smooth.mode)) + why);
+    }
+    if (single_view.enabled && single_view.track_assist && !defaults.single_view.track_assist) {
+      warnings.push_back("single_view.track_assist=true" + why);
+    }
   }
-  if (!refine.enabled && refine.one_view_joints) {
+  if (!refine.enabled && refine.one_view_joints && !defaults.refine.one_view_joints) {
     warnings.push_back("refine.one_view_joints=true has no effect with refine.enabled=false (the refinement places "
                        "those joints)");
   }
   if (!single_view.enabled) {
     const std::string why = " has no effect with single_view.enabled=false";
-    if (single_view.track_assist) warnings.push_back("single_view.track_assist=true" + why);
-    if (single_view.ground_prior) warnings.push_back("single_view.ground_prior=true" + why);
+    if (single_view.track_assist && !defaults.single_view.track_assist) warnings.push_back("single_view.track_assist=true" + why);
+    if (single_view.ground_prior && !defaults.single_view.ground_prior) warnings.push_back("single_view.ground_prior=true" + why);
   }
   return warnings;
 }

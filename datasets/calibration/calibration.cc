@@ -80,7 +80,8 @@ CalibrationDescription DatasetReaderDescription(CalibrationFormat format, const 
     d.extrinsics = "world to camera with the camera centre T: x_cam = R (X - T)";
     d.distortion = "radial k (k1 k2 k3) and tangential p (p1 p2), OpenCV's model";
     d.notes.emplace_back(
-        "image sizes are not in the file: the image_width / image_height options, else twice the principal point");
+        "image sizes are not in the file: --image-width / --image-height (with --cameras: --cameras-image-width / "
+        "--cameras-image-height; Python: image_width= / image_height=), else twice the principal point");
   } else if (format == CalibrationFormat::kPanoptic) {
     d.extrinsics = "world to camera: x_cam = R X + t";
     d.distortion = "distCoef: OpenCV radial-tangential k1 k2 p1 p2 k3";

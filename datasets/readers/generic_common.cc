@@ -11,6 +11,7 @@
 
 #include "core/errors.h"
 #include "core/printable_text.h"
+#include "core/text.h"
 #include "datasets/io/number_text.h"
 
 namespace rpt {
@@ -44,20 +45,20 @@ const std::unordered_set<std::string>& KnownNames() {
 
 // "left_shoulder" -> "shoulder_left", "LShoulder" is not guessed.
 std::string Suggestion(std::string_view name) {
-  for (std::string_view side : {"left", "right"}) {
-    const std::string prefix = std::string(side) + "_";
-    if (name.substr(0, prefix.size()) == prefix) {
-      const std::string candidate = std::string(name.substr(prefix.size())) + "_" + std::string(side);
-      if (IsKnownJointName(candidate)) return candidate;
-      // COCO-WholeBody style: left_big_toe -> foot_big_toe_left.
-      if (IsKnownJointName("foot_" + candidate)) return "foot_" + candidate;
-    }
-  }
   std::string lower(name);
   std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
   if (lower != name && IsKnownJointName(lower)) return lower;
+  // left_shoulder, LEFT_SHOULDER, l_shoulder -> shoulder_left; left_big_toe -> foot_big_toe_left
+  // (COCO-WholeBody style).
+  for (const auto& [prefix, side] : std::vector<std::pair<std::string, std::string>>{
+           {"left_", "left"}, {"right_", "right"}, {"l_", "left"}, {"r_", "right"}}) {
+    if (lower.rfind(prefix, 0) != 0) continue;
+    const std::string candidate = lower.substr(prefix.size()) + "_" + side;
+    if (IsKnownJointName(candidate)) return candidate;
+    if (IsKnownJointName("foot_" + candidate)) return "foot_" + candidate;
+  }
   // OpenPose and Human3.6M style: LShoulder -> shoulder_left, RBigToe -> foot_big_toe_right,
-  // RFoot -> ankle_right (Human3.6M's foot is the ankle), MidHip / Hip -> hip_middle.
+  // RFoot -> ankle_right (Human3.6M's foot is the ankle), MidHip / Hip / mid_hip -> hip_middle.
   const auto snake = [](std::string_view camel) {
     std::string out;
     for (const char c : camel) {
@@ -66,7 +67,7 @@ std::string Suggestion(std::string_view name) {
     }
     return out;
   };
-  if (name == "MidHip" || name == "Hip") return "hip_middle";
+  if (lower == "midhip" || lower == "hip" || lower == "mid_hip" || lower == "middle_hip") return "hip_middle";
   if (name.size() > 2 && (name[0] == 'L' || name[0] == 'R') && std::isupper(static_cast<unsigned char>(name[1]))) {
     std::string base = snake(name.substr(1));
     if (base == "foot") base = "ankle";
@@ -179,18 +180,32 @@ bool IsKnownJointName(std::string_view name) {
 void CheckJointNames(const JointNames& names, const std::string& where) {
   if (names.empty()) throw InputError(where + ": the joint list is empty");
   std::set<std::string> seen;
+  // Every unknown name at once (a MediaPipe file of 33 names took one run per name), the first ones
+  // with what they may mean.
+  constexpr size_t kNamedUnknown = 12;
+  std::vector<std::string> unknown;
+  size_t first_unknown = names.size();
   for (size_t j = 0; j < names.size(); ++j) {
     const std::string& name = names[j];
     if (name.empty()) throw InputError(where + ": joint " + std::to_string(j) + " has an empty name");
     if (!seen.insert(name).second) throw InputError(where + ": joint name " + QuoteName(name) + " appears twice");
-    if (!IsKnownJointName(name)) {
-      const std::string suggestion = Suggestion(name);
-      throw InputError(where + ": unknown joint name " + QuoteName(name) +
-                       (suggestion.empty() ? std::string() : " (did you mean " + QuoteName(suggestion) + "?)") +
-                       "; names follow core/joints.h (nose, eye_left, shoulder_right, ...), custom joints need the "
-                       "prefix 'extra_'");
+    if (IsKnownJointName(name)) continue;
+    first_unknown = std::min(first_unknown, j);
+    if (unknown.size() == kNamedUnknown) {
+      unknown.emplace_back("...");
+      continue;
     }
+    if (unknown.size() > kNamedUnknown) continue;
+    const std::string suggestion = Suggestion(name);
+    unknown.push_back(QuoteName(name) + (suggestion.empty() ? std::string() : " (did you mean " + QuoteName(suggestion) + "?)"));
   }
+  if (unknown.empty()) return;
+  long count = 0;
+  for (const std::string& name : names) count += IsKnownJointName(name) ? 0 : 1;
+  throw InputError(where + ": unknown joint name" + (count == 1 ? " " : "s (" + std::to_string(count) + "): ") +
+                   Join(unknown, ", ") +
+                   "; names follow core/joints.h (nose, eye_left, shoulder_right, ...), custom joints need the prefix "
+                   "'extra_'");
 }
 
 // RE2 matches in time linear in the text whatever the pattern (a pattern such as (a+)+b made

@@ -42,15 +42,20 @@ void TrcExport::BeginSequence(int sequence, const SequenceHeader& header, const 
   s.joints = output_joints;
   s.fps = header.fps;
   s.steps.reserve(kRateSteps);
-  std::error_code ec;
-  std::filesystem::create_directories(dir_, ec);
-  if (ec) throw InputError(dir_.string() + ": cannot create the folder: " + ec.message());
 }
 
 std::ofstream& TrcExport::TrackStream(Sequence* s, int track_id, double time_s) {
   auto [it, created] = s->tracks.try_emplace(track_id);
   Track& track = it->second;
   if (created) {
+    // The folder with the first track: a run without tracks (no times) left an empty trc/ beside
+    // its "no TRC file written" warning.
+    if (!folder_created_) {
+      std::error_code ec;
+      std::filesystem::create_directories(dir_, ec);
+      if (ec) throw InputError(dir_.string() + ": cannot create the folder: " + ec.message());
+      folder_created_ = true;
+    }
     // A new scratch file (never an existing name, so never through a link), removed with the track.
     track.scratch = std::make_unique<io::ScratchFile>(dir_ / (s->name + "_track" + std::to_string(track_id) + ".trc.part"));
     track.part = track.scratch->path();

@@ -86,6 +86,7 @@ class TrcExport final : public FrameSink {
   void WriteFile(const Sequence& s, int track_id, const Track& track);
 
   std::filesystem::path dir_;
+  bool folder_created_ = false;  // dir_ is made with the first track
   std::set<std::string> written_names_;  // the file names written, over all sequences
   ExportOptions options_;
   std::vector<Sequence> sequences_;

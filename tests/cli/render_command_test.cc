@@ -177,6 +177,15 @@ TEST(RenderCommand, BadSelectionsExitTwoNamingTheOption) {
     EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << "\n" << r.err;
   }
   EXPECT_EQ(test::RunRpt(base + " --format gif").exit_code, 2);
+  // triangulate's `--cameras FILE` habit: render's --cameras selects cameras, and the error says so
+  // (it was only "give one of --dataset NAME ..., --labels FILE").
+  const test::CommandResult calibration =
+      test::RunRpt("render --cameras cameras.json --detections d.json --out " + out.string());
+  EXPECT_EQ(calibration.exit_code, 2);
+  EXPECT_NE(calibration.err.find("error: give --run DIR (a folder of `rpt eval` or `rpt triangulate`), --dataset NAME "
+                                 "(with --root DIR) or --labels FILE; render's --cameras selects the cameras to draw"),
+            std::string::npos)
+      << calibration.err;
   fs::remove_all(out);
 }
 

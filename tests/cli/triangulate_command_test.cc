@@ -243,6 +243,7 @@ TEST_F(Triangulate, TrcWithoutTimesSaysNothingWasWritten) {
   EXPECT_NE(none.err.find("warning: " + (dir_ / "none" / "trc").string() + ": no TRC file written: no person was tracked"),
             std::string::npos)
       << none.err;
+  EXPECT_FALSE(fs::exists(dir_ / "none" / "trc")) << "no empty folder beside the warning";
   const test::CommandResult timed = test::RunRpt(input + " --fps 25 --export trc --quiet --out " + (dir_ / "timed").string());
   ASSERT_EQ(timed.exit_code, 0) << timed.err;
   EXPECT_EQ(timed.err.find("no TRC file written"), std::string::npos) << timed.err;

@@ -239,6 +239,15 @@ TEST(GenericLabels, MalformedFilesNameFileAndPlace) {
   };
   EXPECT_THAT(InputErrorOf([&] { MaterializeAll(OpenLabels(with(R"(["nose"])", R"(["nose", "left_shoulder"])"))); }),
               HasSubstr("bad.json: /0/joints: unknown joint name 'left_shoulder' (did you mean 'shoulder_left'?)"));
+  // Every unknown name at once (a file of another skeleton took one run per name), each with what
+  // it may mean in any case or spelling.
+  EXPECT_THAT(InputErrorOf([&] {
+                MaterializeAll(OpenLabels(
+                    with(R"(["nose"])", R"(["LEFT_SHOULDER", "nose", "mid_hip", "r_wrist", "left_eye_inner"])")));
+              }),
+              HasSubstr("bad.json: /0/joints: unknown joint names (4): 'LEFT_SHOULDER' (did you mean 'shoulder_left'?), "
+                        "'mid_hip' (did you mean 'hip_middle'?), 'r_wrist' (did you mean 'wrist_right'?), "
+                        "'left_eye_inner'; names follow core/joints.h"));
   EXPECT_THAT(InputErrorOf([&] { MaterializeAll(OpenLabels(with(R"(["nose"])", R"(["nose", "eye_left"])"))); }),
               HasSubstr("bad.json: /0/bodies3D/0: expected 2 joints (as many as \"joints\" names), got 1"));
   EXPECT_THAT(InputErrorOf([&] { MaterializeAll(OpenLabels(with("[0, 0, 1, 1]", "[0, 0, 1, 1, 5]"))); }),
