@@ -93,8 +93,11 @@ void RunEval(const EvalArgs& args) {
   }
   folder.Finish(run, config, info, diagnostics_json);
   if (args.json) {
-    nlohmann::ordered_json summary = engine::SummaryJson(run);
+    // As summary.json (run_id first) and triangulate --json: the run and the folder it is in.
+    nlohmann::ordered_json summary = {{"run_id", info.run_id}};
+    summary.update(engine::SummaryJson(run));
     summary.update(diagnostics_json);
+    summary["output"] = out_dir;
     std::cout << io::DumpJson(summary, 2) << "\n";  // invalid UTF-8 (a frame id) as U+FFFD, not an error
     std::cout.flush();
     engine::PrintWarnings(std::cerr, diagnostics);
@@ -104,6 +107,13 @@ void RunEval(const EvalArgs& args) {
               run.frames, run.sequences.empty() ? 0 : run.sequences.front().cameras, run.gt_persons,
               run.output_persons);
   std::printf("%s\n", engine::PaperRow(run).c_str());
+  // Tracking against the GT's person ids: a GT person matched to another track id than before
+  // (a track that broke and resumed under a new id, or two people swapped) is an identity switch.
+  if (run.identity.gt_identities > 0) {
+    std::printf("tracking: %ld track ids for %ld GT persons, %ld identity switches over %ld matches\n",
+                run.identity.track_ids, run.identity.gt_identities, run.identity.id_switches,
+                run.identity.tracked_matches);
+  }
   const std::string invalid_causes = engine::InvalidCausesLine(run.metrics, config.metrics.match_threshold_mm);
   if (!invalid_causes.empty()) std::printf("%s\n", invalid_causes.c_str());
   std::printf("evaluated %ld frames in %.2f s (%.0f frames/s, %d thread(s) over %zu sequence(s))\n", run.frames,

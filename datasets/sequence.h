@@ -61,6 +61,9 @@ struct SequenceHeader {
   JointNames evaluated_joints;      // the dataset's evaluated joints; empty = the paper's 13
   Room room;
   double fps = 0;  // 0 = unknown (frames without a rate)
+  // The GT's track ids name one person in every frame of the sequence (false: they number the
+  // persons of one frame, as MVOR's person_id; identity switches are then not counted).
+  bool gt_ids_across_frames = true;
 };
 
 // A sequence with all its frames in memory.

@@ -32,6 +32,7 @@ namespace {
 struct SequenceRun {
   SequenceResult result;
   std::optional<metrics::MetricsAccumulator> metrics;
+  metrics::IdentityAccumulator identity;  // with the metrics
   metrics::TimingAccumulator timing;
   metrics::StepCountAccumulator counts;
   std::optional<LossAccumulator> losses;
@@ -89,7 +90,10 @@ void Emit(int index, const SequenceFrame& frame, const Poses3D& triangulated, co
     ++run->frames_with_gt;
     if (persons.num_persons() == 0) ++run->frames_with_gt_without_prediction;
   }
-  if (run->metrics) run->metrics->Add(frame.id, frame.gt, header.gt_joints, persons, output_joints);
+  if (run->metrics) {
+    run->metrics->Add(frame.id, frame.gt, header.gt_joints, persons, output_joints);
+    if (header.gt_ids_across_frames) run->identity.Add(run->metrics->LastFrame(), frame.gt, persons);
+  }
   if (run->losses) run->losses->Add(frame, trace, persons, run->metrics->LastFrame());
   if (*checker) (*checker)->Add(frame);
   if (sink != nullptr) sink->Frame(FrameOutput{index, &frame, &persons, &stats});
@@ -219,7 +223,10 @@ void RunSequence(int index, FrameSource& source, const RunOptions& options, cons
   if (upright) run->result.upright = upright->count();
   if (sync) run->result.camera_sync = CameraSyncWarnings(header.name, header.cameras, sync->pairs(), sync->frame_step_s());
   run->result.timing = run->timing.Finalize();
-  if (run->metrics) run->result.metrics = run->metrics->Finalize();
+  if (run->metrics) {
+    run->result.metrics = run->metrics->Finalize();
+    run->result.identity = run->identity.counts();
+  }
   if (run->losses) run->result.losses = run->losses->table();
   if (sink != nullptr) sink->EndSequence(index);
 }
@@ -328,6 +335,7 @@ RunResult Run(Input& input, const RunOptions& options, FrameSink* sink) {
   for (SequenceRun& run : runs) {
     if (result.losses && run.result.losses) result.losses->Merge(*run.result.losses);
     if (all) all->Merge(*run.metrics);
+    result.identity.Merge(run.result.identity);
     timing.Merge(run.timing);
     counts.Merge(run.counts);
     result.frames += run.result.frames;

@@ -38,6 +38,7 @@
 #include "engine/loss_table.h"
 #include "metrics/eval_options.h"
 #include "metrics/metrics_result.h"
+#include "metrics/identity_counts.h"
 #include "metrics/step_counts.h"
 #include "metrics/timing.h"
 
@@ -95,6 +96,7 @@ struct SequenceResult {
   int cameras = 0;
   JointNames output_joints;
   metrics::MetricsResult metrics;         // when RunOptions::eval is set
+  metrics::IdentityCounts identity;       // the same: track ids against the GT's ids
   metrics::TimingSummary timing;
   std::optional<SequenceCheck> check;     // when RunOptions::checks is set
   std::optional<LossTable> losses;        // when RunOptions::loss_table is set
@@ -108,6 +110,7 @@ struct SequenceResult {
 struct RunResult {
   bool evaluated = false;           // metrics were computed (RunOptions::eval)
   metrics::MetricsResult metrics;   // over all sequences
+  metrics::IdentityCounts identity; // summed over the sequences (when evaluated)
   metrics::TimingSummary timing;    // over all frames of all sequences
   metrics::StepCountSummary counts; // items per step per frame, over all frames
   std::optional<LossTable> losses;  // over all sequences, when RunOptions::loss_table is set

@@ -134,6 +134,7 @@ py::object Evaluate(py::handle gt, py::handle predictions, py::handle options, p
     result.cameras = static_cast<int>(sequence.cameras.size());
     result.output_joints = prediction.joints;
     metrics::MetricsAccumulator accumulator(eval);
+    metrics::IdentityAccumulator identity;
     metrics::TimingAccumulator sequence_timing(0);
     metrics::StepCountAccumulator sequence_counts;
     std::optional<engine::DetectionChecker> checker;
@@ -158,11 +159,14 @@ py::object Evaluate(py::handle gt, py::handle predictions, py::handle options, p
         if (persons.num_persons() == 0) ++run.frames_with_gt_without_prediction;
       }
       accumulator.Add(frame.id, frame.gt, sequence.gt_joints, persons, prediction.joints);
+      if (sequence.gt_ids_across_frames) identity.Add(accumulator.LastFrame(), frame.gt, persons);
       if (checker) checker->Add(frame);
     }
     if (checker) result.check = checker->Finish();
     result.timing = sequence_timing.Finalize();
     result.metrics = accumulator.Finalize();
+    result.identity = identity.counts();
+    run.identity.Merge(result.identity);
     all.Merge(accumulator);
     timing.Merge(sequence_timing);
     counts.Merge(sequence_counts);

@@ -467,6 +467,7 @@ std::vector<std::unique_ptr<FrameSource>> OpenMvor(const DatasetRequest& request
     header.cameras = cameras;
     if (request.ground_truth) header.gt_joints = MvorJoints();
     header.detection_joints = files->detections.joints;
+    header.gt_ids_across_frames = false;  // person_id numbers the persons of a frame (0 = the first)
     // Encloses every annotated person's centre with room to spare (x -2.0..2.6, y -0.4..3.1 m).
     header.room.center_m = Eigen::Vector3d(0.3, 1.3, 1.0);
     header.room.size_m = Eigen::Vector3d(6.0, 5.0, 2.0);

@@ -185,6 +185,42 @@ void AddCountColumns(const metrics::MetricsResult& m, OrderedJson* j) {
   }
 }
 
+// The units of the keys both summaries may hold beyond the summary columns (when present in `j`):
+// every number of summary.json has one.
+void AddOtherUnits(const OrderedJson& j, OrderedJson* units) {
+  static const std::vector<std::pair<std::string, std::string>> kUnits = {
+      {"dropped_gt_persons", "GT persons"},
+      {"missing_pred_joints", "joints"},
+      {"unaligned_matches", "matches"},
+      {"track_ids", "count"},
+      {"gt_identities", "count"},
+      {"id_switches", "count"},
+      {"wholebody_mpjpe_mm", "mm"},
+      {"wholebody_counts", "count"},
+      {"output_persons", "count"},
+      {"step_time_us_median", "us"},
+      {"step_count_per_frame", "items per frame"},
+      {"counter_per_frame", "per frame"},
+      {"detection_noise_m", "m"},
+      {"camera_agreement", "persons"}};
+  for (const auto& [key, unit] : kUnits) {
+    if (j.contains(key)) (*units)[key] = unit;
+  }
+}
+
+}  // namespace
+
+namespace {
+
+// Track ids against the GT's ids (metrics/identity_counts.h), when there were any to compare:
+// GT ids across frames (not MVOR's) matched to predictions with track ids (tracking on).
+void AddIdentityColumns(const metrics::IdentityCounts& identity, OrderedJson* j) {
+  if (identity.gt_identities == 0) return;
+  (*j)["track_ids"] = identity.track_ids;
+  (*j)["gt_identities"] = identity.gt_identities;
+  (*j)["id_switches"] = identity.id_switches;
+}
+
 }  // namespace
 
 OrderedJson SequenceSummaryJson(const SequenceResult& sequence) {
@@ -195,6 +231,7 @@ OrderedJson SequenceSummaryJson(const SequenceResult& sequence) {
   j["frame_time_us_median"] = Number(sequence.timing.frame_us_median);
   j["frames"] = sequence.frames;
   AddCountColumns(sequence.metrics, &j);
+  AddIdentityColumns(sequence.identity, &j);
   return j;
 }
 
@@ -207,6 +244,7 @@ OrderedJson SummaryJson(const RunResult& run) {
   j["frames"] = run.frames;
   j["eval_frames_per_s"] = Number(run.wall_seconds > 0 ? run.frames / run.wall_seconds : 0.0);
   AddCountColumns(m, &j);
+  AddIdentityColumns(run.identity, &j);
   j["step_time_us_median"] = StepTimesJson(run.timing);
   j["step_count_per_frame"] = StepCountsJson(run.counts);
   j["counter_per_frame"] = CountersJson(run.counts);
@@ -222,6 +260,7 @@ OrderedJson SummaryJson(const RunResult& run) {
   }
   if (j.contains("pcp_parts")) units["pcp_parts"] = "%";
   units["invalid_causes"] = "predictions";
+  AddOtherUnits(j, &units);
   j["units"] = units;
   return j;
 }
@@ -263,7 +302,7 @@ OrderedJson TriangulationSummaryJson(const RunResult& run) {
   for (const SummaryColumn& c : SummaryColumns()) {
     if (j.contains(c.key)) units[c.key] = c.unit;
   }
-  units["output_persons"] = "count";
+  AddOtherUnits(j, &units);
   j["units"] = units;
   return j;
 }

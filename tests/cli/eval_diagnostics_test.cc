@@ -96,6 +96,76 @@ TEST(EvalDiagnostics, CleanSyntheticRunHasCountsAndNoWarning) {
   fs::remove_all(out);
 }
 
+// Every number of summary.json (eval's and triangulate's) has its unit in "units": only the
+// headline columns had one (detection_noise_m, step_time_us_median, ... had none).
+TEST(EvalDiagnostics, EveryNumberOfTheSummaryHasAUnit) {
+  const fs::path dir = test::TempDir("diag_units");
+  for (const std::string command : {"eval", "triangulate"}) {
+    const test::CommandResult r = test::RunRpt(command + " --dataset synthetic --param frames=20 --quiet --out " +
+                                               (dir / command).string());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const Json summary = ReadJson(dir / command / "summary.json");
+    const Json& units = summary.at("units");
+    for (const auto& [key, value] : summary.items()) {
+      if (key == "units" || key == "run_id" || key == "evaluated" || key == "warnings" || key == "data_checks" ||
+          key == "per_sequence" || value.is_null()) {
+        continue;
+      }
+      EXPECT_TRUE(units.contains(key)) << command << ": " << key;
+    }
+  }
+  fs::remove_all(dir);
+}
+
+// Identity switches against the GT's ids (metrics/identity_counts.h): the 4 walking people keep
+// their tracks over the 60 frames; with the GT ids of persons 0 and 1 swapped from frame 30 on,
+// each of the two is matched to the other's track once: 2 switches. MVOR's person_id numbers the
+// persons of a frame: no identity counts there.
+TEST(EvalDiagnostics, IdentitySwitchesAgainstTheGtIds) {
+  const Case kept = EvalEdited("ids_kept", nullptr, nullptr);
+  EXPECT_EQ(kept.summary.at("gt_identities"), 4);
+  EXPECT_EQ(kept.summary.at("track_ids"), 4);
+  EXPECT_EQ(kept.summary.at("id_switches"), 0);
+  EXPECT_EQ(kept.summary.at("units").at("id_switches"), "count");
+  EXPECT_NE(kept.result.out.find("tracking: 4 track ids for 4 GT persons, 0 identity switches over 240 matches"),
+            std::string::npos)
+      << kept.result.out;
+  const Case swapped = EvalEdited("ids_swapped", [](Json* labels) {
+    for (size_t f = 30; f < labels->size(); ++f) {
+      Json& ids = (*labels)[f]["bodyids"];
+      std::swap(ids[0], ids[1]);
+    }
+  }, nullptr);
+  EXPECT_EQ(swapped.summary.at("id_switches"), 2);
+  EXPECT_EQ(swapped.summary.at("gt_identities"), 4);
+  const fs::path root = test::SharedDataDir() / "mvor";
+  if (!fs::exists(root)) return;
+  const fs::path out = test::TempDir("diag_ids_mvor");
+  const test::CommandResult r =
+      test::RunRpt("eval --dataset mvor --root " + root.string() + " --quiet --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_FALSE(ReadJson(out / "summary.json").contains("id_switches"));
+  EXPECT_EQ(r.out.find("tracking:"), std::string::npos) << r.out;
+  fs::remove_all(out);
+}
+
+// Labels without 3D persons: said, not shown as a triangulator whose every prediction is Invalid.
+TEST(EvalDiagnostics, LabelsWithoutGroundTruthAreSaid) {
+  const Case c = EvalEdited("no_gt", [](Json* labels) {
+    for (Json& label : *labels) {
+      label["bodies3D"] = Json::array();
+      label.erase("bodyids");
+    }
+  }, nullptr);
+  const std::vector<std::string> codes = Codes(c.summary);
+  EXPECT_EQ(codes, std::vector<std::string>{"no_ground_truth"}) << c.result.err;
+  EXPECT_NE(c.result.err.find("warning: no ground truth: the input has no 3D GT person in any of its 60 frames, so every "
+                              "one of the "),
+            std::string::npos)
+      << c.result.err;
+  EXPECT_NE(c.result.err.find("`rpt triangulate`"), std::string::npos) << c.result.err;
+}
+
 TEST(EvalDiagnostics, JsonOutputCarriesTheWarnings) {
   const fs::path out = test::TempDir("diag_json");
   const test::CommandResult r =
@@ -104,6 +174,9 @@ TEST(EvalDiagnostics, JsonOutputCarriesTheWarnings) {
   const Json summary = Json::parse(r.out);
   EXPECT_TRUE(summary.at("warnings").is_array());
   EXPECT_TRUE(summary.contains("step_count_per_frame"));
+  // The run and its folder, as summary.json and triangulate --json have them.
+  EXPECT_EQ(summary.at("run_id"), ReadJson(out / "summary.json").at("run_id"));
+  EXPECT_EQ(summary.at("output"), out.string());
   fs::remove_all(out);
 }
 

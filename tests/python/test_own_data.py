@@ -31,7 +31,7 @@ def test_labels_and_detections_equal_rpt_eval(files, tmp_path):
     predictions = [rpt.Triangulator.for_sequence(s).process_sequence(s) for s in sequences]
     summary = rpt.metrics.evaluate(sequences, predictions)
     for key, value in cli_summary.items():
-        if key not in TIMING_KEYS:
+        if key not in TIMING_KEYS and key not in ("run_id", "output"):
             assert summary[key] == value, key
 
 
