@@ -175,10 +175,13 @@ void PrintCheckSummary(std::ostream& out, const EvalDiagnostics& diagnostics) {
   if (cameras > 0) {
     char range[64];
     std::snprintf(range, sizeof(range), hi - lo < 0.0005 ? "%.3f" : "%.3f to %.3f", lo, hi);
+    // Cameras of every sequence: "10 cameras over 2 sequences", not 10 cameras of one rig.
+    char over[48] = "";
+    if (diagnostics.checks.size() > 1) std::snprintf(over, sizeof(over), " over %zu sequences", diagnostics.checks.size());
     std::snprintf(line, sizeof(line),
-                  "projected GT to nearest detection: median %s of the person's box diagonal (%d camera(s); warning "
+                  "projected GT to nearest detection: median %s of the person's box diagonal (%d camera(s)%s; warning "
                   "from %.2f)\n",
-                  range, cameras, kFarRelDistance);
+                  range, cameras, over, kFarRelDistance);
   } else {
     std::snprintf(line, sizeof(line), "projected GT to nearest detection: nothing to compare\n");
   }
@@ -189,13 +192,14 @@ void PrintCheckSummary(std::ostream& out, const EvalDiagnostics& diagnostics) {
     return;
   }
   if (n == 0) return;
-  int tested = 0, shifted = 0;
+  int tested = 0, shifted = 0, untested_count = 0;
   const SequenceCheck* untested = nullptr;
   bool same_reason = true;
   for (const SequenceCheck& check : diagnostics.checks) {
     tested += check.shift.tested ? 1 : 0;
     shifted += LooksShifted(check.shift) ? 1 : 0;
     if (check.shift.tested) continue;
+    ++untested_count;
     if (untested == nullptr) untested = &check;
     same_reason &= check.shift.reason == untested->shift.reason;
   }
@@ -205,9 +209,13 @@ void PrintCheckSummary(std::ostream& out, const EvalDiagnostics& diagnostics) {
     return;
   }
   out << "tested in " << tested << " of " << n << " sequences, " << shifted << " shifted";
-  if (untested != nullptr) {
+  if (untested_count == 1) {
     out << "; not tested in " << PrintableText(untested->sequence, LineBreaks::kEscape) << " ("
         << untested->shift.reason << ")";
+  } else if (untested_count > 1) {
+    // The first one's reason, said as the first one's (the others may have their own).
+    out << "; not tested in " << untested_count << " sequences (" << PrintableText(untested->sequence, LineBreaks::kEscape)
+        << ": " << untested->shift.reason << (same_reason ? ", as every other" : "; others for other reasons") << ")";
   }
   out << "\n";
 }

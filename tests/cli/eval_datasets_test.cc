@@ -159,6 +159,22 @@ TEST(EvalDatasets, ParallelSequencesGiveTheSameMetricsAsOneThread) {
   fs::remove_all(out);
 }
 
+// Two sequences of 5 cameras: the data check's line says 10 cameras over 2 sequences (it said 10
+// cameras, as if of one rig), and which sequences the frame-shift check could not test.
+TEST(EvalDatasets, ChecksOverSequencesSayHowManySequences) {
+  RPT_REQUIRE_SHARED_DATA("panoptic/160906_band2");
+  const fs::path out = test::TempDir("two_sequences");
+  const test::CommandResult r = test::RunRpt("eval --dataset panoptic --root " + test::SharedData("panoptic").string() +
+                                             " --param sequences=160906_band1,160906_band2 --simulate --out " +
+                                             out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("(10 camera(s) over 2 sequences; warning from 0.30)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("frame shift (detections of frame f vs GT of frame f+k): not tested, no frame"),
+            std::string::npos)
+      << r.out;
+  fs::remove_all(out);
+}
+
 TEST(EvalDatasets, GenericInterchangeFilesWrittenByTheTest) {
   const fs::path dir = test::TempDir("generic");
   synthetic::SceneOptions options;
