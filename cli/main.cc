@@ -21,6 +21,7 @@
 #include "core/printable_text.h"
 #include "datasets/io/inflate_budget.h"
 #include "datasets/io/input_limits.h"
+#include "datasets/io/staged_output.h"
 #include "datasets/readers/hdf5_cache.h"
 #include "engine/outputs/run_info.h"
 #include "git_revision.h"
@@ -132,6 +133,12 @@ int main(int argc, char** argv) {
   rpt::cli::RegisterMergeCommand(app);
   rpt::cli::RegisterReportCommand(app);
   if (!CheckSubcommand(app, argc, argv)) return 2;
+  // Whatever way the command ends: the temporaries of killed runs found beside its outputs.
+  struct StaleTemporaries {
+    ~StaleTemporaries() {
+      for (const std::string& line : rpt::io::StaleTemporaryWarnings()) std::fprintf(stderr, "warning: %s\n", line.c_str());
+    }
+  } stale_temporaries;
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -93,7 +93,9 @@ CalibrationFormat DetectCalibrationFormat(const fs::path& path) {
                      ": a folder, but it holds neither cameras.txt + images.txt (COLMAP), intri.yml + "
                      "extri.yml (EasyMocap) nor OpenCV files, one per camera (*.yml, *.yaml, *.xml)");
   }
-  if (!IsRegularFile(path)) throw InputError(path.string() + ": file not found");
+  if (!fs::exists(path, ec)) throw InputError(path.string() + ": file not found");
+  // A FIFO, a device or a socket: never read (it may block or never end).
+  if (!IsRegularFile(path)) throw InputError(path.string() + ": not a regular file");
   const std::string name = Lower(path.filename().string());
   const std::string extension = Lower(path.extension().string());
   const std::string stem = Lower(path.stem().string());

@@ -2,6 +2,7 @@
 #include "datasets/io/staged_output.h"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <sys/statvfs.h>
 #include <unistd.h>
@@ -11,6 +12,7 @@
 #include <cstdio>
 #include <cstring>
 #include <mutex>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -192,7 +194,64 @@ void RemoveRegisteredFile(const fs::path& path) {
   Unregister(registry, path);
 }
 
+// The process id of a temporary's name `<name>.tmp-<pid>-<n>[<extension>]` (`name` empty: any
+// name), or 0 when `entry` is not one.
+long TemporaryPid(const std::string& entry, const std::string& name) {
+  size_t at = name.empty() ? entry.rfind(".tmp-") : name.size();
+  if (at == std::string::npos || at == 0 || entry.compare(0, name.size(), name) != 0 ||
+      entry.compare(at, 5, ".tmp-") != 0) {
+    return 0;
+  }
+  at += 5;
+  const size_t dash = entry.find('-', at);
+  if (dash == std::string::npos || dash == at || dash - at > 9) return 0;
+  const size_t number_end = entry.find_first_not_of("0123456789", dash + 1);
+  if (number_end == dash + 1 || (number_end != std::string::npos && entry[number_end] != '.')) return 0;
+  if (entry.find_first_not_of("0123456789", at) != dash) return 0;
+  return std::stol(entry.substr(at, dash - at));
+}
+
+struct StaleNotes {
+  std::mutex mutex;
+  std::set<fs::path> paths;
+};
+
+StaleNotes& TheStaleNotes() {
+  static StaleNotes* notes = new StaleNotes;
+  return *notes;
+}
+
+// Notes the temporaries in `folder` (of `name`, or of any name when empty) whose process no longer
+// runs on this machine: left by an rpt that was killed (SIGKILL, an out-of-memory kill, a crash).
+void NoteStaleTemporaries(const fs::path& folder, const std::string& name) {
+  std::error_code ec;
+  fs::directory_iterator it(folder.empty() ? fs::path(".") : folder, ec);
+  for (long seen = 0; !ec && it != fs::directory_iterator() && seen < 100000; it.increment(ec), ++seen) {
+    const std::string entry = it->path().filename().string();
+    const long pid = TemporaryPid(entry, name);
+    if (pid <= 0 || pid == ::getpid()) continue;
+    if (::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;  // running (or not ours to ask)
+    StaleNotes& notes = TheStaleNotes();
+    const std::lock_guard<std::mutex> lock(notes.mutex);
+    notes.paths.insert(folder / entry);
+  }
+}
+
 }  // namespace
+
+std::vector<std::string> StaleTemporaryWarnings() {
+  StaleNotes& notes = TheStaleNotes();
+  const std::lock_guard<std::mutex> lock(notes.mutex);
+  std::vector<std::string> warnings;
+  for (const fs::path& path : notes.paths) {
+    const std::string name = path.filename().string();
+    warnings.push_back(PrintableText(path.string(), LineBreaks::kEscape) +
+                       ": a temporary left by an rpt that was killed while writing (no process " +
+                       std::to_string(TemporaryPid(name, "")) +
+                       " runs here); nothing reads it: delete it, unless an rpt on another machine writes there now");
+  }
+  return warnings;
+}
 
 StagedFile::StagedFile(const fs::path& target, NamedBy named_by, bool keep_extension) : target_(target) {
   std::error_code ec;
@@ -217,6 +276,7 @@ StagedFile::StagedFile(const fs::path& target, NamedBy named_by, bool keep_exten
     temporary_ = target_;
     return;
   }
+  if (named_by == NamedBy::kUser) NoteStaleTemporaries(target_.parent_path(), target_.filename().string());
   const int fd = CreateRegisteredFile(target_, &temporary_, keep_extension);
   if (fs::is_regular_file(entry)) ::fchmod(fd, static_cast<mode_t>(entry.permissions()) & 07777);  // keep the old mode
   ::close(fd);
@@ -289,6 +349,9 @@ StagedFolder::StagedFolder(const fs::path& target) : target_(target) {
   if (fs::exists(status) && !fs::is_directory(status)) {
     throw InputError(target_.string() + ": exists and is not a folder");
   }
+  // A killed run's staging folder beside this one, and its temporaries inside the old folder.
+  NoteStaleTemporaries(target_.parent_path(), target_.filename().string());
+  if (fs::is_directory(status)) NoteStaleTemporaries(target_, "");
   const fs::path absolute = fs::absolute(target_, ec).lexically_normal();
   if ((fs::exists(status) && HoldsCurrentDirectory(target_)) || !absolute.has_relative_path()) {
     if (fs::exists(status)) RefuseWriteProtected(target_, /*with_subfolders=*/false);

@@ -13,6 +13,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace rpt::io {
 
@@ -135,6 +136,12 @@ class ParentFolders {
  private:
   std::vector<std::filesystem::path> created_;  // outermost first
 };
+
+// Temporaries of a killed rpt found beside (or, for a folder, inside) an output named for a
+// StagedFolder or a user-named StagedFile: one warning line each ("<path>: left by an rpt process
+// that was killed ..."), for the command to print; they are never removed (another machine's rpt
+// on a shared folder may own one).
+std::vector<std::string> StaleTemporaryWarnings();
 
 // Removes every registered temporary (files and folders) and returns how many it removed. Keeps
 // the registry locked for good, so no thread creates or commits a temporary afterwards: call it

@@ -52,6 +52,8 @@ DetectionsFormat DetectionsFormatOf(const std::filesystem::path& path) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw InputError(source + ": file not found");
   if (std::filesystem::is_directory(path, ec)) return DetectionsFormat::kOpenPoseFolder;
+  // A FIFO, a device or a socket: never read (it may block or never end), whatever its name.
+  if (!std::filesystem::is_regular_file(path, ec)) throw InputError(source + ": not a regular file");
   if (IsHdf5Extension(path)) return DetectionsFormat::kHdf5Cache;
   const std::string extension = LowerExtension(path);
   if (extension == ".json") {

@@ -137,6 +137,17 @@ TEST_F(InputLimits, FileSizeAndFileTypeAreCheckedBeforeReading) {
     EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;
     EXPECT_TRUE(Contains(r.err, "fifo.json: not a regular file")) << r.err;
   }
+  // As --cameras or --detections, under any name (it read 'file not found' or 'unknown detection
+  // format' when named without an extension).
+  ASSERT_EQ(::mkfifo((dir_ / "fifo").c_str(), 0600), 0);
+  for (const std::string& args :
+       {"cameras show " + Path("fifo"), "cameras show " + Path("fifo.json"),
+        "triangulate --cameras " + Path("fifo") + " --detections " + Path("detections.json") + " --out " + Path("t1"),
+        "triangulate --labels " + Path("labels.json") + " --detections " + Path("fifo") + " --out " + Path("t2")}) {
+    const test::CommandResult r = test::RunRpt(args, "timeout 20 ");
+    EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;
+    EXPECT_TRUE(Contains(r.err, ": not a regular file")) << args << "\n" << r.err;
+  }
 }
 
 // One label with more cameras than --max-cameras, a detections frame with more views, a

@@ -271,6 +271,50 @@ TEST(StagedFolder, CarriesLinksAsLinksAndDropsFifos) {
   fs::remove_all(root);
 }
 
+// The pid of a process that has ended (forked, exited, waited for).
+pid_t EndedPid() {
+  const pid_t child = ::fork();
+  if (child == 0) ::_exit(0);
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  return child;
+}
+
+// Temporaries of a killed run beside a folder and inside it, and beside a file the user named, are
+// said (not removed); those of a running process (ours), other names, and names that only look like
+// temporaries are not.
+TEST(StaleTemporaryWarnings, NameTheTemporariesOfKilledRuns) {
+  const fs::path dir = FreshDir("stale");
+  const std::string dead = std::to_string(EndedPid());
+  const std::string alive = std::to_string(::getppid());
+  fs::create_directories(dir / "out");
+  fs::create_directories(dir / ("out.tmp-" + dead + "-0"));
+  for (const std::string& name : std::vector<std::string>{"out/predictions.json.tmp-" + dead + "-3", "out/cam.mp4.tmp-" + dead + "-4.mp4",
+                                  "out/summary.json.tmp-" + alive + "-1", std::string("out/notes.tmp-x-1"), "out/a.tmp-" + dead,
+                                  "outer.tmp-" + dead + "-0", "labels.json.tmp-" + dead + "-2", "other.json.tmp-" + dead + "-2"}) {
+    std::ofstream(dir / name) << "x";
+  }
+  {
+    StagedFolder folder(dir / "out");
+    StagedFile file(dir / "labels.json", NamedBy::kUser);
+  }
+  const std::vector<std::string> warnings = StaleTemporaryWarnings();
+  std::vector<std::string> named;
+  for (const std::string& w : warnings) {
+    if (w.rfind(dir.string(), 0) == 0) named.push_back(w.substr(dir.string().size() + 1, w.find(": ") - dir.string().size() - 1));
+  }
+  std::sort(named.begin(), named.end());
+  EXPECT_EQ(named, (std::vector<std::string>{"labels.json.tmp-" + dead + "-2", "out.tmp-" + dead + "-0",
+                                             "out/cam.mp4.tmp-" + dead + "-4.mp4",
+                                             "out/predictions.json.tmp-" + dead + "-3"}));
+  ASSERT_FALSE(warnings.empty());
+  EXPECT_NE(warnings.front().find("left by an rpt that was killed while writing (no process " + dead + " runs here)"),
+            std::string::npos)
+      << warnings.front();
+  EXPECT_TRUE(fs::exists(dir / ("out.tmp-" + dead + "-0"))) << "said, never removed";
+  fs::remove_all(dir);
+}
+
 TEST(CreateFolderInside, ReplacesLinksAndStaysInside) {
   const fs::path root = FreshDir("inside");
   fs::create_directories(root / "out" / "kept");
