@@ -4,6 +4,8 @@
 //   rpt.InputError(ValueError)    input that cannot be used (the CLI's InputError, exit code 2)
 //   rpt.InputFileNotFoundError(FileNotFoundError, rpt.InputError)   a file or folder named by
 //                                 the input is missing ("<path>: file not found", ...)
+//   rpt.OutputError(OSError, rpt.InputError)   an output that cannot be written (a full disk, no
+//                                 permission, a read-only folder: "<path>: write failed (...)", ...)
 // and the CLI's "warning:" lines as warnings of category rpt.InputWarning(UserWarning).
 #include <Python.h>
 
@@ -19,6 +21,7 @@ namespace {
 PyObject* config_error = nullptr;
 PyObject* input_error = nullptr;
 PyObject* missing_file_error = nullptr;
+PyObject* output_error = nullptr;
 PyObject* input_warning = nullptr;
 
 // The readers' words for a file or folder that is not there (datasets/io, datasets/calibration,
@@ -26,6 +29,17 @@ PyObject* input_warning = nullptr;
 // "<path>: file not found or unreadable".
 bool IsMissingFile(std::string_view message) {
   for (std::string_view words : {": file not found", ": folder not found", ": not found", "folder not found"}) {
+    if (message.find(words) != std::string_view::npos) return true;
+  }
+  return false;
+}
+
+// The writers' words for an output that cannot be written (datasets/io/staged_output.cc, the
+// exports): "<path>: write failed (<reason>)", "cannot open for writing", "cannot create output
+// folder", "cannot create the folder", "cannot replace", "cannot create the HDF5 file".
+bool IsWriteFailure(std::string_view message) {
+  for (std::string_view words : {"write failed (", "cannot open for writing", "cannot create output folder",
+                                 "cannot create the folder", ": cannot replace", "cannot create the HDF5 file"}) {
     if (message.find(words) != std::string_view::npos) return true;
   }
   return false;
@@ -47,7 +61,12 @@ void RegisterErrors(py::module_& m) {
   missing_file_error =
       NewException("rpt.InputFileNotFoundError", "A file or folder named by the input is missing.", bases);
   Py_DECREF(bases);
+  bases = PyTuple_Pack(2, PyExc_OSError, input_error);
+  output_error = NewException("rpt.OutputError",
+                              "An output that cannot be written (a full disk, no permission, a read-only folder).", bases);
+  Py_DECREF(bases);
   m.add_object("ConfigError", py::handle(config_error));
+  m.add_object("OutputError", py::handle(output_error));
   m.add_object("InputError", py::handle(input_error));
   m.add_object("InputFileNotFoundError", py::handle(missing_file_error));
   input_warning = NewException("rpt.InputWarning",
@@ -62,7 +81,10 @@ void RegisterErrors(py::module_& m) {
     } catch (const ConfigError& e) {
       PyErr_SetString(config_error, e.what());
     } catch (const InputError& e) {
-      PyErr_SetString(IsMissingFile(e.what()) ? missing_file_error : input_error, e.what());
+      PyErr_SetString(IsWriteFailure(e.what()) ? output_error
+                      : IsMissingFile(e.what()) ? missing_file_error
+                                                : input_error,
+                      e.what());
     } catch (const std::bad_alloc&) {
       PyErr_SetString(PyExc_MemoryError, "out of memory");
     }

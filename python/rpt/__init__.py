@@ -2,13 +2,13 @@
 metrics and exports, from Python at C++ speed. docs/python.md."""
 import sys as _sys
 
-from ._rpt import (Camera, ConfigError, InputError, InputFileNotFoundError, InputWarning, Options, Predictions,
-                   Triangulator, cameras, datasets, export, metrics, synthetic)
+from ._rpt import (Camera, ConfigError, InputError, InputFileNotFoundError, InputWarning, Options, OutputError,
+                   Predictions, Triangulator, cameras, datasets, export, metrics, synthetic)
 
 # `import rpt.cameras` and `from rpt.datasets import open` work like for files of the package.
 for _name in ("cameras", "datasets", "export", "metrics", "synthetic"):
     _sys.modules[__name__ + "." + _name] = globals()[_name]
 del _name
 
-__all__ = ["Camera", "ConfigError", "InputError", "InputFileNotFoundError", "InputWarning", "Options", "Predictions",
+__all__ = ["Camera", "ConfigError", "InputError", "InputFileNotFoundError", "InputWarning", "Options", "OutputError", "Predictions",
            "Triangulator", "cameras", "datasets", "export", "metrics", "synthetic"]

@@ -480,3 +480,14 @@ def test_unknown_joint_names_are_refused_as_in_files(rig):
     gt = [np.zeros((0, 17, 4))]
     with pytest.raises(rpt.InputError, match=r"metrics.evaluate: joint_names: unknown joint name 'left_ear'"):
         rpt.metrics.evaluate(gt, [np.zeros((0, 17, 4))], gt_joints=scene.joint_names, joint_names=names)
+
+
+def test_an_output_that_cannot_be_written_is_an_os_error(rig, tmp_path):
+    scene, triangulator = rig
+    predictions = rpt.Triangulator.for_sequence(scene).process_sequence(scene)
+    (tmp_path / "file").write_text("x")
+    # A file where the output folder goes: an OSError (it was a ValueError), still an rpt.InputError.
+    with pytest.raises(rpt.OutputError, match=r"file/out: cannot create the folder \(Not a directory\)$") as raised:
+        rpt.export.write(tmp_path / "file" / "out", predictions)
+    assert isinstance(raised.value, OSError) and isinstance(raised.value, rpt.InputError)
+    assert not isinstance(raised.value, FileNotFoundError)
