@@ -116,13 +116,17 @@ void CheckFollowArgs(const TriangulateArgs& args) {
 }
 
 // A run of frames in which no person was triangulated: what to check; "" when some were.
-std::string NobodyTriangulatedWarning(const engine::RunResult& run) {
+std::string NobodyTriangulatedWarning(const engine::RunResult& run, const UndistortOptions& undistort) {
   if (run.frames == 0 || run.output_persons > 0) return "";
   return run.counts.count_per_frame[static_cast<size_t>(Step::kUndistort)] == 0
              // Nothing to triangulate: the cameras are not to blame (that warning sent users to the calibration).
              ? "no person was triangulated in any of the " + std::to_string(run.frames) +
                    " frames: the detections hold no usable 2D pose in any camera (every view empty, or no pose "
-                   "with enough confident joints)"
+                   "with undistort.min_core_joints = " + std::to_string(undistort.min_core_joints) +
+                   " core joints scored at least undistort.min_joint_score = " +
+                   FormatOption(undistort.min_joint_score) +
+                   ": scores on another scale, such as heatmap values of 0-0.1, are all below it; "
+                   "--set undistort.min_joint_score=... lowers it)"
              : "no person was triangulated in any of the " + std::to_string(run.frames) +
                    " frames: check that the cameras and the detections belong together (camera names, pixel "
                    "units, image sizes; `rpt inspect`) and the calibration's convention (R and t map world to "
@@ -251,7 +255,7 @@ int RunFollow(const TriangulateArgs& args) {
                  lines.cut_bytes() > 0 ? ("is cut after " + std::to_string(lines.cut_bytes()) + " bytes").c_str()
                                        : "was not written");
   }
-  if (const std::string nobody = NobodyTriangulatedWarning(run); !nobody.empty()) {
+  if (const std::string nobody = NobodyTriangulatedWarning(run, config.triangulator.undistort); !nobody.empty()) {
     std::fprintf(stderr, "warning: %s\n", nobody.c_str());
   }
   if (folder) std::fprintf(stderr, "results in %s\n", PrintableText(args.out, LineBreaks::kEscape).c_str());
@@ -290,7 +294,7 @@ void RunTriangulate(const TriangulateArgs& args) {
   info.input_warnings = engine::InputWarningLines(run.warnings);
   info.input_warnings.insert(info.input_warnings.end(), agreement.begin(), agreement.end());
   // Nobody triangulated: said on stderr after the results, and in --json's warnings.
-  const std::string nobody = NobodyTriangulatedWarning(run);
+  const std::string nobody = NobodyTriangulatedWarning(run, config.triangulator.undistort);
   folder.Finish(run, config, info);
   // Tracks started over the run (a person lost longer than track.max_missing_frames comes back
   // under a new id: a count well above the people in the scene says ids break).

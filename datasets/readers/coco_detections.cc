@@ -36,6 +36,15 @@ std::int64_t ImageId(const json& value, const std::string& source, const std::st
     std::int64_t id = 0;
     if (io::ParseInteger(text, &id)) return id;
   }
+  if (value.is_string()) {
+    // AlphaPose and other tools write the image's file name as its id: there is no camera in it.
+    throw InputError(source + ": " + pointer + ": image id " + io::JsonExcerpt(value) +
+                     " is a name, not a number: COCO results name their image by the integer id of an annotation "
+                     "file's \"images\" (--coco-images FILE maps its file_name to frame and camera). Results "
+                     "that name image files (AlphaPose's) are one camera's each: write them as rpt's generic "
+                     "detections JSON, {\"joints\": [...], \"frames\": [{\"id\": ..., \"views\": [{\"camera\": ..., "
+                     "\"poses\": [[[x, y, score], ...]]}]}]} (docs/datasets/generic_formats.md)");
+  }
   throw InputError(source + ": " + pointer + ": expected an integer image id in the 64-bit signed range, got " + io::JsonExcerpt(value));
 }
 

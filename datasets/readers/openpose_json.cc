@@ -240,19 +240,30 @@ Detections ReadOpenPoseFolder(const std::filesystem::path& dir, const OpenPoseFo
                      "folders reached a second time through a link (a loop, or two links to one folder) not read "
                      "again (e.g. " + QuoteName(first_repeated) + ")",
                      repeated_folders);
-  bool any_face_or_hand = false, any_body25 = false;
+  bool any_body25 = false;
+  long persons = 0, with_face_or_hand = 0;
   for (RawFile& file : files) {
     file.people = ReadOpenPoseFile(file.path, source, &warnings);
     for (const RawPerson& person : file.people) {
-      any_face_or_hand |= !person.face.empty() || !person.hand_left.empty() || !person.hand_right.empty();
+      ++persons;
+      with_face_or_hand += !person.face.empty() || !person.hand_left.empty() || !person.hand_right.empty() ? 1 : 0;
       any_body25 |= person.body_points == 25;
     }
   }
   OpenPoseJointSet set = options.joints;
   if (set == OpenPoseJointSet::kAuto) {
-    set = any_face_or_hand ? OpenPoseJointSet::kWholeBody
-          : any_body25     ? OpenPoseJointSet::kBodyFeet
-                           : OpenPoseJointSet::kBody;
+    set = with_face_or_hand > 0 ? OpenPoseJointSet::kWholeBody
+          : any_body25          ? OpenPoseJointSet::kBodyFeet
+                                : OpenPoseJointSet::kBody;
+    // Whole-body chosen for all because some persons have face or hand points: said, with how few
+    // (one stray face made every person 133 joints, most of them missing, without a word).
+    if (set == OpenPoseJointSet::kWholeBody && with_face_or_hand < persons) {
+      warnings.AddMissing(source,
+                          "persons without face or hand points, while " + std::to_string(with_face_or_hand) +
+                              " others have them: --openpose-joints auto read every person as 133 COCO-WholeBody "
+                              "joints, theirs missing (--openpose-joints body-feet reads the body only)",
+                          persons - with_face_or_hand);
+    }
   }
   Detections detections;
   detections.unlisted_cameras_unavailable = true;  // a file per camera and frame: no file, no data

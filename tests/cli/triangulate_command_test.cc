@@ -932,6 +932,22 @@ TEST_F(Triangulate, OwnDataMistakesAreSaidNotSilent) {
   EXPECT_EQ(nobody.exit_code, 0);
   EXPECT_NE(nobody.err.find("the detections hold no usable 2D pose in any camera"), std::string::npos) << nobody.err;
   EXPECT_EQ(nobody.err.find("calibration's convention"), std::string::npos) << nobody.err;
+  // Scores on another scale (heatmap values of 0-0.05): every joint below undistort.min_joint_score,
+  // named with its value and how to lower it.
+  Detections faint = detections;
+  for (FrameDetections& frame : faint.frames) {
+    for (Poses2D& view : frame.views) {
+      for (size_t i = 2; i < view.data.size(); i += 3) view.data[i] *= 0.05;
+    }
+  }
+  WriteGenericDetections(dir_ / "faint.json", faint);
+  const test::CommandResult unscored = test::RunRpt("triangulate" + cameras + " --detections " +
+                                                    (dir_ / "faint.json").string() + " --quiet --out " + (dir_ / "f").string());
+  EXPECT_EQ(unscored.exit_code, 0) << unscored.err;
+  EXPECT_NE(unscored.err.find("no pose with undistort.min_core_joints = 3 core joints scored at least "
+                              "undistort.min_joint_score = 0.1: scores on another scale"),
+            std::string::npos)
+      << unscored.err;
   // --json holds what a script over many takes needs: the run, the folder, the counts of the text
   // line and the warnings (it had none of them).
   const test::CommandResult json = test::RunRpt("triangulate" + cameras + " --detections " + (dir_ / "blank.json").string() +

@@ -63,6 +63,17 @@ TEST(InputRanges, CocoImageIdBeyondInt64IsRefusedNotNegative) {
   EXPECT_THAT(error, Not(HasSubstr("-9223372036854775803")));
 }
 
+// AlphaPose writes the image's file name as its id: named as a name, with where to go ("7" as a
+// string of digits stays an id).
+TEST(InputRanges, CocoImageIdThatIsAFileNameSaysWhatToWrite) {
+  test::TempDir dir;
+  const auto results = WriteText(dir, "alphapose.json",
+                                 R"([{"image_id": "000001.jpg", "category_id": 1, "score": 0.9, "keypoints": [1, 2, 1]}])");
+  const std::string error = InputErrorOf([&] { ReadCocoDetections(results); });
+  EXPECT_THAT(error, HasSubstr("alphapose.json: /0/image_id: image id \"000001.jpg\" is a name, not a number"));
+  EXPECT_THAT(error, HasSubstr("generic detections JSON"));
+}
+
 // One generic label of scene S with a camera at `center` (metres) and distortion `dc`, and extra members.
 std::string Label(const std::string& id, const std::string& extra, const std::string& center = "0, 0, -3",
                   const std::string& dc = "0.1, 0, 0, 0, 0") {

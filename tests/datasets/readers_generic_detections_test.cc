@@ -314,6 +314,15 @@ TEST(OpenPose, WholeBodyFaceAndHands) {
   EXPECT_DOUBLE_EQ(q(2, FindJoint(d.joints, "foot_heel_left")), 0.0);
   EXPECT_DOUBLE_EQ(q(2, FindJoint(d.joints, "face_10")), 0.0);
   EXPECT_DOUBLE_EQ(q(0, FindJoint(d.joints, "ankle_left")), 23);  // COCO-18 13
+  // One person of two has face and hands: auto chose whole-body for both, and says so.
+  ASSERT_EQ(d.warnings.items().size(), 1u);
+  EXPECT_EQ(d.warnings.items()[0].Line(),
+            dir.path().string() + ": 1 persons without face or hand points, while 1 others have them: "
+            "--openpose-joints auto read every person as 133 COCO-WholeBody joints, theirs missing "
+            "(--openpose-joints body-feet reads the body only)");
+  OpenPoseFolderOptions whole_body;
+  whole_body.joints = OpenPoseJointSet::kWholeBody;
+  EXPECT_TRUE(ReadOpenPoseFolder(dir.path(), whole_body).warnings.empty()) << "asked for: nothing to say";
 }
 
 TEST(OpenPose, CustomMappingAndErrors) {
@@ -349,7 +358,9 @@ TEST(OpenPose, ConfidencesSlightlyAboveOneAreCountedOncePerFolder) {
   nlohmann::json hands = {{"pose_keypoints_2d", Flat(18, 10, 0.5)}, {"hand_left_keypoints_2d", Flat(21, 50, 1.008)}};
   WriteOpenPose(dir, "c0/v_000000000001_keypoints.json", {person});
   WriteOpenPose(dir, "c1/v_000000000001_keypoints.json", {person, hands});
-  const Detections d = ReadOpenPoseFolder(dir.path());
+  OpenPoseFolderOptions whole_body;  // asked for (auto would also say that two persons have no hands)
+  whole_body.joints = OpenPoseJointSet::kWholeBody;
+  const Detections d = ReadOpenPoseFolder(dir.path(), whole_body);
   for (const Poses2D& view : d.frames[0].views) {
     for (size_t i = 2; i < view.data.size(); i += 3) EXPECT_LE(view.data[i], 1.0);
     EXPECT_EQ(view.Person(0)(2, FindJoint(d.joints, "nose")), 1.0);
