@@ -159,6 +159,20 @@ void RegisterCameras(py::module_& m, py::module_& cameras) {
       // A Camera is a value: copies are independent cameras (a deepcopy in a notebook failed).
       .def("__copy__", [](const Camera& c) { return c; })
       .def("__deepcopy__", [](const Camera& c, py::dict) { return c; }, py::arg("memo"))
+      // Pickled as the constructor's arguments and unpickled through the constructor's checks (a
+      // multiprocessing worker gets the same camera; a tampered pickle gets the constructor's errors).
+      .def(py::pickle(
+          [](const Camera& c) {
+            return py::make_tuple(c.name, c.width, c.height, MatrixArray(c.K), MatrixArray(c.R),
+                                  MatrixArray(c.t).reshape({3}),
+                                  MatrixArray(Eigen::Map<const Eigen::Matrix<double, 5, 1>>(c.dist.data())).reshape({5}),
+                                  ModelText(c.model));
+          },
+          [](const py::tuple& state) {
+            if (state.size() != 8) throw InputError("Camera (unpickled): expected 8 values, got " + std::to_string(state.size()));
+            return MakeCamera(state[0].cast<std::string>(), state[1].cast<int>(), state[2].cast<int>(), state[3], state[4],
+                              state[5], py::none(), state[6], state[7].cast<std::string>());
+          }))
       .def_property_readonly("model", [](const Camera& c) { return ModelText(c.model); })
       .def("project", &Project, py::arg("points"),
            "World points (n, 3) in metres -> (pixels (n, 2) in the distorted image, in_front (n,) bool)")

@@ -1,6 +1,7 @@
 """rpt.Camera and rpt.cameras: projection with hand-computed pixels, undistortion, every calibration
 format the CLI reads (written here and read back, the real fixtures when ../shared/data exists)."""
 import copy
+import pickle
 
 import numpy as np
 import pytest
@@ -111,6 +112,23 @@ def test_matrices_are_read_only_and_cameras_copy():
     twin = copy.deepcopy(camera)
     assert repr(twin) == repr(camera) and np.array_equal(twin.K, camera.K) and twin is not camera
     assert copy.copy(camera).name == "c"
+
+
+def test_cameras_pickle_for_worker_processes():
+    # multiprocessing hands cameras to workers by pickle (it raised 'cannot pickle'); the same
+    # camera comes back, through the constructor's checks.
+    for camera in rpt.synthetic.scene(cameras=2, frames=1, distortion="fisheye").cameras:
+        twin = pickle.loads(pickle.dumps(camera))
+        assert repr(twin) == repr(camera)
+        for name in ("K", "R", "t", "dist"):
+            assert np.array_equal(getattr(twin, name), getattr(camera, name)), name
+    state = list(camera.__getstate__())
+    assert state[7] == "fisheye"
+    state[7] = "barrel"  # a tampered pickle: the constructor's error
+    with pytest.raises(rpt.ConfigError, match=r"barrel"):
+        rpt.Camera.__new__(rpt.Camera).__setstate__(tuple(state))
+    with pytest.raises(rpt.InputError, match=r"^Camera \(unpickled\): expected 8 values, got 2$"):
+        rpt.Camera.__new__(rpt.Camera).__setstate__((1, 2))
 
 
 def test_load_warns_as_cameras_show(tmp_path):
