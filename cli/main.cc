@@ -160,7 +160,7 @@ int main(int argc, char** argv) {
     const std::vector<CLI::App*> ran = app.get_subcommands();
     std::fprintf(stderr, "error: out of memory running `rpt %s`: the input is too large for this machine (see the "
                  "limits in `rpt --help`: --max-input-mb, --max-cameras)\n", ran.empty() ? "" : ran[0]->get_name().c_str());
-    return 1;
+    return 2;  // as the same failure named by its input: the input is what is too large
   } catch (const std::exception& e) {
     std::fprintf(stderr, "internal error: %s\n", e.what());
     return 1;

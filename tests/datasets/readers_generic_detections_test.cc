@@ -439,6 +439,8 @@ TEST(Coco, MalformedListsNameFileAndPointer) {
   EXPECT_THAT(InputErrorOf([&] { ReadCocoDetections(results(nlohmann::json::array({CocoResult(17, 1)}))); }),
               HasSubstr("/0/image_id: image id 17 is not an MVOR multi-view id"));
   EXPECT_THAT(InputErrorOf([&] { ReadCocoDetections(results(nlohmann::json::array({{{"image_id", "x"}}}))); }),
+              HasSubstr("/0/image_id: image id \"x\" is a name, not a number"));
+  EXPECT_THAT(InputErrorOf([&] { ReadCocoDetections(results(nlohmann::json::array({{{"image_id", 2.5}}}))); }),
               HasSubstr("/0/image_id: expected an integer image id"));
   const auto annotations = WriteText(dir, "ann.json", R"({"images": [{"id": 1, "file_name": "flat.jpg"}]})");
   CocoDetectionsOptions options;
