@@ -3,6 +3,7 @@
 
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/statvfs.h>
 #include <unistd.h>
@@ -108,6 +109,16 @@ std::string WriteFailureReason(const fs::path& file, int saved_errno) {
   struct statvfs space {};
   const fs::path folder = file.has_parent_path() ? file.parent_path() : fs::path(".");
   if (::statvfs(folder.c_str(), &space) == 0 && space.f_bavail == 0) return std::strerror(ENOSPC);
+  // A file size limit (ulimit -f) the file has reached: the write that crossed it failed with EFBIG,
+  // but errno is long overwritten when the stream's failure is noticed at its flush (or on the
+  // thread that wrote it).
+  struct rlimit limit {};
+  std::error_code ec;
+  const std::uintmax_t size = fs::file_size(file, ec);
+  if (!ec && ::getrlimit(RLIMIT_FSIZE, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY &&
+      size + 4096 > static_cast<std::uintmax_t>(limit.rlim_cur)) {  // writes stop at the limit, to the byte
+    return std::strerror(EFBIG);
+  }
   return "reason unknown";
 }
 

@@ -33,7 +33,8 @@ enum class NamedBy {
 // an error a write gives (no space, quota, file too large, I/O, read-only, permission); otherwise
 // (a stream's failure leaves errno to whatever call came last: "No such file or directory" was said
 // of a full disk) "No space left on device" when the file's file system has no free block left,
-// else "reason unknown".
+// "File too large" when the file has reached the process's file size limit (ulimit -f), else
+// "reason unknown".
 std::string WriteFailureReason(const std::filesystem::path& file, int saved_errno);
 
 // A file written under a temporary name in the target's folder, then renamed over the target by

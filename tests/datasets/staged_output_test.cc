@@ -3,7 +3,9 @@
 #include "datasets/io/staged_output.h"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -312,6 +314,32 @@ TEST(StaleTemporaryWarnings, NameTheTemporariesOfKilledRuns) {
             std::string::npos)
       << warnings.front();
   EXPECT_TRUE(fs::exists(dir / ("out.tmp-" + dead + "-0"))) << "said, never removed";
+  fs::remove_all(dir);
+}
+
+// The reason of a failed write when errno no longer holds it (a stream's failure noticed at its
+// flush, after other calls): a file at the file size limit is "File too large"; otherwise the
+// errno given, or "reason unknown". In a child process: the limit is the process's.
+TEST(WriteFailureReason, AFileAtTheSizeLimitIsTooLargeWhateverErrnoSays) {
+  const fs::path dir = FreshDir("reason");
+  const pid_t child = ::fork();
+  if (child == 0) {
+    ::signal(SIGXFSZ, SIG_IGN);
+    const rlimit limit{8192, 8192};
+    if (::setrlimit(RLIMIT_FSIZE, &limit) != 0) ::_exit(10);
+    { std::ofstream(dir / "big") << std::string(20000, 'x'); }
+    { std::ofstream(dir / "small") << std::string(100, 'x'); }
+    if (fs::file_size(dir / "big") != 8192) ::_exit(11);
+    if (WriteFailureReason(dir / "big", 0) != "File too large") ::_exit(12);
+    if (WriteFailureReason(dir / "big", ENOENT) != "File too large") ::_exit(13);
+    if (WriteFailureReason(dir / "small", 0) != "reason unknown") ::_exit(14);
+    if (WriteFailureReason(dir / "small", ENOSPC) != "No space left on device") ::_exit(15);
+    ::_exit(0);
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0) << "the check that failed: 10 setrlimit, 11 size, 12-15 the reasons in order";
   fs::remove_all(dir);
 }
 
