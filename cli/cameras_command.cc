@@ -13,6 +13,7 @@
 #include "cli/field_options.h"
 #include "cli/input_options.h"
 #include "core/printable_text.h"
+#include "datasets/camera_plausibility.h"
 #include "datasets/calibration/calibration.h"
 #include "datasets/io/staged_output.h"
 
@@ -24,15 +25,24 @@ namespace fs = std::filesystem;
 void PrintCameras(const fs::path& path, const Calibration& calibration) {
   std::printf("%s: %zu cameras\n", PrintableText(path.string()).c_str(), calibration.cameras.size());
   for (const std::string& line : calibration.description.Lines()) std::printf("  %s\n", PrintableText(line).c_str());
-  std::printf("\n  %-16s %11s  %-9s %26s  %17s  %20s\n", "camera", "image (px)", "lens", "centre x y z (m)",
-              "focal fx fy (px)", "principal point (px)");
-  for (const Camera& c : calibration.cameras) {
+  // The widest angle to another camera where their views cross: below 10 degrees depth is poorly
+  // fixed (datasets/camera_plausibility.h); "-" when no other camera's view crosses this one's.
+  const std::vector<double> widest = WidestCrossingAnglesDeg(calibration.cameras);
+  std::printf("\n  %-16s %11s  %-9s %26s  %17s  %20s  %s\n", "camera", "image (px)", "lens", "centre x y z (m)",
+              "focal fx fy (px)", "principal point (px)", "widest angle (deg)");
+  for (std::size_t i = 0; i < calibration.cameras.size(); ++i) {
+    const Camera& c = calibration.cameras[i];
     const std::string size = std::to_string(c.width) + "x" + std::to_string(c.height);
     const Eigen::Vector3d centre = c.Center();
-    std::printf("  %-16s %11s  %-9s %8.3f %8.3f %8.3f  %8.1f %8.1f  %8.1f %8.1f\n", PrintableText(c.name, LineBreaks::kEscape).c_str(),
-                size.c_str(), DistortionModelName(c.model), centre.x(), centre.y(), centre.z(), c.K(0, 0), c.K(1, 1),
-                c.K(0, 2), c.K(1, 2));
+    char angle[16] = "-";
+    if (widest[i] >= 0) std::snprintf(angle, sizeof(angle), "%.0f", widest[i]);
+    std::printf("  %-16s %11s  %-9s %8.3f %8.3f %8.3f  %8.1f %8.1f  %8.1f %8.1f  %18s\n",
+                PrintableText(c.name, LineBreaks::kEscape).c_str(), size.c_str(), DistortionModelName(c.model),
+                centre.x(), centre.y(), centre.z(), c.K(0, 0), c.K(1, 1), c.K(0, 2), c.K(1, 2), angle);
   }
+  std::printf("\n  widest angle: between the camera's rays and another camera's where their views cross, the "
+              "widest over the other cameras (under %.0f: depth along its view is poorly fixed)\n",
+              kMinPlausibleViewAngleDeg);
 }
 
 }  // namespace

@@ -35,10 +35,22 @@ inline constexpr double kMaxPlausibleRigSpanM = 100.0;
 // than a quarter of the image from its centre"); does nothing when `warnings` is null.
 void CountImplausibleCamera(const Camera& camera, const std::string& source, InputWarnings* warnings);
 
+// Below this angle between two cameras' rays where their views cross (the widest over a camera's
+// partners), the depth along its view rests on too little: a stereo bar 20 cm wide sees a point
+// 4 m ahead from 2.9 degrees apart. Real rigs: 30 degrees and more (Shelf, Campus, Panoptic, MVOR).
+inline constexpr double kMinPlausibleViewAngleDeg = 10.0;
+
+// Per camera, the widest angle (degrees, 0-180) between its rays and another camera's to the
+// point where their views cross
+// (midway between the closest points of their optical axes; 4 m ahead for nearly parallel axes);
+// -1 when no other camera's view crosses its view in front of both.
+std::vector<double> WidestCrossingAnglesDeg(const std::vector<Camera>& cameras);
+
 // Counts, under `source`, each pair of cameras whose centres are less than 1 cm apart ("camera
 // pairs at the same spot (centres less than 1 cm apart)") and a rig spanning more than 100 m
-// ("camera rigs spanning more than 100 m (millimetres read as metres? check the units)"); does
-// nothing when `warnings` is null.
+// ("camera rigs spanning more than 100 m (millimetres read as metres? check the units)"), and the
+// cameras whose widest crossing angle is below kMinPlausibleViewAngleDeg, named; does nothing when
+// `warnings` is null.
 void CountImplausibleRig(const std::vector<Camera>& cameras, const std::string& source, InputWarnings* warnings);
 
 }  // namespace rpt

@@ -91,6 +91,42 @@ TEST(CameraPlausibility, CamerasAtOneSpotAndMillimetreRigsAreCounted) {
   EXPECT_NEAR(warnings.items()[0].worst, 1000.0 * std::sqrt(6.2 * 6.2 + 6.3 * 6.3 + 0.1 * 0.1), 1e-6);
 }
 
+// Cameras side by side see the scene from nearly one direction: named with the widest angle of
+// their rays where their views cross (both aim at the room centre (0, 0, 1): the angle there); a
+// third camera 90 degrees around fixes it; cameras looking apart share no view (-1, not warned).
+TEST(CameraPlausibility, CamerasSeeingTheSceneFromOneDirectionAreNamed) {
+  const double kDeg = 180.0 / std::acos(-1.0);
+  const Eigen::Vector3d target(0, 0, 1), left(4, 0, 2.5), right(4, 0.3, 2.5);
+  std::vector<Camera> rig = {test::LookingAtRoomCentre("left", left), test::LookingAtRoomCentre("right", right)};
+  const double expected = std::acos((left - target).normalized().dot((right - target).normalized())) * kDeg;  // 4.0
+  std::vector<double> widest = WidestCrossingAnglesDeg(rig);
+  ASSERT_EQ(widest.size(), 2u);
+  EXPECT_NEAR(widest[0], expected, 1e-9);
+  EXPECT_NEAR(widest[1], expected, 1e-9);
+  InputWarnings warnings;
+  CountImplausibleRig(rig, "rig", &warnings);
+  EXPECT_THAT(Lines(warnings),
+              ElementsAre("rig: 2 cameras that see the scene from nearly the same direction as every other camera "
+                          "('left', 'right'; 4.0 degrees at the least between their rays where their views cross): "
+                          "depth along their view is poorly fixed; a camera placed 30 degrees or more around the "
+                          "scene from them fixes it"));
+  // Parallel axes (a stereo bar, 20 cm): the point 4 m ahead, 2 atan(0.1 / 4) apart.
+  Camera twin = Camera::FromCenter(rig[0].R, left + 0.2 * rig[0].R.row(0).transpose());
+  twin.name = "twin";
+  EXPECT_NEAR(WidestCrossingAnglesDeg({rig[0], twin})[0], 2 * std::atan(0.1 / 4.0) * kDeg, 1e-9);
+  // A third camera 90 degrees around: every camera has a wide partner.
+  rig.push_back(test::LookingAtRoomCentre("side", {0, 4, 2.5}));
+  widest = WidestCrossingAnglesDeg(rig);
+  EXPECT_GT(widest[0], 60.0);
+  warnings = {};
+  CountImplausibleRig(rig, "rig", &warnings);
+  EXPECT_TRUE(warnings.empty()) << testing::PrintToString(Lines(warnings));
+  // Looking apart (back to back): no crossing view, nothing to say.
+  const Eigen::Matrix3d turned = Eigen::Vector3d(-1, 1, -1).asDiagonal() * rig[0].R;  // half a turn about its y axis
+  const Camera back = Camera::FromCenter(turned, left + Eigen::Vector3d(0, 0.3, 0));
+  EXPECT_THAT(WidestCrossingAnglesDeg({rig[0], back}), ElementsAre(-1.0, -1.0));
+}
+
 TEST(CameraPlausibility, ReadCalibrationCountsImplausibleRigsOfEveryFormat) {
   test::TempDir dir;
   std::vector<Camera> rig = test::MakeRig(false);
