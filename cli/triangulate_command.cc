@@ -144,6 +144,9 @@ std::vector<std::string> PrintCameraAgreement(const engine::RunResult& run) {
     if (std::string upright = engine::UprightWarning(sequence.name, sequence.upright); !upright.empty()) {
       warnings.push_back(std::move(upright));
     }
+    if (std::string mirrored = engine::MirroredWarning(sequence.name, sequence.upright); !mirrored.empty()) {
+      warnings.push_back(std::move(mirrored));
+    }
     warnings.insert(warnings.end(), sequence.camera_sync.begin(), sequence.camera_sync.end());
     for (std::string& line : warnings) {
       std::fprintf(stderr, "warning: %s\n", line.c_str());

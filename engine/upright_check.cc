@@ -12,13 +12,30 @@ UprightCheck::UprightCheck(const JointNames& output_joints) {
   }
   const int left = FindJoint(output_joints, "ankle_left"), right = FindJoint(output_joints, "ankle_right");
   if (left >= 0 && right >= 0) ankles_ = {left, right};
+  for (const char* name : {"nose", "shoulder_left", "shoulder_right", "hip_left", "hip_right"}) {
+    facing_.push_back(FindJoint(output_joints, name));
+    if (facing_.back() < 0) {
+      facing_.clear();
+      break;
+    }
+  }
 }
 
 void UprightCheck::Add(const Poses3D& persons) {
-  if (head_.empty() || ankles_.empty()) return;
   const auto observed = [&](int p, int j) {
     return persons.Person(p)(3, j) > 0 && persons.Provenance(p, j) == JointProvenance::kTriangulated;
   };
+  for (int p = 0; p < persons.num_persons() && !facing_.empty(); ++p) {
+    bool all = true;
+    for (const int j : facing_) all = all && observed(p, j);
+    if (!all) continue;
+    const auto at = [&](int k) { return persons.Person(p).col(facing_[static_cast<size_t>(k)]).head<3>(); };
+    const Eigen::Vector3d shoulders = 0.5 * (at(1) + at(2)), hips = 0.5 * (at(3) + at(4));
+    const Eigen::Vector3d forward = (shoulders - hips).cross(at(2) - at(1));
+    ++count_.facing_judged;
+    count_.mirrored += (at(0) - shoulders).dot(forward) < 0 ? 1 : 0;
+  }
+  if (head_.empty() || ankles_.empty()) return;
   for (int p = 0; p < persons.num_persons(); ++p) {
     if (!observed(p, ankles_[0]) || !observed(p, ankles_[1])) continue;
     double head_z = 0;
@@ -46,6 +63,21 @@ std::string UprightWarning(const std::string& sequence, const UprightCount& coun
                        ") stand on their heads (head below the ankles; rpt's world has z up): do the detections' "
                        "pixel rows count from the image's top (v down, as OpenCV), and does the calibration's world "
                        "z point up?");
+}
+
+std::string MirroredWarning(const std::string& sequence, const UprightCount& count) {
+  // Persons on their heads (a v flip is a mirror too) are said by UprightWarning alone.
+  if (!UprightWarning(sequence, count).empty() || count.facing_judged < kMinUprightJudged ||
+      static_cast<double>(count.mirrored) <= kMaxMirroredShare * static_cast<double>(count.facing_judged)) {
+    return "";
+  }
+  return PrintableText(sequence + ": " + std::to_string(count.mirrored) + " of the " +
+                       std::to_string(count.facing_judged) +
+                       " persons with nose, shoulders and hips triangulated (" +
+                       PercentText(static_cast<double>(count.mirrored) / count.facing_judged) +
+                       ") have the nose behind the shoulders, as mirror images have (real detections: under 2 %): "
+                       "are the detections of mirrored images in every camera (a webcam's selfie view, a flipped "
+                       "video), or left and right exchanged in the joint names?");
 }
 
 }  // namespace rpt::engine

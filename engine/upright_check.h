@@ -4,6 +4,15 @@
 // bottom (v flipped), give persons standing on their heads, without any other sign: each camera's
 // projections still match its detections. A person is judged when its head (nose, eyes or ears)
 // and both ankles are triangulated; most judged persons with the head below the ankles is named.
+//
+// And are they mirror images? Detections of mirrored images in every camera (a webcam's selfie
+// view, a flipped video) give persons whose left and right are exchanged, or junk from views that
+// do not fit; each camera's projections may still match. A person with nose, shoulders and hips
+// triangulated faces the way (mid-shoulder - mid-hip) x (shoulder_right - shoulder_left) points
+// (z up, right east: north); its nose lies in front of its shoulders. Real detections put under
+// 2 % of persons' noses behind (`rpt triangulate`: MVOR 0.7 %, Shelf-4DA 0.0 %, generated scenes
+// with the hard detector 1.2 %), mirrored detections in every camera 49.6 %; more than a quarter
+// is named.
 #pragma once
 
 #include <string>
@@ -16,10 +25,13 @@ namespace rpt::engine {
 
 inline constexpr long kMinUprightJudged = 20;   // persons judged before anything is said
 inline constexpr double kMaxUpsideDownShare = 0.5;
+inline constexpr double kMaxMirroredShare = 0.25;
 
 struct UprightCount {
-  long judged = 0;       // persons with a triangulated head joint and both ankles
-  long upside_down = 0;  // of those: the head's mean z below the ankles' mean z
+  long judged = 0;         // persons with a triangulated head joint and both ankles
+  long upside_down = 0;    // of those: the head's mean z below the ankles' mean z
+  long facing_judged = 0;  // persons with nose, both shoulders and both hips triangulated
+  long mirrored = 0;       // of those: the nose behind the shoulders (left and right exchanged)
 };
 
 class UprightCheck {
@@ -31,10 +43,15 @@ class UprightCheck {
  private:
   std::vector<int> head_;    // output joint indices of the head joints present
   std::vector<int> ankles_;  // ankle_left, ankle_right (empty when either is missing)
+  std::vector<int> facing_;  // nose, shoulder_left, shoulder_right, hip_left, hip_right (empty when one is missing)
   UprightCount count_;
 };
 
 // The warning line of a sequence whose persons are mostly upside down; empty otherwise.
 std::string UprightWarning(const std::string& sequence, const UprightCount& count);
+// The warning line of a sequence whose persons are mirror images more than kMaxMirroredShare of
+// the time (at least kMinUprightJudged judged) and not upside down (UprightWarning says those);
+// empty otherwise.
+std::string MirroredWarning(const std::string& sequence, const UprightCount& count);
 
 }  // namespace rpt::engine

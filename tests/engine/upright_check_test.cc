@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// engine::UprightCheck: persons standing on their heads (v flipped, world z down) are named.
+// engine::UprightCheck: persons standing on their heads (v flipped, world z down) and mirror images
+// (left and right exchanged) are named.
 #include "engine/upright_check.h"
 
 #include <gtest/gtest.h>
@@ -54,6 +55,56 @@ TEST(UprightCheck, PersonsOnTheirHeadsAreNamedUprightOnesAreNot) {
   UprightCheck unjudged(CocoBodyJoints());
   unjudged.Add(filled);
   EXPECT_EQ(unjudged.count().judged, 0);
+}
+
+// `count` standing persons (COCO-17) at yaws 0, 1, 2, ... rad, the first `mirrored` of them with
+// every left joint's and right joint's places exchanged (a mirror image).
+Poses3D Facing(int count, int mirrored) {
+  const JointNames& joints = CocoBodyJoints();
+  Poses3D persons;
+  persons.Clear(17);
+  for (int p = 0; p < count; ++p) {
+    Eigen::Matrix4Xd body = test::StandingPerson(0.5 * p, 0, 1.0 * p);
+    if (p < mirrored) {
+      const Eigen::Matrix4Xd original = body;
+      for (size_t j = 0; j < joints.size(); ++j) {
+        const std::string& name = joints[j];
+        std::string other = name;
+        if (const size_t at = name.find("_left"); at != std::string::npos) other.replace(at, 5, "_right");
+        if (const size_t at = name.find("_right"); at != std::string::npos) other.replace(at, 6, "_left");
+        body.col(static_cast<int>(j)) = original.col(FindJoint(joints, other));
+      }
+    }
+    persons.AddPerson() = body;
+  }
+  return persons;
+}
+
+TEST(UprightCheck, MirrorImagesAreNamedAboveAQuarter) {
+  UprightCheck facing(CocoBodyJoints());
+  facing.Add(Facing(25, 0));
+  EXPECT_EQ(facing.count().facing_judged, 25);
+  EXPECT_EQ(facing.count().mirrored, 0) << "every yaw: the nose in front";
+  EXPECT_EQ(MirroredWarning("s", facing.count()), "");
+  UprightCheck mirrored(CocoBodyJoints());
+  mirrored.Add(Facing(25, 7));  // 28 %
+  EXPECT_EQ(mirrored.count().mirrored, 7);
+  const std::string line = MirroredWarning("take", mirrored.count());
+  EXPECT_EQ(line.rfind("take: 7 of the 25 persons with nose, shoulders and hips triangulated (28 %) have the nose "
+                       "behind the shoulders, as mirror images have",
+                       0),
+            0u)
+      << line;
+  UprightCheck quarter(CocoBodyJoints());
+  quarter.Add(Facing(24, 6));  // 25 %: not more than a quarter
+  EXPECT_EQ(quarter.count().mirrored, 6);
+  EXPECT_EQ(MirroredWarning("s", quarter.count()), "");
+  // Persons on their heads are mirror images too: said once, by the upright warning.
+  UprightCheck flipped(CocoBodyJoints());
+  flipped.Add(Persons(20, true));
+  EXPECT_EQ(flipped.count().mirrored, 20);
+  EXPECT_NE(UprightWarning("s", flipped.count()), "");
+  EXPECT_EQ(MirroredWarning("s", flipped.count()), "");
 }
 
 }  // namespace
