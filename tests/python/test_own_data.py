@@ -226,6 +226,24 @@ def test_views_of_two_cameras_exchanged_are_warned_about_as_the_cli_does():
             triangulator.process(f.views, f.timestamp)
 
 
+def test_mirrored_images_in_every_camera_are_warned_about_as_the_cli_does():
+    """Detections of mirrored images (u -> width - u in every camera: a webcam's selfie view) gave
+    junk persons without a word; the CLI's mirror-image check runs at the end of process_sequence."""
+    scene = rpt.synthetic.scene(cameras=5, people=4, frames=60, noise="clean")
+    frames = []
+    for f in scene:
+        views = []
+        for camera, view in zip(scene.cameras, f.views):
+            mirrored = view.copy()
+            seen = mirrored[..., 2] > 0
+            mirrored[..., 0][seen] = camera.width - mirrored[..., 0][seen]
+            views.append(mirrored)
+        frames.append((views, f.timestamp))
+    with pytest.warns(rpt.InputWarning, match=r"persons with nose, shoulders and hips triangulated \(\d+ %\) have the "
+                                              r"nose behind the shoulders, as mirror images have"):
+        rpt.Triangulator(scene.cameras, scene.joint_names).process_sequence(frames)
+
+
 def test_settings_without_effect_and_frames_without_times_are_warned_about():
     scene = rpt.synthetic.scene(cameras=3, people=1, frames=5, noise="clean")
     with pytest.warns(rpt.InputWarning, match=r"smooth.mode=offline has no effect with track.enabled=false"):
