@@ -27,6 +27,7 @@
 #include "cli/interrupt.h"
 #include "cli/progress.h"
 #include "cli/threads_option.h"
+#include "core/option_codec.h"
 #include "core/pipeline/steps.h"
 #include "core/printable_text.h"
 #include "datasets/io/json_file.h"
