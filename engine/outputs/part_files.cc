@@ -32,7 +32,8 @@ std::ostream& PartFiles::Open(int sequence) {
 void PartFiles::Close(int sequence) {
   Part& part = parts_[sequence];
   part.out.flush();
-  if (!part.out) throw InputError(part.path.string() + ": write failed (" + io::WriteFailureReason(part.path, errno) + ")");
+  // Named as the file it is a part of (the part's scratch name is nothing the user knows).
+  if (!part.out) throw InputError(target_.string() + ": write failed (" + io::WriteFailureReason(part.path, errno) + ")");
   part.out.close();
 }
 

@@ -66,7 +66,8 @@ void PredictionsWriter::Frame(const FrameOutput& frame) {
 void PredictionsWriter::EndSequence(int sequence) {
   Part& part = *parts_[sequence];
   part.out.flush();
-  if (!part.out) throw InputError(part.path.string() + ": write failed (" + io::WriteFailureReason(part.path, errno) + ")");
+  // Named as the file it is a part of (the part's scratch name is nothing the user knows).
+  if (!part.out) throw InputError(path_.string() + ": write failed (" + io::WriteFailureReason(part.path, errno) + ")");
   part.out.close();
 }
 

@@ -104,6 +104,8 @@ class RunFolder {
   std::unique_ptr<TrcExport> trc_;
   std::unique_ptr<ArrayFrames> arrays_;  // for predictions.npz and predictions.h5
   std::unique_ptr<SinkList> sinks_;
+  class NamedSink;
+  std::unique_ptr<NamedSink> named_sink_;  // sinks_, their errors naming the folder given
 };
 
 // "<dir>/report.html: the page of the earlier run here (carried over with the folder's other files):

@@ -269,7 +269,10 @@ TEST(AtomicOutputs, Hdf5WriteFailureExits2WithoutACrash) {
   const test::CommandResult limited = test::RunRpt(
       "eval --dataset synthetic --param frames=400 --quiet --out " + out.string(), "ulimit -f 64; ");
   EXPECT_EQ(limited.exit_code, 2) << limited.err;
-  EXPECT_NE(limited.err.find("write failed (File too large)"), std::string::npos) << limited.err;
+  // Named as the file of the folder given (it named run.tmp-<pid>-0/predictions.json.part-0.tmp-<pid>-1).
+  EXPECT_NE(limited.err.find("error: " + (out / "predictions.json").string() + ": write failed (File too large)"),
+            std::string::npos)
+      << limited.err;
   EXPECT_EQ(test::ReadAll(out / "run.json"), before);
   std::vector<std::string> names;
   for (const auto& entry : fs::directory_iterator(root)) names.push_back(entry.path().filename().string());
