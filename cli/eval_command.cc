@@ -137,7 +137,20 @@ void RunEval(const EvalArgs& args) {
                 PrintableText(engine::FitDescription(adapter->fit), LineBreaks::kEscape).c_str(), run.adapted_persons,
                 run.unadapted_persons);
   }
-  if (run.metrics.legacy_pcp) std::printf("  legacy PCP (actors 1-3) %.1f %%\n", run.metrics.legacy_pcp->average_pcp);
+  if (run.metrics.legacy_pcp) {
+    // The actors the average is over: those of 1..legacy_pcp_actors with GT here (papers' tables
+    // average all three; a selection without one of them averages fewer, said).
+    std::string averaged;
+    int count = 0;
+    for (const auto& actor : run.metrics.legacy_pcp->actors) {
+      if (!actor.averaged) continue;
+      averaged += (count++ == 0 ? "" : ", ") + std::to_string(actor.actor_id + 1);
+    }
+    const int expected = config.metrics.legacy_pcp_actors;
+    std::printf("  legacy PCP (actor%s %s%s) %.1f %%\n", count == 1 ? "" : "s", averaged.empty() ? "none" : averaged.c_str(),
+                count < expected ? (" of 1-" + std::to_string(expected) + ": the others have no GT here").c_str() : "",
+                run.metrics.legacy_pcp->average_pcp);
+  }
   if (!args.quiet) {
     engine::PrintCheckSummary(std::cout, diagnostics);
     engine::PrintStepTimes(std::cout, run.timing, &run.counts);

@@ -175,6 +175,19 @@ TEST(EvalDatasets, ChecksOverSequencesSayHowManySequences) {
   fs::remove_all(out);
 }
 
+// The legacy PCP line names the actors its average is over: the Campus fixture's 3 frames label
+// actor 1 only (it said "actors 1-3", to be read beside papers' averages of all three).
+TEST(EvalDatasets, LegacyPcpNamesTheActorsAveraged) {
+  RPT_REQUIRE_SHARED_DATA("campus/actorsGT.mat");
+  const fs::path out = test::TempDir("legacy_actors");
+  const test::CommandResult r =
+      test::RunRpt("eval --dataset campus --root " + test::SharedData("campus").string() +
+                   " --param frames=0-2 --simulate --set metrics.legacy_pcp=campus --quiet --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("  legacy PCP (actor 1 of 1-3: the others have no GT here) "), std::string::npos) << r.out;
+  fs::remove_all(out);
+}
+
 TEST(EvalDatasets, GenericInterchangeFilesWrittenByTheTest) {
   const fs::path dir = test::TempDir("generic");
   synthetic::SceneOptions options;
