@@ -109,10 +109,11 @@ void RunEval(const EvalArgs& args) {
   std::printf("%s\n", engine::PaperRow(run).c_str());
   // Tracking against the GT's person ids: a GT person matched to another track id than before
   // (a track that broke and resumed under a new id, or two people swapped) is an identity switch.
-  if (run.identity.gt_identities > 0) {
-    std::printf("tracking: %ld track ids for %ld GT persons, %ld identity switches over %ld matches\n",
-                run.identity.track_ids, run.identity.gt_identities, run.identity.id_switches,
-                run.identity.tracked_matches);
+  if (run.identity.gt_identities > 0 && run.identity.track_ids > 0) {
+    std::printf("tracking: %ld track ids for %ld GT persons (%ld of them matched), %ld identity switches over %ld "
+                "matches\n",
+                run.identity.track_ids, run.identity.gt_identities, run.identity.matched_identities,
+                run.identity.id_switches, run.identity.tracked_matches);
   }
   const std::string invalid_causes = engine::InvalidCausesLine(run.metrics, config.metrics.match_threshold_mm);
   if (!invalid_causes.empty()) std::printf("%s\n", invalid_causes.c_str());

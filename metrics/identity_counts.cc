@@ -5,6 +5,7 @@ namespace rpt::metrics {
 
 void IdentityCounts::Merge(const IdentityCounts& other) {
   gt_identities += other.gt_identities;
+  matched_identities += other.matched_identities;
   track_ids += other.track_ids;
   tracked_matches += other.tracked_matches;
   id_switches += other.id_switches;
@@ -15,6 +16,9 @@ void IdentityAccumulator::Add(const FrameRecords& frame, const Poses3D& gt, cons
     if (static_cast<size_t>(p) < predictions.track_ids.size() && predictions.track_ids[p] >= 0) {
       track_ids_.insert(predictions.track_ids[p]);
     }
+  }
+  for (const int id : gt.track_ids) {
+    if (id >= 0) gt_ids_.insert(id);
   }
   for (const PairRecord& pair : frame.pairs) {
     if ((pair.flags & kMatch) == 0 || pair.gt_idx < 0 || pair.pred_idx < 0) continue;
@@ -36,7 +40,8 @@ void IdentityAccumulator::Add(const FrameRecords& frame, const Poses3D& gt, cons
 
 IdentityCounts IdentityAccumulator::counts() const {
   IdentityCounts c;
-  c.gt_identities = static_cast<long>(last_track_.size());
+  c.gt_identities = static_cast<long>(gt_ids_.size());
+  c.matched_identities = static_cast<long>(last_track_.size());
   c.track_ids = static_cast<long>(track_ids_.size());
   c.tracked_matches = tracked_matches_;
   c.id_switches = id_switches_;

@@ -15,7 +15,8 @@
 namespace rpt::metrics {
 
 struct IdentityCounts {
-  long gt_identities = 0;   // distinct GT person ids matched to a tracked prediction at least once
+  long gt_identities = 0;   // distinct GT person ids (id >= 0) in the frames added
+  long matched_identities = 0;  // of those: matched to a tracked prediction at least once
   long track_ids = 0;       // distinct track ids among the predictions (matched or not)
   long tracked_matches = 0; // matches of a GT person with an id to a tracked prediction
   long id_switches = 0;     // of those: another track id than the GT person's last match
@@ -33,6 +34,7 @@ class IdentityAccumulator {
  private:
   std::unordered_map<int, int> last_track_;  // per GT id: the track id of its last match
   std::unordered_set<int> track_ids_;
+  std::unordered_set<int> gt_ids_;
   long tracked_matches_ = 0;
   long id_switches_ = 0;
 };

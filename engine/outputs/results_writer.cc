@@ -194,6 +194,7 @@ void AddOtherUnits(const OrderedJson& j, OrderedJson* units) {
       {"unaligned_matches", "matches"},
       {"track_ids", "count"},
       {"gt_identities", "count"},
+      {"gt_identities_matched", "count"},
       {"id_switches", "count"},
       {"wholebody_mpjpe_mm", "mm"},
       {"wholebody_counts", "count"},
@@ -212,12 +213,13 @@ void AddOtherUnits(const OrderedJson& j, OrderedJson* units) {
 
 namespace {
 
-// Track ids against the GT's ids (metrics/identity_counts.h), when there were any to compare:
-// GT ids across frames (not MVOR's) matched to predictions with track ids (tracking on).
+// Track ids against the GT's ids (metrics/identity_counts.h), when there are both: GT ids across
+// frames (not MVOR's) and predictions with track ids (tracking on).
 void AddIdentityColumns(const metrics::IdentityCounts& identity, OrderedJson* j) {
-  if (identity.gt_identities == 0) return;
+  if (identity.gt_identities == 0 || identity.track_ids == 0) return;
   (*j)["track_ids"] = identity.track_ids;
   (*j)["gt_identities"] = identity.gt_identities;
+  (*j)["gt_identities_matched"] = identity.matched_identities;
   (*j)["id_switches"] = identity.id_switches;
 }
 

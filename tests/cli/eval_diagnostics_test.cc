@@ -124,10 +124,11 @@ TEST(EvalDiagnostics, EveryNumberOfTheSummaryHasAUnit) {
 TEST(EvalDiagnostics, IdentitySwitchesAgainstTheGtIds) {
   const Case kept = EvalEdited("ids_kept", nullptr, nullptr);
   EXPECT_EQ(kept.summary.at("gt_identities"), 4);
+  EXPECT_EQ(kept.summary.at("gt_identities_matched"), 4);
   EXPECT_EQ(kept.summary.at("track_ids"), 4);
   EXPECT_EQ(kept.summary.at("id_switches"), 0);
   EXPECT_EQ(kept.summary.at("units").at("id_switches"), "count");
-  EXPECT_NE(kept.result.out.find("tracking: 4 track ids for 4 GT persons, 0 identity switches over 240 matches"),
+  EXPECT_NE(kept.result.out.find("tracking: 4 track ids for 4 GT persons (4 of them matched), 0 identity switches over 240 matches"),
             std::string::npos)
       << kept.result.out;
   const Case swapped = EvalEdited("ids_swapped", [](Json* labels) {
@@ -146,6 +147,20 @@ TEST(EvalDiagnostics, IdentitySwitchesAgainstTheGtIds) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_FALSE(ReadJson(out / "summary.json").contains("id_switches"));
   EXPECT_EQ(r.out.find("tracking:"), std::string::npos) << r.out;
+  // Converted, its ids are written as none (they were read back as identities: 668 switches).
+  const test::CommandResult converted = test::RunRpt("convert --dataset mvor --root " + root.string() + " --labels-out " +
+                                                     (out / "labels.json").string() + " --detections-out " +
+                                                     (out / "detections.json").string());
+  ASSERT_EQ(converted.exit_code, 0) << converted.err;
+  for (const Json& label : ReadJson(out / "labels.json")) {
+    for (const Json& id : label.value("bodyids", Json::array())) ASSERT_EQ(id, -1) << label.at("id");  // or none written
+  }
+  const test::CommandResult again = test::RunRpt("eval --labels " + (out / "labels.json").string() + " --detections " +
+                                                 (out / "detections.json").string() +
+                                                 " --set metrics.evaluated_joints=shoulder_left,shoulder_right,hip_left,"
+                                                 "hip_right --quiet --out " + (out / "run").string());
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_EQ(again.out.find("tracking:"), std::string::npos) << again.out;
   fs::remove_all(out);
 }
 

@@ -46,10 +46,12 @@ TEST(IdentityCounts, SwitchesBreaksAndReturnsCountedByHand) {
   EXPECT_EQ(c.tracked_matches, 8);
   EXPECT_EQ(c.id_switches, 3);
   EXPECT_EQ(c.gt_identities, 2);
+  EXPECT_EQ(c.matched_identities, 2);
   EXPECT_EQ(c.track_ids, 3);  // 1, 2, 5
 }
 
-// GT persons without ids (-1) and predictions 1 m off (no match at 500 mm) count nothing.
+// GT persons without ids (-1) count nothing; one with an id 1 m from the prediction (no match at
+// 500 mm) is a GT person, never matched.
 TEST(IdentityCounts, UnmatchedOrAnonymousPersonsCountNothing) {
   MetricsAccumulator metrics;
   IdentityAccumulator identity;
@@ -68,11 +70,13 @@ TEST(IdentityCounts, UnmatchedOrAnonymousPersonsCountNothing) {
   const IdentityCounts c = identity.counts();
   EXPECT_EQ(c.tracked_matches, 0);
   EXPECT_EQ(c.id_switches, 0);
-  EXPECT_EQ(c.gt_identities, 0);
+  EXPECT_EQ(c.gt_identities, 1) << "id 3 is labelled, never matched";
+  EXPECT_EQ(c.matched_identities, 0);
   EXPECT_EQ(c.track_ids, 1);
   IdentityCounts sum = c;
-  sum.Merge({2, 5, 10, 3});
-  EXPECT_EQ(sum.gt_identities, 2);
+  sum.Merge({2, 2, 5, 10, 3});
+  EXPECT_EQ(sum.gt_identities, 3);
+  EXPECT_EQ(sum.matched_identities, 2);
   EXPECT_EQ(sum.track_ids, 6);
   EXPECT_EQ(sum.tracked_matches, 10);
   EXPECT_EQ(sum.id_switches, 3);
