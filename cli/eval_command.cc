@@ -82,7 +82,10 @@ void RunEval(const EvalArgs& args) {
   PrintInputWarnings(run.warnings.Except(opened));  // what the sources corrected or left unused, known now
   info.threads = run.threads;
   info.input_warnings = engine::InputWarningLines(run.warnings);
-  const engine::EvalDiagnostics diagnostics = engine::Diagnose(run);
+  engine::EvalDiagnostics diagnostics = engine::Diagnose(run);
+  if (std::string clipped = engine::SpeedClipWarning(run, config.triangulator.clip_speed); !clipped.empty()) {
+    diagnostics.warnings.push_back({"speed_clipped", std::move(clipped)});
+  }
   nlohmann::ordered_json diagnostics_json = engine::DiagnosticsJson(diagnostics);
   diagnostics_json.update(engine::RunLossTablesJson(run));
   if (adapter) {

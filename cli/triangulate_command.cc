@@ -32,6 +32,7 @@
 #include "core/printable_text.h"
 #include "datasets/io/json_file.h"
 #include "datasets/io/json_output.h"
+#include "engine/diagnostics.h"
 #include "engine/input.h"
 #include "engine/output_place.h"
 #include "engine/input_digests.h"
@@ -135,10 +136,10 @@ std::string NobodyTriangulatedWarning(const engine::RunResult& run, const Undist
                    "docs/cameras.md)";
 }
 
-// The camera-agreement, upright and camera-sync warnings of every sequence (engine/camera_agreement.h,
-// upright_check.h, camera_sync_check.h), printed on stderr;
-// returned for run.json.
-std::vector<std::string> PrintCameraAgreement(const engine::RunResult& run) {
+// The camera-agreement, upright, mirror-image and camera-sync warnings of every sequence
+// (engine/camera_agreement.h, upright_check.h, camera_sync_check.h) and the run's speed-clipping
+// warning (engine/diagnostics.h), printed on stderr; returned for run.json.
+std::vector<std::string> PrintRunChecks(const engine::RunResult& run, const engine::Config& config) {
   std::vector<std::string> lines;
   for (const engine::SequenceResult& sequence : run.sequences) {
     std::vector<std::string> warnings = engine::CameraAgreementWarnings(sequence.name, sequence.camera_agreement);
@@ -153,6 +154,10 @@ std::vector<std::string> PrintCameraAgreement(const engine::RunResult& run) {
       std::fprintf(stderr, "warning: %s\n", line.c_str());
       lines.push_back(std::move(line));
     }
+  }
+  if (std::string clipped = engine::SpeedClipWarning(run, config.triangulator.clip_speed); !clipped.empty()) {
+    std::fprintf(stderr, "warning: %s\n", clipped.c_str());
+    lines.push_back(std::move(clipped));
   }
   std::fflush(stderr);
   return lines;
@@ -233,7 +238,7 @@ int RunFollow(const TriangulateArgs& args) {
     }
   }();
   PrintInputWarnings(run.warnings.Except(opened));
-  const std::vector<std::string> agreement = PrintCameraAgreement(run);
+  const std::vector<std::string> agreement = PrintRunChecks(run, config);
   if (folder) {
     info.threads = run.threads;
     info.input_warnings = engine::InputWarningLines(run.warnings);
@@ -293,7 +298,7 @@ void RunTriangulate(const TriangulateArgs& args) {
   const engine::RunResult run = engine::Run(input, options, folder.sink());
   progress.reset();
   PrintInputWarnings(run.warnings.Except(opened));
-  const std::vector<std::string> agreement = PrintCameraAgreement(run);
+  const std::vector<std::string> agreement = PrintRunChecks(run, config);
   info.threads = run.threads;
   info.input_warnings = engine::InputWarningLines(run.warnings);
   info.input_warnings.insert(info.input_warnings.end(), agreement.begin(), agreement.end());

@@ -78,6 +78,22 @@ std::vector<CheckWarning> ResultWarnings(const RunResult& run) {
   return warnings;
 }
 
+std::string SpeedClipWarning(const RunResult& run, const ClipSpeedOptions& clip) {
+  if (!clip.enabled || run.frames == 0 || run.sequences.empty()) return "";
+  const double clipped = run.counts.count_per_frame[static_cast<size_t>(Step::kClipSpeed)];
+  const double joints = static_cast<double>(run.output_persons) / static_cast<double>(run.frames) *
+                        static_cast<double>(run.sequences.front().output_joints.size());
+  if (!(joints > 0) || clipped <= kMaxClippedJointShare * joints) return "";
+  char text[400];
+  std::snprintf(text, sizeof(text),
+                "%.1f %% of the joints output were moved by speed clipping (%.1f per frame, to at most "
+                "clip_speed.max_speed_m_s = %g m/s from the track's last position): fast motion (a sprint's ankles, "
+                "a throw's hands pass 15-20 m/s) lags behind; raise it (--set clip_speed.max_speed_m_s=30) or turn it "
+                "off (--set clip_speed.enabled=false)",
+                100.0 * clipped / joints, clipped, clip.max_speed_m_s);
+  return text;
+}
+
 EvalDiagnostics Diagnose(const RunResult& run) {
   EvalDiagnostics diagnostics;
   for (const SequenceResult& sequence : run.sequences) {

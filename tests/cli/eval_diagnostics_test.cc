@@ -164,6 +164,21 @@ TEST(EvalDiagnostics, IdentitySwitchesAgainstTheGtIds) {
   fs::remove_all(out);
 }
 
+// Speed clipping that moves many joints (fast motion against clip_speed.max_speed_m_s) is said,
+// with the option and its value: people walking 0.6-1.5 m/s against 0.5 m/s; not at the default.
+TEST(EvalDiagnostics, ManyJointsSpeedClippedAreSaid) {
+  const Case kept = EvalEdited("clip_default", nullptr, nullptr);
+  EXPECT_EQ(Count(Codes(kept.summary), "speed_clipped"), 0) << kept.result.err;
+  const fs::path out = test::TempDir("diag_clip");
+  const test::CommandResult r = test::RunRpt("eval --dataset synthetic --param frames=60 --set clip_speed.max_speed_m_s=0.5 "
+                                             "--quiet --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(Count(Codes(ReadJson(out / "summary.json")), "speed_clipped"), 1);
+  EXPECT_NE(r.err.find("of the joints output were moved by speed clipping"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("clip_speed.max_speed_m_s = 0.5 m/s"), std::string::npos) << r.err;
+  fs::remove_all(out);
+}
+
 // Labels without 3D persons: said, not shown as a triangulator whose every prediction is Invalid.
 TEST(EvalDiagnostics, LabelsWithoutGroundTruthAreSaid) {
   const Case c = EvalEdited("no_gt", [](Json* labels) {
