@@ -54,7 +54,6 @@ namespace {
 // of them (cameras looking apart): they share no view to compare.
 std::optional<double> CrossingAngleDeg(const Camera& a, const Camera& b) {
   constexpr double kNominalViewDepthM = 4.0;
-  constexpr double kMaxViewDepthM = 100.0;
   const Eigen::Vector3d ca = a.Center(), cb = b.Center();
   const Eigen::Vector3d da = a.R.row(2).transpose(), db = b.R.row(2).transpose();  // optical axes in the world
   const Eigen::Vector3d w0 = ca - cb;
@@ -63,7 +62,7 @@ std::optional<double> CrossingAngleDeg(const Camera& a, const Camera& b) {
   Eigen::Vector3d point;
   const double s = denom > 1e-6 ? (cos_axes * e - d) / denom : -1.0;
   const double u = denom > 1e-6 ? (e - cos_axes * d) / denom : -1.0;
-  if (s > 0 && u > 0 && s < kMaxViewDepthM && u < kMaxViewDepthM) {
+  if (s > 0 && u > 0) {  // at any depth: the angle does not change with the rig's units
     point = 0.5 * (ca + s * da + cb + u * db);
   } else {
     const Eigen::Vector3d ahead = da + db;

@@ -214,7 +214,9 @@ Detections ReadOpenPoseFolder(const std::filesystem::path& dir, const OpenPoseFo
   }
   if (files.empty()) {
     throw InputError(source + ": no file matches the pattern " + QuoteName(options.mapping.pattern) +
-                     " (paths relative to the folder, e.g. <camera>/<video>_000000000000_keypoints.json)");
+                     " (paths relative to the folder, e.g. <camera>/<video>_000000000000_keypoints.json; every "
+                     "camera's files in one folder, named <camera>_000000000012_keypoints.json, need --map-pattern "
+                     "'([a-z0-9]+)_(\\d+)_keypoints\\.json')");
   }
   std::sort(files.begin(), files.end(), [](const RawFile& a, const RawFile& b) {
     return std::tie(a.frame_id, a.camera, a.path) < std::tie(b.frame_id, b.camera, b.path);

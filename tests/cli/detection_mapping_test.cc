@@ -64,6 +64,8 @@ TEST_F(DetectionMapping, OpenPoseFolderOfAnotherLayoutEqualsEval) {
   const test::CommandResult unmapped = test::RunRpt("triangulate" + input);
   EXPECT_EQ(unmapped.exit_code, 2);
   EXPECT_NE(unmapped.err.find("no file matches the pattern"), std::string::npos) << unmapped.err;
+  EXPECT_NE(unmapped.err.find("need --map-pattern '([a-z0-9]+)_(\\d+)_keypoints\\.json'"), std::string::npos)
+      << unmapped.err;
   CompareWithEval("openpose_flat", folder, Offset(kFrames, 100), kFlatMapping);
 }
 
@@ -177,6 +179,9 @@ TEST_F(DetectionMapping, RenamedCamerasEqualEval) {
   const test::CommandResult plain = test::RunRpt(input);
   EXPECT_EQ(plain.exit_code, 2);
   EXPECT_NE(plain.err.find("camera 'view0' is not in the calibration"), std::string::npos) << plain.err;
+  EXPECT_NE(plain.err.find("; when it is one of those under another name, --rename-camera view0=NAME maps it"),
+            std::string::npos)
+      << plain.err;
   const test::CommandResult unused = test::RunRpt(input + renames + " --rename-camera view7=cam7");
   EXPECT_EQ(unused.exit_code, 2);
   EXPECT_NE(

@@ -114,6 +114,11 @@ TEST(CameraPlausibility, CamerasSeeingTheSceneFromOneDirectionAreNamed) {
   Camera twin = Camera::FromCenter(rig[0].R, left + 0.2 * rig[0].R.row(0).transpose());
   twin.name = "twin";
   EXPECT_NEAR(WidestCrossingAnglesDeg({rig[0], twin})[0], 2 * std::atan(0.1 / 4.0) * kDeg, 1e-9);
+  // The same rig in millimetres read as metres: the same angles (a 100 m cap on where views cross
+  // read it as 180 degrees).
+  std::vector<Camera> scaled;
+  for (const Camera& camera : rig) scaled.push_back(Camera::FromCenter(camera.R, 1000.0 * camera.Center()));
+  EXPECT_NEAR(WidestCrossingAnglesDeg(scaled)[0], widest[0], 1e-6);
   // A third camera 90 degrees around: every camera has a wide partner.
   rig.push_back(test::LookingAtRoomCentre("side", {0, 4, 2.5}));
   widest = WidestCrossingAnglesDeg(rig);
