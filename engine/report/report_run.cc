@@ -202,6 +202,17 @@ RecordedRun ReadRecordedRun(const std::filesystem::path& dir) {
                        ": not written: the run was made with --no-predictions (run.json), so there are no 3D persons "
                        "to draw; run its command again without that option");
     }
+    // --export without json (csv for pandas): predictions.json is not written, and the page reads it.
+    for (size_t i = 0; i < words.size(); ++i) {
+      std::string formats;
+      if (words[i] == "--export" && i + 1 < words.size()) formats = words[i + 1];
+      if (words[i].rfind("--export=", 0) == 0) formats = words[i].substr(9);
+      if (formats.empty()) continue;
+      throw InputError((dir / "predictions.json").string() + ": not written: the run was made with --export " +
+                       PrintableText(formats, LineBreaks::kEscape) +
+                       " (run.json), without json; the report reads predictions.json: run its command again with "
+                       "--export json," + PrintableText(formats, LineBreaks::kEscape));
+    }
   }
   run.predictions = ReadPredictions(dir / "predictions.json");
   // The files of one run share its run_id: a predictions.json copied in from another run would give

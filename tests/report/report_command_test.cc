@@ -325,6 +325,16 @@ TEST(ReportCommand, BadInputExitsTwoNamingTheFile) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("predictions.json: not written: the run was made with --no-predictions"), std::string::npos)
       << r.err;
+  // Exported as CSV only (for pandas): said, with the option to add (it read "file not found").
+  fs::remove_all(other);
+  const CommandResult csv = RunRpt("triangulate --dataset synthetic --param frames=3 --export csv --quiet --out " + other.string());
+  ASSERT_EQ(csv.exit_code, 0) << csv.err;
+  r = RunRpt("report " + other.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("predictions.json: not written: the run was made with --export csv (run.json), without json; "
+                       "the report reads predictions.json: run its command again with --export json,csv"),
+            std::string::npos)
+      << r.err;
   fs::remove_all(other);
 }
 
