@@ -85,11 +85,12 @@ void ImageRangeCheck::AddWarnings(const std::string& source, InputWarnings* warn
       continue;
     }
     // The opposite of joints beyond the image: every joint in the top-left quarter (detections from
-    // a half-size image).
+    // a smaller image: half-size, a 1080p proxy of a 2.7K video).
     if (judged && c.max_u < 0.55 * camera.width && c.max_v < 0.55 * camera.height) {
       warnings->Add(source,
                     "detected joints of camera " + QuoteName(camera.name) + ", all in the top-left quarter of its " +
-                        size + " image (detections from a half-size image? scale them to the calibration's image size)",
+                        size + " image (detections from a smaller image, such as a half-size or 1080p proxy video? scale them "
+                        "to the calibration's image size)",
                     "largest u and v, in image sides", std::max(c.max_u / camera.width, c.max_v / camera.height),
                     c.detected);
     }

@@ -77,7 +77,9 @@ std::string MirroredWarning(const std::string& sequence, const UprightCount& cou
                        PercentText(static_cast<double>(count.mirrored) / count.facing_judged) +
                        ") have the nose behind the shoulders, as mirror images have (real detections: under 2 %): "
                        "are the detections of mirrored images in every camera (a webcam's selfie view, a flipped "
-                       "video), or left and right exchanged in the joint names?");
+                       "video), or left and right exchanged in the joint names? Detections that do not fit the "
+                       "cameras at all (another pixel scale, another calibration) give such persons too: see the "
+                       "other warnings");
 }
 
 }  // namespace rpt::engine

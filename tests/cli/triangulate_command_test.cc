@@ -871,7 +871,7 @@ TEST_F(Triangulate, OwnDataMistakesAreSaidNotSilent) {
                                                    " --quiet --out " + (dir_ / "large").string());
   EXPECT_NE(quarter.err.find(" detected joints of camera '" + large[0].name + "', all in the top-left quarter of its " +
                              std::to_string(large[0].width) + "x" + std::to_string(large[0].height) +
-                             " image (detections from a half-size image?"),
+                             " image (detections from a smaller image, such as a half-size or 1080p proxy video?"),
             std::string::npos)
       << quarter.err;
   // A frame rate of 0 or infinity is refused in words, not as a range of 300 digits.

@@ -73,8 +73,8 @@ TEST(ImageRangeCheck, AllInTheTopLeftQuarterIsAHalfSizeImage) {
   ASSERT_EQ(Lines(check).size(), 1u);
   EXPECT_EQ(Lines(check)[0],
             "src: 200 detected joints of camera 'a', all in the top-left quarter of its 1000x500 image (detections "
-            "from a half-size image? scale them to the calibration's image size) (largest u and v, in image sides = "
-            "0.549)");
+            "from a smaller image, such as a half-size or 1080p proxy video? scale them to the calibration's image "
+            "size) (largest u and v, in image sides = 0.549)");
   check.Add(0, ViewAt(551, 10, 1));  // one joint past 0.55 of the width: the image is used
   EXPECT_TRUE(Lines(check).empty());
 }
