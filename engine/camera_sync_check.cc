@@ -106,7 +106,9 @@ CameraSyncCheck::CameraSyncCheck(const SequenceHeader& header, long num_frames, 
     }
   }
   const long centres = std::max(30L, kSyncWork / std::max(1L, static_cast<long>(pairs_.size())));
-  stride_ = num_frames < 0 ? 5 : std::max(1L, num_frames / centres);
+  // A stream of unknown length (--follow, Python process) starts at every frame; the budget below
+  // thins it out as it runs (every 5th frame left a 5-frame lag of a 600-frame stream unseen).
+  stride_ = num_frames < 0 ? 1 : std::max(1L, num_frames / centres);
   budget_ = kSyncBudget;
   for (Slot& slot : ring_) slot.views.resize(header.cameras.size());
   distances_.reserve(256);

@@ -36,8 +36,9 @@ Sequence Shifted(const Sequence& sequence, size_t camera, int shift) {
   return out;
 }
 
-CameraSyncCheck Checked(const Sequence& sequence, double max_gap_s = 1.0) {
-  CameraSyncCheck check(sequence, static_cast<long>(sequence.frames.size()), max_gap_s);
+// `streamed`: the frame count unknown in advance (--follow, Python's process).
+CameraSyncCheck Checked(const Sequence& sequence, double max_gap_s = 1.0, bool streamed = false) {
+  CameraSyncCheck check(sequence, streamed ? -1 : static_cast<long>(sequence.frames.size()), max_gap_s);
   for (const SequenceFrame& frame : sequence.frames) check.Add(frame);
   return check;
 }
@@ -96,6 +97,24 @@ TEST(CameraSyncCheck, TwoCamerasAreNamedAsAPair) {
                            0),
             0u)
       << lines[0];
+}
+
+// A stream of unknown length sees what the file sees: 3 cameras, 2 people, 600 frames at 30 fps,
+// camera 2 five frames late (every 5th frame compared, as streams were, left it unseen: the
+// robotics tester's lagging camera, warned offline, silent live).
+TEST(CameraSyncCheck, AStreamOfUnknownLengthIsComparedAsAFileIs) {
+  const Sequence scene = Scene({"cameras=3", "people=2", "frames=600", "fps=30"});  // the realistic detector
+  const Sequence late = Shifted(scene, 2, -5);
+  for (const bool streamed : {false, true}) {
+    const CameraSyncCheck check = Checked(late, 1.0, streamed);
+    const std::vector<std::string> lines = CameraSyncWarnings("take", late.cameras, check.pairs(), check.frame_step_s());
+    ASSERT_EQ(lines.size(), 1u) << streamed;
+    EXPECT_NE(lines[0].find("camera 'cam2': its detections agree best with the other cameras' of about"),
+              std::string::npos)
+        << lines[0];
+    const CameraSyncCheck clean = Checked(scene, 1.0, streamed);
+    EXPECT_TRUE(CameraSyncWarnings("take", scene.cameras, clean.pairs(), clean.frame_step_s()).empty()) << streamed;
+  }
 }
 
 // Without times, or with frames further apart than track.max_gap_s (images sampled seconds apart),
