@@ -136,6 +136,7 @@ class DetectionLineSource final : public FrameSource {
     ReadJointsLine();
     num_joints_ = static_cast<int>(header_.detection_joints.size());
     camera_seen_.assign(header_.cameras.size(), false);
+    camera_named_.assign(header_.cameras.size(), 0);
   }
 
   const SequenceHeader& header() const override { return header_; }
@@ -361,6 +362,7 @@ class DetectionLineSource final : public FrameSource {
           if (camera_seen_[camera])
             Fail(ViewPointer(v) + "/camera", "camera " + QuoteName(std::string(name)) + " appears twice in this frame");
           camera_seen_[camera] = true;
+          camera_named_[camera] = 1;
         } else if (key == "poses") {
           if (has_poses) Fail(ViewPointer(v) + "/poses", "given twice");
           has_poses = true;
@@ -429,7 +431,22 @@ class DetectionLineSource final : public FrameSource {
     if (counts_->frames != kImageRangeFrames || !on_early_warning_) return;
     InputWarnings early;
     image_range_->AddWarnings(source_ + " (the first " + std::to_string(kImageRangeFrames) + " frames)", &early);
+    AddCamerasNeverNamed(source_ + " (the first " + std::to_string(kImageRangeFrames) + " frames)", &early);
     for (const InputWarning& warning : early.items()) on_early_warning_(warning.Line());
+  }
+
+  // The calibration's cameras no view line has named yet: nothing of theirs in any frame (a
+  // detector that never started for one, a camera unplugged), as a file's reader says it.
+  void AddCamerasNeverNamed(const std::string& source, InputWarnings* warnings) const {
+    std::vector<std::string> never;
+    for (size_t c = 0; c < camera_named_.size(); ++c) {
+      if (!camera_named_[c]) never.push_back(header_.cameras[c].name);
+    }
+    if (counts_->frames == 0 || never.empty()) return;
+    warnings->AddMissing(source,
+                         "cameras of the calibration the detections never name, so nothing of theirs in any frame "
+                         "(cameras " + Join(never, ", ") + "): triangulated from the others",
+                         static_cast<long>(never.size()));
   }
 
   // The stream ended (or was stopped): what was skipped or not read goes into the warnings.
@@ -446,6 +463,7 @@ class DetectionLineSource final : public FrameSource {
                     "ended at a time step back",
                     "", 0, restarts_);
     }
+    AddCamerasNeverNamed(source_, &warnings_);
     frame_keys_.Report(source_, "frame lines", &warnings_);
     view_keys_.Report(source_, "views", &warnings_);
     warnings_.Add(source_, kOriginJointsRead, "", 0, origin_joints_);
@@ -475,6 +493,7 @@ class DetectionLineSource final : public FrameSource {
   io::JsonPull json_;
   Poses2D scratch_;
   std::vector<bool> camera_seen_;
+  std::vector<char> camera_named_;  // per camera: named by a view of some frame so far
   std::array<std::uint64_t, kRecentIds> recent_ids_{};
   std::string joints_line_;  // the first line without JSON blanks: seen again, the writer restarted
   long restarts_ = 0;
