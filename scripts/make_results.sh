@@ -44,7 +44,7 @@ paper() {
   python3 -c 'import json, sys
 d = json.load(open("results/paper.json"))
 r = d["datasets"][sys.argv[1]]
-# The paper's FPS is of its whole system (2D network on a GPU included): marked, not comparable.
+# The paper FPS is of its whole system (2D network on a GPU included): marked, not comparable.
 cell = lambda c: str(r[c]) + (" (whole system)" if c == "fps" else "")
 print("| " + r["label"] + " | " + " | ".join(cell(c) for c in d["columns"]) + " | |")' "$1"
 }
