@@ -75,8 +75,8 @@ class FrameAdapter {
 void Emit(int index, const SequenceFrame& frame, const Poses3D& triangulated, const FrameStats& stats,
           const FrameTrace& trace, const SequenceHeader& header, const JointNames& output_joints, SequenceRun* run,
           std::optional<DetectionChecker>* checker, std::optional<CameraAgreementCheck>* agreement,
-          std::optional<UprightCheck>* upright, std::optional<CameraSyncCheck>* sync, FrameAdapter* adapter,
-          FrameSink* sink) {
+          std::optional<UprightCheck>* upright, std::optional<CameraSyncCheck>* sync,
+          std::optional<FrozenViewCheck>* frozen, FrameAdapter* adapter, FrameSink* sink) {
   const Poses3D& persons = adapter->Apply(frame, triangulated, &run->result);
   // Out first (a live line waits for nothing else), then measured: the checks below (the
   // camera-sync comparison of a stream runs on every frame) would add to a live line's latency.
@@ -86,6 +86,7 @@ void Emit(int index, const SequenceFrame& frame, const Poses3D& triangulated, co
   if (*agreement) (*agreement)->Add(run->result.frames, frame, persons);
   if (*upright) (*upright)->Add(persons);
   if (*sync) (*sync)->Add(frame);
+  if (*frozen) (*frozen)->Add(frame);
   ++run->result.frames;
   run->gt_persons += frame.gt.num_persons();
   run->output_persons += persons.num_persons();
@@ -152,6 +153,8 @@ void RunSequence(int index, FrameSource& source, const RunOptions& options, cons
   if (options.upright_check) upright.emplace(output_joints);
   std::optional<CameraSyncCheck> sync;
   if (options.camera_sync) sync.emplace(header, source.num_frames(), tri_options.track.max_gap_s);
+  std::optional<FrozenViewCheck> frozen;  // with the camera sync: both ask whether a camera's frames keep time
+  if (options.camera_sync) frozen.emplace(header.cameras.size());
   FrameAdapter adapter(options.adapter.get(), output_joints);
   if (sink != nullptr) sink->BeginSequence(index, header, output_joints);
 
@@ -209,7 +212,7 @@ void RunSequence(int index, FrameSource& source, const RunOptions& options, cons
   stages.emit = [&](long frame) {
     FrameSlot& s = slot(frame);
     Emit(index, s.frame, s.persons, s.stats, s.trace, header, output_joints, run, &checker, &agreement, &upright, &sync,
-         &adapter, sink);
+         &frozen, &adapter, sink);
     const long done = ++*frames_done;
     if (report_progress && options.progress) options.progress(done);
   };
@@ -224,6 +227,12 @@ void RunSequence(int index, FrameSource& source, const RunOptions& options, cons
   if (agreement) run->result.camera_agreement = agreement->cameras();
   if (upright) run->result.upright = upright->count();
   if (sync) run->result.camera_sync = CameraSyncWarnings(header.name, header.cameras, sync->pairs(), sync->frame_step_s());
+  if (frozen) {
+    const double fps = header.fps > 0 ? header.fps : (sync && sync->frame_step_s() > 0 ? 1.0 / sync->frame_step_s() : 0.0);
+    for (std::string& line : FrozenViewWarnings(header.name, header.cameras, frozen->longest(), fps)) {
+      run->result.camera_sync.push_back(std::move(line));
+    }
+  }
   run->result.timing = run->timing.Finalize();
   if (run->metrics) {
     run->result.metrics = run->metrics->Finalize();

@@ -32,6 +32,7 @@
 #include "datasets/sequence.h"
 #include "engine/camera_agreement.h"
 #include "engine/camera_sync_check.h"
+#include "engine/frozen_view_check.h"
 #include "engine/upright_check.h"
 #include "engine/detection_checks.h"
 #include "engine/frame_sink.h"
@@ -61,7 +62,8 @@ struct RunOptions {
   // check of the calibration a run without ground truth has.
   bool camera_agreement = false;
   // Compare each camera's detections with the others' a few frames apart (engine/camera_sync_check.h):
-  // a camera whose clock or frame numbering is off the others'.
+  // a camera whose clock or frame numbering is off the others'; and find a camera whose detections
+  // stop changing while the others' change (engine/frozen_view_check.h).
   bool camera_sync = false;
   // Count the persons standing on their heads (engine/upright_check.h): flipped pixel rows or a
   // calibration whose world z points down, which the camera agreement cannot see.
@@ -102,7 +104,7 @@ struct SequenceResult {
   std::optional<LossTable> losses;        // when RunOptions::loss_table is set
   std::vector<CameraAgreement> camera_agreement;  // when RunOptions::camera_agreement is set
   UprightCount upright;                   // when RunOptions::upright_check is set
-  std::vector<std::string> camera_sync;   // warning lines, when RunOptions::camera_sync is set
+  std::vector<std::string> camera_sync;   // warning lines (sync, frozen views), when RunOptions::camera_sync is set
   long adapted_persons = 0;               // persons the adapter moved (RunOptions::adapter)
   long unadapted_persons = 0;             // persons it left as they were: no body frame
 };
