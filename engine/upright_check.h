@@ -11,8 +11,8 @@
 // triangulated faces the way (mid-shoulder - mid-hip) x (shoulder_right - shoulder_left) points
 // (z up, right east: north); its nose lies in front of its shoulders. Real detections put under
 // 2 % of persons' noses behind (`rpt triangulate`: MVOR 0.7 %, Shelf-4DA 0.0 %, generated scenes
-// with the hard detector 1.2 %), mirrored detections in every camera 49.6 %; more than a quarter
-// is named.
+// with the hard detector 1.2 %), mirrored detections in every camera half (461 of 929 on the
+// generated scene of docs/robustness.md's recipe); more than a quarter is named.
 #pragma once
 
 #include <string>

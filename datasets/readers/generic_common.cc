@@ -184,24 +184,18 @@ void CheckJointNames(const JointNames& names, const std::string& where) {
   // with what they may mean.
   constexpr size_t kNamedUnknown = 12;
   std::vector<std::string> unknown;
-  size_t first_unknown = names.size();
+  long count = 0;
   for (size_t j = 0; j < names.size(); ++j) {
     const std::string& name = names[j];
     if (name.empty()) throw InputError(where + ": joint " + std::to_string(j) + " has an empty name");
     if (!seen.insert(name).second) throw InputError(where + ": joint name " + QuoteName(name) + " appears twice");
     if (IsKnownJointName(name)) continue;
-    first_unknown = std::min(first_unknown, j);
-    if (unknown.size() == kNamedUnknown) {
-      unknown.emplace_back("...");
-      continue;
-    }
-    if (unknown.size() > kNamedUnknown) continue;
+    if (++count > static_cast<long>(kNamedUnknown)) continue;
     const std::string suggestion = Suggestion(name);
     unknown.push_back(QuoteName(name) + (suggestion.empty() ? std::string() : " (did you mean " + QuoteName(suggestion) + "?)"));
   }
-  if (unknown.empty()) return;
-  long count = 0;
-  for (const std::string& name : names) count += IsKnownJointName(name) ? 0 : 1;
+  if (count == 0) return;
+  if (count > static_cast<long>(kNamedUnknown)) unknown.emplace_back("...");
   throw InputError(where + ": unknown joint name" + (count == 1 ? " " : "s (" + std::to_string(count) + "): ") +
                    Join(unknown, ", ") +
                    "; names follow core/joints.h (nose, eye_left, shoulder_right, ...), custom joints need the prefix "

@@ -209,9 +209,6 @@ void AddOtherUnits(const OrderedJson& j, OrderedJson* units) {
   }
 }
 
-}  // namespace
-
-namespace {
 
 // Track ids against the GT's ids (metrics/identity_counts.h), when there are both: GT ids across
 // frames (not MVOR's) and predictions with track ids (tracking on).
@@ -482,6 +479,35 @@ void RemoveExport(const std::filesystem::path& folder, ExportFormat format) {
 
 }  // namespace
 
+// The run folder's sinks, their errors naming the folder the user gave rather than its staging
+// sibling (`run.tmp-<pid>-0/...`), as Finish's do.
+class RunFolder::NamedSink final : public FrameSink {
+ public:
+  NamedSink(FrameSink* sinks, const io::StagedFolder* folder) : sinks_(sinks), folder_(folder) {}
+  void BeginSequence(int sequence, const SequenceHeader& header, const JointNames& output_joints) override {
+    Named([&] { sinks_->BeginSequence(sequence, header, output_joints); });
+  }
+  void Frame(const FrameOutput& frame) override {
+    Named([&] { sinks_->Frame(frame); });
+  }
+  void EndSequence(int sequence) override {
+    Named([&] { sinks_->EndSequence(sequence); });
+  }
+
+ private:
+  template <class Call>
+  void Named(const Call& call) const {
+    try {
+      call();
+    } catch (const InputError& e) {
+      throw InputError(folder_->NamedAsTarget(e.what()));
+    }
+  }
+
+  FrameSink* sinks_;
+  const io::StagedFolder* folder_;
+};
+
 RunFolder::RunFolder(const std::filesystem::path& dir, const std::string& run_id, int num_sequences,
                      const ExportOptions& exports)
     : dir_(dir), exports_(exports), folder_(std::make_unique<io::StagedFolder>(dir)) {
@@ -511,46 +537,12 @@ RunFolder::RunFolder(const std::filesystem::path& dir, const std::string& run_id
   }
   sinks_ =
       std::make_unique<SinkList>(std::vector<FrameSink*>{predictions_.get(), csv_.get(), trc_.get(), arrays_.get()});
+  named_sink_ = std::make_unique<NamedSink>(sinks_.get(), folder_.get());
 }
-
-// The run folder's sinks, their errors naming the folder the user gave rather than its staging
-// sibling (`run.tmp-<pid>-0/...`), as Finish's do.
-class RunFolder::NamedSink final : public FrameSink {
- public:
-  NamedSink(FrameSink* sinks, const io::StagedFolder* folder) : sinks_(sinks), folder_(folder) {}
-  void BeginSequence(int sequence, const SequenceHeader& header, const JointNames& output_joints) override {
-    try {
-      sinks_->BeginSequence(sequence, header, output_joints);
-    } catch (const InputError& e) {
-      throw InputError(folder_->NamedAsTarget(e.what()));
-    }
-  }
-  void Frame(const FrameOutput& frame) override {
-    try {
-      sinks_->Frame(frame);
-    } catch (const InputError& e) {
-      throw InputError(folder_->NamedAsTarget(e.what()));
-    }
-  }
-  void EndSequence(int sequence) override {
-    try {
-      sinks_->EndSequence(sequence);
-    } catch (const InputError& e) {
-      throw InputError(folder_->NamedAsTarget(e.what()));
-    }
-  }
-
- private:
-  FrameSink* sinks_;
-  const io::StagedFolder* folder_;
-};
 
 RunFolder::~RunFolder() = default;
 
-FrameSink* RunFolder::sink() {
-  if (named_sink_ == nullptr) named_sink_ = std::make_unique<NamedSink>(sinks_.get(), folder_.get());
-  return named_sink_.get();
-}
+FrameSink* RunFolder::sink() { return named_sink_.get(); }
 
 void RunFolder::Finish(const RunResult& run, const Config& config, const RunInfo& info,
                        const OrderedJson& extra_summary) {

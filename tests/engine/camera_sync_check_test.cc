@@ -9,20 +9,12 @@
 #include <string>
 #include <vector>
 
-#include "engine/input.h"
+#include "tests/engine/synthetic_scene.h"
 
 namespace rpt::engine {
 namespace {
 
-// The generated scene (25 frames per second) of `params`.
-Sequence Scene(const std::vector<std::string>& params) {
-  InputSpec spec;
-  spec.dataset = "synthetic";
-  spec.params = params;
-  InputWarnings warnings;
-  std::vector<Sequence> sequences = LoadInput(spec, {}, &warnings);
-  return std::move(sequences.at(0));
-}
+using test::SyntheticScene;
 
 // `sequence` with camera `camera`'s views of frame i taken from frame i + shift (none past the ends).
 Sequence Shifted(const Sequence& sequence, size_t camera, int shift) {
@@ -51,7 +43,7 @@ std::vector<std::string> Lines(const Sequence& sequence) {
 // Exact detections: the epipolar distance is 0 at k = 0 and grows with the shift either way (the
 // essential matrix and its direction are right), and the frame step is the scene's.
 TEST(CameraSyncCheck, PerfectDetectionsLieOnTheLinesOfTheSameFrameOnly) {
-  const Sequence scene = Scene({"cameras=3", "people=2", "frames=150", "noise=perfect"});
+  const Sequence scene = SyntheticScene({"cameras=3", "people=2", "frames=150", "noise=perfect"});
   const CameraSyncCheck check = Checked(scene);
   EXPECT_NEAR(check.frame_step_s(), 0.04, 1e-9);
   ASSERT_EQ(check.pairs().size(), 3u);
@@ -67,7 +59,7 @@ TEST(CameraSyncCheck, PerfectDetectionsLieOnTheLinesOfTheSameFrameOnly) {
 }
 
 TEST(CameraSyncCheck, ACameraAFewFramesOffIsNamedWithItsOffsetAndDirection) {
-  const Sequence scene = Scene({"cameras=5", "people=3", "frames=200", "noise=clean"});
+  const Sequence scene = SyntheticScene({"cameras=5", "people=3", "frames=200", "noise=clean"});
   EXPECT_TRUE(Lines(scene).empty());
   // Camera 2's frame i shows what the others show in frame i + 3: early by 3 frames.
   std::vector<std::string> lines = Lines(Shifted(scene, 2, 3));
@@ -88,7 +80,7 @@ TEST(CameraSyncCheck, ACameraAFewFramesOffIsNamedWithItsOffsetAndDirection) {
 }
 
 TEST(CameraSyncCheck, TwoCamerasAreNamedAsAPair) {
-  const Sequence scene = Scene({"cameras=2", "people=1", "frames=300", "noise=clean"});
+  const Sequence scene = SyntheticScene({"cameras=2", "people=1", "frames=300", "noise=clean"});
   EXPECT_TRUE(Lines(scene).empty());
   const std::vector<std::string> lines = Lines(Shifted(scene, 1, -4));
   ASSERT_EQ(lines.size(), 1u);
@@ -103,7 +95,7 @@ TEST(CameraSyncCheck, TwoCamerasAreNamedAsAPair) {
 // camera 2 five frames late (every 5th frame compared, as streams were, left it unseen: the
 // robotics tester's lagging camera, warned offline, silent live).
 TEST(CameraSyncCheck, AStreamOfUnknownLengthIsComparedAsAFileIs) {
-  const Sequence scene = Scene({"cameras=3", "people=2", "frames=600", "fps=30"});  // the realistic detector
+  const Sequence scene = SyntheticScene({"cameras=3", "people=2", "frames=600", "fps=30"});  // the realistic detector
   const Sequence late = Shifted(scene, 2, -5);
   for (const bool streamed : {false, true}) {
     const CameraSyncCheck check = Checked(late, 1.0, streamed);
@@ -120,7 +112,7 @@ TEST(CameraSyncCheck, AStreamOfUnknownLengthIsComparedAsAFileIs) {
 // Without times, or with frames further apart than track.max_gap_s (images sampled seconds apart),
 // nothing is compared, so an offset there says nothing.
 TEST(CameraSyncCheck, FramesWithoutTimesOrSecondsApartAreNotCompared) {
-  Sequence scene = Shifted(Scene({"cameras=3", "people=2", "frames=100", "noise=clean"}), 1, 5);
+  Sequence scene = Shifted(SyntheticScene({"cameras=3", "people=2", "frames=100", "noise=clean"}), 1, 5);
   const CameraSyncCheck apart = Checked(scene, /*max_gap_s=*/0.02);
   for (const CameraPairSync& pair : apart.pairs()) EXPECT_EQ(pair.count, 0);
   EXPECT_EQ(apart.frame_step_s(), 0.0);

@@ -9,19 +9,12 @@
 #include <string>
 #include <vector>
 
-#include "engine/input.h"
+#include "tests/engine/synthetic_scene.h"
 
 namespace rpt::engine {
 namespace {
 
-Sequence Scene(const std::vector<std::string>& params) {
-  InputSpec spec;
-  spec.dataset = "synthetic";
-  spec.params = params;
-  InputWarnings warnings;
-  std::vector<Sequence> sequences = LoadInput(spec, {}, &warnings);
-  return std::move(sequences.at(0));
-}
+using test::SyntheticScene;
 
 // `sequence` with camera `camera` showing frame `from`'s detections in frames from..from+length-1.
 Sequence Frozen(const Sequence& sequence, size_t camera, size_t from, size_t length) {
@@ -39,7 +32,7 @@ std::vector<long> Longest(const Sequence& sequence) {
 }
 
 TEST(FrozenViewCheck, AFrozenCameraIsNamedWithHowLong) {
-  const Sequence scene = Scene({"cameras=3", "people=2", "frames=300", "noise=clean"});
+  const Sequence scene = SyntheticScene({"cameras=3", "people=2", "frames=300", "noise=clean"});
   EXPECT_EQ(Longest(scene), (std::vector<long>{0, 0, 0}));
   // Frames 100-249 show frame 100: 149 repeats of the frame before.
   const std::vector<long> longest = Longest(Frozen(scene, 2, 100, 150));
@@ -58,7 +51,7 @@ TEST(FrozenViewCheck, AFrozenCameraIsNamedWithHowLong) {
 // The perfect detector repeats a standing person's view exactly; people wait up to 3 s. Frames
 // whose every view repeats count for nothing.
 TEST(FrozenViewCheck, StillPeopleUnderThePerfectDetectorAreNoFreeze) {
-  const Sequence scene = Scene({"cameras=3", "people=4", "frames=1000", "noise=perfect"});
+  const Sequence scene = SyntheticScene({"cameras=3", "people=4", "frames=1000", "noise=perfect"});
   for (const long run : Longest(scene)) EXPECT_LT(run, kMinFrozenFrames);
   Sequence still = scene;
   for (SequenceFrame& frame : still.frames) frame.views = scene.frames[0].views;  // nothing moves anywhere
