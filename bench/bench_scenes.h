@@ -25,6 +25,10 @@ const std::vector<BenchScene>& StandardScenes();
 // Scaling series: cameras 2..31 with 4 people; people 1..20 with 5 cameras.
 std::vector<BenchScene> ScalingScenes();
 
+// The frame-time target of a dataset's real frames (`rpt bench --dataset NAME`), in us per frame
+// including the reader's grouping of raw candidates where it has one; 0 = none.
+double DatasetTargetUs(const std::string& dataset);
+
 // The scene with simulated detections (seeded, deterministic). The default detector profile is
 // "clean", the model results/bench.md was measured with: a speed benchmark needs a workload that
 // stays the same across commits (the fitted "realistic" profile reports fewer persons and joints).

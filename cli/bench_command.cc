@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <cstdio>
 #include <iostream>
+#include <optional>
 #include <nlohmann/json.hpp>
 
 #include "bench/baseline_triangulator.h"
@@ -15,13 +16,16 @@
 #include "cli/commands.h"
 #include "cli/config_args.h"
 #include "cli/follow_bench.h"
+#include "cli/input_options.h"
 #include "engine/outputs/step_tables.h"
 #include "engine/outputs/results_writer.h"
 #include "engine/outputs/run_info.h"
+#include "engine/input.h"
 #include "engine/run.h"
 #include "core/errors.h"
 #include "core/pipeline/simd_kernels.h"
 #include "core/pipeline/triangulator.h"
+#include "core/printable_text.h"
 #include "core/text.h"
 #include "datasets/detections.h"
 #include "datasets/io/hdf5_preflight.h"
@@ -50,6 +54,7 @@ struct BenchArgs {
   bool no_baseline = false;
   bool json = false;
   std::string detector = "clean";
+  engine::InputSpec dataset;  // --dataset/--root/--param: a dataset's real frames as one more column
   ConfigArgs config;
 };
 
@@ -59,6 +64,11 @@ struct SceneResult {
   metrics::MetricsResult metrics;
   double baseline_median_us = 0;
   metrics::MetricsResult baseline_metrics;
+  bool has_gt = true;  // false: a dataset's frames without ground truth (no accuracy rows)
+  // The median frame time the target is about: with the reader's grouping where it has one.
+  double TargetedUs() const {
+    return timing.paf_grouping_frames > 0 ? timing.frame_with_grouping_us_median : timing.frame_us_median;
+  }
 };
 
 SceneResult BenchScene(const bench::BenchScene& scene, const BenchArgs& args, const engine::Config& config) {
@@ -75,7 +85,7 @@ SceneResult BenchScene(const bench::BenchScene& scene, const BenchArgs& args, co
     for (size_t f = 0; f < sequence.frames.size(); ++f) {
       const SequenceFrame& frame = sequence.frames[f];
       triangulator.Process(frame.views, frame.timestamp_s, &persons, &stats);
-      if (pass > 0) timing.Add(stats);
+      if (pass > 0) timing.Add(stats, frame.paf_grouping_us);
       if (pass == 1) accuracy.Add(frame.id, frame.gt, sequence.gt_joints, persons, triangulator.output_joints());
     }
   }
@@ -91,6 +101,88 @@ SceneResult BenchScene(const bench::BenchScene& scene, const BenchArgs& args, co
       const Poses3D out = baseline.Process(sequence.frames[f].views);
       times.push_back(std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count());
       baseline_accuracy.Add(sequence.frames[f].id, sequence.frames[f].gt, sequence.gt_joints, out, sequence.detection_joints);
+    }
+    result.baseline_median_us = metrics::Median(times);
+    result.baseline_metrics = baseline_accuracy.Finalize();
+  }
+  return result;
+}
+
+// A dataset's frames (--dataset/--root/--param) timed like a scene: each pass opens the input
+// again and pulls its frames one at a time, as `rpt eval` does, so a reader that groups raw
+// candidates into persons (shelf-4da's part-affinity grouping) does it again in every pass and its
+// time per frame (SequenceFrame::paf_grouping_us) is a row of its own. One triangulator per
+// sequence, kept over the passes (Reset before each); pass 0 warms up; accuracy from pass 1; the
+// baseline on the first --baseline-frames frames.
+SceneResult BenchDataset(const BenchArgs& args, const engine::Config& config) {
+  SceneResult result;
+  result.scene.name = args.dataset.dataset;
+  result.scene.target_us = bench::DatasetTargetUs(args.dataset.dataset);
+  std::vector<std::unique_ptr<Triangulator>> triangulators;
+  metrics::EvalOptions eval_options;
+  std::optional<metrics::MetricsAccumulator> accuracy;
+  metrics::TimingAccumulator timing;
+  std::vector<std::pair<size_t, SequenceFrame>> baseline_frames;  // (sequence, frame)
+  std::vector<std::vector<Camera>> cameras;
+  std::vector<JointNames> detection_joints, gt_joints;
+  long frames = 0, gt_persons = 0;
+  SequenceFrame frame;
+  Poses3D persons;
+  FrameStats stats;
+  for (int pass = 0; pass <= args.repeat; ++pass) {
+    engine::Input input = engine::OpenInput(args.dataset);
+    if (pass == 0) {
+      std::vector<const SequenceHeader*> headers;
+      for (int i = 0; i < input.size(); ++i) {
+        const SequenceHeader& header = input.header(i);
+        headers.push_back(&header);
+        triangulators.push_back(std::make_unique<Triangulator>(
+            header.cameras, header.detection_joints, engine::TriangulatorOptionsFor(config.triangulator, header)));
+        cameras.push_back(header.cameras);
+        detection_joints.push_back(header.detection_joints);
+        gt_joints.push_back(header.gt_joints);
+      }
+      eval_options = engine::EvalOptionsFor(config.metrics, headers);
+      accuracy.emplace(eval_options);
+    }
+    if (input.size() != static_cast<int>(triangulators.size())) {
+      throw InputError(args.dataset.root + ": the dataset changed between the passes");
+    }
+    for (int i = 0; i < input.size(); ++i) {
+      Triangulator& triangulator = *triangulators[static_cast<size_t>(i)];
+      triangulator.Reset();
+      while (input.source(i).Next(&frame)) {
+        triangulator.Process(frame.views, frame.timestamp_s, &persons, &stats);
+        if (pass > 0) timing.Add(stats, frame.paf_grouping_us);
+        if (pass != 1) continue;
+        ++frames;
+        gt_persons += frame.gt.num_persons();
+        accuracy->Add(frame.id, frame.gt, gt_joints[static_cast<size_t>(i)], persons, triangulator.output_joints());
+        if (!args.no_baseline && baseline_frames.size() < static_cast<size_t>(args.baseline_frames)) {
+          baseline_frames.emplace_back(static_cast<size_t>(i), frame);
+        }
+      }
+      input.Finished(i);
+    }
+    if (pass == 0 && !args.json) PrintInputWarnings(input.Warnings());  // once, not per pass
+  }
+  result.scene.frames = static_cast<int>(frames);
+  result.scene.description = std::to_string(frames) + " frames of " + std::to_string(triangulators.size()) +
+                             " sequence(s), " + std::to_string(cameras.empty() ? 0 : cameras.front().size()) +
+                             " cameras; " + (args.dataset.root.empty() ? "generated" : PrintableText(args.dataset.root));
+  result.timing = timing.Finalize();
+  result.metrics = accuracy->Finalize();
+  result.has_gt = gt_persons > 0;
+  if (!args.no_baseline) {
+    std::vector<std::optional<bench::BaselineTriangulator>> baselines(cameras.size());
+    std::vector<double> times;
+    metrics::MetricsAccumulator baseline_accuracy(eval_options);
+    for (const auto& [i, f] : baseline_frames) {
+      if (!baselines[i]) baselines[i].emplace(cameras[i], detection_joints[i]);
+      const auto start = std::chrono::steady_clock::now();
+      const Poses3D out = baselines[i]->Process(f.views);
+      times.push_back(std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count());
+      baseline_accuracy.Add(f.id, f.gt, gt_joints[i], out, detection_joints[i]);
     }
     result.baseline_median_us = metrics::Median(times);
     result.baseline_metrics = baseline_accuracy.Finalize();
@@ -180,8 +272,15 @@ void RunBench(const BenchArgs& args) {
     }
     scenes.push_back(*it);
   }
+  const bool dataset = !args.dataset.dataset.empty();
+  if (dataset && (args.follow || args.io)) {
+    throw ConfigError("--dataset times the pipeline on a dataset's frames: not with --follow or --io");
+  }
+  if (!dataset && (!args.dataset.root.empty() || !args.dataset.params.empty())) {
+    throw ConfigError("--root and --param name a dataset's folder and reader parameters: add --dataset NAME");
+  }
   if (scenes.empty() && args.follow) scenes.push_back(bench::StandardScenes().front());  // shelf-like
-  if (scenes.empty()) scenes = args.scaling ? bench::ScalingScenes() : bench::StandardScenes();
+  if (scenes.empty() && (args.scaling || !dataset)) scenes = args.scaling ? bench::ScalingScenes() : bench::StandardScenes();
   for (auto& s : scenes) {
     if (args.frames > 0) s.frames = args.frames;
   }
@@ -196,6 +295,12 @@ void RunBench(const BenchArgs& args) {
     if (!args.json) std::fprintf(stderr, "benchmarking %s ...\n", scene.name.c_str());
     results.push_back(BenchScene(scene, args, config));
   }
+  if (dataset) {
+    if (!args.json) std::fprintf(stderr, "benchmarking %s ...\n", args.dataset.dataset.c_str());
+    results.push_back(BenchDataset(args, config));
+  }
+  const auto grouped = [](const SceneResult& r) { return r.timing.paf_grouping_frames > 0; };
+  const bool grouping = std::any_of(results.begin(), results.end(), grouped);
   const engine::RunInfo info = engine::CollectRunInfo(1);
   if (args.json) {
     OrderedJson j;
@@ -212,17 +317,22 @@ void RunBench(const BenchArgs& args) {
       s["frame_time_us_mean"] = r.timing.frame_us_mean;
       s["frame_time_us_p90"] = r.timing.frame_us_p90;
       s["step_time_us_median"] = engine::StepTimesJson(r.timing);
-      s["mpjpe_mm"] = r.metrics.mpjpe_mm;
-      s["recall500"] = r.metrics.recall_500;
-      s["invalid"] = r.metrics.invalid;
+      // With a reader's grouping of raw candidates (its time is the first key of step_time_us_median):
+      // the frame with it.
+      if (r.timing.paf_grouping_frames > 0) s["frame_with_grouping_us_median"] = r.timing.frame_with_grouping_us_median;
+      if (r.has_gt) {
+        s["mpjpe_mm"] = r.metrics.mpjpe_mm;
+        s["recall500"] = r.metrics.recall_500;
+        s["invalid"] = r.metrics.invalid;
+      }
       if (!args.no_baseline) {
         s["baseline_frame_time_us_median"] = r.baseline_median_us;
-        s["baseline_mpjpe_mm"] = r.baseline_metrics.mpjpe_mm;
+        if (r.has_gt) s["baseline_mpjpe_mm"] = r.baseline_metrics.mpjpe_mm;
         s["speedup"] = r.baseline_median_us / r.timing.frame_us_median;
       }
       if (r.scene.target_us > 0) {
         s["target_us"] = r.scene.target_us;
-        s["meets_target"] = r.timing.frame_us_median <= r.scene.target_us;
+        s["meets_target"] = r.TargetedUs() <= r.scene.target_us;
       }
       j["scenes"].push_back(s);
     }
@@ -232,23 +342,44 @@ void RunBench(const BenchArgs& args) {
   std::printf("rpt bench: one thread, median over %d passes after a warm-up; revision %s; %s; %s; SIMD %s\n\n",
               args.repeat, info.git_revision.c_str(), info.cpu.c_str(), info.compiler.c_str(),
               simd::Enabled() ? simd::ActivePath().c_str() : "off");
-  std::printf("%-18s", "step (us)");
+  // A row whose value only some columns have ("-" in the others).
+  auto partial_row = [&](const char* label, auto has, auto value, const char* format) {
+    std::printf("%-22s", label);
+    for (const auto& r : results) {
+      if (has(r)) {
+        std::printf(format, value(r));
+      } else {
+        std::printf(" %14s", "-");
+      }
+    }
+    std::printf("\n");
+  };
+  std::printf("%-22s", "step (us)");
   for (const auto& r : results) std::printf(" %14s", r.scene.name.c_str());
   std::printf("\n");
+  if (grouping) {  // the reader's part-affinity grouping, done before the pipeline's steps (as in rpt eval)
+    partial_row(engine::kPafGroupingRow, grouped, [](const SceneResult& r) { return r.timing.paf_grouping_us_median; },
+                " %14.2f");
+  }
   for (int s = 0; s < kNumSteps; ++s) {
-    std::printf("%-18s", std::string(kSteps[s].key).c_str());
+    std::printf("%-22s", std::string(kSteps[s].key).c_str());
     for (const auto& r : results) std::printf(" %14.2f", r.timing.step_us_median[s]);
     std::printf("\n");
   }
   auto row = [&](const char* label, auto value, const char* format) {
-    std::printf("%-18s", label);
+    std::printf("%-22s", label);
     for (const auto& r : results) std::printf(format, value(r));
     std::printf("\n");
   };
   row("total (median)", [](const SceneResult& r) { return r.timing.frame_us_median; }, " %14.2f");
   row("total (mean)", [](const SceneResult& r) { return r.timing.frame_us_mean; }, " %14.2f");
-  // The scene's target (us per frame, median) and whether the median meets it; "-" without one.
-  std::printf("%-18s", "target (us)");
+  if (grouping) {
+    partial_row("frame + grouping", grouped,
+                [](const SceneResult& r) { return r.timing.frame_with_grouping_us_median; }, " %14.2f");
+  }
+  // The scene's target (us per frame, median; with the grouping where there is one) and whether
+  // the median meets it; "-" without one.
+  std::printf("%-22s", "target (us)");
   for (const auto& r : results) {
     if (r.scene.target_us > 0) {
       std::printf(" %14.0f", r.scene.target_us);
@@ -256,17 +387,18 @@ void RunBench(const BenchArgs& args) {
       std::printf(" %14s", "-");
     }
   }
-  std::printf("\n%-18s", "target met");
+  std::printf("\n%-22s", "target met");
   for (const auto& r : results) {
-    std::printf(" %14s", r.scene.target_us <= 0 ? "-" : r.timing.frame_us_median <= r.scene.target_us ? "yes" : "NO");
+    std::printf(" %14s", r.scene.target_us <= 0 ? "-" : r.TargetedUs() <= r.scene.target_us ? "yes" : "NO");
   }
   std::printf("\n");
-  row("MPJPE (mm)", [](const SceneResult& r) { return r.metrics.mpjpe_mm; }, " %14.1f");
-  row("Recall@500 (%)", [](const SceneResult& r) { return r.metrics.recall_500; }, " %14.1f");
-  row("Invalid (%)", [](const SceneResult& r) { return r.metrics.invalid; }, " %14.1f");
+  const auto has_gt = [](const SceneResult& r) { return r.has_gt; };
+  partial_row("MPJPE (mm)", has_gt, [](const SceneResult& r) { return r.metrics.mpjpe_mm; }, " %14.1f");
+  partial_row("Recall@500 (%)", has_gt, [](const SceneResult& r) { return r.metrics.recall_500; }, " %14.1f");
+  partial_row("Invalid (%)", has_gt, [](const SceneResult& r) { return r.metrics.invalid; }, " %14.1f");
   if (!args.no_baseline) {
     row("baseline (us)", [](const SceneResult& r) { return r.baseline_median_us; }, " %14.1f");
-    row("baseline MPJPE", [](const SceneResult& r) { return r.baseline_metrics.mpjpe_mm; }, " %14.1f");
+    partial_row("baseline MPJPE", has_gt, [](const SceneResult& r) { return r.baseline_metrics.mpjpe_mm; }, " %14.1f");
     row("speed-up", [](const SceneResult& r) { return r.baseline_median_us / r.timing.frame_us_median; }, " %13.1fx");
   }
 }
@@ -278,7 +410,7 @@ void RegisterBenchCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand("bench", "Single-threaded speed on the benchmark scenes, with a baseline");
   command->add_option("--scene", args->scenes, "scene name (repeatable; default: the standard scenes)")->take_all();
   command->add_flag("--scaling", args->scaling, "the scaling series over cameras (2..31) and people (1..20)");
-  command->add_option("--frames", args->frames, "frames per scene (default: the scene's)")->check(CLI::Range(1, 1000000));
+  command->add_option("--frames", args->frames, "frames per generated scene (default: the scene's; a dataset's: --param)")->check(CLI::Range(1, 1000000));
   command->add_option("--repeat", args->repeat, "timed passes over the frames")->check(CLI::Range(1, 1000))->capture_default_str();
   command->add_option("--baseline-frames", args->baseline_frames, "frames for the baseline (none: --no-baseline)")
       ->check(CLI::Range(1, 1000000))
@@ -300,6 +432,7 @@ void RegisterBenchCommand(CLI::App& app) {
   command->add_option("--io-frames", args->io_frames, "frames in the --io cache (5 views each)")
       ->check(CLI::Range(1, 10000000))
       ->capture_default_str();
+  AddDatasetOptions(command, &args->dataset);  // a dataset's real frames as one more column
   AddConfigOptions(command, &args->config);
   command->callback([args] { RunBench(*args); });
 }

@@ -72,13 +72,16 @@ void AddDetectionMappingOptions(CLI::App* command, engine::DetectionMapping* map
       ->group(group);
 }
 
-void AddSourceOptions(CLI::App* command, engine::InputSpec* spec) {
+void AddReaderOptions(CLI::App* command, engine::InputSpec* spec, const std::string& param_help) {
   command->add_option("--dataset", spec->dataset, "dataset reader (see `rpt datasets`)");
   command->add_option("--root", spec->root, "dataset folder in its original layout");
-  command->add_option("--param", spec->params,
-                      "parameter key=value of the dataset reader, or with --labels of the labels file "
-                      "(repeatable; see `rpt datasets`)")
-      ->take_all();
+  command->add_option("--param", spec->params, param_help)->take_all();
+}
+
+void AddSourceOptions(CLI::App* command, engine::InputSpec* spec) {
+  AddReaderOptions(command, spec,
+                   "parameter key=value of the dataset reader, or with --labels of the labels file "
+                   "(repeatable; see `rpt datasets`)");
   command->add_option("--labels", spec->labels, "generic labels file (skelda schema) instead of --dataset");
   command->add_option("--detections", spec->detections,
                       "2D detections: generic JSON, HDF5 cache, OpenPose folder, COCO result list or VoxelPose .pkl");
@@ -92,6 +95,10 @@ void AddStrictOption(CLI::App* command, engine::InputSpec* spec) {
 }
 
 }  // namespace
+
+void AddDatasetOptions(CLI::App* command, engine::InputSpec* spec) {
+  AddReaderOptions(command, spec, "parameter key=value of the dataset reader (repeatable; see `rpt datasets`)");
+}
 
 void AddCamerasOptions(CLI::App* command, engine::InputSpec* spec) {
   command->add_option("--cameras", spec->cameras,

@@ -17,6 +17,9 @@ void AddInputOptions(CLI::App* command, engine::InputSpec* spec);
 // --param, --labels, --cameras, --fps, --detections, --strict; sets spec->ground_truth = false.
 void AddDetectionInputOptions(CLI::App* command, engine::InputSpec* spec);
 
+// Only the dataset reader: --dataset, --root, --param (rpt bench on a dataset's frames).
+void AddDatasetOptions(CLI::App* command, engine::InputSpec* spec);
+
 // --cameras (a calibration file instead of a dataset), how it is read (--cameras-format,
 // --cameras-units, --cameras-image-width, --cameras-image-height) and --fps; part of
 // AddDetectionInputOptions, and of the commands that show what the input holds (rpt inspect).

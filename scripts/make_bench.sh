@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Regenerates results/bench.md: rpt bench on the standard scenes and the scaling series, with
+# Regenerates results/bench.md: rpt bench on the standard scenes, the real Shelf frames of the
+# 4D-Association bundle (from $RPT_SHARED_DATA, default ../shared/data) and the scaling series, with
 # the machine, compiler flags and commit. Usage: bash scripts/make_bench.sh [BUILD_DIR]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -11,6 +12,8 @@ command -v taskset > /dev/null && PIN="taskset -c $(( $(nproc) - 1 ))"
 cmake --build "$BUILD" --target rpt > /dev/null  # refresh the embedded git revision
 FLAGS=$(grep -E '^CMAKE_CXX_FLAGS_RELEASE:' "$BUILD/CMakeCache.txt" | cut -d= -f2-)
 NATIVE=$(grep -E '^RPT_MARCH_NATIVE:' "$BUILD/CMakeCache.txt" | cut -d= -f2-)
+# The real data (never copied into the project), as the tests find it.
+SHARED_DATA="${RPT_SHARED_DATA:-../shared/data}"
 {
   echo "# Benchmarks"
   echo
@@ -28,6 +31,21 @@ NATIVE=$(grep -E '^RPT_MARCH_NATIVE:' "$BUILD/CMakeCache.txt" | cut -d= -f2-)
   echo
   echo '```'
   $PIN "$RPT" bench --repeat 5 2>/dev/null
+  echo '```'
+  echo
+  echo "## Real frames"
+  echo
+  echo "The 301 frames of Shelf (5 cameras) bundled by 4D-Association with their real OpenPose output, read by"
+  echo "the shelf-4da reader in every pass as \`rpt eval\` reads them: \`paf_grouping (reader)\` is the reader's grouping of the"
+  echo "raw OpenPose candidates into persons (part-affinity fields), done before the pipeline and not in its"
+  echo "total; \`frame + grouping\` is the frame with it, the time the target is about. The baseline runs on the first 30 frames."
+  echo
+  echo '```'
+  if [ -d "$SHARED_DATA/shelf/4d_association" ]; then
+    $PIN "$RPT" bench --dataset shelf-4da --root "$SHARED_DATA/shelf/4d_association" --repeat 5 2>/dev/null
+  else
+    echo "(not measured: no 4D-Association Shelf bundle at $SHARED_DATA/shelf/4d_association; RPT_SHARED_DATA names the folder)"
+  fi
   echo '```'
   echo
   echo "## Loading detections"

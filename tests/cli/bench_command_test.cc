@@ -13,6 +13,7 @@
 
 #include "core/pipeline/frame_stats.h"
 #include "tests/cli/cli_test_util.h"
+#include "tests/test_data.h"
 
 namespace rpt {
 namespace {
@@ -55,6 +56,73 @@ TEST(BenchCommand, ReportsStepsAccuracyAndBaseline) {
     EXPECT_EQ(r.exit_code, 2) << bad;
     EXPECT_NE(r.err.find("not in range 1 to"), std::string::npos) << bad << ": " << r.err;
   }
+}
+
+// rpt bench --dataset: a dataset's real frames as a column. Its accuracy is `rpt eval`'s on the same
+// frames (the same pipeline on the same input); the shelf-4da reader's part-affinity grouping is a
+// row of its own (done again in every pass) and the target (30 us) is about the frame with it.
+TEST(BenchCommand, ADatasetsFramesWithTheReadersGroupingAsARow) {
+  RPT_REQUIRE_SHARED_DATA("shelf/4d_association");
+  const std::string input =
+      "--dataset shelf-4da --root " + test::SharedData("shelf/4d_association").string() + " --param frames=0-19";
+  const test::CommandResult r = test::RunRpt("bench " + input + " --repeat 2 --baseline-frames 3 --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["scenes"].size(), 1u) << "a dataset alone: no generated scenes";
+  const nlohmann::json& s = j["scenes"][0];
+  EXPECT_EQ(s["name"], "shelf-4da");
+  EXPECT_EQ(s["frames"], 20);
+  const double pipeline = s["frame_time_us_median"].get<double>();
+  const double grouping = s["step_time_us_median"]["paf_grouping (reader)"].get<double>();
+  const double with_grouping = s["frame_with_grouping_us_median"].get<double>();
+  EXPECT_GT(grouping, 0.0);
+  EXPECT_GT(with_grouping, pipeline);
+  EXPECT_EQ(s["target_us"], 30.0);
+  EXPECT_EQ(s["meets_target"], with_grouping <= 30.0);
+  EXPECT_GT(s["speedup"].get<double>(), 1.0);
+  const test::CommandResult eval =
+      test::RunRpt("eval " + input + " --json --quiet --no-predictions --out " +
+                   (std::filesystem::temp_directory_path() / "rpt_bench_dataset_eval").string());
+  ASSERT_EQ(eval.exit_code, 0) << eval.err;
+  const nlohmann::json e = nlohmann::json::parse(eval.out);
+  EXPECT_DOUBLE_EQ(s["mpjpe_mm"].get<double>(), e["mpjpe_mm"].get<double>());
+  EXPECT_DOUBLE_EQ(s["recall500"].get<double>(), e["recall500"].get<double>());
+  EXPECT_DOUBLE_EQ(s["invalid"].get<double>(), e["invalid"].get<double>());
+  std::filesystem::remove_all(std::filesystem::temp_directory_path() / "rpt_bench_dataset_eval");
+
+  // The table: the grouping row and the frame with it, "-" in a generated scene's column.
+  const test::CommandResult text =
+      test::RunRpt("bench --scene few-views --frames 5 " + input + " --repeat 1 --no-baseline");
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  for (const std::string label : {"paf_grouping (reader)", "frame + grouping"}) {
+    const size_t at = text.out.find("\n" + label + " ");
+    ASSERT_NE(at, std::string::npos) << label << ":\n" << text.out;
+    const std::string line = text.out.substr(at + 1, text.out.find('\n', at + 1) - at - 1);
+    EXPECT_NE(line.find(" - "), std::string::npos) << "few-views has no grouping: " << line;
+  }
+  EXPECT_NE(text.err.find("rotations re-orthonormalised"), std::string::npos) << "the input's warnings, once";
+}
+
+TEST(BenchCommand, DatasetOptionsAreCheckedBeforeAnythingRuns) {
+  const test::CommandResult root = test::RunRpt("bench --root /tmp --repeat 1");
+  EXPECT_EQ(root.exit_code, 2);
+  EXPECT_NE(root.err.find("add --dataset NAME"), std::string::npos) << root.err;
+  const test::CommandResult follow = test::RunRpt("bench --dataset synthetic --follow --repeat 1");
+  EXPECT_EQ(follow.exit_code, 2);
+  EXPECT_NE(follow.err.find("not with --follow"), std::string::npos) << follow.err;
+  const test::CommandResult missing = test::RunRpt("bench --dataset mvor --root /nonexistent/mvor --repeat 1");
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_NE(missing.err.find("/nonexistent/mvor"), std::string::npos) << missing.err;
+  // A generated dataset has no grouping: no grouping keys.
+  const test::CommandResult synthetic =
+      test::RunRpt("bench --dataset synthetic --param frames=10 --repeat 1 --no-baseline --json");
+  ASSERT_EQ(synthetic.exit_code, 0) << synthetic.err;
+  const nlohmann::json s = nlohmann::json::parse(synthetic.out)["scenes"][0];
+  EXPECT_EQ(s["name"], "synthetic");
+  EXPECT_EQ(s["frames"], 10);
+  EXPECT_FALSE(s["step_time_us_median"].contains("paf_grouping (reader)"));
+  EXPECT_FALSE(s.contains("frame_with_grouping_us_median"));
+  EXPECT_FALSE(s.contains("target_us"));
 }
 
 // rpt bench --follow: each scene with numbers at full precision and with 3 decimals, each with the
