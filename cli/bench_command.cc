@@ -166,6 +166,7 @@ SceneResult BenchDataset(const BenchArgs& args, const engine::Config& config) {
     }
     if (pass == 0 && !args.json) PrintInputWarnings(input.Warnings());  // once, not per pass
   }
+  if (frames == 0) throw InputError(args.dataset.dataset + ": no frames to time (check --param frames=...)");
   result.scene.frames = static_cast<int>(frames);
   result.scene.description = std::to_string(frames) + " frames of " + std::to_string(triangulators.size()) +
                              " sequence(s), " + std::to_string(cameras.empty() ? 0 : cameras.front().size()) +
