@@ -298,6 +298,14 @@ void RegisterDatasets(py::module_& datasets, py::module_& synthetic) {
              for (size_t k = 0; k < length; ++k) frames.append(Frame{s, s->frames[start + k * step]});
              return frames;
            })
+      // for frame in sequence: Python's own lazy iterator over __getitem__ (what iter() made of it
+      // before), declared so that type checkers (python/rpt/datasets.pyi) know it is iterable.
+      .def("__iter__",
+           [](const py::object& self) {
+             PyObject* iterator = PySeqIter_New(self.ptr());
+             if (iterator == nullptr) throw py::error_already_set();
+             return py::reinterpret_steal<py::object>(iterator);
+           })
       .def_property_readonly("warnings", [](const Sequence& s) { return engine::InputWarningLines(s.warnings); })
       .def("__repr__", [](const Sequence& s) {
         return "Sequence(" + QuoteName(s.name) + ", " + std::to_string(s.cameras.size()) + " cameras, " +

@@ -34,14 +34,14 @@ fi
 if [ "$tests" = 1 ]; then
   # GoogleTest, Google Benchmark, OpenCV's calib3d (tests/core compares our projection with it),
   # clang with libFuzzer (fuzz/), Chromium for the report's
-  # browser test (tests/report/; skipped without it), pytest for the Python module's tests and
-  # matplotlib for its example (tests/python/), the locale sources of Debian's locales (a test
+  # browser test (tests/report/; skipped without it), pytest for the Python module's tests,
+  # matplotlib for its example and mypy for its type stubs' checks (tests/python/), the locale sources of Debian's locales (a test
   # compiles de_DE.UTF-8 into a scratch folder: a decimal comma must not change the module's
   # numbers; skipped without them), and Slurm with munge for the one-node cluster of
   # scripts/ci_slurm.sh (`rpt sweep --slurm`; the packages' services are not started: the script
   # starts its own daemons).
   $SUDO apt-get install -y -qq --no-install-recommends \
     libgtest-dev libgmock-dev libbenchmark-dev libopencv-calib3d-dev clang libclang-rt-14-dev chromium \
-    python3-pytest python3-matplotlib locales slurm-wlm munge >/dev/null
+    python3-pytest python3-matplotlib python3-mypy locales slurm-wlm munge >/dev/null
 fi
 echo "dependencies installed"

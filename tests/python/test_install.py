@@ -22,3 +22,7 @@ def test_installed_module_imports(tmp_path):
     path, frames = done.stdout.split()
     assert path.startswith(str(prefix / site))
     assert frames == "2"
+    # The type stubs and their PEP 561 marker go with the package (type checkers of the installed
+    # module read them).
+    for name in ("py.typed", "__init__.pyi", "datasets.pyi"):
+        assert (prefix / site / "rpt" / name).is_file(), name
