@@ -36,6 +36,7 @@ void CameraAgreementCheck::Add(long index, const SequenceFrame& frame, const Pos
     if (triangulated < kMinAgreementJoints) continue;
     for (size_t c = 0; c < header_.cameras.size(); ++c) {
       if (frame.views[c].unavailable) continue;  // no data: it did not look
+      if (frame.views[c].num_persons() > 0) ++cameras_[c].while_detecting;
       const Camera& camera = header_.cameras[c];
       double min_u = std::numeric_limits<double>::infinity(), min_v = min_u, max_u = -min_u, max_v = -min_u;
       double sum_u = 0, sum_v = 0;
@@ -89,6 +90,17 @@ std::vector<std::string> CameraAgreementWarnings(const std::string& sequence, co
                                     std::to_string(camera.in_view_without_detections) +
                                     " 3D persons were in its view: is its detector output missing, or its name "
                                     "another camera's?"));
+      continue;
+    }
+    if (camera.frames_with_detections >= kMinAgreementPersons && camera.while_detecting >= kMinAgreementPersons &&
+        static_cast<double>(camera.in_view) <= kMinInViewShare * static_cast<double>(camera.while_detecting)) {
+      lines.push_back(PrintableText(
+          sequence + ", camera " + QuoteName(camera.camera) + ": it detected persons in " +
+          std::to_string(camera.frames_with_detections) + " of the " + std::to_string(camera.frames) +
+          " frames compared, but " + (camera.in_view == 0 ? "none" : "only " + std::to_string(camera.in_view)) +
+          " of the " + std::to_string(camera.while_detecting) +
+          " 3D persons of those frames fall in its image: is its calibration right? (its position: the camera "
+          "centre given where the world-to-camera t belongs, or the other way round; R transposed; the units of t)"));
       continue;
     }
     if (camera.in_view < kMinAgreementPersons) continue;

@@ -284,7 +284,8 @@ OrderedJson TriangulationSummaryJson(const RunResult& run) {
                            {"camera", camera.camera},
                            {"persons_in_view", camera.in_view},
                            {"persons_matching", camera.agreeing},
-                           {"persons_in_view_without_detections", camera.in_view_without_detections}});
+                           {"persons_in_view_without_detections", camera.in_view_without_detections},
+                           {"persons_while_detecting", camera.while_detecting}});
     }
   }
   if (!agreement.empty()) j["camera_agreement"] = agreement;

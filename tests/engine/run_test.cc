@@ -421,6 +421,45 @@ TEST(RunTest, CamerasWhoseDetectionsDisagreeWithThePersonsAreNamed) {
   }
 }
 
+// The camera centre given where the world-to-camera t belongs (a calibration user's finding: two
+// of four cameras turned round, the 3D persons 4 m off, no warning): those cameras detect people in
+// every frame, yet none of the persons triangulated falls in their images. They are named; the
+// others, and every camera of the right rig, are not.
+TEST(RunTest, CamerasInWhoseImagesNoPersonFallsAreNamed) {
+  SyntheticParams params = Scene(60);
+  params.cameras = 4;
+  std::vector<Sequence> whole = MakeSyntheticDataset(params);
+  RunOptions options;
+  options.eval.reset();
+  options.camera_agreement = true;
+  const auto run = [&](const std::vector<Sequence>& input) {
+    return engine::Run(std::span<const Sequence>(input), options, nullptr).sequences[0];
+  };
+  const SequenceResult right = run(whole);
+  EXPECT_TRUE(CameraAgreementWarnings(right.name, right.camera_agreement).empty());
+  for (const CameraAgreement& camera : right.camera_agreement) {
+    EXPECT_GT(camera.in_view, 0.9 * static_cast<double>(camera.while_detecting)) << camera.camera;
+  }
+  for (const int c : {2, 3}) {
+    Camera& camera = whole[0].cameras[static_cast<size_t>(c)];
+    camera.t = camera.Center();
+  }
+  const SequenceResult wrong = run(whole);
+  const std::vector<std::string> lines = CameraAgreementWarnings(wrong.name, wrong.camera_agreement);
+  ASSERT_EQ(lines.size(), 2u) << (lines.empty() ? "" : lines[0]);
+  for (size_t i = 0; i < 2; ++i) {
+    const CameraAgreement& camera = wrong.camera_agreement[i + 2];
+    EXPECT_EQ(camera.in_view, 0) << camera.camera;
+    EXPECT_EQ(camera.frames_with_detections, 60) << camera.camera;
+    EXPECT_EQ(lines[i].find(", camera '" + camera.camera + "': it detected persons in 60 of the 60 frames compared, but "
+                            "none of the " + std::to_string(camera.while_detecting) +
+                            " 3D persons of those frames fall in its image: is its calibration right?"),
+              wrong.name.size())
+        << lines[i];
+  }
+  EXPECT_GE(wrong.camera_agreement[2].while_detecting, kMinAgreementPersons);
+}
+
 TEST(RunTest, ASinkSeesTheSequenceBeginItsFramesInOrderThenTheEnd) {
   const std::vector<Sequence> whole = MakeSyntheticDataset(Scene(5));
   OrderSink sink;
