@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "engine/upright_check.h"
 
+#include <cmath>
+
 #include "core/printable_text.h"
 #include "core/text.h"
 
@@ -38,24 +40,32 @@ void UprightCheck::Add(const Poses3D& persons) {
   if (head_.empty() || ankles_.empty()) return;
   for (int p = 0; p < persons.num_persons(); ++p) {
     if (!observed(p, ankles_[0]) || !observed(p, ankles_[1])) continue;
-    double head_z = 0;
+    Eigen::Vector3d head = Eigen::Vector3d::Zero();
     int heads = 0;
     for (const int j : head_) {
       if (!observed(p, j)) continue;
-      head_z += persons.Person(p)(2, j);
+      head += persons.Person(p).col(j).head<3>();
       ++heads;
     }
     if (heads == 0) continue;
-    const double ankle_z = 0.5 * (persons.Person(p)(2, ankles_[0]) + persons.Person(p)(2, ankles_[1]));
+    const Eigen::Vector3d axis =
+        head / heads - 0.5 * (persons.Person(p).col(ankles_[0]).head<3>() + persons.Person(p).col(ankles_[1]).head<3>());
     ++count_.judged;
-    count_.upside_down += head_z / heads < ankle_z ? 1 : 0;
+    count_.upside_down += axis.z() < 0 ? 1 : 0;
+    count_.lying += std::abs(axis.z()) < 0.5 * axis.norm() ? 1 : 0;  // within 30 degrees of the horizontal
   }
 }
 
 std::string UprightWarning(const std::string& sequence, const UprightCount& count) {
-  if (count.judged < kMinUprightJudged ||
-      static_cast<double>(count.upside_down) <= kMaxUpsideDownShare * static_cast<double>(count.judged)) {
-    return "";
+  if (count.judged < kMinUprightJudged) return "";
+  if (static_cast<double>(count.upside_down) <= kMaxUpsideDownShare * static_cast<double>(count.judged)) {
+    if (static_cast<double>(count.lying) <= kMaxLyingShare * static_cast<double>(count.judged)) return "";
+    return PrintableText(sequence + ": " + std::to_string(count.lying) + " of the " + std::to_string(count.judged) +
+                         " persons with a head and both ankles triangulated (" +
+                         PercentText(static_cast<double>(count.lying) / count.judged) +
+                         ") lie on their sides (ankles to head within 30 degrees of the horizontal; rpt's world "
+                         "has z up): does the calibration's world have another axis up (y up or down, as many "
+                         "tools' worlds have)? Unless the people do lie (a bed, a floor exercise)");
   }
   return PrintableText(sequence + ": " + std::to_string(count.upside_down) + " of the " + std::to_string(count.judged) +
                        " persons with a head and both ankles triangulated (" +
@@ -78,8 +88,8 @@ std::string MirroredWarning(const std::string& sequence, const UprightCount& cou
                        ") have the nose behind the shoulders, as mirror images have (real detections: under 2 %): "
                        "are the detections of mirrored images in every camera (a webcam's selfie view, a flipped "
                        "video), or left and right exchanged in the joint names? Detections that do not fit the "
-                       "cameras at all (another pixel scale, another calibration) give such persons too: see the "
-                       "other warnings");
+                       "cameras at all (another pixel scale, another calibration: `rpt cameras show`, `rpt render` "
+                       "show them) give such persons too");
 }
 
 }  // namespace rpt::engine

@@ -57,6 +57,43 @@ TEST(UprightCheck, PersonsOnTheirHeadsAreNamedUprightOnesAreNot) {
   EXPECT_EQ(unjudged.count().judged, 0);
 }
 
+// A world whose up is y (y down, as OpenCV's camera-like worlds): standing people lie on their sides.
+// The axis from the ankles to the head within 30 degrees of the horizontal counts as lying; a person
+// bent 45 degrees does not; more than half of at least 20 judged lying is named, as a world axis.
+TEST(UprightCheck, PersonsLyingInAWorldWithAnotherUpAreNamed) {
+  const auto rotated = [](int count, double tilt_rad) {  // standing persons turned about the x axis
+    Poses3D persons = Persons(count, false);
+    const Eigen::Matrix3d turn = Eigen::AngleAxisd(tilt_rad, Eigen::Vector3d::UnitX()).toRotationMatrix();
+    for (int p = 0; p < count; ++p) persons.Person(p).topRows<3>() = turn * persons.Person(p).topRows<3>();
+    return persons;
+  };
+  UprightCheck ydown(CocoBodyJoints());
+  ydown.Add(rotated(20, -M_PI / 2));  // (x, y, z) -> (x, z, -y): the up axis becomes y
+  EXPECT_EQ(ydown.count().judged, 20);
+  EXPECT_EQ(ydown.count().upside_down, 0);
+  EXPECT_EQ(ydown.count().lying, 20);
+  const std::string line = UprightWarning("take", ydown.count());
+  EXPECT_EQ(line.rfind("take: 20 of the 20 persons with a head and both ankles triangulated (100 %) lie on their sides "
+                       "(ankles to head within 30 degrees of the horizontal; rpt's world has z up): does the "
+                       "calibration's world have another axis up",
+                       0),
+            0u)
+      << line;
+  EXPECT_EQ(MirroredWarning("take", ydown.count()), "") << "said once, as a world axis";
+  // Bent 45 degrees is not lying; 59 degrees from the vertical neither, 61 degrees is.
+  UprightCheck bent(CocoBodyJoints());
+  bent.Add(rotated(20, M_PI / 4));
+  bent.Add(rotated(20, 59.0 * M_PI / 180));
+  EXPECT_EQ(bent.count().lying, 0);
+  bent.Add(rotated(21, 61.0 * M_PI / 180));
+  EXPECT_EQ(bent.count().lying, 21);
+  EXPECT_EQ(UprightWarning("s", bent.count()), "") << "21 of 61: not most";
+  UprightCheck most(CocoBodyJoints());
+  most.Add(rotated(11, 61.0 * M_PI / 180));
+  most.Add(rotated(10, 0));
+  EXPECT_NE(UprightWarning("s", most.count()), "") << "11 of 21";
+}
+
 // `count` standing persons (COCO-17) at yaws 0, 1, 2, ... rad, the first `mirrored` of them with
 // every left joint's and right joint's places exchanged (a mirror image).
 Poses3D Facing(int count, int mirrored) {
