@@ -17,10 +17,12 @@ void AddExportOptions(CLI::App* command, ExportArgs* args) {
                     "write joints no view saw, placed from a neighbour (provenance 'filled'), as missing");
   command->add_option("--trc-axes", args->trc_axes, "world axes of the TRC files: z-up (as is) or y-up (OpenSim)")
       ->check(CLI::IsMember({"z-up", "y-up"}))
-      ->capture_default_str();
+      ->capture_default_str()
+      ->each([args](const std::string&) { args->trc_option_given = "--trc-axes"; });
   command->add_option("--trc-units", args->trc_units, "unit of the TRC coordinates: m or mm")
       ->check(CLI::IsMember({"m", "mm"}))
-      ->capture_default_str();
+      ->capture_default_str()
+      ->each([args](const std::string&) { args->trc_option_given = "--trc-units"; });
 }
 
 engine::ExportOptions ExportOptionsOf(const ExportArgs& args) {
@@ -30,6 +32,12 @@ engine::ExportOptions ExportOptionsOf(const ExportArgs& args) {
     options.formats.clear();
   } else if (args.formats_given) {  // '' is refused as any unknown name (it wrote JSON, the default)
     options.formats = engine::ParseExportFormats(args.formats);
+  }
+  // The other formats are always z up, in metres: a TRC option without TRC files would be read as
+  // applying to them.
+  if (!args.trc_option_given.empty() && !options.Has(engine::ExportFormat::kTrc)) {
+    throw ConfigError(args.trc_option_given + " sets the TRC files, which this run does not write: add trc to --export "
+                      "(JSON, CSV, NPZ and HDF5 are always z up, in metres)");
   }
   options.filled_joints = !args.no_filled_joints;
   options.trc_axes = args.trc_axes == "y-up" ? engine::TrcAxes::kYUp : engine::TrcAxes::kZUp;

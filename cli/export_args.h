@@ -17,11 +17,13 @@ struct ExportArgs {
   bool no_filled_joints = false;
   std::string trc_axes = "z-up";
   std::string trc_units = "m";
+  std::string trc_option_given;  // "--trc-axes" or "--trc-units" when one was given (they need TRC in --export)
 };
 
 void AddExportOptions(CLI::App* command, ExportArgs* args);
 
-// Throws ConfigError for contradicting options (--no-predictions with --export) and bad names.
+// Throws ConfigError for contradicting options (--no-predictions with --export, --trc-axes or
+// --trc-units without trc in --export) and bad names.
 engine::ExportOptions ExportOptionsOf(const ExportArgs& args);
 
 }  // namespace rpt::cli

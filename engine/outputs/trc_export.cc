@@ -2,10 +2,12 @@
 #include "engine/outputs/trc_export.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <string_view>
 
 #include "core/errors.h"
 #include "core/printable_text.h"
@@ -159,11 +161,6 @@ void TrcExport::FinishTrack(Sequence* s, int track_id, Track* track) {
 }
 
 void TrcExport::WriteFile(const Sequence& s, int track_id, const Track& track) {
-  std::string name = s.name + "_track" + std::to_string(track_id) + ".trc";
-  if (written_names_.count(name) > 0) {  // the track came back
-    name = s.name + "_track" + std::to_string(track_id) + "_from" + std::to_string(track.first_number) + ".trc";
-  }
-  written_names_.insert(name);
   double rate = s.fps;
   // Without it, the camera's rate: 1 / the median step between the sequence's frame times (a mean
   // over a pause gave 22.47 for a 25 Hz camera, and tracks of one run different rates).
@@ -176,12 +173,22 @@ void TrcExport::WriteFile(const Sequence& s, int track_id, const Track& track) {
   if (!(rate > 0) && track.rows > 1 && track.last_time_s > track.first_time_s) {
     rate = (track.rows - 1) / (track.last_time_s - track.first_time_s);
   }
+  // Without the sequence's fps the rows were numbered by frame index (the rate is known only now):
+  // they are numbered here from their times at `rate`, as with an fps, so that Frame# / DataRate
+  // agrees with Time after the frames the input skipped.
+  const bool renumber = !(s.fps > 0) && rate > 0;
+  const long first_number = renumber ? 1 + std::lround((track.first_time_s - s.first_time_s) * rate) : track.first_number;
+  std::string name = s.name + "_track" + std::to_string(track_id) + ".trc";
+  if (written_names_.count(name) > 0) {  // the track came back
+    name = s.name + "_track" + std::to_string(track_id) + "_from" + std::to_string(first_number) + ".trc";
+  }
+  written_names_.insert(name);
   io::WriteTextFile(dir_ / name, io::NamedBy::kRpt, [&](std::ostream& out) {
     out << "PathFileType\t4\t(X/Y/Z)\t" << name << "\n";
     out << "DataRate\tCameraRate\tNumFrames\tNumMarkers\tUnits\tOrigDataRate\tOrigDataStartFrame\tOrigNumFrames\n";
     const std::string rate_text = GeneralText(rate, 10);  // printf's "%.10g" in the C locale (29.97002997 stays)
     out << rate_text << "\t" << rate_text << "\t" << track.rows << "\t" << s.joints.size() << "\t"
-        << (options_.trc_millimetres ? "mm" : "m") << "\t" << rate_text << "\t" << track.first_number << "\t"
+        << (options_.trc_millimetres ? "mm" : "m") << "\t" << rate_text << "\t" << first_number << "\t"
         << track.rows << "\n";
     out << "Frame#\tTime";
     for (const std::string& joint : s.joints) out << "\t" << TrcField(joint) << "\t\t";
@@ -190,7 +197,26 @@ void TrcExport::WriteFile(const Sequence& s, int track_id, const Track& track) {
     out << "\n\n";
     std::ifstream in(track.part, std::ios::binary);
     if (!in) throw InputError(track.part.string() + ": cannot read back: " + std::strerror(errno));
-    if (in.peek() != std::ifstream::traits_type::eof()) out << in.rdbuf();
+    if (!renumber) {
+      if (in.peek() != std::ifstream::traits_type::eof()) out << in.rdbuf();
+      return;
+    }
+    std::string line;
+    long last = 0;
+    for (long row = 0; std::getline(in, line); ++row) {  // "<index + 1>\t<time>\t..." as Frame() wrote it
+      const size_t number_end = line.find('\t');
+      const size_t time_end = line.find('\t', number_end + 1);
+      double time_s = 0;
+      const char* begin = line.data() + number_end + 1;
+      if (number_end == std::string::npos ||
+          std::from_chars(begin, line.data() + std::min(time_end, line.size()), time_s).ec != std::errc()) {
+        throw InputError(track.part.string() + ": row " + std::to_string(row + 1) + " is not as written");
+      }
+      long number = row == 0 ? first_number : 1 + std::lround((time_s - s.first_time_s) * rate);
+      if (row > 0) number = std::max(number, last + 1);  // never back, as with an fps
+      last = number;
+      out << number << std::string_view(line).substr(number_end) << "\n";
+    }
   });
 }
 

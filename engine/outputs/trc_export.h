@@ -14,9 +14,10 @@
 // trc_millimetres. With the sequence's fps the frame number is 1 + (time - the sequence's first
 // time) x fps, rounded (frames the input skipped leave a gap in Frame#, as in Time: a tool that
 // rebuilds time from Frame# / DataRate gets the rows' times), and the data rate is that fps; without
-// it the frame number is the frame's index + 1 and the rate 1 / the median step between the
-// sequence's frame times (the first 1000 steps; a pause does not lower it), else (one timed frame)
-// the track's mean rate. OrigDataStartFrame is the track's first frame number.
+// it the rate is 1 / the median step between the sequence's frame times (the first 1000 steps; a
+// pause does not lower it), else (one timed frame) the track's mean rate, and the frame numbers
+// follow the times at that rate in the same way (numbered when the file is written, the rate being
+// known then). OrigDataStartFrame is the track's first frame number.
 // A frame with an unknown time is an InputError naming the sequence and the frame (a TRC row needs
 // a time: give --fps). Streams, and memory holds the live tracks only: each track's rows go to a
 // part file beside its target (at most kMaxOpenTrcParts open at once, others reopened to append),

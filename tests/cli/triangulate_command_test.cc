@@ -374,6 +374,15 @@ TEST_F(Triangulate, ExportsReadBackEqualTheJson) {
   // TRC: one file per track, a row per frame of the track, z up as is; y up rotated.
   const test::CommandResult y = test::RunRpt(input + " --export trc --trc-axes y-up --trc-units mm --out " + (dir_ / "yup").string());
   ASSERT_EQ(y.exit_code, 0) << y.err;
+  // Without TRC files they would be read as applying to the other formats (always z up, metres).
+  for (const std::string option : {"--trc-axes y-up", "--trc-units mm"}) {
+    const test::CommandResult without = test::RunRpt(input + " --export json,csv " + option + " --out " + (dir_ / "no").string());
+    EXPECT_EQ(without.exit_code, 2) << option;
+    EXPECT_NE(without.err.find(option.substr(0, option.find(' ')) + " sets the TRC files, which this run does not write: add "
+                               "trc to --export"),
+              std::string::npos)
+        << without.err;
+  }
   for (const auto& [track, count] : rows_per_track) {
     const std::string name = "detections_track" + std::to_string(track) + ".trc";
     const Trc trc = ReadTrc(dir_ / "all" / "trc" / name);
