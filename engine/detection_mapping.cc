@@ -166,6 +166,16 @@ void CheckDetectionMapping(const DetectionMapping& mapping, const std::string& d
   }
 }
 
+void CheckRenameTargets(const DetectionMapping& mapping, const std::vector<std::string>& cameras,
+                        const std::string& calibration_file) {
+  for (const auto& [from, to] : Renames(mapping)) {
+    if (std::find(cameras.begin(), cameras.end(), to) != cameras.end()) continue;
+    throw ConfigError("--rename-camera " + from + "=" + to + ": the calibration " + calibration_file +
+                      " has no camera " + QuoteName(to) + " (cameras: " + JoinNames(cameras, ", ") + ")" +
+                      DidYouMean(to, cameras));
+  }
+}
+
 Detections ReadMappedDetections(const std::string& path, const DetectionMapping& mapping,
                                 const VoxelPoseDetectionsOptions& voxelpose) {
   CheckDetectionMapping(mapping, path);

@@ -42,6 +42,11 @@ const std::vector<std::string>& CocoImageIdsNames();
 // told apart (missing, unknown extension). Nothing is checked when `mapping` is empty.
 void CheckDetectionMapping(const DetectionMapping& mapping, const std::string& detections);
 
+// Throws ConfigError for a --rename-camera FROM=TO whose TO is none of `cameras` (the names of the
+// calibration `calibration_file`), naming them: the rename to correct, not one more to add.
+void CheckRenameTargets(const DetectionMapping& mapping, const std::vector<std::string>& cameras,
+                        const std::string& calibration_file);
+
 // Reads the detections file `path` (ReadDetectionsFile) with `mapping` applied. `voxelpose`: the
 // frame-id prefix and the cameras (names of the calibration, in its order) a VoxelPose cache is
 // read for; --voxelpose-prefix replaces the prefix, and --rename-camera maps the calibration's

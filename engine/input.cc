@@ -212,6 +212,7 @@ std::vector<std::unique_ptr<FrameSource>> OpenDetectionsOnCameras(const InputSpe
   VoxelPoseDetectionsOptions voxelpose;
   voxelpose.frame_id_prefix = options.name;
   for (const Camera& camera : calibration.cameras) voxelpose.cameras.push_back(camera.name);
+  CheckRenameTargets(spec.mapping, voxelpose.cameras, spec.cameras);
   Detections detections = ReadMappedDetections(spec.detections, spec.mapping, voxelpose);
   std::vector<std::unique_ptr<FrameSource>> sources;
   sources.push_back(

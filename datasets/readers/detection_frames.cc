@@ -6,6 +6,7 @@
 #include <unordered_map>
 #include <utility>
 
+#include "core/closest_name.h"
 #include "core/errors.h"
 #include "core/option_codec.h"
 #include "core/printable_text.h"
@@ -110,9 +111,10 @@ std::unique_ptr<FrameSource> OpenDetectionFrames(std::vector<Camera> cameras, De
     for (const std::string& name : frame.cameras) {
       const auto it = camera_idx.find(name);
       if (it == camera_idx.end()) {
-        throw InputError(source + ": frame " + QuoteName(frame.frame_id) + ": camera " + QuoteName(name) + " is not in the calibration " +
-                         calibration_file.string() + " (cameras: " + JoinNames(names, ", ") +
-                         "); when it is one of those under another name, --rename-camera " + name + "=NAME maps it");
+        throw InputError(source + ": frame " + QuoteName(frame.frame_id) + ": camera " + QuoteName(name) +
+                         DidYouMean(name, names) + " is not in the calibration " + calibration_file.string() +
+                         " (cameras: " + JoinNames(names, ", ") + "); when it is one of those under another name, "
+                         "--rename-camera " + name + "=NAME maps it");
       }
       (*view_camera)[f].push_back(it->second);
     }

@@ -182,12 +182,36 @@ TEST_F(DetectionMapping, RenamedCamerasEqualEval) {
   EXPECT_NE(plain.err.find("; when it is one of those under another name, --rename-camera view0=NAME maps it"),
             std::string::npos)
       << plain.err;
-  const test::CommandResult unused = test::RunRpt(input + renames + " --rename-camera view7=cam7");
+  std::string three_renames;
+  for (int c = 0; c < 3; ++c) three_renames += " --rename-camera view" + std::to_string(c) + "=cam" + std::to_string(c);
+  const test::CommandResult unused = test::RunRpt(input + three_renames + " --rename-camera view7=cam3");
   EXPECT_EQ(unused.exit_code, 2);
   EXPECT_NE(
-      unused.err.find("--rename-camera view7=cam7: " + (dir_ / "views.json").string() + " names no camera 'view7'"),
+      unused.err.find("--rename-camera view7=cam3: " + (dir_ / "views.json").string() + " names no camera 'view7'"),
       std::string::npos)
       << unused.err;
+  // A rename to a camera the calibration lacks is that rename's error (the hint was to add one
+  // more rename, of the name the user had just made up), with a "did you mean" for a slip.
+  for (const auto& [rename, hint] : {std::pair<std::string, std::string>{"view0=cam9", ""},
+                                     std::pair<std::string, std::string>{"view0=Cam0", " (did you mean 'cam0'?)"}}) {
+    const test::CommandResult wrong = test::RunRpt(input + " --rename-camera " + rename);
+    EXPECT_EQ(wrong.exit_code, 2) << rename;
+    EXPECT_NE(wrong.err.find("--rename-camera " + rename + ": the calibration " + (dir_ / "cameras.json").string() +
+                             " has no camera '" + rename.substr(6) + "' (cameras: cam0, cam1, cam2, cam3)" + hint),
+              std::string::npos)
+        << wrong.err;
+  }
+  // A detections camera named as a calibration camera but for case gets the same hint.
+  Detections cased = detections;
+  for (FrameDetections& frame : cased.frames) {
+    for (std::string& camera : frame.cameras) camera = "Cam" + camera.substr(4);
+  }
+  WriteGenericDetections(dir_ / "cased.json", cased);
+  const test::CommandResult case_only = test::RunRpt("triangulate --cameras " + (dir_ / "cameras.json").string() +
+                                                     " --detections " + (dir_ / "cased.json").string());
+  EXPECT_EQ(case_only.exit_code, 2);
+  EXPECT_NE(case_only.err.find("camera 'Cam0' (did you mean 'cam0'?) is not in the calibration"), std::string::npos)
+      << case_only.err;
   const test::CommandResult twice = test::RunRpt(input + " --rename-camera view0=cam0 --rename-camera view1=cam0");
   EXPECT_EQ(twice.exit_code, 2);
   EXPECT_NE(twice.err.find("two cameras renamed to 'cam0'"), std::string::npos) << twice.err;
