@@ -144,8 +144,8 @@ void WriteEasyMocapCameras(const fs::path& intri_path, const fs::path& extri_pat
     CheckKeyName(camera.name, intri_path.string());
     if (camera.model == DistortionModel::kFisheye) {
       throw InputError(intri_path.string() + ": cannot write camera " + QuoteName(camera.name) +
-                       " in the EasyMocap layout: EasyMocap has no fisheye model (write toml, json or one camera per "
-                       "OpenCV file)");
+                       " in the EasyMocap layout: EasyMocap has no fisheye model (write toml or json, which keep "
+                       "it; rpt writes OpenCV files in this layout only)");
     }
     names.push_back(camera.name);
   }

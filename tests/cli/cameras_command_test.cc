@@ -104,7 +104,10 @@ TEST(CamerasCommand, BadFilesAndValuesExit2NamingThem) {
   const test::CommandResult refused = test::RunRpt("cameras convert " + (dir / "fisheye.json").string() + " " +
                                                    (dir / "new" / "sub" / "intri.yml").string());
   EXPECT_EQ(refused.exit_code, 2);
-  EXPECT_NE(refused.err.find("EasyMocap has no fisheye model"), std::string::npos) << refused.err;
+  EXPECT_NE(refused.err.find("EasyMocap has no fisheye model (write toml or json, which keep it; rpt writes OpenCV "
+                             "files in this layout only)"),
+            std::string::npos)
+      << refused.err;
   EXPECT_FALSE(fs::exists(dir / "new")) << "an empty folder was left behind";
   EXPECT_EQ(test::RunRpt("cameras convert " + (dir / "cameras.json").string() + " " +
                          (dir / "new" / "sub" / "intri.yml").string())
