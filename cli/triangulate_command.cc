@@ -131,7 +131,9 @@ std::string NobodyTriangulatedWarning(const engine::RunResult& run, const Undist
                    "--set undistort.min_joint_score=... lowers it)"
              : "no person was triangulated in any of the " + std::to_string(run.frames) +
                    " frames: check that the cameras and the detections belong together (camera names, pixel "
-                   "units, image sizes; `rpt inspect`) and the calibration's convention (R and t map world to "
+                   "units, image sizes; `rpt inspect`), the unit of the calibration's translations "
+                   "(--cameras-units: millimetres read as metres put the cameras 1000 times too far) and the "
+                   "calibration's convention (R and t map world to "
                    "camera: x_cam = R X + t; in rpt's JSON, T is the camera's centre in the world; "
                    "docs/cameras.md)";
 }
