@@ -15,6 +15,9 @@ void AddExportOptions(CLI::App* command, ExportArgs* args) {
   command->add_flag("--no-predictions", args->no_predictions, "write no 3D persons to files (no predictions.json, no exports; long runs); --follow still writes its lines to stdout");
   command->add_flag("--no-filled-joints", args->no_filled_joints,
                     "write joints no view saw, placed from a neighbour (provenance 'filled'), as missing");
+  command->add_flag("--no-predicted-joints", args->no_predicted_joints,
+                    "write the joints of persons held by tracking while nobody sees them (provenance 'predicted': "
+                    "the track's last pose, repeated while it coasts) as missing");
   command->add_option("--trc-axes", args->trc_axes, "world axes of the TRC files: z-up (as is) or y-up (OpenSim)")
       ->check(CLI::IsMember({"z-up", "y-up"}))
       ->capture_default_str()
@@ -40,6 +43,7 @@ engine::ExportOptions ExportOptionsOf(const ExportArgs& args) {
                       "(JSON, CSV, NPZ and HDF5 are always z up, in metres)");
   }
   options.filled_joints = !args.no_filled_joints;
+  options.predicted_joints = !args.no_predicted_joints;
   options.trc_axes = args.trc_axes == "y-up" ? engine::TrcAxes::kYUp : engine::TrcAxes::kZUp;
   options.trc_millimetres = args.trc_units == "mm";
   return options;

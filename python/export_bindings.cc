@@ -103,8 +103,8 @@ void RemoveEarlierTrcFiles(const std::filesystem::path& trc_dir) {
 }
 
 std::vector<std::filesystem::path> Write(const std::filesystem::path& dir, py::handle predictions, py::handle formats,
-                                         bool filled_joints, const std::string& trc_axes, const std::string& trc_units,
-                                         const std::string& run_id) {
+                                         bool filled_joints, bool predicted_joints, const std::string& trc_axes,
+                                         const std::string& trc_units, const std::string& run_id) {
   std::vector<Predictions> runs;
   const auto refuse = [](py::handle given) {
     throw py::type_error("export.write: predictions must be rpt.Predictions (what process_sequence returns) or a list "
@@ -138,6 +138,7 @@ std::vector<std::filesystem::path> Write(const std::filesystem::path& dir, py::h
     throw ConfigError(what.rfind("--export ", 0) == 0 ? "export.write: formats " + what.substr(9) : what);
   }
   options.filled_joints = filled_joints;
+  options.predicted_joints = predicted_joints;
   if (trc_axes != "z-up" && trc_axes != "y-up")
     throw ConfigError("export.write: trc_axes: " + QuoteName(trc_axes) + " is not z-up | y-up");
   if (trc_units != "m" && trc_units != "mm")
@@ -217,12 +218,13 @@ std::vector<std::filesystem::path> Write(const std::filesystem::path& dir, py::h
 
 void RegisterExport(py::module_& exports) {
   exports.def("write", &Write, py::arg("out_dir"), py::arg("predictions"), py::arg("formats") = "json", py::kw_only(),
-              py::arg("filled_joints") = true, py::arg("trc_axes") = "z-up", py::arg("trc_units") = "m",
+              py::arg("filled_joints") = true, py::arg("predicted_joints") = true, py::arg("trc_axes") = "z-up",
+              py::arg("trc_units") = "m",
               py::arg("run_id") = "python",
               "Writes rpt.Predictions (or a list, one per sequence) as the CLI's --export does: formats 'json' "
               "(predictions.json), 'csv' (predictions.csv), 'trc' (trc/, one file per track), 'npz' "
               "(predictions.npz), 'h5' (predictions.h5), a comma text or a list; filled_joints=False writes "
-              "filled joints as missing; trc_axes 'z-up' | 'y-up' (OpenSim); "
+              "filled joints as missing, predicted_joints=False those of persons tracking holds while unseen; trc_axes 'z-up' | 'y-up' (OpenSim); "
               "trc_units 'm' | 'mm'. Returns the paths written. Schemas: docs/own_data.md.");
   exports.def(
       "formats",

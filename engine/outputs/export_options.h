@@ -26,6 +26,10 @@ struct ExportOptions {
   std::vector<ExportFormat> formats = {ExportFormat::kJson};  // empty: no predictions at all
   // Joints no view saw, placed from a neighbour (JointProvenance::kFilled), are written; false: written as missing.
   bool filled_joints = true;
+  // Joints of a person tracking holds while nobody sees it (JointProvenance::kPredicted: its track's
+  // last pose, repeated while it coasts) are written; false: written as missing (frozen copies are no
+  // marker data for inverse kinematics).
+  bool predicted_joints = true;
   TrcAxes trc_axes = TrcAxes::kZUp;
   bool trc_millimetres = false;  // TRC coordinates in mm instead of m
 
@@ -45,11 +49,13 @@ std::vector<ExportFormat> ParseExportFormats(const std::string& text);
 std::string_view ProvenanceName(JointProvenance provenance);
 const std::vector<std::string>& ProvenanceNames();
 
-// Joint j of person p is written as present: score > 0, and not filled unless filled joints are
-// written.
+// Joint j of person p is written as present: score > 0, not filled unless filled joints are
+// written and not predicted unless predicted joints are.
 inline bool JointWritten(const Poses3D& persons, int p, int j, const ExportOptions& options) {
   if (!(persons.data[(static_cast<size_t>(p) * persons.num_joints + j) * 4 + 3] > 0)) return false;
-  return options.filled_joints || persons.Provenance(p, j) != JointProvenance::kFilled;
+  const JointProvenance provenance = persons.Provenance(p, j);
+  return (options.filled_joints || provenance != JointProvenance::kFilled) &&
+         (options.predicted_joints || provenance != JointProvenance::kPredicted);
 }
 
 }  // namespace rpt::engine

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <hdf5.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -28,6 +29,7 @@
 #include "tests/cli/cli_test_util.h"
 #include "tests/cli/triangulate_test_util.h"
 #include "tests/hdf5_test_file.h"
+#include "tests/test_data.h"
 
 namespace rpt {
 namespace {
@@ -1012,6 +1014,66 @@ TEST(TriangulateChecks, MirroredImagesInEveryCameraAreNamed) {
     }
   }
   fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace rpt
+
+namespace rpt {
+namespace {
+
+// --no-predicted-joints (a biomechanics user's finding: a coasting track's last pose went into the
+// TRC files as frozen marker rows): on the real Shelf frames, whose lost tracks coast, every joint of
+// provenance 'predicted' is written as missing in JSON, CSV and TRC; the persons and every other
+// joint are as without the flag.
+TEST(TriangulateExports, PredictedJointsAreWrittenAsMissingOnRequest) {
+  RPT_REQUIRE_SHARED_DATA("shelf/4d_association");
+  const std::filesystem::path dir = test::TempDir("no_predicted");
+  const std::string input = "triangulate --dataset shelf-4da --root " +
+                            test::SharedData("shelf/4d_association").string() + " --export json,csv,trc --out ";
+  const test::CommandResult with = test::RunRpt(input + (dir / "with").string());
+  ASSERT_EQ(with.exit_code, 0) << with.err;
+  const test::CommandResult without = test::RunRpt(input + (dir / "without").string() + " --no-predicted-joints");
+  ASSERT_EQ(without.exit_code, 0) << without.err;
+  const nlohmann::json a = test::ReadJson(dir / "with" / "predictions.json");
+  const nlohmann::json b = test::ReadJson(dir / "without" / "predictions.json");
+  ASSERT_EQ(a["frames"].size(), b["frames"].size());
+  long predicted = 0, others = 0;
+  for (size_t f = 0; f < a["frames"].size(); ++f) {
+    const nlohmann::json &fa = a["frames"][f], &fb = b["frames"][f];
+    ASSERT_EQ(fa["track_ids"], fb["track_ids"]) << "the same persons, frame " << f;
+    for (size_t p = 0; p < fa["persons"].size(); ++p) {
+      for (size_t j = 0; j < fa["persons"][p].size(); ++j) {
+        if (fa["provenance"][p][j] == 4 && fa["persons"][p][j][3].get<double>() > 0) {
+          ++predicted;
+          EXPECT_TRUE(fb["persons"][p][j][0].is_null()) << "frame " << f;
+          EXPECT_EQ(fb["persons"][p][j][3], 0);
+        } else {
+          ++others;
+          EXPECT_EQ(fb["persons"][p][j], fa["persons"][p][j]) << "frame " << f;
+        }
+      }
+    }
+  }
+  EXPECT_GT(predicted, 100) << "Shelf-4DA's lost tracks coast";
+  EXPECT_GT(others, 10 * predicted);
+  const std::string csv_with = test::ReadAll(dir / "with" / "predictions.csv");
+  const std::string csv_without = test::ReadAll(dir / "without" / "predictions.csv");
+  EXPECT_NE(csv_with.find(",predicted\n"), std::string::npos);
+  EXPECT_EQ(csv_without.find(",predicted\n"), std::string::npos);
+  EXPECT_EQ(std::count(csv_with.begin(), csv_with.end(), '\n') - std::count(csv_without.begin(), csv_without.end(), '\n'),
+            predicted);
+  // TRC: the same files with the same rows; the predicted joints' fields are empty.
+  long trc_files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir / "with" / "trc")) {
+    ++trc_files;
+    const std::string name = entry.path().filename().string();
+    const std::string x = test::ReadAll(entry.path()), y = test::ReadAll(dir / "without" / "trc" / name);
+    EXPECT_EQ(std::count(x.begin(), x.end(), '\n'), std::count(y.begin(), y.end(), '\n')) << name;
+    EXPECT_LE(y.size(), x.size()) << name;
+  }
+  EXPECT_GT(trc_files, 3);
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

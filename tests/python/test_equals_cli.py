@@ -7,6 +7,7 @@ import numpy as np
 import pytest
 
 import rpt
+from conftest import SCENE, run_cli, scene_params
 
 # Keys that measure this run's time, not its results.
 TIMING_KEYS = {"fps", "frame_time_us_median", "eval_frames_per_s", "step_time_us_median"}
@@ -67,6 +68,28 @@ def test_exports_equal_the_clis(cli_eval, predictions, tmp_path):
     assert ours == theirs
 
 
+def test_export_without_filled_and_predicted_joints_equals_the_clis(tmp_path):
+    """filled_joints=False and predicted_joints=False write what --no-filled-joints and
+    --no-predicted-joints write: those joints missing (provenance kept), every other as by default.
+    The hard detector's scene has both (its tracks coast)."""
+    hard = dict(SCENE, noise="hard")
+    sequence = rpt.synthetic.scene(**hard)
+    predictions = rpt.Triangulator.for_sequence(sequence).process_sequence(sequence)
+    out = tmp_path / "cli"
+    run_cli("eval", "--dataset", "synthetic", *scene_params(hard), "--quiet", "--export", "npz", "--no-filled-joints",
+            "--no-predicted-joints", "--out", out)
+    rpt.export.write(tmp_path / "py", predictions, "npz", filled_joints=False, predicted_joints=False)
+    rpt.export.write(tmp_path / "all", predictions, "npz")
+    with np.load(tmp_path / "py" / "predictions.npz") as ours, np.load(out / "predictions.npz") as theirs, \
+            np.load(tmp_path / "all" / "predictions.npz") as everything:
+        np.testing.assert_array_equal(ours["poses"], theirs["poses"])
+        provenance, poses, all_poses = ours["provenance"], ours["poses"], everything["poses"]
+    dropped = np.isin(provenance, (1, 4)) & (all_poses[..., 3] > 0)
+    assert (provenance[dropped] == 1).sum() > 10 and (provenance[dropped] == 4).sum() > 10
+    assert np.isnan(poses[dropped][:, :3]).all() and (poses[dropped][:, 3] == 0).all()
+    np.testing.assert_array_equal(poses[~dropped], all_poses[~dropped])
+
+
 def test_frame_by_frame_equals_process_sequence(scene, predictions):
     triangulator = rpt.Triangulator.for_sequence(scene)
     for i, frame in enumerate(scene):
@@ -108,7 +131,7 @@ def test_reset_starts_afresh(scene, predictions):
 
 
 def test_options_change_the_result_like_set(scene, tmp_path):
-    from conftest import run_cli, scene_params
+    from conftest import SCENE, run_cli, scene_params
     done = run_cli("eval", "--dataset", "synthetic", *scene_params(), "--set", "filter.min_match_score=0.9",
                    "--set", "metrics.matching=hungarian", "--json", "--quiet", "--out", tmp_path / "run")
     cli_summary = json.loads(done.stdout)
@@ -134,7 +157,7 @@ def test_stats_per_step(scene):
 
 
 def test_offline_smoothing_equals_the_clis(scene, tmp_path):
-    from conftest import run_cli, scene_params
+    from conftest import SCENE, run_cli, scene_params
     done = run_cli("eval", "--dataset", "synthetic", *scene_params(), "--set", "smooth.mode=offline", "--json",
                    "--quiet", "--out", tmp_path / "run")
     cli_summary = json.loads(done.stdout)
