@@ -105,7 +105,7 @@ std::vector<std::string> CameraAgreementWarnings(const std::string& sequence, co
     }
     if (camera.in_view < kMinAgreementPersons) continue;
     const double share = static_cast<double>(camera.agreeing) / static_cast<double>(camera.in_view);
-    if (share >= kMinAgreementShare) continue;
+    if (share > kMinAgreementShare) continue;  // half or fewer: a COLMAP quaternion read in the wrong order gave 50 %
     lines.push_back(PrintableText(sequence + ", camera " + QuoteName(camera.camera) + ": only " +
                                   PercentText(share) + " of the " + std::to_string(camera.in_view) +
                                   " 3D persons in its view (in frames where it detected someone) match its detections "

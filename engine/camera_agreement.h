@@ -26,7 +26,7 @@ inline constexpr int kMinAgreementJoints = 6;
 // A person in view agrees with a camera when its nearest detection is within this share of the
 // projected box's diagonal (mean over at least 3 shared joints).
 inline constexpr double kAgreementDistance = 0.25;
-// A camera is warned about with at least kMinAgreementPersons persons in view of which fewer than
+// A camera is warned about with at least kMinAgreementPersons persons in view of which at most
 // kMinAgreementShare agree.
 inline constexpr long kMinAgreementPersons = 20;
 inline constexpr double kMinAgreementShare = 0.5;

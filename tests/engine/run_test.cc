@@ -460,6 +460,21 @@ TEST(RunTest, CamerasInWhoseImagesNoPersonFallsAreNamed) {
   EXPECT_GE(wrong.camera_agreement[2].while_detecting, kMinAgreementPersons);
 }
 
+// Half the persons in view matching is named (a COLMAP quaternion read x, y, z, w gave every camera
+// exactly 22 of 44: said nothing when it took fewer than half); more than half is not.
+TEST(RunTest, ACameraMatchingHalfItsPersonsIsNamed) {
+  CameraAgreement half;
+  half.camera = "cam0";
+  half.frames = half.frames_with_detections = 30;
+  half.in_view = half.while_detecting = 44;
+  half.agreeing = 22;
+  ASSERT_EQ(CameraAgreementWarnings("s", {half}).size(), 1u);
+  EXPECT_NE(CameraAgreementWarnings("s", {half})[0].find("s, camera 'cam0': only 50 % of the 44 3D persons"),
+            std::string::npos);
+  half.agreeing = 23;
+  EXPECT_TRUE(CameraAgreementWarnings("s", {half}).empty());
+}
+
 TEST(RunTest, ASinkSeesTheSequenceBeginItsFramesInOrderThenTheEnd) {
   const std::vector<Sequence> whole = MakeSyntheticDataset(Scene(5));
   OrderSink sink;
