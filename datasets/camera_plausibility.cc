@@ -11,11 +11,12 @@
 
 namespace rpt {
 
-void CountImplausibleCamera(const Camera& camera, const std::string& source, InputWarnings* warnings) {
+void CountImplausibleCamera(const Camera& camera, const std::string& source, InputWarnings* warnings,
+                            const std::string& extrinsics_source) {
   if (warnings == nullptr) return;
   const double distance = camera.t.stableNorm();  // = |centre| (R is a rotation); no overflow for T = 1e300
   if (!(distance <= kMaxPlausibleCameraDistanceM)) {
-    warnings->Add(source, "cameras more than 1 km from the origin (check the units of T)", "max |T| in m", distance);
+    warnings->Add(extrinsics_source.empty() ? source : extrinsics_source, "cameras more than 1 km from the origin (check the units of T)", "max |T| in m", distance);
   }
   double worst = 0;
   for (const double k : camera.dist) worst = std::max(worst, std::abs(k));

@@ -32,8 +32,11 @@ inline constexpr double kMaxPlausibleRigSpanM = 100.0;
 // Counts `camera` under `source` when its centre, a distortion coefficient or its principal point
 // is beyond the bounds above ("cameras more than 1 km from the origin (check the units of T)",
 // "cameras with a distortion coefficient beyond +-100", "cameras with the principal point more
-// than a quarter of the image from its centre"); does nothing when `warnings` is null.
-void CountImplausibleCamera(const Camera& camera, const std::string& source, InputWarnings* warnings);
+// than a quarter of the image from its centre"); does nothing when `warnings` is null. The centre's
+// count goes under `extrinsics_source` when given: the file of T where the intrinsics are another
+// file (EasyMocap's extri.yml).
+void CountImplausibleCamera(const Camera& camera, const std::string& source, InputWarnings* warnings,
+                            const std::string& extrinsics_source = "");
 
 // Below this angle between two cameras' rays where their views cross (the widest over a camera's
 // partners), the depth along its view rests on too little: a stereo bar 20 cm wide sees a point

@@ -125,7 +125,7 @@ Calibration ReadEasyMocapCalibration(const fs::path& path, const CalibrationRead
     const std::string where = intri.source + ": camera " + QuoteName(name);
     CompleteImageSize(&camera, options.image_width, options.image_height, intri.source, where, warnings);
     if (const std::string error = camera.Validate(); !error.empty()) throw InputError(where + ": " + error);
-    CountImplausibleCamera(camera, intri.source, warnings);
+    CountImplausibleCamera(camera, intri.source, warnings, extri.source);
     calibration.cameras.push_back(std::move(camera));
   }
   for (const std::string& form : forms) d.rotation += (d.rotation.empty() ? "" : ", ") + form;

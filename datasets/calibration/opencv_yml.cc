@@ -252,11 +252,33 @@ Calibration ReadOpenCVCalibration(const fs::path& path, const CalibrationReadOpt
     // One file per camera (what calibrateCamera users save), read in name order.
     const std::vector<fs::path> files = OpenCVFilesIn(path);
     if (files.empty()) throw InputError(path.string() + ": a folder without OpenCV files (*.yml, *.yaml, *.xml)");
-    Calibration all = ReadOpenCVCalibration(files.front(), options, warnings);
+    // Each file's corrections and doubts (a camera 4 km away: millimetres read as metres) are counted
+    // once for the folder, not once per file ("1 cameras ..." three times); what a file leaves unused
+    // stays under its name.
+    const auto read = [&](const fs::path& file) {
+      InputWarnings own;
+      Calibration calibration = ReadOpenCVCalibration(file, options, warnings != nullptr ? &own : nullptr);
+      if (warnings == nullptr) return calibration;
+      for (const InputWarning& w : own.items()) {
+        switch (w.kind) {
+          case InputWarningKind::kCorrected:
+            warnings->Add(w.source == file.string() ? path.string() : w.source, w.what, w.measure, w.worst, w.count);
+            break;
+          case InputWarningKind::kUnused:
+            warnings->AddUnused(w.source, w.what, w.count);
+            break;
+          case InputWarningKind::kMissing:
+            warnings->AddMissing(w.source, w.what, w.count);
+            break;
+        }
+      }
+      return calibration;
+    };
+    Calibration all = read(files.front());
     std::map<std::string, fs::path> file_of;  // camera name -> the file that named it first
     for (const Camera& camera : all.cameras) file_of.emplace(camera.name, files.front());
     for (size_t i = 1; i < files.size(); ++i) {
-      Calibration one = ReadOpenCVCalibration(files[i], options, warnings);
+      Calibration one = read(files[i]);
       for (Camera& camera : one.cameras) {
         const auto [it, fresh] = file_of.emplace(camera.name, files[i]);
         if (!fresh) {

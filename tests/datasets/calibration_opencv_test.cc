@@ -215,6 +215,17 @@ TEST(CalibrationEasyMocap, IntriAndExtriGiveTheHandBuiltCamera) {
     EXPECT_EQ(calibration.description.rotation, "R_ (Rodrigues vector)");
     EXPECT_EQ(calibration.description.files, (std::vector<std::filesystem::path>{intri, dir.path() / "extri.yml"}));
   }
+    // Millimetres read as metres: the count names extri.yml, the file of T (it named intri.yml).
+  std::string far = kExtri;
+  far.replace(far.find("0., 1.5, 4."), 11, "0., 1500., 4000.");
+  WriteCalibrationText(dir.path() / "extri.yml", far);
+  InputWarnings warnings;
+  ReadCalibration(intri, CalibrationReadOptions{}, &warnings);
+  ASSERT_FALSE(warnings.empty());
+  EXPECT_EQ(warnings.items()[0].Line(), (dir.path() / "extri.yml").string() +
+                                            ": 1 cameras more than 1 km from the origin (check the units of T) (max "
+                                            "|T| in m = 4272)");
+  WriteCalibrationText(dir.path() / "extri.yml", kExtri);
   // The keys of both files in one file: the EasyMocap layout too.
   const auto both = WriteCalibrationText(dir.path() / "both.yml", kIntri + kExtri.substr(kExtri.find("R_01")));
   EXPECT_EQ(DetectCalibrationFormat(both), CalibrationFormat::kEasyMocap);
@@ -375,6 +386,20 @@ TEST(CalibrationOpenCV, AFolderOfOneFilePerCameraIsTheRigInFileNameOrder) {
   for (const Camera& camera : calibration.cameras) test::ExpectHandBuiltCamera(camera);
   EXPECT_EQ(calibration.description.files,
             (std::vector<std::filesystem::path>{folder / "a_front.YAML", folder / "b_side.yml"}));
+  // Millimetres read as metres in every file: counted once for the folder (it said "1 cameras ..."
+  // once per file), with the farthest camera.
+  const auto far = dir.path() / "far";
+  std::filesystem::create_directories(far);
+  for (const std::string name : {"a", "b"}) {
+    WriteCalibrationText(far / (name + ".yml"), "%YAML:1.0\n---\nimage_width: 1920\nimage_height: 1080\n" +
+                                                    Matrix("K", 3, 3, kK) + Matrix("rvec", 3, 1, kRvec) +
+                                                    Matrix("tvec", 3, 1, name == "a" ? "0., 1500., 4000." : "0., 3000., 4000."));
+  }
+  InputWarnings far_warnings;
+  ReadCalibration(far, CalibrationReadOptions{}, &far_warnings);
+  ASSERT_FALSE(far_warnings.empty());
+  EXPECT_EQ(far_warnings.items()[0].Line(),
+            far.string() + ": 2 cameras more than 1 km from the origin (check the units of T) (max |T| in m = 5000)");
   // A folder with no OpenCV file names the three layouts it looked for.
   const auto empty = dir.path() / "empty";
   std::filesystem::create_directories(empty);
