@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstring>
 
+#include "python/bindings.h"
+
 namespace rpt::python {
 namespace {
 
@@ -72,6 +74,21 @@ void ClearCoordinatesOfMissingJoints(double* data, size_t size) {
   }
 }
 
+// Views as an integer array (a detector's int32 output, a cast too many): their scores are whole
+// numbers, every joint scored below 1 reads as 0 (missing) and nobody is triangulated, without any
+// error (a typed-code user's finding): said as an rpt.InputWarning naming the argument.
+namespace {
+void WarnOfIntegerScores(py::handle object, const std::string& what) {
+  if (!py::isinstance<py::array>(object)) return;
+  const py::array array = py::reinterpret_borrow<py::array>(object);
+  const char kind = array.dtype().kind();
+  if ((kind != 'i' && kind != 'u') || array.size() == 0) return;
+  WarnInput({what + ": an array of integers (" + py::str(array.dtype()).cast<std::string>() +
+             "): its scores are whole numbers, so every joint scored below 1 reads as missing; give float32 or "
+             "float64"});
+}
+}  // namespace
+
 void ViewFromArray(py::handle object, int num_joints, const std::string& what, Poses2D* view) {
   view->Clear(num_joints);
   if (object.is_none()) {  // the camera delivered nothing this frame (an empty array: it saw nobody)
@@ -81,6 +98,7 @@ void ViewFromArray(py::handle object, int num_joints, const std::string& what, P
   // An empty list is a camera that saw nobody, as an array of no persons is (numpy makes it shape (0,)).
   if ((py::isinstance<py::list>(object) || py::isinstance<py::tuple>(object)) && py::len(object) == 0) return;
   const py::array_t<double> array = CheckedArray(object, what, {-1, -1, 3});
+  WarnOfIntegerScores(object, what);
   if (array.shape(0) > 0 && array.shape(1) != num_joints) {
     throw py::value_error(what + ": " + std::to_string(array.shape(1)) + " joints, expected " +
                           std::to_string(num_joints) + " (shape (persons, " + std::to_string(num_joints) + ", 3))");
@@ -97,6 +115,7 @@ void ViewsFromPython(py::handle views, int num_cameras, int num_joints, std::vec
   out->resize(static_cast<size_t>(num_cameras));
   if (py::isinstance<py::array>(views)) {  // one array (cameras, persons, joints, 3)
     const py::array_t<double> array = CheckedArray(views, "views", {num_cameras, -1, num_joints, 3});
+    WarnOfIntegerScores(views, "views");
     const size_t per_view = array.size() / static_cast<size_t>(std::max(num_cameras, 1));
     for (int c = 0; c < num_cameras; ++c) {
       (*out)[c].Clear(num_joints);

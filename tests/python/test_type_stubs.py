@@ -61,14 +61,32 @@ def test_types_are_read_from_the_stubs_and_wrong_calls_refused(tmp_path):
         rpt.Triangulator("cam0", ["nose"])
         rpt.synthetic.scene(camera=3)
         rpt.cameras.load(5)
+        rpt.metrics.evaluate(sequence, [predictions])
+        rpt.synthetic.scene(fps=25.0)
+        import types
+        rpt.Options(types.MappingProxyType({"filter.min_match_score": 0.5}))
+        import numpy
+        persons, track_ids = predictions[numpy.int64(1)]
+        rpt.Triangulator.for_sequence(sequence).process(sequence[0].views, numpy.float32(0.04))
+        rpt.metrics.evaluate([sequence], [predictions], options={"metrics.matching": "hungarian"})
         """))
     code, out = mypy(tmp_path, snippet)
     assert code == 1, out
-    lines = {int(line.split(":")[1]): line for line in out.splitlines() if line.startswith("snippet.py:")}
+    lines = {}  # line number -> mypy's messages about it
+    for line in out.splitlines():
+        if line.startswith("snippet.py:"):
+            number = int(line.split(":")[1])
+            lines[number] = lines.get(number, "") + line + "\n"
     assert "numpy.signedinteger[numpy._typing._64Bit]" in lines[5], out
     assert 'Union[builtins.float, None]' in lines[7], out
     assert "builtins.list[rpt.datasets.Sequence]" in lines[8], out
     assert 'incompatible type "str"; expected "Sequence[Camera]"' in lines[9], out
     assert 'Unexpected keyword argument "camera" for "scene"' in lines[10], out
     assert 'incompatible type "int"' in lines[11], out
-    assert sorted(lines) == [5, 7, 8, 9, 10, 11], out
+    # What the runtime refuses, refused by the stubs too (a typed user's findings): a list of
+    # predictions for one sequence, a fractional frame rate, a mapping that is no dict.
+    assert 'No overload variant of "evaluate" matches' in lines[12], out
+    assert 'incompatible type "float"; expected "SupportsIndex"' in lines[13], out
+    assert 'incompatible type "MappingProxyType' in lines[15], out
+    # What it accepts, accepted: numpy scalars as a frame index and a time, lists of both.
+    assert sorted(lines) == [5, 7, 8, 9, 10, 11, 12, 13, 15], out
