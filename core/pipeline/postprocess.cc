@@ -81,13 +81,34 @@ int steps::Postprocess(const PostprocessOptions& options, const PostprocessInput
     };
     int replaced = 0;
     if (options.replace_wrong_joints) {
+      // A limb whose proximal joint was never triangulated measures its distal joint from the nearest
+      // joint up the chain that was, allowing the limb's maximum once per limb between them (a
+      // whole-body user's finding: with junk hand points a finger joint whose parents were missing
+      // was never measured, stood 0.6-2.2 m from its wrist, and such joints pushed whole persons past
+      // max_extent_m). Joints this rule removes are marked so until the pass ends, and a limb from
+      // one is not measured, as before: walking past them cost the clean whole-body scene's hands
+      // 0.4 mm (a wrong wrist took its right hand joints with it).
+      constexpr double kRemoved = -1;
       for (const ResolvedLimb& limb : in.limbs) {
-        if (person(3, limb.a) <= 0 || person(3, limb.b) <= 0) continue;
-        const double length_sq = (person.col(limb.a).head<3>() - person.col(limb.b).head<3>()).squaredNorm();
-        if (length_sq < limb.min_length_sq() || length_sq > limb.max_length_sq()) {
-          person(3, lifted(limb.a) && !lifted(limb.b) ? limb.a : limb.b) = 0;
+        if (person(3, limb.b) <= 0) continue;
+        int a = limb.a, limbs = 1;
+        // At most kMaxChain limbs up (the neighbours of the two shoulders, hips, nose and head are
+        // each other: no endless walk).
+        constexpr int kMaxChain = 6;
+        while (person(3, a) == 0 && in.neighbour[a] >= 0 && limbs < kMaxChain) {
+          a = in.neighbour[a];
+          ++limbs;
+        }
+        if (person(3, a) <= 0) continue;
+        const double length_sq = (person.col(a).head<3>() - person.col(limb.b).head<3>()).squaredNorm();
+        const double max_length = limbs * limb.max_length_m;
+        if ((limbs == 1 && length_sq < limb.min_length_sq()) || length_sq > max_length * max_length) {
+          person(3, limbs == 1 && lifted(a) && !lifted(limb.b) ? a : limb.b) = kRemoved;
           ++replaced;
         }
+      }
+      for (int j = 0; j < n; ++j) {
+        if (person(3, j) == kRemoved) person(3, j) = 0;
       }
     }
     int valid = 0;

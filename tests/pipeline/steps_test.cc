@@ -1146,6 +1146,44 @@ TEST(Postprocess, DropsInvalidPersonsAndFillsMissingJoints) {
   EXPECT_EQ(steps::Postprocess(off, input, &persons, &stats), 3);
 }
 
+// A joint whose proximal joint was never triangulated is measured from the nearest joint up the
+// chain that was, allowing the limb's maximum once per limb (a whole-body user's junk hand points:
+// a finger joint 1.5 m from its wrist, its parents missing, was kept, and pushed whole persons past
+// max_extent_m). A joint whose proximal joint this rule removed is not measured, as before.
+TEST(Postprocess, AJointWithoutItsParentIsMeasuredFromTheNearestJointUpItsChain) {
+  const JointNames names = AddDerivedJoints(CocoBodyJoints());
+  const std::vector<int> neighbour = NeighbourIndices(names);
+  const std::vector<ResolvedLimb> limbs = ResolveLimbs(LimbsFor(names), names);
+  const int shoulder = FindJoint(names, "shoulder_left"), elbow = FindJoint(names, "elbow_left"),
+            wrist = FindJoint(names, "wrist_left");
+  ASSERT_EQ(neighbour[wrist], elbow);
+  ASSERT_EQ(neighbour[elbow], shoulder);
+  const Room room{.size_m = Eigen::Vector3d(10, 10, 0)};
+  const steps::PostprocessInput input{.neighbour = neighbour, .limbs = limbs, .room = room};
+  // The forearm allows 0.55 m, the upper arm 0.60: a wrist without its elbow may lie up to 2 x 0.55
+  // = 1.10 m from the shoulder (the forearm's limb, counted twice).
+  const auto run = [&](double wrist_from_shoulder_m, double elbow_score, double elbow_from_shoulder_m) {
+    Poses3D persons;
+    persons.Clear(static_cast<int>(names.size()));
+    Eigen::Matrix4Xd body = test::StandingPerson(0, 0);
+    const Eigen::Vector3d out(1, 0, 0);  // the arm held out sideways
+    body.col(elbow).head<3>() = body.col(shoulder).head<3>() + elbow_from_shoulder_m * out;
+    body(3, elbow) = elbow_score;
+    body.col(wrist).head<3>() = body.col(shoulder).head<3>() + wrist_from_shoulder_m * out;
+    persons.AddPerson().leftCols(17) = body;
+    FrameStats stats;
+    EXPECT_EQ(steps::Postprocess(PostprocessOptions{}, input, &persons, &stats), 1);
+    return std::pair(persons.Provenance(0, wrist), stats.replaced_joints);
+  };
+  EXPECT_EQ(run(1.09, 0, 0.3), std::pair(JointProvenance::kTriangulated, 0)) << "within 1.10 m of the shoulder";
+  EXPECT_EQ(run(1.11, 0, 0.3), std::pair(JointProvenance::kFilled, 1)) << "beyond: replaced, filled";
+  // The elbow 0.7 m out (over 0.60): removed (filled onto the shoulder); the wrist beyond it is not
+  // measured from the shoulder, however far (walking past removed joints took right hand joints
+  // with a wrong wrist on the whole-body scene).
+  EXPECT_EQ(run(1.0, 0.9, 0.7), std::pair(JointProvenance::kTriangulated, 1));
+  EXPECT_EQ(run(2.0, 0.9, 0.7), std::pair(JointProvenance::kTriangulated, 1));
+}
+
 TEST(Postprocess, JointsPlacedFromOneViewNeitherDecideNorOutweigh) {
   const JointNames names = AddDerivedJoints(CocoBodyJoints());
   const std::vector<int> neighbour = NeighbourIndices(names);
