@@ -68,6 +68,29 @@ std::string Suggestion(std::string_view name) {
     return out;
   };
   if (lower == "midhip" || lower == "hip" || lower == "mid_hip" || lower == "middle_hip") return "hip_middle";
+  // MMPose's COCO-WholeBody names: face-0 .. face-67 -> face_00 .. face_67; left_hand_root ->
+  // hand_root_left; left_thumb1, left_forefinger2, left_middle_finger3, left_ring_finger4,
+  // left_pinky_finger1 -> hand_thumb_1_left, hand_index_2_left, ... (a whole-body user's file).
+  if (lower.rfind("face-", 0) == 0 || lower.rfind("face_", 0) == 0) {
+    const std::string digits = lower.substr(5);
+    if (!digits.empty() && digits.size() <= 2 && std::all_of(digits.begin(), digits.end(), ::isdigit)) {
+      const std::string candidate = "face_" + std::string(digits.size() == 1 ? "0" : "") + digits;
+      if (IsKnownJointName(candidate)) return candidate;
+    }
+  }
+  for (const std::string side : {"left", "right"}) {
+    if (lower.rfind(side + "_", 0) != 0) continue;
+    const std::string rest = lower.substr(side.size() + 1);
+    if (rest == "hand_root") return "hand_root_" + side;
+    for (const auto& [mmpose, ours] : std::vector<std::pair<std::string, std::string>>{
+             {"thumb", "thumb"}, {"forefinger", "index"}, {"middle_finger", "middle"}, {"ring_finger", "ring"},
+             {"pinky_finger", "pinky"}}) {
+      if (rest.size() == mmpose.size() + 1 && rest.rfind(mmpose, 0) == 0 && std::isdigit(static_cast<unsigned char>(rest.back()))) {
+        const std::string candidate = "hand_" + ours + "_" + rest.back() + "_" + side;
+        if (IsKnownJointName(candidate)) return candidate;
+      }
+    }
+  }
   if (name.size() > 2 && (name[0] == 'L' || name[0] == 'R') && std::isupper(static_cast<unsigned char>(name[1]))) {
     std::string base = snake(name.substr(1));
     if (base == "foot") base = "ankle";
@@ -198,8 +221,9 @@ void CheckJointNames(const JointNames& names, const std::string& where) {
   if (count > static_cast<long>(kNamedUnknown)) unknown.emplace_back("...");
   throw InputError(where + ": unknown joint name" + (count == 1 ? " " : "s (" + std::to_string(count) + "): ") +
                    Join(unknown, ", ") +
-                   "; names follow core/joints.h (nose, eye_left, shoulder_right, ...), custom joints need the prefix "
-                   "'extra_'");
+                   "; rpt's names: nose, eye_left, ..., ankle_right, foot_big_toe_left, ..., face_00 .. face_67, "
+                   "hand_root_left, hand_thumb_1_left .. hand_pinky_4_right (listed in "
+                   "docs/datasets/generic_formats.md); custom joints need the prefix 'extra_'");
 }
 
 // RE2 matches in time linear in the text whatever the pattern (a pattern such as (a+)+b made

@@ -247,7 +247,20 @@ TEST(GenericLabels, MalformedFilesNameFileAndPlace) {
               }),
               HasSubstr("bad.json: /0/joints: unknown joint names (4): 'LEFT_SHOULDER' (did you mean 'shoulder_left'?), "
                         "'mid_hip' (did you mean 'hip_middle'?), 'r_wrist' (did you mean 'wrist_right'?), "
-                        "'left_eye_inner'; names follow core/joints.h"));
+                        "'left_eye_inner'; rpt's names: nose, eye_left, ..., ankle_right, foot_big_toe_left, ..., "
+                        "face_00 .. face_67, hand_root_left, hand_thumb_1_left .. hand_pinky_4_right"));
+  // MMPose's COCO-WholeBody names (a whole-body user's file: the face and hands got no hint).
+  EXPECT_THAT(InputErrorOf([&] {
+                MaterializeAll(OpenLabels(with(R"(["nose"])", R"(["face-0", "nose", "face-67", "left_hand_root",
+                    "right_forefinger2", "left_middle_finger3", "left_ring_finger4", "right_pinky_finger1",
+                    "left_thumb1", "face-68", "left_forefinger5"])")));
+              }),
+              HasSubstr("unknown joint names (10): 'face-0' (did you mean 'face_00'?), 'face-67' (did you mean "
+                        "'face_67'?), 'left_hand_root' (did you mean 'hand_root_left'?), 'right_forefinger2' (did "
+                        "you mean 'hand_index_2_right'?), 'left_middle_finger3' (did you mean 'hand_middle_3_left'?), "
+                        "'left_ring_finger4' (did you mean 'hand_ring_4_left'?), 'right_pinky_finger1' (did you mean "
+                        "'hand_pinky_1_right'?), 'left_thumb1' (did you mean 'hand_thumb_1_left'?), 'face-68', "
+                        "'left_forefinger5';"));
   EXPECT_THAT(InputErrorOf([&] { MaterializeAll(OpenLabels(with(R"(["nose"])", R"(["nose", "eye_left"])"))); }),
               HasSubstr("bad.json: /0/bodies3D/0: expected 2 joints (as many as \"joints\" names), got 1"));
   EXPECT_THAT(InputErrorOf([&] { MaterializeAll(OpenLabels(with("[0, 0, 1, 1]", "[0, 0, 1, 1, 5]"))); }),
