@@ -67,6 +67,16 @@ std::vector<CheckWarning> ResultWarnings(const RunResult& run) {
                   group.name.c_str(), 100.0 * group.filled_share);
     warnings.push_back({"wholebody_group_filled", text});
   }
+  // Whole-body ground truth against predictions without a group's joints (body-only detections of a
+  // whole-body dataset: 116 joints not measured, and "All" over 17, without a word).
+  for (const metrics::GroupResult& group : run.metrics.wholebody) {
+    if (group.name == "All" || group.num_gt_only_joints == 0 || group.num_joints > 0) continue;
+    std::snprintf(text, sizeof(text),
+                  "whole-body group %s: the ground truth has %d of its joints, the predictions none (detections "
+                  "of the body only?): it is not measured, and All is over the joints both have",
+                  group.name.c_str(), group.num_gt_only_joints);
+    warnings.push_back({"wholebody_group_unmeasured", text});
+  }
   const double recall = run.metrics.recall_500;
   if (std::isfinite(recall) && recall < kMinRecall500) {
     std::snprintf(text, sizeof(text),

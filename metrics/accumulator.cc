@@ -106,8 +106,17 @@ void MetricsAccumulator::UpdateLayout(const JointNames& gt_names, const JointNam
   layout_valid_ = true;
   // Only report group sizes for lists that actually carry persons' joints.
   group_num_joints_.clear();
+  group_gt_only_joints_.clear();
   if (options_.wholebody_groups && !gt_names.empty() && !pred_names.empty()) {
     for (const std::vector<int>& group : layout_.gt_group) group_num_joints_.push_back(static_cast<int>(group.size()));
+    for (const WholeBodyGroup& group : WholeBodyGroups()) {
+      int gt_only = 0;
+      for (int i = group.first_index; i <= group.last_index; ++i) {
+        const std::string& name = CocoWholeBodyJoints()[static_cast<size_t>(i)];
+        gt_only += FindJoint(gt_names, name) >= 0 && FindJoint(pred_names, name) < 0 ? 1 : 0;
+      }
+      group_gt_only_joints_.push_back(gt_only);
+    }
   }
 }
 
@@ -212,6 +221,7 @@ void MetricsAccumulator::Add(std::string_view frame_id,
   frame.pairs.clear();
   frame.pcp_nearest.clear();
   frame.group_num_joints = group_num_joints_;
+  frame.group_gt_only_joints = group_gt_only_joints_;
   frame.legacy_actors.clear();
   frame.legacy_predictions.clear();
 

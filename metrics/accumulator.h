@@ -98,6 +98,7 @@ class MetricsAccumulator {
   Layout layout_;
   bool layout_valid_ = false;
   std::vector<int> group_num_joints_;  // of the layout's joint lists; empty when one is empty
+  std::vector<int> group_gt_only_joints_;  // per group: joints only the GT's list has (the same lists)
   FrameIdSet frame_ids_;
 
   FrameRecords frame_;   // the frame being (or last) added

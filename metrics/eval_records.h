@@ -60,6 +60,7 @@ struct FrameRecords {
   // Joints of each whole-body group present in both joint lists; empty when the groups are off or
   // a joint list is empty (a frame without persons may omit it).
   std::vector<int> group_num_joints;
+  std::vector<int> group_gt_only_joints;  // per group: joints only the GT's list has (as above)
   // Legacy PCP inputs (when legacy_pcp != kNone): the GT actors and all predictions in Shelf14 layout.
   std::vector<LegacyActor> legacy_actors;
   std::vector<Shelf14> legacy_predictions;

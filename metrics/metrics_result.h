@@ -38,6 +38,7 @@ struct GroupResult {
   double mpjpe_mm = 0.0;  // mean of per-person means over the group's GT-valid, predicted joints
   int num_persons = 0;    // matched pairs with at least one such joint
   int num_joints = 0;     // joints of the group present in both joint lists (last frame added)
+  int num_gt_only_joints = 0;  // joints of the group only the GT's list has (the same frame): not measured
   double filled_share = 0.0;  // of the joints measured, the share filled from a neighbour (not triangulated)
 };
 

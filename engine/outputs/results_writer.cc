@@ -172,7 +172,10 @@ void AddCountColumns(const metrics::MetricsResult& m, OrderedJson* j) {
     // name says (body-only predictions: "All" over 17) or of no person is visible.
     OrderedJson counts;
     for (const auto& g : m.wholebody) {
-      counts[g.name] = {{"joints", g.num_joints}, {"persons", g.num_persons}, {"filled_share", g.filled_share}};
+      counts[g.name] = {{"joints", g.num_joints},
+                        {"gt_only_joints", g.num_gt_only_joints},
+                        {"persons", g.num_persons},
+                        {"filled_share", g.filled_share}};
     }
     (*j)["wholebody_counts"] = counts;
   }

@@ -123,6 +123,7 @@ struct WholeBodyTotals {
   std::vector<int> count;
   std::vector<long> joints, filled;   // the joints measured, and of those filled (not triangulated)
   std::vector<int> group_num_joints;  // of the last frame that gave both joint lists; empty before
+  std::vector<int> group_gt_only_joints;  // the same frame's joints only the GT has
   void Fold(const FrameRecords& frame);
   void Merge(const WholeBodyTotals& other);
 };

@@ -376,6 +376,35 @@ TEST(EvalCommand, WholeBodyGroupsNameTheirJointsAndPersons) {
             std::string::npos)
       << no_face.err;
   EXPECT_EQ(ReadJson(out / "nf" / "summary.json")["wholebody_counts"]["Face"]["filled_share"], 1.0);
+  // Body-only detections of the whole-body labels (a COCO-17 detector on a whole-body dataset):
+  // Face and Hands are not measured and All is over 17 joints; said (it was silent), counted.
+  nlohmann::json body_only = ReadJson(out / "detections.json");
+  ASSERT_EQ(body_only["joints"].size(), 133u);
+  body_only["joints"].erase(body_only["joints"].begin() + 17, body_only["joints"].end());
+  for (auto& frame : body_only["frames"]) {
+    for (auto& view : frame["views"]) {
+      for (auto& pose : view["poses"]) pose.erase(pose.begin() + 17, pose.end());
+    }
+  }
+  std::ofstream(out / "body_only.json") << body_only.dump();
+  const test::CommandResult coco17 = test::RunRpt("eval --labels " + (out / "labels.json").string() + " --detections " +
+                                                  (out / "body_only.json").string() + " --out " + (out / "b17").string());
+  ASSERT_EQ(coco17.exit_code, 0) << coco17.err;
+  EXPECT_NE(coco17.err.find("warning: whole-body group Face: the ground truth has 68 of its joints, the predictions "
+                            "none (detections of the body only?): it is not measured, and All is over the joints both "
+                            "have"),
+            std::string::npos)
+      << coco17.err;
+  EXPECT_NE(coco17.err.find("warning: whole-body group Hands: the ground truth has 42 of its joints"), std::string::npos);
+  EXPECT_EQ(coco17.err.find("whole-body group Body:"), std::string::npos) << "its 17 body joints are measured";
+  const nlohmann::json b17 = ReadJson(out / "b17" / "summary.json")["wholebody_counts"];
+  EXPECT_EQ(b17["All"]["joints"], 17);
+  EXPECT_EQ(b17["All"]["gt_only_joints"], 116);
+  EXPECT_EQ(b17["Body"]["gt_only_joints"], 6) << "the feet";
+  EXPECT_EQ(b17["Face"]["gt_only_joints"], 68);
+  EXPECT_EQ(counts["Face"]["gt_only_joints"], 0);
+  EXPECT_EQ(whole.err.find("is not measured"), std::string::npos) << whole.err;
+  EXPECT_EQ(body.err.find("is not measured"), std::string::npos) << "body-only GT: nothing to say";
   fs::remove_all(out);
 }
 
