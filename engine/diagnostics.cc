@@ -94,12 +94,14 @@ std::string SpeedClipWarning(const RunResult& run, const ClipSpeedOptions& clip)
   const double joints = static_cast<double>(run.output_persons) / static_cast<double>(run.frames) *
                         static_cast<double>(run.sequences.front().output_joints.size());
   if (!(joints > 0) || clipped <= kMaxClippedJointShare * joints) return "";
-  char text[400];
+  char text[600];
   std::snprintf(text, sizeof(text),
                 "%.1f %% of the joints output were moved by speed clipping (%.1f per frame, to at most "
                 "clip_speed.max_speed_m_s = %g m/s from the track's last position): fast motion (a sprint's ankles, "
                 "a throw's hands pass 15-20 m/s) lags behind; raise it (--set clip_speed.max_speed_m_s=30) or turn it "
-                "off (--set clip_speed.enabled=false)",
+                "off (--set clip_speed.enabled=false). Unless the joints jump instead: detections that land "
+                "somewhere else each frame (occluded hands reported at low scores) are clipped too, and raising the "
+                "limit lets them through (look at the joints clipped: `rpt render`)",
                 100.0 * clipped / joints, clipped, clip.max_speed_m_s);
   return text;
 }
