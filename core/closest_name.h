@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cctype>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -61,6 +62,25 @@ inline std::string DidYouMeanKey(std::string_view key, const std::vector<std::st
     }
   }
   return DidYouMean(key, known);
+}
+
+// " (did you mean 'x'?)" when `name` is a candidate written otherwise: in another case or with other
+// separators ('Cam0', 'cam_0', 'CAM-0' for 'cam0'), else "". For names such as camera names, where
+// an edit distance of 1 is another camera ('cam9' is no typo of 'cam0').
+inline std::string DidYouMeanSpelling(std::string_view name, const std::vector<std::string>& candidates) {
+  const auto plain = [](std::string_view text) {
+    std::string out;
+    for (const char c : text) {
+      if (c == '_' || c == '-' || c == ' ' || c == '.') continue;
+      out += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    }
+    return out;
+  };
+  const std::string wanted = plain(name);
+  for (const std::string& candidate : candidates) {
+    if (candidate != name && plain(candidate) == wanted) return " (did you mean '" + candidate + "'?)";
+  }
+  return "";
 }
 
 // "unknown <noun> '<name>' (did you mean 'x'?) (<known>)": the one message for an unknown option

@@ -172,7 +172,7 @@ void CheckRenameTargets(const DetectionMapping& mapping, const std::vector<std::
     if (std::find(cameras.begin(), cameras.end(), to) != cameras.end()) continue;
     throw ConfigError("--rename-camera " + from + "=" + to + ": the calibration " + calibration_file +
                       " has no camera " + QuoteName(to) + " (cameras: " + JoinNames(cameras, ", ") + ")" +
-                      DidYouMean(to, cameras));
+                      DidYouMeanSpelling(to, cameras));
   }
 }
 

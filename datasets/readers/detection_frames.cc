@@ -112,7 +112,7 @@ std::unique_ptr<FrameSource> OpenDetectionFrames(std::vector<Camera> cameras, De
       const auto it = camera_idx.find(name);
       if (it == camera_idx.end()) {
         throw InputError(source + ": frame " + QuoteName(frame.frame_id) + ": camera " + QuoteName(name) +
-                         DidYouMean(name, names) + " is not in the calibration " + calibration_file.string() +
+                         DidYouMeanSpelling(name, names) + " is not in the calibration " + calibration_file.string() +
                          " (cameras: " + JoinNames(names, ", ") + "); when it is one of those under another name, "
                          "--rename-camera " + name + "=NAME maps it");
       }
