@@ -56,23 +56,30 @@ void UprightCheck::Add(const Poses3D& persons) {
   }
 }
 
+namespace {
+
+// "<sequence>: N of the M persons with a head and both ankles triangulated (P %) <what>".
+std::string JudgedPersonsLine(const std::string& sequence, long n, long judged, const std::string& what) {
+  return PrintableText(sequence + ": " + std::to_string(n) + " of the " + std::to_string(judged) +
+                       " persons with a head and both ankles triangulated (" +
+                       PercentText(static_cast<double>(n) / static_cast<double>(judged)) + ") " + what);
+}
+
+}  // namespace
+
 std::string UprightWarning(const std::string& sequence, const UprightCount& count) {
   if (count.judged < kMinUprightJudged) return "";
   if (static_cast<double>(count.upside_down) <= kMaxUpsideDownShare * static_cast<double>(count.judged)) {
     if (static_cast<double>(count.lying) <= kMaxLyingShare * static_cast<double>(count.judged)) return "";
-    return PrintableText(sequence + ": " + std::to_string(count.lying) + " of the " + std::to_string(count.judged) +
-                         " persons with a head and both ankles triangulated (" +
-                         PercentText(static_cast<double>(count.lying) / count.judged) +
-                         ") lie on their sides (ankles to head within 30 degrees of the horizontal; rpt's world "
-                         "has z up): does the calibration's world have another axis up (y up or down, as many "
-                         "tools' worlds have)? Unless the people do lie (a bed, a floor exercise)");
+    return JudgedPersonsLine(sequence, count.lying, count.judged,
+                             "lie on their sides (ankles to head within 30 degrees of the horizontal; rpt's world "
+                             "has z up): does the calibration's world have another axis up (y up or down, as many "
+                             "tools' worlds have)? Unless the people do lie (a bed, a floor exercise)");
   }
-  return PrintableText(sequence + ": " + std::to_string(count.upside_down) + " of the " + std::to_string(count.judged) +
-                       " persons with a head and both ankles triangulated (" +
-                       PercentText(static_cast<double>(count.upside_down) / count.judged) +
-                       ") stand on their heads (head below the ankles; rpt's world has z up): do the detections' "
-                       "pixel rows count from the image's top (v down, as OpenCV), and does the calibration's world "
-                       "z point up?");
+  return JudgedPersonsLine(sequence, count.upside_down, count.judged,
+                           "stand on their heads (head below the ankles; rpt's world has z up): do the detections' "
+                           "pixel rows count from the image's top (v down, as OpenCV), and does the calibration's "
+                           "world z point up?");
 }
 
 std::string MirroredWarning(const std::string& sequence, const UprightCount& count) {

@@ -370,13 +370,19 @@ TEST(RunTest, TimesThatGoBackAreCountedAndStartTracksAnew) {
 
 // Without ground truth the persons are compared with each camera's detections: two cameras whose
 // calibrations are swapped are named, the others and a right rig are not.
+// A run without metrics, with the camera-agreement check (what rpt triangulate runs).
+RunOptions AgreementRun() {
+  RunOptions options;
+  options.eval.reset();
+  options.camera_agreement = true;
+  return options;
+}
+
 TEST(RunTest, CamerasWhoseDetectionsDisagreeWithThePersonsAreNamed) {
   SyntheticParams params = Scene(60);
   params.cameras = 5;
   std::vector<Sequence> whole = MakeSyntheticDataset(params);
-  RunOptions options;
-  options.eval.reset();
-  options.camera_agreement = true;
+  const RunOptions options = AgreementRun();
   const auto warnings = [&](const std::vector<Sequence>& input) {
     const RunResult run = engine::Run(std::span<const Sequence>(input), options, nullptr);
     return CameraAgreementWarnings(run.sequences[0].name, run.sequences[0].camera_agreement);
@@ -429,9 +435,7 @@ TEST(RunTest, CamerasInWhoseImagesNoPersonFallsAreNamed) {
   SyntheticParams params = Scene(60);
   params.cameras = 4;
   std::vector<Sequence> whole = MakeSyntheticDataset(params);
-  RunOptions options;
-  options.eval.reset();
-  options.camera_agreement = true;
+  const RunOptions options = AgreementRun();
   const auto run = [&](const std::vector<Sequence>& input) {
     return engine::Run(std::span<const Sequence>(input), options, nullptr).sequences[0];
   };
