@@ -205,17 +205,18 @@ void TrcExport::WriteFile(const Sequence& s, int track_id, const Track& track) {
     long last = 0;
     for (long row = 0; std::getline(in, line); ++row) {  // "<index + 1>\t<time>\t..." as Frame() wrote it
       const size_t number_end = line.find('\t');
-      const size_t time_end = line.find('\t', number_end + 1);
       double time_s = 0;
-      const char* begin = line.data() + number_end + 1;
       if (number_end == std::string::npos ||
-          std::from_chars(begin, line.data() + std::min(time_end, line.size()), time_s).ec != std::errc()) {
+          std::from_chars(line.data() + number_end + 1, line.data() + std::min(line.find('\t', number_end + 1), line.size()),
+                          time_s)
+                  .ec != std::errc()) {
         throw InputError(track.part.string() + ": row " + std::to_string(row + 1) + " is not as written");
       }
       long number = row == 0 ? first_number : 1 + std::lround((time_s - s.first_time_s) * rate);
       if (row > 0) number = std::max(number, last + 1);  // never back, as with an fps
       last = number;
-      out << number << std::string_view(line).substr(number_end) << "\n";
+      // C-locale digits whatever the stream's locale, as Frame() writes them.
+      out << std::to_string(number) << std::string_view(line).substr(number_end) << "\n";
     }
   });
 }
