@@ -151,6 +151,9 @@ std::vector<std::string> PrintRunChecks(const engine::RunResult& run, const engi
     if (std::string mirrored = engine::MirroredWarning(sequence.name, sequence.upright); !mirrored.empty()) {
       warnings.push_back(std::move(mirrored));
     }
+    if (std::string hands = engine::SwappedHandsWarning(sequence.name, sequence.upright); !hands.empty()) {
+      warnings.push_back(std::move(hands));
+    }
     warnings.insert(warnings.end(), sequence.camera_sync.begin(), sequence.camera_sync.end());
     for (std::string& line : warnings) {
       std::fprintf(stderr, "warning: %s\n", line.c_str());

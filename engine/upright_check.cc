@@ -21,6 +21,14 @@ UprightCheck::UprightCheck(const JointNames& output_joints) {
       break;
     }
   }
+  for (int j = 0; j < static_cast<int>(output_joints.size()); ++j) {
+    const std::string& name = output_joints[static_cast<size_t>(j)];
+    if (!name.starts_with("hand_")) continue;
+    if (name.ends_with("_left")) hand_[0].push_back(j);
+    if (name.ends_with("_right")) hand_[1].push_back(j);
+  }
+  const int wrist_left = FindJoint(output_joints, "wrist_left"), wrist_right = FindJoint(output_joints, "wrist_right");
+  if (wrist_left >= 0 && wrist_right >= 0 && !hand_[0].empty() && !hand_[1].empty()) wrists_ = {wrist_left, wrist_right};
 }
 
 void UprightCheck::Add(const Poses3D& persons) {
@@ -36,6 +44,24 @@ void UprightCheck::Add(const Poses3D& persons) {
     const Eigen::Vector3d forward = (shoulders - hips).cross(at(2) - at(1));
     ++count_.facing_judged;
     count_.mirrored += (at(0) - shoulders).dot(forward) < 0 ? 1 : 0;
+  }
+  for (int p = 0; p < persons.num_persons() && !wrists_.empty(); ++p) {
+    if (!observed(p, wrists_[0]) || !observed(p, wrists_[1])) continue;
+    const auto at = [&](int j) { return persons.Person(p).col(j).head<3>(); };
+    if ((at(wrists_[0]) - at(wrists_[1])).norm() < 0.2) continue;  // hands together: either wrist fits
+    for (int side = 0; side < 2; ++side) {
+      double own = 0, other = 0;
+      int joints = 0;
+      for (const int j : hand_[side]) {
+        if (!observed(p, j)) continue;
+        own += (at(j) - at(wrists_[side])).norm();
+        other += (at(j) - at(wrists_[1 - side])).norm();
+        ++joints;
+      }
+      if (joints < kMinJudgedHandJoints) continue;
+      ++count_.hands_judged;
+      count_.hands_swapped += other < own ? 1 : 0;
+    }
   }
   if (head_.empty() || ankles_.empty()) return;
   for (int p = 0; p < persons.num_persons(); ++p) {
@@ -80,6 +106,19 @@ std::string UprightWarning(const std::string& sequence, const UprightCount& coun
                            "stand on their heads (head below the ankles; rpt's world has z up): do the detections' "
                            "pixel rows count from the image's top (v down, as OpenCV), and does the calibration's "
                            "world z point up?");
+}
+
+std::string SwappedHandsWarning(const std::string& sequence, const UprightCount& count) {
+  if (count.hands_judged < kMinUprightJudged ||
+      static_cast<double>(count.hands_swapped) <= kMaxSwappedHandShare * static_cast<double>(count.hands_judged)) {
+    return "";
+  }
+  return PrintableText(sequence + ": " + std::to_string(count.hands_swapped) + " of the " +
+                       std::to_string(count.hands_judged) + " hands with " + std::to_string(kMinJudgedHandJoints) +
+                       " or more joints triangulated (" +
+                       PercentText(static_cast<double>(count.hands_swapped) / count.hands_judged) +
+                       ") lie at the other wrist: are the detections' left and right hands exchanged (the order of "
+                       "their hand joints: hand_root_left and hand_*_left come first)?");
 }
 
 std::string MirroredWarning(const std::string& sequence, const UprightCount& count) {

@@ -297,6 +297,7 @@ class PyTriangulator {
     std::vector<std::string> lines = engine::CameraAgreementWarnings(source, cameras);
     if (std::string line = engine::UprightWarning(source, upright); !line.empty()) lines.push_back(std::move(line));
     if (std::string line = engine::MirroredWarning(source, upright); !line.empty()) lines.push_back(std::move(line));
+    if (std::string line = engine::SwappedHandsWarning(source, upright); !line.empty()) lines.push_back(std::move(line));
     return lines;
   }
 
