@@ -152,7 +152,7 @@ class PyTriangulator {
   }
 
   // The frames of a loaded sequence, read in place.
-  Predictions ProcessSequence(const Sequence& sequence) {
+  Predictions ProcessSequence(const Sequence& sequence, bool checks) {
     std::unique_lock lock = Lock();
     if (sequence.cameras.size() != header_.cameras.size() || sequence.detection_joints != header_.detection_joints) {
       throw InputError("process_sequence: sequence " + QuoteName(sequence.name) + " has " +
@@ -166,7 +166,7 @@ class PyTriangulator {
     std::vector<std::string> check_lines;
     {
       py::gil_scoped_release release;
-      Run(sequence.frames, &out, &warnings, &check_lines);
+      Run(sequence.frames, checks, &out, &warnings, &check_lines);
     }
     WarnInput(engine::InputWarningLines(warnings));
     WarnInput(check_lines);
@@ -175,7 +175,7 @@ class PyTriangulator {
 
   // Frames from Python: rpt.datasets.Frame objects, (views, timestamp) tuples or views alone,
   // converted and validated first, then triangulated in one go.
-  Predictions ProcessFrames(const py::iterable& frames) {
+  Predictions ProcessFrames(const py::iterable& frames, bool checks) {
     std::unique_lock lock = Lock();
     std::vector<SequenceFrame> converted;
     InputWarnings clamped;
@@ -213,7 +213,7 @@ class PyTriangulator {
     std::vector<std::string> check_lines;
     {
       py::gil_scoped_release release;
-      Run(converted, &out, &warnings, &check_lines);
+      Run(converted, checks, &out, &warnings, &check_lines);
     }
     WarnInput(engine::InputWarningLines(warnings));
     WarnInput(check_lines);
@@ -304,8 +304,10 @@ class PyTriangulator {
   // The loop of engine::Run's sequences (engine/run.cc, RunSequence): each frame triangulated in
   // order, through the offline smoother when smooth.mode = offline; the frame times' warnings
   // (engine::FrameTimeCheck) into *warnings; the lines of the CLI's checks of the persons against
-  // the cameras (CheckLines) into *check_lines.
-  void Run(std::span<const SequenceFrame> frames, Predictions* out, InputWarnings* warnings,
+  // the cameras (CheckLines) into *check_lines. Without `checks` those checks do not run: on a
+  // shelf-like sequence they cost more than the triangulation (59.7 -> 153 us per frame of wall
+  // time, python/benchmarks/process_overhead.py).
+  void Run(std::span<const SequenceFrame> frames, bool checks, Predictions* out, InputWarnings* warnings,
            std::vector<std::string>* check_lines) {
     engine::FrameTimeCheck times(triangulator_.options().track.max_gap_s);
     engine::CameraAgreementCheck agreement(header_, triangulator_.output_joints(), static_cast<long>(frames.size()));
@@ -339,9 +341,11 @@ class PyTriangulator {
       } catch (const InputError& e) {
         throw InputError(out->sequence + ": frame " + QuoteName(frame.id) + ": " + e.what());
       }
-      agreement.Add(done - 1, frame, persons_);
-      upright.Add(persons_);
-      if (!frame.views.empty()) sync.Add(frame);
+      if (checks) {
+        agreement.Add(done - 1, frame, persons_);
+        upright.Add(persons_);
+        if (!frame.views.empty()) sync.Add(frame);
+      }
       out->frame_ids.push_back(frame.id);
       out->timestamps_s.push_back(frame.timestamp_s);
       if (offline) {
@@ -371,6 +375,7 @@ class PyTriangulator {
                            "smoothing); pass (views, seconds) pairs",
                            static_cast<long>(frames.size()));
     }
+    if (!checks) return;
     *check_lines = CheckLines(out->sequence, agreement.cameras(), upright.count());
     for (std::string& line : engine::CameraSyncWarnings(out->sequence, header_.cameras, sync.pairs(), sync.frame_step_s())) {
       check_lines->push_back(std::move(line));
@@ -510,11 +515,15 @@ void RegisterTriangulator(py::module_& m) {
            "views: per camera an array (persons, joints, 3) of u_px, v_px, score (or one array (cameras, persons, "
            "joints, 3)); timestamp: seconds, None = unknown. Returns (persons (P, J, 4): x, y, z in metres and "
            "score, track ids (P,))")
-      .def("process_sequence", &PyTriangulator::ProcessSequence, py::arg("frames"),
-           "Every frame of an rpt.datasets.Sequence, in C++; returns rpt.Predictions")
-      .def("process_sequence", &PyTriangulator::ProcessFrames, py::arg("frames"),
+      .def("process_sequence", &PyTriangulator::ProcessSequence, py::arg("frames"), py::kw_only(),
+           py::arg("checks") = true,
+           "Every frame of an rpt.datasets.Sequence, in C++; returns rpt.Predictions. checks=False skips the "
+           "checks of the persons against the cameras (agreement, upright, mirror, hands, camera sync), which "
+           "cost more than the triangulation on small rigs")
+      .def("process_sequence", &PyTriangulator::ProcessFrames, py::arg("frames"), py::kw_only(),
+           py::arg("checks") = true,
            "Every frame of a list (rpt.datasets.Frame objects, (views, timestamp) tuples or views), converted first, "
-           "then triangulated in C++; returns rpt.Predictions")
+           "then triangulated in C++; returns rpt.Predictions. checks=False as above")
       .def("reset", &PyTriangulator::Reset, "Forgets the previous frames (tracks, pre-filter, noise estimate)")
       .def_property_readonly(
           "stats", &PyTriangulator::StatsOfLastFrame,

@@ -1,7 +1,7 @@
 """What calling the triangulator from Python costs (docs/python.md, "Speed"): on the shelf-like scene
 (5 cameras, 4 people, 17 joints, the clean detector profile: `rpt bench --scene shelf-like`),
   1. process_sequence: wall time per frame of the whole call against the C++ time per frame inside it
-     (the triangulator's own steady-clock time, FrameStats::total_us);
+     (the triangulator's own steady-clock time, FrameStats::total_us), with and without its checks;
   2. process: wall time of one call (numpy views in, arrays out) against the C++ time inside it; the
      difference is the per-call overhead of the binding (conversion, checks, GIL, result arrays).
 Not a test: timings depend on the machine. Pin it for stable numbers: taskset -c 1 python3 process_overhead.py
@@ -36,6 +36,16 @@ for _ in range(args.repeat):
 print(f"process_sequence: {np.median(sequence_wall):.1f} us/frame wall, {np.median(sequence_cpp):.1f} us/frame in the "
       f"triangulator (means over {len(scene)} frames, median of {args.repeat} runs): "
       f"+{(np.median(ratios) - 1) * 100:.1f} %; median frame {np.median(predictions.frame_time_us):.1f} us")
+
+unchecked_wall, unchecked_cpp = [], []
+for _ in range(args.repeat):
+    triangulator.reset()
+    unchecked = triangulator.process_sequence(scene, checks=False)
+    unchecked_wall.append(unchecked.wall_seconds * 1e6 / len(unchecked))
+    unchecked_cpp.append(float(np.mean(unchecked.frame_time_us)))
+print(f"process_sequence(checks=False): {np.median(unchecked_wall):.1f} us/frame wall, "
+      f"{np.median(unchecked_cpp):.1f} us/frame in the triangulator "
+      f"(+{(np.median(unchecked_wall) / np.median(unchecked_cpp) - 1) * 100:.1f} %)")
 
 call_us, inside_us = [], []
 for _ in range(args.repeat):

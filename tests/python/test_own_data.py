@@ -269,6 +269,16 @@ def test_whole_body_detections_with_the_hands_exchanged_are_warned_about():
         warnings.simplefilter("always")
         rpt.Triangulator.for_sequence(scene).process_sequence(scene)
     assert not [w for w in caught if "other wrist" in str(w.message)]
+    # checks=False: the same persons, without the checks (they cost more than the triangulation).
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        unchecked = rpt.Triangulator.for_sequence(scene).process_sequence(frames, checks=False)
+    assert not [w for w in caught if "other wrist" in str(w.message)]
+    with pytest.warns(rpt.InputWarning):
+        checked = rpt.Triangulator.for_sequence(scene).process_sequence(frames)
+    assert len(unchecked) == len(checked)
+    for i in range(len(checked)):
+        assert np.array_equal(unchecked[i][0], checked[i][0]) and np.array_equal(unchecked[i][1], checked[i][1])
 
 
 def test_settings_without_effect_and_frames_without_times_are_warned_about():
