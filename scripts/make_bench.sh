@@ -21,7 +21,8 @@ SHARED_DATA="${RPT_SHARED_DATA:-../shared/data}"
   echo "undistortion; medians over 5 passes after a warm-up pass; generated scenes with the \`clean\`"
   echo "simulated detector profile, the workload of every earlier run (bench/bench_scenes.cc; \`rpt bench --detector\` changes it). The baseline is a straightforward implementation of"
   echo "the same algorithm run in the same process (bench/baseline_triangulator.cc: SVD on every pair and"
-  echo "joint, no pre-filter, fresh allocations per frame)."
+  echo "joint, no pre-filter, fresh allocations per frame) on each scene's first 30 frames; the speed-up divides"
+  echo "its median by rpt's median on those same frames (\`rpt on them\`)."
   echo
   echo "- machine: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ //'), $(nproc) cores${PIN:+; timed runs pinned to one core ($PIN)}"
   echo "- compiler: $(c++ --version | head -1); flags: \`${FLAGS}\`, -march=native: ${NATIVE}"
@@ -38,7 +39,8 @@ SHARED_DATA="${RPT_SHARED_DATA:-../shared/data}"
   echo "The 301 frames of Shelf (5 cameras) bundled by 4D-Association with their real OpenPose output, read by"
   echo "the shelf-4da reader in every pass as \`rpt eval\` reads them: \`paf_grouping (reader)\` is the reader's grouping of the"
   echo "raw OpenPose candidates into persons (part-affinity fields), done before the pipeline and not in its"
-  echo "total; \`frame + grouping\` is the frame with it, the time the target is about. The baseline runs on the first 30 frames."
+  echo "total; \`frame + grouping\` is the frame with it, the time the target is about. The baseline runs on the first 30 frames"
+  echo "(\`baseline frames\`), as in every column; \`rpt on them\` and the speed-up are rpt's on those frames."
   echo
   echo '```'
   if [ -d "$SHARED_DATA/shelf/4d_association" ]; then
