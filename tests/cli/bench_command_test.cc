@@ -88,6 +88,8 @@ TEST(BenchCommand, ADatasetsFramesWithTheReadersGroupingAsARow) {
   EXPECT_DOUBLE_EQ(s["mpjpe_mm"].get<double>(), e["mpjpe_mm"].get<double>());
   EXPECT_DOUBLE_EQ(s["recall500"].get<double>(), e["recall500"].get<double>());
   EXPECT_DOUBLE_EQ(s["invalid"].get<double>(), e["invalid"].get<double>());
+  // eval's summary has the frame with the grouping too (it had only the grouping's row).
+  EXPECT_GT(e["frame_with_grouping_us_median"].get<double>(), e["frame_time_us_median"].get<double>());
   std::filesystem::remove_all(std::filesystem::temp_directory_path() / "rpt_bench_dataset_eval");
 
   // The table: the grouping row and the frame with it, "-" in a generated scene's column.
@@ -180,6 +182,11 @@ TEST(BenchCommand, DatasetOptionsAreCheckedBeforeAnythingRuns) {
   EXPECT_EQ(s["name"], "synthetic");
   EXPECT_EQ(s["frames"], 10);
   EXPECT_FALSE(s["step_time_us_median"].contains("paf_grouping (reader)"));
+  const test::CommandResult eval = test::RunRpt("eval --dataset synthetic --param frames=3 --json --quiet --no-predictions --out " +
+                                                (std::filesystem::temp_directory_path() / "rpt_bench_synthetic_eval").string());
+  ASSERT_EQ(eval.exit_code, 0) << eval.err;
+  EXPECT_FALSE(nlohmann::json::parse(eval.out).contains("frame_with_grouping_us_median")) << "no reader grouping";
+  std::filesystem::remove_all(std::filesystem::temp_directory_path() / "rpt_bench_synthetic_eval");
   EXPECT_FALSE(s.contains("frame_with_grouping_us_median"));
   EXPECT_FALSE(s.contains("target_us"));
 }
