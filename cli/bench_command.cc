@@ -4,13 +4,13 @@
 // the accuracy of the same run, and in the same run a straightforward baseline implementation
 // with the speed-up over it.
 #include <algorithm>
-#include <cmath>
 #include <chrono>
-#include <filesystem>
+#include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
-#include <optional>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "bench/baseline_triangulator.h"
 #include "bench/bench_scenes.h"
@@ -18,12 +18,6 @@
 #include "cli/config_args.h"
 #include "cli/follow_bench.h"
 #include "cli/input_options.h"
-#include "engine/outputs/step_tables.h"
-#include "engine/outputs/results_writer.h"
-#include "engine/outputs/run_info.h"
-#include "engine/input.h"
-#include "engine/input_digests.h"
-#include "engine/run.h"
 #include "core/errors.h"
 #include "core/pipeline/simd_kernels.h"
 #include "core/pipeline/triangulator.h"
@@ -35,6 +29,12 @@
 #include "datasets/io/staged_output.h"
 #include "datasets/readers/hdf5_cache.h"
 #include "datasets/synthetic/detector_options.h"
+#include "engine/input.h"
+#include "engine/input_digests.h"
+#include "engine/outputs/results_writer.h"
+#include "engine/outputs/run_info.h"
+#include "engine/outputs/step_tables.h"
+#include "engine/run.h"
 #include "metrics/accumulator.h"
 #include "metrics/timing.h"
 
@@ -58,7 +58,7 @@ struct BenchArgs {
   std::string detector = "clean";
   bool detector_given = false;
   bool io_frames_given = false;
-  bool simulate = false;  // with --dataset: its detections simulated from its ground truth (--detector)
+  bool simulate = false;      // with --dataset: its detections simulated from its ground truth (--detector)
   engine::InputSpec dataset;  // --dataset/--root/--param: a dataset's real frames as one more column
   ConfigArgs config;
 };
@@ -199,7 +199,8 @@ SceneResult BenchDataset(const BenchArgs& args, const engine::Config& config, In
         result.output_persons += persons.num_persons();
         accuracy->Add(frame.id, frame.gt, gt_joints[static_cast<size_t>(i)], persons, triangulator.output_joints());
         if (index < baseline_count) {
-          same->accuracy.Add(frame.id, frame.gt, gt_joints[static_cast<size_t>(i)], persons, triangulator.output_joints());
+          same->accuracy.Add(frame.id, frame.gt, gt_joints[static_cast<size_t>(i)], persons,
+                             triangulator.output_joints());
           baseline_frames.emplace_back(static_cast<size_t>(i), frame);
         }
       }
@@ -214,7 +215,8 @@ SceneResult BenchDataset(const BenchArgs& args, const engine::Config& config, In
   result.scene.frames = static_cast<int>(frames);
   result.scene.description = std::to_string(frames) + " frames of " + std::to_string(triangulators.size()) +
                              " sequence(s), " + std::to_string(cameras.empty() ? 0 : cameras.front().size()) +
-                             " cameras; " + (args.dataset.root.empty() ? "generated" : PrintableText(args.dataset.root));
+                             " cameras; " +
+                             (args.dataset.root.empty() ? "generated" : PrintableText(args.dataset.root));
   result.timing = timing.Finalize();
   result.metrics = accuracy->Finalize();
   result.has_gt = gt_persons > 0;
@@ -329,21 +331,25 @@ void RunBench(const BenchArgs& args) {
     throw ConfigError("--dataset times the pipeline on a dataset's frames: not with --follow or --io");
   }
   if (!dataset && (!args.dataset.root.empty() || !args.dataset.params.empty() || args.simulate)) {
-    throw ConfigError("--root, --param and --simulate name a dataset's folder, reader parameters and detections: add "
-                      "--dataset NAME");
+    throw ConfigError(
+        "--root, --param and --simulate name a dataset's folder, reader parameters and detections: add "
+        "--dataset NAME");
   }
   if (args.follow && args.scaling) throw ConfigError("--follow times the live input on one scene: not with --scaling");
   const bool generated = !args.scenes.empty() || args.scaling || !dataset;
   if (dataset && !generated && args.frames > 0) {
-    throw ConfigError("--frames sets the generated scenes' frames; a dataset's frames are chosen with its reader's "
-                      "parameter (--param frames=... where the reader has one)");
+    throw ConfigError(
+        "--frames sets the generated scenes' frames; a dataset's frames are chosen with its reader's "
+        "parameter (--param frames=... where the reader has one)");
   }
   if (dataset && !generated && args.detector_given && !args.simulate) {
-    throw ConfigError("--detector sets the simulated detector of the generated scenes, or of the dataset with "
-                      "--simulate; the dataset's own detections have none (the synthetic dataset's: --param noise=...)");
+    throw ConfigError(
+        "--detector sets the simulated detector of the generated scenes, or of the dataset with "
+        "--simulate; the dataset's own detections have none (the synthetic dataset's: --param noise=...)");
   }
   if (scenes.empty() && args.follow) scenes.push_back(bench::StandardScenes().front());  // shelf-like
-  if (scenes.empty() && (args.scaling || !dataset)) scenes = args.scaling ? bench::ScalingScenes() : bench::StandardScenes();
+  if (scenes.empty() && (args.scaling || !dataset))
+    scenes = args.scaling ? bench::ScalingScenes() : bench::StandardScenes();
   for (auto& s : scenes) {
     if (args.frames > 0) s.frames = args.frames;
   }
@@ -407,7 +413,8 @@ void RunBench(const BenchArgs& args) {
       if (r.scene.target_us > 0) {
         s["target_us"] = r.scene.target_us;
         // What the target is compared with: the frame time, with the reader's grouping where it has one.
-        s["target_compares"] = r.timing.paf_grouping_frames > 0 ? "frame_with_grouping_us_median" : "frame_time_us_median";
+        s["target_compares"] =
+            r.timing.paf_grouping_frames > 0 ? "frame_with_grouping_us_median" : "frame_time_us_median";
         s["meets_target"] = r.MeetsTarget();
       }
       j["scenes"].push_back(s);
@@ -435,8 +442,9 @@ void RunBench(const BenchArgs& args) {
   for (const auto& r : results) std::printf(" %14s", r.scene.name.c_str());
   std::printf("\n");
   if (grouping) {  // the reader's part-affinity grouping, done before the pipeline's steps (as in rpt eval)
-    partial_row(engine::kPafGroupingRow, grouped, [](const SceneResult& r) { return r.timing.paf_grouping_us_median; },
-                " %14.2f");
+    partial_row(
+        engine::kPafGroupingRow, grouped, [](const SceneResult& r) { return r.timing.paf_grouping_us_median; },
+        " %14.2f");
   }
   for (int s = 0; s < kNumSteps; ++s) {
     std::printf("%-22s", std::string(kSteps[s].key).c_str());
@@ -451,8 +459,9 @@ void RunBench(const BenchArgs& args) {
   row("total (median)", [](const SceneResult& r) { return r.timing.frame_us_median; }, " %14.2f");
   row("total (mean)", [](const SceneResult& r) { return r.timing.frame_us_mean; }, " %14.2f");
   if (grouping) {
-    partial_row("frame + grouping", grouped,
-                [](const SceneResult& r) { return r.timing.frame_with_grouping_us_median; }, " %14.2f");
+    partial_row(
+        "frame + grouping", grouped, [](const SceneResult& r) { return r.timing.frame_with_grouping_us_median; },
+        " %14.2f");
   }
   // The scene's target (us per frame, median; with the grouping where there is one) and whether
   // the median meets it; "-" without one.
@@ -466,22 +475,32 @@ void RunBench(const BenchArgs& args) {
   }
   std::printf("\n%-22s", "target met");
   for (const auto& r : results) {
-    std::printf(" %14s", r.scene.target_us <= 0 ? "-" : r.MeetsTarget() ? "yes" : r.output_persons == 0 ? "NO (nobody)" : "NO");
+    std::printf(" %14s", r.scene.target_us <= 0  ? "-"
+                         : r.MeetsTarget()       ? "yes"
+                         : r.output_persons == 0 ? "NO (nobody)"
+                                                 : "NO");
   }
   std::printf("\n");
   const auto has_gt = [](const SceneResult& r) { return r.has_gt; };
-  partial_row("MPJPE (mm)", has_gt, [](const SceneResult& r) { return r.metrics.mpjpe_mm; }, " %14.1f");
-  partial_row("Recall@500 (%)", has_gt, [](const SceneResult& r) { return r.metrics.recall_500; }, " %14.1f");
-  partial_row("Invalid (%)", has_gt, [](const SceneResult& r) { return r.metrics.invalid; }, " %14.1f");
+  partial_row(
+      "MPJPE (mm)", has_gt, [](const SceneResult& r) { return r.metrics.mpjpe_mm; }, " %14.1f");
+  partial_row(
+      "Recall@500 (%)", has_gt, [](const SceneResult& r) { return r.metrics.recall_500; }, " %14.1f");
+  partial_row(
+      "Invalid (%)", has_gt, [](const SceneResult& r) { return r.metrics.invalid; }, " %14.1f");
   if (!args.no_baseline) {
     // The baseline on the first frames (--baseline-frames); rpt's time and MPJPE on those same frames.
-    row("baseline frames", [](const SceneResult& r) { return r.baseline_frames; }, " %14d");
+    row(
+        "baseline frames", [](const SceneResult& r) { return r.baseline_frames; }, " %14d");
     row("baseline (us)", [](const SceneResult& r) { return r.baseline_median_us; }, " %14.1f");
-    row("rpt on them (us)", [](const SceneResult& r) { return r.same_frames_us; }, " %14.2f");
-    partial_row("baseline MPJPE", has_gt, [](const SceneResult& r) { return r.baseline_metrics.mpjpe_mm; }, " %14.1f");
-    partial_row("rpt MPJPE on them", has_gt, [](const SceneResult& r) { return r.same_frames_metrics.mpjpe_mm; },
-                " %14.1f");
-    row("speed-up", [](const SceneResult& r) { return r.baseline_median_us / r.same_frames_us; }, " %13.1fx");
+    row(
+        "rpt on them (us)", [](const SceneResult& r) { return r.same_frames_us; }, " %14.2f");
+    partial_row(
+        "baseline MPJPE", has_gt, [](const SceneResult& r) { return r.baseline_metrics.mpjpe_mm; }, " %14.1f");
+    partial_row(
+        "rpt MPJPE on them", has_gt, [](const SceneResult& r) { return r.same_frames_metrics.mpjpe_mm; }, " %14.1f");
+    row(
+        "speed-up", [](const SceneResult& r) { return r.baseline_median_us / r.same_frames_us; }, " %13.1fx");
   }
 }
 
@@ -492,15 +511,18 @@ void RegisterBenchCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand("bench", "Single-threaded speed on the benchmark scenes, with a baseline");
   command->add_option("--scene", args->scenes, "scene name (repeatable; default: the standard scenes)")->take_all();
   command->add_flag("--scaling", args->scaling, "the scaling series over cameras (2..31) and people (1..20)");
-  command->add_option("--frames", args->frames, "frames per generated scene (default: the scene's; a dataset's: --param)")->check(CLI::Range(1, 1000000));
+  command
+      ->add_option("--frames", args->frames, "frames per generated scene (default: the scene's; a dataset's: --param)")
+      ->check(CLI::Range(1, 1000000));
   command->add_option("--repeat", args->repeat, "timed passes over the frames")->check(CLI::Range(1, 1000))->capture_default_str();
   command->add_option("--baseline-frames", args->baseline_frames, "frames for the baseline (none: --no-baseline)")
       ->check(CLI::Range(1, 1000000))
       ->capture_default_str();
   command->add_flag("--no-baseline", args->no_baseline, "skip the baseline");
-  command->add_option("--detector", args->detector,
-                      "simulated detector profile of the scenes, and of a dataset with --simulate (clean: the "
-                      "workload of results/bench.md)")
+  command
+      ->add_option("--detector", args->detector,
+                   "simulated detector profile of the scenes, and of a dataset with --simulate (clean: the "
+                   "workload of results/bench.md)")
       ->check(CLI::IsMember(synthetic::DetectorProfileNames()))
       ->capture_default_str()
       ->each([args](const std::string&) { args->detector_given = true; });

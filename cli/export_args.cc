@@ -39,7 +39,8 @@ engine::ExportOptions ExportOptionsOf(const ExportArgs& args) {
   // The other formats are always z up, in metres: a TRC option without TRC files would be read as
   // applying to them.
   if (!args.trc_option_given.empty() && !options.Has(engine::ExportFormat::kTrc)) {
-    throw ConfigError(args.trc_option_given + " sets the TRC files, which this run does not write: add trc to --export "
+    throw ConfigError(args.trc_option_given +
+                      " sets the TRC files, which this run does not write: add trc to --export "
                       "(JSON, CSV, NPZ and HDF5 are always z up, in metres)");
   }
   options.filled_joints = !args.no_filled_joints;

@@ -124,7 +124,8 @@ std::string NobodyTriangulatedWarning(const engine::RunResult& run, const Undist
              // Nothing to triangulate: the cameras are not to blame (that warning sent users to the calibration).
              ? "no person was triangulated in any of the " + std::to_string(run.frames) +
                    " frames: the detections hold no usable 2D pose in any camera (every view empty, or no pose "
-                   "with undistort.min_core_joints = " + std::to_string(undistort.min_core_joints) +
+                   "with undistort.min_core_joints = " +
+                   std::to_string(undistort.min_core_joints) +
                    " core joints scored at least undistort.min_joint_score = " +
                    FormatOption(undistort.min_joint_score) +
                    ": scores on another scale, such as heatmap values of 0-0.1, are all below it; "

@@ -16,7 +16,8 @@ void CountImplausibleCamera(const Camera& camera, const std::string& source, Inp
   if (warnings == nullptr) return;
   const double distance = camera.t.stableNorm();  // = |centre| (R is a rotation); no overflow for T = 1e300
   if (!(distance <= kMaxPlausibleCameraDistanceM)) {
-    warnings->Add(extrinsics_source.empty() ? source : extrinsics_source, "cameras more than 1 km from the origin (check the units of T)", "max |T| in m", distance);
+    warnings->Add(extrinsics_source.empty() ? source : extrinsics_source,
+                  "cameras more than 1 km from the origin (check the units of T)", "max |T| in m", distance);
   }
   double worst = 0;
   for (const double k : camera.dist) worst = std::max(worst, std::abs(k));

@@ -28,7 +28,8 @@ UprightCheck::UprightCheck(const JointNames& output_joints) {
     if (name.ends_with("_right")) hand_[1].push_back(j);
   }
   const int wrist_left = FindJoint(output_joints, "wrist_left"), wrist_right = FindJoint(output_joints, "wrist_right");
-  if (wrist_left >= 0 && wrist_right >= 0 && !hand_[0].empty() && !hand_[1].empty()) wrists_ = {wrist_left, wrist_right};
+  if (wrist_left >= 0 && wrist_right >= 0 && !hand_[0].empty() && !hand_[1].empty())
+    wrists_ = {wrist_left, wrist_right};
 }
 
 void UprightCheck::Add(const Poses3D& persons) {
@@ -74,8 +75,8 @@ void UprightCheck::Add(const Poses3D& persons) {
       ++heads;
     }
     if (heads == 0) continue;
-    const Eigen::Vector3d axis =
-        head / heads - 0.5 * (persons.Person(p).col(ankles_[0]).head<3>() + persons.Person(p).col(ankles_[1]).head<3>());
+    const Eigen::Vector3d axis = head / heads - 0.5 * (persons.Person(p).col(ankles_[0]).head<3>() +
+                                                       persons.Person(p).col(ankles_[1]).head<3>());
     ++count_.judged;
     count_.upside_down += axis.z() < 0 ? 1 : 0;
     count_.lying += std::abs(axis.z()) < 0.5 * axis.norm() ? 1 : 0;  // within 30 degrees of the horizontal
@@ -128,8 +129,7 @@ std::string MirroredWarning(const std::string& sequence, const UprightCount& cou
     return "";
   }
   return PrintableText(sequence + ": " + std::to_string(count.mirrored) + " of the " +
-                       std::to_string(count.facing_judged) +
-                       " persons with nose, shoulders and hips triangulated (" +
+                       std::to_string(count.facing_judged) + " persons with nose, shoulders and hips triangulated (" +
                        PercentText(static_cast<double>(count.mirrored) / count.facing_judged) +
                        ") have the nose behind the shoulders, as mirror images have (real detections: under 2 %): "
                        "are the detections of mirrored images in every camera (a webcam's selfie view, a flipped "

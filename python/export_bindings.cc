@@ -219,12 +219,12 @@ std::vector<std::filesystem::path> Write(const std::filesystem::path& dir, py::h
 void RegisterExport(py::module_& exports) {
   exports.def("write", &Write, py::arg("out_dir"), py::arg("predictions"), py::arg("formats") = "json", py::kw_only(),
               py::arg("filled_joints") = true, py::arg("predicted_joints") = true, py::arg("trc_axes") = "z-up",
-              py::arg("trc_units") = "m",
-              py::arg("run_id") = "python",
+              py::arg("trc_units") = "m", py::arg("run_id") = "python",
               "Writes rpt.Predictions (or a list, one per sequence) as the CLI's --export does: formats 'json' "
               "(predictions.json), 'csv' (predictions.csv), 'trc' (trc/, one file per track), 'npz' "
               "(predictions.npz), 'h5' (predictions.h5), a comma text or a list; filled_joints=False writes "
-              "filled joints as missing, predicted_joints=False those of persons tracking holds while unseen; trc_axes 'z-up' | 'y-up' (OpenSim); "
+              "filled joints as missing, predicted_joints=False those of persons tracking holds while unseen; trc_axes "
+              "'z-up' | 'y-up' (OpenSim); "
               "trc_units 'm' | 'mm'. Returns the paths written. Schemas: docs/own_data.md.");
   exports.def(
       "formats",

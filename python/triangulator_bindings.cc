@@ -297,7 +297,8 @@ class PyTriangulator {
     std::vector<std::string> lines = engine::CameraAgreementWarnings(source, cameras);
     if (std::string line = engine::UprightWarning(source, upright); !line.empty()) lines.push_back(std::move(line));
     if (std::string line = engine::MirroredWarning(source, upright); !line.empty()) lines.push_back(std::move(line));
-    if (std::string line = engine::SwappedHandsWarning(source, upright); !line.empty()) lines.push_back(std::move(line));
+    if (std::string line = engine::SwappedHandsWarning(source, upright); !line.empty())
+      lines.push_back(std::move(line));
     return lines;
   }
 
@@ -525,12 +526,10 @@ void RegisterTriangulator(py::module_& m) {
            "Every frame of a list (rpt.datasets.Frame objects, (views, timestamp) tuples or views), converted first, "
            "then triangulated in C++; returns rpt.Predictions. checks=False as above")
       .def("reset", &PyTriangulator::Reset, "Forgets the previous frames (tracks, pre-filter, noise estimate)")
-      .def_property_readonly(
-          "stats", &PyTriangulator::StatsOfLastFrame,
-          "the last frame's time and count per step, and the counters")
-      .def_property_readonly(
-          "last_provenance", &PyTriangulator::LastProvenance,
-          "(P, J) provenance codes of the last process() call")
+      .def_property_readonly("stats", &PyTriangulator::StatsOfLastFrame,
+                             "the last frame's time and count per step, and the counters")
+      .def_property_readonly("last_provenance", &PyTriangulator::LastProvenance,
+                             "(P, J) provenance codes of the last process() call")
       .def_property_readonly("joint_names", [](const PyTriangulator& t) { return t.triangulator().input_joints(); })
       .def_property_readonly(
           "output_joint_names", [](const PyTriangulator& t) { return t.triangulator().output_joints(); },

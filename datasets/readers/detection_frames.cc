@@ -113,8 +113,10 @@ std::unique_ptr<FrameSource> OpenDetectionFrames(std::vector<Camera> cameras, De
       if (it == camera_idx.end()) {
         throw InputError(source + ": frame " + QuoteName(frame.frame_id) + ": camera " + QuoteName(name) +
                          DidYouMeanSpelling(name, names) + " is not in the calibration " + calibration_file.string() +
-                         " (cameras: " + JoinNames(names, ", ") + "); when it is one of those under another name, "
-                         "--rename-camera " + name + "=NAME maps it");
+                         " (cameras: " + JoinNames(names, ", ") +
+                         "); when it is one of those under another name, "
+                         "--rename-camera " +
+                         name + "=NAME maps it");
       }
       (*view_camera)[f].push_back(it->second);
     }

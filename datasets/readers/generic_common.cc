@@ -82,10 +82,13 @@ std::string Suggestion(std::string_view name) {
     if (lower.rfind(side + "_", 0) != 0) continue;
     const std::string rest = lower.substr(side.size() + 1);
     if (rest == "hand_root") return "hand_root_" + side;
-    for (const auto& [mmpose, ours] : std::vector<std::pair<std::string, std::string>>{
-             {"thumb", "thumb"}, {"forefinger", "index"}, {"middle_finger", "middle"}, {"ring_finger", "ring"},
-             {"pinky_finger", "pinky"}}) {
-      if (rest.size() == mmpose.size() + 1 && rest.rfind(mmpose, 0) == 0 && std::isdigit(static_cast<unsigned char>(rest.back()))) {
+    for (const auto& [mmpose, ours] : std::vector<std::pair<std::string, std::string>>{{"thumb", "thumb"},
+                                                                                       {"forefinger", "index"},
+                                                                                       {"middle_finger", "middle"},
+                                                                                       {"ring_finger", "ring"},
+                                                                                       {"pinky_finger", "pinky"}}) {
+      if (rest.size() == mmpose.size() + 1 && rest.rfind(mmpose, 0) == 0 &&
+          std::isdigit(static_cast<unsigned char>(rest.back()))) {
         const std::string candidate = "hand_" + ours + "_" + rest.back() + "_" + side;
         if (IsKnownJointName(candidate)) return candidate;
       }

@@ -2,8 +2,8 @@
 #include "engine/outputs/trc_export.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -177,7 +177,8 @@ void TrcExport::WriteFile(const Sequence& s, int track_id, const Track& track) {
   // they are numbered here from their times at `rate`, as with an fps, so that Frame# / DataRate
   // agrees with Time after the frames the input skipped.
   const bool renumber = !(s.fps > 0) && rate > 0;
-  const long first_number = renumber ? 1 + std::lround((track.first_time_s - s.first_time_s) * rate) : track.first_number;
+  const long first_number =
+      renumber ? 1 + std::lround((track.first_time_s - s.first_time_s) * rate) : track.first_number;
   std::string name = s.name + "_track" + std::to_string(track_id) + ".trc";
   if (written_names_.count(name) > 0) {  // the track came back
     name = s.name + "_track" + std::to_string(track_id) + "_from" + std::to_string(first_number) + ".trc";
@@ -188,8 +189,8 @@ void TrcExport::WriteFile(const Sequence& s, int track_id, const Track& track) {
     out << "DataRate\tCameraRate\tNumFrames\tNumMarkers\tUnits\tOrigDataRate\tOrigDataStartFrame\tOrigNumFrames\n";
     const std::string rate_text = GeneralText(rate, 10);  // printf's "%.10g" in the C locale (29.97002997 stays)
     out << rate_text << "\t" << rate_text << "\t" << track.rows << "\t" << s.joints.size() << "\t"
-        << (options_.trc_millimetres ? "mm" : "m") << "\t" << rate_text << "\t" << first_number << "\t"
-        << track.rows << "\n";
+        << (options_.trc_millimetres ? "mm" : "m") << "\t" << rate_text << "\t" << first_number << "\t" << track.rows
+        << "\n";
     out << "Frame#\tTime";
     for (const std::string& joint : s.joints) out << "\t" << TrcField(joint) << "\t\t";
     out << "\n\t";
@@ -207,8 +208,8 @@ void TrcExport::WriteFile(const Sequence& s, int track_id, const Track& track) {
       const size_t number_end = line.find('\t');
       double time_s = 0;
       if (number_end == std::string::npos ||
-          std::from_chars(line.data() + number_end + 1, line.data() + std::min(line.find('\t', number_end + 1), line.size()),
-                          time_s)
+          std::from_chars(line.data() + number_end + 1,
+                          line.data() + std::min(line.find('\t', number_end + 1), line.size()), time_s)
                   .ec != std::errc()) {
         throw InputError(track.part.string() + ": row " + std::to_string(row + 1) + " is not as written");
       }

@@ -133,9 +133,9 @@ TEST(BenchCommand, TheBaselineIsComparedOnItsOwnFrames) {
 
 TEST(BenchCommand, ADatasetsRunRecordsItsInput) {
   RPT_REQUIRE_SHARED_DATA("shelf/4d_association");
-  const test::CommandResult r = test::RunRpt("bench --dataset shelf-4da --root " +
-                                             test::SharedData("shelf/4d_association").string() +
-                                             " --param frames=0-9 --repeat 1 --no-baseline --json");
+  const test::CommandResult r =
+      test::RunRpt("bench --dataset shelf-4da --root " + test::SharedData("shelf/4d_association").string() +
+                   " --param frames=0-9 --repeat 1 --no-baseline --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json run = nlohmann::json::parse(r.out)["run"];
   EXPECT_EQ(run["input_settings"]["reader"], "shelf-4da");
@@ -182,8 +182,9 @@ TEST(BenchCommand, DatasetOptionsAreCheckedBeforeAnythingRuns) {
   EXPECT_EQ(s["name"], "synthetic");
   EXPECT_EQ(s["frames"], 10);
   EXPECT_FALSE(s["step_time_us_median"].contains("paf_grouping (reader)"));
-  const test::CommandResult eval = test::RunRpt("eval --dataset synthetic --param frames=3 --json --quiet --no-predictions --out " +
-                                                (std::filesystem::temp_directory_path() / "rpt_bench_synthetic_eval").string());
+  const test::CommandResult eval =
+      test::RunRpt("eval --dataset synthetic --param frames=3 --json --quiet --no-predictions --out " +
+                   (std::filesystem::temp_directory_path() / "rpt_bench_synthetic_eval").string());
   ASSERT_EQ(eval.exit_code, 0) << eval.err;
   EXPECT_FALSE(nlohmann::json::parse(eval.out).contains("frame_with_grouping_us_median")) << "no reader grouping";
   std::filesystem::remove_all(std::filesystem::temp_directory_path() / "rpt_bench_synthetic_eval");

@@ -387,15 +387,17 @@ TEST(EvalCommand, WholeBodyGroupsNameTheirJointsAndPersons) {
     }
   }
   std::ofstream(out / "body_only.json") << body_only.dump();
-  const test::CommandResult coco17 = test::RunRpt("eval --labels " + (out / "labels.json").string() + " --detections " +
-                                                  (out / "body_only.json").string() + " --out " + (out / "b17").string());
+  const test::CommandResult coco17 =
+      test::RunRpt("eval --labels " + (out / "labels.json").string() + " --detections " +
+                   (out / "body_only.json").string() + " --out " + (out / "b17").string());
   ASSERT_EQ(coco17.exit_code, 0) << coco17.err;
   EXPECT_NE(coco17.err.find("warning: whole-body group Face: the ground truth has 68 of its joints, the predictions "
                             "none (detections of the body only?): it is not measured, and All is over the joints both "
                             "have"),
             std::string::npos)
       << coco17.err;
-  EXPECT_NE(coco17.err.find("warning: whole-body group Hands: the ground truth has 42 of its joints"), std::string::npos);
+  EXPECT_NE(coco17.err.find("warning: whole-body group Hands: the ground truth has 42 of its joints"),
+            std::string::npos);
   EXPECT_EQ(coco17.err.find("whole-body group Body:"), std::string::npos) << "its 17 body joints are measured";
   const nlohmann::json b17 = ReadJson(out / "b17" / "summary.json")["wholebody_counts"];
   EXPECT_EQ(b17["All"]["joints"], 17);

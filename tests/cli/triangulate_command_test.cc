@@ -378,11 +378,13 @@ TEST_F(Triangulate, ExportsReadBackEqualTheJson) {
   ASSERT_EQ(y.exit_code, 0) << y.err;
   // Without TRC files they would be read as applying to the other formats (always z up, metres).
   for (const std::string option : {"--trc-axes y-up", "--trc-units mm"}) {
-    const test::CommandResult without = test::RunRpt(input + " --export json,csv " + option + " --out " + (dir_ / "no").string());
+    const test::CommandResult without =
+        test::RunRpt(input + " --export json,csv " + option + " --out " + (dir_ / "no").string());
     EXPECT_EQ(without.exit_code, 2) << option;
-    EXPECT_NE(without.err.find(option.substr(0, option.find(' ')) + " sets the TRC files, which this run does not write: add "
-                               "trc to --export"),
-              std::string::npos)
+    EXPECT_NE(
+        without.err.find(option.substr(0, option.find(' ')) + " sets the TRC files, which this run does not write: add "
+                                                              "trc to --export"),
+        std::string::npos)
         << without.err;
   }
   for (const auto& [track, count] : rows_per_track) {
@@ -1061,8 +1063,9 @@ TEST(TriangulateExports, PredictedJointsAreWrittenAsMissingOnRequest) {
   const std::string csv_without = test::ReadAll(dir / "without" / "predictions.csv");
   EXPECT_NE(csv_with.find(",predicted\n"), std::string::npos);
   EXPECT_EQ(csv_without.find(",predicted\n"), std::string::npos);
-  EXPECT_EQ(std::count(csv_with.begin(), csv_with.end(), '\n') - std::count(csv_without.begin(), csv_without.end(), '\n'),
-            predicted);
+  EXPECT_EQ(
+      std::count(csv_with.begin(), csv_with.end(), '\n') - std::count(csv_without.begin(), csv_without.end(), '\n'),
+      predicted);
   // TRC: the same files with the same rows; the predicted joints' fields are empty.
   long trc_files = 0;
   for (const auto& entry : std::filesystem::directory_iterator(dir / "with" / "trc")) {

@@ -215,7 +215,7 @@ TEST(CalibrationEasyMocap, IntriAndExtriGiveTheHandBuiltCamera) {
     EXPECT_EQ(calibration.description.rotation, "R_ (Rodrigues vector)");
     EXPECT_EQ(calibration.description.files, (std::vector<std::filesystem::path>{intri, dir.path() / "extri.yml"}));
   }
-    // Millimetres read as metres: the count names extri.yml, the file of T (it named intri.yml).
+  // Millimetres read as metres: the count names extri.yml, the file of T (it named intri.yml).
   std::string far = kExtri;
   far.replace(far.find("0., 1.5, 4."), 11, "0., 1500., 4000.");
   WriteCalibrationText(dir.path() / "extri.yml", far);
@@ -391,9 +391,10 @@ TEST(CalibrationOpenCV, AFolderOfOneFilePerCameraIsTheRigInFileNameOrder) {
   const auto far = dir.path() / "far";
   std::filesystem::create_directories(far);
   for (const std::string name : {"a", "b"}) {
-    WriteCalibrationText(far / (name + ".yml"), "%YAML:1.0\n---\nimage_width: 1920\nimage_height: 1080\n" +
-                                                    Matrix("K", 3, 3, kK) + Matrix("rvec", 3, 1, kRvec) +
-                                                    Matrix("tvec", 3, 1, name == "a" ? "0., 1500., 4000." : "0., 3000., 4000."));
+    WriteCalibrationText(far / (name + ".yml"),
+                         "%YAML:1.0\n---\nimage_width: 1920\nimage_height: 1080\n" + Matrix("K", 3, 3, kK) +
+                             Matrix("rvec", 3, 1, kRvec) +
+                             Matrix("tvec", 3, 1, name == "a" ? "0., 1500., 4000." : "0., 3000., 4000."));
   }
   InputWarnings far_warnings;
   ReadCalibration(far, CalibrationReadOptions{}, &far_warnings);

@@ -245,10 +245,11 @@ TEST(GenericLabels, MalformedFilesNameFileAndPlace) {
                 MaterializeAll(OpenLabels(
                     with(R"(["nose"])", R"(["LEFT_SHOULDER", "nose", "mid_hip", "r_wrist", "left_eye_inner"])")));
               }),
-              HasSubstr("bad.json: /0/joints: unknown joint names (4): 'LEFT_SHOULDER' (did you mean 'shoulder_left'?), "
-                        "'mid_hip' (did you mean 'hip_middle'?), 'r_wrist' (did you mean 'wrist_right'?), "
-                        "'left_eye_inner'; rpt's names: nose, eye_left, ..., ankle_right, foot_big_toe_left, ..., "
-                        "face_00 .. face_67, hand_root_left, hand_thumb_1_left .. hand_pinky_4_right"));
+              HasSubstr(
+                  "bad.json: /0/joints: unknown joint names (4): 'LEFT_SHOULDER' (did you mean 'shoulder_left'?), "
+                  "'mid_hip' (did you mean 'hip_middle'?), 'r_wrist' (did you mean 'wrist_right'?), "
+                  "'left_eye_inner'; rpt's names: nose, eye_left, ..., ankle_right, foot_big_toe_left, ..., "
+                  "face_00 .. face_67, hand_root_left, hand_thumb_1_left .. hand_pinky_4_right"));
   // MMPose's COCO-WholeBody names (a whole-body user's file: the face and hands got no hint).
   EXPECT_THAT(InputErrorOf([&] {
                 MaterializeAll(OpenLabels(with(R"(["nose"])", R"(["face-0", "nose", "face-67", "left_hand_root",

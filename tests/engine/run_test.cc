@@ -455,8 +455,10 @@ TEST(RunTest, CamerasInWhoseImagesNoPersonFallsAreNamed) {
     const CameraAgreement& camera = wrong.camera_agreement[i + 2];
     EXPECT_EQ(camera.in_view, 0) << camera.camera;
     EXPECT_EQ(camera.frames_with_detections, 60) << camera.camera;
-    EXPECT_EQ(lines[i].find(", camera '" + camera.camera + "': it detected persons in 60 of the 60 frames compared, but "
-                            "none of the " + std::to_string(camera.while_detecting) +
+    EXPECT_EQ(lines[i].find(", camera '" + camera.camera +
+                            "': it detected persons in 60 of the 60 frames compared, but "
+                            "none of the " +
+                            std::to_string(camera.while_detecting) +
                             " 3D persons of those frames fall in its image: is its calibration right?"),
               wrong.name.size())
         << lines[i];
