@@ -42,7 +42,8 @@ void CheckSummaryValues(const nlohmann::json& summary, const std::string& source
 // "wholebody_mpjpe_mm" and "legacy_pcp" (the average over the actors) with "legacy_pcp_actor1",
 // "legacy_pcp_actor2", ... (one per averaged actor) when available, "step_time_us_median",
 // "step_count_per_frame", "counter_per_frame" and "detection_noise_m" (null when not estimated),
-// and with several sequences "per_sequence": one SequenceSummaryJson per sequence.
+// "frame_with_grouping_us_median" where a reader grouped raw candidates, and with several sequences
+// "per_sequence": one SequenceSummaryJson per sequence.
 nlohmann::ordered_json SummaryJson(const RunResult& run);
 // The summary of a run without metrics (rpt triangulate): "evaluated": false, "fps",
 // "frame_time_us_median", "frames", "eval_frames_per_s", "output_persons" (triangulated

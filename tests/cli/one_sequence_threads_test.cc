@@ -27,7 +27,7 @@ using Json = nlohmann::ordered_json;
 
 // The timing fields of the summaries (they differ between any two runs).
 const std::set<std::string> kTimed = {"fps", "frame_time_us_median", "eval_frames_per_s", "step_time_us_median",
-                                      "step_time_us_mean"};
+                                      "step_time_us_mean", "frame_with_grouping_us_median"};
 
 std::string Replaced(std::string text, const std::string& from, const std::string& to) {
   for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size())) {
