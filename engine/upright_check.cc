@@ -28,8 +28,9 @@ UprightCheck::UprightCheck(const JointNames& output_joints) {
     if (name.ends_with("_right")) hand_[1].push_back(j);
   }
   const int wrist_left = FindJoint(output_joints, "wrist_left"), wrist_right = FindJoint(output_joints, "wrist_right");
-  if (wrist_left >= 0 && wrist_right >= 0 && !hand_[0].empty() && !hand_[1].empty())
+  if (wrist_left >= 0 && wrist_right >= 0 && !hand_[0].empty() && !hand_[1].empty()) {
     wrists_ = {wrist_left, wrist_right};
+  }
 }
 
 void UprightCheck::Add(const Poses3D& persons) {

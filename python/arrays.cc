@@ -25,6 +25,19 @@ std::string ExpectedShapeText(const std::vector<py::ssize_t>& shape, const std::
   return text + (shape.size() == 1 ? ",)" : ")");
 }
 
+// Views as an integer array (a detector's int32 output, a cast too many): their scores are whole
+// numbers, every joint scored below 1 reads as 0 (missing) and nobody is triangulated, without any
+// error (a typed-code user's finding): said as an rpt.InputWarning naming the argument.
+void WarnOfIntegerScores(py::handle object, const std::string& what) {
+  if (!py::isinstance<py::array>(object)) return;
+  const py::array array = py::reinterpret_borrow<py::array>(object);
+  const char kind = array.dtype().kind();
+  if ((kind != 'i' && kind != 'u') || array.size() == 0) return;
+  WarnInput({what + ": an array of integers (" + py::str(array.dtype()).cast<std::string>() +
+             "): its scores are whole numbers, so every joint scored below 1 reads as missing; give float32 or "
+             "float64"});
+}
+
 }  // namespace
 
 py::array_t<double> CheckedArray(py::handle object, const std::string& what, std::vector<py::ssize_t> shape) {
@@ -73,21 +86,6 @@ void ClearCoordinatesOfMissingJoints(double* data, size_t size) {
     if (data[i + 2] == 0 && !(std::isfinite(data[i]) && std::isfinite(data[i + 1]))) data[i] = data[i + 1] = 0;
   }
 }
-
-// Views as an integer array (a detector's int32 output, a cast too many): their scores are whole
-// numbers, every joint scored below 1 reads as 0 (missing) and nobody is triangulated, without any
-// error (a typed-code user's finding): said as an rpt.InputWarning naming the argument.
-namespace {
-void WarnOfIntegerScores(py::handle object, const std::string& what) {
-  if (!py::isinstance<py::array>(object)) return;
-  const py::array array = py::reinterpret_borrow<py::array>(object);
-  const char kind = array.dtype().kind();
-  if ((kind != 'i' && kind != 'u') || array.size() == 0) return;
-  WarnInput({what + ": an array of integers (" + py::str(array.dtype()).cast<std::string>() +
-             "): its scores are whole numbers, so every joint scored below 1 reads as missing; give float32 or "
-             "float64"});
-}
-}  // namespace
 
 void ViewFromArray(py::handle object, int num_joints, const std::string& what, Poses2D* view) {
   view->Clear(num_joints);

@@ -73,7 +73,7 @@ std::string Suggestion(std::string_view name) {
   // left_pinky_finger1 -> hand_thumb_1_left, hand_index_2_left, ... (a whole-body user's file).
   if (lower.rfind("face-", 0) == 0 || lower.rfind("face_", 0) == 0) {
     const std::string digits = lower.substr(5);
-    if (!digits.empty() && digits.size() <= 2 && std::all_of(digits.begin(), digits.end(), ::isdigit)) {
+    if (!digits.empty() && digits.size() <= 2 && std::all_of(digits.begin(), digits.end(), [](unsigned char c) { return std::isdigit(c) != 0; })) {
       const std::string candidate = "face_" + std::string(digits.size() == 1 ? "0" : "") + digits;
       if (IsKnownJointName(candidate)) return candidate;
     }

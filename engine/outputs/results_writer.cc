@@ -191,27 +191,28 @@ void AddCountColumns(const metrics::MetricsResult& m, OrderedJson* j) {
 // The units of the keys both summaries may hold beyond the summary columns (when present in `j`):
 // every number of summary.json has one.
 void AddOtherUnits(const OrderedJson& j, OrderedJson* units) {
-  static const std::vector<std::pair<std::string, std::string>> kUnits = {{"dropped_gt_persons", "GT persons"},
-                                                                          {"missing_pred_joints", "joints"},
-                                                                          {"unaligned_matches", "matches"},
-                                                                          {"track_ids", "count"},
-                                                                          {"gt_identities", "count"},
-                                                                          {"gt_identities_matched", "count"},
-                                                                          {"id_switches", "count"},
-                                                                          {"wholebody_mpjpe_mm", "mm"},
-                                                                          {"wholebody_counts", "count"},
-                                                                          {"output_persons", "count"},
-                                                                          {"frame_with_grouping_us_median", "us"},
-                                                                          {"step_time_us_median", "us"},
-                                                                          {"step_count_per_frame", "items per frame"},
-                                                                          {"counter_per_frame", "per frame"},
-                                                                          {"detection_noise_m", "m"},
-                                                                          {"camera_agreement", "persons"}};
+  static const std::vector<std::pair<std::string, std::string>> kUnits = {
+      {"dropped_gt_persons", "GT persons"},
+      {"missing_pred_joints", "joints"},
+      {"unaligned_matches", "matches"},
+      {"track_ids", "count"},
+      {"gt_identities", "count"},
+      {"gt_identities_matched", "count"},
+      {"id_switches", "count"},
+      {"wholebody_mpjpe_mm", "mm"},
+      {"wholebody_counts", "count"},
+      {"output_persons", "count"},
+      {"frame_with_grouping_us_median", "us"},
+      {"step_time_us_median", "us"},
+      {"step_count_per_frame", "items per frame"},
+      {"counter_per_frame", "per frame"},
+      {"detection_noise_m", "m"},
+      {"camera_agreement", "persons"},
+  };
   for (const auto& [key, unit] : kUnits) {
     if (j.contains(key)) (*units)[key] = unit;
   }
 }
-
 
 // Track ids against the GT's ids (metrics/identity_counts.h), when there are both: GT ids across
 // frames (not MVOR's) and predictions with track ids (tracking on).
@@ -226,8 +227,9 @@ void AddIdentityColumns(const metrics::IdentityCounts& identity, OrderedJson* j)
 // With a reader that groups raw candidates (shelf-4da): the frame's median time with the grouping,
 // the time a user feeding raw candidates pays (fps and frame_time_us_median are the pipeline's).
 void AddGroupingTime(const metrics::TimingSummary& timing, OrderedJson* j) {
-  if (timing.paf_grouping_frames > 0)
+  if (timing.paf_grouping_frames > 0) {
     (*j)["frame_with_grouping_us_median"] = Number(timing.frame_with_grouping_us_median);
+  }
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include "core/errors.h"
 #include "core/option_codec.h"
 #include "datasets/io/json_output.h"
+#include "engine/outputs/export_options.h"
 #include "engine/outputs/results_writer.h"
 #include "engine/outputs/text_escaping.h"
 #include "datasets/io/json_file.h"
@@ -208,6 +209,14 @@ RecordedRun ReadRecordedRun(const std::filesystem::path& dir) {
       if (words[i] == "--export" && i + 1 < words.size()) formats = words[i + 1];
       if (words[i].rfind("--export=", 0) == 0) formats = words[i].substr(9);
       if (formats.empty()) continue;
+      // A run that did write json (predictions.json deleted since) is told "file not found" below.
+      std::vector<ExportFormat> exported;
+      try {
+        exported = ParseExportFormats(formats);
+      } catch (const ConfigError&) {
+        continue;
+      }
+      if (std::find(exported.begin(), exported.end(), ExportFormat::kJson) != exported.end()) continue;
       throw InputError((dir / "predictions.json").string() + ": not written: the run was made with --export " +
                        PrintableText(formats, LineBreaks::kEscape) +
                        " (run.json), without json; the report reads predictions.json: run its command again with "

@@ -335,6 +335,16 @@ TEST(ReportCommand, BadInputExitsTwoNamingTheFile) {
                        "the report reads predictions.json: run its command again with --export json,csv"),
             std::string::npos)
       << r.err;
+  // Exported as json too, predictions.json deleted since: not "without json", the file is missing.
+  fs::remove_all(other);
+  ASSERT_EQ(RunRpt("triangulate --dataset synthetic --param frames=3 --export json,csv --quiet --out " + other.string())
+                .exit_code,
+            0);
+  fs::remove(other / "predictions.json");
+  r = RunRpt("report " + other.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err.find("without json"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("predictions.json"), std::string::npos) << r.err;
   fs::remove_all(other);
 }
 
